@@ -1,0 +1,59 @@
+// Subcommand table and dispatch for tactiscope-cli.
+#include "CliApplication.h"
+
+#include "CliSupport.h"
+#include "SimulateCommand.h"
+#include "core/Version.h"
+
+#include <QTextStream>
+
+#include <array>
+
+namespace tactiscope::cli {
+namespace {
+
+struct Command {
+    const char* name;
+    const char* summary;
+    int (*run)(const QStringList& arguments);
+};
+
+constexpr std::array kCommands{
+    Command{"simulate", "Write a simulated recording as CSV.", runSimulate},
+};
+
+QString usage()
+{
+    QString text;
+    QTextStream out(&text);
+    out << "Usage: tactiscope-cli [--help] [--version] <command> [options]\n\n"
+        << "Headless tools of Tactiscope, the tactile-sensor inspection workstation.\n\n"
+        << "Commands:\n";
+    for (const Command& command : kCommands) out << "  " << QString(command.name).leftJustified(12) << command.summary << '\n';
+    out << "\nRun 'tactiscope-cli <command> --help' for a command's options.\n"
+        << "Exit codes: 0 success, 1 the command failed, 2 bad arguments or input.\n";
+    return text;
+}
+
+}  // namespace
+
+int runCli(const QStringList& arguments)
+{
+    if (arguments.isEmpty()) return usageError(QStringLiteral("no command given"), usage());
+    const QString& first = arguments.front();
+    if (first == QLatin1String("--help") || first == QLatin1String("-h")) {
+        QTextStream(stdout) << usage();
+        return kExitOk;
+    }
+    if (first == QLatin1String("--version")) {
+        QTextStream(stdout) << "tactiscope-cli " << core::versionString() << '\n';
+        return kExitOk;
+    }
+    if (first.startsWith(QLatin1Char('-'))) return usageError(QStringLiteral("unknown option '%1'").arg(first), usage());
+    for (const Command& command : kCommands) {
+        if (first == QLatin1String(command.name)) return command.run(arguments.mid(1));
+    }
+    return usageError(QStringLiteral("unknown command '%1'").arg(first), usage());
+}
+
+}  // namespace tactiscope::cli

@@ -1,0 +1,53 @@
+// Error reporting and parsing helpers for tactiscope-cli.
+#include "CliSupport.h"
+
+#include <QTextStream>
+
+
+namespace tactiscope::cli {
+
+void printError(const QString& message)
+{
+    QTextStream(stderr) << "tactiscope-cli: " << message << '\n';
+}
+
+int usageError(const QString& message, const QString& usage)
+{
+    printError(message);
+    QTextStream(stderr) << '\n' << usage;
+    return kExitUsage;
+}
+
+QString commandUsage(const QCommandLineParser& parser, const QString& command)
+{
+    // helpText() begins "Usage: <path of the binary> [options]"; show the
+    // program's plain name and the subcommand instead.
+    QString text = parser.helpText();
+    const qsizetype programStart = text.indexOf(QLatin1Char(' ')) + 1;
+    const qsizetype programEnd = text.indexOf(QLatin1Char(' '), programStart);
+    if (programStart > 0 && programEnd > programStart)
+        text.replace(programStart, programEnd - programStart, QStringLiteral("tactiscope-cli ") + command);
+    return text;
+}
+
+std::optional<int> parseCommandLine(QCommandLineParser& parser, const QString& command, const QStringList& arguments)
+{
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
+                                  QStringLiteral("Show this help and exit."));
+    parser.addOption(help);
+    // QCommandLineParser expects the program name first.
+    if (!parser.parse(QStringList{QStringLiteral("tactiscope-cli")} + arguments))
+        return usageError(parser.errorText(), commandUsage(parser, command));
+    if (parser.isSet(help)) {
+        QTextStream(stdout) << commandUsage(parser, command);
+        return kExitOk;
+    }
+    return std::nullopt;
+}
+
+QString toQString(std::string_view text)
+{
+    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
+}
+
+}  // namespace tactiscope::cli

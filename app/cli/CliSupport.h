@@ -1,0 +1,34 @@
+// Conventions shared by every tactiscope-cli subcommand: exit codes, error
+// lines on stderr, and conversions between Qt and standard strings.
+#pragma once
+
+#include <QCommandLineParser>
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+#include <string_view>
+
+namespace tactiscope::cli {
+
+constexpr int kExitOk = 0;
+constexpr int kExitFailure = 1;  // the command could not complete (I/O, device)
+constexpr int kExitUsage = 2;    // bad arguments or bad input data
+
+// Prints "tactiscope-cli: <message>" on stderr.
+void printError(const QString& message);
+// Prints the error line, a blank line and `usage` on stderr; returns kExitUsage.
+int usageError(const QString& message, const QString& usage);
+
+// Parses `arguments` (the subcommand's own, without the command name) with
+// `parser`, which gets a --help option added. Returns the exit code when the
+// command must end at once (0 after --help, 2 on a parse error), or nothing
+// when it should go on.
+std::optional<int> parseCommandLine(QCommandLineParser& parser, const QString& command, const QStringList& arguments);
+
+// Usage text of a subcommand's parser, with its name in place of the program.
+QString commandUsage(const QCommandLineParser& parser, const QString& command);
+
+QString toQString(std::string_view text);
+
+}  // namespace tactiscope::cli

@@ -1,0 +1,23 @@
+// Min/max decimation for drawing: reduces a time series to at most two points
+// per screen column (the column's minimum and maximum, in time order), so a
+// plot shows every peak of a long trace at a cost set by the screen width,
+// not by the number of samples.
+//
+// Columns are aligned to absolute multiples of the column width in time, not
+// to the first sample, so a scrolling trace does not shimmer as its window
+// slides.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace tactiscope::core::signal {
+
+// t must be non-decreasing and the same length as y; columnWidth_s > 0.
+// When there are no more than two samples per column on average, the samples
+// are returned unchanged. tOut and yOut are replaced.
+void decimateMinMax(std::span<const double> t, std::span<const double> y, double columnWidth_s,
+                    std::vector<double>& tOut, std::vector<double>& yOut);
+
+}  // namespace tactiscope::core::signal

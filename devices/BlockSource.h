@@ -1,0 +1,42 @@
+// A BlockSource is anything that yields SampleBlocks of one device: the
+// built-in simulator now, a transport plus protocol decoder later. It is
+// driven by exactly one acquisition thread, which calls readBlock() in a loop
+// and relies on its timeout to stay responsive to a stop request.
+#pragma once
+
+#include "core/ChannelDescriptor.h"
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace tactiscope::core {
+class SampleBlock;
+}
+
+namespace tactiscope::devices {
+
+enum class ReadStatus {
+    Block,     // `out` holds a new block
+    Timeout,   // nothing within the timeout; call again
+    Finished,  // the source has ended normally (e.g. a finite simulation)
+    Failed,    // the source cannot continue; see lastError()
+};
+
+class BlockSource {
+public:
+    virtual ~BlockSource() = default;
+
+    // Human-readable identity, e.g. "Simulator — panel scan".
+    virtual std::string name() const = 0;
+    virtual const std::vector<core::ChannelDescriptor>& channels() const = 0;
+    virtual double nominalSampleRate_hz() const = 0;
+
+    // Blocks for at most `timeout`. Called on the acquisition thread only.
+    virtual ReadStatus readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout) = 0;
+
+    // Why the last readBlock() returned Failed, in words a user can act on.
+    virtual std::string lastError() const { return {}; }
+};
+
+}  // namespace tactiscope::devices

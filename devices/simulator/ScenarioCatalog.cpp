@@ -1,0 +1,23 @@
+// ScenarioCatalog: the table of simulator scenarios.
+#include "devices/simulator/ScenarioCatalog.h"
+
+#include "devices/simulator/PanelScanScenario.h"
+
+namespace tactiscope::devices::simulator {
+
+std::vector<std::string> scenarioIds()
+{
+    return {"panel-scan"};
+}
+
+std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64_t seed)
+{
+    if (id == "panel-scan") {
+        PanelScanParameters parameters;
+        parameters.seed = seed;
+        return std::make_unique<PanelScanScenario>(parameters);
+    }
+    return nullptr;
+}
+
+}  // namespace tactiscope::devices::simulator

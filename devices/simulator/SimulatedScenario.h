@@ -1,0 +1,30 @@
+// A simulated scenario is the physics behind the built-in simulator: it
+// produces consecutive samples of a fixed set of channels at a fixed rate.
+// Scenarios are deterministic for a given seed, so tests and demos repeat.
+#pragma once
+
+#include "core/ChannelDescriptor.h"
+
+#include <string>
+#include <vector>
+
+namespace tactiscope::core {
+class SampleBlock;
+}
+
+namespace tactiscope::devices::simulator {
+
+class SimulatedScenario {
+public:
+    virtual ~SimulatedScenario() = default;
+
+    virtual std::string name() const = 0;
+    virtual const std::vector<core::ChannelDescriptor>& channels() const = 0;
+    virtual double sampleRate_hz() const = 0;
+
+    // Fills every sample of `block` with the next samples of the scenario;
+    // the block's shape (channels, samples) is set by the caller.
+    virtual void generate(core::SampleBlock& block) = 0;
+};
+
+}  // namespace tactiscope::devices::simulator

@@ -1,0 +1,57 @@
+// SimulatorSource: pacing and block framing of a simulated scenario.
+#include "devices/simulator/SimulatorSource.h"
+
+#include "core/SampleBlock.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <thread>
+
+namespace tactiscope::devices::simulator {
+
+SimulatorSource::SimulatorSource(std::unique_ptr<SimulatedScenario> scenario, const SimulatorOptions& options)
+    : m_scenario(std::move(scenario)), m_options(options)
+{
+    if (!m_scenario) throw std::invalid_argument("simulator needs a scenario");
+    if (m_options.samplesPerBlock == 0) throw std::invalid_argument("simulator needs at least one sample per block");
+    if (m_options.duration_s) {
+        if (!(*m_options.duration_s >= 0.0)) throw std::invalid_argument("simulation duration must not be negative");
+        m_totalSamples = static_cast<std::uint64_t>(std::llround(*m_options.duration_s * m_scenario->sampleRate_hz()));
+    }
+}
+
+std::string SimulatorSource::name() const
+{
+    return "Simulator — " + m_scenario->name();
+}
+
+ReadStatus SimulatorSource::readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout)
+{
+    std::size_t count = m_options.samplesPerBlock;
+    if (m_totalSamples) {
+        if (m_produced >= *m_totalSamples) return ReadStatus::Finished;
+        count = static_cast<std::size_t>(std::min<std::uint64_t>(count, *m_totalSamples - m_produced));
+    }
+    const double dt_s = 1.0 / m_scenario->sampleRate_hz();
+
+    if (m_options.pacing == Pacing::RealTime) {
+        const auto now = std::chrono::steady_clock::now();
+        if (!m_start) m_start = now;
+        const auto ready = *m_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                          std::chrono::duration<double>(static_cast<double>(m_produced + count) * dt_s));
+        if (ready > now + timeout) {
+            std::this_thread::sleep_for(timeout);
+            return ReadStatus::Timeout;
+        }
+        std::this_thread::sleep_until(ready);
+    }
+
+    out = core::SampleBlock(m_scenario->channels().size(), count, static_cast<double>(m_produced) * dt_s, dt_s,
+                            m_produced, m_sequence++);
+    m_scenario->generate(out);
+    m_produced += count;
+    return ReadStatus::Block;
+}
+
+}  // namespace tactiscope::devices::simulator

@@ -1,0 +1,46 @@
+// The built-in simulator as a device: turns a SimulatedScenario into a
+// stream of SampleBlocks, either paced like a real probe (a block becomes
+// available only when its last sample would have been measured) or as fast
+// as the consumer takes them (tests, offline generation).
+#pragma once
+
+#include "devices/BlockSource.h"
+#include "devices/simulator/SimulatedScenario.h"
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+namespace tactiscope::devices::simulator {
+
+enum class Pacing { RealTime, AsFastAsPossible };
+
+struct SimulatorOptions {
+    Pacing pacing = Pacing::RealTime;
+    std::size_t samplesPerBlock = 10;  // 20 ms at 500 Hz: smooth, cheap to pass around
+    std::optional<double> duration_s;  // unlimited when empty
+};
+
+class SimulatorSource final : public BlockSource {
+public:
+    // Throws std::invalid_argument for a null scenario, zero samples per block
+    // or a negative duration.
+    SimulatorSource(std::unique_ptr<SimulatedScenario> scenario, const SimulatorOptions& options = {});
+
+    std::string name() const override;
+    const std::vector<core::ChannelDescriptor>& channels() const override { return m_scenario->channels(); }
+    double nominalSampleRate_hz() const override { return m_scenario->sampleRate_hz(); }
+    ReadStatus readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout) override;
+
+private:
+    std::unique_ptr<SimulatedScenario> m_scenario;
+    SimulatorOptions m_options;
+    std::optional<std::uint64_t> m_totalSamples;
+    std::uint64_t m_produced = 0;
+    std::uint32_t m_sequence = 0;
+    std::optional<std::chrono::steady_clock::time_point> m_start;
+};
+
+}  // namespace tactiscope::devices::simulator

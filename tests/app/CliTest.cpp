@@ -1,0 +1,136 @@
+// tactiscope-cli as a user runs it: a real process, its exit code, stdout,
+// stderr and the files it writes.
+#include "core/Version.h"
+
+#include <QDir>
+#include <QFile>
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+struct CliResult {
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+CliResult runCli(const QStringList& arguments)
+{
+    QProcess process;
+    process.start(QStringLiteral(TACTISCOPE_CLI), arguments);
+    process.waitForFinished(60000);
+    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
+            QString::fromUtf8(process.readAllStandardOutput()), QString::fromUtf8(process.readAllStandardError())};
+}
+
+QString firstLine(const QString& text)
+{
+    return text.section(QLatin1Char('\n'), 0, 0);
+}
+
+QStringList readLines(const QString& path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) return {};
+    return QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+}
+
+}  // namespace
+
+TEST(Cli, HelpListsTheCommands)
+{
+    const CliResult run = runCli({QStringLiteral("--help")});
+    EXPECT_EQ(run.exitCode, 0);
+    EXPECT_TRUE(run.out.startsWith(QStringLiteral("Usage: tactiscope-cli")));
+    EXPECT_TRUE(run.out.contains(QStringLiteral("simulate")));
+}
+
+TEST(Cli, VersionPrintsTheBuildVersion)
+{
+    const CliResult run = runCli({QStringLiteral("--version")});
+    EXPECT_EQ(run.exitCode, 0);
+    EXPECT_EQ(run.out.trimmed(), QStringLiteral("tactiscope-cli ") + QString::fromUtf8(tactiscope::core::versionString()));
+}
+
+TEST(Cli, MissingCommandUnknownCommandAndBadFlagExitWithUsage)
+{
+    const std::vector<std::pair<QStringList, QString>> cases{
+        {{}, QStringLiteral("tactiscope-cli: no command given")},
+        {{QStringLiteral("frobnicate")}, QStringLiteral("tactiscope-cli: unknown command 'frobnicate'")},
+        {{QStringLiteral("--bogus")}, QStringLiteral("tactiscope-cli: unknown option '--bogus'")},
+    };
+    for (const auto& [arguments, message] : cases) {
+        const CliResult run = runCli(arguments);
+        EXPECT_EQ(run.exitCode, 2) << arguments.join(' ').toStdString();
+        EXPECT_EQ(firstLine(run.err), message);
+        EXPECT_TRUE(run.err.contains(QStringLiteral("Usage: tactiscope-cli")));
+        EXPECT_TRUE(run.out.isEmpty());
+    }
+}
+
+TEST(Cli, SimulateRejectsBadArgumentsWithOneLineAndUsage)
+{
+    const std::vector<QStringList> cases{
+        {QStringLiteral("simulate"), QStringLiteral("--bogus")},
+        {QStringLiteral("simulate"), QStringLiteral("--seconds"), QStringLiteral("-1")},
+        {QStringLiteral("simulate"), QStringLiteral("--seconds"), QStringLiteral("abc")},
+        {QStringLiteral("simulate"), QStringLiteral("--seed"), QStringLiteral("-3")},
+        {QStringLiteral("simulate"), QStringLiteral("--scenario"), QStringLiteral("moon-landing")},
+        {QStringLiteral("simulate"), QStringLiteral("stray")},
+    };
+    for (const auto& arguments : cases) {
+        const CliResult run = runCli(arguments);
+        EXPECT_EQ(run.exitCode, 2) << arguments.join(' ').toStdString();
+        EXPECT_TRUE(firstLine(run.err).startsWith(QStringLiteral("tactiscope-cli: "))) << run.err.toStdString();
+        EXPECT_TRUE(run.err.contains(QStringLiteral("Usage: tactiscope-cli simulate")));
+    }
+}
+
+TEST(Cli, SimulateWritesADeterministicCsvOfTheScan)
+{
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString first = dir.filePath(QStringLiteral("first.csv"));
+    const QString again = dir.filePath(QStringLiteral("again.csv"));
+    const QString other = dir.filePath(QStringLiteral("other.csv"));
+    const QString common = QStringLiteral("simulate --seconds 2 --output");
+    ASSERT_EQ(runCli(common.split(' ') + QStringList{first, QStringLiteral("--seed"), QStringLiteral("7")}).exitCode, 0);
+    ASSERT_EQ(runCli(common.split(' ') + QStringList{again, QStringLiteral("--seed"), QStringLiteral("7")}).exitCode, 0);
+    ASSERT_EQ(runCli(common.split(' ') + QStringList{other, QStringLiteral("--seed"), QStringLiteral("8")}).exitCode, 0);
+
+    const QStringList lines = readLines(first);
+    ASSERT_EQ(lines.size(), 1001);  // header + 2 s × 500 Hz
+    EXPECT_EQ(lines.front(), QStringLiteral("t,a,b"));
+    for (qsizetype i = 1; i < lines.size(); ++i) {
+        const QStringList cells = lines[i].split(QLatin1Char(','));
+        ASSERT_EQ(cells.size(), 3);
+        EXPECT_NEAR(cells[0].toDouble(), 0.002 * static_cast<double>(i - 1), 1e-12);
+        bool ok = false;
+        EXPECT_LT(std::abs(cells[1].toDouble(&ok)), 1e-3);  // strains, dimensionless
+        EXPECT_TRUE(ok);
+    }
+    EXPECT_EQ(readLines(again), lines);
+    EXPECT_NE(readLines(other), lines);
+}
+
+TEST(Cli, SimulateWritesToStandardOutputByDefault)
+{
+    const CliResult run = runCli({QStringLiteral("simulate"), QStringLiteral("--seconds"), QStringLiteral("0.1")});
+    EXPECT_EQ(run.exitCode, 0);
+    const QStringList lines = run.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    EXPECT_EQ(lines.size(), 51);
+    EXPECT_EQ(lines.front(), QStringLiteral("t,a,b"));
+}
+
+TEST(Cli, SimulateFailsClearlyWhenTheOutputCannotBeCreated)
+{
+    const CliResult run = runCli({QStringLiteral("simulate"), QStringLiteral("--output"),
+                            QStringLiteral("/nonexistent-dir/x.csv")});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_TRUE(firstLine(run.err).startsWith(QStringLiteral("tactiscope-cli: cannot create '/nonexistent-dir/x.csv'")));
+}

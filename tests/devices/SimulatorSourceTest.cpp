@@ -1,0 +1,78 @@
+// SimulatorSource: block framing, finite durations and real-time pacing.
+#include "devices/simulator/SimulatorSource.h"
+
+#include "core/SampleBlock.h"
+#include "devices/simulator/ScenarioCatalog.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <stdexcept>
+
+using namespace std::chrono_literals;
+using tactiscope::core::SampleBlock;
+using tactiscope::devices::ReadStatus;
+using tactiscope::devices::simulator::makeScenario;
+using tactiscope::devices::simulator::Pacing;
+using tactiscope::devices::simulator::SimulatorSource;
+
+TEST(SimulatorSource, NamesItselfAfterTheScenario)
+{
+    const SimulatorSource source(makeScenario("panel-scan"));
+    EXPECT_EQ(source.name(), "Simulator — panel scan");
+    EXPECT_EQ(source.nominalSampleRate_hz(), 500.0);
+    EXPECT_EQ(source.channels().size(), 2u);
+}
+
+TEST(SimulatorSource, ProducesContiguousBlocksUntilTheDurationEnds)
+{
+    // 1.01 s at 500 Hz is 505 samples: 50 full blocks of 10 and one of 5.
+    SimulatorSource source(makeScenario("panel-scan"), {Pacing::AsFastAsPossible, 10, 1.01});
+    SampleBlock block;
+    std::uint64_t samples = 0;
+    std::uint32_t blocks = 0;
+    while (source.readBlock(block, 0ms) == ReadStatus::Block) {
+        EXPECT_EQ(block.firstSampleIndex(), samples);
+        EXPECT_EQ(block.sequence(), blocks);
+        EXPECT_DOUBLE_EQ(block.t0_s(), static_cast<double>(samples) * 0.002);
+        EXPECT_DOUBLE_EQ(block.dt_s(), 0.002);
+        EXPECT_EQ(block.channelCount(), 2u);
+        samples += block.sampleCount();
+        ++blocks;
+    }
+    EXPECT_EQ(samples, 505u);
+    EXPECT_EQ(blocks, 51u);
+    EXPECT_EQ(block.sampleCount(), 5u);
+    EXPECT_EQ(source.readBlock(block, 0ms), ReadStatus::Finished);
+}
+
+TEST(SimulatorSource, RealTimePacingNeverDeliversABlockBeforeItsTime)
+{
+    SimulatorSource source(makeScenario("panel-scan"), {Pacing::RealTime, 10, std::nullopt});
+    SampleBlock block;
+    // The first block (20 ms of data) cannot be ready at once.
+    EXPECT_EQ(source.readBlock(block, 0ms), ReadStatus::Timeout);
+
+    const auto start = std::chrono::steady_clock::now();
+    std::uint64_t samples = 0;
+    while (samples < 100) {
+        if (source.readBlock(block, 50ms) == ReadStatus::Block) samples += block.sampleCount();
+    }
+    // 100 samples at 500 Hz take 200 ms of simulated time; the clock
+    // started at the first call, before `start`.
+    EXPECT_GE(std::chrono::steady_clock::now() - start, 150ms);
+}
+
+TEST(SimulatorSource, RejectsBadOptions)
+{
+    EXPECT_THROW(SimulatorSource(nullptr), std::invalid_argument);
+    EXPECT_THROW(SimulatorSource(makeScenario("panel-scan"), {Pacing::RealTime, 0, std::nullopt}),
+                 std::invalid_argument);
+    EXPECT_THROW(SimulatorSource(makeScenario("panel-scan"), {Pacing::RealTime, 10, -1.0}), std::invalid_argument);
+}
+
+TEST(ScenarioCatalog, KnowsPanelScanAndRefusesUnknownIds)
+{
+    EXPECT_NE(makeScenario("panel-scan"), nullptr);
+    EXPECT_EQ(makeScenario("no-such-scenario"), nullptr);
+}

@@ -1,0 +1,86 @@
+// LivePlotWidget on real widgets (offscreen): decimation to the screen,
+// one lane per unit, and the display's own overrun accounting.
+#include "ui/LivePlotWidget.h"
+
+#include "core/SampleBlock.h"
+#include "support/Screenshot.h"
+#include "support/WaitFor.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+using namespace tactiscope;
+using tactiscope::testing::saveScreenshot;
+using tactiscope::testing::waitFor;
+
+namespace {
+
+// `seconds` of a 1 Hz strain sine (±20 µε) and a slowly rising capacitance
+// around 50 pF, at 500 Hz, appended to `buffer` in 10-sample blocks.
+void fill(core::LiveBuffer& buffer, double seconds)
+{
+    const double dt = 0.002;
+    const auto total = static_cast<std::uint64_t>(seconds / dt);
+    for (std::uint64_t first = 0; first < total; first += 10) {
+        core::SampleBlock block(2, 10, static_cast<double>(first) * dt, dt, first);
+        for (std::size_t i = 0; i < 10; ++i) {
+            const double t = block.timeAt_s(i);
+            block.channel(0)[i] = 20e-6 * std::sin(2.0 * std::numbers::pi * t);
+            block.channel(1)[i] = 50e-12 + 0.1e-12 * t;
+        }
+        buffer.consume(block);
+    }
+}
+
+const std::vector<core::ChannelDescriptor> kChannels{{"gauge", "", core::ChannelKind::Strain},
+                                                     {"beam", "F", core::ChannelKind::Capacitance}};
+
+}  // namespace
+
+TEST(LivePlotWidget, DrawsAtMostTwoPointsPerPixelColumnInOneLanePerUnit)
+{
+    auto buffer = std::make_shared<core::LiveBuffer>(2, 20000);
+    fill(*buffer, 20.0);  // 10 000 samples; the 10 s window holds 5 000
+    ui::LivePlotWidget plot;
+    plot.resize(900, 600);
+    plot.show();
+    plot.setSource(buffer, kChannels, 500.0);
+
+    ASSERT_TRUE(waitFor([&] { return plot.drawnPointCount(0) > 0; }, 2000));
+    EXPECT_EQ(plot.laneCount(), 2u);
+    EXPECT_EQ(plot.samplesReceived(), 10000u);
+    EXPECT_EQ(plot.samplesOverrun(), 0u);
+    // The plot area is narrower than the widget, so 2 × 900 + 2 bounds it.
+    EXPECT_LE(plot.drawnPointCount(0), 2 * 900 + 2);
+    EXPECT_LT(plot.drawnPointCount(0), 5000);
+    EXPECT_GT(plot.drawnPointCount(1), 0);
+    EXPECT_FALSE(saveScreenshot(plot, QStringLiteral("live-plot-two-lanes")).isEmpty());
+}
+
+TEST(LivePlotWidget, CountsSamplesItMissedWhenTheBufferOverran)
+{
+    auto buffer = std::make_shared<core::LiveBuffer>(2, 100);
+    fill(*buffer, 2.0);  // 1000 samples into a 100-sample buffer
+    ui::LivePlotWidget plot;
+    plot.show();
+    plot.setSource(buffer, kChannels, 500.0);
+    ASSERT_TRUE(waitFor([&] { return plot.samplesReceived() > 0; }, 2000));
+    EXPECT_EQ(plot.samplesReceived(), 1000u);
+    EXPECT_EQ(plot.samplesOverrun(), 900u);
+}
+
+TEST(LivePlotWidget, ClearingTheSourceRemovesTheTraces)
+{
+    auto buffer = std::make_shared<core::LiveBuffer>(2, 2000);
+    fill(*buffer, 1.0);
+    ui::LivePlotWidget plot;
+    plot.show();
+    plot.setSource(buffer, kChannels, 500.0);
+    ASSERT_TRUE(waitFor([&] { return plot.drawnPointCount(0) > 0; }, 2000));
+    plot.clearSource();
+    EXPECT_EQ(plot.drawnPointCount(0), 0);
+    EXPECT_EQ(plot.laneCount(), 0u);
+    EXPECT_EQ(plot.samplesReceived(), 0u);
+}

@@ -1,0 +1,73 @@
+// The main window against the real-time simulator: live samples reach the
+// plot and the status bar, and a screenshot shows what a user sees.
+#include "ui/MainWindow.h"
+
+#include "devices/simulator/ScenarioCatalog.h"
+#include "devices/simulator/SimulatorSource.h"
+#include "support/Screenshot.h"
+#include "support/WaitFor.h"
+#include "ui/LivePlotWidget.h"
+
+#include <QLabel>
+
+#include <gtest/gtest.h>
+
+using namespace tactiscope;
+using tactiscope::testing::saveScreenshot;
+using tactiscope::testing::waitFor;
+
+namespace {
+
+std::unique_ptr<devices::BlockSource> liveSimulator()
+{
+    return std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario("panel-scan"));
+}
+
+QString labelText(const ui::MainWindow& window, const char* name)
+{
+    const auto* label = window.findChild<QLabel*>(QString::fromLatin1(name));
+    return label ? label->text() : QString();
+}
+
+}  // namespace
+
+TEST(MainWindow, ShowsLiveSimulatorSamplesWithinTwoSeconds)
+{
+    ui::MainWindow window;
+    window.connectSource(liveSimulator());
+    window.show();
+    ASSERT_TRUE(window.isConnected());
+    EXPECT_TRUE(waitFor(
+        [&] { return window.livePlot()->drawnPointCount(0) > 0 && window.livePlot()->drawnPointCount(1) > 0; },
+        2000));
+    EXPECT_EQ(labelText(window, "deviceLabel"), QStringLiteral("Simulator — panel scan"));
+    EXPECT_TRUE(waitFor([&] { return labelText(window, "stateLabel") == QStringLiteral("Streaming"); }, 2000));
+}
+
+TEST(MainWindow, StatusBarReportsTheMeasuredRateAndSampleCount)
+{
+    ui::MainWindow window;
+    window.resize(1200, 720);
+    window.connectSource(liveSimulator());
+    window.show();
+    // The rate is measured over one second; give the traces a few strokes.
+    ASSERT_TRUE(waitFor([&] { return labelText(window, "rateLabel").contains(QStringLiteral("Hz (nominal")); }, 5000));
+    tactiscope::testing::runEventLoopFor(3000);
+    EXPECT_TRUE(labelText(window, "samplesLabel").endsWith(QStringLiteral("samples")));
+    EXPECT_FALSE(labelText(window, "samplesLabel").contains(QStringLiteral("lost")));
+    EXPECT_EQ(window.livePlot()->samplesOverrun(), 0u);
+    EXPECT_FALSE(saveScreenshot(window, QStringLiteral("main-window")).isEmpty());
+}
+
+TEST(MainWindow, DisconnectStopsTheStreamAndClearsThePlot)
+{
+    ui::MainWindow window;
+    window.connectSource(liveSimulator());
+    window.show();
+    ASSERT_TRUE(waitFor([&] { return window.livePlot()->drawnPointCount(0) > 0; }, 2000));
+    window.disconnectSource();
+    EXPECT_FALSE(window.isConnected());
+    EXPECT_EQ(window.livePlot()->drawnPointCount(0), 0);
+    EXPECT_EQ(window.windowTitle(), QStringLiteral("Tactiscope"));
+    EXPECT_EQ(labelText(window, "deviceLabel"), QStringLiteral("No device"));
+}

@@ -1,0 +1,205 @@
+// LivePlotWidget: frame loop, local history, decimation and lane layout.
+#include "ui/LivePlotWidget.h"
+
+#include "core/signal/MinMaxDecimation.h"
+#include "ui/DisplayUnits.h"
+
+#include <qcustomplot.h>
+
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace tactiscope::ui {
+namespace {
+
+// ~40 frames per second; the timer is single-shot and re-armed after each
+// frame, so a slow frame delays the next one instead of queueing more.
+constexpr int kFrameInterval_ms = 25;
+
+// Okabe–Ito palette: distinguishable with the common colour-vision deficiencies.
+constexpr std::array<QRgb, 8> kTraceColours{0x0072B2, 0xE69F00, 0x009E73, 0xD55E00,
+                                            0xCC79A7, 0x56B4E9, 0x000000, 0xF0E442};
+
+}  // namespace
+
+LivePlotWidget::LivePlotWidget(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot(this))
+{
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(6, 6, 6, 0);
+    layout->addWidget(m_plot);
+
+    m_laneMargins = new QCPMarginGroup(m_plot);
+    m_plot->setPlottingHint(QCP::phFastPolylines, true);
+    m_plot->setNoAntialiasingOnDrag(true);
+    m_plot->legend->setVisible(true);
+    m_plot->legend->setBrush(QColor(255, 255, 255, 220));
+    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+    m_plot->xAxis->setLabel(tr("Time (s)"));
+    m_plot->xAxis->setRange(0.0, m_window_s);
+
+    m_frameTimer.setSingleShot(true);
+    m_frameTimer.setInterval(kFrameInterval_ms);
+    connect(&m_frameTimer, &QTimer::timeout, this, &LivePlotWidget::refresh);
+}
+
+LivePlotWidget::~LivePlotWidget() = default;
+
+void LivePlotWidget::setSource(std::shared_ptr<const core::LiveBuffer> buffer,
+                               const std::vector<core::ChannelDescriptor>& channels, double sampleRate_hz)
+{
+    clearSource();
+    if (!buffer || channels.size() != buffer->channelCount() || !(sampleRate_hz > 0.0)) return;
+
+    m_buffer = std::move(buffer);
+    // Room for the longest window plus a frame's worth of slack.
+    const auto capacity = static_cast<std::size_t>(std::ceil(sampleRate_hz * (kMaxWindow_s + 1.0)));
+    m_time = std::make_unique<core::RingBuffer<double>>(capacity);
+    m_values.assign(channels.size(), core::RingBuffer<double>(capacity));
+    buildPlotItems(channels);
+    scheduleFrame();
+}
+
+void LivePlotWidget::clearSource()
+{
+    m_frameTimer.stop();
+    m_buffer.reset();
+    m_cursor = {};
+    m_time.reset();
+    m_values.clear();
+    removePlotItems();
+    m_plot->replot();
+}
+
+void LivePlotWidget::setWindowLength(double seconds)
+{
+    if (!(seconds > 0.0)) return;
+    m_window_s = std::min(seconds, kMaxWindow_s);
+}
+
+int LivePlotWidget::drawnPointCount(std::size_t channel) const
+{
+    return channel < m_graphs.size() ? m_graphs[channel]->dataCount() : 0;
+}
+
+void LivePlotWidget::buildPlotItems(const std::vector<core::ChannelDescriptor>& channels)
+{
+    std::vector<DisplayUnit> laneUnits;
+    for (std::size_t c = 0; c < channels.size(); ++c) {
+        const DisplayUnit unit = displayUnitFor(channels[c]);
+        auto found = std::find(laneUnits.begin(), laneUnits.end(), unit);
+        const auto lane = static_cast<std::size_t>(found - laneUnits.begin());
+        if (found == laneUnits.end()) {
+            laneUnits.push_back(unit);
+            // Lane 0 reuses the plot's default axis rect (it owns the legend).
+            QCPAxisRect* rect = m_plot->axisRect();
+            if (lane > 0) {
+                rect = new QCPAxisRect(m_plot);
+                m_plot->plotLayout()->addElement(static_cast<int>(lane), 0, rect);
+                rect->axis(QCPAxis::atBottom)->setLabel(tr("Time (s)"));
+            }
+            rect->setMarginGroup(QCP::msLeft | QCP::msRight, m_laneMargins);
+            rect->axis(QCPAxis::atLeft)->setLabel(unit.axisTitle());
+            m_lanes.push_back({rect});
+        }
+        QCPAxisRect* rect = m_lanes[lane].rect;
+        QCPGraph* graph = m_plot->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+        graph->setName(QString::fromStdString(channels[c].name));
+        graph->setPen(QPen(QColor(kTraceColours[c % kTraceColours.size()]), 1.5));
+        graph->setAdaptiveSampling(false);  // we decimate ourselves
+        m_graphs.push_back(graph);
+        m_graphLane.push_back(lane);
+        m_graphScale.push_back(unit.scale);
+    }
+}
+
+void LivePlotWidget::removePlotItems()
+{
+    m_plot->clearGraphs();
+    // Extra lanes live in rows 1.. of the layout; row 0 is the default rect.
+    for (int row = m_plot->plotLayout()->rowCount() - 1; row > 0; --row) {
+        m_plot->plotLayout()->remove(m_plot->plotLayout()->element(row, 0));
+    }
+    m_plot->plotLayout()->simplify();
+    m_plot->axisRect()->setMarginGroup(QCP::msLeft | QCP::msRight, nullptr);
+    m_lanes.clear();
+    m_graphs.clear();
+    m_graphLane.clear();
+    m_graphScale.clear();
+}
+
+void LivePlotWidget::scheduleFrame()
+{
+    if (m_buffer) m_frameTimer.start();
+}
+
+std::uint64_t LivePlotWidget::firstIndexAtOrAfter(double t_s) const
+{
+    std::uint64_t lo = m_time->oldestIndex();
+    std::uint64_t hi = m_time->endIndex();
+    while (lo < hi) {
+        const std::uint64_t mid = lo + (hi - lo) / 2;
+        if (m_time->at(mid) < t_s) lo = mid + 1;
+        else hi = mid;
+    }
+    return lo;
+}
+
+void LivePlotWidget::refresh()
+{
+    if (!m_buffer) return;
+    if (m_buffer->readNew(m_cursor, m_chunk) == 0) {
+        scheduleFrame();
+        return;
+    }
+    m_time->push(std::span<const double>(m_chunk.time_s));
+    for (std::size_t c = 0; c < m_values.size(); ++c) m_values[c].push(std::span<const double>(m_chunk.values[c]));
+
+    // Until a full window has arrived the traces grow from the left edge;
+    // after that the window scrolls with the newest sample at the right.
+    const double latest_s = m_time->at(m_time->endIndex() - 1);
+    const double start_s = std::max(latest_s - m_window_s, m_time->at(m_time->oldestIndex()));
+    const double end_s = start_s + m_window_s;
+    const std::uint64_t first = firstIndexAtOrAfter(start_s);
+    const auto count = static_cast<std::size_t>(m_time->endIndex() - first);
+    m_visibleTime.resize(count);
+    m_time->copy(first, m_visibleTime);
+
+    const int width_px = std::max(1, m_plot->axisRect()->width());
+    const double columnWidth_s = m_window_s / width_px;
+    std::vector<double> laneMin(m_lanes.size(), std::numeric_limits<double>::infinity());
+    std::vector<double> laneMax(m_lanes.size(), -std::numeric_limits<double>::infinity());
+    for (std::size_t c = 0; c < m_graphs.size(); ++c) {
+        m_visibleValues.resize(count);
+        m_values[c].copy(first, m_visibleValues);
+        core::signal::decimateMinMax(m_visibleTime, m_visibleValues, columnWidth_s, m_decimatedTime, m_decimatedValues);
+        QVector<double> keys(m_decimatedTime.begin(), m_decimatedTime.end());
+        QVector<double> values(static_cast<qsizetype>(m_decimatedValues.size()));
+        const double scale = m_graphScale[c];
+        for (std::size_t i = 0; i < m_decimatedValues.size(); ++i) {
+            values[static_cast<qsizetype>(i)] = m_decimatedValues[i] * scale;
+        }
+        if (!values.isEmpty()) {
+            const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+            const std::size_t lane = m_graphLane[c];
+            laneMin[lane] = std::min(laneMin[lane], *lo);
+            laneMax[lane] = std::max(laneMax[lane], *hi);
+        }
+        m_graphs[c]->setData(keys, values, true);
+    }
+
+    for (std::size_t lane = 0; lane < m_lanes.size(); ++lane) {
+        Lane& l = m_lanes[lane];
+        l.rect->axis(QCPAxis::atBottom)->setRange(start_s, end_s);
+        if (!std::isfinite(laneMin[lane])) continue;
+        l.range = nextAxisRange(l.range, laneMin[lane], laneMax[lane]);
+        l.rect->axis(QCPAxis::atLeft)->setRange(l.range.lower, l.range.upper);
+    }
+    m_plot->replot();
+    scheduleFrame();
+}
+
+}  // namespace tactiscope::ui

@@ -1,0 +1,98 @@
+// LivePlotWidget shows the newest seconds of every channel of one device as
+// scrolling traces. It pulls new samples from a LiveBuffer on a frame timer
+// (about 40 Hz, re-armed only after a frame is built so frames never pile up),
+// keeps its own copy of the visible window, reduces it to min/max per pixel
+// column and replots only when new data arrived. Channels with the same
+// display unit share a lane; each unit gets its own lane, stacked vertically.
+//
+// GUI thread only. QCustomPlot stays out of this header on purpose: its
+// header is expensive to compile.
+#pragma once
+
+#include "core/ChannelDescriptor.h"
+#include "core/LiveBuffer.h"
+#include "core/RingBuffer.h"
+#include "ui/AxisAutoRange.h"
+
+#include <QTimer>
+#include <QWidget>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+class QCustomPlot;
+class QCPGraph;
+class QCPAxisRect;
+class QCPMarginGroup;
+
+namespace tactiscope::ui {
+
+class LivePlotWidget : public QWidget {
+    Q_OBJECT
+
+public:
+    static constexpr double kDefaultWindow_s = 10.0;
+    static constexpr double kMaxWindow_s = 60.0;
+
+    explicit LivePlotWidget(QWidget* parent = nullptr);
+    ~LivePlotWidget() override;
+
+    // Starts plotting `buffer`, whose channels are described by `channels`,
+    // replacing whatever was shown. sampleRate_hz sizes the local history.
+    void setSource(std::shared_ptr<const core::LiveBuffer> buffer, const std::vector<core::ChannelDescriptor>& channels,
+                   double sampleRate_hz);
+    // Stops plotting and clears the traces.
+    void clearSource();
+
+    // Length of the scrolling time window, clamped to (0, kMaxWindow_s].
+    void setWindowLength(double seconds);
+    double windowLength_s() const { return m_window_s; }
+
+    // Number of stacked lanes (one per distinct display unit).
+    std::size_t laneCount() const { return m_lanes.size(); }
+    // Points drawn for a channel in the last frame (after decimation).
+    int drawnPointCount(std::size_t channel) const;
+    // Samples per channel taken from the buffer since setSource().
+    std::uint64_t samplesReceived() const { return m_cursor.next; }
+    // Samples the display missed because it fell behind the buffer.
+    std::uint64_t samplesOverrun() const { return m_cursor.overrun; }
+
+private:
+    struct Lane {
+        QCPAxisRect* rect = nullptr;
+        AxisRange range{0.0, 0.0};  // empty until the first frame
+    };
+
+    void scheduleFrame();
+    void refresh();
+    void buildPlotItems(const std::vector<core::ChannelDescriptor>& channels);
+    void removePlotItems();
+    std::uint64_t firstIndexAtOrAfter(double t_s) const;
+
+    QCustomPlot* m_plot = nullptr;
+    QCPMarginGroup* m_laneMargins = nullptr;  // keeps lanes' axes aligned
+    QTimer m_frameTimer;
+    double m_window_s = kDefaultWindow_s;
+
+    std::shared_ptr<const core::LiveBuffer> m_buffer;
+    core::LiveCursor m_cursor;
+    core::LiveChunk m_chunk;
+
+    // The display's own history, so each frame reads only new samples.
+    std::unique_ptr<core::RingBuffer<double>> m_time;
+    std::vector<core::RingBuffer<double>> m_values;
+
+    std::vector<Lane> m_lanes;
+    std::vector<QCPGraph*> m_graphs;       // one per channel
+    std::vector<std::size_t> m_graphLane;  // lane index per channel
+    std::vector<double> m_graphScale;      // SI → display factor per channel
+
+    // Per-frame scratch, kept to avoid reallocating every frame.
+    std::vector<double> m_visibleTime;
+    std::vector<double> m_visibleValues;
+    std::vector<double> m_decimatedTime;
+    std::vector<double> m_decimatedValues;
+};
+
+}  // namespace tactiscope::ui

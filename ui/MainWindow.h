@@ -1,0 +1,56 @@
+// The workstation's main window: the live plot of the connected device in
+// the centre, device and view menus, and a status bar with the device name,
+// its state, the measured sample rate and the samples received.
+//
+// The window owns the device's Acquisition (a worker thread) and the
+// LiveBuffer between them; it only reads counters and buffered samples, so
+// the GUI never waits on the device.
+#pragma once
+
+#include "devices/BlockSource.h"
+
+#include <QMainWindow>
+#include <QTimer>
+
+#include <memory>
+
+class QLabel;
+
+namespace tactiscope::devices {
+class Acquisition;
+}
+
+namespace tactiscope::ui {
+
+class LivePlotWidget;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    // Disconnects any current device, then streams from `source`.
+    void connectSource(std::unique_ptr<devices::BlockSource> source);
+    void disconnectSource();
+    bool isConnected() const { return m_acquisition != nullptr; }
+
+    LivePlotWidget* livePlot() const { return m_plot; }
+
+private:
+    void createMenus();
+    void createStatusBar();
+    void updateStatus();
+    void showAbout();
+
+    LivePlotWidget* m_plot = nullptr;
+    QLabel* m_deviceLabel = nullptr;
+    QLabel* m_stateLabel = nullptr;
+    QLabel* m_rateLabel = nullptr;
+    QLabel* m_samplesLabel = nullptr;
+    QTimer m_statusTimer;
+    std::unique_ptr<devices::Acquisition> m_acquisition;
+};
+
+}  // namespace tactiscope::ui
