@@ -8,7 +8,8 @@
 
 namespace tactiscope::core {
 
-LiveBuffer::LiveBuffer(std::size_t channelCount, std::size_t capacitySamples) : m_time(capacitySamples)
+LiveBuffer::LiveBuffer(std::size_t channelCount, std::size_t capacitySamples)
+    : m_time(capacitySamples)
 {
     if (channelCount == 0) throw std::invalid_argument("LiveBuffer needs at least one channel");
     m_channels.reserve(channelCount);

@@ -5,7 +5,8 @@
 
 namespace tactiscope::core {
 
-RateMeter::RateMeter(double window_s) : m_window_s(window_s)
+RateMeter::RateMeter(double window_s)
+    : m_window_s(window_s)
 {
     if (!(window_s > 0.0)) throw std::invalid_argument("RateMeter window must be positive");
 }

@@ -19,7 +19,8 @@ namespace tactiscope::core {
 template <typename T>
 class RingBuffer {
 public:
-    explicit RingBuffer(std::size_t capacity) : m_storage(capacity)
+    explicit RingBuffer(std::size_t capacity)
+        : m_storage(capacity)
     {
         if (capacity == 0) throw std::invalid_argument("RingBuffer capacity must be positive");
     }
@@ -66,8 +67,7 @@ public:
     // The range must be held: from >= oldestIndex() and the end <= endIndex().
     void copy(std::uint64_t from, std::span<T> out) const
     {
-        if (from < oldestIndex() || from + out.size() > m_written)
-            throw std::out_of_range("RingBuffer range not held");
+        if (from < oldestIndex() || from + out.size() > m_written) throw std::out_of_range("RingBuffer range not held");
         const std::size_t first = slot(from);
         const std::size_t head = std::min(out.size(), capacity() - first);
         std::copy_n(m_storage.begin() + static_cast<std::ptrdiff_t>(first), head, out.begin());

@@ -20,7 +20,8 @@ double steadySeconds()
 
 }  // namespace
 
-Acquisition::Acquisition(std::unique_ptr<BlockSource> source) : m_source(std::move(source))
+Acquisition::Acquisition(std::unique_ptr<BlockSource> source)
+    : m_source(std::move(source))
 {
     if (!m_source) throw std::invalid_argument("acquisition needs a source");
 }

@@ -25,11 +25,11 @@ enum class AcquisitionState { Idle, Streaming, Finished, Failed };
 
 struct AcquisitionStats {
     AcquisitionState state = AcquisitionState::Idle;
-    std::uint64_t samples = 0;      // per channel, since start
+    std::uint64_t samples = 0;  // per channel, since start
     std::uint64_t blocks = 0;
     std::uint64_t samplesLost = 0;  // from gaps in the device's sample index
     std::optional<double> measuredRate_hz;
-    std::string error;              // set when state is Failed
+    std::string error;  // set when state is Failed
 };
 
 class Acquisition {

@@ -26,7 +26,9 @@ constexpr std::array<QRgb, 8> kTraceColours{0x0072B2, 0xE69F00, 0x009E73, 0xD55E
 
 }  // namespace
 
-LivePlotWidget::LivePlotWidget(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot(this))
+LivePlotWidget::LivePlotWidget(QWidget* parent)
+    : QWidget(parent),
+      m_plot(new QCustomPlot(this))
 {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(6, 6, 6, 0);
@@ -142,8 +144,10 @@ std::uint64_t LivePlotWidget::firstIndexAtOrAfter(double t_s) const
     std::uint64_t hi = m_time->endIndex();
     while (lo < hi) {
         const std::uint64_t mid = lo + (hi - lo) / 2;
-        if (m_time->at(mid) < t_s) lo = mid + 1;
-        else hi = mid;
+        if (m_time->at(mid) < t_s)
+            lo = mid + 1;
+        else
+            hi = mid;
     }
     return lo;
 }

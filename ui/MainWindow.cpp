@@ -10,6 +10,7 @@
 
 #include <QActionGroup>
 #include <QApplication>
+#include <QIcon>
 #include <QLabel>
 #include <QLocale>
 #include <QMenuBar>
@@ -40,9 +41,12 @@ QString stateText(const devices::AcquisitionStats& stats)
 
 }  // namespace
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_plot(new LivePlotWidget(this))
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent),
+      m_plot(new LivePlotWidget(this))
 {
     setWindowTitle(tr("Tactiscope"));
+    setWindowIcon(QIcon(QStringLiteral(":/tactiscope/icons/tactiscope.svg")));
     setCentralWidget(m_plot);
     resize(1200, 720);
     createMenus();
@@ -63,8 +67,8 @@ void MainWindow::createMenus()
 
     QMenu* device = menuBar()->addMenu(tr("&Device"));
     device->addAction(tr("Connect &simulator (panel scan)"), this, [this] {
-        connectSource(std::make_unique<devices::simulator::SimulatorSource>(
-            devices::simulator::makeScenario("panel-scan")));
+        connectSource(
+            std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario("panel-scan")));
     });
     device->addAction(tr("&Disconnect"), this, &MainWindow::disconnectSource);
 
@@ -111,8 +115,8 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
     const double rate_hz = source->nominalSampleRate_hz();
     // Two seconds of headroom: the display reads 40 times a second, so only a
     // GUI stalled that long loses display samples (never recorded ones).
-    auto buffer = std::make_shared<core::LiveBuffer>(channels.size(),
-                                                     static_cast<std::size_t>(std::ceil(2.0 * rate_hz)) + 1);
+    auto buffer =
+        std::make_shared<core::LiveBuffer>(channels.size(), static_cast<std::size_t>(std::ceil(2.0 * rate_hz)) + 1);
     m_acquisition = std::make_unique<devices::Acquisition>(std::move(source));
     m_acquisition->addSink(buffer);
     m_plot->setSource(buffer, channels, rate_hz);
@@ -157,15 +161,14 @@ void MainWindow::updateStatus()
 
 void MainWindow::showAbout()
 {
-    QMessageBox::about(
-        this, tr("About Tactiscope"),
-        tr("<h3>Tactiscope %1</h3>"
-           "<p>An inspection workstation for cantilever tactile sensors.</p>"
-           "<p>It implements three published sensors:</p><ul>"
-           "<li>a surface deflection detector with a viscous-capsule shear-strain probe,</li>"
-           "<li>compliance detection with two cantilevers of different stiffness,</li>"
-           "<li>a capacitive uniform-strength beam for µN forces.</li></ul>")
-            .arg(QString::fromUtf8(core::versionString())));
+    QMessageBox::about(this, tr("About Tactiscope"),
+                       tr("<h3>Tactiscope %1</h3>"
+                          "<p>An inspection workstation for cantilever tactile sensors.</p>"
+                          "<p>It implements three published sensors:</p><ul>"
+                          "<li>a surface deflection detector with a viscous-capsule shear-strain probe,</li>"
+                          "<li>compliance detection with two cantilevers of different stiffness,</li>"
+                          "<li>a capacitive uniform-strength beam for µN forces.</li></ul>")
+                           .arg(QString::fromUtf8(core::versionString())));
 }
 
 }  // namespace tactiscope::ui

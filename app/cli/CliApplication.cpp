@@ -29,7 +29,8 @@ QString usage()
     out << "Usage: tactiscope-cli [--help] [--version] <command> [options]\n\n"
         << "Headless tools of Tactiscope, the tactile-sensor inspection workstation.\n\n"
         << "Commands:\n";
-    for (const Command& command : kCommands) out << "  " << QString(command.name).leftJustified(12) << command.summary << '\n';
+    for (const Command& command : kCommands)
+        out << "  " << QString(command.name).leftJustified(12) << command.summary << '\n';
     out << "\nRun 'tactiscope-cli <command> --help' for a command's options.\n"
         << "Exit codes: 0 success, 1 the command failed, 2 bad arguments or input.\n";
     return text;
@@ -49,7 +50,8 @@ int runCli(const QStringList& arguments)
         QTextStream(stdout) << "tactiscope-cli " << core::versionString() << '\n';
         return kExitOk;
     }
-    if (first.startsWith(QLatin1Char('-'))) return usageError(QStringLiteral("unknown option '%1'").arg(first), usage());
+    if (first.startsWith(QLatin1Char('-')))
+        return usageError(QStringLiteral("unknown option '%1'").arg(first), usage());
     for (const Command& command : kCommands) {
         if (first == QLatin1String(command.name)) return command.run(arguments.mid(1));
     }

@@ -3,7 +3,6 @@
 
 #include <QTextStream>
 
-
 namespace tactiscope::cli {
 
 void printError(const QString& message)

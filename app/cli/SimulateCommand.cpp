@@ -61,9 +61,8 @@ int runSimulate(const QStringList& arguments)
                                            QStringLiteral("S"), QStringLiteral("10"));
     const QCommandLineOption seedOption(QStringLiteral("seed"), QStringLiteral("Noise seed (default 1)."),
                                         QStringLiteral("N"), QStringLiteral("1"));
-    const QCommandLineOption outputOption(QStringLiteral("output"),
-                                          QStringLiteral("Write to FILE instead of standard output."),
-                                          QStringLiteral("FILE"));
+    const QCommandLineOption outputOption(
+        QStringLiteral("output"), QStringLiteral("Write to FILE instead of standard output."), QStringLiteral("FILE"));
     parser.addOptions({scenarioOption, secondsOption, seedOption, outputOption});
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
@@ -77,14 +76,16 @@ int runSimulate(const QStringList& arguments)
                               .arg(parser.value(secondsOption)),
                           usage);
     const qulonglong seed = parser.value(seedOption).toULongLong(&ok);
-    if (!ok) return usageError(QStringLiteral("--seed must be a non-negative integer, got '%1'").arg(parser.value(seedOption)), usage);
+    if (!ok)
+        return usageError(
+            QStringLiteral("--seed must be a non-negative integer, got '%1'").arg(parser.value(seedOption)), usage);
     const QString scenarioId = parser.value(scenarioOption);
     auto scenario = devices::simulator::makeScenario(scenarioId.toStdString(), seed);
     if (!scenario)
         return usageError(QStringLiteral("unknown scenario '%1' (known: %2)").arg(scenarioId, scenarioList()), usage);
 
-    devices::simulator::SimulatorSource source(
-        std::move(scenario), {devices::simulator::Pacing::AsFastAsPossible, 500, seconds});
+    devices::simulator::SimulatorSource source(std::move(scenario),
+                                               {devices::simulator::Pacing::AsFastAsPossible, 500, seconds});
 
     if (!parser.isSet(outputOption)) {
         writeCsv(source, std::cout);

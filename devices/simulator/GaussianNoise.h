@@ -12,7 +12,11 @@ namespace tactiscope::devices::simulator {
 
 class GaussianNoise {
 public:
-    GaussianNoise(std::uint64_t seed, double sigma) : m_engine(seed), m_sigma(sigma) {}
+    GaussianNoise(std::uint64_t seed, double sigma)
+        : m_engine(seed),
+          m_sigma(sigma)
+    {
+    }
 
     double next()
     {

@@ -24,18 +24,18 @@
 namespace tactiscope::devices::simulator {
 
 struct PanelScanParameters {
-    double sampleRate_hz = 500.0;            // the paper's Δt = 2 ms
-    double strokeAmplitude_m = 0.100;        // half of the ~200 mm stroke
-    double strokeFrequency_hz = 0.5;         // "slow movement"
-    double cantileverSpacing_m = 0.015;      // the prototype's 15 mm
+    double sampleRate_hz = 500.0;        // the paper's Δt = 2 ms
+    double strokeAmplitude_m = 0.100;    // half of the ~200 mm stroke
+    double strokeFrequency_hz = 0.5;     // "slow movement"
+    double cantileverSpacing_m = 0.015;  // the prototype's 15 mm
     bool hasDefect = true;
-    double defectPosition_m = 0.030;         // from the stroke centre
+    double defectPosition_m = 0.030;  // from the stroke centre
     double defectDepth_m = 50e-6;
-    double defectWidth_m = 0.004;            // Gaussian σ of the dent profile
-    double strainPerRadian = 4e-3;           // inclination change → gauge strain
-    double adaptationTime_s = 0.15;          // capsule relaxation time constant
+    double defectWidth_m = 0.004;    // Gaussian σ of the dent profile
+    double strainPerRadian = 4e-3;   // inclination change → gauge strain
+    double adaptationTime_s = 0.15;  // capsule relaxation time constant
     double strainPerAcceleration_s2_per_m = 1e-5;
-    double noiseSigma = 0.5e-6;              // strain, per gauge
+    double noiseSigma = 0.5e-6;  // strain, per gauge
     bool faceToFace = false;
     std::uint64_t seed = 1;
 };

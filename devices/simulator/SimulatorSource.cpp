@@ -11,7 +11,8 @@
 namespace tactiscope::devices::simulator {
 
 SimulatorSource::SimulatorSource(std::unique_ptr<SimulatedScenario> scenario, const SimulatorOptions& options)
-    : m_scenario(std::move(scenario)), m_options(options)
+    : m_scenario(std::move(scenario)),
+      m_options(options)
 {
     if (!m_scenario) throw std::invalid_argument("simulator needs a scenario");
     if (m_options.samplesPerBlock == 0) throw std::invalid_argument("simulator needs at least one sample per block");
@@ -38,8 +39,9 @@ ReadStatus SimulatorSource::readBlock(core::SampleBlock& out, std::chrono::milli
     if (m_options.pacing == Pacing::RealTime) {
         const auto now = std::chrono::steady_clock::now();
         if (!m_start) m_start = now;
-        const auto ready = *m_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                          std::chrono::duration<double>(static_cast<double>(m_produced + count) * dt_s));
+        const auto ready =
+            *m_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                           std::chrono::duration<double>(static_cast<double>(m_produced + count) * dt_s));
         if (ready > now + timeout) {
             std::this_thread::sleep_for(timeout);
             return ReadStatus::Timeout;

@@ -54,7 +54,8 @@ TEST(Cli, VersionPrintsTheBuildVersion)
 {
     const CliResult run = runCli({QStringLiteral("--version")});
     EXPECT_EQ(run.exitCode, 0);
-    EXPECT_EQ(run.out.trimmed(), QStringLiteral("tactiscope-cli ") + QString::fromUtf8(tactiscope::core::versionString()));
+    EXPECT_EQ(run.out.trimmed(),
+              QStringLiteral("tactiscope-cli ") + QString::fromUtf8(tactiscope::core::versionString()));
 }
 
 TEST(Cli, MissingCommandUnknownCommandAndBadFlagExitWithUsage)
@@ -99,9 +100,12 @@ TEST(Cli, SimulateWritesADeterministicCsvOfTheScan)
     const QString again = dir.filePath(QStringLiteral("again.csv"));
     const QString other = dir.filePath(QStringLiteral("other.csv"));
     const QString common = QStringLiteral("simulate --seconds 2 --output");
-    ASSERT_EQ(runCli(common.split(' ') + QStringList{first, QStringLiteral("--seed"), QStringLiteral("7")}).exitCode, 0);
-    ASSERT_EQ(runCli(common.split(' ') + QStringList{again, QStringLiteral("--seed"), QStringLiteral("7")}).exitCode, 0);
-    ASSERT_EQ(runCli(common.split(' ') + QStringList{other, QStringLiteral("--seed"), QStringLiteral("8")}).exitCode, 0);
+    ASSERT_EQ(runCli(common.split(' ') + QStringList{first, QStringLiteral("--seed"), QStringLiteral("7")}).exitCode,
+              0);
+    ASSERT_EQ(runCli(common.split(' ') + QStringList{again, QStringLiteral("--seed"), QStringLiteral("7")}).exitCode,
+              0);
+    ASSERT_EQ(runCli(common.split(' ') + QStringList{other, QStringLiteral("--seed"), QStringLiteral("8")}).exitCode,
+              0);
 
     const QStringList lines = readLines(first);
     ASSERT_EQ(lines.size(), 1001);  // header + 2 s × 500 Hz
@@ -129,8 +133,9 @@ TEST(Cli, SimulateWritesToStandardOutputByDefault)
 
 TEST(Cli, SimulateFailsClearlyWhenTheOutputCannotBeCreated)
 {
-    const CliResult run = runCli({QStringLiteral("simulate"), QStringLiteral("--output"),
-                            QStringLiteral("/nonexistent-dir/x.csv")});
+    const CliResult run =
+        runCli({QStringLiteral("simulate"), QStringLiteral("--output"), QStringLiteral("/nonexistent-dir/x.csv")});
     EXPECT_EQ(run.exitCode, 1);
-    EXPECT_TRUE(firstLine(run.err).startsWith(QStringLiteral("tactiscope-cli: cannot create '/nonexistent-dir/x.csv'")));
+    EXPECT_TRUE(
+        firstLine(run.err).startsWith(QStringLiteral("tactiscope-cli: cannot create '/nonexistent-dir/x.csv'")));
 }

@@ -7,8 +7,8 @@ using namespace tactiscope::core;
 
 TEST(ChannelDescriptor, KindNamesRoundTrip)
 {
-    for (ChannelKind kind : {ChannelKind::Strain, ChannelKind::Capacitance, ChannelKind::Force,
-                             ChannelKind::Position, ChannelKind::Other}) {
+    for (ChannelKind kind : {ChannelKind::Strain, ChannelKind::Capacitance, ChannelKind::Force, ChannelKind::Position,
+                             ChannelKind::Other}) {
         EXPECT_EQ(channelKindFromString(toString(kind)), kind);
     }
     EXPECT_EQ(toString(ChannelKind::Capacitance), "capacitance");

@@ -26,7 +26,9 @@ namespace {
 class ScriptedSource final : public devices::BlockSource {
 public:
     ScriptedSource(std::deque<core::SampleBlock> blocks, ReadStatus ending, std::string error = {})
-        : m_blocks(std::move(blocks)), m_ending(ending), m_error(std::move(error))
+        : m_blocks(std::move(blocks)),
+          m_ending(ending),
+          m_error(std::move(error))
     {
     }
     std::string name() const override { return "scripted"; }
@@ -116,8 +118,8 @@ TEST(Acquisition, ReportsTheSourcesErrorWhenItFails)
 
 TEST(Acquisition, StopsWithAnErrorWhenASinkFails)
 {
-    Acquisition acquisition(std::make_unique<ScriptedSource>(std::deque<core::SampleBlock>{blockAt(0, 3)},
-                                                             ReadStatus::Finished));
+    Acquisition acquisition(
+        std::make_unique<ScriptedSource>(std::deque<core::SampleBlock>{blockAt(0, 3)}, ReadStatus::Finished));
     acquisition.addSink(std::make_shared<ThrowingSink>());
     acquisition.start();
     const auto stats = waitUntilNotStreaming(acquisition);
@@ -127,8 +129,8 @@ TEST(Acquisition, StopsWithAnErrorWhenASinkFails)
 
 TEST(Acquisition, StopEndsALiveStreamAndKeepsItsCounts)
 {
-    Acquisition acquisition(std::make_unique<devices::simulator::SimulatorSource>(
-        devices::simulator::makeScenario("panel-scan")));
+    Acquisition acquisition(
+        std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario("panel-scan")));
     auto sink = std::make_shared<CollectingSink>();
     acquisition.addSink(sink);
     acquisition.start();

@@ -32,7 +32,7 @@ TEST(AxisAutoRange, ShrinksOnlyWhenTheDataFillsLessThanAThird)
 {
     const AxisRange current{0.0, 12.0};
     EXPECT_DOUBLE_EQ(nextAxisRange(current, 4.0, 8.5).upper, 12.0);  // 4.5 of 12 fills more than a third
-    const AxisRange r = nextAxisRange(current, 5.0, 8.0);           // 3 of 12 does not
+    const AxisRange r = nextAxisRange(current, 5.0, 8.0);            // 3 of 12 does not
     EXPECT_DOUBLE_EQ(r.lower, 4.7);
     EXPECT_DOUBLE_EQ(r.upper, 8.3);
 }

@@ -38,9 +38,10 @@ TEST(MainWindow, ShowsLiveSimulatorSamplesWithinTwoSeconds)
     window.show();
     ASSERT_TRUE(window.isConnected());
     EXPECT_TRUE(waitFor(
-        [&] { return window.livePlot()->drawnPointCount(0) > 0 && window.livePlot()->drawnPointCount(1) > 0; },
-        2000));
+        [&] { return window.livePlot()->drawnPointCount(0) > 0 && window.livePlot()->drawnPointCount(1) > 0; }, 2000));
     EXPECT_EQ(labelText(window, "deviceLabel"), QStringLiteral("Simulator — panel scan"));
+    EXPECT_EQ(window.windowTitle(), QStringLiteral("Tactiscope — Simulator — panel scan"));
+    EXPECT_FALSE(window.windowIcon().pixmap(64, 64).isNull());
     EXPECT_TRUE(waitFor([&] { return labelText(window, "stateLabel") == QStringLiteral("Streaming"); }, 2000));
 }
 
