@@ -8,7 +8,6 @@
 #include "core/detector/PartialCorrelationKernel.h"
 
 #include <cmath>
-#include <cstring>
 
 // Built with -O3 -ffp-contract=fast (see core/CMakeLists.txt) so a*b + c
 // becomes one fused multiply-add where the CPU has it.
@@ -23,17 +22,19 @@ namespace {
 
 using Vec = double __attribute__((vector_size(kLaneWidth * sizeof(double))));
 using Mask = long long __attribute__((vector_size(kLaneWidth * sizeof(long long))));
+// The same vector at 8-byte alignment, for loads and stores anywhere in a
+// double array. GCC gives vector types their element's alias set, so these
+// accesses keep type-based alias analysis intact (memcpy would not).
+using UnalignedVec = double __attribute__((vector_size(kLaneWidth * sizeof(double)), aligned(alignof(double))));
 
 TACTISCOPE_INLINE Vec load(const double* p)
 {
-    Vec v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
+    return *reinterpret_cast<const UnalignedVec*>(p);
 }
 
 TACTISCOPE_INLINE void store(double* p, Vec v)
 {
-    std::memcpy(p, &v, sizeof v);
+    *reinterpret_cast<UnalignedVec*>(p) = v;
 }
 
 TACTISCOPE_INLINE Vec splat(double x)
@@ -135,12 +136,8 @@ struct RunningMaximum {
     }
 };
 
-TACTISCOPE_INLINE Mask laneIndices(std::size_t g)
-{
-    Mask m;
-    for (std::size_t lane = 0; lane < kLaneWidth; ++lane) m[lane] = static_cast<long long>(g + lane);
-    return m;
-}
+constexpr Mask kFirstLanes = {0, 1, 2, 3, 4, 5, 6, 7};
+static_assert(kLaneWidth == 8, "kFirstLanes lists one index per lane");
 
 // One moment update for all lags of group g: s += w·(p − s) for the
 // exponential form, s += w·(p − p_leaving) for sliding sums.
@@ -175,6 +172,7 @@ void runPartialCorrelationKernel(const KernelInput& in, LagMoments& s, SampleMax
         const Vec x1 = splat(b[0]);
         RunningMaximum bestAb;
         RunningMaximum bestBa;
+        Mask index = kFirstLanes;  // lag index of each lane in the current group
 
         if (in.window == 0) {
             const Vec x00 = splat(a[0] * a[0] + eps2);
@@ -199,9 +197,9 @@ void runPartialCorrelationKernel(const KernelInput& in, LagMoments& s, SampleMax
                 updateExponential(&S[S23][g], w, x2 * x3);
                 updateExponential(&S[S33][g], w, x3 * x3 + eps2);
                 const Ratios r = partialCorrelations(covariance(s, g, 0, eps2));
-                const Mask index = laneIndices(g);
                 bestAb.offer(r.numAb, r.denAb, index);
                 bestBa.offer(r.numBa, r.denBa, index);
+                index += static_cast<long long>(kLaneWidth);
             }
         } else {
             const double* ao = a - in.window;
@@ -233,9 +231,9 @@ void runPartialCorrelationKernel(const KernelInput& in, LagMoments& s, SampleMax
                 updateSliding(&S[S23][g], w, x2 * x3, y2 * y3);
                 updateSliding(&S[S33][g], w, x3 * x3, y3 * y3);
                 const Ratios r = partialCorrelations(covariance(s, g, in.window, eps2));
-                const Mask index = laneIndices(g);
                 bestAb.offer(r.numAb, r.denAb, index);
                 bestBa.offer(r.numBa, r.denBa, index);
+                index += static_cast<long long>(kLaneWidth);
             }
         }
         out[j] = {bestAb.reduce(), bestBa.reduce()};
