@@ -3,9 +3,13 @@
 // kernel updates many lags with one vector instruction. Arrays are padded to
 // a multiple of kLaneWidth; padding lanes have weight 0 and never change.
 //
-// Exponential form: mean[j] and moment[jk] are the weighted mean ū and the
-// second moment S of eqs 8–9 (ε² included). Sliding-window form: they are
-// plain sums of u and uuᵀ over the window.
+// Exponential form: mean[j] is the weighted mean ū of eq. 8 and moment[jk]
+// the covariance V of eq. 10 divided by w·r (w = 1 − r), updated in Welford
+// form (see PartialCorrelationKernel.cpp). Sliding-window form: plain sums of
+// u and uuᵀ over the window.
+//
+// Padding lanes continue the lag sequence (last lag + 1, + 2, …) so that
+// contiguous lag sets stay contiguous; their weight is 0 and they never win.
 #pragma once
 
 #include <array>
@@ -23,13 +27,17 @@ enum MomentIndex : std::size_t { S00, S01, S02, S03, S11, S12, S13, S22, S23, S3
 struct LagMoments {
     std::size_t lagCount = 0;
     std::size_t paddedCount = 0;
-    std::vector<std::uint32_t> lag;  // k per lane; 0 in padding
+    std::vector<std::uint32_t> lag;  // k per lane
     std::vector<double> weight;      // exponential: 1 − r; sliding: 1; padding: 0
+    std::vector<double> forgetting;  // exponential: r; padding: ½
+    bool contiguous = false;         // lag[i] == lag[0] + i for every lane
     std::array<std::vector<double>, 4> mean;
     std::array<std::vector<double>, kMomentCount> moment;
 
-    // Sets up zeroed moments for the given lags and per-lag weights.
-    void assign(const std::vector<std::uint32_t>& lags, const std::vector<double>& weights);
+    // Sets up zeroed moments for increasing lags and their forgetting factors
+    // r (exponential form) or an empty vector (sliding form).
+    void assign(const std::vector<std::uint32_t>& lags, const std::vector<double>& forgettingFactors);
+    std::uint32_t largestLaneLag() const { return lag.back(); }
     void zero();
 };
 

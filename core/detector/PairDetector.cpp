@@ -21,12 +21,11 @@ double correlation(const LagMaximum& m)
 PairDetector::PairDetector(const DetectorParameters& parameters)
     : m_parameters(resolve(parameters))
 {
-    m_historyBack = m_parameters.maxLag() + m_parameters.window;
-    std::vector<double> weights = m_parameters.forgetting;
-    for (double& w : weights) w = m_parameters.window == 0 ? 1.0 - w : 1.0;
-    m_state.moments.assign(m_parameters.lags, weights);
+    m_state.moments.assign(m_parameters.lags,
+                           m_parameters.window == 0 ? m_parameters.forgetting : std::vector<double>{});
+    m_historyBack = m_state.moments.largestLaneLag() + m_parameters.window;
     m_maxima.resize(kRun);
-    m_scratch.resize(4 * m_state.moments.paddedCount);
+    m_scratch.resize(kernelScratchSize(m_state.moments, m_parameters.window));
     reset();
 }
 
@@ -42,7 +41,7 @@ void PairDetector::reset()
 
 void PairDetector::restore(const Snapshot& snapshot)
 {
-    if (snapshot.moments.lag != m_state.moments.lag || snapshot.moments.weight != m_state.moments.weight ||
+    if (snapshot.moments.lag != m_state.moments.lag || snapshot.moments.forgetting != m_state.moments.forgetting ||
         snapshot.historyA.size() != m_state.historyA.size())
         throw std::invalid_argument("detector snapshot was taken with other parameters");
     m_state = snapshot;
@@ -63,14 +62,10 @@ void PairDetector::process(std::span<const double> a, std::span<const double> b,
 {
     if (a.size() != b.size() || a.size() != out.size())
         throw std::invalid_argument("detector: a, b and output differ in length");
-    const std::size_t padded = m_state.moments.paddedCount;
     KernelInput input;
     input.epsilonSquared = m_parameters.epsilonSquared;
     input.window = m_parameters.window;
-    input.delayedA = m_scratch.data();
-    input.delayedB = m_scratch.data() + padded;
-    input.leavingA = m_scratch.data() + 2 * padded;
-    input.leavingB = m_scratch.data() + 3 * padded;
+    input.scratch = m_scratch.data();
 
     for (std::size_t done = 0; done < a.size();) {
         if (m_state.position + 1 > m_state.historyA.size()) compactHistory();

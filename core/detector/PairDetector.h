@@ -61,7 +61,7 @@ private:
     std::size_t m_historyBack = 0;  // samples kept behind the current one
     Snapshot m_state;
     std::vector<SampleMaxima> m_maxima;
-    std::vector<double> m_scratch;  // delayed and leaving samples, 4 × padded lags
+    std::vector<double> m_scratch;  // the kernel's working memory
 };
 
 }  // namespace tactiscope::core::detector

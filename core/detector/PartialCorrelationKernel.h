@@ -29,18 +29,17 @@ struct SampleMaxima {
 
 struct KernelInput {
     // a[j], b[j] is sample j of the run; a[j − k] must be readable for every
-    // k up to the largest lag (plus the window in the sliding form).
+    // lane's lag k (LagMoments::largestLaneLag()) plus the window.
     const double* a = nullptr;
     const double* b = nullptr;
     std::size_t count = 0;
     double epsilonSquared = 0.0;
     std::uint32_t window = 0;  // 0: exponential form
-    // Scratch of LagMoments::paddedCount doubles each, for delayed samples.
-    double* delayedA = nullptr;
-    double* delayedB = nullptr;
-    double* leavingA = nullptr;  // sliding form only
-    double* leavingB = nullptr;
+    // Working memory of kernelScratchSize() doubles.
+    double* scratch = nullptr;
 };
+
+std::size_t kernelScratchSize(const LagMoments& moments, std::uint32_t window);
 
 // Advances `moments` by input.count samples and writes one SampleMaxima per sample.
 void runPartialCorrelationKernel(const KernelInput& input, LagMoments& moments, SampleMaxima* out);
