@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace tactiscope::core::detector {
 namespace {
@@ -11,16 +12,14 @@ namespace {
 // Samples handed to the kernel at once; also the history's extra room.
 constexpr std::size_t kRun = 4096;
 
-double correlation(const LagMaximum& m)
-{
-    return m.den > 0.0 ? std::copysign(std::sqrt(std::abs(m.num) / m.den), m.num) : 0.0;
-}
-
 }  // namespace
 
-PairDetector::PairDetector(const DetectorParameters& parameters)
-    : m_parameters(resolve(parameters))
+PairDetector::PairDetector(const DetectorParameters& parameters, KernelVariant variant)
+    : m_parameters(resolve(parameters)),
+      m_variant(variant)
 {
+    if (!kernelVariantSupported(variant))
+        throw std::invalid_argument(std::string("this CPU cannot run the ") + toString(variant) + " detector kernel");
     m_state.moments.assign(m_parameters.lags,
                            m_parameters.window == 0 ? m_parameters.forgetting : std::vector<double>{});
     m_historyBack = m_state.moments.largestLaneLag() + m_parameters.window;
@@ -78,13 +77,13 @@ void PairDetector::process(std::span<const double> a, std::span<const double> b,
         input.a = ha;
         input.b = hb;
         input.count = n;
-        runPartialCorrelationKernel(input, m_state.moments, m_maxima.data());
+        runPartialCorrelationKernel(m_variant, input, m_state.moments, m_maxima.data());
 
         for (std::size_t i = 0; i < n; ++i) {
             const SampleMaxima& m = m_maxima[i];
             DetectorOutput& o = out[done + i];
-            o.rab = correlation(m.ab);
-            o.rba = correlation(m.ba);
+            o.rab = m.ab.lagIndex >= 0 ? signedRoot(m.ab.signedSquare) : 0.0;
+            o.rba = m.ba.lagIndex >= 0 ? signedRoot(m.ba.signedSquare) : 0.0;
             o.lagAb = m.ab.lagIndex >= 0 ? m_parameters.lags[static_cast<std::size_t>(m.ab.lagIndex)] : 0;
             o.lagBa = m.ba.lagIndex >= 0 ? m_parameters.lags[static_cast<std::size_t>(m.ba.lagIndex)] : 0;
             o.decision = decide(o.rab, o.rba, m_parameters.threshold);

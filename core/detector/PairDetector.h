@@ -23,8 +23,11 @@ namespace tactiscope::core::detector {
 
 class PairDetector {
 public:
-    // Throws std::invalid_argument for bad parameters (see resolve()).
-    explicit PairDetector(const DetectorParameters& parameters);
+    // Throws std::invalid_argument for bad parameters (see resolve()), and
+    // when `variant` is given but not supported by this CPU.
+    explicit PairDetector(const DetectorParameters& parameters, KernelVariant variant = bestKernelVariant());
+
+    KernelVariant kernelVariant() const { return m_variant; }
 
     const ResolvedParameters& parameters() const { return m_parameters; }
 
@@ -58,6 +61,7 @@ private:
     void compactHistory();
 
     ResolvedParameters m_parameters;
+    KernelVariant m_variant;
     std::size_t m_historyBack = 0;  // samples kept behind the current one
     Snapshot m_state;
     std::vector<SampleMaxima> m_maxima;

@@ -1,5 +1,5 @@
-// Partial-correlation kernel: GCC vector extensions (8 doubles per vector,
-// lowered to AVX-512, AVX2 or SSE2 by the target clone) across lags.
+// Partial-correlation kernel: GCC vector extensions across lags, compiled
+// three times (AVX-512, AVX2+FMA, baseline SSE2) with group widths 8, 4 and 2.
 //
 // Loop order: samples are taken in blocks of kBlock; within a block each group
 // of 8 lags runs through all the block's samples with its 14 state vectors in
@@ -23,160 +23,195 @@
 
 // Built with -O3 -ffp-contract=fast (see core/CMakeLists.txt) so a*b + c
 // becomes one fused multiply-add where the CPU has it.
-#define TACTISCOPE_KERNEL_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-// Every helper is forced inline: each clone must get its own copy compiled
-// for its instruction set, never a call into the baseline version.
+// Every helper is forced inline: each entry point must get its own copy
+// compiled for its instruction set, never a call into the baseline version.
 #define TACTISCOPE_INLINE [[gnu::always_inline]] inline
 
 namespace tactiscope::core::detector {
 namespace {
 
 // Samples per block: long enough to amortise loading a group's state, short
-// enough that the block's ratios (kBlock × lags × 4 doubles) stay in L1.
-constexpr std::size_t kBlock = 16;
+// enough that the block's per-sample maxima stay in L1.
+constexpr std::size_t kBlock = 64;
 
-using Vec = double __attribute__((vector_size(kLaneWidth * sizeof(double))));
-using Mask = long long __attribute__((vector_size(kLaneWidth * sizeof(long long))));
-// The same vector at 8-byte alignment, for loads and stores anywhere in a
-// double array. GCC gives vector types their element's alias set, so these
-// accesses keep type-based alias analysis intact (memcpy would not).
-using UnalignedVec = double __attribute__((vector_size(kLaneWidth * sizeof(double)), aligned(alignof(double))));
+// Vector types of N doubles and their lane masks. The group width follows the
+// register file: 8 lanes with AVX-512's 32 registers, 4 with AVX2's 16, 2
+// with SSE2; wider groups would spill the 14 state vectors to memory.
+template <std::size_t N>
+struct Lanes;
 
-constexpr Mask kFirstLanes = {0, 1, 2, 3, 4, 5, 6, 7};
-static_assert(kLaneWidth == 8, "kFirstLanes lists one index per lane");
+template <>
+struct Lanes<8> {
+    using Vec = double __attribute__((vector_size(8 * sizeof(double))));
+    using Mask = long long __attribute__((vector_size(8 * sizeof(long long))));
+    // At 8-byte alignment, for loads and stores anywhere in a double array.
+    // GCC gives vector types their element's alias set, so these accesses
+    // keep type-based alias analysis intact (memcpy would not).
+    using Unaligned = double __attribute__((vector_size(8 * sizeof(double)), aligned(alignof(double))));
+    static constexpr Mask kFirst = {0, 1, 2, 3, 4, 5, 6, 7};
+};
 
-TACTISCOPE_INLINE Vec load(const double* p)
+template <>
+struct Lanes<4> {
+    using Vec = double __attribute__((vector_size(4 * sizeof(double))));
+    using Mask = long long __attribute__((vector_size(4 * sizeof(long long))));
+    using Unaligned = double __attribute__((vector_size(4 * sizeof(double)), aligned(alignof(double))));
+    static constexpr Mask kFirst = {0, 1, 2, 3};
+};
+
+template <>
+struct Lanes<2> {
+    using Vec = double __attribute__((vector_size(2 * sizeof(double))));
+    using Mask = long long __attribute__((vector_size(2 * sizeof(long long))));
+    using Unaligned = double __attribute__((vector_size(2 * sizeof(double)), aligned(alignof(double))));
+    static constexpr Mask kFirst = {0, 1};
+};
+
+static_assert(kLaneWidth == 8, "a sample's best values are kept in 8 lanes");
+
+template <std::size_t N>
+using Vec = typename Lanes<N>::Vec;
+template <std::size_t N>
+using Mask = typename Lanes<N>::Mask;
+
+template <std::size_t N>
+TACTISCOPE_INLINE Vec<N> load(const double* p)
 {
-    return *reinterpret_cast<const UnalignedVec*>(p);
+    return *reinterpret_cast<const typename Lanes<N>::Unaligned*>(p);
 }
 
-TACTISCOPE_INLINE void store(double* p, Vec v)
+template <std::size_t N>
+TACTISCOPE_INLINE void store(double* p, Vec<N> v)
 {
-    *reinterpret_cast<UnalignedVec*>(p) = v;
+    *reinterpret_cast<typename Lanes<N>::Unaligned*>(p) = v;
 }
 
-TACTISCOPE_INLINE Vec splat(double x)
+template <std::size_t N>
+TACTISCOPE_INLINE Vec<N> splat(double x)
 {
-    return Vec{} + x;
+    return Vec<N>{} + x;
+}
+
+template <std::size_t N>
+TACTISCOPE_INLINE Mask<N> loadMask(const long long* p)
+{
+    return reinterpret_cast<Mask<N>>(load<N>(reinterpret_cast<const double*>(p)));
 }
 
 // |v| by clearing the sign bit: one AND, no compare into a mask register.
-TACTISCOPE_INLINE Vec absolute(Vec v)
+template <std::size_t N>
+TACTISCOPE_INLINE Vec<N> absolute(Vec<N> v)
 {
-    return reinterpret_cast<Vec>(reinterpret_cast<Mask>(v) & (Mask{} + 0x7fffffffffffffffLL));
+    return reinterpret_cast<Vec<N>>(reinterpret_cast<Mask<N>>(v) & (Mask<N>{} + 0x7fffffffffffffffLL));
 }
 
-// Covariance matrix entries v_jk of u = [a, b, a(t−k), b(t−k)] for 8 lags,
+// Covariance matrix entries v_jk of u = [a, b, a(t−k), b(t−k)] for N lags,
 // up to a positive factor per lane.
+template <std::size_t N>
 struct Covariance {
-    Vec v00, v01, v02, v03, v11, v12, v13, v22, v23, v33;
+    Vec<N> v00, v01, v02, v03, v11, v12, v13, v22, v23, v33;
+};
+
+// sign(R)·R² of R_ab and R_ba for N lags.
+template <std::size_t N>
+struct SignedSquares {
+    Vec<N> ab, ba;
 };
 
 // Partial correlations through Schur complements: for R_ab, the covariance
 // of (b, a(t−k)) given Z = (a, b(t−k)) is Σ_XX − Σ_XZ Σ_ZZ⁻¹ Σ_ZX; scaled by
 // det Σ_ZZ > 0 it needs no division, and the scale cancels in R. This equals
 // −U₂₃/√(U₂₂U₃₃) of eq. 4 with U = V⁻¹; R_ba likewise with X = (a, b(t−k)).
-// Each R is returned as num = sign(R)·c², den = c_xx·c_yy: R² = |num|/den.
-struct Ratios {
-    Vec numAb, denAb, numBa, denBa;
-};
-
-TACTISCOPE_INLINE Ratios partialCorrelations(const Covariance& c)
+// One division per direction gives sign(R)·R², which ranks lags like R; the
+// divider runs beside the multiply-add pipes that the rest keeps busy.
+template <std::size_t N>
+TACTISCOPE_INLINE SignedSquares<N> partialCorrelations(const Covariance<N>& c)
 {
-    const Vec dz = c.v00 * c.v33 - c.v03 * c.v03;
-    const Vec w1a = c.v33 * c.v01 - c.v03 * c.v13;
-    const Vec w1b = c.v00 * c.v13 - c.v03 * c.v01;
-    const Vec w2a = c.v33 * c.v02 - c.v03 * c.v23;
-    const Vec w2b = c.v00 * c.v23 - c.v03 * c.v02;
-    const Vec m11 = dz * c.v11 - (c.v01 * w1a + c.v13 * w1b);
-    const Vec m22 = dz * c.v22 - (c.v02 * w2a + c.v23 * w2b);
-    const Vec m12 = dz * c.v12 - (c.v01 * w2a + c.v13 * w2b);
+    const Vec<N> dz = c.v00 * c.v33 - c.v03 * c.v03;
+    const Vec<N> w1a = c.v33 * c.v01 - c.v03 * c.v13;
+    const Vec<N> w1b = c.v00 * c.v13 - c.v03 * c.v01;
+    const Vec<N> w2a = c.v33 * c.v02 - c.v03 * c.v23;
+    const Vec<N> w2b = c.v00 * c.v23 - c.v03 * c.v02;
+    const Vec<N> m11 = dz * c.v11 - (c.v01 * w1a + c.v13 * w1b);
+    const Vec<N> m22 = dz * c.v22 - (c.v02 * w2a + c.v23 * w2b);
+    const Vec<N> m12 = dz * c.v12 - (c.v01 * w2a + c.v13 * w2b);
 
-    const Vec dy = c.v11 * c.v22 - c.v12 * c.v12;
-    const Vec y0a = c.v22 * c.v01 - c.v12 * c.v02;
-    const Vec y0b = c.v11 * c.v02 - c.v12 * c.v01;
-    const Vec y3a = c.v22 * c.v13 - c.v12 * c.v23;
-    const Vec y3b = c.v11 * c.v23 - c.v12 * c.v13;
-    const Vec n00 = dy * c.v00 - (c.v01 * y0a + c.v02 * y0b);
-    const Vec n33 = dy * c.v33 - (c.v13 * y3a + c.v23 * y3b);
-    const Vec n03 = dy * c.v03 - (c.v01 * y3a + c.v02 * y3b);
-    return {m12 * absolute(m12), m11 * m22, n03 * absolute(n03), n00 * n33};
+    const Vec<N> dy = c.v11 * c.v22 - c.v12 * c.v12;
+    const Vec<N> y0a = c.v22 * c.v01 - c.v12 * c.v02;
+    const Vec<N> y0b = c.v11 * c.v02 - c.v12 * c.v01;
+    const Vec<N> y3a = c.v22 * c.v13 - c.v12 * c.v23;
+    const Vec<N> y3b = c.v11 * c.v23 - c.v12 * c.v13;
+    const Vec<N> n00 = dy * c.v00 - (c.v01 * y0a + c.v02 * y0b);
+    const Vec<N> n33 = dy * c.v33 - (c.v13 * y3a + c.v23 * y3b);
+    const Vec<N> n03 = dy * c.v03 - (c.v01 * y3a + c.v02 * y3b);
+    return {m12 * absolute<N>(m12) / (m11 * m22), n03 * absolute<N>(n03) / (n00 * n33)};
 }
 
-// Per sample, the per-lane best ratio num/den seen so far and its lag index.
-// Ratios compare by cross-multiplication (den > 0): no division.
+// Per sample, the per-lane best sign(R)·R² seen so far and its lag index.
 struct SampleBest {
-    double numAb[kLaneWidth], denAb[kLaneWidth], numBa[kLaneWidth], denBa[kLaneWidth];
+    double ab[kLaneWidth], ba[kLaneWidth];
     long long indexAb[kLaneWidth], indexBa[kLaneWidth];
 };
 
 TACTISCOPE_INLINE void startBest(SampleBest& best)
 {
-    store(best.numAb, splat(-2.0));  // below any partial correlation's −1
-    store(best.numBa, splat(-2.0));
-    store(best.denAb, splat(1.0));
-    store(best.denBa, splat(1.0));
+    store<8>(best.ab, splat<8>(-2.0));  // below any sign(R)·R² (≥ −1)
+    store<8>(best.ba, splat<8>(-2.0));
     std::fill(std::begin(best.indexAb), std::end(best.indexAb), -1);
     std::fill(std::begin(best.indexBa), std::end(best.indexBa), -1);
 }
 
-TACTISCOPE_INLINE Mask loadMask(const long long* p)
+// Keeps the larger of the stored and the candidate value in the first N lanes.
+template <std::size_t N>
+TACTISCOPE_INLINE void offer(double* value, long long* index, Vec<N> candidate, Mask<N> candidateIndex)
 {
-    return reinterpret_cast<Mask>(load(reinterpret_cast<const double*>(p)));
+    const Vec<N> best = load<N>(value);
+    const Mask<N> better = candidate > best;
+    store<N>(value, better ? candidate : best);
+    store<N>(reinterpret_cast<double*>(index), reinterpret_cast<Vec<N>>(better ? candidateIndex : loadMask<N>(index)));
 }
 
-TACTISCOPE_INLINE void offer(double* num, double* den, long long* index, Vec candidateNum, Vec candidateDen,
-                             Mask candidateIndex)
+// Offers one group's correlations for one sample. In the group that holds
+// padding lanes (weight 0) their value is set to −2 so they never win.
+template <std::size_t N, bool HasPadding>
+TACTISCOPE_INLINE void offerGroup(SampleBest& best, SignedSquares<N> r, Mask<N> index, Mask<N> padding)
 {
-    const Vec bestNum = load(num);
-    const Vec bestDen = load(den);
-    const Mask better = candidateNum * bestDen > bestNum * candidateDen;
-    store(num, better ? candidateNum : bestNum);
-    store(den, better ? candidateDen : bestDen);
-    store(reinterpret_cast<double*>(index), reinterpret_cast<Vec>(better ? candidateIndex : loadMask(index)));
+    if constexpr (HasPadding) {
+        r.ab = padding ? splat<N>(-2.0) : r.ab;
+        r.ba = padding ? splat<N>(-2.0) : r.ba;
+    }
+    offer<N>(best.ab, best.indexAb, r.ab, index);
+    offer<N>(best.ba, best.indexBa, r.ba, index);
 }
 
-// The best of the 8 lanes: one division turns each lane's ratio into
-// sign(R)·R², a shuffle tree finds the largest, and on a tie the smaller lag
-// index wins.
-TACTISCOPE_INLINE LagMaximum reduceBest(const double* num, const double* den, const long long* index)
+// The best of the 8 lanes by a shuffle tree; on a tie the smaller lag index wins.
+TACTISCOPE_INLINE LagMaximum reduceBest(const double* value, const long long* index)
 {
-    const Vec n = load(num);
-    const Vec d = load(den);
-    const Vec q = n / d;
-    Vec m = q;
-    m = m > __builtin_shuffle(m, Mask{4, 5, 6, 7, 0, 1, 2, 3}) ? m : __builtin_shuffle(m, Mask{4, 5, 6, 7, 0, 1, 2, 3});
-    m = m > __builtin_shuffle(m, Mask{2, 3, 0, 1, 6, 7, 4, 5}) ? m : __builtin_shuffle(m, Mask{2, 3, 0, 1, 6, 7, 4, 5});
-    m = m > __builtin_shuffle(m, Mask{1, 0, 3, 2, 5, 4, 7, 6}) ? m : __builtin_shuffle(m, Mask{1, 0, 3, 2, 5, 4, 7, 6});
+    using V = Vec<8>;
+    using M = Mask<8>;
+    const V q = load<8>(value);
+    V m = q;
+    V swapped = __builtin_shuffle(m, M{4, 5, 6, 7, 0, 1, 2, 3});
+    m = m > swapped ? m : swapped;
+    swapped = __builtin_shuffle(m, M{2, 3, 0, 1, 6, 7, 4, 5});
+    m = m > swapped ? m : swapped;
+    swapped = __builtin_shuffle(m, M{1, 0, 3, 2, 5, 4, 7, 6});
+    m = m > swapped ? m : swapped;
     std::size_t bestLane = kLaneWidth;
     for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
         if (q[lane] == m[0] && (bestLane == kLaneWidth || index[lane] < index[bestLane])) bestLane = lane;
     }
-    return {num[bestLane], den[bestLane], static_cast<std::int32_t>(index[bestLane])};
+    return {m[0], static_cast<std::int32_t>(index[bestLane])};
 }
 
-// Offers one group's ratios for one sample. In the group that holds padding
-// lanes (weight 0) those become 0/0, which the strict comparison never prefers.
-template <bool HasPadding>
-TACTISCOPE_INLINE void offerGroup(SampleBest& best, Ratios r, Mask index, Mask padding)
-{
-    if constexpr (HasPadding) {
-        r.numAb = padding ? Vec{} : r.numAb;
-        r.denAb = padding ? Vec{} : r.denAb;
-        r.numBa = padding ? Vec{} : r.numBa;
-        r.denBa = padding ? Vec{} : r.denBa;
-    }
-    offer(best.numAb, best.denAb, best.indexAb, r.numAb, r.denAb, index);
-    offer(best.numBa, best.denBa, best.indexBa, r.numBa, r.denBa, index);
-}
-
-// The 8 samples x(t − k) of lanes g … g+7 for the sample at `origin` of a
+// The N samples x(t − k) of lanes g … g+N−1 for the sample at `origin` of a
 // reversed series (reversed[origin + k] = x(t − k)).
-TACTISCOPE_INLINE Vec delayed(const double* reversed, std::size_t origin, const std::uint32_t* lag, bool contiguous)
+template <std::size_t N>
+TACTISCOPE_INLINE Vec<N> delayed(const double* reversed, std::size_t origin, const std::uint32_t* lag, bool contiguous)
 {
-    if (contiguous) return load(reversed + origin + lag[0]);
-    Vec v;
-    for (std::size_t lane = 0; lane < kLaneWidth; ++lane) v[lane] = reversed[origin + lag[lane]];
+    if (contiguous) return load<N>(reversed + origin + lag[0]);
+    Vec<N> v;
+    for (std::size_t lane = 0; lane < N; ++lane) v[lane] = reversed[origin + lag[lane]];
     return v;
 }
 
@@ -198,24 +233,28 @@ struct Scratch {
 
 static_assert(sizeof(SampleBest) % sizeof(double) == 0 && alignof(SampleBest) <= alignof(double));
 
-// Exponential form for one group of lags over the block's n samples.
-template <bool HasPadding>
+// Exponential form for one group of N lags over the block's n samples.
+template <std::size_t N, bool HasPadding>
 TACTISCOPE_INLINE void exponentialGroup(LagMoments& s, std::size_t g, const Scratch& scratch, std::size_t n,
-                                        double epsilonSquared, Mask index, Mask padding)
+                                        double epsilonSquared)
 {
-    const Vec w = load(&s.weight[g]);
-    const Vec r = load(&s.forgetting[g]);
-    const Vec ridge = epsilonSquared / r;
-    Vec m0 = load(&s.mean[0][g]), m1 = load(&s.mean[1][g]), m2 = load(&s.mean[2][g]), m3 = load(&s.mean[3][g]);
+    const Vec<N> w = load<N>(&s.weight[g]);
+    const Vec<N> r = load<N>(&s.forgetting[g]);
+    const Vec<N> ridge = epsilonSquared / r;
+    const Mask<N> padding = w == 0.0;
+    const Mask<N> index = Lanes<N>::kFirst + static_cast<long long>(g);
     auto& S = s.moment;
-    Covariance c{load(&S[S00][g]), load(&S[S01][g]), load(&S[S02][g]), load(&S[S03][g]), load(&S[S11][g]),
-                 load(&S[S12][g]), load(&S[S13][g]), load(&S[S22][g]), load(&S[S23][g]), load(&S[S33][g])};
+    Vec<N> m0 = load<N>(&s.mean[0][g]), m1 = load<N>(&s.mean[1][g]);
+    Vec<N> m2 = load<N>(&s.mean[2][g]), m3 = load<N>(&s.mean[3][g]);
+    Covariance<N> c{load<N>(&S[S00][g]), load<N>(&S[S01][g]), load<N>(&S[S02][g]), load<N>(&S[S03][g]),
+                    load<N>(&S[S11][g]), load<N>(&S[S12][g]), load<N>(&S[S13][g]), load<N>(&S[S22][g]),
+                    load<N>(&S[S23][g]), load<N>(&S[S33][g])};
     for (std::size_t j = 0; j < n; ++j) {
         const std::size_t origin = n - 1 - j;
-        const Vec d0 = scratch.reversedA[origin] - m0;
-        const Vec d1 = scratch.reversedB[origin] - m1;
-        const Vec d2 = delayed(scratch.reversedA, origin, &s.lag[g], s.contiguous) - m2;
-        const Vec d3 = delayed(scratch.reversedB, origin, &s.lag[g], s.contiguous) - m3;
+        const Vec<N> d0 = scratch.reversedA[origin] - m0;
+        const Vec<N> d1 = scratch.reversedB[origin] - m1;
+        const Vec<N> d2 = delayed<N>(scratch.reversedA, origin, &s.lag[g], s.contiguous) - m2;
+        const Vec<N> d3 = delayed<N>(scratch.reversedB, origin, &s.lag[g], s.contiguous) - m3;
         m0 += w * d0;
         m1 += w * d1;
         m2 += w * d2;
@@ -230,84 +269,94 @@ TACTISCOPE_INLINE void exponentialGroup(LagMoments& s, std::size_t g, const Scra
         c.v22 = r * c.v22 + (d2 * d2 + ridge);
         c.v23 = r * c.v23 + d2 * d3;
         c.v33 = r * c.v33 + (d3 * d3 + ridge);
-        offerGroup<HasPadding>(scratch.best[j], partialCorrelations(c), index, padding);
+        offerGroup<N, HasPadding>(scratch.best[j], partialCorrelations<N>(c), index, padding);
     }
-    store(&s.mean[0][g], m0);
-    store(&s.mean[1][g], m1);
-    store(&s.mean[2][g], m2);
-    store(&s.mean[3][g], m3);
-    store(&S[S00][g], c.v00);
-    store(&S[S01][g], c.v01);
-    store(&S[S02][g], c.v02);
-    store(&S[S03][g], c.v03);
-    store(&S[S11][g], c.v11);
-    store(&S[S12][g], c.v12);
-    store(&S[S13][g], c.v13);
-    store(&S[S22][g], c.v22);
-    store(&S[S23][g], c.v23);
-    store(&S[S33][g], c.v33);
+    store<N>(&s.mean[0][g], m0);
+    store<N>(&s.mean[1][g], m1);
+    store<N>(&s.mean[2][g], m2);
+    store<N>(&s.mean[3][g], m3);
+    store<N>(&S[S00][g], c.v00);
+    store<N>(&S[S01][g], c.v01);
+    store<N>(&S[S02][g], c.v02);
+    store<N>(&S[S03][g], c.v03);
+    store<N>(&S[S11][g], c.v11);
+    store<N>(&S[S12][g], c.v12);
+    store<N>(&S[S13][g], c.v13);
+    store<N>(&S[S22][g], c.v22);
+    store<N>(&S[S23][g], c.v23);
+    store<N>(&S[S33][g], c.v33);
 }
 
 // Sliding-window form for one group: window sums of u and uuᵀ, then
 // h²·V = h·Σuuᵀ − Σu·Σuᵀ (+ h²ε²·I), a positive multiple of the window's V.
-template <bool HasPadding>
-TACTISCOPE_INLINE void slidingGroup(LagMoments& s, std::size_t g, const Scratch& scratch, std::size_t n,
-                                    std::uint32_t window, double epsilonSquared, Mask index, Mask padding)
+template <std::size_t N>
+TACTISCOPE_INLINE Covariance<N> windowCovariance(const Vec<N> (&m)[4], const Vec<N> (&q)[kMomentCount], double h,
+                                                 Vec<N> ridge)
 {
-    const Vec w = load(&s.weight[g]);
+    return {h * q[S00] - m[0] * m[0] + ridge, h * q[S01] - m[0] * m[1],         h * q[S02] - m[0] * m[2],
+            h * q[S03] - m[0] * m[3],         h * q[S11] - m[1] * m[1] + ridge, h * q[S12] - m[1] * m[2],
+            h * q[S13] - m[1] * m[3],         h * q[S22] - m[2] * m[2] + ridge, h * q[S23] - m[2] * m[3],
+            h * q[S33] - m[3] * m[3] + ridge};
+}
+
+template <std::size_t N, bool HasPadding>
+TACTISCOPE_INLINE void slidingGroup(LagMoments& s, std::size_t g, const Scratch& scratch, std::size_t n,
+                                    std::uint32_t window, double epsilonSquared)
+{
+    const Vec<N> w = load<N>(&s.weight[g]);
     const double h = window;
-    const Vec ridge = w * (h * h * epsilonSquared);
-    Vec m[4] = {load(&s.mean[0][g]), load(&s.mean[1][g]), load(&s.mean[2][g]), load(&s.mean[3][g])};
-    Vec q[kMomentCount];
-    for (std::size_t i = 0; i < kMomentCount; ++i) q[i] = load(&s.moment[i][g]);
+    const Vec<N> ridge = w * (h * h * epsilonSquared);
+    const Mask<N> padding = w == 0.0;
+    const Mask<N> index = Lanes<N>::kFirst + static_cast<long long>(g);
+    Vec<N> m[4];
+    for (std::size_t i = 0; i < 4; ++i) m[i] = load<N>(&s.mean[i][g]);
+    Vec<N> q[kMomentCount];
+    for (std::size_t i = 0; i < kMomentCount; ++i) q[i] = load<N>(&s.moment[i][g]);
     for (std::size_t j = 0; j < n; ++j) {
         const std::size_t origin = n - 1 - j;
         const std::size_t leaving = origin + window;
-        const Vec x0 = w * scratch.reversedA[origin];
-        const Vec x1 = w * scratch.reversedB[origin];
-        const Vec x2 = w * delayed(scratch.reversedA, origin, &s.lag[g], s.contiguous);
-        const Vec x3 = w * delayed(scratch.reversedB, origin, &s.lag[g], s.contiguous);
-        const Vec y0 = w * scratch.reversedA[leaving];
-        const Vec y1 = w * scratch.reversedB[leaving];
-        const Vec y2 = w * delayed(scratch.reversedA, leaving, &s.lag[g], s.contiguous);
-        const Vec y3 = w * delayed(scratch.reversedB, leaving, &s.lag[g], s.contiguous);
-        m[0] += x0 - y0;
-        m[1] += x1 - y1;
-        m[2] += x2 - y2;
-        m[3] += x3 - y3;
-        q[S00] += x0 * x0 - y0 * y0;
-        q[S01] += x0 * x1 - y0 * y1;
-        q[S02] += x0 * x2 - y0 * y2;
-        q[S03] += x0 * x3 - y0 * y3;
-        q[S11] += x1 * x1 - y1 * y1;
-        q[S12] += x1 * x2 - y1 * y2;
-        q[S13] += x1 * x3 - y1 * y3;
-        q[S22] += x2 * x2 - y2 * y2;
-        q[S23] += x2 * x3 - y2 * y3;
-        q[S33] += x3 * x3 - y3 * y3;
-        const Covariance c{h * q[S00] - m[0] * m[0] + ridge, h * q[S01] - m[0] * m[1],         h * q[S02] - m[0] * m[2],
-                           h * q[S03] - m[0] * m[3],         h * q[S11] - m[1] * m[1] + ridge, h * q[S12] - m[1] * m[2],
-                           h * q[S13] - m[1] * m[3],         h * q[S22] - m[2] * m[2] + ridge, h * q[S23] - m[2] * m[3],
-                           h * q[S33] - m[3] * m[3] + ridge};
-        offerGroup<HasPadding>(scratch.best[j], partialCorrelations(c), index, padding);
+        // Padding lanes (w = 0) see only zeros.
+        const Vec<N> x[4] = {w * scratch.reversedA[origin], w * scratch.reversedB[origin],
+                             w * delayed<N>(scratch.reversedA, origin, &s.lag[g], s.contiguous),
+                             w * delayed<N>(scratch.reversedB, origin, &s.lag[g], s.contiguous)};
+        const Vec<N> y[4] = {w * scratch.reversedA[leaving], w * scratch.reversedB[leaving],
+                             w * delayed<N>(scratch.reversedA, leaving, &s.lag[g], s.contiguous),
+                             w * delayed<N>(scratch.reversedB, leaving, &s.lag[g], s.contiguous)};
+        for (std::size_t i = 0; i < 4; ++i) m[i] += x[i] - y[i];
+        q[S00] += x[0] * x[0] - y[0] * y[0];
+        q[S01] += x[0] * x[1] - y[0] * y[1];
+        q[S02] += x[0] * x[2] - y[0] * y[2];
+        q[S03] += x[0] * x[3] - y[0] * y[3];
+        q[S11] += x[1] * x[1] - y[1] * y[1];
+        q[S12] += x[1] * x[2] - y[1] * y[2];
+        q[S13] += x[1] * x[3] - y[1] * y[3];
+        q[S22] += x[2] * x[2] - y[2] * y[2];
+        q[S23] += x[2] * x[3] - y[2] * y[3];
+        q[S33] += x[3] * x[3] - y[3] * y[3];
+        offerGroup<N, HasPadding>(scratch.best[j], partialCorrelations<N>(windowCovariance<N>(m, q, h, ridge)), index,
+                                  padding);
     }
-    for (std::size_t i = 0; i < 4; ++i) store(&s.mean[i][g], m[i]);
-    for (std::size_t i = 0; i < kMomentCount; ++i) store(&s.moment[i][g], q[i]);
+    for (std::size_t i = 0; i < 4; ++i) store<N>(&s.mean[i][g], m[i]);
+    for (std::size_t i = 0; i < kMomentCount; ++i) store<N>(&s.moment[i][g], q[i]);
 }
 
-}  // namespace
-
-std::size_t kernelScratchSize(const LagMoments& moments, std::uint32_t window)
+template <std::size_t N, bool HasPadding>
+TACTISCOPE_INLINE void runGroupAs(LagMoments& s, std::size_t g, const Scratch& scratch, std::size_t n,
+                                  const KernelInput& in)
 {
-    const std::size_t reversedLength = kBlock + moments.largestLaneLag() + window + 1;
-    return 2 * reversedLength + kBlock * sizeof(SampleBest) / sizeof(double);
+    if (in.window == 0)
+        exponentialGroup<N, HasPadding>(s, g, scratch, n, in.epsilonSquared);
+    else
+        slidingGroup<N, HasPadding>(s, g, scratch, n, in.window, in.epsilonSquared);
 }
 
-TACTISCOPE_KERNEL_CLONES
-void runPartialCorrelationKernel(const KernelInput& in, LagMoments& s, SampleMaxima* out)
+// The whole kernel with groups of W lanes. Forced inline into each
+// instruction-set entry point below; no lambdas, which would be functions of
+// their own compiled for the baseline.
+template <std::size_t W>
+TACTISCOPE_INLINE void runKernel(const KernelInput& in, LagMoments& s, SampleMaxima* out)
 {
     const Scratch scratch(in.scratch, s, in.window);
-    const std::size_t P = s.paddedCount;
     for (std::size_t j0 = 0; j0 < in.count; j0 += kBlock) {
         const std::size_t n = std::min(kBlock, in.count - j0);
         // reversed[q] = x(j0 + n − 1 − q): sample j of the block, delayed by
@@ -320,56 +369,112 @@ void runPartialCorrelationKernel(const KernelInput& in, LagMoments& s, SampleMax
             scratch.reversedB[q] = lastB[-static_cast<std::ptrdiff_t>(q)];
         }
         for (std::size_t j = 0; j < n; ++j) startBest(scratch.best[j]);
-        Mask index = kFirstLanes;  // lag index of each lane of the group
-        for (std::size_t g = 0; g < P; g += kLaneWidth, index += static_cast<long long>(kLaneWidth)) {
-            const Mask padding = load(&s.weight[g]) == 0.0;
-            const bool hasPadding = g + kLaneWidth > s.lagCount;
-            if (in.window == 0) {
-                if (hasPadding)
-                    exponentialGroup<true>(s, g, scratch, n, in.epsilonSquared, index, padding);
-                else
-                    exponentialGroup<false>(s, g, scratch, n, in.epsilonSquared, index, padding);
-            } else {
-                if (hasPadding)
-                    slidingGroup<true>(s, g, scratch, n, in.window, in.epsilonSquared, index, padding);
-                else
-                    slidingGroup<false>(s, g, scratch, n, in.window, in.epsilonSquared, index, padding);
-            }
+        for (std::size_t g = 0; g < s.lagCount; g += W) {
+            if (g + W <= s.lagCount)
+                runGroupAs<W, false>(s, g, scratch, n, in);
+            else
+                runGroupAs<W, true>(s, g, scratch, n, in);
         }
         for (std::size_t j = 0; j < n; ++j) {
             const SampleBest& best = scratch.best[j];
-            out[j0 + j] = {reduceBest(best.numAb, best.denAb, best.indexAb),
-                           reduceBest(best.numBa, best.denBa, best.indexBa)};
+            out[j0 + j] = {reduceBest(best.ab, best.indexAb), reduceBest(best.ba, best.indexBa)};
         }
+    }
+}
+
+__attribute__((target("arch=x86-64-v4"))) void runAvx512(const KernelInput& in, LagMoments& s, SampleMaxima* out)
+{
+    runKernel<8>(in, s, out);
+}
+
+__attribute__((target("arch=x86-64-v3"))) void runAvx2(const KernelInput& in, LagMoments& s, SampleMaxima* out)
+{
+    runKernel<4>(in, s, out);
+}
+
+void runBaseline(const KernelInput& in, LagMoments& s, SampleMaxima* out)
+{
+    runKernel<2>(in, s, out);
+}
+
+}  // namespace
+
+double signedRoot(double signedSquare)
+{
+    return std::isfinite(signedSquare) ? std::copysign(std::sqrt(std::abs(signedSquare)), signedSquare) : 0.0;
+}
+
+std::size_t kernelScratchSize(const LagMoments& moments, std::uint32_t window)
+{
+    const std::size_t reversedLength = kBlock + moments.largestLaneLag() + window + 1;
+    return 2 * reversedLength + kBlock * sizeof(SampleBest) / sizeof(double);
+}
+
+KernelVariant bestKernelVariant()
+{
+    static const KernelVariant best = [] {
+        __builtin_cpu_init();
+        if (__builtin_cpu_supports("x86-64-v4")) return KernelVariant::Avx512;
+        if (__builtin_cpu_supports("x86-64-v3")) return KernelVariant::Avx2;
+        return KernelVariant::Baseline;
+    }();
+    return best;
+}
+
+bool kernelVariantSupported(KernelVariant variant)
+{
+    return static_cast<int>(variant) <= static_cast<int>(bestKernelVariant());
+}
+
+const char* toString(KernelVariant variant)
+{
+    switch (variant) {
+    case KernelVariant::Baseline:
+        return "x86-64 baseline (SSE2)";
+    case KernelVariant::Avx2:
+        return "AVX2+FMA";
+    case KernelVariant::Avx512:
+        return "AVX-512";
+    }
+    return "?";
+}
+
+void runPartialCorrelationKernel(KernelVariant variant, const KernelInput& in, LagMoments& s, SampleMaxima* out)
+{
+    switch (variant) {
+    case KernelVariant::Avx512:
+        runAvx512(in, s, out);
+        return;
+    case KernelVariant::Avx2:
+        runAvx2(in, s, out);
+        return;
+    case KernelVariant::Baseline:
+        runBaseline(in, s, out);
+        return;
     }
 }
 
 void correlationsFromMoments(const LagMoments& s, std::uint32_t window, double epsilonSquared, double* rab, double* rba)
 {
-    const auto correlation = [](double num, double den) {
-        return den > 0.0 ? std::copysign(std::sqrt(std::abs(num) / den), num) : 0.0;
-    };
+    const auto& S = s.moment;
     for (std::size_t g = 0; g < s.paddedCount; g += kLaneWidth) {
-        Covariance c;
-        const auto& S = s.moment;
+        Covariance<8> c;
         if (window == 0) {
-            c = {load(&S[S00][g]), load(&S[S01][g]), load(&S[S02][g]), load(&S[S03][g]), load(&S[S11][g]),
-                 load(&S[S12][g]), load(&S[S13][g]), load(&S[S22][g]), load(&S[S23][g]), load(&S[S33][g])};
+            c = {load<8>(&S[S00][g]), load<8>(&S[S01][g]), load<8>(&S[S02][g]), load<8>(&S[S03][g]),
+                 load<8>(&S[S11][g]), load<8>(&S[S12][g]), load<8>(&S[S13][g]), load<8>(&S[S22][g]),
+                 load<8>(&S[S23][g]), load<8>(&S[S33][g])};
         } else {
+            Vec<8> m[4];
+            Vec<8> q[kMomentCount];
+            for (std::size_t i = 0; i < 4; ++i) m[i] = load<8>(&s.mean[i][g]);
+            for (std::size_t i = 0; i < kMomentCount; ++i) q[i] = load<8>(&S[i][g]);
             const double h = window;
-            const Vec ridge = load(&s.weight[g]) * (h * h * epsilonSquared);
-            Vec m[4];
-            for (std::size_t i = 0; i < 4; ++i) m[i] = load(&s.mean[i][g]);
-            const auto entry = [&](std::size_t index, std::size_t j, std::size_t k) {
-                return h * load(&S[index][g]) - m[j] * m[k] + (j == k ? ridge : Vec{});
-            };
-            c = {entry(S00, 0, 0), entry(S01, 0, 1), entry(S02, 0, 2), entry(S03, 0, 3), entry(S11, 1, 1),
-                 entry(S12, 1, 2), entry(S13, 1, 3), entry(S22, 2, 2), entry(S23, 2, 3), entry(S33, 3, 3)};
+            c = windowCovariance<8>(m, q, h, load<8>(&s.weight[g]) * (h * h * epsilonSquared));
         }
-        const Ratios r = partialCorrelations(c);
+        const SignedSquares<8> r = partialCorrelations<8>(c);
         for (std::size_t lane = 0; lane < kLaneWidth && g + lane < s.lagCount; ++lane) {
-            rab[g + lane] = correlation(r.numAb[lane], r.denAb[lane]);
-            rba[g + lane] = correlation(r.numBa[lane], r.denBa[lane]);
+            rab[g + lane] = signedRoot(r.ab[lane]);
+            rba[g + lane] = signedRoot(r.ba[lane]);
         }
     }
 }

@@ -1,12 +1,11 @@
 // The detector's hot loop: for a run of samples, update the moments of every
 // lag and find, per sample, the lag with the largest R_ab and the one with the
-// largest R_ba (eqs 4–5). Compiled for several instruction sets (AVX-512,
-// AVX2+FMA, baseline x86-64) and dispatched at run time, so one portable
-// binary uses the best the CPU has.
+// largest R_ba (eqs 4–5). Compiled for three instruction sets (AVX-512,
+// AVX2+FMA, baseline x86-64); the best one the CPU supports is used, so one
+// portable binary runs everywhere at the speed the machine allows.
 //
-// R is returned as a ratio: R² = |num|/den with the sign of num. Comparing
-// ratios by cross-multiplication avoids a division and a square root per lag;
-// the caller takes one square root per sample for the winner.
+// Lags are ranked by sign(R)·R², which orders them like R without a square
+// root per lag; the caller takes one square root per sample for the winner.
 #pragma once
 
 #include "core/detector/LagMoments.h"
@@ -16,9 +15,9 @@
 
 namespace tactiscope::core::detector {
 
+// The largest R of one direction over the lags at one sample.
 struct LagMaximum {
-    double num = 0.0;  // sign(R)·R²·den
-    double den = 0.0;  // > 0 for a valid lag
+    double signedSquare = -2.0;  // sign(R)·R²; −2 when no lag is valid
     std::int32_t lagIndex = -1;
 };
 
@@ -26,6 +25,9 @@ struct SampleMaxima {
     LagMaximum ab;
     LagMaximum ba;
 };
+
+// R from sign(R)·R²; 0 for anything not finite (a degenerate lag).
+double signedRoot(double signedSquare);
 
 struct KernelInput {
     // a[j], b[j] is sample j of the run; a[j − k] must be readable for every
@@ -41,8 +43,19 @@ struct KernelInput {
 
 std::size_t kernelScratchSize(const LagMoments& moments, std::uint32_t window);
 
-// Advances `moments` by input.count samples and writes one SampleMaxima per sample.
-void runPartialCorrelationKernel(const KernelInput& input, LagMoments& moments, SampleMaxima* out);
+// The instruction sets the kernel is built for, in increasing order.
+enum class KernelVariant { Baseline, Avx2, Avx512 };
+
+// The fastest variant this CPU runs (checked once).
+KernelVariant bestKernelVariant();
+bool kernelVariantSupported(KernelVariant variant);
+const char* toString(KernelVariant variant);
+
+// Advances `moments` by input.count samples and writes one SampleMaxima per
+// sample. `variant` must be supported by the CPU. All variants compute the
+// same values up to floating-point rounding (fused multiply-adds differ).
+void runPartialCorrelationKernel(KernelVariant variant, const KernelInput& input, LagMoments& moments,
+                                 SampleMaxima* out);
 
 // R_ab and R_ba of every lag from the current moments (not the hot path:
 // for inspection, plots and tests). Outputs have lagCount entries.

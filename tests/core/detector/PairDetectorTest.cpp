@@ -24,10 +24,10 @@ DetectorParameters smallParameters()
 }
 
 // Runs both implementations sample by sample and compares every lag's R.
-void expectSameAsDirect(const DetectorParameters& p, const std::vector<double>& a, const std::vector<double>& b,
-                        double tolerance = 1e-9)
+void expectSameAsDirect(KernelVariant variant, const DetectorParameters& p, const std::vector<double>& a,
+                        const std::vector<double>& b, double tolerance = 1e-9)
 {
-    PairDetector fast(p);
+    PairDetector fast(p, variant);
     DirectDetector direct(p);
     const std::size_t lags = fast.parameters().lags.size();
     std::vector<double> rab(lags), rba(lags);
@@ -61,17 +61,41 @@ std::vector<DetectorOutput> runAll(PairDetector& detector, const std::vector<dou
 
 }  // namespace
 
-TEST(PairDetector, ExponentialFormEqualsTheDirectInverseOnEverySampleAndLag)
+// Every instruction-set variant of the kernel is checked on machines that
+// have it (this one has all three).
+class PairDetectorKernel : public ::testing::TestWithParam<KernelVariant> {
+protected:
+    void SetUp() override
+    {
+        if (!kernelVariantSupported(GetParam())) GTEST_SKIP() << "CPU lacks " << toString(GetParam());
+    }
+};
+
+INSTANTIATE_TEST_SUITE_P(AllVariants, PairDetectorKernel,
+                         ::testing::Values(KernelVariant::Baseline, KernelVariant::Avx2, KernelVariant::Avx512),
+                         [](const ::testing::TestParamInfo<KernelVariant>& variant) {
+                             switch (variant.param) {
+                             case KernelVariant::Baseline:
+                                 return std::string("Baseline");
+                             case KernelVariant::Avx2:
+                                 return std::string("Avx2");
+                             case KernelVariant::Avx512:
+                                 return std::string("Avx512");
+                             }
+                             return std::string("Unknown");
+                         });
+
+TEST_P(PairDetectorKernel, ExponentialFormEqualsTheDirectInverseOnEverySampleAndLag)
 {
     // A delayed copy plus independent noise: correlations across the whole
     // range, including the region near 1.
     const auto source = whiteNoise(1500, 2e-5, 1);
     const auto a = plus(source, whiteNoise(1500, 5e-6, 2));
     const auto b = plus(delayedBy(source, 12), whiteNoise(1500, 5e-6, 3));
-    expectSameAsDirect(smallParameters(), a, b);
+    expectSameAsDirect(GetParam(), smallParameters(), a, b);
 }
 
-TEST(PairDetector, FixedLambdaAndFaceToFaceEqualTheDirectInverse)
+TEST_P(PairDetectorKernel, FixedLambdaAndFaceToFaceEqualTheDirectInverse)
 {
     DetectorParameters p = smallParameters();
     p.lambdaRule = LambdaRule::Fixed;
@@ -80,17 +104,40 @@ TEST(PairDetector, FixedLambdaAndFaceToFaceEqualTheDirectInverse)
     const auto source = whiteNoise(1200, 2e-5, 4);
     const auto a = plus(delayedBy(source, 7), whiteNoise(1200, 4e-6, 5));
     const auto b = plus(source, whiteNoise(1200, 4e-6, 6));
-    expectSameAsDirect(p, a, b);
+    expectSameAsDirect(GetParam(), p, a, b);
 }
 
-TEST(PairDetector, SlidingWindowFormEqualsABruteForceWindow)
+TEST_P(PairDetectorKernel, SlidingWindowFormEqualsABruteForceWindow)
 {
     DetectorParameters p = smallParameters();
     p.window_s = 0.080;  // 40 samples
     const auto source = whiteNoise(900, 2e-5, 7);
     const auto a = plus(source, whiteNoise(900, 5e-6, 8));
     const auto b = plus(delayedBy(source, 9), whiteNoise(900, 5e-6, 9));
-    expectSameAsDirect(p, a, b, 1e-8);
+    expectSameAsDirect(GetParam(), p, a, b, 1e-8);
+}
+
+TEST_P(PairDetectorKernel, ScatteredLagsEqualTheDirectInverse)
+{
+    // Lags that are not consecutive samples take the gathering path.
+    DetectorParameters p;
+    p.lags_s = {0.004, 0.010, 0.012, 0.030, 0.046, 0.050, 0.090, 0.100, 0.130, 0.150, 0.022};
+    const auto source = whiteNoise(1000, 2e-5, 10);
+    const auto a = plus(source, whiteNoise(1000, 5e-6, 13));
+    const auto b = plus(delayedBy(source, 15), whiteNoise(1000, 5e-6, 14));
+    expectSameAsDirect(GetParam(), p, a, b);
+}
+
+TEST(PairDetector, RefusesAKernelTheCpuCannotRun)
+{
+    for (KernelVariant v : {KernelVariant::Baseline, KernelVariant::Avx2, KernelVariant::Avx512}) {
+        if (kernelVariantSupported(v)) {
+            EXPECT_NO_THROW(PairDetector(DetectorParameters{}, v));
+        } else {
+            EXPECT_THROW(PairDetector(DetectorParameters{}, v), std::invalid_argument);
+        }
+    }
+    EXPECT_TRUE(kernelVariantSupported(KernelVariant::Baseline));
 }
 
 TEST(PairDetector, ADelayedCopyIsSeenAsAThenBAtItsLag)
