@@ -1,0 +1,31 @@
+// Offline analysis of a whole recording (CLI, re-analysis): the probe
+// detector over complete series, optionally on several threads. Threads
+// split the lag set, which is exact: every lag's statistics are independent
+// of the others, so any thread count gives the same outputs.
+#pragma once
+
+#include "core/detector/DefectEvent.h"
+#include "core/detector/DetectorParameters.h"
+#include "core/detector/ProbeDetector.h"
+
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace tactiscope::core::detector {
+
+struct SeriesInput {
+    double t0_s = 0.0;                                 // time of the first sample
+    std::vector<std::span<const double>> cantilevers;  // probe order, equal lengths, ≥ 2
+};
+
+// One ProbeOutput per sample. threads ≥ 1 (more than the lag groups is
+// pointless and is reduced). Throws std::invalid_argument on bad input.
+std::vector<ProbeOutput> detectSeries(const SeriesInput& input, const DetectorParameters& parameters,
+                                      unsigned threads = 1);
+
+// Events of a whole series (see EventSegmenter).
+std::vector<DefectEvent> segmentEvents(std::span<const ProbeOutput> outputs, double sampleInterval_s, double hold_s,
+                                       std::optional<double> spacing_m);
+
+}  // namespace tactiscope::core::detector
