@@ -2,6 +2,7 @@
 #include "CliApplication.h"
 
 #include "CliSupport.h"
+#include "DetectCommand.h"
 #include "SimulateCommand.h"
 #include "core/Version.h"
 
@@ -19,6 +20,7 @@ struct Command {
 };
 
 constexpr std::array kCommands{
+    Command{"detect", "Find surface deflections in a CSV recording (seed 000).", runDetect},
     Command{"simulate", "Write a simulated recording as CSV.", runSimulate},
 };
 

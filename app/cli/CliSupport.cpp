@@ -3,6 +3,8 @@
 
 #include <QTextStream>
 
+#include <cmath>
+
 namespace tactiscope::cli {
 
 void printError(const QString& message)
@@ -42,6 +44,14 @@ std::optional<int> parseCommandLine(QCommandLineParser& parser, const QString& c
         return kExitOk;
     }
     return std::nullopt;
+}
+
+std::optional<double> parseNumber(const QString& text)
+{
+    bool ok = false;
+    const double value = text.trimmed().toDouble(&ok);
+    if (!ok || !std::isfinite(value)) return std::nullopt;
+    return value;
 }
 
 QString toQString(std::string_view text)

@@ -31,4 +31,7 @@ QString commandUsage(const QCommandLineParser& parser, const QString& command);
 
 QString toQString(std::string_view text);
 
+// A finite number, or nothing when `text` is not one.
+std::optional<double> parseNumber(const QString& text);
+
 }  // namespace tactiscope::cli

@@ -32,11 +32,13 @@ void writeCsv(devices::simulator::SimulatorSource& source, std::ostream& out)
     for (const auto& channel : source.channels()) line += ',' + channel.name;
     out << line << '\n';
 
+    const double rate_hz = source.nominalSampleRate_hz();
     core::SampleBlock block;
     while (source.readBlock(block, std::chrono::milliseconds(0)) == devices::ReadStatus::Block) {
         for (std::size_t i = 0; i < block.sampleCount(); ++i) {
             line.clear();
-            core::text::appendShortest(line, block.timeAt_s(i));
+            // i/rate rather than t0 + i·Δt: "0.174", not "0.17400000000000002".
+            core::text::appendShortest(line, static_cast<double>(block.firstSampleIndex() + i) / rate_hz);
             for (std::size_t c = 0; c < block.channelCount(); ++c) {
                 line += ',';
                 core::text::appendShortest(line, block.value(c, i));

@@ -42,6 +42,8 @@ std::vector<ProbeOutput> detectSeries(const SeriesInput& input, const DetectorPa
     for (const auto& series : input.cantilevers) {
         if (series.size() != n) throw std::invalid_argument("cantilever series differ in length");
     }
+    if (!input.times.empty() && input.times.size() != n)
+        throw std::invalid_argument("times and cantilever series differ in length");
     const ResolvedParameters resolved = resolve(parameters);
 
     // Lag subsets of whole groups of 8, so every thread keeps its vectors full.
@@ -71,7 +73,7 @@ std::vector<ProbeOutput> detectSeries(const SeriesInput& input, const DetectorPa
     const double dt = parameters.sampleInterval_s;
     for (std::size_t i = 0; i < n; ++i) {
         ProbeOutput o;
-        o.t_s = input.t0_s + static_cast<double>(i) * dt;
+        o.t_s = input.times.empty() ? input.t0_s + static_cast<double>(i) * dt : input.times[i];
         o.combined = results[0][0][i];
         for (std::size_t w = 0; w < workers; ++w) {
             for (std::size_t p = 0; p < results[w].size(); ++p) {

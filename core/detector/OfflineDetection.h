@@ -17,6 +17,9 @@ namespace tactiscope::core::detector {
 struct SeriesInput {
     double t0_s = 0.0;                                 // time of the first sample
     std::vector<std::span<const double>> cantilevers;  // probe order, equal lengths, ≥ 2
+    // Each sample's own time, when known (e.g. a file's t column); otherwise
+    // times are t0_s + i·Δt.
+    std::span<const double> times;
 };
 
 // One ProbeOutput per sample. threads ≥ 1 (more than the lag groups is

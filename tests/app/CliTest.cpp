@@ -1,10 +1,10 @@
 // tactiscope-cli as a user runs it: a real process, its exit code, stdout,
 // stderr and the files it writes.
 #include "core/Version.h"
+#include "support/CliRunner.h"
 
 #include <QDir>
 #include <QFile>
-#include <QProcess>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -13,20 +13,8 @@
 
 namespace {
 
-struct CliResult {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
-
-CliResult runCli(const QStringList& arguments)
-{
-    QProcess process;
-    process.start(QStringLiteral(TACTISCOPE_CLI), arguments);
-    process.waitForFinished(60000);
-    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
-            QString::fromUtf8(process.readAllStandardOutput()), QString::fromUtf8(process.readAllStandardError())};
-}
+using tactiscope::testing::CliResult;
+using tactiscope::testing::runCli;
 
 QString firstLine(const QString& text)
 {

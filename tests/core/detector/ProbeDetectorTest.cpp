@@ -69,7 +69,7 @@ TEST(ProbeDetector, BlocksInAnySizeGiveTheSameOutputsAsTheWholeSeries)
         const auto out = probe.push(block);
         streamed.insert(streamed.end(), out.begin(), out.end());
     }
-    const auto whole = detectSeries({0.0, {a, b}}, DetectorParameters{});
+    const auto whole = detectSeries({0.0, {a, b}, {}}, DetectorParameters{});
     ASSERT_EQ(whole.size(), streamed.size());
     for (std::size_t i = 0; i < whole.size(); ++i) {
         ASSERT_EQ(whole[i].combined.rab, streamed[i].combined.rab) << i;
@@ -82,7 +82,7 @@ TEST(OfflineDetection, AnyThreadCountGivesIdenticalOutputs)
     const auto a = whiteNoise(5000, 2e-5, 8);
     const auto b = plus(delayedBy(a, 33), whiteNoise(5000, 5e-6, 9));
     const auto c = plus(delayedBy(a, 60), whiteNoise(5000, 5e-6, 10));
-    const SeriesInput input{1.5, {a, b, c}};
+    const SeriesInput input{1.5, {a, b, c}, {}};
     const auto one = detectSeries(input, DetectorParameters{}, 1);
     for (unsigned threads : {2u, 3u, 16u}) {
         const auto many = detectSeries(input, DetectorParameters{}, threads);
@@ -103,5 +103,5 @@ TEST(ProbeDetector, RejectsProbesAndBlocksThatDoNotFit)
     ProbeDetector probe(DetectorParameters{}, {0, 2});
     EXPECT_THROW(probe.push(SampleBlock(2, 4, 0.0, 0.002)), std::invalid_argument);  // no channel 2
     EXPECT_THROW(probe.push(SampleBlock(3, 4, 0.0, 0.001)), std::invalid_argument);  // other rate
-    EXPECT_THROW(detectSeries({0.0, {}}, DetectorParameters{}), std::invalid_argument);
+    EXPECT_THROW(detectSeries({0.0, {}, {}}, DetectorParameters{}), std::invalid_argument);
 }

@@ -1,0 +1,34 @@
+// Reading numeric columns from a CSV file with a header row, for data that
+// other DAQ programs and the simulator write. Errors name the file, the line
+// and the column, so a user can fix the file.
+#pragma once
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace tactiscope::core::io {
+
+// Thrown for anything wrong with the file; what() is one line for the user.
+class CsvError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct CsvColumns {
+    std::vector<std::string> header;           // all column names, in file order
+    std::vector<std::vector<double>> columns;  // the wanted columns, in the order asked for
+    std::vector<std::size_t> lines;            // file line number of each row (1 = header)
+
+    std::size_t rowCount() const { return lines.size(); }
+};
+
+// Reads the columns named in `wanted` (header names are trimmed of spaces
+// and double quotes). Blank lines are skipped. Every cell of a wanted column
+// must be a finite number. Throws CsvError for a missing or unreadable
+// file, an empty file, a header without data rows, a missing column, a row
+// with a different number of fields, or a bad cell.
+CsvColumns readCsvColumns(const std::string& path, const std::vector<std::string>& wanted);
+
+}  // namespace tactiscope::core::io

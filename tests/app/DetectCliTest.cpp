@@ -1,0 +1,174 @@
+// `tactiscope-cli detect` as other tools use it: a generated recording with
+// known defects in, events and per-sample output out; every bad input gives
+// exit code 2 and one line on stderr.
+#include "support/CliRunner.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTextStream>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using tactiscope::testing::CliResult;
+using tactiscope::testing::runCli;
+
+namespace {
+
+// 6 s at 500 Hz of quiet gauges (σ = 1 µε, well below ε = 7 µε) with two
+// passes over a defect: from 1 s to 2 s b repeats a 40 ms later (A then B),
+// from 4 s to 5 s a repeats b 60 ms later (B then A).
+void writeRecording(const QString& path)
+{
+    std::mt19937_64 random(99);
+    std::normal_distribution<double> quiet(0.0, 1e-6), loud(0.0, 3e-4);
+    const int n = 3000;
+    std::vector<double> a(n), b(n);
+    for (int i = 0; i < n; ++i) {
+        a[static_cast<std::size_t>(i)] = quiet(random);
+        b[static_cast<std::size_t>(i)] = quiet(random);
+    }
+    for (int i = 500; i < 1000; ++i) a[static_cast<std::size_t>(i)] = loud(random);
+    for (int i = 520; i < 1020; ++i) b[static_cast<std::size_t>(i)] = a[static_cast<std::size_t>(i - 20)];
+    for (int i = 2000; i < 2500; ++i) b[static_cast<std::size_t>(i)] = loud(random);
+    for (int i = 2030; i < 2530; ++i) a[static_cast<std::size_t>(i)] = b[static_cast<std::size_t>(i - 30)];
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    QTextStream out(&file);
+    out << "t,a,b\n";
+    for (int i = 0; i < n; ++i)
+        out << QString::number(i / 500.0, 'g', 17) << ',' << QString::number(a[static_cast<std::size_t>(i)], 'g', 17)
+            << ',' << QString::number(b[static_cast<std::size_t>(i)], 'g', 17) << '\n';
+}
+
+void writeText(const QString& path, const QString& text)
+{
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(text.toUtf8());
+}
+
+QStringList lines(const QString& path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) return {};
+    return QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+}
+
+class DetectCli : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        ASSERT_TRUE(m_dir.isValid());
+        writeRecording(path("scan.csv"));
+    }
+    QString path(const char* name) const { return m_dir.filePath(QString::fromLatin1(name)); }
+
+    QTemporaryDir m_dir;
+};
+
+}  // namespace
+
+TEST_F(DetectCli, FindsBothPassesWithTheirDirectionLagAndSpeed)
+{
+    const CliResult run = runCli({"detect", path("scan.csv"), "--json", "--spacing-mm", "20"});
+    ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
+    const QJsonObject result = QJsonDocument::fromJson(run.out.toUtf8()).object();
+    EXPECT_EQ(result["samples"].toInt(), 3000);
+    EXPECT_EQ(result["lags"].toInt(), 75);
+    EXPECT_GT(result["elapsed_s"].toDouble(), 0.0);
+    EXPECT_GT(result["samples_per_s"].toDouble(), 0.0);
+
+    const QJsonArray events = result["events"].toArray();
+    ASSERT_EQ(events.size(), 2) << run.out.toStdString();
+    const QJsonObject first = events[0].toObject(), second = events[1].toObject();
+    EXPECT_EQ(first["direction"].toInt(), 1);
+    EXPECT_DOUBLE_EQ(first["lag_ms"].toDouble(), 40.0);
+    EXPECT_DOUBLE_EQ(first["speed_mm_s"].toDouble(), 500.0);  // 20 mm in 40 ms
+    // An event may outlast its burst: the exponential weights remember the
+    // burst's covariance (≈ 9·10⁻⁸) until ε² = 4.9·10⁻¹¹ dominates, about
+    // ln(9e-8 / 4.9e-11) ≈ 7.5 λ later (λ = c: 0.30 s here, 0.45 s below).
+    EXPECT_GE(first["start_s"].toDouble(), 1.0);
+    EXPECT_LE(first["end_s"].toDouble(), 2.04 + 0.30);
+    EXPECT_GT(first["peak_r"].toDouble(), 0.99);
+    EXPECT_EQ(second["direction"].toInt(), -1);
+    EXPECT_DOUBLE_EQ(second["lag_ms"].toDouble(), 60.0);
+    EXPECT_NEAR(second["speed_mm_s"].toDouble(), 20.0 / 0.060, 1e-9);
+    EXPECT_GE(second["start_s"].toDouble(), 4.0);
+    EXPECT_LE(second["end_s"].toDouble(), 5.06 + 0.45);
+}
+
+TEST_F(DetectCli, WritesOneOutputRowPerSampleAndThreadsChangeNothing)
+{
+    ASSERT_EQ(runCli({"detect", path("scan.csv"), "--output", path("one.csv")}).exitCode, 0);
+    ASSERT_EQ(runCli({"detect", path("scan.csv"), "--output", path("two.csv"), "--threads", "2"}).exitCode, 0);
+    const QStringList rows = lines(path("one.csv"));
+    ASSERT_EQ(rows.size(), 3001);
+    EXPECT_EQ(rows.front(), "t,out,rab,rba,lag_ab_ms,lag_ba_ms");
+    EXPECT_EQ(lines(path("two.csv")), rows);
+    // Mid-way through the first pass: A then B at the 40 ms lag.
+    const QStringList middle = rows[751].split(',');  // sample 750, t = 1.5 s
+    EXPECT_EQ(middle[0], "1.5");
+    EXPECT_EQ(middle[1], "1");
+    EXPECT_EQ(middle[4], "40");
+    EXPECT_EQ(rows[1].split(',')[1], "0");  // quiet at the start
+}
+
+TEST_F(DetectCli, OtherColumnNamesTheSlidingWindowAndFaceToFaceGauges)
+{
+    // Same data under other names, b negated as a face-to-face mount gives.
+    QStringList renamed{"time,left,right"};
+    for (const QString& row : lines(path("scan.csv")).mid(1)) {
+        const QStringList cells = row.split(',');
+        renamed << cells[0] + ',' + cells[1] + ',' + QString::number(-cells[2].toDouble(), 'g', 17);
+    }
+    writeText(path("renamed.csv"), renamed.join('\n') + '\n');
+    const CliResult run = runCli({"detect", path("renamed.csv"), "--columns", "time,left,right", "--face-to-face",
+                                  "--window-ms", "100", "--json"});
+    ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
+    const QJsonArray events = QJsonDocument::fromJson(run.out.toUtf8()).object()["events"].toArray();
+    ASSERT_EQ(events.size(), 2);
+    EXPECT_EQ(events[0].toObject()["direction"].toInt(), 1);
+    EXPECT_EQ(events[1].toObject()["direction"].toInt(), -1);
+}
+
+TEST_F(DetectCli, BadInputExitsWithCodeTwoAndOneClearLine)
+{
+    writeText(path("empty.csv"), "");
+    writeText(path("header.csv"), "t,a,b\n");
+    writeText(path("word.csv"), "t,a,b\n0,1e-6,2e-6\n0.002,oops,1e-6\n");
+    writeText(path("backwards.csv"), "t,a,b\n0,0,0\n0.002,0,0\n0.001,0,0\n");
+    writeText(path("irregular.csv"), "t,a,b\n0,0,0\n0.002,0,0\n0.004,0,0\n0.009,0,0\n0.011,0,0\n");
+    writeText(path("ragged.csv"), "t,a,b\n0,0,0\n0.002,0\n");
+    const std::vector<std::pair<QStringList, QString>> cases{
+        {{"detect", path("missing.csv")}, "cannot open"},
+        {{"detect", path("empty.csv")}, "is empty"},
+        {{"detect", path("header.csv")}, "no data rows"},
+        {{"detect", path("scan.csv"), "--columns", "t,a,c"}, "no column 'c'"},
+        {{"detect", path("word.csv")}, "line 3, column 'a': 'oops' is not a number"},
+        {{"detect", path("backwards.csv")}, "line 4: time is not increasing"},
+        {{"detect", path("irregular.csv")}, "line 5: time is irregular"},
+        {{"detect", path("ragged.csv")}, "line 3 has 2 fields"},
+        {{"detect", path("scan.csv"), "--lags-ms", "10:2:2"}, "--lags-ms"},
+        {{"detect", path("scan.csv"), "--lags-ms", "2-150"}, "START:STOP:STEP"},
+        {{"detect", path("scan.csv"), "--threshold", "1.5"}, "threshold"},
+        {{"detect", path("scan.csv"), "--epsilon", "abc"}, "--epsilon"},
+        {{"detect", path("scan.csv"), "--threads", "0"}, "--threads"},
+        {{"detect"}, "exactly one INPUT.csv"},
+    };
+    for (const auto& [arguments, message] : cases) {
+        const CliResult run = runCli(arguments);
+        EXPECT_EQ(run.exitCode, 2) << arguments.join(' ').toStdString();
+        const QString firstLine = run.err.section('\n', 0, 0);
+        EXPECT_TRUE(firstLine.startsWith("tactiscope-cli: ")) << run.err.toStdString();
+        EXPECT_TRUE(firstLine.contains(message)) << firstLine.toStdString() << " lacks " << message.toStdString();
+        EXPECT_TRUE(run.out.isEmpty());
+    }
+    // Data errors are one line: no usage dump for a problem in the file.
+    EXPECT_EQ(runCli({"detect", path("word.csv")}).err.count('\n'), 1);
+}

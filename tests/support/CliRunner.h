@@ -1,0 +1,26 @@
+// Runs the built tactiscope-cli as a separate process, the way users and
+// other tools do, and captures its exit code and output.
+#pragma once
+
+#include <QProcess>
+#include <QString>
+#include <QStringList>
+
+namespace tactiscope::testing {
+
+struct CliResult {
+    int exitCode = -1;  // -1 when the process crashed or timed out
+    QString out;
+    QString err;
+};
+
+inline CliResult runCli(const QStringList& arguments)
+{
+    QProcess process;
+    process.start(QStringLiteral(TACTISCOPE_CLI), arguments);
+    process.waitForFinished(120000);
+    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
+            QString::fromUtf8(process.readAllStandardOutput()), QString::fromUtf8(process.readAllStandardError())};
+}
+
+}  // namespace tactiscope::testing
