@@ -82,8 +82,8 @@ void PairDetector::process(std::span<const double> a, std::span<const double> b,
         for (std::size_t i = 0; i < n; ++i) {
             const SampleMaxima& m = m_maxima[i];
             DetectorOutput& o = out[done + i];
-            o.rab = m.ab.lagIndex >= 0 ? signedRoot(m.ab.signedSquare) : 0.0;
-            o.rba = m.ba.lagIndex >= 0 ? signedRoot(m.ba.signedSquare) : 0.0;
+            o.rab = m.ab.r;
+            o.rba = m.ba.r;
             o.lagAb = m.ab.lagIndex >= 0 ? m_parameters.lags[static_cast<std::size_t>(m.ab.lagIndex)] : 0;
             o.lagBa = m.ba.lagIndex >= 0 ? m_parameters.lags[static_cast<std::size_t>(m.ba.lagIndex)] : 0;
             o.decision = decide(o.rab, o.rba, m_parameters.threshold);

@@ -184,24 +184,36 @@ TACTISCOPE_INLINE void offerGroup(SampleBest& best, SignedSquares<N> r, Mask<N> 
     offer<N>(best.ba, best.indexBa, r.ba, index);
 }
 
-// The best of the 8 lanes by a shuffle tree; on a tie the smaller lag index wins.
+// R from sign(R)·R²; 0 for a degenerate lag (NaN or no lag at all).
+TACTISCOPE_INLINE double signedRootOf(double signedSquare)
+{
+    const double magnitude = __builtin_sqrt(signedSquare < 0.0 ? -signedSquare : signedSquare);
+    // −2 marks "no valid lag"; rounding can put a true −1 a little below −1.
+    return signedSquare > -1.5 ? (signedSquare < 0.0 ? -magnitude : magnitude) : 0.0;
+}
+
+// The best of the 8 lanes, branch-free: a shuffle tree finds the largest
+// value, then the smallest lag index among the lanes that hold it.
+template <typename V>
+TACTISCOPE_INLINE V largestOf(V v)
+{
+    using M = Mask<8>;
+    V swapped = __builtin_shuffle(v, M{4, 5, 6, 7, 0, 1, 2, 3});
+    v = v > swapped ? v : swapped;
+    swapped = __builtin_shuffle(v, M{2, 3, 0, 1, 6, 7, 4, 5});
+    v = v > swapped ? v : swapped;
+    swapped = __builtin_shuffle(v, M{1, 0, 3, 2, 5, 4, 7, 6});
+    return v > swapped ? v : swapped;
+}
+
 TACTISCOPE_INLINE LagMaximum reduceBest(const double* value, const long long* index)
 {
-    using V = Vec<8>;
-    using M = Mask<8>;
-    const V q = load<8>(value);
-    V m = q;
-    V swapped = __builtin_shuffle(m, M{4, 5, 6, 7, 0, 1, 2, 3});
-    m = m > swapped ? m : swapped;
-    swapped = __builtin_shuffle(m, M{2, 3, 0, 1, 6, 7, 4, 5});
-    m = m > swapped ? m : swapped;
-    swapped = __builtin_shuffle(m, M{1, 0, 3, 2, 5, 4, 7, 6});
-    m = m > swapped ? m : swapped;
-    std::size_t bestLane = kLaneWidth;
-    for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
-        if (q[lane] == m[0] && (bestLane == kLaneWidth || index[lane] < index[bestLane])) bestLane = lane;
-    }
-    return {m[0], static_cast<std::int32_t>(index[bestLane])};
+    const Vec<8> q = load<8>(value);
+    const Vec<8> best = largestOf(q);
+    // Negated indices of the lanes holding the maximum: the largest of them
+    // is the smallest index.
+    const Mask<8> candidates = q == best ? -loadMask<8>(index) : Mask<8>{} + (-0x7fffffffffffffffLL);
+    return {best[0], static_cast<std::int32_t>(-largestOf(candidates)[0])};
 }
 
 // The N samples x(t − k) of lanes g … g+N−1 for the sample at `origin` of a
@@ -370,14 +382,30 @@ TACTISCOPE_INLINE void runKernel(const KernelInput& in, LagMoments& s, SampleMax
         }
         for (std::size_t j = 0; j < n; ++j) startBest(scratch.best[j]);
         for (std::size_t g = 0; g < s.lagCount; g += W) {
-            if (g + W <= s.lagCount)
+            const std::size_t remaining = s.lagCount - g;
+            if (remaining >= W) {
                 runGroupAs<W, false>(s, g, scratch, n, in);
-            else
+            } else if constexpr (W == 8) {
+                // A short tail runs at half width: 75 lags compute 76 lanes, not 80.
+                if (remaining > 4)
+                    runGroupAs<8, true>(s, g, scratch, n, in);
+                else if (remaining == 4)
+                    runGroupAs<4, false>(s, g, scratch, n, in);
+                else
+                    runGroupAs<4, true>(s, g, scratch, n, in);
+            } else {
                 runGroupAs<W, true>(s, g, scratch, n, in);
+            }
         }
+        SampleMaxima* block = out + j0;
         for (std::size_t j = 0; j < n; ++j) {
             const SampleBest& best = scratch.best[j];
-            out[j0 + j] = {reduceBest(best.ab, best.indexAb), reduceBest(best.ba, best.indexBa)};
+            block[j] = {reduceBest(best.ab, best.indexAb), reduceBest(best.ba, best.indexBa)};
+        }
+        // sign(R)·R² → R for the whole block at once (vectorised square roots).
+        for (std::size_t j = 0; j < n; ++j) {
+            block[j].ab.r = signedRootOf(block[j].ab.r);
+            block[j].ba.r = signedRootOf(block[j].ba.r);
         }
     }
 }
@@ -401,7 +429,7 @@ void runBaseline(const KernelInput& in, LagMoments& s, SampleMaxima* out)
 
 double signedRoot(double signedSquare)
 {
-    return std::isfinite(signedSquare) ? std::copysign(std::sqrt(std::abs(signedSquare)), signedSquare) : 0.0;
+    return signedRootOf(signedSquare);
 }
 
 std::size_t kernelScratchSize(const LagMoments& moments, std::uint32_t window)

@@ -5,7 +5,7 @@
 // portable binary runs everywhere at the speed the machine allows.
 //
 // Lags are ranked by sign(R)·R², which orders them like R without a square
-// root per lag; the caller takes one square root per sample for the winner.
+// root per lag; only each sample's winner gets its square root.
 #pragma once
 
 #include "core/detector/LagMoments.h"
@@ -17,7 +17,7 @@ namespace tactiscope::core::detector {
 
 // The largest R of one direction over the lags at one sample.
 struct LagMaximum {
-    double signedSquare = -2.0;  // sign(R)·R²; −2 when no lag is valid
+    double r = 0.0;  // the partial correlation; 0 when no lag is valid
     std::int32_t lagIndex = -1;
 };
 
@@ -26,7 +26,7 @@ struct SampleMaxima {
     LagMaximum ba;
 };
 
-// R from sign(R)·R²; 0 for anything not finite (a degenerate lag).
+// R from sign(R)·R² (in [−1, 1]); 0 for anything else (a degenerate lag).
 double signedRoot(double signedSquare);
 
 struct KernelInput {
