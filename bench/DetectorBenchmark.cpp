@@ -2,6 +2,8 @@
 // implementation, both single-threaded on the same simulated panel scan with
 // the paper's settings (75 lags, 500 Hz). Reported per sample·lag so the two
 // compare directly; the fast one also over a whole hour, the target.
+// Run with repetitions for the min/median statistics, e.g.
+//   tactiscope_detector_bench --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
 #include "DirectDetector.h"
 #include "core/SampleBlock.h"
 #include "core/detector/PairDetector.h"
@@ -9,6 +11,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace {
@@ -78,10 +81,22 @@ void BM_PairDetector_1h(benchmark::State& state)
     run<core::detector::PairDetector>(state, 3600.0);
 }
 
+// Interference on a shared machine only ever adds time, so the fastest
+// repetition is the best estimate of what the code costs; the median shows
+// what a busy machine gives.
+double fastest(const std::vector<double>& v)
+{
+    return *std::min_element(v.begin(), v.end());
+}
+
 }  // namespace
 
-BENCHMARK(BM_DirectEigenInverse_60s)->Unit(benchmark::kMillisecond)->MinTime(2.0);
-BENCHMARK(BM_PairDetector_60s)->Unit(benchmark::kMillisecond)->MinTime(2.0)->DenseRange(0, 2);
-BENCHMARK(BM_PairDetector_1h)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_DirectEigenInverse_60s)->Unit(benchmark::kMillisecond)->MinTime(1.0)->ComputeStatistics("min", fastest);
+BENCHMARK(BM_PairDetector_60s)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(1.0)
+    ->DenseRange(0, 2)
+    ->ComputeStatistics("min", fastest);
+BENCHMARK(BM_PairDetector_1h)->Unit(benchmark::kMillisecond)->Iterations(1)->ComputeStatistics("min", fastest);
 
 BENCHMARK_MAIN();

@@ -32,7 +32,7 @@ namespace {
 
 // Samples per block: long enough to amortise loading a group's state, short
 // enough that the block's per-sample maxima stay in L1.
-constexpr std::size_t kBlock = 64;
+constexpr std::size_t kBlock = 24;
 
 // Vector types of N doubles and their lane masks. The group width follows the
 // register file: 8 lanes with AVX-512's 32 registers, 4 with AVX2's 16, 2
@@ -112,18 +112,19 @@ struct Covariance {
     Vec<N> v00, v01, v02, v03, v11, v12, v13, v22, v23, v33;
 };
 
-// sign(R)·R² of R_ab and R_ba for N lags.
+// R_ab and R_ba of N lags as ratios: sign(R)·R² = num/den with den > 0.
 template <std::size_t N>
 struct SignedSquares {
-    Vec<N> ab, ba;
+    Vec<N> numAb, denAb, numBa, denBa;
 };
 
 // Partial correlations through Schur complements: for R_ab, the covariance
 // of (b, a(t−k)) given Z = (a, b(t−k)) is Σ_XX − Σ_XZ Σ_ZZ⁻¹ Σ_ZX; scaled by
 // det Σ_ZZ > 0 it needs no division, and the scale cancels in R. This equals
 // −U₂₃/√(U₂₂U₃₃) of eq. 4 with U = V⁻¹; R_ba likewise with X = (a, b(t−k)).
-// One division per direction gives sign(R)·R², which ranks lags like R; the
-// divider runs beside the multiply-add pipes that the rest keeps busy.
+// sign(R)·R² = num/den ranks lags like R; ratios are compared by
+// cross-multiplication, because a vector division would hold a multiply-add
+// pipe for many cycles.
 template <std::size_t N>
 TACTISCOPE_INLINE SignedSquares<N> partialCorrelations(const Covariance<N>& c)
 {
@@ -144,44 +145,55 @@ TACTISCOPE_INLINE SignedSquares<N> partialCorrelations(const Covariance<N>& c)
     const Vec<N> n00 = dy * c.v00 - (c.v01 * y0a + c.v02 * y0b);
     const Vec<N> n33 = dy * c.v33 - (c.v13 * y3a + c.v23 * y3b);
     const Vec<N> n03 = dy * c.v03 - (c.v01 * y3a + c.v02 * y3b);
-    return {m12 * absolute<N>(m12) / (m11 * m22), n03 * absolute<N>(n03) / (n00 * n33)};
+    return {m12 * absolute<N>(m12), m11 * m22, n03 * absolute<N>(n03), n00 * n33};
 }
 
-// Per sample, the per-lane best sign(R)·R² seen so far and its lag index.
+// Per sample, the per-lane best ratio num/den seen so far and its lag index.
 struct SampleBest {
-    double ab[kLaneWidth], ba[kLaneWidth];
+    double numAb[kLaneWidth], denAb[kLaneWidth], numBa[kLaneWidth], denBa[kLaneWidth];
     long long indexAb[kLaneWidth], indexBa[kLaneWidth];
 };
 
 TACTISCOPE_INLINE void startBest(SampleBest& best)
 {
-    store<8>(best.ab, splat<8>(-2.0));  // below any sign(R)·R² (≥ −1)
-    store<8>(best.ba, splat<8>(-2.0));
+    // −2/1 is below any sign(R)·R² (≥ −1).
+    store<8>(best.numAb, splat<8>(-2.0));
+    store<8>(best.numBa, splat<8>(-2.0));
+    store<8>(best.denAb, splat<8>(1.0));
+    store<8>(best.denBa, splat<8>(1.0));
     std::fill(std::begin(best.indexAb), std::end(best.indexAb), -1);
     std::fill(std::begin(best.indexBa), std::end(best.indexBa), -1);
 }
 
-// Keeps the larger of the stored and the candidate value in the first N lanes.
+// Keeps, in the first N lanes, the larger of the stored and the candidate
+// ratio: c/d > b/e ⇔ c·e > b·d for positive denominators. A 0/0 or NaN
+// candidate never compares greater.
 template <std::size_t N>
-TACTISCOPE_INLINE void offer(double* value, long long* index, Vec<N> candidate, Mask<N> candidateIndex)
+TACTISCOPE_INLINE void offer(double* num, double* den, long long* index, Vec<N> candidateNum, Vec<N> candidateDen,
+                             Mask<N> candidateIndex)
 {
-    const Vec<N> best = load<N>(value);
-    const Mask<N> better = candidate > best;
-    store<N>(value, better ? candidate : best);
-    store<N>(reinterpret_cast<double*>(index), reinterpret_cast<Vec<N>>(better ? candidateIndex : loadMask<N>(index)));
+    const Vec<N> bestNum = load<N>(num);
+    const Vec<N> bestDen = load<N>(den);
+    const Mask<N> better = candidateNum * bestDen > bestNum * candidateDen;
+    store<N>(num, better ? candidateNum : bestNum);
+    store<N>(den, better ? candidateDen : bestDen);
+    store<N>(reinterpret_cast<double*>(index),
+             reinterpret_cast<Vec<N>>(better ? candidateIndex : loadMask<N>(index)));
 }
 
 // Offers one group's correlations for one sample. In the group that holds
-// padding lanes (weight 0) their value is set to −2 so they never win.
+// padding lanes (weight 0) those become 0/0, which never compares greater.
 template <std::size_t N, bool HasPadding>
 TACTISCOPE_INLINE void offerGroup(SampleBest& best, SignedSquares<N> r, Mask<N> index, Mask<N> padding)
 {
     if constexpr (HasPadding) {
-        r.ab = padding ? splat<N>(-2.0) : r.ab;
-        r.ba = padding ? splat<N>(-2.0) : r.ba;
+        r.numAb = padding ? Vec<N>{} : r.numAb;
+        r.denAb = padding ? Vec<N>{} : r.denAb;
+        r.numBa = padding ? Vec<N>{} : r.numBa;
+        r.denBa = padding ? Vec<N>{} : r.denBa;
     }
-    offer<N>(best.ab, best.indexAb, r.ab, index);
-    offer<N>(best.ba, best.indexBa, r.ba, index);
+    offer<N>(best.numAb, best.denAb, best.indexAb, r.numAb, r.denAb, index);
+    offer<N>(best.numBa, best.denBa, best.indexBa, r.numBa, r.denBa, index);
 }
 
 // R from sign(R)·R²; 0 for a degenerate lag (NaN or no lag at all).
@@ -206,9 +218,9 @@ TACTISCOPE_INLINE V largestOf(V v)
     return v > swapped ? v : swapped;
 }
 
-TACTISCOPE_INLINE LagMaximum reduceBest(const double* value, const long long* index)
+TACTISCOPE_INLINE LagMaximum reduceBest(const double* num, const double* den, const long long* index)
 {
-    const Vec<8> q = load<8>(value);
+    const Vec<8> q = load<8>(num) / load<8>(den);  // one division per sample, not per lag
     const Vec<8> best = largestOf(q);
     // Negated indices of the lanes holding the maximum: the largest of them
     // is the smallest index.
@@ -400,7 +412,8 @@ TACTISCOPE_INLINE void runKernel(const KernelInput& in, LagMoments& s, SampleMax
         SampleMaxima* block = out + j0;
         for (std::size_t j = 0; j < n; ++j) {
             const SampleBest& best = scratch.best[j];
-            block[j] = {reduceBest(best.ab, best.indexAb), reduceBest(best.ba, best.indexBa)};
+            block[j] = {reduceBest(best.numAb, best.denAb, best.indexAb),
+                        reduceBest(best.numBa, best.denBa, best.indexBa)};
         }
         // sign(R)·R² → R for the whole block at once (vectorised square roots).
         for (std::size_t j = 0; j < n; ++j) {
@@ -501,8 +514,8 @@ void correlationsFromMoments(const LagMoments& s, std::uint32_t window, double e
         }
         const SignedSquares<8> r = partialCorrelations<8>(c);
         for (std::size_t lane = 0; lane < kLaneWidth && g + lane < s.lagCount; ++lane) {
-            rab[g + lane] = signedRoot(r.ab[lane]);
-            rba[g + lane] = signedRoot(r.ba[lane]);
+            rab[g + lane] = signedRoot(r.numAb[lane] / r.denAb[lane]);
+            rba[g + lane] = signedRoot(r.numBa[lane] / r.denBa[lane]);
         }
     }
 }
