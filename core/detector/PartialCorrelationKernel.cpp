@@ -177,8 +177,7 @@ TACTISCOPE_INLINE void offer(double* num, double* den, long long* index, Vec<N> 
     const Mask<N> better = candidateNum * bestDen > bestNum * candidateDen;
     store<N>(num, better ? candidateNum : bestNum);
     store<N>(den, better ? candidateDen : bestDen);
-    store<N>(reinterpret_cast<double*>(index),
-             reinterpret_cast<Vec<N>>(better ? candidateIndex : loadMask<N>(index)));
+    store<N>(reinterpret_cast<double*>(index), reinterpret_cast<Vec<N>>(better ? candidateIndex : loadMask<N>(index)));
 }
 
 // Offers one group's correlations for one sample. In the group that holds
