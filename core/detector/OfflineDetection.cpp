@@ -10,20 +10,9 @@
 namespace tactiscope::core::detector {
 namespace {
 
-// Outputs of every pair for one lag subset.
-using PairSeries = std::vector<std::vector<DetectorOutput>>;
-
-PairSeries runSubset(const SeriesInput& input, const DetectorParameters& parameters)
-{
-    const std::size_t pairs = input.cantilevers.size() - 1;
-    PairSeries out(pairs);
-    for (std::size_t p = 0; p < pairs; ++p) {
-        PairDetector detector(parameters);
-        out[p].resize(input.cantilevers[p].size());
-        detector.process(input.cantilevers[p], input.cantilevers[p + 1], out[p]);
-    }
-    return out;
-}
+// Samples per chunk: the pair outputs of a chunk stay in cache, and memory
+// does not grow with the recording beyond the result itself.
+constexpr std::size_t kChunk = std::size_t{1} << 16;
 
 // Larger R wins; on equal R the earlier pair, then the shorter lag, exactly
 // as one ProbeDetector over all lags would choose.
@@ -32,6 +21,21 @@ bool better(double r, std::size_t pair, std::uint32_t lag, double bestR, std::si
     if (r != bestR) return r > bestR;
     return pair != bestPair ? pair < bestPair : lag < bestLag;
 }
+
+// One worker: its lag subset for every pair, fed chunk by chunk.
+struct Worker {
+    std::vector<PairDetector> pairs;
+    std::vector<std::vector<DetectorOutput>> outputs;  // per pair, one chunk
+
+    void run(const SeriesInput& input, std::size_t first, std::size_t count)
+    {
+        for (std::size_t p = 0; p < pairs.size(); ++p) {
+            outputs[p].resize(count);
+            pairs[p].process(input.cantilevers[p].subspan(first, count), input.cantilevers[p + 1].subspan(first, count),
+                             outputs[p]);
+        }
+    }
+};
 
 }  // namespace
 
@@ -48,50 +52,52 @@ std::vector<ProbeOutput> detectSeries(const SeriesInput& input, const DetectorPa
 
     // Lag subsets of whole groups of 8, so every thread keeps its vectors full.
     const std::size_t groups = (resolved.lags.size() + kLaneWidth - 1) / kLaneWidth;
-    const std::size_t workers = std::max<std::size_t>(1, std::min<std::size_t>(threads, groups));
-    std::vector<DetectorParameters> subsets;
-    for (std::size_t w = 0; w < workers; ++w) {
-        const std::size_t first = groups * w / workers * kLaneWidth;
-        const std::size_t last = std::min(resolved.lags.size(), groups * (w + 1) / workers * kLaneWidth);
+    const std::size_t workerCount = std::max<std::size_t>(1, std::min<std::size_t>(threads, groups));
+    std::vector<Worker> workers(workerCount);
+    for (std::size_t w = 0; w < workerCount; ++w) {
+        const std::size_t first = groups * w / workerCount * kLaneWidth;
+        const std::size_t last = std::min(resolved.lags.size(), groups * (w + 1) / workerCount * kLaneWidth);
         DetectorParameters subset = parameters;
         subset.lags_s.clear();
         for (std::size_t i = first; i < last; ++i)
             subset.lags_s.push_back(static_cast<double>(resolved.lags[i]) * parameters.sampleInterval_s);
-        subsets.push_back(std::move(subset));
-    }
-
-    std::vector<PairSeries> results(workers);
-    if (workers == 1) {
-        results[0] = runSubset(input, subsets[0]);
-    } else {
-        std::vector<std::jthread> pool;
-        for (std::size_t w = 0; w < workers; ++w)
-            pool.emplace_back([&, w] { results[w] = runSubset(input, subsets[w]); });
+        for (std::size_t p = 0; p + 1 < input.cantilevers.size(); ++p) workers[w].pairs.emplace_back(subset);
+        workers[w].outputs.resize(workers[w].pairs.size());
     }
 
     std::vector<ProbeOutput> outputs(n);
     const double dt = parameters.sampleInterval_s;
-    for (std::size_t i = 0; i < n; ++i) {
-        ProbeOutput o;
-        o.t_s = input.times.empty() ? input.t0_s + static_cast<double>(i) * dt : input.times[i];
-        o.combined = results[0][0][i];
-        for (std::size_t w = 0; w < workers; ++w) {
-            for (std::size_t p = 0; p < results[w].size(); ++p) {
-                const DetectorOutput& c = results[w][p][i];
-                if (better(c.rab, p, c.lagAb, o.combined.rab, o.pairAb, o.combined.lagAb)) {
-                    o.combined.rab = c.rab;
-                    o.combined.lagAb = c.lagAb;
-                    o.pairAb = p;
-                }
-                if (better(c.rba, p, c.lagBa, o.combined.rba, o.pairBa, o.combined.lagBa)) {
-                    o.combined.rba = c.rba;
-                    o.combined.lagBa = c.lagBa;
-                    o.pairBa = p;
+    for (std::size_t first = 0; first < n; first += kChunk) {
+        const std::size_t count = std::min(kChunk, n - first);
+        if (workerCount == 1) {
+            workers[0].run(input, first, count);
+        } else {
+            std::vector<std::jthread> pool;
+            for (auto& worker : workers) pool.emplace_back([&] { worker.run(input, first, count); });
+        }
+        for (std::size_t j = 0; j < count; ++j) {
+            const std::size_t i = first + j;
+            ProbeOutput o;
+            o.t_s = input.times.empty() ? input.t0_s + static_cast<double>(i) * dt : input.times[i];
+            o.combined = workers[0].outputs[0][j];
+            for (const Worker& worker : workers) {
+                for (std::size_t p = 0; p < worker.outputs.size(); ++p) {
+                    const DetectorOutput& c = worker.outputs[p][j];
+                    if (better(c.rab, p, c.lagAb, o.combined.rab, o.pairAb, o.combined.lagAb)) {
+                        o.combined.rab = c.rab;
+                        o.combined.lagAb = c.lagAb;
+                        o.pairAb = p;
+                    }
+                    if (better(c.rba, p, c.lagBa, o.combined.rba, o.pairBa, o.combined.lagBa)) {
+                        o.combined.rba = c.rba;
+                        o.combined.lagBa = c.lagBa;
+                        o.pairBa = p;
+                    }
                 }
             }
+            o.combined.decision = decide(o.combined.rab, o.combined.rba, resolved.threshold);
+            outputs[i] = o;
         }
-        o.combined.decision = decide(o.combined.rab, o.combined.rba, resolved.threshold);
-        outputs[i] = o;
     }
     return outputs;
 }
