@@ -118,34 +118,41 @@ struct SignedSquares {
     Vec<N> numAb, denAb, numBa, denBa;
 };
 
-// Partial correlations through Schur complements: for R_ab, the covariance
-// of (b, a(t−k)) given Z = (a, b(t−k)) is Σ_XX − Σ_XZ Σ_ZZ⁻¹ Σ_ZX; scaled by
-// det Σ_ZZ > 0 it needs no division, and the scale cancels in R. This equals
-// −U₂₃/√(U₂₂U₃₃) of eq. 4 with U = V⁻¹; R_ba likewise with X = (a, b(t−k)).
-// sign(R)·R² = num/den ranks lags like R; ratios are compared by
-// cross-multiplication, because a vector division would hold a multiply-add
-// pipe for many cycles.
+// The partial correlation of two variables x, y given two others z, w, as
+// the ratio sign(R)·R² = num/den. The covariance of (x, y) given (z, w) is
+// the Schur complement Σ_XX − Σ_XZ Σ_ZZ⁻¹ Σ_ZX; scaled by det Σ_ZZ > 0 it
+// needs no division, and the scale cancels in R. Arguments: the Z block
+// (zz, ww, zw), the cross covariances (xz, xw, yz, yw) and the X block
+// (xx, yy, xy).
+template <std::size_t N>
+TACTISCOPE_INLINE void conditionalCorrelation(Vec<N> zz, Vec<N> ww, Vec<N> zw, Vec<N> xz, Vec<N> xw, Vec<N> yz,
+                                              Vec<N> yw, Vec<N> xx, Vec<N> yy, Vec<N> xy, Vec<N>& num, Vec<N>& den)
+{
+    const Vec<N> det = zz * ww - zw * zw;
+    // adj(Σ_ZZ)·(yz, yw) and adj(Σ_ZZ)·(xz, xw)
+    const Vec<N> ya = ww * yz - zw * yw;
+    const Vec<N> yb = zz * yw - zw * yz;
+    const Vec<N> xa = ww * xz - zw * xw;
+    const Vec<N> xb = zz * xw - zw * xz;
+    const Vec<N> cxx = det * xx - (xz * xa + xw * xb);
+    const Vec<N> cyy = det * yy - (yz * ya + yw * yb);
+    const Vec<N> cxy = det * xy - (xz * ya + xw * yb);
+    num = cxy * absolute<N>(cxy);
+    den = cxx * cyy;
+}
+
+// R_ab of eq. 4 (b(t) with a(t−k), given a(t) and b(t−k)) and R_ba of eq. 5
+// (a(t) with b(t−k), given b(t) and a(t−k)); this equals −U₂₃/√(U₂₂U₃₃) and
+// −U₁₄/√(U₁₁U₄₄) with U = V⁻¹. sign(R)·R² = num/den ranks lags like R;
+// ratios are compared by cross-multiplication, because a vector division
+// would hold a multiply-add pipe for many cycles.
 template <std::size_t N>
 TACTISCOPE_INLINE SignedSquares<N> partialCorrelations(const Covariance<N>& c)
 {
-    const Vec<N> dz = c.v00 * c.v33 - c.v03 * c.v03;
-    const Vec<N> w1a = c.v33 * c.v01 - c.v03 * c.v13;
-    const Vec<N> w1b = c.v00 * c.v13 - c.v03 * c.v01;
-    const Vec<N> w2a = c.v33 * c.v02 - c.v03 * c.v23;
-    const Vec<N> w2b = c.v00 * c.v23 - c.v03 * c.v02;
-    const Vec<N> m11 = dz * c.v11 - (c.v01 * w1a + c.v13 * w1b);
-    const Vec<N> m22 = dz * c.v22 - (c.v02 * w2a + c.v23 * w2b);
-    const Vec<N> m12 = dz * c.v12 - (c.v01 * w2a + c.v13 * w2b);
-
-    const Vec<N> dy = c.v11 * c.v22 - c.v12 * c.v12;
-    const Vec<N> y0a = c.v22 * c.v01 - c.v12 * c.v02;
-    const Vec<N> y0b = c.v11 * c.v02 - c.v12 * c.v01;
-    const Vec<N> y3a = c.v22 * c.v13 - c.v12 * c.v23;
-    const Vec<N> y3b = c.v11 * c.v23 - c.v12 * c.v13;
-    const Vec<N> n00 = dy * c.v00 - (c.v01 * y0a + c.v02 * y0b);
-    const Vec<N> n33 = dy * c.v33 - (c.v13 * y3a + c.v23 * y3b);
-    const Vec<N> n03 = dy * c.v03 - (c.v01 * y3a + c.v02 * y3b);
-    return {m12 * absolute<N>(m12), m11 * m22, n03 * absolute<N>(n03), n00 * n33};
+    SignedSquares<N> r;
+    conditionalCorrelation<N>(c.v00, c.v33, c.v03, c.v01, c.v13, c.v02, c.v23, c.v11, c.v22, c.v12, r.numAb, r.denAb);
+    conditionalCorrelation<N>(c.v11, c.v22, c.v12, c.v01, c.v02, c.v13, c.v23, c.v00, c.v33, c.v03, r.numBa, r.denBa);
+    return r;
 }
 
 // Per sample, the per-lane best ratio num/den seen so far and its lag index.
