@@ -8,7 +8,7 @@ packages=(
   build-essential cmake pkg-config git
   qt6-base-dev qt6-svg-dev qt6-serialport-dev libqt6sql6-sqlite
   libqcustomplot-dev libhidapi-dev libserialport-dev
-  libeigen3-dev libsqlite3-dev
+  libeigen3-dev libsqlite3-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
   xvfb xauth file fonts-dejavu-core clang-format
 )

@@ -1,13 +1,14 @@
 // ScenarioCatalog: the table of simulator scenarios.
 #include "devices/simulator/ScenarioCatalog.h"
 
+#include "devices/simulator/PalpationScenario.h"
 #include "devices/simulator/PanelScanScenario.h"
 
 namespace tactiscope::devices::simulator {
 
 std::vector<std::string> scenarioIds()
 {
-    return {"panel-scan"};
+    return {"panel-scan", "palpation"};
 }
 
 std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64_t seed)
@@ -16,6 +17,11 @@ std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64
         PanelScanParameters parameters;
         parameters.seed = seed;
         return std::make_unique<PanelScanScenario>(parameters);
+    }
+    if (id == "palpation") {
+        PalpationParameters parameters;
+        parameters.seed = seed;
+        return std::make_unique<PalpationScenario>(parameters);
     }
     return nullptr;
 }

@@ -1,0 +1,31 @@
+// A calibration result as it is stored and shown: what was calibrated, by
+// whom and when, the values it produced (names carry their units, e.g.
+// "counts_per_newton") and the statistics of the fit behind them.
+#pragma once
+
+#include "core/calibration/LinearFit.h"
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tactiscope::core::calibration {
+
+struct CalibrationRecord {
+    std::string kind;  // "gauge_factor", "capacitive", …
+    std::string sensorName;
+    std::string operatorName;
+    std::string timestampUtc;  // ISO 8601, e.g. 2026-11-21T13:40:00Z
+    std::vector<std::pair<std::string, double>> values;
+    LinearFit fit;
+
+    std::optional<double> value(const std::string& name) const;
+    // One JSON object with all of the above.
+    std::string toJson() const;
+};
+
+// The current time as ISO 8601 UTC with seconds.
+std::string utcTimestampNow();
+
+}  // namespace tactiscope::core::calibration

@@ -1,0 +1,49 @@
+// Gauge-factor calibration of a strain-gauge cantilever: with the beam's
+// geometry known, a known tip load F (or a known tip deflection Δ, i.e.
+// F = k·Δ) puts a known strain ε = F·(6L/(E·w·t²)) on the root. Each
+// calibration step's mean reading gives the relative resistance change
+// x = GF·ε through the bridge equation, so the slope of x against ε is the
+// effective gauge factor of the whole channel (gauge, bonding, wiring). The
+// slope of counts against force is fitted too, for channels read directly
+// in newtons.
+#pragma once
+
+#include "core/calibration/CalibrationRecord.h"
+#include "core/sensors/CantileverBeam.h"
+#include "core/straingauge/StrainGaugeChain.h"
+
+#include <string>
+#include <vector>
+
+namespace tactiscope::core::calibration {
+
+struct CalibrationLoad {
+    // Exactly one of the two is given (the other left at 0): a tip force, or
+    // a tip deflection that the beam's stiffness turns into a force.
+    double force_n = 0.0;
+    double tipDeflection_m = 0.0;
+    double meanCounts = 0.0;  // mean reading of the stable window at this load
+};
+
+struct GaugeFactorResult {
+    double gaugeFactor = 0.0;  // effective, from the fit
+    double nominalGaugeFactor = 0.0;
+    double deviationFromNominal = 0.0;  // (effective − nominal) / nominal
+    double countsPerNewton = 0.0;
+    double zeroCounts = 0.0;
+    LinearFit strainFit;  // x = GF·ε: slope is the gauge factor
+    LinearFit forceFit;   // counts − zero against force
+    CalibrationRecord record;
+};
+
+// zeroCounts: mean reading with no load. Throws std::invalid_argument for
+// fewer than two loads, a load with both or neither of force and
+// deflection, or loads that are all equal.
+GaugeFactorResult calibrateGaugeFactor(const sensors::CantileverBeam& beam, const straingauge::StrainGaugeChain& chain,
+                                       double zeroCounts, const std::vector<CalibrationLoad>& loads,
+                                       const std::string& sensorName, const std::string& operatorName);
+
+// Standard gravity, for loads given as masses (1 gf = 9.80665 mN).
+inline constexpr double kStandardGravity_m_per_s2 = 9.80665;
+
+}  // namespace tactiscope::core::calibration

@@ -1,0 +1,29 @@
+// Ordinary least squares y = intercept + slope·x, with the statistics a
+// calibration report needs: R², residuals and standard errors.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace tactiscope::core::calibration {
+
+struct LinearFit {
+    double slope = 0.0;
+    double intercept = 0.0;
+    double rSquared = 0.0;
+    double slopeStandardError = 0.0;  // needs ≥ 3 points; 0 with 2
+    double interceptStandardError = 0.0;
+    double residualStandardDeviation = 0.0;
+    std::vector<double> residuals;  // y − fit, per point
+    std::size_t points = 0;
+};
+
+// Throws std::invalid_argument for fewer than two points, unequal lengths or
+// all x equal.
+LinearFit fitLine(std::span<const double> x, std::span<const double> y);
+
+// Least squares through the origin, y = slope·x (intercept 0).
+LinearFit fitProportional(std::span<const double> x, std::span<const double> y);
+
+}  // namespace tactiscope::core::calibration

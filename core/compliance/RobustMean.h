@@ -1,0 +1,24 @@
+// Mean with outlier rejection as the paper does it ("all readings more than
+// three standard deviations from the mean value were rejected"), iterated:
+// after a rejection the mean and σ change, so the test is repeated on the
+// kept values until nothing more is rejected (at most 20 rounds, which a
+// pathological sample could otherwise exceed).
+#pragma once
+
+#include <cstddef>
+#include <span>
+
+namespace tactiscope::core::compliance {
+
+struct RobustMean {
+    double mean = 0.0;
+    double standardDeviation = 0.0;  // of the kept values (n − 1)
+    double standardError = 0.0;      // σ/√n of the kept values
+    std::size_t used = 0;
+    std::size_t rejected = 0;
+};
+
+// Throws std::invalid_argument for an empty input or k ≤ 0.
+RobustMean robustMean(std::span<const double> values, double k = 3.0);
+
+}  // namespace tactiscope::core::compliance

@@ -1,0 +1,121 @@
+// Step and press readings of the compliance probe.
+#include "core/compliance/StiffnessReadings.h"
+
+#include "core/calibration/LinearFit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace tactiscope::core::compliance {
+
+StepReader::StepReader(const sensors::CompliancePair& pair, std::size_t readings)
+    : m_pair(pair),
+      m_readings(readings)
+{
+    if (readings < 2) throw std::invalid_argument("a step reading needs at least two readings");
+    m_high.reserve(readings);
+    m_low.reserve(readings);
+}
+
+std::optional<StepReading> StepReader::push(double forceHigh_n, double forceLow_n)
+{
+    m_high.push_back(forceHigh_n);
+    m_low.push_back(forceLow_n);
+    if (m_high.size() < m_readings) return std::nullopt;
+    StepReading reading;
+    reading.forceHigh = robustMean(m_high);
+    reading.forceLow = robustMean(m_low);
+    reading.q = reading.forceLow.mean != 0.0 ? reading.forceHigh.mean / reading.forceLow.mean : 0.0;
+    reading.stiffness = m_pair.objectStiffness(reading.q);
+    m_high.clear();
+    m_low.clear();
+    return reading;
+}
+
+PressReader::PressReader(const sensors::CompliancePair& pair, PressSettings settings)
+    : m_pair(pair),
+      m_settings(settings)
+{
+    if (!(settings.contactThreshold_n > 0.0)) throw std::invalid_argument("contact threshold must be positive");
+}
+
+std::optional<PressReading> PressReader::push(double t_s, double displacement_m, double forceHigh_n, double forceLow_n)
+{
+    const double threshold = m_settings.contactThreshold_n;
+    std::optional<PressReading> ended;
+    if (m_pressing && (forceHigh_n < 0.5 * threshold || forceLow_n < 0.5 * threshold)) ended = close();
+    if (!m_pressing && forceHigh_n > threshold && forceLow_n > threshold) {
+        m_pressing = true;
+        m_start_s = t_s;
+    }
+    if (m_pressing) {
+        m_last_s = t_s;
+        const sensors::StiffnessReading k = m_pair.objectStiffness(forceHigh_n / forceLow_n);
+        if (k.range == sensors::ComplianceRange::InRange) {
+            m_stiffness.push_back(k.objectStiffness_n_per_m);
+            m_displacement.push_back(displacement_m);
+            m_sum += k.objectStiffness_n_per_m;
+            m_sumSquares += k.objectStiffness_n_per_m * k.objectStiffness_n_per_m;
+        } else if (k.range == sensors::ComplianceRange::Below) {
+            ++m_below;
+        } else {
+            ++m_above;
+        }
+    }
+    return ended;
+}
+
+std::optional<std::pair<double, double>> PressReader::current() const
+{
+    if (!m_pressing || m_stiffness.size() < 2) return std::nullopt;
+    const auto n = static_cast<double>(m_stiffness.size());
+    const double mean = m_sum / n;
+    const double variance = std::max(0.0, (m_sumSquares - n * mean * mean) / (n - 1.0));
+    return std::pair{mean, std::sqrt(variance / n)};
+}
+
+std::optional<PressReading> PressReader::finish()
+{
+    return m_pressing ? close() : std::nullopt;
+}
+
+std::optional<PressReading> PressReader::close()
+{
+    m_pressing = false;
+    std::optional<PressReading> result;
+    const std::size_t outOfRange = m_below + m_above;
+    const std::size_t samples = m_stiffness.size() + outOfRange;
+    if (samples >= m_settings.minimumSamples) {
+        PressReading r;
+        r.start_s = m_start_s;
+        r.end_s = m_last_s;
+        r.samplesOutOfRange = outOfRange;
+        if (m_stiffness.size() * 2 < samples) {
+            // Mostly out of range: no number, but which way it is out.
+            r.stiffness.range = m_above > m_below ? sensors::ComplianceRange::Above : sensors::ComplianceRange::Below;
+        } else {
+            const RobustMean mean = robustMean(m_stiffness);
+            r.stiffness = {sensors::ComplianceRange::InRange, mean.mean};
+            r.standardError_n_per_m = mean.standardError;
+            r.samplesUsed = mean.used;
+            r.samplesRejected = mean.rejected;
+            const auto [lo, hi] = std::minmax_element(m_displacement.begin(), m_displacement.end());
+            r.displacementMin_m = *lo;
+            r.displacementMax_m = *hi;
+            if (*hi > *lo && m_stiffness.size() >= 3) {
+                const calibration::LinearFit slope = calibration::fitLine(m_displacement, m_stiffness);
+                r.displacementSlope_n_per_m_per_m = slope.slope;
+                r.displacementSlopeStandardError = slope.slopeStandardError;
+            }
+        }
+        result = r;
+    }
+    m_stiffness.clear();
+    m_displacement.clear();
+    m_below = m_above = 0;
+    m_sum = m_sumSquares = 0.0;
+    return result;
+}
+
+}  // namespace tactiscope::core::compliance

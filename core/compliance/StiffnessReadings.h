@@ -1,0 +1,100 @@
+// Turning the two forces of a compliance probe into a stiffness reading, in
+// the two ways a user works:
+//
+// Step mode (the paper's procedure): hold the probe at one displacement,
+// collect N readings of both forces (default 1000), reject each force's
+// readings beyond 3σ, and compute Q and k_o from the two robust means.
+//
+// Press mode (a hand-held probe): a press starts when both forces exceed the
+// contact threshold and ends when either falls below half of it (the
+// hysteresis keeps a trembling hand from splitting one press into many).
+// During the press k_o is computed for every sample; at the end the reading
+// is the robust mean of those values with its standard error, the
+// displacement range covered, and the slope of k_o against displacement —
+// near zero if, as the method promises, the reading does not depend on how
+// far the probe was pressed.
+#pragma once
+
+#include "core/compliance/RobustMean.h"
+#include "core/sensors/CompliancePair.h"
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace tactiscope::core::compliance {
+
+struct StepReading {
+    sensors::StiffnessReading stiffness;
+    double q = 0.0;
+    RobustMean forceHigh;
+    RobustMean forceLow;
+};
+
+class StepReader {
+public:
+    StepReader(const sensors::CompliancePair& pair, std::size_t readings = 1000);
+
+    // Adds one pair of forces; returns the reading when N have been collected
+    // (and starts over).
+    std::optional<StepReading> push(double forceHigh_n, double forceLow_n);
+    std::size_t collected() const { return m_high.size(); }
+
+private:
+    sensors::CompliancePair m_pair;
+    std::size_t m_readings;
+    std::vector<double> m_high, m_low;
+};
+
+struct PressReading {
+    double start_s = 0.0;
+    double end_s = 0.0;
+    // In range: the robust mean of the press's per-sample stiffness.
+    sensors::StiffnessReading stiffness;
+    double standardError_n_per_m = 0.0;
+    std::size_t samplesUsed = 0;
+    std::size_t samplesRejected = 0;    // beyond 3σ
+    std::size_t samplesOutOfRange = 0;  // Q ≤ 1 or Q ≥ k_h/k_l at that sample
+    // When most samples were out of range, stiffness.range says which way.
+    double displacementMin_m = 0.0;
+    double displacementMax_m = 0.0;
+    // d(k_o)/d(displacement) over the press and its standard error.
+    double displacementSlope_n_per_m_per_m = 0.0;
+    double displacementSlopeStandardError = 0.0;
+};
+
+struct PressSettings {
+    double contactThreshold_n = 0.01;
+    std::size_t minimumSamples = 20;  // shorter presses are taps, not readings
+};
+
+class PressReader {
+public:
+    explicit PressReader(const sensors::CompliancePair& pair, PressSettings settings = {});
+
+    // One sample; returns a reading when a press has just ended.
+    std::optional<PressReading> push(double t_s, double displacement_m, double forceHigh_n, double forceLow_n);
+    // Ends the stream: returns the reading of a press still in progress.
+    std::optional<PressReading> finish();
+
+    bool pressing() const { return m_pressing; }
+    // While pressing: the plain mean and standard error so far (for display).
+    std::optional<std::pair<double, double>> current() const;
+
+private:
+    std::optional<PressReading> close();
+
+    sensors::CompliancePair m_pair;
+    PressSettings m_settings;
+    bool m_pressing = false;
+    double m_start_s = 0.0;
+    double m_last_s = 0.0;
+    std::size_t m_below = 0;  // samples with Q ≤ 1
+    std::size_t m_above = 0;  // samples with Q ≥ k_h/k_l
+    std::vector<double> m_stiffness;
+    std::vector<double> m_displacement;
+    double m_sum = 0.0;
+    double m_sumSquares = 0.0;
+};
+
+}  // namespace tactiscope::core::compliance

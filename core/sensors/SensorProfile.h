@@ -1,0 +1,49 @@
+// Sensor profiles: the JSON files that describe a probe's mechanics, in SI
+// units, with the exact keys other tools write:
+//   {"kind": "cantilever", "name": "...", "length_m": 0.05, "width_m": 0.01,
+//    "thickness_m": 0.002, "youngs_modulus_pa": 3e9}
+//   {"kind": "compliance_pair", "name": "...", "high": {cantilever keys},
+//    "low": {cantilever keys}}
+// Loading validates everything and reports the first problem with the key
+// that has it ("high.thickness_m: must be a positive number"); unknown keys
+// are errors too, so a misspelt key is not silently ignored.
+#pragma once
+
+#include "core/sensors/CantileverBeam.h"
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <variant>
+
+namespace tactiscope::core::sensors {
+
+struct CantileverProfile {
+    std::string name;
+    CantileverGeometry geometry;
+};
+
+struct CompliancePairProfile {
+    std::string name;
+    CantileverGeometry high;
+    CantileverGeometry low;
+};
+
+using SensorProfile = std::variant<CantileverProfile, CompliancePairProfile>;
+
+// One line for the user: "<source>: <key>: <problem>".
+class ProfileError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// `source` names the text in messages (usually the file name).
+SensorProfile parseSensorProfile(std::string_view json, const std::string& source);
+SensorProfile loadSensorProfile(const std::string& path);
+
+// The profile as JSON with the keys above (for export and for storing with a
+// session).
+std::string toJson(const SensorProfile& profile);
+const std::string& profileName(const SensorProfile& profile);
+
+}  // namespace tactiscope::core::sensors

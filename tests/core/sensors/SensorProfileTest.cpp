@@ -1,0 +1,79 @@
+// Sensor profile JSON: the documented keys, errors naming the bad key, and a
+// round trip.
+#include "core/sensors/SensorProfile.h"
+
+#include <gtest/gtest.h>
+
+using namespace tactiscope::core::sensors;
+
+namespace {
+
+std::string errorOf(const std::string& json)
+{
+    try {
+        parseSensorProfile(json, "probe.json");
+    } catch (const ProfileError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+const char* kPair = R"({"kind": "compliance_pair", "name": "paper probe",
+    "high": {"length_m": 0.05, "width_m": 0.01, "thickness_m": 0.003, "youngs_modulus_pa": 3e9},
+    "low": {"length_m": 0.05, "width_m": 0.01, "thickness_m": 0.001, "youngs_modulus_pa": 3e9}})";
+
+}  // namespace
+
+TEST(SensorProfile, ReadsACantilever)
+{
+    const auto profile = parseSensorProfile(
+        R"({"kind": "cantilever", "name": "specimen", "length_m": 0.1, "width_m": 0.01, "thickness_m": 0.002,
+            "youngs_modulus_pa": 3e9})",
+        "specimen.json");
+    const auto& c = std::get<CantileverProfile>(profile);
+    EXPECT_EQ(c.name, "specimen");
+    EXPECT_DOUBLE_EQ(c.geometry.length_m, 0.1);
+    EXPECT_DOUBLE_EQ(c.geometry.youngsModulus_pa, 3e9);
+}
+
+TEST(SensorProfile, ReadsACompliancePairAndWritesItBack)
+{
+    const auto profile = parseSensorProfile(kPair, "probe.json");
+    const auto& pair = std::get<CompliancePairProfile>(profile);
+    EXPECT_DOUBLE_EQ(pair.high.thickness_m, 0.003);
+    EXPECT_DOUBLE_EQ(pair.low.thickness_m, 0.001);
+    EXPECT_EQ(profileName(profile), "paper probe");
+    const auto again = parseSensorProfile(toJson(profile), "again.json");
+    EXPECT_EQ(std::get<CompliancePairProfile>(again).high, pair.high);
+    EXPECT_EQ(std::get<CompliancePairProfile>(again).low, pair.low);
+}
+
+TEST(SensorProfile, ErrorsNameTheFileAndTheKey)
+{
+    EXPECT_EQ(errorOf(R"({"kind": "cantilever", "name": "x", "length_m": 0.1, "width_m": 0.01, "thickness_m": -2,
+                          "youngs_modulus_pa": 3e9})"),
+              "probe.json: thickness_m: must be a positive number, got -2");
+    EXPECT_EQ(errorOf(R"({"kind": "cantilever", "name": "x", "length_m": 0.1, "width_m": 0.01,
+                          "youngs_modulus_pa": 3e9})"),
+              "probe.json: thickness_m: missing");
+    EXPECT_EQ(errorOf(R"({"kind": "cantilever", "name": "x", "lenght_m": 0.1, "length_m": 0.1, "width_m": 0.01,
+                          "thickness_m": 0.002, "youngs_modulus_pa": 3e9})"),
+              "probe.json: lenght_m: unknown key");
+    EXPECT_EQ(errorOf(R"({"kind": "spring", "name": "x"})"),
+              "probe.json: kind: 'spring' is not a known sensor kind (cantilever, compliance_pair)");
+    EXPECT_EQ(errorOf(R"({"kind": "compliance_pair", "name": "x", "high": {"length_m": 0.05, "width_m": 0.01,
+                          "thickness_m": "3 mm", "youngs_modulus_pa": 3e9}, "low": {}})"),
+              "probe.json: high.thickness_m: must be a positive number, got \"3 mm\"");
+    EXPECT_NE(errorOf(R"({"kind": "compliance_pair", "name": "x",
+        "high": {"length_m": 0.05, "width_m": 0.01, "thickness_m": 0.001, "youngs_modulus_pa": 3e9},
+        "low": {"length_m": 0.05, "width_m": 0.01, "thickness_m": 0.003, "youngs_modulus_pa": 3e9}})")
+                  .find("high: must be the stiffer beam"),
+              std::string::npos);
+    EXPECT_EQ(errorOf("{\"kind\": ").rfind("probe.json: not valid JSON (", 0), 0u);
+    EXPECT_EQ(errorOf("[1, 2]"), "probe.json: must be a JSON object");
+}
+
+TEST(SensorProfile, AMissingFileIsAProfileError)
+{
+    EXPECT_THROW(loadSensorProfile("/nonexistent/probe.json"), ProfileError);
+}
