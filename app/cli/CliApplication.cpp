@@ -2,7 +2,9 @@
 #include "CliApplication.h"
 
 #include "CliSupport.h"
+#include "ComplianceCommand.h"
 #include "DetectCommand.h"
+#include "ModelCommand.h"
 #include "SimulateCommand.h"
 #include "core/Version.h"
 
@@ -20,7 +22,9 @@ struct Command {
 };
 
 constexpr std::array kCommands{
+    Command{"compliance", "Object stiffness from a compliance probe's forces (seed 001).", runCompliance},
     Command{"detect", "Find surface deflections in a CSV recording (seed 000).", runDetect},
+    Command{"model", "What the sensor model gives for a profile (JSON).", runModel},
     Command{"simulate", "Write a simulated recording as CSV.", runSimulate},
 };
 

@@ -3,11 +3,10 @@
 
 #include <cmath>
 #include <stdexcept>
-#include <vector>
 
 namespace tactiscope::core::compliance {
 
-RobustMean robustMean(std::span<const double> values, double k)
+RobustMean robustMean(std::span<const double> values, double k, std::vector<bool>* keptOut)
 {
     if (values.empty()) throw std::invalid_argument("robust mean of no values");
     if (!(k > 0.0)) throw std::invalid_argument("rejection limit must be positive");
@@ -38,6 +37,7 @@ RobustMean robustMean(std::span<const double> values, double k)
         }
         if (!changed) break;
     }
+    if (keptOut) *keptOut = kept;
     return result;
 }
 

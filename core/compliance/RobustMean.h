@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <span>
+#include <vector>
 
 namespace tactiscope::core::compliance {
 
@@ -18,7 +19,8 @@ struct RobustMean {
     std::size_t rejected = 0;
 };
 
-// Throws std::invalid_argument for an empty input or k ≤ 0.
-RobustMean robustMean(std::span<const double> values, double k = 3.0);
+// Throws std::invalid_argument for an empty input or k ≤ 0. When `kept` is
+// given it receives, per value, whether the value was kept.
+RobustMean robustMean(std::span<const double> values, double k = 3.0, std::vector<bool>* kept = nullptr);
 
 }  // namespace tactiscope::core::compliance

@@ -33,6 +33,55 @@ std::optional<StepReading> StepReader::push(double forceHigh_n, double forceLow_
     return reading;
 }
 
+PressReading readPress(const sensors::CompliancePair& pair, std::span<const double> displacement,
+                       std::span<const double> forceHigh, std::span<const double> forceLow)
+{
+    if (displacement.empty() || displacement.size() != forceHigh.size() || forceHigh.size() != forceLow.size())
+        throw std::invalid_argument("a press needs equal, non-empty series of displacement and forces");
+    std::vector<double> stiffness, where;
+    std::size_t below = 0, above = 0;
+    for (std::size_t i = 0; i < displacement.size(); ++i) {
+        const sensors::StiffnessReading k = pair.objectStiffness(forceHigh[i] / forceLow[i]);
+        if (k.range == sensors::ComplianceRange::InRange) {
+            stiffness.push_back(k.objectStiffness_n_per_m);
+            where.push_back(displacement[i]);
+        } else {
+            ++(k.range == sensors::ComplianceRange::Below ? below : above);
+        }
+    }
+    PressReading r;
+    r.samplesOutOfRange = below + above;
+    if (stiffness.size() * 2 < displacement.size()) {
+        // Mostly out of range: no number, but which way it is out.
+        r.stiffness.range = above > below ? sensors::ComplianceRange::Above : sensors::ComplianceRange::Below;
+        return r;
+    }
+    std::vector<bool> kept;
+    const RobustMean mean = robustMean(stiffness, 3.0, &kept);
+    r.stiffness = {sensors::ComplianceRange::InRange, mean.mean};
+    r.standardError_n_per_m = mean.standardError;
+    r.samplesUsed = mean.used;
+    r.samplesRejected = mean.rejected;
+    // Range and slope over the kept samples only: a rejected spike must not
+    // tilt the displacement check either.
+    std::vector<double> keptStiffness, keptWhere;
+    for (std::size_t i = 0; i < stiffness.size(); ++i) {
+        if (kept[i]) {
+            keptStiffness.push_back(stiffness[i]);
+            keptWhere.push_back(where[i]);
+        }
+    }
+    const auto [lo, hi] = std::minmax_element(keptWhere.begin(), keptWhere.end());
+    r.displacementMin_m = *lo;
+    r.displacementMax_m = *hi;
+    if (*hi > *lo && keptStiffness.size() >= 3) {
+        const calibration::LinearFit slope = calibration::fitLine(keptWhere, keptStiffness);
+        r.displacementSlope_n_per_m_per_m = slope.slope;
+        r.displacementSlopeStandardError = slope.slopeStandardError;
+    }
+    return r;
+}
+
 PressReader::PressReader(const sensors::CompliancePair& pair, PressSettings settings)
     : m_pair(pair),
       m_settings(settings)
@@ -51,16 +100,14 @@ std::optional<PressReading> PressReader::push(double t_s, double displacement_m,
     }
     if (m_pressing) {
         m_last_s = t_s;
+        m_displacement.push_back(displacement_m);
+        m_forceHigh.push_back(forceHigh_n);
+        m_forceLow.push_back(forceLow_n);
         const sensors::StiffnessReading k = m_pair.objectStiffness(forceHigh_n / forceLow_n);
         if (k.range == sensors::ComplianceRange::InRange) {
-            m_stiffness.push_back(k.objectStiffness_n_per_m);
-            m_displacement.push_back(displacement_m);
+            ++m_count;
             m_sum += k.objectStiffness_n_per_m;
             m_sumSquares += k.objectStiffness_n_per_m * k.objectStiffness_n_per_m;
-        } else if (k.range == sensors::ComplianceRange::Below) {
-            ++m_below;
-        } else {
-            ++m_above;
         }
     }
     return ended;
@@ -68,8 +115,8 @@ std::optional<PressReading> PressReader::push(double t_s, double displacement_m,
 
 std::optional<std::pair<double, double>> PressReader::current() const
 {
-    if (!m_pressing || m_stiffness.size() < 2) return std::nullopt;
-    const auto n = static_cast<double>(m_stiffness.size());
+    if (!m_pressing || m_count < 2) return std::nullopt;
+    const auto n = static_cast<double>(m_count);
     const double mean = m_sum / n;
     const double variance = std::max(0.0, (m_sumSquares - n * mean * mean) / (n - 1.0));
     return std::pair{mean, std::sqrt(variance / n)};
@@ -84,36 +131,15 @@ std::optional<PressReading> PressReader::close()
 {
     m_pressing = false;
     std::optional<PressReading> result;
-    const std::size_t outOfRange = m_below + m_above;
-    const std::size_t samples = m_stiffness.size() + outOfRange;
-    if (samples >= m_settings.minimumSamples) {
-        PressReading r;
-        r.start_s = m_start_s;
-        r.end_s = m_last_s;
-        r.samplesOutOfRange = outOfRange;
-        if (m_stiffness.size() * 2 < samples) {
-            // Mostly out of range: no number, but which way it is out.
-            r.stiffness.range = m_above > m_below ? sensors::ComplianceRange::Above : sensors::ComplianceRange::Below;
-        } else {
-            const RobustMean mean = robustMean(m_stiffness);
-            r.stiffness = {sensors::ComplianceRange::InRange, mean.mean};
-            r.standardError_n_per_m = mean.standardError;
-            r.samplesUsed = mean.used;
-            r.samplesRejected = mean.rejected;
-            const auto [lo, hi] = std::minmax_element(m_displacement.begin(), m_displacement.end());
-            r.displacementMin_m = *lo;
-            r.displacementMax_m = *hi;
-            if (*hi > *lo && m_stiffness.size() >= 3) {
-                const calibration::LinearFit slope = calibration::fitLine(m_displacement, m_stiffness);
-                r.displacementSlope_n_per_m_per_m = slope.slope;
-                r.displacementSlopeStandardError = slope.slopeStandardError;
-            }
-        }
-        result = r;
+    if (m_displacement.size() >= m_settings.minimumSamples) {
+        result = readPress(m_pair, m_displacement, m_forceHigh, m_forceLow);
+        result->start_s = m_start_s;
+        result->end_s = m_last_s;
     }
-    m_stiffness.clear();
     m_displacement.clear();
-    m_below = m_above = 0;
+    m_forceHigh.clear();
+    m_forceLow.clear();
+    m_count = 0;
     m_sum = m_sumSquares = 0.0;
     return result;
 }

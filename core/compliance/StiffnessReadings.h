@@ -20,6 +20,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace tactiscope::core::compliance {
@@ -63,6 +64,14 @@ struct PressReading {
     double displacementSlopeStandardError = 0.0;
 };
 
+// The reading of samples that all belong to one press: per-sample k_o from
+// the force ratio, the robust mean of those in range, the displacement range
+// and the slope of k_o against displacement. When most samples are out of
+// range, the reading is that state instead of a number. Spans of equal
+// length; throws std::invalid_argument when they differ or are empty.
+PressReading readPress(const sensors::CompliancePair& pair, std::span<const double> displacement_m,
+                       std::span<const double> forceHigh_n, std::span<const double> forceLow_n);
+
 struct PressSettings {
     double contactThreshold_n = 0.01;
     std::size_t minimumSamples = 20;  // shorter presses are taps, not readings
@@ -89,10 +98,9 @@ private:
     bool m_pressing = false;
     double m_start_s = 0.0;
     double m_last_s = 0.0;
-    std::size_t m_below = 0;  // samples with Q ≤ 1
-    std::size_t m_above = 0;  // samples with Q ≥ k_h/k_l
-    std::vector<double> m_stiffness;
-    std::vector<double> m_displacement;
+    std::vector<double> m_displacement, m_forceHigh, m_forceLow;
+    // Running sums of the in-range k_o, for current().
+    std::size_t m_count = 0;
     double m_sum = 0.0;
     double m_sumSquares = 0.0;
 };
