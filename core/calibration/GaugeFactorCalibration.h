@@ -25,6 +25,15 @@ struct CalibrationLoad {
     double meanCounts = 0.0;  // mean reading of the stable window at this load
 };
 
+// Force from a reading through a fitted counts-per-newton slope: the direct
+// route, which needs neither the beam model nor the gauge factor.
+struct ForceCalibration {
+    double zeroCounts = 0.0;
+    double countsPerNewton = 1.0;
+
+    double force_n(double counts) const { return (counts - zeroCounts) / countsPerNewton; }
+};
+
 struct GaugeFactorResult {
     double gaugeFactor = 0.0;  // effective, from the fit
     double nominalGaugeFactor = 0.0;
@@ -34,6 +43,8 @@ struct GaugeFactorResult {
     LinearFit strainFit;  // x = GF·ε: slope is the gauge factor
     LinearFit forceFit;   // counts − zero against force
     CalibrationRecord record;
+
+    ForceCalibration forceCalibration() const { return {zeroCounts, countsPerNewton}; }
 };
 
 // zeroCounts: mean reading with no load. Throws std::invalid_argument for

@@ -40,6 +40,9 @@ TEST(GaugeFactorCalibration, RecoversTheTrueFactorFromNoisyLoads)
     // counts per newton: d(counts)/dF ≈ counts per unit V_r · (GF·s/4)
     const double perNewton = nominal.counts(5.0) * 2.13 * 0.01 / 4.0;
     EXPECT_NEAR(result.countsPerNewton, perNewton, 0.01 * perNewton);
+    // The fitted slope reads a 30 g load back to within 0.5 %.
+    const double force = 0.030 * calibration::kStandardGravity_m_per_s2;
+    EXPECT_NEAR(result.forceCalibration().force_n(truth.countsForStrain(force * 0.01, zero)), force, 0.005 * force);
     EXPECT_EQ(result.record.kind, "gauge_factor");
     EXPECT_EQ(result.record.sensorName, "low beam");
     EXPECT_NEAR(*result.record.value("gauge_factor"), result.gaugeFactor, 0.0);
