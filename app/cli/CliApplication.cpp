@@ -1,6 +1,7 @@
 // Subcommand table and dispatch for tactiscope-cli.
 #include "CliApplication.h"
 
+#include "CalibrateCapacitiveCommand.h"
 #include "CliSupport.h"
 #include "ComplianceCommand.h"
 #include "DetectCommand.h"
@@ -22,6 +23,7 @@ struct Command {
 };
 
 constexpr std::array kCommands{
+    Command{"calibrate-capacitive", "C0 and sensitivity of a capacitive beam (seed 002).", runCalibrateCapacitive},
     Command{"compliance", "Object stiffness from a compliance probe's forces (seed 001).", runCompliance},
     Command{"detect", "Find surface deflections in a CSV recording (seed 000).", runDetect},
     Command{"model", "What the sensor model gives for a profile (JSON).", runModel},
@@ -36,7 +38,7 @@ QString usage()
         << "Headless tools of Tactiscope, the tactile-sensor inspection workstation.\n\n"
         << "Commands:\n";
     for (const Command& command : kCommands)
-        out << "  " << QString(command.name).leftJustified(12) << command.summary << '\n';
+        out << "  " << QString(command.name).leftJustified(22) << command.summary << '\n';
     out << "\nRun 'tactiscope-cli <command> --help' for a command's options.\n"
         << "Exit codes: 0 success, 1 the command failed, 2 bad arguments or input.\n";
     return text;

@@ -90,6 +90,21 @@ int runModel(const QStringList& arguments)
             json.key("q").value(pair.forceRatio(*objectStiffness));
             json.key("dq_dk").value(pair.sensitivity_m_per_n(*objectStiffness));
         }
+    } else if (const auto* capacitiveProfile = std::get_if<CapacitiveBeamProfile>(&profile)) {
+        if (q || objectStiffness) {
+            printError(QStringLiteral("--q and --object-stiffness apply to compliance_pair profiles"));
+            return kExitUsage;
+        }
+        const CapacitiveBeam beam(capacitiveProfile->geometry);
+        json.key("kind").value("capacitive_beam");
+        json.key("stiffness_n_per_m").value(beam.stiffness_n_per_m());
+        json.key("compliance_m_per_n").value(beam.tipDeflectionPerNewton_m());
+        json.key("sheet_strain_per_newton").value(beam.sheetStrainPerNewton());
+        json.key("force_sensitivity_pf_per_mn").value(beam.capacitancePerNewton_f_per_n() * 1e9);
+        json.key("displacement_sensitivity_pf_per_mm").value(beam.capacitancePerMetre_f_per_m() * 1e9);
+        json.key("neutral_axis_m").value(beam.segment1().neutralAxis_m);
+        json.key("bending_stiffness_segment1_nm").value(beam.segment1().bendingStiffnessPerWidth_nm);
+        json.key("bending_stiffness_segment2_nm").value(beam.segment2().bendingStiffnessPerWidth_nm);
     }
     json.endObject();
     std::cout << json.str() << '\n';

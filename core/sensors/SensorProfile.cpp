@@ -58,6 +58,19 @@ public:
 
     ObjectReader object(const std::string& key) { return ObjectReader(require(key), m_source, m_prefix + key + "."); }
 
+    // The elements of a non-empty array of objects, each with its own reader.
+    std::vector<ObjectReader> objects(const std::string& key)
+    {
+        const Json& value = require(key);
+        if (!value.is_array() || value.empty()) fail(key, "must be a non-empty list");
+        std::vector<ObjectReader> readers;
+        for (std::size_t i = 0; i < value.size(); ++i)
+            readers.emplace_back(value[i], m_source, m_prefix + key + "[" + std::to_string(i) + "].");
+        return readers;
+    }
+
+    bool has(const std::string& key) const { return m_object.contains(key); }
+
     void allowOptional(const std::string& key) { m_used.insert(key); }
 
     void rejectUnknownKeys() const
@@ -91,6 +104,27 @@ CantileverGeometry readNestedBeam(ObjectReader reader)
     reader.allowOptional("name");
     const CantileverGeometry g = readGeometry(reader);
     reader.rejectUnknownKeys();
+    return g;
+}
+
+CapacitiveBeamGeometry readCapacitiveBeam(ObjectReader& reader)
+{
+    CapacitiveBeamGeometry g;
+    ObjectReader beam = reader.object("beam");
+    g.beam.length_m = beam.positive("length_m");
+    g.beam.rootWidth_m = beam.positive("root_width_m");
+    g.beam.thickness_m = beam.positive("thickness_m");
+    g.beam.youngsModulus_pa = beam.positive("youngs_modulus_pa");
+    g.beam.sheetLengthRatio = beam.positive("sheet_length_ratio");
+    if (g.beam.sheetLengthRatio >= 1.0) beam.fail("sheet_length_ratio", "must be below 1");
+    beam.rejectUnknownKeys();
+    for (ObjectReader& layer : reader.objects("sheet_layers")) {
+        g.sheetLayers.push_back(
+            {layer.string("name"), layer.positive("thickness_m"), layer.positive("youngs_modulus_pa")});
+        layer.rejectUnknownKeys();
+    }
+    g.c0_f = reader.positive("c0_pf") * 1e-12;
+    if (reader.has("c_edl_pf")) g.doubleLayer_f = reader.positive("c_edl_pf") * 1e-12;
     return g;
 }
 
@@ -132,7 +166,12 @@ SensorProfile parseSensorProfile(std::string_view text, const std::string& sourc
         }
         return profile;
     }
-    reader.fail("kind", "'" + kind + "' is not a known sensor kind (cantilever, compliance_pair)");
+    if (kind == "capacitive_beam") {
+        CapacitiveBeamProfile profile{name, readCapacitiveBeam(reader)};
+        reader.rejectUnknownKeys();
+        return profile;
+    }
+    reader.fail("kind", "'" + kind + "' is not a known sensor kind (cantilever, compliance_pair, capacitive_beam)");
 }
 
 SensorProfile loadSensorProfile(const std::string& path)
@@ -156,6 +195,24 @@ std::string toJson(const SensorProfile& profile)
                     {"name", pair->name},
                     {"high", geometryJson(pair->high)},
                     {"low", geometryJson(pair->low)}};
+    } else if (const auto* capacitive = std::get_if<CapacitiveBeamProfile>(&profile)) {
+        const auto& g = capacitive->geometry;
+        Json layers = Json::array();
+        for (const auto& layer : g.sheetLayers)
+            layers.push_back({{"name", layer.name},
+                              {"thickness_m", layer.thickness_m},
+                              {"youngs_modulus_pa", layer.youngsModulus_pa}});
+        json = Json{{"kind", "capacitive_beam"},
+                    {"name", capacitive->name},
+                    {"beam",
+                     {{"length_m", g.beam.length_m},
+                      {"root_width_m", g.beam.rootWidth_m},
+                      {"thickness_m", g.beam.thickness_m},
+                      {"youngs_modulus_pa", g.beam.youngsModulus_pa},
+                      {"sheet_length_ratio", g.beam.sheetLengthRatio}}},
+                    {"sheet_layers", layers},
+                    {"c0_pf", g.c0_f * 1e12}};
+        if (g.doubleLayer_f) json["c_edl_pf"] = *g.doubleLayer_f * 1e12;
     }
     return json.dump(2);
 }

@@ -4,12 +4,19 @@
 //    "thickness_m": 0.002, "youngs_modulus_pa": 3e9}
 //   {"kind": "compliance_pair", "name": "...", "high": {cantilever keys},
 //    "low": {cantilever keys}}
+//   {"kind": "capacitive_beam", "name": "...",
+//    "beam": {"length_m", "root_width_m", "thickness_m", "youngs_modulus_pa",
+//             "sheet_length_ratio"},
+//    "sheet_layers": [{"name", "thickness_m", "youngs_modulus_pa"}, …],
+//    "c0_pf": 51.44, optional "c_edl_pf"}
+//   (sheet layers from the beam surface outward)
 // Loading validates everything and reports the first problem with the key
 // that has it ("high.thickness_m: must be a positive number"); unknown keys
 // are errors too, so a misspelt key is not silently ignored.
 #pragma once
 
 #include "core/sensors/CantileverBeam.h"
+#include "core/sensors/CapacitiveBeam.h"
 
 #include <stdexcept>
 #include <string>
@@ -29,7 +36,12 @@ struct CompliancePairProfile {
     CantileverGeometry low;
 };
 
-using SensorProfile = std::variant<CantileverProfile, CompliancePairProfile>;
+struct CapacitiveBeamProfile {
+    std::string name;
+    CapacitiveBeamGeometry geometry;
+};
+
+using SensorProfile = std::variant<CantileverProfile, CompliancePairProfile, CapacitiveBeamProfile>;
 
 // One line for the user: "<source>: <key>: <problem>".
 class ProfileError : public std::runtime_error {

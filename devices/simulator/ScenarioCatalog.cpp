@@ -1,6 +1,7 @@
 // ScenarioCatalog: the table of simulator scenarios.
 #include "devices/simulator/ScenarioCatalog.h"
 
+#include "devices/simulator/CapacitiveWeightsScenario.h"
 #include "devices/simulator/PalpationScenario.h"
 #include "devices/simulator/PanelScanScenario.h"
 
@@ -8,7 +9,7 @@ namespace tactiscope::devices::simulator {
 
 std::vector<std::string> scenarioIds()
 {
-    return {"panel-scan", "palpation"};
+    return {"panel-scan", "palpation", "capacitive-weights"};
 }
 
 std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64_t seed)
@@ -22,6 +23,11 @@ std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64
         PalpationParameters parameters;
         parameters.seed = seed;
         return std::make_unique<PalpationScenario>(parameters);
+    }
+    if (id == "capacitive-weights") {
+        CapacitiveWeightsParameters parameters;
+        parameters.seed = seed;
+        return std::make_unique<CapacitiveWeightsScenario>(parameters);
     }
     return nullptr;
 }

@@ -60,7 +60,7 @@ TEST(SensorProfile, ErrorsNameTheFileAndTheKey)
                           "thickness_m": 0.002, "youngs_modulus_pa": 3e9})"),
               "probe.json: lenght_m: unknown key");
     EXPECT_EQ(errorOf(R"({"kind": "spring", "name": "x"})"),
-              "probe.json: kind: 'spring' is not a known sensor kind (cantilever, compliance_pair)");
+              "probe.json: kind: 'spring' is not a known sensor kind (cantilever, compliance_pair, capacitive_beam)");
     EXPECT_EQ(errorOf(R"({"kind": "compliance_pair", "name": "x", "high": {"length_m": 0.05, "width_m": 0.01,
                           "thickness_m": "3 mm", "youngs_modulus_pa": 3e9}, "low": {}})"),
               "probe.json: high.thickness_m: must be a positive number, got \"3 mm\"");
@@ -76,4 +76,32 @@ TEST(SensorProfile, ErrorsNameTheFileAndTheKey)
 TEST(SensorProfile, AMissingFileIsAProfileError)
 {
     EXPECT_THROW(loadSensorProfile("/nonexistent/probe.json"), ProfileError);
+}
+
+TEST(SensorProfile, ReadsTheShippedCapacitiveBeamAndWritesItBack)
+{
+    const auto profile = loadSensorProfile(TACTISCOPE_SOURCE_DIR "/resources/profiles/capacitive-beam-paper-no1.json");
+    const auto& beam = std::get<CapacitiveBeamProfile>(profile);
+    EXPECT_DOUBLE_EQ(beam.geometry.beam.rootWidth_m, 0.005);
+    EXPECT_DOUBLE_EQ(beam.geometry.beam.sheetLengthRatio, 0.6);
+    ASSERT_EQ(beam.geometry.sheetLayers.size(), 3u);
+    EXPECT_DOUBLE_EQ(beam.geometry.sheetLayers[1].thickness_m, 0.000015);
+    EXPECT_DOUBLE_EQ(beam.geometry.c0_f, 51.44e-12);
+    EXPECT_FALSE(beam.geometry.doubleLayer_f.has_value());
+    const auto again = std::get<CapacitiveBeamProfile>(parseSensorProfile(toJson(profile), "again.json"));
+    EXPECT_EQ(again.geometry.sheetLayers[2].name, beam.geometry.sheetLayers[2].name);
+    EXPECT_DOUBLE_EQ(again.geometry.c0_f, beam.geometry.c0_f);
+}
+
+TEST(SensorProfile, CapacitiveBeamErrorsNameTheKey)
+{
+    const std::string head = R"({"kind": "capacitive_beam", "name": "x", "c0_pf": 51.44,
+        "beam": {"length_m": 0.015, "root_width_m": 0.005, "thickness_m": 0.002, "youngs_modulus_pa": 83000,
+                 "sheet_length_ratio": )";
+    EXPECT_EQ(
+        errorOf(head + R"(1.2}, "sheet_layers": [{"name": "e", "thickness_m": 1e-4, "youngs_modulus_pa": 1800}]})"),
+        "probe.json: beam.sheet_length_ratio: must be below 1");
+    EXPECT_EQ(errorOf(head + R"(0.6}, "sheet_layers": [{"name": "e", "thickness_m": 0, "youngs_modulus_pa": 1800}]})"),
+              "probe.json: sheet_layers[0].thickness_m: must be a positive number, got 0");
+    EXPECT_EQ(errorOf(head + R"(0.6}, "sheet_layers": []})"), "probe.json: sheet_layers: must be a non-empty list");
 }

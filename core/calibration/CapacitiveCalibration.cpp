@@ -1,0 +1,112 @@
+// C0, sensitivity, hysteresis and detection limits of the capacitive beam.
+#include "core/calibration/CapacitiveCalibration.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace tactiscope::core::calibration {
+namespace {
+
+// Largest loading/unloading difference at equal load, relative to full scale.
+std::optional<double> hysteresisOf(const std::vector<std::pair<double, bool>>& loadAndDirection,
+                                   const std::vector<double>& deltaC)
+{
+    std::map<double, std::pair<std::vector<double>, std::vector<double>>> byLoad;
+    for (std::size_t i = 0; i < deltaC.size(); ++i) {
+        auto& entry = byLoad[loadAndDirection[i].first];
+        (loadAndDirection[i].second ? entry.first : entry.second).push_back(deltaC[i]);
+    }
+    // Full scale: the largest change from the unloaded baseline.
+    double fullScale = 0.0;
+    for (double d : deltaC) fullScale = std::max(fullScale, std::abs(d));
+    std::optional<double> worst;
+    for (const auto& [load, directions] : byLoad) {
+        if (directions.first.empty() || directions.second.empty() || !(fullScale > 0.0)) continue;
+        const auto mean = [](const std::vector<double>& v) {
+            double s = 0.0;
+            for (double x : v) s += x;
+            return s / static_cast<double>(v.size());
+        };
+        const double difference = std::abs(mean(directions.first) - mean(directions.second)) / fullScale;
+        worst = std::max(worst.value_or(0.0), difference);
+    }
+    return worst;
+}
+
+}  // namespace
+
+CapacitiveCalibrationResult calibrateCapacitive(const CapacitiveCalibrationInput& in, const std::string& sensorName,
+                                                const std::string& operatorName)
+{
+    CapacitiveCalibrationResult r;
+    r.c0_f = in.baseline.mean;
+    r.baselineSigma_f = in.baseline.sigma;
+    if (in.finalBaseline && in.finalBaseline->middle_s() > in.baseline.middle_s())
+        r.drift_f_per_s =
+            (in.finalBaseline->mean - in.baseline.mean) / (in.finalBaseline->middle_s() - in.baseline.middle_s());
+
+    std::vector<double> force, forceDelta, displacement, displacementDelta;
+    std::vector<std::pair<double, bool>> forceDirection, displacementDirection;
+    for (const CapacitiveStep& step : in.steps) {
+        const double delta = step.capacitance_f - (r.c0_f + r.drift_f_per_s * (step.t_s - in.baseline.middle_s()));
+        if (step.force_n) {
+            force.push_back(*step.force_n);
+            forceDelta.push_back(delta);
+            forceDirection.emplace_back(*step.force_n, step.loading);
+        }
+        if (step.displacement_m) {
+            displacement.push_back(*step.displacement_m);
+            displacementDelta.push_back(delta);
+            displacementDirection.emplace_back(*step.displacement_m, step.loading);
+        }
+    }
+    if (force.size() < 2 && displacement.size() < 2)
+        throw std::invalid_argument("capacitive calibration needs at least two loads or two displacements");
+    // The baseline itself is the zero-load point of each fit.
+    const auto withZero = [](const std::vector<double>& v) {
+        std::vector<double> out{0.0};
+        out.insert(out.end(), v.begin(), v.end());
+        return out;
+    };
+
+    CalibrationRecord& record = r.record;
+    record.kind = "capacitive";
+    record.sensorName = sensorName;
+    record.operatorName = operatorName;
+    record.timestampUtc = utcTimestampNow();
+    record.values = {{"c0_pf", r.c0_f * 1e12},
+                     {"baseline_sigma_pf", r.baselineSigma_f * 1e12},
+                     {"drift_pf_per_s", r.drift_f_per_s * 1e12}};
+
+    if (force.size() >= 2) {
+        r.forceFit = fitLine(withZero(force), withZero(forceDelta));
+        const double slope = r.forceFit->slope;  // F per N
+        r.hysteresis = hysteresisOf(forceDirection, forceDelta);
+        r.detectionLimit_n = 3.0 * r.baselineSigma_f / slope;
+        r.relativeSensitivity_per_n = slope / r.c0_f;
+        if (in.contactArea_m2) r.pressureSensitivity_per_pa = *r.relativeSensitivity_per_n * *in.contactArea_m2;
+        record.values.insert(record.values.end(),
+                             {{"sensitivity_pf_per_mn", slope * 1e9},
+                              {"intercept_pf", r.forceFit->intercept * 1e12},
+                              {"r_squared", r.forceFit->rSquared},
+                              {"detection_limit_mn", *r.detectionLimit_n * 1e3},
+                              {"relative_sensitivity_per_mn", *r.relativeSensitivity_per_n * 1e-3}});
+        if (r.hysteresis) record.values.emplace_back("hysteresis_fraction", *r.hysteresis);
+        if (r.pressureSensitivity_per_pa)
+            record.values.emplace_back("pressure_sensitivity_per_kpa", *r.pressureSensitivity_per_pa * 1e3);
+        record.fit = *r.forceFit;
+    }
+    if (displacement.size() >= 2) {
+        r.displacementFit = fitLine(withZero(displacement), withZero(displacementDelta));
+        r.detectionLimit_m = 3.0 * r.baselineSigma_f / r.displacementFit->slope;
+        record.values.insert(record.values.end(),
+                             {{"displacement_sensitivity_pf_per_mm", r.displacementFit->slope * 1e9},
+                              {"detection_limit_mm", *r.detectionLimit_m * 1e3}});
+        if (!r.forceFit) record.fit = *r.displacementFit;
+    }
+    return r;
+}
+
+}  // namespace tactiscope::core::calibration

@@ -1,0 +1,59 @@
+// Calibration of the capacitive beam (seed 002): C0 from a stable unloaded
+// baseline, sensitivity from known weights (and/or known tip displacements)
+// fitted by least squares, hysteresis between loading and unloading,
+// detection limits and the derived relative and pressure sensitivities.
+//
+// Drift: when a second baseline is taken after the last unload, the
+// baseline is taken to drift linearly between the two, and each step's ΔC
+// is measured from the baseline interpolated to its time.
+#pragma once
+
+#include "core/calibration/CalibrationRecord.h"
+#include "core/calibration/StabilityMonitor.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tactiscope::core::calibration {
+
+struct CapacitiveStep {
+    std::optional<double> force_n;         // a known weight's force
+    std::optional<double> displacement_m;  // or a known tip displacement
+    double capacitance_f = 0.0;            // mean of the step's stable window
+    double t_s = 0.0;                      // middle of that window
+    bool loading = true;                   // false while weights come off
+};
+
+struct CapacitiveCalibrationInput {
+    WindowStatistics baseline;  // C0 window, values in farads
+    std::optional<WindowStatistics> finalBaseline;
+    std::vector<CapacitiveStep> steps;
+    std::optional<double> contactArea_m2;  // for the pressure sensitivity
+};
+
+struct CapacitiveCalibrationResult {
+    double c0_f = 0.0;
+    double baselineSigma_f = 0.0;
+    double drift_f_per_s = 0.0;
+    std::optional<LinearFit> forceFit;         // ΔC [F] against F [N]
+    std::optional<LinearFit> displacementFit;  // ΔC [F] against w [m]
+    // Largest |ΔC_loading − ΔC_unloading| at the same load, as a fraction of
+    // the full-scale ΔC; only when both directions were measured.
+    std::optional<double> hysteresis;
+    std::optional<double> detectionLimit_n;  // 3σ_baseline / sensitivity
+    std::optional<double> detectionLimit_m;
+    std::optional<double> relativeSensitivity_per_n;   // (ΔC/C0) per newton
+    std::optional<double> pressureSensitivity_per_pa;  // (ΔC/C0) per pascal
+    CalibrationRecord record;
+};
+
+// Throws std::invalid_argument unless at least two steps have a force, or
+// two a displacement.
+CapacitiveCalibrationResult calibrateCapacitive(const CapacitiveCalibrationInput& input, const std::string& sensorName,
+                                                const std::string& operatorName);
+
+// 1 mgf, the unit of the paper's weights: 9.80665 µN.
+inline constexpr double kMilligramForce_n = 9.80665e-6;
+
+}  // namespace tactiscope::core::calibration

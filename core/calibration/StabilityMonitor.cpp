@@ -1,0 +1,55 @@
+// Sliding-window drift and noise test.
+#include "core/calibration/StabilityMonitor.h"
+
+#include "core/calibration/LinearFit.h"
+
+#include <stdexcept>
+#include <vector>
+
+namespace tactiscope::core::calibration {
+
+StabilityMonitor::StabilityMonitor(StabilitySettings settings)
+    : m_settings(settings)
+{
+    if (!(settings.window_s > 0.0)) throw std::invalid_argument("stability window must be positive");
+    if (!(settings.maxDrift_per_s >= 0.0) || !(settings.maxNoise >= 0.0))
+        throw std::invalid_argument("stability limits must not be negative");
+}
+
+std::optional<WindowStatistics> StabilityMonitor::push(double t_s, double value)
+{
+    m_samples.emplace_back(t_s, value);
+    while (m_samples.size() > 2 && t_s - m_samples[1].first >= m_settings.window_s) m_samples.pop_front();
+    if (m_samples.size() < 3 || t_s - m_samples.front().first < m_settings.window_s) return std::nullopt;
+
+    std::vector<double> t, v;
+    for (const auto& [time, x] : m_samples) {
+        t.push_back(time);
+        v.push_back(x);
+    }
+    const LinearFit line = fitLine(t, v);
+    WindowStatistics w;
+    double sum = 0.0;
+    for (double x : v) sum += x;
+    w.mean = sum / static_cast<double>(v.size());
+    w.sigma = line.residualStandardDeviation;
+    w.drift_per_s = line.slope;
+    w.start_s = t.front();
+    w.end_s = t.back();
+    w.count = v.size();
+    w.stable = std::abs(w.drift_per_s) <= m_settings.maxDrift_per_s && w.sigma <= m_settings.maxNoise;
+    return w;
+}
+
+std::optional<WindowStatistics> firstStableWindow(std::span<const double> t, std::span<const double> values,
+                                                  const StabilitySettings& settings, std::size_t from)
+{
+    if (t.size() != values.size()) throw std::invalid_argument("times and values differ in length");
+    StabilityMonitor monitor(settings);
+    for (std::size_t i = from; i < t.size(); ++i) {
+        if (auto w = monitor.push(t[i], values[i]); w && w->stable) return w;
+    }
+    return std::nullopt;
+}
+
+}  // namespace tactiscope::core::calibration

@@ -1,0 +1,54 @@
+// Decides when a signal has settled: over a sliding time window it fits a
+// straight line and calls the signal stable when both the drift (the line's
+// slope) and the noise (the scatter about the line) are below limits. A
+// wizard's zero step, a capacitive baseline (C0) and each calibration load
+// wait for this instead of a fixed delay.
+#pragma once
+
+#include <cstddef>
+#include <deque>
+#include <optional>
+#include <span>
+#include <utility>
+
+namespace tactiscope::core::calibration {
+
+struct StabilitySettings {
+    double window_s = 2.0;
+    double maxDrift_per_s = 0.0;  // |slope| limit, in the signal's unit per second
+    double maxNoise = 0.0;        // residual σ limit, in the signal's unit
+};
+
+struct WindowStatistics {
+    double mean = 0.0;
+    double sigma = 0.0;  // scatter about the fitted line (n − 2)
+    double drift_per_s = 0.0;
+    double start_s = 0.0;
+    double end_s = 0.0;
+    std::size_t count = 0;
+    bool stable = false;
+
+    double middle_s() const { return 0.5 * (start_s + end_s); }
+};
+
+class StabilityMonitor {
+public:
+    // Throws std::invalid_argument for a non-positive window or negative limits.
+    explicit StabilityMonitor(StabilitySettings settings);
+
+    // Adds a sample (times increasing); returns the statistics of the last
+    // window once it spans window_s.
+    std::optional<WindowStatistics> push(double t_s, double value);
+    void reset() { m_samples.clear(); }
+
+private:
+    StabilitySettings m_settings;
+    std::deque<std::pair<double, double>> m_samples;
+};
+
+// The first stable window of a recorded series at or after `from` (an
+// index), or nothing.
+std::optional<WindowStatistics> firstStableWindow(std::span<const double> t_s, std::span<const double> values,
+                                                  const StabilitySettings& settings, std::size_t from = 0);
+
+}  // namespace tactiscope::core::calibration

@@ -1,0 +1,63 @@
+// The stability test: settled, drifting and noisy signals.
+#include "core/calibration/StabilityMonitor.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace tactiscope::core::calibration;
+
+namespace {
+
+// 10 s at 10 Hz of value(t).
+template <typename F>
+std::pair<std::vector<double>, std::vector<double>> series(F value)
+{
+    std::vector<double> t, v;
+    for (int i = 0; i < 100; ++i) {
+        t.push_back(i * 0.1);
+        v.push_back(value(i * 0.1));
+    }
+    return {t, v};
+}
+
+const StabilitySettings kSettings{2.0, 0.01, 0.02};
+
+}  // namespace
+
+TEST(StabilityMonitor, ASettledSignalIsStableAfterOneWindow)
+{
+    std::mt19937 random(1);
+    std::normal_distribution<double> noise(0.0, 0.005);
+    const auto [t, v] = series([&](double) { return 51.44 + noise(random); });
+    const auto w = firstStableWindow(t, v, kSettings);
+    ASSERT_TRUE(w.has_value());
+    EXPECT_NEAR(w->start_s, 0.0, 1e-12);
+    EXPECT_NEAR(w->end_s, 2.0, 1e-12);
+    EXPECT_NEAR(w->mean, 51.44, 0.005);
+    EXPECT_NEAR(w->sigma, 0.005, 0.002);
+}
+
+TEST(StabilityMonitor, WaitsUntilASettlingStepHasSettled)
+{
+    // A step that settles with a 0.5 s time constant from t = 0.
+    const auto [t, v] = series([](double s) { return 1.0 - std::exp(-s / 0.5); });
+    const auto w = firstStableWindow(t, v, kSettings);
+    ASSERT_TRUE(w.has_value());
+    // The drift e^(−t/τ)/τ falls below 0.01 per second at τ·ln(200) = 2.65 s;
+    // the first window whose fitted slope passes must reach beyond it.
+    EXPECT_GT(w->end_s, 0.5 * std::log(200.0));
+    EXPECT_LT(std::abs(w->drift_per_s), 0.01);
+    EXPECT_NEAR(w->mean, 1.0, 0.03);
+}
+
+TEST(StabilityMonitor, DriftOrNoiseKeepsItUnstable)
+{
+    const auto [t, drifting] = series([](double s) { return 0.05 * s; });
+    EXPECT_FALSE(firstStableWindow(t, drifting, kSettings).has_value());
+    std::mt19937 random(2);
+    std::normal_distribution<double> noise(0.0, 0.1);
+    const auto [t2, noisy] = series([&](double) { return noise(random); });
+    EXPECT_FALSE(firstStableWindow(t2, noisy, kSettings).has_value());
+}
