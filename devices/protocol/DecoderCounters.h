@@ -1,0 +1,19 @@
+// What a decoder has seen, for the troubleshooting view and the record
+// summary. All counters only grow until reset.
+#pragma once
+
+#include <cstdint>
+
+namespace tactiscope::devices::protocol {
+
+struct DecoderCounters {
+    std::uint64_t bytes = 0;
+    std::uint64_t frames = 0;  // good frames (binary) or good lines (text)
+    std::uint64_t crcErrors = 0;
+    std::uint64_t resyncs = 0;            // times bytes had to be skipped to find the next frame
+    std::uint64_t malformedPayloads = 0;  // CRC fine, payload not (a firmware bug)
+    std::uint64_t linesSkipped = 0;       // text lines that did not parse
+    std::uint64_t samplesLost = 0;        // from gaps in the sequence numbers
+};
+
+}  // namespace tactiscope::devices::protocol

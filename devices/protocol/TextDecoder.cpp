@@ -1,0 +1,85 @@
+// Serial-Plotter style line parsing.
+#include "devices/protocol/TextDecoder.h"
+
+#include <charconv>
+#include <cmath>
+
+namespace tactiscope::devices::protocol {
+
+void TextDecoder::reset()
+{
+    m_line.clear();
+    m_overlong = false;
+    m_names.clear();
+    m_labels.clear();
+    m_counters = {};
+}
+
+void TextDecoder::push(std::span<const std::uint8_t> bytes, double hostTime_s, std::vector<TextSample>& out)
+{
+    m_counters.bytes += bytes.size();
+    for (const std::uint8_t byte : bytes) {
+        if (byte == '\n') {
+            if (m_overlong)
+                ++m_counters.linesSkipped;
+            else
+                parseLine(hostTime_s, out);
+            m_line.clear();
+            m_overlong = false;
+        } else if (!m_overlong) {
+            if (m_line.size() >= kMaxLine)
+                m_overlong = true;
+            else
+                m_line.push_back(static_cast<char>(byte));
+        }
+    }
+}
+
+void TextDecoder::parseLine(double hostTime_s, std::vector<TextSample>& out)
+{
+    std::vector<std::string> labels;
+    TextSample sample{hostTime_s, {}};
+    bool empty = true;
+    bool ok = true;
+    std::size_t i = 0;
+    const auto separator = [](char c) { return c == ',' || c == ' ' || c == '\t' || c == '\r'; };
+    while (i < m_line.size()) {
+        while (i < m_line.size() && separator(m_line[i])) ++i;
+        if (i == m_line.size()) break;
+        std::size_t end = i;
+        while (end < m_line.size() && !separator(m_line[end])) ++end;
+        std::string_view token(m_line.data() + i, end - i);
+        empty = false;
+        std::string label;
+        if (const auto colon = token.rfind(':'); colon != std::string_view::npos) {
+            label = std::string(token.substr(0, colon));
+            token.remove_prefix(colon + 1);
+        }
+        double value = 0.0;
+        const auto [ptr, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+        if (error != std::errc() || ptr != token.data() + token.size() || token.empty() || !std::isfinite(value)) {
+            ok = false;
+            break;
+        }
+        labels.push_back(std::move(label));
+        sample.values.push_back(value);
+        i = end;
+    }
+    if (empty) return;
+    if (!ok) {
+        ++m_counters.linesSkipped;
+        return;
+    }
+    if (m_labels.empty()) {
+        m_labels = labels;
+        for (std::size_t c = 0; c < labels.size(); ++c)
+            m_names.push_back(labels[c].empty() ? "ch" + std::to_string(c + 1) : labels[c]);
+    } else if (labels != m_labels) {
+        ++m_counters.linesSkipped;
+        return;
+    }
+    ++m_counters.frames;
+    out.push_back(std::move(sample));
+}
+
+}  // namespace tactiscope::devices::protocol

@@ -1,0 +1,58 @@
+// The Serial-Plotter text protocol.
+#include "devices/protocol/TextDecoder.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using namespace tactiscope::devices::protocol;
+
+namespace {
+
+std::vector<TextSample> decode(TextDecoder& decoder, const std::string& text, double t = 0.0)
+{
+    std::vector<TextSample> out;
+    decoder.push(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()), t, out);
+    return out;
+}
+
+}  // namespace
+
+TEST(TextDecoder, ReadsCommaSpaceAndTabSeparatedLines)
+{
+    TextDecoder decoder;
+    const auto out = decode(decoder, "1,2,3\n4 5 6\r\n7\t8\t9\n10, 11 ,12\n");
+    ASSERT_EQ(out.size(), 4u);
+    EXPECT_EQ(out[1].values, (std::vector<double>{4, 5, 6}));
+    EXPECT_EQ(out[3].values, (std::vector<double>{10, 11, 12}));
+    EXPECT_EQ(decoder.channelNames(), (std::vector<std::string>{"ch1", "ch2", "ch3"}));
+}
+
+TEST(TextDecoder, NamesChannelsFromLabels)
+{
+    TextDecoder decoder;
+    const auto out = decode(decoder, "high:512 low:-3.25e1\nhigh:510 low:-31\n");
+    ASSERT_EQ(out.size(), 2u);
+    EXPECT_EQ(decoder.channelNames(), (std::vector<std::string>{"high", "low"}));
+    EXPECT_EQ(out[0].values[1], -32.5);
+}
+
+TEST(TextDecoder, SkipsAndCountsLinesThatDoNotParse)
+{
+    TextDecoder decoder;
+    const std::string longLine(TextDecoder::kMaxLine + 10, '1');
+    const auto out = decode(decoder, "1,2\nhello,3\n4\n5,6,7\n\n\r\n" + longLine + "\n1,inf\n8,9\n");
+    ASSERT_EQ(out.size(), 2u);                       // "1,2" and "8,9"
+    EXPECT_EQ(decoder.counters().linesSkipped, 5u);  // word, too few, too many, overlong, inf
+    EXPECT_EQ(decoder.counters().frames, 2u);
+}
+
+TEST(TextDecoder, LinesSplitAcrossChunksKeepTheTimeOfTheirEnd)
+{
+    TextDecoder decoder;
+    EXPECT_TRUE(decode(decoder, "1.5,2", 1.0).empty());
+    const auto out = decode(decoder, ".5\n3,4\n", 1.1);
+    ASSERT_EQ(out.size(), 2u);
+    EXPECT_EQ(out[0].values, (std::vector<double>{1.5, 2.5}));
+    EXPECT_EQ(out[0].hostTime_s, 1.1);
+}
