@@ -5,6 +5,7 @@
 #include "CliSupport.h"
 #include "ComplianceCommand.h"
 #include "DetectCommand.h"
+#include "EmulateCommand.h"
 #include "ModelCommand.h"
 #include "SimulateCommand.h"
 #include "core/Version.h"
@@ -26,6 +27,7 @@ constexpr std::array kCommands{
     Command{"calibrate-capacitive", "C0 and sensitivity of a capacitive beam (seed 002).", runCalibrateCapacitive},
     Command{"compliance", "Object stiffness from a compliance probe's forces (seed 001).", runCompliance},
     Command{"detect", "Find surface deflections in a CSV recording (seed 000).", runDetect},
+    Command{"emulate", "A simulated probe behind a pseudo-terminal (try the serial path).", runEmulate},
     Command{"model", "What the sensor model gives for a profile (JSON).", runModel},
     Command{"simulate", "Write a simulated recording as CSV.", runSimulate},
 };

@@ -24,6 +24,20 @@ void BinaryDecoder::skip(std::size_t count)
     }
 }
 
+std::optional<std::size_t> BinaryDecoder::nextValidFrame(std::size_t from) const
+{
+    for (std::size_t i = from; i + kHeaderSize + kCrcSize <= m_buffer.size(); ++i) {
+        const std::uint8_t* h = m_buffer.data() + i;
+        if (h[0] != kSync0 || h[1] != kSync1 || h[2] != kVersion) continue;
+        const std::size_t length = static_cast<std::size_t>(h[4] | (h[5] << 8));
+        const std::size_t total = kHeaderSize + length + kCrcSize;
+        if (length > kMaxPayload || i + total > m_buffer.size()) continue;
+        const std::uint16_t expected = static_cast<std::uint16_t>(h[total - 2] | (h[total - 1] << 8));
+        if (crc16Ccitt(std::span(h + 2, total - 4)) == expected) return i;
+    }
+    return std::nullopt;
+}
+
 void BinaryDecoder::push(std::span<const std::uint8_t> bytes, std::vector<Frame>& out)
 {
     m_counters.bytes += bytes.size();
@@ -50,7 +64,17 @@ void BinaryDecoder::push(std::span<const std::uint8_t> bytes, std::vector<Frame>
             continue;
         }
         const std::size_t total = kHeaderSize + length + kCrcSize;
-        if (available < total) break;
+        if (available < total) {
+            // Incomplete: either a real frame still arriving, or a false sync
+            // (A5 5A inside corrupted data) whose bogus length would hold up
+            // the real frames behind it. Real frames never overlap, so a
+            // complete, valid frame starting later proves this one false.
+            if (const auto next = nextValidFrame(m_start + 1)) {
+                skip(*next - m_start);
+                continue;
+            }
+            break;
+        }
         const std::uint16_t expected = static_cast<std::uint16_t>(h[total - 2] | (h[total - 1] << 8));
         if (crc16Ccitt(std::span(h + 2, total - 4)) != expected) {
             ++m_counters.crcErrors;

@@ -104,12 +104,12 @@ void BinaryStream::onData(const Frame& frame, StreamOutput& out)
     if (m_waiting) {
         auto waiting = std::move(*m_waiting);
         m_waiting.reset();
-        emit(waiting.first, waiting.second, out);
+        publish(waiting.first, waiting.second, out);
     }
-    emit(*data, timestamp, out);
+    publish(*data, timestamp, out);
 }
 
-void BinaryStream::emit(const DataPayload& data, std::uint64_t timestamp_us, StreamOutput& out)
+void BinaryStream::publish(const DataPayload& data, std::uint64_t timestamp_us, StreamOutput& out)
 {
     const double dt = 1.0 / *sampleRate_hz();
     const double t0 = static_cast<double>(timestamp_us - *m_firstTimestamp_us) * 1e-6;

@@ -36,7 +36,7 @@ public:
 
 private:
     void onData(const Frame& frame, StreamOutput& out);
-    void emit(const DataPayload& data, std::uint64_t timestamp_us, StreamOutput& out);
+    void publish(const DataPayload& data, std::uint64_t timestamp_us, StreamOutput& out);
     std::uint64_t unwrap(std::uint32_t timestamp_us);
 
     BinaryDecoder m_decoder;

@@ -27,14 +27,14 @@ void TextStream::push(std::span<const std::uint8_t> bytes, double hostTime_s, st
         if (m_held.size() < 3 || m_held.back().hostTime_s - m_held.front().hostTime_s < kEstimationWindow_s) return;
         // Lines arrive in bursts (USB packets); over 2 s the count is what matters.
         m_rate_hz = static_cast<double>(m_held.size() - 1) / (m_held.back().hostTime_s - m_held.front().hostTime_s);
-        emit(m_held, out);
+        publish(m_held, out);
         m_held.clear();
         return;
     }
-    emit(m_scratch, out);
+    publish(m_scratch, out);
 }
 
-void TextStream::emit(std::vector<TextSample>& samples, std::vector<core::SampleBlock>& out)
+void TextStream::publish(std::vector<TextSample>& samples, std::vector<core::SampleBlock>& out)
 {
     if (samples.empty()) return;
     const std::size_t channels = samples.front().values.size();

@@ -29,7 +29,7 @@ public:
     static constexpr double kEstimationWindow_s = 2.0;
 
 private:
-    void emit(std::vector<TextSample>& samples, std::vector<core::SampleBlock>& out);
+    void publish(std::vector<TextSample>& samples, std::vector<core::SampleBlock>& out);
 
     TextDecoder m_decoder;
     std::optional<double> m_rate_hz;

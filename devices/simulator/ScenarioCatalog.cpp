@@ -12,21 +12,24 @@ std::vector<std::string> scenarioIds()
     return {"panel-scan", "palpation", "capacitive-weights"};
 }
 
-std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64_t seed)
+std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64_t seed, std::optional<double> rate_hz)
 {
     if (id == "panel-scan") {
         PanelScanParameters parameters;
         parameters.seed = seed;
+        if (rate_hz) parameters.sampleRate_hz = *rate_hz;
         return std::make_unique<PanelScanScenario>(parameters);
     }
     if (id == "palpation") {
         PalpationParameters parameters;
         parameters.seed = seed;
+        if (rate_hz) parameters.sampleRate_hz = *rate_hz;
         return std::make_unique<PalpationScenario>(parameters);
     }
     if (id == "capacitive-weights") {
         CapacitiveWeightsParameters parameters;
         parameters.seed = seed;
+        if (rate_hz) parameters.sampleRate_hz = *rate_hz;
         return std::make_unique<CapacitiveWeightsScenario>(parameters);
     }
     return nullptr;

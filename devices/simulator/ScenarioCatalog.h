@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,8 +15,10 @@ namespace tactiscope::devices::simulator {
 
 std::vector<std::string> scenarioIds();
 
-// A new scenario with default parameters and the given noise seed, or null
-// for an unknown id.
-std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64_t seed = 1);
+// A new scenario with default parameters, the given noise seed and, when
+// given, another sample rate; null for an unknown id. Throws
+// std::invalid_argument for a non-positive rate.
+std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64_t seed = 1,
+                                                std::optional<double> rate_hz = std::nullopt);
 
 }  // namespace tactiscope::devices::simulator

@@ -85,6 +85,19 @@ TEST(BinaryDecoder, ImpossibleHeadersAreRejectedWithoutWaiting)
     EXPECT_EQ(out[0].sequence, 9);
 }
 
+TEST(BinaryDecoder, AFalseSyncInGarbageDoesNotHoldUpTheFramesAfterIt)
+{
+    // Garbage that looks like the header of a 4000-byte frame, then a real
+    // frame: the real one must come out now, not after 4000 more bytes.
+    const std::vector<std::uint8_t> falseHeader{0xA5, 0x5A, 0x01, 0x02, 0xA0, 0x0F, 0x00, 0x00, 0x11, 0x22};
+    BinaryDecoder decoder;
+    std::vector<Frame> out;
+    decoder.push(concat({falseHeader, dataFrame(4, 40)}), out);
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_EQ(out[0].sequence, 4);
+    EXPECT_EQ(decoder.counters().resyncs, 1u);
+}
+
 TEST(BinaryDecoder, RandomCorruptionNeverLosesAnUntouchedFrame)
 {
     std::mt19937 random(12);

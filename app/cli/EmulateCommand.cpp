@@ -1,0 +1,119 @@
+// The emulate subcommand: options, signals and the summary.
+#include "EmulateCommand.h"
+
+#include "CliSupport.h"
+#include "devices/emulator/ProbeEmulator.h"
+#include "devices/simulator/ScenarioCatalog.h"
+
+#include <QTextStream>
+
+#include <atomic>
+#include <csignal>
+#include <thread>
+
+namespace tactiscope::cli {
+namespace {
+
+std::atomic<bool> g_interrupted = false;
+
+extern "C" void onSignal(int)
+{
+    g_interrupted = true;
+}
+
+}  // namespace
+
+int runEmulate(const QStringList& arguments)
+{
+    const QString name = QStringLiteral("emulate");
+    QStringList scenarios;
+    for (const auto& id : devices::simulator::scenarioIds()) scenarios << toQString(id);
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Emulate a probe behind a pseudo-terminal: PATH becomes a link to it, to open like a serial port.\n"
+        "Runs until --seconds have been streamed, or Ctrl-C."));
+    parser.addOptions({
+        {QStringLiteral("link"), QStringLiteral("Path of the link to create (required)."), QStringLiteral("PATH")},
+        {QStringLiteral("protocol"), QStringLiteral("binary (TSP/1, default) or text."), QStringLiteral("binary|text")},
+        {QStringLiteral("scenario"),
+         QStringLiteral("%1 (default panel-scan).").arg(scenarios.join(QStringLiteral(", "))), QStringLiteral("ID")},
+        {QStringLiteral("rate"), QStringLiteral("Sample rate in Hz (default: the scenario's)."), QStringLiteral("HZ")},
+        {QStringLiteral("channels"), QStringLiteral("Number of channels (repeats the scenario's)."),
+         QStringLiteral("N")},
+        {QStringLiteral("seconds"), QStringLiteral("Stream this long after start, then hang up."), QStringLiteral("S")},
+        {QStringLiteral("garbage"), QStringLiteral("Fraction of frames with injected garbage, 0 to 1."),
+         QStringLiteral("RATE")},
+        {QStringLiteral("seed"), QStringLiteral("Noise seed (default 1)."), QStringLiteral("N")},
+    });
+    if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
+    const QString usage = commandUsage(parser, name);
+    if (!parser.positionalArguments().isEmpty())
+        return usageError(QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().front()), usage);
+    if (!parser.isSet(QStringLiteral("link"))) return usageError(QStringLiteral("--link PATH is required"), usage);
+
+    devices::emulator::EmulatorOptions options;
+    options.linkPath = parser.value(QStringLiteral("link")).toStdString();
+    const QString protocol = parser.value(QStringLiteral("protocol"));
+    if (!protocol.isEmpty() && protocol != QLatin1String("binary") && protocol != QLatin1String("text"))
+        return usageError(QStringLiteral("--protocol must be binary or text"), usage);
+    options.protocol = protocol == QLatin1String("text") ? devices::WireProtocol::Text : devices::WireProtocol::Binary;
+    if (parser.isSet(QStringLiteral("scenario")))
+        options.scenario = parser.value(QStringLiteral("scenario")).toStdString();
+    const auto positive = [&](const char* key, bool integer) -> std::optional<double> {
+        const auto value = parseNumber(parser.value(QString::fromLatin1(key)));
+        if (!value || *value <= 0.0 || (integer && *value != std::floor(*value))) return std::nullopt;
+        return value;
+    };
+    if (parser.isSet(QStringLiteral("rate"))) {
+        options.rate_hz = positive("rate", false);
+        if (!options.rate_hz) return usageError(QStringLiteral("--rate must be a positive number of Hz"), usage);
+    }
+    if (parser.isSet(QStringLiteral("channels"))) {
+        const auto channels = positive("channels", true);
+        if (!channels || *channels > 64)
+            return usageError(QStringLiteral("--channels must be a whole number from 1 to 64"), usage);
+        options.channels = static_cast<std::size_t>(*channels);
+    }
+    if (parser.isSet(QStringLiteral("seconds"))) {
+        options.seconds = positive("seconds", false);
+        if (!options.seconds) return usageError(QStringLiteral("--seconds must be a positive number"), usage);
+    }
+    if (parser.isSet(QStringLiteral("garbage"))) {
+        const auto garbage = parseNumber(parser.value(QStringLiteral("garbage")));
+        if (!garbage || *garbage < 0.0 || *garbage > 1.0)
+            return usageError(QStringLiteral("--garbage must lie between 0 and 1"), usage);
+        options.garbageRate = *garbage;
+    }
+    if (parser.isSet(QStringLiteral("seed"))) {
+        bool ok = false;
+        options.seed = parser.value(QStringLiteral("seed")).toULongLong(&ok);
+        if (!ok) return usageError(QStringLiteral("--seed must be a non-negative integer"), usage);
+    }
+
+    std::unique_ptr<devices::emulator::ProbeEmulator> emulator;
+    try {
+        emulator = std::make_unique<devices::emulator::ProbeEmulator>(options);
+    } catch (const std::invalid_argument& e) {
+        return usageError(QString::fromStdString(e.what()), usage);
+    } catch (const std::exception& e) {
+        printError(QString::fromStdString(e.what()));
+        return kExitFailure;
+    }
+    std::signal(SIGINT, onSignal);
+    std::signal(SIGTERM, onSignal);
+    QTextStream out(stdout);
+    out << "Emulating " << QString::fromStdString(options.scenario) << " ("
+        << (options.protocol == devices::WireProtocol::Text ? "text" : "TSP/1 binary") << ") at "
+        << QString::fromStdString(options.linkPath) << " -> " << QString::fromStdString(emulator->ptyPath())
+        << ". Ctrl-C to stop." << Qt::endl;
+    emulator->start();
+    while (!g_interrupted && !emulator->finished()) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    emulator->stop();
+    const auto s = emulator->stats();
+    out << "Sent " << s.framesSent << " frames (" << s.samplesSent << " intact samples per channel), "
+        << s.corruptedFrames << " corrupted, " << s.garbageBursts << " garbage bursts, " << s.droppedFrames
+        << " dropped with nobody reading, " << s.commands << " commands received." << Qt::endl;
+    return kExitOk;
+}
+
+}  // namespace tactiscope::cli

@@ -1,0 +1,125 @@
+// PortSource: handshake, reading and protocol dispatch.
+#include "devices/PortSource.h"
+
+namespace tactiscope::devices {
+namespace {
+
+double steadySeconds()
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const PortSourceOptions& options)
+    : m_transport(std::move(transport)),
+      m_options(options)
+{
+    if (options.protocol == WireProtocol::Text) {
+        m_text.emplace(options.textRate_hz);
+    } else {
+        sendCommand(protocol::CommandCode::RequestInfo);
+        sendCommand(protocol::CommandCode::Start);
+    }
+    const auto deadline = std::chrono::steady_clock::now() + options.handshakeTimeout;
+    while (!layoutKnown()) {
+        if (std::chrono::steady_clock::now() >= deadline) {
+            throw transport::TransportError(m_transport->description() + ": no " +
+                                            (options.protocol == WireProtocol::Binary ? std::string("TSP/1 frames")
+                                                                                      : std::string("readable lines")) +
+                                            " within " + std::to_string(options.handshakeTimeout.count()) +
+                                            " ms; check the protocol, the baud rate and that the device is streaming");
+        }
+        pump(std::chrono::milliseconds(50));
+    }
+    if (m_text) {
+        m_channels = m_text->channels();
+        m_rate_hz = *m_text->sampleRate_hz();
+    } else {
+        m_channels = m_binary.channels();
+        m_rate_hz = *m_binary.sampleRate_hz();
+    }
+}
+
+PortSource::~PortSource()
+{
+    if (m_text) return;
+    try {
+        sendCommand(protocol::CommandCode::Stop);
+    } catch (const transport::TransportError&) {
+        // The device is gone already; nothing to stop.
+    }
+}
+
+std::string PortSource::name() const
+{
+    if (const auto info = deviceInfo())
+        return info->vendor + " " + info->model + " " + info->serialNumber + " (" + m_transport->description() + ")";
+    return m_transport->description();
+}
+
+bool PortSource::layoutKnown() const
+{
+    if (m_text) return m_text->sampleRate_hz().has_value() && !m_queue.empty();
+    return m_binary.sampleRate_hz().has_value() && !m_binary.channels().empty() &&
+           (m_binary.info() || !m_queue.empty());
+}
+
+void PortSource::sendCommand(protocol::CommandCode code, std::uint32_t argument)
+{
+    m_transport->write(protocol::encodeFrame(protocol::FrameType::Command, m_commandSequence++,
+                                             protocol::encodeCommand({code, argument})));
+}
+
+void PortSource::pump(std::chrono::milliseconds timeout)
+{
+    const std::size_t n = m_transport->read(m_chunk, timeout);
+    if (n == 0) return;
+    const std::span<const std::uint8_t> bytes(m_chunk.data(), n);
+    if (m_text) {
+        std::vector<core::SampleBlock> blocks;
+        m_text->push(bytes, steadySeconds(), blocks);
+        for (auto& b : blocks) m_queue.push_back(std::move(b));
+        const std::lock_guard lock(m_statusMutex);
+        m_counters = m_text->counters();
+    } else {
+        protocol::StreamOutput out;
+        m_binary.push(bytes, out);
+        for (auto& b : out.blocks) m_queue.push_back(std::move(b));
+        const std::lock_guard lock(m_statusMutex);
+        m_counters = m_binary.counters();
+        if (out.infoChanged) m_info = m_binary.info();
+    }
+}
+
+ReadStatus PortSource::readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout)
+{
+    try {
+        if (m_queue.empty()) pump(timeout);
+    } catch (const transport::TransportError& e) {
+        m_error = e.what();
+        return ReadStatus::Failed;
+    }
+    if (m_queue.empty()) return ReadStatus::Timeout;
+    if (m_queue.front().channelCount() != m_channels.size()) {
+        m_error = "the device changed its channels while streaming; reconnect it";
+        return ReadStatus::Failed;
+    }
+    out = std::move(m_queue.front());
+    m_queue.pop_front();
+    return ReadStatus::Block;
+}
+
+protocol::DecoderCounters PortSource::counters() const
+{
+    const std::lock_guard lock(m_statusMutex);
+    return m_counters;
+}
+
+std::optional<protocol::DeviceInfo> PortSource::deviceInfo() const
+{
+    const std::lock_guard lock(m_statusMutex);
+    return m_info;
+}
+
+}  // namespace tactiscope::devices

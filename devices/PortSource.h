@@ -1,0 +1,69 @@
+// A device on a byte-stream transport as a BlockSource: transport →
+// protocol stream (binary TSP/1 or Serial-Plotter text) → SampleBlocks.
+//
+// The constructor does the handshake: for TSP/1 it asks for the INFO frame
+// and sends start (a device that only streams data works too), then reads
+// until the channels and the sample rate are known, keeping the blocks that
+// arrived meanwhile. The destructor sends stop.
+#pragma once
+
+#include "devices/BlockSource.h"
+#include "devices/protocol/BinaryStream.h"
+#include "devices/protocol/TextStream.h"
+#include "devices/transport/Transport.h"
+
+#include <chrono>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <optional>
+
+namespace tactiscope::devices {
+
+enum class WireProtocol { Binary, Text };
+
+struct PortSourceOptions {
+    WireProtocol protocol = WireProtocol::Binary;
+    std::optional<double> textRate_hz;  // text only: else estimated (2 s)
+    std::chrono::milliseconds handshakeTimeout{4000};
+};
+
+class PortSource final : public BlockSource {
+public:
+    // Throws transport::TransportError when the transport fails or nothing
+    // usable arrives within the handshake timeout.
+    PortSource(std::unique_ptr<transport::Transport> transport, const PortSourceOptions& options);
+    ~PortSource() override;
+
+    std::string name() const override;
+    const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
+    double nominalSampleRate_hz() const override { return m_rate_hz; }
+    ReadStatus readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout) override;
+    std::string lastError() const override { return m_error; }
+
+    // Thread-safe snapshots for the UI and the record summary.
+    protocol::DecoderCounters counters() const;
+    std::optional<protocol::DeviceInfo> deviceInfo() const;
+
+private:
+    void sendCommand(protocol::CommandCode code, std::uint32_t argument = 0);
+    // Reads one chunk into the stream; queues blocks. Throws TransportError.
+    void pump(std::chrono::milliseconds timeout);
+    bool layoutKnown() const;
+
+    std::unique_ptr<transport::Transport> m_transport;
+    PortSourceOptions m_options;
+    protocol::BinaryStream m_binary;
+    std::optional<protocol::TextStream> m_text;
+    std::deque<core::SampleBlock> m_queue;
+    std::vector<core::ChannelDescriptor> m_channels;
+    double m_rate_hz = 0.0;
+    std::string m_error;
+    std::uint16_t m_commandSequence = 0;
+    std::vector<std::uint8_t> m_chunk = std::vector<std::uint8_t>(4096);
+    mutable std::mutex m_statusMutex;  // guards the snapshots below
+    protocol::DecoderCounters m_counters;
+    std::optional<protocol::DeviceInfo> m_info;
+};
+
+}  // namespace tactiscope::devices

@@ -1,0 +1,93 @@
+// A probe behind a pseudo-terminal: anyone can try the serial path without
+// hardware, and the tests use it. It creates a pty, puts a symlink at the
+// requested path, and behaves like firmware behind it: TSP/1 (answers
+// request-info, obeys start/stop/set-rate/tare; streams only after start) or
+// Serial-Plotter text (streams at once). Samples come from a simulator
+// scenario in real time; optionally it injects corrupt bytes, and counts
+// what it injected so tests can compare.
+//
+// A device with no reader behaves like a UART with nobody listening: frames
+// that cannot be written within 50 ms are dropped (and counted).
+#pragma once
+
+#include "devices/PortSource.h"
+#include "devices/protocol/BinaryDecoder.h"
+#include "devices/simulator/SimulatedScenario.h"
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <random>
+#include <string>
+#include <thread>
+
+namespace tactiscope::devices::emulator {
+
+struct EmulatorOptions {
+    std::string linkPath;
+    WireProtocol protocol = WireProtocol::Binary;
+    std::string scenario = "panel-scan";
+    std::optional<double> rate_hz;
+    std::optional<std::size_t> channels;  // fewer: the first N; more: repeated
+    std::optional<double> seconds;        // stream this long, then hang up
+    double garbageRate = 0.0;             // fraction of frames with garbage
+    std::size_t samplesPerFrame = 10;
+    std::uint64_t seed = 1;
+};
+
+struct EmulatorStats {
+    std::uint64_t framesSent = 0;       // data frames or lines written whole
+    std::uint64_t samplesSent = 0;      // per channel, in frames written whole and intact
+    std::uint64_t garbageBursts = 0;    // random bytes inserted between frames
+    std::uint64_t corruptedFrames = 0;  // frames with a flipped byte
+    std::uint64_t droppedFrames = 0;    // nobody reading
+    std::uint64_t commands = 0;
+};
+
+class ProbeEmulator {
+public:
+    // Creates the pty and the symlink (replacing an old symlink there).
+    // Throws std::runtime_error on failure or std::invalid_argument for bad
+    // options (unknown scenario, …).
+    explicit ProbeEmulator(const EmulatorOptions& options);
+    ~ProbeEmulator();  // stops, hangs up, removes the symlink
+
+    ProbeEmulator(const ProbeEmulator&) = delete;
+    ProbeEmulator& operator=(const ProbeEmulator&) = delete;
+
+    void start();
+    // Hangs up: the reader sees the device disconnect.
+    void stop();
+    bool finished() const { return m_finished; }
+    const std::string& ptyPath() const { return m_ptyPath; }
+    EmulatorStats stats() const;
+
+private:
+    void run(const std::stop_token& stop);
+    void handleCommands();
+    void sendFrame(std::vector<std::uint8_t> frame, std::size_t samples);
+    bool writeAll(const std::vector<std::uint8_t>& bytes);
+    std::vector<std::uint8_t> nextPayload(std::size_t& samples);
+    void hangUp();
+
+    EmulatorOptions m_options;
+    std::unique_ptr<simulator::SimulatedScenario> m_scenario;
+    std::vector<core::ChannelDescriptor> m_channels;
+    double m_rate_hz = 0.0;
+    int m_master = -1;
+    int m_slave = -1;
+    std::string m_ptyPath;
+    std::mt19937_64 m_random;
+    std::atomic<bool> m_streaming = false;
+    std::atomic<bool> m_finished = false;
+    std::uint16_t m_sequence = 0;
+    std::uint64_t m_sampleIndex = 0;
+    protocol::BinaryDecoder m_commandDecoder;  // host → device commands
+    mutable std::mutex m_statsMutex;
+    EmulatorStats m_stats;
+    std::jthread m_thread;
+};
+
+}  // namespace tactiscope::devices::emulator

@@ -1,0 +1,67 @@
+// `tactiscope-cli emulate` as a user runs it: a real process behind a real
+// pseudo-terminal, read here like a serial port.
+#include "support/CliRunner.h"
+
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <fcntl.h>
+#include <filesystem>
+#include <poll.h>
+#include <thread>
+#include <unistd.h>
+
+using tactiscope::testing::CliResult;
+using tactiscope::testing::runCli;
+
+TEST(EmulateCli, StreamsTextLinesBehindTheLinkAndRemovesItAfterwards)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("probe");
+    QProcess emulator;
+    emulator.start(QStringLiteral(TACTISCOPE_CLI), {"emulate", "--link", link, "--protocol", "text", "--scenario",
+                                                    "palpation", "--rate", "200", "--seconds", "1"});
+    ASSERT_TRUE(emulator.waitForStarted());
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    while (!std::filesystem::is_symlink(link.toStdString()) && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_TRUE(std::filesystem::is_symlink(link.toStdString()));
+
+    const int fd = ::open(link.toLocal8Bit().constData(), O_RDONLY | O_NOCTTY);
+    ASSERT_GE(fd, 0);
+    std::string text;
+    char buffer[256];
+    while (text.size() < 300) {
+        pollfd p{fd, POLLIN, 0};
+        if (::poll(&p, 1, 2000) <= 0) break;
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n <= 0) break;
+        text.append(buffer, static_cast<std::size_t>(n));
+    }
+    ::close(fd);
+    ASSERT_TRUE(emulator.waitForFinished(10000));
+    EXPECT_EQ(emulator.exitCode(), 0);
+    EXPECT_EQ(text.rfind("high:", 0), 0u) << text;
+    EXPECT_NE(text.find(" displacement:"), std::string::npos);
+    EXPECT_TRUE(QString::fromUtf8(emulator.readAllStandardOutput()).contains("intact samples"));
+    EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(link.toStdString())));
+}
+
+TEST(EmulateCli, BadOptionsExitWithCodeTwo)
+{
+    const std::vector<std::pair<QStringList, QString>> cases{
+        {{"emulate"}, "--link PATH is required"},
+        {{"emulate", "--link", "/tmp/x", "--protocol", "morse"}, "--protocol must be binary or text"},
+        {{"emulate", "--link", "/tmp/x", "--scenario", "moon"}, "unknown scenario 'moon'"},
+        {{"emulate", "--link", "/tmp/x", "--garbage", "2"}, "--garbage must lie between 0 and 1"},
+        {{"emulate", "--link", "/tmp/x", "--channels", "2.5"}, "--channels must be a whole number"},
+    };
+    for (const auto& [arguments, message] : cases) {
+        const CliResult run = runCli(arguments);
+        EXPECT_EQ(run.exitCode, 2) << arguments.join(' ').toStdString();
+        EXPECT_TRUE(run.err.section('\n', 0, 0).contains(message)) << run.err.toStdString();
+    }
+}
