@@ -7,6 +7,7 @@
 #include "DetectCommand.h"
 #include "EmulateCommand.h"
 #include "ModelCommand.h"
+#include "PortsCommand.h"
 #include "SimulateCommand.h"
 #include "core/Version.h"
 
@@ -29,6 +30,7 @@ constexpr std::array kCommands{
     Command{"detect", "Find surface deflections in a CSV recording (seed 000).", runDetect},
     Command{"emulate", "A simulated probe behind a pseudo-terminal (try the serial path).", runEmulate},
     Command{"model", "What the sensor model gives for a profile (JSON).", runModel},
+    Command{"ports", "List serial ports and HID devices.", runPorts},
     Command{"simulate", "Write a simulated recording as CSV.", runSimulate},
 };
 

@@ -65,3 +65,12 @@ TEST(EmulateCli, BadOptionsExitWithCodeTwo)
         EXPECT_TRUE(run.err.section('\n', 0, 0).contains(message)) << run.err.toStdString();
     }
 }
+
+TEST(PortsCli, ListsPortsAsJson)
+{
+    const CliResult run = runCli({"ports", "--json"});
+    ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
+    EXPECT_TRUE(run.out.startsWith("{\"serial\":["));
+    EXPECT_TRUE(run.out.contains("\"hid\":["));
+    EXPECT_EQ(runCli({"ports", "extra"}).exitCode, 2);
+}
