@@ -51,6 +51,14 @@ public:
         return m_firstSampleIndex > previousEndIndex ? m_firstSampleIndex - previousEndIndex : 0;
     }
 
+    // Moves the block in time and sample numbering, e.g. to continue a
+    // stream after a reconnection restarted the device's counters.
+    void rebase(double timeOffset_s, std::uint64_t indexOffset)
+    {
+        m_t0_s += timeOffset_s;
+        m_firstSampleIndex += indexOffset;
+    }
+
     std::span<double> channel(std::size_t c);
     std::span<const double> channel(std::size_t c) const;
     double value(std::size_t c, std::size_t sample) const { return channel(c)[sample]; }

@@ -212,15 +212,21 @@ TACTISCOPE_INLINE double signedRootOf(double signedSquare)
 
 // The best of the 8 lanes, branch-free: a shuffle tree finds the largest
 // value, then the smallest lag index among the lanes that hold it.
+// Lane permutations of an 8-lane vector (GCC and clang spell them differently).
+#if defined(__clang__)
+#define TACTISCOPE_PERMUTE(v, ...) __builtin_shufflevector(v, v, __VA_ARGS__)
+#else
+#define TACTISCOPE_PERMUTE(v, ...) __builtin_shuffle(v, Mask<8>{__VA_ARGS__})
+#endif
+
 template <typename V>
 TACTISCOPE_INLINE V largestOf(V v)
 {
-    using M = Mask<8>;
-    V swapped = __builtin_shuffle(v, M{4, 5, 6, 7, 0, 1, 2, 3});
+    V swapped = TACTISCOPE_PERMUTE(v, 4, 5, 6, 7, 0, 1, 2, 3);
     v = v > swapped ? v : swapped;
-    swapped = __builtin_shuffle(v, M{2, 3, 0, 1, 6, 7, 4, 5});
+    swapped = TACTISCOPE_PERMUTE(v, 2, 3, 0, 1, 6, 7, 4, 5);
     v = v > swapped ? v : swapped;
-    swapped = __builtin_shuffle(v, M{1, 0, 3, 2, 5, 4, 7, 6});
+    swapped = TACTISCOPE_PERMUTE(v, 1, 0, 3, 2, 5, 4, 7, 6);
     return v > swapped ? v : swapped;
 }
 
@@ -459,10 +465,15 @@ std::size_t kernelScratchSize(const LagMoments& moments, std::uint32_t window)
 
 KernelVariant bestKernelVariant()
 {
+    // Feature by feature rather than "x86-64-v4": both GCC and clang know these.
     static const KernelVariant best = [] {
         __builtin_cpu_init();
-        if (__builtin_cpu_supports("x86-64-v4")) return KernelVariant::Avx512;
-        if (__builtin_cpu_supports("x86-64-v3")) return KernelVariant::Avx2;
+        if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+            __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl") &&
+            __builtin_cpu_supports("avx512cd"))
+            return KernelVariant::Avx512;
+        if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi2"))
+            return KernelVariant::Avx2;
         return KernelVariant::Baseline;
     }();
     return best;

@@ -1,0 +1,106 @@
+// ReconnectingSource: outage detection, reopening and stream continuity.
+#include "devices/ReconnectingSource.h"
+
+#include "core/SampleBlock.h"
+#include "devices/PortSource.h"
+#include "devices/transport/SerialPorts.h"
+
+#include <cmath>
+#include <thread>
+
+namespace tactiscope::devices {
+
+const char* toString(DeviceState state)
+{
+    switch (state) {
+    case DeviceState::Streaming:
+        return "streaming";
+    case DeviceState::Lost:
+        return "lost";
+    case DeviceState::Reconnecting:
+        return "reconnecting";
+    }
+    return "?";
+}
+
+ReconnectingSource::ReconnectingSource(Opener opener, std::chrono::milliseconds retryInterval)
+    : m_opener(std::move(opener)),
+      m_retryInterval(retryInterval),
+      m_source(m_opener()),
+      m_name(m_source->name()),
+      m_channels(m_source->channels()),
+      m_rate_hz(m_source->nominalSampleRate_hz()),
+      m_start(std::chrono::steady_clock::now())
+{
+}
+
+bool ReconnectingSource::tryReconnect()
+{
+    m_state = DeviceState::Reconnecting;
+    try {
+        auto source = m_opener();
+        if (source->channels() != m_channels || source->nominalSampleRate_hz() != m_rate_hz) {
+            m_error = "the device came back with other channels or another rate; reconnect it by hand";
+            m_state = DeviceState::Lost;
+            return false;
+        }
+        const auto now = std::chrono::steady_clock::now();
+        const double away_s = std::chrono::duration<double>(now - m_lostAt).count();
+        // Continue after the last delivered sample, leaving room for what the
+        // outage cost; time goes on from the host's clock.
+        m_indexOffset = m_endIndex + static_cast<std::uint64_t>(std::llround(away_s * m_rate_hz));
+        m_timeOffset_s = std::chrono::duration<double>(now - m_start).count();
+        m_source = std::move(source);
+        m_state = DeviceState::Streaming;
+        ++m_reconnections;
+        return true;
+    } catch (const std::exception& e) {
+        m_error = e.what();
+        m_state = DeviceState::Lost;
+        return false;
+    }
+}
+
+ReadStatus ReconnectingSource::readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout)
+{
+    if (!m_source) {
+        const auto now = std::chrono::steady_clock::now();
+        if (now < m_nextRetry) {
+            std::this_thread::sleep_for(
+                std::min(timeout, std::chrono::duration_cast<std::chrono::milliseconds>(m_nextRetry - now)));
+            return ReadStatus::Timeout;
+        }
+        m_nextRetry = now + m_retryInterval;
+        if (!tryReconnect()) return ReadStatus::Timeout;
+    }
+    const ReadStatus status = m_source->readBlock(out, timeout);
+    if (status == ReadStatus::Failed) {
+        m_error = m_source->lastError();
+        m_source.reset();
+        m_state = DeviceState::Lost;
+        m_lostAt = std::chrono::steady_clock::now();
+        m_nextRetry = m_lostAt + m_retryInterval;
+        return ReadStatus::Timeout;
+    }
+    if (status != ReadStatus::Block) return status;
+    out.rebase(m_timeOffset_s, m_indexOffset);
+    m_endIndex = out.endSampleIndex();
+    return ReadStatus::Block;
+}
+
+ReconnectingSource::Opener serialOpener(std::string path, std::string usbSerialNumber, int baud,
+                                        PortSourceOptions options)
+{
+    return
+        [path = std::move(path), serial = std::move(usbSerialNumber), baud, options]() -> std::unique_ptr<BlockSource> {
+            std::string where = path;
+            if (!serial.empty()) {
+                for (const auto& port : transport::listSerialPorts()) {
+                    if (port.usbSerialNumber == serial) where = port.path;
+                }
+            }
+            return std::make_unique<PortSource>(transport::openSerialTransport(where, baud), options);
+        };
+}
+
+}  // namespace tactiscope::devices

@@ -1,0 +1,72 @@
+// A device that may be unplugged and plugged back in: wraps the source of
+// one connection and, when it fails, keeps trying to open the same device
+// again — matched by its USB serial number when it has one (the port path
+// may change, ttyACM0 → ttyACM1), else by the port path.
+//
+// The acquisition never sees a failure while the device is away: reads time
+// out, state() says Lost, then Reconnecting, then Streaming again. Blocks
+// after a reconnection continue the stream: their time is the host's time
+// since the first connection, and their sample index jumps by the samples
+// the outage cost (time away × rate), so Acquisition counts them as lost and
+// a recording marks the gap.
+#pragma once
+
+#include "devices/BlockSource.h"
+#include "devices/PortSource.h"
+
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace tactiscope::devices {
+
+enum class DeviceState { Streaming, Lost, Reconnecting };
+
+const char* toString(DeviceState state);
+
+class ReconnectingSource final : public BlockSource {
+public:
+    // Opens a connection; throws (whatever the opener throws) when it fails.
+    using Opener = std::function<std::unique_ptr<BlockSource>()>;
+
+    // The first connection is opened here and must succeed.
+    ReconnectingSource(Opener opener, std::chrono::milliseconds retryInterval = std::chrono::milliseconds(500));
+
+    std::string name() const override { return m_name; }
+    const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
+    double nominalSampleRate_hz() const override { return m_rate_hz; }
+    ReadStatus readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout) override;
+    std::string lastError() const override { return m_error; }
+
+    DeviceState state() const { return m_state; }  // any thread
+    std::uint64_t reconnections() const { return m_reconnections; }
+
+private:
+    bool tryReconnect();
+
+    Opener m_opener;
+    std::chrono::milliseconds m_retryInterval;
+    std::unique_ptr<BlockSource> m_source;
+    std::string m_name;
+    std::vector<core::ChannelDescriptor> m_channels;
+    double m_rate_hz = 0.0;
+    std::string m_error;
+    std::atomic<DeviceState> m_state = DeviceState::Streaming;
+    std::atomic<std::uint64_t> m_reconnections = 0;
+    std::chrono::steady_clock::time_point m_start;
+    std::chrono::steady_clock::time_point m_lostAt;
+    std::chrono::steady_clock::time_point m_nextRetry;
+    std::uint64_t m_endIndex = 0;     // one past the last sample delivered
+    double m_timeOffset_s = 0.0;      // added to the current connection's times
+    std::uint64_t m_indexOffset = 0;  // added to its sample indices
+};
+
+// An opener for a serial device: by USB serial number when given (searching
+// the ports each time), else by path.
+ReconnectingSource::Opener serialOpener(std::string path, std::string usbSerialNumber, int baud,
+                                        PortSourceOptions options);
+
+}  // namespace tactiscope::devices
