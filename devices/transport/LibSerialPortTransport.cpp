@@ -2,6 +2,7 @@
 #include "devices/transport/LibSerialPortTransport.h"
 
 #include <libserialport.h>
+#include <poll.h>
 
 namespace tactiscope::devices::transport {
 namespace {
@@ -56,7 +57,16 @@ std::size_t LibSerialPortTransport::read(std::span<std::uint8_t> buffer, std::ch
 {
     const int n = sp_blocking_read_next(m_port, buffer.data(), buffer.size(), static_cast<unsigned>(timeout.count()));
     if (n < 0) throw TransportError(m_path + ": the device was disconnected (" + lastError() + ")");
+    if (n == 0 && hungUp()) throw TransportError(m_path + ": the device was disconnected (hang-up)");
     return static_cast<std::size_t>(n);
+}
+
+bool LibSerialPortTransport::hungUp() const
+{
+    int fd = -1;
+    if (sp_get_port_handle(m_port, &fd) != SP_OK || fd < 0) return true;
+    pollfd entry{fd, POLLIN, 0};
+    return ::poll(&entry, 1, 0) > 0 && (entry.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0;
 }
 
 void LibSerialPortTransport::write(std::span<const std::uint8_t> bytes)

@@ -25,6 +25,10 @@ public:
     void write(std::span<const std::uint8_t> bytes) override;
 
 private:
+    // libserialport 0.1.1 reads a hung-up tty's end-of-file as "no data yet"
+    // and would time out forever after an unplug; poll tells them apart.
+    bool hungUp() const;
+
     std::string m_path;
     int m_baud;
     sp_port* m_port = nullptr;
