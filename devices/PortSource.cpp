@@ -76,17 +76,24 @@ void PortSource::pump(std::chrono::milliseconds timeout)
     const std::size_t n = m_transport->read(m_chunk, timeout);
     if (n == 0) return;
     const std::span<const std::uint8_t> bytes(m_chunk.data(), n);
+    const double arrival_s = steadySeconds();
     if (m_text) {
         std::vector<core::SampleBlock> blocks;
-        m_text->push(bytes, steadySeconds(), blocks);
-        for (auto& b : blocks) m_queue.push_back(std::move(b));
+        m_text->push(bytes, arrival_s, blocks);
         const std::lock_guard lock(m_statusMutex);
+        for (auto& b : blocks) {
+            m_clock.observe(b.endTime_s(), arrival_s);
+            m_queue.push_back(std::move(b));
+        }
         m_counters = m_text->counters();
     } else {
         protocol::StreamOutput out;
         m_binary.push(bytes, out);
-        for (auto& b : out.blocks) m_queue.push_back(std::move(b));
         const std::lock_guard lock(m_statusMutex);
+        for (auto& b : out.blocks) {
+            m_clock.observe(b.endTime_s(), arrival_s);
+            m_queue.push_back(std::move(b));
+        }
         m_counters = m_binary.counters();
         if (out.infoChanged) m_info = m_binary.info();
     }
@@ -108,6 +115,12 @@ ReadStatus PortSource::readBlock(core::SampleBlock& out, std::chrono::millisecon
     out = std::move(m_queue.front());
     m_queue.pop_front();
     return ReadStatus::Block;
+}
+
+double PortSource::hostTime_s(double blockTime_s) const
+{
+    const std::lock_guard lock(m_statusMutex);
+    return m_clock.hostTime_s(blockTime_s);
 }
 
 protocol::DecoderCounters PortSource::counters() const

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "devices/BlockSource.h"
+#include "devices/ClockSync.h"
 #include "devices/protocol/BinaryStream.h"
 #include "devices/protocol/TextStream.h"
 #include "devices/transport/Transport.h"
@@ -44,6 +45,11 @@ public:
     // Thread-safe snapshots for the UI and the record summary.
     protocol::DecoderCounters counters() const;
     std::optional<protocol::DeviceInfo> deviceInfo() const;
+    // Host steady-clock time (seconds) of a block time, drift-corrected
+    // (ClockSync.h). Block times count the device's clock (binary) or
+    // samples at the sample rate (text); either way the mapping learns the
+    // offset and the rate error from the arrival times.
+    double hostTime_s(double blockTime_s) const;
 
 private:
     void sendCommand(protocol::CommandCode code, std::uint32_t argument = 0);
@@ -64,6 +70,7 @@ private:
     mutable std::mutex m_statusMutex;  // guards the snapshots below
     protocol::DecoderCounters m_counters;
     std::optional<protocol::DeviceInfo> m_info;
+    ClockSync m_clock;
 };
 
 }  // namespace tactiscope::devices

@@ -95,10 +95,11 @@ void ProbeEmulator::stop()
 
 void ProbeEmulator::hangUp()
 {
+    // Marked first, so a reader that sees the hang-up also sees finished().
+    m_finished = true;
     if (m_master >= 0) ::close(m_master);
     if (m_slave >= 0) ::close(m_slave);
     m_master = m_slave = -1;
-    m_finished = true;
 }
 
 EmulatorStats ProbeEmulator::stats() const

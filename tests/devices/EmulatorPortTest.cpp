@@ -86,6 +86,13 @@ TEST(EmulatorPort, BinaryHandshakeAndStreamingGiveTheScenariosSamples)
     EXPECT_GE(index, 600u);
     EXPECT_EQ(source->counters().crcErrors, 0u);
     EXPECT_EQ(source->counters().samplesLost, 0u);
+
+    // The newest block has just arrived, so its end on the host clock lies
+    // shortly before now (never after: the transport only adds delay).
+    const double now_s = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    const double end_s = source->hostTime_s(blocks.back().endTime_s());
+    EXPECT_LE(end_s, now_s + 1e-3);
+    EXPECT_GT(end_s, now_s - 0.5);
 }
 
 TEST(EmulatorPort, TextProtocolWithAGivenRate)
