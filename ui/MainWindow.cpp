@@ -6,6 +6,7 @@
 #include "devices/Acquisition.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
+#include "ui/ConnectDialog.h"
 #include "ui/LivePlotWidget.h"
 
 #include <QActionGroup>
@@ -24,8 +25,19 @@ namespace {
 
 constexpr int kStatusInterval_ms = 250;
 
-QString stateText(const devices::AcquisitionStats& stats)
+QString stateText(const devices::AcquisitionStats& stats, const devices::BlockSource& source)
 {
+    // A device away (unplugged) is still "streaming" to the acquisition.
+    if (const auto* reconnecting = dynamic_cast<const devices::ReconnectingSource*>(&source)) {
+        switch (reconnecting->state()) {
+        case devices::DeviceState::Lost:
+            return MainWindow::tr("Device lost");
+        case devices::DeviceState::Reconnecting:
+            return MainWindow::tr("Reconnecting…");
+        case devices::DeviceState::Streaming:
+            break;
+        }
+    }
     switch (stats.state) {
     case devices::AcquisitionState::Idle:
         return MainWindow::tr("Idle");
@@ -66,10 +78,14 @@ void MainWindow::createMenus()
     file->addAction(tr("&Quit"), QKeySequence::Quit, qApp, &QApplication::closeAllWindows);
 
     QMenu* device = menuBar()->addMenu(tr("&Device"));
-    device->addAction(tr("Connect &simulator (panel scan)"), this, [this] {
-        connectSource(
-            std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario("panel-scan")));
-    });
+    device->addAction(tr("&Connect to device…"), QKeySequence(tr("Ctrl+K")), this, &MainWindow::showConnectDialog);
+    QMenu* simulator = device->addMenu(tr("&Simulator"));
+    for (const std::string& id : devices::simulator::scenarioIds()) {
+        simulator->addAction(QString::fromStdString(id), this, [this, id] {
+            connectSource(std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario(id)));
+        });
+    }
+    device->addSeparator();
     device->addAction(tr("&Disconnect"), this, &MainWindow::disconnectSource);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
@@ -107,6 +123,56 @@ void MainWindow::createStatusBar()
     m_deviceLabel->setContentsMargins(6, 0, 6, 0);
 }
 
+void MainWindow::showConnectDialog()
+{
+    ConnectDialog dialog(this);
+    if (dialog.exec() != QDialog::Accepted) return;
+    const ConnectRequest request = dialog.request();
+    connectDevice(QString::fromStdString(request.device.path),
+                  devices::deviceOpener(request.device, request.baud, request.options));
+}
+
+void MainWindow::connectDevice(const QString& label, devices::ReconnectingSource::Opener opener)
+{
+    disconnectSource();
+    const std::uint64_t attempt = ++m_connectAttempt;
+    m_connectingLabel = label;
+    m_deviceLabel->setText(label);
+    m_stateLabel->setText(tr("Connecting…"));
+    // Assigning joins a previous attempt still in its handshake (at most its timeout).
+    m_connector = std::jthread([this, attempt, opener = std::move(opener)] {
+        auto result = std::make_shared<std::unique_ptr<devices::BlockSource>>();
+        QString error;
+        try {
+            *result = std::make_unique<devices::ReconnectingSource>(opener);
+        } catch (const std::exception& e) {
+            error = QString::fromStdString(e.what());
+        }
+        QMetaObject::invokeMethod(
+            this, [this, attempt, result, error] { finishConnecting(attempt, std::move(*result), error); },
+            Qt::QueuedConnection);
+    });
+}
+
+void MainWindow::finishConnecting(std::uint64_t attempt, std::unique_ptr<devices::BlockSource> source,
+                                  const QString& error)
+{
+    if (attempt != m_connectAttempt) return;  // cancelled, or superseded by another connect
+    const QString label = m_connectingLabel.value_or(QString());
+    m_connectingLabel.reset();
+    if (source) {
+        connectSource(std::move(source));
+        return;
+    }
+    m_stateLabel->setText(tr("Connection failed"));
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot connect"),
+                                tr("Tactiscope could not connect to %1.").arg(label), QMessageBox::Ok, this);
+    box->setObjectName(QStringLiteral("connectErrorBox"));
+    box->setInformativeText(error);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
 void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
 {
     disconnectSource();
@@ -131,6 +197,8 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
 
 void MainWindow::disconnectSource()
 {
+    ++m_connectAttempt;  // a connect still in its handshake is dropped when it answers
+    m_connectingLabel.reset();
     m_statusTimer.stop();
     if (m_acquisition) m_acquisition->stop();
     m_plot->clearSource();
@@ -147,7 +215,7 @@ void MainWindow::updateStatus()
     if (!m_acquisition) return;
     const devices::AcquisitionStats stats = m_acquisition->stats();
     const QLocale locale;
-    m_stateLabel->setText(stateText(stats));
+    m_stateLabel->setText(stateText(stats, m_acquisition->source()));
     const double nominal_hz = m_acquisition->source().nominalSampleRate_hz();
     m_rateLabel->setText(stats.measuredRate_hz
                              ? tr("%1 Hz (nominal %2 Hz)")

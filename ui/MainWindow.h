@@ -8,11 +8,15 @@
 #pragma once
 
 #include "devices/BlockSource.h"
+#include "devices/ReconnectingSource.h"
 
 #include <QMainWindow>
 #include <QTimer>
 
+#include <cstdint>
 #include <memory>
+#include <optional>
+#include <thread>
 
 class QLabel;
 
@@ -33,13 +37,20 @@ public:
 
     // Disconnects any current device, then streams from `source`.
     void connectSource(std::unique_ptr<devices::BlockSource> source);
+    // Opens a device on a worker thread (the handshake can take seconds) and
+    // connects it when it answers; a failure is shown, never thrown. The
+    // device is reopened automatically after an unplug.
+    void connectDevice(const QString& label, devices::ReconnectingSource::Opener opener);
     void disconnectSource();
     bool isConnected() const { return m_acquisition != nullptr; }
+    bool isConnecting() const { return m_connectingLabel.has_value(); }
 
     LivePlotWidget* livePlot() const { return m_plot; }
 
 private:
     void createMenus();
+    void showConnectDialog();
+    void finishConnecting(std::uint64_t attempt, std::unique_ptr<devices::BlockSource> source, const QString& error);
     void createStatusBar();
     void updateStatus();
     void showAbout();
@@ -51,6 +62,9 @@ private:
     QLabel* m_samplesLabel = nullptr;
     QTimer m_statusTimer;
     std::unique_ptr<devices::Acquisition> m_acquisition;
+    std::optional<QString> m_connectingLabel;
+    std::uint64_t m_connectAttempt = 0;  // a newer attempt or a disconnect drops older results
+    std::jthread m_connector;            // declared last: joined before the members it reports to go
 };
 
 }  // namespace tactiscope::ui
