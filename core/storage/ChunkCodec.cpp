@@ -1,0 +1,51 @@
+// Chunk encoding: binary32, little-endian, channel-major.
+#include "core/storage/ChunkCodec.h"
+
+#include "core/SampleBlock.h"
+#include "core/storage/Database.h"
+
+#include <bit>
+#include <string>
+
+namespace tactiscope::core::storage {
+namespace {
+
+void putFloat(float value, std::uint8_t* out)
+{
+    const auto bits = std::bit_cast<std::uint32_t>(value);
+    for (int b = 0; b < 4; ++b) out[b] = static_cast<std::uint8_t>(bits >> (8 * b));
+}
+
+float getFloat(const std::uint8_t* in)
+{
+    std::uint32_t bits = 0;
+    for (int b = 0; b < 4; ++b) bits |= static_cast<std::uint32_t>(in[b]) << (8 * b);
+    return std::bit_cast<float>(bits);
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encodeChunk(const SampleBlock& block)
+{
+    std::vector<std::uint8_t> bytes(block.channelCount() * block.sampleCount() * 4);
+    std::uint8_t* out = bytes.data();
+    for (std::size_t c = 0; c < block.channelCount(); ++c) {
+        for (const double value : block.channel(c)) {
+            putFloat(static_cast<float>(value), out);
+            out += 4;
+        }
+    }
+    return bytes;
+}
+
+void decodeChunkChannel(std::span<const std::uint8_t> blob, std::size_t channels, std::size_t samples,
+                        std::size_t channel, std::size_t first, std::size_t count, std::vector<double>& out)
+{
+    if (blob.size() != channels * samples * 4 || channel >= channels || first + count > samples)
+        throw StorageError("a sample chunk has " + std::to_string(blob.size()) + " bytes, not the " +
+                           std::to_string(channels * samples * 4) + " its header promises; the store is damaged");
+    const std::uint8_t* in = blob.data() + (channel * samples + first) * 4;
+    for (std::size_t s = 0; s < count; ++s, in += 4) out.push_back(static_cast<double>(getFloat(in)));
+}
+
+}  // namespace tactiscope::core::storage

@@ -1,0 +1,95 @@
+// A thin RAII layer over the SQLite C API: a connection and prepared
+// statements that throw StorageError with SQLite's message and the file
+// name, so callers never check return codes and never leak handles.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+struct sqlite3;
+struct sqlite3_stmt;
+
+namespace tactiscope::core::storage {
+
+class StorageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+class Statement {
+public:
+    Statement(sqlite3* db, std::string_view sql);
+    ~Statement();
+    Statement(Statement&& other) noexcept;
+    Statement(const Statement&) = delete;
+    Statement& operator=(const Statement&) = delete;
+    Statement& operator=(Statement&&) = delete;
+
+    // Parameters are numbered from 1, as in SQL.
+    Statement& bind(int index, std::int64_t value);
+    Statement& bind(int index, double value);
+    Statement& bind(int index, std::string_view text);
+    Statement& bindBlob(int index, std::span<const std::uint8_t> bytes);
+    Statement& bindNull(int index);
+
+    // True while a row is available; false when done. Throws on error.
+    bool step();
+    // Runs a statement that returns no rows.
+    void run();
+    void reset();
+
+    // Columns are numbered from 0, as in sqlite3_column_*.
+    std::int64_t int64(int column) const;
+    double real(int column) const;
+    std::string text(int column) const;  // empty for NULL
+    bool isNull(int column) const;
+    std::span<const std::uint8_t> blob(int column) const;  // valid until the next step()
+
+private:
+    void check(int code) const;
+
+    sqlite3* m_db;
+    sqlite3_stmt* m_statement = nullptr;
+};
+
+class Database {
+public:
+    enum class Access { ReadOnly, ReadWrite };
+
+    // Opens (and for ReadWrite creates) the file. Throws StorageError.
+    Database(const std::string& path, Access access);
+    ~Database();
+    Database(const Database&) = delete;
+    Database& operator=(const Database&) = delete;
+
+    void exec(std::string_view sql);
+    Statement prepare(std::string_view sql) { return Statement(m_db, sql); }
+    std::int64_t lastInsertId() const;
+    const std::string& path() const { return m_path; }
+    Access access() const { return m_access; }
+
+private:
+    sqlite3* m_db = nullptr;
+    std::string m_path;
+    Access m_access;
+};
+
+// Runs a scope in one transaction: committed by commit(), rolled back when
+// the scope is left by an exception.
+class Transaction {
+public:
+    explicit Transaction(Database& db);
+    ~Transaction();
+    Transaction(const Transaction&) = delete;
+    Transaction& operator=(const Transaction&) = delete;
+    void commit();
+
+private:
+    Database& m_db;
+    bool m_done = false;
+};
+
+}  // namespace tactiscope::core::storage

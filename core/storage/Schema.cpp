@@ -1,0 +1,109 @@
+// Schema creation and migrations. A migration is the SQL that takes the
+// store from version N to N + 1; each runs in its own transaction.
+#include "core/storage/Schema.h"
+
+#include <array>
+#include <string>
+
+namespace tactiscope::core::storage {
+namespace {
+
+// Version 0 → 1: the first schema.
+constexpr const char* kVersion1 = R"sql(
+CREATE TABLE sessions (
+    id              INTEGER PRIMARY KEY,
+    uuid            TEXT NOT NULL UNIQUE,
+    mode            TEXT NOT NULL CHECK (mode IN ('panel-scan', 'palpation', 'capacitive')),
+    subject         TEXT NOT NULL DEFAULT '',
+    operator        TEXT NOT NULL DEFAULT '',
+    site            TEXT NOT NULL DEFAULT '',
+    notes           TEXT NOT NULL DEFAULT '',
+    started_utc     TEXT NOT NULL,
+    ended_utc       TEXT,
+    status          TEXT NOT NULL CHECK (status IN ('recording', 'complete', 'interrupted')),
+    verdict         TEXT NOT NULL DEFAULT '',
+    device_model    TEXT NOT NULL DEFAULT '',
+    device_serial   TEXT NOT NULL DEFAULT '',
+    device_firmware TEXT NOT NULL DEFAULT '',
+    profile_json    TEXT NOT NULL DEFAULT '',
+    app_version     TEXT NOT NULL
+);
+CREATE INDEX sessions_started ON sessions (started_utc);
+
+CREATE TABLE channels (
+    session_id     INTEGER NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    position       INTEGER NOT NULL,
+    name           TEXT NOT NULL,
+    unit           TEXT NOT NULL,
+    kind           TEXT NOT NULL,
+    sample_rate_hz REAL NOT NULL CHECK (sample_rate_hz > 0),
+    PRIMARY KEY (session_id, position)
+) WITHOUT ROWID;
+
+CREATE TABLE chunks (
+    session_id   INTEGER NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    first_index  INTEGER NOT NULL,
+    first_time_s REAL NOT NULL,
+    count        INTEGER NOT NULL CHECK (count > 0),
+    samples      BLOB NOT NULL,
+    PRIMARY KEY (session_id, first_index)
+) WITHOUT ROWID;
+
+CREATE TABLE gaps (
+    session_id  INTEGER NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    first_index INTEGER NOT NULL,
+    count       INTEGER NOT NULL CHECK (count > 0),
+    PRIMARY KEY (session_id, first_index)
+) WITHOUT ROWID;
+)sql";
+
+constexpr std::array kMigrations{kVersion1};
+static_assert(kMigrations.size() == kSchemaVersion);
+
+std::int64_t pragma(Database& db, const char* name)
+{
+    auto statement = db.prepare(std::string("PRAGMA ") + name);
+    return statement.step() ? statement.int64(0) : 0;
+}
+
+}  // namespace
+
+void prepareSchema(Database& db)
+{
+    // The first read is where SQLite notices a file that is not a database.
+    std::int64_t tables = 0;
+    try {
+        auto count = db.prepare("SELECT count(*) FROM sqlite_schema");
+        count.step();
+        tables = count.int64(0);
+    } catch (const StorageError& e) {
+        throw StorageError(db.path() + " is not a Tactiscope session store (" + e.what() + "); it was left untouched");
+    }
+    const std::int64_t application = pragma(db, "application_id");
+    const std::int64_t version = pragma(db, "user_version");
+    if (tables > 0 && application != kApplicationId)
+        throw StorageError(db.path() + " is an SQLite file of another program, not a Tactiscope session store; " +
+                           "it was left untouched");
+    if (version > kSchemaVersion && db.access() == Database::Access::ReadWrite)
+        throw StorageError(db.path() + " was written by a newer Tactiscope (store version " + std::to_string(version) +
+                           ", this build knows " + std::to_string(kSchemaVersion) +
+                           "); open it read-only or update Tactiscope");
+    db.exec("PRAGMA foreign_keys = ON");
+    if (version >= kSchemaVersion || db.access() == Database::Access::ReadOnly) {
+        if (version < kSchemaVersion)
+            throw StorageError(db.path() + " has an older store version (" + std::to_string(version) +
+                               "); open it read-write once to update it");
+        return;
+    }
+    // WAL: readers (the review window) work while the recorder writes.
+    db.exec("PRAGMA journal_mode = WAL");
+    for (auto step = version; step < kSchemaVersion; ++step) {
+        Transaction transaction(db);
+        db.exec(kMigrations[static_cast<std::size_t>(step)]);
+        db.exec("PRAGMA user_version = " + std::to_string(step + 1));
+        db.exec("PRAGMA application_id = " + std::to_string(kApplicationId));
+        transaction.commit();
+    }
+}
+
+}  // namespace tactiscope::core::storage

@@ -1,0 +1,22 @@
+// The session store's schema: its version (PRAGMA user_version), the forward
+// migrations that bring an older store up to date, and the checks that keep
+// us from writing into a file that is not ours. docs/storage.md describes
+// every table.
+#pragma once
+
+#include "core/storage/Database.h"
+
+namespace tactiscope::core::storage {
+
+inline constexpr int kSchemaVersion = 1;
+// PRAGMA application_id of a Tactiscope store: "TSC1" in ASCII.
+inline constexpr std::int64_t kApplicationId = 0x54534331;
+
+// Makes `db` a current Tactiscope store: creates the schema in an empty
+// file, migrates an older one (read-write only). Throws StorageError, and
+// leaves the file untouched, when it is another program's SQLite file, is
+// not an SQLite file, or has a newer schema than this build and is opened
+// read-write (read-only works: tables are only ever added to).
+void prepareSchema(Database& db);
+
+}  // namespace tactiscope::core::storage
