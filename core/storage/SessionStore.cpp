@@ -153,6 +153,17 @@ void SessionStore::appendBlocks(std::int64_t session, std::span<const SampleBloc
     transaction.commit();
 }
 
+void SessionStore::markLostUntil(std::int64_t session, std::uint64_t endIndex)
+{
+    const std::uint64_t end = sampleCount(session);
+    if (endIndex <= end) return;
+    m_db.prepare("INSERT INTO gaps VALUES (?, ?, ?)")
+        .bind(1, session)
+        .bind(2, static_cast<std::int64_t>(end))
+        .bind(3, static_cast<std::int64_t>(endIndex - end))
+        .run();
+}
+
 void SessionStore::endSession(std::int64_t session, SessionStatus status)
 {
     m_db.prepare("UPDATE sessions SET status = ?, ended_utc = ? WHERE id = ?")
@@ -193,8 +204,11 @@ std::vector<StoredChannel> SessionStore::channels(std::int64_t session)
 
 std::uint64_t SessionStore::sampleCount(std::int64_t session)
 {
-    auto query =
-        m_db.prepare("SELECT first_index + count FROM chunks WHERE session_id = ? ORDER BY first_index DESC LIMIT 1");
+    // The last chunk or the last gap, whichever ends later; both are index
+    // lookups on the primary keys.
+    auto query = m_db.prepare("SELECT max(coalesce((SELECT first_index + count FROM chunks WHERE session_id = ?1 "
+                              "ORDER BY first_index DESC LIMIT 1), 0), coalesce((SELECT first_index + count FROM gaps "
+                              "WHERE session_id = ?1 ORDER BY first_index DESC LIMIT 1), 0))");
     query.bind(1, session);
     return query.step() ? static_cast<std::uint64_t>(query.int64(0)) : 0;
 }

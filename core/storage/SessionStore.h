@@ -67,13 +67,16 @@ public:
     std::int64_t beginSession(const SessionMetadata& metadata, std::span<const ChannelDescriptor> channels,
                               double sampleRate_hz);
     void appendBlocks(std::int64_t session, std::span<const SampleBlock> blocks);  // one transaction
+    // Records samples lost after the last stored ones (e.g. at the end of a
+    // recording, where no later block marks the gap). No-op when none are.
+    void markLostUntil(std::int64_t session, std::uint64_t endIndex);
     void endSession(std::int64_t session, SessionStatus status);
 
     // Reading.
     std::vector<SessionSummary> sessions();  // newest first
     std::optional<SessionSummary> session(std::int64_t id);
     std::vector<StoredChannel> channels(std::int64_t session);
-    std::uint64_t sampleCount(std::int64_t session);  // per channel, including gaps
+    std::uint64_t sampleCount(std::int64_t session);  // per channel, including gaps and lost ones at the end
     std::vector<SampleGap> gaps(std::int64_t session);
     // Samples [firstIndex, firstIndex + count) of one channel, clipped to the
     // recording; samples inside a gap read as NaN.

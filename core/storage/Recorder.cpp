@@ -1,0 +1,107 @@
+// Recorder: queueing on the acquisition thread, batched writes on its own.
+#include "core/storage/Recorder.h"
+
+#include "core/SampleBlock.h"
+
+#include <vector>
+
+namespace tactiscope::core::storage {
+
+Recorder::Recorder(const std::string& storePath, const SessionMetadata& metadata,
+                   std::vector<ChannelDescriptor> channels, double sampleRate_hz, std::uint64_t maxQueuedSamples)
+    : m_store(storePath),
+      m_maxQueued(maxQueuedSamples)
+{
+    m_session = m_store.beginSession(metadata, channels, sampleRate_hz);
+    // From here on only the writer thread touches m_store, until finish().
+    m_writer = std::jthread([this](const std::stop_token& stop) { run(stop); });
+}
+
+Recorder::~Recorder()
+{
+    finish(SessionStatus::Interrupted);
+}
+
+void Recorder::consume(const SampleBlock& block)
+{
+    const std::lock_guard lock(m_mutex);
+    if (!m_firstIndex) {
+        m_firstIndex = block.firstSampleIndex();
+        m_firstTime_s = block.t0_s();
+    }
+    m_consumedEnd = block.endSampleIndex() - *m_firstIndex;
+    if (m_finished || !m_stats.error.empty() || m_queuedSamples + block.sampleCount() > m_maxQueued) {
+        m_stats.samplesDropped += block.sampleCount();
+        return;
+    }
+    m_queue.push_back(block);
+    // Unsigned arithmetic wraps, so adding −first subtracts it exactly.
+    m_queue.back().rebase(-m_firstTime_s, std::uint64_t{0} - *m_firstIndex);
+    m_queuedSamples += block.sampleCount();
+    m_wake.notify_one();
+}
+
+RecorderStats Recorder::stats() const
+{
+    const std::lock_guard lock(m_mutex);
+    return m_stats;
+}
+
+void Recorder::run(const std::stop_token& stop)
+{
+    std::unique_lock lock(m_mutex);
+    while (!stop.stop_requested()) {
+        // Wake at once for a full queue, else gather a commit interval's worth.
+        m_wake.wait_for(lock, stop, kCommitInterval, [this] { return m_queuedSamples * 2 > m_maxQueued; });
+        writeQueued(lock);
+    }
+    writeQueued(lock);
+}
+
+void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
+{
+    if (m_queue.empty() || !m_stats.error.empty()) return;
+    std::vector<SampleBlock> batch(std::make_move_iterator(m_queue.begin()), std::make_move_iterator(m_queue.end()));
+    m_queue.clear();
+    const std::uint64_t samples = m_queuedSamples;
+    m_queuedSamples = 0;
+    lock.unlock();  // the acquisition keeps queueing while the disk works
+    std::string error;
+    try {
+        m_store.appendBlocks(m_session, batch);
+    } catch (const StorageError& e) {
+        error = e.what();
+    }
+    lock.lock();
+    if (error.empty()) {
+        m_stats.samplesWritten += samples;
+        ++m_stats.commits;
+    } else {
+        m_stats.error = "recording stopped: " + error + "; everything recorded before was kept";
+        m_stats.samplesDropped += samples + m_queuedSamples;
+        m_queue.clear();
+        m_queuedSamples = 0;
+    }
+}
+
+RecorderStats Recorder::finish(SessionStatus status)
+{
+    {
+        const std::lock_guard lock(m_mutex);
+        if (m_finished) return m_stats;
+        m_finished = true;  // consume() drops from here on
+    }
+    m_writer.request_stop();
+    m_writer.join();  // writes what was queued
+    const std::lock_guard lock(m_mutex);
+    try {
+        if (m_stats.error.empty()) m_store.markLostUntil(m_session, m_consumedEnd);
+        m_store.endSession(m_session, m_stats.error.empty() ? status : SessionStatus::Interrupted);
+    } catch (const StorageError& e) {
+        // The samples are committed; only the end mark is missing.
+        if (m_stats.error.empty()) m_stats.error = e.what();
+    }
+    return m_stats;
+}
+
+}  // namespace tactiscope::core::storage

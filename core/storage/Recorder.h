@@ -1,0 +1,72 @@
+// Records one session into a store: a BlockSink whose consume() only
+// queues, so the acquisition thread never waits on the disk, and a writer
+// thread with its own connection that stores whatever is queued in one
+// transaction at least every kCommitInterval.
+//
+// Memory is bounded: beyond maxQueuedSamples (per channel) blocks are
+// dropped and the store records them as a gap, as if the device had lost
+// them (at the end of the recording too); stats() counts them. A write error (disk full, file made read-only)
+// stops the recording: everything committed stays, stats() says why.
+//
+// Sample indices and times are stored relative to the first block, so a
+// session starts at sample 0, time 0.
+#pragma once
+
+#include "core/BlockSink.h"
+#include "core/storage/SessionStore.h"
+
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+namespace tactiscope::core::storage {
+
+struct RecorderStats {
+    std::uint64_t samplesWritten = 0;  // per channel, committed
+    std::uint64_t samplesDropped = 0;  // per channel, over the memory bound or after a failure
+    std::uint64_t commits = 0;
+    std::string error;  // why recording stopped early; empty while it is fine
+};
+
+class Recorder final : public BlockSink {
+public:
+    static constexpr std::chrono::milliseconds kCommitInterval{250};
+
+    // Opens the store and begins the session; throws StorageError.
+    Recorder(const std::string& storePath, const SessionMetadata& metadata, std::vector<ChannelDescriptor> channels,
+             double sampleRate_hz, std::uint64_t maxQueuedSamples);
+    ~Recorder() override;  // finish(Interrupted) unless finished
+
+    Recorder(const Recorder&) = delete;
+    Recorder& operator=(const Recorder&) = delete;
+
+    std::int64_t sessionId() const { return m_session; }
+    void consume(const SampleBlock& block) override;  // acquisition thread
+    RecorderStats stats() const;
+    // Stores what is queued, ends the session with `status` (interrupted if
+    // a write failed) and stops the writer. Idempotent.
+    RecorderStats finish(SessionStatus status);
+
+private:
+    void run(const std::stop_token& stop);
+    void writeQueued(std::unique_lock<std::mutex>& lock);
+
+    SessionStore m_store;
+    std::int64_t m_session = 0;
+    std::uint64_t m_maxQueued;
+    mutable std::mutex m_mutex;
+    std::condition_variable_any m_wake;
+    std::deque<SampleBlock> m_queue;
+    std::uint64_t m_queuedSamples = 0;
+    std::optional<std::uint64_t> m_firstIndex;  // of the first block consumed
+    double m_firstTime_s = 0.0;
+    std::uint64_t m_consumedEnd = 0;  // one past the last sample consumed, session-relative
+    RecorderStats m_stats;
+    bool m_finished = false;
+    std::jthread m_writer;  // last: stopped before the members it uses go
+};
+
+}  // namespace tactiscope::core::storage

@@ -1,0 +1,161 @@
+// The recorder on a real store: what is consumed is what is stored, memory
+// stays bounded while the disk is held up (the overflow becomes a gap), and
+// a write error ends the recording with everything before it kept.
+#include "core/storage/Recorder.h"
+
+#include "core/SampleBlock.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <thread>
+#include <unistd.h>
+
+using namespace tactiscope::core;
+using namespace tactiscope::core::storage;
+
+namespace {
+
+class RecorderTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        m_path = (std::filesystem::temp_directory_path() /
+                  ("tactiscope-recorder-" + std::to_string(::getpid()) + "-" +
+                   ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".tactiscope"))
+                     .string();
+        std::filesystem::remove(m_path);
+    }
+    void TearDown() override
+    {
+        for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(m_path + suffix);
+    }
+
+    std::string m_path;
+};
+
+const std::vector<ChannelDescriptor> kChannels{{"x", "m", ChannelKind::Position}, {"f", "N", ChannelKind::Force}};
+
+SessionMetadata palpation()
+{
+    SessionMetadata metadata;
+    metadata.mode = "palpation";
+    return metadata;
+}
+
+// Channel c, device sample i → i + c / 2 (exact in binary32 below 2^22).
+SampleBlock deviceBlock(std::uint64_t first, std::size_t count)
+{
+    SampleBlock block(2, count, 7.5 + static_cast<double>(first) / 1000.0, 1.0 / 1000.0, first);
+    for (std::size_t c = 0; c < 2; ++c)
+        for (std::size_t s = 0; s < count; ++s)
+            block.channel(c)[s] = static_cast<double>(first + s) + static_cast<double>(c) / 2.0;
+    return block;
+}
+
+template <typename Predicate>
+bool eventually(Predicate condition)
+{
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (!condition()) {
+        if (std::chrono::steady_clock::now() > deadline) return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return true;
+}
+
+}  // namespace
+
+TEST_F(RecorderTest, StoresEveryConsumedSampleFromSampleZero)
+{
+    std::int64_t id = 0;
+    {
+        Recorder recorder(m_path, palpation(), kChannels, 1000.0, 100'000);
+        id = recorder.sessionId();
+        // The device's count starts at 5000: the session still starts at 0.
+        for (std::uint64_t first = 5000; first < 8000; first += 30) recorder.consume(deviceBlock(first, 30));
+        const auto stats = recorder.finish(SessionStatus::Complete);
+        EXPECT_EQ(stats.samplesWritten, 3000u);
+        EXPECT_EQ(stats.samplesDropped, 0u);
+        EXPECT_TRUE(stats.error.empty());
+    }
+    SessionStore store(m_path, Database::Access::ReadOnly);
+    EXPECT_EQ(store.session(id)->status, "complete");
+    EXPECT_EQ(store.sampleCount(id), 3000u);
+    EXPECT_TRUE(store.gaps(id).empty());
+    const auto force = store.readChannel(id, 1, 0, 3000);
+    for (std::uint64_t i = 0; i < 3000; ++i) ASSERT_EQ(force[i], static_cast<double>(5000 + i) + 0.5) << i;
+    auto time = store.database().prepare("SELECT first_time_s FROM chunks WHERE session_id = ? AND first_index = 30");
+    time.bind(1, id);
+    ASSERT_TRUE(time.step());
+    EXPECT_NEAR(time.real(0), 0.030, 1e-12);
+}
+
+TEST_F(RecorderTest, MemoryStaysBoundedWhileTheDiskIsHeldUpAndTheOverflowIsAGap)
+{
+    Recorder recorder(m_path, palpation(), kChannels, 1000.0, 200);
+    const auto id = recorder.sessionId();
+    std::uint64_t sent = 0;
+    {
+        // Another connection holds the write lock, as a slow disk would.
+        Database other(m_path, Database::Access::ReadWrite);
+        other.exec("BEGIN IMMEDIATE");
+        for (; sent < 20'000; sent += 50) recorder.consume(deviceBlock(sent, 50));
+        other.exec("COMMIT");
+    }
+    // Once the queue has drained, a block fits again and closes the gap.
+    ASSERT_TRUE(eventually([&] {
+        const auto s = recorder.stats();
+        return s.samplesWritten + s.samplesDropped == sent;
+    }));
+    recorder.consume(deviceBlock(sent, 50));
+    sent += 50;
+    const auto stats = recorder.finish(SessionStatus::Complete);
+    EXPECT_GE(stats.samplesDropped, 20'000u - 2 * 200u);  // at most the queue and one batch in flight
+    EXPECT_EQ(stats.samplesWritten + stats.samplesDropped, sent);
+
+    SessionStore store(m_path, Database::Access::ReadOnly);
+    std::uint64_t gapSamples = 0;
+    for (const auto& gap : store.gaps(id)) gapSamples += gap.count;
+    EXPECT_EQ(gapSamples, stats.samplesDropped);
+    EXPECT_EQ(store.sampleCount(id), sent);
+    const auto last = store.readChannel(id, 0, sent - 50, 50);
+    for (std::uint64_t i = 0; i < 50; ++i) ASSERT_EQ(last[i], static_cast<double>(sent - 50 + i));
+}
+
+TEST_F(RecorderTest, SamplesDroppedAtTheEndAreMarkedLost)
+{
+    Recorder recorder(m_path, palpation(), kChannels, 1000.0, 100);
+    const auto id = recorder.sessionId();
+    for (std::uint64_t first = 0; first < 1000; first += 50) recorder.consume(deviceBlock(first, 50));
+    const auto stats = recorder.finish(SessionStatus::Complete);
+    EXPECT_EQ(stats.samplesWritten + stats.samplesDropped, 1000u);
+    EXPECT_TRUE(stats.error.empty()) << stats.error;
+    SessionStore store(m_path, Database::Access::ReadOnly);
+    EXPECT_EQ(store.sampleCount(id), 1000u);
+    ASSERT_FALSE(store.gaps(id).empty());
+    EXPECT_EQ(store.gaps(id).back().firstIndex + store.gaps(id).back().count, 1000u);
+    EXPECT_TRUE(std::isnan(store.readChannel(id, 1, 999, 1).at(0)));
+}
+
+TEST_F(RecorderTest, AWriteErrorStopsRecordingAndKeepsWhatWasCommitted)
+{
+    Recorder recorder(m_path, palpation(), kChannels, 1000.0, 100'000);
+    const auto id = recorder.sessionId();
+    recorder.consume(deviceBlock(0, 100));
+    ASSERT_TRUE(eventually([&] { return recorder.stats().commits >= 1; }));
+    recorder.consume(deviceBlock(100, 100));
+    recorder.consume(deviceBlock(50, 100));  // out of order: the store refuses the batch
+    ASSERT_TRUE(eventually([&] { return !recorder.stats().error.empty(); }));
+    recorder.consume(deviceBlock(200, 100));  // dropped: recording has stopped
+    const auto stats = recorder.finish(SessionStatus::Complete);
+    EXPECT_NE(stats.error.find("out of order"), std::string::npos) << stats.error;
+    EXPECT_NE(stats.error.find("everything recorded before was kept"), std::string::npos);
+    EXPECT_EQ(stats.samplesWritten, 100u);
+    EXPECT_EQ(stats.samplesDropped, 300u);
+
+    SessionStore store(m_path, Database::Access::ReadOnly);
+    EXPECT_EQ(store.session(id)->status, "interrupted");
+    EXPECT_EQ(store.sampleCount(id), 100u);
+}
