@@ -56,7 +56,7 @@ void BM_SerialDecode8x2kHz(benchmark::State& state)
         state.counters["cpu_fraction"] = (threadCpuSeconds() - cpu0) / wall;
         state.counters["samples"] = static_cast<double>(samples);
         state.counters["samples_sent"] = static_cast<double>(probe.stats().samplesSent);
-        state.counters["samples_lost"] = static_cast<double>(source.counters().samplesLost);
+        state.counters["samples_lost"] = static_cast<double>(source.decoderCounters().samplesLost);
         state.counters["dropped_by_emulator"] = static_cast<double>(probe.stats().droppedFrames);
     }
 }

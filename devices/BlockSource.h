@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/ChannelDescriptor.h"
+#include "devices/protocol/DecoderCounters.h"
 
 #include <chrono>
 #include <string>
@@ -37,6 +38,10 @@ public:
 
     // Why the last readBlock() returned Failed, in words a user can act on.
     virtual std::string lastError() const { return {}; }
+
+    // What the wire protocol has counted (bytes, CRC errors, resyncs, …);
+    // all zero for sources without one. Callable from any thread.
+    virtual protocol::DecoderCounters decoderCounters() const { return {}; }
 };
 
 }  // namespace tactiscope::devices

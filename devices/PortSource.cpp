@@ -1,6 +1,8 @@
 // PortSource: handshake, reading and protocol dispatch.
 #include "devices/PortSource.h"
 
+#include <cmath>
+
 namespace tactiscope::devices {
 namespace {
 
@@ -18,6 +20,9 @@ PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const Po
     if (options.protocol == WireProtocol::Text) {
         m_text.emplace(options.textRate_hz);
     } else {
+        if (options.requestRate_hz)
+            sendCommand(protocol::CommandCode::SetRate,
+                        static_cast<std::uint32_t>(std::llround(*options.requestRate_hz * 1000.0)));
         sendCommand(protocol::CommandCode::RequestInfo);
         sendCommand(protocol::CommandCode::Start);
     }
@@ -123,7 +128,7 @@ double PortSource::hostTime_s(double blockTime_s) const
     return m_clock.hostTime_s(blockTime_s);
 }
 
-protocol::DecoderCounters PortSource::counters() const
+protocol::DecoderCounters PortSource::decoderCounters() const
 {
     const std::lock_guard lock(m_statusMutex);
     return m_counters;

@@ -27,6 +27,7 @@ struct PortSourceOptions {
     WireProtocol protocol = WireProtocol::Binary;
     std::optional<double> textRate_hz;  // text only: else estimated (2 s)
     std::chrono::milliseconds handshakeTimeout{4000};
+    std::optional<double> requestRate_hz;  // binary only: asked of the device with "set rate"; it may refuse
 };
 
 class PortSource final : public BlockSource {
@@ -43,7 +44,7 @@ public:
     std::string lastError() const override { return m_error; }
 
     // Thread-safe snapshots for the UI and the record summary.
-    protocol::DecoderCounters counters() const;
+    protocol::DecoderCounters decoderCounters() const override;
     std::optional<protocol::DeviceInfo> deviceInfo() const;
     // Host steady-clock time (seconds) of a block time, drift-corrected
     // (ClockSync.h). Block times count the device's clock (binary) or

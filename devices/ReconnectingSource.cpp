@@ -50,7 +50,7 @@ bool ReconnectingSource::tryReconnect()
         // outage cost; time goes on from the host's clock.
         m_indexOffset = m_endIndex + static_cast<std::uint64_t>(std::llround(away_s * m_rate_hz));
         m_timeOffset_s = std::chrono::duration<double>(now - m_start).count();
-        m_source = std::move(source);
+        replaceSource(std::move(source));
         m_state = DeviceState::Streaming;
         ++m_reconnections;
         return true;
@@ -59,6 +59,21 @@ bool ReconnectingSource::tryReconnect()
         m_state = DeviceState::Lost;
         return false;
     }
+}
+
+void ReconnectingSource::replaceSource(std::unique_ptr<BlockSource> source)
+{
+    const std::lock_guard lock(m_countersMutex);
+    if (m_source) m_pastCounters += m_source->decoderCounters();
+    m_source = std::move(source);
+}
+
+protocol::DecoderCounters ReconnectingSource::decoderCounters() const
+{
+    const std::lock_guard lock(m_countersMutex);
+    auto sum = m_pastCounters;
+    if (m_source) sum += m_source->decoderCounters();
+    return sum;
 }
 
 ReadStatus ReconnectingSource::readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout)
@@ -76,7 +91,7 @@ ReadStatus ReconnectingSource::readBlock(core::SampleBlock& out, std::chrono::mi
     const ReadStatus status = m_source->readBlock(out, timeout);
     if (status == ReadStatus::Failed) {
         m_error = m_source->lastError();
-        m_source.reset();
+        replaceSource(nullptr);
         m_state = DeviceState::Lost;
         m_lostAt = std::chrono::steady_clock::now();
         m_nextRetry = m_lostAt + m_retryInterval;

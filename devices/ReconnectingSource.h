@@ -18,6 +18,7 @@
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 
@@ -40,12 +41,16 @@ public:
     double nominalSampleRate_hz() const override { return m_rate_hz; }
     ReadStatus readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout) override;
     std::string lastError() const override { return m_error; }
+    // Summed over every connection so far.
+    protocol::DecoderCounters decoderCounters() const override;
 
     DeviceState state() const { return m_state; }  // any thread
     std::uint64_t reconnections() const { return m_reconnections; }
 
 private:
     bool tryReconnect();
+
+    void replaceSource(std::unique_ptr<BlockSource> source);
 
     Opener m_opener;
     std::chrono::milliseconds m_retryInterval;
@@ -59,9 +64,11 @@ private:
     std::chrono::steady_clock::time_point m_start;
     std::chrono::steady_clock::time_point m_lostAt;
     std::chrono::steady_clock::time_point m_nextRetry;
-    std::uint64_t m_endIndex = 0;     // one past the last sample delivered
-    double m_timeOffset_s = 0.0;      // added to the current connection's times
-    std::uint64_t m_indexOffset = 0;  // added to its sample indices
+    std::uint64_t m_endIndex = 0;              // one past the last sample delivered
+    double m_timeOffset_s = 0.0;               // added to the current connection's times
+    std::uint64_t m_indexOffset = 0;           // added to its sample indices
+    mutable std::mutex m_countersMutex;        // guards m_source's replacement and the sum below
+    protocol::DecoderCounters m_pastCounters;  // of the connections closed so far
 };
 
 // An opener for a serial device: by USB serial number when given (searching

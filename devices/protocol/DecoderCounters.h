@@ -14,6 +14,19 @@ struct DecoderCounters {
     std::uint64_t malformedPayloads = 0;  // CRC fine, payload not (a firmware bug)
     std::uint64_t linesSkipped = 0;       // text lines that did not parse
     std::uint64_t samplesLost = 0;        // from gaps in the sequence numbers
+
+    // Sums counts over several connections to one device.
+    DecoderCounters& operator+=(const DecoderCounters& other)
+    {
+        bytes += other.bytes;
+        frames += other.frames;
+        crcErrors += other.crcErrors;
+        resyncs += other.resyncs;
+        malformedPayloads += other.malformedPayloads;
+        linesSkipped += other.linesSkipped;
+        samplesLost += other.samplesLost;
+        return *this;
+    }
 };
 
 }  // namespace tactiscope::devices::protocol

@@ -32,8 +32,9 @@ std::string linkPath(const std::string& name)
 
 std::unique_ptr<PortSource> connect(const std::string& link, WireProtocol protocol, std::optional<double> rate = {})
 {
-    return std::make_unique<PortSource>(std::make_unique<PosixSerialTransport>(link, 921600),
-                                        devices::PortSourceOptions{protocol, rate, std::chrono::milliseconds(4000)});
+    return std::make_unique<PortSource>(
+        std::make_unique<PosixSerialTransport>(link, 921600),
+        devices::PortSourceOptions{protocol, rate, std::chrono::milliseconds(4000), std::nullopt});
 }
 
 // Reads until `samples` samples per channel arrived (or the source fails).
@@ -84,8 +85,8 @@ TEST(EmulatorPort, BinaryHandshakeAndStreamingGiveTheScenariosSamples)
         index += block.sampleCount();
     }
     EXPECT_GE(index, 600u);
-    EXPECT_EQ(source->counters().crcErrors, 0u);
-    EXPECT_EQ(source->counters().samplesLost, 0u);
+    EXPECT_EQ(source->decoderCounters().crcErrors, 0u);
+    EXPECT_EQ(source->decoderCounters().samplesLost, 0u);
 
     // The newest block has just arrived, so its end on the host clock lies
     // shortly before now (never after: the transport only adds delay).
@@ -106,7 +107,7 @@ TEST(EmulatorPort, TextProtocolWithAGivenRate)
     const auto blocks = readSamples(*source, 200);
     ASSERT_FALSE(blocks.empty());
     EXPECT_DOUBLE_EQ(blocks[0].dt_s(), 0.002);
-    EXPECT_EQ(source->counters().linesSkipped, 0u);
+    EXPECT_EQ(source->decoderCounters().linesSkipped, 0u);
 }
 
 TEST(EmulatorPort, InjectedGarbageIsCountedAndNoGoodFrameIsLost)
@@ -125,7 +126,7 @@ TEST(EmulatorPort, InjectedGarbageIsCountedAndNoGoodFrameIsLost)
         if (status == ReadStatus::Block) received += block.sampleCount();
     }
     const auto sent = emulator.stats();
-    const auto seen = source->counters();
+    const auto seen = source->decoderCounters();
     EXPECT_GT(sent.corruptedFrames, 10u);
     EXPECT_GT(sent.garbageBursts, 10u);
     EXPECT_EQ(sent.droppedFrames, 0u);
@@ -173,7 +174,7 @@ TEST(EmulatorPort, ClearErrorsForMissingBusyAndSilentPorts)
     // The emulator was never started: nothing answers the handshake.
     try {
         PortSource silent(std::make_unique<PosixSerialTransport>(linkPath("busy"), 9600),
-                          {WireProtocol::Binary, std::nullopt, std::chrono::milliseconds(300)});
+                          {WireProtocol::Binary, std::nullopt, std::chrono::milliseconds(300), std::nullopt});
         FAIL();
     } catch (const TransportError& e) {
         EXPECT_NE(std::string(e.what()).find("no TSP/1 frames within 300 ms"), std::string::npos) << e.what();

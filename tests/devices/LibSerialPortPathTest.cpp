@@ -46,8 +46,7 @@ TEST(LibSerialPortPath, HandshakeAndStreamingThroughLibserialport)
     const std::string device = devicePath(link);
     ASSERT_EQ(device.rfind("/dev/pts/", 0), 0u);
 
-    PortSource source(std::make_unique<LibSerialPortTransport>(device, 921600),
-                      devices::PortSourceOptions{WireProtocol::Binary, std::nullopt, std::chrono::milliseconds(4000)});
+    PortSource source(std::make_unique<LibSerialPortTransport>(device, 921600), devices::PortSourceOptions{});
     ASSERT_EQ(source.channels().size(), 2u);
     ASSERT_TRUE(source.deviceInfo().has_value());
     EXPECT_EQ(source.deviceInfo()->serialNumber, "EMU-4");
@@ -73,8 +72,8 @@ TEST(LibSerialPortPath, HandshakeAndStreamingThroughLibserialport)
         index += block.sampleCount();
     }
     EXPECT_GE(index, kSamples);
-    EXPECT_EQ(source.counters().crcErrors, 0u);
-    EXPECT_EQ(source.counters().samplesLost, 0u);
+    EXPECT_EQ(source.decoderCounters().crcErrors, 0u);
+    EXPECT_EQ(source.decoderCounters().samplesLost, 0u);
 }
 
 TEST(LibSerialPortPath, TheFarEndHangingUpIsReportedAsADisconnect)
@@ -82,8 +81,7 @@ TEST(LibSerialPortPath, TheFarEndHangingUpIsReportedAsADisconnect)
     const std::string link = linkPath("hangup");
     ProbeEmulator emulator({link, WireProtocol::Binary, "panel-scan", 1000.0, std::nullopt, 0.3, 0.0, 10, 1});
     emulator.start();
-    PortSource source(std::make_unique<LibSerialPortTransport>(devicePath(link), 921600),
-                      devices::PortSourceOptions{WireProtocol::Binary, std::nullopt, std::chrono::milliseconds(4000)});
+    PortSource source(std::make_unique<LibSerialPortTransport>(devicePath(link), 921600), devices::PortSourceOptions{});
     ReadStatus status = ReadStatus::Timeout;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
     while (status != ReadStatus::Failed && std::chrono::steady_clock::now() < deadline) {

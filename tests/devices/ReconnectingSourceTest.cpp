@@ -43,7 +43,8 @@ TEST(ReconnectingSource, ContinuesAfterUnplugAndReplugWithTheGapMarked)
     auto first = std::make_unique<emulator::ProbeEmulator>(probeAt(link, 0.5, 1));
     first->start();
     auto source = std::make_unique<ReconnectingSource>(
-        serialOpener(link, "", 921600, {WireProtocol::Binary, std::nullopt, std::chrono::milliseconds(2000)}),
+        serialOpener(link, "", 921600,
+                     {WireProtocol::Binary, std::nullopt, std::chrono::milliseconds(2000), std::nullopt}),
         std::chrono::milliseconds(100));
     auto* reconnecting = source.get();
     Acquisition acquisition(std::move(source));
@@ -73,7 +74,7 @@ TEST(ReconnectingSource, ContinuesAfterUnplugAndReplugWithTheGapMarked)
 
 TEST(ReconnectingSource, TheFirstConnectionMustSucceed)
 {
-    EXPECT_ANY_THROW(
-        ReconnectingSource(serialOpener("/dev/nonexistent-tactiscope", "", 115200,
-                                        {WireProtocol::Binary, std::nullopt, std::chrono::milliseconds(200)})));
+    EXPECT_ANY_THROW(ReconnectingSource(
+        serialOpener("/dev/nonexistent-tactiscope", "", 115200,
+                     {WireProtocol::Binary, std::nullopt, std::chrono::milliseconds(200), std::nullopt})));
 }
