@@ -8,6 +8,7 @@
 #include "EmulateCommand.h"
 #include "ModelCommand.h"
 #include "PortsCommand.h"
+#include "RecordCommand.h"
 #include "SimulateCommand.h"
 #include "core/Version.h"
 
@@ -31,6 +32,7 @@ constexpr std::array kCommands{
     Command{"emulate", "A simulated probe behind a pseudo-terminal (try the serial path).", runEmulate},
     Command{"model", "What the sensor model gives for a profile (JSON).", runModel},
     Command{"ports", "List serial ports and HID devices.", runPorts},
+    Command{"record", "Record a probe on a serial port into a session store.", runRecord},
     Command{"simulate", "Write a simulated recording as CSV.", runSimulate},
 };
 

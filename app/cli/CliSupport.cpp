@@ -3,9 +3,32 @@
 
 #include <QTextStream>
 
+#include <atomic>
 #include <cmath>
+#include <csignal>
 
 namespace tactiscope::cli {
+namespace {
+
+std::atomic<bool> g_stopRequested = false;
+
+extern "C" void onStopSignal(int)
+{
+    g_stopRequested = true;
+}
+
+}  // namespace
+
+void installStopSignals()
+{
+    std::signal(SIGINT, onStopSignal);
+    std::signal(SIGTERM, onStopSignal);
+}
+
+bool stopRequested()
+{
+    return g_stopRequested;
+}
 
 void printError(const QString& message)
 {

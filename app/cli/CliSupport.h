@@ -31,6 +31,11 @@ QString commandUsage(const QCommandLineParser& parser, const QString& command);
 
 QString toQString(std::string_view text);
 
+// SIGINT and SIGTERM end long-running commands (emulate, record) cleanly:
+// after installStopSignals(), stopRequested() turns true on either.
+void installStopSignals();
+bool stopRequested();
+
 // A finite number, or nothing when `text` is not one.
 std::optional<double> parseNumber(const QString& text);
 

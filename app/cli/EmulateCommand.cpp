@@ -7,21 +7,10 @@
 
 #include <QTextStream>
 
-#include <atomic>
-#include <csignal>
+#include <cmath>
 #include <thread>
 
 namespace tactiscope::cli {
-namespace {
-
-std::atomic<bool> g_interrupted = false;
-
-extern "C" void onSignal(int)
-{
-    g_interrupted = true;
-}
-
-}  // namespace
 
 int runEmulate(const QStringList& arguments)
 {
@@ -99,15 +88,14 @@ int runEmulate(const QStringList& arguments)
         printError(QString::fromStdString(e.what()));
         return kExitFailure;
     }
-    std::signal(SIGINT, onSignal);
-    std::signal(SIGTERM, onSignal);
+    installStopSignals();
     QTextStream out(stdout);
     out << "Emulating " << QString::fromStdString(options.scenario) << " ("
         << (options.protocol == devices::WireProtocol::Text ? "text" : "TSP/1 binary") << ") at "
         << QString::fromStdString(options.linkPath) << " -> " << QString::fromStdString(emulator->ptyPath())
         << ". Ctrl-C to stop." << Qt::endl;
     emulator->start();
-    while (!g_interrupted && !emulator->finished()) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    while (!stopRequested() && !emulator->finished()) std::this_thread::sleep_for(std::chrono::milliseconds(50));
     emulator->stop();
     const auto s = emulator->stats();
     out << "Sent " << s.framesSent << " frames (" << s.samplesSent << " intact samples per channel), "

@@ -1,0 +1,149 @@
+// `tactiscope-cli record` against `tactiscope-cli emulate`, both as real
+// processes over a real pseudo-terminal, into a real store: the samples in
+// the store are exactly those the emulator sent, Ctrl-C ends a recording
+// cleanly, and bad input is refused with exit code 2.
+#include "core/SampleBlock.h"
+#include "core/storage/SessionStore.h"
+#include "devices/simulator/ScenarioCatalog.h"
+#include "support/CliRunner.h"
+
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+using namespace tactiscope;
+using tactiscope::testing::runCli;
+
+namespace {
+
+// Starts `tactiscope-cli emulate` and waits for its link.
+bool startEmulator(QProcess& emulator, const QString& link, const QStringList& extra = {})
+{
+    emulator.start(QStringLiteral(TACTISCOPE_CLI), QStringList{"emulate", "--link", link} + extra);
+    if (!emulator.waitForStarted()) return false;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    while (!std::filesystem::is_symlink(link.toStdString()) && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    return std::filesystem::is_symlink(link.toStdString());
+}
+
+void stopEmulator(QProcess& emulator)
+{
+    emulator.terminate();  // SIGTERM: the emulator's clean stop
+    emulator.waitForFinished(5000);
+}
+
+std::int64_t sessionIdIn(const QString& summary)
+{
+    const auto match = QRegularExpression(QStringLiteral("^Recorded session (\\d+): ")).match(summary);
+    return match.hasMatch() ? match.captured(1).toLongLong() : -1;
+}
+
+}  // namespace
+
+TEST(RecordCli, TheStoreHoldsExactlyTheSamplesTheEmulatorSent)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("probe");
+    const QString db = dir.filePath("line3.tactiscope");
+    QProcess emulator;
+    ASSERT_TRUE(startEmulator(emulator, link, {"--scenario", "panel-scan", "--rate", "1000", "--seed", "9"}));
+    const auto result = runCli({"record", "--port", link, "--seconds", "1.5", "--db", db, "--subject", "door-17",
+                                "--operator", "Ada", "--mode", "panel-scan"});
+    stopEmulator(emulator);
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    EXPECT_TRUE(result.out.endsWith(QStringLiteral("\n")));
+    EXPECT_EQ(result.out.count(QLatin1Char('\n')), 1) << result.out.toStdString();  // one line
+    EXPECT_TRUE(result.out.contains(QStringLiteral(" 0 lost, 0 CRC errors"))) << result.out.toStdString();
+    const std::int64_t id = sessionIdIn(result.out);
+    ASSERT_GT(id, 0) << result.out.toStdString();
+
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto session = store.session(id);
+    ASSERT_TRUE(session.has_value());
+    EXPECT_EQ(session->status, "complete");
+    EXPECT_EQ(session->metadata.mode, "panel-scan");
+    EXPECT_EQ(session->metadata.subject, "door-17");
+    EXPECT_EQ(session->metadata.operatorName, "Ada");
+    EXPECT_EQ(session->metadata.deviceSerial, "EMU-9");
+    const auto channels = store.channels(id);
+    ASSERT_EQ(channels.size(), 2u);
+    EXPECT_DOUBLE_EQ(channels[0].sampleRate_hz, 1000.0);
+    EXPECT_TRUE(store.gaps(id).empty());
+
+    // About 1.5 s at 1000 Hz (the handshake may add a little).
+    const std::uint64_t n = store.sampleCount(id);
+    EXPECT_GE(n, 1400u);
+    EXPECT_LE(n, 2500u);
+    EXPECT_NE(result.out.indexOf(QStringLiteral(": %1 samples per channel").arg(n)), -1);
+    // The emulator's samples are the scenario's, sent as binary32.
+    auto scenario = devices::simulator::makeScenario("panel-scan", 9, 1000.0);
+    core::SampleBlock expected(2, n, 0.0, 0.001);
+    scenario->generate(expected);
+    for (std::size_t c = 0; c < 2; ++c) {
+        const auto stored = store.readChannel(id, c, 0, n);
+        ASSERT_EQ(stored.size(), n);
+        for (std::uint64_t i = 0; i < n; ++i)
+            ASSERT_EQ(stored[i], static_cast<double>(static_cast<float>(expected.value(c, i)))) << c << ", " << i;
+    }
+}
+
+TEST(RecordCli, CtrlCEndsTheRecordingAndKeepsTheData)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("probe");
+    const QString db = dir.filePath("s.tactiscope");
+    QProcess emulator;
+    ASSERT_TRUE(startEmulator(emulator, link, {"--scenario", "palpation", "--rate", "500"}));
+    QProcess record;
+    record.start(QStringLiteral(TACTISCOPE_CLI), {"record", "--port", link, "--db", db, "--mode", "palpation"});
+    ASSERT_TRUE(record.waitForStarted());
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    ::kill(static_cast<pid_t>(record.processId()), SIGINT);
+    ASSERT_TRUE(record.waitForFinished(10000));
+    stopEmulator(emulator);
+    EXPECT_EQ(record.exitStatus(), QProcess::NormalExit);
+    EXPECT_EQ(record.exitCode(), 0) << record.readAllStandardError().toStdString();
+    const QString out = QString::fromUtf8(record.readAllStandardOutput());
+    const std::int64_t id = sessionIdIn(out);
+    ASSERT_GT(id, 0) << out.toStdString();
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    EXPECT_EQ(store.session(id)->status, "complete");
+    EXPECT_GT(store.sampleCount(id), 100u);
+    EXPECT_EQ(store.channels(id).size(), 3u);
+}
+
+TEST(RecordCli, BadInputExitsWithCodeTwoAndAMissingPortWithOne)
+{
+    QTemporaryDir dir;
+    const QString notes = dir.filePath("notes.txt");
+    std::ofstream(notes.toStdString()) << "not a store\n";
+    QProcess emulator;
+    const QString link = dir.filePath("probe");
+    ASSERT_TRUE(startEmulator(emulator, link));
+    const std::vector<std::pair<QStringList, QString>> cases{
+        {{"record", "--db", "x"}, "--port PATH is required"},
+        {{"record", "--port", "/dev/ttyX"}, "--db FILE is required"},
+        {{"record", "--port", "/dev/ttyX", "--db", "x", "--mode", "sculpture"}, "--mode must be"},
+        {{"record", "--port", "/dev/ttyX", "--db", "x", "--seconds", "-1"}, "--seconds must be a positive number"},
+        {{"record", "--port", "/dev/ttyX", "--db", "x", "--baud", "fast"}, "--baud must be"},
+        {{"record", "--port", link, "--db", notes, "--seconds", "1"}, "is not a Tactiscope session store"},
+    };
+    for (const auto& [arguments, message] : cases) {
+        const auto result = runCli(arguments);
+        EXPECT_EQ(result.exitCode, 2) << arguments.join(' ').toStdString();
+        EXPECT_TRUE(result.err.contains(message)) << result.err.toStdString();
+    }
+    stopEmulator(emulator);
+    const auto missing =
+        runCli({"record", "--port", dir.filePath("no-such-port"), "--db", dir.filePath("s.tactiscope")});
+    EXPECT_EQ(missing.exitCode, 1);
+    EXPECT_TRUE(missing.err.contains(QStringLiteral("no-such-port"))) << missing.err.toStdString();
+}
