@@ -7,11 +7,12 @@
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/transport/PosixSerialTransport.h"
 
+#include "support/TempPath.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <thread>
-#include <unistd.h>
 
 using namespace tactiscope;
 using devices::PortSource;
@@ -22,13 +23,9 @@ using devices::emulator::ProbeEmulator;
 using devices::transport::PosixSerialTransport;
 using devices::transport::TransportError;
 
-namespace {
+using tactiscope::testing::uniqueTempPath;
 
-std::string linkPath(const std::string& name)
-{
-    return (std::filesystem::temp_directory_path() / ("tactiscope-test-" + std::to_string(::getpid()) + "-" + name))
-        .string();
-}
+namespace {
 
 std::unique_ptr<PortSource> connect(const std::string& link, WireProtocol protocol, std::optional<double> rate = {})
 {
@@ -59,7 +56,7 @@ std::vector<core::SampleBlock> readSamples(PortSource& source, std::size_t sampl
 
 TEST(EmulatorPort, BinaryHandshakeAndStreamingGiveTheScenariosSamples)
 {
-    const std::string link = linkPath("binary");
+    const std::string link = uniqueTempPath("binary");
     ProbeEmulator emulator({link, WireProtocol::Binary, "panel-scan", 2000.0, std::nullopt, std::nullopt, 0.0, 10, 3});
     emulator.start();
     auto source = connect(link, WireProtocol::Binary);
@@ -98,7 +95,7 @@ TEST(EmulatorPort, BinaryHandshakeAndStreamingGiveTheScenariosSamples)
 
 TEST(EmulatorPort, TextProtocolWithAGivenRate)
 {
-    const std::string link = linkPath("text");
+    const std::string link = uniqueTempPath("text");
     ProbeEmulator emulator({link, WireProtocol::Text, "palpation", 500.0, std::nullopt, std::nullopt, 0.0, 5, 1});
     emulator.start();
     auto source = connect(link, WireProtocol::Text, 500.0);
@@ -112,7 +109,7 @@ TEST(EmulatorPort, TextProtocolWithAGivenRate)
 
 TEST(EmulatorPort, InjectedGarbageIsCountedAndNoGoodFrameIsLost)
 {
-    const std::string link = linkPath("garbage");
+    const std::string link = uniqueTempPath("garbage");
     ProbeEmulator emulator({link, WireProtocol::Binary, "panel-scan", 4000.0, 4u, 1.0, 0.3, 8, 5});
     emulator.start();
     auto source = connect(link, WireProtocol::Binary);
@@ -138,7 +135,7 @@ TEST(EmulatorPort, InjectedGarbageIsCountedAndNoGoodFrameIsLost)
 
 TEST(EmulatorPort, TheFarEndHangingUpIsReportedAsADisconnect)
 {
-    const std::string link = linkPath("hangup");
+    const std::string link = uniqueTempPath("hangup");
     ProbeEmulator emulator({link, WireProtocol::Binary, "panel-scan", 1000.0, std::nullopt, 0.3, 0.0, 10, 1});
     emulator.start();
     auto source = connect(link, WireProtocol::Binary);
@@ -160,7 +157,7 @@ TEST(EmulatorPort, ClearErrorsForMissingBusyAndSilentPorts)
     } catch (const TransportError& e) {
         EXPECT_NE(std::string(e.what()).find("No such file"), std::string::npos) << e.what();
     }
-    const std::string link = linkPath("busy");
+    const std::string link = uniqueTempPath("busy");
     ProbeEmulator emulator({link, WireProtocol::Binary, "panel-scan", 500.0, std::nullopt, std::nullopt, 0.0, 10, 1});
     {
         PosixSerialTransport first(link, 115200);
@@ -173,7 +170,7 @@ TEST(EmulatorPort, ClearErrorsForMissingBusyAndSilentPorts)
     }
     // The emulator was never started: nothing answers the handshake.
     try {
-        PortSource silent(std::make_unique<PosixSerialTransport>(linkPath("busy"), 9600),
+        PortSource silent(std::make_unique<PosixSerialTransport>(uniqueTempPath("busy"), 9600),
                           {WireProtocol::Binary, std::nullopt, std::chrono::milliseconds(300), std::nullopt});
         FAIL();
     } catch (const TransportError& e) {

@@ -9,10 +9,11 @@
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/transport/LibSerialPortTransport.h"
 
+#include "support/TempPath.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <unistd.h>
 
 using namespace tactiscope;
 using devices::PortSource;
@@ -22,13 +23,9 @@ using devices::emulator::ProbeEmulator;
 using devices::transport::LibSerialPortTransport;
 using devices::transport::TransportError;
 
-namespace {
+using tactiscope::testing::uniqueTempPath;
 
-std::string linkPath(const std::string& name)
-{
-    return (std::filesystem::temp_directory_path() / ("tactiscope-sp-test-" + std::to_string(::getpid()) + "-" + name))
-        .string();
-}
+namespace {
 
 // libserialport only accepts /dev/ names, so it gets the pty behind the link.
 std::string devicePath(const std::string& link)
@@ -40,7 +37,7 @@ std::string devicePath(const std::string& link)
 
 TEST(LibSerialPortPath, HandshakeAndStreamingThroughLibserialport)
 {
-    const std::string link = linkPath("binary");
+    const std::string link = uniqueTempPath("binary");
     ProbeEmulator emulator({link, WireProtocol::Binary, "panel-scan", 2000.0, std::nullopt, std::nullopt, 0.0, 10, 4});
     emulator.start();
     const std::string device = devicePath(link);
@@ -78,7 +75,7 @@ TEST(LibSerialPortPath, HandshakeAndStreamingThroughLibserialport)
 
 TEST(LibSerialPortPath, TheFarEndHangingUpIsReportedAsADisconnect)
 {
-    const std::string link = linkPath("hangup");
+    const std::string link = uniqueTempPath("hangup");
     ProbeEmulator emulator({link, WireProtocol::Binary, "panel-scan", 1000.0, std::nullopt, 0.3, 0.0, 10, 1});
     emulator.start();
     PortSource source(std::make_unique<LibSerialPortTransport>(devicePath(link), 921600), devices::PortSourceOptions{});

@@ -7,11 +7,12 @@
 #include "devices/Acquisition.h"
 #include "devices/emulator/ProbeEmulator.h"
 
+#include "support/TempPath.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <thread>
-#include <unistd.h>
 
 using namespace tactiscope;
 using namespace tactiscope::devices;
@@ -38,8 +39,7 @@ bool within(std::chrono::milliseconds limit, Predicate done)
 
 TEST(ReconnectingSource, ContinuesAfterUnplugAndReplugWithTheGapMarked)
 {
-    const std::string link =
-        (std::filesystem::temp_directory_path() / ("tactiscope-replug-" + std::to_string(::getpid()))).string();
+    const std::string link = tactiscope::testing::uniqueTempPath("replug");
     auto first = std::make_unique<emulator::ProbeEmulator>(probeAt(link, 0.5, 1));
     first->start();
     auto source = std::make_unique<ReconnectingSource>(

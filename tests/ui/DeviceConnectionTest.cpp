@@ -5,6 +5,7 @@
 #include "devices/DeviceDiscovery.h"
 #include "devices/emulator/ProbeEmulator.h"
 #include "support/Screenshot.h"
+#include "support/TempPath.h"
 #include "support/WaitFor.h"
 #include "ui/ConnectDialog.h"
 #include "ui/MainWindow.h"
@@ -17,7 +18,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <unistd.h>
 
 using namespace tactiscope;
 using devices::WireProtocol;
@@ -25,13 +25,9 @@ using devices::emulator::ProbeEmulator;
 using tactiscope::testing::saveScreenshot;
 using tactiscope::testing::waitFor;
 
-namespace {
+using tactiscope::testing::uniqueTempPath;
 
-std::string linkPath(const std::string& name)
-{
-    return (std::filesystem::temp_directory_path() / ("tactiscope-ui-test-" + std::to_string(::getpid()) + "-" + name))
-        .string();
-}
+namespace {
 
 QString stateText(const ui::MainWindow& window)
 {
@@ -47,7 +43,7 @@ devices::ReconnectingSource::Opener serialOpener(const std::string& link)
 
 TEST(DeviceConnection, ConnectsToTheEmulatorWithoutBlockingTheWindow)
 {
-    const std::string link = linkPath("connect");
+    const std::string link = uniqueTempPath("connect");
     ProbeEmulator emulator({link, WireProtocol::Binary, "palpation", 1000.0, std::nullopt, std::nullopt, 0.0, 10, 2});
     emulator.start();
     ui::MainWindow window;
@@ -85,7 +81,7 @@ TEST(DeviceConnection, AFailedConnectionIsShownNotThrown)
 
 TEST(DeviceConnection, AnUnplugIsShownAsLostThenStreamingAgain)
 {
-    const std::string link = linkPath("unplug");
+    const std::string link = uniqueTempPath("unplug");
     const devices::emulator::EmulatorOptions options{
         link, WireProtocol::Binary, "panel-scan", 500.0, std::nullopt, std::nullopt, 0.0, 10, 3};
     auto emulator = std::make_unique<ProbeEmulator>(options);

@@ -5,12 +5,13 @@
 
 #include "core/SampleBlock.h"
 
+#include "support/TempPath.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <thread>
-#include <unistd.h>
 
 using namespace tactiscope::core;
 using namespace tactiscope::core::storage;
@@ -21,10 +22,8 @@ class RecorderTest : public ::testing::Test {
 protected:
     void SetUp() override
     {
-        m_path = (std::filesystem::temp_directory_path() /
-                  ("tactiscope-recorder-" + std::to_string(::getpid()) + "-" +
-                   ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".tactiscope"))
-                     .string();
+        m_path = tactiscope::testing::uniqueTempPath(
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".tactiscope");
         std::filesystem::remove(m_path);
     }
     void TearDown() override

@@ -7,13 +7,14 @@
 #include "core/storage/ChunkCodec.h"
 #include "core/storage/Schema.h"
 
+#include "support/TempPath.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 using namespace tactiscope::core;
 using namespace tactiscope::core::storage;
@@ -24,9 +25,7 @@ class SessionStoreTest : public ::testing::Test {
 protected:
     void SetUp() override
     {
-        m_dir =
-            std::filesystem::temp_directory_path() / ("tactiscope-store-" + std::to_string(::getpid()) + "-" +
-                                                      ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        m_dir = tactiscope::testing::uniqueTempPath(::testing::UnitTest::GetInstance()->current_test_info()->name());
         std::filesystem::remove_all(m_dir);
         std::filesystem::create_directories(m_dir);
     }
