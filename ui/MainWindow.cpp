@@ -139,8 +139,7 @@ void MainWindow::connectDevice(const QString& label, devices::ReconnectingSource
     m_connectingLabel = label;
     m_deviceLabel->setText(label);
     m_stateLabel->setText(tr("Connecting…"));
-    // Assigning joins a previous attempt still in its handshake (at most its timeout).
-    m_connector = std::jthread([this, attempt, opener = std::move(opener)] {
+    m_connectors.emplace_back([this, attempt, opener = std::move(opener)] {
         auto result = std::make_shared<std::unique_ptr<devices::BlockSource>>();
         QString error;
         try {

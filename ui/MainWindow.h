@@ -17,6 +17,7 @@
 #include <memory>
 #include <optional>
 #include <thread>
+#include <vector>
 
 class QLabel;
 
@@ -64,7 +65,9 @@ private:
     std::unique_ptr<devices::Acquisition> m_acquisition;
     std::optional<QString> m_connectingLabel;
     std::uint64_t m_connectAttempt = 0;  // a newer attempt or a disconnect drops older results
-    std::jthread m_connector;            // declared last: joined before the members it reports to go
+    // One per connect attempt, so a new attempt never waits for an old
+    // handshake; declared last: joined before the members they report to go.
+    std::vector<std::jthread> m_connectors;
 };
 
 }  // namespace tactiscope::ui

@@ -105,6 +105,31 @@ TEST(DeviceConnection, AnUnplugIsShownAsLostThenStreamingAgain)
     EXPECT_TRUE(waitFor([&] { return stateText(window) == QStringLiteral("Streaming"); }, 8000));
 }
 
+TEST(DeviceConnection, ANewerConnectSupersedesOneStillInItsHandshake)
+{
+    // A port where nothing answers: its handshake runs until the timeout.
+    const std::string silentLink = uniqueTempPath("silent");
+    ProbeEmulator silent(
+        {silentLink, WireProtocol::Binary, "panel-scan", 500.0, std::nullopt, std::nullopt, 0.0, 10, 1});
+    const std::string link = uniqueTempPath("answering");
+    ProbeEmulator answering({link, WireProtocol::Binary, "palpation", 500.0, std::nullopt, std::nullopt, 0.0, 10, 6});
+    answering.start();
+
+    ui::MainWindow window;
+    window.show();
+    window.connectDevice(QString::fromStdString(silentLink), serialOpener(silentLink));
+    window.connectDevice(QString::fromStdString(link), serialOpener(link));
+    ASSERT_TRUE(waitFor([&] { return window.isConnected(); }, 6000));
+    EXPECT_TRUE(window.windowTitle().contains(QStringLiteral("EMU-6")));
+    // The silent port's attempt ends in a timeout later; that must neither
+    // replace the connection nor raise an error.
+    tactiscope::testing::runEventLoopFor(5000);
+    EXPECT_TRUE(window.isConnected());
+    EXPECT_TRUE(window.windowTitle().contains(QStringLiteral("EMU-6")));
+    EXPECT_EQ(window.findChild<QMessageBox*>(QStringLiteral("connectErrorBox")), nullptr);
+    EXPECT_EQ(stateText(window), QStringLiteral("Streaming"));
+}
+
 TEST(ConnectDialog, ReturnsTheChosenPortAndLinkSettings)
 {
     ui::ConnectDialog dialog;
