@@ -7,6 +7,7 @@
 #include "devices/Acquisition.h"
 #include "devices/emulator/ProbeEmulator.h"
 
+#include "support/Eventually.h"
 #include "support/TempPath.h"
 
 #include <gtest/gtest.h>
@@ -22,17 +23,6 @@ namespace {
 emulator::EmulatorOptions probeAt(const std::string& link, std::optional<double> seconds, std::uint64_t seed)
 {
     return {link, WireProtocol::Binary, "panel-scan", 1000.0, std::nullopt, seconds, 0.0, 10, seed};
-}
-
-template <typename Predicate>
-bool within(std::chrono::milliseconds limit, Predicate done)
-{
-    const auto deadline = std::chrono::steady_clock::now() + limit;
-    while (!done()) {
-        if (std::chrono::steady_clock::now() > deadline) return false;
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    return true;
 }
 
 }  // namespace
@@ -51,7 +41,7 @@ TEST(ReconnectingSource, ContinuesAfterUnplugAndReplugWithTheGapMarked)
     acquisition.start();
 
     // The first probe streams 0.5 s, then hangs up: Lost.
-    ASSERT_TRUE(within(std::chrono::seconds(10), [&] { return reconnecting->state() == DeviceState::Lost; }));
+    ASSERT_TRUE(tactiscope::testing::eventually([&] { return reconnecting->state() == DeviceState::Lost; }));
     const auto before = acquisition.stats();
     EXPECT_GE(before.samples, 400u);
     EXPECT_EQ(before.state, AcquisitionState::Streaming);  // the acquisition waits, it does not fail
@@ -61,7 +51,7 @@ TEST(ReconnectingSource, ContinuesAfterUnplugAndReplugWithTheGapMarked)
     std::this_thread::sleep_for(std::chrono::milliseconds(400));
     emulator::ProbeEmulator second(probeAt(link, std::nullopt, 2));
     second.start();
-    ASSERT_TRUE(within(std::chrono::seconds(10), [&] {
+    ASSERT_TRUE(tactiscope::testing::eventually([&] {
         return reconnecting->state() == DeviceState::Streaming && acquisition.stats().samples > before.samples + 200;
     }));
     const auto after = acquisition.stats();

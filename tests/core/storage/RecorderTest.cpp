@@ -5,16 +5,17 @@
 
 #include "core/SampleBlock.h"
 
+#include "support/Eventually.h"
 #include "support/TempPath.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
-#include <thread>
 
 using namespace tactiscope::core;
 using namespace tactiscope::core::storage;
+using tactiscope::testing::eventually;
 
 namespace {
 
@@ -51,17 +52,6 @@ SampleBlock deviceBlock(std::uint64_t first, std::size_t count)
         for (std::size_t s = 0; s < count; ++s)
             block.channel(c)[s] = static_cast<double>(first + s) + static_cast<double>(c) / 2.0;
     return block;
-}
-
-template <typename Predicate>
-bool eventually(Predicate condition)
-{
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-    while (!condition()) {
-        if (std::chrono::steady_clock::now() > deadline) return false;
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    return true;
 }
 
 }  // namespace
