@@ -4,6 +4,7 @@
 
 #include "CliSupport.h"
 #include "core/storage/Recorder.h"
+#include "core/storage/RecorderLock.h"
 #include "devices/Acquisition.h"
 #include "devices/ReconnectingSource.h"
 #include "devices/transport/SerialPorts.h"
@@ -100,9 +101,11 @@ int runRecord(const QStringList& arguments)
     metadata.subject = parser.value(QStringLiteral("subject")).toStdString();
     metadata.operatorName = parser.value(QStringLiteral("operator")).toStdString();
 
-    // A store we may not write is bad input: say so before touching the device.
+    // A store we may not write (not ours, newer, being recorded into) is bad
+    // input: say so before touching the device.
     try {
         core::storage::SessionStore check(db);
+        core::storage::RecorderLock::acquire(db);  // released at once; taken again by the recorder
     } catch (const core::storage::StorageError& e) {
         printError(QString::fromStdString(e.what()));
         return kExitUsage;

@@ -68,6 +68,7 @@ public:
     void exec(std::string_view sql);
     Statement prepare(std::string_view sql) { return Statement(m_db, sql); }
     std::int64_t lastInsertId() const;
+    int changes() const;  // rows changed by the last INSERT, UPDATE or DELETE
     const std::string& path() const { return m_path; }
     Access access() const { return m_access; }
 

@@ -9,9 +9,11 @@ namespace tactiscope::core::storage {
 
 Recorder::Recorder(const std::string& storePath, const SessionMetadata& metadata,
                    std::vector<ChannelDescriptor> channels, double sampleRate_hz, std::uint64_t maxQueuedSamples)
-    : m_store(storePath),
+    : m_lock(RecorderLock::acquire(storePath)),
+      m_store(storePath),
       m_maxQueued(maxQueuedSamples)
 {
+    m_store.markCrashedSessionsInterrupted();
     m_session = m_store.beginSession(metadata, channels, sampleRate_hz);
     // From here on only the writer thread touches m_store, until finish().
     m_writer = std::jthread([this](const std::stop_token& stop) { run(stop); });

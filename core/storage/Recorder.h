@@ -13,6 +13,7 @@
 #pragma once
 
 #include "core/BlockSink.h"
+#include "core/storage/RecorderLock.h"
 #include "core/storage/SessionStore.h"
 
 #include <chrono>
@@ -35,7 +36,9 @@ class Recorder final : public BlockSink {
 public:
     static constexpr std::chrono::milliseconds kCommitInterval{250};
 
-    // Opens the store and begins the session; throws StorageError.
+    // Takes the store's RecorderLock (one recorder per store), marks sessions
+    // a crash left "recording" as interrupted, and begins the session.
+    // Throws StorageError, e.g. when another recorder holds the store.
     Recorder(const std::string& storePath, const SessionMetadata& metadata, std::vector<ChannelDescriptor> channels,
              double sampleRate_hz, std::uint64_t maxQueuedSamples);
     ~Recorder() override;  // finish(Interrupted) unless finished
@@ -54,6 +57,7 @@ private:
     void run(const std::stop_token& stop);
     void writeQueued(std::unique_lock<std::mutex>& lock);
 
+    RecorderLock m_lock;  // first: held before the store is touched, released last
     SessionStore m_store;
     std::int64_t m_session = 0;
     std::uint64_t m_maxQueued;

@@ -4,6 +4,7 @@
 #include "core/SampleBlock.h"
 #include "core/Version.h"
 #include "core/storage/ChunkCodec.h"
+#include "core/storage/RecorderLock.h"
 #include "core/storage/Schema.h"
 
 #include <chrono>
@@ -84,6 +85,16 @@ SessionStore::SessionStore(const std::string& path, Database::Access access)
     : m_db(path, access)
 {
     prepareSchema(m_db);
+    if (access == Database::Access::ReadWrite) {
+        if (const auto lock = RecorderLock::tryAcquire(path)) markCrashedSessionsInterrupted();
+    }
+}
+
+int SessionStore::markCrashedSessionsInterrupted()
+{
+    auto update = m_db.prepare("UPDATE sessions SET status = 'interrupted' WHERE status = 'recording'");
+    update.run();
+    return m_db.changes();
 }
 
 std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<const ChannelDescriptor> channels,

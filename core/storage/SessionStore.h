@@ -59,7 +59,9 @@ struct SampleGap {
 class SessionStore {
 public:
     // Opens or (read-write) creates the store; see prepareSchema() for the
-    // files it refuses. Throws StorageError.
+    // files it refuses. Read-write and with no recorder running (see
+    // RecorderLock), sessions a crash left "recording" become "interrupted",
+    // with every committed sample kept. Throws StorageError.
     SessionStore(const std::string& path, Database::Access access = Database::Access::ReadWrite);
 
     // Writing. Blocks are stored as they come; a block whose first sample
@@ -71,6 +73,9 @@ public:
     // recording, where no later block marks the gap). No-op when none are.
     void markLostUntil(std::int64_t session, std::uint64_t endIndex);
     void endSession(std::int64_t session, SessionStatus status);
+    // Marks every "recording" session "interrupted"; only for the holder of
+    // the RecorderLock, who knows no recording is live. Returns how many.
+    int markCrashedSessionsInterrupted();
 
     // Reading.
     std::vector<SessionSummary> sessions();  // newest first

@@ -3,6 +3,7 @@
 // the store are exactly those the emulator sent, Ctrl-C ends a recording
 // cleanly, and bad input is refused with exit code 2.
 #include "core/SampleBlock.h"
+#include "core/storage/Recorder.h"
 #include "core/storage/SessionStore.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "support/CliRunner.h"
@@ -120,6 +121,41 @@ TEST(RecordCli, CtrlCEndsTheRecordingAndKeepsTheData)
     EXPECT_EQ(store.channels(id).size(), 3u);
 }
 
+TEST(RecordCli, AKilledRecordingKeepsItsCommittedSamplesAndIsMarkedInterrupted)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("probe");
+    const QString db = dir.filePath("s.tactiscope");
+    QProcess emulator;
+    ASSERT_TRUE(startEmulator(emulator, link, {"--scenario", "panel-scan", "--rate", "1000", "--seed", "4"}));
+    QProcess record;
+    record.start(QStringLiteral(TACTISCOPE_CLI), {"record", "--port", link, "--db", db});
+    ASSERT_TRUE(record.waitForStarted());
+    std::this_thread::sleep_for(std::chrono::milliseconds(2000));
+    ::kill(static_cast<pid_t>(record.processId()), SIGKILL);  // no chance to clean up
+    ASSERT_TRUE(record.waitForFinished(5000));
+    stopEmulator(emulator);
+
+    core::storage::SessionStore store(db.toStdString());  // read-write: recovers
+    ASSERT_EQ(store.sessions().size(), 1u);
+    const auto session = store.sessions().front();
+    EXPECT_EQ(session.status, "interrupted");
+    auto check = store.database().prepare("PRAGMA integrity_check");
+    ASSERT_TRUE(check.step());
+    EXPECT_EQ(check.text(0), "ok");
+    // Commits come every 250 ms, so about 2 s of recording left more than
+    // half a second of samples, all of them the emulator's, in order.
+    const std::uint64_t n = store.sampleCount(session.id);
+    EXPECT_GT(n, 500u);
+    EXPECT_TRUE(store.gaps(session.id).empty());
+    auto scenario = devices::simulator::makeScenario("panel-scan", 4, 1000.0);
+    core::SampleBlock expected(2, n, 0.0, 0.001);
+    scenario->generate(expected);
+    const auto stored = store.readChannel(session.id, 0, 0, n);
+    for (std::uint64_t i = 0; i < n; ++i)
+        ASSERT_EQ(stored[i], static_cast<double>(static_cast<float>(expected.value(0, i)))) << i;
+}
+
 TEST(RecordCli, BadInputExitsWithCodeTwoAndAMissingPortWithOne)
 {
     QTemporaryDir dir;
@@ -140,6 +176,18 @@ TEST(RecordCli, BadInputExitsWithCodeTwoAndAMissingPortWithOne)
         const auto result = runCli(arguments);
         EXPECT_EQ(result.exitCode, 2) << arguments.join(' ').toStdString();
         EXPECT_TRUE(result.err.contains(message)) << result.err.toStdString();
+    }
+    {
+        // A store another recorder is writing into.
+        const QString busy = dir.filePath("busy.tactiscope");
+        core::storage::SessionMetadata metadata;
+        metadata.mode = "palpation";
+        core::storage::Recorder other(busy.toStdString(), metadata, {{"x", "m", core::ChannelKind::Position}}, 100.0,
+                                      1000);
+        const auto result = runCli({"record", "--port", link, "--db", busy, "--seconds", "1"});
+        EXPECT_EQ(result.exitCode, 2);
+        EXPECT_TRUE(result.err.contains(QStringLiteral("another Tactiscope is recording into")))
+            << result.err.toStdString();
     }
     stopEmulator(emulator);
     const auto missing =

@@ -29,7 +29,7 @@ protected:
     }
     void TearDown() override
     {
-        for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(m_path + suffix);
+        for (const char* suffix : {"", "-wal", "-shm", "-recorder.lock"}) std::filesystem::remove(m_path + suffix);
     }
 
     std::string m_path;
@@ -147,4 +147,40 @@ TEST_F(RecorderTest, AWriteErrorStopsRecordingAndKeepsWhatWasCommitted)
     SessionStore store(m_path, Database::Access::ReadOnly);
     EXPECT_EQ(store.session(id)->status, "interrupted");
     EXPECT_EQ(store.sampleCount(id), 100u);
+}
+
+TEST_F(RecorderTest, OneRecorderPerStoreAtATime)
+{
+    auto first = std::make_unique<Recorder>(m_path, palpation(), kChannels, 1000.0, 1000);
+    try {
+        Recorder second(m_path, palpation(), kChannels, 1000.0, 1000);
+        FAIL() << "two recorders share a store";
+    } catch (const StorageError& e) {
+        EXPECT_NE(std::string(e.what()).find("another Tactiscope is recording into"), std::string::npos) << e.what();
+    }
+    first.reset();  // finished: the store is free again
+    Recorder third(m_path, palpation(), kChannels, 1000.0, 1000);
+    EXPECT_EQ(third.sessionId(), 2);
+}
+
+TEST_F(RecorderTest, OpeningTheStoreLeavesALiveRecordingAloneAndMarksACrashedOneInterrupted)
+{
+    std::int64_t crashed = 0;
+    {
+        // A session begun without a recorder and never ended: what a killed
+        // process leaves behind.
+        SessionStore store(m_path);
+        crashed = store.beginSession(palpation(), kChannels, 1000.0);
+        store.appendBlocks(crashed, std::vector{deviceBlock(0, 100)});
+    }
+    Recorder live(m_path, palpation(), kChannels, 1000.0, 1000);  // recovers the crashed one
+    {
+        SessionStore reviewer(m_path);  // e.g. `sessions list` while recording
+        EXPECT_EQ(reviewer.session(crashed)->status, "interrupted");
+        EXPECT_EQ(reviewer.sampleCount(crashed), 100u);
+        EXPECT_EQ(reviewer.session(live.sessionId())->status, "recording");
+    }
+    live.finish(SessionStatus::Complete);
+    SessionStore after(m_path);
+    EXPECT_EQ(after.session(live.sessionId())->status, "complete");
 }
