@@ -90,6 +90,17 @@ SessionStore::SessionStore(const std::string& path, Database::Access access)
     }
 }
 
+void SessionStore::deleteSession(std::int64_t session)
+{
+    const auto summary = this->session(session);
+    if (!summary) throw StorageError("there is no session " + std::to_string(session));
+    // Opening read-write marked crashed recordings interrupted, so one still
+    // "recording" has a live recorder.
+    if (summary->status == toString(SessionStatus::Recording))
+        throw StorageError("session " + std::to_string(session) + " is being recorded; stop the recording first");
+    m_db.prepare("DELETE FROM sessions WHERE id = ?").bind(1, session).run();  // cascades
+}
+
 int SessionStore::markCrashedSessionsInterrupted()
 {
     auto update = m_db.prepare("UPDATE sessions SET status = 'interrupted' WHERE status = 'recording'");

@@ -73,6 +73,9 @@ public:
     // recording, where no later block marks the gap). No-op when none are.
     void markLostUntil(std::int64_t session, std::uint64_t endIndex);
     void endSession(std::int64_t session, SessionStatus status);
+    // Deletes a session with its channels, samples and gaps. Throws
+    // StorageError for an unknown id or a session still being recorded.
+    void deleteSession(std::int64_t session);
     // Marks every "recording" session "interrupted"; only for the holder of
     // the RecorderLock, who knows no recording is live. Returns how many.
     int markCrashedSessionsInterrupted();

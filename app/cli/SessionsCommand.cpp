@@ -1,0 +1,244 @@
+// The sessions subcommand: list, show, export and delete.
+#include "SessionsCommand.h"
+
+#include "CliSupport.h"
+#include "core/storage/SessionExport.h"
+#include "core/storage/SessionStore.h"
+#include "core/text/JsonWriter.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QTextStream>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+
+namespace tactiscope::cli {
+namespace {
+
+using core::storage::SessionStore;
+using core::storage::SessionSummary;
+using core::storage::StorageError;
+
+// "ID" or "last" (the newest session); nothing when neither names one.
+std::optional<std::int64_t> resolveId(SessionStore& store, const QString& text)
+{
+    if (text == QLatin1String("last")) {
+        const auto sessions = store.sessions();
+        if (sessions.empty()) return std::nullopt;
+        return sessions.front().id;
+    }
+    bool ok = false;
+    const qlonglong id = text.toLongLong(&ok);
+    if (!ok || !store.session(id)) return std::nullopt;
+    return id;
+}
+
+double durationOf(SessionStore& store, const SessionSummary& s)
+{
+    const auto channels = store.channels(s.id);
+    return channels.empty() ? 0.0 : static_cast<double>(store.sampleCount(s.id)) / channels.front().sampleRate_hz;
+}
+
+int list(SessionStore& store, bool json)
+{
+    const auto sessions = store.sessions();
+    if (json) {
+        core::text::JsonWriter out;
+        out.beginArray();
+        for (const auto& s : sessions) {
+            out.beginObject();
+            out.key("id").value(static_cast<long long>(s.id));
+            out.key("uuid").value(s.uuid);
+            out.key("mode").value(s.metadata.mode);
+            out.key("subject").value(s.metadata.subject);
+            out.key("operator").value(s.metadata.operatorName);
+            out.key("started_utc").value(s.startedUtc);
+            out.key("status").value(s.status);
+            out.key("verdict").value(s.verdict);
+            out.key("duration_s").value(durationOf(store, s));
+            out.endObject();
+        }
+        out.endArray();
+        std::cout << out.str() << '\n';
+        return kExitOk;
+    }
+    QTextStream out(stdout);
+    if (sessions.empty()) {
+        out << "No sessions.\n";
+        return kExitOk;
+    }
+    out << qSetFieldWidth(6) << Qt::right << "id" << qSetFieldWidth(0) << "  "
+        << QString("started (UTC)").leftJustified(26) << QString("mode").leftJustified(11)
+        << QString("status").leftJustified(12) << QString("duration").rightJustified(10) << "  subject / operator\n";
+    for (const auto& s : sessions) {
+        out << qSetFieldWidth(6) << Qt::right << s.id << qSetFieldWidth(0) << "  "
+            << toQString(s.startedUtc).leftJustified(26) << toQString(s.metadata.mode).leftJustified(11)
+            << toQString(s.status).leftJustified(12)
+            << (QString::number(durationOf(store, s), 'f', 1) + QStringLiteral(" s")).rightJustified(10) << "  "
+            << toQString(s.metadata.subject) << " / " << toQString(s.metadata.operatorName) << '\n';
+    }
+    return kExitOk;
+}
+
+int show(SessionStore& store, std::int64_t id, bool json)
+{
+    if (json) {
+        core::storage::writeSessionMetadataJson(store, id, std::cout);
+        return kExitOk;
+    }
+    const auto s = *store.session(id);
+    QTextStream out(stdout);
+    const auto line = [&](const char* name, const std::string& value) {
+        out << QString(name).leftJustified(18) << toQString(value.empty() ? std::string("—") : value) << '\n';
+    };
+    line("id", std::to_string(s.id));
+    line("uuid", s.uuid);
+    line("mode", s.metadata.mode);
+    line("subject", s.metadata.subject);
+    line("operator", s.metadata.operatorName);
+    line("site", s.metadata.site);
+    line("notes", s.metadata.notes);
+    line("started (UTC)", s.startedUtc);
+    line("ended (UTC)", s.endedUtc);
+    line("status", s.status);
+    line("verdict", s.verdict);
+    line("device", s.metadata.deviceModel + (s.metadata.deviceSerial.empty() ? "" : " " + s.metadata.deviceSerial));
+    line("firmware", s.metadata.deviceFirmware);
+    line("recorded by", "Tactiscope " + s.appVersion);
+    std::uint64_t lost = 0;
+    for (const auto& gap : store.gaps(id)) lost += gap.count;
+    const auto channels = store.channels(id);
+    out << QString("samples").leftJustified(18) << store.sampleCount(id) << " per channel ("
+        << QString::number(durationOf(store, s), 'f', 3) << " s), " << lost << " lost\n";
+    out << QString("channels").leftJustified(18);
+    for (std::size_t c = 0; c < channels.size(); ++c) {
+        const auto& d = channels[c].descriptor;
+        out << (c ? ", " : "") << toQString(d.name) << " ["
+            << (d.unit.empty() ? toQString(core::toString(d.kind)) : toQString(d.unit)) << "]";
+    }
+    out << " at " << channels.front().sampleRate_hz << " Hz\n";
+    return kExitOk;
+}
+
+// Writes through a temporary file renamed into place, so a failed export
+// never leaves half a file under the requested name.
+bool writeAtomically(const std::string& path, const std::function<void(std::ostream&)>& write, QString& error)
+{
+    const std::string temporary = path + ".partial";
+    {
+        std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+        if (!file) {
+            error = QStringLiteral("cannot write %1").arg(toQString(path));
+            return false;
+        }
+        write(file);
+        file.flush();
+        if (!file) {
+            std::filesystem::remove(temporary);
+            error = QStringLiteral("writing %1 failed (disk full?)").arg(toQString(path));
+            return false;
+        }
+    }
+    std::error_code code;
+    std::filesystem::rename(temporary, path, code);
+    if (code) error = QStringLiteral("cannot write %1: %2").arg(toQString(path), toQString(code.message()));
+    return !code;
+}
+
+int exportSession(SessionStore& store, std::int64_t id, const QString& format, const QString& output)
+{
+    const std::string path = output.toStdString();
+    QString error;
+    bool ok = false;
+    if (format == QLatin1String("csv")) {
+        // Metadata goes into a side file: out.csv → out.meta.json.
+        const QFileInfo info(output);
+        const std::string sidecar =
+            (info.dir().filePath(info.completeBaseName() + QStringLiteral(".meta.json"))).toStdString();
+        ok = writeAtomically(
+                 path, [&](std::ostream& out) { core::storage::writeSessionCsv(store, id, out); }, error) &&
+             writeAtomically(
+                 sidecar, [&](std::ostream& out) { core::storage::writeSessionMetadataJson(store, id, out); }, error);
+    } else {
+        ok = writeAtomically(
+            path, [&](std::ostream& out) { core::storage::writeSessionJson(store, id, out); }, error);
+    }
+    if (!ok) {
+        printError(error);
+        return kExitFailure;
+    }
+    return kExitOk;
+}
+
+}  // namespace
+
+int runSessions(const QStringList& arguments)
+{
+    const QString name = QStringLiteral("sessions");
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Inspect a session store.\n"
+        "  list                     the sessions, newest first\n"
+        "  show ID|last             one session's metadata, channels and losses\n"
+        "  export ID|last --format csv|json --output PATH\n"
+        "                           CSV: t then the channels (metadata in PATH's .meta.json); JSON: all\n"
+        "  delete ID                remove a session and its samples"));
+    parser.addPositionalArgument(QStringLiteral("action"), QStringLiteral("list, show, export or delete."));
+    parser.addOptions({
+        {QStringLiteral("db"), QStringLiteral("The session store (required)."), QStringLiteral("FILE")},
+        {QStringLiteral("json"), QStringLiteral("list, show: print JSON.")},
+        {QStringLiteral("format"), QStringLiteral("export: csv or json."), QStringLiteral("csv|json")},
+        {QStringLiteral("output"), QStringLiteral("export: the file to write."), QStringLiteral("PATH")},
+    });
+    if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
+    const QString usage = commandUsage(parser, name);
+    if (!parser.isSet(QStringLiteral("db"))) return usageError(QStringLiteral("--db FILE is required"), usage);
+    const QStringList positional = parser.positionalArguments();
+    if (positional.isEmpty()) return usageError(QStringLiteral("say what to do: list, show, export or delete"), usage);
+    const QString action = positional.front();
+    const bool takesId =
+        action == QLatin1String("show") || action == QLatin1String("export") || action == QLatin1String("delete");
+    if (action != QLatin1String("list") && !takesId)
+        return usageError(QStringLiteral("unknown action '%1'").arg(action), usage);
+    if (positional.size() != (takesId ? 2 : 1))
+        return usageError(takesId ? QStringLiteral("%1 needs one session: ID or last").arg(action)
+                                  : QStringLiteral("list takes no session"),
+                          usage);
+    const QString format = parser.value(QStringLiteral("format"));
+    if (action == QLatin1String("export")) {
+        if (format != QLatin1String("csv") && format != QLatin1String("json"))
+            return usageError(QStringLiteral("--format must be csv or json"), usage);
+        if (!parser.isSet(QStringLiteral("output")))
+            return usageError(QStringLiteral("--output PATH is required"), usage);
+    }
+    const std::string db = parser.value(QStringLiteral("db")).toStdString();
+    if (!std::filesystem::exists(db)) return usageError(QStringLiteral("%1 does not exist").arg(toQString(db)), usage);
+
+    try {
+        // Only delete writes; the others read, and work beside a recording.
+        SessionStore store(db, action == QLatin1String("delete") ? core::storage::Database::Access::ReadWrite
+                                                                 : core::storage::Database::Access::ReadOnly);
+        if (action == QLatin1String("list")) return list(store, parser.isSet(QStringLiteral("json")));
+        const auto id = resolveId(store, positional[1]);
+        if (!id) {
+            printError(positional[1] == QLatin1String("last")
+                           ? QStringLiteral("%1 holds no sessions").arg(toQString(db))
+                           : QStringLiteral("there is no session '%1' in %2").arg(positional[1], toQString(db)));
+            return kExitUsage;
+        }
+        if (action == QLatin1String("show")) return show(store, *id, parser.isSet(QStringLiteral("json")));
+        if (action == QLatin1String("export"))
+            return exportSession(store, *id, format, parser.value(QStringLiteral("output")));
+        store.deleteSession(*id);
+        QTextStream(stdout) << "Deleted session " << *id << ".\n";
+        return kExitOk;
+    } catch (const StorageError& e) {
+        printError(QString::fromStdString(e.what()));
+        return kExitUsage;
+    }
+}
+
+}  // namespace tactiscope::cli

@@ -1,0 +1,151 @@
+// Session export to CSV and JSON, window by window.
+#include "core/storage/SessionExport.h"
+
+#include "core/text/JsonWriter.h"
+#include "core/text/NumberFormat.h"
+
+#include <charconv>
+#include <cmath>
+#include <functional>
+
+namespace tactiscope::core::storage {
+namespace {
+
+constexpr std::uint64_t kWindow = 65536;  // samples per channel read at a time
+
+// The shortest text that reads back to the same binary32 (stored values are
+// binary32, see ChunkCodec.h).
+std::string_view formatSample(double value, char (&buffer)[32])
+{
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, static_cast<float>(value));
+    return {buffer, static_cast<std::size_t>(result.ptr - buffer)};
+}
+
+SessionSummary requireSession(SessionStore& store, std::int64_t session)
+{
+    auto summary = store.session(session);
+    if (!summary) throw StorageError("there is no session " + std::to_string(session));
+    return *summary;
+}
+
+using RowFunction = std::function<void(std::uint64_t, const std::vector<std::vector<double>>&, std::size_t)>;
+
+// Calls row(index, window, s) for every stored (non-gap) sample, in order;
+// window[k][s] is the value of channel wanted[k]. Gaps are the same on
+// every channel, so any channel tells them.
+void forEachSample(SessionStore& store, std::int64_t session, const std::vector<std::size_t>& wanted,
+                   const RowFunction& row)
+{
+    const std::uint64_t total = store.sampleCount(session);
+    std::vector<std::vector<double>> window(wanted.size());
+    for (std::uint64_t first = 0; first < total; first += kWindow) {
+        for (std::size_t k = 0; k < wanted.size(); ++k)
+            window[k] = store.readChannel(session, wanted[k], first, kWindow);
+        for (std::size_t s = 0; s < window[0].size(); ++s) {
+            if (std::isnan(window[0][s])) continue;  // a gap: no sample was stored
+            row(first + s, window, s);
+        }
+    }
+}
+
+void writeMetadata(text::JsonWriter& json, SessionStore& store, std::int64_t session)
+{
+    const auto s = requireSession(store, session);
+    json.key("session").beginObject();
+    json.key("id").value(static_cast<long long>(s.id));
+    json.key("uuid").value(s.uuid);
+    json.key("mode").value(s.metadata.mode);
+    json.key("subject").value(s.metadata.subject);
+    json.key("operator").value(s.metadata.operatorName);
+    json.key("site").value(s.metadata.site);
+    json.key("notes").value(s.metadata.notes);
+    json.key("started_utc").value(s.startedUtc);
+    json.key("ended_utc").value(s.endedUtc);
+    json.key("status").value(s.status);
+    json.key("verdict").value(s.verdict);
+    json.key("device_model").value(s.metadata.deviceModel);
+    json.key("device_serial").value(s.metadata.deviceSerial);
+    json.key("device_firmware").value(s.metadata.deviceFirmware);
+    json.key("app_version").value(s.appVersion);
+    json.key("samples_per_channel").value(static_cast<long long>(store.sampleCount(session)));
+    json.endObject();
+    json.key("channels").beginArray();
+    for (const auto& channel : store.channels(session)) {
+        json.beginObject();
+        json.key("name").value(channel.descriptor.name);
+        json.key("unit").value(channel.descriptor.unit);
+        json.key("kind").value(toString(channel.descriptor.kind));
+        json.key("sample_rate_hz").value(channel.sampleRate_hz);
+        json.endObject();
+    }
+    json.endArray();
+    json.key("gaps").beginArray();
+    for (const auto& gap : store.gaps(session)) {
+        json.beginObject();
+        json.key("first_index").value(static_cast<long long>(gap.firstIndex));
+        json.key("count").value(static_cast<long long>(gap.count));
+        json.endObject();
+    }
+    json.endArray();
+}
+
+}  // namespace
+
+void writeSessionCsv(SessionStore& store, std::int64_t session, std::ostream& out)
+{
+    requireSession(store, session);
+    const auto channels = store.channels(session);
+    out << 't';
+    for (const auto& channel : channels) out << ',' << channel.descriptor.name;
+    out << '\n';
+    const double rate_hz = channels.front().sampleRate_hz;
+    char buffer[32];
+    std::vector<std::size_t> all(channels.size());
+    for (std::size_t c = 0; c < all.size(); ++c) all[c] = c;
+    forEachSample(store, session, all, [&](std::uint64_t index, const auto& window, std::size_t s) {
+        out << text::formatShortest(static_cast<double>(index) / rate_hz);
+        for (const auto& values : window) out << ',' << formatSample(values[s], buffer);
+        out << '\n';
+    });
+}
+
+void writeSessionMetadataJson(SessionStore& store, std::int64_t session, std::ostream& out)
+{
+    text::JsonWriter json;
+    json.beginObject();
+    writeMetadata(json, store, session);
+    json.endObject();
+    out << json.str() << '\n';
+}
+
+void writeSessionJson(SessionStore& store, std::int64_t session, std::ostream& out)
+{
+    text::JsonWriter head;
+    head.beginObject();
+    writeMetadata(head, store, session);
+    // The samples are streamed, one column per pass over the store, so an
+    // hour-long session never sits in memory: "t", then each channel.
+    out << head.str() << ",\"samples\":{";
+    const auto channels = store.channels(session);
+    const double rate_hz = channels.front().sampleRate_hz;
+    char buffer[32];
+    for (std::size_t column = 0; column <= channels.size(); ++column) {
+        text::JsonWriter name;
+        name.value(column == 0 ? std::string("t") : channels[column - 1].descriptor.name);
+        out << (column == 0 ? "" : ",") << name.str() << ":[";
+        bool first = true;
+        const std::size_t channel = column == 0 ? 0 : column - 1;
+        forEachSample(store, session, {channel}, [&](std::uint64_t index, const auto& window, std::size_t s) {
+            out << (first ? "" : ",");
+            first = false;
+            if (column == 0)
+                out << text::formatShortest(static_cast<double>(index) / rate_hz);
+            else
+                out << formatSample(window[0][s], buffer);
+        });
+        out << ']';
+    }
+    out << "}}\n";
+}
+
+}  // namespace tactiscope::core::storage

@@ -1,0 +1,188 @@
+// `tactiscope-cli sessions` on a real store written here through the store
+// API with known values: list, show, CSV and JSON export (values back to
+// the bit), delete, and bad input with exit code 2.
+#include "core/SampleBlock.h"
+#include "core/storage/SessionStore.h"
+#include "support/CliRunner.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+using namespace tactiscope;
+using tactiscope::testing::runCli;
+
+namespace {
+
+// Channel c, sample i → (i + 1)·0.1 + c (not exact in binary or decimal, so
+// the export has to round-trip binary32 properly).
+double valueAt(std::size_t c, std::uint64_t i)
+{
+    return static_cast<double>(i + 1) * 0.1 + static_cast<double>(c);
+}
+
+core::SampleBlock block(std::uint64_t first, std::size_t count)
+{
+    core::SampleBlock b(2, count, static_cast<double>(first) / 200.0, 1.0 / 200.0, first);
+    for (std::size_t c = 0; c < 2; ++c)
+        for (std::size_t s = 0; s < count; ++s) b.channel(c)[s] = valueAt(c, first + s);
+    return b;
+}
+
+// Two sessions; the second (newest) has 50 samples, 10 lost, 40 more.
+QString makeStore(const QTemporaryDir& dir)
+{
+    const QString path = dir.filePath("s.tactiscope");
+    core::storage::SessionStore store(path.toStdString());
+    const std::vector<core::ChannelDescriptor> channels{{"a", "", core::ChannelKind::Strain},
+                                                        {"force", "N", core::ChannelKind::Force}};
+    core::storage::SessionMetadata first;
+    first.mode = "palpation";
+    first.subject = "phantom-2";
+    const auto one = store.beginSession(first, channels, 200.0);
+    store.appendBlocks(one, std::vector{block(0, 20)});
+    store.endSession(one, core::storage::SessionStatus::Complete);
+    core::storage::SessionMetadata second;
+    second.mode = "panel-scan";
+    second.subject = "door-17";
+    second.operatorName = "Ada";
+    const auto two = store.beginSession(second, channels, 200.0);
+    store.appendBlocks(two, std::vector{block(0, 50), block(60, 40)});
+    store.endSession(two, core::storage::SessionStatus::Complete);
+    return path;
+}
+
+QJsonDocument parse(const QString& text)
+{
+    return QJsonDocument::fromJson(text.toUtf8());
+}
+
+QString readFile(const QString& path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
+}
+
+}  // namespace
+
+TEST(SessionsCli, ListAndShow)
+{
+    QTemporaryDir dir;
+    const QString db = makeStore(dir);
+    const auto list = runCli({"sessions", "--db", db, "list", "--json"});
+    ASSERT_EQ(list.exitCode, 0) << list.err.toStdString();
+    const QJsonArray sessions = parse(list.out).array();
+    ASSERT_EQ(sessions.size(), 2);
+    EXPECT_EQ(sessions[0].toObject()["id"].toInt(), 2);  // newest first
+    EXPECT_EQ(sessions[0].toObject()["subject"].toString(), "door-17");
+    EXPECT_EQ(sessions[0].toObject()["operator"].toString(), "Ada");
+    EXPECT_EQ(sessions[0].toObject()["status"].toString(), "complete");
+    EXPECT_DOUBLE_EQ(sessions[0].toObject()["duration_s"].toDouble(), 0.5);  // 100 samples at 200 Hz
+    EXPECT_EQ(sessions[1].toObject()["mode"].toString(), "palpation");
+
+    const auto text = runCli({"sessions", "--db", db, "list"});
+    EXPECT_TRUE(text.out.contains("door-17 / Ada")) << text.out.toStdString();
+
+    const auto show = runCli({"sessions", "--db", db, "show", "last", "--json"});
+    ASSERT_EQ(show.exitCode, 0) << show.err.toStdString();
+    const QJsonObject metadata = parse(show.out).object();
+    EXPECT_EQ(metadata["session"].toObject()["id"].toInt(), 2);
+    EXPECT_EQ(metadata["session"].toObject()["samples_per_channel"].toInt(), 100);
+    EXPECT_EQ(metadata["channels"].toArray()[1].toObject()["unit"].toString(), "N");
+    EXPECT_EQ(metadata["gaps"].toArray()[0].toObject()["first_index"].toInt(), 50);
+    EXPECT_EQ(metadata["gaps"].toArray()[0].toObject()["count"].toInt(), 10);
+    const auto human = runCli({"sessions", "--db", db, "show", "1"});
+    EXPECT_TRUE(human.out.contains("20 per channel (0.100 s), 0 lost")) << human.out.toStdString();
+    EXPECT_TRUE(human.out.contains("force [N]")) << human.out.toStdString();
+}
+
+TEST(SessionsCli, CsvExportHasOneRowPerStoredSampleExactToTheBit)
+{
+    QTemporaryDir dir;
+    const QString db = makeStore(dir);
+    const QString csv = dir.filePath("out.csv");
+    const auto result = runCli({"sessions", "--db", db, "export", "last", "--format", "csv", "--output", csv});
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    const QStringList lines = readFile(csv).split('\n', Qt::SkipEmptyParts);
+    ASSERT_EQ(lines.size(), 1 + 90);  // header, 50 + 40 samples (the 10 lost have no row)
+    EXPECT_EQ(lines[0], "t,a,force");
+    for (int row = 1; row < lines.size(); ++row) {
+        const auto index = static_cast<std::uint64_t>(row <= 50 ? row - 1 : row - 1 + 10);
+        const QStringList fields = lines[row].split(',');
+        ASSERT_EQ(fields.size(), 3);
+        EXPECT_DOUBLE_EQ(fields[0].toDouble(), static_cast<double>(index) / 200.0) << row;
+        for (std::size_t c = 0; c < 2; ++c)
+            ASSERT_EQ(std::strtof(fields[static_cast<int>(c) + 1].toLatin1().constData(), nullptr),
+                      static_cast<float>(valueAt(c, index)))
+                << row;
+    }
+    const QJsonObject meta = parse(readFile(dir.filePath("out.meta.json"))).object();
+    EXPECT_EQ(meta["session"].toObject()["subject"].toString(), "door-17");
+    EXPECT_FALSE(QFile::exists(csv + ".partial"));
+}
+
+TEST(SessionsCli, JsonExportHoldsMetadataAndColumns)
+{
+    QTemporaryDir dir;
+    const QString db = makeStore(dir);
+    const QString path = dir.filePath("out.json");
+    ASSERT_EQ(runCli({"sessions", "--db", db, "export", "1", "--format", "json", "--output", path}).exitCode, 0);
+    const QJsonObject all = parse(readFile(path)).object();
+    EXPECT_EQ(all["session"].toObject()["mode"].toString(), "palpation");
+    const QJsonObject samples = all["samples"].toObject();
+    ASSERT_EQ(samples["t"].toArray().size(), 20);
+    ASSERT_EQ(samples["force"].toArray().size(), 20);
+    EXPECT_DOUBLE_EQ(samples["t"].toArray()[19].toDouble(), 19.0 / 200.0);
+    EXPECT_EQ(static_cast<float>(samples["force"].toArray()[19].toDouble()), static_cast<float>(valueAt(1, 19)));
+}
+
+TEST(SessionsCli, DeleteRemovesTheSessionAndItsSamples)
+{
+    QTemporaryDir dir;
+    const QString db = makeStore(dir);
+    const auto result = runCli({"sessions", "--db", db, "delete", "2"});
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    EXPECT_EQ(result.out, "Deleted session 2.\n");
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    ASSERT_EQ(store.sessions().size(), 1u);
+    auto chunks = store.database().prepare("SELECT count(*) FROM chunks WHERE session_id = 2");
+    ASSERT_TRUE(chunks.step());
+    EXPECT_EQ(chunks.int64(0), 0);  // cascaded
+    auto gaps = store.database().prepare("SELECT count(*) FROM gaps");
+    ASSERT_TRUE(gaps.step());
+    EXPECT_EQ(gaps.int64(0), 0);
+}
+
+TEST(SessionsCli, BadInputExitsWithCodeTwo)
+{
+    QTemporaryDir dir;
+    const QString db = makeStore(dir);
+    const QString notes = dir.filePath("notes.txt");
+    QFile file(notes);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write("not a store\n");
+    file.close();
+    const std::vector<std::pair<QStringList, QString>> cases{
+        {{"sessions", "list"}, "--db FILE is required"},
+        {{"sessions", "--db", db}, "say what to do"},
+        {{"sessions", "--db", db, "rename", "1"}, "unknown action 'rename'"},
+        {{"sessions", "--db", db, "show"}, "show needs one session"},
+        {{"sessions", "--db", db, "show", "99"}, "there is no session '99'"},
+        {{"sessions", "--db", db, "export", "1", "--output", "x.csv"}, "--format must be csv or json"},
+        {{"sessions", "--db", db, "export", "1", "--format", "csv"}, "--output PATH is required"},
+        {{"sessions", "--db", dir.filePath("missing.tactiscope"), "list"}, "does not exist"},
+        {{"sessions", "--db", notes, "list"}, "is not a Tactiscope session store"},
+    };
+    for (const auto& [arguments, message] : cases) {
+        const auto result = runCli(arguments);
+        EXPECT_EQ(result.exitCode, 2) << arguments.join(' ').toStdString();
+        EXPECT_TRUE(result.err.contains(message))
+            << arguments.join(' ').toStdString() << ": " << result.err.toStdString();
+    }
+}
