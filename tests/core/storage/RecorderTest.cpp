@@ -11,7 +11,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
 #include <filesystem>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
 
 using namespace tactiscope::core;
 using namespace tactiscope::core::storage;
@@ -183,4 +189,48 @@ TEST_F(RecorderTest, OpeningTheStoreLeavesALiveRecordingAloneAndMarksACrashedOne
     live.finish(SessionStatus::Complete);
     SessionStore after(m_path);
     EXPECT_EQ(after.session(live.sessionId())->status, "complete");
+}
+
+TEST_F(RecorderTest, AFullDiskStopsRecordingAndKeepsEveryCommittedSample)
+{
+    // In a child process, so the file-size limit (a full disk, as far as
+    // SQLite can tell) and its signal stay there.
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        std::signal(SIGXFSZ, SIG_IGN);  // a write past the limit fails instead of killing
+        int code = 3;
+        try {
+            Recorder recorder(m_path, palpation(), kChannels, 1000.0, 1'000'000);
+            const rlimit limit{512 * 1024, 512 * 1024};
+            ::setrlimit(RLIMIT_FSIZE, &limit);
+            std::uint64_t first = 0;
+            for (; first < 2'000'000 && recorder.stats().error.empty(); first += 500) {
+                recorder.consume(deviceBlock(first, 500));
+                std::this_thread::sleep_for(std::chrono::milliseconds(5));  // ~100 k samples/s: several commits
+            }
+            const auto stats = recorder.finish(SessionStatus::Complete);
+            code = stats.error.empty() ? 1 : stats.samplesWritten > 0 ? 0 : 2;
+        } catch (const std::exception&) {
+            code = 4;
+        }
+        std::_Exit(code);
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFEXITED(status));
+    ASSERT_EQ(WEXITSTATUS(status), 0) << "1: never full, 2: nothing written, 3/4: could not start";
+
+    SessionStore store(m_path);  // the next open: recovers what finish() could not mark
+    ASSERT_EQ(store.sessions().size(), 1u);
+    const auto session = store.sessions().front();
+    EXPECT_EQ(session.status, "interrupted");
+    auto check = store.database().prepare("PRAGMA integrity_check");
+    ASSERT_TRUE(check.step());
+    EXPECT_EQ(check.text(0), "ok");
+    const std::uint64_t n = store.sampleCount(session.id);
+    ASSERT_GT(n, 0u);
+    const auto force = store.readChannel(session.id, 1, 0, n);
+    EXPECT_TRUE(store.gaps(session.id).empty());
+    for (std::uint64_t i = 0; i < n; ++i) ASSERT_EQ(force[i], static_cast<double>(i) + 0.5) << i;
 }
