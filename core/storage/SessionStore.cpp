@@ -195,6 +195,12 @@ void SessionStore::endSession(std::int64_t session, SessionStatus status)
         .run();
 }
 
+std::string SessionStore::checkIntegrity()
+{
+    auto check = m_db.prepare("PRAGMA integrity_check");
+    return check.step() ? check.text(0) : std::string("no answer from the integrity check");
+}
+
 std::vector<SessionSummary> SessionStore::sessions()
 {
     std::vector<SessionSummary> result;

@@ -91,6 +91,9 @@ public:
     std::vector<double> readChannel(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,
                                     std::uint64_t count);
 
+    // SQLite's integrity check: "ok", or its first finding.
+    std::string checkIntegrity();
+
     Database& database() { return m_db; }
 
 private:

@@ -140,9 +140,7 @@ TEST(RecordCli, AKilledRecordingKeepsItsCommittedSamplesAndIsMarkedInterrupted)
     ASSERT_EQ(store.sessions().size(), 1u);
     const auto session = store.sessions().front();
     EXPECT_EQ(session.status, "interrupted");
-    auto check = store.database().prepare("PRAGMA integrity_check");
-    ASSERT_TRUE(check.step());
-    EXPECT_EQ(check.text(0), "ok");
+    EXPECT_EQ(store.checkIntegrity(), "ok");
     // Commits come every 250 ms, so about 2 s of recording left more than
     // half a second of samples, all of them the emulator's, in order.
     const std::uint64_t n = store.sampleCount(session.id);

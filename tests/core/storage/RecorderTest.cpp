@@ -225,9 +225,7 @@ TEST_F(RecorderTest, AFullDiskStopsRecordingAndKeepsEveryCommittedSample)
     ASSERT_EQ(store.sessions().size(), 1u);
     const auto session = store.sessions().front();
     EXPECT_EQ(session.status, "interrupted");
-    auto check = store.database().prepare("PRAGMA integrity_check");
-    ASSERT_TRUE(check.step());
-    EXPECT_EQ(check.text(0), "ok");
+    EXPECT_EQ(store.checkIntegrity(), "ok");
     const std::uint64_t n = store.sampleCount(session.id);
     ASSERT_GT(n, 0u);
     const auto force = store.readChannel(session.id, 1, 0, n);
