@@ -11,12 +11,17 @@ namespace {
 
 std::string usbIds(int vendor, int product)
 {
-    char text[16];
-    std::snprintf(text, sizeof text, "%04x:%04x", vendor & 0xffff, product & 0xffff);
-    return text;
+    return usbIdText(vendor) + ":" + usbIdText(product);
 }
 
 }  // namespace
+
+std::string usbIdText(int id)
+{
+    char text[8];
+    std::snprintf(text, sizeof text, "%04x", id & 0xffff);
+    return text;
+}
 
 Discovery discoverDevices()
 {

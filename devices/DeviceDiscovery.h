@@ -28,6 +28,9 @@ struct Discovery {
 
 Discovery discoverDevices();
 
+// A USB vendor or product id as four lower-case hex digits, e.g. "2341".
+std::string usbIdText(int id);
+
 // An opener that finds the device again by USB serial number when it has
 // one (its path may change after a replug), else by path. HID devices always
 // speak TSP/1; `baud` and the text settings apply to serial ports only.

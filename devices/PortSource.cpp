@@ -82,23 +82,24 @@ void PortSource::pump(std::chrono::milliseconds timeout)
     if (n == 0) return;
     const std::span<const std::uint8_t> bytes(m_chunk.data(), n);
     const double arrival_s = steadySeconds();
-    if (m_text) {
-        std::vector<core::SampleBlock> blocks;
-        m_text->push(bytes, arrival_s, blocks);
-        const std::lock_guard lock(m_statusMutex);
+    // Every new block teaches the clock mapping when it arrived.
+    const auto enqueue = [&](std::vector<core::SampleBlock>& blocks) {
         for (auto& b : blocks) {
             m_clock.observe(b.endTime_s(), arrival_s);
             m_queue.push_back(std::move(b));
         }
+    };
+    if (m_text) {
+        std::vector<core::SampleBlock> blocks;
+        m_text->push(bytes, arrival_s, blocks);
+        const std::lock_guard lock(m_statusMutex);
+        enqueue(blocks);
         m_counters = m_text->counters();
     } else {
         protocol::StreamOutput out;
         m_binary.push(bytes, out);
         const std::lock_guard lock(m_statusMutex);
-        for (auto& b : out.blocks) {
-            m_clock.observe(b.endTime_s(), arrival_s);
-            m_queue.push_back(std::move(b));
-        }
+        enqueue(out.blocks);
         m_counters = m_binary.counters();
         if (out.infoChanged) m_info = m_binary.info();
     }

@@ -19,6 +19,13 @@ extern "C" void onStopSignal(int)
 
 }  // namespace
 
+std::optional<devices::WireProtocol> parseWireProtocol(const QString& text)
+{
+    if (text.isEmpty() || text == QLatin1String("binary")) return devices::WireProtocol::Binary;
+    if (text == QLatin1String("text")) return devices::WireProtocol::Text;
+    return std::nullopt;
+}
+
 void installStopSignals()
 {
     std::signal(SIGINT, onStopSignal);

@@ -2,6 +2,8 @@
 // lines on stderr, and conversions between Qt and standard strings.
 #pragma once
 
+#include "devices/PortSource.h"
+
 #include <QCommandLineParser>
 #include <QString>
 #include <QStringList>
@@ -35,6 +37,10 @@ QString toQString(std::string_view text);
 // after installStopSignals(), stopRequested() turns true on either.
 void installStopSignals();
 bool stopRequested();
+
+// --protocol: "binary" (also when empty, the default) or "text"; nothing
+// for anything else.
+std::optional<devices::WireProtocol> parseWireProtocol(const QString& text);
 
 // A finite number, or nothing when `text` is not one.
 std::optional<double> parseNumber(const QString& text);

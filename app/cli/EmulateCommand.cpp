@@ -42,10 +42,9 @@ int runEmulate(const QStringList& arguments)
 
     devices::emulator::EmulatorOptions options;
     options.linkPath = parser.value(QStringLiteral("link")).toStdString();
-    const QString protocol = parser.value(QStringLiteral("protocol"));
-    if (!protocol.isEmpty() && protocol != QLatin1String("binary") && protocol != QLatin1String("text"))
-        return usageError(QStringLiteral("--protocol must be binary or text"), usage);
-    options.protocol = protocol == QLatin1String("text") ? devices::WireProtocol::Text : devices::WireProtocol::Binary;
+    const auto protocol = parseWireProtocol(parser.value(QStringLiteral("protocol")));
+    if (!protocol) return usageError(QStringLiteral("--protocol must be binary or text"), usage);
+    options.protocol = *protocol;
     if (parser.isSet(QStringLiteral("scenario")))
         options.scenario = parser.value(QStringLiteral("scenario")).toStdString();
     const auto positive = [&](const char* key, bool integer) -> std::optional<double> {

@@ -3,26 +3,15 @@
 
 #include "CliSupport.h"
 #include "core/text/JsonWriter.h"
+#include "devices/DeviceDiscovery.h"
 #include "devices/transport/HidTransport.h"
 #include "devices/transport/SerialPorts.h"
 
 #include <QTextStream>
 
-#include <cstdio>
 #include <iostream>
 
 namespace tactiscope::cli {
-namespace {
-
-std::string hex4(int value)
-{
-    char text[8];
-    std::snprintf(text, sizeof text, "%04x", value & 0xFFFF);
-    return text;
-}
-
-}  // namespace
-
 int runPorts(const QStringList& arguments)
 {
     const QString name = QStringLiteral("ports");
@@ -49,8 +38,8 @@ int runPorts(const QStringList& arguments)
             json.key("path").value(p.path);
             json.key("description").value(p.description);
             json.key("transport").value(p.transport);
-            if (p.usbVendorId) json.key("usb_vid").value(hex4(*p.usbVendorId));
-            if (p.usbProductId) json.key("usb_pid").value(hex4(*p.usbProductId));
+            if (p.usbVendorId) json.key("usb_vid").value(devices::usbIdText(*p.usbVendorId));
+            if (p.usbProductId) json.key("usb_pid").value(devices::usbIdText(*p.usbProductId));
             if (!p.usbSerialNumber.empty()) json.key("usb_serial").value(p.usbSerialNumber);
             json.endObject();
         }
@@ -58,8 +47,8 @@ int runPorts(const QStringList& arguments)
         for (const auto& d : hid) {
             json.beginObject();
             json.key("path").value(d.path);
-            json.key("vid").value(hex4(d.vendorId));
-            json.key("pid").value(hex4(d.productId));
+            json.key("vid").value(devices::usbIdText(d.vendorId));
+            json.key("pid").value(devices::usbIdText(d.productId));
             json.key("serial").value(d.serialNumber);
             json.key("manufacturer").value(d.manufacturer);
             json.key("product").value(d.product);
@@ -74,16 +63,16 @@ int runPorts(const QStringList& arguments)
     for (const auto& p : serial) {
         out << "  " << QString::fromStdString(p.path) << "  " << QString::fromStdString(p.description);
         if (p.usbVendorId)
-            out << "  USB " << QString::fromStdString(hex4(*p.usbVendorId)) << ":"
-                << QString::fromStdString(hex4(*p.usbProductId));
+            out << "  USB " << QString::fromStdString(devices::usbIdText(*p.usbVendorId)) << ":"
+                << QString::fromStdString(devices::usbIdText(*p.usbProductId));
         if (!p.usbSerialNumber.empty()) out << "  serial " << QString::fromStdString(p.usbSerialNumber);
         out << '\n';
     }
     out << "HID devices (" << hid.size() << "):\n";
     for (const auto& d : hid) {
-        out << "  " << QString::fromStdString(d.path) << "  " << QString::fromStdString(hex4(d.vendorId)) << ":"
-            << QString::fromStdString(hex4(d.productId)) << "  " << QString::fromStdString(d.manufacturer) << " "
-            << QString::fromStdString(d.product) << '\n';
+        out << "  " << QString::fromStdString(d.path) << "  " << QString::fromStdString(devices::usbIdText(d.vendorId))
+            << ":" << QString::fromStdString(devices::usbIdText(d.productId)) << "  "
+            << QString::fromStdString(d.manufacturer) << " " << QString::fromStdString(d.product) << '\n';
     }
     if (serial.empty() && hid.empty())
         out << "Nothing found. Is the probe plugged in? Without one, try: tactiscope-cli emulate --link /tmp/probe\n";

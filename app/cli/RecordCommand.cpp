@@ -72,10 +72,9 @@ int runRecord(const QStringList& arguments)
     const std::string port = parser.value(QStringLiteral("port")).toStdString();
     const std::string db = parser.value(QStringLiteral("db")).toStdString();
     devices::PortSourceOptions options;
-    const QString protocol = parser.value(QStringLiteral("protocol"));
-    if (!protocol.isEmpty() && protocol != QLatin1String("binary") && protocol != QLatin1String("text"))
-        return usageError(QStringLiteral("--protocol must be binary or text"), usage);
-    options.protocol = protocol == QLatin1String("text") ? devices::WireProtocol::Text : devices::WireProtocol::Binary;
+    const auto protocol = parseWireProtocol(parser.value(QStringLiteral("protocol")));
+    if (!protocol) return usageError(QStringLiteral("--protocol must be binary or text"), usage);
+    options.protocol = *protocol;
     int baud = kDefaultBaud;
     if (parser.isSet(QStringLiteral("baud"))) {
         bool ok = false;
