@@ -36,12 +36,6 @@ std::optional<std::int64_t> resolveId(SessionStore& store, const QString& text)
     return id;
 }
 
-double durationOf(SessionStore& store, const SessionSummary& s)
-{
-    const auto channels = store.channels(s.id);
-    return channels.empty() ? 0.0 : static_cast<double>(store.sampleCount(s.id)) / channels.front().sampleRate_hz;
-}
-
 int list(SessionStore& store, bool json)
 {
     const auto sessions = store.sessions();
@@ -58,7 +52,7 @@ int list(SessionStore& store, bool json)
             out.key("started_utc").value(s.startedUtc);
             out.key("status").value(s.status);
             out.key("verdict").value(s.verdict);
-            out.key("duration_s").value(durationOf(store, s));
+            out.key("duration_s").value(s.duration_s());
             out.endObject();
         }
         out.endArray();
@@ -77,7 +71,7 @@ int list(SessionStore& store, bool json)
         out << qSetFieldWidth(6) << Qt::right << s.id << qSetFieldWidth(0) << "  "
             << toQString(s.startedUtc).leftJustified(26) << toQString(s.metadata.mode).leftJustified(11)
             << toQString(s.status).leftJustified(12)
-            << (QString::number(durationOf(store, s), 'f', 1) + QStringLiteral(" s")).rightJustified(10) << "  "
+            << (QString::number(s.duration_s(), 'f', 1) + QStringLiteral(" s")).rightJustified(10) << "  "
             << toQString(s.metadata.subject) << " / " << toQString(s.metadata.operatorName) << '\n';
     }
     return kExitOk;
@@ -112,7 +106,7 @@ int show(SessionStore& store, std::int64_t id, bool json)
     for (const auto& gap : store.gaps(id)) lost += gap.count;
     const auto channels = store.channels(id);
     out << QString("samples").leftJustified(18) << store.sampleCount(id) << " per channel ("
-        << QString::number(durationOf(store, s), 'f', 3) << " s), " << lost << " lost\n";
+        << QString::number(s.duration_s(), 'f', 3) << " s), " << lost << " lost\n";
     out << QString("channels").leftJustified(18);
     for (std::size_t c = 0; c < channels.size(); ++c) {
         const auto& d = channels[c].descriptor;

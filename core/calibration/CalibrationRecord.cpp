@@ -3,6 +3,8 @@
 
 #include "core/text/JsonWriter.h"
 
+#include <nlohmann/json.hpp>
+
 #include <chrono>
 #include <ctime>
 
@@ -33,6 +35,7 @@ std::string CalibrationRecord::toJson() const
     json.key("r_squared").value(fit.rSquared);
     json.key("slope_standard_error").value(fit.slopeStandardError);
     json.key("intercept_standard_error").value(fit.interceptStandardError);
+    json.key("residual_standard_deviation").value(fit.residualStandardDeviation);
     json.key("points").value(static_cast<long long>(fit.points));
     json.key("residuals").beginArray();
     for (double r : fit.residuals) json.value(r);
@@ -40,6 +43,31 @@ std::string CalibrationRecord::toJson() const
     json.endObject();
     json.endObject();
     return json.str();
+}
+
+CalibrationRecord CalibrationRecord::fromJson(std::string_view text)
+{
+    try {
+        const auto json = nlohmann::ordered_json::parse(text);  // keeps the values' order
+        CalibrationRecord record;
+        record.kind = json.at("kind").get<std::string>();
+        record.sensorName = json.at("sensor").get<std::string>();
+        record.operatorName = json.at("operator").get<std::string>();
+        record.timestampUtc = json.at("timestamp_utc").get<std::string>();
+        for (const auto& [key, value] : json.at("values").items()) record.values.emplace_back(key, value.get<double>());
+        const auto& fit = json.at("fit");
+        record.fit.slope = fit.at("slope").get<double>();
+        record.fit.intercept = fit.at("intercept").get<double>();
+        record.fit.rSquared = fit.at("r_squared").get<double>();
+        record.fit.slopeStandardError = fit.at("slope_standard_error").get<double>();
+        record.fit.interceptStandardError = fit.at("intercept_standard_error").get<double>();
+        record.fit.residualStandardDeviation = fit.at("residual_standard_deviation").get<double>();
+        record.fit.points = fit.at("points").get<std::size_t>();
+        record.fit.residuals = fit.at("residuals").get<std::vector<double>>();
+        return record;
+    } catch (const nlohmann::ordered_json::exception& e) {
+        throw std::invalid_argument(std::string("not a calibration record: ") + e.what());
+    }
 }
 
 std::string utcTimestampNow()

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -23,6 +24,8 @@ struct CalibrationRecord {
     std::optional<double> value(const std::string& name) const;
     // One JSON object with all of the above.
     std::string toJson() const;
+    // Reads toJson()'s form back. Throws std::invalid_argument.
+    static CalibrationRecord fromJson(std::string_view json);
 };
 
 // The current time as ISO 8601 UTC with seconds.

@@ -16,7 +16,14 @@ class SampleBlock;
 
 namespace tactiscope::core::storage {
 
+// One chunk from consecutive blocks of the same channels, as if they were
+// one block: channel 0 of every block, then channel 1, …
+std::vector<std::uint8_t> encodeChunk(std::span<const SampleBlock> blocks);
 std::vector<std::uint8_t> encodeChunk(const SampleBlock& block);
+
+// One sample in the chunk and pyramid encoding.
+void putBinary32(float value, std::uint8_t* out);
+float getBinary32(const std::uint8_t* in);
 
 // Appends samples [first, first + count) of channel `channel` of a chunk
 // with `channels` channels and `samples` samples per channel to `out`.

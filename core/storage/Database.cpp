@@ -152,6 +152,11 @@ int Database::changes() const
     return sqlite3_changes(m_db);
 }
 
+bool Database::inTransaction() const
+{
+    return sqlite3_get_autocommit(m_db) == 0;
+}
+
 Transaction::Transaction(Database& db)
     : m_db(db)
 {
@@ -172,6 +177,24 @@ void Transaction::commit()
 {
     m_db.exec("COMMIT");
     m_done = true;
+}
+
+ReadSnapshot::ReadSnapshot(Database& db)
+    : m_db(db)
+{
+    if (m_db.inTransaction()) return;
+    m_db.exec("BEGIN DEFERRED");
+    m_began = true;
+}
+
+ReadSnapshot::~ReadSnapshot()
+{
+    if (!m_began) return;
+    try {
+        m_db.exec("COMMIT");  // a read-only transaction: nothing to write
+    } catch (const StorageError&) {
+        // Nothing was changed, so nothing can be lost.
+    }
 }
 
 }  // namespace tactiscope::core::storage

@@ -69,6 +69,7 @@ public:
     Statement prepare(std::string_view sql) { return Statement(m_db, sql); }
     std::int64_t lastInsertId() const;
     int changes() const;  // rows changed by the last INSERT, UPDATE or DELETE
+    bool inTransaction() const;
     const std::string& path() const { return m_path; }
     Access access() const { return m_access; }
 
@@ -91,6 +92,21 @@ public:
 private:
     Database& m_db;
     bool m_done = false;
+};
+
+// Runs a scope's reads on one snapshot of the file, so a reader sees a
+// consistent state (e.g. samples and pyramid of the same commit) while the
+// recorder keeps committing. Inside another transaction it adds nothing.
+class ReadSnapshot {
+public:
+    explicit ReadSnapshot(Database& db);
+    ~ReadSnapshot();
+    ReadSnapshot(const ReadSnapshot&) = delete;
+    ReadSnapshot& operator=(const ReadSnapshot&) = delete;
+
+private:
+    Database& m_db;
+    bool m_began = false;
 };
 
 }  // namespace tactiscope::core::storage

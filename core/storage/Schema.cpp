@@ -57,7 +57,85 @@ CREATE TABLE gaps (
 ) WITHOUT ROWID;
 )sql";
 
-constexpr std::array kMigrations{kVersion1};
+// Version 1 → 2: the min/max pyramid, the calibrations copied into a
+// session, and the records beside the samples: events, readings,
+// annotations and the calibration history. Pyramids of sessions recorded
+// under version 1 are built by SessionStore after the migration.
+constexpr const char* kVersion2 = R"sql(
+ALTER TABLE sessions ADD COLUMN calibrations_json TEXT NOT NULL DEFAULT '';
+
+CREATE TABLE lod (
+    session_id   INTEGER NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    channel      INTEGER NOT NULL,
+    level        INTEGER NOT NULL,
+    first_bucket INTEGER NOT NULL,
+    count        INTEGER NOT NULL CHECK (count > 0),
+    buckets      BLOB NOT NULL,
+    PRIMARY KEY (session_id, channel, level, first_bucket)
+) WITHOUT ROWID;
+
+CREATE TABLE events (
+    id            INTEGER PRIMARY KEY,
+    session_id    INTEGER NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    analysis      TEXT NOT NULL DEFAULT 'live',
+    kind          TEXT NOT NULL CHECK (kind IN ('defect', 'contact', 'press', 'alarm', 'marker')),
+    start_s       REAL NOT NULL,
+    end_s         REAL NOT NULL CHECK (end_s >= start_s),
+    direction     INTEGER NOT NULL DEFAULT 0 CHECK (direction IN (-1, 0, 1)),
+    peak_r        REAL,
+    lag_s         REAL,
+    speed_m_per_s REAL,
+    note          TEXT NOT NULL DEFAULT ''
+);
+CREATE INDEX events_by_session ON events (session_id, analysis, start_s);
+
+CREATE TABLE readings (
+    id             INTEGER PRIMARY KEY,
+    session_id     INTEGER NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    kind           TEXT NOT NULL CHECK (kind IN ('compliance', 'capacitive')),
+    start_s        REAL NOT NULL,
+    end_s          REAL NOT NULL CHECK (end_s >= start_s),
+    quantity       TEXT NOT NULL,
+    value          REAL NOT NULL,
+    unit           TEXT NOT NULL,
+    standard_error REAL,
+    site           TEXT NOT NULL DEFAULT '',
+    details_json   TEXT NOT NULL DEFAULT ''
+);
+CREATE INDEX readings_by_session ON readings (session_id, start_s);
+
+CREATE TABLE annotations (
+    id           INTEGER PRIMARY KEY,
+    session_id   INTEGER NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    time_s       REAL NOT NULL,
+    author       TEXT NOT NULL DEFAULT '',
+    text         TEXT NOT NULL,
+    created_utc  TEXT NOT NULL,
+    modified_utc TEXT NOT NULL
+);
+CREATE INDEX annotations_by_session ON annotations (session_id, time_s);
+
+CREATE TABLE calibrations (
+    id          INTEGER PRIMARY KEY,
+    kind        TEXT NOT NULL,
+    sensor      TEXT NOT NULL,
+    operator    TEXT NOT NULL DEFAULT '',
+    created_utc TEXT NOT NULL,
+    r_squared   REAL NOT NULL,
+    points      INTEGER NOT NULL,
+    record_json TEXT NOT NULL
+);
+CREATE INDEX calibrations_by_sensor ON calibrations (sensor, created_utc);
+
+CREATE TABLE session_calibrations (
+    session_id     INTEGER NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    calibration_id INTEGER NOT NULL REFERENCES calibrations (id) ON DELETE RESTRICT,
+    PRIMARY KEY (session_id, calibration_id)
+) WITHOUT ROWID;
+CREATE INDEX session_calibrations_by_calibration ON session_calibrations (calibration_id);
+)sql";
+
+constexpr std::array kMigrations{kVersion1, kVersion2};
 static_assert(kMigrations.size() == kSchemaVersion);
 
 std::int64_t pragma(Database& db, const char* name)
@@ -68,7 +146,7 @@ std::int64_t pragma(Database& db, const char* name)
 
 }  // namespace
 
-void prepareSchema(Database& db)
+int prepareSchema(Database& db, int targetVersion)
 {
     // The first read is where SQLite notices a file that is not a database.
     std::int64_t tables = 0;
@@ -89,21 +167,22 @@ void prepareSchema(Database& db)
                            ", this build knows " + std::to_string(kSchemaVersion) +
                            "); open it read-only or update Tactiscope");
     db.exec("PRAGMA foreign_keys = ON");
-    if (version >= kSchemaVersion || db.access() == Database::Access::ReadOnly) {
-        if (version < kSchemaVersion)
+    if (version >= targetVersion || db.access() == Database::Access::ReadOnly) {
+        if (version < targetVersion)
             throw StorageError(db.path() + " has an older store version (" + std::to_string(version) +
                                "); open it read-write once to update it");
-        return;
+        return static_cast<int>(version);
     }
     // WAL: readers (the review window) work while the recorder writes.
     db.exec("PRAGMA journal_mode = WAL");
-    for (auto step = version; step < kSchemaVersion; ++step) {
+    for (auto step = version; step < targetVersion; ++step) {
         Transaction transaction(db);
         db.exec(kMigrations[static_cast<std::size_t>(step)]);
         db.exec("PRAGMA user_version = " + std::to_string(step + 1));
         db.exec("PRAGMA application_id = " + std::to_string(kApplicationId));
         transaction.commit();
     }
+    return static_cast<int>(version);
 }
 
 }  // namespace tactiscope::core::storage

@@ -8,7 +8,7 @@
 
 namespace tactiscope::core::storage {
 
-inline constexpr int kSchemaVersion = 1;
+inline constexpr int kSchemaVersion = 2;
 // PRAGMA application_id of a Tactiscope store: "TSC1" in ASCII.
 inline constexpr std::int64_t kApplicationId = 0x54534331;
 
@@ -16,7 +16,9 @@ inline constexpr std::int64_t kApplicationId = 0x54534331;
 // file, migrates an older one (read-write only). Throws StorageError, and
 // leaves the file untouched, when it is another program's SQLite file, is
 // not an SQLite file, or has a newer schema than this build and is opened
-// read-write (read-only works: tables are only ever added to).
-void prepareSchema(Database& db);
+// read-write (read-only works: tables are only ever added to). Returns the
+// version the file had (0 for a new file). `targetVersion` below the
+// current one is for tests that need an old store.
+int prepareSchema(Database& db, int targetVersion = kSchemaVersion);
 
 }  // namespace tactiscope::core::storage

@@ -6,6 +6,7 @@
 #include "core/storage/ChunkCodec.h"
 #include "core/storage/RecorderLock.h"
 #include "core/storage/Schema.h"
+#include "core/text/UtcTime.h"
 
 #include <chrono>
 #include <cmath>
@@ -17,18 +18,7 @@
 namespace tactiscope::core::storage {
 namespace {
 
-std::string utcNow()
-{
-    const auto now = std::chrono::system_clock::now();
-    const std::time_t seconds = std::chrono::system_clock::to_time_t(now);
-    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
-    std::tm utc{};
-    gmtime_r(&seconds, &utc);
-    char text[64];  // roomy enough for any int the compiler imagines in a field
-    std::snprintf(text, sizeof text, "%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", utc.tm_year + 1900, utc.tm_mon + 1,
-                  utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec, static_cast<int>(ms));
-    return text;
-}
+using text::utcNow;
 
 // A random (version 4) UUID: the session's identity across stores, e.g.
 // when a session is exported and imported elsewhere.
@@ -52,19 +42,56 @@ SessionSummary summaryFrom(const Statement& row)
     SessionSummary s;
     s.id = row.int64(0);
     s.uuid = row.text(1);
-    s.metadata = {row.text(2), row.text(3), row.text(4), row.text(5), row.text(6),
-                  row.text(7), row.text(8), row.text(9), row.text(10)};
-    s.startedUtc = row.text(11);
-    s.endedUtc = row.text(12);
-    s.status = row.text(13);
-    s.verdict = row.text(14);
-    s.appVersion = row.text(15);
+    s.metadata = {row.text(2), row.text(3), row.text(4), row.text(5),  row.text(6),
+                  row.text(7), row.text(8), row.text(9), row.text(10), row.text(11)};
+    s.startedUtc = row.text(12);
+    s.endedUtc = row.text(13);
+    s.status = row.text(14);
+    s.verdict = row.text(15);
+    s.appVersion = row.text(16);
+    s.sampleRate_hz = row.real(17);
+    s.sampleCount = static_cast<std::uint64_t>(row.int64(18));
+    s.eventCount = static_cast<std::uint64_t>(row.int64(19));
     return s;
 }
 
-constexpr const char* kSummaryColumns =
-    "SELECT id, uuid, mode, subject, operator, site, notes, device_model, device_serial, device_firmware, "
-    "profile_json, started_utc, ended_utc, status, verdict, app_version FROM sessions ";
+// SQL for a session's sample count: the end of its last chunk or last gap,
+// whichever ends later; both are index lookups on the primary keys.
+std::string sampleEndSql(std::string_view session)
+{
+    const std::string id(session);
+    return "max(coalesce((SELECT first_index + count FROM chunks WHERE session_id = " + id +
+           " ORDER BY first_index DESC LIMIT 1), 0), coalesce((SELECT first_index + count FROM gaps WHERE session_id "
+           "= " +
+           id + " ORDER BY first_index DESC LIMIT 1), 0))";
+}
+
+const std::string& summaryQuery()
+{
+    static const std::string sql =
+        "SELECT id, uuid, mode, subject, operator, site, notes, device_model, device_serial, device_firmware, "
+        "profile_json, calibrations_json, started_utc, ended_utc, status, verdict, app_version, "
+        "(SELECT sample_rate_hz FROM channels WHERE session_id = s.id AND position = 0), " +
+        sampleEndSql("s.id") +
+        ", (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live') FROM sessions s ";
+    return sql;
+}
+
+// Escapes LIKE's wildcards so a search for "10%" finds "10%".
+std::string likePattern(const std::string& text)
+{
+    std::string pattern = "%";
+    for (const char c : text) {
+        if (c == '%' || c == '_' || c == '\\') pattern += '\\';
+        pattern += c;
+    }
+    return pattern + "%";
+}
+
+// A chunk holds at most this many samples per channel (unless one block is
+// larger): blocks of a commit are merged up to it, so an hour is a few
+// thousand rows rather than one per device frame.
+constexpr std::uint64_t kChunkSamples = 4096;
 
 }  // namespace
 
@@ -84,10 +111,16 @@ std::string_view toString(SessionStatus status)
 SessionStore::SessionStore(const std::string& path, Database::Access access)
     : m_db(path, access)
 {
-    prepareSchema(m_db);
-    if (access == Database::Access::ReadWrite) {
-        if (const auto lock = RecorderLock::tryAcquire(path)) markCrashedSessionsInterrupted();
+    const int foundVersion = prepareSchema(m_db);
+    if (access != Database::Access::ReadWrite) return;
+    if (foundVersion > 0 && foundVersion < 2) {
+        // Version 1 had no pyramid: build it for the sessions it holds.
+        Transaction transaction(m_db);
+        auto ids = m_db.prepare("SELECT id FROM sessions");
+        while (ids.step()) rebuildPyramids(ids.int64(0));
+        transaction.commit();
     }
+    if (const auto lock = RecorderLock::tryAcquire(path)) markCrashedSessionsInterrupted();
 }
 
 void SessionStore::deleteSession(std::int64_t session)
@@ -116,8 +149,8 @@ std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<cons
         throw StorageError("a session needs a positive sample rate");
     Transaction transaction(m_db);
     m_db.prepare("INSERT INTO sessions (uuid, mode, subject, operator, site, notes, device_model, device_serial, "
-                 "device_firmware, profile_json, started_utc, status, app_version) "
-                 "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, 'recording', ?)")
+                 "device_firmware, profile_json, calibrations_json, started_utc, status, app_version) "
+                 "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, 'recording', ?)")
         .bind(1, newUuid())
         .bind(2, m.mode)
         .bind(3, m.subject)
@@ -128,8 +161,9 @@ std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<cons
         .bind(8, m.deviceSerial)
         .bind(9, m.deviceFirmware)
         .bind(10, m.profileJson)
-        .bind(11, utcNow())
-        .bind(12, std::string_view(versionString()))
+        .bind(11, m.calibrationsJson)
+        .bind(12, utcNow())
+        .bind(13, std::string_view(versionString()))
         .run();
     const std::int64_t id = m_db.lastInsertId();
     auto insert = m_db.prepare("INSERT INTO channels VALUES (?, ?, ?, ?, ?, ?)");
@@ -146,37 +180,81 @@ std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<cons
     return id;
 }
 
+lod::LodTable SessionStore::pyramid(std::int64_t session, std::size_t channel)
+{
+    return lod::LodTable(m_db, session, channel, [this, session, channel](std::uint64_t first, std::uint64_t count) {
+        return readChannel(session, channel, first, count);
+    });
+}
+
+void SessionStore::appendChunk(std::int64_t session, std::span<const SampleBlock> run)
+{
+    std::uint64_t samples = 0;
+    for (const SampleBlock& block : run) samples += block.sampleCount();
+    m_db.prepare("INSERT INTO chunks VALUES (?, ?, ?, ?, ?)")
+        .bind(1, session)
+        .bind(2, static_cast<std::int64_t>(run.front().firstSampleIndex()))
+        .bind(3, run.front().t0_s())
+        .bind(4, static_cast<std::int64_t>(samples))
+        .bindBlob(5, encodeChunk(run))
+        .run();
+}
+
 void SessionStore::appendBlocks(std::int64_t session, std::span<const SampleBlock> blocks)
 {
     if (blocks.empty()) return;
     Transaction transaction(m_db);
+    const std::size_t channelCount = channels(session).size();
     std::uint64_t end = sampleCount(session);
-    auto chunk = m_db.prepare("INSERT INTO chunks VALUES (?, ?, ?, ?, ?)");
+    std::vector<lod::LodBuilder> pyramids;
+    for (std::size_t c = 0; c < channelCount; ++c) pyramids.push_back(pyramid(session, c).builderAt(end));
     auto gap = m_db.prepare("INSERT INTO gaps VALUES (?, ?, ?)");
-    for (const SampleBlock& block : blocks) {
-        if (block.sampleCount() == 0) continue;
+    std::vector<float> values;
+    std::size_t runFirst = 0;  // blocks [runFirst, b) are contiguous and go into one chunk
+    std::uint64_t runSamples = 0;
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+        const SampleBlock& block = blocks[b];
+        if (block.channelCount() != channelCount)
+            throw StorageError("a block has " + std::to_string(block.channelCount()) + " channels, session " +
+                               std::to_string(session) + " has " + std::to_string(channelCount) +
+                               "; nothing of this batch was stored");
         if (block.firstSampleIndex() < end)
             throw StorageError("samples arrived out of order (index " + std::to_string(block.firstSampleIndex()) +
                                " after " + std::to_string(end) + "); nothing of this batch was stored");
-        if (block.firstSampleIndex() > end) {
+        const bool lost = block.firstSampleIndex() > end;
+        if (b > runFirst && (lost || runSamples + block.sampleCount() > kChunkSamples || block.empty())) {
+            appendChunk(session, blocks.subspan(runFirst, b - runFirst));
+            runFirst = b;
+            runSamples = 0;
+        }
+        if (block.empty()) {
+            runFirst = b + 1;
+            continue;
+        }
+        if (lost) {
+            const std::uint64_t count = block.firstSampleIndex() - end;
             gap.bind(1, session)
                 .bind(2, static_cast<std::int64_t>(end))
-                .bind(3, static_cast<std::int64_t>(block.firstSampleIndex() - end))
+                .bind(3, static_cast<std::int64_t>(count))
                 .run();
+            for (auto& p : pyramids) p.addMissing(count);
         }
-        chunk.bind(1, session)
-            .bind(2, static_cast<std::int64_t>(block.firstSampleIndex()))
-            .bind(3, block.t0_s())
-            .bind(4, static_cast<std::int64_t>(block.sampleCount()))
-            .bindBlob(5, encodeChunk(block))
-            .run();
+        for (std::size_t c = 0; c < channelCount; ++c) {
+            const auto samples = block.channel(c);
+            values.assign(samples.begin(), samples.end());  // binary32, as stored
+            pyramids[c].add(values);
+        }
+        runSamples += block.sampleCount();
         end = block.endSampleIndex();
     }
+    if (runFirst < blocks.size()) appendChunk(session, blocks.subspan(runFirst));
+    for (std::size_t c = 0; c < channelCount; ++c) pyramid(session, c).write(pyramids[c].takeChangedRows());
     transaction.commit();
 }
 
 void SessionStore::markLostUntil(std::int64_t session, std::uint64_t endIndex)
 {
+    Transaction transaction(m_db);
     const std::uint64_t end = sampleCount(session);
     if (endIndex <= end) return;
     m_db.prepare("INSERT INTO gaps VALUES (?, ?, ?)")
@@ -184,6 +262,31 @@ void SessionStore::markLostUntil(std::int64_t session, std::uint64_t endIndex)
         .bind(2, static_cast<std::int64_t>(end))
         .bind(3, static_cast<std::int64_t>(endIndex - end))
         .run();
+    const std::size_t channelCount = channels(session).size();
+    for (std::size_t c = 0; c < channelCount; ++c) {
+        auto table = pyramid(session, c);
+        auto builder = table.builderAt(end);
+        builder.addMissing(endIndex - end);
+        table.write(builder.takeChangedRows());
+    }
+    transaction.commit();
+}
+
+void SessionStore::rebuildPyramids(std::int64_t session)
+{
+    m_db.prepare("DELETE FROM lod WHERE session_id = ?").bind(1, session).run();
+    const std::uint64_t end = sampleCount(session);
+    constexpr std::uint64_t kWindow = 1 << 20;
+    std::vector<float> values;
+    for (std::size_t c = 0; c < channels(session).size(); ++c) {
+        lod::LodBuilder builder;
+        for (std::uint64_t first = 0; first < end; first += kWindow) {
+            const auto samples = readChannel(session, c, first, kWindow);
+            values.assign(samples.begin(), samples.end());  // lost samples are NaN: counted, no value
+            builder.add(values);
+        }
+        pyramid(session, c).write(builder.takeChangedRows());
+    }
 }
 
 void SessionStore::endSession(std::int64_t session, SessionStatus status)
@@ -195,23 +298,50 @@ void SessionStore::endSession(std::int64_t session, SessionStatus status)
         .run();
 }
 
+void SessionStore::setVerdict(std::int64_t session, const std::string& verdict)
+{
+    m_db.prepare("UPDATE sessions SET verdict = ? WHERE id = ?").bind(1, verdict).bind(2, session).run();
+    if (m_db.changes() == 0) throw StorageError("there is no session " + std::to_string(session));
+}
+
 std::string SessionStore::checkIntegrity()
 {
     auto check = m_db.prepare("PRAGMA integrity_check");
     return check.step() ? check.text(0) : std::string("no answer from the integrity check");
 }
 
-std::vector<SessionSummary> SessionStore::sessions()
+std::vector<SessionSummary> SessionStore::sessions(const SessionFilter& filter)
 {
     std::vector<SessionSummary> result;
-    auto query = m_db.prepare(std::string(kSummaryColumns) + "ORDER BY started_utc DESC, id DESC");
+    std::string where = "WHERE 1";
+    std::vector<std::string> values;
+    const auto condition = [&](const std::string& value, const char* sql) {
+        if (value.empty()) return;
+        where += sql;
+        values.push_back(value);
+    };
+    condition(filter.startedFrom, " AND started_utc >= ?");
+    condition(filter.startedBefore, " AND started_utc < ?");
+    condition(filter.mode, " AND mode = ?");
+    condition(filter.subject, " AND subject = ?");
+    condition(filter.operatorName, " AND operator = ?");
+    condition(filter.verdict, " AND verdict = ?");
+    if (!filter.text.empty()) {
+        // One parameter, numbered, used for every searched column.
+        const std::string like = " LIKE ?" + std::to_string(values.size() + 1) + " ESCAPE '\\'";
+        where += " AND (subject" + like + " OR operator" + like + " OR site" + like + " OR notes" + like +
+                 " OR verdict" + like + " OR device_serial" + like + ")";
+        values.push_back(likePattern(filter.text));
+    }
+    auto query = m_db.prepare(summaryQuery() + where + " ORDER BY started_utc DESC, id DESC");
+    for (std::size_t i = 0; i < values.size(); ++i) query.bind(static_cast<int>(i + 1), values[i]);
     while (query.step()) result.push_back(summaryFrom(query));
     return result;
 }
 
 std::optional<SessionSummary> SessionStore::session(std::int64_t id)
 {
-    auto query = m_db.prepare(std::string(kSummaryColumns) + "WHERE id = ?");
+    auto query = m_db.prepare(summaryQuery() + "WHERE id = ?");
     query.bind(1, id);
     if (!query.step()) return std::nullopt;
     return summaryFrom(query);
@@ -232,11 +362,7 @@ std::vector<StoredChannel> SessionStore::channels(std::int64_t session)
 
 std::uint64_t SessionStore::sampleCount(std::int64_t session)
 {
-    // The last chunk or the last gap, whichever ends later; both are index
-    // lookups on the primary keys.
-    auto query = m_db.prepare("SELECT max(coalesce((SELECT first_index + count FROM chunks WHERE session_id = ?1 "
-                              "ORDER BY first_index DESC LIMIT 1), 0), coalesce((SELECT first_index + count FROM gaps "
-                              "WHERE session_id = ?1 ORDER BY first_index DESC LIMIT 1), 0))");
+    auto query = m_db.prepare("SELECT " + sampleEndSql("?1"));
     query.bind(1, session);
     return query.step() ? static_cast<std::uint64_t>(query.int64(0)) : 0;
 }
@@ -254,6 +380,7 @@ std::vector<SampleGap> SessionStore::gaps(std::int64_t session)
 std::vector<double> SessionStore::readChannel(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,
                                               std::uint64_t count)
 {
+    const ReadSnapshot snapshot(m_db);
     const std::size_t channelCount = channels(session).size();
     if (channel >= channelCount)
         throw StorageError("session " + std::to_string(session) + " has no channel " + std::to_string(channel));
@@ -278,10 +405,22 @@ std::vector<double> SessionStore::readChannel(std::int64_t session, std::size_t 
         next = std::max(next, chunkFirst);
         const std::uint64_t take = std::min(chunkFirst + chunkCount, end) - next;
         decodeChunkChannel(query.blob(2), channelCount, chunkCount, channel, next - chunkFirst, take, result);
+        ++m_chunksRead;
         next += take;
     }
     result.resize(end - firstIndex, std::numeric_limits<double>::quiet_NaN());
     return result;
+}
+
+std::vector<OverviewPoint> SessionStore::overview(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,
+                                                  std::uint64_t count, std::size_t points)
+{
+    const ReadSnapshot snapshot(m_db);  // samples and pyramid of the same commit
+    if (channel >= channels(session).size())
+        throw StorageError("session " + std::to_string(session) + " has no channel " + std::to_string(channel));
+    const std::uint64_t end = std::min(sampleCount(session), firstIndex + count);
+    if (firstIndex >= end) return {};
+    return pyramid(session, channel).overview(firstIndex, end, points);
 }
 
 }  // namespace tactiscope::core::storage

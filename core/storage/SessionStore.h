@@ -6,6 +6,8 @@
 
 #include "core/ChannelDescriptor.h"
 #include "core/storage/Database.h"
+#include "core/storage/LodTable.h"
+#include "core/storage/SessionRecords.h"
 
 #include <cstdint>
 #include <optional>
@@ -32,7 +34,8 @@ struct SessionMetadata {
     std::string deviceModel;
     std::string deviceSerial;
     std::string deviceFirmware;
-    std::string profileJson;  // the sensor profile used, copied in
+    std::string profileJson;       // the sensor profile used, copied in
+    std::string calibrationsJson;  // the calibration records used, copied in (a JSON array)
 };
 
 struct SessionSummary {
@@ -44,7 +47,24 @@ struct SessionSummary {
     std::string status;
     std::string verdict;
     std::string appVersion;
+    double sampleRate_hz = 0.0;
+    std::uint64_t sampleCount = 0;  // per channel, including lost samples
+    std::uint64_t eventCount = 0;   // live events of any kind
+    double duration_s() const { return sampleRate_hz > 0.0 ? static_cast<double>(sampleCount) / sampleRate_hz : 0.0; }
 };
+
+// Which sessions to list; empty fields match everything.
+struct SessionFilter {
+    std::string startedFrom;    // UTC, ISO 8601 or a prefix such as "2026-11-21"; inclusive
+    std::string startedBefore;  // exclusive
+    std::string mode;
+    std::string subject;       // exact
+    std::string operatorName;  // exact
+    std::string verdict;       // exact
+    std::string text;          // found in subject, operator, site, notes, verdict or device serial (any case)
+};
+
+using lod::OverviewPoint;
 
 struct StoredChannel {
     ChannelDescriptor descriptor;
@@ -73,6 +93,7 @@ public:
     // recording, where no later block marks the gap). No-op when none are.
     void markLostUntil(std::int64_t session, std::uint64_t endIndex);
     void endSession(std::int64_t session, SessionStatus status);
+    void setVerdict(std::int64_t session, const std::string& verdict);
     // Deletes a session with its channels, samples and gaps. Throws
     // StorageError for an unknown id or a session still being recorded.
     void deleteSession(std::int64_t session);
@@ -81,7 +102,7 @@ public:
     int markCrashedSessionsInterrupted();
 
     // Reading.
-    std::vector<SessionSummary> sessions();  // newest first
+    std::vector<SessionSummary> sessions(const SessionFilter& filter = {});  // newest first
     std::optional<SessionSummary> session(std::int64_t id);
     std::vector<StoredChannel> channels(std::int64_t session);
     std::uint64_t sampleCount(std::int64_t session);  // per channel, including gaps and lost ones at the end
@@ -90,6 +111,33 @@ public:
     // recording; samples inside a gap read as NaN.
     std::vector<double> readChannel(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,
                                     std::uint64_t count);
+    // The min and max of about `points` stretches of samples
+    // [firstIndex, firstIndex + count) of one channel, exact, read from the
+    // pyramid (see LodTable::overview) without touching most samples.
+    std::vector<OverviewPoint> overview(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,
+                                        std::uint64_t count, std::size_t points);
+    // Sample chunks decoded by this connection so far: how much reading cost.
+    std::uint64_t chunksRead() const { return m_chunksRead; }
+
+    // Events, readings and annotations (SessionStoreRecords.cpp).
+    void addEvents(std::int64_t session, std::span<const SessionEvent> events);  // one transaction
+    std::vector<SessionEvent> events(std::int64_t session, const std::string& analysis = kLiveAnalysis);
+    std::vector<std::string> analyses(std::int64_t session);  // "live" and saved re-analyses
+    std::int64_t addReading(std::int64_t session, const SessionReading& reading);
+    std::vector<SessionReading> readings(std::int64_t session);
+    std::int64_t addAnnotation(std::int64_t session, const Annotation& annotation);
+    void updateAnnotation(std::int64_t annotation, const std::string& text);
+    void deleteAnnotation(std::int64_t annotation);
+    std::vector<Annotation> annotations(std::int64_t session);
+
+    // The calibration history, shared by all sessions of the store.
+    std::int64_t addCalibration(const calibration::CalibrationRecord& record);
+    std::optional<StoredCalibration> calibration(std::int64_t id);
+    std::vector<StoredCalibration>
+    calibrations(const std::string& sensor = {});                          // oldest first; all sensors when empty
+    void linkCalibration(std::int64_t session, std::int64_t calibration);  // the session used it
+    std::vector<std::int64_t> calibrationsOfSession(std::int64_t session);
+    std::vector<std::int64_t> sessionsUsingCalibration(std::int64_t calibration);
 
     // SQLite's integrity check: "ok", or its first finding.
     std::string checkIntegrity();
@@ -97,7 +145,12 @@ public:
     Database& database() { return m_db; }
 
 private:
+    void appendChunk(std::int64_t session, std::span<const SampleBlock> run);
+    void rebuildPyramids(std::int64_t session);
+    lod::LodTable pyramid(std::int64_t session, std::size_t channel);
+
     Database m_db;
+    std::uint64_t m_chunksRead = 0;
 };
 
 }  // namespace tactiscope::core::storage

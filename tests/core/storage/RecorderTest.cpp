@@ -81,10 +81,12 @@ TEST_F(RecorderTest, StoresEveryConsumedSampleFromSampleZero)
     EXPECT_TRUE(store.gaps(id).empty());
     const auto force = store.readChannel(id, 1, 0, 3000);
     for (std::uint64_t i = 0; i < 3000; ++i) ASSERT_EQ(force[i], static_cast<double>(5000 + i) + 0.5) << i;
-    auto time = store.database().prepare("SELECT first_time_s FROM chunks WHERE session_id = ? AND first_index = 30");
-    time.bind(1, id);
-    ASSERT_TRUE(time.step());
-    EXPECT_NEAR(time.real(0), 0.030, 1e-12);
+    // Times are rebased with the indices: each chunk starts at index / rate.
+    auto chunks = store.database().prepare("SELECT first_index, first_time_s FROM chunks WHERE session_id = ?");
+    chunks.bind(1, id);
+    int count = 0;
+    for (; chunks.step(); ++count) EXPECT_NEAR(chunks.real(1), static_cast<double>(chunks.int64(0)) / 1000.0, 1e-12);
+    EXPECT_GT(count, 0);
 }
 
 TEST_F(RecorderTest, MemoryStaysBoundedWhileTheDiskIsHeldUpAndTheOverflowIsAGap)

@@ -7,7 +7,7 @@
 #include "core/storage/ChunkCodec.h"
 #include "core/storage/Schema.h"
 
-#include "support/TempPath.h"
+#include "support/TempDirectory.h"
 
 #include <gtest/gtest.h>
 
@@ -21,19 +21,7 @@ using namespace tactiscope::core::storage;
 
 namespace {
 
-class SessionStoreTest : public ::testing::Test {
-protected:
-    void SetUp() override
-    {
-        m_dir = tactiscope::testing::uniqueTempPath(::testing::UnitTest::GetInstance()->current_test_info()->name());
-        std::filesystem::remove_all(m_dir);
-        std::filesystem::create_directories(m_dir);
-    }
-    void TearDown() override { std::filesystem::remove_all(m_dir); }
-    std::string file(const char* name) const { return (m_dir / name).string(); }
-
-    std::filesystem::path m_dir;
-};
+using SessionStoreTest = tactiscope::testing::TempDirectoryTest;
 
 // Values exactly representable in binary32, so the round trip is exact:
 // channel c, sample i → 1000 c + i / 4.
@@ -74,8 +62,9 @@ TEST_F(SessionStoreTest, SessionsChannelsSamplesAndGapsRoundTrip)
     std::int64_t id = 0;
     {
         SessionStore store(file("s.tactiscope"));
-        SessionMetadata metadata{"panel-scan", "door-17", "Ada",   "press 3",           "first shift",
-                                 "TSP-2",      "SN42",    "1.2.0", R"({"profile":"x"})"};
+        SessionMetadata metadata{"panel-scan",         "door-17",      "Ada",  "press 3",
+                                 "first shift",        "TSP-2",        "SN42", "1.2.0",
+                                 R"({"profile":"x"})", R"([{"id":1}])"};
         id = store.beginSession(metadata, kChannels, 500.0);
         // Samples 0–99, then 30 lost (100–129), then 130–229 in three blocks.
         store.appendBlocks(id, std::vector{blockAt(0, 60), blockAt(60, 40)});
@@ -97,6 +86,10 @@ TEST_F(SessionStoreTest, SessionsChannelsSamplesAndGapsRoundTrip)
     EXPECT_EQ(s.metadata.deviceSerial, "SN42");
     EXPECT_EQ(s.metadata.deviceFirmware, "1.2.0");
     EXPECT_EQ(s.metadata.profileJson, R"({"profile":"x"})");
+    EXPECT_EQ(s.metadata.calibrationsJson, R"([{"id":1}])");
+    EXPECT_DOUBLE_EQ(s.sampleRate_hz, 500.0);
+    EXPECT_EQ(s.sampleCount, 230u);
+    EXPECT_DOUBLE_EQ(s.duration_s(), 0.46);
     EXPECT_EQ(s.status, "complete");
     EXPECT_EQ(s.startedUtc.size(), 24u);  // 2026-11-21T14:20:28.123Z
     EXPECT_EQ(s.startedUtc.back(), 'Z');

@@ -1,0 +1,60 @@
+// What a session holds beside its samples: events (detector defects,
+// contacts and presses, alarms, operator markers), readings (a compliance
+// or capacitive result), a reviewer's annotations, and the calibration
+// records the store keeps for every sensor. Times are seconds from the
+// session start, like the samples'.
+#pragma once
+
+#include "core/calibration/CalibrationRecord.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace tactiscope::core::storage {
+
+// The analysis that recorded events live; a re-analysis saved by a
+// reviewer gets its own name, so the live events are never overwritten.
+inline constexpr const char* kLiveAnalysis = "live";
+
+struct SessionEvent {
+    std::int64_t id = 0;  // given by the store
+    std::string analysis = kLiveAnalysis;
+    std::string kind;  // "defect", "contact", "press", "alarm" or "marker"
+    double start_s = 0.0;
+    double end_s = 0.0;
+    int direction = 0;  // a defect's order: +1 A then B, −1 B then A
+    std::optional<double> peakR;
+    std::optional<double> lag_s;
+    std::optional<double> speed_m_per_s;
+    std::string note;  // an alarm's message, a marker's note
+};
+
+struct SessionReading {
+    std::int64_t id = 0;
+    std::string kind;  // "compliance" or "capacitive"
+    double start_s = 0.0;
+    double end_s = 0.0;
+    std::string quantity;  // e.g. "stiffness", "force"
+    double value = 0.0;
+    std::string unit;                     // e.g. "N/m", "uN"
+    std::optional<double> standardError;  // in `unit`
+    std::string site;                     // where on the subject, e.g. a phantom grid cell "B3"
+    std::string detailsJson;              // the rest, e.g. displacement range and slope of a press
+};
+
+struct Annotation {
+    std::int64_t id = 0;
+    double time_s = 0.0;
+    std::string author;
+    std::string text;
+    std::string createdUtc;   // set by the store
+    std::string modifiedUtc;  // set by the store
+};
+
+struct StoredCalibration {
+    std::int64_t id = 0;
+    calibration::CalibrationRecord record;
+};
+
+}  // namespace tactiscope::core::storage
