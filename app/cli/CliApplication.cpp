@@ -1,11 +1,13 @@
 // Subcommand table and dispatch for tactiscope-cli.
 #include "CliApplication.h"
 
+#include "AnalyzeCommand.h"
 #include "CalibrateCapacitiveCommand.h"
 #include "CliSupport.h"
 #include "ComplianceCommand.h"
 #include "DetectCommand.h"
 #include "EmulateCommand.h"
+#include "ImportCommand.h"
 #include "ModelCommand.h"
 #include "PortsCommand.h"
 #include "RecordCommand.h"
@@ -27,10 +29,12 @@ struct Command {
 };
 
 constexpr std::array kCommands{
+    Command{"analyze", "Re-run the detector on a stored panel-scan session (seed 000).", runAnalyze},
     Command{"calibrate-capacitive", "C0 and sensitivity of a capacitive beam (seed 002).", runCalibrateCapacitive},
     Command{"compliance", "Object stiffness from a compliance probe's forces (seed 001).", runCompliance},
     Command{"detect", "Find surface deflections in a CSV recording (seed 000).", runDetect},
     Command{"emulate", "A simulated probe behind a pseudo-terminal (try the serial path).", runEmulate},
+    Command{"import", "Import a CSV recording from another program as a session.", runImport},
     Command{"model", "What the sensor model gives for a profile (JSON).", runModel},
     Command{"ports", "List serial ports and HID devices.", runPorts},
     Command{"record", "Record a probe on a serial port into a session store.", runRecord},

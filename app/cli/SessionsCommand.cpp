@@ -2,6 +2,7 @@
 #include "SessionsCommand.h"
 
 #include "CliSupport.h"
+#include "SessionArgument.h"
 #include "core/storage/SessionExport.h"
 #include "core/storage/SessionStore.h"
 #include "core/text/JsonWriter.h"
@@ -21,20 +22,6 @@ namespace {
 using core::storage::SessionStore;
 using core::storage::SessionSummary;
 using core::storage::StorageError;
-
-// "ID" or "last" (the newest session); nothing when neither names one.
-std::optional<std::int64_t> resolveId(SessionStore& store, const QString& text)
-{
-    if (text == QLatin1String("last")) {
-        const auto sessions = store.sessions();
-        if (sessions.empty()) return std::nullopt;
-        return sessions.front().id;
-    }
-    bool ok = false;
-    const qlonglong id = text.toLongLong(&ok);
-    if (!ok || !store.session(id)) return std::nullopt;
-    return id;
-}
 
 int list(SessionStore& store, bool json)
 {
@@ -114,6 +101,12 @@ int show(SessionStore& store, std::int64_t id, bool json)
             << (d.unit.empty() ? toQString(core::toString(d.kind)) : toQString(d.unit)) << "]";
     }
     out << " at " << channels.front().sampleRate_hz << " Hz\n";
+    QStringList analyses;
+    for (const auto& analysis : store.analyses(id))
+        analyses << QStringLiteral("%1 %2").arg(store.events(id, analysis).size()).arg(toQString(analysis));
+    line("events", analyses.join(QStringLiteral(", ")).toStdString());
+    line("readings", std::to_string(store.readings(id).size()));
+    line("annotations", std::to_string(store.annotations(id).size()));
     return kExitOk;
 }
 
@@ -216,7 +209,7 @@ int runSessions(const QStringList& arguments)
         SessionStore store(db, action == QLatin1String("delete") ? core::storage::Database::Access::ReadWrite
                                                                  : core::storage::Database::Access::ReadOnly);
         if (action == QLatin1String("list")) return list(store, parser.isSet(QStringLiteral("json")));
-        const auto id = resolveId(store, positional[1]);
+        const auto id = resolveSession(store, positional[1]);
         if (!id) {
             printError(positional[1] == QLatin1String("last")
                            ? QStringLiteral("%1 holds no sessions").arg(toQString(db))

@@ -30,22 +30,83 @@ SessionSummary requireSession(SessionStore& store, std::int64_t session)
 
 using RowFunction = std::function<void(std::uint64_t, const std::vector<std::vector<double>>&, std::size_t)>;
 
-// Calls row(index, window, s) for every stored (non-gap) sample, in order;
-// window[k][s] is the value of channel wanted[k]. Gaps are the same on
-// every channel, so any channel tells them.
+// Calls row(index, window, s) for every stored sample (not in a gap), in
+// order; window[k][s] is the value of channel wanted[k].
 void forEachSample(SessionStore& store, std::int64_t session, const std::vector<std::size_t>& wanted,
                    const RowFunction& row)
 {
+    const ReadSnapshot snapshot(store.database());  // one consistent state, even while recording
     const std::uint64_t total = store.sampleCount(session);
+    const auto gaps = store.gaps(session);
+    auto gap = gaps.begin();
     std::vector<std::vector<double>> window(wanted.size());
     for (std::uint64_t first = 0; first < total; first += kWindow) {
         for (std::size_t k = 0; k < wanted.size(); ++k)
             window[k] = store.readChannel(session, wanted[k], first, kWindow);
         for (std::size_t s = 0; s < window[0].size(); ++s) {
-            if (std::isnan(window[0][s])) continue;  // a gap: no sample was stored
-            row(first + s, window, s);
+            const std::uint64_t index = first + s;
+            while (gap != gaps.end() && gap->firstIndex + gap->count <= index) ++gap;
+            if (gap != gaps.end() && index >= gap->firstIndex) continue;  // lost: no row
+            row(index, window, s);
         }
     }
+}
+
+void optional(text::JsonWriter& json, const char* key, std::optional<double> value)
+{
+    json.key(key);
+    if (value)
+        json.value(*value);
+    else
+        json.null();
+}
+
+// Events of every analysis, readings and annotations.
+void writeRecords(text::JsonWriter& json, SessionStore& store, std::int64_t session)
+{
+    json.key("events").beginArray();
+    for (const auto& analysis : store.analyses(session)) {
+        for (const auto& e : store.events(session, analysis)) {
+            json.beginObject();
+            json.key("analysis").value(e.analysis);
+            json.key("kind").value(e.kind);
+            json.key("start_s").value(e.start_s);
+            json.key("end_s").value(e.end_s);
+            json.key("direction").value(static_cast<long long>(e.direction));
+            optional(json, "peak_r", e.peakR);
+            optional(json, "lag_s", e.lag_s);
+            optional(json, "speed_m_per_s", e.speed_m_per_s);
+            json.key("note").value(e.note);
+            json.endObject();
+        }
+    }
+    json.endArray();
+    json.key("readings").beginArray();
+    for (const auto& r : store.readings(session)) {
+        json.beginObject();
+        json.key("kind").value(r.kind);
+        json.key("start_s").value(r.start_s);
+        json.key("end_s").value(r.end_s);
+        json.key("quantity").value(r.quantity);
+        json.key("value").value(r.value);
+        json.key("unit").value(r.unit);
+        optional(json, "standard_error", r.standardError);
+        json.key("site").value(r.site);
+        json.key("details_json").value(r.detailsJson);
+        json.endObject();
+    }
+    json.endArray();
+    json.key("annotations").beginArray();
+    for (const auto& a : store.annotations(session)) {
+        json.beginObject();
+        json.key("time_s").value(a.time_s);
+        json.key("author").value(a.author);
+        json.key("text").value(a.text);
+        json.key("created_utc").value(a.createdUtc);
+        json.key("modified_utc").value(a.modifiedUtc);
+        json.endObject();
+    }
+    json.endArray();
 }
 
 void writeMetadata(text::JsonWriter& json, SessionStore& store, std::int64_t session)
@@ -67,6 +128,8 @@ void writeMetadata(text::JsonWriter& json, SessionStore& store, std::int64_t ses
     json.key("device_serial").value(s.metadata.deviceSerial);
     json.key("device_firmware").value(s.metadata.deviceFirmware);
     json.key("app_version").value(s.appVersion);
+    json.key("profile_json").value(s.metadata.profileJson);
+    json.key("calibrations_json").value(s.metadata.calibrationsJson);
     json.key("samples_per_channel").value(static_cast<long long>(store.sampleCount(session)));
     json.endObject();
     json.key("channels").beginArray();
@@ -87,6 +150,7 @@ void writeMetadata(text::JsonWriter& json, SessionStore& store, std::int64_t ses
         json.endObject();
     }
     json.endArray();
+    writeRecords(json, store, session);
 }
 
 }  // namespace

@@ -1,0 +1,158 @@
+// The analyze subcommand: a stored session's cantilever channels through
+// the offline detector, stretch by stretch between lost samples.
+#include "AnalyzeCommand.h"
+
+#include "CliSupport.h"
+#include "DetectorOptions.h"
+#include "SessionArgument.h"
+#include "core/detector/OfflineDetection.h"
+#include "core/storage/SessionStore.h"
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+
+namespace tactiscope::cli {
+namespace {
+
+using core::detector::DefectEvent;
+using core::storage::SessionStore;
+
+// The cantilever channels: named with --channels, else every strain channel.
+std::optional<QString> pickChannels(const std::vector<core::storage::StoredChannel>& channels, const QString& names,
+                                    std::vector<std::size_t>& picked)
+{
+    if (names.isEmpty()) {
+        for (std::size_t c = 0; c < channels.size(); ++c)
+            if (channels[c].descriptor.kind == core::ChannelKind::Strain) picked.push_back(c);
+        if (picked.size() < 2)
+            return QStringLiteral("the session has fewer than two strain channels; name the cantilevers with "
+                                  "--channels A,B");
+        return std::nullopt;
+    }
+    for (const QString& name : names.split(QLatin1Char(','))) {
+        std::optional<std::size_t> found;
+        for (std::size_t c = 0; c < channels.size(); ++c)
+            if (toQString(channels[c].descriptor.name) == name.trimmed()) found = c;
+        if (!found) return QStringLiteral("the session has no channel '%1'").arg(name.trimmed());
+        picked.push_back(*found);
+    }
+    if (picked.size() < 2) return QStringLiteral("--channels needs at least two cantilevers, e.g. a,b");
+    return std::nullopt;
+}
+
+// Runs the detector over each stretch of samples that all have a value (a
+// gap restarts it, as a reconnection restarts the live detector) and
+// returns the events, in time order.
+std::vector<DefectEvent> detectStretches(const std::vector<std::vector<double>>& series, double dt_s,
+                                         const DetectorOptions& options, std::size_t& analysed)
+{
+    std::vector<DefectEvent> events;
+    const std::size_t total = series.front().size();
+    const auto complete = [&](std::size_t i) {
+        for (const auto& s : series)
+            if (std::isnan(s[i])) return false;
+        return true;
+    };
+    for (std::size_t first = 0; first < total;) {
+        if (!complete(first)) {
+            ++first;
+            continue;
+        }
+        std::size_t end = first;
+        while (end < total && complete(end)) ++end;
+        core::detector::SeriesInput input{static_cast<double>(first) * dt_s, {}, {}};
+        for (const auto& s : series) input.cantilevers.emplace_back(std::span(s).subspan(first, end - first));
+        const auto outputs = core::detector::detectSeries(input, options.parameters, options.threads);
+        const auto found = core::detector::segmentEvents(outputs, dt_s, options.hold_s, options.spacing_m);
+        events.insert(events.end(), found.begin(), found.end());
+        analysed += end - first;
+        first = end;
+    }
+    return events;
+}
+
+}  // namespace
+
+int runAnalyze(const QStringList& arguments)
+{
+    const QString name = QStringLiteral("analyze");
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QStringLiteral("Re-run the surface-deflection detector (seed 000) on a stored panel-scan session and print "
+                       "its events.\nThe detector restarts after lost samples. The recorded events are kept; "
+                       "--save stores the new ones beside them under a name."));
+    parser.addOptions({
+        {QStringLiteral("db"), QStringLiteral("The session store (required)."), QStringLiteral("FILE")},
+        {QStringLiteral("session"), QStringLiteral("The session: its id, or 'last' (required)."),
+         QStringLiteral("ID|last")},
+        {QStringLiteral("channels"), QStringLiteral("Cantilever channels in probe order (default: the strain ones)."),
+         QStringLiteral("A,B")},
+        {QStringLiteral("save"), QStringLiteral("Store the events as a re-analysis named NAME."),
+         QStringLiteral("NAME")},
+    });
+    addDetectorOptions(parser);
+    if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
+    const QString usage = commandUsage(parser, name);
+    if (!parser.positionalArguments().isEmpty())
+        return usageError(QStringLiteral("unexpected '%1'").arg(parser.positionalArguments().front()), usage);
+    if (!parser.isSet(QStringLiteral("db"))) return usageError(QStringLiteral("--db FILE is required"), usage);
+    if (!parser.isSet(QStringLiteral("session")))
+        return usageError(QStringLiteral("--session ID|last is required"), usage);
+    DetectorOptions options;
+    if (const auto error = readDetectorOptions(parser, options)) return usageError(*error, usage);
+    const QString save = parser.value(QStringLiteral("save"));
+    if (parser.isSet(QStringLiteral("save")) && (save.isEmpty() || save == QLatin1String(core::storage::kLiveAnalysis)))
+        return usageError(QStringLiteral("--save needs a name other than 'live'"), usage);
+
+    try {
+        SessionStore store(parser.value(QStringLiteral("db")).toStdString(),
+                           save.isEmpty() ? core::storage::Database::Access::ReadOnly
+                                          : core::storage::Database::Access::ReadWrite);
+        const auto id = resolveSession(store, parser.value(QStringLiteral("session")));
+        if (!id)
+            return usageError(
+                QStringLiteral("no session '%1' in the store").arg(parser.value(QStringLiteral("session"))), usage);
+        const auto summary = *store.session(*id);
+        if (summary.metadata.mode != "panel-scan")
+            return usageError(QStringLiteral("session %1 is a %2 session; analyze runs the panel-scan detector")
+                                  .arg(*id)
+                                  .arg(toQString(summary.metadata.mode)),
+                              usage);
+        const auto channels = store.channels(*id);
+        std::vector<std::size_t> picked;
+        if (const auto error = pickChannels(channels, parser.value(QStringLiteral("channels")), picked))
+            return usageError(*error, usage);
+        const double dt_s = 1.0 / channels.front().sampleRate_hz;
+        options.parameters.sampleInterval_s = dt_s;
+        std::size_t lags = 0;
+        try {
+            lags = core::detector::resolve(options.parameters).lags.size();
+        } catch (const std::invalid_argument& e) {
+            return usageError(toQString(e.what()), usage);
+        }
+        std::vector<std::vector<double>> series;
+        for (const std::size_t c : picked) series.push_back(store.readChannel(*id, c, 0, summary.sampleCount));
+        const auto started = std::chrono::steady_clock::now();
+        std::size_t analysed = 0;
+        const auto events = detectStretches(series, dt_s, options, analysed);
+        const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        if (!save.isEmpty()) {
+            std::vector<core::storage::SessionEvent> stored;
+            for (const DefectEvent& e : events)
+                stored.push_back({0, save.toStdString(), "defect", e.start_s, e.end_s, e.direction, e.peakR,
+                                  e.peakLag_s, e.speed_m_per_s, ""});
+            store.addEvents(*id, stored);
+        }
+        if (options.json)
+            std::cout << eventsJson(analysed, lags, elapsed_s, events, options) << '\n';
+        else
+            printDetection(QStringLiteral("session %1").arg(*id), analysed, dt_s, lags, elapsed_s, events, options);
+    } catch (const core::storage::StorageError& e) {
+        printError(toQString(e.what()));
+        return kExitUsage;  // the store named by --db cannot be read
+    }
+    return kExitOk;
+}
+
+}  // namespace tactiscope::cli

@@ -1,0 +1,90 @@
+// The import subcommand: options → CsvImportOptions, one line of result.
+#include "ImportCommand.h"
+
+#include "CliSupport.h"
+#include "core/storage/CsvImport.h"
+
+#include <QTextStream>
+
+#include <optional>
+
+namespace tactiscope::cli {
+
+int runImport(const QStringList& arguments)
+{
+    const QString name = QStringLiteral("import");
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QStringLiteral("Import a CSV recording as a new session.\n"
+                       "Columns are 'name', 'name [unit]' or 'name (unit)'. Times come from a column named t, time,\n"
+                       "time_s or timestamp (seconds; [ms] or [us] in its header scale it) or --time-column; without\n"
+                       "one, give --rate. Missing rows become gaps. A Tactiscope export's X.meta.json beside X.csv\n"
+                       "restores units, kinds, metadata, events, readings and annotations."));
+    parser.addPositionalArgument(QStringLiteral("FILE.csv"), QStringLiteral("The recording."));
+    parser.addOptions({
+        {QStringLiteral("db"), QStringLiteral("The session store (required; created if missing)."),
+         QStringLiteral("FILE")},
+        {QStringLiteral("rate"), QStringLiteral("Sample rate in Hz: rows are consecutive samples."),
+         QStringLiteral("HZ")},
+        {QStringLiteral("time-column"), QStringLiteral("The time column (seconds)."), QStringLiteral("NAME")},
+        {QStringLiteral("columns"), QStringLiteral("Data columns to import, in order (default: all but time)."),
+         QStringLiteral("A,B,…")},
+        {QStringLiteral("mode"), QStringLiteral("panel-scan (default), palpation or capacitive."),
+         QStringLiteral("MODE")},
+        {QStringLiteral("subject"), QStringLiteral("Panel or phantom id."), QStringLiteral("ID")},
+        {QStringLiteral("operator"), QStringLiteral("Who recorded it."), QStringLiteral("NAME")},
+        {QStringLiteral("notes"), QStringLiteral("Free text, e.g. the program it came from."), QStringLiteral("TEXT")},
+    });
+    if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
+    const QString usage = commandUsage(parser, name);
+    if (parser.positionalArguments().size() != 1) return usageError(QStringLiteral("import needs one FILE.csv"), usage);
+    if (!parser.isSet(QStringLiteral("db"))) return usageError(QStringLiteral("--db FILE is required"), usage);
+
+    core::storage::CsvImportOptions options;
+    if (parser.isSet(QStringLiteral("rate"))) {
+        options.rate_hz = parseNumber(parser.value(QStringLiteral("rate")));
+        if (!options.rate_hz || *options.rate_hz <= 0.0)
+            return usageError(QStringLiteral("--rate must be a positive number of Hz, got '%1'")
+                                  .arg(parser.value(QStringLiteral("rate"))),
+                              usage);
+    }
+    options.timeColumn = parser.value(QStringLiteral("time-column")).toStdString();
+    if (parser.isSet(QStringLiteral("columns"))) {
+        for (const QString& column : parser.value(QStringLiteral("columns")).split(QLatin1Char(',')))
+            options.columns.push_back(column.trimmed().toStdString());
+    }
+    auto& metadata = options.metadata;
+    metadata.mode = parser.value(QStringLiteral("mode")).toStdString();
+    if (!metadata.mode.empty() && metadata.mode != "panel-scan" && metadata.mode != "palpation" &&
+        metadata.mode != "capacitive")
+        return usageError(QStringLiteral("--mode must be panel-scan, palpation or capacitive"), usage);
+    metadata.subject = parser.value(QStringLiteral("subject")).toStdString();
+    metadata.operatorName = parser.value(QStringLiteral("operator")).toStdString();
+    metadata.notes = parser.value(QStringLiteral("notes")).toStdString();
+
+    const QString input = parser.positionalArguments().front();
+    std::optional<core::storage::SessionStore> store;
+    try {
+        store.emplace(parser.value(QStringLiteral("db")).toStdString());
+    } catch (const core::storage::StorageError& e) {
+        printError(toQString(e.what()));
+        return kExitUsage;  // not a store, or a newer one
+    }
+    try {
+        const auto result = core::storage::importCsv(*store, input.toStdString(), options);
+        QTextStream out(stdout);
+        out << "Imported " << input << " as session " << result.session << ": " << result.rows << " rows of "
+            << result.channels.size() << (result.channels.size() == 1 ? " channel" : " channels") << " at "
+            << QString::number(result.rate_hz, 'g', 12) << " Hz, " << result.lostSamples << " missing"
+            << (result.usedSideFile ? ", metadata from the side file" : "") << '\n';
+    } catch (const core::io::CsvError& e) {
+        printError(toQString(e.what()));
+        return kExitUsage;
+    } catch (const core::storage::StorageError& e) {
+        printError(toQString(e.what()));
+        return kExitFailure;  // busy, disk full: nothing of the import was kept
+    }
+    return kExitOk;
+}
+
+}  // namespace tactiscope::cli

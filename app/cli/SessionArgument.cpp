@@ -1,0 +1,19 @@
+// "ID" or "last" → a session id of the store.
+#include "SessionArgument.h"
+
+namespace tactiscope::cli {
+
+std::optional<std::int64_t> resolveSession(core::storage::SessionStore& store, const QString& text)
+{
+    if (text == QLatin1String("last")) {
+        const auto sessions = store.sessions();
+        if (sessions.empty()) return std::nullopt;
+        return sessions.front().id;
+    }
+    bool ok = false;
+    const qlonglong id = text.toLongLong(&ok);
+    if (!ok || !store.session(id)) return std::nullopt;
+    return id;
+}
+
+}  // namespace tactiscope::cli

@@ -1,0 +1,52 @@
+// Reading a CSV file row by row, for files too large to hold: the header,
+// then the fields of each data row with its line number. The delimiter is
+// the header's (comma, semicolon or tab, as other DAQ programs write);
+// blank lines and lines starting with '#' are skipped. Errors name the file
+// and the line, so a user can fix the file.
+#pragma once
+
+#include "core/io/CsvColumns.h"
+
+#include <cstdint>
+#include <fstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tactiscope::core::io {
+
+class CsvReader {
+public:
+    // Opens the file and reads the header. Throws CsvError.
+    explicit CsvReader(const std::string& path);
+
+    const std::vector<std::string>& header() const { return m_header; }
+    // The index of a header name; throws CsvError naming the columns there are.
+    std::size_t column(const std::string& name) const;
+    // The next data row, its fields trimmed of spaces and quotes; false at
+    // the end. Throws CsvError for a row with a different number of fields.
+    bool next(std::vector<std::string_view>& fields);
+    std::size_t lineNumber() const { return m_lineNumber; }
+    std::uint64_t bytesRead() const { return m_bytesRead; }  // for progress
+    const std::string& path() const { return m_path; }
+
+    // A cell as a number (std::from_chars: no locale); "nan" is a missing
+    // value. Throws CsvError naming the line and the column.
+    double number(std::string_view cell, std::size_t column) const;
+
+private:
+    bool nextLine();
+
+    std::string m_path;
+    std::ifstream m_file;
+    std::string m_line;
+    std::size_t m_lineNumber = 0;
+    std::uint64_t m_bytesRead = 0;
+    char m_delimiter = ',';
+    std::vector<std::string> m_header;
+};
+
+// Splits `line` at `delimiter` into trimmed fields (views into the line).
+void splitCsvLine(std::string_view line, char delimiter, std::vector<std::string_view>& fields);
+
+}  // namespace tactiscope::core::io

@@ -1,0 +1,334 @@
+// CSV import: a first pass over the time column for the rate (when it must
+// be measured), then one streaming pass that stores blocks as they fill.
+#include "core/storage/CsvImport.h"
+
+#include "core/SampleBlock.h"
+#include "core/io/CsvReader.h"
+#include "core/storage/RecorderLock.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace tactiscope::core::storage {
+namespace {
+
+using io::CsvError;
+using io::CsvReader;
+
+constexpr std::size_t kBlockRows = 4096;  // one chunk
+constexpr std::size_t kBatchBlocks = 16;  // one transaction
+
+struct NameAndUnit {
+    std::string name;
+    std::string unit;
+};
+
+// "force [N]" or "force (N)" → force, N; "a" → a, "".
+NameAndUnit splitHeader(const std::string& header)
+{
+    for (const auto& [open, close] : {std::pair{'[', ']'}, std::pair{'(', ')'}}) {
+        const auto at = header.rfind(open);
+        if (at != std::string::npos && at > 0 && header.back() == close) {
+            std::string name = header.substr(0, at);
+            while (!name.empty() && name.back() == ' ') name.pop_back();
+            return {name, header.substr(at + 1, header.size() - at - 2)};
+        }
+    }
+    return {header, ""};
+}
+
+std::string lower(std::string text)
+{
+    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+}
+
+ChannelKind kindFromUnit(const std::string& unit)
+{
+    for (const char* force : {"N", "mN", "uN", "µN"}) {
+        if (unit == force) return ChannelKind::Force;
+    }
+    for (const char* position : {"m", "mm", "um", "µm"}) {
+        if (unit == position) return ChannelKind::Position;
+    }
+    for (const char* capacitance : {"F", "pF", "fF", "nF"}) {
+        if (unit == capacitance) return ChannelKind::Capacitance;
+    }
+    return ChannelKind::Other;
+}
+
+// Seconds per unit of a time column's header unit.
+double timeScale(const std::string& header, const std::string& path)
+{
+    const std::string unit = splitHeader(header).unit;
+    if (unit.empty() || unit == "s") return 1.0;
+    if (unit == "ms") return 1e-3;
+    if (unit == "us" || unit == "µs") return 1e-6;
+    throw CsvError("'" + path + "': the time column '" + header + "' is in '" + unit + "'; use s, ms or us");
+}
+
+// A measured rate rounded to 12 significant digits, so that 1/median step
+// of a 2 kHz file is 2000, not 1999.9999999999998.
+double roundRate(double rate_hz)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.12g", rate_hz);
+    return std::strtod(text, nullptr);
+}
+
+// The side file of a Tactiscope export, when there is one: X.csv → X.meta.json.
+std::optional<nlohmann::json> readSideFile(const std::string& csvPath)
+{
+    std::filesystem::path side(csvPath);
+    side.replace_extension(".meta.json");
+    std::ifstream in(side);
+    if (!in) return std::nullopt;
+    try {
+        auto json = nlohmann::json::parse(in);
+        if (json.contains("session") && json.contains("channels")) return json;
+    } catch (const nlohmann::json::exception& e) {
+        throw CsvError("'" + side.string() + "' is not a Tactiscope metadata file: " + e.what());
+    }
+    return std::nullopt;
+}
+
+std::string textOf(const nlohmann::json& object, const char* key)
+{
+    return object.contains(key) && object[key].is_string() ? object[key].get<std::string>() : std::string();
+}
+
+std::optional<double> optionalOf(const nlohmann::json& object, const char* key)
+{
+    if (!object.contains(key) || !object[key].is_number()) return std::nullopt;
+    return object[key].get<double>();
+}
+
+// Fills the metadata fields the user left empty from the side file.
+void completeMetadata(SessionMetadata& m, const nlohmann::json& session)
+{
+    const auto fill = [&](std::string& field, const char* key) {
+        if (field.empty()) field = textOf(session, key);
+    };
+    fill(m.mode, "mode");
+    fill(m.subject, "subject");
+    fill(m.operatorName, "operator");
+    fill(m.site, "site");
+    fill(m.notes, "notes");
+    fill(m.deviceModel, "device_model");
+    fill(m.deviceSerial, "device_serial");
+    fill(m.deviceFirmware, "device_firmware");
+    fill(m.profileJson, "profile_json");
+    fill(m.calibrationsJson, "calibrations_json");
+}
+
+void importRecords(SessionStore& store, std::int64_t session, const nlohmann::json& side)
+{
+    std::vector<SessionEvent> events;
+    for (const auto& e : side.value("events", nlohmann::json::array())) {
+        events.push_back({0, textOf(e, "analysis"), textOf(e, "kind"), e.value("start_s", 0.0), e.value("end_s", 0.0),
+                          e.value("direction", 0), optionalOf(e, "peak_r"), optionalOf(e, "lag_s"),
+                          optionalOf(e, "speed_m_per_s"), textOf(e, "note")});
+    }
+    store.addEvents(session, events);
+    for (const auto& r : side.value("readings", nlohmann::json::array())) {
+        store.addReading(session, {0, textOf(r, "kind"), r.value("start_s", 0.0), r.value("end_s", 0.0),
+                                   textOf(r, "quantity"), r.value("value", 0.0), textOf(r, "unit"),
+                                   optionalOf(r, "standard_error"), textOf(r, "site"), textOf(r, "details_json")});
+    }
+    for (const auto& a : side.value("annotations", nlohmann::json::array()))
+        store.addAnnotation(session, {0, a.value("time_s", 0.0), textOf(a, "author"), textOf(a, "text"), "", ""});
+}
+
+// Where each row goes on the sample grid.
+class RowIndexer {
+public:
+    RowIndexer(double rate_hz, double timeScale)
+        : m_rate_hz(rate_hz),
+          m_scale(timeScale)
+    {
+    }
+
+    // The sample index of a row: consecutive without a time column, else
+    // from its time. Throws CsvError for a time off the grid or going back.
+    std::uint64_t next(std::optional<double> time, const CsvReader& reader)
+    {
+        if (!time) return m_rows++;
+        const double t_s = *time * m_scale;
+        if (m_rows == 0) m_t0_s = t_s;
+        const double position = (t_s - m_t0_s) * m_rate_hz;
+        const double index = std::round(position);
+        if (std::abs(position - index) > 0.25 || !std::isfinite(position))
+            throw CsvError("'" + reader.path() + "' line " + std::to_string(reader.lineNumber()) +
+                           ": t = " + std::to_string(t_s) + " s is off the " + std::to_string(m_rate_hz) +
+                           " Hz sample grid; resample the file to a fixed rate first");
+        if (index < 0.0 || (m_rows > 0 && index <= static_cast<double>(m_last)))
+            throw CsvError("'" + reader.path() + "' line " + std::to_string(reader.lineNumber()) +
+                           ": time does not increase");
+        m_last = static_cast<std::uint64_t>(index);
+        ++m_rows;
+        return m_last;
+    }
+
+private:
+    double m_rate_hz;
+    double m_scale;
+    double m_t0_s = 0.0;       // time of the first row
+    std::uint64_t m_last = 0;  // index of the last row
+    std::uint64_t m_rows = 0;
+};
+
+// The rate from the time column: 1 / the median step (robust to missing rows).
+double measureRate(const std::string& path, std::size_t timeColumn)
+{
+    CsvReader reader(path);
+    const double scale = timeScale(reader.header()[timeColumn], path);
+    std::vector<double> steps;
+    std::vector<std::string_view> fields;
+    std::optional<double> previous;
+    while (reader.next(fields)) {
+        const double t = reader.number(fields[timeColumn], timeColumn) * scale;
+        if (previous) steps.push_back(t - *previous);
+        previous = t;
+    }
+    if (steps.empty()) throw CsvError("'" + path + "' needs at least two rows to tell its sample rate");
+    auto middle = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
+    std::nth_element(steps.begin(), middle, steps.end());
+    if (!(*middle > 0.0)) throw CsvError("'" + path + "': the time column does not increase");
+    return roundRate(1.0 / *middle);
+}
+
+double cellValue(const CsvReader& reader, std::string_view cell, std::size_t column)
+{
+    return cell.empty() ? std::numeric_limits<double>::quiet_NaN() : reader.number(cell, column);
+}
+
+}  // namespace
+
+CsvImportResult importCsv(SessionStore& store, const std::string& path, const CsvImportOptions& options,
+                          const std::function<bool(double)>& progress)
+{
+    CsvReader reader(path);
+    const auto side = readSideFile(path);
+    const auto& header = reader.header();
+
+    std::optional<std::size_t> timeColumn;
+    if (!options.timeColumn.empty()) {
+        timeColumn = reader.column(options.timeColumn);
+    } else {
+        for (std::size_t c = 0; c < header.size() && !timeColumn; ++c) {
+            const std::string name = lower(splitHeader(header[c]).name);
+            if (name == "t" || name == "time" || name == "time_s" || name == "timestamp") timeColumn = c;
+        }
+    }
+    // Rows are consecutive at a given rate unless a time column is named.
+    const bool timed = !options.rate_hz || !options.timeColumn.empty();
+    if (timed && !timeColumn)
+        throw CsvError("'" + path + "' has no time column (t, time, time_s or timestamp): give its name or the rate");
+
+    SessionMetadata metadata = options.metadata;
+    if (side) completeMetadata(metadata, (*side)["session"]);
+    if (metadata.mode.empty()) metadata.mode = "panel-scan";  // as when recording
+
+    CsvImportResult result;
+    result.usedSideFile = side.has_value();
+    std::vector<std::size_t> dataColumns;
+    if (options.columns.empty()) {
+        for (std::size_t c = 0; c < header.size(); ++c)
+            if (c != timeColumn) dataColumns.push_back(c);
+    } else {
+        for (const auto& name : options.columns) dataColumns.push_back(reader.column(name));
+    }
+    if (dataColumns.empty()) throw CsvError("'" + path + "' has no data column besides the time");
+    for (const std::size_t c : dataColumns) {
+        auto [name, unit] = splitHeader(header[c]);
+        // Unitless columns of a panel scan are the cantilevers' strains.
+        const bool strain = unit.empty() && metadata.mode == "panel-scan";
+        ChannelDescriptor channel{name, unit, strain ? ChannelKind::Strain : kindFromUnit(unit)};
+        if (side) {
+            for (const auto& stored : (*side)["channels"]) {
+                if (textOf(stored, "name") != header[c]) continue;
+                channel = {header[c], textOf(stored, "unit"),
+                           channelKindFromString(textOf(stored, "kind")).value_or(ChannelKind::Other)};
+            }
+        }
+        result.channels.push_back(channel);
+    }
+
+    if (options.rate_hz) {
+        result.rate_hz = *options.rate_hz;
+    } else if (side && !(*side)["channels"].empty() && (*side)["channels"][0].contains("sample_rate_hz")) {
+        result.rate_hz = (*side)["channels"][0]["sample_rate_hz"].get<double>();
+    } else {
+        result.rate_hz = measureRate(path, *timeColumn);
+    }
+    if (!(result.rate_hz > 0.0) || !std::isfinite(result.rate_hz))
+        throw CsvError("the sample rate must be a positive number of Hz");
+
+    // Like a recorder, so no other process takes the session for a crashed one.
+    const RecorderLock lock = RecorderLock::acquire(store.database().path());
+    result.session = store.beginSession(metadata, result.channels, result.rate_hz);
+    try {
+        const auto fileSize = static_cast<double>(std::filesystem::file_size(path));
+        RowIndexer indexer(result.rate_hz, timeColumn ? timeScale(header[*timeColumn], path) : 1.0);
+        const double dt_s = 1.0 / result.rate_hz;
+        std::vector<SampleBlock> batch;
+        SampleBlock block;
+        std::size_t filled = 0;
+        std::uint64_t end = 0;  // one past the last stored index
+        const auto flushBlock = [&] {
+            if (filled == 0) return;
+            SampleBlock full(result.channels.size(), filled, block.t0_s(), dt_s, block.firstSampleIndex());
+            for (std::size_t c = 0; c < result.channels.size(); ++c)
+                std::copy_n(block.channel(c).begin(), filled, full.channel(c).begin());
+            batch.push_back(std::move(full));
+            filled = 0;
+        };
+        const auto flushBatch = [&] {
+            flushBlock();
+            store.appendBlocks(result.session, batch);
+            batch.clear();
+            if (progress && !progress(static_cast<double>(reader.bytesRead()) / fileSize))
+                throw std::runtime_error("cancelled");
+        };
+        std::vector<std::string_view> fields;
+        while (reader.next(fields)) {
+            const std::optional<double> time =
+                timed ? std::optional(reader.number(fields[*timeColumn], *timeColumn)) : std::nullopt;
+            const std::uint64_t index = indexer.next(time, reader);
+            if (filled > 0 && (index != end || filled == kBlockRows)) {
+                flushBlock();
+                if (batch.size() == kBatchBlocks) flushBatch();
+            }
+            if (filled == 0)
+                block = SampleBlock(result.channels.size(), kBlockRows, static_cast<double>(index) * dt_s, dt_s, index);
+            for (std::size_t c = 0; c < dataColumns.size(); ++c)
+                block.channel(c)[filled] = cellValue(reader, fields[dataColumns[c]], dataColumns[c]);
+            ++filled;
+            result.lostSamples += index - end;
+            end = index + 1;
+            ++result.rows;
+        }
+        if (result.rows == 0) throw CsvError("'" + path + "' has a header but no data rows");
+        flushBatch();
+        if (side) importRecords(store, result.session, *side);
+        store.endSession(result.session, SessionStatus::Complete);
+    } catch (...) {
+        // An import is all or nothing: the file is still there to fix.
+        try {
+            store.endSession(result.session, SessionStatus::Interrupted);
+            store.deleteSession(result.session);
+        } catch (const StorageError&) {
+            // The store failed too; the session stays marked interrupted.
+        }
+        throw;
+    }
+    return result;
+}
+
+}  // namespace tactiscope::core::storage

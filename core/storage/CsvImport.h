@@ -1,0 +1,54 @@
+// Importing a CSV recording from another DAQ program, or a Tactiscope CSV
+// export, as a new session, so its data can be reviewed and analysed here.
+//
+// Columns: a time column (seconds; "ms" or "us" in the header's brackets
+// scale it) or a fixed rate, and data columns named "name", "name [unit]"
+// or "name (unit)"; the unit tells the kind (N force, mm position, pF
+// capacitance), and unitless columns of a panel scan are strains. With a time column the rate is the median step, and a
+// missing row becomes a gap, as a lost sample does when recording; times
+// off the sample grid are refused (resample the file first). The session
+// starts at the first row (t = 0). A "nan" or empty cell is a sample
+// without a value.
+//
+// A Tactiscope export's side file (X.meta.json beside X.csv) restores the
+// channels' units and kinds, the exact rate, the session's metadata and
+// its events, readings and annotations; options given explicitly win.
+//
+// Samples are stored as binary32, like recorded ones, so an export of a
+// session imported from a Tactiscope export is the same file, to the bit.
+#pragma once
+
+#include "core/io/CsvColumns.h"
+#include "core/storage/SessionStore.h"
+
+#include <functional>
+#include <optional>
+
+namespace tactiscope::core::storage {
+
+struct CsvImportOptions {
+    std::optional<double> rate_hz;     // fixed rate: rows are consecutive samples unless timeColumn is given
+    std::string timeColumn;            // empty: a column named t, time, time_s or timestamp, if any
+    std::vector<std::string> columns;  // data columns, in order; empty: every column but the time column
+    SessionMetadata metadata;          // its non-empty fields win over the side file's; mode defaults to panel-scan
+};
+
+struct CsvImportResult {
+    std::int64_t session = 0;
+    std::uint64_t rows = 0;
+    std::uint64_t lostSamples = 0;  // rows missing from the time grid
+    double rate_hz = 0.0;
+    std::vector<ChannelDescriptor> channels;
+    bool usedSideFile = false;
+};
+
+// Imports `path` into `store` as a complete session. progress(fraction of
+// the file read) is called now and then; returning false cancels. Throws
+// io::CsvError for a file that cannot be imported (nothing is stored),
+// StorageError when the store fails or another process records into it,
+// and std::runtime_error("cancelled") on cancel; nothing of a failed or
+// cancelled import stays in the store.
+CsvImportResult importCsv(SessionStore& store, const std::string& path, const CsvImportOptions& options,
+                          const std::function<bool(double)>& progress = {});
+
+}  // namespace tactiscope::core::storage

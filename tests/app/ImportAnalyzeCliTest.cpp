@@ -1,0 +1,237 @@
+// `tactiscope-cli import` and `analyze` on real files: a foreign CSV with a
+// millisecond time column and missing rows lands as a session with gaps;
+// export → import → export gives the same file to the byte, and the same
+// samples to the bit; analyze finds the events detect finds in the same
+// data; bad input gives exit code 2 and one clear line.
+#include "core/SampleBlock.h"
+#include "core/storage/SessionStore.h"
+#include "support/CliRunner.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+
+using namespace tactiscope;
+using tactiscope::testing::runCli;
+
+namespace {
+
+void writeFile(const QString& path, const QString& text)
+{
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(text.toUtf8());
+}
+
+QByteArray readBytes(const QString& path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+QJsonObject json(const QString& text)
+{
+    return QJsonDocument::fromJson(text.toUtf8()).object();
+}
+
+}  // namespace
+
+TEST(ImportCli, AForeignCsvWithMillisecondsAndMissingRowsBecomesASessionWithGaps)
+{
+    QTemporaryDir dir;
+    const QString csv = dir.filePath("daq.csv");
+    // 250 Hz (4 ms), semicolon-separated like a decimal-comma locale's
+    // export; rows 3 and 4 are missing; a comment line and a blank cell.
+    writeFile(csv, "# exported by SomeDAQ 3.1\n"
+                   "Time [ms];Force (N);Gap [mm]\n"
+                   "1000;0.5;2\n"
+                   "1004;0.25;2.5\n"
+                   "1008;-0.125;3\n"
+                   "1020;1.5;\n"
+                   "1024;2;4\n");
+    const QString db = dir.filePath("s.tactiscope");
+    const auto result = runCli({"import", csv, "--db", db, "--mode", "palpation", "--subject", "phantom-9"});
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    EXPECT_TRUE(result.out.contains("5 rows of 2 channels at 250 Hz, 2 missing")) << result.out.toStdString();
+
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto session = *store.session(1);
+    EXPECT_EQ(session.metadata.mode, "palpation");
+    EXPECT_EQ(session.metadata.subject, "phantom-9");
+    EXPECT_EQ(session.status, "complete");
+    EXPECT_EQ(session.sampleRate_hz, 250.0);
+    EXPECT_EQ(session.sampleCount, 7u);
+    const auto channels = store.channels(1);
+    ASSERT_EQ(channels.size(), 2u);
+    EXPECT_EQ(channels[0].descriptor, (core::ChannelDescriptor{"Force", "N", core::ChannelKind::Force}));
+    EXPECT_EQ(channels[1].descriptor, (core::ChannelDescriptor{"Gap", "mm", core::ChannelKind::Position}));
+    const auto gaps = store.gaps(1);
+    ASSERT_EQ(gaps.size(), 1u);
+    EXPECT_EQ(gaps[0].firstIndex, 3u);
+    EXPECT_EQ(gaps[0].count, 2u);
+    const auto force = store.readChannel(1, 0, 0, 7);
+    EXPECT_EQ(force[0], 0.5);
+    EXPECT_EQ(force[2], -0.125);
+    EXPECT_TRUE(std::isnan(force[3]));
+    EXPECT_EQ(force[5], 1.5);
+    EXPECT_EQ(force[6], 2.0);
+    EXPECT_TRUE(std::isnan(store.readChannel(1, 1, 5, 1)[0]));  // the blank cell
+}
+
+TEST(ImportCli, ExportImportExportIsTheSameFileAndTheSameBits)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath("s.tactiscope");
+    {
+        // Values with no short decimal form: the export must carry every bit.
+        core::storage::SessionStore store(db.toStdString());
+        core::storage::SessionMetadata metadata;
+        metadata.mode = "capacitive";
+        metadata.subject = "beam-7";
+        metadata.operatorName = "Lin";
+        const auto id =
+            store.beginSession(metadata,
+                               std::vector<core::ChannelDescriptor>{{"c", "pF", core::ChannelKind::Capacitance},
+                                                                    {"s", "", core::ChannelKind::Strain}},
+                               1000.0);
+        const auto block = [](std::uint64_t first, std::size_t count) {
+            core::SampleBlock b(2, count, static_cast<double>(first) / 1000.0, 1e-3, first);
+            for (std::size_t s = 0; s < count; ++s) {
+                b.channel(0)[s] = 3.0 + std::sin(static_cast<double>(first + s) * 0.37) / 7.0;
+                b.channel(1)[s] = std::exp(-static_cast<double>(first + s) / 300.0) * 1e-5;
+            }
+            return b;
+        };
+        store.appendBlocks(id, std::vector{block(0, 700), block(750, 500)});  // 50 lost
+        store.addEvents(id, std::vector<core::storage::SessionEvent>{
+                                {0, "live", "alarm", 0.7, 0.75, 0, std::nullopt, std::nullopt, std::nullopt, "lost"}});
+        store.addAnnotation(id, {0, 0.9, "Lin", "tare drift", "", ""});
+        store.endSession(id, core::storage::SessionStatus::Complete);
+    }
+    const QString first = dir.filePath("first.csv"), second = dir.filePath("second.csv");
+    ASSERT_EQ(runCli({"sessions", "--db", db, "export", "1", "--format", "csv", "--output", first}).exitCode, 0);
+    const auto imported = runCli({"import", first, "--db", db});
+    ASSERT_EQ(imported.exitCode, 0) << imported.err.toStdString();
+    EXPECT_TRUE(imported.out.contains("as session 2: 1200 rows of 2 channels at 1000 Hz, 50 missing"))
+        << imported.out.toStdString();
+    ASSERT_EQ(runCli({"sessions", "--db", db, "export", "2", "--format", "csv", "--output", second}).exitCode, 0);
+    EXPECT_EQ(readBytes(second), readBytes(first));
+
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    for (std::size_t c = 0; c < 2; ++c) {
+        const auto original = store.readChannel(1, c, 0, 1250), copy = store.readChannel(2, c, 0, 1250);
+        ASSERT_EQ(copy.size(), original.size());
+        for (std::size_t i = 0; i < original.size(); ++i)
+            ASSERT_EQ(std::bit_cast<std::uint64_t>(copy[i]), std::bit_cast<std::uint64_t>(original[i]))
+                << c << ", " << i;
+    }
+    // The side file brought the metadata and the records along.
+    const auto copy = *store.session(2);
+    EXPECT_EQ(copy.metadata.mode, "capacitive");
+    EXPECT_EQ(copy.metadata.operatorName, "Lin");
+    EXPECT_EQ(store.channels(2)[0].descriptor, (core::ChannelDescriptor{"c", "pF", core::ChannelKind::Capacitance}));
+    ASSERT_EQ(store.events(2).size(), 1u);
+    EXPECT_EQ(store.events(2)[0].note, "lost");
+    ASSERT_EQ(store.annotations(2).size(), 1u);
+    EXPECT_EQ(store.annotations(2)[0].text, "tare drift");
+}
+
+TEST(ImportCli, BadInputIsExitCodeTwoWithOneClearLineAndNothingStored)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath("s.tactiscope");
+    const QString noTime = dir.filePath("no-time.csv"), jitter = dir.filePath("jitter.csv"),
+                  text = dir.filePath("text.csv"), ragged = dir.filePath("ragged.csv");
+    writeFile(noTime, "a,b\n1,2\n3,4\n");
+    writeFile(jitter, "t,a\n0,1\n0.01,2\n0.02,3\n0.0335,4\n0.04,5\n");
+    writeFile(text, "t,a\n0,1\n0.01,one\n");
+    writeFile(ragged, "t,a\n0,1\n0.01\n");
+    const struct {
+        QStringList arguments;
+        const char* message;
+    } cases[] = {
+        {{"import", dir.filePath("missing.csv"), "--db", db}, "cannot open"},
+        {{"import", noTime, "--db", db}, "has no time column"},
+        {{"import", jitter, "--db", db}, "line 5: t = 0.033500 s is off the"},
+        {{"import", text, "--db", db}, "line 3, column 'a': 'one' is not a number"},
+        {{"import", ragged, "--db", db}, "line 3 has 1 fields, the header has 2"},
+        {{"import", noTime, "--db", db, "--rate", "-5"}, "--rate must be a positive number"},
+        {{"import", noTime, "--db", db, "--rate", "10", "--mode", "surgery"}, "--mode must be"},
+        {{"import", noTime, "--db", db, "--rate", "10", "--time-column", "x"}, "has no column 'x'"},
+        {{"import", noTime, "--rate", "10"}, "--db FILE is required"},
+        {{"import", noTime, "--db", noTime, "--rate", "10"}, "is not a Tactiscope session store"},
+    };
+    for (const auto& c : cases) {
+        const auto result = runCli(c.arguments);
+        EXPECT_EQ(result.exitCode, 2) << c.arguments.join(' ').toStdString();
+        EXPECT_TRUE(result.err.contains(QString::fromUtf8(c.message))) << result.err.toStdString();
+        EXPECT_TRUE(result.err.startsWith(QStringLiteral("tactiscope-cli: "))) << result.err.toStdString();
+    }
+    // The fixed-rate import of the file without times works, and is the only session.
+    ASSERT_EQ(runCli({"import", noTime, "--db", db, "--rate", "10"}).exitCode, 0);
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    EXPECT_EQ(store.sessions().size(), 1u);
+}
+
+TEST(AnalyzeCli, FindsTheEventsDetectFindsInTheSameRecording)
+{
+    QTemporaryDir dir;
+    const QString csv = dir.filePath("scan.csv"), db = dir.filePath("s.tactiscope");
+    ASSERT_EQ(runCli({"simulate", "--seconds", "8", "--seed", "3", "--output", csv}).exitCode, 0);
+    ASSERT_EQ(runCli({"import", csv, "--db", db, "--subject", "door-5"}).exitCode, 0);
+    const auto detect = runCli({"detect", csv, "--json", "--threshold", "0.8"});
+    const auto analyze = runCli({"analyze", "--db", db, "--session", "last", "--json", "--threshold", "0.8"});
+    ASSERT_EQ(analyze.exitCode, 0) << analyze.err.toStdString();
+    const QJsonArray expected = json(detect.out)["events"].toArray(), found = json(analyze.out)["events"].toArray();
+    ASSERT_GT(expected.size(), 3);
+    ASSERT_EQ(found.size(), expected.size());
+    for (qsizetype e = 0; e < expected.size(); ++e) {
+        const QJsonObject want = expected[e].toObject(), got = found[e].toObject();
+        EXPECT_EQ(got["direction"].toInt(), want["direction"].toInt()) << e;
+        EXPECT_NEAR(got["start_s"].toDouble(), want["start_s"].toDouble(), 1e-9) << e;
+        EXPECT_NEAR(got["end_s"].toDouble(), want["end_s"].toDouble(), 1e-9) << e;
+        EXPECT_EQ(got["lag_ms"].toDouble(), want["lag_ms"].toDouble()) << e;
+        // The store keeps binary32 samples: R moves in the 7th digit at most.
+        EXPECT_NEAR(got["peak_r"].toDouble(), want["peak_r"].toDouble(), 1e-6) << e;
+    }
+
+    // Saved as a re-analysis beside the (empty) live events.
+    const auto saved = runCli({"analyze", "--db", db, "--session", "1", "--threshold", "0.8", "--save", "t0.8"});
+    ASSERT_EQ(saved.exitCode, 0) << saved.err.toStdString();
+    EXPECT_TRUE(saved.out.contains(QStringLiteral("%1 events").arg(expected.size()))) << saved.out.toStdString();
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    EXPECT_TRUE(store.events(1).empty());
+    EXPECT_EQ(store.events(1, "t0.8").size(), static_cast<std::size_t>(expected.size()));
+}
+
+TEST(AnalyzeCli, BadInputIsExitCodeTwo)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath("s.tactiscope"), csv = dir.filePath("f.csv");
+    writeFile(csv, "t,f [N]\n0,1\n0.01,2\n0.02,3\n");
+    ASSERT_EQ(runCli({"import", csv, "--db", db, "--mode", "palpation"}).exitCode, 0);
+    const struct {
+        QStringList arguments;
+        const char* message;
+    } cases[] = {
+        {{"analyze", "--db", db}, "--session ID|last is required"},
+        {{"analyze", "--session", "last"}, "--db FILE is required"},
+        {{"analyze", "--db", db, "--session", "7"}, "no session '7'"},
+        {{"analyze", "--db", db, "--session", "last"}, "is a palpation session"},
+        {{"analyze", "--db", db, "--session", "1", "--threshold", "high"}, "--threshold must be a number"},
+        {{"analyze", "--db", db, "--session", "1", "--save", "live"}, "--save needs a name other than 'live'"},
+        {{"analyze", "--db", csv, "--session", "1"}, "is not a Tactiscope session store"},
+    };
+    for (const auto& c : cases) {
+        const auto result = runCli(c.arguments);
+        EXPECT_EQ(result.exitCode, 2) << c.arguments.join(' ').toStdString();
+        EXPECT_TRUE(result.err.contains(QString::fromUtf8(c.message))) << result.err.toStdString();
+    }
+}
