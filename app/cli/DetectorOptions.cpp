@@ -14,7 +14,6 @@ namespace {
 
 using core::detector::DefectEvent;
 
-
 const char* order(int direction)
 {
     return direction > 0 ? "A then B" : "B then A";

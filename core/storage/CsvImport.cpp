@@ -154,12 +154,13 @@ public:
     {
     }
 
-    // The sample index of a row: consecutive without a time column, else
-    // from its time. Throws CsvError for a time off the grid or going back.
-    std::uint64_t next(std::optional<double> time, const CsvReader& reader)
+    // The sample index of the next row without a time column.
+    std::uint64_t next() { return m_rows++; }
+    // The sample index of a row at `time`. Throws CsvError for a time off
+    // the grid or going back.
+    std::uint64_t next(double time, const CsvReader& reader)
     {
-        if (!time) return m_rows++;
-        const double t_s = *time * m_scale;
+        const double t_s = time * m_scale;
         if (m_rows == 0) m_t0_s = t_s;
         const double position = (t_s - m_t0_s) * m_rate_hz;
         const double index = std::round(position);
@@ -298,9 +299,8 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
         };
         std::vector<std::string_view> fields;
         while (reader.next(fields)) {
-            const std::optional<double> time =
-                timed ? std::optional(reader.number(fields[*timeColumn], *timeColumn)) : std::nullopt;
-            const std::uint64_t index = indexer.next(time, reader);
+            const std::uint64_t index =
+                timed ? indexer.next(reader.number(fields[*timeColumn], *timeColumn), reader) : indexer.next();
             if (filled > 0 && (index != end || filled == kBlockRows)) {
                 flushBlock();
                 if (batch.size() == kBatchBlocks) flushBatch();

@@ -124,6 +124,9 @@ Database::Database(const std::string& path, Access access)
     // Another connection (the recorder, a second reader) may hold the write
     // lock briefly; wait for it rather than failing.
     sqlite3_busy_timeout(m_db, 5000);
+    // Pages are read through a memory map rather than a read() each: the
+    // session list and overviews touch thousands of scattered small pages.
+    exec("PRAGMA mmap_size = 1073741824");
 }
 
 Database::~Database()

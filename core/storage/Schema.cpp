@@ -61,8 +61,26 @@ CREATE TABLE gaps (
 // session, and the records beside the samples: events, readings,
 // annotations and the calibration history. Pyramids of sessions recorded
 // under version 1 are built by SessionStore after the migration.
+//
+// Chunks move to a rowid table with an index: in a WITHOUT ROWID table a
+// key search reads whole rows that overflow their page, i.e. every BLOB it
+// passes, which made listing sessions read megabytes.
 constexpr const char* kVersion2 = R"sql(
 ALTER TABLE sessions ADD COLUMN calibrations_json TEXT NOT NULL DEFAULT '';
+
+CREATE TABLE chunks_v2 (
+    id           INTEGER PRIMARY KEY,
+    session_id   INTEGER NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    first_index  INTEGER NOT NULL,
+    first_time_s REAL NOT NULL,
+    count        INTEGER NOT NULL CHECK (count > 0),
+    samples      BLOB NOT NULL
+);
+INSERT INTO chunks_v2 (session_id, first_index, first_time_s, count, samples)
+    SELECT session_id, first_index, first_time_s, count, samples FROM chunks ORDER BY session_id, first_index;
+DROP TABLE chunks;
+ALTER TABLE chunks_v2 RENAME TO chunks;
+CREATE UNIQUE INDEX chunks_by_index ON chunks (session_id, first_index);
 
 CREATE TABLE lod (
     session_id   INTEGER NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,

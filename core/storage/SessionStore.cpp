@@ -191,7 +191,7 @@ void SessionStore::appendChunk(std::int64_t session, std::span<const SampleBlock
 {
     std::uint64_t samples = 0;
     for (const SampleBlock& block : run) samples += block.sampleCount();
-    m_db.prepare("INSERT INTO chunks VALUES (?, ?, ?, ?, ?)")
+    m_db.prepare("INSERT INTO chunks (session_id, first_index, first_time_s, count, samples) VALUES (?, ?, ?, ?, ?)")
         .bind(1, session)
         .bind(2, static_cast<std::int64_t>(run.front().firstSampleIndex()))
         .bind(3, run.front().t0_s())

@@ -29,6 +29,16 @@ StoredCalibration calibrationFrom(const Statement& row)
     }
 }
 
+// The ids a one-parameter query returns.
+std::vector<std::int64_t> ids(Database& db, std::string_view sql, std::int64_t parameter)
+{
+    std::vector<std::int64_t> result;
+    auto query = db.prepare(sql);
+    query.bind(1, parameter);
+    while (query.step()) result.push_back(query.int64(0));
+    return result;
+}
+
 }  // namespace
 
 void SessionStore::addEvents(std::int64_t session, std::span<const SessionEvent> events)
@@ -184,22 +194,14 @@ void SessionStore::linkCalibration(std::int64_t session, std::int64_t calibratio
 
 std::vector<std::int64_t> SessionStore::calibrationsOfSession(std::int64_t session)
 {
-    std::vector<std::int64_t> result;
-    auto query =
-        m_db.prepare("SELECT calibration_id FROM session_calibrations WHERE session_id = ? ORDER BY calibration_id");
-    query.bind(1, session);
-    while (query.step()) result.push_back(query.int64(0));
-    return result;
+    return ids(m_db, "SELECT calibration_id FROM session_calibrations WHERE session_id = ? ORDER BY calibration_id",
+               session);
 }
 
 std::vector<std::int64_t> SessionStore::sessionsUsingCalibration(std::int64_t calibration)
 {
-    std::vector<std::int64_t> result;
-    auto query =
-        m_db.prepare("SELECT session_id FROM session_calibrations WHERE calibration_id = ? ORDER BY session_id");
-    query.bind(1, calibration);
-    while (query.step()) result.push_back(query.int64(0));
-    return result;
+    return ids(m_db, "SELECT session_id FROM session_calibrations WHERE calibration_id = ? ORDER BY session_id",
+               calibration);
 }
 
 }  // namespace tactiscope::core::storage

@@ -2,6 +2,7 @@
 // known defects in, events and per-sample output out; every bad input gives
 // exit code 2 and one line on stderr.
 #include "support/CliRunner.h"
+#include "support/TextFiles.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -16,7 +17,9 @@
 #include <random>
 
 using tactiscope::testing::CliResult;
+using tactiscope::testing::readBytes;
 using tactiscope::testing::runCli;
+using tactiscope::testing::writeText;
 
 namespace {
 
@@ -46,18 +49,9 @@ void writeRecording(const QString& path)
             << ',' << QString::number(b[static_cast<std::size_t>(i)], 'g', 17) << '\n';
 }
 
-void writeText(const QString& path, const QString& text)
-{
-    QFile file(path);
-    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
-    file.write(text.toUtf8());
-}
-
 QStringList lines(const QString& path)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) return {};
-    return QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    return QString::fromUtf8(readBytes(path)).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
 }
 
 class DetectCli : public ::testing::Test {

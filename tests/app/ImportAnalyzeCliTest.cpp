@@ -6,6 +6,7 @@
 #include "core/SampleBlock.h"
 #include "core/storage/SessionStore.h"
 #include "support/CliRunner.h"
+#include "support/TextFiles.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -19,22 +20,11 @@
 #include <cmath>
 
 using namespace tactiscope;
+using tactiscope::testing::readBytes;
 using tactiscope::testing::runCli;
+using tactiscope::testing::writeText;
 
 namespace {
-
-void writeFile(const QString& path, const QString& text)
-{
-    QFile file(path);
-    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
-    file.write(text.toUtf8());
-}
-
-QByteArray readBytes(const QString& path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
 
 QJsonObject json(const QString& text)
 {
@@ -49,7 +39,7 @@ TEST(ImportCli, AForeignCsvWithMillisecondsAndMissingRowsBecomesASessionWithGaps
     const QString csv = dir.filePath("daq.csv");
     // 250 Hz (4 ms), semicolon-separated like a decimal-comma locale's
     // export; rows 3 and 4 are missing; a comment line and a blank cell.
-    writeFile(csv, "# exported by SomeDAQ 3.1\n"
+    writeText(csv, "# exported by SomeDAQ 3.1\n"
                    "Time [ms];Force (N);Gap [mm]\n"
                    "1000;0.5;2\n"
                    "1004;0.25;2.5\n"
@@ -149,10 +139,10 @@ TEST(ImportCli, BadInputIsExitCodeTwoWithOneClearLineAndNothingStored)
     const QString db = dir.filePath("s.tactiscope");
     const QString noTime = dir.filePath("no-time.csv"), jitter = dir.filePath("jitter.csv"),
                   text = dir.filePath("text.csv"), ragged = dir.filePath("ragged.csv");
-    writeFile(noTime, "a,b\n1,2\n3,4\n");
-    writeFile(jitter, "t,a\n0,1\n0.01,2\n0.02,3\n0.0335,4\n0.04,5\n");
-    writeFile(text, "t,a\n0,1\n0.01,one\n");
-    writeFile(ragged, "t,a\n0,1\n0.01\n");
+    writeText(noTime, "a,b\n1,2\n3,4\n");
+    writeText(jitter, "t,a\n0,1\n0.01,2\n0.02,3\n0.0335,4\n0.04,5\n");
+    writeText(text, "t,a\n0,1\n0.01,one\n");
+    writeText(ragged, "t,a\n0,1\n0.01\n");
     const struct {
         QStringList arguments;
         const char* message;
@@ -215,7 +205,7 @@ TEST(AnalyzeCli, BadInputIsExitCodeTwo)
 {
     QTemporaryDir dir;
     const QString db = dir.filePath("s.tactiscope"), csv = dir.filePath("f.csv");
-    writeFile(csv, "t,f [N]\n0,1\n0.01,2\n0.02,3\n");
+    writeText(csv, "t,f [N]\n0,1\n0.01,2\n0.02,3\n");
     ASSERT_EQ(runCli({"import", csv, "--db", db, "--mode", "palpation"}).exitCode, 0);
     const struct {
         QStringList arguments;

@@ -4,6 +4,7 @@
 #include "core/SampleBlock.h"
 #include "core/storage/SessionStore.h"
 #include "support/CliRunner.h"
+#include "support/TextFiles.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -65,8 +66,7 @@ QJsonDocument parse(const QString& text)
 
 QString readFile(const QString& path)
 {
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
+    return QString::fromUtf8(tactiscope::testing::readBytes(path));
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
@@ -233,4 +234,45 @@ TEST_F(RecorderTest, AFullDiskStopsRecordingAndKeepsEveryCommittedSample)
     const auto force = store.readChannel(session.id, 1, 0, n);
     EXPECT_TRUE(store.gaps(session.id).empty());
     for (std::uint64_t i = 0; i < n; ++i) ASSERT_EQ(force[i], static_cast<double>(i) + 0.5) << i;
+}
+
+TEST_F(RecorderTest, AReaderDuringRecordingSeesAGrowingConsistentPrefix)
+{
+    Recorder recorder(m_path, palpation(), kChannels, 1000.0, 1'000'000);
+    const auto id = recorder.sessionId();
+    std::atomic<bool> done = false;
+    std::thread writer([&] {
+        // About 20 k samples a second for 1.5 s: several commits.
+        for (std::uint64_t first = 0; first < 30'000; first += 20) {
+            recorder.consume(deviceBlock(first, 20));
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+        done = true;
+    });
+    // Another connection, read-only, as the review window opens the store.
+    SessionStore reader(m_path, Database::Access::ReadOnly);
+    EXPECT_EQ(reader.session(id)->status, "recording");
+    std::size_t previous = 0, reads = 0, grew = 0;
+    while (!done) {
+        const auto x = reader.readChannel(id, 0, 0, 1'000'000);
+        ASSERT_GE(x.size(), previous);
+        if (x.size() > previous) ++grew;
+        previous = x.size();
+        ++reads;
+        // A prefix: every sample from 0 on, none missing, none torn.
+        for (std::size_t i = 0; i < x.size(); ++i) ASSERT_EQ(x[i], static_cast<double>(i)) << i << " of " << x.size();
+        // The pyramid belongs to the same commit as the samples it sums up.
+        const auto overview = reader.overview(id, 1, 0, 1'000'000, 50);
+        if (!overview.empty()) {
+            const auto& last = overview.back();
+            EXPECT_EQ(last.max, static_cast<double>(last.firstIndex + last.count - 1) + 0.5);
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    writer.join();
+    recorder.finish(SessionStatus::Complete);
+    EXPECT_GT(reads, 10u);
+    EXPECT_GT(grew, 2u);  // the reader saw several commits land
+    EXPECT_EQ(reader.readChannel(id, 0, 0, 1'000'000).size(), 30'000u);
+    EXPECT_EQ(reader.session(id)->status, "complete");
 }
