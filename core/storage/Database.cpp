@@ -3,7 +3,37 @@
 
 #include <sqlite3.h>
 
+#include <cerrno>
+#include <cstring>
+
 namespace tactiscope::core::storage {
+namespace {
+
+// SQLite's message for the last error, with what a user can do about the
+// ones recording meets: a full disk, a read-only file, an I/O error (with
+// the system's reason, e.g. "Read-only file system").
+std::string describeError(sqlite3* db)
+{
+    const std::string message = sqlite3_errmsg(db);
+    const int code = sqlite3_extended_errcode(db) & 0xFF;
+    const int system = sqlite3_system_errno(db);
+    // A quota or a file-size limit is a full disk to the user too.
+    const bool noSpace = system == ENOSPC || system == EDQUOT || system == EFBIG;
+    if (code == SQLITE_FULL || (code == SQLITE_IOERR && noSpace))
+        return "the disk is full (" + message + (system ? std::string(": ") + std::strerror(system) : "") + ")";
+    if (code == SQLITE_READONLY)
+        return "the file is read-only (" + message +
+               "); check its permissions and whether its disk is mounted read-only";
+    if ((code == SQLITE_IOERR || code == SQLITE_CANTOPEN) && system != 0)
+        return message + " (" + std::strerror(system) + ")";
+    // SQLite keeps no errno for a failed write: say what usually causes one.
+    const int extended = sqlite3_extended_errcode(db);
+    if (extended == SQLITE_IOERR_WRITE || extended == SQLITE_IOERR_FSYNC)
+        return "writing failed (" + message + "): is the disk full, removed or mounted read-only?";
+    return message;
+}
+
+}  // namespace
 
 Statement::Statement(sqlite3* db, std::string_view sql)
     : m_db(db)
@@ -27,7 +57,7 @@ void Statement::check(int code) const
 {
     if (code == SQLITE_OK || code == SQLITE_ROW || code == SQLITE_DONE) return;
     const char* file = sqlite3_db_filename(m_db, "main");
-    throw StorageError(std::string(file && *file ? file : "session store") + ": " + sqlite3_errmsg(m_db));
+    throw StorageError(std::string(file && *file ? file : "session store") + ": " + describeError(m_db));
 }
 
 Statement& Statement::bind(int index, std::int64_t value)
@@ -139,7 +169,7 @@ void Database::exec(std::string_view sql)
     char* error = nullptr;
     const std::string text(sql);
     if (sqlite3_exec(m_db, text.c_str(), nullptr, nullptr, &error) != SQLITE_OK) {
-        const std::string message = error ? error : sqlite3_errmsg(m_db);
+        const std::string message = describeError(m_db);
         sqlite3_free(error);
         throw StorageError(m_path + ": " + message);
     }
