@@ -23,9 +23,9 @@ using core::storage::SessionStore;
 using core::storage::SessionSummary;
 using core::storage::StorageError;
 
-int list(SessionStore& store, bool json)
+int list(SessionStore& store, const core::storage::SessionFilter& filter, bool json)
 {
-    const auto sessions = store.sessions();
+    const auto sessions = store.sessions(filter);
     if (json) {
         core::text::JsonWriter out;
         out.beginArray();
@@ -168,7 +168,8 @@ int runSessions(const QStringList& arguments)
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
         "Inspect a session store.\n"
-        "  list                     the sessions, newest first\n"
+        "  list                     the sessions, newest first (filters: --mode, --subject, --operator,\n"
+        "                           --verdict, --from, --before, --search)\n"
         "  show ID|last             one session's metadata, channels and losses\n"
         "  export ID|last --format csv|json --output PATH\n"
         "                           CSV: t then the channels (metadata in PATH's .meta.json); JSON: all\n"
@@ -179,6 +180,15 @@ int runSessions(const QStringList& arguments)
         {QStringLiteral("json"), QStringLiteral("list, show: print JSON.")},
         {QStringLiteral("format"), QStringLiteral("export: csv or json."), QStringLiteral("csv|json")},
         {QStringLiteral("output"), QStringLiteral("export: the file to write."), QStringLiteral("PATH")},
+        {QStringLiteral("mode"), QStringLiteral("list: only this mode."), QStringLiteral("MODE")},
+        {QStringLiteral("subject"), QStringLiteral("list: only this panel or phantom."), QStringLiteral("ID")},
+        {QStringLiteral("operator"), QStringLiteral("list: only this operator."), QStringLiteral("NAME")},
+        {QStringLiteral("verdict"), QStringLiteral("list: only this verdict."), QStringLiteral("TEXT")},
+        {QStringLiteral("from"), QStringLiteral("list: started on or after (UTC, e.g. 2026-11-21)."),
+         QStringLiteral("DATE")},
+        {QStringLiteral("before"), QStringLiteral("list: started before (UTC)."), QStringLiteral("DATE")},
+        {QStringLiteral("search"), QStringLiteral("list: text in subject, operator, site, notes, verdict or serial."),
+         QStringLiteral("TEXT")},
     });
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
@@ -208,7 +218,20 @@ int runSessions(const QStringList& arguments)
         // Only delete writes; the others read, and work beside a recording.
         SessionStore store(db, action == QLatin1String("delete") ? core::storage::Database::Access::ReadWrite
                                                                  : core::storage::Database::Access::ReadOnly);
-        if (action == QLatin1String("list")) return list(store, parser.isSet(QStringLiteral("json")));
+        if (action == QLatin1String("list")) {
+            core::storage::SessionFilter filter;
+            const auto value = [&](const char* option) {
+                return parser.value(QString::fromLatin1(option)).toStdString();
+            };
+            filter.mode = value("mode");
+            filter.subject = value("subject");
+            filter.operatorName = value("operator");
+            filter.verdict = value("verdict");
+            filter.startedFrom = value("from");
+            filter.startedBefore = value("before");
+            filter.text = value("search");
+            return list(store, filter, parser.isSet(QStringLiteral("json")));
+        }
         const auto id = resolveSession(store, positional[1]);
         if (!id) {
             printError(positional[1] == QLatin1String("last")

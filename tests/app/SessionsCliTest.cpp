@@ -86,6 +86,14 @@ TEST(SessionsCli, ListAndShow)
     EXPECT_DOUBLE_EQ(sessions[0].toObject()["duration_s"].toDouble(), 0.5);  // 100 samples at 200 Hz
     EXPECT_EQ(sessions[1].toObject()["mode"].toString(), "palpation");
 
+    const auto palpation = runCli({"sessions", "--db", db, "list", "--json", "--mode", "palpation"});
+    ASSERT_EQ(parse(palpation.out).array().size(), 1);
+    EXPECT_EQ(parse(palpation.out).array()[0].toObject()["id"].toInt(), 1);
+    const auto search = runCli({"sessions", "--db", db, "list", "--json", "--search", "DOOR"});
+    ASSERT_EQ(parse(search.out).array().size(), 1);
+    EXPECT_EQ(parse(search.out).array()[0].toObject()["id"].toInt(), 2);
+    EXPECT_EQ(parse(runCli({"sessions", "--db", db, "list", "--json", "--from", "2999"}).out).array().size(), 0);
+
     const auto text = runCli({"sessions", "--db", db, "list"});
     EXPECT_TRUE(text.out.contains("door-17 / Ada")) << text.out.toStdString();
 
