@@ -8,10 +8,8 @@
 #include "core/storage/Schema.h"
 #include "core/text/UtcTime.h"
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <limits>
 #include <random>
 
