@@ -9,7 +9,9 @@ namespace tactiscope::core::storage {
 
 Recorder::Recorder(const std::string& storePath, const SessionMetadata& metadata,
                    std::vector<ChannelDescriptor> channels, double sampleRate_hz, std::uint64_t maxQueuedSamples)
-    : m_lock(RecorderLock::acquire(storePath)),
+    : m_storePath(storePath),
+      m_sampleRate_hz(sampleRate_hz),
+      m_lock(RecorderLock::acquire(storePath)),
       m_store(storePath),
       m_maxQueued(maxQueuedSamples)
 {
@@ -43,6 +45,20 @@ void Recorder::consume(const SampleBlock& block)
     m_wake.notify_one();
 }
 
+void Recorder::addEvents(std::vector<SessionEvent> events)
+{
+    const std::lock_guard lock(m_mutex);
+    m_queuedEvents.insert(m_queuedEvents.end(), std::make_move_iterator(events.begin()),
+                          std::make_move_iterator(events.end()));
+    m_wake.notify_one();
+}
+
+double Recorder::sessionTime_s() const
+{
+    const std::lock_guard lock(m_mutex);
+    return m_consumedEnd == 0 ? 0.0 : static_cast<double>(m_consumedEnd - 1) / m_sampleRate_hz;
+}
+
 RecorderStats Recorder::stats() const
 {
     const std::lock_guard lock(m_mutex);
@@ -62,21 +78,25 @@ void Recorder::run(const std::stop_token& stop)
 
 void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
 {
-    if (m_queue.empty() || !m_stats.error.empty()) return;
+    if ((m_queue.empty() && m_queuedEvents.empty()) || !m_stats.error.empty()) return;
     std::vector<SampleBlock> batch(std::make_move_iterator(m_queue.begin()), std::make_move_iterator(m_queue.end()));
     m_queue.clear();
+    std::vector<SessionEvent> events = std::move(m_queuedEvents);
+    m_queuedEvents.clear();
     const std::uint64_t samples = m_queuedSamples;
     m_queuedSamples = 0;
     lock.unlock();  // the acquisition keeps queueing while the disk works
     std::string error;
     try {
         m_store.appendBlocks(m_session, batch);
+        if (!events.empty()) m_store.addEvents(m_session, events);
     } catch (const StorageError& e) {
         error = e.what();
     }
     lock.lock();
     if (error.empty()) {
         m_stats.samplesWritten += samples;
+        m_stats.eventsWritten += events.size();
         ++m_stats.commits;
     } else {
         m_stats.error = "recording stopped: " + error + "; everything recorded before was kept";

@@ -28,6 +28,7 @@ namespace tactiscope::core::storage {
 struct RecorderStats {
     std::uint64_t samplesWritten = 0;  // per channel, committed
     std::uint64_t samplesDropped = 0;  // per channel, over the memory bound or after a failure
+    std::uint64_t eventsWritten = 0;
     std::uint64_t commits = 0;
     std::string error;  // why recording stopped early; empty while it is fine
 };
@@ -47,7 +48,12 @@ public:
     Recorder& operator=(const Recorder&) = delete;
 
     std::int64_t sessionId() const { return m_session; }
+    const std::string& storePath() const { return m_storePath; }
     void consume(const SampleBlock& block) override;  // acquisition thread
+    // Events (e.g. an operator's marker) stored with the next commit; any thread.
+    void addEvents(std::vector<SessionEvent> events);
+    // The session time of the newest sample consumed (0 before the first).
+    double sessionTime_s() const;
     RecorderStats stats() const;
     // Stores what is queued, ends the session with `status` (interrupted if
     // a write failed) and stops the writer. Idempotent.
@@ -57,13 +63,16 @@ private:
     void run(const std::stop_token& stop);
     void writeQueued(std::unique_lock<std::mutex>& lock);
 
-    RecorderLock m_lock;  // first: held before the store is touched, released last
+    std::string m_storePath;
+    double m_sampleRate_hz;
+    RecorderLock m_lock;  // held before the store is touched, released last
     SessionStore m_store;
     std::int64_t m_session = 0;
     std::uint64_t m_maxQueued;
     mutable std::mutex m_mutex;
     std::condition_variable_any m_wake;
     std::deque<SampleBlock> m_queue;
+    std::vector<SessionEvent> m_queuedEvents;
     std::uint64_t m_queuedSamples = 0;
     std::optional<std::uint64_t> m_firstIndex;  // of the first block consumed
     double m_firstTime_s = 0.0;

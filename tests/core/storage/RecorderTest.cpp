@@ -2,6 +2,7 @@
 // stays bounded while the disk is held up (the overflow becomes a gap), and
 // a write error ends the recording with everything before it kept.
 #include "core/storage/Recorder.h"
+#include "core/storage/RecordingTap.h"
 
 #include "core/SampleBlock.h"
 
@@ -358,4 +359,29 @@ TEST_F(RecorderTest, ADamagedStoreIsReportedAndNeverWritten)
     ASSERT_EQ(std::fread(after.data(), 1, size, file), size);
     std::fclose(file);
     EXPECT_TRUE(after == damaged);
+}
+
+TEST_F(RecorderTest, ATapRecordsOnlyWhileARecorderIsAttachedAndMarkersLandInTheSession)
+{
+    RecordingTap tap;
+    tap.consume(deviceBlock(0, 100));  // nothing attached: not recorded
+    auto recorder = std::make_shared<Recorder>(m_path, palpation(), kChannels, 1000.0, 100'000);
+    tap.attach(recorder);
+    tap.consume(deviceBlock(100, 250));
+    EXPECT_DOUBLE_EQ(recorder->sessionTime_s(), 0.249);  // the newest sample, session-relative
+    recorder->addEvents({{0, kLiveAnalysis, "marker", 0.2, 0.2, 0, {}, {}, {}, "weld seam"}});
+    EXPECT_EQ(tap.detach(), recorder);
+    tap.consume(deviceBlock(350, 100));  // detached: not recorded
+    const auto stats = recorder->finish(SessionStatus::Complete);
+    EXPECT_EQ(stats.samplesWritten, 250u);
+    EXPECT_EQ(stats.eventsWritten, 1u);
+
+    SessionStore store(m_path, Database::Access::ReadOnly);
+    EXPECT_EQ(store.sampleCount(recorder->sessionId()), 250u);
+    EXPECT_EQ(store.readChannel(recorder->sessionId(), 0, 0, 1)[0], 100.0);
+    const auto markers = store.events(recorder->sessionId());
+    ASSERT_EQ(markers.size(), 1u);
+    EXPECT_EQ(markers[0].kind, "marker");
+    EXPECT_EQ(markers[0].start_s, 0.2);
+    EXPECT_EQ(markers[0].note, "weld seam");
 }

@@ -1,0 +1,28 @@
+// A sink that stays on the acquisition for as long as the device streams
+// and passes blocks to a Recorder while one is attached: recording starts
+// and stops at any moment, while sinks can only be added before the
+// acquisition starts. attach() and detach() come from the GUI thread,
+// consume() from the acquisition thread.
+#pragma once
+
+#include "core/BlockSink.h"
+#include "core/storage/Recorder.h"
+
+#include <memory>
+#include <mutex>
+
+namespace tactiscope::core::storage {
+
+class RecordingTap final : public BlockSink {
+public:
+    void attach(std::shared_ptr<Recorder> recorder);
+    // Returns the recorder that was attached; no block reaches it afterwards.
+    std::shared_ptr<Recorder> detach();
+    void consume(const SampleBlock& block) override;
+
+private:
+    std::mutex m_mutex;
+    std::shared_ptr<Recorder> m_recorder;
+};
+
+}  // namespace tactiscope::core::storage
