@@ -3,20 +3,30 @@
 
 #include "core/LiveBuffer.h"
 #include "core/Version.h"
+#include "core/storage/Recorder.h"
+#include "core/storage/RecordingTap.h"
 #include "devices/Acquisition.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
 #include "ui/ConnectDialog.h"
 #include "ui/LivePlotWidget.h"
+#include "ui/SessionBar.h"
 
 #include <QActionGroup>
 #include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QIcon>
 #include <QLabel>
 #include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QSettings>
+#include <QStandardPaths>
 #include <QStatusBar>
+#include <QToolBar>
 
 #include <cmath>
 
@@ -24,6 +34,15 @@ namespace tactiscope::ui {
 namespace {
 
 constexpr int kStatusInterval_ms = 250;
+// The recorder's queue: 30 s of samples, beyond which a stalled disk turns
+// into a recorded gap instead of unbounded memory.
+constexpr double kRecorderQueue_s = 30.0;
+
+QString defaultStorePath()
+{
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
+        .filePath(QStringLiteral("sessions.tactiscope"));
+}
 
 QString stateText(const devices::AcquisitionStats& stats, const devices::BlockSource& source)
 {
@@ -61,15 +80,52 @@ MainWindow::MainWindow(QWidget* parent)
     setWindowIcon(QIcon(QStringLiteral(":/tactiscope/icons/tactiscope.svg")));
     setCentralWidget(m_plot);
     resize(1200, 720);
+    m_sessionBar = new SessionBar(this);
+    m_sessionBar->setObjectName(QStringLiteral("sessionBar"));
+    QToolBar* sessionToolBar = addToolBar(tr("Session"));
+    sessionToolBar->setObjectName(QStringLiteral("sessionToolBar"));
+    sessionToolBar->setMovable(false);
+    sessionToolBar->addWidget(m_sessionBar);
+    connect(m_sessionBar, &SessionBar::recordClicked, this, &MainWindow::toggleRecording);
     createMenus();
     createStatusBar();
+    restoreSettings();
     m_statusTimer.setInterval(kStatusInterval_ms);
     connect(&m_statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
 }
 
 MainWindow::~MainWindow()
 {
-    disconnectSource();
+    disconnectSource();  // ends a recording, with everything kept
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    stopRecording();
+    saveSettings();
+    event->accept();
+}
+
+void MainWindow::restoreSettings()
+{
+    const QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    core::storage::SessionMetadata metadata;
+    metadata.mode =
+        settings.value(QStringLiteral("session/mode"), QStringLiteral("panel-scan")).toString().toStdString();
+    metadata.operatorName = settings.value(QStringLiteral("session/operator")).toString().toStdString();
+    m_sessionBar->setMetadata(metadata);
+    setStorePath(settings.value(QStringLiteral("recording/store"), defaultStorePath()).toString());
+}
+
+void MainWindow::saveSettings() const
+{
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    const auto metadata = m_sessionBar->metadata();
+    settings.setValue(QStringLiteral("session/mode"), QString::fromStdString(metadata.mode));
+    settings.setValue(QStringLiteral("session/operator"), QString::fromStdString(metadata.operatorName));
+    settings.setValue(QStringLiteral("recording/store"), m_storePath);
 }
 
 void MainWindow::createMenus()
@@ -87,6 +143,12 @@ void MainWindow::createMenus()
     }
     device->addSeparator();
     device->addAction(tr("&Disconnect"), this, &MainWindow::disconnectSource);
+
+    QMenu* session = menuBar()->addMenu(tr("&Session"));
+    session->addAction(tr("Start / stop &recording"), QKeySequence(tr("Ctrl+R")), this, &MainWindow::toggleRecording);
+    session->addAction(tr("&Mark event"), QKeySequence(tr("Ctrl+M")), this, [this] { markEvent(); });
+    session->addSeparator();
+    session->addAction(tr("Session &store…"), this, &MainWindow::chooseStore);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     QMenu* window = view->addMenu(tr("Time &window"));
@@ -121,6 +183,123 @@ void MainWindow::createStatusBar()
         statusBar()->addPermanentWidget(label);
     }
     m_deviceLabel->setContentsMargins(6, 0, 6, 0);
+    m_recordingLabel = new QLabel(this);
+    m_recordingLabel->setObjectName(QStringLiteral("recordingLabel"));
+    m_recordingLabel->setContentsMargins(10, 0, 10, 0);
+    statusBar()->addPermanentWidget(m_recordingLabel);
+}
+
+void MainWindow::setStorePath(const QString& path)
+{
+    m_storePath = path;
+    m_sessionBar->setStorePath(path);
+}
+
+void MainWindow::chooseStore()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Session store"), m_storePath,
+                                                      tr("Tactiscope session stores (*.tactiscope);;All files (*)"),
+                                                      nullptr, QFileDialog::DontConfirmOverwrite);
+    if (!path.isEmpty()) setStorePath(path);
+}
+
+void MainWindow::toggleRecording()
+{
+    if (isRecording())
+        stopRecording();
+    else
+        startRecording();
+}
+
+bool MainWindow::startRecording()
+{
+    if (isRecording()) return true;
+    if (!m_acquisition) {
+        statusBar()->showMessage(tr("Connect a device to record."), 5000);
+        return false;
+    }
+    const auto& source = m_acquisition->source();
+    auto metadata = m_sessionBar->metadata();
+    metadata.deviceModel = source.name();
+    QDir().mkpath(QFileInfo(m_storePath).absolutePath());
+    const double rate_hz = source.nominalSampleRate_hz();
+    try {
+        m_recorder = std::make_shared<core::storage::Recorder>(
+            m_storePath.toStdString(), metadata, source.channels(), rate_hz,
+            static_cast<std::uint64_t>(std::ceil(kRecorderQueue_s * rate_hz)));
+    } catch (const core::storage::StorageError& e) {
+        showProblem(tr("Cannot record"), tr("Recording could not start."), QString::fromStdString(e.what()));
+        return false;
+    }
+    m_tap->attach(m_recorder);
+    m_sessionBar->setRecording(true);
+    updateRecording();
+    return true;
+}
+
+void MainWindow::stopRecording()
+{
+    if (!isRecording()) return;
+    m_tap->detach();
+    const auto recorder = std::exchange(m_recorder, nullptr);
+    const auto stats = recorder->finish(core::storage::SessionStatus::Complete);
+    m_sessionBar->setRecording(false);
+    m_sessionBar->setRecordEnabled(m_acquisition != nullptr);
+    const QLocale locale;
+    m_recordingLabel->setStyleSheet(QString());
+    m_recordingLabel->setText(tr("Session %1 saved: %2 samples per channel")
+                                  .arg(recorder->sessionId())
+                                  .arg(locale.toString(static_cast<qulonglong>(stats.samplesWritten))));
+    if (!stats.error.empty())
+        showProblem(tr("Recording stopped"), tr("Recording stopped early."), QString::fromStdString(stats.error));
+}
+
+void MainWindow::markEvent(const QString& note)
+{
+    if (!isRecording()) {
+        statusBar()->showMessage(tr("Markers go into a recording: start one first (Ctrl+R)."), 5000);
+        return;
+    }
+    const double time_s = m_recorder->sessionTime_s();
+    core::storage::SessionEvent marker;
+    marker.kind = "marker";
+    marker.start_s = marker.end_s = time_s;
+    marker.note = note.toStdString();
+    m_recorder->addEvents({marker});
+    statusBar()->showMessage(tr("Marker at %1 s").arg(QLocale().toString(time_s, 'f', 2)), 4000);
+}
+
+void MainWindow::updateRecording()
+{
+    if (!isRecording()) return;
+    const auto stats = m_recorder->stats();
+    if (!stats.error.empty()) {
+        stopRecording();  // keeps everything committed, and says why
+        return;
+    }
+    const double elapsed_s = m_recorder->sessionTime_s();
+    m_sessionBar->setElapsed(elapsed_s);
+    const QLocale locale;
+    QString text = tr("● REC session %1: %2 samples")
+                       .arg(m_recorder->sessionId())
+                       .arg(locale.toString(static_cast<qulonglong>(stats.samplesWritten)));
+    if (stats.samplesDropped > 0)
+        text += tr(", %1 lost").arg(locale.toString(static_cast<qulonglong>(stats.samplesDropped)));
+    m_recordingLabel->setText(text);
+    m_recordingLabel->setStyleSheet(QStringLiteral("color: #c62828; font-weight: 600;"));
+}
+
+// Problems are shown in a window that does not block: acquisition and
+// recording go on, and the operator closes it when convenient.
+void MainWindow::showProblem(const QString& title, const QString& text, const QString& detail)
+{
+    qWarning("%s: %s", qPrintable(text), qPrintable(detail));
+    auto* box = new QMessageBox(QMessageBox::Warning, title, text, QMessageBox::Ok, this);
+    box->setObjectName(QStringLiteral("problemBox"));
+    box->setInformativeText(detail);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setModal(false);
+    box->show();
 }
 
 void MainWindow::showConnectDialog()
@@ -184,6 +363,8 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
         std::make_shared<core::LiveBuffer>(channels.size(), static_cast<std::size_t>(std::ceil(2.0 * rate_hz)) + 1);
     m_acquisition = std::make_unique<devices::Acquisition>(std::move(source));
     m_acquisition->addSink(buffer);
+    m_tap = std::make_shared<core::storage::RecordingTap>();
+    m_acquisition->addSink(m_tap);
     m_plot->setSource(buffer, channels, rate_hz);
     m_acquisition->start();
 
@@ -192,21 +373,25 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
     m_deviceLabel->setText(name);
     updateStatus();
     m_statusTimer.start();
+    m_sessionBar->setRecordEnabled(true);
 }
 
 void MainWindow::disconnectSource()
 {
     ++m_connectAttempt;  // a connect still in its handshake is dropped when it answers
     m_connectingLabel.reset();
+    stopRecording();  // the user ended the session by disconnecting
     m_statusTimer.stop();
     if (m_acquisition) m_acquisition->stop();
     m_plot->clearSource();
     m_acquisition.reset();
+    m_tap.reset();
     setWindowTitle(tr("Tactiscope"));
     m_deviceLabel->setText(tr("No device"));
     m_stateLabel->clear();
     m_rateLabel->clear();
     m_samplesLabel->clear();
+    m_sessionBar->setRecordEnabled(false);
 }
 
 void MainWindow::updateStatus()
@@ -224,6 +409,7 @@ void MainWindow::updateStatus()
     if (stats.samplesLost > 0)
         samples += tr(", %1 lost").arg(locale.toString(static_cast<qulonglong>(stats.samplesLost)));
     m_samplesLabel->setText(samples);
+    updateRecording();
 }
 
 void MainWindow::showAbout()

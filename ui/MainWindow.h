@@ -1,6 +1,8 @@
-// The workstation's main window: the live plot of the connected device in
-// the centre, device and view menus, and a status bar with the device name,
-// its state, the measured sample rate and the samples received.
+// The workstation's main window: the session bar (what is inspected, the
+// record button) on top, the live plot of the connected device in the
+// centre, device, session and view menus, and a status bar with the device
+// name, its state, the measured sample rate, the samples received and what
+// is being recorded.
 //
 // The window owns the device's Acquisition (a worker thread) and the
 // LiveBuffer between them; it only reads counters and buffered samples, so
@@ -11,6 +13,7 @@
 #include "devices/ReconnectingSource.h"
 
 #include <QMainWindow>
+#include <QString>
 #include <QTimer>
 
 #include <cstdint>
@@ -24,10 +27,15 @@ class QLabel;
 namespace tactiscope::devices {
 class Acquisition;
 }
+namespace tactiscope::core::storage {
+class Recorder;
+class RecordingTap;
+}  // namespace tactiscope::core::storage
 
 namespace tactiscope::ui {
 
 class LivePlotWidget;
+class SessionBar;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -48,6 +56,21 @@ public:
 
     LivePlotWidget* livePlot() const { return m_plot; }
 
+    // Recording: into the session store at storePath() (remembered across
+    // runs), with the session bar's metadata and the device's identity.
+    // Failures are shown without stopping the acquisition; start returns
+    // whether recording started.
+    void setStorePath(const QString& path);
+    QString storePath() const { return m_storePath; }
+    bool startRecording();
+    void stopRecording();
+    bool isRecording() const { return m_recorder != nullptr; }
+    // A timestamped marker in the session being recorded.
+    void markEvent(const QString& note = {});
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
 private:
     void createMenus();
     void showConnectDialog();
@@ -55,14 +78,25 @@ private:
     void createStatusBar();
     void updateStatus();
     void showAbout();
+    void chooseStore();
+    void toggleRecording();
+    void updateRecording();
+    void showProblem(const QString& title, const QString& text, const QString& detail);
+    void restoreSettings();
+    void saveSettings() const;
 
     LivePlotWidget* m_plot = nullptr;
+    SessionBar* m_sessionBar = nullptr;
+    QLabel* m_recordingLabel = nullptr;
     QLabel* m_deviceLabel = nullptr;
     QLabel* m_stateLabel = nullptr;
     QLabel* m_rateLabel = nullptr;
     QLabel* m_samplesLabel = nullptr;
     QTimer m_statusTimer;
     std::unique_ptr<devices::Acquisition> m_acquisition;
+    std::shared_ptr<core::storage::RecordingTap> m_tap;   // on every acquisition
+    std::shared_ptr<core::storage::Recorder> m_recorder;  // while recording
+    QString m_storePath;
     std::optional<QString> m_connectingLabel;
     std::uint64_t m_connectAttempt = 0;  // a newer attempt or a disconnect drops older results
     // One per connect attempt, so a new attempt never waits for an old

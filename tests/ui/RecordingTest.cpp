@@ -1,0 +1,116 @@
+// Recording from the main window against the live simulator: the session
+// bar starts and stops a session, Ctrl+M drops a marker, and the store then
+// holds a complete session with the bar's metadata, the samples streamed
+// while recording, and the marker. A store that cannot be opened is shown
+// without stopping the live view.
+#include "core/storage/SessionStore.h"
+#include "devices/simulator/ScenarioCatalog.h"
+#include "devices/simulator/SimulatorSource.h"
+#include "support/Screenshot.h"
+#include "support/WaitFor.h"
+#include "ui/LivePlotWidget.h"
+#include "ui/MainWindow.h"
+
+#include <QComboBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+using namespace tactiscope;
+using tactiscope::testing::runEventLoopFor;
+using tactiscope::testing::waitFor;
+
+namespace {
+
+template <typename Widget>
+Widget* child(const ui::MainWindow& window, const char* name)
+{
+    auto* widget = window.findChild<Widget*>(QString::fromLatin1(name));
+    EXPECT_NE(widget, nullptr) << name;
+    return widget;
+}
+
+std::unique_ptr<devices::BlockSource> panelScan()
+{
+    return std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario("panel-scan"));
+}
+
+}  // namespace
+
+TEST(Recording, TheSessionBarRecordsASessionWithItsMetadataAndAMarker)
+{
+    QTemporaryDir dir;
+    const QString store = dir.filePath("line3.tactiscope");
+    ui::MainWindow window;
+    window.setStorePath(store);
+    window.show();
+    auto* record = child<QPushButton>(window, "recordButton");
+    EXPECT_FALSE(record->isEnabled());  // nothing to record yet
+    window.connectSource(panelScan());
+    ASSERT_TRUE(record->isEnabled());
+
+    child<QComboBox>(window, "modeBox")->setCurrentIndex(0);
+    QTest::keyClicks(child<QLineEdit>(window, "subjectEdit"), QStringLiteral("door-17"));
+    QTest::keyClicks(child<QLineEdit>(window, "operatorEdit"), QStringLiteral("Ada"));
+    QTest::mouseClick(record, Qt::LeftButton);
+    ASSERT_TRUE(window.isRecording());
+    EXPECT_TRUE(child<QLineEdit>(window, "subjectEdit")->isReadOnly());  // metadata is fixed while recording
+    ASSERT_TRUE(waitFor([&] { return child<QLabel>(window, "recordingLabel")->text().contains("REC"); }, 3000));
+    runEventLoopFor(1200);
+    QTest::keyClick(&window, Qt::Key_M, Qt::ControlModifier);
+    runEventLoopFor(800);
+    EXPECT_TRUE(child<QLabel>(window, "elapsedLabel")->text().startsWith(QStringLiteral("00:00:0")));
+    tactiscope::testing::saveScreenshot(window, QStringLiteral("recording"));
+    QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier);  // stop
+    ASSERT_FALSE(window.isRecording());
+    EXPECT_TRUE(window.isConnected());  // the live view goes on
+    EXPECT_TRUE(child<QLabel>(window, "recordingLabel")->text().startsWith(QStringLiteral("Session 1 saved")));
+
+    core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto list = sessions.sessions();
+    ASSERT_EQ(list.size(), 1u);
+    const auto& s = list.front();
+    EXPECT_EQ(s.status, "complete");
+    EXPECT_EQ(s.metadata.mode, "panel-scan");
+    EXPECT_EQ(s.metadata.subject, "door-17");
+    EXPECT_EQ(s.metadata.operatorName, "Ada");
+    EXPECT_EQ(s.metadata.deviceModel, "Simulator — panel scan");
+    EXPECT_EQ(s.sampleRate_hz, 500.0);
+    // About two seconds of the 500 Hz simulator, with nothing lost.
+    EXPECT_GT(s.sampleCount, 700u);
+    EXPECT_LT(s.sampleCount, 3000u);
+    EXPECT_TRUE(sessions.gaps(s.id).empty());
+    const auto markers = sessions.events(s.id);
+    ASSERT_EQ(markers.size(), 1u);
+    EXPECT_EQ(markers[0].kind, "marker");
+    EXPECT_GT(markers[0].start_s, 0.9);
+    EXPECT_LT(markers[0].start_s, static_cast<double>(s.sampleCount) / 500.0);
+}
+
+TEST(Recording, AStoreThatCannotBeOpenedIsShownAndTheLiveViewGoesOn)
+{
+    QTemporaryDir dir;
+    const QString notAStore = dir.filePath("notes.txt");
+    QFile file(notAStore);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write("my notes, not a store\n");
+    file.close();
+    ui::MainWindow window;
+    window.setStorePath(notAStore);
+    window.connectSource(panelScan());
+    window.show();
+    EXPECT_FALSE(window.startRecording());
+    EXPECT_FALSE(window.isRecording());
+    QMessageBox* box = nullptr;
+    ASSERT_TRUE(waitFor([&] { return (box = window.findChild<QMessageBox*>(QStringLiteral("problemBox"))); }, 2000));
+    EXPECT_FALSE(box->isModal());
+    EXPECT_TRUE(box->informativeText().contains(QStringLiteral("not a Tactiscope session store")))
+        << box->informativeText().toStdString();
+    const auto drawn = window.livePlot()->drawnPointCount(0);
+    EXPECT_TRUE(waitFor([&] { return window.livePlot()->drawnPointCount(0) != drawn; }, 2000));
+}

@@ -1,0 +1,138 @@
+// SessionBar: layout, the record button's two faces, elapsed time.
+#include "ui/SessionBar.h"
+
+#include <QComboBox>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+
+#include <cmath>
+
+namespace tactiscope::ui {
+namespace {
+
+QLabel* caption(const QString& text, QWidget* parent)
+{
+    auto* label = new QLabel(text, parent);
+    label->setStyleSheet(QStringLiteral("color: palette(mid); font-weight: 600;"));
+    return label;
+}
+
+}  // namespace
+
+SessionBar::SessionBar(QWidget* parent)
+    : QWidget(parent),
+      m_mode(new QComboBox(this)),
+      m_subject(new QLineEdit(this)),
+      m_operator(new QLineEdit(this)),
+      m_record(new QPushButton(this)),
+      m_elapsed(new QLabel(this)),
+      m_store(new QLabel(this))
+{
+    m_mode->setObjectName(QStringLiteral("modeBox"));
+    m_subject->setObjectName(QStringLiteral("subjectEdit"));
+    m_operator->setObjectName(QStringLiteral("operatorEdit"));
+    m_record->setObjectName(QStringLiteral("recordButton"));
+    m_elapsed->setObjectName(QStringLiteral("elapsedLabel"));
+    m_store->setObjectName(QStringLiteral("storeLabel"));
+
+    m_mode->addItem(tr("Panel scan"), QStringLiteral("panel-scan"));
+    m_mode->addItem(tr("Palpation"), QStringLiteral("palpation"));
+    m_mode->addItem(tr("Capacitive"), QStringLiteral("capacitive"));
+    m_subject->setPlaceholderText(tr("panel or phantom id"));
+    m_operator->setPlaceholderText(tr("your name"));
+    m_subject->setMinimumWidth(160);
+    m_operator->setMinimumWidth(120);
+
+    // Big enough to hit with a gloved finger; the face says what a press does.
+    QFont big = m_record->font();
+    big.setPointSizeF(big.pointSizeF() * 1.3);
+    big.setBold(true);
+    m_record->setFont(big);
+    m_record->setMinimumSize(150, 44);
+    m_record->setToolTip(tr("Start or stop recording (Ctrl+R)"));
+    QFont clock = m_elapsed->font();
+    clock.setPointSizeF(clock.pointSizeF() * 1.6);
+    clock.setStyleHint(QFont::Monospace);
+    clock.setFamily(QStringLiteral("monospace"));
+    m_elapsed->setFont(clock);
+    m_elapsed->setMinimumWidth(m_elapsed->fontMetrics().horizontalAdvance(QStringLiteral("00:00:00")) + 8);
+    m_store->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(10, 6, 10, 6);
+    layout->setSpacing(8);
+    layout->addWidget(caption(tr("Mode"), this));
+    layout->addWidget(m_mode);
+    layout->addSpacing(10);
+    layout->addWidget(caption(tr("Subject"), this));
+    layout->addWidget(m_subject, 2);
+    layout->addSpacing(10);
+    layout->addWidget(caption(tr("Operator"), this));
+    layout->addWidget(m_operator, 1);
+    layout->addSpacing(16);
+    layout->addWidget(m_record);
+    layout->addWidget(m_elapsed);
+    layout->addWidget(m_store, 2);
+
+    connect(m_record, &QPushButton::clicked, this, &SessionBar::recordClicked);
+    setRecording(false);
+    setRecordEnabled(false);
+    setElapsed(0.0);
+}
+
+core::storage::SessionMetadata SessionBar::metadata() const
+{
+    core::storage::SessionMetadata m;
+    m.mode = m_mode->currentData().toString().toStdString();
+    m.subject = m_subject->text().trimmed().toStdString();
+    m.operatorName = m_operator->text().trimmed().toStdString();
+    return m;
+}
+
+void SessionBar::setMetadata(const core::storage::SessionMetadata& metadata)
+{
+    const int mode = m_mode->findData(QString::fromStdString(metadata.mode));
+    if (mode >= 0) m_mode->setCurrentIndex(mode);
+    m_subject->setText(QString::fromStdString(metadata.subject));
+    m_operator->setText(QString::fromStdString(metadata.operatorName));
+}
+
+void SessionBar::setRecordEnabled(bool enabled)
+{
+    m_record->setEnabled(enabled || m_recording);
+}
+
+void SessionBar::setRecording(bool recording)
+{
+    m_recording = recording;
+    m_record->setText(recording ? tr("■  Stop") : tr("●  Record"));
+    // Red while recording, so the state reads from across the room.
+    m_record->setStyleSheet(recording ? QStringLiteral("QPushButton { background: #c62828; color: white; "
+                                                       "border-radius: 6px; padding: 4px 14px; }")
+                                      : QString());
+    m_elapsed->setStyleSheet(recording ? QStringLiteral("color: #c62828;") : QString());
+    // Read-only rather than disabled, so the metadata stays legible.
+    m_mode->setEnabled(!recording);
+    m_subject->setReadOnly(recording);
+    m_operator->setReadOnly(recording);
+}
+
+void SessionBar::setElapsed(double seconds)
+{
+    const auto whole = static_cast<long long>(std::floor(std::max(0.0, seconds)));
+    m_elapsed->setText(QStringLiteral("%1:%2:%3")
+                           .arg(whole / 3600, 2, 10, QLatin1Char('0'))
+                           .arg(whole / 60 % 60, 2, 10, QLatin1Char('0'))
+                           .arg(whole % 60, 2, 10, QLatin1Char('0')));
+}
+
+void SessionBar::setStorePath(const QString& path)
+{
+    m_store->setText(tr("→ %1").arg(QFileInfo(path).fileName()));
+    m_store->setToolTip(tr("Sessions are written to %1").arg(path));
+}
+
+}  // namespace tactiscope::ui
