@@ -2,6 +2,8 @@
 // queues, so holding it while forwarding costs the acquisition nothing.
 #include "core/storage/RecordingTap.h"
 
+#include <utility>
+
 namespace tactiscope::core::storage {
 
 void RecordingTap::attach(std::shared_ptr<Recorder> recorder)
