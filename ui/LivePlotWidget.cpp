@@ -51,17 +51,22 @@ LivePlotWidget::LivePlotWidget(QWidget* parent)
 LivePlotWidget::~LivePlotWidget() = default;
 
 void LivePlotWidget::setSource(std::shared_ptr<const core::LiveBuffer> buffer,
-                               const std::vector<core::ChannelDescriptor>& channels, double sampleRate_hz)
+                               const std::vector<core::ChannelDescriptor>& channels, double sampleRate_hz,
+                               std::vector<DisplayUnit> units)
 {
     clearSource();
     if (!buffer || channels.size() != buffer->channelCount() || !(sampleRate_hz > 0.0)) return;
+    if (units.size() != channels.size()) {
+        units.clear();
+        for (const auto& channel : channels) units.push_back(displayUnitFor(channel));
+    }
 
     m_buffer = std::move(buffer);
     // Room for the longest window plus a frame's worth of slack.
     const auto capacity = static_cast<std::size_t>(std::ceil(sampleRate_hz * (kMaxWindow_s + 1.0)));
     m_time = std::make_unique<core::RingBuffer<double>>(capacity);
     m_values.assign(channels.size(), core::RingBuffer<double>(capacity));
-    buildPlotItems(channels);
+    buildPlotItems(channels, units);
     scheduleFrame();
 }
 
@@ -87,11 +92,12 @@ int LivePlotWidget::drawnPointCount(std::size_t channel) const
     return channel < m_graphs.size() ? m_graphs[channel]->dataCount() : 0;
 }
 
-void LivePlotWidget::buildPlotItems(const std::vector<core::ChannelDescriptor>& channels)
+void LivePlotWidget::buildPlotItems(const std::vector<core::ChannelDescriptor>& channels,
+                                    const std::vector<DisplayUnit>& units)
 {
     std::vector<DisplayUnit> laneUnits;
     for (std::size_t c = 0; c < channels.size(); ++c) {
-        const DisplayUnit unit = displayUnitFor(channels[c]);
+        const DisplayUnit& unit = units[c];
         auto found = std::find(laneUnits.begin(), laneUnits.end(), unit);
         const auto lane = static_cast<std::size_t>(found - laneUnits.begin());
         if (found == laneUnits.end()) {

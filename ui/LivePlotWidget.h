@@ -13,6 +13,7 @@
 #include "core/LiveBuffer.h"
 #include "core/RingBuffer.h"
 #include "ui/AxisAutoRange.h"
+#include "ui/DisplayUnits.h"
 
 #include <QTimer>
 #include <QWidget>
@@ -40,8 +41,10 @@ public:
 
     // Starts plotting `buffer`, whose channels are described by `channels`,
     // replacing whatever was shown. sampleRate_hz sizes the local history.
+    // `units` (one per channel) replaces the display units of the channels'
+    // kinds, e.g. for derived signals such as the detector's output.
     void setSource(std::shared_ptr<const core::LiveBuffer> buffer, const std::vector<core::ChannelDescriptor>& channels,
-                   double sampleRate_hz);
+                   double sampleRate_hz, std::vector<DisplayUnit> units = {});
     // Stops plotting and clears the traces.
     void clearSource();
 
@@ -66,7 +69,7 @@ private:
 
     void scheduleFrame();
     void refresh();
-    void buildPlotItems(const std::vector<core::ChannelDescriptor>& channels);
+    void buildPlotItems(const std::vector<core::ChannelDescriptor>& channels, const std::vector<DisplayUnit>& units);
     void removePlotItems();
     std::uint64_t firstIndexAtOrAfter(double t_s) const;
 

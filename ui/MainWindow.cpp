@@ -3,6 +3,7 @@
 
 #include "core/LiveBuffer.h"
 #include "core/Version.h"
+#include "core/detector/LiveDetection.h"
 #include "core/storage/Recorder.h"
 #include "core/storage/RecordingTap.h"
 #include "devices/Acquisition.h"
@@ -10,6 +11,7 @@
 #include "devices/simulator/SimulatorSource.h"
 #include "ui/ConnectDialog.h"
 #include "ui/LivePlotWidget.h"
+#include "ui/PanelScanView.h"
 #include "ui/SessionBar.h"
 
 #include <QActionGroup>
@@ -23,7 +25,9 @@
 #include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
+#include <QSplitter>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QToolBar>
@@ -74,11 +78,21 @@ QString stateText(const devices::AcquisitionStats& stats, const devices::BlockSo
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
-      m_plot(new LivePlotWidget(this))
+      m_plot(new LivePlotWidget(this)),
+      m_panelScan(new PanelScanView(this))
 {
     setWindowTitle(tr("Tactiscope"));
     setWindowIcon(QIcon(QStringLiteral(":/tactiscope/icons/tactiscope.svg")));
-    setCentralWidget(m_plot);
+    // The traces on top, the mode's view (its lanes, readings and controls) below.
+    auto* centre = new QSplitter(Qt::Vertical, this);
+    centre->setObjectName(QStringLiteral("centreSplitter"));
+    centre->addWidget(m_plot);
+    centre->addWidget(m_panelScan);
+    centre->setStretchFactor(0, 3);
+    centre->setStretchFactor(1, 2);
+    centre->setSizes({540, 360});
+    centre->setChildrenCollapsible(false);
+    setCentralWidget(centre);
     resize(1200, 720);
     m_sessionBar = new SessionBar(this);
     m_sessionBar->setObjectName(QStringLiteral("sessionBar"));
@@ -87,6 +101,7 @@ MainWindow::MainWindow(QWidget* parent)
     sessionToolBar->setMovable(false);
     sessionToolBar->addWidget(m_sessionBar);
     connect(m_sessionBar, &SessionBar::recordClicked, this, &MainWindow::toggleRecording);
+    connect(m_sessionBar, &SessionBar::modeChanged, this, &MainWindow::showModeView);
     createMenus();
     createStatusBar();
     restoreSettings();
@@ -116,6 +131,12 @@ void MainWindow::restoreSettings()
     metadata.operatorName = settings.value(QStringLiteral("session/operator")).toString().toStdString();
     m_sessionBar->setMetadata(metadata);
     setStorePath(settings.value(QStringLiteral("recording/store"), defaultStorePath()).toString());
+    showModeView();
+}
+
+void MainWindow::showModeView()
+{
+    m_panelScan->setVisible(m_detection && m_sessionBar->metadata().mode == "panel-scan");
 }
 
 void MainWindow::saveSettings() const
@@ -152,13 +173,17 @@ void MainWindow::createMenus()
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     QMenu* window = view->addMenu(tr("Time &window"));
+    // One window for the traces and the mode's lanes, so they line up in time.
     auto* windows = new QActionGroup(this);
     for (const double seconds : {5.0, 10.0, 30.0, 60.0}) {
         QAction* action = window->addAction(tr("%1 s").arg(seconds));
         action->setCheckable(true);
         action->setChecked(seconds == LivePlotWidget::kDefaultWindow_s);
         windows->addAction(action);
-        connect(action, &QAction::triggered, this, [this, seconds] { m_plot->setWindowLength(seconds); });
+        connect(action, &QAction::triggered, this, [this, seconds] {
+            m_plot->setWindowLength(seconds);
+            m_panelScan->lanes()->setWindowLength(seconds);
+        });
     }
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
@@ -232,6 +257,7 @@ bool MainWindow::startRecording()
         return false;
     }
     m_tap->attach(m_recorder);
+    m_panelScan->startPanel();
     m_sessionBar->setRecording(true);
     updateRecording();
     return true;
@@ -252,6 +278,57 @@ void MainWindow::stopRecording()
                                   .arg(locale.toString(static_cast<qulonglong>(stats.samplesWritten))));
     if (!stats.error.empty())
         showProblem(tr("Recording stopped"), tr("Recording stopped early."), QString::fromStdString(stats.error));
+    else if (m_panelScan->isVisible())
+        askVerdict(recorder->sessionId(), m_panelScan->defectCount(), m_panelScan->verdict());
+}
+
+// The panel's verdict follows the defect count; the operator confirms it or
+// overrides it (a dent the probe missed, a false alarm) without being held up.
+void MainWindow::askVerdict(std::int64_t session, int defects, const QString& verdict)
+{
+    const std::string store = m_storePath.toStdString();
+    const auto save = [this, store, session](const QString& text) {
+        try {
+            core::storage::SessionStore(store).setVerdict(session, text.toStdString());
+            statusBar()->showMessage(tr("Session %1: verdict \"%2\"").arg(session).arg(text), 5000);
+        } catch (const core::storage::StorageError& e) {
+            showProblem(tr("Verdict not saved"), tr("The verdict could not be saved."),
+                        QString::fromStdString(e.what()));
+        }
+    };
+    save(verdict);
+    auto* box = new QMessageBox(QMessageBox::Question, tr("Panel verdict"),
+                                tr("%n defect(s) found: the verdict is \"%1\".", nullptr, defects).arg(verdict),
+                                QMessageBox::NoButton, this);
+    box->setObjectName(QStringLiteral("verdictBox"));
+    box->setInformativeText(tr("Keep it, or override it if the probe was wrong."));
+    QPushButton* pass = box->addButton(tr("Pass"), QMessageBox::AcceptRole);
+    QPushButton* defective = box->addButton(tr("Defects found"), QMessageBox::AcceptRole);
+    box->addButton(tr("Keep"), QMessageBox::RejectRole);
+    connect(pass, &QPushButton::clicked, this, [save] { save(tr("pass")); });
+    connect(defective, &QPushButton::clicked, this, [save] { save(tr("defects found")); });
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setModal(false);
+    box->show();
+}
+
+void MainWindow::takeDetectorEvents()
+{
+    const auto events = m_panelScan->takeNewEvents();
+    if (events.empty() || !isRecording()) return;
+    std::vector<core::storage::SessionEvent> stored;
+    for (const auto& e : events) {
+        core::storage::SessionEvent event;
+        event.kind = "defect";
+        event.start_s = m_recorder->sessionTimeOf(e.start_s);
+        event.end_s = m_recorder->sessionTimeOf(e.end_s);
+        event.direction = e.direction;
+        event.peakR = e.peakR;
+        event.lag_s = e.peakLag_s;
+        event.speed_m_per_s = e.speed_m_per_s;
+        stored.push_back(event);
+    }
+    m_recorder->addEvents(std::move(stored));
 }
 
 void MainWindow::markEvent(const QString& note)
@@ -365,6 +442,17 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
     m_acquisition->addSink(buffer);
     m_tap = std::make_shared<core::storage::RecordingTap>();
     m_acquisition->addSink(m_tap);
+    // The panel-scan detector runs whenever the probe has two cantilevers.
+    std::vector<std::size_t> strain;
+    for (std::size_t c = 0; c < channels.size(); ++c)
+        if (channels[c].kind == core::ChannelKind::Strain) strain.push_back(c);
+    if (strain.size() >= 2) {
+        m_detection = std::make_shared<core::detector::LiveDetection>(
+            strain, rate_hz, core::detector::LiveDetectionSettings{}, LivePlotWidget::kMaxWindow_s + 2.0);
+        m_acquisition->addSink(m_detection);
+    }
+    m_panelScan->setDetection(m_detection, rate_hz);
+    showModeView();
     m_plot->setSource(buffer, channels, rate_hz);
     m_acquisition->start();
 
@@ -386,6 +474,9 @@ void MainWindow::disconnectSource()
     m_plot->clearSource();
     m_acquisition.reset();
     m_tap.reset();
+    m_detection.reset();
+    m_panelScan->setDetection(nullptr, 0.0);
+    showModeView();
     setWindowTitle(tr("Tactiscope"));
     m_deviceLabel->setText(tr("No device"));
     m_stateLabel->clear();
@@ -409,6 +500,7 @@ void MainWindow::updateStatus()
     if (stats.samplesLost > 0)
         samples += tr(", %1 lost").arg(locale.toString(static_cast<qulonglong>(stats.samplesLost)));
     m_samplesLabel->setText(samples);
+    takeDetectorEvents();
     updateRecording();
 }
 

@@ -31,10 +31,14 @@ namespace tactiscope::core::storage {
 class Recorder;
 class RecordingTap;
 }  // namespace tactiscope::core::storage
+namespace tactiscope::core::detector {
+class LiveDetection;
+}  // namespace tactiscope::core::detector
 
 namespace tactiscope::ui {
 
 class LivePlotWidget;
+class PanelScanView;
 class SessionBar;
 
 class MainWindow : public QMainWindow {
@@ -55,6 +59,7 @@ public:
     bool isConnecting() const { return m_connectingLabel.has_value(); }
 
     LivePlotWidget* livePlot() const { return m_plot; }
+    PanelScanView* panelScanView() const { return m_panelScan; }
 
     // Recording: into the session store at storePath() (remembered across
     // runs), with the session bar's metadata and the device's identity.
@@ -83,10 +88,14 @@ private:
     void updateRecording();
     void showProblem(const QString& title, const QString& text, const QString& detail);
     void restoreSettings();
+    void showModeView();
+    void takeDetectorEvents();
+    void askVerdict(std::int64_t session, int defects, const QString& verdict);
     void saveSettings() const;
 
     LivePlotWidget* m_plot = nullptr;
     SessionBar* m_sessionBar = nullptr;
+    PanelScanView* m_panelScan = nullptr;
     QLabel* m_recordingLabel = nullptr;
     QLabel* m_deviceLabel = nullptr;
     QLabel* m_stateLabel = nullptr;
@@ -94,8 +103,9 @@ private:
     QLabel* m_samplesLabel = nullptr;
     QTimer m_statusTimer;
     std::unique_ptr<devices::Acquisition> m_acquisition;
-    std::shared_ptr<core::storage::RecordingTap> m_tap;   // on every acquisition
-    std::shared_ptr<core::storage::Recorder> m_recorder;  // while recording
+    std::shared_ptr<core::storage::RecordingTap> m_tap;          // on every acquisition
+    std::shared_ptr<core::detector::LiveDetection> m_detection;  // when the probe has two strain channels
+    std::shared_ptr<core::storage::Recorder> m_recorder;         // while recording
     QString m_storePath;
     std::optional<QString> m_connectingLabel;
     std::uint64_t m_connectAttempt = 0;  // a newer attempt or a disconnect drops older results

@@ -78,6 +78,7 @@ SessionBar::SessionBar(QWidget* parent)
     layout->addWidget(m_store, 2);
 
     connect(m_record, &QPushButton::clicked, this, &SessionBar::recordClicked);
+    connect(m_mode, &QComboBox::currentIndexChanged, this, &SessionBar::modeChanged);
     setRecording(false);
     setRecordEnabled(false);
     setElapsed(0.0);

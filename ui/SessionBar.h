@@ -33,6 +33,7 @@ public:
 
 signals:
     void recordClicked();  // start or stop, by the button
+    void modeChanged();
 
 private:
     QComboBox* m_mode = nullptr;

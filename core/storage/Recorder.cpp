@@ -59,6 +59,12 @@ double Recorder::sessionTime_s() const
     return m_consumedEnd == 0 ? 0.0 : static_cast<double>(m_consumedEnd - 1) / m_sampleRate_hz;
 }
 
+double Recorder::sessionTimeOf(double acquisitionTime_s) const
+{
+    const std::lock_guard lock(m_mutex);
+    return acquisitionTime_s - m_firstTime_s;
+}
+
 RecorderStats Recorder::stats() const
 {
     const std::lock_guard lock(m_mutex);

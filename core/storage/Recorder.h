@@ -54,6 +54,8 @@ public:
     void addEvents(std::vector<SessionEvent> events);
     // The session time of the newest sample consumed (0 before the first).
     double sessionTime_s() const;
+    // An acquisition time (a block's clock) on the session's clock.
+    double sessionTimeOf(double acquisitionTime_s) const;
     RecorderStats stats() const;
     // Stores what is queued, ends the session with `status` (interrupted if
     // a write failed) and stops the writer. Idempotent.

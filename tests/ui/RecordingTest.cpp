@@ -85,7 +85,9 @@ TEST(Recording, TheSessionBarRecordsASessionWithItsMetadataAndAMarker)
     EXPECT_GT(s.sampleCount, 700u);
     EXPECT_LT(s.sampleCount, 3000u);
     EXPECT_TRUE(sessions.gaps(s.id).empty());
-    const auto markers = sessions.events(s.id);
+    std::vector<core::storage::SessionEvent> markers;  // the detector's defects are there too
+    for (const auto& e : sessions.events(s.id))
+        if (e.kind == "marker") markers.push_back(e);
     ASSERT_EQ(markers.size(), 1u);
     EXPECT_EQ(markers[0].kind, "marker");
     EXPECT_GT(markers[0].start_s, 0.9);

@@ -1,0 +1,246 @@
+// PanelScanView: parameter form → LiveDetectionSettings, events → table and alarm.
+#include "ui/PanelScanView.h"
+
+#include "ui/LivePlotWidget.h"
+
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLocale>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace tactiscope::ui {
+namespace {
+
+constexpr int kAlarm_ms = 3000;  // how long a defect alarm stays up
+
+QDoubleSpinBox* spinBox(double low, double high, double step, int decimals, const QString& suffix, QWidget* parent)
+{
+    auto* box = new QDoubleSpinBox(parent);
+    box->setRange(low, high);
+    box->setSingleStep(step);
+    box->setDecimals(decimals);
+    box->setSuffix(suffix);
+    box->setKeyboardTracking(false);  // act on the finished number, not each keystroke
+    return box;
+}
+
+QString order(int direction)
+{
+    return direction > 0 ? PanelScanView::tr("A then B") : PanelScanView::tr("B then A");
+}
+
+const QString kCalmAlarm = QStringLiteral("QLabel { background: palette(window); color: palette(mid); "
+                                          "border: 1px solid palette(mid); border-radius: 6px; padding: 8px; }");
+const QString kDefectAlarm = QStringLiteral("QLabel { background: #c62828; color: white; border-radius: 6px; "
+                                            "padding: 8px; }");
+
+}  // namespace
+
+PanelScanView::PanelScanView(QWidget* parent)
+    : QWidget(parent),
+      m_lanes(new LivePlotWidget(this))
+{
+    m_threshold = spinBox(0.50, 0.999, 0.01, 3, QString(), this);
+    m_lagFrom = spinBox(2, 1000, 2, 0, tr(" ms"), this);
+    m_lagTo = spinBox(2, 2000, 2, 0, tr(" ms"), this);
+    m_lagStep = spinBox(1, 100, 1, 0, tr(" ms"), this);
+    m_epsilon = spinBox(0.0, 1000.0, 1.0, 1, tr(" µε"), this);
+    m_lambdaRule = new QComboBox(this);
+    m_lambdaRule->addItem(tr("λ = lag (paper)"));
+    m_lambdaRule->addItem(tr("fixed λ"));
+    m_lambda = spinBox(1, 10000, 10, 0, tr(" ms"), this);
+    m_faceToFace = new QCheckBox(tr("gauges face to face"), this);
+    m_spacing = spinBox(0, 1000, 1, 1, tr(" mm"), this);
+    m_spacing->setSpecialValueText(tr("unknown"));
+    m_sound = new QCheckBox(tr("sound on defect"), this);
+    m_settingsError = new QLabel(this);
+    m_settingsError->setStyleSheet(QStringLiteral("color: #c62828;"));
+    m_settingsError->setWordWrap(true);
+    m_settingsError->hide();
+    m_threshold->setObjectName(QStringLiteral("thresholdBox"));
+    m_lagFrom->setObjectName(QStringLiteral("lagFromBox"));
+    m_lagTo->setObjectName(QStringLiteral("lagToBox"));
+    m_settingsError->setObjectName(QStringLiteral("settingsError"));
+
+    auto* form = new QFormLayout;
+    form->addRow(tr("Threshold on R"), m_threshold);
+    auto* lags = new QHBoxLayout;
+    lags->addWidget(m_lagFrom);
+    lags->addWidget(new QLabel(tr("to"), this));
+    lags->addWidget(m_lagTo);
+    lags->addWidget(new QLabel(tr("step"), this));
+    lags->addWidget(m_lagStep);
+    form->addRow(tr("Lags"), lags);
+    form->addRow(tr("Regularisation ε"), m_epsilon);
+    auto* lambda = new QHBoxLayout;
+    lambda->addWidget(m_lambdaRule);
+    lambda->addWidget(m_lambda);
+    form->addRow(tr("Forgetting"), lambda);
+    form->addRow(QString(), m_faceToFace);
+    form->addRow(tr("Cantilever spacing"), m_spacing);
+    form->addRow(QString(), m_sound);
+    form->addRow(m_settingsError);
+    auto* parameters = new QGroupBox(tr("Detector"), this);
+    parameters->setLayout(form);
+
+    m_alarm = new QLabel(this);
+    m_alarm->setObjectName(QStringLiteral("alarmLabel"));
+    QFont alarmFont = m_alarm->font();
+    alarmFont.setPointSizeF(alarmFont.pointSizeF() * 1.5);
+    alarmFont.setBold(true);
+    m_alarm->setFont(alarmFont);
+    m_alarm->setAlignment(Qt::AlignCenter);
+    m_alarm->setMinimumHeight(56);
+    m_countLabel = new QLabel(this);
+    m_countLabel->setObjectName(QStringLiteral("defectCountLabel"));
+    QFont countFont = m_countLabel->font();
+    countFont.setPointSizeF(countFont.pointSizeF() * 1.2);
+    m_countLabel->setFont(countFont);
+
+    m_events = new QTableWidget(0, 5, this);
+    m_events->setObjectName(QStringLiteral("defectTable"));
+    m_events->setHorizontalHeaderLabels(
+        {tr("Time (s)"), tr("Order"), tr("Peak R"), tr("Lag (ms)"), tr("Speed (mm/s)")});
+    m_events->verticalHeader()->hide();
+    m_events->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_events->horizontalHeader()->setStretchLastSection(true);
+    m_events->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_events->setSelectionBehavior(QAbstractItemView::SelectRows);
+
+    m_events->setMinimumHeight(90);
+    auto* defects = new QVBoxLayout;
+    defects->addWidget(m_alarm);
+    defects->addWidget(m_countLabel);
+    defects->addWidget(m_events, 1);
+
+    // Lanes, the defects, the detector's settings side by side, so the mode
+    // view stays low and the traces above keep most of the height.
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 6, 0);
+    layout->addWidget(m_lanes, 5);
+    layout->addLayout(defects, 3);
+    layout->addWidget(parameters, 2);
+
+    for (QDoubleSpinBox* box : {m_threshold, m_lagFrom, m_lagTo, m_lagStep, m_epsilon, m_lambda, m_spacing})
+        connect(box, &QDoubleSpinBox::valueChanged, this, &PanelScanView::applySettings);
+    connect(m_lambdaRule, &QComboBox::currentIndexChanged, this, &PanelScanView::applySettings);
+    connect(m_faceToFace, &QCheckBox::toggled, this, &PanelScanView::applySettings);
+    m_alarmTimer.setSingleShot(true);
+    connect(&m_alarmTimer, &QTimer::timeout, this, &PanelScanView::calmAlarm);
+    calmAlarm();
+    startPanel();
+}
+
+void PanelScanView::setDetection(std::shared_ptr<core::detector::LiveDetection> detection, double sampleRate_hz)
+{
+    m_detection = std::move(detection);
+    if (!m_detection) {
+        m_lanes->clearSource();
+        return;
+    }
+    const DisplayUnit decision{1.0, QString(), tr("Detector output")};
+    const DisplayUnit correlation{1.0, QString(), tr("Best R")};
+    m_lanes->setSource(m_detection->output(), core::detector::LiveDetection::outputChannels(), sampleRate_hz,
+                       {decision, correlation, correlation});
+    showSettings(m_detection->settings());
+}
+
+void PanelScanView::showSettings(const core::detector::LiveDetectionSettings& settings)
+{
+    m_showing = true;
+    const auto& p = settings.parameters;
+    m_threshold->setValue(p.threshold);
+    m_lagFrom->setValue(p.lags_s.front() * 1e3);
+    m_lagTo->setValue(p.lags_s.back() * 1e3);
+    m_lagStep->setValue(p.lags_s.size() > 1 ? (p.lags_s[1] - p.lags_s[0]) * 1e3 : 2.0);
+    m_epsilon->setValue(p.epsilon * 1e6);
+    m_lambdaRule->setCurrentIndex(p.lambdaRule == core::detector::LambdaRule::EqualsLag ? 0 : 1);
+    m_lambda->setValue(p.fixedLambda_s * 1e3);
+    m_lambda->setEnabled(p.lambdaRule == core::detector::LambdaRule::Fixed);
+    m_faceToFace->setChecked(p.faceToFace);
+    m_spacing->setValue(settings.spacing_m ? *settings.spacing_m * 1e3 : 0.0);
+    m_showing = false;
+}
+
+void PanelScanView::applySettings()
+{
+    if (m_showing || !m_detection) return;
+    core::detector::LiveDetectionSettings settings = m_detection->settings();
+    auto& p = settings.parameters;
+    p.threshold = m_threshold->value();
+    p.epsilon = m_epsilon->value() * 1e-6;
+    p.lambdaRule =
+        m_lambdaRule->currentIndex() == 0 ? core::detector::LambdaRule::EqualsLag : core::detector::LambdaRule::Fixed;
+    p.fixedLambda_s = m_lambda->value() * 1e-3;
+    p.faceToFace = m_faceToFace->isChecked();
+    m_lambda->setEnabled(p.lambdaRule == core::detector::LambdaRule::Fixed);
+    settings.spacing_m = m_spacing->value() > 0.0 ? std::optional(m_spacing->value() * 1e-3) : std::nullopt;
+    try {
+        p.lags_s =
+            core::detector::lagRange_s(m_lagFrom->value() * 1e-3, m_lagTo->value() * 1e-3, m_lagStep->value() * 1e-3);
+        m_detection->setSettings(settings);
+        m_settingsError->hide();
+    } catch (const std::invalid_argument& e) {
+        // The detector keeps its last good settings; say why these are not taken.
+        m_settingsError->setText(tr("Not applied: %1").arg(QString::fromStdString(e.what())));
+        m_settingsError->show();
+    }
+}
+
+std::vector<core::detector::DefectEvent> PanelScanView::takeNewEvents()
+{
+    if (!m_detection) return {};
+    auto events = m_detection->takeEvents();
+    const QLocale locale;
+    for (const auto& e : events) {
+        const int row = m_events->rowCount();
+        m_events->insertRow(row);
+        const QStringList cells{locale.toString(e.start_s, 'f', 2), order(e.direction),
+                                locale.toString(e.peakR, 'f', 3), locale.toString(e.peakLag_s * 1e3, 'f', 0),
+                                e.speed_m_per_s ? locale.toString(*e.speed_m_per_s * 1e3, 'f', 0) : tr("—")};
+        for (int c = 0; c < cells.size(); ++c) m_events->setItem(row, c, new QTableWidgetItem(cells[c]));
+        ++m_count;
+        raiseAlarm(e);
+    }
+    if (!events.empty()) {
+        m_events->scrollToBottom();
+        m_countLabel->setText(tr("%n defect(s) on this panel — %1", nullptr, m_count).arg(verdict()));
+    }
+    return events;
+}
+
+void PanelScanView::raiseAlarm(const core::detector::DefectEvent& event)
+{
+    m_alarm->setText(tr("DEFECT  %1 at %2 s").arg(order(event.direction), QLocale().toString(event.start_s, 'f', 1)));
+    m_alarm->setStyleSheet(kDefectAlarm);
+    m_alarmTimer.start(kAlarm_ms);
+    if (m_sound->isChecked()) QApplication::beep();
+}
+
+void PanelScanView::calmAlarm()
+{
+    m_alarm->setText(tr("No defect"));
+    m_alarm->setStyleSheet(kCalmAlarm);
+}
+
+void PanelScanView::startPanel()
+{
+    m_count = 0;
+    m_events->setRowCount(0);
+    m_countLabel->setText(tr("No defect on this panel yet — %1").arg(verdict()));
+}
+
+QString PanelScanView::verdict() const
+{
+    return m_count == 0 ? tr("pass") : tr("defects found");
+}
+
+}  // namespace tactiscope::ui

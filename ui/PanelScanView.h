@@ -1,0 +1,72 @@
+// The panel-scan mode (seed 000) under the strain traces: the detector's
+// output as its own lanes (decision +1 / −1 / 0, best R_ab and R_ba), its
+// parameters editable while scanning (each change acts from the next block),
+// a clear alarm on every defect with an optional sound, the list of defects
+// (time, order, peak R, lag, implied scan speed) and the running count and
+// verdict of the panel.
+#pragma once
+
+#include "core/detector/LiveDetection.h"
+
+#include <QTimer>
+#include <QWidget>
+
+#include <memory>
+#include <vector>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QTableWidget;
+
+namespace tactiscope::ui {
+
+class LivePlotWidget;
+
+class PanelScanView : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit PanelScanView(QWidget* parent = nullptr);
+
+    // Shows `detection`'s output and edits its settings; null detaches.
+    void setDetection(std::shared_ptr<core::detector::LiveDetection> detection, double sampleRate_hz);
+    // Takes the defects found since the last call into the list, raises the
+    // alarm for them and returns them (the main window stores them).
+    std::vector<core::detector::DefectEvent> takeNewEvents();
+    // A new panel: empties the list and the count.
+    void startPanel();
+    int defectCount() const { return m_count; }
+    // "pass" or "defects found", from the count.
+    QString verdict() const;
+    LivePlotWidget* lanes() const { return m_lanes; }
+
+private:
+    void applySettings();
+    void showSettings(const core::detector::LiveDetectionSettings& settings);
+    void raiseAlarm(const core::detector::DefectEvent& event);
+    void calmAlarm();
+
+    std::shared_ptr<core::detector::LiveDetection> m_detection;
+    LivePlotWidget* m_lanes = nullptr;
+    QDoubleSpinBox* m_threshold = nullptr;
+    QDoubleSpinBox* m_lagFrom = nullptr;
+    QDoubleSpinBox* m_lagTo = nullptr;
+    QDoubleSpinBox* m_lagStep = nullptr;
+    QDoubleSpinBox* m_epsilon = nullptr;
+    QComboBox* m_lambdaRule = nullptr;
+    QDoubleSpinBox* m_lambda = nullptr;
+    QCheckBox* m_faceToFace = nullptr;
+    QDoubleSpinBox* m_spacing = nullptr;
+    QCheckBox* m_sound = nullptr;
+    QLabel* m_settingsError = nullptr;
+    QLabel* m_alarm = nullptr;
+    QLabel* m_countLabel = nullptr;
+    QTableWidget* m_events = nullptr;
+    QTimer m_alarmTimer;
+    int m_count = 0;
+    bool m_showing = false;  // showSettings() is filling the fields
+};
+
+}  // namespace tactiscope::ui
