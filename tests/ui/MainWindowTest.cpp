@@ -2,8 +2,7 @@
 // plot and the status bar, and a screenshot shows what a user sees.
 #include "ui/MainWindow.h"
 
-#include "devices/simulator/ScenarioCatalog.h"
-#include "devices/simulator/SimulatorSource.h"
+#include "support/MainWindowHelpers.h"
 #include "support/Screenshot.h"
 #include "support/WaitFor.h"
 #include "ui/LivePlotWidget.h"
@@ -13,15 +12,12 @@
 #include <gtest/gtest.h>
 
 using namespace tactiscope;
+using tactiscope::testing::child;
+using tactiscope::testing::liveSimulator;
 using tactiscope::testing::saveScreenshot;
 using tactiscope::testing::waitFor;
 
 namespace {
-
-std::unique_ptr<devices::BlockSource> liveSimulator()
-{
-    return std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario("panel-scan"));
-}
 
 QString labelText(const ui::MainWindow& window, const char* name)
 {

@@ -7,8 +7,7 @@
 #include "core/detector/LiveDetection.h"
 #include "core/detector/OfflineDetection.h"
 #include "core/storage/SessionStore.h"
-#include "devices/simulator/ScenarioCatalog.h"
-#include "devices/simulator/SimulatorSource.h"
+#include "support/MainWindowHelpers.h"
 #include "support/Screenshot.h"
 #include "support/WaitFor.h"
 #include "ui/MainWindow.h"
@@ -22,25 +21,10 @@
 #include <gtest/gtest.h>
 
 using namespace tactiscope;
+using tactiscope::testing::child;
+using tactiscope::testing::liveSimulator;
 using tactiscope::testing::runEventLoopFor;
 using tactiscope::testing::waitFor;
-
-namespace {
-
-std::unique_ptr<devices::BlockSource> panelScan()
-{
-    return std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario("panel-scan"));
-}
-
-template <typename Widget>
-Widget* child(const QWidget& parent, const char* name)
-{
-    auto* widget = parent.findChild<Widget*>(QString::fromLatin1(name));
-    EXPECT_NE(widget, nullptr) << name;
-    return widget;
-}
-
-}  // namespace
 
 TEST(PanelScanView, DefectsAreListedStoredAndMatchTheCoreDetector)
 {
@@ -49,7 +33,7 @@ TEST(PanelScanView, DefectsAreListedStoredAndMatchTheCoreDetector)
     ui::MainWindow window;
     window.setStorePath(store);
     window.resize(1400, 900);
-    window.connectSource(panelScan());
+    window.connectSource(liveSimulator());
     window.show();
     ASSERT_TRUE(window.panelScanView()->isVisible());
     ASSERT_TRUE(window.startRecording());
@@ -96,7 +80,7 @@ TEST(PanelScanView, DefectsAreListedStoredAndMatchTheCoreDetector)
 TEST(PanelScanView, EditedParametersReachTheLiveDetectorAndBadOnesAreRefused)
 {
     ui::MainWindow window;
-    window.connectSource(panelScan());
+    window.connectSource(liveSimulator());
     window.show();
     auto* view = window.panelScanView();
     auto* threshold = child<QDoubleSpinBox>(*view, "thresholdBox");

@@ -4,8 +4,7 @@
 // while recording, and the marker. A store that cannot be opened is shown
 // without stopping the live view.
 #include "core/storage/SessionStore.h"
-#include "devices/simulator/ScenarioCatalog.h"
-#include "devices/simulator/SimulatorSource.h"
+#include "support/MainWindowHelpers.h"
 #include "support/Screenshot.h"
 #include "support/WaitFor.h"
 #include "ui/LivePlotWidget.h"
@@ -22,25 +21,10 @@
 #include <gtest/gtest.h>
 
 using namespace tactiscope;
+using tactiscope::testing::child;
+using tactiscope::testing::liveSimulator;
 using tactiscope::testing::runEventLoopFor;
 using tactiscope::testing::waitFor;
-
-namespace {
-
-template <typename Widget>
-Widget* child(const ui::MainWindow& window, const char* name)
-{
-    auto* widget = window.findChild<Widget*>(QString::fromLatin1(name));
-    EXPECT_NE(widget, nullptr) << name;
-    return widget;
-}
-
-std::unique_ptr<devices::BlockSource> panelScan()
-{
-    return std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario("panel-scan"));
-}
-
-}  // namespace
 
 TEST(Recording, TheSessionBarRecordsASessionWithItsMetadataAndAMarker)
 {
@@ -51,7 +35,7 @@ TEST(Recording, TheSessionBarRecordsASessionWithItsMetadataAndAMarker)
     window.show();
     auto* record = child<QPushButton>(window, "recordButton");
     EXPECT_FALSE(record->isEnabled());  // nothing to record yet
-    window.connectSource(panelScan());
+    window.connectSource(liveSimulator());
     ASSERT_TRUE(record->isEnabled());
 
     child<QComboBox>(window, "modeBox")->setCurrentIndex(0);
@@ -104,7 +88,7 @@ TEST(Recording, AStoreThatCannotBeOpenedIsShownAndTheLiveViewGoesOn)
     file.close();
     ui::MainWindow window;
     window.setStorePath(notAStore);
-    window.connectSource(panelScan());
+    window.connectSource(liveSimulator());
     window.show();
     EXPECT_FALSE(window.startRecording());
     EXPECT_FALSE(window.isRecording());
