@@ -207,12 +207,11 @@ std::vector<core::detector::DefectEvent> PanelScanView::takeNewEvents()
                                 locale.toString(e.peakR, 'f', 3), locale.toString(e.peakLag_s * 1e3, 'f', 0),
                                 e.speed_m_per_s ? locale.toString(*e.speed_m_per_s * 1e3, 'f', 0) : tr("—")};
         for (int c = 0; c < cells.size(); ++c) m_events->setItem(row, c, new QTableWidgetItem(cells[c]));
-        ++m_count;
         raiseAlarm(e);
     }
     if (!events.empty()) {
         m_events->scrollToBottom();
-        m_countLabel->setText(tr("%n defect(s) on this panel — %1", nullptr, m_count).arg(verdict()));
+        m_countLabel->setText(tr("%n defect(s) on this panel — %1", nullptr, defectCount()).arg(verdict()));
     }
     return events;
 }
@@ -233,14 +232,18 @@ void PanelScanView::calmAlarm()
 
 void PanelScanView::startPanel()
 {
-    m_count = 0;
     m_events->setRowCount(0);
     m_countLabel->setText(tr("No defect on this panel yet — %1").arg(verdict()));
 }
 
+int PanelScanView::defectCount() const
+{
+    return m_events->rowCount();  // one row per defect of this panel
+}
+
 QString PanelScanView::verdict() const
 {
-    return m_count == 0 ? tr("pass") : tr("defects found");
+    return defectCount() == 0 ? tr("pass") : tr("defects found");
 }
 
 }  // namespace tactiscope::ui

@@ -37,7 +37,7 @@ public:
     std::vector<core::detector::DefectEvent> takeNewEvents();
     // A new panel: empties the list and the count.
     void startPanel();
-    int defectCount() const { return m_count; }
+    int defectCount() const;
     // "pass" or "defects found", from the count.
     QString verdict() const;
     LivePlotWidget* lanes() const { return m_lanes; }
@@ -65,7 +65,6 @@ private:
     QLabel* m_countLabel = nullptr;
     QTableWidget* m_events = nullptr;
     QTimer m_alarmTimer;
-    int m_count = 0;
     bool m_showing = false;  // showSettings() is filling the fields
 };
 

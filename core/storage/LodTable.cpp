@@ -93,7 +93,6 @@ MinMax LodTable::range(std::uint64_t first, std::uint64_t end, int level)
 {
     if (first >= end) return {};
     if (level < 0) {
-        m_samplesRead += end - first;
         return minMaxOf(m_samples(first, end - first));
     }
     const std::uint64_t size = bucketSize(level);
@@ -120,7 +119,6 @@ std::vector<OverviewPoint> LodTable::overview(std::uint64_t first, std::uint64_t
     if (width < bucketSize(0)) {
         // Finer than any bucket: one read of the samples themselves.
         const std::vector<double> samples = m_samples(first, span);
-        m_samplesRead += span;
         for (std::size_t p = 0; p < points; ++p) {
             const std::uint64_t from = p * span / points, to = (p + 1) * span / points;
             addPoint(first + from, first + to, minMaxOf(std::span(samples).subspan(from, to - from)));

@@ -44,10 +44,6 @@ public:
     // whole buckets and is still exact.
     std::vector<OverviewPoint> overview(std::uint64_t first, std::uint64_t end, std::size_t points);
 
-    // How many samples were read individually (not from buckets): a
-    // measure of how much an overview had to touch.
-    std::uint64_t samplesRead() const { return m_samplesRead; }
-
 private:
     MinMax range(std::uint64_t first, std::uint64_t end, int level);
     MinMax buckets(int level, std::uint64_t first, std::uint64_t end);
@@ -61,7 +57,6 @@ private:
     SampleReader m_samples;
     std::map<std::pair<int, std::uint64_t>, std::vector<MinMax>> m_rows;  // read so far
     std::array<std::optional<std::uint64_t>, kLevels> m_stored{};
-    std::uint64_t m_samplesRead = 0;
 };
 
 }  // namespace tactiscope::core::storage::lod

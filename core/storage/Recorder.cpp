@@ -9,8 +9,7 @@ namespace tactiscope::core::storage {
 
 Recorder::Recorder(const std::string& storePath, const SessionMetadata& metadata,
                    std::vector<ChannelDescriptor> channels, double sampleRate_hz, std::uint64_t maxQueuedSamples)
-    : m_storePath(storePath),
-      m_sampleRate_hz(sampleRate_hz),
+    : m_sampleRate_hz(sampleRate_hz),
       m_lock(RecorderLock::acquire(storePath)),
       m_store(storePath),
       m_maxQueued(maxQueuedSamples)

@@ -48,7 +48,6 @@ public:
     Recorder& operator=(const Recorder&) = delete;
 
     std::int64_t sessionId() const { return m_session; }
-    const std::string& storePath() const { return m_storePath; }
     void consume(const SampleBlock& block) override;  // acquisition thread
     // Events (e.g. an operator's marker) stored with the next commit; any thread.
     void addEvents(std::vector<SessionEvent> events);
@@ -65,7 +64,6 @@ private:
     void run(const std::stop_token& stop);
     void writeQueued(std::unique_lock<std::mutex>& lock);
 
-    std::string m_storePath;
     double m_sampleRate_hz;
     RecorderLock m_lock;  // held before the store is touched, released last
     SessionStore m_store;

@@ -7,6 +7,7 @@
 #include "core/SampleBlock.h"
 
 #include "support/Eventually.h"
+#include "support/FileBytes.h"
 #include "support/ReadOnlyAfterVfs.h"
 #include "support/TempPath.h"
 
@@ -335,13 +336,8 @@ TEST_F(RecorderTest, ADamagedStoreIsReportedAndNeverWritten)
         std::fwrite(junk.data(), 1, junk.size(), file);
         std::fclose(file);
     }
-    const auto damaged = [&] {
-        std::FILE* file = std::fopen(m_path.c_str(), "rb");
-        std::string bytes(size, '\0');
-        EXPECT_EQ(std::fread(bytes.data(), 1, size, file), size);
-        std::fclose(file);
-        return bytes;
-    }();
+    const std::string damaged = tactiscope::testing::fileBytes(m_path);
+    ASSERT_EQ(damaged.size(), size);
     {
         SessionStore store(m_path);
         EXPECT_NE(store.checkIntegrity(), "ok");
@@ -354,11 +350,7 @@ TEST_F(RecorderTest, ADamagedStoreIsReportedAndNeverWritten)
         }
     }
     // Nothing was written to repair or reset it.
-    std::FILE* file = std::fopen(m_path.c_str(), "rb");
-    std::string after(size, '\0');
-    ASSERT_EQ(std::fread(after.data(), 1, size, file), size);
-    std::fclose(file);
-    EXPECT_TRUE(after == damaged);
+    EXPECT_TRUE(tactiscope::testing::fileBytes(m_path) == damaged);
 }
 
 TEST_F(RecorderTest, ATapRecordsOnlyWhileARecorderIsAttachedAndMarkersLandInTheSession)

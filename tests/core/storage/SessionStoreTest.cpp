@@ -7,6 +7,7 @@
 #include "core/storage/ChunkCodec.h"
 #include "core/storage/Schema.h"
 
+#include "support/FileBytes.h"
 #include "support/TempDirectory.h"
 
 #include <gtest/gtest.h>
@@ -14,7 +15,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 using namespace tactiscope::core;
 using namespace tactiscope::core::storage;
@@ -45,14 +45,6 @@ SessionMetadata modeOnly(const std::string& mode)
     SessionMetadata metadata;
     metadata.mode = mode;
     return metadata;
-}
-
-std::string readAll(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream content;
-    content << in.rdbuf();
-    return content.str();
 }
 
 }  // namespace
@@ -150,14 +142,14 @@ TEST_F(SessionStoreTest, ANonDatabaseFileIsRefusedAndLeftUntouched)
 {
     const std::string path = file("notes.txt");
     std::ofstream(path) << "these are my notes, not a database; please keep them\n";
-    const std::string before = readAll(path);
+    const std::string before = tactiscope::testing::fileBytes(path);
     try {
         SessionStore store(path);
         FAIL() << "opened a text file as a store";
     } catch (const StorageError& e) {
         EXPECT_NE(std::string(e.what()).find("is not a Tactiscope session store"), std::string::npos) << e.what();
     }
-    EXPECT_EQ(readAll(path), before);
+    EXPECT_EQ(tactiscope::testing::fileBytes(path), before);
 }
 
 TEST_F(SessionStoreTest, AnotherProgramsSqliteFileIsRefusedAndLeftUntouched)
@@ -167,14 +159,14 @@ TEST_F(SessionStoreTest, AnotherProgramsSqliteFileIsRefusedAndLeftUntouched)
         Database other(path, Database::Access::ReadWrite);
         other.exec("CREATE TABLE invoices (n INTEGER); INSERT INTO invoices VALUES (7)");
     }
-    const std::string before = readAll(path);
+    const std::string before = tactiscope::testing::fileBytes(path);
     try {
         SessionStore store(path);
         FAIL() << "opened a foreign SQLite file as a store";
     } catch (const StorageError& e) {
         EXPECT_NE(std::string(e.what()).find("another program"), std::string::npos) << e.what();
     }
-    EXPECT_EQ(readAll(path), before);
+    EXPECT_EQ(tactiscope::testing::fileBytes(path), before);
 }
 
 TEST_F(SessionStoreTest, ANewerStoreOpensReadOnlyButIsNotWritten)
