@@ -107,11 +107,10 @@ PanelScanView::PanelScanView(QWidget* parent)
 
     m_events = new QTableWidget(0, 5, this);
     m_events->setObjectName(QStringLiteral("defectTable"));
-    m_events->setHorizontalHeaderLabels(
-        {tr("Time (s)"), tr("Order"), tr("Peak R"), tr("Lag (ms)"), tr("Speed (mm/s)")});
+    m_events->setHorizontalHeaderLabels({tr("Time (s)"), tr("Order"), tr("Peak R"), tr("Lag (ms)"), tr("mm/s")});
     m_events->verticalHeader()->hide();
-    m_events->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_events->horizontalHeader()->setStretchLastSection(true);
+    m_events->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);  // fits without scrolling
+    m_events->horizontalHeaderItem(4)->setToolTip(tr("Scan speed implied by the lag and the cantilever spacing"));
     m_events->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_events->setSelectionBehavior(QAbstractItemView::SelectRows);
 
@@ -125,8 +124,9 @@ PanelScanView::PanelScanView(QWidget* parent)
     // view stays low and the traces above keep most of the height.
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 6, 0);
-    layout->addWidget(m_lanes, 5);
+    layout->addWidget(m_lanes, 4);
     layout->addLayout(defects, 3);
+    parameters->setMaximumWidth(420);  // spin boxes need no more; the lanes and the list use the rest
     layout->addWidget(parameters, 2);
 
     for (QDoubleSpinBox* box : {m_threshold, m_lagFrom, m_lagTo, m_lagStep, m_epsilon, m_lambda, m_spacing})
@@ -146,7 +146,8 @@ void PanelScanView::setDetection(std::shared_ptr<core::detector::LiveDetection> 
         m_lanes->clearSource();
         return;
     }
-    const DisplayUnit decision{1.0, QString(), tr("Detector output")};
+    // Short titles: the lanes are low, beside the defect list.
+    const DisplayUnit decision{1.0, QString(), tr("Output")};
     const DisplayUnit correlation{1.0, QString(), tr("Best R")};
     m_lanes->setSource(m_detection->output(), core::detector::LiveDetection::outputChannels(), sampleRate_hz,
                        {decision, correlation, correlation});
