@@ -7,9 +7,10 @@
 #include "core/storage/Recorder.h"
 #include "core/storage/RecordingTap.h"
 #include "devices/Acquisition.h"
+#include "devices/emulator/ProbeEmulator.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
-#include "ui/ConnectDialog.h"
+#include "ui/DevicePanel.h"
 #include "ui/LivePlotWidget.h"
 #include "ui/PanelScanView.h"
 #include "ui/SessionBar.h"
@@ -18,6 +19,7 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
+#include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QIcon>
@@ -48,30 +50,52 @@ QString defaultStorePath()
         .filePath(QStringLiteral("sessions.tactiscope"));
 }
 
-QString stateText(const devices::AcquisitionStats& stats, const devices::BlockSource& source)
+LinkCounters linkCounters(const devices::AcquisitionStats& stats, const devices::BlockSource& source)
 {
+    LinkCounters counters;
+    counters.rate_hz = stats.measuredRate_hz;
+    counters.nominalRate_hz = source.nominalSampleRate_hz();
+    counters.samples = stats.samples;
+    counters.samplesLost = stats.samplesLost;
+    switch (stats.state) {
+    case devices::AcquisitionState::Idle:
+        counters.state = MainWindow::tr("Idle");
+        break;
+    case devices::AcquisitionState::Streaming:
+        counters.state = MainWindow::tr("Streaming");
+        break;
+    case devices::AcquisitionState::Finished:
+        counters.state = MainWindow::tr("Finished");
+        break;
+    case devices::AcquisitionState::Failed:
+        counters.state = MainWindow::tr("Failed: %1").arg(QString::fromStdString(stats.error));
+        counters.healthy = false;
+        break;
+    }
     // A device away (unplugged) is still "streaming" to the acquisition.
     if (const auto* reconnecting = dynamic_cast<const devices::ReconnectingSource*>(&source)) {
+        counters.decoder = reconnecting->decoderCounters();
+        counters.reconnections = reconnecting->reconnections();
         switch (reconnecting->state()) {
         case devices::DeviceState::Lost:
-            return MainWindow::tr("Device lost");
+            counters.state = MainWindow::tr("Device lost");
+            counters.healthy = false;
+            break;
         case devices::DeviceState::Reconnecting:
-            return MainWindow::tr("Reconnecting…");
+            counters.state = MainWindow::tr("Reconnecting…");
+            counters.healthy = false;
+            break;
         case devices::DeviceState::Streaming:
             break;
         }
     }
-    switch (stats.state) {
-    case devices::AcquisitionState::Idle:
-        return MainWindow::tr("Idle");
-    case devices::AcquisitionState::Streaming:
-        return MainWindow::tr("Streaming");
-    case devices::AcquisitionState::Finished:
-        return MainWindow::tr("Finished");
-    case devices::AcquisitionState::Failed:
-        return MainWindow::tr("Failed: %1").arg(QString::fromStdString(stats.error));
-    }
-    return {};
+    return counters;
+}
+
+// Where the emulator puts its link: one per running Tactiscope.
+QString emulatorLinkPath()
+{
+    return QDir::temp().filePath(QStringLiteral("tactiscope-emulator-%1").arg(QApplication::applicationPid()));
 }
 
 }  // namespace
@@ -79,7 +103,8 @@ QString stateText(const devices::AcquisitionStats& stats, const devices::BlockSo
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
       m_plot(new LivePlotWidget(this)),
-      m_panelScan(new PanelScanView(this))
+      m_panelScan(new PanelScanView(this)),
+      m_devicePanel(new DevicePanel(this))
 {
     setWindowTitle(tr("Tactiscope"));
     setWindowIcon(QIcon(QStringLiteral(":/tactiscope/icons/tactiscope.svg")));
@@ -102,6 +127,14 @@ MainWindow::MainWindow(QWidget* parent)
     sessionToolBar->addWidget(m_sessionBar);
     connect(m_sessionBar, &SessionBar::recordClicked, this, &MainWindow::toggleRecording);
     connect(m_sessionBar, &SessionBar::modeChanged, this, &MainWindow::showModeView);
+    m_deviceDock = new QDockWidget(tr("Device"), this);
+    m_deviceDock->setObjectName(QStringLiteral("deviceDock"));
+    m_deviceDock->setWidget(m_devicePanel);
+    m_deviceDock->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable);
+    addDockWidget(Qt::LeftDockWidgetArea, m_deviceDock);
+    resizeDocks({m_deviceDock}, {290}, Qt::Horizontal);
+    connect(m_devicePanel, &DevicePanel::connectRequested, this, &MainWindow::connectRequest);
+    connect(m_devicePanel, &DevicePanel::disconnectRequested, this, &MainWindow::disconnectSource);
     createMenus();
     createStatusBar();
     restoreSettings();
@@ -125,6 +158,7 @@ void MainWindow::restoreSettings()
 {
     const QSettings settings;
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     core::storage::SessionMetadata metadata;
     metadata.mode =
         settings.value(QStringLiteral("session/mode"), QStringLiteral("panel-scan")).toString().toStdString();
@@ -143,6 +177,7 @@ void MainWindow::saveSettings() const
 {
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
     const auto metadata = m_sessionBar->metadata();
     settings.setValue(QStringLiteral("session/mode"), QString::fromStdString(metadata.mode));
     settings.setValue(QStringLiteral("session/operator"), QString::fromStdString(metadata.operatorName));
@@ -155,7 +190,11 @@ void MainWindow::createMenus()
     file->addAction(tr("&Quit"), QKeySequence::Quit, qApp, &QApplication::closeAllWindows);
 
     QMenu* device = menuBar()->addMenu(tr("&Device"));
-    device->addAction(tr("&Connect to device…"), QKeySequence(tr("Ctrl+K")), this, &MainWindow::showConnectDialog);
+    device->addAction(tr("&Choose a device…"), QKeySequence(tr("Ctrl+K")), this, [this] {
+        m_deviceDock->show();
+        m_deviceDock->raise();
+        m_devicePanel->setFocus();
+    });
     QMenu* simulator = device->addMenu(tr("&Simulator"));
     for (const std::string& id : devices::simulator::scenarioIds()) {
         simulator->addAction(QString::fromStdString(id), this, [this, id] {
@@ -172,6 +211,7 @@ void MainWindow::createMenus()
     session->addAction(tr("Session &store…"), this, &MainWindow::chooseStore);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(m_deviceDock->toggleViewAction());
     QMenu* window = view->addMenu(tr("Time &window"));
     // One window for the traces and the mode's lanes, so they line up in time.
     auto* windows = new QActionGroup(this);
@@ -193,25 +233,18 @@ void MainWindow::createMenus()
 void MainWindow::createStatusBar()
 {
     m_deviceLabel = new QLabel(tr("No device"), this);
-    m_stateLabel = new QLabel(this);
-    m_rateLabel = new QLabel(this);
-    m_samplesLabel = new QLabel(this);
+    m_linkLabel = new QLabel(this);
+    m_recordingLabel = new QLabel(this);
     m_deviceLabel->setObjectName(QStringLiteral("deviceLabel"));
-    m_stateLabel->setObjectName(QStringLiteral("stateLabel"));
-    m_rateLabel->setObjectName(QStringLiteral("rateLabel"));
-    m_samplesLabel->setObjectName(QStringLiteral("samplesLabel"));
+    m_linkLabel->setObjectName(QStringLiteral("linkLabel"));
+    m_recordingLabel->setObjectName(QStringLiteral("recordingLabel"));
+    m_deviceLabel->setContentsMargins(6, 0, 6, 0);
     statusBar()->addWidget(m_deviceLabel, 1);
-    // Fixed fields on the right, each with breathing room and a divider.
-    for (QLabel* label : {m_stateLabel, m_rateLabel, m_samplesLabel}) {
+    // Fixed fields on the right, each with breathing room.
+    for (QLabel* label : {m_linkLabel, m_recordingLabel}) {
         label->setContentsMargins(10, 0, 10, 0);
-        label->setFrameShape(QFrame::StyledPanel);
         statusBar()->addPermanentWidget(label);
     }
-    m_deviceLabel->setContentsMargins(6, 0, 6, 0);
-    m_recordingLabel = new QLabel(this);
-    m_recordingLabel->setObjectName(QStringLiteral("recordingLabel"));
-    m_recordingLabel->setContentsMargins(10, 0, 10, 0);
-    statusBar()->addPermanentWidget(m_recordingLabel);
 }
 
 void MainWindow::setStorePath(const QString& path)
@@ -368,24 +401,52 @@ void MainWindow::updateRecording()
 
 // Problems are shown in a window that does not block: acquisition and
 // recording go on, and the operator closes it when convenient.
-void MainWindow::showProblem(const QString& title, const QString& text, const QString& detail)
+void MainWindow::showProblem(const QString& title, const QString& text, const QString& detail,
+                             const QString& objectName)
 {
     qWarning("%s: %s", qPrintable(text), qPrintable(detail));
     auto* box = new QMessageBox(QMessageBox::Warning, title, text, QMessageBox::Ok, this);
-    box->setObjectName(QStringLiteral("problemBox"));
+    box->setObjectName(objectName);
     box->setInformativeText(detail);
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->setModal(false);
     box->show();
 }
 
-void MainWindow::showConnectDialog()
+void MainWindow::connectRequest(const SourceRequest& request)
 {
-    ConnectDialog dialog(this);
-    if (dialog.exec() != QDialog::Accepted) return;
-    const ConnectRequest request = dialog.request();
-    connectDevice(QString::fromStdString(request.device.path),
-                  devices::deviceOpener(request.device, request.baud, request.options));
+    switch (request.kind) {
+    case SourceKind::Simulator:
+        connectSource(
+            std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario(request.scenario)));
+        return;
+    case SourceKind::Emulator: {
+        devices::emulator::EmulatorOptions options;
+        options.linkPath = emulatorLinkPath().toStdString();
+        options.protocol = request.options.protocol;
+        options.scenario = request.scenario;
+        disconnectSource();  // the old emulator's link goes before the new one takes its path
+        std::shared_ptr<devices::emulator::ProbeEmulator> emulator;
+        try {
+            emulator = std::make_shared<devices::emulator::ProbeEmulator>(options);
+            emulator->start();
+        } catch (const std::exception& e) {
+            showProblem(tr("Cannot start the emulator"), tr("The probe emulator could not start."),
+                        QString::fromStdString(e.what()));
+            return;
+        }
+        // The opener owns the emulator, so it lives exactly as long as the
+        // connection to it (and goes after the port, which is closed first).
+        const devices::DiscoveredDevice link{devices::DeviceBus::Serial, options.linkPath, {}, options.linkPath};
+        connectDevice(tr("emulator (%1)").arg(QString::fromStdString(request.scenario)),
+                      [emulator, open = devices::deviceOpener(link, request.baud, request.options)] { return open(); });
+        return;
+    }
+    case SourceKind::Port:
+        connectDevice(QString::fromStdString(request.device.path),
+                      devices::deviceOpener(request.device, request.baud, request.options));
+        return;
+    }
 }
 
 void MainWindow::connectDevice(const QString& label, devices::ReconnectingSource::Opener opener)
@@ -394,7 +455,8 @@ void MainWindow::connectDevice(const QString& label, devices::ReconnectingSource
     const std::uint64_t attempt = ++m_connectAttempt;
     m_connectingLabel = label;
     m_deviceLabel->setText(label);
-    m_stateLabel->setText(tr("Connecting…"));
+    m_linkLabel->setText(tr("Connecting…"));
+    m_devicePanel->setConnecting(label);
     m_connectors.emplace_back([this, attempt, opener = std::move(opener)] {
         auto result = std::make_shared<std::unique_ptr<devices::BlockSource>>();
         QString error;
@@ -419,13 +481,11 @@ void MainWindow::finishConnecting(std::uint64_t attempt, std::unique_ptr<devices
         connectSource(std::move(source));
         return;
     }
-    m_stateLabel->setText(tr("Connection failed"));
-    auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot connect"),
-                                tr("Tactiscope could not connect to %1.").arg(label), QMessageBox::Ok, this);
-    box->setObjectName(QStringLiteral("connectErrorBox"));
-    box->setInformativeText(error);
-    box->setAttribute(Qt::WA_DeleteOnClose);
-    box->open();
+    m_devicePanel->setConnected(false);
+    m_devicePanel->clearCounters(tr("Connection failed"));
+    m_linkLabel->setText(tr("Connection failed"));
+    showProblem(tr("Cannot connect"), tr("Tactiscope could not connect to %1.").arg(label), error,
+                QStringLiteral("connectErrorBox"));
 }
 
 void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
@@ -459,6 +519,7 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
     const QString name = QString::fromStdString(m_acquisition->source().name());
     setWindowTitle(tr("Tactiscope — %1").arg(name));
     m_deviceLabel->setText(name);
+    m_devicePanel->setConnected(true, name);
     updateStatus();
     m_statusTimer.start();
     m_sessionBar->setRecordEnabled(true);
@@ -479,27 +540,22 @@ void MainWindow::disconnectSource()
     showModeView();
     setWindowTitle(tr("Tactiscope"));
     m_deviceLabel->setText(tr("No device"));
-    m_stateLabel->clear();
-    m_rateLabel->clear();
-    m_samplesLabel->clear();
+    m_linkLabel->clear();
+    m_devicePanel->setConnected(false);
     m_sessionBar->setRecordEnabled(false);
 }
 
 void MainWindow::updateStatus()
 {
     if (!m_acquisition) return;
-    const devices::AcquisitionStats stats = m_acquisition->stats();
-    const QLocale locale;
-    m_stateLabel->setText(stateText(stats, m_acquisition->source()));
-    const double nominal_hz = m_acquisition->source().nominalSampleRate_hz();
-    m_rateLabel->setText(stats.measuredRate_hz
-                             ? tr("%1 Hz (nominal %2 Hz)")
-                                   .arg(locale.toString(*stats.measuredRate_hz, 'f', 1), locale.toString(nominal_hz))
-                             : tr("measuring rate… (nominal %1 Hz)").arg(locale.toString(nominal_hz)));
-    QString samples = tr("%1 samples").arg(locale.toString(static_cast<qulonglong>(stats.samples)));
-    if (stats.samplesLost > 0)
-        samples += tr(", %1 lost").arg(locale.toString(static_cast<qulonglong>(stats.samplesLost)));
-    m_samplesLabel->setText(samples);
+    const LinkCounters counters = linkCounters(m_acquisition->stats(), m_acquisition->source());
+    m_devicePanel->showCounters(counters);
+    QString link = counters.state;
+    if (counters.rate_hz) link += tr(" · %1 Hz").arg(QLocale().toString(*counters.rate_hz, 'f', 1));
+    if (counters.samplesLost > 0)
+        link += tr(" · %1 lost").arg(QLocale().toString(static_cast<qulonglong>(counters.samplesLost)));
+    m_linkLabel->setText(link);
+    m_linkLabel->setStyleSheet(counters.healthy ? QString() : QStringLiteral("color: #c62828; font-weight: 600;"));
     takeDetectorEvents();
     updateRecording();
 }

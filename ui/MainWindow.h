@@ -22,6 +22,7 @@
 #include <thread>
 #include <vector>
 
+class QDockWidget;
 class QLabel;
 
 namespace tactiscope::devices {
@@ -37,7 +38,9 @@ class LiveDetection;
 
 namespace tactiscope::ui {
 
+class DevicePanel;
 class LivePlotWidget;
+struct SourceRequest;
 class PanelScanView;
 class SessionBar;
 
@@ -60,6 +63,7 @@ public:
 
     LivePlotWidget* livePlot() const { return m_plot; }
     PanelScanView* panelScanView() const { return m_panelScan; }
+    DevicePanel* devicePanel() const { return m_devicePanel; }
 
     // Recording: into the session store at storePath() (remembered across
     // runs), with the session bar's metadata and the device's identity.
@@ -78,7 +82,8 @@ protected:
 
 private:
     void createMenus();
-    void showConnectDialog();
+    // A simulator, an emulator behind a pty, or a port, as the device panel asks.
+    void connectRequest(const SourceRequest& request);
     void finishConnecting(std::uint64_t attempt, std::unique_ptr<devices::BlockSource> source, const QString& error);
     void createStatusBar();
     void updateStatus();
@@ -86,7 +91,8 @@ private:
     void chooseStore();
     void toggleRecording();
     void updateRecording();
-    void showProblem(const QString& title, const QString& text, const QString& detail);
+    void showProblem(const QString& title, const QString& text, const QString& detail,
+                     const QString& objectName = QStringLiteral("problemBox"));
     void restoreSettings();
     void showModeView();
     void takeDetectorEvents();
@@ -96,11 +102,11 @@ private:
     LivePlotWidget* m_plot = nullptr;
     SessionBar* m_sessionBar = nullptr;
     PanelScanView* m_panelScan = nullptr;
+    DevicePanel* m_devicePanel = nullptr;
+    QDockWidget* m_deviceDock = nullptr;
     QLabel* m_recordingLabel = nullptr;
     QLabel* m_deviceLabel = nullptr;
-    QLabel* m_stateLabel = nullptr;
-    QLabel* m_rateLabel = nullptr;
-    QLabel* m_samplesLabel = nullptr;
+    QLabel* m_linkLabel = nullptr;  // state, rate and losses in one line
     QTimer m_statusTimer;
     std::unique_ptr<devices::Acquisition> m_acquisition;
     std::shared_ptr<core::storage::RecordingTap> m_tap;          // on every acquisition

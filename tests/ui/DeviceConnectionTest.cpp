@@ -1,19 +1,29 @@
 // Connecting the main window to a device over a real pseudo-terminal: the
 // probe emulator behind a link, opened off the GUI thread; a failure shown
-// in a message box; an unplug shown as lost, then streaming again. Also the
-// connect dialog's request and look.
+// in a non-modal message with the fix; an unplug during a recording shown as
+// lost, then streaming again, with the session keeping both parts and the
+// gap. Also the device panel's choices and counters.
+#include "core/storage/SessionStore.h"
 #include "devices/DeviceDiscovery.h"
 #include "devices/emulator/ProbeEmulator.h"
+#include "support/MainWindowHelpers.h"
 #include "support/Screenshot.h"
+#include "support/TempDirectory.h"
 #include "support/TempPath.h"
 #include "support/WaitFor.h"
-#include "ui/ConnectDialog.h"
+#include "ui/DevicePanel.h"
 #include "ui/MainWindow.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMessageBox>
+#include <QPushButton>
+#include <QTest>
+#include <QTreeWidget>
+
+#include <cmath>
 
 #include <gtest/gtest.h>
 
@@ -22,6 +32,7 @@
 using namespace tactiscope;
 using devices::WireProtocol;
 using devices::emulator::ProbeEmulator;
+using tactiscope::testing::child;
 using tactiscope::testing::saveScreenshot;
 using tactiscope::testing::waitFor;
 
@@ -32,6 +43,11 @@ namespace {
 QString stateText(const ui::MainWindow& window)
 {
     return window.findChild<QLabel*>(QStringLiteral("stateLabel"))->text();
+}
+
+std::uint64_t counter(const ui::MainWindow& window, const char* name)
+{
+    return QLocale().toULongLong(child<QLabel>(window, name)->text());
 }
 
 devices::ReconnectingSource::Opener serialOpener(const std::string& link)
@@ -76,10 +92,13 @@ TEST(DeviceConnection, AFailedConnectionIsShownNotThrown)
     EXPECT_TRUE(box->informativeText().contains(QStringLiteral("No such file")));
     EXPECT_EQ(stateText(window), QStringLiteral("Connection failed"));
     EXPECT_FALSE(window.isConnected());
+    EXPECT_FALSE(box->isModal());  // nothing else stops for it
     EXPECT_FALSE(saveScreenshot(*box, QStringLiteral("connect-error")).isEmpty());
 }
 
-TEST(DeviceConnection, AnUnplugIsShownAsLostThenStreamingAgain)
+class DeviceConnectionStore : public tactiscope::testing::TempDirectoryTest {};
+
+TEST_F(DeviceConnectionStore, AnUnplugWhileRecordingIsShownAsLostAndTheSessionKeepsBothParts)
 {
     const std::string link = uniqueTempPath("unplug");
     const devices::emulator::EmulatorOptions options{
@@ -87,9 +106,13 @@ TEST(DeviceConnection, AnUnplugIsShownAsLostThenStreamingAgain)
     auto emulator = std::make_unique<ProbeEmulator>(options);
     emulator->start();
     ui::MainWindow window;
+    window.setStorePath(QString::fromStdString(file("sessions.tactiscope")));
     window.show();
     window.connectDevice(QString::fromStdString(link), serialOpener(link));
     ASSERT_TRUE(waitFor([&] { return stateText(window) == QStringLiteral("Streaming"); }, 6000));
+    ASSERT_TRUE(window.startRecording());
+    tactiscope::testing::runEventLoopFor(1000);
+    EXPECT_EQ(counter(window, "lostLabel"), 0u);
 
     emulator.reset();  // the cable is pulled
     EXPECT_TRUE(waitFor(
@@ -98,11 +121,36 @@ TEST(DeviceConnection, AnUnplugIsShownAsLostThenStreamingAgain)
             return state == QStringLiteral("Device lost") || state == QStringLiteral("Reconnecting…");
         },
         3000));
+    EXPECT_TRUE(child<QLabel>(window, "linkLabel")->text().startsWith(stateText(window)));
     EXPECT_TRUE(window.isConnected());  // the session goes on through the outage
+    EXPECT_TRUE(window.isRecording());
+    tactiscope::testing::runEventLoopFor(1000);
 
     emulator = std::make_unique<ProbeEmulator>(options);  // plugged back in
     emulator->start();
-    EXPECT_TRUE(waitFor([&] { return stateText(window) == QStringLiteral("Streaming"); }, 8000));
+    ASSERT_TRUE(waitFor([&] { return stateText(window) == QStringLiteral("Streaming"); }, 8000));
+    // The outage is counted as lost samples, about a second's worth or more.
+    EXPECT_TRUE(waitFor([&] { return counter(window, "lostLabel") >= 400; }, 3000)) << counter(window, "lostLabel");
+    EXPECT_GE(counter(window, "reconnectLabel"), 1u);
+    tactiscope::testing::runEventLoopFor(1000);
+    window.stopRecording();
+
+    core::storage::SessionStore store(file("sessions.tactiscope"), core::storage::Database::Access::ReadOnly);
+    const auto sessions = store.sessions();
+    ASSERT_EQ(sessions.size(), 1u);
+    const std::int64_t id = sessions[0].id;
+    const auto gaps = store.gaps(id);
+    ASSERT_EQ(gaps.size(), 1u);
+    EXPECT_GE(gaps[0].count, 400u);  // ≥ 0.8 s at 500 Hz
+    // Both parts are there: about a second before the gap, another after it.
+    const std::uint64_t total = store.sampleCount(id);
+    EXPECT_GE(gaps[0].firstIndex, 400u);
+    EXPECT_GE(total - (gaps[0].firstIndex + gaps[0].count), 400u);
+    const auto before = store.readChannel(id, 0, 0, gaps[0].firstIndex);
+    const auto after =
+        store.readChannel(id, 0, gaps[0].firstIndex + gaps[0].count, total - gaps[0].firstIndex - gaps[0].count);
+    EXPECT_TRUE(std::isfinite(before.back()));
+    EXPECT_TRUE(std::isfinite(after.front()));
 }
 
 TEST(DeviceConnection, ANewerConnectSupersedesOneStillInItsHandshake)
@@ -130,31 +178,68 @@ TEST(DeviceConnection, ANewerConnectSupersedesOneStillInItsHandshake)
     EXPECT_EQ(stateText(window), QStringLiteral("Streaming"));
 }
 
-TEST(ConnectDialog, ReturnsTheChosenPortAndLinkSettings)
+TEST(DevicePanel, ReturnsTheChosenPortAndLinkSettings)
 {
-    ui::ConnectDialog dialog;
-    dialog.show();
-    dialog.setPath(QStringLiteral("/tmp/probe"));
-    auto* protocol = dialog.findChild<QComboBox*>(QStringLiteral("protocolBox"));
-    auto* baud = dialog.findChild<QComboBox*>(QStringLiteral("baudBox"));
-    auto* rate = dialog.findChild<QDoubleSpinBox*>(QStringLiteral("textRateBox"));
-    ASSERT_TRUE(protocol && baud && rate);
+    ui::DevicePanel panel;
+    panel.show();
+    panel.setPath(QStringLiteral("/tmp/probe"));
+    auto* protocol = child<QComboBox>(panel, "protocolBox");
+    auto* baud = child<QComboBox>(panel, "baudBox");
+    auto* rate = child<QDoubleSpinBox>(panel, "textRateBox");
     EXPECT_FALSE(rate->isEnabled());  // only the text protocol needs a rate
     EXPECT_EQ(baud->currentText(), QStringLiteral("921600"));
 
     protocol->setCurrentIndex(1);
     EXPECT_TRUE(rate->isEnabled());
     baud->setCurrentText(QStringLiteral("115200"));
-    auto request = dialog.request();
-    EXPECT_EQ(request.device.path, "/tmp/probe");
-    EXPECT_EQ(request.device.bus, devices::DeviceBus::Serial);
-    EXPECT_EQ(request.baud, 115200);
-    EXPECT_EQ(request.options.protocol, WireProtocol::Text);
-    EXPECT_FALSE(request.options.textRate_hz.has_value());  // estimated
+    auto request = panel.request();
+    ASSERT_TRUE(request.has_value());
+    EXPECT_EQ(request->kind, ui::SourceKind::Port);
+    EXPECT_EQ(request->device.path, "/tmp/probe");
+    EXPECT_EQ(request->device.bus, devices::DeviceBus::Serial);
+    EXPECT_EQ(request->baud, 115200);
+    EXPECT_EQ(request->options.protocol, WireProtocol::Text);
+    EXPECT_FALSE(request->options.textRate_hz.has_value());  // estimated
 
     rate->setValue(250.0);
-    request = dialog.request();
-    ASSERT_TRUE(request.options.textRate_hz.has_value());
-    EXPECT_DOUBLE_EQ(*request.options.textRate_hz, 250.0);
-    EXPECT_FALSE(saveScreenshot(dialog, QStringLiteral("connect-dialog")).isEmpty());
+    request = panel.request();
+    ASSERT_TRUE(request->options.textRate_hz.has_value());
+    EXPECT_DOUBLE_EQ(*request->options.textRate_hz, 250.0);
+
+    // A simulator needs no link: the port fields are off.
+    panel.selectSimulator(QStringLiteral("palpation"));
+    request = panel.request();
+    EXPECT_EQ(request->kind, ui::SourceKind::Simulator);
+    EXPECT_EQ(request->scenario, "palpation");
+    EXPECT_FALSE(child<QLineEdit>(panel, "pathEdit")->isEnabled());
+
+    panel.setPath(QString());
+    EXPECT_FALSE(panel.request().has_value());
+    EXPECT_FALSE(child<QPushButton>(panel, "connectButton")->isEnabled());
+}
+
+TEST(DevicePanel, TheEmulatorChosenInThePanelStreamsThroughAPtyWithItsCounters)
+{
+    ui::MainWindow window;
+    window.resize(1200, 760);
+    window.show();
+    auto* tree = child<QTreeWidget>(window, "sourceTree");
+    // "Emulator" is the second heading; its second entry is palpation.
+    QTreeWidgetItem* emulator = tree->topLevelItem(1)->child(1);
+    ASSERT_TRUE(emulator->text(0).startsWith(QStringLiteral("Palpation")));
+    tree->setCurrentItem(emulator);
+    QTest::mouseClick(child<QPushButton>(window, "connectButton"), Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return window.isConnected(); }, 6000));
+    EXPECT_TRUE(window.windowTitle().contains(QStringLiteral("EMU-")));  // the firmware's answer over the pty
+    ASSERT_TRUE(waitFor([&] { return stateText(window) == QStringLiteral("Streaming"); }, 3000));
+    ASSERT_TRUE(waitFor([&] { return counter(window, "samplesLabel") > 1000; }, 4000))
+        << child<QLabel>(window, "samplesLabel")->text().toStdString() << " " << stateText(window).toStdString();
+    EXPECT_EQ(child<QLabel>(window, "crcLabel")->text(), QStringLiteral("0"));
+    EXPECT_EQ(counter(window, "lostLabel"), 0u);
+    EXPECT_TRUE(child<QLabel>(window, "rateLabel")->text().contains(QStringLiteral("Hz (nominal 1")));
+    EXPECT_FALSE(saveScreenshot(window, QStringLiteral("device-panel")).isEmpty());
+
+    QTest::mouseClick(child<QPushButton>(window, "disconnectButton"), Qt::LeftButton);
+    EXPECT_FALSE(window.isConnected());
+    EXPECT_EQ(stateText(window), QStringLiteral("—"));
 }
