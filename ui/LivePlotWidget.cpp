@@ -192,11 +192,12 @@ void LivePlotWidget::refresh()
         for (std::size_t i = 0; i < m_decimatedValues.size(); ++i) {
             values[static_cast<qsizetype>(i)] = m_decimatedValues[i] * scale;
         }
-        if (!values.isEmpty()) {
-            const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
-            const std::size_t lane = m_graphLane[c];
-            laneMin[lane] = std::min(laneMin[lane], *lo);
-            laneMax[lane] = std::max(laneMax[lane], *hi);
+        // NaN (no value there) takes no part in the lane's range.
+        const std::size_t lane = m_graphLane[c];
+        for (const double v : values) {
+            if (std::isnan(v)) continue;
+            laneMin[lane] = std::min(laneMin[lane], v);
+            laneMax[lane] = std::max(laneMax[lane], v);
         }
         m_graphs[c]->setData(keys, values, true);
     }

@@ -3,6 +3,7 @@
 
 #include "core/LiveBuffer.h"
 #include "core/Version.h"
+#include "core/compliance/LivePalpation.h"
 #include "core/detector/LiveDetection.h"
 #include "core/storage/Recorder.h"
 #include "core/storage/RecordingTap.h"
@@ -10,8 +11,10 @@
 #include "devices/emulator/ProbeEmulator.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
+#include "ui/ActiveProfiles.h"
 #include "ui/DevicePanel.h"
 #include "ui/LivePlotWidget.h"
+#include "ui/PalpationView.h"
 #include "ui/PanelScanView.h"
 #include "ui/SessionBar.h"
 
@@ -30,6 +33,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSplitter>
+#include <QStackedWidget>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QToolBar>
@@ -104,6 +108,7 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
       m_plot(new LivePlotWidget(this)),
       m_panelScan(new PanelScanView(this)),
+      m_palpationView(new PalpationView(this)),
       m_devicePanel(new DevicePanel(this))
 {
     setWindowTitle(tr("Tactiscope"));
@@ -112,7 +117,12 @@ MainWindow::MainWindow(QWidget* parent)
     auto* centre = new QSplitter(Qt::Vertical, this);
     centre->setObjectName(QStringLiteral("centreSplitter"));
     centre->addWidget(m_plot);
-    centre->addWidget(m_panelScan);
+    // One mode view at a time, in one splitter pane whose height the user sets.
+    m_modeViews = new QStackedWidget(this);
+    m_modeViews->setObjectName(QStringLiteral("modeViews"));
+    m_modeViews->addWidget(m_panelScan);
+    m_modeViews->addWidget(m_palpationView);
+    centre->addWidget(m_modeViews);
     centre->setStretchFactor(0, 3);
     centre->setStretchFactor(1, 2);
     centre->setSizes({540, 360});
@@ -170,7 +180,12 @@ void MainWindow::restoreSettings()
 
 void MainWindow::showModeView()
 {
-    m_panelScan->setVisible(m_detection && m_sessionBar->metadata().mode == "panel-scan");
+    const std::string mode = m_sessionBar->metadata().mode;
+    QWidget* view = nullptr;
+    if (m_detection && mode == "panel-scan") view = m_panelScan;
+    if (m_palpation && mode == "palpation") view = m_palpationView;
+    if (view) m_modeViews->setCurrentWidget(view);
+    m_modeViews->setVisible(view != nullptr);
 }
 
 void MainWindow::saveSettings() const
@@ -207,6 +222,7 @@ void MainWindow::createMenus()
     QMenu* session = menuBar()->addMenu(tr("&Session"));
     session->addAction(tr("Start / stop &recording"), QKeySequence(tr("Ctrl+R")), this, &MainWindow::toggleRecording);
     session->addAction(tr("&Mark event"), QKeySequence(tr("Ctrl+M")), this, [this] { markEvent(); });
+    session->addAction(tr("&Tare"), QKeySequence(tr("Ctrl+T")), this, &MainWindow::tare);
     session->addSeparator();
     session->addAction(tr("Session &store…"), this, &MainWindow::chooseStore);
 
@@ -223,6 +239,7 @@ void MainWindow::createMenus()
         connect(action, &QAction::triggered, this, [this, seconds] {
             m_plot->setWindowLength(seconds);
             m_panelScan->lanes()->setWindowLength(seconds);
+            m_palpationView->lanes()->setWindowLength(seconds);
         });
     }
 
@@ -279,6 +296,8 @@ bool MainWindow::startRecording()
     const auto& source = m_acquisition->source();
     auto metadata = m_sessionBar->metadata();
     metadata.deviceModel = source.name();
+    if (const auto profile = m_modeProfiles.find(metadata.mode); profile != m_modeProfiles.end())
+        metadata.profileJson = profile->second;
     QDir().mkpath(QFileInfo(m_storePath).absolutePath());
     const double rate_hz = source.nominalSampleRate_hz();
     try {
@@ -291,6 +310,7 @@ bool MainWindow::startRecording()
     }
     m_tap->attach(m_recorder);
     m_panelScan->startPanel();
+    m_palpationView->startSubject();
     m_sessionBar->setRecording(true);
     updateRecording();
     return true;
@@ -362,6 +382,63 @@ void MainWindow::takeDetectorEvents()
         stored.push_back(event);
     }
     m_recorder->addEvents(std::move(stored));
+}
+
+// Palpation runs whenever the probe has two beams and a displacement
+// channel, with the palpation mode's active profile.
+void MainWindow::attachPalpation(const std::vector<core::ChannelDescriptor>& channels, double rate_hz)
+{
+    const ActiveProfile active = activeProfile(QStringLiteral("palpation"));
+    if (!active.error.isEmpty())
+        showProblem(tr("Bad profile"),
+                    tr("The palpation profile could not be used; the paper's probe is used instead."), active.error);
+    const auto& probe = std::get<core::sensors::CompliancePairProfile>(active.profile);
+    m_modeProfiles["palpation"] = core::sensors::toJson(active.profile);
+    core::compliance::LivePalpationSettings settings;
+    settings.high = probe.high;
+    settings.low = probe.low;
+    // A tenth of a second at least: a shorter contact is a tap, not a press.
+    settings.press.minimumSamples = std::max<std::size_t>(20, static_cast<std::size_t>(0.1 * rate_hz));
+    try {
+        m_palpation = std::make_shared<core::compliance::LivePalpation>(channels, rate_hz, settings,
+                                                                        LivePlotWidget::kMaxWindow_s + 2.0);
+    } catch (const std::invalid_argument&) {
+        m_palpation.reset();  // not a compliance probe
+    }
+    if (m_palpation) m_acquisition->addSink(m_palpation);
+    m_palpationView->setPalpation(m_palpation, rate_hz, QString::fromStdString(probe.name));
+}
+
+void MainWindow::takePalpationReadings()
+{
+    const auto readings = m_palpationView->takeNewReadings();
+    if (readings.empty() || !isRecording()) return;
+    std::vector<core::storage::SessionReading> stored;
+    for (const auto& [press, site] : readings) {
+        if (press.stiffness.range != core::sensors::ComplianceRange::InRange) continue;
+        core::storage::SessionReading reading;
+        reading.kind = "compliance";
+        reading.quantity = "stiffness";
+        reading.unit = "N/m";
+        reading.start_s = m_recorder->sessionTimeOf(press.start_s);
+        reading.end_s = m_recorder->sessionTimeOf(press.end_s);
+        reading.value = press.stiffness.objectStiffness_n_per_m;
+        reading.standardError = press.standardError_n_per_m;
+        reading.site = site.toStdString();
+        reading.detailsJson = core::compliance::pressDetailsJson(press);
+        stored.push_back(reading);
+    }
+    m_recorder->addReadings(std::move(stored));
+}
+
+void MainWindow::tare()
+{
+    if (m_palpationView->isVisible()) {
+        m_palpationView->tare();
+        statusBar()->showMessage(tr("Tare: keep the probe lifted for half a second"), 4000);
+    } else {
+        statusBar()->showMessage(tr("Nothing to tare in this mode"), 4000);
+    }
 }
 
 void MainWindow::markEvent(const QString& note)
@@ -512,6 +589,7 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
         m_acquisition->addSink(m_detection);
     }
     m_panelScan->setDetection(m_detection, rate_hz);
+    attachPalpation(channels, rate_hz);
     showModeView();
     m_plot->setSource(buffer, channels, rate_hz);
     m_acquisition->start();
@@ -536,7 +614,9 @@ void MainWindow::disconnectSource()
     m_acquisition.reset();
     m_tap.reset();
     m_detection.reset();
+    m_palpation.reset();
     m_panelScan->setDetection(nullptr, 0.0);
+    m_palpationView->setPalpation(nullptr, 0.0, QString());
     showModeView();
     setWindowTitle(tr("Tactiscope"));
     m_deviceLabel->setText(tr("No device"));
@@ -557,6 +637,8 @@ void MainWindow::updateStatus()
     m_linkLabel->setText(link);
     m_linkLabel->setStyleSheet(counters.healthy ? QString() : QStringLiteral("color: #c62828; font-weight: 600;"));
     takeDetectorEvents();
+    takePalpationReadings();
+    m_palpationView->updateReadout();
     updateRecording();
 }
 

@@ -17,6 +17,7 @@
 #include <QTimer>
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <thread>
@@ -24,6 +25,7 @@
 
 class QDockWidget;
 class QLabel;
+class QStackedWidget;
 
 namespace tactiscope::devices {
 class Acquisition;
@@ -35,11 +37,15 @@ class RecordingTap;
 namespace tactiscope::core::detector {
 class LiveDetection;
 }  // namespace tactiscope::core::detector
+namespace tactiscope::core::compliance {
+class LivePalpation;
+}  // namespace tactiscope::core::compliance
 
 namespace tactiscope::ui {
 
 class DevicePanel;
 class LivePlotWidget;
+class PalpationView;
 struct SourceRequest;
 class PanelScanView;
 class SessionBar;
@@ -63,6 +69,7 @@ public:
 
     LivePlotWidget* livePlot() const { return m_plot; }
     PanelScanView* panelScanView() const { return m_panelScan; }
+    PalpationView* palpationView() const { return m_palpationView; }
     DevicePanel* devicePanel() const { return m_devicePanel; }
 
     // Recording: into the session store at storePath() (remembered across
@@ -96,12 +103,17 @@ private:
     void restoreSettings();
     void showModeView();
     void takeDetectorEvents();
+    void attachPalpation(const std::vector<core::ChannelDescriptor>& channels, double rate_hz);
+    void takePalpationReadings();
+    void tare();  // the visible mode's zero
     void askVerdict(std::int64_t session, int defects, const QString& verdict);
     void saveSettings() const;
 
     LivePlotWidget* m_plot = nullptr;
     SessionBar* m_sessionBar = nullptr;
     PanelScanView* m_panelScan = nullptr;
+    PalpationView* m_palpationView = nullptr;
+    QStackedWidget* m_modeViews = nullptr;  // the mode's view under the traces
     DevicePanel* m_devicePanel = nullptr;
     QDockWidget* m_deviceDock = nullptr;
     QLabel* m_recordingLabel = nullptr;
@@ -109,10 +121,12 @@ private:
     QLabel* m_linkLabel = nullptr;  // state, rate and losses in one line
     QTimer m_statusTimer;
     std::unique_ptr<devices::Acquisition> m_acquisition;
-    std::shared_ptr<core::storage::RecordingTap> m_tap;          // on every acquisition
-    std::shared_ptr<core::detector::LiveDetection> m_detection;  // when the probe has two strain channels
-    std::shared_ptr<core::storage::Recorder> m_recorder;         // while recording
+    std::shared_ptr<core::storage::RecordingTap> m_tap;            // on every acquisition
+    std::shared_ptr<core::detector::LiveDetection> m_detection;    // when the probe has two strain channels
+    std::shared_ptr<core::compliance::LivePalpation> m_palpation;  // when it is a compliance probe
+    std::shared_ptr<core::storage::Recorder> m_recorder;           // while recording
     QString m_storePath;
+    std::map<std::string, std::string> m_modeProfiles;  // mode → JSON of the profile its view uses
     std::optional<QString> m_connectingLabel;
     std::uint64_t m_connectAttempt = 0;  // a newer attempt or a disconnect drops older results
     // One per connect attempt, so a new attempt never waits for an old

@@ -2,6 +2,7 @@
 #include "core/compliance/StiffnessReadings.h"
 
 #include "core/calibration/LinearFit.h"
+#include "core/text/JsonWriter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -142,6 +143,21 @@ std::optional<PressReading> PressReader::close()
     m_count = 0;
     m_sum = m_sumSquares = 0.0;
     return result;
+}
+
+std::string pressDetailsJson(const PressReading& reading)
+{
+    text::JsonWriter json;
+    json.beginObject();
+    json.key("displacement_min_m").value(reading.displacementMin_m);
+    json.key("displacement_max_m").value(reading.displacementMax_m);
+    json.key("displacement_slope_n_per_m_per_m").value(reading.displacementSlope_n_per_m_per_m);
+    json.key("displacement_slope_standard_error").value(reading.displacementSlopeStandardError);
+    json.key("samples_used").value(static_cast<long long>(reading.samplesUsed));
+    json.key("samples_rejected").value(static_cast<long long>(reading.samplesRejected));
+    json.key("samples_out_of_range").value(static_cast<long long>(reading.samplesOutOfRange));
+    json.endObject();
+    return json.str();
 }
 
 }  // namespace tactiscope::core::compliance

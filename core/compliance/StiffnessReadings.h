@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace tactiscope::core::compliance {
@@ -71,6 +72,12 @@ struct PressReading {
 // length; throws std::invalid_argument when they differ or are empty.
 PressReading readPress(const sensors::CompliancePair& pair, std::span<const double> displacement_m,
                        std::span<const double> forceHigh_n, std::span<const double> forceLow_n);
+
+// A press's details beyond its value, as one JSON object for the session
+// store: displacement_min_m, displacement_max_m,
+// displacement_slope_n_per_m_per_m, displacement_slope_standard_error,
+// samples_used, samples_rejected, samples_out_of_range.
+std::string pressDetailsJson(const PressReading& reading);
 
 struct PressSettings {
     double contactThreshold_n = 0.01;

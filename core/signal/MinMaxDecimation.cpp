@@ -28,12 +28,23 @@ void decimateMinMax(std::span<const double> t, std::span<const double> y, double
     std::size_t begin = 0;
     while (begin < t.size()) {
         const double column = columnOf(t[begin]);
-        std::size_t lo = begin;
-        std::size_t hi = begin;
         std::size_t end = begin + 1;
-        for (; end < t.size() && columnOf(t[end]) == column; ++end) {
-            if (y[end] < y[lo]) lo = end;
-            if (y[end] > y[hi]) hi = end;
+        while (end < t.size() && columnOf(t[end]) == column) ++end;
+        // NaN marks "no value" (a gap, a quantity undefined there): it takes
+        // no part in the extremes, and a column of nothing but NaN keeps one
+        // NaN so the drawn line breaks there.
+        std::size_t lo = end;
+        std::size_t hi = end;
+        for (std::size_t i = begin; i < end; ++i) {
+            if (std::isnan(y[i])) continue;
+            if (lo == end || y[i] < y[lo]) lo = i;
+            if (hi == end || y[i] > y[hi]) hi = i;
+        }
+        if (lo == end) {
+            tOut.push_back(t[begin]);
+            yOut.push_back(y[begin]);
+            begin = end;
+            continue;
         }
         const std::size_t first = lo < hi ? lo : hi;
         const std::size_t second = lo < hi ? hi : lo;

@@ -16,7 +16,9 @@ namespace tactiscope::core::signal {
 
 // t must be non-decreasing and the same length as y; columnWidth_s > 0.
 // When there are no more than two samples per column on average, the samples
-// are returned unchanged. tOut and yOut are replaced.
+// are returned unchanged. NaN samples are "no value": a column's extremes
+// ignore them, and a column with nothing else yields one NaN point (a break
+// in the drawn line). tOut and yOut are replaced.
 void decimateMinMax(std::span<const double> t, std::span<const double> y, double columnWidth_s,
                     std::vector<double>& tOut, std::vector<double>& yOut);
 

@@ -52,6 +52,14 @@ void Recorder::addEvents(std::vector<SessionEvent> events)
     m_wake.notify_one();
 }
 
+void Recorder::addReadings(std::vector<SessionReading> readings)
+{
+    const std::lock_guard lock(m_mutex);
+    m_queuedReadings.insert(m_queuedReadings.end(), std::make_move_iterator(readings.begin()),
+                            std::make_move_iterator(readings.end()));
+    m_wake.notify_one();
+}
+
 double Recorder::sessionTime_s() const
 {
     const std::lock_guard lock(m_mutex);
@@ -83,11 +91,13 @@ void Recorder::run(const std::stop_token& stop)
 
 void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
 {
-    if ((m_queue.empty() && m_queuedEvents.empty()) || !m_stats.error.empty()) return;
+    if ((m_queue.empty() && m_queuedEvents.empty() && m_queuedReadings.empty()) || !m_stats.error.empty()) return;
     std::vector<SampleBlock> batch(std::make_move_iterator(m_queue.begin()), std::make_move_iterator(m_queue.end()));
     m_queue.clear();
     std::vector<SessionEvent> events = std::move(m_queuedEvents);
     m_queuedEvents.clear();
+    std::vector<SessionReading> readings = std::move(m_queuedReadings);
+    m_queuedReadings.clear();
     const std::uint64_t samples = m_queuedSamples;
     m_queuedSamples = 0;
     lock.unlock();  // the acquisition keeps queueing while the disk works
@@ -95,6 +105,7 @@ void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
     try {
         m_store.appendBlocks(m_session, batch);
         if (!events.empty()) m_store.addEvents(m_session, events);
+        for (const auto& reading : readings) m_store.addReading(m_session, reading);
     } catch (const StorageError& e) {
         error = e.what();
     }
@@ -102,6 +113,7 @@ void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
     if (error.empty()) {
         m_stats.samplesWritten += samples;
         m_stats.eventsWritten += events.size();
+        m_stats.readingsWritten += readings.size();
         ++m_stats.commits;
     } else {
         m_stats.error = "recording stopped: " + error + "; everything recorded before was kept";

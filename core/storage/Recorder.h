@@ -29,6 +29,7 @@ struct RecorderStats {
     std::uint64_t samplesWritten = 0;  // per channel, committed
     std::uint64_t samplesDropped = 0;  // per channel, over the memory bound or after a failure
     std::uint64_t eventsWritten = 0;
+    std::uint64_t readingsWritten = 0;
     std::uint64_t commits = 0;
     std::string error;  // why recording stopped early; empty while it is fine
 };
@@ -51,6 +52,8 @@ public:
     void consume(const SampleBlock& block) override;  // acquisition thread
     // Events (e.g. an operator's marker) stored with the next commit; any thread.
     void addEvents(std::vector<SessionEvent> events);
+    // Readings (e.g. a press's stiffness), likewise; times on the session clock.
+    void addReadings(std::vector<SessionReading> readings);
     // The session time of the newest sample consumed (0 before the first).
     double sessionTime_s() const;
     // An acquisition time (a block's clock) on the session's clock.
@@ -73,6 +76,7 @@ private:
     std::condition_variable_any m_wake;
     std::deque<SampleBlock> m_queue;
     std::vector<SessionEvent> m_queuedEvents;
+    std::vector<SessionReading> m_queuedReadings;
     std::uint64_t m_queuedSamples = 0;
     std::optional<std::uint64_t> m_firstIndex;  // of the first block consumed
     double m_firstTime_s = 0.0;

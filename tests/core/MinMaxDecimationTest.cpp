@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <ranges>
 #include <stdexcept>
 #include <vector>
 
@@ -94,4 +95,33 @@ TEST(MinMaxDecimation, RejectsMismatchedInput)
     EXPECT_THROW(decimateMinMax(t, y, 0.1, tOut, yOut), std::invalid_argument);
     y.push_back(1.0);
     EXPECT_THROW(decimateMinMax(t, y, 0.0, tOut, yOut), std::invalid_argument);
+}
+
+TEST(MinMaxDecimation, NaNIsNoValueAndAColumnOfOnlyNaNBreaksTheLine)
+{
+    // 10 columns of 10 samples: column 0 all NaN, column 1 starts with NaN,
+    // column 2 has NaN between its extremes.
+    std::vector<double> t(100), y(100);
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        t[i] = static_cast<double>(i) * 0.1 + 0.05;
+        y[i] = static_cast<double>(i % 7);
+    }
+    for (std::size_t i = 0; i < 10; ++i) y[i] = std::nan("");
+    y[10] = std::nan("");
+    y[11] = -5.0;
+    y[18] = 9.0;
+    y[25] = std::nan("");
+    std::vector<double> tOut, yOut;
+    decimateMinMax(t, y, 1.0, tOut, yOut);
+    ASSERT_GE(yOut.size(), 5u);
+    EXPECT_EQ(tOut[0], t[0]);
+    EXPECT_TRUE(std::isnan(yOut[0]));  // one point for the empty column
+    EXPECT_EQ(tOut[1], t[11]);
+    EXPECT_EQ(yOut[1], -5.0);
+    EXPECT_EQ(tOut[2], t[18]);
+    EXPECT_EQ(yOut[2], 9.0);
+    // Column 2 (samples 20–29, values 6,0,1,2,3,NaN,5,6,0,1): 0 at 21, 6 at 20.
+    EXPECT_EQ(tOut[3], t[20]);
+    EXPECT_EQ(tOut[4], t[21]);
+    for (const double v : yOut | std::views::drop(1)) EXPECT_FALSE(std::isnan(v));
 }

@@ -1,0 +1,134 @@
+// LivePalpation: channel roles, tare, forces per sample, press readings.
+#include "core/compliance/LivePalpation.h"
+
+#include "core/SampleBlock.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+namespace tactiscope::core::compliance {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+bool inCounts(const ChannelDescriptor& channel)
+{
+    return channel.unit == "count" || channel.unit == "counts";
+}
+
+}  // namespace
+
+void LivePalpation::Input::setZero(double value)
+{
+    if (chain)
+        chain->tare(value);
+    else
+        zero = value;
+}
+
+double LivePalpation::Input::force(const sensors::CantileverBeam& beam, double value) const
+{
+    if (chain) return chain->strain(value) / beam.rootStrainPerNewton();
+    if (kind == ChannelKind::Force) return value - zero;
+    return (value - zero) / beam.rootStrainPerNewton();  // a strain channel
+}
+
+LivePalpation::LivePalpation(const std::vector<ChannelDescriptor>& channels, double sampleRate_hz,
+                             const LivePalpationSettings& settings, double displaySeconds)
+    : m_pair(sensors::CantileverBeam(settings.high), sensors::CantileverBeam(settings.low)),
+      m_pressSettings(settings.press),
+      m_tareSamples(std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(kTare_s * sampleRate_hz)))),
+      m_output(std::make_shared<LiveBuffer>(outputChannels().size(),
+                                            static_cast<std::size_t>(std::ceil(displaySeconds * sampleRate_hz)) + 1)),
+      m_reader(m_pair, settings.press)
+{
+    std::optional<std::size_t> displacement;
+    std::vector<std::size_t> beams;
+    for (std::size_t c = 0; c < channels.size(); ++c) {
+        if (channels[c].kind == ChannelKind::Position) {
+            if (!displacement) displacement = c;
+        } else if (beams.size() < 2) {
+            beams.push_back(c);
+        }
+    }
+    if (!displacement || beams.size() < 2)
+        throw std::invalid_argument("palpation needs two beam channels and a displacement channel");
+    m_displacement = *displacement;
+    const auto input = [&](std::size_t c) {
+        Input in;
+        in.channel = c;
+        in.kind = channels[c].kind;
+        if (inCounts(channels[c])) in.chain.emplace(settings.adc, settings.bridge);
+        return in;
+    };
+    m_high = input(beams[0]);
+    m_low = input(beams[1]);
+}
+
+std::vector<ChannelDescriptor> LivePalpation::outputChannels()
+{
+    return {{"F_H", "N", ChannelKind::Force}, {"F_L", "N", ChannelKind::Force}, {"Q", "", ChannelKind::Other}};
+}
+
+void LivePalpation::consume(const SampleBlock& block)
+{
+    if (block.empty()) return;
+    const bool gap = m_nextIndex && block.firstSampleIndex() != *m_nextIndex;
+    const bool tareRequested = m_tareRequested.exchange(false);
+    m_nextIndex = block.endSampleIndex();
+    // Drop a press in progress: it would be read across a gap or two zeros.
+    if (gap || tareRequested) m_reader = PressReader(m_pair, m_pressSettings);
+    // A zero comes from samples without a gap: one a gap interrupted starts over.
+    if (tareRequested || (gap && m_tareCount < m_tareSamples)) {
+        m_tareCount = 0;
+        m_tareHigh = m_tareLow = 0.0;
+    }
+
+    SampleBlock display(3, block.sampleCount(), block.t0_s(), block.dt_s(), block.firstSampleIndex(), block.sequence());
+    for (std::size_t s = 0; s < block.sampleCount(); ++s) {
+        const double high = block.value(m_high.channel, s);
+        const double low = block.value(m_low.channel, s);
+        if (m_tareCount < m_tareSamples) {
+            m_tareHigh += high;
+            m_tareLow += low;
+            if (++m_tareCount == m_tareSamples) {
+                m_high.setZero(m_tareHigh / static_cast<double>(m_tareSamples));
+                m_low.setZero(m_tareLow / static_cast<double>(m_tareSamples));
+            }
+            for (std::size_t c = 0; c < 3; ++c) display.channel(c)[s] = kNaN;
+            continue;
+        }
+        const double fHigh = m_high.force(m_pair.high(), high);
+        const double fLow = m_low.force(m_pair.low(), low);
+        display.channel(0)[s] = fHigh;
+        display.channel(1)[s] = fLow;
+        const bool contact = fHigh > m_pressSettings.contactThreshold_n && fLow > m_pressSettings.contactThreshold_n;
+        display.channel(2)[s] = contact ? fHigh / fLow : kNaN;
+        if (auto reading = m_reader.push(block.timeAt_s(s), block.value(m_displacement, s), fHigh, fLow))
+            m_completed.push_back(*reading);
+    }
+    m_output->consume(display);
+
+    const std::lock_guard lock(m_mutex);
+    m_state.taring = m_tareCount < m_tareSamples;
+    m_state.pressing = m_reader.pressing();
+    m_state.current = m_reader.current();
+    m_readings.insert(m_readings.end(), m_completed.begin(), m_completed.end());
+    m_completed.clear();
+}
+
+PalpationState LivePalpation::state() const
+{
+    const std::lock_guard lock(m_mutex);
+    return m_state;
+}
+
+std::vector<PressReading> LivePalpation::takeReadings()
+{
+    const std::lock_guard lock(m_mutex);
+    return std::exchange(m_readings, {});
+}
+
+}  // namespace tactiscope::core::compliance

@@ -1,0 +1,106 @@
+// Palpation on a live stream (seed 001): a sink on the acquisition thread
+// that turns the compliance probe's two beam channels into forces, shows
+// F_H, F_L and Q = F_H/F_L in a LiveBuffer, keeps the running k_o of the
+// press in progress, and hands each completed press (PressReader) to the GUI.
+//
+// Channels: the first Position channel is the displacement; the first two
+// other channels are the high- and the low-stiffness beam, in the device's
+// order. A channel in ADC counts goes through the strain-gauge chain
+// (counts → strain), a strain channel through the beam model (F = ε /
+// (root strain per newton)), a force channel is used as it is.
+//
+// Tare: the probe's zero is the mean of the first kTare_s of the stream (the
+// probe is lifted when a session starts) and again after tare(). While a
+// zero is being taken no force is computed (the output is NaN), and a press
+// in progress is dropped rather than read across two zeros. Lost samples end
+// a press in progress without a reading; what follows the gap is read as a
+// press of its own, so a reading never spans a gap.
+#pragma once
+
+#include "core/BlockSink.h"
+#include "core/ChannelDescriptor.h"
+#include "core/LiveBuffer.h"
+#include "core/compliance/StiffnessReadings.h"
+#include "core/straingauge/StrainGaugeChain.h"
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+namespace tactiscope::core::compliance {
+
+struct LivePalpationSettings {
+    sensors::CantileverGeometry high;
+    sensors::CantileverGeometry low;
+    straingauge::AdcSettings adc;  // for channels in counts
+    straingauge::BridgeSettings bridge;
+    PressSettings press;
+};
+
+// What the display shows between presses and while pressing.
+struct PalpationState {
+    bool taring = true;
+    bool pressing = false;
+    // While pressing: the mean k_o so far and its standard error, N/m.
+    std::optional<std::pair<double, double>> current;
+};
+
+class LivePalpation final : public BlockSink {
+public:
+    static constexpr double kTare_s = 0.5;
+
+    // Throws std::invalid_argument when the channels lack a displacement or
+    // two beams, or for a non-physical probe.
+    LivePalpation(const std::vector<ChannelDescriptor>& channels, double sampleRate_hz,
+                  const LivePalpationSettings& settings, double displaySeconds);
+
+    // The channels of output(): F_H and F_L in N (NaN while taring), and Q
+    // (NaN unless both forces are above the contact threshold).
+    static std::vector<ChannelDescriptor> outputChannels();
+    const sensors::CompliancePair& pair() const { return m_pair; }
+
+    // Any thread: the next kTare_s of samples become the zero.
+    void tare() { m_tareRequested = true; }
+
+    // Acquisition thread.
+    void consume(const SampleBlock& block) override;
+
+    std::shared_ptr<const LiveBuffer> output() const { return m_output; }
+    PalpationState state() const;
+    // Presses completed since the last call, in time order.
+    std::vector<PressReading> takeReadings();
+
+private:
+    // One beam's channel and how its values become a force.
+    struct Input {
+        std::size_t channel = 0;
+        ChannelKind kind = ChannelKind::Other;
+        std::optional<straingauge::StrainGaugeChain> chain;  // a channel in counts; holds its zero
+        double zero = 0.0;                                   // other channels
+        void setZero(double value);
+        double force(const sensors::CantileverBeam& beam, double value) const;
+    };
+
+    sensors::CompliancePair m_pair;
+    PressSettings m_pressSettings;
+    Input m_high, m_low;
+    std::size_t m_displacement = 0;
+    std::size_t m_tareSamples;
+    std::shared_ptr<LiveBuffer> m_output;
+    std::atomic<bool> m_tareRequested = false;
+
+    mutable std::mutex m_mutex;  // guards the members below
+    PalpationState m_state;
+    std::vector<PressReading> m_readings;
+
+    // Acquisition thread only.
+    PressReader m_reader;
+    std::optional<std::uint64_t> m_nextIndex;
+    std::size_t m_tareCount = 0;  // samples of the zero so far
+    double m_tareHigh = 0.0, m_tareLow = 0.0;
+    std::vector<PressReading> m_completed;
+};
+
+}  // namespace tactiscope::core::compliance

@@ -1,0 +1,195 @@
+// Live palpation on the simulated compliance probe, fed block by block as
+// the acquisition does: the forces and Q it displays are the chain's worked
+// out here by hand; its press readings equal the
+// whole-record reading of the same samples and the specimen's true
+// stiffness within 5 %; a gap splits the press in progress, a tare drops it.
+#include "core/compliance/LivePalpation.h"
+
+#include "core/SampleBlock.h"
+#include "devices/simulator/PalpationScenario.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace tactiscope;
+using core::compliance::LivePalpation;
+using core::compliance::PressReading;
+
+namespace {
+
+constexpr double kRate_hz = 1000.0;
+constexpr double kTruth_n_per_m = 117.0;
+
+struct Recording {
+    core::SampleBlock samples;
+    devices::simulator::PalpationScenario scenario;
+};
+
+Recording palpate(double seconds)
+{
+    devices::simulator::PalpationParameters p;
+    p.objectStiffness_n_per_m = kTruth_n_per_m;
+    p.seed = 11;
+    Recording r{core::SampleBlock(3, static_cast<std::size_t>(seconds * kRate_hz), 0.0, 1.0 / kRate_hz),
+                devices::simulator::PalpationScenario(p)};
+    r.scenario.generate(r.samples);
+    return r;
+}
+
+core::compliance::LivePalpationSettings settingsOf(const devices::simulator::PalpationScenario& scenario)
+{
+    const auto& p = scenario.parameters();
+    return {p.high, p.low, p.adc, p.bridge, {0.01, 100}};
+}
+
+// Samples [first, first + count) as a block numbered from `index`.
+core::SampleBlock slice(const core::SampleBlock& all, std::size_t first, std::size_t count, std::uint64_t index)
+{
+    core::SampleBlock block(3, count, all.timeAt_s(first), all.dt_s(), index);
+    for (std::size_t c = 0; c < 3; ++c)
+        std::copy_n(all.channel(c).begin() + static_cast<std::ptrdiff_t>(first), count, block.channel(c).begin());
+    return block;
+}
+
+// Feeds [first, end) in blocks of 53 samples, numbered from `index`.
+void feed(LivePalpation& live, const core::SampleBlock& all, std::size_t first, std::size_t end, std::uint64_t index)
+{
+    for (std::size_t s = first; s < end; s += 53) {
+        const std::size_t n = std::min<std::size_t>(53, end - s);
+        live.consume(slice(all, s, n, index + (s - first)));
+    }
+}
+
+// The readings of the whole record at once, with the zero of its first
+// 0.5 s (the procedure of PalpationScenarioTest).
+std::vector<PressReading> wholeRecordReadings(const Recording& r)
+{
+    auto high = r.scenario.chain(), low = r.scenario.chain();
+    double zeroHigh = 0.0, zeroLow = 0.0;
+    for (std::size_t i = 0; i < 500; ++i) {
+        zeroHigh += r.samples.value(0, i);
+        zeroLow += r.samples.value(1, i);
+    }
+    high.tare(zeroHigh / 500.0);
+    low.tare(zeroLow / 500.0);
+    const core::sensors::CantileverBeam highBeam(r.scenario.parameters().high), lowBeam(r.scenario.parameters().low);
+    core::compliance::PressReader reader(core::sensors::CompliancePair(highBeam, lowBeam), {0.01, 100});
+    std::vector<PressReading> readings;
+    for (std::size_t i = 500; i < r.samples.sampleCount(); ++i) {
+        const double fHigh = high.strain(r.samples.value(0, i)) / highBeam.rootStrainPerNewton();
+        const double fLow = low.strain(r.samples.value(1, i)) / lowBeam.rootStrainPerNewton();
+        if (auto reading = reader.push(r.samples.timeAt_s(i), r.samples.value(2, i), fHigh, fLow))
+            readings.push_back(*reading);
+    }
+    return readings;
+}
+
+}  // namespace
+
+TEST(LivePalpation, ReadsEachPressAsTheWholeRecordDoesAndWithinFivePercentOfTheTruth)
+{
+    const Recording r = palpate(18.0);
+    LivePalpation live(r.scenario.channels(), kRate_hz, settingsOf(r.scenario), 20.0);
+    feed(live, r.samples, 0, r.samples.sampleCount(), 0);
+    const auto readings = live.takeReadings();
+    const auto expected = wholeRecordReadings(r);
+    ASSERT_GE(readings.size(), 4u);
+    ASSERT_EQ(readings.size(), expected.size());
+    for (std::size_t i = 0; i < readings.size(); ++i) {
+        EXPECT_DOUBLE_EQ(readings[i].start_s, expected[i].start_s);
+        EXPECT_NEAR(readings[i].stiffness.objectStiffness_n_per_m, expected[i].stiffness.objectStiffness_n_per_m,
+                    1e-9 * kTruth_n_per_m);
+        EXPECT_NEAR(readings[i].stiffness.objectStiffness_n_per_m, kTruth_n_per_m, 0.05 * kTruth_n_per_m);
+        EXPECT_GT(readings[i].standardError_n_per_m, 0.0);
+    }
+    EXPECT_TRUE(live.takeReadings().empty());  // taken once
+}
+
+TEST(LivePalpation, DisplaysTheForcesAndQOfEachSample)
+{
+    const Recording r = palpate(6.0);
+    LivePalpation live(r.scenario.channels(), kRate_hz, settingsOf(r.scenario), 10.0);
+    feed(live, r.samples, 0, r.samples.sampleCount(), 0);
+    core::LiveCursor cursor;
+    core::LiveChunk chunk;
+    ASSERT_EQ(live.output()->readNew(cursor, chunk), r.samples.sampleCount());
+    // The zero is being taken: nothing to show yet.
+    EXPECT_TRUE(std::isnan(chunk.values[0][499]));
+
+    // By hand: counts → bridge volts → half-bridge strain → force.
+    const auto& p = r.scenario.parameters();
+    const double voltsPerCount = p.adc.reference_v / std::pow(2.0, p.adc.bits - 1) / p.adc.gain;
+    const auto mean = [&](std::size_t c) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < 500; ++i) sum += r.samples.value(c, i);
+        return sum / 500.0;
+    };
+    const double zeroHigh = mean(0), zeroLow = mean(1);
+    const core::sensors::CantileverBeam high(p.high), low(p.low);
+    const auto force = [&](double counts, double zero, const core::sensors::CantileverBeam& beam) {
+        const double ratio = (counts - zero) * voltsPerCount / p.bridge.excitation_v;
+        return 2.0 * ratio / p.bridge.gaugeFactor / beam.rootStrainPerNewton();
+    };
+    std::size_t pressed = 0;
+    for (std::size_t i = 500; i < r.samples.sampleCount(); ++i) {
+        const double fh = force(r.samples.value(0, i), zeroHigh, high);
+        const double fl = force(r.samples.value(1, i), zeroLow, low);
+        ASSERT_NEAR(chunk.values[0][i], fh, 1e-9) << i;
+        ASSERT_NEAR(chunk.values[1][i], fl, 1e-9) << i;
+        if (fh > 0.01 && fl > 0.01) {
+            ASSERT_NEAR(chunk.values[2][i], fh / fl, 1e-9 * fh / fl) << i;
+            ++pressed;
+        } else {
+            ASSERT_TRUE(std::isnan(chunk.values[2][i])) << i;
+        }
+    }
+    EXPECT_GT(pressed, 1000u);  // the first press is in these 6 s
+}
+
+TEST(LivePalpation, AGapSplitsThePressInProgressAndATareDropsIt)
+{
+    const Recording r = palpate(18.0);
+    const auto expected = wholeRecordReadings(r);
+    ASSERT_GE(expected.size(), 3u);
+    // A moment in the middle of the second press.
+    const auto middle = static_cast<std::size_t>((expected[1].start_s + expected[1].end_s) / 2.0 * kRate_hz);
+
+    // A gap there: no reading spans it; the part of the press after the gap
+    // is read on its own, and the other presses are read unchanged.
+    LivePalpation gapped(r.scenario.channels(), kRate_hz, settingsOf(r.scenario), 20.0);
+    feed(gapped, r.samples, 0, middle, 0);
+    feed(gapped, r.samples, middle, r.samples.sampleCount(), middle + 50);
+    auto readings = gapped.takeReadings();
+    ASSERT_EQ(readings.size(), expected.size());
+    EXPECT_DOUBLE_EQ(readings[0].start_s, expected[0].start_s);
+    EXPECT_DOUBLE_EQ(readings[1].start_s, r.samples.timeAt_s(middle));
+    EXPECT_DOUBLE_EQ(readings[1].end_s, expected[1].end_s);
+    EXPECT_NEAR(readings[1].stiffness.objectStiffness_n_per_m, kTruth_n_per_m, 0.05 * kTruth_n_per_m);
+    EXPECT_DOUBLE_EQ(readings[2].start_s, expected[2].start_s);
+
+    // A tare there: the same press is dropped, and the next 0.5 s show nothing.
+    LivePalpation tared(r.scenario.channels(), kRate_hz, settingsOf(r.scenario), 20.0);
+    feed(tared, r.samples, 0, middle, 0);
+    tared.tare();
+    feed(tared, r.samples, middle, middle + 100, middle);
+    EXPECT_TRUE(tared.state().taring);
+    readings = tared.takeReadings();
+    ASSERT_EQ(readings.size(), 1u);
+    EXPECT_DOUBLE_EQ(readings[0].start_s, expected[0].start_s);
+    // The rest of the press was in the zero, so it reads as lifted: no reading
+    // until the probe is pressed again.
+    feed(tared, r.samples, middle + 100, r.samples.sampleCount(), middle + 100);
+    EXPECT_FALSE(tared.state().taring);
+    readings = tared.takeReadings();
+    ASSERT_FALSE(readings.empty());
+    EXPECT_GT(readings[0].start_s, expected[1].end_s);
+}
+
+TEST(LivePalpation, RefusesAProbeWithoutADisplacementChannel)
+{
+    const std::vector<core::ChannelDescriptor> channels{{"high", "count", core::ChannelKind::Other},
+                                                        {"low", "count", core::ChannelKind::Other}};
+    const auto settings = settingsOf(devices::simulator::PalpationScenario());
+    EXPECT_THROW(LivePalpation(channels, kRate_hz, settings, 10.0), std::invalid_argument);
+}

@@ -1,0 +1,147 @@
+// Palpation mode against the live simulator: each completed press appears
+// as a row, lands in the selected grid cell and is stored in the session
+// with the stiffness the core reads from the recorded samples; the large
+// readout and the reference scale show it; tare takes a new zero.
+#include "ui/PalpationView.h"
+
+#include "core/compliance/StiffnessReadings.h"
+#include "core/storage/SessionStore.h"
+#include "devices/simulator/PalpationScenario.h"
+#include "support/MainWindowHelpers.h"
+#include "support/Screenshot.h"
+#include "support/WaitFor.h"
+#include "ui/MainWindow.h"
+#include "ui/PanelScanView.h"
+#include "ui/SiteGridMap.h"
+
+#include <QComboBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+using namespace tactiscope;
+using tactiscope::testing::child;
+using tactiscope::testing::liveSimulator;
+using tactiscope::testing::runEventLoopFor;
+using tactiscope::testing::waitFor;
+
+namespace {
+
+void choosePalpationMode(ui::MainWindow& window)
+{
+    auto* mode = child<QComboBox>(window, "modeBox");
+    mode->setCurrentIndex(mode->findData(QStringLiteral("palpation")));
+}
+
+}  // namespace
+
+TEST(PalpationView, PressesAreListedMappedStoredAndMatchTheCoreReading)
+{
+    QTemporaryDir dir;
+    const QString store = dir.filePath("s.tactiscope");
+    ui::MainWindow window;
+    window.setStorePath(store);
+    window.resize(1400, 900);
+    choosePalpationMode(window);
+    // Recording starts with the stream, while the simulated hand still holds
+    // the probe lifted (its first press comes after 1 s).
+    window.connectSource(liveSimulator("palpation"));
+    ASSERT_TRUE(window.startRecording());
+    window.show();
+    ui::PalpationView* view = window.palpationView();
+    ASSERT_TRUE(view->isVisible());
+    EXPECT_FALSE(window.panelScanView()->isVisible());
+    ui::SiteGridMap* grid = view->siteGrid();
+    grid->setActive(true);
+    grid->selectSite(1, 1);  // B2
+
+    auto* table = child<QTableWidget>(*view, "pressTable");
+    ASSERT_TRUE(waitFor([&] { return table->rowCount() >= 2; }, 12000));
+    runEventLoopFor(300);
+    tactiscope::testing::saveScreenshot(window, QStringLiteral("palpation"));
+    window.stopRecording();
+
+    // The simulated specimen is 117 N/m: every press reads it within 5 %.
+    const double truth = devices::simulator::PalpationParameters{}.objectStiffness_n_per_m;
+    for (int row = 0; row < table->rowCount(); ++row)
+        EXPECT_NEAR(QLocale().toDouble(table->item(row, 1)->text()), truth, 0.05 * truth) << row;
+    EXPECT_EQ(table->item(0, 5)->text(), QStringLiteral("B2"));
+    EXPECT_EQ(table->item(1, 5)->text(), QStringLiteral("B3"));
+    ASSERT_TRUE(grid->valueAt(1, 1).has_value());
+    EXPECT_NEAR(*grid->valueAt(1, 1), QLocale().toDouble(table->item(0, 1)->text()), 0.05);
+    EXPECT_TRUE(child<QLabel>(*view, "stiffnessLabel")->text().endsWith(QStringLiteral("N/m")));
+
+    core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto session = sessions.sessions().front();
+    EXPECT_EQ(session.metadata.mode, "palpation");
+    EXPECT_NE(session.metadata.profileJson.find("compliance_pair"), std::string::npos);
+    const auto readings = sessions.readings(session.id);
+    ASSERT_GE(readings.size(), 2u);
+    EXPECT_EQ(readings[0].site, "B2");
+    EXPECT_EQ(readings[0].unit, "N/m");
+    EXPECT_NE(readings[0].detailsJson.find("displacement_slope_n_per_m_per_m"), std::string::npos);
+
+    // The core's reading of the recorded samples of each press: counts →
+    // strain → force with the zero of the session's first half second.
+    const devices::simulator::PalpationParameters p;
+    const std::uint64_t n = session.sampleCount;
+    const auto high = sessions.readChannel(session.id, 0, 0, n);
+    const auto low = sessions.readChannel(session.id, 1, 0, n);
+    const auto displacement = sessions.readChannel(session.id, 2, 0, n);
+    devices::simulator::PalpationScenario scenario;
+    auto highChain = scenario.chain(), lowChain = scenario.chain();
+    const std::size_t tare = 500;
+    double zeroHigh = 0.0, zeroLow = 0.0;
+    for (std::size_t i = 0; i < tare; ++i) {
+        zeroHigh += high[i] / tare;
+        zeroLow += low[i] / tare;
+    }
+    highChain.tare(zeroHigh);
+    lowChain.tare(zeroLow);
+    const core::sensors::CantileverBeam highBeam(p.high), lowBeam(p.low);
+    const core::sensors::CompliancePair pair(highBeam, lowBeam);
+    for (const auto& stored : readings) {
+        std::vector<double> x, fh, fl;
+        const auto first = static_cast<std::size_t>(std::llround(stored.start_s * p.sampleRate_hz));
+        const auto last = static_cast<std::size_t>(std::llround(stored.end_s * p.sampleRate_hz));
+        for (std::size_t i = first; i <= last && i < n; ++i) {
+            const double forceHigh = highChain.strain(high[i]) / highBeam.rootStrainPerNewton();
+            const double forceLow = lowChain.strain(low[i]) / lowBeam.rootStrainPerNewton();
+            if (forceHigh <= 0.01 || forceLow <= 0.01) continue;
+            x.push_back(displacement[i]);
+            fh.push_back(forceHigh);
+            fl.push_back(forceLow);
+        }
+        const auto expected = core::compliance::readPress(pair, x, fh, fl);
+        EXPECT_NEAR(stored.value, expected.stiffness.objectStiffness_n_per_m, 0.005 * stored.value) << stored.start_s;
+        EXPECT_NEAR(*stored.standardError, expected.standardError_n_per_m, 0.2 * expected.standardError_n_per_m);
+    }
+}
+
+TEST(PalpationView, TareTakesANewZeroFromTheButtonOrCtrlT)
+{
+    ui::MainWindow window;
+    choosePalpationMode(window);
+    window.connectSource(liveSimulator("palpation"));
+    window.show();
+    auto* status = child<QLabel>(*window.palpationView(), "palpationStatus");
+    ASSERT_TRUE(waitFor([&] { return status->text().startsWith(QStringLiteral("Ready")); }, 3000));
+    QTest::mouseClick(child<QPushButton>(*window.palpationView(), "tareButton"), Qt::LeftButton);
+    EXPECT_TRUE(waitFor([&] { return status->text().startsWith(QStringLiteral("Taking the zero")); }, 1000));
+    EXPECT_TRUE(waitFor([&] { return !status->text().startsWith(QStringLiteral("Taking the zero")); }, 2000));
+    QTest::keyClick(&window, Qt::Key_T, Qt::ControlModifier);
+    EXPECT_TRUE(waitFor([&] { return status->text().startsWith(QStringLiteral("Taking the zero")); }, 1000));
+}
+
+TEST(PalpationView, APanelScanProbeHasNoPalpationView)
+{
+    ui::MainWindow window;
+    choosePalpationMode(window);
+    window.connectSource(liveSimulator("panel-scan"));
+    window.show();
+    EXPECT_FALSE(window.palpationView()->isVisible());
+}

@@ -1,0 +1,67 @@
+// ActiveProfiles: settings key, built-in fallback and the kind check.
+#include "ui/ActiveProfiles.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QSettings>
+
+#include <variant>
+
+namespace tactiscope::ui {
+namespace {
+
+QString settingsKey(const QString& mode)
+{
+    return QStringLiteral("profiles/%1").arg(mode);
+}
+
+bool fitsMode(const core::sensors::SensorProfile& profile, const QString& mode)
+{
+    if (mode == QLatin1String("palpation"))
+        return std::holds_alternative<core::sensors::CompliancePairProfile>(profile);
+    if (mode == QLatin1String("capacitive"))
+        return std::holds_alternative<core::sensors::CapacitiveBeamProfile>(profile);
+    return true;
+}
+
+}  // namespace
+
+QString builtInProfilePath(const QString& mode)
+{
+    if (mode == QLatin1String("capacitive"))
+        return QStringLiteral(":/tactiscope/profiles/capacitive-beam-paper-no1.json");
+    return QStringLiteral(":/tactiscope/profiles/compliance-probe-paper.json");
+}
+
+core::sensors::SensorProfile readProfile(const QString& path)
+{
+    QFile file(path);
+    const std::string source = QFileInfo(path).fileName().toStdString();
+    if (!file.open(QIODevice::ReadOnly))
+        throw core::sensors::ProfileError(source + ": " + file.errorString().toStdString());
+    return core::sensors::parseSensorProfile(file.readAll().toStdString(), source);
+}
+
+ActiveProfile activeProfile(const QString& mode)
+{
+    const QString builtIn = builtInProfilePath(mode);
+    const QString chosen = QSettings().value(settingsKey(mode), builtIn).toString();
+    QString error;
+    if (chosen != builtIn) {
+        try {
+            auto profile = readProfile(chosen);
+            if (fitsMode(profile, mode)) return {std::move(profile), chosen, {}};
+            error = QStringLiteral("%1: not a profile for the %2 mode").arg(QFileInfo(chosen).fileName(), mode);
+        } catch (const core::sensors::ProfileError& e) {
+            error = QString::fromStdString(e.what());
+        }
+    }
+    return {readProfile(builtIn), builtIn, error};
+}
+
+void setActiveProfilePath(const QString& mode, const QString& path)
+{
+    QSettings().setValue(settingsKey(mode), path);
+}
+
+}  // namespace tactiscope::ui

@@ -1,0 +1,197 @@
+// PalpationView: layout, the large readout, press rows, scale and grid.
+#include "ui/PalpationView.h"
+
+#include "core/compliance/ReferenceTissues.h"
+#include "ui/LivePlotWidget.h"
+#include "ui/SiteGridMap.h"
+#include "ui/StiffnessScale.h"
+
+#include <QFile>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLocale>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tactiscope::ui {
+namespace {
+
+// The reference table ships inside the program (resources/reference-tissues.json).
+std::vector<core::compliance::ReferenceTissue> builtInTissues()
+{
+    QFile file(QStringLiteral(":/tactiscope/reference-tissues.json"));
+    if (!file.open(QIODevice::ReadOnly)) return {};
+    return core::compliance::parseReferenceTissues(file.readAll().toStdString(), "reference-tissues.json");
+}
+
+// The standard error to two significant digits, the value to the same place.
+QString stiffnessText(double k_n_per_m, double standardError_n_per_m)
+{
+    const int decimals = standardError_n_per_m > 0.0
+                             ? std::clamp(1 - static_cast<int>(std::floor(std::log10(standardError_n_per_m))), 0, 2)
+                             : 0;
+    const QLocale locale;
+    return PalpationView::tr("%1 ± %2 N/m")
+        .arg(locale.toString(k_n_per_m, 'f', decimals), locale.toString(standardError_n_per_m, 'f', decimals));
+}
+
+}  // namespace
+
+PalpationView::PalpationView(QWidget* parent)
+    : QWidget(parent),
+      m_lanes(new LivePlotWidget(this)),
+      m_probe(new QLabel(this)),
+      m_stiffness(new QLabel(this)),
+      m_status(new QLabel(this)),
+      m_tare(new QPushButton(tr("Tare (Ctrl+T)"), this)),
+      m_scale(new StiffnessScale(this)),
+      m_presses(new QTableWidget(0, 6, this)),
+      m_grid(new SiteGridMap(this))
+{
+    m_stiffness->setObjectName(QStringLiteral("stiffnessLabel"));
+    m_status->setObjectName(QStringLiteral("palpationStatus"));
+    m_presses->setObjectName(QStringLiteral("pressTable"));
+    m_tare->setObjectName(QStringLiteral("tareButton"));
+    m_probe->setObjectName(QStringLiteral("probeLabel"));
+
+    // Read from arm's length while the other hand holds the probe.
+    QFont big = m_stiffness->font();
+    big.setPointSizeF(big.pointSizeF() * 2.6);
+    big.setBold(true);
+    m_stiffness->setFont(big);
+    m_stiffness->setAlignment(Qt::AlignCenter);
+    m_stiffness->setMinimumWidth(m_stiffness->fontMetrics().horizontalAdvance(QStringLiteral("1,000 ± 100 N/m")));
+    m_status->setAlignment(Qt::AlignCenter);
+    m_status->setWordWrap(true);
+    m_probe->setWordWrap(true);
+    m_probe->setStyleSheet(QStringLiteral("color: palette(placeholder-text);"));
+    m_tare->setMinimumHeight(40);
+    m_tare->setToolTip(tr("Lift the probe, then tare: the next half second becomes the zero"));
+    m_scale->setTissues(builtInTissues());
+
+    m_presses->setHorizontalHeaderLabels(
+        {tr("Time (s)"), tr("k_o (N/m)"), tr("± SE"), tr("Depth (mm)"), tr("Slope"), tr("Site")});
+    m_presses->horizontalHeaderItem(4)->setToolTip(
+        tr("Change of k_o per mm pressed, in N/m per mm: near zero when the reading does not depend on the depth"));
+    m_presses->verticalHeader()->hide();
+    m_presses->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_presses->horizontalHeader()->setStretchLastSection(true);
+    m_presses->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_presses->setSelectionBehavior(QAbstractItemView::SelectRows);
+
+    auto* readout = new QVBoxLayout;
+    readout->addWidget(m_stiffness);
+    readout->addWidget(m_status);
+    readout->addWidget(m_tare);
+    readout->addWidget(m_scale, 1);
+    readout->addWidget(m_probe);
+    auto* presses = new QVBoxLayout;
+    presses->addWidget(m_presses, 1);
+    presses->addWidget(m_grid, 1);
+
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 6, 0);
+    layout->addWidget(m_lanes, 3);
+    layout->addLayout(readout, 3);
+    layout->addLayout(presses, 4);
+
+    connect(m_tare, &QPushButton::clicked, this, &PalpationView::tare);
+    startSubject();
+}
+
+void PalpationView::setPalpation(std::shared_ptr<core::compliance::LivePalpation> palpation, double sampleRate_hz,
+                                 const QString& probeName)
+{
+    m_palpation = std::move(palpation);
+    m_probe->setText(tr("Probe: %1").arg(probeName));
+    m_tare->setEnabled(m_palpation != nullptr);
+    if (!m_palpation) {
+        m_lanes->clearSource();
+        return;
+    }
+    const DisplayUnit force{1e3, tr("mN"), tr("Force")};
+    const DisplayUnit ratio{1.0, QString(), tr("Q")};
+    m_lanes->setSource(m_palpation->output(), core::compliance::LivePalpation::outputChannels(), sampleRate_hz,
+                       {force, force, ratio});
+    updateReadout();
+}
+
+void PalpationView::tare()
+{
+    if (m_palpation) m_palpation->tare();
+}
+
+void PalpationView::updateReadout()
+{
+    if (!m_palpation) return;
+    const auto state = m_palpation->state();
+    if (state.taring) {
+        m_status->setText(tr("Taking the zero: keep the probe lifted"));
+    } else if (state.pressing && state.current) {
+        m_stiffness->setText(stiffnessText(state.current->first, state.current->second));
+        m_stiffness->setStyleSheet(QString());
+        m_status->setText(tr("Pressing…"));
+    } else if (state.pressing) {
+        m_status->setText(tr("Pressing: out of the probe's range"));
+    } else {
+        m_stiffness->setStyleSheet(QStringLiteral("color: palette(mid);"));  // the last press, not a live value
+        m_status->setText(m_grid->isActive() ? tr("Press site %1").arg(m_grid->currentSite())
+                                             : tr("Ready: press the probe on the subject"));
+    }
+}
+
+std::vector<SiteReading> PalpationView::takeNewReadings()
+{
+    if (!m_palpation) return {};
+    std::vector<SiteReading> taken;
+    const QLocale locale;
+    for (const auto& press : m_palpation->takeReadings()) {
+        SiteReading reading{press, m_grid->currentSite()};
+        const bool inRange = press.stiffness.range == core::sensors::ComplianceRange::InRange;
+        const double k = press.stiffness.objectStiffness_n_per_m;
+        const int row = m_presses->rowCount();
+        m_presses->insertRow(row);
+        const QString outOfRange =
+            press.stiffness.range == core::sensors::ComplianceRange::Below ? tr("below range") : tr("above range");
+        const QStringList cells{locale.toString(press.start_s, 'f', 1),
+                                inRange ? locale.toString(k, 'f', 1) : outOfRange,
+                                inRange ? locale.toString(press.standardError_n_per_m, 'f', 1) : tr("—"),
+                                tr("%1–%2").arg(locale.toString(press.displacementMin_m * 1e3, 'f', 2),
+                                                locale.toString(press.displacementMax_m * 1e3, 'f', 2)),
+                                inRange ? locale.toString(press.displacementSlope_n_per_m_per_m * 1e-3, 'f', 2)
+                                        : tr("—"),
+                                reading.site.isEmpty() ? tr("—") : reading.site};
+        for (int c = 0; c < cells.size(); ++c) m_presses->setItem(row, c, new QTableWidgetItem(cells[c]));
+        if (inRange) {
+            m_stiffness->setText(stiffnessText(k, press.standardError_n_per_m));
+            m_scale->setReading(k);
+            if (m_grid->isActive()) m_grid->place(k, press.standardError_n_per_m);
+        } else {
+            m_stiffness->setText(outOfRange);
+            m_scale->setReading(std::nullopt);
+        }
+        taken.push_back(std::move(reading));
+    }
+    if (!taken.empty()) m_presses->scrollToBottom();
+    return taken;
+}
+
+void PalpationView::startSubject()
+{
+    m_presses->setRowCount(0);
+    m_stiffness->setText(tr("— N/m"));
+    m_scale->setReading(std::nullopt);
+}
+
+int PalpationView::readingCount() const
+{
+    return m_presses->rowCount();
+}
+
+}  // namespace tactiscope::ui
