@@ -30,15 +30,21 @@ std::vector<core::compliance::ReferenceTissue> builtInTissues()
     return core::compliance::parseReferenceTissues(file.readAll().toStdString(), "reference-tissues.json");
 }
 
-// The standard error to two significant digits, the value to the same place.
-QString stiffnessText(double k_n_per_m, double standardError_n_per_m)
+// A reading as the clinician reads it: the standard error to two
+// significant digits and the value to the same decimal place.
+std::pair<QString, QString> readingTexts(double k_n_per_m, double standardError_n_per_m)
 {
     const int decimals = standardError_n_per_m > 0.0
                              ? std::clamp(1 - static_cast<int>(std::floor(std::log10(standardError_n_per_m))), 0, 2)
                              : 0;
     const QLocale locale;
-    return PalpationView::tr("%1 ± %2 N/m")
-        .arg(locale.toString(k_n_per_m, 'f', decimals), locale.toString(standardError_n_per_m, 'f', decimals));
+    return {locale.toString(k_n_per_m, 'f', decimals), locale.toString(standardError_n_per_m, 'f', decimals)};
+}
+
+QString stiffnessText(double k_n_per_m, double standardError_n_per_m)
+{
+    const auto [k, se] = readingTexts(k_n_per_m, standardError_n_per_m);
+    return PalpationView::tr("%1 ± %2 N/m").arg(k, se);
 }
 
 }  // namespace
@@ -159,9 +165,10 @@ std::vector<SiteReading> PalpationView::takeNewReadings()
         m_presses->insertRow(row);
         const QString outOfRange =
             press.stiffness.range == core::sensors::ComplianceRange::Below ? tr("below range") : tr("above range");
+        const auto [kText, seText] = readingTexts(k, press.standardError_n_per_m);
         const QStringList cells{locale.toString(press.start_s, 'f', 1),
-                                inRange ? locale.toString(k, 'f', 1) : outOfRange,
-                                inRange ? locale.toString(press.standardError_n_per_m, 'f', 1) : tr("—"),
+                                inRange ? kText : outOfRange,
+                                inRange ? seText : tr("—"),
                                 tr("%1–%2").arg(locale.toString(press.displacementMin_m * 1e3, 'f', 2),
                                                 locale.toString(press.displacementMax_m * 1e3, 'f', 2)),
                                 inRange ? locale.toString(press.displacementSlope_n_per_m_per_m * 1e-3, 'f', 2)
