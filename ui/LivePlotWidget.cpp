@@ -6,6 +6,7 @@
 
 #include <qcustomplot.h>
 
+#include <QLabel>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -32,14 +33,26 @@ LivePlotWidget::LivePlotWidget(QWidget* parent)
 {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(6, 6, 6, 0);
-    layout->addWidget(m_plot);
+    layout->setSpacing(2);
+    auto* banner = new QLabel(tr("Paused: acquisition and recording go on. Drag or wheel the time axis to look back; "
+                                 "resume to follow the newest samples."),
+                              this);
+    banner->setObjectName(QStringLiteral("pausedBanner"));
+    banner->setWordWrap(true);
+    banner->setStyleSheet(QStringLiteral("QLabel { background: #fff3cd; color: #5c4400; padding: 4px 8px; "
+                                         "border-radius: 4px; }"));
+    banner->hide();
+    m_pausedBanner = banner;
+    layout->addWidget(banner);
+    layout->addWidget(m_plot, 1);
 
     m_laneMargins = new QCPMarginGroup(m_plot);
     m_plot->setPlottingHint(QCP::phFastPolylines, true);
     m_plot->setNoAntialiasingOnDrag(true);
     m_plot->legend->setVisible(true);
     m_plot->legend->setBrush(QColor(255, 255, 255, 220));
-    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+    // Top left: the newest samples arrive at the right and must stay visible.
+    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
     m_plot->xAxis->setLabel(tr("Time (s)"));
     m_plot->xAxis->setRange(0.0, m_window_s);
 
@@ -62,8 +75,8 @@ void LivePlotWidget::setSource(std::shared_ptr<const core::LiveBuffer> buffer,
     }
 
     m_buffer = std::move(buffer);
-    // Room for the longest window plus a frame's worth of slack.
-    const auto capacity = static_cast<std::size_t>(std::ceil(sampleRate_hz * (kMaxWindow_s + 1.0)));
+    // The longest window and then some, for scrolling back while paused.
+    const auto capacity = static_cast<std::size_t>(std::ceil(sampleRate_hz * kHistory_s));
     m_time = std::make_unique<core::RingBuffer<double>>(capacity);
     m_values.assign(channels.size(), core::RingBuffer<double>(capacity));
     buildPlotItems(channels, units);
@@ -110,6 +123,8 @@ void LivePlotWidget::buildPlotItems(const std::vector<core::ChannelDescriptor>& 
                 rect->axis(QCPAxis::atBottom)->setLabel(tr("Time (s)"));
             }
             rect->setMarginGroup(QCP::msLeft | QCP::msRight, m_laneMargins);
+            connect(rect->axis(QCPAxis::atBottom), qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
+                    &LivePlotWidget::syncTimeAxes, Qt::UniqueConnection);
             rect->axis(QCPAxis::atLeft)->setLabel(unit.axisTitle());
             m_lanes.push_back({rect});
         }
@@ -122,6 +137,17 @@ void LivePlotWidget::buildPlotItems(const std::vector<core::ChannelDescriptor>& 
         m_graphLane.push_back(lane);
         m_graphScale.push_back(unit.scale);
     }
+    // A lane of one trace is named by its axis title; the legend names the
+    // traces that share a lane, and is hidden when none do.
+    bool shared = false;
+    for (std::size_t c = 0; c < m_graphs.size(); ++c) {
+        if (std::count(m_graphLane.begin(), m_graphLane.end(), m_graphLane[c]) > 1)
+            shared = true;
+        else
+            m_graphs[c]->removeFromLegend();
+    }
+    m_plot->legend->setVisible(shared);
+    updateInteractions();
 }
 
 void LivePlotWidget::removePlotItems()
@@ -158,33 +184,108 @@ std::uint64_t LivePlotWidget::firstIndexAtOrAfter(double t_s) const
     return lo;
 }
 
+void LivePlotWidget::setPaused(bool paused)
+{
+    m_paused = paused;
+    m_pausedBanner->setVisible(paused);
+    m_viewChanged = true;
+    updateInteractions();
+}
+
+void LivePlotWidget::setScaleHeld(bool held)
+{
+    m_scaleHeld = held;
+    updateInteractions();
+}
+
+// Live, the time axis belongs to the stream; paused, to the user. A held
+// value axis is the user's too.
+void LivePlotWidget::updateInteractions()
+{
+    Qt::Orientations drag;
+    if (m_paused) drag |= Qt::Horizontal;
+    if (m_scaleHeld) drag |= Qt::Vertical;
+    m_plot->setInteractions(drag ? QCP::Interactions(QCP::iRangeDrag | QCP::iRangeZoom) : QCP::Interactions());
+    for (const Lane& lane : m_lanes) {
+        lane.rect->setRangeDrag(drag);
+        lane.rect->setRangeZoom(drag);
+    }
+}
+
+std::pair<double, double> LivePlotWidget::valueRange(std::size_t lane) const
+{
+    const QCPRange range = m_lanes.at(lane).rect->axis(QCPAxis::atLeft)->range();
+    return {range.lower, range.upper};
+}
+
+std::pair<double, double> LivePlotWidget::visibleTimeRange() const
+{
+    const QCPRange range = m_plot->xAxis->range();
+    return {range.lower, range.upper};
+}
+
+void LivePlotWidget::scrollTo(double start_s)
+{
+    if (!m_paused) return;
+    m_plot->xAxis->setRange(start_s, start_s + m_plot->xAxis->range().size());
+}
+
+// One lane's time axis moved (a drag, a zoom): every lane follows, and a
+// paused view is redrawn from the history at the next frame.
+void LivePlotWidget::syncTimeAxes(const QCPRange& range)
+{
+    if (m_drawing) return;
+    const QCPRange clamped(range.lower, range.lower + std::min(range.size(), kMaxWindow_s));
+    m_drawing = true;
+    for (const Lane& lane : m_lanes) lane.rect->axis(QCPAxis::atBottom)->setRange(clamped);
+    m_drawing = false;
+    m_viewChanged = true;
+}
+
 void LivePlotWidget::refresh()
 {
     if (!m_buffer) return;
-    if (m_buffer->readNew(m_cursor, m_chunk) == 0) {
+    // The history fills while paused too, so resuming shows no hole.
+    const bool arrived = m_buffer->readNew(m_cursor, m_chunk) > 0;
+    if (arrived) {
+        m_time->push(std::span<const double>(m_chunk.time_s));
+        for (std::size_t c = 0; c < m_values.size(); ++c) m_values[c].push(std::span<const double>(m_chunk.values[c]));
+    }
+    if (m_time->size() == 0 || (!arrived && !m_viewChanged) || (m_paused && !m_viewChanged)) {
         scheduleFrame();
         return;
     }
-    m_time->push(std::span<const double>(m_chunk.time_s));
-    for (std::size_t c = 0; c < m_values.size(); ++c) m_values[c].push(std::span<const double>(m_chunk.values[c]));
+    if (m_paused) {
+        const QCPRange range = m_plot->xAxis->range();
+        draw(range.lower, range.upper);
+    } else {
+        // Until a full window has arrived the traces grow from the left edge;
+        // after that the window scrolls with the newest sample at the right.
+        const double latest_s = m_time->at(m_time->endIndex() - 1);
+        const double start_s = std::max(latest_s - m_window_s, m_time->at(m_time->oldestIndex()));
+        draw(start_s, start_s + m_window_s);
+    }
+    m_viewChanged = false;
+    scheduleFrame();
+}
 
-    // Until a full window has arrived the traces grow from the left edge;
-    // after that the window scrolls with the newest sample at the right.
-    const double latest_s = m_time->at(m_time->endIndex() - 1);
-    const double start_s = std::max(latest_s - m_window_s, m_time->at(m_time->oldestIndex()));
-    const double end_s = start_s + m_window_s;
-    const std::uint64_t first = firstIndexAtOrAfter(start_s);
-    const auto count = static_cast<std::size_t>(m_time->endIndex() - first);
+void LivePlotWidget::draw(double start_s, double end_s)
+{
+    // The samples in view and one either side, so lines reach the edges.
+    std::uint64_t first = firstIndexAtOrAfter(start_s);
+    if (first > m_time->oldestIndex()) --first;
+    const std::uint64_t end = std::min(firstIndexAtOrAfter(end_s) + 1, m_time->endIndex());
+    const auto count = static_cast<std::size_t>(end > first ? end - first : 0);
     m_visibleTime.resize(count);
-    m_time->copy(first, m_visibleTime);
+    if (count > 0) m_time->copy(first, m_visibleTime);
 
     const int width_px = std::max(1, m_plot->axisRect()->width());
-    const double columnWidth_s = m_window_s / width_px;
+    const double columnWidth_s = std::max(end_s - start_s, 1e-9) / width_px;
     std::vector<double> laneMin(m_lanes.size(), std::numeric_limits<double>::infinity());
     std::vector<double> laneMax(m_lanes.size(), -std::numeric_limits<double>::infinity());
     for (std::size_t c = 0; c < m_graphs.size(); ++c) {
         m_visibleValues.resize(count);
-        m_values[c].copy(first, m_visibleValues);
+        if (count > 0) m_values[c].copy(first, m_visibleValues);
         core::signal::decimateMinMax(m_visibleTime, m_visibleValues, columnWidth_s, m_decimatedTime, m_decimatedValues);
         QVector<double> keys(m_decimatedTime.begin(), m_decimatedTime.end());
         QVector<double> values(static_cast<qsizetype>(m_decimatedValues.size()));
@@ -202,15 +303,18 @@ void LivePlotWidget::refresh()
         m_graphs[c]->setData(keys, values, true);
     }
 
+    m_drawing = true;
     for (std::size_t lane = 0; lane < m_lanes.size(); ++lane) {
         Lane& l = m_lanes[lane];
         l.rect->axis(QCPAxis::atBottom)->setRange(start_s, end_s);
-        if (!std::isfinite(laneMin[lane])) continue;
+        // About one tick label per 40 px, so low lanes stay legible.
+        l.rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(std::clamp(l.rect->height() / 40, 2, 6));
+        if (m_scaleHeld || !std::isfinite(laneMin[lane])) continue;
         l.range = nextAxisRange(l.range, laneMin[lane], laneMax[lane]);
         l.rect->axis(QCPAxis::atLeft)->setRange(l.range.lower, l.range.upper);
     }
+    m_drawing = false;
     m_plot->replot();
-    scheduleFrame();
 }
 
 }  // namespace tactiscope::ui

@@ -1,9 +1,14 @@
 // LivePlotWidget shows the newest seconds of every channel of one device as
 // scrolling traces. It pulls new samples from a LiveBuffer on a frame timer
 // (about 40 Hz, re-armed only after a frame is built so frames never pile up),
-// keeps its own copy of the visible window, reduces it to min/max per pixel
-// column and replots only when new data arrived. Channels with the same
-// display unit share a lane; each unit gets its own lane, stacked vertically.
+// keeps its own history of the last kHistory_s, reduces the visible part to
+// min/max per pixel column and replots only when something changed.
+// Channels with the same display unit share a lane; each unit gets its own
+// lane, stacked vertically.
+//
+// Paused, the view stops scrolling while samples keep arriving into the
+// history; the user drags (and wheel-zooms) the time axis back through it.
+// With the scale held, the value axes stop autoscaling and can be dragged.
 //
 // GUI thread only. QCustomPlot stays out of this header on purpose: its
 // header is expensive to compile.
@@ -26,6 +31,7 @@ class QCustomPlot;
 class QCPGraph;
 class QCPAxisRect;
 class QCPMarginGroup;
+class QCPRange;
 
 namespace tactiscope::ui {
 
@@ -35,6 +41,7 @@ class LivePlotWidget : public QWidget {
 public:
     static constexpr double kDefaultWindow_s = 10.0;
     static constexpr double kMaxWindow_s = 60.0;
+    static constexpr double kHistory_s = 180.0;  // how far back a paused view can scroll
 
     explicit LivePlotWidget(QWidget* parent = nullptr);
     ~LivePlotWidget() override;
@@ -51,6 +58,18 @@ public:
     // Length of the scrolling time window, clamped to (0, kMaxWindow_s].
     void setWindowLength(double seconds);
     double windowLength_s() const { return m_window_s; }
+
+    void setPaused(bool paused);
+    bool isPaused() const { return m_paused; }
+    // Holds every lane's value range (no autoscaling) while set.
+    void setScaleHeld(bool held);
+    bool isScaleHeld() const { return m_scaleHeld; }
+    // The time range shown, in the stream's seconds.
+    std::pair<double, double> visibleTimeRange() const;
+    // A lane's value-axis range, in display units.
+    std::pair<double, double> valueRange(std::size_t lane) const;
+    // Shows another time range (paused only), as a drag would.
+    void scrollTo(double start_s);
 
     // Number of stacked lanes (one per distinct display unit).
     std::size_t laneCount() const { return m_lanes.size(); }
@@ -71,12 +90,20 @@ private:
     void refresh();
     void buildPlotItems(const std::vector<core::ChannelDescriptor>& channels, const std::vector<DisplayUnit>& units);
     void removePlotItems();
+    void updateInteractions();
+    void draw(double start_s, double end_s);
+    void syncTimeAxes(const QCPRange& range);
     std::uint64_t firstIndexAtOrAfter(double t_s) const;
 
     QCustomPlot* m_plot = nullptr;
     QCPMarginGroup* m_laneMargins = nullptr;  // keeps lanes' axes aligned
     QTimer m_frameTimer;
     double m_window_s = kDefaultWindow_s;
+    bool m_paused = false;
+    bool m_scaleHeld = false;
+    bool m_viewChanged = false;  // paused: the user moved the view since the last frame
+    bool m_drawing = false;      // draw() is setting the axes itself
+    QWidget* m_pausedBanner = nullptr;
 
     std::shared_ptr<const core::LiveBuffer> m_buffer;
     core::LiveCursor m_cursor;

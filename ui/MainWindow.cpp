@@ -3,6 +3,7 @@
 
 #include "core/LiveBuffer.h"
 #include "core/Version.h"
+#include "core/capacitive/LiveCapacitive.h"
 #include "core/compliance/LivePalpation.h"
 #include "core/detector/LiveDetection.h"
 #include "core/storage/Recorder.h"
@@ -12,6 +13,7 @@
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
 #include "ui/ActiveProfiles.h"
+#include "ui/CapacitiveView.h"
 #include "ui/DevicePanel.h"
 #include "ui/LivePlotWidget.h"
 #include "ui/PalpationView.h"
@@ -109,6 +111,7 @@ MainWindow::MainWindow(QWidget* parent)
       m_plot(new LivePlotWidget(this)),
       m_panelScan(new PanelScanView(this)),
       m_palpationView(new PalpationView(this)),
+      m_capacitiveView(new CapacitiveView(this)),
       m_devicePanel(new DevicePanel(this))
 {
     setWindowTitle(tr("Tactiscope"));
@@ -122,6 +125,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_modeViews->setObjectName(QStringLiteral("modeViews"));
     m_modeViews->addWidget(m_panelScan);
     m_modeViews->addWidget(m_palpationView);
+    m_modeViews->addWidget(m_capacitiveView);
     centre->addWidget(m_modeViews);
     centre->setStretchFactor(0, 3);
     centre->setStretchFactor(1, 2);
@@ -184,6 +188,7 @@ void MainWindow::showModeView()
     QWidget* view = nullptr;
     if (m_detection && mode == "panel-scan") view = m_panelScan;
     if (m_palpation && mode == "palpation") view = m_palpationView;
+    if (m_capacitive && mode == "capacitive") view = m_capacitiveView;
     if (view) m_modeViews->setCurrentWidget(view);
     m_modeViews->setVisible(view != nullptr);
 }
@@ -228,6 +233,30 @@ void MainWindow::createMenus()
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_deviceDock->toggleViewAction());
+    view->addSeparator();
+    // Pause and hold act on every plot together, so traces and lanes stay aligned.
+    QAction* pause = view->addAction(tr("&Pause display"));
+    pause->setObjectName(QStringLiteral("pauseAction"));
+    pause->setCheckable(true);
+    pause->setShortcut(QKeySequence(tr("Ctrl+Space")));
+    pause->setToolTip(tr("Freeze the plots to look back; acquisition and recording go on (Ctrl+Space)"));
+    connect(pause, &QAction::toggled, this, [this](bool paused) {
+        for (LivePlotWidget* plot : allPlots()) plot->setPaused(paused);
+    });
+    QAction* hold = view->addAction(tr("&Hold value scale"));
+    hold->setObjectName(QStringLiteral("holdScaleAction"));
+    hold->setCheckable(true);
+    hold->setShortcut(QKeySequence(tr("Ctrl+H")));
+    hold->setToolTip(tr("Stop autoscaling the value axes; drag them to adjust (Ctrl+H)"));
+    connect(hold, &QAction::toggled, this, [this](bool held) {
+        for (LivePlotWidget* plot : allPlots()) plot->setScaleHeld(held);
+    });
+    QToolBar* display = addToolBar(tr("Display"));
+    display->setObjectName(QStringLiteral("displayToolBar"));
+    display->setMovable(false);
+    display->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    display->addAction(pause);
+    display->addAction(hold);
     QMenu* window = view->addMenu(tr("Time &window"));
     // One window for the traces and the mode's lanes, so they line up in time.
     auto* windows = new QActionGroup(this);
@@ -237,14 +266,17 @@ void MainWindow::createMenus()
         action->setChecked(seconds == LivePlotWidget::kDefaultWindow_s);
         windows->addAction(action);
         connect(action, &QAction::triggered, this, [this, seconds] {
-            m_plot->setWindowLength(seconds);
-            m_panelScan->lanes()->setWindowLength(seconds);
-            m_palpationView->lanes()->setWindowLength(seconds);
+            for (LivePlotWidget* plot : allPlots()) plot->setWindowLength(seconds);
         });
     }
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About Tactiscope"), this, &MainWindow::showAbout);
+}
+
+std::vector<LivePlotWidget*> MainWindow::allPlots() const
+{
+    return {m_plot, m_panelScan->lanes(), m_palpationView->lanes(), m_capacitiveView->lanes()};
 }
 
 void MainWindow::createStatusBar()
@@ -298,6 +330,8 @@ bool MainWindow::startRecording()
     metadata.deviceModel = source.name();
     if (const auto profile = m_modeProfiles.find(metadata.mode); profile != m_modeProfiles.end())
         metadata.profileJson = profile->second;
+    const bool calibrated = m_capacitiveCalibration && metadata.mode == "capacitive";
+    if (calibrated) metadata.calibrationsJson = "[" + m_capacitiveCalibration->record.toJson() + "]";
     QDir().mkpath(QFileInfo(m_storePath).absolutePath());
     const double rate_hz = source.nominalSampleRate_hz();
     try {
@@ -308,6 +342,7 @@ bool MainWindow::startRecording()
         showProblem(tr("Cannot record"), tr("Recording could not start."), QString::fromStdString(e.what()));
         return false;
     }
+    if (calibrated) linkCalibration(m_recorder->sessionId(), m_capacitiveCalibration->id);
     m_tap->attach(m_recorder);
     m_panelScan->startPanel();
     m_palpationView->startSubject();
@@ -409,6 +444,74 @@ void MainWindow::attachPalpation(const std::vector<core::ChannelDescriptor>& cha
     m_palpationView->setPalpation(m_palpation, rate_hz, QString::fromStdString(probe.name));
 }
 
+// The capacitive readout runs whenever the probe has a capacitance channel,
+// with the capacitive mode's profile and the newest calibration of that
+// sensor in the session store (else the beam model).
+void MainWindow::attachCapacitive(const std::vector<core::ChannelDescriptor>& channels, double rate_hz)
+{
+    const ActiveProfile active = activeProfile(QStringLiteral("capacitive"));
+    if (!active.error.isEmpty())
+        showProblem(tr("Bad profile"),
+                    tr("The capacitive profile could not be used; the paper's sensor No. 1 is used instead."),
+                    active.error);
+    const auto& probe = std::get<core::sensors::CapacitiveBeamProfile>(active.profile);
+    m_modeProfiles["capacitive"] = core::sensors::toJson(active.profile);
+    const core::sensors::CapacitiveBeam beam(probe.geometry);
+    auto sensitivity = core::capacitive::CapacitiveSensitivity::fromModel(beam);
+    core::capacitive::DriftSettings drift;
+    QString source = tr("none — the beam model (uncalibrated); drift tracking off");
+    m_capacitiveCalibration = newestCalibration("capacitive", probe.name);
+    if (m_capacitiveCalibration) {
+        const auto& record = m_capacitiveCalibration->record;
+        try {
+            const auto stored = core::capacitive::capacitiveCalibrationOf(record, beam);
+            sensitivity = stored.sensitivity;
+            drift.noiseSigma_f = stored.noiseSigma_f;
+            source = tr("%1 by %2")
+                         .arg(QString::fromStdString(record.timestampUtc), QString::fromStdString(record.operatorName));
+        } catch (const std::invalid_argument& e) {
+            showProblem(tr("Bad calibration"), tr("The newest capacitive calibration cannot be used."),
+                        QString::fromStdString(e.what()));
+            m_capacitiveCalibration.reset();
+        }
+    }
+    try {
+        m_capacitive = std::make_shared<core::capacitive::LiveCapacitive>(channels, rate_hz, sensitivity, drift,
+                                                                          LivePlotWidget::kMaxWindow_s + 2.0);
+    } catch (const std::invalid_argument&) {
+        m_capacitive.reset();  // no capacitance channel
+    }
+    if (m_capacitive) m_acquisition->addSink(m_capacitive);
+    m_capacitiveView->setCapacitive(m_capacitive, rate_hz, QString::fromStdString(probe.name), source);
+}
+
+// The newest calibration of a kind for a sensor, from the session store;
+// none when the store does not exist yet or cannot be read.
+std::optional<core::storage::StoredCalibration> MainWindow::newestCalibration(const std::string& kind,
+                                                                              const std::string& sensor) const
+{
+    if (!QFileInfo::exists(m_storePath)) return std::nullopt;
+    try {
+        core::storage::SessionStore store(m_storePath.toStdString(), core::storage::Database::Access::ReadOnly);
+        auto all = store.calibrations(sensor);
+        for (auto it = all.rbegin(); it != all.rend(); ++it)
+            if (it->record.kind == kind) return std::move(*it);
+    } catch (const core::storage::StorageError& e) {
+        qWarning("calibrations not read: %s", e.what());
+    }
+    return std::nullopt;
+}
+
+void MainWindow::linkCalibration(std::int64_t session, std::int64_t calibration)
+{
+    try {
+        core::storage::SessionStore(m_storePath.toStdString()).linkCalibration(session, calibration);
+    } catch (const core::storage::StorageError& e) {
+        showProblem(tr("Calibration not linked"), tr("The session's calibration could not be noted in the store."),
+                    QString::fromStdString(e.what()));
+    }
+}
+
 void MainWindow::takePalpationReadings()
 {
     const auto readings = m_palpationView->takeNewReadings();
@@ -436,6 +539,9 @@ void MainWindow::tare()
     if (m_palpationView->isVisible()) {
         m_palpationView->tare();
         statusBar()->showMessage(tr("Tare: keep the probe lifted for half a second"), 4000);
+    } else if (m_capacitiveView->isVisible()) {
+        m_capacitiveView->tare();
+        statusBar()->showMessage(tr("Tare: the baseline C0 is re-taken"), 4000);
     } else {
         statusBar()->showMessage(tr("Nothing to tare in this mode"), 4000);
     }
@@ -590,6 +696,7 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
     }
     m_panelScan->setDetection(m_detection, rate_hz);
     attachPalpation(channels, rate_hz);
+    attachCapacitive(channels, rate_hz);
     showModeView();
     m_plot->setSource(buffer, channels, rate_hz);
     m_acquisition->start();
@@ -615,8 +722,11 @@ void MainWindow::disconnectSource()
     m_tap.reset();
     m_detection.reset();
     m_palpation.reset();
+    m_capacitive.reset();
+    m_capacitiveCalibration.reset();
     m_panelScan->setDetection(nullptr, 0.0);
     m_palpationView->setPalpation(nullptr, 0.0, QString());
+    m_capacitiveView->setCapacitive(nullptr, 0.0, QString(), QString());
     showModeView();
     setWindowTitle(tr("Tactiscope"));
     m_deviceLabel->setText(tr("No device"));
@@ -639,6 +749,7 @@ void MainWindow::updateStatus()
     takeDetectorEvents();
     takePalpationReadings();
     m_palpationView->updateReadout();
+    m_capacitiveView->updateReadouts();
     updateRecording();
 }
 

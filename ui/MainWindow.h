@@ -9,6 +9,7 @@
 // the GUI never waits on the device.
 #pragma once
 
+#include "core/storage/SessionStore.h"
 #include "devices/BlockSource.h"
 #include "devices/ReconnectingSource.h"
 
@@ -40,9 +41,13 @@ class LiveDetection;
 namespace tactiscope::core::compliance {
 class LivePalpation;
 }  // namespace tactiscope::core::compliance
+namespace tactiscope::core::capacitive {
+class LiveCapacitive;
+}  // namespace tactiscope::core::capacitive
 
 namespace tactiscope::ui {
 
+class CapacitiveView;
 class DevicePanel;
 class LivePlotWidget;
 class PalpationView;
@@ -70,6 +75,7 @@ public:
     LivePlotWidget* livePlot() const { return m_plot; }
     PanelScanView* panelScanView() const { return m_panelScan; }
     PalpationView* palpationView() const { return m_palpationView; }
+    CapacitiveView* capacitiveView() const { return m_capacitiveView; }
     DevicePanel* devicePanel() const { return m_devicePanel; }
 
     // Recording: into the session store at storePath() (remembered across
@@ -93,6 +99,8 @@ private:
     void connectRequest(const SourceRequest& request);
     void finishConnecting(std::uint64_t attempt, std::unique_ptr<devices::BlockSource> source, const QString& error);
     void createStatusBar();
+    // The traces and every mode view's lanes.
+    std::vector<LivePlotWidget*> allPlots() const;
     void updateStatus();
     void showAbout();
     void chooseStore();
@@ -105,6 +113,10 @@ private:
     void takeDetectorEvents();
     void attachPalpation(const std::vector<core::ChannelDescriptor>& channels, double rate_hz);
     void takePalpationReadings();
+    void attachCapacitive(const std::vector<core::ChannelDescriptor>& channels, double rate_hz);
+    std::optional<core::storage::StoredCalibration> newestCalibration(const std::string& kind,
+                                                                      const std::string& sensor) const;
+    void linkCalibration(std::int64_t session, std::int64_t calibration);
     void tare();  // the visible mode's zero
     void askVerdict(std::int64_t session, int defects, const QString& verdict);
     void saveSettings() const;
@@ -113,6 +125,7 @@ private:
     SessionBar* m_sessionBar = nullptr;
     PanelScanView* m_panelScan = nullptr;
     PalpationView* m_palpationView = nullptr;
+    CapacitiveView* m_capacitiveView = nullptr;
     QStackedWidget* m_modeViews = nullptr;  // the mode's view under the traces
     DevicePanel* m_devicePanel = nullptr;
     QDockWidget* m_deviceDock = nullptr;
@@ -121,10 +134,12 @@ private:
     QLabel* m_linkLabel = nullptr;  // state, rate and losses in one line
     QTimer m_statusTimer;
     std::unique_ptr<devices::Acquisition> m_acquisition;
-    std::shared_ptr<core::storage::RecordingTap> m_tap;            // on every acquisition
-    std::shared_ptr<core::detector::LiveDetection> m_detection;    // when the probe has two strain channels
-    std::shared_ptr<core::compliance::LivePalpation> m_palpation;  // when it is a compliance probe
-    std::shared_ptr<core::storage::Recorder> m_recorder;           // while recording
+    std::shared_ptr<core::storage::RecordingTap> m_tap;                       // on every acquisition
+    std::shared_ptr<core::detector::LiveDetection> m_detection;               // when the probe has two strain channels
+    std::shared_ptr<core::compliance::LivePalpation> m_palpation;             // when it is a compliance probe
+    std::shared_ptr<core::capacitive::LiveCapacitive> m_capacitive;           // when it has a capacitance channel
+    std::optional<core::storage::StoredCalibration> m_capacitiveCalibration;  // what m_capacitive uses
+    std::shared_ptr<core::storage::Recorder> m_recorder;                      // while recording
     QString m_storePath;
     std::map<std::string, std::string> m_modeProfiles;  // mode → JSON of the profile its view uses
     std::optional<QString> m_connectingLabel;

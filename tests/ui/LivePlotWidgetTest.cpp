@@ -1,5 +1,6 @@
 // LivePlotWidget on real widgets (offscreen): decimation to the screen,
-// one lane per unit, and the display's own overrun accounting.
+// one lane per unit, the display's own overrun accounting, pause with
+// scroll-back while samples keep coming, and a held value scale.
 #include "ui/LivePlotWidget.h"
 
 #include "core/SampleBlock.h"
@@ -17,13 +18,14 @@ using tactiscope::testing::waitFor;
 
 namespace {
 
-// `seconds` of a 1 Hz strain sine (±20 µε) and a slowly rising capacitance
-// around 50 pF, at 500 Hz, appended to `buffer` in 10-sample blocks.
-void fill(core::LiveBuffer& buffer, double seconds)
+// A 1 Hz strain sine (±20 µε) and a slowly rising capacitance around
+// 50 pF, at 500 Hz, from `from_s` to `to_s`, appended to `buffer` in
+// 10-sample blocks.
+void fill(core::LiveBuffer& buffer, double from_s, double to_s)
 {
     const double dt = 0.002;
-    const auto total = static_cast<std::uint64_t>(seconds / dt);
-    for (std::uint64_t first = 0; first < total; first += 10) {
+    const auto total = static_cast<std::uint64_t>(std::llround(to_s / dt));
+    for (auto first = static_cast<std::uint64_t>(std::llround(from_s / dt)); first < total; first += 10) {
         core::SampleBlock block(2, 10, static_cast<double>(first) * dt, dt, first);
         for (std::size_t i = 0; i < 10; ++i) {
             const double t = block.timeAt_s(i);
@@ -42,7 +44,7 @@ const std::vector<core::ChannelDescriptor> kChannels{{"gauge", "", core::Channel
 TEST(LivePlotWidget, DrawsAtMostTwoPointsPerPixelColumnInOneLanePerUnit)
 {
     auto buffer = std::make_shared<core::LiveBuffer>(2, 20000);
-    fill(*buffer, 20.0);  // 10 000 samples; the 10 s window holds 5 000
+    fill(*buffer, 0.0, 20.0);  // 10 000 samples; the 10 s window holds 5 000
     ui::LivePlotWidget plot;
     plot.resize(900, 600);
     plot.show();
@@ -62,7 +64,7 @@ TEST(LivePlotWidget, DrawsAtMostTwoPointsPerPixelColumnInOneLanePerUnit)
 TEST(LivePlotWidget, CountsSamplesItMissedWhenTheBufferOverran)
 {
     auto buffer = std::make_shared<core::LiveBuffer>(2, 100);
-    fill(*buffer, 2.0);  // 1000 samples into a 100-sample buffer
+    fill(*buffer, 0.0, 2.0);  // 1000 samples into a 100-sample buffer
     ui::LivePlotWidget plot;
     plot.show();
     plot.setSource(buffer, kChannels, 500.0);
@@ -74,7 +76,7 @@ TEST(LivePlotWidget, CountsSamplesItMissedWhenTheBufferOverran)
 TEST(LivePlotWidget, ClearingTheSourceRemovesTheTraces)
 {
     auto buffer = std::make_shared<core::LiveBuffer>(2, 2000);
-    fill(*buffer, 1.0);
+    fill(*buffer, 0.0, 1.0);
     ui::LivePlotWidget plot;
     plot.show();
     plot.setSource(buffer, kChannels, 500.0);
@@ -83,4 +85,55 @@ TEST(LivePlotWidget, ClearingTheSourceRemovesTheTraces)
     EXPECT_EQ(plot.drawnPointCount(0), 0);
     EXPECT_EQ(plot.laneCount(), 0u);
     EXPECT_EQ(plot.samplesReceived(), 0u);
+}
+
+TEST(LivePlotWidget, PausedItKeepsTakingSamplesAndScrollsBackThroughThem)
+{
+    auto buffer = std::make_shared<core::LiveBuffer>(2, 20000);
+    fill(*buffer, 0.0, 20.0);
+    ui::LivePlotWidget plot;
+    plot.resize(900, 600);
+    plot.show();
+    plot.setSource(buffer, kChannels, 500.0);
+    ASSERT_TRUE(waitFor([&] { return plot.samplesReceived() == 10000u && plot.drawnPointCount(0) > 0; }, 2000));
+    const auto live = plot.visibleTimeRange();
+    EXPECT_NEAR(live.second, 19.998, 1e-9);  // the newest sample at the right edge
+    EXPECT_NEAR(live.second - live.first, 10.0, 1e-9);
+
+    plot.setPaused(true);
+    fill(*buffer, 20.0, 30.0);
+    ASSERT_TRUE(waitFor([&] { return plot.samplesReceived() == 15000u; }, 2000));
+    tactiscope::testing::runEventLoopFor(100);
+    EXPECT_EQ(plot.visibleTimeRange(), live);  // frozen while samples arrive
+
+    plot.scrollTo(2.0);  // back before the pause
+    ASSERT_TRUE(waitFor([&] { return plot.visibleTimeRange().first == 2.0; }, 1000));
+    tactiscope::testing::runEventLoopFor(100);
+    EXPECT_GT(plot.drawnPointCount(0), 100);
+    EXPECT_FALSE(saveScreenshot(plot, QStringLiteral("live-plot-paused")).isEmpty());
+
+    plot.setPaused(false);  // back to the newest samples, including those taken while paused
+    EXPECT_TRUE(waitFor([&] { return std::abs(plot.visibleTimeRange().second - 29.998) < 1e-9; }, 1000));
+    EXPECT_EQ(plot.samplesOverrun(), 0u);
+}
+
+TEST(LivePlotWidget, AHeldScaleStopsAutoscaling)
+{
+    auto buffer = std::make_shared<core::LiveBuffer>(2, 20000);
+    fill(*buffer, 0.0, 10.0);
+    ui::LivePlotWidget plot;
+    plot.show();
+    plot.setSource(buffer, kChannels, 500.0);
+    ASSERT_TRUE(waitFor([&] { return plot.samplesReceived() == 5000u; }, 2000));
+    tactiscope::testing::runEventLoopFor(100);
+    plot.setScaleHeld(true);
+    const auto held = plot.valueRange(1);  // the capacitance, rising 0.1 pF/s
+    fill(*buffer, 10.0, 40.0);
+    ASSERT_TRUE(waitFor([&] { return plot.samplesReceived() == 20000u; }, 2000));
+    tactiscope::testing::runEventLoopFor(100);
+    EXPECT_EQ(plot.valueRange(1), held);
+
+    plot.setScaleHeld(false);
+    fill(*buffer, 40.0, 40.1);
+    EXPECT_TRUE(waitFor([&] { return plot.valueRange(1).second > held.second + 2.0; }, 1000));
 }

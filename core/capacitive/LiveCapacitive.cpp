@@ -1,0 +1,80 @@
+// LiveCapacitive: the readout per sample, the start tare and the display block.
+#include "core/capacitive/LiveCapacitive.h"
+
+#include "core/SampleBlock.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace tactiscope::core::capacitive {
+namespace {
+
+std::size_t capacitanceChannel(const std::vector<ChannelDescriptor>& channels)
+{
+    for (std::size_t c = 0; c < channels.size(); ++c)
+        if (channels[c].kind == ChannelKind::Capacitance) return c;
+    throw std::invalid_argument("the capacitive readout needs a capacitance channel");
+}
+
+}  // namespace
+
+StoredCapacitiveCalibration capacitiveCalibrationOf(const calibration::CalibrationRecord& record,
+                                                    const sensors::CapacitiveBeam& beam)
+{
+    const auto c0 = record.value("c0_pf");
+    const auto perMilliNewton = record.value("sensitivity_pf_per_mn");
+    const auto perMillimetre = record.value("displacement_sensitivity_pf_per_mm");
+    if (record.kind != "capacitive" || !c0 || (!perMilliNewton && !perMillimetre))
+        throw std::invalid_argument("not a capacitive calibration with C0 and a sensitivity");
+    // pF per mN = 1e-12 F / 1e-3 N: ×1e-9 to F/N; likewise pF per mm to F/m.
+    const double k = beam.stiffness_n_per_m();
+    CapacitiveSensitivity s{*c0 * 1e-12, 0.0, 0.0};
+    s.perNewton_f = perMilliNewton ? *perMilliNewton * 1e-9 : *perMillimetre * 1e-9 / k;
+    s.perMetre_f = perMillimetre ? *perMillimetre * 1e-9 : *perMilliNewton * 1e-9 * k;
+    return {s, record.value("baseline_sigma_pf").value_or(0.0) * 1e-12};
+}
+
+LiveCapacitive::LiveCapacitive(const std::vector<ChannelDescriptor>& channels, double sampleRate_hz,
+                               const CapacitiveSensitivity& sensitivity, const DriftSettings& drift,
+                               double displaySeconds)
+    : m_channel(capacitanceChannel(channels)),
+      m_output(std::make_shared<LiveBuffer>(outputChannels().size(),
+                                            static_cast<std::size_t>(std::ceil(displaySeconds * sampleRate_hz)) + 1)),
+      m_readout(sensitivity, drift)
+{
+}
+
+std::vector<ChannelDescriptor> LiveCapacitive::outputChannels()
+{
+    return {{"F", "N", ChannelKind::Force}, {"w", "m", ChannelKind::Position}};
+}
+
+void LiveCapacitive::consume(const SampleBlock& block)
+{
+    if (block.empty()) return;
+    if (m_tareRequested.exchange(false)) m_readout.tare();
+    if (!m_firstTime_s) m_firstTime_s = block.t0_s();
+    SampleBlock display(2, block.sampleCount(), block.t0_s(), block.dt_s(), block.firstSampleIndex(), block.sequence());
+    CapacitiveReading reading;
+    for (std::size_t s = 0; s < block.sampleCount(); ++s) {
+        const double t_s = block.timeAt_s(s);
+        if (!m_startTared && t_s - *m_firstTime_s >= kStartTare_s) {
+            m_readout.tare();
+            m_startTared = true;
+        }
+        reading = m_readout.push(t_s, block.value(m_channel, s));
+        display.channel(0)[s] = reading.force_n;
+        display.channel(1)[s] = reading.displacement_m;
+    }
+    m_output->consume(display);
+    const std::lock_guard lock(m_mutex);
+    m_latest = reading;
+}
+
+std::optional<CapacitiveReading> LiveCapacitive::latest() const
+{
+    const std::lock_guard lock(m_mutex);
+    return m_latest;
+}
+
+}  // namespace tactiscope::core::capacitive

@@ -1,0 +1,76 @@
+// The capacitive beam on a live stream (seed 002): a sink on the acquisition
+// thread that runs a CapacitiveReadout over the first capacitance channel,
+// puts the force and the tip displacement into a LiveBuffer for the lanes
+// (C itself is among the device's traces), and keeps the newest reading (C, C0, ΔC, ΔC/C0, F, w) for the large
+// readouts.
+//
+// Zero: the beam is unloaded when a stream starts, so the baseline C0 is
+// re-taken once kStartTare_s into the stream (the calibration's C0 is from
+// another day; the baseline drifts). tare() re-baselines at the next block,
+// from the readout's 0.5 s running mean.
+#pragma once
+
+#include "core/BlockSink.h"
+#include "core/ChannelDescriptor.h"
+#include "core/LiveBuffer.h"
+#include "core/calibration/CalibrationRecord.h"
+#include "core/capacitive/CapacitiveReadout.h"
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+namespace tactiscope::core::capacitive {
+
+// What a stored "capacitive" calibration record holds for the readout.
+struct StoredCapacitiveCalibration {
+    CapacitiveSensitivity sensitivity;
+    double noiseSigma_f = 0.0;  // the baseline noise, for drift tracking
+};
+
+// From the record's values (c0_pf, baseline_sigma_pf, sensitivity_pf_per_mn
+// and/or displacement_sensitivity_pf_per_mm); the one of the two
+// sensitivities not calibrated comes from the other through the beam's k_s.
+// Throws std::invalid_argument when the record lacks them.
+StoredCapacitiveCalibration capacitiveCalibrationOf(const calibration::CalibrationRecord& record,
+                                                    const sensors::CapacitiveBeam& beam);
+
+class LiveCapacitive final : public BlockSink {
+public:
+    static constexpr double kStartTare_s = 0.5;
+
+    // Throws std::invalid_argument without a capacitance channel or for
+    // non-positive sensitivities.
+    LiveCapacitive(const std::vector<ChannelDescriptor>& channels, double sampleRate_hz,
+                   const CapacitiveSensitivity& sensitivity, const DriftSettings& drift, double displaySeconds);
+
+    // The channels of output(): force in N, tip displacement in m.
+    static std::vector<ChannelDescriptor> outputChannels();
+
+    // Any thread: re-baseline C0 at the next block.
+    void tare() { m_tareRequested = true; }
+
+    // Acquisition thread.
+    void consume(const SampleBlock& block) override;
+
+    std::shared_ptr<const LiveBuffer> output() const { return m_output; }
+    // The newest reading; none before the first sample.
+    std::optional<CapacitiveReading> latest() const;
+
+private:
+    std::size_t m_channel = 0;
+    std::shared_ptr<LiveBuffer> m_output;
+    std::atomic<bool> m_tareRequested = false;
+
+    mutable std::mutex m_mutex;  // guards m_latest
+    std::optional<CapacitiveReading> m_latest;
+
+    // Acquisition thread only.
+    CapacitiveReadout m_readout;
+    std::optional<double> m_firstTime_s;
+    bool m_startTared = false;
+};
+
+}  // namespace tactiscope::core::capacitive

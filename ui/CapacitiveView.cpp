@@ -1,0 +1,114 @@
+// CapacitiveView: lanes, large readouts, baseline and calibration lines.
+#include "ui/CapacitiveView.h"
+
+#include "ui/LivePlotWidget.h"
+
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace tactiscope::ui {
+
+CapacitiveView::CapacitiveView(QWidget* parent)
+    : QWidget(parent),
+      m_lanes(new LivePlotWidget(this)),
+      m_readoutPanel(new QWidget(this)),
+      m_baseline(new QLabel(this)),
+      m_calibration(new QLabel(this)),
+      m_tare(new QPushButton(tr("Tare C0 (Ctrl+T)"), this))
+{
+    auto* grid = new QGridLayout(m_readoutPanel);
+    grid->setContentsMargins(0, 0, 0, 0);
+    grid->setHorizontalSpacing(24);
+    m_capacitance = addReadout(tr("Capacitance"), "capacitanceReadout");
+    m_deltaC = addReadout(tr("ΔC"), "deltaCReadout");
+    m_relative = addReadout(tr("ΔC/C0"), "relativeReadout");
+    m_force = addReadout(tr("Force"), "forceReadout");
+    m_displacement = addReadout(tr("Tip deflection"), "displacementReadout");
+    m_baseline->setObjectName(QStringLiteral("baselineLabel"));
+    m_calibration->setObjectName(QStringLiteral("calibrationLabel"));
+    m_tare->setObjectName(QStringLiteral("tareButton"));
+    m_tare->setMinimumHeight(40);
+    m_tare->setToolTip(tr("With the beam unloaded: the last half second's mean becomes the baseline C0"));
+    m_calibration->setWordWrap(true);
+    m_calibration->setStyleSheet(QStringLiteral("color: palette(placeholder-text);"));
+
+    auto* side = new QVBoxLayout;
+    side->addWidget(m_readoutPanel);
+    side->addStretch(1);
+    auto* baselineRow = new QHBoxLayout;
+    baselineRow->addWidget(m_baseline, 1);
+    baselineRow->addWidget(m_tare);
+    side->addLayout(baselineRow);
+    side->addWidget(m_calibration);
+
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 6, 0);
+    layout->addWidget(m_lanes, 3);
+    layout->addLayout(side, 2);
+    connect(m_tare, &QPushButton::clicked, this, &CapacitiveView::tare);
+}
+
+QLabel* CapacitiveView::addReadout(const QString& caption, const char* objectName)
+{
+    auto* grid = static_cast<QGridLayout*>(m_readoutPanel->layout());
+    const int index = grid->count() / 2;
+    auto* title = new QLabel(caption, m_readoutPanel);
+    title->setStyleSheet(QStringLiteral("color: palette(mid); font-weight: 600;"));
+    auto* value = new QLabel(QStringLiteral("—"), m_readoutPanel);
+    value->setObjectName(QString::fromLatin1(objectName));
+    QFont big = value->font();
+    big.setPointSizeF(big.pointSizeF() * 2.0);
+    big.setBold(true);
+    value->setFont(big);
+    // Two readouts per row: the caption above its value.
+    grid->addWidget(title, index / 2 * 2, index % 2);
+    grid->addWidget(value, index / 2 * 2 + 1, index % 2);
+    return value;
+}
+
+void CapacitiveView::setCapacitive(std::shared_ptr<core::capacitive::LiveCapacitive> capacitive, double sampleRate_hz,
+                                   const QString& probe, const QString& calibration)
+{
+    m_capacitive = std::move(capacitive);
+    m_tare->setEnabled(m_capacitive != nullptr);
+    m_calibration->setText(tr("Probe: %1\nCalibration: %2").arg(probe, calibration));
+    if (!m_capacitive) {
+        m_lanes->clearSource();
+        return;
+    }
+    // µN and mm: the scale of this beam (seed 002).
+    m_lanes->setSource(m_capacitive->output(), core::capacitive::LiveCapacitive::outputChannels(), sampleRate_hz,
+                       {{1e6, tr("µN"), tr("Force")}, {1e3, tr("mm"), tr("Deflection")}});
+    updateReadouts();
+}
+
+void CapacitiveView::tare()
+{
+    if (m_capacitive) m_capacitive->tare();
+}
+
+void CapacitiveView::updateReadouts()
+{
+    const auto reading = m_capacitive ? m_capacitive->latest() : std::nullopt;
+    if (!reading) {
+        for (QLabel* label : {m_capacitance, m_deltaC, m_relative, m_force, m_displacement})
+            label->setText(QStringLiteral("—"));
+        m_baseline->clear();
+        return;
+    }
+    const QLocale locale;
+    m_capacitance->setText(tr("%1 pF").arg(locale.toString(reading->capacitance_f * 1e12, 'f', 3)));
+    m_deltaC->setText(tr("%1 pF").arg(locale.toString(reading->deltaC_f * 1e12, 'f', 3)));
+    m_relative->setText(tr("%1 %").arg(locale.toString(reading->relativeChange * 1e2, 'f', 3)));
+    m_force->setText(tr("%1 µN").arg(locale.toString(reading->force_n * 1e6, 'f', 1)));
+    m_displacement->setText(tr("%1 mm").arg(locale.toString(reading->displacement_m * 1e3, 'f', 3)));
+    m_baseline->setText(tr("C0 = %1 pF%2")
+                            .arg(locale.toString(reading->c0_f * 1e12, 'f', 3),
+                                 reading->unloaded ? tr(" (unloaded: following drift)") : QString()));
+}
+
+}  // namespace tactiscope::ui
