@@ -15,6 +15,7 @@
 #include "ui/ActiveProfiles.h"
 #include "ui/CapacitiveView.h"
 #include "ui/DevicePanel.h"
+#include "ui/InterruptedSessionsReport.h"
 #include "ui/LivePlotWidget.h"
 #include "ui/PalpationView.h"
 #include "ui/PanelScanView.h"
@@ -28,6 +29,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QIcon>
+#include <QInputDialog>
 #include <QLabel>
 #include <QLocale>
 #include <QMenuBar>
@@ -227,6 +229,8 @@ void MainWindow::createMenus()
     QMenu* session = menuBar()->addMenu(tr("&Session"));
     session->addAction(tr("Start / stop &recording"), QKeySequence(tr("Ctrl+R")), this, &MainWindow::toggleRecording);
     session->addAction(tr("&Mark event"), QKeySequence(tr("Ctrl+M")), this, [this] { markEvent(); });
+    session->addAction(tr("Mark event with a &note…"), QKeySequence(tr("Ctrl+Shift+M")), this,
+                       &MainWindow::markEventWithNote);
     session->addAction(tr("&Tare"), QKeySequence(tr("Ctrl+T")), this, &MainWindow::tare);
     session->addSeparator();
     session->addAction(tr("Session &store…"), this, &MainWindow::chooseStore);
@@ -307,7 +311,21 @@ void MainWindow::chooseStore()
     const QString path = QFileDialog::getSaveFileName(this, tr("Session store"), m_storePath,
                                                       tr("Tactiscope session stores (*.tactiscope);;All files (*)"),
                                                       nullptr, QFileDialog::DontConfirmOverwrite);
-    if (!path.isEmpty()) setStorePath(path);
+    if (path.isEmpty()) return;
+    setStorePath(path);
+    reportInterruptedSessions();
+}
+
+void MainWindow::reportInterruptedSessions()
+{
+    // Each interrupted session is reported once, on the first start after it.
+    QSettings settings;
+    const QString key =
+        QStringLiteral("recording/interruptedReported/%1").arg(QFileInfo(m_storePath).absoluteFilePath());
+    const auto sessions = interruptedSessionsAfter(m_storePath, settings.value(key, 0).toLongLong());
+    if (sessions.empty()) return;
+    settings.setValue(key, static_cast<qlonglong>(sessions.back()));
+    showInterruptedSessionsReport(this, m_storePath, sessions);
 }
 
 void MainWindow::toggleRecording()
@@ -553,7 +571,35 @@ void MainWindow::markEvent(const QString& note)
         statusBar()->showMessage(tr("Markers go into a recording: start one first (Ctrl+R)."), 5000);
         return;
     }
+    addMarker(m_recorder->sessionTime_s(), note);
+}
+
+// The marker's time is the key press; typing the note does not delay it, and
+// the recording goes on meanwhile.
+void MainWindow::markEventWithNote()
+{
+    if (!isRecording()) {
+        markEvent();  // says why not
+        return;
+    }
     const double time_s = m_recorder->sessionTime_s();
+    const std::int64_t session = m_recorder->sessionId();
+    auto* dialog = new QInputDialog(this);
+    dialog->setObjectName(QStringLiteral("markerNoteDialog"));
+    dialog->setWindowTitle(tr("Marker"));
+    dialog->setLabelText(tr("Note for the marker at %1 s:").arg(QLocale().toString(time_s, 'f', 2)));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QInputDialog::textValueSelected, this, [this, time_s, session](const QString& note) {
+        if (isRecording() && m_recorder->sessionId() == session)
+            addMarker(time_s, note);
+        else
+            showProblem(tr("Marker not stored"), tr("The recording ended before the note was entered."), note);
+    });
+    dialog->open();
+}
+
+void MainWindow::addMarker(double time_s, const QString& note)
+{
     core::storage::SessionEvent marker;
     marker.kind = "marker";
     marker.start_s = marker.end_s = time_s;

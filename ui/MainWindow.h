@@ -87,8 +87,12 @@ public:
     bool startRecording();
     void stopRecording();
     bool isRecording() const { return m_recorder != nullptr; }
+    // Reports, once, sessions of the store that a crash cut short.
+    void reportInterruptedSessions();
     // A timestamped marker in the session being recorded.
     void markEvent(const QString& note = {});
+    // Takes the time now and asks for the note without blocking.
+    void markEventWithNote();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -111,6 +115,7 @@ private:
     void restoreSettings();
     void showModeView();
     void takeDetectorEvents();
+    void addMarker(double time_s, const QString& note);
     void attachPalpation(const std::vector<core::ChannelDescriptor>& channels, double rate_hz);
     void takePalpationReadings();
     void attachCapacitive(const std::vector<core::ChannelDescriptor>& channels, double rate_hz);

@@ -66,13 +66,12 @@ PalpationView::PalpationView(QWidget* parent)
     m_tare->setObjectName(QStringLiteral("tareButton"));
     m_probe->setObjectName(QStringLiteral("probeLabel"));
 
-    // Read from arm's length while the other hand holds the probe.
+    // Read from arm's length while the other hand holds the probe: as large
+    // as the column allows (resizeEvent), bold.
     QFont big = m_stiffness->font();
-    big.setPointSizeF(big.pointSizeF() * 2.6);
     big.setBold(true);
     m_stiffness->setFont(big);
     m_stiffness->setAlignment(Qt::AlignCenter);
-    m_stiffness->setMinimumWidth(m_stiffness->fontMetrics().horizontalAdvance(QStringLiteral("1,000 ± 100 N/m")));
     m_status->setAlignment(Qt::AlignCenter);
     m_status->setWordWrap(true);
     m_probe->setWordWrap(true);
@@ -126,6 +125,23 @@ void PalpationView::setPalpation(std::shared_ptr<core::compliance::LivePalpation
     m_lanes->setSource(m_palpation->output(), core::compliance::LivePalpation::outputChannels(), sampleRate_hz,
                        {force, force, ratio});
     updateReadout();
+}
+
+void PalpationView::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    // The largest size, up to 2.6× the normal text, at which the widest
+    // reading still fits the column.
+    QFont font = m_stiffness->font();
+    const double normal = QWidget::font().pointSizeF();
+    const QString widest = QStringLiteral("1,000.00 ± 10.00 N/m");
+    double size = normal * 2.6;
+    for (; size > normal; size -= 0.5) {
+        font.setPointSizeF(size);
+        if (QFontMetrics(font).horizontalAdvance(widest) <= m_stiffness->width()) break;
+    }
+    font.setPointSizeF(size);
+    m_stiffness->setFont(font);
 }
 
 void PalpationView::tare()

@@ -55,6 +55,9 @@ public:
 public slots:
     void tare();
 
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
     std::shared_ptr<core::compliance::LivePalpation> m_palpation;
     LivePlotWidget* m_lanes = nullptr;

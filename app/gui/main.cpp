@@ -1,12 +1,19 @@
 // tactiscope: the workstation GUI. Starts streaming from the built-in
-// simulator so it shows live data without any hardware attached.
+// simulator so it shows live data without any hardware attached, reports
+// sessions a crash cut short, and can save a picture of itself (for the
+// documentation and the display-scaling check).
 #include "core/Version.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
 #include "ui/MainWindow.h"
 
 #include <QApplication>
+#include <QComboBox>
 #include <QCommandLineParser>
+#include <QTextStream>
+#include <QTimer>
+
+#include <algorithm>
 
 int main(int argc, char* argv[])
 {
@@ -19,11 +26,51 @@ int main(int argc, char* argv[])
     parser.setApplicationDescription(QStringLiteral("Inspection workstation for cantilever tactile sensors."));
     parser.addHelpOption();
     parser.addVersionOption();
+    const auto ids = tactiscope::devices::simulator::scenarioIds();
+    QStringList scenarios;
+    for (const auto& id : ids) scenarios << QString::fromStdString(id);
+    parser.addOptions({
+        {QStringLiteral("scenario"),
+         QStringLiteral("Start on this simulator scenario: %1 (default panel-scan).").arg(scenarios.join(", ")),
+         QStringLiteral("ID"), QStringLiteral("panel-scan")},
+        {QStringLiteral("mode"), QStringLiteral("Start in this mode: panel-scan, palpation or capacitive."),
+         QStringLiteral("MODE")},
+        {QStringLiteral("screenshot"), QStringLiteral("Save the window as a PNG after a delay, then quit."),
+         QStringLiteral("FILE")},
+        {QStringLiteral("screenshot-delay-ms"), QStringLiteral("How long to stream before the screenshot (4000)."),
+         QStringLiteral("MS"), QStringLiteral("4000")},
+    });
     parser.process(app);
+    const std::string scenario = parser.value(QStringLiteral("scenario")).toStdString();
+    if (std::ranges::find(ids, scenario) == ids.end()) {
+        QTextStream(stderr) << "tactiscope: unknown scenario " << QString::fromStdString(scenario) << "; one of "
+                            << scenarios.join(", ") << '\n';
+        return 2;
+    }
 
     tactiscope::ui::MainWindow window;
+    if (parser.isSet(QStringLiteral("mode"))) {
+        auto* mode = window.findChild<QComboBox*>(QStringLiteral("modeBox"));
+        const int index = mode->findData(parser.value(QStringLiteral("mode")));
+        if (index < 0) {
+            QTextStream(stderr) << "tactiscope: unknown mode " << parser.value(QStringLiteral("mode"))
+                                << "; one of panel-scan, palpation, capacitive\n";
+            return 2;
+        }
+        mode->setCurrentIndex(index);
+    }
     window.connectSource(std::make_unique<tactiscope::devices::simulator::SimulatorSource>(
-        tactiscope::devices::simulator::makeScenario("panel-scan")));
+        tactiscope::devices::simulator::makeScenario(scenario)));
     window.show();
+    window.reportInterruptedSessions();
+
+    if (parser.isSet(QStringLiteral("screenshot"))) {
+        const QString file = parser.value(QStringLiteral("screenshot"));
+        QTimer::singleShot(parser.value(QStringLiteral("screenshot-delay-ms")).toInt(), &window, [&window, file] {
+            const bool saved = window.grab().save(file, "PNG");
+            if (!saved) QTextStream(stderr) << "tactiscope: could not write " << file << '\n';
+            QApplication::exit(saved ? 0 : 1);
+        });
+    }
     return QApplication::exec();
 }

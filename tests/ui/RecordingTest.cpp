@@ -1,8 +1,10 @@
 // Recording from the main window against the live simulator: the session
-// bar starts and stops a session, Ctrl+M drops a marker, and the store then
-// holds a complete session with the bar's metadata, the samples streamed
-// while recording, and the marker. A store that cannot be opened is shown
-// without stopping the live view.
+// bar starts and stops a session, Ctrl+M drops a marker and Ctrl+Shift+M one
+// with a note (timed at the key press), and the store then holds a complete
+// session with the bar's metadata, the samples streamed while recording, and
+// the markers. A store that cannot be opened is shown without stopping the
+// live view; sessions a crash cut short are reported once.
+#include "core/SampleBlock.h"
 #include "core/storage/SessionStore.h"
 #include "support/MainWindowHelpers.h"
 #include "support/Screenshot.h"
@@ -11,6 +13,7 @@
 #include "ui/MainWindow.h"
 
 #include <QComboBox>
+#include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
@@ -47,7 +50,17 @@ TEST(Recording, TheSessionBarRecordsASessionWithItsMetadataAndAMarker)
     ASSERT_TRUE(waitFor([&] { return child<QLabel>(window, "recordingLabel")->text().contains("REC"); }, 3000));
     runEventLoopFor(1200);
     QTest::keyClick(&window, Qt::Key_M, Qt::ControlModifier);
-    runEventLoopFor(800);
+    runEventLoopFor(300);
+    QTest::keyClick(&window, Qt::Key_M, Qt::ControlModifier | Qt::ShiftModifier);
+    auto* note = window.findChild<QInputDialog*>(QStringLiteral("markerNoteDialog"));
+    ASSERT_NE(note, nullptr);
+    EXPECT_FALSE(window.isHidden());
+    runEventLoopFor(500);  // the operator types; the marker keeps the key press's time
+    note->setTextValue(QStringLiteral("scratch near the edge"));
+    note->accept();
+    window.activateWindow();  // the keyboard goes back to the main window
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&window));
+    runEventLoopFor(300);
     EXPECT_TRUE(child<QLabel>(window, "elapsedLabel")->text().startsWith(QStringLiteral("00:00:0")));
     tactiscope::testing::saveScreenshot(window, QStringLiteral("recording"));
     QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier);  // stop
@@ -72,10 +85,13 @@ TEST(Recording, TheSessionBarRecordsASessionWithItsMetadataAndAMarker)
     std::vector<core::storage::SessionEvent> markers;  // the detector's defects are there too
     for (const auto& e : sessions.events(s.id))
         if (e.kind == "marker") markers.push_back(e);
-    ASSERT_EQ(markers.size(), 1u);
-    EXPECT_EQ(markers[0].kind, "marker");
+    ASSERT_EQ(markers.size(), 2u);
     EXPECT_GT(markers[0].start_s, 0.9);
-    EXPECT_LT(markers[0].start_s, static_cast<double>(s.sampleCount) / 500.0);
+    EXPECT_TRUE(markers[0].note.empty());
+    EXPECT_EQ(markers[1].note, "scratch near the edge");
+    // 0.3 s after the first, not 0.8 s (when the note was accepted).
+    EXPECT_NEAR(markers[1].start_s - markers[0].start_s, 0.3, 0.15);
+    EXPECT_LT(markers[1].start_s, static_cast<double>(s.sampleCount) / 500.0);
 }
 
 TEST(Recording, AStoreThatCannotBeOpenedIsShownAndTheLiveViewGoesOn)
@@ -99,4 +115,39 @@ TEST(Recording, AStoreThatCannotBeOpenedIsShownAndTheLiveViewGoesOn)
         << box->informativeText().toStdString();
     const auto drawn = window.livePlot()->drawnPointCount(0);
     EXPECT_TRUE(waitFor([&] { return window.livePlot()->drawnPointCount(0) != drawn; }, 2000));
+}
+
+TEST(Recording, SessionsACrashCutShortAreReportedOnce)
+{
+    QTemporaryDir dir;
+    const QString store = dir.filePath("crashed.tactiscope");
+    {
+        // A recording that never ended: what a crash leaves behind.
+        core::storage::SessionStore sessions(store.toStdString());
+        core::storage::SessionMetadata metadata;
+        metadata.mode = "palpation";
+        metadata.subject = "phantom-4";
+        const std::vector<core::ChannelDescriptor> channels{{"a", "", core::ChannelKind::Strain}};
+        const auto id = sessions.beginSession(metadata, channels, 100.0);
+        core::SampleBlock block(1, 250, 0.0, 0.01, 0);
+        sessions.appendBlocks(id, std::span(&block, 1));
+    }
+    ui::MainWindow window;
+    window.setStorePath(store);
+    window.show();
+    window.reportInterruptedSessions();
+    auto* box = window.findChild<QMessageBox*>(QStringLiteral("interruptedBox"));
+    ASSERT_NE(box, nullptr);
+    EXPECT_FALSE(box->isModal());
+    EXPECT_TRUE(box->informativeText().contains(QStringLiteral("Session 1 (palpation, phantom-4)")))
+        << box->informativeText().toStdString();
+    EXPECT_TRUE(box->informativeText().contains(QStringLiteral("2.5 s kept")));
+    tactiscope::testing::saveScreenshot(*box, QStringLiteral("interrupted-sessions"));
+    box->close();
+    runEventLoopFor(50);
+
+    core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
+    EXPECT_EQ(sessions.sessions().front().status, "interrupted");
+    window.reportInterruptedSessions();  // already reported
+    EXPECT_EQ(window.findChild<QMessageBox*>(QStringLiteral("interruptedBox")), nullptr);
 }

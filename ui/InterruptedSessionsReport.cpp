@@ -1,0 +1,99 @@
+// InterruptedSessionsReport: finding the sessions, the message and the export.
+#include "ui/InterruptedSessionsReport.h"
+
+#include "core/storage/SessionExport.h"
+#include "core/storage/SessionStore.h"
+
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLocale>
+#include <QMessageBox>
+#include <QPushButton>
+
+#include <fstream>
+
+namespace tactiscope::ui {
+namespace {
+
+QString describe(const core::storage::SessionSummary& s)
+{
+    const QString subject =
+        s.metadata.subject.empty() ? QObject::tr("no subject") : QString::fromStdString(s.metadata.subject);
+    return QObject::tr("Session %1 (%2, %3), started %4: %5 s kept")
+        .arg(s.id)
+        .arg(QString::fromStdString(s.metadata.mode), subject, QString::fromStdString(s.startedUtc))
+        .arg(QLocale().toString(s.duration_s(), 'f', 1));
+}
+
+// Each session as session-N.csv with session-N.meta.json beside it.
+QString exportSessions(const QString& storePath, const std::vector<std::int64_t>& sessions, const QString& folder)
+{
+    try {
+        core::storage::SessionStore store(storePath.toStdString(), core::storage::Database::Access::ReadOnly);
+        for (const std::int64_t id : sessions) {
+            const QString base = QDir(folder).filePath(QStringLiteral("session-%1").arg(id));
+            std::ofstream csv((base + QStringLiteral(".csv")).toStdString());
+            core::storage::writeSessionCsv(store, id, csv);
+            std::ofstream meta((base + QStringLiteral(".meta.json")).toStdString());
+            core::storage::writeSessionMetadataJson(store, id, meta);
+            if (!csv || !meta) return QObject::tr("could not write %1").arg(base);
+        }
+    } catch (const core::storage::StorageError& e) {
+        return QString::fromStdString(e.what());
+    }
+    return {};
+}
+
+}  // namespace
+
+std::vector<std::int64_t> interruptedSessionsAfter(const QString& storePath, std::int64_t afterId)
+{
+    std::vector<std::int64_t> found;
+    if (!QFileInfo::exists(storePath)) return found;
+    try {
+        core::storage::SessionStore store(storePath.toStdString());  // marks crashed recordings interrupted
+        for (const auto& s : store.sessions())
+            if (s.id > afterId && s.status == core::storage::toString(core::storage::SessionStatus::Interrupted))
+                found.push_back(s.id);
+    } catch (const core::storage::StorageError& e) {
+        qWarning("interrupted sessions not checked: %s", e.what());
+    }
+    std::ranges::sort(found);
+    return found;
+}
+
+void showInterruptedSessionsReport(QWidget* parent, const QString& storePath, const std::vector<std::int64_t>& sessions)
+{
+    if (sessions.empty()) return;
+    QStringList lines;
+    try {
+        core::storage::SessionStore store(storePath.toStdString(), core::storage::Database::Access::ReadOnly);
+        for (const std::int64_t id : sessions)
+            if (const auto summary = store.session(id)) lines << describe(*summary);
+    } catch (const core::storage::StorageError& e) {
+        lines << QString::fromStdString(e.what());
+    }
+    auto* box = new QMessageBox(QMessageBox::Information, QObject::tr("Interrupted sessions"),
+                                QObject::tr("%n recording(s) ended without being stopped (a crash, a power cut or a "
+                                            "full disk). Everything written before that was kept.",
+                                            nullptr, static_cast<int>(sessions.size())),
+                                QMessageBox::Close, parent);
+    box->setObjectName(QStringLiteral("interruptedBox"));
+    box->setInformativeText(lines.join(QLatin1Char('\n')));
+    QPushButton* exportButton = box->addButton(QObject::tr("Export to CSV…"), QMessageBox::ActionRole);
+    exportButton->setObjectName(QStringLiteral("exportInterruptedButton"));
+    // The box closes on any button, so the export talks to the parent.
+    QObject::connect(exportButton, &QPushButton::clicked, parent, [parent, storePath, sessions] {
+        const QString folder =
+            QFileDialog::getExistingDirectory(parent, QObject::tr("Export the interrupted sessions to"));
+        if (folder.isEmpty()) return;
+        const QString error = exportSessions(storePath, sessions, folder);
+        if (!error.isEmpty()) QMessageBox::warning(parent, QObject::tr("Export failed"), error);
+    });
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setModal(false);
+    box->show();
+}
+
+}  // namespace tactiscope::ui
