@@ -20,6 +20,7 @@
 #include "ui/PalpationView.h"
 #include "ui/PanelScanView.h"
 #include "ui/SessionBar.h"
+#include "ui/XYPlotWidget.h"
 
 #include <QActionGroup>
 #include <QApplication>
@@ -149,6 +150,13 @@ MainWindow::MainWindow(QWidget* parent)
     m_deviceDock->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable);
     addDockWidget(Qt::LeftDockWidgetArea, m_deviceDock);
     resizeDocks({m_deviceDock}, {290}, Qt::Horizontal);
+    m_xyPlot = new XYPlotWidget(this);
+    m_xyPlot->setObjectName(QStringLiteral("xyPlot"));
+    m_xyDock = new QDockWidget(tr("XY plot"), this);
+    m_xyDock->setObjectName(QStringLiteral("xyDock"));
+    m_xyDock->setWidget(m_xyPlot);
+    addDockWidget(Qt::RightDockWidgetArea, m_xyDock);
+    m_xyDock->hide();  // on request (View menu): the mode views come first
     connect(m_devicePanel, &DevicePanel::connectRequested, this, &MainWindow::connectRequest);
     connect(m_devicePanel, &DevicePanel::disconnectRequested, this, &MainWindow::disconnectSource);
     createMenus();
@@ -193,6 +201,26 @@ void MainWindow::showModeView()
     if (m_capacitive && mode == "capacitive") view = m_capacitiveView;
     if (view) m_modeViews->setCurrentWidget(view);
     m_modeViews->setVisible(view != nullptr);
+    showModeXY(view);
+}
+
+// The XY plot the mode calls for: F_H against F_L in palpation (slope Q),
+// force against tip deflection for the capacitive beam (slope k_s).
+void MainWindow::showModeXY(const QWidget* view)
+{
+    const double rate_hz = m_acquisition ? m_acquisition->source().nominalSampleRate_hz() : 0.0;
+    if (view == m_palpationView) {
+        const DisplayUnit high{1e3, tr("mN"), tr("F_H")}, low{1e3, tr("mN"), tr("F_L")};
+        m_xyPlot->setSource(m_palpation->output(), 1, 0, low, high, rate_hz);
+        m_xyDock->setWindowTitle(tr("XY plot: F_H against F_L (slope Q)"));
+    } else if (view == m_capacitiveView) {
+        const DisplayUnit deflection{1e3, tr("mm"), tr("Tip deflection")}, force{1e6, tr("µN"), tr("Force")};
+        m_xyPlot->setSource(m_capacitive->output(), 1, 0, deflection, force, rate_hz);
+        m_xyDock->setWindowTitle(tr("XY plot: force against deflection (slope k_s)"));
+    } else {
+        m_xyPlot->clearSource();
+        m_xyDock->setWindowTitle(tr("XY plot (palpation and capacitive modes)"));
+    }
 }
 
 void MainWindow::saveSettings() const
@@ -237,6 +265,7 @@ void MainWindow::createMenus()
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_deviceDock->toggleViewAction());
+    view->addAction(m_xyDock->toggleViewAction());
     view->addSeparator();
     // Pause and hold act on every plot together, so traces and lanes stay aligned.
     QAction* pause = view->addAction(tr("&Pause display"));
@@ -271,6 +300,7 @@ void MainWindow::createMenus()
         windows->addAction(action);
         connect(action, &QAction::triggered, this, [this, seconds] {
             for (LivePlotWidget* plot : allPlots()) plot->setWindowLength(seconds);
+            m_xyPlot->setWindowLength(seconds);
         });
     }
 

@@ -54,6 +54,7 @@ class PalpationView;
 struct SourceRequest;
 class PanelScanView;
 class SessionBar;
+class XYPlotWidget;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -114,6 +115,7 @@ private:
                      const QString& objectName = QStringLiteral("problemBox"));
     void restoreSettings();
     void showModeView();
+    void showModeXY(const QWidget* view);
     void takeDetectorEvents();
     void addMarker(double time_s, const QString& note);
     void attachPalpation(const std::vector<core::ChannelDescriptor>& channels, double rate_hz);
@@ -134,6 +136,8 @@ private:
     QStackedWidget* m_modeViews = nullptr;  // the mode's view under the traces
     DevicePanel* m_devicePanel = nullptr;
     QDockWidget* m_deviceDock = nullptr;
+    XYPlotWidget* m_xyPlot = nullptr;
+    QDockWidget* m_xyDock = nullptr;
     QLabel* m_recordingLabel = nullptr;
     QLabel* m_deviceLabel = nullptr;
     QLabel* m_linkLabel = nullptr;  // state, rate and losses in one line

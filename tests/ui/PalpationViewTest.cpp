@@ -13,8 +13,10 @@
 #include "ui/MainWindow.h"
 #include "ui/PanelScanView.h"
 #include "ui/SiteGridMap.h"
+#include "ui/XYPlotWidget.h"
 
 #include <QComboBox>
+#include <QDockWidget>
 #include <QLabel>
 #include <QPushButton>
 #include <QTableWidget>
@@ -122,7 +124,7 @@ TEST(PalpationView, PressesAreListedMappedStoredAndMatchTheCoreReading)
     }
 }
 
-TEST(PalpationView, TareTakesANewZeroFromTheButtonOrCtrlT)
+TEST(PalpationView, TareTakesANewZeroFromTheButtonOrCtrlTAndTheXYPlotShowsTheForces)
 {
     ui::MainWindow window;
     choosePalpationMode(window);
@@ -135,6 +137,12 @@ TEST(PalpationView, TareTakesANewZeroFromTheButtonOrCtrlT)
     EXPECT_TRUE(waitFor([&] { return !status->text().startsWith(QStringLiteral("Taking the zero")); }, 2000));
     QTest::keyClick(&window, Qt::Key_T, Qt::ControlModifier);
     EXPECT_TRUE(waitFor([&] { return status->text().startsWith(QStringLiteral("Taking the zero")); }, 1000));
+
+    // The mode's XY plot (F_H against F_L), on request.
+    child<QDockWidget>(window, "xyDock")->show();
+    auto* xy = child<ui::XYPlotWidget>(window, "xyPlot");
+    EXPECT_TRUE(waitFor([&] { return xy->drawnPointCount() > 100; }, 2000));
+    EXPECT_LE(xy->drawnPointCount(), static_cast<int>(ui::XYPlotWidget::kMaxPoints));
 }
 
 TEST(PalpationView, APanelScanProbeHasNoPalpationView)
