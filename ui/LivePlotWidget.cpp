@@ -2,6 +2,7 @@
 #include "ui/LivePlotWidget.h"
 
 #include "core/signal/MinMaxDecimation.h"
+#include "core/signal/ScrollingMinMax.h"
 #include "ui/DisplayUnits.h"
 
 #include <qcustomplot.h>
@@ -24,6 +25,16 @@ constexpr int kFrameInterval_ms = 25;
 // Okabe–Ito palette: distinguishable with the common colour-vision deficiencies.
 constexpr std::array<QRgb, 8> kTraceColours{0x0072B2, 0xE69F00, 0x009E73, 0xD55E00,
                                             0xCC79A7, 0x56B4E9, 0x000000, 0xF0E442};
+
+// Solid light grid lines: dotted ones look the same at a glance but cost
+// the raster engine far more per frame.
+void styleGrid(QCPAxisRect* rect)
+{
+    for (QCPAxis* axis : {rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft)}) {
+        axis->grid()->setPen(QPen(QColor(0xe4, 0xe4, 0xe4), 0));
+        axis->grid()->setZeroLinePen(QPen(QColor(0xb0, 0xb0, 0xb0), 0));
+    }
+}
 
 }  // namespace
 
@@ -48,6 +59,8 @@ LivePlotWidget::LivePlotWidget(QWidget* parent)
 
     m_laneMargins = new QCPMarginGroup(m_plot);
     m_plot->setPlottingHint(QCP::phFastPolylines, true);
+    // Thin unsmoothed traces draw several times faster; text stays smooth.
+    m_plot->setNotAntialiasedElements(QCP::aePlottables | QCP::aeGrid | QCP::aeSubGrid | QCP::aeZeroLine);
     m_plot->setNoAntialiasingOnDrag(true);
     m_plot->legend->setVisible(true);
     m_plot->legend->setBrush(QColor(255, 255, 255, 220));
@@ -90,6 +103,7 @@ void LivePlotWidget::clearSource()
     m_cursor = {};
     m_time.reset();
     m_values.clear();
+    m_scrolling.clear();
     removePlotItems();
     m_plot->replot();
 }
@@ -123,6 +137,7 @@ void LivePlotWidget::buildPlotItems(const std::vector<core::ChannelDescriptor>& 
                 rect->axis(QCPAxis::atBottom)->setLabel(tr("Time (s)"));
             }
             rect->setMarginGroup(QCP::msLeft | QCP::msRight, m_laneMargins);
+            styleGrid(rect);
             connect(rect->axis(QCPAxis::atBottom), qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
                     &LivePlotWidget::syncTimeAxes, Qt::UniqueConnection);
             rect->axis(QCPAxis::atLeft)->setLabel(unit.axisTitle());
@@ -131,7 +146,7 @@ void LivePlotWidget::buildPlotItems(const std::vector<core::ChannelDescriptor>& 
         QCPAxisRect* rect = m_lanes[lane].rect;
         QCPGraph* graph = m_plot->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
         graph->setName(QString::fromStdString(channels[c].name));
-        graph->setPen(QPen(QColor(kTraceColours[c % kTraceColours.size()]), 1.5));
+        graph->setPen(QPen(QColor(kTraceColours[c % kTraceColours.size()]), 1.0));
         graph->setAdaptiveSampling(false);  // we decimate ourselves
         m_graphs.push_back(graph);
         m_graphLane.push_back(lane);
@@ -256,6 +271,7 @@ void LivePlotWidget::refresh()
         return;
     }
     if (m_paused) {
+        m_scrolling.clear();  // resuming rebuilds it for the newest window
         const QCPRange range = m_plot->xAxis->range();
         draw(range.lower, range.upper);
     } else {
@@ -263,30 +279,66 @@ void LivePlotWidget::refresh()
         // after that the window scrolls with the newest sample at the right.
         const double latest_s = m_time->at(m_time->endIndex() - 1);
         const double start_s = std::max(latest_s - m_window_s, m_time->at(m_time->oldestIndex()));
+        followLive(start_s, arrived);
         draw(start_s, start_s + m_window_s);
     }
     m_viewChanged = false;
     scheduleFrame();
 }
 
-void LivePlotWidget::draw(double start_s, double end_s)
+// Live, each frame decimates only the samples that arrived (ScrollingMinMax);
+// a new column width (a resize, another window length) or a resume starts
+// over from the history.
+void LivePlotWidget::followLive(double start_s, bool arrived)
 {
+    const int width_px = std::max(1, m_plot->axisRect()->width());
+    const double columnWidth_s = m_window_s / width_px;
+    if (m_scrolling.empty() || m_scrolling.front().columnWidth_s() != columnWidth_s) {
+        m_scrolling.assign(m_values.size(), core::signal::ScrollingMinMax(columnWidth_s));
+        const std::uint64_t first = firstIndexAtOrAfter(start_s - columnWidth_s);
+        const auto count = static_cast<std::size_t>(m_time->endIndex() - first);
+        m_visibleTime.resize(count);
+        m_time->copy(first, m_visibleTime);
+        for (std::size_t c = 0; c < m_values.size(); ++c) {
+            m_visibleValues.resize(count);
+            m_values[c].copy(first, m_visibleValues);
+            m_scrolling[c].append(m_visibleTime, m_visibleValues);
+        }
+    } else if (arrived) {
+        for (std::size_t c = 0; c < m_values.size(); ++c) m_scrolling[c].append(m_chunk.time_s, m_chunk.values[c]);
+    }
+    for (auto& trace : m_scrolling) trace.dropBefore(start_s);
+}
+
+// The points of channel c between start_s and end_s, min/max per column.
+void LivePlotWidget::decimatedPoints(std::size_t c, double start_s, double end_s)
+{
+    if (!m_scrolling.empty()) {
+        m_scrolling[c].points(m_decimatedTime, m_decimatedValues);
+        return;
+    }
     // The samples in view and one either side, so lines reach the edges.
     std::uint64_t first = firstIndexAtOrAfter(start_s);
     if (first > m_time->oldestIndex()) --first;
     const std::uint64_t end = std::min(firstIndexAtOrAfter(end_s) + 1, m_time->endIndex());
     const auto count = static_cast<std::size_t>(end > first ? end - first : 0);
     m_visibleTime.resize(count);
-    if (count > 0) m_time->copy(first, m_visibleTime);
-
+    m_visibleValues.resize(count);
+    if (count > 0) {
+        m_time->copy(first, m_visibleTime);
+        m_values[c].copy(first, m_visibleValues);
+    }
     const int width_px = std::max(1, m_plot->axisRect()->width());
     const double columnWidth_s = std::max(end_s - start_s, 1e-9) / width_px;
+    core::signal::decimateMinMax(m_visibleTime, m_visibleValues, columnWidth_s, m_decimatedTime, m_decimatedValues);
+}
+
+void LivePlotWidget::draw(double start_s, double end_s)
+{
     std::vector<double> laneMin(m_lanes.size(), std::numeric_limits<double>::infinity());
     std::vector<double> laneMax(m_lanes.size(), -std::numeric_limits<double>::infinity());
     for (std::size_t c = 0; c < m_graphs.size(); ++c) {
-        m_visibleValues.resize(count);
-        if (count > 0) m_values[c].copy(first, m_visibleValues);
-        core::signal::decimateMinMax(m_visibleTime, m_visibleValues, columnWidth_s, m_decimatedTime, m_decimatedValues);
+        decimatedPoints(c, start_s, end_s);
         QVector<double> keys(m_decimatedTime.begin(), m_decimatedTime.end());
         QVector<double> values(static_cast<qsizetype>(m_decimatedValues.size()));
         const double scale = m_graphScale[c];
@@ -315,6 +367,7 @@ void LivePlotWidget::draw(double start_s, double end_s)
     }
     m_drawing = false;
     m_plot->replot();
+    ++m_framesDrawn;
 }
 
 }  // namespace tactiscope::ui

@@ -17,6 +17,7 @@
 #include "core/ChannelDescriptor.h"
 #include "core/LiveBuffer.h"
 #include "core/RingBuffer.h"
+#include "core/signal/ScrollingMinMax.h"
 #include "ui/AxisAutoRange.h"
 #include "ui/DisplayUnits.h"
 
@@ -77,8 +78,15 @@ public:
     int drawnPointCount(std::size_t channel) const;
     // Samples per channel taken from the buffer since setSource().
     std::uint64_t samplesReceived() const { return m_cursor.next; }
+    // Frames drawn since construction (a frame is drawn only when something changed).
+    std::uint64_t framesDrawn() const { return m_framesDrawn; }
     // Samples the display missed because it fell behind the buffer.
     std::uint64_t samplesOverrun() const { return m_cursor.overrun; }
+
+private slots:
+    // One frame: takes new samples and redraws if anything changed. Run by
+    // the frame timer (and invoked by name from the display benchmark).
+    void refresh();
 
 private:
     struct Lane {
@@ -87,10 +95,11 @@ private:
     };
 
     void scheduleFrame();
-    void refresh();
     void buildPlotItems(const std::vector<core::ChannelDescriptor>& channels, const std::vector<DisplayUnit>& units);
     void removePlotItems();
     void updateInteractions();
+    void followLive(double start_s, bool arrived);
+    void decimatedPoints(std::size_t channel, double start_s, double end_s);
     void draw(double start_s, double end_s);
     void syncTimeAxes(const QCPRange& range);
     std::uint64_t firstIndexAtOrAfter(double t_s) const;
@@ -103,6 +112,7 @@ private:
     bool m_scaleHeld = false;
     bool m_viewChanged = false;  // paused: the user moved the view since the last frame
     bool m_drawing = false;      // draw() is setting the axes itself
+    std::uint64_t m_framesDrawn = 0;
     QWidget* m_pausedBanner = nullptr;
 
     std::shared_ptr<const core::LiveBuffer> m_buffer;
@@ -112,6 +122,8 @@ private:
     // The display's own history, so each frame reads only new samples.
     std::unique_ptr<core::RingBuffer<double>> m_time;
     std::vector<core::RingBuffer<double>> m_values;
+    // Live: the decimated window per channel, extended frame by frame.
+    std::vector<core::signal::ScrollingMinMax> m_scrolling;
 
     std::vector<Lane> m_lanes;
     std::vector<QCPGraph*> m_graphs;       // one per channel

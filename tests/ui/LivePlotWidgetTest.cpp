@@ -100,6 +100,11 @@ TEST(LivePlotWidget, PausedItKeepsTakingSamplesAndScrollsBackThroughThem)
     EXPECT_NEAR(live.second, 19.998, 1e-9);  // the newest sample at the right edge
     EXPECT_NEAR(live.second - live.first, 10.0, 1e-9);
 
+    // Nothing new, nothing drawn: frames only follow data.
+    const auto frames = plot.framesDrawn();
+    tactiscope::testing::runEventLoopFor(200);
+    EXPECT_EQ(plot.framesDrawn(), frames);
+
     plot.setPaused(true);
     fill(*buffer, 20.0, 30.0);
     ASSERT_TRUE(waitFor([&] { return plot.samplesReceived() == 15000u; }, 2000));
