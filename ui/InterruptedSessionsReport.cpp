@@ -75,9 +75,11 @@ void showInterruptedSessionsReport(QWidget* parent, const QString& storePath, co
         lines << QString::fromStdString(e.what());
     }
     auto* box = new QMessageBox(QMessageBox::Information, QObject::tr("Interrupted sessions"),
-                                QObject::tr("%n recording(s) ended without being stopped (a crash, a power cut or a "
-                                            "full disk). Everything written before that was kept.",
-                                            nullptr, static_cast<int>(sessions.size())),
+                                (sessions.size() == 1
+                                     ? QObject::tr("A recording ended without being stopped")
+                                     : QObject::tr("%1 recordings ended without being stopped").arg(sessions.size())) +
+                                    QObject::tr(" (a crash, a power cut or a full disk). Everything written "
+                                                "before that was kept."),
                                 QMessageBox::Close, parent);
     box->setObjectName(QStringLiteral("interruptedBox"));
     box->setInformativeText(lines.join(QLatin1Char('\n')));

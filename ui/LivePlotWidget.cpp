@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace tactiscope::ui {
 namespace {
@@ -64,8 +65,7 @@ LivePlotWidget::LivePlotWidget(QWidget* parent)
     m_plot->setNoAntialiasingOnDrag(true);
     m_plot->legend->setVisible(true);
     m_plot->legend->setBrush(QColor(255, 255, 255, 220));
-    // Top left: the newest samples arrive at the right and must stay visible.
-    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
+    moveLegendTo(m_plot->axisRect());
     m_plot->xAxis->setLabel(tr("Time (s)"));
     m_plot->xAxis->setRange(0.0, m_window_s);
 
@@ -153,20 +153,31 @@ void LivePlotWidget::buildPlotItems(const std::vector<core::ChannelDescriptor>& 
         m_graphScale.push_back(unit.scale);
     }
     // A lane of one trace is named by its axis title; the legend names the
-    // traces that share a lane, and is hidden when none do.
-    bool shared = false;
+    // traces that share a lane, sits in the first such lane, and is hidden
+    // when none do.
+    std::optional<std::size_t> sharedLane;
     for (std::size_t c = 0; c < m_graphs.size(); ++c) {
-        if (std::count(m_graphLane.begin(), m_graphLane.end(), m_graphLane[c]) > 1)
-            shared = true;
-        else
+        if (std::count(m_graphLane.begin(), m_graphLane.end(), m_graphLane[c]) > 1) {
+            if (!sharedLane) sharedLane = m_graphLane[c];
+        } else {
             m_graphs[c]->removeFromLegend();
+        }
     }
-    m_plot->legend->setVisible(shared);
+    if (sharedLane) moveLegendTo(m_lanes[*sharedLane].rect);
+    m_plot->legend->setVisible(sharedLane.has_value());
     updateInteractions();
+}
+
+void LivePlotWidget::moveLegendTo(QCPAxisRect* rect)
+{
+    if (auto* inset = qobject_cast<QCPLayoutInset*>(m_plot->legend->layout())) inset->take(m_plot->legend);
+    // Top left: the newest samples arrive at the right and must stay visible.
+    rect->insetLayout()->addElement(m_plot->legend, Qt::AlignTop | Qt::AlignLeft);
 }
 
 void LivePlotWidget::removePlotItems()
 {
+    moveLegendTo(m_plot->axisRect());  // out of the lanes about to go
     m_plot->clearGraphs();
     // Extra lanes live in rows 1.. of the layout; row 0 is the default rect.
     for (int row = m_plot->plotLayout()->rowCount() - 1; row > 0; --row) {

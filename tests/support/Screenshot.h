@@ -1,5 +1,7 @@
 // Saves what a widget shows as a PNG, so a developer can look at what a user
-// sees after every test run (build/<preset>/screenshots/).
+// sees after every test run (build/<preset>/screenshots/, or the folder in
+// TACTISCOPE_SCREENSHOT_DIR: scripts/update-screenshots.sh uses it for
+// docs/screenshots/).
 #pragma once
 
 #include <QString>
