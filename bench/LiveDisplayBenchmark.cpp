@@ -9,6 +9,7 @@
 //    timer: the GUI thread's CPU time over wall time, frames drawn, and the
 //    samples the display missed.
 // Run: tactiscope_display_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include "EightChannelStream.h"
 #include "core/LiveBuffer.h"
 #include "core/SampleBlock.h"
 #include "ui/LivePlotWidget.h"
@@ -29,32 +30,13 @@
 namespace {
 
 using namespace tactiscope;
+using bench::eightChannelBlock;
+using bench::eightChannels;
+using bench::kChannels;
+using bench::kRate_hz;
 
-constexpr std::size_t kChannels = 8;
-constexpr double kRate_hz = 2000.0;
 constexpr double kWindow_s = 10.0;
 constexpr std::size_t kFrameSamples = 50;  // 25 ms: one frame's worth at 40 frames/s
-
-std::vector<core::ChannelDescriptor> channels()
-{
-    std::vector<core::ChannelDescriptor> result;
-    for (std::size_t c = 0; c < kChannels; ++c)
-        result.push_back({std::string(1, 's').append(std::to_string(c)), "", core::ChannelKind::Strain});
-    return result;
-}
-
-core::SampleBlock block(std::uint64_t first, std::size_t count)
-{
-    core::SampleBlock b(kChannels, count, static_cast<double>(first) / kRate_hz, 1.0 / kRate_hz, first);
-    for (std::size_t c = 0; c < kChannels; ++c) {
-        auto values = b.channel(c);
-        for (std::size_t s = 0; s < count; ++s) {
-            const auto i = static_cast<double>(first + s);
-            values[s] = 1e-4 * std::sin(i * 0.003 * static_cast<double>(c + 1)) + 2e-6 * std::sin(i * 1.7);
-        }
-    }
-    return b;
-}
 
 double threadCpuSeconds()
 {
@@ -68,14 +50,14 @@ void BM_LivePlotFrame(benchmark::State& state)
     auto buffer = std::make_shared<core::LiveBuffer>(kChannels, static_cast<std::size_t>(2 * kWindow_s * kRate_hz));
     std::uint64_t next = 0;
     for (; next < static_cast<std::uint64_t>(kWindow_s * kRate_hz); next += kFrameSamples)
-        buffer->consume(block(next, kFrameSamples));
+        buffer->consume(eightChannelBlock(next, kFrameSamples));
     ui::LivePlotWidget plot;
     plot.resize(1600, 900);
     plot.show();
-    plot.setSource(buffer, channels(), kRate_hz);
+    plot.setSource(buffer, eightChannels(), kRate_hz);
     QMetaObject::invokeMethod(&plot, "refresh", Qt::DirectConnection);  // the full window once
     for (auto _ : state) {
-        buffer->consume(block(next, kFrameSamples));
+        buffer->consume(eightChannelBlock(next, kFrameSamples));
         next += kFrameSamples;
         QMetaObject::invokeMethod(&plot, "refresh", Qt::DirectConnection);
     }
@@ -93,7 +75,7 @@ void BM_RawQCustomPlotFrame(benchmark::State& state)
     plot.show();
     plot.setPlottingHint(QCP::phFastPolylines, true);
     const auto n = static_cast<qsizetype>(kWindow_s * kRate_hz);
-    const core::SampleBlock window = block(0, static_cast<std::size_t>(n));
+    const core::SampleBlock window = eightChannelBlock(0, static_cast<std::size_t>(n));
     QVector<double> t(n);
     for (qsizetype i = 0; i < n; ++i) t[i] = static_cast<double>(i) / kRate_hz;
     std::vector<QVector<double>> values(kChannels, QVector<double>(n));
@@ -118,13 +100,13 @@ void BM_LiveDisplayRealTime(benchmark::State& state)
         ui::LivePlotWidget plot;
         plot.resize(1600, 900);
         plot.show();
-        plot.setSource(buffer, channels(), kRate_hz);
+        plot.setSource(buffer, eightChannels(), kRate_hz);
         std::atomic<bool> running = true;
         // The acquisition's side: a 5 ms block every 5 ms.
         std::thread feeder([&] {
             const auto start = std::chrono::steady_clock::now();
             for (std::uint64_t first = 0; running; first += 10) {
-                buffer->consume(block(first, 10));
+                buffer->consume(eightChannelBlock(first, 10));
                 std::this_thread::sleep_until(start + std::chrono::microseconds(5000 * (first / 10 + 1)));
             }
         });

@@ -9,6 +9,7 @@
 //    them, against opening the bare SQLite file.
 // The store is built once in the temporary folder (about 250 MB, 20–40 s).
 // Run: tactiscope_storage_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include "EightChannelStream.h"
 #include "core/SampleBlock.h"
 #include "core/storage/ChunkCodec.h"
 #include "core/storage/Recorder.h"
@@ -23,10 +24,12 @@
 namespace {
 
 using namespace tactiscope;
+using bench::eightChannelBlock;
+using bench::eightChannels;
+using bench::kChannels;
+using bench::kRate_hz;
 using namespace tactiscope::core::storage;
 
-constexpr std::size_t kChannels = 8;
-constexpr double kRate_hz = 2000.0;
 constexpr std::size_t kFrame = 20;  // samples per channel in one device frame (10 ms)
 
 std::string tempPath(const std::string& name)
@@ -38,28 +41,6 @@ std::string tempPath(const std::string& name)
 void removeStore(const std::string& path)
 {
     for (const char* suffix : {"", "-wal", "-shm", "-recorder.lock"}) std::filesystem::remove(path + suffix);
-}
-
-std::vector<core::ChannelDescriptor> channels()
-{
-    std::vector<core::ChannelDescriptor> result;
-    for (std::size_t c = 0; c < kChannels; ++c)
-        result.push_back({std::string(1, 's').append(std::to_string(c)), "", core::ChannelKind::Strain});
-    return result;
-}
-
-// A frame of noisy sines, different per channel.
-core::SampleBlock frame(std::uint64_t first, std::size_t count)
-{
-    core::SampleBlock block(kChannels, count, static_cast<double>(first) / kRate_hz, 1.0 / kRate_hz, first);
-    for (std::size_t c = 0; c < kChannels; ++c) {
-        auto values = block.channel(c);
-        for (std::size_t s = 0; s < count; ++s) {
-            const auto i = static_cast<double>(first + s);
-            values[s] = 1e-4 * std::sin(i * 0.001 * static_cast<double>(c + 1)) + 1e-6 * std::sin(i * 1.7);
-        }
-    }
-    return block;
 }
 
 SessionMetadata panelScan()
@@ -74,7 +55,8 @@ const std::vector<core::SampleBlock>& minuteOfFrames()
 {
     static const auto frames = [] {
         std::vector<core::SampleBlock> result;
-        for (std::uint64_t first = 0; first < 60 * 2000; first += kFrame) result.push_back(frame(first, kFrame));
+        for (std::uint64_t first = 0; first < 60 * 2000; first += kFrame)
+            result.push_back(eightChannelBlock(first, kFrame));
         return result;
     }();
     return frames;
@@ -104,7 +86,7 @@ void BM_RecordEightChannels2kHz(benchmark::State& state)
     const std::string path = tempPath("record.tactiscope");
     for (auto _ : state) {
         removeStore(path);
-        Recorder recorder(path, panelScan(), channels(), kRate_hz, 1'000'000);
+        Recorder recorder(path, panelScan(), eightChannels(), kRate_hz, 1'000'000);
         for (const auto& f : frames) recorder.consume(f);
         const auto stats = recorder.finish(SessionStatus::Complete);
         if (stats.samplesDropped > 0 || !stats.error.empty()) state.SkipWithError("samples were dropped");
@@ -126,14 +108,14 @@ struct ReviewStore {
         removeStore(path);
         SessionStore store(path);
         for (int s = 0; s < 999; ++s) {
-            const auto id = store.beginSession(panelScan(), channels(), kRate_hz);
-            store.appendBlocks(id, std::vector{frame(0, 2000)});
+            const auto id = store.beginSession(panelScan(), eightChannels(), kRate_hz);
+            store.appendBlocks(id, std::vector{eightChannelBlock(0, 2000)});
             store.endSession(id, SessionStatus::Complete);
         }
-        hour = store.beginSession(panelScan(), channels(), kRate_hz);
+        hour = store.beginSession(panelScan(), eightChannels(), kRate_hz);
         std::vector<core::SampleBlock> batch;
         for (std::uint64_t first = 0; first < 3600 * 2000; first += 4000) {
-            batch.push_back(frame(first, 4000));
+            batch.push_back(eightChannelBlock(first, 4000));
             if (batch.size() == 30) {
                 store.appendBlocks(hour, batch);
                 batch.clear();

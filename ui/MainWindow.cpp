@@ -268,22 +268,24 @@ void MainWindow::createMenus()
     view->addAction(m_xyDock->toggleViewAction());
     view->addSeparator();
     // Pause and hold act on every plot together, so traces and lanes stay aligned.
-    QAction* pause = view->addAction(tr("&Pause display"));
-    pause->setObjectName(QStringLiteral("pauseAction"));
-    pause->setCheckable(true);
-    pause->setShortcut(QKeySequence(tr("Ctrl+Space")));
-    pause->setToolTip(tr("Freeze the plots to look back; acquisition and recording go on (Ctrl+Space)"));
-    connect(pause, &QAction::toggled, this, [this](bool paused) {
-        for (LivePlotWidget* plot : allPlots()) plot->setPaused(paused);
-    });
-    QAction* hold = view->addAction(tr("&Hold value scale"));
-    hold->setObjectName(QStringLiteral("holdScaleAction"));
-    hold->setCheckable(true);
-    hold->setShortcut(QKeySequence(tr("Ctrl+H")));
-    hold->setToolTip(tr("Stop autoscaling the value axes; drag them to adjust (Ctrl+H)"));
-    connect(hold, &QAction::toggled, this, [this](bool held) {
-        for (LivePlotWidget* plot : allPlots()) plot->setScaleHeld(held);
-    });
+    const auto plotToggle = [this, view](const QString& text, const QString& name, const QString& keys,
+                                         const QString& tip, void (LivePlotWidget::*set)(bool)) {
+        QAction* action = view->addAction(text);
+        action->setObjectName(name);
+        action->setCheckable(true);
+        action->setShortcut(QKeySequence(keys));
+        action->setToolTip(tip);
+        connect(action, &QAction::toggled, this, [this, set](bool on) {
+            for (LivePlotWidget* plot : allPlots()) (plot->*set)(on);
+        });
+        return action;
+    };
+    QAction* pause = plotToggle(tr("&Pause display"), QStringLiteral("pauseAction"), tr("Ctrl+Space"),
+                                tr("Freeze the plots to look back; acquisition and recording go on (Ctrl+Space)"),
+                                &LivePlotWidget::setPaused);
+    QAction* hold =
+        plotToggle(tr("&Hold value scale"), QStringLiteral("holdScaleAction"), tr("Ctrl+H"),
+                   tr("Stop autoscaling the value axes; drag them to adjust (Ctrl+H)"), &LivePlotWidget::setScaleHeld);
     QToolBar* display = addToolBar(tr("Display"));
     display->setObjectName(QStringLiteral("displayToolBar"));
     display->setMovable(false);

@@ -1,0 +1,40 @@
+// The device the benchmarks stream: 8 strain channels at 2 kHz (the
+// workstation's sizing case), noisy sines that differ per channel.
+#pragma once
+
+#include "core/ChannelDescriptor.h"
+#include "core/SampleBlock.h"
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tactiscope::bench {
+
+inline constexpr std::size_t kChannels = 8;
+inline constexpr double kRate_hz = 2000.0;
+
+inline std::vector<core::ChannelDescriptor> eightChannels()
+{
+    std::vector<core::ChannelDescriptor> result;
+    for (std::size_t c = 0; c < kChannels; ++c)  // not "s" + …: GCC 12 warns falsely (-Wrestrict)
+        result.push_back({std::string(1, 's').append(std::to_string(c)), "", core::ChannelKind::Strain});
+    return result;
+}
+
+// Samples [first, first + count) of the stream.
+inline core::SampleBlock eightChannelBlock(std::uint64_t first, std::size_t count)
+{
+    core::SampleBlock block(kChannels, count, static_cast<double>(first) / kRate_hz, 1.0 / kRate_hz, first);
+    for (std::size_t c = 0; c < kChannels; ++c) {
+        auto values = block.channel(c);
+        for (std::size_t s = 0; s < count; ++s) {
+            const auto i = static_cast<double>(first + s);
+            values[s] = 1e-4 * std::sin(i * 0.001 * static_cast<double>(c + 1)) + 1e-6 * std::sin(i * 1.7);
+        }
+    }
+    return block;
+}
+
+}  // namespace tactiscope::bench
