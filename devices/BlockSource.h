@@ -8,6 +8,7 @@
 #include "devices/protocol/DecoderCounters.h"
 
 #include <chrono>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,12 @@ public:
     // What the wire protocol has counted (bytes, CRC errors, resyncs, …);
     // all zero for sources without one. Callable from any thread.
     virtual protocol::DecoderCounters decoderCounters() const { return {}; }
+
+    // The last bytes received on the wire (at most a few kB), for the raw
+    // data console; empty for sources without a wire. Any thread.
+    virtual std::vector<std::uint8_t> recentBytes() const { return {}; }
+    // Whether the wire carries text lines (else binary frames).
+    virtual bool textProtocol() const { return false; }
 };
 
 }  // namespace tactiscope::devices

@@ -89,6 +89,11 @@ void PortSource::pump(std::chrono::milliseconds timeout)
             m_queue.push_back(std::move(b));
         }
     };
+    {
+        const std::lock_guard lock(m_statusMutex);
+        m_recent.insert(m_recent.end(), bytes.begin(), bytes.end());
+        while (m_recent.size() > kRecentBytes) m_recent.pop_front();
+    }
     if (m_text) {
         std::vector<core::SampleBlock> blocks;
         m_text->push(bytes, arrival_s, blocks);
@@ -133,6 +138,12 @@ protocol::DecoderCounters PortSource::decoderCounters() const
 {
     const std::lock_guard lock(m_statusMutex);
     return m_counters;
+}
+
+std::vector<std::uint8_t> PortSource::recentBytes() const
+{
+    const std::lock_guard lock(m_statusMutex);
+    return {m_recent.begin(), m_recent.end()};
 }
 
 std::optional<protocol::DeviceInfo> PortSource::deviceInfo() const

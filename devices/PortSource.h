@@ -45,6 +45,8 @@ public:
 
     // Thread-safe snapshots for the UI and the record summary.
     protocol::DecoderCounters decoderCounters() const override;
+    std::vector<std::uint8_t> recentBytes() const override;
+    bool textProtocol() const override { return m_text.has_value(); }
     std::optional<protocol::DeviceInfo> deviceInfo() const;
     // Host steady-clock time (seconds) of a block time, drift-corrected
     // (ClockSync.h). Block times count the device's clock (binary) or
@@ -67,9 +69,11 @@ private:
     double m_rate_hz = 0.0;
     std::string m_error;
     std::uint16_t m_commandSequence = 0;
+    static constexpr std::size_t kRecentBytes = 4096;
     std::vector<std::uint8_t> m_chunk = std::vector<std::uint8_t>(4096);
     mutable std::mutex m_statusMutex;  // guards the snapshots below
     protocol::DecoderCounters m_counters;
+    std::deque<std::uint8_t> m_recent;  // the last kRecentBytes received
     std::optional<protocol::DeviceInfo> m_info;
     ClockSync m_clock;
 };

@@ -76,6 +76,18 @@ protocol::DecoderCounters ReconnectingSource::decoderCounters() const
     return sum;
 }
 
+std::vector<std::uint8_t> ReconnectingSource::recentBytes() const
+{
+    const std::lock_guard lock(m_countersMutex);
+    return m_source ? m_source->recentBytes() : std::vector<std::uint8_t>{};
+}
+
+bool ReconnectingSource::textProtocol() const
+{
+    const std::lock_guard lock(m_countersMutex);
+    return m_source && m_source->textProtocol();
+}
+
 ReadStatus ReconnectingSource::readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout)
 {
     if (!m_source) {

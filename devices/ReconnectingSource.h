@@ -43,6 +43,9 @@ public:
     std::string lastError() const override { return m_error; }
     // Summed over every connection so far.
     protocol::DecoderCounters decoderCounters() const override;
+    // Of the current connection.
+    std::vector<std::uint8_t> recentBytes() const override;
+    bool textProtocol() const override;
 
     DeviceState state() const { return m_state; }  // any thread
     std::uint64_t reconnections() const { return m_reconnections; }

@@ -19,6 +19,7 @@
 #include "ui/LivePlotWidget.h"
 #include "ui/PalpationView.h"
 #include "ui/PanelScanView.h"
+#include "ui/RawConsole.h"
 #include "ui/SessionBar.h"
 #include "ui/XYPlotWidget.h"
 
@@ -157,6 +158,13 @@ MainWindow::MainWindow(QWidget* parent)
     m_xyDock->setWidget(m_xyPlot);
     addDockWidget(Qt::RightDockWidgetArea, m_xyDock);
     m_xyDock->hide();  // on request (View menu): the mode views come first
+    m_rawConsole = new RawConsole(this);
+    m_rawConsole->setObjectName(QStringLiteral("rawConsole"));
+    m_consoleDock = new QDockWidget(tr("Raw data"), this);
+    m_consoleDock->setObjectName(QStringLiteral("consoleDock"));
+    m_consoleDock->setWidget(m_rawConsole);
+    addDockWidget(Qt::BottomDockWidgetArea, m_consoleDock);
+    m_consoleDock->hide();  // for troubleshooting a probe
     connect(m_devicePanel, &DevicePanel::connectRequested, this, &MainWindow::connectRequest);
     connect(m_devicePanel, &DevicePanel::disconnectRequested, this, &MainWindow::disconnectSource);
     createMenus();
@@ -266,6 +274,7 @@ void MainWindow::createMenus()
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_deviceDock->toggleViewAction());
     view->addAction(m_xyDock->toggleViewAction());
+    view->addAction(m_consoleDock->toggleViewAction());
     view->addSeparator();
     // Pause and hold act on every plot together, so traces and lanes stay aligned.
     const auto plotToggle = [this, view](const QString& text, const QString& name, const QString& keys,
@@ -467,6 +476,25 @@ void MainWindow::takeDetectorEvents()
         stored.push_back(event);
     }
     m_recorder->addEvents(std::move(stored));
+}
+
+// The paper's lags (2–150 ms in 2 ms steps) assume 500 Hz; a slower probe
+// starts at one sample interval and steps by it. A rate the detector still
+// cannot work at is said, and the traces go on without it.
+void MainWindow::attachDetection(const std::vector<std::size_t>& strain, double rate_hz)
+{
+    core::detector::LiveDetectionSettings settings;
+    const double step_s = std::max(0.002, 1.0 / rate_hz);
+    try {
+        settings.parameters.lags_s = core::detector::lagRange_s(step_s, 0.150, step_s);
+        m_detection = std::make_shared<core::detector::LiveDetection>(strain, rate_hz, settings,
+                                                                      LivePlotWidget::kMaxWindow_s + 2.0);
+    } catch (const std::invalid_argument& e) {
+        showProblem(tr("No defect detection"), tr("The surface-deflection detector cannot run on this probe's stream."),
+                    QString::fromStdString(e.what()));
+        return;
+    }
+    m_acquisition->addSink(m_detection);
 }
 
 // Palpation runs whenever the probe has two beams and a displacement
@@ -767,11 +795,7 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
     std::vector<std::size_t> strain;
     for (std::size_t c = 0; c < channels.size(); ++c)
         if (channels[c].kind == core::ChannelKind::Strain) strain.push_back(c);
-    if (strain.size() >= 2) {
-        m_detection = std::make_shared<core::detector::LiveDetection>(
-            strain, rate_hz, core::detector::LiveDetectionSettings{}, LivePlotWidget::kMaxWindow_s + 2.0);
-        m_acquisition->addSink(m_detection);
-    }
+    if (strain.size() >= 2) attachDetection(strain, rate_hz);
     m_panelScan->setDetection(m_detection, rate_hz);
     attachPalpation(channels, rate_hz);
     attachCapacitive(channels, rate_hz);
@@ -783,6 +807,7 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
     setWindowTitle(tr("Tactiscope — %1").arg(name));
     m_deviceLabel->setText(name);
     m_devicePanel->setConnected(true, name);
+    m_rawConsole->setSource(&m_acquisition->source());
     updateStatus();
     m_statusTimer.start();
     m_sessionBar->setRecordEnabled(true);
@@ -794,6 +819,7 @@ void MainWindow::disconnectSource()
     m_connectingLabel.reset();
     stopRecording();  // the user ended the session by disconnecting
     m_statusTimer.stop();
+    m_rawConsole->setSource(nullptr);  // before the source goes
     if (m_acquisition) m_acquisition->stop();
     m_plot->clearSource();
     m_acquisition.reset();

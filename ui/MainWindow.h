@@ -51,6 +51,7 @@ class CapacitiveView;
 class DevicePanel;
 class LivePlotWidget;
 class PalpationView;
+class RawConsole;
 struct SourceRequest;
 class PanelScanView;
 class SessionBar;
@@ -118,6 +119,7 @@ private:
     void showModeXY(const QWidget* view);
     void takeDetectorEvents();
     void addMarker(double time_s, const QString& note);
+    void attachDetection(const std::vector<std::size_t>& strain, double rate_hz);
     void attachPalpation(const std::vector<core::ChannelDescriptor>& channels, double rate_hz);
     void takePalpationReadings();
     void attachCapacitive(const std::vector<core::ChannelDescriptor>& channels, double rate_hz);
@@ -138,6 +140,8 @@ private:
     QDockWidget* m_deviceDock = nullptr;
     XYPlotWidget* m_xyPlot = nullptr;
     QDockWidget* m_xyDock = nullptr;
+    RawConsole* m_rawConsole = nullptr;
+    QDockWidget* m_consoleDock = nullptr;
     QLabel* m_recordingLabel = nullptr;
     QLabel* m_deviceLabel = nullptr;
     QLabel* m_linkLabel = nullptr;  // state, rate and losses in one line
