@@ -11,8 +11,6 @@
 #include <QMessageBox>
 #include <QPushButton>
 
-#include <fstream>
-
 namespace tactiscope::ui {
 namespace {
 
@@ -32,12 +30,8 @@ QString exportSessions(const QString& storePath, const std::vector<std::int64_t>
     try {
         core::storage::SessionStore store(storePath.toStdString(), core::storage::Database::Access::ReadOnly);
         for (const std::int64_t id : sessions) {
-            const QString base = QDir(folder).filePath(QStringLiteral("session-%1").arg(id));
-            std::ofstream csv((base + QStringLiteral(".csv")).toStdString());
-            core::storage::writeSessionCsv(store, id, csv);
-            std::ofstream meta((base + QStringLiteral(".meta.json")).toStdString());
-            core::storage::writeSessionMetadataJson(store, id, meta);
-            if (!csv || !meta) return QObject::tr("could not write %1").arg(base);
+            const QString csv = QDir(folder).filePath(QStringLiteral("session-%1.csv").arg(id));
+            core::storage::exportSession(store, id, core::storage::ExportFormat::Csv, csv.toStdString());
         }
     } catch (const core::storage::StorageError& e) {
         return QString::fromStdString(e.what());

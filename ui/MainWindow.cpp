@@ -357,6 +357,11 @@ void MainWindow::chooseStore()
     reportInterruptedSessions();
 }
 
+bool MainWindow::setMode(const QString& mode)
+{
+    return m_sessionBar->setMode(mode);  // the bar says when the mode changed
+}
+
 void MainWindow::reportInterruptedSessions()
 {
     // Each interrupted session is reported once, on the first start after it.
@@ -497,16 +502,25 @@ void MainWindow::attachDetection(const std::vector<std::size_t>& strain, double 
     m_acquisition->addSink(m_detection);
 }
 
+// The mode's active profile, remembered for the sessions it records; a bad
+// file is said, and the built-in profile of the mode is used instead.
+core::sensors::SensorProfile MainWindow::modeProfile(const std::string& mode)
+{
+    ActiveProfile active = activeProfile(QString::fromStdString(mode));
+    if (!active.error.isEmpty())
+        showProblem(tr("Bad profile"),
+                    tr("The %1 profile could not be used; the paper's sensor is used instead.")
+                        .arg(QString::fromStdString(mode)),
+                    active.error);
+    m_modeProfiles[mode] = core::sensors::toJson(active.profile);
+    return std::move(active.profile);
+}
+
 // Palpation runs whenever the probe has two beams and a displacement
 // channel, with the palpation mode's active profile.
 void MainWindow::attachPalpation(const std::vector<core::ChannelDescriptor>& channels, double rate_hz)
 {
-    const ActiveProfile active = activeProfile(QStringLiteral("palpation"));
-    if (!active.error.isEmpty())
-        showProblem(tr("Bad profile"),
-                    tr("The palpation profile could not be used; the paper's probe is used instead."), active.error);
-    const auto& probe = std::get<core::sensors::CompliancePairProfile>(active.profile);
-    m_modeProfiles["palpation"] = core::sensors::toJson(active.profile);
+    const auto probe = std::get<core::sensors::CompliancePairProfile>(modeProfile("palpation"));
     core::compliance::LivePalpationSettings settings;
     settings.high = probe.high;
     settings.low = probe.low;
@@ -527,13 +541,7 @@ void MainWindow::attachPalpation(const std::vector<core::ChannelDescriptor>& cha
 // sensor in the session store (else the beam model).
 void MainWindow::attachCapacitive(const std::vector<core::ChannelDescriptor>& channels, double rate_hz)
 {
-    const ActiveProfile active = activeProfile(QStringLiteral("capacitive"));
-    if (!active.error.isEmpty())
-        showProblem(tr("Bad profile"),
-                    tr("The capacitive profile could not be used; the paper's sensor No. 1 is used instead."),
-                    active.error);
-    const auto& probe = std::get<core::sensors::CapacitiveBeamProfile>(active.profile);
-    m_modeProfiles["capacitive"] = core::sensors::toJson(active.profile);
+    const auto probe = std::get<core::sensors::CapacitiveBeamProfile>(modeProfile("capacitive"));
     const core::sensors::CapacitiveBeam beam(probe.geometry);
     auto sensitivity = core::capacitive::CapacitiveSensitivity::fromModel(beam);
     core::capacitive::DriftSettings drift;

@@ -9,6 +9,7 @@
 // the GUI never waits on the device.
 #pragma once
 
+#include "core/sensors/SensorProfile.h"
 #include "core/storage/SessionStore.h"
 #include "devices/BlockSource.h"
 #include "devices/ReconnectingSource.h"
@@ -89,6 +90,8 @@ public:
     bool startRecording();
     void stopRecording();
     bool isRecording() const { return m_recorder != nullptr; }
+    // "panel-scan", "palpation" or "capacitive"; false for another name.
+    bool setMode(const QString& mode);
     // Reports, once, sessions of the store that a crash cut short.
     void reportInterruptedSessions();
     // A timestamped marker in the session being recorded.
@@ -119,6 +122,7 @@ private:
     void showModeXY(const QWidget* view);
     void takeDetectorEvents();
     void addMarker(double time_s, const QString& note);
+    core::sensors::SensorProfile modeProfile(const std::string& mode);
     void attachDetection(const std::vector<std::size_t>& strain, double rate_hz);
     void attachPalpation(const std::vector<core::ChannelDescriptor>& channels, double rate_hz);
     void takePalpationReadings();

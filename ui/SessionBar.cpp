@@ -95,10 +95,16 @@ core::storage::SessionMetadata SessionBar::metadata() const
 
 void SessionBar::setMetadata(const core::storage::SessionMetadata& metadata)
 {
-    const int mode = m_mode->findData(QString::fromStdString(metadata.mode));
-    if (mode >= 0) m_mode->setCurrentIndex(mode);
+    setMode(QString::fromStdString(metadata.mode));
     m_subject->setText(QString::fromStdString(metadata.subject));
     m_operator->setText(QString::fromStdString(metadata.operatorName));
+}
+
+bool SessionBar::setMode(const QString& mode)
+{
+    const int index = m_mode->findData(mode);
+    if (index >= 0) m_mode->setCurrentIndex(index);
+    return index >= 0;
 }
 
 void SessionBar::setRecordEnabled(bool enabled)

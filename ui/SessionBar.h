@@ -25,6 +25,8 @@ public:
     // Mode, subject and operator as typed (trimmed).
     core::storage::SessionMetadata metadata() const;
     void setMetadata(const core::storage::SessionMetadata& metadata);
+    // False, and nothing changes, for an unknown mode.
+    bool setMode(const QString& mode);
 
     void setRecordEnabled(bool enabled);  // a device is streaming
     void setRecording(bool recording);

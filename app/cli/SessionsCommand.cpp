@@ -7,13 +7,9 @@
 #include "core/storage/SessionStore.h"
 #include "core/text/JsonWriter.h"
 
-#include <QDir>
-#include <QFileInfo>
 #include <QTextStream>
 
 #include <filesystem>
-#include <fstream>
-#include <functional>
 #include <iostream>
 
 namespace tactiscope::cli {
@@ -110,51 +106,15 @@ int show(SessionStore& store, std::int64_t id, bool json)
     return kExitOk;
 }
 
-// Writes through a temporary file renamed into place, so a failed export
-// never leaves half a file under the requested name.
-bool writeAtomically(const std::string& path, const std::function<void(std::ostream&)>& write, QString& error)
-{
-    const std::string temporary = path + ".partial";
-    {
-        std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-        if (!file) {
-            error = QStringLiteral("cannot write %1").arg(toQString(path));
-            return false;
-        }
-        write(file);
-        file.flush();
-        if (!file) {
-            std::filesystem::remove(temporary);
-            error = QStringLiteral("writing %1 failed (disk full?)").arg(toQString(path));
-            return false;
-        }
-    }
-    std::error_code code;
-    std::filesystem::rename(temporary, path, code);
-    if (code) error = QStringLiteral("cannot write %1: %2").arg(toQString(path), toQString(code.message()));
-    return !code;
-}
-
 int exportSession(SessionStore& store, std::int64_t id, const QString& format, const QString& output)
 {
-    const std::string path = output.toStdString();
-    QString error;
-    bool ok = false;
-    if (format == QLatin1String("csv")) {
-        // Metadata goes into a side file: out.csv → out.meta.json.
-        const QFileInfo info(output);
-        const std::string sidecar =
-            (info.dir().filePath(info.completeBaseName() + QStringLiteral(".meta.json"))).toStdString();
-        ok = writeAtomically(
-                 path, [&](std::ostream& out) { core::storage::writeSessionCsv(store, id, out); }, error) &&
-             writeAtomically(
-                 sidecar, [&](std::ostream& out) { core::storage::writeSessionMetadataJson(store, id, out); }, error);
-    } else {
-        ok = writeAtomically(
-            path, [&](std::ostream& out) { core::storage::writeSessionJson(store, id, out); }, error);
-    }
-    if (!ok) {
-        printError(error);
+    try {
+        core::storage::exportSession(store, id,
+                                     format == QLatin1String("csv") ? core::storage::ExportFormat::Csv
+                                                                    : core::storage::ExportFormat::Json,
+                                     output.toStdString());
+    } catch (const core::storage::StorageError& e) {
+        printError(toQString(e.what()));
         return kExitFailure;
     }
     return kExitOk;

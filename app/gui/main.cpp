@@ -8,7 +8,6 @@
 #include "ui/MainWindow.h"
 
 #include <QApplication>
-#include <QComboBox>
 #include <QCommandLineParser>
 #include <QTextStream>
 #include <QTimer>
@@ -50,14 +49,11 @@ int main(int argc, char* argv[])
 
     tactiscope::ui::MainWindow window;
     if (parser.isSet(QStringLiteral("mode"))) {
-        auto* mode = window.findChild<QComboBox*>(QStringLiteral("modeBox"));
-        const int index = mode->findData(parser.value(QStringLiteral("mode")));
-        if (index < 0) {
+        if (!window.setMode(parser.value(QStringLiteral("mode")))) {
             QTextStream(stderr) << "tactiscope: unknown mode " << parser.value(QStringLiteral("mode"))
                                 << "; one of panel-scan, palpation, capacitive\n";
             return 2;
         }
-        mode->setCurrentIndex(index);
     }
     window.connectSource(std::make_unique<tactiscope::devices::simulator::SimulatorSource>(
         tactiscope::devices::simulator::makeScenario(scenario)));

@@ -1,10 +1,24 @@
 // Min/max decimation for plotting (see header).
 #include "core/signal/MinMaxDecimation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace tactiscope::core::signal {
+
+ColumnExtremes columnExtremes(std::span<const double> y)
+{
+    // NaN marks "no value" (a gap, a quantity undefined there).
+    std::size_t lo = y.size(), hi = y.size();
+    for (std::size_t i = 0; i < y.size(); ++i) {
+        if (std::isnan(y[i])) continue;
+        if (lo == y.size() || y[i] < y[lo]) lo = i;
+        if (hi == y.size() || y[i] > y[hi]) hi = i;
+    }
+    if (lo == y.size()) return {0, 0};
+    return {std::min(lo, hi), std::max(lo, hi)};
+}
 
 void decimateMinMax(std::span<const double> t, std::span<const double> y, double columnWidth_s,
                     std::vector<double>& tOut, std::vector<double>& yOut)
@@ -30,29 +44,12 @@ void decimateMinMax(std::span<const double> t, std::span<const double> y, double
         const double column = columnOf(t[begin]);
         std::size_t end = begin + 1;
         while (end < t.size() && columnOf(t[end]) == column) ++end;
-        // NaN marks "no value" (a gap, a quantity undefined there): it takes
-        // no part in the extremes, and a column of nothing but NaN keeps one
-        // NaN so the drawn line breaks there.
-        std::size_t lo = end;
-        std::size_t hi = end;
-        for (std::size_t i = begin; i < end; ++i) {
-            if (std::isnan(y[i])) continue;
-            if (lo == end || y[i] < y[lo]) lo = i;
-            if (hi == end || y[i] > y[hi]) hi = i;
-        }
-        if (lo == end) {
-            tOut.push_back(t[begin]);
-            yOut.push_back(y[begin]);
-            begin = end;
-            continue;
-        }
-        const std::size_t first = lo < hi ? lo : hi;
-        const std::size_t second = lo < hi ? hi : lo;
-        tOut.push_back(t[first]);
-        yOut.push_back(y[first]);
+        const auto [first, second] = columnExtremes(y.subspan(begin, end - begin));
+        tOut.push_back(t[begin + first]);
+        yOut.push_back(y[begin + first]);
         if (second != first) {
-            tOut.push_back(t[second]);
-            yOut.push_back(y[second]);
+            tOut.push_back(t[begin + second]);
+            yOut.push_back(y[begin + second]);
         }
         begin = end;
     }

@@ -14,6 +14,15 @@
 
 namespace tactiscope::core::signal {
 
+// The samples that stand for one column: the indices of its minimum and
+// maximum in time order (equal when one sample is both). NaN takes no part;
+// a column of nothing but NaN is its first sample, so the line breaks there.
+struct ColumnExtremes {
+    std::size_t first = 0;
+    std::size_t second = 0;
+};
+ColumnExtremes columnExtremes(std::span<const double> y);
+
 // t must be non-decreasing and the same length as y; columnWidth_s > 0.
 // When there are no more than two samples per column on average, the samples
 // are returned unchanged. NaN samples are "no value": a column's extremes

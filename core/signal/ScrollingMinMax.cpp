@@ -31,25 +31,12 @@ void ScrollingMinMax::append(std::span<const double> t, std::span<const double> 
 
 void ScrollingMinMax::closeColumn()
 {
-    // One column: decimateMinMax with a width of the whole column would pass
-    // two samples through; pick the extremes here with its NaN rule instead.
-    std::size_t lo = m_openT.size(), hi = m_openT.size();
-    for (std::size_t i = 0; i < m_openT.size(); ++i) {
-        if (std::isnan(m_openY[i])) continue;
-        if (lo == m_openT.size() || m_openY[i] < m_openY[lo]) lo = i;
-        if (hi == m_openT.size() || m_openY[i] > m_openY[hi]) hi = i;
-    }
-    if (lo == m_openT.size()) {
-        m_t.push_back(m_openT.front());
-        m_y.push_back(m_openY.front());
-    } else {
-        const std::size_t first = std::min(lo, hi), second = std::max(lo, hi);
-        m_t.push_back(m_openT[first]);
-        m_y.push_back(m_openY[first]);
-        if (second != first) {
-            m_t.push_back(m_openT[second]);
-            m_y.push_back(m_openY[second]);
-        }
+    const auto [first, second] = columnExtremes(m_openY);
+    m_t.push_back(m_openT[first]);
+    m_y.push_back(m_openY[first]);
+    if (second != first) {
+        m_t.push_back(m_openT[second]);
+        m_y.push_back(m_openY[second]);
     }
     m_openT.clear();
     m_openY.clear();

@@ -5,6 +5,7 @@
 #include "core/SampleBlock.h"
 #include "core/io/CsvReader.h"
 #include "core/storage/RecorderLock.h"
+#include "core/storage/SessionExport.h"
 
 #include <nlohmann/json.hpp>
 
@@ -85,15 +86,14 @@ double roundRate(double rate_hz)
 // The side file of a Tactiscope export, when there is one: X.csv → X.meta.json.
 std::optional<nlohmann::json> readSideFile(const std::string& csvPath)
 {
-    std::filesystem::path side(csvPath);
-    side.replace_extension(".meta.json");
+    const std::string side = metadataSidePath(csvPath);
     std::ifstream in(side);
     if (!in) return std::nullopt;
     try {
         auto json = nlohmann::json::parse(in);
         if (json.contains("session") && json.contains("channels")) return json;
     } catch (const nlohmann::json::exception& e) {
-        throw CsvError("'" + side.string() + "' is not a Tactiscope metadata file: " + e.what());
+        throw CsvError("'" + side + "' is not a Tactiscope metadata file: " + e.what());
     }
     return std::nullopt;
 }

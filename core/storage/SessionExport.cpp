@@ -6,6 +6,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 
 namespace tactiscope::core::storage {
@@ -210,6 +212,43 @@ void writeSessionJson(SessionStore& store, std::int64_t session, std::ostream& o
         out << ']';
     }
     out << "}}\n";
+}
+
+std::string metadataSidePath(const std::string& csvPath)
+{
+    return std::filesystem::path(csvPath).replace_extension(".meta.json").string();
+}
+
+namespace {
+
+void writeAtomically(const std::string& path, const std::function<void(std::ostream&)>& write)
+{
+    const std::string temporary = path + ".partial";
+    {
+        std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+        if (!file) throw StorageError("cannot write " + path);
+        write(file);
+        file.flush();
+        if (!file) {
+            std::filesystem::remove(temporary);
+            throw StorageError("writing " + path + " failed (disk full?)");
+        }
+    }
+    std::error_code code;
+    std::filesystem::rename(temporary, path, code);
+    if (code) throw StorageError("cannot write " + path + ": " + code.message());
+}
+
+}  // namespace
+
+void exportSession(SessionStore& store, std::int64_t session, ExportFormat format, const std::string& path)
+{
+    if (format == ExportFormat::Json) {
+        writeAtomically(path, [&](std::ostream& out) { writeSessionJson(store, session, out); });
+        return;
+    }
+    writeAtomically(path, [&](std::ostream& out) { writeSessionCsv(store, session, out); });
+    writeAtomically(metadataSidePath(path), [&](std::ostream& out) { writeSessionMetadataJson(store, session, out); });
 }
 
 }  // namespace tactiscope::core::storage

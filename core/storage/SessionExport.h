@@ -12,11 +12,24 @@
 #include "core/storage/SessionStore.h"
 
 #include <ostream>
+#include <string>
 
 namespace tactiscope::core::storage {
 
 void writeSessionCsv(SessionStore& store, std::int64_t session, std::ostream& out);
 void writeSessionMetadataJson(SessionStore& store, std::int64_t session, std::ostream& out);
 void writeSessionJson(SessionStore& store, std::int64_t session, std::ostream& out);
+
+// The side file a CSV export's metadata goes to (and an import reads it
+// from): X.csv → X.meta.json.
+std::string metadataSidePath(const std::string& csvPath);
+
+enum class ExportFormat { Csv, Json };
+
+// Writes a session to `path`: CSV with its metadata side file, or JSON.
+// Each file goes through a temporary one renamed into place, so a failed
+// export never leaves half a file under the requested name. Throws
+// StorageError ("cannot write P", "writing P failed (disk full?)").
+void exportSession(SessionStore& store, std::int64_t session, ExportFormat format, const std::string& path);
 
 }  // namespace tactiscope::core::storage

@@ -1,7 +1,9 @@
-// What the main-window tests share: a live simulator as the device, and a
-// named child widget that must exist.
+// What the main-window tests share: a live simulator as the device, an
+// opener for a port path (an emulator's link), and a named child widget that
+// must exist.
 #pragma once
 
+#include "devices/DeviceDiscovery.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
 
@@ -17,6 +19,12 @@ namespace tactiscope::testing {
 inline std::unique_ptr<devices::BlockSource> liveSimulator(const std::string& scenario = "panel-scan")
 {
     return std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario(scenario));
+}
+
+inline devices::ReconnectingSource::Opener serialOpener(const std::string& path,
+                                                        const devices::PortSourceOptions& options = {})
+{
+    return devices::deviceOpener({devices::DeviceBus::Serial, path, {}, path}, 921600, options);
 }
 
 template <typename Widget>

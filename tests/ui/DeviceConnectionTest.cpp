@@ -34,6 +34,7 @@ using devices::WireProtocol;
 using devices::emulator::ProbeEmulator;
 using tactiscope::testing::child;
 using tactiscope::testing::saveScreenshot;
+using tactiscope::testing::serialOpener;
 using tactiscope::testing::waitFor;
 
 using tactiscope::testing::uniqueTempPath;
@@ -48,11 +49,6 @@ QString stateText(const ui::MainWindow& window)
 std::uint64_t counter(const ui::MainWindow& window, const char* name)
 {
     return QLocale().toULongLong(child<QLabel>(window, name)->text());
-}
-
-devices::ReconnectingSource::Opener serialOpener(const std::string& link)
-{
-    return devices::deviceOpener({devices::DeviceBus::Serial, link, {}, link}, 921600, devices::PortSourceOptions{});
 }
 
 }  // namespace

@@ -52,8 +52,7 @@ QString consoleTextAfterConnecting(ui::MainWindow& window, devices::WireProtocol
     devices::PortSourceOptions options;
     options.protocol = protocol;
     options.textRate_hz = 200.0;
-    window.connectDevice(QString::fromStdString(link),
-                         devices::deviceOpener({devices::DeviceBus::Serial, link, {}, link}, 921600, options));
+    window.connectDevice(QString::fromStdString(link), tactiscope::testing::serialOpener(link, options));
     child<QDockWidget>(window, "consoleDock")->show();
     auto* text = child<QPlainTextEdit>(window, "rawText");
     EXPECT_TRUE(waitFor([&] { return text->toPlainText().count(QLatin1Char('\n')) > lines; }, 6000));
