@@ -3,6 +3,7 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <QObject>
 #include <QSettings>
 
 #include <variant>
@@ -15,16 +16,16 @@ QString settingsKey(const QString& mode)
     return QStringLiteral("profiles/%1").arg(mode);
 }
 
-bool fitsMode(const core::sensors::SensorProfile& profile, const QString& mode)
+}  // namespace
+
+bool profileFitsMode(const core::sensors::SensorProfile& profile, const QString& mode)
 {
     if (mode == QLatin1String("palpation"))
         return std::holds_alternative<core::sensors::CompliancePairProfile>(profile);
     if (mode == QLatin1String("capacitive"))
         return std::holds_alternative<core::sensors::CapacitiveBeamProfile>(profile);
-    return true;
+    return false;
 }
-
-}  // namespace
 
 QString builtInProfilePath(const QString& mode)
 {
@@ -50,13 +51,18 @@ ActiveProfile activeProfile(const QString& mode)
     if (chosen != builtIn) {
         try {
             auto profile = readProfile(chosen);
-            if (fitsMode(profile, mode)) return {std::move(profile), chosen, {}};
+            if (profileFitsMode(profile, mode)) return {std::move(profile), chosen, {}};
             error = QStringLiteral("%1: not a profile for the %2 mode").arg(QFileInfo(chosen).fileName(), mode);
         } catch (const core::sensors::ProfileError& e) {
             error = QString::fromStdString(e.what());
         }
     }
     return {readProfile(builtIn), builtIn, error};
+}
+
+QString probeLine(const QString& profileName)
+{
+    return QObject::tr("Probe: %1 · <a href=\"profiles\">Change…</a>").arg(profileName.toHtmlEscaped());
 }
 
 void setActiveProfilePath(const QString& mode, const QString& path)

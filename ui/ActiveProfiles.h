@@ -8,6 +8,7 @@
 #include "core/sensors/SensorProfile.h"
 
 #include <QString>
+#include <QStringList>
 
 namespace tactiscope::ui {
 
@@ -17,10 +18,23 @@ struct ActiveProfile {
     QString error;  // why the chosen file was not used; empty when it was
 };
 
+// The modes that run on a sensor profile, and whether a profile is a probe
+// for one: a compliance pair for "palpation", a capacitive beam for
+// "capacitive".
+inline const QStringList& profileModes()
+{
+    static const QStringList modes{QStringLiteral("palpation"), QStringLiteral("capacitive")};
+    return modes;
+}
+bool profileFitsMode(const core::sensors::SensorProfile& profile, const QString& mode);
+
 // The built-in profile of a mode ("palpation", "capacitive").
 QString builtInProfilePath(const QString& mode);
 ActiveProfile activeProfile(const QString& mode);
 void setActiveProfilePath(const QString& mode, const QString& path);
+// The line a mode view shows its probe in (rich text): the profile's name
+// and a "Change…" link that asks for the profile dialog.
+QString probeLine(const QString& profileName);
 // Reads a profile through Qt's file system (so ":/" paths work). Throws
 // core::sensors::ProfileError.
 core::sensors::SensorProfile readProfile(const QString& path);

@@ -1,6 +1,7 @@
 // CapacitiveView: lanes, large readouts, baseline and calibration lines.
 #include "ui/CapacitiveView.h"
 
+#include "ui/ActiveProfiles.h"
 #include "ui/LivePlotWidget.h"
 
 #include <QGridLayout>
@@ -35,6 +36,8 @@ CapacitiveView::CapacitiveView(QWidget* parent)
     m_tare->setToolTip(tr("With the beam unloaded: the last half second's mean becomes the baseline C0"));
     m_calibration->setWordWrap(true);
     m_calibration->setStyleSheet(QStringLiteral("color: palette(placeholder-text);"));
+    m_calibration->setTextFormat(Qt::RichText);
+    connect(m_calibration, &QLabel::linkActivated, this, &CapacitiveView::profilesRequested);
 
     auto* side = new QVBoxLayout;
     side->addWidget(m_readoutPanel);
@@ -75,7 +78,8 @@ void CapacitiveView::setCapacitive(std::shared_ptr<core::capacitive::LiveCapacit
 {
     m_capacitive = std::move(capacitive);
     m_tare->setEnabled(m_capacitive != nullptr);
-    m_calibration->setText(tr("Probe: %1\nCalibration: %2").arg(probe, calibration));
+    m_calibration->setText(probe.isEmpty() ? QString()
+                                           : tr("%1<br>Calibration: %2").arg(probeLine(probe), calibration.toHtmlEscaped()));
     if (!m_capacitive) {
         m_lanes->clearSource();
         return;

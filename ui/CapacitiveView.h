@@ -35,6 +35,9 @@ public:
 public slots:
     void tare();
 
+signals:
+    void profilesRequested();  // the probe line's "Change…" link
+
 private:
     QLabel* addReadout(const QString& caption, const char* objectName);
 

@@ -2,6 +2,7 @@
 #include "ui/MainWindow.h"
 
 #include "core/LiveBuffer.h"
+#include "core/SinkSlot.h"
 #include "core/Version.h"
 #include "core/capacitive/LiveCapacitive.h"
 #include "core/compliance/LivePalpation.h"
@@ -20,6 +21,7 @@
 #include "ui/PalpationView.h"
 #include "ui/PanelScanView.h"
 #include "ui/RawConsole.h"
+#include "ui/SensorProfileDialog.h"
 #include "ui/SessionBar.h"
 #include "ui/XYPlotWidget.h"
 
@@ -165,6 +167,8 @@ MainWindow::MainWindow(QWidget* parent)
     m_consoleDock->setWidget(m_rawConsole);
     addDockWidget(Qt::BottomDockWidgetArea, m_consoleDock);
     m_consoleDock->hide();  // for troubleshooting a probe
+    connect(m_palpationView, &PalpationView::profilesRequested, this, &MainWindow::showProfiles);
+    connect(m_capacitiveView, &CapacitiveView::profilesRequested, this, &MainWindow::showProfiles);
     connect(m_devicePanel, &DevicePanel::connectRequested, this, &MainWindow::connectRequest);
     connect(m_devicePanel, &DevicePanel::disconnectRequested, this, &MainWindow::disconnectSource);
     createMenus();
@@ -269,6 +273,7 @@ void MainWindow::createMenus()
                        &MainWindow::markEventWithNote);
     session->addAction(tr("&Tare"), QKeySequence(tr("Ctrl+T")), this, &MainWindow::tare);
     session->addSeparator();
+    session->addAction(tr("Sensor &profiles…"), QKeySequence(tr("Ctrl+Shift+P")), this, &MainWindow::showProfiles);
     session->addAction(tr("Session &store…"), this, &MainWindow::chooseStore);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
@@ -411,6 +416,7 @@ bool MainWindow::startRecording()
     m_panelScan->startPanel();
     m_palpationView->startSubject();
     m_sessionBar->setRecording(true);
+    lockProfiles();
     updateRecording();
     return true;
 }
@@ -422,6 +428,7 @@ void MainWindow::stopRecording()
     const auto recorder = std::exchange(m_recorder, nullptr);
     const auto stats = recorder->finish(core::storage::SessionStatus::Complete);
     m_sessionBar->setRecording(false);
+    lockProfiles();
     m_sessionBar->setRecordEnabled(m_acquisition != nullptr);
     const QLocale locale;
     m_recordingLabel->setStyleSheet(QString());
@@ -516,6 +523,44 @@ core::sensors::SensorProfile MainWindow::modeProfile(const std::string& mode)
     return std::move(active.profile);
 }
 
+SensorProfileDialog* MainWindow::showProfiles()
+{
+    if (!m_profileDialog) {
+        m_profileDialog = new SensorProfileDialog(ProfileLibrary::defaultDirectory(), this);
+        connect(m_profileDialog, &SensorProfileDialog::activeProfileChanged, this, &MainWindow::applyProfile);
+        lockProfiles();
+    }
+    if (!m_profileDialog->hasUnsavedChanges())
+        m_profileDialog->setMode(QString::fromStdString(m_sessionBar->metadata().mode));
+    m_profileDialog->show();
+    m_profileDialog->raise();
+    m_profileDialog->activateWindow();
+    return m_profileDialog;
+}
+
+// A session keeps the sensor it started with, so its readings and its stored
+// profile agree.
+void MainWindow::lockProfiles()
+{
+    if (m_profileDialog)
+        m_profileDialog->setLocked(isRecording(), tr("fixed while recording: a session keeps one sensor"));
+}
+
+void MainWindow::applyProfile(const QString& mode)
+{
+    if (!m_acquisition) return;  // the next connection reads it
+    const auto channels = m_acquisition->source().channels();
+    const double rate_hz = m_acquisition->source().nominalSampleRate_hz();
+    if (mode == QLatin1String("palpation")) {
+        attachPalpation(channels, rate_hz);
+        if (m_palpation) statusBar()->showMessage(tr("New probe profile: keep the probe lifted while it tares"), 5000);
+    } else if (mode == QLatin1String("capacitive")) {
+        attachCapacitive(channels, rate_hz);
+        if (m_capacitive) statusBar()->showMessage(tr("New beam profile: the baseline C0 is re-taken"), 5000);
+    }
+    showModeView();
+}
+
 // Palpation runs whenever the probe has two beams and a displacement
 // channel, with the palpation mode's active profile.
 void MainWindow::attachPalpation(const std::vector<core::ChannelDescriptor>& channels, double rate_hz)
@@ -532,7 +577,7 @@ void MainWindow::attachPalpation(const std::vector<core::ChannelDescriptor>& cha
     } catch (const std::invalid_argument&) {
         m_palpation.reset();  // not a compliance probe
     }
-    if (m_palpation) m_acquisition->addSink(m_palpation);
+    m_palpationSlot->set(m_palpation);
     m_palpationView->setPalpation(m_palpation, rate_hz, QString::fromStdString(probe.name));
 }
 
@@ -567,7 +612,7 @@ void MainWindow::attachCapacitive(const std::vector<core::ChannelDescriptor>& ch
     } catch (const std::invalid_argument&) {
         m_capacitive.reset();  // no capacitance channel
     }
-    if (m_capacitive) m_acquisition->addSink(m_capacitive);
+    m_capacitiveSlot->set(m_capacitive);
     m_capacitiveView->setCapacitive(m_capacitive, rate_hz, QString::fromStdString(probe.name), source);
 }
 
@@ -805,6 +850,10 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
         if (channels[c].kind == core::ChannelKind::Strain) strain.push_back(c);
     if (strain.size() >= 2) attachDetection(strain, rate_hz);
     m_panelScan->setDetection(m_detection, rate_hz);
+    m_palpationSlot = std::make_shared<core::SinkSlot>();
+    m_capacitiveSlot = std::make_shared<core::SinkSlot>();
+    m_acquisition->addSink(m_palpationSlot);
+    m_acquisition->addSink(m_capacitiveSlot);
     attachPalpation(channels, rate_hz);
     attachCapacitive(channels, rate_hz);
     showModeView();
@@ -835,6 +884,8 @@ void MainWindow::disconnectSource()
     m_detection.reset();
     m_palpation.reset();
     m_capacitive.reset();
+    m_palpationSlot.reset();
+    m_capacitiveSlot.reset();
     m_capacitiveCalibration.reset();
     m_panelScan->setDetection(nullptr, 0.0);
     m_palpationView->setPalpation(nullptr, 0.0, QString());

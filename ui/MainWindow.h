@@ -32,6 +32,9 @@ class QStackedWidget;
 namespace tactiscope::devices {
 class Acquisition;
 }
+namespace tactiscope::core {
+class SinkSlot;
+}
 namespace tactiscope::core::storage {
 class Recorder;
 class RecordingTap;
@@ -55,6 +58,7 @@ class PalpationView;
 class RawConsole;
 struct SourceRequest;
 class PanelScanView;
+class SensorProfileDialog;
 class SessionBar;
 class XYPlotWidget;
 
@@ -98,6 +102,8 @@ public:
     void markEvent(const QString& note = {});
     // Takes the time now and asks for the note without blocking.
     void markEventWithNote();
+    // The sensor-profile dialog (non-modal), opened on the current mode.
+    SensorProfileDialog* showProfiles();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -123,6 +129,9 @@ private:
     void takeDetectorEvents();
     void addMarker(double time_s, const QString& note);
     core::sensors::SensorProfile modeProfile(const std::string& mode);
+    // Rebuilds the mode's processor on its newly chosen profile.
+    void applyProfile(const QString& mode);
+    void lockProfiles();  // while recording
     void attachDetection(const std::vector<std::size_t>& strain, double rate_hz);
     void attachPalpation(const std::vector<core::ChannelDescriptor>& channels, double rate_hz);
     void takePalpationReadings();
@@ -146,6 +155,7 @@ private:
     QDockWidget* m_xyDock = nullptr;
     RawConsole* m_rawConsole = nullptr;
     QDockWidget* m_consoleDock = nullptr;
+    SensorProfileDialog* m_profileDialog = nullptr;  // created when first asked for
     QLabel* m_recordingLabel = nullptr;
     QLabel* m_deviceLabel = nullptr;
     QLabel* m_linkLabel = nullptr;  // state, rate and losses in one line
@@ -155,6 +165,9 @@ private:
     std::shared_ptr<core::detector::LiveDetection> m_detection;               // when the probe has two strain channels
     std::shared_ptr<core::compliance::LivePalpation> m_palpation;             // when it is a compliance probe
     std::shared_ptr<core::capacitive::LiveCapacitive> m_capacitive;           // when it has a capacitance channel
+    // Where those two sit on the acquisition: a new profile swaps them live.
+    std::shared_ptr<core::SinkSlot> m_palpationSlot;
+    std::shared_ptr<core::SinkSlot> m_capacitiveSlot;
     std::optional<core::storage::StoredCalibration> m_capacitiveCalibration;  // what m_capacitive uses
     std::shared_ptr<core::storage::Recorder> m_recorder;                      // while recording
     QString m_storePath;

@@ -2,6 +2,7 @@
 #include "ui/PalpationView.h"
 
 #include "core/compliance/ReferenceTissues.h"
+#include "ui/ActiveProfiles.h"
 #include "ui/LivePlotWidget.h"
 #include "ui/SiteGridMap.h"
 #include "ui/StiffnessScale.h"
@@ -76,6 +77,8 @@ PalpationView::PalpationView(QWidget* parent)
     m_status->setWordWrap(true);
     m_probe->setWordWrap(true);
     m_probe->setStyleSheet(QStringLiteral("color: palette(placeholder-text);"));
+    m_probe->setTextFormat(Qt::RichText);
+    connect(m_probe, &QLabel::linkActivated, this, &PalpationView::profilesRequested);
     m_tare->setMinimumHeight(40);
     m_tare->setToolTip(tr("Lift the probe, then tare: the next half second becomes the zero"));
     m_scale->setTissues(builtInTissues());
@@ -114,7 +117,7 @@ void PalpationView::setPalpation(std::shared_ptr<core::compliance::LivePalpation
                                  const QString& probeName)
 {
     m_palpation = std::move(palpation);
-    m_probe->setText(tr("Probe: %1").arg(probeName));
+    m_probe->setText(probeName.isEmpty() ? QString() : probeLine(probeName));
     m_tare->setEnabled(m_palpation != nullptr);
     if (!m_palpation) {
         m_lanes->clearSource();

@@ -55,6 +55,9 @@ public:
 public slots:
     void tare();
 
+signals:
+    void profilesRequested();  // the probe line's "Change…" link
+
 protected:
     void resizeEvent(QResizeEvent* event) override;
 

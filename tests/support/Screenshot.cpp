@@ -1,6 +1,7 @@
 // Screenshot helper for widget tests.
 #include "support/Screenshot.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QPixmap>
 #include <QWidget>
@@ -14,6 +15,9 @@ QString saveScreenshot(QWidget& widget, const QString& name)
     const QDir directory(override.isEmpty() ? QStringLiteral(TACTISCOPE_SCREENSHOT_DIR) : override);
     if (!directory.mkpath(QStringLiteral("."))) return {};
     const QString path = directory.filePath(name + QStringLiteral(".png"));
+    // Layouts settle on posted events: a widget grabbed right after show()
+    // would still have the sizes it had before its contents were set.
+    QCoreApplication::sendPostedEvents();
     return widget.grab().save(path, "PNG") ? path : QString();
 }
 
