@@ -78,8 +78,8 @@ void CapacitiveView::setCapacitive(std::shared_ptr<core::capacitive::LiveCapacit
 {
     m_capacitive = std::move(capacitive);
     m_tare->setEnabled(m_capacitive != nullptr);
-    m_calibration->setText(probe.isEmpty() ? QString()
-                                           : tr("%1<br>Calibration: %2").arg(probeLine(probe), calibration.toHtmlEscaped()));
+    m_calibration->setText(
+        probe.isEmpty() ? QString() : tr("%1<br>Calibration: %2").arg(probeLine(probe), calibration.toHtmlEscaped()));
     if (!m_capacitive) {
         m_lanes->clearSource();
         return;

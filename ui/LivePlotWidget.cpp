@@ -63,8 +63,21 @@ LivePlotWidget::LivePlotWidget(QWidget* parent)
     // Thin unsmoothed traces draw several times faster; text stays smooth.
     m_plot->setNotAntialiasedElements(QCP::aePlottables | QCP::aeGrid | QCP::aeSubGrid | QCP::aeZeroLine);
     m_plot->setNoAntialiasingOnDrag(true);
+    // One row, small type, thin frame: in a lane a hundred pixels high the
+    // legend must not hide the first second of the traces.
     m_plot->legend->setVisible(true);
-    m_plot->legend->setBrush(QColor(255, 255, 255, 220));
+    m_plot->legend->setBrush(QColor(255, 255, 255, 200));
+    m_plot->legend->setBorderPen(QPen(QColor(0, 0, 0, 60)));
+    m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    m_plot->legend->setWrap(0);
+    m_plot->legend->setColumnSpacing(10);
+    m_plot->legend->setMargins(QMargins(5, 3, 6, 3));
+    QFont legendFont = font();
+    legendFont.setPointSizeF(legendFont.pointSizeF() * 0.85);
+    m_plot->legend->setFont(legendFont);
+    // An icon lower than the text lets QCustomPlot cut the item box short
+    // and clip the underscore off "F_H"; a line's height keeps it whole.
+    m_plot->legend->setIconSize(18, QFontMetrics(legendFont).height() + 2);
     moveLegendTo(m_plot->axisRect());
     m_plot->xAxis->setLabel(tr("Time (s)"));
     m_plot->xAxis->setRange(0.0, m_window_s);

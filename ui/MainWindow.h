@@ -161,10 +161,10 @@ private:
     QLabel* m_linkLabel = nullptr;  // state, rate and losses in one line
     QTimer m_statusTimer;
     std::unique_ptr<devices::Acquisition> m_acquisition;
-    std::shared_ptr<core::storage::RecordingTap> m_tap;                       // on every acquisition
-    std::shared_ptr<core::detector::LiveDetection> m_detection;               // when the probe has two strain channels
-    std::shared_ptr<core::compliance::LivePalpation> m_palpation;             // when it is a compliance probe
-    std::shared_ptr<core::capacitive::LiveCapacitive> m_capacitive;           // when it has a capacitance channel
+    std::shared_ptr<core::storage::RecordingTap> m_tap;              // on every acquisition
+    std::shared_ptr<core::detector::LiveDetection> m_detection;      // when the probe has two strain channels
+    std::shared_ptr<core::compliance::LivePalpation> m_palpation;    // when it is a compliance probe
+    std::shared_ptr<core::capacitive::LiveCapacitive> m_capacitive;  // when it has a capacitance channel
     // Where those two sit on the acquisition: a new profile swaps them live.
     std::shared_ptr<core::SinkSlot> m_palpationSlot;
     std::shared_ptr<core::SinkSlot> m_capacitiveSlot;

@@ -47,8 +47,7 @@ protected:
     // The kind-specific profile from the fields, or the first field's problem.
     virtual FormResult fields() const = 0;
     QLineEdit* createNameEdit();
-    QuantityEdit* createField(const DisplayUnit& unit, double minimum_si, double maximum_si,
-                              const QString& objectName);
+    QuantityEdit* createField(const DisplayUnit& unit, double minimum_si, double maximum_si, const QString& objectName);
 
 private:
     QLineEdit* m_name = nullptr;

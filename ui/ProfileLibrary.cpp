@@ -55,8 +55,9 @@ std::vector<ProfileEntry> ProfileLibrary::entries(const QString& mode, const QSt
         ProfileEntry entry = readEntry(directory.filePath(file), false);
         if (belongsTo(entry, mode)) library.push_back(std::move(entry));
     }
-    std::sort(library.begin(), library.end(),
-              [](const ProfileEntry& a, const ProfileEntry& b) { return a.name.compare(b.name, Qt::CaseInsensitive) < 0; });
+    std::sort(library.begin(), library.end(), [](const ProfileEntry& a, const ProfileEntry& b) {
+        return a.name.compare(b.name, Qt::CaseInsensitive) < 0;
+    });
     std::move(library.begin(), library.end(), std::back_inserter(entries));
     const bool listed = std::any_of(entries.begin(), entries.end(), [&](const ProfileEntry& entry) {
         return QFileInfo(entry.path) == QFileInfo(activePath);
@@ -103,7 +104,8 @@ QString ProfileLibrary::newFilePath(const core::sensors::SensorProfile& profile)
     if (stem.isEmpty()) stem = QStringLiteral("profile");
     const QDir directory(m_directory);
     QString path = directory.filePath(stem + QStringLiteral(".json"));
-    for (int n = 2; QFileInfo::exists(path); ++n) path = directory.filePath(QStringLiteral("%1-%2.json").arg(stem).arg(n));
+    for (int n = 2; QFileInfo::exists(path); ++n)
+        path = directory.filePath(QStringLiteral("%1-%2.json").arg(stem).arg(n));
     return path;
 }
 

@@ -19,7 +19,7 @@ struct ProfileEntry {
     QString name;  // the profile's own name, or the file name when unreadable
     bool builtIn = false;
     std::optional<core::sensors::SensorProfile> profile;  // none when unreadable
-    QString error;                                         // why it is unreadable
+    QString error;                                        // why it is unreadable
 };
 
 class ProfileLibrary {

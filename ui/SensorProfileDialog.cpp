@@ -113,8 +113,7 @@ SensorProfileDialog::SensorProfileDialog(const QString& libraryDirectory, QWidge
     unreadable->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     m_forms->addWidget(unreadable);
     for (int i = 0; i < 2; ++i) {
-        connect(static_cast<ProfileForm*>(m_forms->widget(i)), &ProfileForm::edited, this,
-                [this] { setDirty(true); });
+        connect(static_cast<ProfileForm*>(m_forms->widget(i)), &ProfileForm::edited, this, [this] { setDirty(true); });
     }
     auto* scroll = new QScrollArea(this);
     scroll->setWidget(m_forms);
@@ -290,8 +289,8 @@ void SensorProfileDialog::updateState()
     else if (entry && entry->builtIn)
         m_editorTitle->setText(tr("The paper's probe, built in: read-only. Save keeps your changes as a new profile."));
     else
-        m_editorTitle->setText((inLibrary ? tr("In your library: %1") : tr("File: %1"))
-                                   .arg(QDir::toNativeSeparators(m_editingPath)));
+        m_editorTitle->setText(
+            (inLibrary ? tr("In your library: %1") : tr("File: %1")).arg(QDir::toNativeSeparators(m_editingPath)));
     m_summary->setText(valid ? profileSummary(*result.profile) : QString());
     m_problem->setText(result.problem);
     m_problem->setVisible(!result.problem.isEmpty());
@@ -376,8 +375,8 @@ bool SensorProfileDialog::importProfile(const QString& path)
         return false;
     }
     const QStringList& modes = profileModes();
-    const auto target = std::find_if(modes.begin(), modes.end(),
-                                     [&](const QString& m) { return profileFitsMode(profile, m); });
+    const auto target =
+        std::find_if(modes.begin(), modes.end(), [&](const QString& m) { return profileFitsMode(profile, m); });
     if (target == modes.end()) {
         say(tr("Not imported: %1 describes a single cantilever (a test specimen), not a probe for palpation or "
                "the capacitive beam.")
@@ -455,9 +454,9 @@ bool SensorProfileDialog::useSelected()
 void SensorProfileDialog::reject()
 {
     if (m_dirty) {
-        const auto answer = QMessageBox::question(this, tr("Unsaved changes"),
-                                                  tr("The profile has unsaved changes. Discard them?"),
-                                                  QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel);
+        const auto answer =
+            QMessageBox::question(this, tr("Unsaved changes"), tr("The profile has unsaved changes. Discard them?"),
+                                  QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel);
         if (answer != QMessageBox::Discard) return;
         revert();
     }

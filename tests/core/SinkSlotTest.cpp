@@ -56,25 +56,30 @@ TEST(SinkSlot, BlocksGoToTheCurrentOccupantOnly)
 
 TEST(SinkSlot, ASwapWhileBlocksFlowHandsOverAtOneBlockBoundary)
 {
-    constexpr std::uint64_t kBlocks = 20000;
     SinkSlot slot;
     auto before = std::make_shared<IndexLog>();
     auto after = std::make_shared<IndexLog>();
     slot.set(before);
+    // The device streams until the new occupant has had its share, however
+    // the two threads are scheduled.
     std::atomic<std::uint64_t> sent = 0;
+    std::atomic<bool> stop = false;
     std::thread acquisition([&] {
-        for (std::uint64_t i = 0; i < kBlocks; ++i) {
+        for (std::uint64_t i = 0; !stop; ++i) {
             slot.consume(blockAt(i));
             sent = i + 1;
         }
     });
-    while (sent < kBlocks / 4) std::this_thread::yield();
+    while (sent < 1000) std::this_thread::yield();
     slot.set(after);
+    const std::uint64_t handedOver = sent;
+    while (sent < handedOver + 1000) std::this_thread::yield();
+    stop = true;
     acquisition.join();
     // Every block exactly once: 0…n−1 to the old occupant, n… to the new one.
-    ASSERT_FALSE(before->indices.empty());
-    ASSERT_FALSE(after->indices.empty());
-    EXPECT_EQ(before->indices.size() + after->indices.size(), kBlocks);
+    ASSERT_GE(before->indices.size(), 1000u);
+    ASSERT_GE(after->indices.size(), 999u);
+    EXPECT_EQ(before->indices.size() + after->indices.size(), sent.load());
     for (std::size_t i = 0; i < before->indices.size(); ++i) ASSERT_EQ(before->indices[i], i);
     for (std::size_t i = 0; i < after->indices.size(); ++i) ASSERT_EQ(after->indices[i], before->indices.size() + i);
 }

@@ -1,13 +1,19 @@
 // The sensor-profile dialog on a real library folder: the list per mode,
 // fields in display units, validation naming the field, save (a built-in
 // one as a copy), import, export, delete with a question, and choosing the
-// active profile — refused while locked by a recording.
+// active profile — refused while locked by a recording; in the main window,
+// the chosen probe reads the live presses and goes into the session.
 #include "ui/SensorProfileDialog.h"
 
+#include "core/storage/SessionStore.h"
+#include "devices/simulator/PalpationScenario.h"
 #include "support/MainWindowHelpers.h"
 #include "support/Screenshot.h"
 #include "support/TextFiles.h"
+#include "support/WaitFor.h"
 #include "ui/ActiveProfiles.h"
+#include "ui/MainWindow.h"
+#include "ui/PalpationView.h"
 #include "ui/QuantityEdit.h"
 
 #include <QAbstractButton>
@@ -20,6 +26,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -31,10 +38,10 @@ using tactiscope::testing::writeText;
 
 namespace {
 
-const QString kThickerPair = QStringLiteral(
-    R"({"kind": "compliance_pair", "name": "Thick probe", )"
-    R"("high": {"length_m": 0.04, "width_m": 0.01, "thickness_m": 0.004, "youngs_modulus_pa": 3e9}, )"
-    R"("low": {"length_m": 0.04, "width_m": 0.01, "thickness_m": 0.0015, "youngs_modulus_pa": 3e9}})");
+const QString kThickerPair =
+    QStringLiteral(R"({"kind": "compliance_pair", "name": "Thick probe", )"
+                   R"("high": {"length_m": 0.04, "width_m": 0.01, "thickness_m": 0.004, "youngs_modulus_pa": 3e9}, )"
+                   R"("low": {"length_m": 0.04, "width_m": 0.01, "thickness_m": 0.0015, "youngs_modulus_pa": 3e9}})");
 const QString kCapacitive = QStringLiteral(
     R"({"kind": "capacitive_beam", "name": "Short beam", )"
     R"("beam": {"length_m": 0.01, "root_width_m": 0.005, "thickness_m": 0.002, "youngs_modulus_pa": 83000, )"
@@ -145,9 +152,12 @@ TEST_F(SensorProfileDialogTest, ShowsTheFieldsInTheUnitsTheyAreMeasuredInWithWha
     // and 60 N/m for the 1 mm beam; Q tops out at 1620/60 = 27.
     const QLocale locale;
     const QString summary = text(dialog, "summaryLabel");
-    EXPECT_TRUE(summary.contains(QStringLiteral("k_H = %1 N/m").arg(locale.toString(1620.0, 'f', 0)))) << summary.toStdString();
-    EXPECT_TRUE(summary.contains(QStringLiteral("k_L = %1 N/m").arg(locale.toString(60.0, 'f', 1)))) << summary.toStdString();
-    EXPECT_TRUE(summary.contains(QStringLiteral("from 1 to %1").arg(locale.toString(27.0, 'f', 1)))) << summary.toStdString();
+    EXPECT_TRUE(summary.contains(QStringLiteral("k_H = %1 N/m").arg(locale.toString(1620.0, 'f', 0))))
+        << summary.toStdString();
+    EXPECT_TRUE(summary.contains(QStringLiteral("k_L = %1 N/m").arg(locale.toString(60.0, 'f', 1))))
+        << summary.toStdString();
+    EXPECT_TRUE(summary.contains(QStringLiteral("from 1 to %1").arg(locale.toString(27.0, 'f', 1))))
+        << summary.toStdString();
 
     dialog.setMode(QStringLiteral("capacitive"));
     // Seed 002's beam No. 1: hydrogel electrodes of 462 µm and 1.8 kPa
@@ -214,10 +224,10 @@ TEST_F(SensorProfileDialogTest, SavingTheBuiltInProbeKeepsTheChangesAsANewLibrar
     type(dialog, "lowWidth", QStringLiteral("12"));
     ASSERT_TRUE(dialog.save());
     EXPECT_EQ(QDir(m_library.path()).entryList({QStringLiteral("*.json")}).size(), 1);
-    EXPECT_DOUBLE_EQ(std::get<core::sensors::CompliancePairProfile>(
-                         core::sensors::loadSensorProfile(saved.toStdString()))
-                         .low.width_m,
-                     0.012);
+    EXPECT_DOUBLE_EQ(
+        std::get<core::sensors::CompliancePairProfile>(core::sensors::loadSensorProfile(saved.toStdString()))
+            .low.width_m,
+        0.012);
 }
 
 TEST_F(SensorProfileDialogTest, NewStartsFromTheSelectedProfileAndTheSheetTakesLayers)
@@ -329,4 +339,49 @@ TEST_F(SensorProfileDialogTest, DeleteAsksFirstAndRemovesOnlyOnYes)
     EXPECT_FALSE(QFileInfo::exists(thick));
     EXPECT_EQ(listed(dialog).size(), 1);
     EXPECT_FALSE(enabled(dialog, "deleteButton"));  // the built-in one
+}
+
+// Both beams' modulus doubled: the same strains mean twice the forces, so
+// k_H and k_L double, Q does not change, and k_o = k_H·k_L·(1 − Q)/(Q·k_L −
+// k_H) doubles — the simulator's 117 N/m specimen reads 234 N/m.
+TEST_F(SensorProfileDialogTest, AProbeChosenWhileStreamingReadsTheNextPressesAndGoesIntoTheRecording)
+{
+    QDir(ui::ProfileLibrary::defaultDirectory()).removeRecursively();
+    const QString stiffer = m_library.filePath(QStringLiteral("stiffer.json"));
+    writeText(stiffer, QStringLiteral(R"({"kind": "compliance_pair", "name": "Perspex at 6 GPa", )"
+                                      R"("high": {"length_m": 0.05, "width_m": 0.01, "thickness_m": 0.003, )"
+                                      R"("youngs_modulus_pa": 6e9}, )"
+                                      R"("low": {"length_m": 0.05, "width_m": 0.01, "thickness_m": 0.001, )"
+                                      R"("youngs_modulus_pa": 6e9}})"));
+    const QString store = m_library.filePath(QStringLiteral("s.tactiscope"));
+    ui::MainWindow window;
+    window.setStorePath(store);
+    window.resize(1400, 900);
+    window.setMode(QStringLiteral("palpation"));
+    window.connectSource(tactiscope::testing::liveSimulator("palpation"));
+    window.show();
+    ui::SensorProfileDialog* dialog = window.showProfiles();
+    EXPECT_EQ(dialog->mode(), QStringLiteral("palpation"));
+    ASSERT_TRUE(dialog->importProfile(stiffer));
+    ASSERT_TRUE(dialog->useSelected());
+    auto* probe = child<QLabel>(*window.palpationView(), "probeLabel");
+    EXPECT_TRUE(probe->text().contains(QStringLiteral("Perspex at 6 GPa")));
+
+    ASSERT_TRUE(window.startRecording());
+    // A session keeps its sensor: the dialog will not change it now.
+    dialog->selectPath(ui::builtInProfilePath(QStringLiteral("palpation")));
+    EXPECT_FALSE(enabled(*dialog, "useButton"));
+    auto* table = child<QTableWidget>(*window.palpationView(), "pressTable");
+    ASSERT_TRUE(tactiscope::testing::waitFor([&] { return table->rowCount() >= 2; }, 12000));
+    window.stopRecording();
+    EXPECT_TRUE(enabled(*dialog, "useButton"));
+
+    const double truth = 2.0 * devices::simulator::PalpationParameters{}.objectStiffness_n_per_m;
+    for (int row = 0; row < table->rowCount(); ++row)
+        EXPECT_NEAR(QLocale().toDouble(table->item(row, 1)->text()), truth, 0.05 * truth) << row;
+    core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto recorded =
+        core::sensors::parseSensorProfile(sessions.sessions().front().metadata.profileJson, "session");
+    EXPECT_EQ(std::get<core::sensors::CompliancePairProfile>(recorded).high.youngsModulus_pa, 6e9);
+    QDir(ui::ProfileLibrary::defaultDirectory()).removeRecursively();
 }
