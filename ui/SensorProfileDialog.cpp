@@ -289,8 +289,9 @@ void SensorProfileDialog::updateState()
     else if (entry && entry->builtIn)
         m_editorTitle->setText(tr("The paper's probe, built in: read-only. Save keeps your changes as a new profile."));
     else
-        m_editorTitle->setText(
-            (inLibrary ? tr("In your library: %1") : tr("File: %1")).arg(QDir::toNativeSeparators(m_editingPath)));
+        m_editorTitle->setText(inLibrary ? tr("In your library: %1").arg(QFileInfo(m_editingPath).fileName())
+                                         : tr("File: %1").arg(QDir::toNativeSeparators(m_editingPath)));
+    m_editorTitle->setToolTip(QDir::toNativeSeparators(m_editingPath));
     m_summary->setText(valid ? profileSummary(*result.profile) : QString());
     m_problem->setText(result.problem);
     m_problem->setVisible(!result.problem.isEmpty());
