@@ -23,6 +23,7 @@
 #include "ui/RawConsole.h"
 #include "ui/SensorProfileDialog.h"
 #include "ui/SessionBar.h"
+#include "ui/VerdictDialog.h"
 #include "ui/XYPlotWidget.h"
 
 #include <QActionGroup>
@@ -38,7 +39,6 @@
 #include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QPushButton>
 #include <QSettings>
 #include <QSplitter>
 #include <QStackedWidget>
@@ -426,6 +426,7 @@ void MainWindow::stopRecording()
     if (!isRecording()) return;
     m_tap->detach();
     const auto recorder = std::exchange(m_recorder, nullptr);
+    const double end_s = recorder->sessionTime_s();
     const auto stats = recorder->finish(core::storage::SessionStatus::Complete);
     m_sessionBar->setRecording(false);
     lockProfiles();
@@ -438,12 +439,13 @@ void MainWindow::stopRecording()
     if (!stats.error.empty())
         showProblem(tr("Recording stopped"), tr("Recording stopped early."), QString::fromStdString(stats.error));
     else if (m_panelScan->isVisible())
-        askVerdict(recorder->sessionId(), m_panelScan->defectCount(), m_panelScan->verdict());
+        askVerdict(recorder->sessionId(), end_s, m_panelScan->defectCount(), m_panelScan->verdict());
 }
 
-// The panel's verdict follows the defect count; the operator confirms it or
-// overrides it (a dent the probe missed, a false alarm) without being held up.
-void MainWindow::askVerdict(std::int64_t session, int defects, const QString& verdict)
+// The panel's verdict follows the defect count and is stored at once; the
+// operator keeps it or overrides it, with a note that goes into the session
+// as an annotation at its end, without being held up.
+void MainWindow::askVerdict(std::int64_t session, double end_s, int defects, const QString& verdict)
 {
     const std::string store = m_storePath.toStdString();
     const auto save = [this, store, session](const QString& text) {
@@ -456,19 +458,24 @@ void MainWindow::askVerdict(std::int64_t session, int defects, const QString& ve
         }
     };
     save(verdict);
-    auto* box = new QMessageBox(QMessageBox::Question, tr("Panel verdict"),
-                                tr("%n defect(s) found: the verdict is \"%1\".", nullptr, defects).arg(verdict),
-                                QMessageBox::NoButton, this);
-    box->setObjectName(QStringLiteral("verdictBox"));
-    box->setInformativeText(tr("Keep it, or override it if the probe was wrong."));
-    QPushButton* pass = box->addButton(tr("Pass"), QMessageBox::AcceptRole);
-    QPushButton* defective = box->addButton(tr("Defects found"), QMessageBox::AcceptRole);
-    box->addButton(tr("Keep"), QMessageBox::RejectRole);
-    connect(pass, &QPushButton::clicked, this, [save] { save(tr("pass")); });
-    connect(defective, &QPushButton::clicked, this, [save] { save(tr("defects found")); });
-    box->setAttribute(Qt::WA_DeleteOnClose);
-    box->setModal(false);
-    box->show();
+    auto* dialog = new VerdictDialog(defects, verdict, this);
+    const std::string author = m_sessionBar->metadata().operatorName;
+    connect(dialog, &VerdictDialog::decided, this,
+            [this, save, store, session, end_s, author, verdict](const QString& chosen, const QString& note) {
+                if (chosen != verdict) save(chosen);
+                if (note.isEmpty()) return;
+                core::storage::Annotation annotation;
+                annotation.time_s = end_s;
+                annotation.author = author;
+                annotation.text = tr("Verdict \"%1\": %2").arg(chosen, note).toStdString();
+                try {
+                    core::storage::SessionStore(store).addAnnotation(session, annotation);
+                } catch (const core::storage::StorageError& e) {
+                    showProblem(tr("Note not saved"), tr("The verdict's note could not be saved."),
+                                QString::fromStdString(e.what()));
+                }
+            });
+    dialog->show();
 }
 
 void MainWindow::takeDetectorEvents()

@@ -140,7 +140,7 @@ private:
                                                                       const std::string& sensor) const;
     void linkCalibration(std::int64_t session, std::int64_t calibration);
     void tare();  // the visible mode's zero
-    void askVerdict(std::int64_t session, int defects, const QString& verdict);
+    void askVerdict(std::int64_t session, double end_s, int defects, const QString& verdict);
     void saveSettings() const;
 
     LivePlotWidget* m_plot = nullptr;

@@ -48,6 +48,18 @@ QString stiffnessText(double k_n_per_m, double standardError_n_per_m)
     return PalpationView::tr("%1 ± %2 N/m").arg(k, se);
 }
 
+// Counts become strain through the chain's nominal gauge factor (no stored
+// gauge-factor calibration is applied yet); the line says so, and why k_o
+// does not depend on it: both beams share it, and k_o needs only F_H/F_L.
+QString calibrationLine(const core::compliance::LivePalpation& palpation)
+{
+    if (const auto gaugeFactor = palpation.gaugeFactor())
+        return PalpationView::tr("Calibration: none, nominal gauge factor %1 (forces scale with it; k_o needs only "
+                                 "their ratio)")
+            .arg(QLocale().toString(*gaugeFactor, 'g', 3));
+    return PalpationView::tr("Calibration: strain or force as the device sends it");
+}
+
 }  // namespace
 
 PalpationView::PalpationView(QWidget* parent)
@@ -117,7 +129,9 @@ void PalpationView::setPalpation(std::shared_ptr<core::compliance::LivePalpation
                                  const QString& probeName)
 {
     m_palpation = std::move(palpation);
-    m_probe->setText(probeName.isEmpty() ? QString() : probeLine(probeName));
+    m_probe->setText(probeName.isEmpty() || !m_palpation
+                         ? QString()
+                         : probeLine(probeName) + QStringLiteral("<br>") + calibrationLine(*m_palpation));
     m_tare->setEnabled(m_palpation != nullptr);
     if (!m_palpation) {
         m_lanes->clearSource();

@@ -2,6 +2,7 @@
 #include "ui/PanelScanView.h"
 
 #include "ui/LivePlotWidget.h"
+#include "ui/VerdictDialog.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -212,7 +213,7 @@ std::vector<core::detector::DefectEvent> PanelScanView::takeNewEvents()
     }
     if (!events.empty()) {
         m_events->scrollToBottom();
-        m_countLabel->setText(tr("%n defect(s) on this panel — %1", nullptr, defectCount()).arg(verdict()));
+        m_countLabel->setText(tr("%1 on this panel — %2").arg(defectCountText(defectCount()), verdict()));
     }
     return events;
 }
@@ -244,7 +245,7 @@ int PanelScanView::defectCount() const
 
 QString PanelScanView::verdict() const
 {
-    return defectCount() == 0 ? tr("pass") : tr("defects found");
+    return defectCount() == 0 ? VerdictDialog::passVerdict() : VerdictDialog::defectsVerdict();
 }
 
 }  // namespace tactiscope::ui

@@ -67,6 +67,13 @@ LivePalpation::LivePalpation(const std::vector<ChannelDescriptor>& channels, dou
     m_low = input(beams[1]);
 }
 
+std::optional<double> LivePalpation::gaugeFactor() const
+{
+    if (m_high.chain) return m_high.chain->bridge().gaugeFactor;
+    if (m_low.chain) return m_low.chain->bridge().gaugeFactor;
+    return std::nullopt;
+}
+
 std::vector<ChannelDescriptor> LivePalpation::outputChannels()
 {
     return {{"F_H", "N", ChannelKind::Force}, {"F_L", "N", ChannelKind::Force}, {"Q", "", ChannelKind::Other}};

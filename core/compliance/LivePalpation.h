@@ -60,6 +60,9 @@ public:
     // (NaN unless both forces are above the contact threshold).
     static std::vector<ChannelDescriptor> outputChannels();
     const sensors::CompliancePair& pair() const { return m_pair; }
+    // The gauge factor that turns counts into strain; none when the device
+    // sends strain or force itself.
+    std::optional<double> gaugeFactor() const;
 
     // Any thread: the next kTare_s of samples become the zero.
     void tare() { m_tareRequested = true; }

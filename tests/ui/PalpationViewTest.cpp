@@ -76,6 +76,10 @@ TEST(PalpationView, PressesAreListedMappedStoredAndMatchTheCoreReading)
     ASSERT_TRUE(grid->valueAt(1, 1).has_value());
     EXPECT_NEAR(*grid->valueAt(1, 1), QLocale().toDouble(table->item(0, 1)->text()), 0.05);
     EXPECT_TRUE(child<QLabel>(*view, "stiffnessLabel")->text().endsWith(QStringLiteral("N/m")));
+    // The probe and what turns its counts into forces are always in view.
+    const QString probe = child<QLabel>(*view, "probeLabel")->text();
+    EXPECT_TRUE(probe.contains(QStringLiteral("Perspex two-beam probe"))) << probe.toStdString();
+    EXPECT_TRUE(probe.contains(QStringLiteral("nominal gauge factor 2 "))) << probe.toStdString();
 
     core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
     const auto session = sessions.sessions().front();

@@ -14,9 +14,12 @@
 
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTest>
 
 #include <gtest/gtest.h>
 
@@ -46,13 +49,26 @@ TEST(PanelScanView, DefectsAreListedStoredAndMatchTheCoreDetector)
     EXPECT_EQ(window.panelScanView()->defectCount(), listed);
     EXPECT_TRUE(child<QLabel>(*window.panelScanView(), "defectCountLabel")->text().contains("defects found"));
     window.stopRecording();
-    auto* verdict = window.findChild<QMessageBox*>(QStringLiteral("verdictBox"));
+    auto* verdict = window.findChild<QDialog*>(QStringLiteral("verdictBox"));
     ASSERT_NE(verdict, nullptr);
     EXPECT_FALSE(verdict->isModal());
+    {
+        // The automatic verdict is stored before the operator answers.
+        core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
+        EXPECT_EQ(sessions.sessions().front().verdict, "defects found");
+    }
+    // The operator overrides it, saying why.
+    QTest::keyClicks(child<QLineEdit>(*verdict, "verdictNote"), QStringLiteral("oil drops, no dent"));
+    tactiscope::testing::saveScreenshot(*verdict, QStringLiteral("verdict"));
+    QTest::mouseClick(child<QPushButton>(*verdict, "passButton"), Qt::LeftButton);
 
     core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
     const auto session = sessions.sessions().front();
-    EXPECT_EQ(session.verdict, "defects found");
+    EXPECT_EQ(session.verdict, "pass");
+    const auto notes = sessions.annotations(session.id);
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0].text, "Verdict \"pass\": oil drops, no dent");
+    EXPECT_NEAR(notes[0].time_s, static_cast<double>(session.sampleCount) / 500.0, 0.01);
     const auto stored = sessions.events(session.id);
     ASSERT_GE(static_cast<int>(stored.size()), listed - 1);  // the last may still have been open
     // The core's detector over the recorded samples finds each stored defect
