@@ -10,7 +10,7 @@ packages=(
   libqcustomplot-dev libhidapi-dev libserialport-dev
   libeigen3-dev libsqlite3-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
-  xvfb xauth file fonts-dejavu-core clang-format
+  xvfb xauth file fonts-dejavu-core clang-format poppler-utils
   clang libclang-rt-14-dev
 )
 

@@ -11,6 +11,7 @@
 #include "ModelCommand.h"
 #include "PortsCommand.h"
 #include "RecordCommand.h"
+#include "ReportCommand.h"
 #include "SessionsCommand.h"
 #include "SimulateCommand.h"
 #include "core/Version.h"
@@ -38,6 +39,7 @@ constexpr std::array kCommands{
     Command{"model", "What the sensor model gives for a profile (JSON).", runModel},
     Command{"ports", "List serial ports and HID devices.", runPorts},
     Command{"record", "Record a probe on a serial port into a session store.", runRecord},
+    Command{"report", "Write a session's inspection report as a PDF.", runReport},
     Command{"sessions", "List, show, export or delete the sessions of a store.", runSessions},
     Command{"simulate", "Write a simulated recording as CSV.", runSimulate},
 };

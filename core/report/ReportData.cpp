@@ -1,0 +1,88 @@
+// ReportData: the range in samples, the records that overlap it, and the
+// copies of profile and calibrations the session carries.
+#include "core/report/ReportData.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace tactiscope::core::report {
+namespace {
+
+using Json = nlohmann::json;
+
+std::string profileName(const std::string& profileJson)
+{
+    if (profileJson.empty()) return {};
+    const Json json = Json::parse(profileJson, nullptr, false);
+    return json.is_object() && json.contains("name") && json["name"].is_string() ? json["name"].get<std::string>()
+                                                                                 : std::string();
+}
+
+// The session keeps its calibrations as a JSON array of records; one that
+// cannot be read is left out rather than failing the whole report.
+std::vector<calibration::CalibrationRecord> calibrationsOf(const std::string& calibrationsJson)
+{
+    std::vector<calibration::CalibrationRecord> records;
+    const Json json = Json::parse(calibrationsJson.empty() ? "[]" : calibrationsJson, nullptr, false);
+    if (!json.is_array()) return records;
+    for (const Json& record : json) {
+        try {
+            records.push_back(calibration::CalibrationRecord::fromJson(record.dump()));
+        } catch (const std::invalid_argument&) {
+        }
+    }
+    return records;
+}
+
+bool overlaps(double start_s, double end_s, double from_s, double to_s)
+{
+    return end_s >= from_s && start_s <= to_s;
+}
+
+}  // namespace
+
+bool ReportData::wholeSession() const
+{
+    return from_s <= 0.0 && to_s >= session.duration_s();
+}
+
+ReportData gatherReport(storage::SessionStore& store, std::int64_t session, const ReportRange& range,
+                        std::size_t overviewPoints)
+{
+    const auto summary = store.session(session);
+    if (!summary) throw storage::StorageError("no session " + std::to_string(session) + " in the store");
+    ReportData data;
+    data.session = *summary;
+    data.sensorName = profileName(summary->metadata.profileJson);
+    data.calibrations = calibrationsOf(summary->metadata.calibrationsJson);
+    const double duration_s = summary->duration_s();
+    data.from_s = range.from_s.value_or(0.0);
+    data.to_s = range.to_s.value_or(duration_s);
+    if (!(data.from_s >= 0.0) || !(data.to_s <= duration_s) || !(data.from_s < data.to_s))
+        throw std::invalid_argument("the range must lie within the session (0 to " + std::to_string(duration_s) +
+                                    " s) and end after it starts");
+
+    for (auto& event : store.events(session))
+        if (overlaps(event.start_s, event.end_s, data.from_s, data.to_s)) data.events.push_back(std::move(event));
+    for (auto& reading : store.readings(session))
+        if (overlaps(reading.start_s, reading.end_s, data.from_s, data.to_s))
+            data.readings.push_back(std::move(reading));
+    for (auto& annotation : store.annotations(session))
+        if (overlaps(annotation.time_s, annotation.time_s, data.from_s, data.to_s))
+            data.annotations.push_back(std::move(annotation));
+
+    const double rate_hz = summary->sampleRate_hz;
+    const auto first = static_cast<std::uint64_t>(std::floor(data.from_s * rate_hz));
+    const auto end = std::min(summary->sampleCount, static_cast<std::uint64_t>(std::ceil(data.to_s * rate_hz)));
+    for (const auto& gap : store.gaps(session))
+        if (gap.firstIndex < end && gap.firstIndex + gap.count > first) data.gaps.push_back(gap);
+    const auto channels = store.channels(session);
+    for (std::size_t c = 0; c < channels.size(); ++c)
+        data.traces.push_back({channels[c], store.overview(session, c, first, end - first, overviewPoints)});
+    return data;
+}
+
+}  // namespace tactiscope::core::report

@@ -1,0 +1,49 @@
+// What an inspection report of one session says, gathered from the store
+// without loading the samples: the session's fields, the sensor and the
+// calibrations it was recorded with, its live events, readings, operator
+// notes and gaps, and each channel's min/max overview (from the store's
+// level-of-detail pyramid) for the plots. A time range narrows everything to
+// part of the session.
+#pragma once
+
+#include "core/calibration/CalibrationRecord.h"
+#include "core/storage/SessionStore.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tactiscope::core::report {
+
+struct ReportTrace {
+    storage::StoredChannel channel;
+    std::vector<storage::OverviewPoint> points;  // min/max per stretch, across the range
+};
+
+struct ReportRange {
+    std::optional<double> from_s;  // session seconds; from the start when empty
+    std::optional<double> to_s;    // to the end when empty
+};
+
+struct ReportData {
+    storage::SessionSummary session;
+    std::string sensorName;  // the profile's name; empty when none was stored
+    std::vector<calibration::CalibrationRecord> calibrations;
+    double from_s = 0.0;
+    double to_s = 0.0;
+    std::vector<storage::SessionEvent> events;  // live events overlapping the range
+    std::vector<storage::SessionReading> readings;
+    std::vector<storage::Annotation> annotations;
+    std::vector<storage::SampleGap> gaps;
+    std::vector<ReportTrace> traces;
+
+    bool wholeSession() const;
+};
+
+// Throws storage::StorageError for an unknown session and
+// std::invalid_argument for a range outside the session or backwards.
+ReportData gatherReport(storage::SessionStore& store, std::int64_t session, const ReportRange& range = {},
+                        std::size_t overviewPoints = 1000);
+
+}  // namespace tactiscope::core::report

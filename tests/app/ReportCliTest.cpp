@@ -1,0 +1,164 @@
+// `tactiscope-cli report` on a real store written through the store API:
+// the PDF's text (read back with pdftotext) holds the subject, the verdict
+// and the event table; a range narrows it; bad input ends with exit 2 and
+// one line. The first page is rendered to PNG for a look
+// (build/<preset>/screenshots/report-page1.png, or TACTISCOPE_SCREENSHOT_DIR).
+#include "core/SampleBlock.h"
+#include "core/storage/SessionStore.h"
+#include "support/CliRunner.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QLocale>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace tactiscope;
+using tactiscope::testing::runCli;
+
+namespace {
+
+constexpr double kRate_hz = 500.0;
+
+// Two cantilevers, 10 s: a slow swell with a dent-like bump at each defect.
+QString makeStore(const QTemporaryDir& dir)
+{
+    const QString path = dir.filePath(QStringLiteral("r.tactiscope"));
+    core::storage::SessionStore store(path.toStdString());
+    core::storage::SessionMetadata metadata;
+    metadata.mode = "panel-scan";
+    metadata.subject = "door-42";
+    metadata.operatorName = "Ada Lovelace";
+    metadata.deviceModel = "Simulator — panel scan";
+    metadata.profileJson = R"({"kind": "cantilever", "name": "Capsule probe 3"})";
+    const std::vector<core::ChannelDescriptor> channels{{"a", "", core::ChannelKind::Strain},
+                                                        {"b", "", core::ChannelKind::Strain}};
+    const auto id = store.beginSession(metadata, channels, kRate_hz);
+    std::vector<core::SampleBlock> blocks;
+    for (std::uint64_t first = 0; first < 5000; first += 500) {
+        core::SampleBlock block(2, 500, static_cast<double>(first) / kRate_hz, 1.0 / kRate_hz, first);
+        for (std::size_t i = 0; i < 500; ++i) {
+            const double t = static_cast<double>(first + i) / kRate_hz;
+            const double bump = std::exp(-std::pow((t - 2.5) / 0.05, 2)) + std::exp(-std::pow((t - 7.1) / 0.05, 2));
+            block.channel(0)[i] = 1e-4 * (std::sin(t) + bump);
+            block.channel(1)[i] = 1e-4 * (std::cos(t) + bump);
+        }
+        blocks.push_back(std::move(block));
+    }
+    store.appendBlocks(id, blocks);
+    store.addEvents(id, std::vector<core::storage::SessionEvent>{
+                            {0, core::storage::kLiveAnalysis, "defect", 2.5, 2.6, 1, 0.953, 0.052, 0.96, ""},
+                            {0, core::storage::kLiveAnalysis, "defect", 7.1, 7.2, -1, 0.912, 0.048, 1.04, ""},
+                            {0, core::storage::kLiveAnalysis, "marker", 4.0, 4.0, 0, {}, {}, {}, "oil stain"},
+                        });
+    store.addAnnotation(id, {0, 9.0, "Grace", "second dent seen by eye", "", ""});
+    store.endSession(id, core::storage::SessionStatus::Complete);
+    store.setVerdict(id, "defects found");
+    return path;
+}
+
+// The PDF's text, laid out; empty when pdftotext is missing or fails.
+QString pdfText(const QString& pdf)
+{
+    QProcess process;
+    process.start(QStringLiteral("pdftotext"), {QStringLiteral("-layout"), pdf, QStringLiteral("-")});
+    process.waitForFinished(30000);
+    return process.exitCode() == 0 ? QString::fromUtf8(process.readAllStandardOutput()) : QString();
+}
+
+}  // namespace
+
+class ReportCli : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        if (QStandardPaths::findExecutable(QStringLiteral("pdftotext")).isEmpty())
+            GTEST_SKIP() << "pdftotext (poppler-utils, in scripts/install-deps.sh) is needed to read the PDF";
+        ASSERT_TRUE(m_dir.isValid());
+        m_store = makeStore(m_dir);
+    }
+    QTemporaryDir m_dir;
+    QString m_store;
+};
+
+TEST_F(ReportCli, ThePdfHoldsTheSubjectTheVerdictAndTheEventTable)
+{
+    const QString pdf = m_dir.filePath(QStringLiteral("report.pdf"));
+    const auto result = runCli({QStringLiteral("report"), QStringLiteral("--db"), m_store, QStringLiteral("--session"),
+                                QStringLiteral("last"), QStringLiteral("--output"), pdf});
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    EXPECT_TRUE(result.err.isEmpty()) << result.err.toStdString();
+    EXPECT_TRUE(result.out.startsWith(QStringLiteral("session 1: "))) << result.out.toStdString();
+    const QString text = pdfText(pdf);
+    ASSERT_FALSE(text.isEmpty());
+    const QLocale locale;
+    for (const QString& expected :
+         {QStringLiteral("door-42"), QStringLiteral("Ada Lovelace"), QStringLiteral("DEFECTS FOUND"),
+          QStringLiteral("Capsule probe 3"), QStringLiteral("Defects (2)"), QStringLiteral("A then B"),
+          QStringLiteral("B then A"), locale.toString(0.953, 'f', 3), locale.toString(0.912, 'f', 3),
+          locale.toString(2.5, 'f', 3), locale.toString(7.1, 'f', 3), QStringLiteral("oil stain"),
+          QStringLiteral("second dent seen by eye")})
+        EXPECT_TRUE(text.contains(expected)) << expected.toStdString() << "\n" << text.toStdString();
+
+    // The first page as a picture, for a person to look at.
+    const QString override = qEnvironmentVariable("TACTISCOPE_SCREENSHOT_DIR");
+    const QDir shots(override.isEmpty() ? QStringLiteral(TACTISCOPE_SCREENSHOT_DIR) : override);
+    ASSERT_TRUE(shots.mkpath(QStringLiteral(".")));
+    const QString png = shots.filePath(QStringLiteral("report-page1"));
+    EXPECT_EQ(QProcess::execute(QStringLiteral("pdftoppm"),
+                                {QStringLiteral("-png"), QStringLiteral("-r"), QStringLiteral("80"),
+                                 QStringLiteral("-f"), QStringLiteral("1"), QStringLiteral("-l"), QStringLiteral("1"),
+                                 QStringLiteral("-singlefile"), pdf, png}),
+              0);
+    EXPECT_TRUE(QFileInfo::exists(png + QStringLiteral(".png")));
+}
+
+TEST_F(ReportCli, ARangeReportsOnlyWhatLiesInIt)
+{
+    const QString pdf = m_dir.filePath(QStringLiteral("part.pdf"));
+    const auto result = runCli({QStringLiteral("report"), QStringLiteral("--db"), m_store, QStringLiteral("--session"),
+                                QStringLiteral("1"), QStringLiteral("--output"), pdf, QStringLiteral("--from"),
+                                QStringLiteral("5"), QStringLiteral("--to"), QStringLiteral("10")});
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    const QString text = pdfText(pdf);
+    const QLocale locale;
+    EXPECT_TRUE(text.contains(QStringLiteral("Defects (1)"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(locale.toString(0.912, 'f', 3)));
+    EXPECT_FALSE(text.contains(locale.toString(0.953, 'f', 3)));
+    EXPECT_FALSE(text.contains(QStringLiteral("oil stain")));  // the marker at 4 s
+}
+
+TEST_F(ReportCli, BadInputEndsWithExitTwoAndOneLine)
+{
+    const QString pdf = m_dir.filePath(QStringLiteral("never.pdf"));
+    const QString missing = m_dir.filePath(QStringLiteral("missing.tactiscope"));
+    const std::vector<QStringList> cases{
+        {QStringLiteral("report"), QStringLiteral("--db"), m_store, QStringLiteral("--session"), QStringLiteral("1")},
+        {QStringLiteral("report"), QStringLiteral("--db"), m_store, QStringLiteral("--session"), QStringLiteral("9"),
+         QStringLiteral("--output"), pdf},
+        {QStringLiteral("report"), QStringLiteral("--db"), missing, QStringLiteral("--session"), QStringLiteral("1"),
+         QStringLiteral("--output"), pdf},
+        {QStringLiteral("report"), QStringLiteral("--db"), m_store, QStringLiteral("--session"), QStringLiteral("1"),
+         QStringLiteral("--output"), pdf, QStringLiteral("--from"), QStringLiteral("8"), QStringLiteral("--to"),
+         QStringLiteral("3")},
+        {QStringLiteral("report"), QStringLiteral("--db"), m_store, QStringLiteral("--session"), QStringLiteral("1"),
+         QStringLiteral("--output"), pdf, QStringLiteral("--from"), QStringLiteral("soon")},
+    };
+    for (const auto& arguments : cases) {
+        const auto result = runCli(arguments);
+        EXPECT_EQ(result.exitCode, 2) << arguments.join(' ').toStdString();
+        EXPECT_EQ(result.err.count(QLatin1Char('\n')), 1) << result.err.toStdString();
+        EXPECT_TRUE(result.err.startsWith(QStringLiteral("tactiscope-cli: report: "))) << result.err.toStdString();
+    }
+    EXPECT_FALSE(QFileInfo::exists(pdf));
+    // A folder that is not there is no bad input but a failure to write.
+    const auto unwritable = runCli({QStringLiteral("report"), QStringLiteral("--db"), m_store,
+                                    QStringLiteral("--session"), QStringLiteral("1"), QStringLiteral("--output"),
+                                    m_dir.filePath(QStringLiteral("no/such/folder/r.pdf"))});
+    EXPECT_EQ(unwritable.exitCode, 1);
+}

@@ -1,0 +1,52 @@
+// The report's plot on a real store: PNG at twice the size asked for, SVG
+// as vector text, and a file that cannot be written is said.
+#include "ui/report/ReportPlot.h"
+
+#include "core/SampleBlock.h"
+#include "core/storage/SessionStore.h"
+
+#include <QFile>
+#include <QImage>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+using namespace tactiscope;
+
+namespace {
+
+core::report::ReportData oneChannelSession(const QTemporaryDir& dir)
+{
+    core::storage::SessionStore store(dir.filePath(QStringLiteral("p.tactiscope")).toStdString());
+    core::storage::SessionMetadata metadata;
+    metadata.mode = "capacitive";
+    const std::vector<core::ChannelDescriptor> channels{{"C", "F", core::ChannelKind::Capacitance}};
+    const auto id = store.beginSession(metadata, channels, 10.0);
+    core::SampleBlock block(1, 100, 0.0, 0.1, 0);
+    for (std::size_t i = 0; i < 100; ++i) block.channel(0)[i] = 51.44e-12 + 1e-15 * static_cast<double>(i);
+    store.appendBlocks(id, std::span(&block, 1));
+    store.endSession(id, core::storage::SessionStatus::Complete);
+    return core::report::gatherReport(store, id);
+}
+
+}  // namespace
+
+TEST(ReportPlot, SavesPngAtTwiceTheSizeAndSvgAsVectors)
+{
+    QTemporaryDir dir;
+    const auto data = oneChannelSession(dir);
+    const QString png = dir.filePath(QStringLiteral("plot.png"));
+    const QString svg = dir.filePath(QStringLiteral("plot.svg"));
+    ui::saveReportPlot(data, QSize(600, 240), png);
+    ui::saveReportPlot(data, QSize(600, 240), svg);
+    const QImage image(png);
+    EXPECT_EQ(image.size(), QSize(1200, 480));
+    QFile file(svg);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QByteArray text = file.readAll();
+    EXPECT_TRUE(text.contains("<svg"));
+    EXPECT_TRUE(text.contains("<path") || text.contains("<polyline"));
+    EXPECT_TRUE(text.contains("Capacitance (pF)"));  // the axis title is text, not pixels
+    EXPECT_THROW(ui::saveReportPlot(data, QSize(600, 240), dir.filePath(QStringLiteral("no/folder/p.png"))),
+                 std::runtime_error);
+}

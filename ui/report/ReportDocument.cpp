@@ -1,0 +1,241 @@
+// ReportDocument: the report's HTML, its plot resource, and the PDF.
+#include "ui/report/ReportDocument.h"
+
+#include "core/Version.h"
+#include "core/text/UtcTime.h"
+#include "ui/report/ReportPlot.h"
+
+#include <QFileInfo>
+#include <QLocale>
+#include <QPdfWriter>
+#include <QSaveFile>
+#include <QTextDocument>
+#include <QUrl>
+
+#include <stdexcept>
+
+namespace tactiscope::ui {
+namespace {
+
+// QTextDocument::print() sets 2 cm margins of its own (and puts the page
+// number in the bottom one): an A4 page has 170 mm of text width, 642 px of
+// the document's 96 dpi.
+constexpr int kTextWidth_px = 640;
+constexpr int kLaneHeight_px = 150;
+constexpr double kPlotScale = 3.0;  // ≈ 290 dpi on paper
+
+QString text(const std::string& value)
+{
+    return QString::fromStdString(value).toHtmlEscaped();
+}
+
+QString orDash(const std::string& value)
+{
+    return value.empty() ? QStringLiteral("—") : text(value);
+}
+
+QString number(double value, int decimals)
+{
+    return QLocale().toString(value, 'f', decimals);
+}
+
+QString row(const QString& name, const QString& value)
+{
+    return QStringLiteral("<tr><th align=left>%1</th><td>%2</td></tr>").arg(name, value);
+}
+
+QString table(const QStringList& headers, const std::vector<QStringList>& rows)
+{
+    // A header row (thead) is repeated on each page a long table runs onto.
+    QString html = QStringLiteral("<table class=list width=100% cellspacing=0 cellpadding=3><thead><tr>");
+    for (const QString& header : headers) html += QStringLiteral("<th align=left>%1</th>").arg(header);
+    html += QStringLiteral("</tr></thead>");
+    for (const QStringList& cells : rows) {
+        html += QStringLiteral("<tr>");
+        for (const QString& cell : cells) html += QStringLiteral("<td>%1</td>").arg(cell);
+        html += QStringLiteral("</tr>");
+    }
+    return html + QStringLiteral("</table>");
+}
+
+QString calibrationText(const core::calibration::CalibrationRecord& record)
+{
+    QStringList values;
+    for (const auto& [name, value] : record.values)
+        values << QStringLiteral("%1 = %2").arg(text(name), QLocale().toString(value, 'g', 5));
+    QString line =
+        QObject::tr("%1 of %2, %3 by %4")
+            .arg(text(record.kind), text(record.sensorName), text(record.timestampUtc), orDash(record.operatorName));
+    if (record.fit.points > 0)
+        line += QObject::tr(" (R² = %1, %2 points)").arg(number(record.fit.rSquared, 5)).arg(record.fit.points);
+    return line + QStringLiteral("<br><small>") + values.join(QStringLiteral(", ")) + QStringLiteral("</small>");
+}
+
+QString header(const core::report::ReportData& data)
+{
+    const auto& s = data.session;
+    const auto& m = s.metadata;
+    QString device = orDash(m.deviceModel);
+    if (!m.deviceSerial.empty()) device += QObject::tr(", serial %1").arg(text(m.deviceSerial));
+    if (!m.deviceFirmware.empty()) device += QObject::tr(", firmware %1").arg(text(m.deviceFirmware));
+    QStringList calibrations;
+    for (const auto& record : data.calibrations) calibrations << calibrationText(record);
+    const QString range = data.wholeSession()
+                              ? QObject::tr("the whole session, %1 s").arg(number(s.duration_s(), 1))
+                              : QObject::tr("%1 s to %2 s of %3 s")
+                                    .arg(number(data.from_s, 2), number(data.to_s, 2), number(s.duration_s(), 1));
+    qulonglong lost = 0;
+    for (const auto& gap : data.gaps) lost += gap.count;
+    QString html = QStringLiteral("<table class=header cellspacing=0 cellpadding=2>");
+    html += row(QObject::tr("Subject"), orDash(m.subject));
+    html += row(QObject::tr("Operator"), orDash(m.operatorName));
+    html += row(QObject::tr("Mode"), orDash(m.mode));
+    if (!m.site.empty()) html += row(QObject::tr("Site"), text(m.site));
+    html += row(QObject::tr("Started"), QObject::tr("%1 (UTC)").arg(text(s.startedUtc)));
+    html += row(QObject::tr("Covered"), range);
+    html += row(QObject::tr("Device"), device);
+    html += row(QObject::tr("Sensor"), orDash(data.sensorName));
+    html += row(QObject::tr("Calibration"), calibrations.isEmpty() ? QObject::tr("none recorded with the session")
+                                                                   : calibrations.join(QStringLiteral("<br>")));
+    const QString losses = lost == 0 ? QObject::tr("none lost")
+                                     : QObject::tr("%1 lost in %2")
+                                           .arg(QLocale().toString(lost),
+                                                data.gaps.size() == 1 ? QObject::tr("1 gap")
+                                                                      : QObject::tr("%1 gaps").arg(data.gaps.size()));
+    html += row(QObject::tr("Samples"), QObject::tr("%1 Hz, %2 per channel; %3")
+                                            .arg(number(s.sampleRate_hz, 1))
+                                            .arg(QLocale().toString(static_cast<qulonglong>(s.sampleCount)))
+                                            .arg(losses));
+    html += row(QObject::tr("Session"), QObject::tr("%1 (%2), %3").arg(s.id).arg(text(s.uuid), text(s.status)));
+    if (!m.notes.empty()) html += row(QObject::tr("Notes"), text(m.notes));
+    return html + QStringLiteral("</table>");
+}
+
+QString verdict(const core::report::ReportData& data)
+{
+    const std::string& verdict = data.session.verdict;
+    if (!verdict.empty()) {
+        const bool pass = verdict == "pass";
+        return QStringLiteral("<p class=verdict style='color:%1'>%2 %3</p>")
+            .arg(pass ? QStringLiteral("#2e7d32") : QStringLiteral("#c62828"), QObject::tr("Verdict:"),
+                 text(verdict).toUpper());
+    }
+    if (!data.readings.empty()) {
+        double sum = 0.0;
+        for (const auto& r : data.readings) sum += r.value;
+        return QStringLiteral("<p class=verdict>%1</p>")
+            .arg(QObject::tr("%n reading(s), mean %1 %2", nullptr, static_cast<int>(data.readings.size()))
+                     .arg(number(sum / static_cast<double>(data.readings.size()), 1), text(data.readings[0].unit)));
+    }
+    return QStringLiteral("<p class=verdict>%1</p>").arg(QObject::tr("No verdict recorded"));
+}
+
+QString eventTables(const core::report::ReportData& data)
+{
+    std::vector<QStringList> defects, others;
+    for (const auto& e : data.events) {
+        if (e.kind == "defect") {
+            defects.push_back({number(e.start_s, 3),
+                               e.direction > 0 ? QObject::tr("A then B") : QObject::tr("B then A"),
+                               e.peakR ? number(*e.peakR, 3) : QStringLiteral("—"),
+                               e.lag_s ? number(*e.lag_s * 1e3, 0) : QStringLiteral("—"),
+                               e.speed_m_per_s ? number(*e.speed_m_per_s * 1e3, 0) : QStringLiteral("—")});
+        } else {
+            others.push_back({number(e.start_s, 3), text(e.kind), orDash(e.note)});
+        }
+    }
+    QString html;
+    if (data.session.metadata.mode == "panel-scan" || !defects.empty()) {
+        html += QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Defects (%1)").arg(defects.size()));
+        html += defects.empty() ? QStringLiteral("<p>%1</p>").arg(QObject::tr("None found."))
+                                : table({QObject::tr("Time (s)"), QObject::tr("Order"), QObject::tr("Peak R"),
+                                         QObject::tr("Lag (ms)"), QObject::tr("Speed (mm/s)")},
+                                        defects);
+    }
+    if (!data.readings.empty()) {
+        std::vector<QStringList> rows;
+        for (const auto& r : data.readings) {
+            QString value = number(r.value, 2);
+            if (r.standardError) value += QStringLiteral(" ± ") + number(*r.standardError, 2);
+            rows.push_back(
+                {number(r.start_s, 2), text(r.quantity), value + QStringLiteral(" ") + text(r.unit), orDash(r.site)});
+        }
+        html += QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Readings (%1)").arg(data.readings.size()));
+        html +=
+            table({QObject::tr("Time (s)"), QObject::tr("Quantity"), QObject::tr("Value"), QObject::tr("Site")}, rows);
+    }
+    if (!others.empty()) {
+        html += QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Markers and alarms"));
+        html += table({QObject::tr("Time (s)"), QObject::tr("Kind"), QObject::tr("Note")}, others);
+    }
+    if (!data.annotations.empty()) {
+        std::vector<QStringList> rows;
+        for (const auto& a : data.annotations) rows.push_back({number(a.time_s, 2), orDash(a.author), text(a.text)});
+        html += QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Notes"));
+        html += table({QObject::tr("Time (s)"), QObject::tr("By"), QObject::tr("Note")}, rows);
+    }
+    return html;
+}
+
+const char* kStyle = "body { font-family: 'DejaVu Sans'; font-size: 9pt; }"
+                     "h1 { font-size: 16pt; margin-bottom: 2px; }"
+                     "h2 { font-size: 11pt; margin-top: 14px; margin-bottom: 4px; }"
+                     "table.header th { padding-right: 12px; color: #555; font-weight: normal; }"
+                     "table.list th { background-color: #eeeeee; }"
+                     "table.list td { border-bottom: 1px solid #dddddd; }"
+                     "p.verdict { font-size: 14pt; font-weight: bold; margin-top: 10px; }"
+                     "p.footer { color: #777; font-size: 7pt; }";
+
+}  // namespace
+
+std::unique_ptr<QTextDocument> buildReportDocument(const core::report::ReportData& data)
+{
+    auto document = std::make_unique<QTextDocument>();
+    document->setDefaultStyleSheet(QString::fromLatin1(kStyle));
+    document->setDocumentMargin(0);
+    const int plotHeight = kLaneHeight_px * static_cast<int>(std::max<std::size_t>(1, data.traces.size())) + 40;
+    const QUrl plotUrl(QStringLiteral("tactiscope://plot.png"));
+    document->addResource(QTextDocument::ImageResource, plotUrl,
+                          renderReportPlot(data, QSize(kTextWidth_px, plotHeight), kPlotScale));
+    QString html = QStringLiteral("<h1>%1</h1>")
+                       .arg(QObject::tr("Inspection report — %1").arg(orDash(data.session.metadata.subject)));
+    html += header(data);
+    html += verdict(data);
+    html += QStringLiteral("<p><img src='%1' width=%2 height=%3></p>")
+                .arg(plotUrl.toString())
+                .arg(kTextWidth_px)
+                .arg(plotHeight);
+    html += QStringLiteral("<p><small>%1</small></p>")
+                .arg(QObject::tr("Shaded: defects (orange A then B, purple B then A), readings (green), lost "
+                                 "samples (grey); dashed: markers. Bands show each stretch's minimum and maximum."));
+    html += eventTables(data);
+    html += QStringLiteral("<p class=footer>%1</p>")
+                .arg(QObject::tr("Tactiscope %1 (recorded with %2), %3 UTC")
+                         .arg(QString::fromUtf8(core::versionString()), orDash(data.session.appVersion),
+                              QString::fromStdString(core::text::utcNow())));
+    document->setHtml(html);
+    return document;
+}
+
+int writeReportPdf(const core::report::ReportData& data, const QString& path)
+{
+    int pages = 0;
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        throw std::runtime_error("cannot write " + path.toStdString() + ": " + file.errorString().toStdString());
+    {
+        QPdfWriter writer(&file);
+        writer.setPageSize(QPageSize(QPageSize::A4));
+        writer.setPageMargins(QMarginsF(0, 0, 0, 0), QPageLayout::Millimeter);  // print() adds 2 cm
+        writer.setTitle(QObject::tr("Inspection report, session %1").arg(data.session.id));
+        writer.setCreator(QStringLiteral("Tactiscope %1").arg(QString::fromUtf8(core::versionString())));
+        const auto document = buildReportDocument(data);
+        document->print(&writer);
+        pages = document->pageCount();
+    }
+    if (!file.commit())
+        throw std::runtime_error("writing " + path.toStdString() + " failed: " + file.errorString().toStdString());
+    return pages;
+}
+
+}  // namespace tactiscope::ui

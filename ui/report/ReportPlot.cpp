@@ -1,0 +1,142 @@
+// ReportPlot: lanes, bands and the session's records on QCustomPlot.
+#include "ui/report/ReportPlot.h"
+
+#include "ui/DisplayUnits.h"
+
+#include <QFileInfo>
+#include <QPainter>
+#include <QSvgGenerator>
+#include <qcustomplot.h>
+
+#include <memory>
+#include <stdexcept>
+
+namespace tactiscope::ui {
+namespace {
+
+const QColor kTrace(31, 119, 180);
+const QColor kDefectAThenB(217, 95, 2, 70);
+const QColor kDefectBThenA(117, 112, 179, 70);
+const QColor kReading(27, 158, 119, 50);
+const QColor kMarker(90, 90, 90);
+const QColor kGap(160, 160, 160, 90);
+
+// x in seconds on the lane's time axis, y as a fraction of the lane's height.
+void placeInLane(QCPItemPosition* position, QCPAxisRect* rect, double time_s, double heightRatio)
+{
+    position->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+    position->setAxisRect(rect);
+    position->setTypeY(QCPItemPosition::ptAxisRectRatio);
+    position->setCoords(time_s, heightRatio);
+}
+
+void shade(QCustomPlot& plot, QCPAxisRect* rect, double from_s, double to_s, const QColor& colour)
+{
+    auto* item = new QCPItemRect(&plot);
+    item->setClipAxisRect(rect);
+    placeInLane(item->topLeft, rect, from_s, 0.0);
+    placeInLane(item->bottomRight, rect, to_s, 1.0);
+    item->setPen(Qt::NoPen);
+    item->setBrush(colour);
+}
+
+void mark(QCustomPlot& plot, QCPAxisRect* rect, double time_s)
+{
+    auto* line = new QCPItemStraightLine(&plot);
+    line->setClipAxisRect(rect);
+    placeInLane(line->point1, rect, time_s, 0.0);
+    placeInLane(line->point2, rect, time_s, 1.0);
+    line->setPen(QPen(kMarker, 1.0, Qt::DashLine));
+}
+
+// The lane's band: the max line filled down to the min line.
+void addBand(QCustomPlot& plot, QCPAxisRect* rect, const core::report::ReportTrace& trace, const DisplayUnit& unit)
+{
+    QCPGraph* low = plot.addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+    QCPGraph* high = plot.addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+    const double rate_hz = trace.channel.sampleRate_hz;
+    for (const auto& p : trace.points) {
+        const double t_s = (static_cast<double>(p.firstIndex) + 0.5 * static_cast<double>(p.count)) / rate_hz;
+        // NaN (a stretch inside a gap) breaks the line, as it should.
+        low->addData(t_s, p.min * unit.scale);
+        high->addData(t_s, p.max * unit.scale);
+    }
+    low->setPen(QPen(kTrace, 1.0));
+    high->setPen(QPen(kTrace, 1.0));
+    high->setBrush(QColor(kTrace.red(), kTrace.green(), kTrace.blue(), 110));
+    high->setChannelFillGraph(low);
+    low->rescaleValueAxis(false, true);
+    high->rescaleValueAxis(true, true);
+    QCPAxis* values = rect->axis(QCPAxis::atLeft);
+    const QCPRange range = values->range();
+    const double margin = range.size() > 0.0 ? 0.08 * range.size() : 1.0;
+    values->setRange(range.lower - margin, range.upper + margin);
+}
+
+// Builds the plot; the caller renders it.
+std::unique_ptr<QCustomPlot> buildPlot(const core::report::ReportData& data)
+{
+    auto plot = std::make_unique<QCustomPlot>();
+    plot->plotLayout()->clear();
+    auto* margins = new QCPMarginGroup(plot.get());
+    const double rate_hz = data.session.sampleRate_hz;
+    for (std::size_t lane = 0; lane < data.traces.size(); ++lane) {
+        const auto& trace = data.traces[lane];
+        auto* rect = new QCPAxisRect(plot.get());
+        plot->plotLayout()->addElement(static_cast<int>(lane), 0, rect);
+        rect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
+        const DisplayUnit unit = displayUnitFor(trace.channel.descriptor);
+        rect->axis(QCPAxis::atLeft)
+            ->setLabel(
+                QStringLiteral("%1\n%2").arg(QString::fromStdString(trace.channel.descriptor.name), unit.axisTitle()));
+        QCPAxis* time = rect->axis(QCPAxis::atBottom);
+        time->setRange(data.from_s, data.to_s);
+        // Only the bottom lane names the shared time axis.
+        time->setTickLabels(lane + 1 == data.traces.size());
+        if (lane + 1 == data.traces.size()) time->setLabel(QObject::tr("Time (s)"));
+        for (const auto& gap : data.gaps)
+            shade(*plot, rect, static_cast<double>(gap.firstIndex) / rate_hz,
+                  static_cast<double>(gap.firstIndex + gap.count) / rate_hz, kGap);
+        for (const auto& event : data.events) {
+            if (event.kind == "defect")
+                shade(*plot, rect, event.start_s, event.end_s, event.direction > 0 ? kDefectAThenB : kDefectBThenA);
+            else if (event.kind == "marker")
+                mark(*plot, rect, event.start_s);
+        }
+        for (const auto& reading : data.readings) shade(*plot, rect, reading.start_s, reading.end_s, kReading);
+        addBand(*plot, rect, trace, unit);
+    }
+    return plot;
+}
+
+}  // namespace
+
+QImage renderReportPlot(const core::report::ReportData& data, QSize size, double scale)
+{
+    const auto plot = buildPlot(data);
+    return plot->toPixmap(size.width(), size.height(), scale).toImage();
+}
+
+void saveReportPlot(const core::report::ReportData& data, QSize size, const QString& path)
+{
+    const auto plot = buildPlot(data);
+    bool saved = false;
+    if (QFileInfo(path).suffix().compare(QLatin1String("svg"), Qt::CaseInsensitive) == 0) {
+        QSvgGenerator svg;
+        svg.setFileName(path);
+        svg.setSize(size);
+        svg.setViewBox(QRect(QPoint(0, 0), size));
+        svg.setTitle(QObject::tr("Session %1").arg(data.session.id));
+        QCPPainter painter;
+        saved = painter.begin(&svg);
+        if (saved) {
+            plot->toPainter(&painter, size.width(), size.height());
+            saved = painter.end();
+        }
+    } else {
+        saved = plot->savePng(path, size.width(), size.height(), 2.0);
+    }
+    if (!saved) throw std::runtime_error("cannot write " + path.toStdString());
+}
+
+}  // namespace tactiscope::ui
