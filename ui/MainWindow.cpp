@@ -15,6 +15,7 @@
 #include "devices/simulator/SimulatorSource.h"
 #include "ui/ActiveProfiles.h"
 #include "ui/CapacitiveView.h"
+#include "ui/DesignTool.h"
 #include "ui/DevicePanel.h"
 #include "ui/InterruptedSessionsReport.h"
 #include "ui/LivePlotWidget.h"
@@ -319,6 +320,13 @@ void MainWindow::createMenus()
             m_xyPlot->setWindowLength(seconds);
         });
     }
+
+    QMenu* tools = menuBar()->addMenu(tr("&Tools"));
+    tools->addAction(tr("Compliance probe &design…"), this, [this] {
+        auto* tool = new DesignTool(ProfileLibrary::defaultDirectory(), this);
+        tool->setAttribute(Qt::WA_DeleteOnClose);
+        tool->show();
+    });
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About Tactiscope"), this, &MainWindow::showAbout);
