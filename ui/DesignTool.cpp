@@ -157,7 +157,8 @@ void DesignTool::redraw()
     if (lengths_m.size() > kLengthColours.size())
         return fail(tr("Beam lengths: at most %1 at a time").arg(kLengthColours.size()));
     const auto from = m_from->value(), to = m_to->value();
-    if (!from || !to || *from < 0.0 || !(*from < *to)) return fail(tr("Object stiffness: give a range from 0 up, lowest first"));
+    if (!from || !to || *from < 0.0 || !(*from < *to))
+        return fail(tr("Object stiffness: give a range from 0 up, lowest first"));
 
     const auto& probe =
         std::get<core::sensors::CompliancePairProfile>(*m_probes[static_cast<std::size_t>(index)].profile);
