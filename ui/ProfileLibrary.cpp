@@ -85,8 +85,9 @@ QString ProfileLibrary::save(const core::sensors::SensorProfile& profile, const 
 
 void ProfileLibrary::remove(const QString& path) const
 {
+    if (!contains(path)) throw core::sensors::ProfileError(path.toStdString() + ": not in the profile library");
     QFile file(path);
-    if (!contains(path) || !file.remove())
+    if (!file.remove())
         throw core::sensors::ProfileError(path.toStdString() + ": cannot delete (" + file.errorString().toStdString() +
                                           ")");
 }

@@ -123,9 +123,11 @@ QString verdict(const core::report::ReportData& data)
     if (!data.readings.empty()) {
         double sum = 0.0;
         for (const auto& r : data.readings) sum += r.value;
+        const auto count = data.readings.size();
+        const QString readings = count == 1 ? QObject::tr("1 reading") : QObject::tr("%1 readings").arg(count);
         return QStringLiteral("<p class=verdict>%1</p>")
-            .arg(QObject::tr("%n reading(s), mean %1 %2", nullptr, static_cast<int>(data.readings.size()))
-                     .arg(number(sum / static_cast<double>(data.readings.size()), 1), text(data.readings[0].unit)));
+            .arg(QObject::tr("%1, mean %2 %3")
+                     .arg(readings, number(sum / static_cast<double>(count), 1), text(data.readings[0].unit)));
     }
     return QStringLiteral("<p class=verdict>%1</p>").arg(QObject::tr("No verdict recorded"));
 }
