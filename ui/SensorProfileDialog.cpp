@@ -198,14 +198,11 @@ void SensorProfileDialog::setLocked(bool locked, const QString& reason)
     updateState();
 }
 
-QString SensorProfileDialog::activePath() const
-{
-    return activeProfile(mode()).path;
-}
-
 void SensorProfileDialog::reload(const QString& selectPath)
 {
-    const QString active = activePath();
+    // Read (and parsed) here once, not on every keystroke in updateState().
+    m_activePath = activeProfile(mode()).path;
+    const QString& active = m_activePath;
     m_entries = m_library.entries(mode(), active);
     const QSignalBlocker blocker(m_list);
     m_list->clear();
@@ -276,7 +273,7 @@ void SensorProfileDialog::setDirty(bool dirty)
 void SensorProfileDialog::updateState()
 {
     const ProfileEntry* entry = selectedEntry();
-    const QString active = activePath();
+    const QString& active = m_activePath;
     const bool onForm = m_forms->currentWidget() == form();
     const FormResult result = onForm ? form()->result() : FormResult{std::nullopt, entry ? entry->error : QString()};
     const bool valid = result.profile.has_value();
@@ -343,7 +340,7 @@ bool SensorProfileDialog::save()
 {
     const FormResult result = form()->result();
     if (!m_dirty || !result.profile) return false;
-    const bool wasActive = samePath(m_editingPath, activePath()) && m_library.contains(m_editingPath);
+    const bool wasActive = samePath(m_editingPath, m_activePath) && m_library.contains(m_editingPath);
     if (wasActive && m_locked) return false;
     QString path;
     try {

@@ -68,10 +68,10 @@ private:
     void say(const QString& message, bool problem = false);
     ProfileForm* form() const;
     const ProfileEntry* selectedEntry() const;
-    QString activePath() const;
 
     ProfileLibrary m_library;
     std::vector<ProfileEntry> m_entries;  // as listed
+    QString m_activePath;                 // the mode's profile in use, as of the last reload()
     QString m_editingPath;                // empty for a new profile
     bool m_dirty = false;
     bool m_locked = false;
