@@ -38,17 +38,20 @@ CapacitiveWeightsScenario::CapacitiveWeightsScenario(const CapacitiveWeightsPara
     if (p.protocol == WeightProtocol::Cumulative) {
         for (double w : p.weights_mgf) add(w, true);
         for (auto it = p.weights_mgf.rbegin() + 1; it != p.weights_mgf.rend(); ++it) add(*it, false);
-    } else {
+    } else if (p.protocol == WeightProtocol::Individual) {
         for (double w : p.weights_mgf) {
             add(w, true);
             add(0.0, false);
         }
+    } else {
+        m_rig = std::make_shared<LoadRig>();
     }
     m_duration_s = t + p.baseline_s;
 }
 
 double CapacitiveWeightsScenario::loadAt_n(double t_s) const
 {
+    if (m_rig) return m_rig->load_n();
     for (const WeightStep& step : m_schedule) {
         if (t_s >= step.start_s && t_s < step.end_s) return step.force_n;
     }

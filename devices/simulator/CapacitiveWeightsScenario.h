@@ -7,8 +7,10 @@
 // which also leaves a little hysteresis between loading and unloading. The
 // baseline drifts linearly and wanders (random walk), and every sample has
 // white noise. Protocols: cumulative (weights stacked up in steps, then
-// taken off again, the paper's procedure) or individual (each weight placed
-// and removed on its own, so the baseline reappears between weights).
+// taken off again, the paper's procedure), individual (each weight placed
+// and removed on its own, so the baseline reappears between weights) or
+// manual (a calibration wizard places and removes weights through the
+// scenario's LoadRig, when it wants, for as long as it wants).
 #pragma once
 
 #include "core/sensors/CapacitiveBeam.h"
@@ -20,7 +22,7 @@
 
 namespace tactiscope::devices::simulator {
 
-enum class WeightProtocol { Cumulative, Individual };
+enum class WeightProtocol { Cumulative, Individual, Manual };
 
 struct CapacitiveWeightsParameters {
     double sampleRate_hz = 10.0;
@@ -62,15 +64,18 @@ public:
     const CapacitiveWeightsParameters& parameters() const { return m_p; }
     const core::sensors::CapacitiveBeam& beam() const { return m_beam; }
     // The loaded steps after the first baseline, and the whole length.
+    // Empty for the manual protocol, which has no script.
     const std::vector<WeightStep>& schedule() const { return m_schedule; }
     double duration_s() const { return m_duration_s; }
     double loadAt_n(double t_s) const;
+    std::shared_ptr<LoadRig> loadRig() const override { return m_rig; }
 
 private:
     CapacitiveWeightsParameters m_p;
     std::vector<core::ChannelDescriptor> m_channels;
     core::sensors::CapacitiveBeam m_beam;
     std::vector<WeightStep> m_schedule;
+    std::shared_ptr<LoadRig> m_rig;  // manual protocol only
     double m_duration_s = 0.0;
     GaussianNoise m_noise;
     GaussianNoise m_wanderSteps;

@@ -2,6 +2,7 @@
 #include "devices/simulator/ScenarioCatalog.h"
 
 #include "devices/simulator/CapacitiveWeightsScenario.h"
+#include "devices/simulator/GaugeCalibrationScenario.h"
 #include "devices/simulator/PalpationScenario.h"
 #include "devices/simulator/PanelScanScenario.h"
 
@@ -9,7 +10,7 @@ namespace tactiscope::devices::simulator {
 
 std::vector<std::string> scenarioIds()
 {
-    return {"panel-scan", "palpation", "capacitive-weights"};
+    return {"panel-scan", "palpation", "capacitive-weights", "gauge-calibration", "capacitive-calibration"};
 }
 
 std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64_t seed, std::optional<double> rate_hz)
@@ -26,11 +27,18 @@ std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64
         if (rate_hz) parameters.sampleRate_hz = *rate_hz;
         return std::make_unique<PalpationScenario>(parameters);
     }
-    if (id == "capacitive-weights") {
+    if (id == "capacitive-weights" || id == "capacitive-calibration") {
         CapacitiveWeightsParameters parameters;
         parameters.seed = seed;
         if (rate_hz) parameters.sampleRate_hz = *rate_hz;
+        if (id == "capacitive-calibration") parameters.protocol = WeightProtocol::Manual;
         return std::make_unique<CapacitiveWeightsScenario>(parameters);
+    }
+    if (id == "gauge-calibration") {
+        GaugeCalibrationParameters parameters;
+        parameters.seed = seed;
+        if (rate_hz) parameters.sampleRate_hz = *rate_hz;
+        return std::make_unique<GaugeCalibrationScenario>(parameters);
     }
     return nullptr;
 }

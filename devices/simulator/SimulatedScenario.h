@@ -4,6 +4,9 @@
 #pragma once
 
 #include "core/ChannelDescriptor.h"
+#include "devices/simulator/LoadRig.h"
+
+#include <memory>
 
 #include <string>
 #include <vector>
@@ -25,6 +28,10 @@ public:
     // Fills every sample of `block` with the next samples of the scenario;
     // the block's shape (channels, samples) is set by the caller.
     virtual void generate(core::SampleBlock& block) = 0;
+
+    // The rig a calibration wizard places loads with; null for scenarios that
+    // follow their own script.
+    virtual std::shared_ptr<LoadRig> loadRig() const { return nullptr; }
 };
 
 }  // namespace tactiscope::devices::simulator

@@ -16,6 +16,7 @@ SimulatorSource::SimulatorSource(std::unique_ptr<SimulatedScenario> scenario, co
 {
     if (!m_scenario) throw std::invalid_argument("simulator needs a scenario");
     if (m_options.samplesPerBlock == 0) throw std::invalid_argument("simulator needs at least one sample per block");
+    if (!(m_options.speed > 0.0)) throw std::invalid_argument("simulator speed must be positive");
     if (m_options.duration_s) {
         if (!(*m_options.duration_s >= 0.0)) throw std::invalid_argument("simulation duration must not be negative");
         m_totalSamples = static_cast<std::uint64_t>(std::llround(*m_options.duration_s * m_scenario->sampleRate_hz()));
@@ -41,7 +42,7 @@ ReadStatus SimulatorSource::readBlock(core::SampleBlock& out, std::chrono::milli
         if (!m_start) m_start = now;
         const auto ready =
             *m_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                           std::chrono::duration<double>(static_cast<double>(m_produced + count) * dt_s));
+                           std::chrono::duration<double>(static_cast<double>(m_produced + count) * dt_s / m_options.speed));
         if (ready > now + timeout) {
             std::this_thread::sleep_for(timeout);
             return ReadStatus::Timeout;

@@ -21,12 +21,15 @@ struct SimulatorOptions {
     Pacing pacing = Pacing::RealTime;
     std::size_t samplesPerBlock = 10;  // 20 ms at 500 Hz: smooth, cheap to pass around
     std::optional<double> duration_s;  // unlimited when empty
+    // Real-time pacing only: simulated seconds per wall-clock second, so a
+    // test can walk through a minute-long calibration in seconds.
+    double speed = 1.0;
 };
 
 class SimulatorSource final : public BlockSource {
 public:
-    // Throws std::invalid_argument for a null scenario, zero samples per block
-    // or a negative duration.
+    // Throws std::invalid_argument for a null scenario, zero samples per block,
+    // a negative duration or a non-positive speed.
     SimulatorSource(std::unique_ptr<SimulatedScenario> scenario, const SimulatorOptions& options = {});
 
     std::string name() const override;

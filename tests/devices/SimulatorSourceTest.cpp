@@ -14,6 +14,7 @@ using tactiscope::core::SampleBlock;
 using tactiscope::devices::ReadStatus;
 using tactiscope::devices::simulator::makeScenario;
 using tactiscope::devices::simulator::Pacing;
+using tactiscope::devices::simulator::SimulatorOptions;
 using tactiscope::devices::simulator::SimulatorSource;
 
 TEST(SimulatorSource, NamesItselfAfterTheScenario)
@@ -63,12 +64,29 @@ TEST(SimulatorSource, RealTimePacingNeverDeliversABlockBeforeItsTime)
     EXPECT_GE(std::chrono::steady_clock::now() - start, 150ms);
 }
 
+TEST(SimulatorSource, AFasterSpeedStillPacesSimulatedTime)
+{
+    SimulatorOptions options;
+    options.speed = 10.0;
+    SimulatorSource source(makeScenario("panel-scan"), options);
+    SampleBlock block;
+    const auto start = std::chrono::steady_clock::now();
+    std::uint64_t samples = 0;
+    while (samples < 1000) {
+        if (source.readBlock(block, 50ms) == ReadStatus::Block) samples += block.sampleCount();
+    }
+    // 2 s of simulated time at ten times real time: 200 ms at the least.
+    EXPECT_GE(std::chrono::steady_clock::now() - start, 150ms);
+}
+
 TEST(SimulatorSource, RejectsBadOptions)
 {
     EXPECT_THROW(SimulatorSource(nullptr), std::invalid_argument);
     EXPECT_THROW(SimulatorSource(makeScenario("panel-scan"), {Pacing::RealTime, 0, std::nullopt}),
                  std::invalid_argument);
     EXPECT_THROW(SimulatorSource(makeScenario("panel-scan"), {Pacing::RealTime, 10, -1.0}), std::invalid_argument);
+    EXPECT_THROW(SimulatorSource(makeScenario("panel-scan"), {Pacing::RealTime, 10, std::nullopt, 0.0}),
+                 std::invalid_argument);
 }
 
 TEST(ScenarioCatalog, KnowsPanelScanAndRefusesUnknownIds)

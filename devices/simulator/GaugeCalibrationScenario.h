@@ -1,0 +1,59 @@
+// Simulated gauge-factor calibration rig: one strain-gauged cantilever (the
+// paper's stiff Perspex beam, seed 001) clamped at its root, with masses
+// hung on its tip through a LoadRig. One channel, the bridge ADC in counts.
+//
+// The gauge on the beam is not the datasheet's: its true gauge factor
+// (bonding, lead resistance, the gauge's own tolerance) differs from the
+// nominal one the chain is configured with, which is exactly what the
+// wizard must find. Physics: a tip force F strains the root by
+// ε = F·6L/(E·w·t²); the bridge turns GF_true·ε into volts; the beam swings
+// to rest with a first-order lag after a load changes. Electrical noise at
+// the ADC input and quantisation come last, over an unbalanced bridge's
+// zero offset.
+#pragma once
+
+#include "core/sensors/CantileverBeam.h"
+#include "core/straingauge/StrainGaugeChain.h"
+#include "devices/simulator/GaussianNoise.h"
+#include "devices/simulator/SimulatedScenario.h"
+
+#include <cstdint>
+
+namespace tactiscope::devices::simulator {
+
+struct GaugeCalibrationParameters {
+    double sampleRate_hz = 500.0;
+    core::sensors::CantileverGeometry beam{0.05, 0.01, 0.003, 3e9};
+    core::straingauge::AdcSettings adc;        // as the device is configured
+    core::straingauge::BridgeSettings bridge;  // its gaugeFactor is the nominal one
+    double trueGaugeFactor = 2.14;             // 7 % above the nominal 2.0
+    double zeroOffset_counts = 120.0;
+    double settleTime_s = 0.15;
+    double electricalNoise_v = 1e-3;  // at the ADC input
+    std::uint64_t seed = 1;
+};
+
+class GaugeCalibrationScenario final : public SimulatedScenario {
+public:
+    // Throws std::invalid_argument for non-physical parameters.
+    explicit GaugeCalibrationScenario(const GaugeCalibrationParameters& parameters = {});
+
+    std::string name() const override { return "gauge-factor calibration rig"; }
+    const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
+    double sampleRate_hz() const override { return m_p.sampleRate_hz; }
+    void generate(core::SampleBlock& block) override;
+    std::shared_ptr<LoadRig> loadRig() const override { return m_rig; }
+
+    const GaugeCalibrationParameters& parameters() const { return m_p; }
+
+private:
+    GaugeCalibrationParameters m_p;
+    std::vector<core::ChannelDescriptor> m_channels;
+    core::sensors::CantileverBeam m_beam;
+    core::straingauge::StrainGaugeChain m_trueChain;  // the chain with the gauge's real factor
+    std::shared_ptr<LoadRig> m_rig = std::make_shared<LoadRig>();
+    GaussianNoise m_noise;
+    double m_settled_n = 0.0;  // the load the beam has swung to so far
+};
+
+}  // namespace tactiscope::devices::simulator
