@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <vector>
 
@@ -26,6 +28,11 @@ FitCredibility judgeFit(std::span<const double> x, std::span<const double> y, co
     const auto [low, high] = std::minmax_element(y.begin(), y.end());
     const double span = y.empty() ? 0.0 : *high - *low;
     if (x.size() < 3 || !(span > 0.0)) return result;
+    // The suspect is the point least likely under the others' line: its
+    // distance over the prediction error there, which grows with the
+    // scatter of the others and with the distance from their centre (an end
+    // point always sits far from a line fitted without it).
+    double worstScore = -1.0;
     std::vector<double> otherX, otherY;
     for (std::size_t i = 0; i < x.size(); ++i) {
         otherX.clear();
@@ -41,8 +48,20 @@ FitCredibility judgeFit(std::span<const double> x, std::span<const double> y, co
         } catch (const std::invalid_argument&) {
             continue;  // the others share one x: they say nothing about this point
         }
-        const double offLine = std::abs(y[i] - (others.intercept + others.slope * x[i])) / span;
-        if (!result.farthest || offLine > result.farthest->offLine) result.farthest = OffLinePoint{i, offLine};
+        const double distance = std::abs(y[i] - (others.intercept + others.slope * x[i]));
+        const auto n = static_cast<double>(otherX.size());
+        const double meanX = std::accumulate(otherX.begin(), otherX.end(), 0.0) / n;
+        double sxx = 0.0;
+        for (double v : otherX) sxx += (v - meanX) * (v - meanX);
+        const double predictionError =
+            others.residualStandardDeviation * std::sqrt(1.0 + 1.0 / n + (x[i] - meanX) * (x[i] - meanX) / sxx);
+        const double score = predictionError > 0.0 ? distance / predictionError
+                             : distance > 0.0      ? std::numeric_limits<double>::infinity()
+                                                   : 0.0;
+        if (score > worstScore) {
+            worstScore = score;
+            result.farthest = OffLinePoint{i, distance / span};
+        }
     }
     result.pointOffLine = result.farthest && result.farthest->offLine > limits.maximumOffLine;
     return result;

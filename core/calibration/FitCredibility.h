@@ -1,10 +1,12 @@
 // Whether a calibration fit may be trusted, before anyone stores it: enough
-// points, a high enough R², and no point far off the line. "Far off" is
-// judged against the line fitted through the *other* points (leave one
-// out), because a single bad point drags a least-squares line towards
-// itself and hides in its own residual; and it is measured as a fraction of
-// the full-scale span of y, so sensor noise far below what matters never
-// refuses a calibration.
+// points, a high enough R², and no point far off the line. The suspect
+// point is found against the line fitted through the *other* points (leave
+// one out, scaled by that line's prediction error: the externally
+// studentized residual), because a single bad point drags a least-squares
+// line towards itself and hides in its own residual, and an end point
+// always lies far from a line fitted without it. Whether the suspect is
+// "far off" is then its distance as a fraction of the full-scale span of
+// y, so sensor noise far below what matters never refuses a calibration.
 #pragma once
 
 #include <cstddef>
@@ -27,8 +29,8 @@ struct OffLinePoint {
 struct FitCredibility {
     std::size_t points = 0;
     double rSquared = 0.0;
-    // The point farthest off the line through the others (none with fewer
-    // than three points), and whether it is beyond the limit.
+    // The most suspect point and its distance from the line through the
+    // others (none with fewer than three points).
     std::optional<OffLinePoint> farthest;
     bool tooFewPoints = false;
     bool rSquaredTooLow = false;

@@ -2,6 +2,7 @@
 #include "core/calibration/GaugeFactorCalibration.h"
 
 #include <stdexcept>
+#include <utility>
 
 namespace tactiscope::core::calibration {
 
@@ -34,6 +35,8 @@ GaugeFactorResult calibrateGaugeFactor(const sensors::CantileverBeam& beam, cons
     result.nominalGaugeFactor = chain.bridge().gaugeFactor;
     result.deviationFromNominal = (result.gaugeFactor - result.nominalGaugeFactor) / result.nominalGaugeFactor;
     result.countsPerNewton = result.forceFit.slope;
+    result.strain = std::move(strain);
+    result.relativeChange = std::move(change);
     result.zeroCounts = zeroCounts;
 
     CalibrationRecord& r = result.record;

@@ -40,6 +40,9 @@ struct GaugeFactorResult {
     double deviationFromNominal = 0.0;  // (effective − nominal) / nominal
     double countsPerNewton = 0.0;
     double zeroCounts = 0.0;
+    // The fitted points, the zero first and then the loads in their order:
+    // root strain and the bridge's relative change x = ΔR/R.
+    std::vector<double> strain, relativeChange;
     LinearFit strainFit;  // x = GF·ε: slope is the gauge factor
     LinearFit forceFit;   // counts − zero against force
     CalibrationRecord record;

@@ -17,6 +17,7 @@ TEST(FitCredibility, PointsOnALineAreCredible)
     EXPECT_DOUBLE_EQ(c.rSquared, 1.0);
     ASSERT_TRUE(c.farthest);
     EXPECT_NEAR(c.farthest->offLine, 0.0, 1e-12);
+    EXPECT_FALSE(c.pointOffLine);
 }
 
 TEST(FitCredibility, APointOffTheLineThroughTheOthersIsNamed)
@@ -36,6 +37,21 @@ TEST(FitCredibility, APointOffTheLineThroughTheOthersIsNamed)
 
     limits.maximumOffLine = 0.13;
     EXPECT_TRUE(judgeFit(x, y, limits).credible());
+}
+
+TEST(FitCredibility, AnEndPointIsNotBlamedForAnotherPointsError)
+{
+    // Loads 0, 20, 50, 100, 200 g where the "100 g" reads as 50 g. The line
+    // through all but the 200 g point passes far below it (it is pulled by
+    // the bad point), yet the others without the bad point lie exactly on
+    // y = x: the bad point is the one named, 50 off of a span of 200.
+    const std::vector<double> x{0, 20, 50, 100, 200};
+    const std::vector<double> y{0, 20, 50, 50, 200};
+    const FitCredibility c = judgeFit(x, y, {});
+    ASSERT_TRUE(c.farthest);
+    EXPECT_EQ(c.farthest->index, 3u);
+    EXPECT_DOUBLE_EQ(c.farthest->offLine, 0.25);
+    EXPECT_TRUE(c.pointOffLine);
 }
 
 TEST(FitCredibility, TooFewPointsAreRefused)

@@ -1,0 +1,29 @@
+// What a calibration wizard works with: the connected device's live samples
+// and channels, the simulator's load rig when the device is the simulator,
+// where records are stored, who calibrates and where the profiles are.
+#pragma once
+
+#include "core/ChannelDescriptor.h"
+#include "core/LiveBuffer.h"
+#include "devices/simulator/LoadRig.h"
+
+#include <QString>
+
+#include <memory>
+#include <vector>
+
+namespace tactiscope::ui {
+
+struct CalibrationContext {
+    std::shared_ptr<const core::LiveBuffer> buffer;  // every channel of the device
+    std::vector<core::ChannelDescriptor> channels;
+    double sampleRate_hz = 0.0;
+    // The simulator's rig: the wizard hangs each load itself. Null for a
+    // real probe, where the operator does.
+    std::shared_ptr<devices::simulator::LoadRig> rig;
+    QString storePath;
+    QString operatorName;
+    QString profileDirectory;
+};
+
+}  // namespace tactiscope::ui

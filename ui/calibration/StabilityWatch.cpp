@@ -1,0 +1,74 @@
+// StabilityWatch: live samples → stability monitor → capture when armed.
+#include "ui/calibration/StabilityWatch.h"
+
+namespace tactiscope::ui {
+
+StabilityWatch::StabilityWatch(QObject* parent)
+    : QObject(parent)
+{
+    m_timer.setInterval(50);  // 20 updates a second: a calm indicator, no lag worth noticing
+    connect(&m_timer, &QTimer::timeout, this, &StabilityWatch::poll);
+}
+
+void StabilityWatch::setInput(std::shared_ptr<const core::LiveBuffer> buffer, std::size_t channel)
+{
+    m_buffer = std::move(buffer);
+    m_channel = channel;
+    m_cursor = {m_buffer ? m_buffer->samplesWritten() : 0, 0};
+    m_lastSample.invalidate();
+    restart();
+    if (m_buffer)
+        m_timer.start();
+    else
+        m_timer.stop();
+}
+
+void StabilityWatch::setSettings(const core::calibration::StabilitySettings& settings)
+{
+    m_monitor = core::calibration::StabilityMonitor(settings);
+    m_settings = settings;
+    restart();
+}
+
+void StabilityWatch::arm()
+{
+    restart();
+    m_armed = true;
+}
+
+bool StabilityWatch::receiving() const
+{
+    return m_lastSample.isValid() && m_lastSample.elapsed() < 1000;
+}
+
+void StabilityWatch::restart()
+{
+    m_monitor.reset();
+    m_latest.reset();
+    emit updated();
+}
+
+void StabilityWatch::poll()
+{
+    const std::uint64_t overrun = m_cursor.overrun;
+    if (m_buffer->readNew(m_cursor, m_chunk) == 0) {
+        emit updated();  // so "no signal" shows when the device stops
+        return;
+    }
+    m_lastSample.start();
+    // A window must be contiguous: samples the reader lost break it.
+    if (m_cursor.overrun != overrun) m_monitor.reset();
+    const auto& values = m_chunk.values.at(m_channel);
+    for (std::size_t i = 0; i < m_chunk.sampleCount(); ++i) {
+        auto window = m_monitor.push(m_chunk.time_s[i], values[i]);
+        if (!window) continue;
+        m_latest = window;
+        if (m_armed && window->stable) {
+            m_armed = false;
+            emit captured(*window);
+        }
+    }
+    emit updated();
+}
+
+}  // namespace tactiscope::ui

@@ -1,0 +1,35 @@
+// StoredCalibrations: reading and adding records through SessionStore.
+#include "ui/calibration/StoredCalibrations.h"
+
+#include "core/storage/SessionStore.h"
+
+#include <QFileInfo>
+
+namespace tactiscope::ui {
+
+std::optional<core::storage::StoredCalibration> newestCalibration(const QString& storePath, const std::string& kind,
+                                                                  const std::string& sensor)
+{
+    if (!QFileInfo::exists(storePath)) return std::nullopt;
+    try {
+        core::storage::SessionStore store(storePath.toStdString(), core::storage::Database::Access::ReadOnly);
+        auto all = store.calibrations(sensor);
+        for (auto it = all.rbegin(); it != all.rend(); ++it)
+            if (it->record.kind == kind) return std::move(*it);
+    } catch (const core::storage::StorageError& e) {
+        qWarning("calibrations not read: %s", e.what());
+    }
+    return std::nullopt;
+}
+
+std::int64_t storeCalibration(const QString& storePath, const core::calibration::CalibrationRecord& record)
+{
+    return core::storage::SessionStore(storePath.toStdString()).addCalibration(record);
+}
+
+std::string beamSensorName(const std::string& probeName, bool stiffBeam)
+{
+    return probeName + (stiffBeam ? " — stiff beam" : " — soft beam");
+}
+
+}  // namespace tactiscope::ui

@@ -1,0 +1,25 @@
+// The calibration records of the session store as the live views and the
+// wizards use them: the newest record of a kind for a sensor is the active
+// one, and a strain-gauged beam of a compliance probe is a sensor of its
+// own ("<probe> — stiff beam"), since each beam's gauge has its own factor.
+#pragma once
+
+#include "core/storage/SessionRecords.h"
+
+#include <QString>
+
+#include <optional>
+#include <string>
+
+namespace tactiscope::ui {
+
+// None when the store does not exist or cannot be read (logged).
+std::optional<core::storage::StoredCalibration> newestCalibration(const QString& storePath, const std::string& kind,
+                                                                  const std::string& sensor);
+
+// Stores the record and returns its id. Throws core::storage::StorageError.
+std::int64_t storeCalibration(const QString& storePath, const core::calibration::CalibrationRecord& record);
+
+std::string beamSensorName(const std::string& probeName, bool stiffBeam);
+
+}  // namespace tactiscope::ui
