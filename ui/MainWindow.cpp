@@ -26,6 +26,8 @@
 #include "ui/SessionBar.h"
 #include "ui/VerdictDialog.h"
 #include "ui/XYPlotWidget.h"
+#include "ui/calibration/GaugeFactorWizard.h"
+#include "ui/calibration/StoredCalibrations.h"
 
 #include <QActionGroup>
 #include <QApplication>
@@ -260,9 +262,7 @@ void MainWindow::createMenus()
     });
     QMenu* simulator = device->addMenu(tr("&Simulator"));
     for (const std::string& id : devices::simulator::scenarioIds()) {
-        simulator->addAction(QString::fromStdString(id), this, [this, id] {
-            connectSource(std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario(id)));
-        });
+        simulator->addAction(QString::fromStdString(id), this, [this, id] { connectSimulator(id); });
     }
     device->addSeparator();
     device->addAction(tr("&Disconnect"), this, &MainWindow::disconnectSource);
@@ -322,6 +322,8 @@ void MainWindow::createMenus()
     }
 
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
+    tools->addAction(tr("Calibrate the &gauge factor…"), this, [this] { calibrate(QStringLiteral("gauge")); });
+    tools->addSeparator();
     tools->addAction(tr("Compliance probe &design…"), this, [this] {
         auto* tool = new DesignTool(ProfileLibrary::defaultDirectory(), this);
         tool->setAttribute(Qt::WA_DeleteOnClose);
@@ -407,8 +409,13 @@ bool MainWindow::startRecording()
     metadata.deviceModel = source.name();
     if (const auto profile = m_modeProfiles.find(metadata.mode); profile != m_modeProfiles.end())
         metadata.profileJson = profile->second;
-    const bool calibrated = m_capacitiveCalibration && metadata.mode == "capacitive";
-    if (calibrated) metadata.calibrationsJson = "[" + m_capacitiveCalibration->record.toJson() + "]";
+    const auto& calibrations = m_modeCalibrations[metadata.mode];
+    if (!calibrations.empty()) {
+        metadata.calibrationsJson = "[";
+        for (const auto& stored : calibrations)
+            metadata.calibrationsJson += (stored.id == calibrations.front().id ? "" : ",") + stored.record.toJson();
+        metadata.calibrationsJson += "]";
+    }
     QDir().mkpath(QFileInfo(m_storePath).absolutePath());
     const double rate_hz = source.nominalSampleRate_hz();
     try {
@@ -419,7 +426,7 @@ bool MainWindow::startRecording()
         showProblem(tr("Cannot record"), tr("Recording could not start."), QString::fromStdString(e.what()));
         return false;
     }
-    if (calibrated) linkCalibration(m_recorder->sessionId(), m_capacitiveCalibration->id);
+    for (const auto& stored : calibrations) linkCalibration(m_recorder->sessionId(), stored.id);
     m_tap->attach(m_recorder);
     m_panelScan->startPanel();
     m_palpationView->startSubject();
@@ -586,6 +593,20 @@ void MainWindow::attachPalpation(const std::vector<core::ChannelDescriptor>& cha
     settings.low = probe.low;
     // A tenth of a second at least: a shorter contact is a tap, not a press.
     settings.press.minimumSamples = std::max<std::size_t>(20, static_cast<std::size_t>(0.1 * rate_hz));
+    // Each beam reads through its newest gauge-factor calibration, if any.
+    auto& calibrations = m_modeCalibrations["palpation"];
+    calibrations.clear();
+    QStringList calibrated;
+    for (const bool stiff : {true, false}) {
+        auto newest = newestCalibration(m_storePath, "gauge_factor", beamSensorName(probe.name, stiff));
+        const auto gaugeFactor = newest ? newest->record.value("gauge_factor") : std::nullopt;
+        if (!gaugeFactor || !(*gaugeFactor > 0.0)) continue;
+        (stiff ? settings.highGaugeFactor : settings.lowGaugeFactor) = *gaugeFactor;
+        calibrated << tr("%1 beam %2 by %3")
+                          .arg(stiff ? tr("stiff") : tr("soft"), QString::fromStdString(newest->record.timestampUtc),
+                               QString::fromStdString(newest->record.operatorName));
+        calibrations.push_back(std::move(*newest));
+    }
     try {
         m_palpation = std::make_shared<core::compliance::LivePalpation>(channels, rate_hz, settings,
                                                                         LivePlotWidget::kMaxWindow_s + 2.0);
@@ -593,7 +614,8 @@ void MainWindow::attachPalpation(const std::vector<core::ChannelDescriptor>& cha
         m_palpation.reset();  // not a compliance probe
     }
     m_palpationSlot->set(m_palpation);
-    m_palpationView->setPalpation(m_palpation, rate_hz, QString::fromStdString(probe.name));
+    m_palpationView->setPalpation(m_palpation, rate_hz, QString::fromStdString(probe.name),
+                                  calibrated.join(QStringLiteral(", ")));
 }
 
 // The capacitive readout runs whenever the probe has a capacitance channel,
@@ -606,9 +628,11 @@ void MainWindow::attachCapacitive(const std::vector<core::ChannelDescriptor>& ch
     auto sensitivity = core::capacitive::CapacitiveSensitivity::fromModel(beam);
     core::capacitive::DriftSettings drift;
     QString source = tr("none — the beam model (uncalibrated); drift tracking off");
-    m_capacitiveCalibration = newestCalibration("capacitive", probe.name);
-    if (m_capacitiveCalibration) {
-        const auto& record = m_capacitiveCalibration->record;
+    auto& calibrations = m_modeCalibrations["capacitive"];
+    calibrations.clear();
+    if (auto newest = newestCalibration(m_storePath, "capacitive", probe.name)) {
+        calibrations.push_back(std::move(*newest));
+        const auto& record = calibrations.back().record;
         try {
             const auto stored = core::capacitive::capacitiveCalibrationOf(record, beam);
             sensitivity = stored.sensitivity;
@@ -618,7 +642,7 @@ void MainWindow::attachCapacitive(const std::vector<core::ChannelDescriptor>& ch
         } catch (const std::invalid_argument& e) {
             showProblem(tr("Bad calibration"), tr("The newest capacitive calibration cannot be used."),
                         QString::fromStdString(e.what()));
-            m_capacitiveCalibration.reset();
+            calibrations.clear();
         }
     }
     try {
@@ -633,19 +657,37 @@ void MainWindow::attachCapacitive(const std::vector<core::ChannelDescriptor>& ch
 
 // The newest calibration of a kind for a sensor, from the session store;
 // none when the store does not exist yet or cannot be read.
-std::optional<core::storage::StoredCalibration> MainWindow::newestCalibration(const std::string& kind,
-                                                                              const std::string& sensor) const
+void MainWindow::calibrate(const QString& which)
 {
-    if (!QFileInfo::exists(m_storePath)) return std::nullopt;
-    try {
-        core::storage::SessionStore store(m_storePath.toStdString(), core::storage::Database::Access::ReadOnly);
-        auto all = store.calibrations(sensor);
-        for (auto it = all.rbegin(); it != all.rend(); ++it)
-            if (it->record.kind == kind) return std::move(*it);
-    } catch (const core::storage::StorageError& e) {
-        qWarning("calibrations not read: %s", e.what());
+    if (!m_acquisition) {
+        statusBar()->showMessage(tr("Connect the probe to calibrate (or the simulator's calibration rig)."), 6000);
+        m_deviceDock->show();
+        return;
     }
-    return std::nullopt;
+    if (isRecording()) {
+        statusBar()->showMessage(tr("Stop recording first: a session keeps the calibration it started with."), 6000);
+        return;
+    }
+    CalibrationContext context{m_buffer,
+                               m_acquisition->source().channels(),
+                               m_acquisition->source().nominalSampleRate_hz(),
+                               m_loadRig,
+                               m_storePath,
+                               QString::fromStdString(m_sessionBar->metadata().operatorName),
+                               ProfileLibrary::defaultDirectory()};
+    QWizard* wizard = nullptr;
+    if (which == QLatin1String("gauge")) {
+        auto* gauge = new GaugeFactorWizard(std::move(context), this);
+        connect(gauge, &GaugeFactorWizard::calibrationStored, this, [this](std::int64_t, const QString& sensor) {
+            applyProfile(QStringLiteral("palpation"));
+            statusBar()->showMessage(tr("Gauge factor of %1 stored; the palpation view reads through it.").arg(sensor),
+                                     8000);
+        });
+        wizard = gauge;
+    }
+    if (!wizard) return;
+    wizard->setAttribute(Qt::WA_DeleteOnClose);
+    wizard->show();
 }
 
 void MainWindow::linkCalibration(std::int64_t session, std::int64_t calibration)
@@ -770,12 +812,19 @@ void MainWindow::showProblem(const QString& title, const QString& text, const QS
     box->show();
 }
 
+void MainWindow::connectSimulator(const std::string& scenario)
+{
+    auto simulated = devices::simulator::makeScenario(scenario);
+    auto rig = simulated->loadRig();
+    connectSource(std::make_unique<devices::simulator::SimulatorSource>(std::move(simulated)));
+    m_loadRig = std::move(rig);  // after connectSource, which forgets the old device's rig
+}
+
 void MainWindow::connectRequest(const SourceRequest& request)
 {
     switch (request.kind) {
     case SourceKind::Simulator:
-        connectSource(
-            std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario(request.scenario)));
+        connectSimulator(request.scenario);
         return;
     case SourceKind::Emulator: {
         devices::emulator::EmulatorOptions options;
@@ -857,6 +906,7 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
         std::make_shared<core::LiveBuffer>(channels.size(), static_cast<std::size_t>(std::ceil(2.0 * rate_hz)) + 1);
     m_acquisition = std::make_unique<devices::Acquisition>(std::move(source));
     m_acquisition->addSink(buffer);
+    m_buffer = buffer;
     m_tap = std::make_shared<core::storage::RecordingTap>();
     m_acquisition->addSink(m_tap);
     // The panel-scan detector runs whenever the probe has two cantilevers.
@@ -901,7 +951,9 @@ void MainWindow::disconnectSource()
     m_capacitive.reset();
     m_palpationSlot.reset();
     m_capacitiveSlot.reset();
-    m_capacitiveCalibration.reset();
+    m_modeCalibrations.clear();
+    m_buffer.reset();
+    m_loadRig.reset();
     m_panelScan->setDetection(nullptr, 0.0);
     m_palpationView->setPalpation(nullptr, 0.0, QString());
     m_capacitiveView->setCapacitive(nullptr, 0.0, QString(), QString());

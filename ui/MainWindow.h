@@ -33,7 +33,11 @@ namespace tactiscope::devices {
 class Acquisition;
 }
 namespace tactiscope::core {
+class LiveBuffer;
 class SinkSlot;
+}  // namespace tactiscope::core
+namespace tactiscope::devices::simulator {
+class LoadRig;
 }
 namespace tactiscope::core::storage {
 class Recorder;
@@ -136,8 +140,9 @@ private:
     void attachPalpation(const std::vector<core::ChannelDescriptor>& channels, double rate_hz);
     void takePalpationReadings();
     void attachCapacitive(const std::vector<core::ChannelDescriptor>& channels, double rate_hz);
-    std::optional<core::storage::StoredCalibration> newestCalibration(const std::string& kind,
-                                                                      const std::string& sensor) const;
+    // A calibration wizard on the connected device ("gauge" or "capacitive").
+    void calibrate(const QString& which);
+    void connectSimulator(const std::string& scenario);
     void linkCalibration(std::int64_t session, std::int64_t calibration);
     void tare();  // the visible mode's zero
     void askVerdict(std::int64_t session, double end_s, int defects, const QString& verdict);
@@ -168,8 +173,13 @@ private:
     // Where those two sit on the acquisition: a new profile swaps them live.
     std::shared_ptr<core::SinkSlot> m_palpationSlot;
     std::shared_ptr<core::SinkSlot> m_capacitiveSlot;
-    std::optional<core::storage::StoredCalibration> m_capacitiveCalibration;  // what m_capacitive uses
-    std::shared_ptr<core::storage::Recorder> m_recorder;                      // while recording
+    // The calibrations each mode's processor reads with ("palpation": the
+    // beams' gauge factors, "capacitive": C0 and sensitivity), stored with
+    // every session recorded in that mode.
+    std::map<std::string, std::vector<core::storage::StoredCalibration>> m_modeCalibrations;
+    std::shared_ptr<core::LiveBuffer> m_buffer;              // every channel, for the display and the wizards
+    std::shared_ptr<devices::simulator::LoadRig> m_loadRig;  // when the simulator is a calibration rig
+    std::shared_ptr<core::storage::Recorder> m_recorder;     // while recording
     QString m_storePath;
     std::map<std::string, std::string> m_modeProfiles;  // mode → JSON of the profile its view uses
     std::optional<QString> m_connectingLabel;

@@ -48,16 +48,18 @@ QString stiffnessText(double k_n_per_m, double standardError_n_per_m)
     return PalpationView::tr("%1 ± %2 N/m").arg(k, se);
 }
 
-// Counts become strain through the chain's nominal gauge factor (no stored
-// gauge-factor calibration is applied yet); the line says so, and why k_o
-// does not depend on it: both beams share it, and k_o needs only F_H/F_L.
-QString calibrationLine(const core::compliance::LivePalpation& palpation)
+// Counts become strain through each beam's gauge factor: the calibrated one
+// when the beam has a gauge-factor calibration, else the nominal one. The
+// line says which, and why k_o hardly cares: k_o needs only F_H/F_L, so
+// only the ratio of the two gauge factors enters it.
+QString calibrationLine(const core::compliance::LivePalpation& palpation, const QString& calibration)
 {
-    if (const auto gaugeFactor = palpation.gaugeFactor())
-        return PalpationView::tr("Calibration: none, nominal gauge factor %1 (forces scale with it; k_o needs only "
-                                 "their ratio)")
-            .arg(QLocale().toString(*gaugeFactor, 'g', 3));
-    return PalpationView::tr("Calibration: strain or force as the device sends it");
+    const auto high = palpation.gaugeFactor(true), low = palpation.gaugeFactor(false);
+    if (!high || !low) return PalpationView::tr("Calibration: strain or force as the device sends it");
+    const QLocale locale;
+    return PalpationView::tr("Calibration: %1 — gauge factors %2 (stiff) and %3 (soft); k_o needs only their ratio")
+        .arg(calibration.isEmpty() ? PalpationView::tr("none, nominal") : calibration, locale.toString(*high, 'g', 4),
+             locale.toString(*low, 'g', 4));
 }
 
 }  // namespace
@@ -126,12 +128,12 @@ PalpationView::PalpationView(QWidget* parent)
 }
 
 void PalpationView::setPalpation(std::shared_ptr<core::compliance::LivePalpation> palpation, double sampleRate_hz,
-                                 const QString& probeName)
+                                 const QString& probeName, const QString& calibration)
 {
     m_palpation = std::move(palpation);
     m_probe->setText(probeName.isEmpty() || !m_palpation
                          ? QString()
-                         : probeLine(probeName) + QStringLiteral("<br>") + calibrationLine(*m_palpation));
+                         : probeLine(probeName) + QStringLiteral("<br>") + calibrationLine(*m_palpation, calibration));
     m_tare->setEnabled(m_palpation != nullptr);
     if (!m_palpation) {
         m_lanes->clearSource();

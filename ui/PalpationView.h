@@ -37,9 +37,10 @@ public:
     explicit PalpationView(QWidget* parent = nullptr);
 
     // Shows `palpation`'s output; null detaches. `probeName` says which
-    // profile turns the beams' signals into forces.
+    // profile turns the beams' signals into forces, `calibration` which
+    // gauge-factor calibrations ("" when none).
     void setPalpation(std::shared_ptr<core::compliance::LivePalpation> palpation, double sampleRate_hz,
-                      const QString& probeName);
+                      const QString& probeName, const QString& calibration = {});
     // Refreshes the large readout; called by the main window's timer.
     void updateReadout();
     // Takes the presses completed since the last call into the list, the

@@ -56,21 +56,23 @@ LivePalpation::LivePalpation(const std::vector<ChannelDescriptor>& channels, dou
     if (!displacement || beams.size() < 2)
         throw std::invalid_argument("palpation needs two beam channels and a displacement channel");
     m_displacement = *displacement;
-    const auto input = [&](std::size_t c) {
+    const auto input = [&](std::size_t c, std::optional<double> gaugeFactor) {
         Input in;
         in.channel = c;
         in.kind = channels[c].kind;
-        if (inCounts(channels[c])) in.chain.emplace(settings.adc, settings.bridge);
+        straingauge::BridgeSettings bridge = settings.bridge;
+        bridge.gaugeFactor = gaugeFactor.value_or(bridge.gaugeFactor);
+        if (inCounts(channels[c])) in.chain.emplace(settings.adc, bridge);
         return in;
     };
-    m_high = input(beams[0]);
-    m_low = input(beams[1]);
+    m_high = input(beams[0], settings.highGaugeFactor);
+    m_low = input(beams[1], settings.lowGaugeFactor);
 }
 
-std::optional<double> LivePalpation::gaugeFactor() const
+std::optional<double> LivePalpation::gaugeFactor(bool highBeam) const
 {
-    if (m_high.chain) return m_high.chain->bridge().gaugeFactor;
-    if (m_low.chain) return m_low.chain->bridge().gaugeFactor;
+    const Input& beam = highBeam ? m_high : m_low;
+    if (beam.chain) return beam.chain->bridge().gaugeFactor;
     return std::nullopt;
 }
 

@@ -37,6 +37,8 @@ struct LivePalpationSettings {
     straingauge::AdcSettings adc;  // for channels in counts
     straingauge::BridgeSettings bridge;
     PressSettings press;
+    // Each beam's calibrated gauge factor; bridge.gaugeFactor (nominal) when none.
+    std::optional<double> highGaugeFactor, lowGaugeFactor;
 };
 
 // What the display shows between presses and while pressing.
@@ -60,9 +62,9 @@ public:
     // (NaN unless both forces are above the contact threshold).
     static std::vector<ChannelDescriptor> outputChannels();
     const sensors::CompliancePair& pair() const { return m_pair; }
-    // The gauge factor that turns counts into strain; none when the device
-    // sends strain or force itself.
-    std::optional<double> gaugeFactor() const;
+    // The gauge factor that turns a beam's counts into strain; none when
+    // the device sends strain or force itself.
+    std::optional<double> gaugeFactor(bool highBeam) const;
 
     // Any thread: the next kTare_s of samples become the zero.
     void tare() { m_tareRequested = true; }

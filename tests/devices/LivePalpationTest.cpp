@@ -40,7 +40,7 @@ Recording palpate(double seconds)
 core::compliance::LivePalpationSettings settingsOf(const devices::simulator::PalpationScenario& scenario)
 {
     const auto& p = scenario.parameters();
-    return {p.high, p.low, p.adc, p.bridge, {0.01, 100}};
+    return {p.high, p.low, p.adc, p.bridge, {0.01, 100}, {}, {}};
 }
 
 // Samples [first, first + count) as a block numbered from `index`.
@@ -104,6 +104,33 @@ TEST(LivePalpation, ReadsEachPressAsTheWholeRecordDoesAndWithinFivePercentOfTheT
         EXPECT_GT(readings[i].standardError_n_per_m, 0.0);
     }
     EXPECT_TRUE(live.takeReadings().empty());  // taken once
+}
+
+TEST(LivePalpation, ACalibratedGaugeFactorScalesItsBeamsForcesOnly)
+{
+    // Counts → strain divides by the gauge factor (x = GF·ε; the half
+    // bridge is linear in x): a stiff beam calibrated at 2.14 instead of the
+    // nominal 2.0 reads 2.0/2.14 of the nominal force; the soft beam keeps its.
+    const Recording r = palpate(3.0);
+    auto settings = settingsOf(r.scenario);
+    LivePalpation nominal(r.scenario.channels(), kRate_hz, settings, 5.0);
+    settings.highGaugeFactor = 2.14;
+    LivePalpation calibrated(r.scenario.channels(), kRate_hz, settings, 5.0);
+    EXPECT_EQ(calibrated.gaugeFactor(true), 2.14);
+    EXPECT_EQ(calibrated.gaugeFactor(false), 2.0);
+    feed(nominal, r.samples, 0, r.samples.sampleCount(), 0);
+    feed(calibrated, r.samples, 0, r.samples.sampleCount(), 0);
+    core::LiveCursor a, b;
+    core::LiveChunk n, c;
+    nominal.output()->readNew(a, n);
+    calibrated.output()->readNew(b, c);
+    std::size_t compared = 0;
+    for (std::size_t i = 500; i < n.sampleCount(); ++i) {
+        ASSERT_NEAR(c.values[0][i], n.values[0][i] * 2.0 / 2.14, 1e-12) << i;
+        ASSERT_EQ(c.values[1][i], n.values[1][i]) << i;
+        ++compared;
+    }
+    EXPECT_GT(compared, 2000u);
 }
 
 TEST(LivePalpation, DisplaysTheForcesAndQOfEachSample)

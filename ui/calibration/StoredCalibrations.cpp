@@ -3,6 +3,7 @@
 
 #include "core/storage/SessionStore.h"
 
+#include <QDir>
 #include <QFileInfo>
 
 namespace tactiscope::ui {
@@ -24,6 +25,7 @@ std::optional<core::storage::StoredCalibration> newestCalibration(const QString&
 
 std::int64_t storeCalibration(const QString& storePath, const core::calibration::CalibrationRecord& record)
 {
+    QDir().mkpath(QFileInfo(storePath).absolutePath());  // a first calibration may come before any session
     return core::storage::SessionStore(storePath.toStdString()).addCalibration(record);
 }
 

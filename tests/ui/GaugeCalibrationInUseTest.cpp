@@ -1,0 +1,104 @@
+// A stored gauge-factor calibration is the one the palpation view reads its
+// beam with (the newest of each beam), goes into every session recorded in
+// palpation mode (copied and linked), and the wizard opens from the Tools
+// menu on the simulator's calibration rig.
+#include "core/calibration/CalibrationRecord.h"
+#include "core/compliance/LivePalpation.h"
+#include "core/storage/SessionStore.h"
+#include "support/MainWindowHelpers.h"
+#include "support/TempDirectory.h"
+#include "support/WaitFor.h"
+#include "ui/ActiveProfiles.h"
+#include "ui/MainWindow.h"
+#include "ui/PalpationView.h"
+#include "ui/calibration/GaugeFactorWizard.h"
+#include "ui/calibration/StoredCalibrations.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+
+#include <gtest/gtest.h>
+
+using namespace tactiscope;
+using tactiscope::testing::child;
+
+namespace {
+
+class GaugeCalibrationInUseTest : public tactiscope::testing::TempDirectoryTest {
+protected:
+    QString store() const { return QString::fromStdString(file("sessions.tactiscope")); }
+
+    static core::calibration::CalibrationRecord gaugeRecord(bool stiff, double gaugeFactor, const char* when)
+    {
+        const auto probe = std::get<core::sensors::CompliancePairProfile>(
+            ui::readProfile(ui::builtInProfilePath(QStringLiteral("palpation"))));
+        core::calibration::CalibrationRecord r;
+        r.kind = "gauge_factor";
+        r.sensorName = ui::beamSensorName(probe.name, stiff);
+        r.operatorName = "Ada";
+        r.timestampUtc = when;
+        r.values = {{"gauge_factor", gaugeFactor}, {"nominal_gauge_factor", 2.0}};
+        return r;
+    }
+
+    // A menu action by its text, in any menu or submenu.
+    static QAction* menuAction(const QList<QAction*>& actions, const QString& text)
+    {
+        for (QAction* action : actions) {
+            if (action->text() == text) return action;
+            if (action->menu())
+                if (QAction* found = menuAction(action->menu()->actions(), text)) return found;
+        }
+        return nullptr;
+    }
+};
+
+}  // namespace
+
+TEST_F(GaugeCalibrationInUseTest, TheNewestCalibrationOfEachBeamIsReadAndRecorded)
+{
+    ui::storeCalibration(store(), gaugeRecord(true, 2.30, "2026-11-01T08:00:00Z"));  // superseded
+    const auto newest = ui::storeCalibration(store(), gaugeRecord(true, 2.14, "2026-11-20T08:00:00Z"));
+    ui::MainWindow window;
+    window.setStorePath(store());
+    window.setMode(QStringLiteral("palpation"));
+    window.connectSource(tactiscope::testing::liveSimulator("palpation"));
+    const QString probe = child<QLabel>(*window.palpationView(), "probeLabel")->text();
+    EXPECT_TRUE(probe.contains(QStringLiteral("stiff beam 2026-11-20T08:00:00Z by Ada"))) << probe.toStdString();
+    EXPECT_TRUE(probe.contains(QStringLiteral("gauge factors 2.14 (stiff) and 2 (soft)"))) << probe.toStdString();
+
+    ASSERT_TRUE(window.startRecording());
+    window.stopRecording();
+    core::storage::SessionStore sessions(store().toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto session = sessions.sessions().front();
+    EXPECT_NE(session.metadata.calibrationsJson.find("2026-11-20T08:00:00Z"), std::string::npos);
+    EXPECT_EQ(session.metadata.calibrationsJson.find("2026-11-01T08:00:00Z"), std::string::npos);
+    EXPECT_EQ(sessions.calibrationsOfSession(session.id), std::vector<std::int64_t>{newest});
+}
+
+TEST_F(GaugeCalibrationInUseTest, TheToolsMenuOpensTheWizardOnTheConnectedRig)
+{
+    ui::MainWindow window;
+    window.setStorePath(store());
+    QAction* calibrate = menuAction(window.menuBar()->actions(), QStringLiteral("Calibrate the &gauge factor…"));
+    ASSERT_NE(calibrate, nullptr);
+    calibrate->trigger();  // nothing connected: says so, opens nothing
+    EXPECT_EQ(window.findChild<ui::GaugeFactorWizard*>(), nullptr);
+
+    QAction* rig = menuAction(window.menuBar()->actions(), QStringLiteral("gauge-calibration"));
+    ASSERT_NE(rig, nullptr);
+    rig->trigger();
+    ASSERT_TRUE(window.isConnected());
+    calibrate->trigger();
+    auto* wizard = window.findChild<ui::GaugeFactorWizard*>();
+    ASSERT_NE(wizard, nullptr);
+    EXPECT_EQ(child<QComboBox>(*wizard, "channelBox")->currentText(), QStringLiteral("beam"));
+    wizard->next();
+    wizard->next();
+    ASSERT_EQ(wizard->currentId(), ui::GaugeFactorWizard::ZeroPage);
+    EXPECT_TRUE(tactiscope::testing::waitFor([&] { return wizard->currentPage()->isComplete(); }, 10000));
+    wizard->reject();
+}
