@@ -26,6 +26,7 @@
 #include "ui/SessionBar.h"
 #include "ui/VerdictDialog.h"
 #include "ui/XYPlotWidget.h"
+#include "ui/calibration/CapacitiveWizard.h"
 #include "ui/calibration/GaugeFactorWizard.h"
 #include "ui/calibration/StoredCalibrations.h"
 
@@ -323,6 +324,8 @@ void MainWindow::createMenus()
 
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
     tools->addAction(tr("Calibrate the &gauge factor…"), this, [this] { calibrate(QStringLiteral("gauge")); });
+    tools->addAction(tr("Calibrate the &capacitive beam (C0, sensitivity)…"), this,
+                     [this] { calibrate(QStringLiteral("capacitive")); });
     tools->addSeparator();
     tools->addAction(tr("Compliance probe &design…"), this, [this] {
         auto* tool = new DesignTool(ProfileLibrary::defaultDirectory(), this);
@@ -684,6 +687,14 @@ void MainWindow::calibrate(const QString& which)
                                      8000);
         });
         wizard = gauge;
+    } else if (which == QLatin1String("capacitive")) {
+        auto* capacitive = new CapacitiveWizard(std::move(context), this);
+        connect(capacitive, &CapacitiveWizard::calibrationStored, this, [this](std::int64_t, const QString& sensor) {
+            applyProfile(QStringLiteral("capacitive"));
+            statusBar()->showMessage(tr("Calibration of %1 stored; the capacitive view reads through it.").arg(sensor),
+                                     8000);
+        });
+        wizard = capacitive;
     }
     if (!wizard) return;
     wizard->setAttribute(Qt::WA_DeleteOnClose);

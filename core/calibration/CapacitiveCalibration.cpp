@@ -81,7 +81,9 @@ CapacitiveCalibrationResult calibrateCapacitive(const CapacitiveCalibrationInput
                      {"drift_pf_per_s", r.drift_f_per_s * 1e12}};
 
     if (force.size() >= 2) {
-        r.forceFit = fitLine(withZero(force), withZero(forceDelta));
+        r.fitForce_n = withZero(force);
+        r.fitDelta_f = withZero(forceDelta);
+        r.forceFit = fitLine(r.fitForce_n, r.fitDelta_f);
         const double slope = r.forceFit->slope;  // F per N
         r.hysteresis = hysteresisOf(forceDirection, forceDelta);
         r.detectionLimit_n = 3.0 * r.baselineSigma_f / slope;
@@ -105,6 +107,9 @@ CapacitiveCalibrationResult calibrateCapacitive(const CapacitiveCalibrationInput
                              {{"displacement_sensitivity_pf_per_mm", r.displacementFit->slope * 1e9},
                               {"detection_limit_mm", *r.detectionLimit_m * 1e3}});
         if (!r.forceFit) record.fit = *r.displacementFit;
+    } else if (r.detectionLimit_n && in.stiffness_n_per_m && *in.stiffness_n_per_m > 0.0) {
+        r.detectionLimit_m = *r.detectionLimit_n / *in.stiffness_n_per_m;
+        record.values.emplace_back("detection_limit_mm", *r.detectionLimit_m * 1e3);
     }
     return r;
 }

@@ -30,13 +30,18 @@ struct CapacitiveCalibrationInput {
     std::optional<WindowStatistics> finalBaseline;
     std::vector<CapacitiveStep> steps;
     std::optional<double> contactArea_m2;  // for the pressure sensitivity
+    // The beam's stiffness, so force steps alone also give a detection limit
+    // in displacement (w = F/k) when no displacement steps were taken.
+    std::optional<double> stiffness_n_per_m;
 };
 
 struct CapacitiveCalibrationResult {
     double c0_f = 0.0;
     double baselineSigma_f = 0.0;
     double drift_f_per_s = 0.0;
-    std::optional<LinearFit> forceFit;         // ΔC [F] against F [N]
+    std::optional<LinearFit> forceFit;  // ΔC [F] against F [N]
+    // Its points: the baseline (0, 0) first, then the force steps in order.
+    std::vector<double> fitForce_n, fitDelta_f;
     std::optional<LinearFit> displacementFit;  // ΔC [F] against w [m]
     // Largest |ΔC_loading − ΔC_unloading| at the same load, as a fraction of
     // the full-scale ΔC; only when both directions were measured.

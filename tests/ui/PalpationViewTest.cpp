@@ -79,7 +79,8 @@ TEST(PalpationView, PressesAreListedMappedStoredAndMatchTheCoreReading)
     // The probe and what turns its counts into forces are always in view.
     const QString probe = child<QLabel>(*view, "probeLabel")->text();
     EXPECT_TRUE(probe.contains(QStringLiteral("Perspex two-beam probe"))) << probe.toStdString();
-    EXPECT_TRUE(probe.contains(QStringLiteral("nominal gauge factor 2 "))) << probe.toStdString();
+    EXPECT_TRUE(probe.contains(QStringLiteral("none, nominal — gauge factors 2 (stiff) and 2 (soft)")))
+        << probe.toStdString();
 
     core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
     const auto session = sessions.sessions().front();

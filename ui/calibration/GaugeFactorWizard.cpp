@@ -8,9 +8,11 @@
 #include "ui/calibration/CalibrationPlot.h"
 #include "ui/calibration/CheckedPage.h"
 #include "ui/calibration/FitLimitsBox.h"
+#include "ui/calibration/StabilityCriteria.h"
 #include "ui/calibration/StabilityIndicator.h"
 #include "ui/calibration/StabilityWatch.h"
 #include "ui/calibration/StoredCalibrations.h"
+#include "ui/calibration/WizardText.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -54,18 +56,6 @@ BridgeType bridgeOfGauges(double gauges)
     return gauges < 1.5 ? BridgeType::Quarter : gauges < 3.0 ? BridgeType::HalfBending : BridgeType::FullBending;
 }
 
-QLabel* wrapped(const QString& text, QWidget* parent)
-{
-    auto* label = new QLabel(text, parent);
-    label->setWordWrap(true);
-    return label;
-}
-
-QString number(double value, int digits = 4)
-{
-    return QLocale().toString(value, 'g', digits);
-}
-
 }  // namespace
 
 GaugeFactorWizard::GaugeFactorWizard(CalibrationContext context, QWidget* parent)
@@ -92,7 +82,7 @@ GaugeFactorWizard::GaugeFactorWizard(CalibrationContext context, QWidget* parent
         if (currentId() == ZeroPage) {
             m_zero = window;
             m_zeroText->setText(tr("Zero: %1 counts, σ %2 counts (mean of %3 samples)")
-                                    .arg(number(window.mean, 6), number(window.sigma, 3))
+                                    .arg(significant(window.mean, 6), significant(window.sigma, 3))
                                     .arg(window.count));
             refit();
             static_cast<CheckedPage*>(page(ZeroPage))->recheck();
@@ -122,7 +112,7 @@ CheckedPage* GaugeFactorWizard::createChannelPage()
     m_operator = new QLineEdit(m_context.operatorName, page);
     m_operator->setObjectName(QStringLiteral("operatorEdit"));
     m_operator->setPlaceholderText(tr("who calibrates (stored with the record)"));
-    m_beamSummary = wrapped({}, page);
+    m_beamSummary = wrappedLabel({}, page);
 
     auto* form = new QFormLayout;
     form->addRow(tr("&Channel (ADC counts)"), m_channel);
@@ -133,10 +123,10 @@ CheckedPage* GaugeFactorWizard::createChannelPage()
     layout->addLayout(form);
     layout->addWidget(m_beamSummary);
     if (m_channel->count() == 0)
-        layout->addWidget(wrapped(tr("<b>This device sends no channel in ADC counts.</b> A gauge-factor "
-                                     "calibration needs the raw bridge reading; connect the probe, or the "
-                                     "simulator's gauge-factor calibration rig."),
-                                  page));
+        layout->addWidget(wrappedLabel(tr("<b>This device sends no channel in ADC counts.</b> A gauge-factor "
+                                          "calibration needs the raw bridge reading; connect the probe, or the "
+                                          "simulator's gauge-factor calibration rig."),
+                                       page));
     layout->addStretch();
     connect(m_probe, &QComboBox::currentIndexChanged, this, &GaugeFactorWizard::showBeam);
     connect(m_beam, &QComboBox::currentIndexChanged, this, &GaugeFactorWizard::showBeam);
@@ -163,7 +153,7 @@ CheckedPage* GaugeFactorWizard::createChainPage()
     m_bipolar = new QCheckBox(tr("bipolar (±reference)"), page);
     m_nominal = new QuantityEdit({1.0, {}, tr("Gauge factor")}, 0.0, 1000.0, page);
     m_nominal->setObjectName(QStringLiteral("nominalGaugeFactor"));
-    m_prefill = wrapped({}, page);
+    m_prefill = wrappedLabel({}, page);
     auto* form = new QFormLayout;
     form->addRow(tr("Bridge &type"), m_bridge);
     form->addRow(tr("E&xcitation"), m_excitation);
@@ -189,30 +179,17 @@ CheckedPage* GaugeFactorWizard::createZeroPage()
                          "signal is stable."));
     auto* indicator = new StabilityIndicator(m_watch, page);
     indicator->setUnit({1.0, tr("counts"), {}});
-    m_window = new QDoubleSpinBox(page);
-    m_window->setRange(0.2, 30.0);
-    m_window->setSuffix(tr(" s"));
-    m_maxDrift = new QDoubleSpinBox(page);
-    m_maxDrift->setRange(0.01, 1e6);
-    m_maxDrift->setSuffix(tr(" counts/s"));
-    m_maxNoise = new QDoubleSpinBox(page);
-    m_maxNoise->setRange(0.01, 1e6);
-    m_maxNoise->setSuffix(tr(" counts"));
+    m_criteria = new StabilityCriteria({1.0, tr("counts"), {}}, page);
     m_zeroText = new QLabel(tr("Zero: waiting for a stable signal…"), page);
     m_zeroText->setObjectName(QStringLiteral("zeroText"));
     m_retakeZero = new QPushButton(tr("Re&take zero"), page);
-    auto* criteria = new QFormLayout;
-    criteria->addRow(tr("Stable means, over a &window of"), m_window);
-    criteria->addRow(tr("a &drift of at most"), m_maxDrift);
-    criteria->addRow(tr("and a σ about the trend of at most"), m_maxNoise);
     auto* layout = new QVBoxLayout(page);
     layout->addWidget(indicator);
-    layout->addLayout(criteria);
+    layout->addWidget(m_criteria);
     layout->addWidget(m_zeroText);
     layout->addWidget(m_retakeZero, 0, Qt::AlignLeft);
     layout->addStretch();
-    for (QDoubleSpinBox* box : {m_window, m_maxDrift, m_maxNoise})
-        connect(box, &QDoubleSpinBox::editingFinished, this, &GaugeFactorWizard::applyStabilitySettings);
+    connect(m_criteria, &StabilityCriteria::edited, this, &GaugeFactorWizard::applyStabilitySettings);
     connect(m_retakeZero, &QPushButton::clicked, this, &GaugeFactorWizard::takeZero);
     return page;
 }
@@ -235,9 +212,8 @@ CheckedPage* GaugeFactorWizard::createLoadsPage()
     m_loadUnit->addItem(tr("mm (tip deflection)"), static_cast<int>(LoadUnit::TipDeflection_mm));
     m_capture = new QPushButton(tr("&Capture"), page);
     m_capture->setObjectName(QStringLiteral("captureButton"));
-    m_captureStatus = wrapped(m_context.rig ? tr("Simulator: the rig hangs each load for you when you capture.")
-                                            : QString(),
-                              page);
+    m_captureStatus = wrappedLabel(
+        m_context.rig ? tr("Simulator: the rig hangs each load for you when you capture.") : QString(), page);
     m_captureStatus->setObjectName(QStringLiteral("captureStatus"));
     auto* indicator = new StabilityIndicator(m_watch, page);
     indicator->setUnit({1.0, tr("counts"), {}});
@@ -258,7 +234,7 @@ CheckedPage* GaugeFactorWizard::createLoadsPage()
     m_plot = new CalibrationPlot(page);
     m_plot->setTitles(tr("Root strain ε (µε)"), tr("ΔR/R (10⁻⁶)"), tr("Residual (10⁻⁶)"));
     m_plot->setSeriesNames(tr("zero and loads"), {});
-    m_fitSummary = wrapped(tr("Two loads are needed for a line."), page);
+    m_fitSummary = wrappedLabel(tr("Two loads are needed for a line."), page);
     m_fitSummary->setObjectName(QStringLiteral("fitSummary"));
 
     auto* entry = new QHBoxLayout;
@@ -297,13 +273,13 @@ CheckedPage* GaugeFactorWizard::createResultPage()
     auto* page = new CheckedPage([this] { return credible(); });
     page->setTitle(tr("Result"));
     page->setSubTitle(tr("Accept stores the calibration; the palpation view then reads this beam through it."));
-    m_resultText = wrapped({}, page);
+    m_resultText = wrappedLabel({}, page);
     m_resultText->setObjectName(QStringLiteral("resultText"));
     m_resultText->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_deviationWarning = wrapped({}, page);
+    m_deviationWarning = wrappedLabel({}, page);
     m_deviationWarning->setObjectName(QStringLiteral("deviationWarning"));
     m_deviationWarning->setStyleSheet(QStringLiteral("color: #a15c00"));
-    m_problems = wrapped({}, page);
+    m_problems = wrappedLabel({}, page);
     m_problems->setObjectName(QStringLiteral("problemsText"));
     m_problems->setStyleSheet(QStringLiteral("color: #b00020"));
     m_warnPercent = new QDoubleSpinBox(page);
@@ -376,9 +352,9 @@ void GaugeFactorWizard::showBeam()
     const auto& g = m_beam->currentIndex() == 0 ? probe()->high : probe()->low;
     const auto b = beam();
     m_beamSummary->setText(tr("%1 × %2 × %3 mm, E = %4 GPa: k = %5 N/m, %6 µε per newton at the root.")
-                               .arg(number(g.length_m * 1e3), number(g.width_m * 1e3), number(g.thickness_m * 1e3),
-                                    number(g.youngsModulus_pa * 1e-9), number(b.stiffness_n_per_m()),
-                                    number(b.rootStrainPerNewton() * 1e6)));
+                               .arg(significant(g.length_m * 1e3), significant(g.width_m * 1e3),
+                                    significant(g.thickness_m * 1e3), significant(g.youngsModulus_pa * 1e-9),
+                                    significant(b.stiffness_n_per_m()), significant(b.rootStrainPerNewton() * 1e6)));
 }
 
 std::optional<core::straingauge::StrainGaugeChain> GaugeFactorWizard::chain() const
@@ -433,15 +409,13 @@ void GaugeFactorWizard::prefillChain()
 void GaugeFactorWizard::applyStabilityDefaults()
 {
     const double fullScale = chain()->fullScaleCounts();
-    m_window->setValue(1.0);
-    m_maxDrift->setValue(2e-4 * fullScale);
-    m_maxNoise->setValue(1e-3 * fullScale);
+    m_criteria->setSettings({1.0, 2e-4 * fullScale, 1e-3 * fullScale});
     applyStabilitySettings();
 }
 
 void GaugeFactorWizard::applyStabilitySettings()
 {
-    m_watch->setSettings({m_window->value(), m_maxDrift->value(), m_maxNoise->value()});
+    m_watch->setSettings(m_criteria->settings());
     if (currentId() == ZeroPage && !m_zero) m_watch->arm();
 }
 
@@ -457,9 +431,12 @@ void GaugeFactorWizard::takeZero()
 double GaugeFactorWizard::forceOf(double value, LoadUnit unit) const
 {
     switch (unit) {
-    case LoadUnit::Grams: return value * 1e-3 * kStandardGravity_m_per_s2;
-    case LoadUnit::MilligramsForce: return value * 1e-6 * kStandardGravity_m_per_s2;
-    case LoadUnit::TipDeflection_mm: return value * 1e-3 * beam().stiffness_n_per_m();
+    case LoadUnit::Grams:
+        return value * 1e-3 * kStandardGravity_m_per_s2;
+    case LoadUnit::MilligramsForce:
+        return value * 1e-6 * kStandardGravity_m_per_s2;
+    case LoadUnit::TipDeflection_mm:
+        return value * 1e-3 * beam().stiffness_n_per_m();
     }
     return 0.0;
 }
@@ -478,9 +455,12 @@ core::calibration::CalibrationLoad GaugeFactorWizard::loadOf(const LoadPoint& po
 QString GaugeFactorWizard::loadText(const LoadPoint& point) const
 {
     switch (point.unit) {
-    case LoadUnit::Grams: return tr("%1 g").arg(number(point.value, 6));
-    case LoadUnit::MilligramsForce: return tr("%1 mgf").arg(number(point.value, 6));
-    case LoadUnit::TipDeflection_mm: return tr("%1 mm tip deflection").arg(number(point.value, 6));
+    case LoadUnit::Grams:
+        return tr("%1 g").arg(significant(point.value, 6));
+    case LoadUnit::MilligramsForce:
+        return tr("%1 mgf").arg(significant(point.value, 6));
+    case LoadUnit::TipDeflection_mm:
+        return tr("%1 mm tip deflection").arg(significant(point.value, 6));
     }
     return {};
 }
@@ -510,14 +490,14 @@ void GaugeFactorWizard::captured(const core::calibration::WindowStatistics& wind
     if (std::abs(window.mean) > 0.95 * chain()->fullScaleCounts()) {
         m_captureStatus->setText(tr("%1 drives the ADC to its limit (%2 counts): not kept. Use a smaller load or "
                                     "a lower gain.")
-                                     .arg(loadText(point), number(window.mean, 6)));
+                                     .arg(loadText(point), significant(window.mean, 6)));
     } else {
         if (m_retakeIndex && *m_retakeIndex < m_points.size())
             m_points[*m_retakeIndex] = point;
         else
             m_points.push_back(point);
         m_captureStatus->setText(tr("Captured %1: %2 ± %3 counts.")
-                                     .arg(loadText(point), number(window.mean, 6), number(window.sigma, 3)));
+                                     .arg(loadText(point), significant(window.mean, 6), significant(window.sigma, 3)));
     }
     m_retakeIndex.reset();
     refit();
@@ -566,19 +546,19 @@ void GaugeFactorWizard::refit()
     }
 
     m_table->setRowCount(static_cast<int>(m_points.size()));
-    const double fullScale = m_result ? *std::max_element(m_result->relativeChange.begin(),
-                                                          m_result->relativeChange.end()) -
-                                            *std::min_element(m_result->relativeChange.begin(),
-                                                              m_result->relativeChange.end())
-                                      : 0.0;
+    const double fullScale =
+        m_result ? *std::max_element(m_result->relativeChange.begin(), m_result->relativeChange.end()) -
+                       *std::min_element(m_result->relativeChange.begin(), m_result->relativeChange.end())
+                 : 0.0;
     for (std::size_t i = 0; i < m_points.size(); ++i) {
         const LoadPoint& p = m_points[i];
         const auto row = static_cast<int>(i);
         const double residual = m_result && fullScale > 0.0 ? m_result->strainFit.residuals[i + 1] / fullScale
-                                                              : std::numeric_limits<double>::quiet_NaN();
-        const QStringList cells{loadText(p), number(forceOf(p.value, p.unit) * 1e3, 5), QLocale().toString(p.window.mean, 'f', 1),
-                                number(p.window.sigma, 3),
-                                std::isnan(residual) ? QStringLiteral("–") : QLocale().toString(100 * residual, 'f', 3)};
+                                                            : std::numeric_limits<double>::quiet_NaN();
+        const QStringList cells{loadText(p), significant(forceOf(p.value, p.unit) * 1e3, 5),
+                                QLocale().toString(p.window.mean, 'f', 1), significant(p.window.sigma, 3),
+                                std::isnan(residual) ? QStringLiteral("–")
+                                                     : QLocale().toString(100 * residual, 'f', 3)};
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
             if (c > 0) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
@@ -593,8 +573,9 @@ void GaugeFactorWizard::refit()
         const auto& fit = m_result->strainFit;
         m_plot->setData(points, std::make_pair(fit.slope, fit.intercept * 1e6));
         m_fitSummary->setText(tr("Gauge factor %1 ± %2 (nominal %3), R² = %4, %5 points with the zero.")
-                                  .arg(number(fit.slope, 5), number(fit.slopeStandardError, 2),
-                                       number(m_result->nominalGaugeFactor, 4), QLocale().toString(fit.rSquared, 'f', 6))
+                                  .arg(significant(fit.slope, 5), significant(fit.slopeStandardError, 2),
+                                       significant(m_result->nominalGaugeFactor, 4),
+                                       QLocale().toString(fit.rSquared, 'f', 6))
                                   .arg(fit.points));
     } else {
         m_plot->setData(points, std::nullopt);
@@ -621,11 +602,11 @@ void GaugeFactorWizard::showResult()
         tr("<b>%1</b><br>Effective gauge factor <b>%2 ± %3</b> (standard error); nominal %4, a difference of "
            "%5 %.<br>Direct force calibration: %6 counts per newton over a zero of %7 counts (σ %8).<br>R² = %9, "
            "residual σ %10 × 10⁻⁶ ΔR/R, %11 points with the zero.")
-            .arg(QString::fromStdString(sensorName()).toHtmlEscaped(), number(r.gaugeFactor, 5),
-                 number(fit.slopeStandardError, 2), number(r.nominalGaugeFactor, 4),
-                 locale.toString(100.0 * r.deviationFromNominal, 'f', 2), number(r.countsPerNewton, 6),
-                 number(r.zeroCounts, 6), number(m_zero->sigma, 3), locale.toString(fit.rSquared, 'f', 6))
-            .arg(number(fit.residualStandardDeviation * 1e6, 3))
+            .arg(QString::fromStdString(sensorName()).toHtmlEscaped(), significant(r.gaugeFactor, 5),
+                 significant(fit.slopeStandardError, 2), significant(r.nominalGaugeFactor, 4),
+                 locale.toString(100.0 * r.deviationFromNominal, 'f', 2), significant(r.countsPerNewton, 6),
+                 significant(r.zeroCounts, 6), significant(m_zero->sigma, 3), locale.toString(fit.rSquared, 'f', 6))
+            .arg(significant(fit.residualStandardDeviation * 1e6, 3))
             .arg(fit.points));
     const bool warn = std::abs(r.deviationFromNominal) * 100.0 > m_warnPercent->value();
     m_deviationWarning->setText(
@@ -636,7 +617,8 @@ void GaugeFactorWizard::showResult()
     const auto limits = m_limits->limits();
     const QStringList problems = FitLimitsBox::problems(core::calibration::judgeFit(r.strain, r.relativeChange, limits),
                                                         limits, [this](std::size_t i) { return pointName(i); });
-    m_problems->setText(problems.isEmpty() ? QString() : tr("Cannot be stored: %1").arg(problems.join(QLatin1Char(' '))));
+    m_problems->setText(problems.isEmpty() ? QString()
+                                           : tr("Cannot be stored: %1").arg(problems.join(QLatin1Char(' '))));
     static_cast<CheckedPage*>(page(ResultPage))->recheck();
 }
 

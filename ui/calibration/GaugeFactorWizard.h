@@ -35,6 +35,7 @@ class CalibrationPlot;
 class CheckedPage;
 class FitLimitsBox;
 class QuantityEdit;
+class StabilityCriteria;
 class StabilityWatch;
 
 class GaugeFactorWizard : public QWizard {
@@ -110,9 +111,7 @@ private:
     QuantityEdit* m_nominal;
     QLabel* m_prefill;
 
-    QDoubleSpinBox* m_window;
-    QDoubleSpinBox* m_maxDrift;
-    QDoubleSpinBox* m_maxNoise;
+    StabilityCriteria* m_criteria;
     QLabel* m_zeroText;
     QPushButton* m_retakeZero;
     std::optional<core::calibration::WindowStatistics> m_zero;
@@ -127,7 +126,7 @@ private:
     CalibrationPlot* m_plot;
     QLabel* m_fitSummary;
     std::vector<LoadPoint> m_points;
-    std::optional<LoadPoint> m_pending;         // waiting for its stable window
+    std::optional<LoadPoint> m_pending;        // waiting for its stable window
     std::optional<std::size_t> m_retakeIndex;  // the point the pending one replaces
 
     QLabel* m_resultText;

@@ -42,6 +42,28 @@ TEST(CapacitiveCalibration, ThePapersFiguresFollowFromItsFit)
     EXPECT_NEAR(*r.record.value("sensitivity_pf_per_mn"), 1.660, 1e-9);
 }
 
+TEST(CapacitiveCalibration, ForceStepsAloneGiveADisplacementLimitThroughTheStiffness)
+{
+    // σ 0.004 pF, 1.8 pF/mN: 3σ/S = 0.012/1.8 mN = 6.667 µN; at 0.5 N/m
+    // that is a tip displacement of 13.33 µm. Fitted points: the baseline
+    // first, then the steps.
+    CapacitiveCalibrationInput in;
+    in.baseline = baselineOf(51.44e-12, 4e-15);
+    in.stiffness_n_per_m = 0.5;
+    for (int mgf : {50, 100}) {
+        const double force = mgf * kMilligramForce_n;
+        in.steps.push_back({force, std::nullopt, 51.44e-12 + 1.8e-9 * force, 0.0, true});
+    }
+    const auto r = calibrateCapacitive(in, "No. 1", "tester");
+    EXPECT_NEAR(*r.detectionLimit_n, 6.6667e-6, 1e-9);
+    EXPECT_NEAR(*r.detectionLimit_m, 13.333e-6, 1e-8);
+    EXPECT_NEAR(*r.record.value("detection_limit_mm"), 13.333e-3, 1e-5);
+    ASSERT_EQ(r.fitForce_n.size(), 3u);
+    EXPECT_EQ(r.fitForce_n[0], 0.0);
+    EXPECT_EQ(r.fitForce_n[2], 100 * kMilligramForce_n);
+    EXPECT_NEAR(r.fitDelta_f[2], 1.8e-9 * 100 * kMilligramForce_n, 1e-18);
+}
+
 TEST(CapacitiveCalibration, RecoversSlopeC0AndDetectionLimitFromNoisyData)
 {
     const double c0 = 51.44e-12, slope = 1.8e-9, sigma = 4e-15;  // 0.004 pF noise
