@@ -26,6 +26,7 @@
 #include "ui/SessionBar.h"
 #include "ui/VerdictDialog.h"
 #include "ui/XYPlotWidget.h"
+#include "ui/calibration/CalibrationHistory.h"
 #include "ui/calibration/CapacitiveWizard.h"
 #include "ui/calibration/GaugeFactorWizard.h"
 #include "ui/calibration/StoredCalibrations.h"
@@ -326,6 +327,11 @@ void MainWindow::createMenus()
     tools->addAction(tr("Calibrate the &gauge factor…"), this, [this] { calibrate(QStringLiteral("gauge")); });
     tools->addAction(tr("Calibrate the &capacitive beam (C0, sensitivity)…"), this,
                      [this] { calibrate(QStringLiteral("capacitive")); });
+    tools->addAction(tr("Calibration &history…"), this, [this] {
+        auto* history = new CalibrationHistory(m_storePath, this);
+        history->setAttribute(Qt::WA_DeleteOnClose);
+        history->show();
+    });
     tools->addSeparator();
     tools->addAction(tr("Compliance probe &design…"), this, [this] {
         auto* tool = new DesignTool(ProfileLibrary::defaultDirectory(), this);

@@ -6,14 +6,14 @@
 // counts per newton = 2.14 · 1.11111e-3 / 2 · 5 · 200 · 3276.8 = 3895.77.
 #include "ui/calibration/GaugeFactorWizard.h"
 
-#include "support/MainWindowHelpers.h"
-#include "support/Screenshot.h"
-#include "support/TempDirectory.h"
-#include "support/WaitFor.h"
 #include "core/storage/SessionStore.h"
 #include "devices/Acquisition.h"
 #include "devices/simulator/GaugeCalibrationScenario.h"
 #include "devices/simulator/SimulatorSource.h"
+#include "support/MainWindowHelpers.h"
+#include "support/Screenshot.h"
+#include "support/TempDirectory.h"
+#include "support/WaitFor.h"
 
 #include <QDoubleSpinBox>
 #include <QFileInfo>
@@ -103,7 +103,8 @@ protected:
         auto* button = child<QPushButton>(wizard, "captureButton");
         // Runs after the wizard's own handler has hung the labelled mass.
         QMetaObject::Connection swap;
-        if (hung) swap = QObject::connect(button, &QPushButton::clicked, [this, hung] { m_rig->place(*hung * 1e-3 * g0); });
+        if (hung)
+            swap = QObject::connect(button, &QPushButton::clicked, [this, hung] { m_rig->place(*hung * 1e-3 * g0); });
         press(wizard, Qt::Key_C);
         QObject::disconnect(swap);
         ASSERT_TRUE(waitFor([&] { return button->isEnabled(); }, 10000));
@@ -112,8 +113,7 @@ protected:
 
     core::calibration::CalibrationRecord onlyStoredRecord() const
     {
-        core::storage::SessionStore store(m_context.storePath.toStdString(),
-                                          core::storage::Database::Access::ReadOnly);
+        core::storage::SessionStore store(m_context.storePath.toStdString(), core::storage::Database::Access::ReadOnly);
         const auto all = store.calibrations();
         EXPECT_EQ(all.size(), 1u);
         return all.empty() ? core::calibration::CalibrationRecord{} : all.front().record;

@@ -55,7 +55,8 @@ void StabilityIndicator::refresh()
                                           value(settings.maxNoise)));
         return;
     }
-    setText(dot("#2e9e44") + tr("Stable: %1, σ %2, drift %3/s").arg(value(w->mean, 7), value(w->sigma), value(w->drift_per_s)));
+    setText(dot("#2e9e44") +
+            tr("Stable: %1, σ %2, drift %3/s").arg(value(w->mean, 7), value(w->sigma), value(w->drift_per_s)));
 }
 
 }  // namespace tactiscope::ui

@@ -1,0 +1,258 @@
+// CalibrationHistory: sensors, records, drift plot, sessions per record.
+#include "ui/calibration/CalibrationHistory.h"
+
+#include "core/calibration/CalibrationDrift.h"
+#include "core/storage/SessionStore.h"
+#include "ui/calibration/WizardText.h"
+
+#include <QDateTime>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QListWidget>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace tactiscope::ui {
+namespace {
+
+// The value a kind of calibration is about, its standard error and how it
+// is named and shown.
+struct MainValue {
+    const char* key;
+    const char* standardErrorKey;
+    const char* title;
+    int decimals;
+};
+
+MainValue mainValueOf(const std::string& kind)
+{
+    if (kind == "capacitive")
+        return {"sensitivity_pf_per_mn", "sensitivity_standard_error_pf_per_mn", "Sensitivity (pF/mN)", 4};
+    return {"gauge_factor", "gauge_factor_standard_error", "Gauge factor", 4};
+}
+
+double secondsOf(const std::string& timestampUtc)
+{
+    return static_cast<double>(
+        QDateTime::fromString(QString::fromStdString(timestampUtc), Qt::ISODate).toSecsSinceEpoch());
+}
+
+}  // namespace
+
+CalibrationHistory::CalibrationHistory(const QString& storePath, QWidget* parent)
+    : QDialog(parent),
+      m_storePath(storePath),
+      m_sensors(new QListWidget(this)),
+      m_records(new QTableWidget(0, 7, this)),
+      m_drift(wrappedLabel({}, this)),
+      m_plot(new QCustomPlot(this)),
+      m_sessions(new QListWidget(this)),
+      m_problem(wrappedLabel({}, this))
+{
+    setWindowTitle(tr("Calibration history"));
+    setObjectName(QStringLiteral("calibrationHistory"));
+    m_sensors->setObjectName(QStringLiteral("sensorList"));
+    m_records->setObjectName(QStringLiteral("recordTable"));
+    m_drift->setObjectName(QStringLiteral("driftText"));
+    m_sessions->setObjectName(QStringLiteral("sessionList"));
+    m_problem->setObjectName(QStringLiteral("problemText"));
+    m_records->setHorizontalHeaderLabels(
+        {tr("Date (UTC)"), tr("Operator"), tr("Value"), tr("± SE"), tr("R²"), tr("Points"), tr("Sessions")});
+    m_records->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_records->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_records->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_records->verticalHeader()->setVisible(false);
+    m_records->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_plot->setMinimumHeight(200);
+    QSharedPointer<QCPAxisTickerDateTime> ticker(new QCPAxisTickerDateTime);
+    ticker->setDateTimeFormat(QStringLiteral("yyyy-MM-dd"));
+    ticker->setDateTimeSpec(Qt::UTC);
+    m_plot->xAxis->setTicker(ticker);
+    m_plot->xAxis->setLabel(tr("Date of calibration"));
+    QCPGraph* graph = m_plot->addGraph();
+    graph->setPen(QPen(QColor(0x1f, 0x77, 0xb4), 1.2));
+    graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, 7));
+    auto* errors = new QCPErrorBars(m_plot->xAxis, m_plot->yAxis);
+    errors->setDataPlottable(graph);
+    errors->setPen(QPen(QColor(0x1f, 0x77, 0xb4), 1.0));
+    m_problem->setStyleSheet(QStringLiteral("color: #b00020"));
+
+    auto* right = new QWidget(this);
+    auto* rightLayout = new QVBoxLayout(right);
+    rightLayout->setContentsMargins(0, 0, 0, 0);
+    rightLayout->addWidget(m_records, 2);
+    rightLayout->addWidget(m_drift);
+    rightLayout->addWidget(m_plot, 2);
+    rightLayout->addWidget(new QLabel(tr("Sessions recorded with the selected calibration:"), right));
+    rightLayout->addWidget(m_sessions, 1);
+    auto* splitter = new QSplitter(this);
+    splitter->addWidget(m_sensors);
+    splitter->addWidget(right);
+    splitter->setStretchFactor(1, 3);
+    splitter->setSizes({240, 760});
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_problem);
+    layout->addWidget(splitter);
+    resize(1000, 700);
+
+    connect(m_sensors, &QListWidget::currentRowChanged, this, &CalibrationHistory::showSensor);
+    connect(m_records, &QTableWidget::currentCellChanged, this, &CalibrationHistory::showSessions);
+    reload();
+}
+
+void CalibrationHistory::reload()
+{
+    m_all.clear();
+    m_problem->clear();
+    if (QFileInfo::exists(m_storePath)) {
+        try {
+            core::storage::SessionStore store(m_storePath.toStdString(), core::storage::Database::Access::ReadOnly);
+            m_all = store.calibrations();
+        } catch (const core::storage::StorageError& e) {
+            m_problem->setText(tr("The store cannot be read: %1").arg(QString::fromStdString(e.what())));
+        }
+    }
+    std::set<QString> sensors;
+    for (const auto& stored : m_all) sensors.insert(QString::fromStdString(stored.record.sensorName));
+    m_sensors->clear();
+    for (const QString& sensor : sensors) m_sensors->addItem(sensor);
+    if (m_all.empty() && m_problem->text().isEmpty())
+        m_problem->setText(tr("No calibrations in %1 yet: the Tools menu has the calibration wizards.")
+                               .arg(QDir::toNativeSeparators(m_storePath)));
+    if (m_sensors->count() > 0) m_sensors->setCurrentRow(0);
+}
+
+bool CalibrationHistory::selectSensor(const QString& sensor)
+{
+    const auto found = m_sensors->findItems(sensor, Qt::MatchExactly);
+    if (found.isEmpty()) return false;
+    m_sensors->setCurrentItem(found.front());
+    return true;
+}
+
+void CalibrationHistory::selectRecord(int row)
+{
+    m_records->selectRow(row);
+}
+
+std::vector<QPointF> CalibrationHistory::plottedPoints() const
+{
+    std::vector<QPointF> points;
+    for (auto it = m_plot->graph(0)->data()->constBegin(); it != m_plot->graph(0)->data()->constEnd(); ++it)
+        points.emplace_back(it->key, it->value);
+    return points;
+}
+
+void CalibrationHistory::showSensor()
+{
+    m_shown.clear();
+    const QString sensor = m_sensors->currentItem() ? m_sensors->currentItem()->text() : QString();
+    for (const auto& stored : m_all)
+        if (QString::fromStdString(stored.record.sensorName) == sensor) m_shown.push_back(&stored);
+    std::stable_sort(m_shown.begin(), m_shown.end(),
+                     [](const auto* a, const auto* b) { return a->record.timestampUtc < b->record.timestampUtc; });
+
+    std::map<std::int64_t, std::size_t> sessionCounts;
+    if (!m_shown.empty()) {
+        try {
+            core::storage::SessionStore store(m_storePath.toStdString(), core::storage::Database::Access::ReadOnly);
+            for (const auto* stored : m_shown)
+                sessionCounts[stored->id] = store.sessionsUsingCalibration(stored->id).size();
+        } catch (const core::storage::StorageError&) {
+            // counts stay unknown; the records are still worth showing
+        }
+    }
+
+    const QLocale locale;
+    m_records->setRowCount(static_cast<int>(m_shown.size()));
+    std::vector<double> t, v;
+    QVector<double> keys, values, errors;
+    QString title;
+    for (std::size_t i = 0; i < m_shown.size(); ++i) {
+        const auto& r = m_shown[i]->record;
+        const MainValue main = mainValueOf(r.kind);
+        title = tr(main.title);
+        const auto value = r.value(main.key);
+        const auto error = r.value(main.standardErrorKey);
+        const bool active = i + 1 == m_shown.size();
+        const QStringList cells{QString::fromStdString(r.timestampUtc) + (active ? tr("  ✓ active") : QString()),
+                                QString::fromStdString(r.operatorName),
+                                value ? locale.toString(*value, 'f', main.decimals) : QStringLiteral("–"),
+                                error ? significant(*error, 2) : QStringLiteral("–"),
+                                locale.toString(r.fit.rSquared, 'f', 6),
+                                QString::number(r.fit.points),
+                                sessionCounts.count(m_shown[i]->id) ? QString::number(sessionCounts[m_shown[i]->id])
+                                                                    : QStringLiteral("?")};
+        for (int c = 0; c < cells.size(); ++c) {
+            auto* item = new QTableWidgetItem(cells[c]);
+            if (c >= 2) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            m_records->setItem(static_cast<int>(i), c, item);
+        }
+        if (!value) continue;
+        t.push_back(secondsOf(r.timestampUtc));
+        v.push_back(*value);
+        keys.push_back(t.back());
+        values.push_back(*value);
+        errors.push_back(error.value_or(0.0));
+    }
+    m_plot->graph(0)->setData(keys, values, true);
+    if (auto* bars = qobject_cast<QCPErrorBars*>(m_plot->plottable(1))) bars->setData(errors);
+    m_plot->yAxis->setLabel(title);
+    m_plot->rescaleAxes();
+    // Some air either side (a day at least), the value axis opened a little, so a single
+    // record or identical values still show as a point.
+    const QCPRange x = m_plot->xAxis->range();
+    const double xPad = std::max(0.06 * x.size(), 86400.0);
+    m_plot->xAxis->setRange(x.lower - xPad, x.upper + xPad);
+    const QCPRange y = m_plot->yAxis->range();
+    const double pad = std::max(0.1 * y.size(), 1e-3 * std::abs(y.center()));
+    m_plot->yAxis->setRange(y.lower - pad, y.upper + pad);
+    m_plot->replot();
+
+    if (v.empty()) {
+        m_drift->clear();
+    } else {
+        const auto d = core::calibration::summarizeDrift(t, v);
+        QString text = tr("%1 over %2 calibrations: mean %3, SD %4; newest %5 % against the first")
+                           .arg(title)
+                           .arg(d.count)
+                           .arg(locale.toString(d.mean, 'f', 4), significant(d.standardDeviation, 2),
+                                locale.toString(100.0 * d.firstToLast, 'f', 2));
+        if (d.trendPerYear) text += tr("; trend %1 per year").arg(significant(*d.trendPerYear, 3));
+        m_drift->setText(text + QLatin1Char('.'));
+    }
+    if (!m_shown.empty()) m_records->selectRow(static_cast<int>(m_shown.size()) - 1);
+    showSessions();
+}
+
+void CalibrationHistory::showSessions()
+{
+    m_sessions->clear();
+    const int row = m_records->currentRow();
+    if (row < 0 || row >= static_cast<int>(m_shown.size())) return;
+    try {
+        core::storage::SessionStore store(m_storePath.toStdString(), core::storage::Database::Access::ReadOnly);
+        const auto ids = store.sessionsUsingCalibration(m_shown[static_cast<std::size_t>(row)]->id);
+        for (std::int64_t id : ids) {
+            const auto session = store.session(id);
+            if (!session) continue;
+            m_sessions->addItem(tr("Session %1 — %2, %3, %4")
+                                    .arg(id)
+                                    .arg(QString::fromStdString(session->startedUtc),
+                                         QString::fromStdString(session->metadata.subject),
+                                         QString::fromStdString(session->metadata.mode)));
+        }
+        if (ids.empty()) m_sessions->addItem(tr("none yet"));
+    } catch (const core::storage::StorageError& e) {
+        m_sessions->addItem(tr("cannot be read: %1").arg(QString::fromStdString(e.what())));
+    }
+}
+
+}  // namespace tactiscope::ui
