@@ -420,10 +420,9 @@ bool MainWindow::startRecording()
         metadata.profileJson = profile->second;
     const auto& calibrations = m_modeCalibrations[metadata.mode];
     if (!calibrations.empty()) {
-        metadata.calibrationsJson = "[";
-        for (const auto& stored : calibrations)
-            metadata.calibrationsJson += (stored.id == calibrations.front().id ? "" : ",") + stored.record.toJson();
-        metadata.calibrationsJson += "]";
+        std::string records;
+        for (const auto& stored : calibrations) records += (records.empty() ? "" : ",") + stored.record.toJson();
+        metadata.calibrationsJson = "[" + records + "]";
     }
     QDir().mkpath(QFileInfo(m_storePath).absolutePath());
     const double rate_hz = source.nominalSampleRate_hz();
@@ -664,8 +663,8 @@ void MainWindow::attachCapacitive(const std::vector<core::ChannelDescriptor>& ch
     m_capacitiveView->setCapacitive(m_capacitive, rate_hz, QString::fromStdString(probe.name), source);
 }
 
-// The newest calibration of a kind for a sensor, from the session store;
-// none when the store does not exist yet or cannot be read.
+// Calibrating needs the live signal and must not change the calibration of
+// a session being recorded.
 void MainWindow::calibrate(const QString& which)
 {
     if (!m_acquisition) {

@@ -7,25 +7,24 @@
 #include "ui/calibration/CapacitiveWizard.h"
 
 #include "core/storage/SessionStore.h"
-#include "devices/Acquisition.h"
 #include "devices/simulator/CapacitiveWeightsScenario.h"
-#include "devices/simulator/SimulatorSource.h"
 #include "support/MainWindowHelpers.h"
 #include "support/Screenshot.h"
+#include "support/SimulatedRig.h"
 #include "support/TempDirectory.h"
-#include "support/WaitFor.h"
 
-#include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QLabel>
-#include <QPushButton>
 #include <QTableWidget>
-#include <QTest>
 
 #include <gtest/gtest.h>
 
 using namespace tactiscope;
+using core::calibration::kMilligramForce_n;
+using tactiscope::testing::captureLoad;
 using tactiscope::testing::child;
+using tactiscope::testing::pageComplete;
+using tactiscope::testing::pressMnemonic;
 using tactiscope::testing::waitFor;
 
 namespace {
@@ -39,97 +38,61 @@ protected:
         parameters.protocol = devices::simulator::WeightProtocol::Manual;
         auto scenario = std::make_unique<devices::simulator::CapacitiveWeightsScenario>(parameters);
         m_sensitivity_f_per_n = scenario->beam().capacitancePerNewton_f_per_n();
-        m_rig = scenario->loadRig();
-        m_context.channels = scenario->channels();
-        m_context.sampleRate_hz = scenario->sampleRate_hz();
-        devices::simulator::SimulatorOptions options;
-        options.speed = 10.0;
-        m_acquisition = std::make_unique<devices::Acquisition>(
-            std::make_unique<devices::simulator::SimulatorSource>(std::move(scenario), options));
-        auto buffer = std::make_shared<core::LiveBuffer>(1, 10000);
-        m_acquisition->addSink(buffer);
-        m_acquisition->start();
-        m_context.buffer = buffer;
-        m_context.rig = m_rig;
-        m_context.storePath = QString::fromStdString(file("sessions.tsdb"));
-        m_context.operatorName = QStringLiteral("Grace");
-        m_context.profileDirectory = QString::fromStdString(file("profiles"));
+        m_rig = std::make_unique<tactiscope::testing::SimulatedRig>(
+            std::move(scenario), QString::fromStdString(file("sessions.tsdb")),
+            QString::fromStdString(file("profiles")), QStringLiteral("Grace"));
     }
 
     void TearDown() override
     {
-        m_acquisition->stop();
+        m_rig.reset();
         TempDirectoryTest::TearDown();
     }
 
-    // A mnemonic (Alt+letter) clicks its button with a short animation.
-    static void press(QWidget& wizard, Qt::Key key)
-    {
-        QTest::keyClick(&wizard, key, Qt::AltModifier);
-        tactiscope::testing::runEventLoopFor(250);
-    }
-
-    static bool pageComplete(const QWizard& wizard) { return wizard.currentPage()->isComplete(); }
-
     static void toSteps(ui::CapacitiveWizard& wizard)
     {
-        wizard.show();
-        wizard.activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(&wizard));
-        ASSERT_TRUE(pageComplete(wizard));
-        press(wizard, Qt::Key_N);
+        ASSERT_TRUE(tactiscope::testing::showActive(wizard));
+        pressMnemonic(wizard, Qt::Key_N);
         ASSERT_EQ(wizard.currentId(), ui::CapacitiveWizard::BaselinePage);
         ASSERT_TRUE(waitFor([&] { return pageComplete(wizard); }, 15000)) << "no stable baseline";
-        press(wizard, Qt::Key_N);
+        pressMnemonic(wizard, Qt::Key_N);
         ASSERT_EQ(wizard.currentId(), ui::CapacitiveWizard::StepsPage);
     }
 
-    // Types the total load in mgf and captures it; `placed` is what the rig
-    // really carries when the operator miscounts the weights.
-    void capture(ui::CapacitiveWizard& wizard, double mgf, std::optional<double> placed = std::nullopt)
+    // Captures a total in mgf; `actual` is what really lies on the beam.
+    void capture(ui::CapacitiveWizard& wizard, double mgf, std::optional<double> actual = std::nullopt)
     {
-        auto* value = child<QDoubleSpinBox>(wizard, "loadValue");
-        auto* button = child<QPushButton>(wizard, "captureButton");
-        value->setFocus();
-        value->selectAll();
-        QTest::keyClicks(value, QLocale().toString(mgf));
-        QMetaObject::Connection swap;
-        if (placed)
-            swap = QObject::connect(button, &QPushButton::clicked,
-                                    [this, placed] { m_rig->place(*placed * core::calibration::kMilligramForce_n); });
-        press(wizard, Qt::Key_C);
-        QObject::disconnect(swap);
-        ASSERT_TRUE(waitFor([&] { return button->isEnabled(); }, 15000));
+        ASSERT_TRUE(
+            captureLoad(wizard, m_rig->rig(), mgf, actual ? std::optional(*actual * kMilligramForce_n) : std::nullopt));
     }
 
-    ui::CalibrationContext m_context;
     double m_sensitivity_f_per_n = 0.0;
-    std::shared_ptr<devices::simulator::LoadRig> m_rig;
-    std::unique_ptr<devices::Acquisition> m_acquisition;
+    std::unique_ptr<tactiscope::testing::SimulatedRig> m_rig;
 };
 
 }  // namespace
 
 TEST_F(CapacitiveWizardTest, LoadAndUnloadOnTheSimulatorStoresItsC0AndSensitivity)
 {
-    ui::CapacitiveWizard wizard(m_context);
+    ui::CapacitiveWizard wizard(m_rig->context);
     ASSERT_NO_FATAL_FAILURE(toSteps(wizard));
     for (double mgf : {30.0, 60.0, 90.0, 120.0, 150.0, 120.0, 90.0, 60.0, 30.0})
         ASSERT_NO_FATAL_FAILURE(capture(wizard, mgf));
-    press(wizard, Qt::Key_F);  // the final baseline
+    pressMnemonic(wizard, Qt::Key_F);  // the final baseline
     ASSERT_TRUE(waitFor([&] { return child<QPushButton>(wizard, "captureButton")->isEnabled(); }, 15000));
-    auto* table = child<QTableWidget>(wizard, "stepsTable");
+    auto* table = child<QTableWidget>(wizard, "pointsTable");
     ASSERT_EQ(table->rowCount(), 9);
     EXPECT_EQ(table->item(4, 1)->text(), QStringLiteral("loading"));
     EXPECT_EQ(table->item(5, 1)->text(), QStringLiteral("unloading"));
     tactiscope::testing::saveScreenshot(wizard, QStringLiteral("capacitive-wizard"));
-    press(wizard, Qt::Key_N);
+    pressMnemonic(wizard, Qt::Key_N);
     ASSERT_EQ(wizard.currentId(), ui::CapacitiveWizard::ResultPage);
     ASSERT_TRUE(pageComplete(wizard)) << child<QLabel>(wizard, "problemsText")->text().toStdString();
-    press(wizard, Qt::Key_A);
+    pressMnemonic(wizard, Qt::Key_A);
     EXPECT_FALSE(wizard.isVisible());
 
-    core::storage::SessionStore store(m_context.storePath.toStdString(), core::storage::Database::Access::ReadOnly);
+    core::storage::SessionStore store(m_rig->context.storePath.toStdString(),
+                                      core::storage::Database::Access::ReadOnly);
     const auto all = store.calibrations();
     ASSERT_EQ(all.size(), 1u);
     const auto& r = all.front().record;
@@ -152,17 +115,17 @@ TEST_F(CapacitiveWizardTest, LoadAndUnloadOnTheSimulatorStoresItsC0AndSensitivit
 
 TEST_F(CapacitiveWizardTest, AMiscountedStepIsRefusedAndCancelStoresNothing)
 {
-    ui::CapacitiveWizard wizard(m_context);
+    ui::CapacitiveWizard wizard(m_rig->context);
     ASSERT_NO_FATAL_FAILURE(toSteps(wizard));
     for (double mgf : {30.0, 60.0}) ASSERT_NO_FATAL_FAILURE(capture(wizard, mgf));
     ASSERT_NO_FATAL_FAILURE(capture(wizard, 90.0, 150.0));  // "90 mgf" with 150 on the beam
     for (double mgf : {120.0, 150.0}) ASSERT_NO_FATAL_FAILURE(capture(wizard, mgf));
-    press(wizard, Qt::Key_N);
+    pressMnemonic(wizard, Qt::Key_N);
     ASSERT_EQ(wizard.currentId(), ui::CapacitiveWizard::ResultPage);
     EXPECT_FALSE(pageComplete(wizard));
     const QString problems = child<QLabel>(wizard, "problemsText")->text();
     EXPECT_TRUE(problems.contains(QStringLiteral("Step 3 (90 mgf, loading)"))) << problems.toStdString();
     QTest::keyClick(&wizard, Qt::Key_Escape);
     EXPECT_FALSE(wizard.isVisible());
-    EXPECT_FALSE(QFileInfo::exists(m_context.storePath));
+    EXPECT_FALSE(QFileInfo::exists(m_rig->context.storePath));
 }

@@ -7,142 +7,103 @@
 #include "ui/calibration/GaugeFactorWizard.h"
 
 #include "core/storage/SessionStore.h"
-#include "devices/Acquisition.h"
 #include "devices/simulator/GaugeCalibrationScenario.h"
-#include "devices/simulator/SimulatorSource.h"
 #include "support/MainWindowHelpers.h"
 #include "support/Screenshot.h"
+#include "support/SimulatedRig.h"
 #include "support/TempDirectory.h"
-#include "support/WaitFor.h"
 
-#include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QLabel>
-#include <QLineEdit>
-#include <QPushButton>
 #include <QTableWidget>
-#include <QTest>
 
 #include <gtest/gtest.h>
 
 using namespace tactiscope;
+using tactiscope::testing::captureLoad;
 using tactiscope::testing::child;
+using tactiscope::testing::pageComplete;
+using tactiscope::testing::pressMnemonic;
 using tactiscope::testing::waitFor;
 
 namespace {
 
 constexpr double kTrueGaugeFactor = 2.14;
 constexpr double kCountsPerNewton = 3895.77;
-constexpr double g0 = 9.80665;
+constexpr double kNewtonsPerGram = 9.80665e-3;
 
 class GaugeFactorWizardTest : public tactiscope::testing::TempDirectoryTest {
 protected:
     void SetUp() override
     {
         TempDirectoryTest::SetUp();
-        auto scenario = std::make_unique<devices::simulator::GaugeCalibrationScenario>();
-        m_rig = scenario->loadRig();
-        m_context.channels = scenario->channels();
-        m_context.sampleRate_hz = scenario->sampleRate_hz();
-        devices::simulator::SimulatorOptions options;
-        options.speed = 10.0;
-        m_acquisition = std::make_unique<devices::Acquisition>(
-            std::make_unique<devices::simulator::SimulatorSource>(std::move(scenario), options));
-        auto buffer = std::make_shared<core::LiveBuffer>(1, 100000);
-        m_acquisition->addSink(buffer);
-        m_acquisition->start();
-        m_context.buffer = buffer;
-        m_context.rig = m_rig;
-        m_context.storePath = QString::fromStdString(file("sessions.tsdb"));
-        m_context.operatorName = QStringLiteral("Ada");
-        m_context.profileDirectory = QString::fromStdString(file("profiles"));
+        m_rig = std::make_unique<tactiscope::testing::SimulatedRig>(
+            std::make_unique<devices::simulator::GaugeCalibrationScenario>(),
+            QString::fromStdString(file("sessions.tsdb")), QString::fromStdString(file("profiles")),
+            QStringLiteral("Ada"));
     }
 
     void TearDown() override
     {
-        m_acquisition->stop();
+        m_rig.reset();
         TempDirectoryTest::TearDown();
     }
-
-    // A mnemonic (Alt+letter) clicks its button with a short animation.
-    static void press(QWidget& wizard, Qt::Key key)
-    {
-        QTest::keyClick(&wizard, key, Qt::AltModifier);
-        tactiscope::testing::runEventLoopFor(250);
-    }
-
-    static bool pageComplete(const QWizard& wizard) { return wizard.currentPage()->isComplete(); }
 
     // From the first page to the loads page, zero taken.
     static void toLoads(ui::GaugeFactorWizard& wizard)
     {
-        wizard.show();
-        wizard.activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(&wizard));
-        ASSERT_TRUE(pageComplete(wizard));
-        press(wizard, Qt::Key_N);
+        ASSERT_TRUE(tactiscope::testing::showActive(wizard));
+        pressMnemonic(wizard, Qt::Key_N);
         ASSERT_EQ(wizard.currentId(), ui::GaugeFactorWizard::ChainPage);
-        press(wizard, Qt::Key_N);
+        pressMnemonic(wizard, Qt::Key_N);
         ASSERT_EQ(wizard.currentId(), ui::GaugeFactorWizard::ZeroPage);
         ASSERT_TRUE(waitFor([&] { return pageComplete(wizard); }, 10000)) << "no stable zero";
         EXPECT_TRUE(child<QLabel>(wizard, "zeroText")->text().contains(QStringLiteral("counts")));
-        press(wizard, Qt::Key_N);
+        pressMnemonic(wizard, Qt::Key_N);
         ASSERT_EQ(wizard.currentId(), ui::GaugeFactorWizard::LoadsPage);
     }
 
-    // Types the load in grams and captures it; `hung` is what the rig really
-    // carries when the label on the mass is wrong.
-    void capture(ui::GaugeFactorWizard& wizard, double grams, std::optional<double> hung = std::nullopt)
+    // Captures a mass in grams; `actual` is what really hangs on the tip.
+    void capture(ui::GaugeFactorWizard& wizard, double grams, std::optional<double> actual = std::nullopt)
     {
-        auto* value = child<QDoubleSpinBox>(wizard, "loadValue");
         auto* table = child<QTableWidget>(wizard, "pointsTable");
         const int rows = table->rowCount();
-        value->setFocus();
-        value->selectAll();
-        QTest::keyClicks(value, QLocale().toString(grams));
-        auto* button = child<QPushButton>(wizard, "captureButton");
-        // Runs after the wizard's own handler has hung the labelled mass.
-        QMetaObject::Connection swap;
-        if (hung)
-            swap = QObject::connect(button, &QPushButton::clicked, [this, hung] { m_rig->place(*hung * 1e-3 * g0); });
-        press(wizard, Qt::Key_C);
-        QObject::disconnect(swap);
-        ASSERT_TRUE(waitFor([&] { return button->isEnabled(); }, 10000));
+        ASSERT_TRUE(
+            captureLoad(wizard, m_rig->rig(), grams, actual ? std::optional(*actual * kNewtonsPerGram) : std::nullopt));
         EXPECT_EQ(table->rowCount(), rows + 1);
     }
 
     core::calibration::CalibrationRecord onlyStoredRecord() const
     {
-        core::storage::SessionStore store(m_context.storePath.toStdString(), core::storage::Database::Access::ReadOnly);
+        core::storage::SessionStore store(m_rig->context.storePath.toStdString(),
+                                          core::storage::Database::Access::ReadOnly);
         const auto all = store.calibrations();
         EXPECT_EQ(all.size(), 1u);
         return all.empty() ? core::calibration::CalibrationRecord{} : all.front().record;
     }
 
-    ui::CalibrationContext m_context;
-    std::shared_ptr<devices::simulator::LoadRig> m_rig;
-    std::unique_ptr<devices::Acquisition> m_acquisition;
+    std::unique_ptr<tactiscope::testing::SimulatedRig> m_rig;
 };
 
 }  // namespace
 
 TEST_F(GaugeFactorWizardTest, CompletedOnTheSimulatorItStoresTheTrueGaugeFactor)
 {
-    ui::GaugeFactorWizard wizard(m_context);
+    ui::GaugeFactorWizard wizard(m_rig->context);
     QString storedSensor;
     QObject::connect(&wizard, &ui::GaugeFactorWizard::calibrationStored,
                      [&](std::int64_t, const QString& sensor) { storedSensor = sensor; });
     ASSERT_NO_FATAL_FAILURE(toLoads(wizard));
-    for (double grams : {20.0, 50.0, 100.0, 200.0}) capture(wizard, grams);
+    for (double grams : {20.0, 50.0, 100.0, 200.0}) ASSERT_NO_FATAL_FAILURE(capture(wizard, grams));
     ASSERT_TRUE(pageComplete(wizard));
     tactiscope::testing::saveScreenshot(wizard, QStringLiteral("gauge-factor-wizard"));
-    press(wizard, Qt::Key_N);
+    pressMnemonic(wizard, Qt::Key_N);
     ASSERT_EQ(wizard.currentId(), ui::GaugeFactorWizard::ResultPage);
     EXPECT_TRUE(pageComplete(wizard));
     // 7 % off the datasheet's 2.0: above the default 5 % warning.
     EXPECT_TRUE(child<QLabel>(wizard, "deviationWarning")->text().contains(QStringLiteral("differs")));
     EXPECT_TRUE(child<QLabel>(wizard, "problemsText")->text().isEmpty());
-    press(wizard, Qt::Key_A);
+    pressMnemonic(wizard, Qt::Key_A);
     EXPECT_FALSE(wizard.isVisible());
 
     const auto record = onlyStoredRecord();
@@ -162,46 +123,46 @@ TEST_F(GaugeFactorWizardTest, CompletedOnTheSimulatorItStoresTheTrueGaugeFactor)
 
 TEST_F(GaugeFactorWizardTest, AMislabelledMassIsRefusedUntilRetaken)
 {
-    ui::GaugeFactorWizard wizard(m_context);
+    ui::GaugeFactorWizard wizard(m_rig->context);
     ASSERT_NO_FATAL_FAILURE(toLoads(wizard));
-    capture(wizard, 20.0);
-    capture(wizard, 50.0);
-    capture(wizard, 100.0, 50.0);  // "100 g" that is really 50 g
-    capture(wizard, 200.0);
-    press(wizard, Qt::Key_N);
+    ASSERT_NO_FATAL_FAILURE(capture(wizard, 20.0));
+    ASSERT_NO_FATAL_FAILURE(capture(wizard, 50.0));
+    ASSERT_NO_FATAL_FAILURE(capture(wizard, 100.0, 50.0));  // "100 g" that is really 50 g
+    ASSERT_NO_FATAL_FAILURE(capture(wizard, 200.0));
+    pressMnemonic(wizard, Qt::Key_N);
     ASSERT_EQ(wizard.currentId(), ui::GaugeFactorWizard::ResultPage);
     EXPECT_FALSE(pageComplete(wizard));
     const QString problems = child<QLabel>(wizard, "problemsText")->text();
     EXPECT_TRUE(problems.contains(QStringLiteral("Load 3 (100 g)"))) << problems.toStdString();
     tactiscope::testing::saveScreenshot(wizard, QStringLiteral("gauge-factor-refused"));
     wizard.accept();  // Finish is disabled; even a direct call must not store
-    EXPECT_FALSE(QFileInfo::exists(m_context.storePath));
+    EXPECT_FALSE(QFileInfo::exists(m_rig->context.storePath));
 
-    press(wizard, Qt::Key_B);
+    pressMnemonic(wizard, Qt::Key_B);
     ASSERT_EQ(wizard.currentId(), ui::GaugeFactorWizard::LoadsPage);
     auto* table = child<QTableWidget>(wizard, "pointsTable");
     table->setFocus();
     table->selectRow(2);
-    press(wizard, Qt::Key_R);  // the rig now carries the right mass
+    pressMnemonic(wizard, Qt::Key_R);  // the rig now carries the right mass
     ASSERT_TRUE(waitFor([&] { return child<QPushButton>(wizard, "captureButton")->isEnabled(); }, 10000));
     EXPECT_EQ(table->rowCount(), 4);
-    press(wizard, Qt::Key_N);
+    pressMnemonic(wizard, Qt::Key_N);
     EXPECT_TRUE(pageComplete(wizard));
-    press(wizard, Qt::Key_A);
+    pressMnemonic(wizard, Qt::Key_A);
     EXPECT_NEAR(*onlyStoredRecord().value("gauge_factor"), kTrueGaugeFactor, 0.005 * kTrueGaugeFactor);
 }
 
 TEST_F(GaugeFactorWizardTest, TooFewPointsAreRefusedAndCancelStoresNothing)
 {
-    ui::GaugeFactorWizard wizard(m_context);
+    ui::GaugeFactorWizard wizard(m_rig->context);
     ASSERT_NO_FATAL_FAILURE(toLoads(wizard));
-    capture(wizard, 50.0);
-    capture(wizard, 100.0);
-    press(wizard, Qt::Key_N);
+    ASSERT_NO_FATAL_FAILURE(capture(wizard, 50.0));
+    ASSERT_NO_FATAL_FAILURE(capture(wizard, 100.0));
+    pressMnemonic(wizard, Qt::Key_N);
     ASSERT_EQ(wizard.currentId(), ui::GaugeFactorWizard::ResultPage);
     EXPECT_FALSE(pageComplete(wizard));
     EXPECT_TRUE(child<QLabel>(wizard, "problemsText")->text().contains(QStringLiteral("Only 3 points")));
     QTest::keyClick(&wizard, Qt::Key_Escape);
     EXPECT_FALSE(wizard.isVisible());
-    EXPECT_FALSE(QFileInfo::exists(m_context.storePath));
+    EXPECT_FALSE(QFileInfo::exists(m_rig->context.storePath));
 }

@@ -6,6 +6,7 @@
 #include "core/storage/Database.h"
 #include "ui/ActiveProfiles.h"
 #include "ui/calibration/CalibrationPlot.h"
+#include "ui/calibration/CapturePanel.h"
 #include "ui/calibration/CheckedPage.h"
 #include "ui/calibration/FitLimitsBox.h"
 #include "ui/calibration/StabilityCriteria.h"
@@ -15,14 +16,11 @@
 #include "ui/calibration/WizardText.h"
 
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
-#include <QHeaderView>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QTableWidget>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -139,73 +137,25 @@ CheckedPage* CapacitiveWizard::createStepsPage()
     page->setTitle(tr("Weights on and off"));
     page->setSubTitle(tr("Place weights one step at a time, then take them off again. Enter the total now on the "
                          "beam and press Capture: the step is the first stable window after that."));
-    m_loadValue = new QDoubleSpinBox(page);
-    m_loadValue->setObjectName(QStringLiteral("loadValue"));
-    m_loadValue->setRange(0.0, 1e6);
-    m_loadValue->setDecimals(3);
-    m_loadValue->setValue(30.0);
-    m_loadUnit = new QComboBox(page);
-    m_loadUnit->setObjectName(QStringLiteral("loadUnit"));
-    m_loadUnit->addItem(tr("mgf on the beam"), static_cast<int>(Unit::MilligramsForce));
-    m_loadUnit->addItem(tr("g on the beam"), static_cast<int>(Unit::Grams));
-    m_capture = new QPushButton(tr("&Capture"), page);
-    m_capture->setObjectName(QStringLiteral("captureButton"));
-    m_finalBaselineButton = new QPushButton(tr("&Final baseline (all off)"), page);
-    m_finalBaselineButton->setObjectName(QStringLiteral("finalBaselineButton"));
-    m_finalBaselineButton->setToolTip(tr("A second baseline after the last weight is off: the drift between the two "
-                                         "is taken out of every step."));
-    m_captureStatus = wrappedLabel(
-        m_context.rig ? tr("Simulator: the rig places and removes the weights for you.") : QString(), page);
-    m_captureStatus->setObjectName(QStringLiteral("captureStatus"));
-    auto* indicator = new StabilityIndicator(m_watch, page);
-    indicator->setUnit(kPicofarad);
-    m_table = new QTableWidget(0, 5, page);
-    m_table->setObjectName(QStringLiteral("stepsTable"));
-    m_table->setHorizontalHeaderLabels(
-        {tr("Load"), tr("Direction"), tr("C (pF)"), tr("σ (pF)"), tr("Residual (% FS)")});
-    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
-    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
-    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_table->verticalHeader()->setVisible(false);
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_retake = new QPushButton(tr("&Retake selected"), page);
-    m_remove = new QPushButton(tr("Re&move selected"), page);
-    m_plot = new CalibrationPlot(page);
-    m_plot->setTitles(tr("Force (mN)"), tr("ΔC (pF)"), tr("Residual (pF)"));
-    m_plot->setSeriesNames(tr("loading"), tr("unloading"));
-    m_fitSummary = wrappedLabel(tr("Two steps are needed for a line."), page);
-    m_fitSummary->setObjectName(QStringLiteral("fitSummary"));
-
-    auto* entry = new QHBoxLayout;
-    auto* loadLabel = new QLabel(tr("&Load"), page);
-    loadLabel->setBuddy(m_loadValue);
-    entry->addWidget(loadLabel);
-    entry->addWidget(m_loadValue);
-    entry->addWidget(m_loadUnit);
-    entry->addWidget(m_capture);
-    entry->addStretch();
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(m_retake);
-    buttons->addWidget(m_remove);
-    buttons->addStretch();
-    buttons->addWidget(m_finalBaselineButton);
-    auto* left = new QVBoxLayout;
-    left->addLayout(entry);
-    left->addWidget(indicator);
-    left->addWidget(m_captureStatus);
-    left->addWidget(m_table, 1);
-    left->addLayout(buttons);
-    auto* right = new QVBoxLayout;
-    right->addWidget(m_plot, 1);
-    right->addWidget(m_fitSummary);
-    auto* layout = new QHBoxLayout(page);
-    layout->addLayout(left, 1);
-    layout->addLayout(right, 1);
-
-    connect(m_capture, &QPushButton::clicked, this, &CapacitiveWizard::captureStep);
-    connect(m_finalBaselineButton, &QPushButton::clicked, this, &CapacitiveWizard::takeFinalBaseline);
-    connect(m_retake, &QPushButton::clicked, this, &CapacitiveWizard::retakeSelected);
-    connect(m_remove, &QPushButton::clicked, this, &CapacitiveWizard::removeSelected);
+    m_panel = new CapturePanel(m_watch, kPicofarad,
+                               {{tr("mgf on the beam"), static_cast<int>(Unit::MilligramsForce)},
+                                {tr("g on the beam"), static_cast<int>(Unit::Grams)}},
+                               {tr("Load"), tr("Direction"), tr("C (pF)"), tr("σ (pF)"), tr("Residual (% FS)")}, page);
+    m_panel->setLoad(30.0, static_cast<int>(Unit::MilligramsForce));
+    m_panel->setStatus(m_context.rig ? tr("Simulator: the rig places and removes the weights for you.") : QString());
+    m_panel->plot()->setTitles(tr("Force (mN)"), tr("ΔC (pF)"), tr("Residual (pF)"));
+    m_panel->plot()->setSeriesNames(tr("loading"), tr("unloading"));
+    auto* finalBaseline = new QPushButton(tr("&Final baseline (all off)"));
+    finalBaseline->setObjectName(QStringLiteral("finalBaselineButton"));
+    finalBaseline->setToolTip(tr("A second baseline after the last weight is off: the drift between the two is taken "
+                                 "out of every step."));
+    m_panel->addButton(finalBaseline);
+    auto* layout = new QVBoxLayout(page);
+    layout->addWidget(m_panel);
+    connect(m_panel, &CapturePanel::captureRequested, this, &CapacitiveWizard::captureStep);
+    connect(m_panel, &CapturePanel::retakeRequested, this, &CapacitiveWizard::retake);
+    connect(m_panel, &CapturePanel::removeRequested, this, &CapacitiveWizard::remove);
+    connect(finalBaseline, &QPushButton::clicked, this, &CapacitiveWizard::takeFinalBaseline);
     return page;
 }
 
@@ -248,8 +198,7 @@ void CapacitiveWizard::cleanupPage(int id)
         m_watch->disarm();
         m_capturing = Capture::None;
         m_pending.reset();
-        m_capture->setEnabled(true);
-        m_finalBaselineButton->setEnabled(true);
+        m_panel->setWaiting(false);
     }
     QWizard::cleanupPage(id);
 }
@@ -289,9 +238,8 @@ void CapacitiveWizard::takeFinalBaseline()
 {
     if (m_context.rig) m_context.rig->place(0.0);
     m_capturing = Capture::FinalBaseline;
-    m_captureStatus->setText(tr("Waiting for a stable baseline with every weight off…"));
-    m_capture->setEnabled(false);
-    m_finalBaselineButton->setEnabled(false);
+    m_panel->setStatus(tr("Waiting for a stable baseline with every weight off…"));
+    m_panel->setWaiting(true);
     m_watch->arm();
     recheck(StepsPage);
 }
@@ -309,7 +257,7 @@ QString CapacitiveWizard::loadText(const Step& step) const
 
 void CapacitiveWizard::captureStep()
 {
-    Step step{m_loadValue->value(), static_cast<Unit>(m_loadUnit->currentData().toInt()), true, {}};
+    Step step{m_panel->loadValue(), static_cast<Unit>(m_panel->loadUnit()), true, {}};
     if (m_retakeIndex) {
         step.loading = m_steps[*m_retakeIndex].loading;
     } else if (!m_steps.empty()) {
@@ -319,9 +267,8 @@ void CapacitiveWizard::captureStep()
     m_pending = step;
     if (m_context.rig) m_context.rig->place(forceOf(step));
     m_capturing = Capture::Step;
-    m_captureStatus->setText(tr("Waiting for a stable reading with %1…").arg(loadText(step)));
-    m_capture->setEnabled(false);
-    m_finalBaselineButton->setEnabled(false);
+    m_panel->setStatus(tr("Waiting for a stable reading with %1…").arg(loadText(step)));
+    m_panel->setWaiting(true);
     m_watch->arm();
     recheck(StepsPage);
 }
@@ -343,8 +290,8 @@ void CapacitiveWizard::captured(const core::calibration::WindowStatistics& windo
         return;
     case Capture::FinalBaseline:
         m_finalBaseline = window;
-        m_captureStatus->setText(tr("Final baseline %1 pF: the drift since C0 is taken out of every step.")
-                                     .arg(locale.toString(window.mean * 1e12, 'f', 4)));
+        m_panel->setStatus(tr("Final baseline %1 pF: the drift since C0 is taken out of every step.")
+                               .arg(locale.toString(window.mean * 1e12, 'f', 4)));
         break;
     case Capture::Step: {
         Step step = *m_pending;
@@ -353,36 +300,29 @@ void CapacitiveWizard::captured(const core::calibration::WindowStatistics& windo
             m_steps[*m_retakeIndex] = step;
         else
             m_steps.push_back(step);
-        m_captureStatus->setText(tr("Captured %1: %2 pF ± %3 pF.")
-                                     .arg(loadText(step), locale.toString(window.mean * 1e12, 'f', 4),
-                                          locale.toString(window.sigma * 1e12, 'f', 4)));
+        m_panel->setStatus(tr("Captured %1: %2 pF ± %3 pF.")
+                               .arg(loadText(step), locale.toString(window.mean * 1e12, 'f', 4),
+                                    locale.toString(window.sigma * 1e12, 'f', 4)));
         break;
     }
     }
     m_pending.reset();
     m_retakeIndex.reset();
-    m_capture->setEnabled(true);
-    m_finalBaselineButton->setEnabled(true);
+    m_panel->setWaiting(false);
     refit();
-    m_loadValue->setFocus();
-    m_loadValue->selectAll();
+    m_panel->focusEntry();
 }
 
-void CapacitiveWizard::retakeSelected()
+void CapacitiveWizard::retake(int row)
 {
-    const int row = m_table->currentRow();
-    if (row < 0 || row >= static_cast<int>(m_steps.size())) return;
-    const Step& step = m_steps[static_cast<std::size_t>(row)];
-    m_loadValue->setValue(step.value);
-    m_loadUnit->setCurrentIndex(m_loadUnit->findData(static_cast<int>(step.unit)));
+    const Step& step = m_steps.at(static_cast<std::size_t>(row));
+    m_panel->setLoad(step.value, static_cast<int>(step.unit));
     m_retakeIndex = static_cast<std::size_t>(row);
     captureStep();
 }
 
-void CapacitiveWizard::removeSelected()
+void CapacitiveWizard::remove(int row)
 {
-    const int row = m_table->currentRow();
-    if (row < 0 || row >= static_cast<int>(m_steps.size())) return;
     m_steps.erase(m_steps.begin() + row);
     refit();
 }
@@ -409,7 +349,7 @@ void CapacitiveWizard::refit()
             m_result = core::calibration::calibrateCapacitive(input, profile()->name,
                                                               m_operator->text().trimmed().toStdString());
         } catch (const std::invalid_argument& e) {
-            m_fitSummary->setText(tr("No fit: %1").arg(QString::fromStdString(e.what())));
+            m_panel->setFitSummary(tr("No fit: %1").arg(QString::fromStdString(e.what())));
         }
     }
 
@@ -418,21 +358,17 @@ void CapacitiveWizard::refit()
     const double span =
         delta.empty() ? 0.0
                       : *std::max_element(delta.begin(), delta.end()) - *std::min_element(delta.begin(), delta.end());
-    m_table->setRowCount(static_cast<int>(m_steps.size()));
+    std::vector<QStringList> rows;
     for (std::size_t i = 0; i < m_steps.size(); ++i) {
-        const Step& s = m_steps[i];
+        const Step& step = m_steps[i];
         const bool fitted = m_result && span > 0.0;
-        const QStringList cells{loadText(s), s.loading ? tr("loading") : tr("unloading"),
-                                locale.toString(s.window.mean * 1e12, 'f', 4),
-                                locale.toString(s.window.sigma * 1e12, 'f', 4),
-                                fitted ? locale.toString(100.0 * m_result->forceFit->residuals[i + 1] / span, 'f', 2)
-                                       : QStringLiteral("–")};
-        for (int c = 0; c < cells.size(); ++c) {
-            auto* item = new QTableWidgetItem(cells[c]);
-            if (c > 1) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-            m_table->setItem(static_cast<int>(i), c, item);
-        }
+        rows.push_back({loadText(step), step.loading ? tr("loading") : tr("unloading"),
+                        locale.toString(step.window.mean * 1e12, 'f', 4),
+                        locale.toString(step.window.sigma * 1e12, 'f', 4),
+                        fitted ? locale.toString(100.0 * m_result->forceFit->residuals[i + 1] / span, 'f', 2)
+                               : QStringLiteral("–")});
     }
+    m_panel->setRows(rows, 2);
 
     std::vector<CalibrationPoint> points;
     if (m_result) {
@@ -440,17 +376,15 @@ void CapacitiveWizard::refit()
             points.push_back(
                 {m_result->fitForce_n[i] * 1e3, m_result->fitDelta_f[i] * 1e12, i == 0 || m_steps[i - 1].loading});
         const auto& fit = *m_result->forceFit;
-        m_plot->setData(points, std::make_pair(fit.slope * 1e9, fit.intercept * 1e12));
-        m_fitSummary->setText(tr("Sensitivity %1 ± %2 pF/mN, R² = %3, %4 points with the baseline.")
-                                  .arg(significant(fit.slope * 1e9, 5), significant(fit.slopeStandardError * 1e9, 2),
-                                       locale.toString(fit.rSquared, 'f', 6))
-                                  .arg(fit.points));
+        m_panel->plot()->setData(points, std::make_pair(fit.slope * 1e9, fit.intercept * 1e12));
+        m_panel->setFitSummary(tr("Sensitivity %1 ± %2 pF/mN, R² = %3, %4 points with the baseline.")
+                                   .arg(significant(fit.slope * 1e9, 5), significant(fit.slopeStandardError * 1e9, 2),
+                                        locale.toString(fit.rSquared, 'f', 6))
+                                   .arg(fit.points));
     } else {
-        m_plot->setData(points, std::nullopt);
-        if (m_steps.size() < 2) m_fitSummary->setText(tr("Two steps are needed for a line."));
+        m_panel->plot()->setData(points, std::nullopt);
+        if (m_steps.size() < 2) m_panel->setFitSummary(tr("Two steps are needed for a line."));
     }
-    m_retake->setEnabled(!m_steps.empty());
-    m_remove->setEnabled(!m_steps.empty());
     recheck(StepsPage);
 }
 

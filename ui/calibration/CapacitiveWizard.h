@@ -22,15 +22,13 @@
 #include <vector>
 
 class QComboBox;
-class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
-class QTableWidget;
 
 namespace tactiscope::ui {
 
-class CalibrationPlot;
+class CapturePanel;
 class CheckedPage;
 class FitLimitsBox;
 class StabilityCriteria;
@@ -76,8 +74,8 @@ private:
     void takeFinalBaseline();
     void captureStep();
     void captured(const core::calibration::WindowStatistics& window);
-    void retakeSelected();
-    void removeSelected();
+    void retake(int row);
+    void remove(int row);
     double forceOf(const Step& step) const;
     QString loadText(const Step& step) const;
     QString pointName(std::size_t fitted) const;
@@ -99,16 +97,7 @@ private:
     QLabel* m_baselineText;
     std::optional<core::calibration::WindowStatistics> m_baseline;
 
-    QDoubleSpinBox* m_loadValue;
-    QComboBox* m_loadUnit;
-    QPushButton* m_capture;
-    QPushButton* m_finalBaselineButton;
-    QLabel* m_captureStatus;
-    QTableWidget* m_table;
-    QPushButton* m_retake;
-    QPushButton* m_remove;
-    CalibrationPlot* m_plot;
-    QLabel* m_fitSummary;
+    CapturePanel* m_panel;
     std::vector<Step> m_steps;
     std::optional<Step> m_pending;
     std::optional<std::size_t> m_retakeIndex;

@@ -6,6 +6,7 @@
 #include "ui/ActiveProfiles.h"
 #include "ui/QuantityEdit.h"
 #include "ui/calibration/CalibrationPlot.h"
+#include "ui/calibration/CapturePanel.h"
 #include "ui/calibration/CheckedPage.h"
 #include "ui/calibration/FitLimitsBox.h"
 #include "ui/calibration/StabilityCriteria.h"
@@ -19,14 +20,12 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
-#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSpinBox>
-#include <QTableWidget>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -200,71 +199,21 @@ CheckedPage* GaugeFactorWizard::createLoadsPage()
     page->setTitle(tr("Known loads"));
     page->setSubTitle(tr("Hang a known load on the tip, enter it and press Capture: the reading is the mean of the "
                          "first stable window after that. Several loads up to the working range."));
-    m_loadValue = new QDoubleSpinBox(page);
-    m_loadValue->setObjectName(QStringLiteral("loadValue"));
-    m_loadValue->setRange(0.0, 1e6);
-    m_loadValue->setDecimals(3);
-    m_loadValue->setValue(20.0);
-    m_loadUnit = new QComboBox(page);
-    m_loadUnit->setObjectName(QStringLiteral("loadUnit"));
-    m_loadUnit->addItem(tr("g (mass on the tip)"), static_cast<int>(LoadUnit::Grams));
-    m_loadUnit->addItem(tr("mgf (mass on the tip)"), static_cast<int>(LoadUnit::MilligramsForce));
-    m_loadUnit->addItem(tr("mm (tip deflection)"), static_cast<int>(LoadUnit::TipDeflection_mm));
-    m_capture = new QPushButton(tr("&Capture"), page);
-    m_capture->setObjectName(QStringLiteral("captureButton"));
-    m_captureStatus = wrappedLabel(
-        m_context.rig ? tr("Simulator: the rig hangs each load for you when you capture.") : QString(), page);
-    m_captureStatus->setObjectName(QStringLiteral("captureStatus"));
-    auto* indicator = new StabilityIndicator(m_watch, page);
-    indicator->setUnit({1.0, tr("counts"), {}});
-
-    m_table = new QTableWidget(0, 5, page);
-    m_table->setObjectName(QStringLiteral("pointsTable"));
-    m_table->setHorizontalHeaderLabels(
-        {tr("Load"), tr("Force (mN)"), tr("Mean (counts)"), tr("σ (counts)"), tr("Residual (% FS)")});
-    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
-    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
-    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_table->verticalHeader()->setVisible(false);
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_retake = new QPushButton(tr("&Retake selected"), page);
-    m_retake->setObjectName(QStringLiteral("retakeButton"));
-    m_remove = new QPushButton(tr("Re&move selected"), page);
-    m_remove->setObjectName(QStringLiteral("removeButton"));
-    m_plot = new CalibrationPlot(page);
-    m_plot->setTitles(tr("Root strain ε (µε)"), tr("ΔR/R (10⁻⁶)"), tr("Residual (10⁻⁶)"));
-    m_plot->setSeriesNames(tr("zero and loads"), {});
-    m_fitSummary = wrappedLabel(tr("Two loads are needed for a line."), page);
-    m_fitSummary->setObjectName(QStringLiteral("fitSummary"));
-
-    auto* entry = new QHBoxLayout;
-    auto* loadLabel = new QLabel(tr("&Load"), page);
-    loadLabel->setBuddy(m_loadValue);
-    entry->addWidget(loadLabel);
-    entry->addWidget(m_loadValue);
-    entry->addWidget(m_loadUnit);
-    entry->addWidget(m_capture);
-    entry->addStretch();
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(m_retake);
-    buttons->addWidget(m_remove);
-    buttons->addStretch();
-    auto* left = new QVBoxLayout;
-    left->addLayout(entry);
-    left->addWidget(indicator);
-    left->addWidget(m_captureStatus);
-    left->addWidget(m_table, 1);
-    left->addLayout(buttons);
-    auto* right = new QVBoxLayout;
-    right->addWidget(m_plot, 1);
-    right->addWidget(m_fitSummary);
-    auto* layout = new QHBoxLayout(page);
-    layout->addLayout(left, 1);
-    layout->addLayout(right, 1);
-
-    connect(m_capture, &QPushButton::clicked, this, &GaugeFactorWizard::capture);
-    connect(m_retake, &QPushButton::clicked, this, &GaugeFactorWizard::retakeSelected);
-    connect(m_remove, &QPushButton::clicked, this, &GaugeFactorWizard::removeSelected);
+    m_panel = new CapturePanel(
+        m_watch, {1.0, tr("counts"), {}},
+        {{tr("g (mass on the tip)"), static_cast<int>(LoadUnit::Grams)},
+         {tr("mgf (mass on the tip)"), static_cast<int>(LoadUnit::MilligramsForce)},
+         {tr("mm (tip deflection)"), static_cast<int>(LoadUnit::TipDeflection_mm)}},
+        {tr("Load"), tr("Force (mN)"), tr("Mean (counts)"), tr("σ (counts)"), tr("Residual (% FS)")}, page);
+    m_panel->setLoad(20.0, static_cast<int>(LoadUnit::Grams));
+    m_panel->setStatus(m_context.rig ? tr("Simulator: the rig hangs each load for you when you capture.") : QString());
+    m_panel->plot()->setTitles(tr("Root strain ε (µε)"), tr("ΔR/R (10⁻⁶)"), tr("Residual (10⁻⁶)"));
+    m_panel->plot()->setSeriesNames(tr("zero and loads"), {});
+    auto* layout = new QVBoxLayout(page);
+    layout->addWidget(m_panel);
+    connect(m_panel, &CapturePanel::captureRequested, this, &GaugeFactorWizard::capture);
+    connect(m_panel, &CapturePanel::retakeRequested, this, &GaugeFactorWizard::retake);
+    connect(m_panel, &CapturePanel::removeRequested, this, &GaugeFactorWizard::remove);
     return page;
 }
 
@@ -467,14 +416,14 @@ QString GaugeFactorWizard::loadText(const LoadPoint& point) const
 
 void GaugeFactorWizard::capture()
 {
-    if (m_loadValue->value() <= 0.0) {
-        m_captureStatus->setText(tr("Enter the load first: the zero is already taken."));
+    if (m_panel->loadValue() <= 0.0) {
+        m_panel->setStatus(tr("Enter the load first: the zero is already taken."));
         return;
     }
-    m_pending = LoadPoint{m_loadValue->value(), static_cast<LoadUnit>(m_loadUnit->currentData().toInt()), {}};
+    m_pending = LoadPoint{m_panel->loadValue(), static_cast<LoadUnit>(m_panel->loadUnit()), {}};
     if (m_context.rig) m_context.rig->place(forceOf(m_pending->value, m_pending->unit));
-    m_captureStatus->setText(tr("Waiting for a stable reading with %1 on the tip…").arg(loadText(*m_pending)));
-    m_capture->setEnabled(false);
+    m_panel->setStatus(tr("Waiting for a stable reading with %1 on the tip…").arg(loadText(*m_pending)));
+    m_panel->setWaiting(true);
     static_cast<CheckedPage*>(page(LoadsPage))->recheck();
     m_watch->arm();
 }
@@ -485,41 +434,35 @@ void GaugeFactorWizard::captured(const core::calibration::WindowStatistics& wind
     LoadPoint point = *m_pending;
     point.window = window;
     m_pending.reset();
-    m_capture->setEnabled(true);
+    m_panel->setWaiting(false);
     // A clipped reading is not a reading: the ADC, not the beam, set it.
     if (std::abs(window.mean) > 0.95 * chain()->fullScaleCounts()) {
-        m_captureStatus->setText(tr("%1 drives the ADC to its limit (%2 counts): not kept. Use a smaller load or "
-                                    "a lower gain.")
-                                     .arg(loadText(point), significant(window.mean, 6)));
+        m_panel->setStatus(tr("%1 drives the ADC to its limit (%2 counts): not kept. Use a smaller load or "
+                              "a lower gain.")
+                               .arg(loadText(point), significant(window.mean, 6)));
     } else {
         if (m_retakeIndex && *m_retakeIndex < m_points.size())
             m_points[*m_retakeIndex] = point;
         else
             m_points.push_back(point);
-        m_captureStatus->setText(tr("Captured %1: %2 ± %3 counts.")
-                                     .arg(loadText(point), significant(window.mean, 6), significant(window.sigma, 3)));
+        m_panel->setStatus(tr("Captured %1: %2 ± %3 counts.")
+                               .arg(loadText(point), significant(window.mean, 6), significant(window.sigma, 3)));
     }
     m_retakeIndex.reset();
     refit();
-    m_loadValue->setFocus();
-    m_loadValue->selectAll();
+    m_panel->focusEntry();
 }
 
-void GaugeFactorWizard::retakeSelected()
+void GaugeFactorWizard::retake(int row)
 {
-    const int row = m_table->currentRow();
-    if (row < 0 || row >= static_cast<int>(m_points.size())) return;
-    const LoadPoint& point = m_points[static_cast<std::size_t>(row)];
-    m_loadValue->setValue(point.value);
-    m_loadUnit->setCurrentIndex(m_loadUnit->findData(static_cast<int>(point.unit)));
+    const LoadPoint& point = m_points.at(static_cast<std::size_t>(row));
+    m_panel->setLoad(point.value, static_cast<int>(point.unit));
     m_retakeIndex = static_cast<std::size_t>(row);
     capture();
 }
 
-void GaugeFactorWizard::removeSelected()
+void GaugeFactorWizard::remove(int row)
 {
-    const int row = m_table->currentRow();
-    if (row < 0 || row >= static_cast<int>(m_points.size())) return;
     m_points.erase(m_points.begin() + row);
     refit();
 }
@@ -541,48 +484,40 @@ void GaugeFactorWizard::refit()
             m_result = core::calibration::calibrateGaugeFactor(beam(), *chain(), m_zero->mean, loads, sensorName(),
                                                                m_operator->text().trimmed().toStdString());
         } catch (const std::invalid_argument& e) {
-            m_fitSummary->setText(tr("No fit: %1").arg(QString::fromStdString(e.what())));
+            m_panel->setFitSummary(tr("No fit: %1").arg(QString::fromStdString(e.what())));
         }
     }
 
-    m_table->setRowCount(static_cast<int>(m_points.size()));
     const double fullScale =
         m_result ? *std::max_element(m_result->relativeChange.begin(), m_result->relativeChange.end()) -
                        *std::min_element(m_result->relativeChange.begin(), m_result->relativeChange.end())
                  : 0.0;
+    std::vector<QStringList> rows;
     for (std::size_t i = 0; i < m_points.size(); ++i) {
         const LoadPoint& p = m_points[i];
-        const auto row = static_cast<int>(i);
-        const double residual = m_result && fullScale > 0.0 ? m_result->strainFit.residuals[i + 1] / fullScale
-                                                            : std::numeric_limits<double>::quiet_NaN();
-        const QStringList cells{loadText(p), significant(forceOf(p.value, p.unit) * 1e3, 5),
-                                QLocale().toString(p.window.mean, 'f', 1), significant(p.window.sigma, 3),
-                                std::isnan(residual) ? QStringLiteral("–")
-                                                     : QLocale().toString(100 * residual, 'f', 3)};
-        for (int c = 0; c < cells.size(); ++c) {
-            auto* item = new QTableWidgetItem(cells[c]);
-            if (c > 0) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-            m_table->setItem(row, c, item);
-        }
+        const bool fitted = m_result && fullScale > 0.0;
+        rows.push_back({loadText(p), significant(forceOf(p.value, p.unit) * 1e3, 5),
+                        QLocale().toString(p.window.mean, 'f', 1), significant(p.window.sigma, 3),
+                        fitted ? QLocale().toString(100.0 * m_result->strainFit.residuals[i + 1] / fullScale, 'f', 3)
+                               : QStringLiteral("–")});
     }
+    m_panel->setRows(rows, 1);
 
     std::vector<CalibrationPoint> points;
     if (m_result) {
         for (std::size_t i = 0; i < m_result->strain.size(); ++i)
             points.push_back({m_result->strain[i] * 1e6, m_result->relativeChange[i] * 1e6, true});
         const auto& fit = m_result->strainFit;
-        m_plot->setData(points, std::make_pair(fit.slope, fit.intercept * 1e6));
-        m_fitSummary->setText(tr("Gauge factor %1 ± %2 (nominal %3), R² = %4, %5 points with the zero.")
-                                  .arg(significant(fit.slope, 5), significant(fit.slopeStandardError, 2),
-                                       significant(m_result->nominalGaugeFactor, 4),
-                                       QLocale().toString(fit.rSquared, 'f', 6))
-                                  .arg(fit.points));
+        m_panel->plot()->setData(points, std::make_pair(fit.slope, fit.intercept * 1e6));
+        m_panel->setFitSummary(tr("Gauge factor %1 ± %2 (nominal %3), R² = %4, %5 points with the zero.")
+                                   .arg(significant(fit.slope, 5), significant(fit.slopeStandardError, 2),
+                                        significant(m_result->nominalGaugeFactor, 4),
+                                        QLocale().toString(fit.rSquared, 'f', 6))
+                                   .arg(fit.points));
     } else {
-        m_plot->setData(points, std::nullopt);
-        if (m_points.size() < 2) m_fitSummary->setText(tr("Two loads are needed for a line."));
+        m_panel->plot()->setData(points, std::nullopt);
+        if (m_points.size() < 2) m_panel->setFitSummary(tr("Two loads are needed for a line."));
     }
-    m_retake->setEnabled(!m_points.empty());
-    m_remove->setEnabled(!m_points.empty());
     static_cast<CheckedPage*>(page(LoadsPage))->recheck();
 }
 

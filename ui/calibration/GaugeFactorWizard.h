@@ -27,11 +27,10 @@ class QLabel;
 class QLineEdit;
 class QPushButton;
 class QSpinBox;
-class QTableWidget;
 
 namespace tactiscope::ui {
 
-class CalibrationPlot;
+class CapturePanel;
 class CheckedPage;
 class FitLimitsBox;
 class QuantityEdit;
@@ -83,8 +82,8 @@ private:
     void takeZero();
     void capture();
     void captured(const core::calibration::WindowStatistics& window);
-    void retakeSelected();
-    void removeSelected();
+    void retake(int row);
+    void remove(int row);
     QString loadText(const LoadPoint& point) const;
     core::calibration::CalibrationLoad loadOf(const LoadPoint& point) const;
     double forceOf(double value, LoadUnit unit) const;  // what the rig hangs
@@ -116,15 +115,7 @@ private:
     QPushButton* m_retakeZero;
     std::optional<core::calibration::WindowStatistics> m_zero;
 
-    QDoubleSpinBox* m_loadValue;
-    QComboBox* m_loadUnit;
-    QPushButton* m_capture;
-    QLabel* m_captureStatus;
-    QTableWidget* m_table;
-    QPushButton* m_retake;
-    QPushButton* m_remove;
-    CalibrationPlot* m_plot;
-    QLabel* m_fitSummary;
+    CapturePanel* m_panel;
     std::vector<LoadPoint> m_points;
     std::optional<LoadPoint> m_pending;        // waiting for its stable window
     std::optional<std::size_t> m_retakeIndex;  // the point the pending one replaces
