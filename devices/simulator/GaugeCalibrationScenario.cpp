@@ -39,7 +39,8 @@ void GaugeCalibrationScenario::generate(core::SampleBlock& block)
     auto counts = block.channel(0);
     for (double& value : counts) {
         m_settled_n += (m_rig->load_n() - m_settled_n) * settle;
-        const double ideal = m_trueChain.countsForStrain(m_settled_n * m_beam.rootStrainPerNewton(), m_p.zeroOffset_counts);
+        const double ideal =
+            m_trueChain.countsForStrain(m_settled_n * m_beam.rootStrainPerNewton(), m_p.zeroOffset_counts);
         value = std::clamp(std::round(ideal + m_noise.next() * noiseScale), -fullScale, fullScale - 1.0);
     }
 }

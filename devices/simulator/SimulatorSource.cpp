@@ -41,8 +41,8 @@ ReadStatus SimulatorSource::readBlock(core::SampleBlock& out, std::chrono::milli
         const auto now = std::chrono::steady_clock::now();
         if (!m_start) m_start = now;
         const auto ready =
-            *m_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                           std::chrono::duration<double>(static_cast<double>(m_produced + count) * dt_s / m_options.speed));
+            *m_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(
+                           static_cast<double>(m_produced + count) * dt_s / m_options.speed));
         if (ready > now + timeout) {
             std::this_thread::sleep_for(timeout);
             return ReadStatus::Timeout;

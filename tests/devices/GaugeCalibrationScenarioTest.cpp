@@ -2,8 +2,8 @@
 // reaches the reading as the physics says, worked by hand from the paper's
 // beam (seed 001) and the bridge equation, and the manual capacitive
 // protocol follows the rig instead of a script.
-#include "devices/simulator/CapacitiveWeightsScenario.h"
 #include "devices/simulator/GaugeCalibrationScenario.h"
+#include "devices/simulator/CapacitiveWeightsScenario.h"
 #include "devices/simulator/ScenarioCatalog.h"
 
 #include "core/SampleBlock.h"
