@@ -8,12 +8,14 @@
 #include "support/WaitFor.h"
 #include "ui/calibration/CalibrationContext.h"
 
+#include <QAbstractButton>
 #include <QDoubleSpinBox>
 #include <QLocale>
 #include <QPushButton>
 #include <QTest>
 #include <QWizard>
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 
@@ -51,11 +53,19 @@ private:
     std::unique_ptr<devices::Acquisition> m_acquisition;
 };
 
-// A mnemonic (Alt+letter) clicks its button with a short animation.
+// A mnemonic (Alt+letter) clicks its button with a short animation, during
+// which the button is down: wait for it to come up and the click to land.
 inline void pressMnemonic(QWidget& window, Qt::Key key)
 {
     QTest::keyClick(&window, key, Qt::AltModifier);
-    runEventLoopFor(250);
+    runEventLoopFor(50);
+    waitFor(
+        [&] {
+            const auto buttons = window.findChildren<QAbstractButton*>();
+            return std::none_of(buttons.begin(), buttons.end(), [](const QAbstractButton* b) { return b->isDown(); });
+        },
+        5000);
+    QCoreApplication::processEvents();
 }
 
 inline bool pageComplete(const QWizard& wizard)

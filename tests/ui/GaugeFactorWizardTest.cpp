@@ -102,7 +102,8 @@ TEST_F(GaugeFactorWizardTest, CompletedOnTheSimulatorItStoresTheTrueGaugeFactor)
     EXPECT_TRUE(pageComplete(wizard));
     // 7 % off the datasheet's 2.0: above the default 5 % warning.
     EXPECT_TRUE(child<QLabel>(wizard, "deviationWarning")->text().contains(QStringLiteral("differs")));
-    EXPECT_TRUE(child<QLabel>(wizard, "problemsText")->text().isEmpty());
+    EXPECT_TRUE(child<QLabel>(wizard, "problemsText")->text().isEmpty())
+        << child<QLabel>(wizard, "problemsText")->text().toStdString();
     pressMnemonic(wizard, Qt::Key_A);
     EXPECT_FALSE(wizard.isVisible());
 

@@ -1,6 +1,8 @@
 // StabilityWatch: live samples → stability monitor → capture when armed.
 #include "ui/calibration/StabilityWatch.h"
 
+#include <algorithm>
+
 namespace tactiscope::ui {
 
 StabilityWatch::StabilityWatch(QObject* parent)
@@ -33,6 +35,9 @@ void StabilityWatch::setSettings(const core::calibration::StabilitySettings& set
 void StabilityWatch::arm()
 {
     restart();
+    // Samples still waiting in the buffer were measured before the load was
+    // placed: a window of them would be the old load's.
+    if (m_buffer) m_cursor.next = std::max(m_cursor.next, m_buffer->samplesWritten());
     m_armed = true;
 }
 

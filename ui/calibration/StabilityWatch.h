@@ -29,7 +29,8 @@ public:
     void setSettings(const core::calibration::StabilitySettings& settings);
     const core::calibration::StabilitySettings& settings() const { return m_settings; }
 
-    // The next stable window after this call is captured (once).
+    // The next stable window of samples that arrive after this call is
+    // captured (once); samples not yet read are skipped.
     void arm();
     void disarm() { m_armed = false; }
     bool isArmed() const { return m_armed; }
