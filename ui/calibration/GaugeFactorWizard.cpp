@@ -19,7 +19,6 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
@@ -181,15 +180,15 @@ CheckedPage* GaugeFactorWizard::createZeroPage()
     m_criteria = new StabilityCriteria({1.0, tr("counts"), {}}, page);
     m_zeroText = new QLabel(tr("Zero: waiting for a stable signal…"), page);
     m_zeroText->setObjectName(QStringLiteral("zeroText"));
-    m_retakeZero = new QPushButton(tr("Re&take zero"), page);
+    auto* retakeZero = new QPushButton(tr("Re&take zero"), page);
     auto* layout = new QVBoxLayout(page);
     layout->addWidget(indicator);
     layout->addWidget(m_criteria);
     layout->addWidget(m_zeroText);
-    layout->addWidget(m_retakeZero, 0, Qt::AlignLeft);
+    layout->addWidget(retakeZero, 0, Qt::AlignLeft);
     layout->addStretch();
     connect(m_criteria, &StabilityCriteria::edited, this, &GaugeFactorWizard::applyStabilitySettings);
-    connect(m_retakeZero, &QPushButton::clicked, this, &GaugeFactorWizard::takeZero);
+    connect(retakeZero, &QPushButton::clicked, this, &GaugeFactorWizard::takeZero);
     return page;
 }
 

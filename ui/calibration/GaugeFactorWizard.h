@@ -25,7 +25,6 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
-class QPushButton;
 class QSpinBox;
 
 namespace tactiscope::ui {
@@ -112,7 +111,6 @@ private:
 
     StabilityCriteria* m_criteria;
     QLabel* m_zeroText;
-    QPushButton* m_retakeZero;
     std::optional<core::calibration::WindowStatistics> m_zero;
 
     CapturePanel* m_panel;
