@@ -16,11 +16,22 @@ StabilityMonitor::StabilityMonitor(StabilitySettings settings)
         throw std::invalid_argument("stability limits must not be negative");
 }
 
-std::optional<WindowStatistics> StabilityMonitor::push(double t_s, double value)
+void StabilityMonitor::add(double t_s, double value)
 {
     m_samples.emplace_back(t_s, value);
     while (m_samples.size() > 2 && t_s - m_samples[1].first >= m_settings.window_s) m_samples.pop_front();
-    if (m_samples.size() < 3 || t_s - m_samples.front().first < m_settings.window_s) return std::nullopt;
+}
+
+std::optional<WindowStatistics> StabilityMonitor::push(double t_s, double value)
+{
+    add(t_s, value);
+    return statistics();
+}
+
+std::optional<WindowStatistics> StabilityMonitor::statistics() const
+{
+    if (m_samples.size() < 3 || m_samples.back().first - m_samples.front().first < m_settings.window_s)
+        return std::nullopt;
 
     std::vector<double> t, v;
     for (const auto& [time, x] : m_samples) {

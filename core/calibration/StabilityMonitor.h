@@ -39,6 +39,11 @@ public:
     // Adds a sample (times increasing); returns the statistics of the last
     // window once it spans window_s.
     std::optional<WindowStatistics> push(double t_s, double value);
+    // The same in two halves, for a reader that takes samples in batches
+    // and needs the statistics once per batch, not once per sample (each
+    // evaluation fits a line through the whole window).
+    void add(double t_s, double value);
+    std::optional<WindowStatistics> statistics() const;
     void reset() { m_samples.clear(); }
 
 private:

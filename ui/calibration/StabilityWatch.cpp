@@ -64,14 +64,13 @@ void StabilityWatch::poll()
     // A window must be contiguous: samples the reader lost break it.
     if (m_cursor.overrun != overrun) m_monitor.reset();
     const auto& values = m_chunk.values.at(m_channel);
-    for (std::size_t i = 0; i < m_chunk.sampleCount(); ++i) {
-        auto window = m_monitor.push(m_chunk.time_s[i], values[i]);
-        if (!window) continue;
-        m_latest = window;
-        if (m_armed && window->stable) {
-            m_armed = false;
-            emit captured(*window);
-        }
+    for (std::size_t i = 0; i < m_chunk.sampleCount(); ++i) m_monitor.add(m_chunk.time_s[i], values[i]);
+    // Judged once per poll (20 times a second), not per sample: a window
+    // of a fast channel holds hundreds of samples, each judgement fits them all.
+    m_latest = m_monitor.statistics();
+    if (m_armed && m_latest && m_latest->stable) {
+        m_armed = false;
+        emit captured(*m_latest);
     }
     emit updated();
 }

@@ -1,6 +1,7 @@
-// Watches one live channel for a calibration step: every new sample goes
-// into a core StabilityMonitor, so the wizard can show whether the signal
-// has settled and, once armed, take the first stable window that lies
+// Watches one live channel for a calibration step: new samples go into a
+// core StabilityMonitor, whose window is judged each time samples arrive
+// (20 times a second), so the wizard can show whether the signal has
+// settled and, once armed, take the first window found stable that lies
 // wholly after the moment it was armed (after the load was placed), never
 // one that still holds the swing of the previous load.
 #pragma once

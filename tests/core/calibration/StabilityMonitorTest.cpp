@@ -61,3 +61,20 @@ TEST(StabilityMonitor, DriftOrNoiseKeepsItUnstable)
     const auto [t2, noisy] = series([&](double) { return noise(random); });
     EXPECT_FALSE(firstStableWindow(t2, noisy, kSettings).has_value());
 }
+
+TEST(StabilityMonitor, AddingInABatchThenJudgingEqualsPushingEachSample)
+{
+    const auto [t, v] = series([](double s) { return 1.0 - std::exp(-s / 0.5); });
+    StabilityMonitor pushed(kSettings), batched(kSettings);
+    std::optional<WindowStatistics> last;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        last = pushed.push(t[i], v[i]);
+        batched.add(t[i], v[i]);
+    }
+    const auto judged = batched.statistics();
+    ASSERT_TRUE(last && judged);
+    EXPECT_EQ(judged->mean, last->mean);
+    EXPECT_EQ(judged->drift_per_s, last->drift_per_s);
+    EXPECT_EQ(judged->count, last->count);
+    EXPECT_FALSE(StabilityMonitor(kSettings).statistics());
+}
