@@ -9,7 +9,6 @@
 #include "core/storage/SessionStore.h"
 
 #include <chrono>
-#include <cmath>
 #include <iostream>
 
 namespace tactiscope::cli {
@@ -39,37 +38,6 @@ std::optional<QString> pickChannels(const std::vector<core::storage::StoredChann
     }
     if (picked.size() < 2) return QStringLiteral("--channels needs at least two cantilevers, e.g. a,b");
     return std::nullopt;
-}
-
-// Runs the detector over each stretch of samples that all have a value (a
-// gap restarts it, as a reconnection restarts the live detector) and
-// returns the events, in time order.
-std::vector<DefectEvent> detectStretches(const std::vector<std::vector<double>>& series, double dt_s,
-                                         const DetectorOptions& options, std::size_t& analysed)
-{
-    std::vector<DefectEvent> events;
-    const std::size_t total = series.front().size();
-    const auto complete = [&](std::size_t i) {
-        for (const auto& s : series)
-            if (std::isnan(s[i])) return false;
-        return true;
-    };
-    for (std::size_t first = 0; first < total;) {
-        if (!complete(first)) {
-            ++first;
-            continue;
-        }
-        std::size_t end = first;
-        while (end < total && complete(end)) ++end;
-        core::detector::SeriesInput input{static_cast<double>(first) * dt_s, {}, {}};
-        for (const auto& s : series) input.cantilevers.emplace_back(std::span(s).subspan(first, end - first));
-        const auto outputs = core::detector::detectSeries(input, options.parameters, options.threads);
-        const auto found = core::detector::segmentEvents(outputs, dt_s, options.hold_s, options.spacing_m);
-        events.insert(events.end(), found.begin(), found.end());
-        analysed += end - first;
-        first = end;
-    }
-    return events;
 }
 
 }  // namespace
@@ -134,8 +102,8 @@ int runAnalyze(const QStringList& arguments)
         std::vector<std::vector<double>> series;
         for (const std::size_t c : picked) series.push_back(store.readChannel(*id, c, 0, summary.sampleCount));
         const auto started = std::chrono::steady_clock::now();
-        std::size_t analysed = 0;
-        const auto events = detectStretches(series, dt_s, options, analysed);
+        const auto [events, analysed] = core::detector::detectStretches(
+            series, {options.parameters, options.hold_s, options.spacing_m, options.threads});
         const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         if (!save.isEmpty()) {
             std::vector<core::storage::SessionEvent> stored;

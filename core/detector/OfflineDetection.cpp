@@ -4,6 +4,7 @@
 #include "core/detector/EventSegmenter.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <thread>
 
@@ -110,6 +111,33 @@ std::vector<DefectEvent> segmentEvents(std::span<const ProbeOutput> outputs, dou
     for (const ProbeOutput& o : outputs) segmenter.push(o.t_s, o.combined, sampleInterval_s, events);
     segmenter.finish(events);
     return events;
+}
+
+StretchDetection detectStretches(std::span<const std::vector<double>> cantilevers, const StretchSettings& settings)
+{
+    StretchDetection result;
+    if (cantilevers.empty()) return result;
+    const double dt_s = settings.parameters.sampleInterval_s;
+    const std::size_t total = cantilevers.front().size();
+    const auto complete = [&](std::size_t i) {
+        return std::ranges::none_of(cantilevers, [i](const std::vector<double>& s) { return std::isnan(s[i]); });
+    };
+    for (std::size_t first = 0; first < total;) {
+        if (!complete(first)) {
+            ++first;
+            continue;
+        }
+        std::size_t end = first;
+        while (end < total && complete(end)) ++end;
+        SeriesInput input{static_cast<double>(first) * dt_s, {}, {}};
+        for (const auto& s : cantilevers) input.cantilevers.emplace_back(std::span(s).subspan(first, end - first));
+        const auto outputs = detectSeries(input, settings.parameters, settings.threads);
+        const auto found = segmentEvents(outputs, dt_s, settings.hold_s, settings.spacing_m);
+        result.events.insert(result.events.end(), found.begin(), found.end());
+        result.analysedSamples += end - first;
+        first = end;
+    }
+    return result;
 }
 
 }  // namespace tactiscope::core::detector

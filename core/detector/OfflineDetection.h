@@ -31,4 +31,23 @@ std::vector<ProbeOutput> detectSeries(const SeriesInput& input, const DetectorPa
 std::vector<DefectEvent> segmentEvents(std::span<const ProbeOutput> outputs, double sampleInterval_s, double hold_s,
                                        std::optional<double> spacing_m);
 
+// How a stored recording is re-analysed (the CLI's analyze, the review view).
+struct StretchSettings {
+    DetectorParameters parameters;  // sampleInterval_s is the series'
+    double hold_s = 0.020;
+    std::optional<double> spacing_m;
+    unsigned threads = 1;
+};
+
+struct StretchDetection {
+    std::vector<DefectEvent> events;  // in time order
+    std::size_t analysedSamples = 0;  // samples where every cantilever had a value
+};
+
+// Events of series that start at t = 0 and hold NaN where samples were lost:
+// the detector runs over each stretch where every cantilever has a value and
+// restarts after a gap, as a reconnection restarts the live detector.
+// Throws std::invalid_argument on bad parameters.
+StretchDetection detectStretches(std::span<const std::vector<double>> cantilevers, const StretchSettings& settings);
+
 }  // namespace tactiscope::core::detector

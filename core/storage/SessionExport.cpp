@@ -4,6 +4,7 @@
 #include "core/text/JsonWriter.h"
 #include "core/text/NumberFormat.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -32,19 +33,25 @@ SessionSummary requireSession(SessionStore& store, std::int64_t session)
 
 using RowFunction = std::function<void(std::uint64_t, const std::vector<std::vector<double>>&, std::size_t)>;
 
-// Calls row(index, window, s) for every stored sample (not in a gap), in
-// order; window[k][s] is the value of channel wanted[k].
+// The range's end index, clipped to the session's samples.
+std::uint64_t endOf(const ExportRange& range, std::uint64_t total)
+{
+    return range.count > total - std::min(range.first, total) ? total : range.first + range.count;
+}
+
+// Calls row(index, window, s) for every stored sample (not in a gap) of the
+// range, in order; window[k][s] is the value of channel wanted[k].
 void forEachSample(SessionStore& store, std::int64_t session, const std::vector<std::size_t>& wanted,
-                   const RowFunction& row)
+                   const RowFunction& row, const ExportRange& range = {})
 {
     const ReadSnapshot snapshot(store.database());  // one consistent state, even while recording
-    const std::uint64_t total = store.sampleCount(session);
+    const std::uint64_t end = endOf(range, store.sampleCount(session));
     const auto gaps = store.gaps(session);
     auto gap = gaps.begin();
     std::vector<std::vector<double>> window(wanted.size());
-    for (std::uint64_t first = 0; first < total; first += kWindow) {
+    for (std::uint64_t first = range.first; first < end; first += kWindow) {
         for (std::size_t k = 0; k < wanted.size(); ++k)
-            window[k] = store.readChannel(session, wanted[k], first, kWindow);
+            window[k] = store.readChannel(session, wanted[k], first, std::min(kWindow, end - first));
         for (std::size_t s = 0; s < window[0].size(); ++s) {
             const std::uint64_t index = first + s;
             while (gap != gaps.end() && gap->firstIndex + gap->count <= index) ++gap;
@@ -111,9 +118,10 @@ void writeRecords(text::JsonWriter& json, SessionStore& store, std::int64_t sess
     json.endArray();
 }
 
-void writeMetadata(text::JsonWriter& json, SessionStore& store, std::int64_t session)
+void writeMetadata(text::JsonWriter& json, SessionStore& store, std::int64_t session, const ExportRange& range)
 {
     const auto s = requireSession(store, session);
+    const std::uint64_t total = store.sampleCount(session);
     json.key("session").beginObject();
     json.key("id").value(static_cast<long long>(s.id));
     json.key("uuid").value(s.uuid);
@@ -132,7 +140,15 @@ void writeMetadata(text::JsonWriter& json, SessionStore& store, std::int64_t ses
     json.key("app_version").value(s.appVersion);
     json.key("profile_json").value(s.metadata.profileJson);
     json.key("calibrations_json").value(s.metadata.calibrationsJson);
-    json.key("samples_per_channel").value(static_cast<long long>(store.sampleCount(session)));
+    json.key("samples_per_channel").value(static_cast<long long>(total));
+    json.endObject();
+    // Which samples the export holds, as indices and as session seconds.
+    const std::uint64_t first = std::min(range.first, total), end = endOf(range, total);
+    json.key("exported_range").beginObject();
+    json.key("first_index").value(static_cast<long long>(first));
+    json.key("count").value(static_cast<long long>(end - first));
+    json.key("from_s").value(s.sampleRate_hz > 0.0 ? static_cast<double>(first) / s.sampleRate_hz : 0.0);
+    json.key("to_s").value(s.sampleRate_hz > 0.0 ? static_cast<double>(end) / s.sampleRate_hz : 0.0);
     json.endObject();
     json.key("channels").beginArray();
     for (const auto& channel : store.channels(session)) {
@@ -157,7 +173,7 @@ void writeMetadata(text::JsonWriter& json, SessionStore& store, std::int64_t ses
 
 }  // namespace
 
-void writeSessionCsv(SessionStore& store, std::int64_t session, std::ostream& out)
+void writeSessionCsv(SessionStore& store, std::int64_t session, std::ostream& out, const ExportRange& range)
 {
     requireSession(store, session);
     const auto channels = store.channels(session);
@@ -168,18 +184,21 @@ void writeSessionCsv(SessionStore& store, std::int64_t session, std::ostream& ou
     char buffer[32];
     std::vector<std::size_t> all(channels.size());
     for (std::size_t c = 0; c < all.size(); ++c) all[c] = c;
-    forEachSample(store, session, all, [&](std::uint64_t index, const auto& window, std::size_t s) {
-        out << text::formatShortest(static_cast<double>(index) / rate_hz);
-        for (const auto& values : window) out << ',' << formatSample(values[s], buffer);
-        out << '\n';
-    });
+    forEachSample(
+        store, session, all,
+        [&](std::uint64_t index, const auto& window, std::size_t s) {
+            out << text::formatShortest(static_cast<double>(index) / rate_hz);
+            for (const auto& values : window) out << ',' << formatSample(values[s], buffer);
+            out << '\n';
+        },
+        range);
 }
 
-void writeSessionMetadataJson(SessionStore& store, std::int64_t session, std::ostream& out)
+void writeSessionMetadataJson(SessionStore& store, std::int64_t session, std::ostream& out, const ExportRange& range)
 {
     text::JsonWriter json;
     json.beginObject();
-    writeMetadata(json, store, session);
+    writeMetadata(json, store, session, range);
     json.endObject();
     out << json.str() << '\n';
 }
@@ -188,7 +207,7 @@ void writeSessionJson(SessionStore& store, std::int64_t session, std::ostream& o
 {
     text::JsonWriter head;
     head.beginObject();
-    writeMetadata(head, store, session);
+    writeMetadata(head, store, session, {});
     // The samples are streamed, one column per pass over the store, so an
     // hour-long session never sits in memory: "t", then each channel.
     out << head.str() << ",\"samples\":{";
@@ -241,14 +260,16 @@ void writeAtomically(const std::string& path, const std::function<void(std::ostr
 
 }  // namespace
 
-void exportSession(SessionStore& store, std::int64_t session, ExportFormat format, const std::string& path)
+void exportSession(SessionStore& store, std::int64_t session, ExportFormat format, const std::string& path,
+                   const ExportRange& range)
 {
     if (format == ExportFormat::Json) {
         writeAtomically(path, [&](std::ostream& out) { writeSessionJson(store, session, out); });
         return;
     }
-    writeAtomically(path, [&](std::ostream& out) { writeSessionCsv(store, session, out); });
-    writeAtomically(metadataSidePath(path), [&](std::ostream& out) { writeSessionMetadataJson(store, session, out); });
+    writeAtomically(path, [&](std::ostream& out) { writeSessionCsv(store, session, out, range); });
+    writeAtomically(metadataSidePath(path),
+                    [&](std::ostream& out) { writeSessionMetadataJson(store, session, out, range); });
 }
 
 }  // namespace tactiscope::core::storage

@@ -7,17 +7,28 @@
 //    session's fields, its channels and its gaps.
 //  - JSON: the metadata plus "t" and one array per channel.
 // Samples are read in windows, so memory stays small for hour-long sessions.
+// A CSV export may cover part of a session (a range chosen in review); its
+// metadata then says which samples it holds ("exported_range").
 #pragma once
 
 #include "core/storage/SessionStore.h"
 
+#include <cstdint>
+#include <limits>
 #include <ostream>
 #include <string>
 
 namespace tactiscope::core::storage {
 
-void writeSessionCsv(SessionStore& store, std::int64_t session, std::ostream& out);
-void writeSessionMetadataJson(SessionStore& store, std::int64_t session, std::ostream& out);
+// Samples [first, first + count) of each channel, clipped to the session.
+struct ExportRange {
+    std::uint64_t first = 0;
+    std::uint64_t count = std::numeric_limits<std::uint64_t>::max();
+};
+
+void writeSessionCsv(SessionStore& store, std::int64_t session, std::ostream& out, const ExportRange& range = {});
+void writeSessionMetadataJson(SessionStore& store, std::int64_t session, std::ostream& out,
+                              const ExportRange& range = {});
 void writeSessionJson(SessionStore& store, std::int64_t session, std::ostream& out);
 
 // The side file a CSV export's metadata goes to (and an import reads it
@@ -30,6 +41,8 @@ enum class ExportFormat { Csv, Json };
 // Each file goes through a temporary one renamed into place, so a failed
 // export never leaves half a file under the requested name. Throws
 // StorageError ("cannot write P", "writing P failed (disk full?)").
-void exportSession(SessionStore& store, std::int64_t session, ExportFormat format, const std::string& path);
+// The range applies to CSV only; JSON is always the whole session.
+void exportSession(SessionStore& store, std::int64_t session, ExportFormat format, const std::string& path,
+                   const ExportRange& range = {});
 
 }  // namespace tactiscope::core::storage
