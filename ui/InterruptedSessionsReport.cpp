@@ -57,7 +57,8 @@ std::vector<std::int64_t> interruptedSessionsAfter(const QString& storePath, std
     return found;
 }
 
-void showInterruptedSessionsReport(QWidget* parent, const QString& storePath, const std::vector<std::int64_t>& sessions)
+void showInterruptedSessionsReport(QWidget* parent, const QString& storePath, const std::vector<std::int64_t>& sessions,
+                                   const std::function<void(const std::vector<std::int64_t>&)>& review)
 {
     if (sessions.empty()) return;
     QStringList lines;
@@ -77,6 +78,9 @@ void showInterruptedSessionsReport(QWidget* parent, const QString& storePath, co
                                 QMessageBox::Close, parent);
     box->setObjectName(QStringLiteral("interruptedBox"));
     box->setInformativeText(lines.join(QLatin1Char('\n')));
+    QPushButton* reviewButton = box->addButton(QObject::tr("Review…"), QMessageBox::ActionRole);
+    reviewButton->setObjectName(QStringLiteral("reviewInterruptedButton"));
+    QObject::connect(reviewButton, &QPushButton::clicked, parent, [review, sessions] { review(sessions); });
     QPushButton* exportButton = box->addButton(QObject::tr("Export to CSV…"), QMessageBox::ActionRole);
     exportButton->setObjectName(QStringLiteral("exportInterruptedButton"));
     // The box closes on any button, so the export talks to the parent.

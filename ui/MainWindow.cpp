@@ -30,6 +30,8 @@
 #include "ui/calibration/CapacitiveWizard.h"
 #include "ui/calibration/GaugeFactorWizard.h"
 #include "ui/calibration/StoredCalibrations.h"
+#include "ui/review/ReviewWindow.h"
+#include "ui/review/SessionBrowser.h"
 
 #include <QActionGroup>
 #include <QApplication>
@@ -278,6 +280,7 @@ void MainWindow::createMenus()
     session->addSeparator();
     session->addAction(tr("Sensor &profiles…"), QKeySequence(tr("Ctrl+Shift+P")), this, &MainWindow::showProfiles);
     session->addAction(tr("Session &store…"), this, &MainWindow::chooseStore);
+    session->addAction(tr("&Browse and review sessions…"), QKeySequence::Open, this, &MainWindow::showSessionBrowser);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_deviceDock->toggleViewAction());
@@ -367,6 +370,7 @@ void MainWindow::createStatusBar()
 
 void MainWindow::setStorePath(const QString& path)
 {
+    if (m_browser && path != m_storePath) m_browser->close();  // it lists the old store
     m_storePath = path;
     m_sessionBar->setStorePath(path);
 }
@@ -395,7 +399,46 @@ void MainWindow::reportInterruptedSessions()
     const auto sessions = interruptedSessionsAfter(m_storePath, settings.value(key, 0).toLongLong());
     if (sessions.empty()) return;
     settings.setValue(key, static_cast<qlonglong>(sessions.back()));
-    showInterruptedSessionsReport(this, m_storePath, sessions);
+    showInterruptedSessionsReport(this, m_storePath, sessions,
+                                  [this](const std::vector<std::int64_t>& ids) { reviewSessions(ids); });
+}
+
+SessionBrowser* MainWindow::showSessionBrowser()
+{
+    if (!m_browser) {
+        m_browser = new SessionBrowser(m_storePath, this);
+        m_browser->setAttribute(Qt::WA_DeleteOnClose);
+        connect(m_browser, &SessionBrowser::openSessions, this, &MainWindow::reviewSessions);
+        // A deleted session's review window has nothing left to show.
+        connect(m_browser, &SessionBrowser::sessionsDeleted, this, [this](const std::vector<std::int64_t>& ids) {
+            for (ReviewWindow* window : findChildren<ReviewWindow*>())
+                if (std::ranges::find(ids, window->sessionId()) != ids.end()) window->close();
+        });
+    }
+    m_browser->show();
+    m_browser->raise();
+    m_browser->activateWindow();
+    return m_browser;
+}
+
+void MainWindow::reviewSessions(const std::vector<std::int64_t>& sessions)
+{
+    QStringList problems;
+    for (const std::int64_t id : sessions) {
+        const auto windows = findChildren<ReviewWindow*>();
+        const auto open = std::ranges::find(windows, id, &ReviewWindow::sessionId);
+        ReviewWindow* window = open != windows.end() ? *open : nullptr;
+        QString error;
+        if (!window) window = ReviewWindow::open(m_storePath, id, this, error);
+        if (!window) {
+            problems << error;
+            continue;
+        }
+        window->show();
+        window->raise();
+    }
+    if (!problems.isEmpty())
+        showProblem(tr("Review"), tr("Not every session could be opened."), problems.join(QLatin1Char('\n')));
 }
 
 void MainWindow::toggleRecording()
@@ -452,6 +495,7 @@ void MainWindow::stopRecording()
     const double end_s = recorder->sessionTime_s();
     const auto stats = recorder->finish(core::storage::SessionStatus::Complete);
     m_sessionBar->setRecording(false);
+    if (m_browser) m_browser->reload();
     lockProfiles();
     m_sessionBar->setRecordEnabled(m_acquisition != nullptr);
     const QLocale locale;

@@ -15,6 +15,7 @@
 #include "devices/ReconnectingSource.h"
 
 #include <QMainWindow>
+#include <QPointer>
 #include <QString>
 #include <QTimer>
 
@@ -64,6 +65,7 @@ struct SourceRequest;
 class PanelScanView;
 class SensorProfileDialog;
 class SessionBar;
+class SessionBrowser;
 class XYPlotWidget;
 
 class MainWindow : public QMainWindow {
@@ -108,6 +110,11 @@ public:
     void markEventWithNote();
     // The sensor-profile dialog (non-modal), opened on the current mode.
     SensorProfileDialog* showProfiles();
+    // The session browser of the store (non-modal, one at a time).
+    SessionBrowser* showSessionBrowser();
+    // A review window for each session (an open one is raised); failures
+    // are shown.
+    void reviewSessions(const std::vector<std::int64_t>& sessions);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -161,6 +168,7 @@ private:
     RawConsole* m_rawConsole = nullptr;
     QDockWidget* m_consoleDock = nullptr;
     SensorProfileDialog* m_profileDialog = nullptr;  // created when first asked for
+    QPointer<SessionBrowser> m_browser;              // of the current store, while open
     QLabel* m_recordingLabel = nullptr;
     QLabel* m_deviceLabel = nullptr;
     QLabel* m_linkLabel = nullptr;  // state, rate and losses in one line

@@ -2,14 +2,11 @@
 #include "ui/report/ReportPlot.h"
 
 #include "ui/DisplayUnits.h"
+#include "ui/report/PlotImage.h"
 
-#include <QFileInfo>
-#include <QPainter>
-#include <QSvgGenerator>
 #include <qcustomplot.h>
 
 #include <memory>
-#include <stdexcept>
 
 namespace tactiscope::ui {
 namespace {
@@ -120,23 +117,7 @@ QImage renderReportPlot(const core::report::ReportData& data, QSize size, double
 void saveReportPlot(const core::report::ReportData& data, QSize size, const QString& path)
 {
     const auto plot = buildPlot(data);
-    bool saved = false;
-    if (QFileInfo(path).suffix().compare(QLatin1String("svg"), Qt::CaseInsensitive) == 0) {
-        QSvgGenerator svg;
-        svg.setFileName(path);
-        svg.setSize(size);
-        svg.setViewBox(QRect(QPoint(0, 0), size));
-        svg.setTitle(QObject::tr("Session %1").arg(data.session.id));
-        QCPPainter painter;
-        saved = painter.begin(&svg);
-        if (saved) {
-            plot->toPainter(&painter, size.width(), size.height());
-            saved = painter.end();
-        }
-    } else {
-        saved = plot->savePng(path, size.width(), size.height(), 2.0);
-    }
-    if (!saved) throw std::runtime_error("cannot write " + path.toStdString());
+    savePlotImage(*plot, size, path, QObject::tr("Session %1").arg(data.session.id));
 }
 
 }  // namespace tactiscope::ui

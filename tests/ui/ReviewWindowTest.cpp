@@ -1,0 +1,243 @@
+// The review window on a long stored session (ten minutes of the simulated
+// panel scan at 500 Hz, written by `tactiscope-cli simulate` and imported):
+// the overview reads a small share of the sample chunks, a zoom shows the
+// exact samples of the CSV, the records list jumps, notes are added, edited,
+// deleted and brought back, re-analysis with other parameters finds the
+// events `tactiscope-cli analyze` finds and saves them without touching the
+// recorded ones, replay moves, and the exports write their files.
+#include "ui/review/ReviewWindow.h"
+
+#include "core/storage/SessionStore.h"
+#include "ui/review/ReanalysisPanel.h"
+#include "ui/review/ReviewPlot.h"
+
+#include "support/CliRunner.h"
+#include "support/MainWindowHelpers.h"
+#include "support/Screenshot.h"
+#include "support/TextFiles.h"
+#include "support/WaitFor.h"
+
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QInputDialog>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLabel>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTreeWidget>
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+using namespace tactiscope;
+using tactiscope::testing::child;
+using tactiscope::testing::runCli;
+using tactiscope::testing::waitFor;
+
+namespace {
+
+constexpr int kSeconds = 600;
+
+class ReviewWindowTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        m_csv = m_dir.filePath("scan.csv");
+        m_db = m_dir.filePath("s.tactiscope");
+        ASSERT_EQ(
+            runCli({"simulate", "--seconds", QString::number(kSeconds), "--seed", "3", "--output", m_csv}).exitCode, 0);
+        ASSERT_EQ(runCli({"import", m_csv, "--db", m_db, "--subject", "door-5"}).exitCode, 0);
+        core::storage::SessionStore store(m_db.toStdString());
+        // Two recorded defects and an operator's marker, as a live session has.
+        store.addEvents(1, std::vector<core::storage::SessionEvent>{
+                               {0, "live", "defect", 120.0, 120.1, 1, 0.91, 0.052, std::nullopt, ""},
+                               {0, "live", "defect", 300.5, 300.6, -1, 0.88, 0.050, std::nullopt, ""},
+                               {0, "live", "marker", 450.0, 450.0, 0, std::nullopt, std::nullopt, std::nullopt,
+                                "scratch by the hem"}});
+        QString error;
+        m_window = ui::ReviewWindow::open(m_db, 1, nullptr, error);
+        ASSERT_NE(m_window, nullptr) << error.toStdString();
+        m_window->setAttribute(Qt::WA_DeleteOnClose, false);
+        m_window->show();
+        m_window->plot()->reload();
+    }
+    void TearDown() override { delete m_window; }
+
+    QTemporaryDir m_dir;
+    QString m_csv, m_db;
+    ui::ReviewWindow* m_window = nullptr;
+};
+
+// Every sample of the stored session read once on a separate connection:
+// what loading the whole session costs, in chunks.
+std::uint64_t chunksOfWholeSession(const QString& db)
+{
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto session = *store.session(1);
+    for (std::size_t c = 0; c < store.channels(1).size(); ++c) store.readChannel(1, c, 0, session.sampleCount);
+    return store.chunksRead();
+}
+
+QJsonArray cliEvents(const QStringList& arguments)
+{
+    const auto result = runCli(arguments);
+    EXPECT_EQ(result.exitCode, 0) << result.err.toStdString();
+    return QJsonDocument::fromJson(result.out.toUtf8()).object()["events"].toArray();
+}
+
+QString pdfText(const QString& pdf)
+{
+    QProcess process;
+    process.start(QStringLiteral("pdftotext"), {QStringLiteral("-layout"), pdf, QStringLiteral("-")});
+    if (!process.waitForFinished(60000) || process.exitCode() != 0) return {};
+    return QString::fromUtf8(process.readAllStandardOutput());
+}
+
+}  // namespace
+
+TEST_F(ReviewWindowTest, TheOverviewReadsAFewChunksAndAZoomShowsTheExactSamples)
+{
+    const auto& overview = m_window->plot()->shown(0);
+    EXPECT_FALSE(overview.exact);
+    ASSERT_FALSE(overview.t_s.empty());
+    EXPECT_LT(overview.t_s.front(), 1.0);
+    EXPECT_GT(overview.t_s.back(), kSeconds - 1.0);
+    const std::uint64_t whole = chunksOfWholeSession(m_db);
+    const std::uint64_t read = m_window->store().chunksRead();
+    EXPECT_LT(read * 10, whole) << read << " of " << whole << " chunks";
+
+    // 0.2 s at 500 Hz: the CSV's own rows 50000 to 50100, to the binary32 bit.
+    m_window->plot()->setRange(100.0, 100.2);
+    m_window->plot()->reload();
+    const auto& zoomed = m_window->plot()->shown(1);
+    ASSERT_TRUE(zoomed.exact);
+    const QStringList lines = QString::fromUtf8(tactiscope::testing::readBytes(m_csv)).split(QLatin1Char('\n'));
+    ASSERT_GE(zoomed.t_s.size(), 100u);
+    for (std::size_t i = 0; i < zoomed.t_s.size(); ++i) {
+        const QStringList row = lines[static_cast<qsizetype>(zoomed.firstIndex + i + 1)].split(QLatin1Char(','));
+        EXPECT_NEAR(zoomed.t_s[i], row[0].toDouble(), 1e-6) << i;
+        EXPECT_EQ(static_cast<float>(zoomed.low[i]), row[2].toFloat()) << i;
+    }
+    EXPECT_TRUE(m_window->plot()->readoutAt(100.1).contains(QStringLiteral("b: "))) << "readout names the channel";
+}
+
+TEST_F(ReviewWindowTest, TheListJumpsAndNotesAreAddedEditedDeletedAndBroughtBack)
+{
+    QTreeWidget* list = m_window->recordList();
+    ASSERT_EQ(list->topLevelItemCount(), 3);
+    QTreeWidgetItem* second = list->topLevelItem(1);
+    EXPECT_EQ(second->text(1), QStringLiteral("defect"));
+    EXPECT_TRUE(second->text(3).startsWith(QStringLiteral("B then A"))) << second->text(3).toStdString();
+    m_window->jumpTo(second);
+    EXPECT_NEAR(0.5 * (m_window->plot()->from_s() + m_window->plot()->to_s()), 300.55, 1e-6);
+    EXPECT_LE(m_window->plot()->to_s() - m_window->plot()->from_s(), 2.0 + 1e-9);
+    EXPECT_EQ(m_window->plot()->cursorTime(), 300.5);
+
+    // A note at the pinned cursor, through the dialog as a reviewer types it.
+    m_window->addNote();
+    auto* dialog = m_window->findChild<QInputDialog*>(QStringLiteral("noteDialog"));
+    ASSERT_NE(dialog, nullptr);
+    dialog->setTextValue(QStringLiteral("dent confirmed by eye"));
+    dialog->accept();
+    ASSERT_EQ(list->topLevelItemCount(), 4);
+    core::storage::SessionStore store(m_db.toStdString(), core::storage::Database::Access::ReadOnly);
+    auto notes = store.annotations(1);
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0].time_s, 300.5);
+    EXPECT_EQ(notes[0].text, "dent confirmed by eye");
+
+    EXPECT_TRUE(m_window->editNote(notes[0].id, QStringLiteral("dent confirmed, 2 mm")).isEmpty());
+    EXPECT_EQ(store.annotations(1)[0].text, "dent confirmed, 2 mm");
+    EXPECT_TRUE(m_window->deleteNote(notes[0].id).isEmpty());
+    EXPECT_TRUE(store.annotations(1).empty());
+    EXPECT_EQ(list->topLevelItemCount(), 3);
+    EXPECT_TRUE(m_window->undoDelete().isEmpty());
+    notes = store.annotations(1);
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0].text, "dent confirmed, 2 mm");
+    EXPECT_EQ(notes[0].time_s, 300.5);
+}
+
+TEST_F(ReviewWindowTest, ReanalysisFindsWhatTheCliFindsAndSavesBesideTheRecordedEvents)
+{
+    ui::ReanalysisPanel* panel = m_window->reanalysis();
+    ASSERT_NE(panel, nullptr);
+    child<QDoubleSpinBox>(*panel, "thresholdSpin")->setValue(0.7);
+    child<QDoubleSpinBox>(*panel, "lagStopSpin")->setValue(100.0);
+    child<QDoubleSpinBox>(*panel, "holdSpin")->setValue(30.0);
+    ASSERT_TRUE(panel->run());
+    ASSERT_TRUE(waitFor([&] { return panel->hasResult() && !panel->isRunning(); }, 120000));
+
+    const QJsonArray expected = cliEvents({"analyze", "--db", m_db, "--session", "1", "--json", "--threshold", "0.7",
+                                           "--lags-ms", "2:100:2", "--hold-ms", "30"});
+    const auto& found = panel->events();
+    ASSERT_GT(expected.size(), 100);
+    ASSERT_EQ(found.size(), static_cast<std::size_t>(expected.size()));
+    for (std::size_t e = 0; e < found.size(); ++e) {
+        const QJsonObject want = expected[static_cast<qsizetype>(e)].toObject();
+        EXPECT_EQ(found[e].direction, want["direction"].toInt()) << e;
+        EXPECT_NEAR(found[e].start_s, want["start_s"].toDouble(), 1e-9) << e;
+        EXPECT_NEAR(found[e].end_s, want["end_s"].toDouble(), 1e-9) << e;
+        EXPECT_NEAR(found[e].peakR, want["peak_r"].toDouble(), 1e-12) << e;
+    }
+    // Shown beside the recorded ones, in the list and the marker lane.
+    EXPECT_EQ(m_window->recordList()->topLevelItemCount(), 3 + expected.size());
+
+    EXPECT_FALSE(panel->saveAs(QStringLiteral("live")).isEmpty());
+    EXPECT_TRUE(panel->saveAs(QStringLiteral("threshold 0.7")).isEmpty());
+    EXPECT_FALSE(panel->saveAs(QStringLiteral("threshold 0.7")).isEmpty()) << "a result is saved once";
+    core::storage::SessionStore store(m_db.toStdString(), core::storage::Database::Access::ReadOnly);
+    EXPECT_EQ(store.events(1).size(), 3u);  // the recorded events untouched
+    EXPECT_EQ(store.events(1, "threshold 0.7").size(), found.size());
+
+    m_window->jumpTo(m_window->recordList()->topLevelItem(5));
+    tactiscope::testing::saveScreenshot(*m_window, QStringLiteral("review-window"));
+}
+
+TEST_F(ReviewWindowTest, ReplayMovesThePlayheadAndTheView)
+{
+    m_window->plot()->setRange(10.0, 20.0);
+    m_window->setReplaySpeed(10);
+    m_window->play();
+    ASSERT_TRUE(m_window->isPlaying());
+    ASSERT_TRUE(waitFor([&] { return m_window->plot()->from_s() > 10.0; }, 20000)) << "the view follows the playhead";
+    m_window->pause();
+    EXPECT_FALSE(m_window->isPlaying());
+}
+
+TEST_F(ReviewWindowTest, ExportsTheReportThePlotAndTheRangeShownAsCsv)
+{
+    const QString pdf = m_dir.filePath("report.pdf");
+    ASSERT_TRUE(m_window->exportReport(pdf).isEmpty());
+    const QString text = pdfText(pdf);
+    if (!text.isEmpty()) {
+        EXPECT_TRUE(text.contains(QStringLiteral("door-5")));
+        EXPECT_TRUE(text.contains(QStringLiteral("B then A")));
+    }
+
+    for (const char* name : {"plot.png", "plot.svg"}) {
+        const QString image = m_dir.filePath(QString::fromLatin1(name));
+        ASSERT_TRUE(m_window->savePlot(image).isEmpty());
+        EXPECT_GT(QFile(image).size(), 1000) << name;
+    }
+
+    // 2 s shown at 500 Hz, from 10.001 s (sample 5000.5) to 12.001 s
+    // (6000.5), rounded outwards: samples 5000 to 6001, as simulated.
+    m_window->plot()->setRange(10.001, 12.001);
+    const QString csv = m_dir.filePath("range.csv");
+    ASSERT_TRUE(m_window->exportCsv(csv, true).isEmpty());
+    const QStringList rows = QString::fromUtf8(tactiscope::testing::readBytes(csv)).trimmed().split(QLatin1Char('\n'));
+    const QStringList all = QString::fromUtf8(tactiscope::testing::readBytes(m_csv)).split(QLatin1Char('\n'));
+    ASSERT_EQ(rows.size(), 1 + 1002);
+    for (qsizetype r = 1; r < rows.size(); ++r) {
+        const QStringList got = rows[r].split(QLatin1Char(',')), want = all[5000 + r].split(QLatin1Char(','));
+        EXPECT_EQ(got[1].toFloat(), want[1].toFloat()) << r;
+        EXPECT_EQ(got[2].toFloat(), want[2].toFloat()) << r;
+    }
+    const auto meta = QJsonDocument::fromJson(tactiscope::testing::readBytes(m_dir.filePath("range.meta.json")));
+    EXPECT_EQ(meta["exported_range"]["first_index"].toInt(), 5000);
+    EXPECT_EQ(meta["exported_range"]["count"].toInt(), 1002);
+}

@@ -1,0 +1,310 @@
+// ReviewPlot: lanes read window by window from the store, a marker lane,
+// the hover readout, the pinned cursor and the replay playhead.
+#include "ui/review/ReviewPlot.h"
+
+#include "ui/DisplayUnits.h"
+#include "ui/report/PlotImage.h"
+
+#include <QLabel>
+#include <QVBoxLayout>
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tactiscope::ui {
+namespace {
+
+const QColor kTrace(31, 119, 180);
+const QColor kGap(160, 160, 160, 90);
+constexpr int kMarkerRowHeight_px = 20;
+constexpr double kMinimumSamplesShown = 10.0;
+
+// x in seconds on the lane's time axis, y as a fraction of the lane's height.
+void placeInLane(QCPItemPosition* position, QCPAxisRect* rect, double time_s, double heightRatio)
+{
+    position->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+    position->setAxisRect(rect);
+    position->setTypeY(QCPItemPosition::ptAxisRectRatio);
+    position->setCoords(time_s, heightRatio);
+}
+
+QString valueText(double value, const DisplayUnit& unit)
+{
+    return QString::number(value * unit.scale, 'g', 5);
+}
+
+}  // namespace
+
+ReviewPlot::ReviewPlot(core::storage::SessionStore& store, const core::storage::SessionSummary& session,
+                       QWidget* parent)
+    : QWidget(parent),
+      m_store(store),
+      m_session(session),
+      m_channels(store.channels(session.id)),
+      m_duration_s(session.duration_s()),
+      m_plot(new QCustomPlot(this)),
+      m_readout(new QLabel(this)),
+      m_windows(m_channels.size())
+{
+    m_plot->setObjectName(QStringLiteral("reviewPlot"));
+    m_readout->setObjectName(QStringLiteral("cursorReadout"));
+    m_readout->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_readout->setText(tr("Point at the plot for a readout; click to pin the cursor; drag or wheel to move in "
+                          "time; Home shows the whole session."));
+    m_plot->setMinimumHeight(260);
+    m_plot->plotLayout()->clear();
+    m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    m_plot->setNoAntialiasingOnDrag(true);
+    auto* margins = new QCPMarginGroup(m_plot);
+    const auto gaps = store.gaps(session.id);
+    const double rate_hz = session.sampleRate_hz;
+    for (std::size_t c = 0; c <= m_channels.size(); ++c) {
+        auto* rect = new QCPAxisRect(m_plot);
+        m_plot->plotLayout()->addElement(static_cast<int>(c), 0, rect);
+        rect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
+        rect->setRangeDrag(Qt::Horizontal);
+        rect->setRangeZoom(Qt::Horizontal);
+        QCPAxis* time = rect->axis(QCPAxis::atBottom);
+        connect(time, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this, rect] { syncRange(rect); });
+        if (c == m_channels.size()) {
+            m_markerLane = rect;
+            time->setLabel(tr("Time from the session start (s)"));
+            rect->axis(QCPAxis::atLeft)->setRangeReversed(true);
+            rect->axis(QCPAxis::atLeft)->grid()->setVisible(false);
+            break;
+        }
+        time->setTickLabels(false);
+        const DisplayUnit unit = displayUnitFor(m_channels[c].descriptor);
+        rect->axis(QCPAxis::atLeft)
+            ->setLabel(
+                QStringLiteral("%1\n%2").arg(QString::fromStdString(m_channels[c].descriptor.name), unit.axisTitle()));
+        QCPGraph* graph = m_plot->addGraph(time, rect->axis(QCPAxis::atLeft));
+        graph->setPen(QPen(kTrace, 1.0));
+        m_graphs.push_back(graph);
+        m_lanes.push_back(rect);
+        for (const auto& gap : gaps) {
+            auto* item = new QCPItemRect(m_plot);
+            item->setClipAxisRect(rect);
+            placeInLane(item->topLeft, rect, static_cast<double>(gap.firstIndex) / rate_hz, 0.0);
+            placeInLane(item->bottomRight, rect, static_cast<double>(gap.firstIndex + gap.count) / rate_hz, 1.0);
+            item->setPen(Qt::NoPen);
+            item->setBrush(kGap);
+        }
+    }
+    m_hoverLines = makeLines(QPen(QColor(120, 120, 120), 1.0, Qt::DotLine));
+    m_cursorLines = makeLines(QPen(QColor(40, 40, 40), 1.5));
+    m_playheadLines = makeLines(QPen(QColor(200, 30, 60), 1.5));
+    setMarkers({}, {});
+
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_plot, 1);
+    layout->addWidget(m_readout);
+
+    m_reloadTimer.setSingleShot(true);
+    m_reloadTimer.setInterval(0);
+    connect(&m_reloadTimer, &QTimer::timeout, this, &ReviewPlot::reload);
+    m_plot->setMouseTracking(true);
+    connect(m_plot, &QCustomPlot::mouseMove, this, &ReviewPlot::showHover);
+    connect(m_plot, &QCustomPlot::mousePress, this, [this](QMouseEvent* event) { m_pressedAt = event->position(); });
+    connect(m_plot, &QCustomPlot::mouseRelease, this, &ReviewPlot::pinCursor);
+    connect(m_plot, &QCustomPlot::afterLayout, this, [this] { m_reloadTimer.start(); });
+    showWholeSession();
+}
+
+std::vector<QCPItemStraightLine*> ReviewPlot::makeLines(const QPen& pen)
+{
+    std::vector<QCPItemStraightLine*> lines;
+    for (QCPAxisRect* rect : m_plot->axisRects()) {
+        auto* line = new QCPItemStraightLine(m_plot);
+        line->setClipAxisRect(rect);
+        line->setPen(pen);
+        line->setVisible(false);
+        line->setSelectable(false);
+        lines.push_back(line);
+    }
+    return lines;
+}
+
+void ReviewPlot::placeLines(std::vector<QCPItemStraightLine*>& lines, std::optional<double> time_s)
+{
+    const auto rects = m_plot->axisRects();
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        lines[i]->setVisible(time_s.has_value());
+        if (!time_s) continue;
+        placeInLane(lines[i]->point1, rects[static_cast<int>(i)], *time_s, 0.0);
+        placeInLane(lines[i]->point2, rects[static_cast<int>(i)], *time_s, 1.0);
+    }
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void ReviewPlot::setMarkers(const QStringList& rows, const std::vector<MarkerSpan>& spans)
+{
+    for (QCPAbstractItem* item : m_markerLane->items())
+        if (auto* rect = qobject_cast<QCPItemRect*>(item)) m_plot->removeItem(rect);
+    QSharedPointer<QCPAxisTickerText> ticker(new QCPAxisTickerText);
+    for (int row = 0; row < rows.size(); ++row) ticker->addTick(row, rows[row]);
+    QCPAxis* rowAxis = m_markerLane->axis(QCPAxis::atLeft);
+    rowAxis->setTicker(ticker);
+    const int count = std::max<int>(1, static_cast<int>(rows.size()));
+    rowAxis->setRange(-0.5, count - 0.5);
+    m_markerLane->setMinimumSize(0, count * kMarkerRowHeight_px);
+    m_markerLane->setMaximumSize(QWIDGETSIZE_MAX, count * kMarkerRowHeight_px);
+    QCPAxis* time = m_markerLane->axis(QCPAxis::atBottom);
+    for (const MarkerSpan& span : spans) {
+        auto* item = new QCPItemRect(m_plot);
+        item->setClipAxisRect(m_markerLane);
+        for (QCPItemPosition* corner : {item->topLeft, item->bottomRight}) {
+            corner->setAxes(time, rowAxis);
+            corner->setAxisRect(m_markerLane);
+        }
+        item->topLeft->setCoords(span.start_s, span.row - 0.35);
+        item->bottomRight->setCoords(std::max(span.end_s, span.start_s), span.row + 0.35);
+        item->setPen(QPen(span.colour.darker(130), 2.0));
+        item->setBrush(span.colour);
+    }
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+double ReviewPlot::from_s() const
+{
+    return m_markerLane->axis(QCPAxis::atBottom)->range().lower;
+}
+
+double ReviewPlot::to_s() const
+{
+    return m_markerLane->axis(QCPAxis::atBottom)->range().upper;
+}
+
+void ReviewPlot::setRange(double from_s, double to_s)
+{
+    m_markerLane->axis(QCPAxis::atBottom)->setRange(from_s, to_s);
+}
+
+void ReviewPlot::showWholeSession()
+{
+    setRange(0.0, m_duration_s);
+}
+
+void ReviewPlot::zoom(double factor)
+{
+    const double middle = 0.5 * (from_s() + to_s()), half = 0.5 * (to_s() - from_s()) * factor;
+    setRange(middle - half, middle + half);
+}
+
+void ReviewPlot::centreOn(double time_s, double width_s)
+{
+    const double half = 0.5 * std::min(width_s, to_s() - from_s());
+    setRange(time_s - half, time_s + half);
+}
+
+// Every lane follows the one that moved, clipped to the session: at least a
+// few samples wide, never past either end.
+void ReviewPlot::syncRange(QCPAxisRect* source)
+{
+    if (m_syncing) return;
+    m_syncing = true;
+    QCPRange range = source->axis(QCPAxis::atBottom)->range();
+    const double minimum = kMinimumSamplesShown / std::max(m_session.sampleRate_hz, 1e-9);
+    const double duration = std::max(m_duration_s, minimum);
+    double width = std::clamp(range.size(), minimum, duration);
+    double lower = std::clamp(range.center() - 0.5 * width, 0.0, duration - width);
+    range = QCPRange(lower, lower + width);
+    for (QCPAxisRect* rect : m_plot->axisRects()) rect->axis(QCPAxis::atBottom)->setRange(range);
+    m_syncing = false;
+    emit rangeChanged(range.lower, range.upper);
+    m_reloadTimer.start();
+}
+
+void ReviewPlot::reload()
+{
+    m_reloadTimer.stop();
+    const int width_px = m_lanes.empty() ? 0 : m_lanes.front()->width();
+    const std::size_t pixels = static_cast<std::size_t>(width_px > 10 ? width_px : 800);
+    for (std::size_t c = 0; c < m_channels.size(); ++c) {
+        auto& window = m_windows[c];
+        window = core::storage::readTraceWindow(m_store, m_session.id, c, m_channels[c].sampleRate_hz,
+                                                m_session.sampleCount, from_s(), to_s(), pixels);
+        const DisplayUnit unit = displayUnitFor(m_channels[c].descriptor);
+        QVector<double> keys, values;
+        keys.reserve(static_cast<qsizetype>(2 * window.t_s.size()));
+        values.reserve(keys.capacity());
+        for (std::size_t i = 0; i < window.t_s.size(); ++i) {
+            keys << window.t_s[i];
+            values << window.low[i] * unit.scale;
+            if (window.exact) continue;
+            // Min then max at the same time: the line strokes each stretch's span.
+            keys << window.t_s[i];
+            values << window.high[i] * unit.scale;
+        }
+        QCPGraph* graph = m_graphs[c];
+        graph->setData(keys, values, true);
+        const bool dots = window.exact && static_cast<double>(window.t_s.size()) * 6.0 < static_cast<double>(pixels);
+        graph->setScatterStyle(dots ? QCPScatterStyle(QCPScatterStyle::ssDisc, 4) : QCPScatterStyle());
+        bool found = false;
+        const QCPRange shown = graph->getValueRange(found, QCP::sdBoth, graph->keyAxis()->range());
+        if (found) {
+            const double margin = shown.size() > 0.0 ? 0.08 * shown.size() : std::max(1e-9, std::abs(shown.lower));
+            graph->valueAxis()->setRange(shown.lower - margin, shown.upper + margin);
+        }
+    }
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+QString ReviewPlot::readoutAt(double time_s) const
+{
+    QStringList parts{tr("t = %1 s").arg(time_s, 0, 'f', 4)};
+    for (std::size_t c = 0; c < m_channels.size(); ++c) {
+        const auto& window = m_windows[c];
+        const auto i = window.nearest(time_s);
+        const DisplayUnit unit = displayUnitFor(m_channels[c].descriptor);
+        const QString name = QString::fromStdString(m_channels[c].descriptor.name);
+        if (i < 0) continue;
+        const auto k = static_cast<std::size_t>(i);
+        if (std::isnan(window.low[k]))
+            parts << tr("%1: lost").arg(name);
+        else if (window.exact)
+            parts << tr("%1: %2 %3").arg(name, valueText(window.low[k], unit), unit.symbol);
+        else
+            parts << tr("%1: %2 … %3 %4")
+                         .arg(name, valueText(window.low[k], unit), valueText(window.high[k], unit), unit.symbol);
+    }
+    return parts.join(QStringLiteral("   │   "));
+}
+
+void ReviewPlot::showHover(QMouseEvent* event)
+{
+    const double time_s = m_markerLane->axis(QCPAxis::atBottom)->pixelToCoord(event->position().x());
+    if (time_s < from_s() || time_s > to_s()) return;
+    m_readout->setText(readoutAt(time_s));
+    placeLines(m_hoverLines, time_s);
+}
+
+// A click (not the end of a drag) pins the cursor.
+void ReviewPlot::pinCursor(QMouseEvent* event)
+{
+    if (event->button() != Qt::LeftButton) return;
+    if ((event->position() - m_pressedAt).manhattanLength() > 3.0) return;
+    const double time_s = m_markerLane->axis(QCPAxis::atBottom)->pixelToCoord(event->position().x());
+    setCursorTime(time_s);
+    emit cursorPinned(time_s);
+}
+
+void ReviewPlot::setCursorTime(double time_s)
+{
+    m_cursor_s = std::clamp(time_s, 0.0, m_duration_s);
+    placeLines(m_cursorLines, m_cursor_s);
+}
+
+void ReviewPlot::setPlayhead(std::optional<double> time_s)
+{
+    placeLines(m_playheadLines, time_s);
+}
+
+void ReviewPlot::saveImage(const QString& path) const
+{
+    savePlotImage(*m_plot, m_plot->size(), path, tr("Session %1").arg(m_session.id));
+}
+
+}  // namespace tactiscope::ui

@@ -1,0 +1,542 @@
+// ReviewWindow: header, plot, record list, notes, replay, re-analysis and exports.
+#include "ui/review/ReviewWindow.h"
+
+#include "core/report/ReportData.h"
+#include "core/storage/SessionExport.h"
+#include "ui/calibration/WizardText.h"
+#include "ui/report/ReportDocument.h"
+#include "ui/review/ReanalysisPanel.h"
+#include "ui/review/ReviewPlot.h"
+#include "ui/review/SessionTableModel.h"
+
+#include <QAction>
+#include <QDateTime>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMenuBar>
+#include <QPrintDialog>
+#include <QPrinter>
+#include <QRegularExpression>
+#include <QSettings>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QTextDocument>
+#include <QToolBar>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tactiscope::ui {
+namespace {
+
+using core::storage::SessionStore;
+
+const QColor kAThenB(217, 95, 2, 170);
+const QColor kBThenA(117, 112, 179, 170);
+const QColor kOtherEvent(120, 120, 120, 170);
+const QColor kReading(27, 158, 119, 150);
+const QColor kNote(60, 60, 60, 200);
+
+enum Role { TimeRole = Qt::UserRole, EndRole, NoteRole };
+
+QString text(const std::string& s)
+{
+    return QString::fromStdString(s);
+}
+
+QColor eventColour(const core::storage::SessionEvent& e)
+{
+    if (e.kind != "defect") return kOtherEvent;
+    return e.direction > 0 ? kAThenB : kBThenA;
+}
+
+QString eventDetails(const core::storage::SessionEvent& e)
+{
+    if (e.kind != "defect") return text(e.note);
+    QStringList parts{e.direction > 0 ? QObject::tr("A then B") : QObject::tr("B then A")};
+    if (e.peakR) parts << QObject::tr("R = %1").arg(*e.peakR, 0, 'f', 3);
+    if (e.lag_s) parts << QObject::tr("lag %1 ms").arg(*e.lag_s * 1e3, 0, 'f', 0);
+    if (e.speed_m_per_s) parts << QObject::tr("%1 mm/s").arg(*e.speed_m_per_s * 1e3, 0, 'f', 0);
+    parts << QObject::tr("%1 s long").arg(e.end_s - e.start_s, 0, 'f', 3);
+    return parts.join(QStringLiteral(", "));
+}
+
+QString readingDetails(const core::storage::SessionReading& r)
+{
+    QString value = QObject::tr("%1 = %2").arg(text(r.quantity)).arg(r.value, 0, 'g', 5);
+    if (r.standardError) value += QObject::tr(" ± %1").arg(*r.standardError, 0, 'g', 3);
+    value += QLatin1Char(' ') + text(r.unit);
+    if (!r.site.empty()) value += QObject::tr(" at %1").arg(text(r.site));
+    return value;
+}
+
+struct Entry {
+    double time_s;
+    double end_s;
+    QString what;
+    QString source;
+    QString details;
+    std::int64_t note = 0;
+};
+
+}  // namespace
+
+ReviewWindow* ReviewWindow::open(const QString& storePath, std::int64_t session, QWidget* parent, QString& error)
+{
+    try {
+        auto store = std::make_unique<SessionStore>(storePath.toStdString());
+        auto summary = store->session(session);
+        if (!summary) {
+            error = tr("There is no session %1 in %2.").arg(session).arg(storePath);
+            return nullptr;
+        }
+        if (summary->sampleCount == 0 || summary->sampleRate_hz <= 0.0) {
+            error = tr("Session %1 holds no samples to review.").arg(session);
+            return nullptr;
+        }
+        return new ReviewWindow(storePath, std::move(store), std::move(*summary), parent);
+    } catch (const core::storage::StorageError& e) {
+        error = tr("The store cannot be opened: %1").arg(text(e.what()));
+        return nullptr;
+    }
+}
+
+ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionStore> store,
+                           core::storage::SessionSummary session, QWidget* parent)
+    : QMainWindow(parent),
+      m_storePath(storePath),
+      m_store(std::move(store)),
+      m_session(std::move(session))
+{
+    setAttribute(Qt::WA_DeleteOnClose);
+    setWindowFlag(Qt::Window);
+    setObjectName(QStringLiteral("reviewWindow"));
+    const auto& meta = m_session.metadata;
+    setWindowTitle(tr("Review: session %1 — %2 %3").arg(m_session.id).arg(text(meta.mode), text(meta.subject)));
+
+    const bool interrupted = m_session.status == core::storage::toString(core::storage::SessionStatus::Interrupted);
+    const QDateTime started = QDateTime::fromString(text(m_session.startedUtc), Qt::ISODateWithMs).toLocalTime();
+    // Only what the session holds: an empty field says nothing.
+    QStringList header{tr("<b>%1</b>").arg(text(meta.mode).toHtmlEscaped())};
+    const auto add = [&header](const QString& format, const std::string& value) {
+        if (!value.empty()) header << format.arg(text(value).toHtmlEscaped());
+    };
+    add(tr("subject <b>%1</b>"), meta.subject);
+    add(tr("operator %1"), meta.operatorName);
+    add(tr("site %1"), meta.site);
+    header << tr("started %1").arg(started.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")))
+           << tr("%1 at %2 Hz").arg(durationText(m_session.duration_s())).arg(m_session.sampleRate_hz, 0, 'g', 6);
+    add(tr("device %1"), (meta.deviceModel + " " + meta.deviceSerial).substr(meta.deviceModel.empty() ? 1 : 0));
+    header << (interrupted ? tr("<span style='color:#a05000'><b>interrupted</b> (kept up to the cut)</span>")
+                           : tr("status %1").arg(text(m_session.status)));
+    add(tr("verdict <b>%1</b>"), m_session.verdict);
+    auto* headerLabel = wrappedLabel(header.join(QStringLiteral(" · ")), this);
+    headerLabel->setObjectName(QStringLiteral("sessionHeader"));
+    m_problem = wrappedLabel({}, this);
+    m_problem->setObjectName(QStringLiteral("problemText"));
+    m_problem->setStyleSheet(QStringLiteral("color: #b00020"));
+    m_problem->hide();
+
+    m_plot = new ReviewPlot(*m_store, m_session, this);
+    m_list = new QTreeWidget(this);
+    m_list->setObjectName(QStringLiteral("recordList"));
+    m_list->setHeaderLabels({tr("Time (s)"), tr("What"), tr("Source"), tr("Details")});
+    m_list->setRootIsDecorated(false);
+    m_list->setAlternatingRowColors(true);
+    m_list->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_list->header()->setStretchLastSection(true);
+    if (meta.mode == "panel-scan") m_reanalysis = new ReanalysisPanel(storePath, *m_store, m_session, this);
+
+    auto* bottom = new QSplitter(Qt::Horizontal, this);
+    bottom->addWidget(m_list);
+    if (m_reanalysis) bottom->addWidget(m_reanalysis);
+    bottom->setStretchFactor(0, 3);
+    bottom->setStretchFactor(1, 2);
+    bottom->setSizes({720, 480});
+    auto* split = new QSplitter(Qt::Vertical, this);
+    auto* top = new QWidget(this);
+    auto* topLayout = new QVBoxLayout(top);
+    topLayout->setContentsMargins(6, 6, 6, 0);
+    topLayout->addWidget(headerLabel);
+    topLayout->addWidget(m_problem);
+    topLayout->addWidget(m_plot, 1);
+    split->addWidget(top);
+    split->addWidget(bottom);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 2);
+    setCentralWidget(split);
+    resize(1200, 860);
+
+    m_replay.setInterval(40);
+    connect(&m_replay, &QTimer::timeout, this, &ReviewWindow::advanceReplay);
+    connect(m_list, &QTreeWidget::itemClicked, this, &ReviewWindow::jumpTo);
+    connect(m_list, &QTreeWidget::itemActivated, this, &ReviewWindow::jumpTo);
+    connect(m_list, &QTreeWidget::itemDoubleClicked, this, &ReviewWindow::editSelectedNote);
+    if (m_reanalysis) {
+        connect(m_reanalysis, &ReanalysisPanel::analysed, this, &ReviewWindow::refreshRecords);
+        connect(m_reanalysis, &ReanalysisPanel::saved, this, &ReviewWindow::refreshRecords);
+    }
+    createActions();
+    refreshRecords();
+    statusBar()->showMessage(tr("Session %1 of %2").arg(m_session.id).arg(QFileInfo(storePath).fileName()));
+}
+
+ReviewWindow::~ReviewWindow() = default;
+
+void ReviewWindow::createActions()
+{
+    QMenu* file = menuBar()->addMenu(tr("&Export"));
+    file->addAction(tr("Inspection &report (PDF)…"), QKeySequence(tr("Ctrl+E")), this, [this] {
+        exportWithDialog(tr("Save the inspection report"), tr("PDF (*.pdf)"), QStringLiteral("pdf"),
+                         [this](const QString& path) { return exportReport(path); });
+    });
+    file->addAction(tr("&Print the report…"), QKeySequence::Print, this, &ReviewWindow::printReport);
+    file->addSeparator();
+    file->addAction(tr("The &plot as PNG or SVG…"), this, [this] {
+        exportWithDialog(tr("Save the plot"), tr("PNG image (*.png);;SVG drawing (*.svg)"), QStringLiteral("png"),
+                         [this](const QString& path) { return savePlot(path); });
+    });
+    file->addAction(tr("The whole session as &CSV…"), this, [this] {
+        exportWithDialog(tr("Export the session"), tr("CSV (*.csv)"), QStringLiteral("csv"),
+                         [this](const QString& path) { return exportCsv(path, false); });
+    });
+    file->addAction(tr("The range &shown as CSV…"), this, [this] {
+        exportWithDialog(tr("Export the range shown"), tr("CSV (*.csv)"), QStringLiteral("csv"),
+                         [this](const QString& path) { return exportCsv(path, true); });
+    });
+    file->addSeparator();
+    file->addAction(tr("&Close"), QKeySequence::Close, this, &QWidget::close);
+
+    QToolBar* bar = addToolBar(tr("Review"));
+    bar->setObjectName(QStringLiteral("reviewToolBar"));
+    bar->setMovable(false);
+    bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    QAction* whole = bar->addAction(tr("Whole session"), m_plot, &ReviewPlot::showWholeSession);
+    whole->setShortcut(QKeySequence(Qt::Key_Home));
+    whole->setToolTip(tr("Show the whole session (Home)"));
+    QAction* in = bar->addAction(tr("Zoom in"), this, [this] { m_plot->zoom(0.5); });
+    in->setShortcuts({QKeySequence::ZoomIn, QKeySequence(Qt::Key_Plus)});
+    QAction* out = bar->addAction(tr("Zoom out"), this, [this] { m_plot->zoom(2.0); });
+    out->setShortcuts({QKeySequence::ZoomOut, QKeySequence(Qt::Key_Minus)});
+    bar->addSeparator();
+    m_playAction = bar->addAction(tr("Play"), this, [this] { isPlaying() ? pause() : play(); });
+    m_playAction->setObjectName(QStringLiteral("playAction"));
+    m_playAction->setShortcut(QKeySequence(Qt::Key_Space));
+    m_playAction->setToolTip(tr("Replay from the left of the view (Space)"));
+    m_speed = new QSpinBox(this);
+    m_speed->setObjectName(QStringLiteral("replaySpeed"));
+    m_speed->setRange(1, 10);
+    m_speed->setSuffix(tr("× real time"));
+    m_speed->setToolTip(tr("Replay speed"));
+    bar->addWidget(m_speed);
+    bar->addSeparator();
+    QAction* note = bar->addAction(tr("Add note…"), this, &ReviewWindow::addNote);
+    note->setShortcut(QKeySequence(tr("Ctrl+N")));
+    note->setToolTip(tr("A note at the pinned cursor (click the plot to pin it), Ctrl+N"));
+    QAction* remove = new QAction(tr("Delete note"), m_list);
+    remove->setShortcut(QKeySequence::Delete);
+    remove->setShortcutContext(Qt::WidgetShortcut);
+    connect(remove, &QAction::triggered, this, &ReviewWindow::deleteSelectedNote);
+    m_list->addAction(remove);
+    QAction* undo = bar->addAction(tr("Undo delete"), this, [this] {
+        const QString error = undoDelete();
+        if (!error.isEmpty()) showProblem(error);
+    });
+    undo->setShortcut(QKeySequence::Undo);
+    undo->setToolTip(tr("Bring back the last deleted note (Ctrl+Z)"));
+}
+
+void ReviewWindow::refreshRecords()
+{
+    QStringList rows{tr("Recorded")};
+    std::vector<MarkerSpan> spans;
+    std::vector<Entry> entries;
+    try {
+        for (const auto& e : m_store->events(m_session.id)) {
+            spans.push_back({e.start_s, e.end_s, 0, eventColour(e)});
+            entries.push_back({e.start_s, e.end_s, text(e.kind), tr("recorded"), eventDetails(e)});
+        }
+        if (m_reanalysis) {
+            rows << tr("Re-analysis");
+            const int row = static_cast<int>(rows.size()) - 1;
+            for (const auto& d : m_reanalysis->unsavedEvents()) {
+                const core::storage::SessionEvent e{0,           {},      "defect",    d.start_s,       d.end_s,
+                                                    d.direction, d.peakR, d.peakLag_s, d.speed_m_per_s, {}};
+                spans.push_back({e.start_s, e.end_s, row, eventColour(e)});
+                entries.push_back({e.start_s, e.end_s, tr("defect"), tr("re-analysis"), eventDetails(e)});
+            }
+        }
+        for (const auto& analysis : m_store->analyses(m_session.id)) {
+            if (analysis == core::storage::kLiveAnalysis) continue;
+            rows << text(analysis);
+            const int row = static_cast<int>(rows.size()) - 1;
+            for (const auto& e : m_store->events(m_session.id, analysis)) {
+                spans.push_back({e.start_s, e.end_s, row, eventColour(e)});
+                entries.push_back(
+                    {e.start_s, e.end_s, text(e.kind), tr("saved \"%1\"").arg(text(analysis)), eventDetails(e)});
+            }
+        }
+        rows << tr("Readings");
+        for (const auto& r : m_store->readings(m_session.id)) {
+            spans.push_back({r.start_s, r.end_s, static_cast<int>(rows.size()) - 1, kReading});
+            entries.push_back({r.start_s, r.end_s, text(r.kind), tr("reading"), readingDetails(r)});
+        }
+        rows << tr("Notes");
+        for (const auto& a : m_store->annotations(m_session.id)) {
+            spans.push_back({a.time_s, a.time_s, static_cast<int>(rows.size()) - 1, kNote});
+            entries.push_back({a.time_s, a.time_s, tr("note"), text(a.author),
+                               text(a.text) + (a.modifiedUtc != a.createdUtc ? tr(" (edited)") : QString()), a.id});
+        }
+    } catch (const core::storage::StorageError& e) {
+        showProblem(tr("The session's records cannot be read: %1").arg(text(e.what())));
+    }
+    m_plot->setMarkers(rows, spans);
+    std::ranges::stable_sort(entries, {}, &Entry::time_s);
+    m_list->clear();
+    for (const Entry& entry : entries) {
+        auto* item = new QTreeWidgetItem(
+            m_list, {QString::number(entry.time_s, 'f', 3), entry.what, entry.source, entry.details});
+        item->setData(0, TimeRole, entry.time_s);
+        item->setData(0, EndRole, entry.end_s);
+        item->setData(0, NoteRole, QVariant::fromValue<qint64>(entry.note));
+        item->setTextAlignment(0, Qt::AlignRight | Qt::AlignVCenter);
+        if (entry.note != 0) item->setToolTip(3, tr("Double-click to edit, Delete to remove"));
+    }
+}
+
+void ReviewWindow::jumpTo(QTreeWidgetItem* item)
+{
+    if (!item) return;
+    const double start_s = item->data(0, TimeRole).toDouble(), end_s = item->data(0, EndRole).toDouble();
+    // Wide enough to see the record and what led up to it.
+    m_plot->centreOn(0.5 * (start_s + end_s), std::max(2.0, 4.0 * (end_s - start_s)));
+    m_plot->setCursorTime(start_s);
+}
+
+QString ReviewWindow::author() const
+{
+    QString name = QSettings().value(QStringLiteral("session/operator")).toString().trimmed();
+    if (name.isEmpty()) name = qEnvironmentVariable("USER");
+    return name.isEmpty() ? tr("reviewer") : name;
+}
+
+void ReviewWindow::askNoteText(const QString& title, const QString& initial,
+                               std::function<QString(const QString&)> apply)
+{
+    auto* dialog = new QInputDialog(this);
+    dialog->setObjectName(QStringLiteral("noteDialog"));
+    dialog->setWindowTitle(title);
+    dialog->setLabelText(tr("Note:"));
+    dialog->setTextValue(initial);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QInputDialog::textValueSelected, this, [this, apply](const QString& value) {
+        const QString error = apply(value);
+        if (!error.isEmpty()) showProblem(error);
+    });
+    dialog->open();
+}
+
+void ReviewWindow::addNote()
+{
+    const double time_s = m_plot->cursorTime().value_or(0.5 * (m_plot->from_s() + m_plot->to_s()));
+    askNoteText(tr("Note at %1 s").arg(time_s, 0, 'f', 3), {},
+                [this, time_s](const QString& value) { return addNoteAt(time_s, value); });
+}
+
+QString ReviewWindow::addNoteAt(double time_s, const QString& value)
+{
+    if (value.trimmed().isEmpty()) return tr("An empty note was not added.");
+    try {
+        core::storage::Annotation note;
+        note.time_s = time_s;
+        note.author = author().toStdString();
+        note.text = value.trimmed().toStdString();
+        m_store->addAnnotation(m_session.id, note);
+    } catch (const core::storage::StorageError& e) {
+        return tr("The note was not saved: %1").arg(text(e.what()));
+    }
+    refreshRecords();
+    return {};
+}
+
+QString ReviewWindow::editNote(std::int64_t annotation, const QString& value)
+{
+    if (value.trimmed().isEmpty()) return deleteNote(annotation);
+    try {
+        m_store->updateAnnotation(annotation, value.trimmed().toStdString());
+    } catch (const core::storage::StorageError& e) {
+        return tr("The note was not saved: %1").arg(text(e.what()));
+    }
+    refreshRecords();
+    return {};
+}
+
+QString ReviewWindow::deleteNote(std::int64_t annotation)
+{
+    try {
+        const auto notes = m_store->annotations(m_session.id);
+        const auto found = std::ranges::find(notes, annotation, &core::storage::Annotation::id);
+        if (found == notes.end()) return tr("That note is gone already.");
+        m_store->deleteAnnotation(annotation);
+        m_deleted = *found;
+    } catch (const core::storage::StorageError& e) {
+        return tr("The note was not deleted: %1").arg(text(e.what()));
+    }
+    refreshRecords();
+    statusBar()->showMessage(tr("Note deleted; Ctrl+Z brings it back."));
+    return {};
+}
+
+QString ReviewWindow::undoDelete()
+{
+    if (!m_deleted) return tr("No deleted note to bring back.");
+    try {
+        m_store->addAnnotation(m_session.id, *m_deleted);
+    } catch (const core::storage::StorageError& e) {
+        return tr("The note was not brought back: %1").arg(text(e.what()));
+    }
+    m_deleted.reset();
+    refreshRecords();
+    return {};
+}
+
+void ReviewWindow::editSelectedNote()
+{
+    QTreeWidgetItem* item = m_list->currentItem();
+    const std::int64_t id = item ? item->data(0, NoteRole).toLongLong() : 0;
+    if (id == 0) return;
+    askNoteText(tr("Edit the note at %1 s").arg(item->text(0)), item->text(3).remove(tr(" (edited)")),
+                [this, id](const QString& value) { return editNote(id, value); });
+}
+
+void ReviewWindow::deleteSelectedNote()
+{
+    QTreeWidgetItem* item = m_list->currentItem();
+    const std::int64_t id = item ? item->data(0, NoteRole).toLongLong() : 0;
+    if (id == 0) return;
+    const QString error = deleteNote(id);
+    if (!error.isEmpty()) showProblem(error);
+}
+
+void ReviewWindow::setReplaySpeed(int speed)
+{
+    m_speed->setValue(speed);
+}
+
+void ReviewWindow::play()
+{
+    const double from_s = m_plot->from_s(), to_s = m_plot->to_s();
+    if (m_playhead_s < from_s || m_playhead_s >= to_s) m_playhead_s = from_s;
+    m_replayClock.start();
+    m_replay.start();
+    m_playAction->setText(tr("Pause"));
+    m_plot->setPlayhead(m_playhead_s);
+}
+
+void ReviewWindow::pause()
+{
+    m_replay.stop();
+    m_playAction->setText(tr("Play"));
+}
+
+// The playhead moves at speed× the time passed; the view follows once it
+// reaches four fifths of the width, like a scope's roll mode.
+void ReviewWindow::advanceReplay()
+{
+    const double elapsed_s = static_cast<double>(m_replayClock.restart()) * 1e-3;
+    m_playhead_s += elapsed_s * m_speed->value();
+    const double duration_s = m_session.duration_s();
+    if (m_playhead_s >= duration_s) {
+        m_playhead_s = duration_s;
+        pause();
+    }
+    const double width_s = m_plot->to_s() - m_plot->from_s();
+    if (m_playhead_s > m_plot->from_s() + 0.8 * width_s)
+        m_plot->setRange(m_playhead_s - 0.8 * width_s, m_playhead_s + 0.2 * width_s);
+    m_plot->setPlayhead(m_playhead_s);
+}
+
+QString ReviewWindow::exportReport(const QString& pdfPath)
+{
+    try {
+        const auto report = core::report::gatherReport(*m_store, m_session.id);
+        const int pages = writeReportPdf(report, pdfPath);
+        statusBar()->showMessage(tr("Report saved to %1 (%2 pages).").arg(pdfPath).arg(pages));
+    } catch (const std::exception& e) {
+        return tr("The report was not saved: %1").arg(text(e.what()));
+    }
+    return {};
+}
+
+void ReviewWindow::printReport()
+{
+    try {
+        const auto report = core::report::gatherReport(*m_store, m_session.id);
+        QPrinter printer(QPrinter::HighResolution);
+        printer.setDocName(tr("Inspection report, session %1").arg(m_session.id));
+        QPrintDialog dialog(&printer, this);
+        if (dialog.exec() != QDialog::Accepted) return;
+        buildReportDocument(report)->print(&printer);
+    } catch (const std::exception& e) {
+        showProblem(tr("The report was not printed: %1").arg(text(e.what())));
+    }
+}
+
+QString ReviewWindow::exportCsv(const QString& csvPath, bool visibleRangeOnly)
+{
+    core::storage::ExportRange range;
+    if (visibleRangeOnly) {
+        const double rate_hz = m_session.sampleRate_hz;
+        range.first = static_cast<std::uint64_t>(std::max(0.0, std::floor(m_plot->from_s() * rate_hz)));
+        range.count = static_cast<std::uint64_t>(std::ceil(m_plot->to_s() * rate_hz)) + 1 - range.first;
+    }
+    try {
+        core::storage::exportSession(*m_store, m_session.id, core::storage::ExportFormat::Csv, csvPath.toStdString(),
+                                     range);
+    } catch (const core::storage::StorageError& e) {
+        return tr("The CSV was not written: %1").arg(text(e.what()));
+    }
+    statusBar()->showMessage(tr("Exported to %1, with its metadata (calibrations included) in %2.")
+                                 .arg(csvPath, text(core::storage::metadataSidePath(csvPath.toStdString()))));
+    return {};
+}
+
+QString ReviewWindow::savePlot(const QString& imagePath)
+{
+    try {
+        m_plot->saveImage(imagePath);
+    } catch (const std::exception& e) {
+        return tr("The plot was not saved: %1").arg(text(e.what()));
+    }
+    statusBar()->showMessage(tr("Plot saved to %1.").arg(imagePath));
+    return {};
+}
+
+void ReviewWindow::exportWithDialog(const QString& title, const QString& filter, const QString& suffix,
+                                    const std::function<QString(const QString&)>& write)
+{
+    QString subject = text(m_session.metadata.subject);
+    subject.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9_.-]+")), QStringLiteral("-"));
+    const QString suggested = QStringLiteral("session-%1%2.%3")
+                                  .arg(m_session.id)
+                                  .arg(subject.isEmpty() ? QString() : QLatin1Char('-') + subject, suffix);
+    QString path = QFileDialog::getSaveFileName(this, title, suggested, filter);
+    if (path.isEmpty()) return;
+    if (QFileInfo(path).suffix().isEmpty()) path += QLatin1Char('.') + suffix;
+    const QString error = write(path);
+    if (!error.isEmpty()) showProblem(error);
+}
+
+void ReviewWindow::showProblem(const QString& message)
+{
+    m_problem->setText(message);
+    m_problem->show();
+}
+
+}  // namespace tactiscope::ui

@@ -1,0 +1,96 @@
+// The review window of one stored session, the day after: what was
+// inspected (subject, operator, date, device, status, verdict), the
+// session's plot (ReviewPlot: the overview, zoom to single samples, cursor
+// readout, markers), the list of its events, readings and notes (a click
+// jumps there), the reviewer's notes (add, edit, delete with undo), replay
+// at 1–10× real time, re-analysis beside the recorded events
+// (ReanalysisPanel, panel-scan sessions), and the exports: the PDF report,
+// printing, the plot as PNG or SVG, CSV of the session or of the range shown.
+#pragma once
+
+#include "core/storage/SessionStore.h"
+
+#include <QElapsedTimer>
+#include <QMainWindow>
+#include <QTimer>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+class QLabel;
+class QSpinBox;
+class QTreeWidget;
+class QTreeWidgetItem;
+
+namespace tactiscope::ui {
+
+class ReanalysisPanel;
+class ReviewPlot;
+
+class ReviewWindow : public QMainWindow {
+    Q_OBJECT
+
+public:
+    // Opens the session; on failure returns null and says why in `error`.
+    static ReviewWindow* open(const QString& storePath, std::int64_t session, QWidget* parent, QString& error);
+    ~ReviewWindow() override;
+
+    std::int64_t sessionId() const { return m_session.id; }
+    ReviewPlot* plot() const { return m_plot; }
+    ReanalysisPanel* reanalysis() const { return m_reanalysis; }  // null unless panel-scan
+    QTreeWidget* recordList() const { return m_list; }
+    core::storage::SessionStore& store() { return *m_store; }
+
+    // Notes: at the pinned cursor (else the middle of the view), asked
+    // for without blocking; edited and deleted from the list.
+    void addNote();
+    QString addNoteAt(double time_s, const QString& text);  // returns an error, or empty
+    QString editNote(std::int64_t annotation, const QString& text);
+    QString deleteNote(std::int64_t annotation);
+    QString undoDelete();
+    // Jumps to a row of the list (a click does this).
+    void jumpTo(QTreeWidgetItem* item);
+
+    // Replay from the left of the view at `speed`× real time.
+    void setReplaySpeed(int speed);
+    void play();
+    void pause();
+    bool isPlaying() const { return m_replay.isActive(); }
+
+    // Exports; each returns an error, or empty.
+    QString exportReport(const QString& pdfPath);
+    QString exportCsv(const QString& csvPath, bool visibleRangeOnly);
+    QString savePlot(const QString& imagePath);
+
+private:
+    ReviewWindow(const QString& storePath, std::unique_ptr<core::storage::SessionStore> store,
+                 core::storage::SessionSummary session, QWidget* parent);
+    void createActions();
+    void refreshRecords();
+    void advanceReplay();
+    void askNoteText(const QString& title, const QString& text, std::function<QString(const QString&)> apply);
+    void editSelectedNote();
+    void deleteSelectedNote();
+    void printReport();
+    void exportWithDialog(const QString& title, const QString& filter, const QString& suffix,
+                          const std::function<QString(const QString&)>& write);
+    void showProblem(const QString& text);
+    QString author() const;
+
+    QString m_storePath;
+    std::unique_ptr<core::storage::SessionStore> m_store;
+    core::storage::SessionSummary m_session;
+    ReviewPlot* m_plot = nullptr;
+    QTreeWidget* m_list = nullptr;
+    ReanalysisPanel* m_reanalysis = nullptr;
+    QLabel* m_problem = nullptr;
+    QSpinBox* m_speed = nullptr;
+    QAction* m_playAction = nullptr;
+    QTimer m_replay;
+    QElapsedTimer m_replayClock;
+    double m_playhead_s = 0.0;
+    std::optional<core::storage::Annotation> m_deleted;  // the last deleted note, for undo
+};
+
+}  // namespace tactiscope::ui

@@ -1,0 +1,293 @@
+// SessionBrowser: filters, table, open and delete.
+#include "ui/review/SessionBrowser.h"
+
+#include "ui/calibration/WizardText.h"
+#include "ui/review/SessionTableModel.h"
+
+#include <QComboBox>
+#include <QDateEdit>
+#include <QDialogButtonBox>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QShortcut>
+#include <QSortFilterProxyModel>
+#include <QTableView>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <set>
+
+namespace tactiscope::ui {
+namespace {
+
+using core::storage::SessionStore;
+
+const QDate kAnyDate(2000, 1, 1);  // the date edits' "any" value
+
+QDateEdit* dateEdit(QWidget* parent, const QString& name)
+{
+    auto* edit = new QDateEdit(kAnyDate, parent);
+    edit->setObjectName(name);
+    edit->setMinimumDate(kAnyDate);
+    edit->setSpecialValueText(QObject::tr("any"));
+    edit->setCalendarPopup(true);
+    edit->setDisplayFormat(QStringLiteral("yyyy-MM-dd"));
+    return edit;
+}
+
+// The start of a local day as the store's UTC timestamps write it.
+std::string utcStartOf(const QDate& localDay)
+{
+    return QDateTime(localDay, QTime(0, 0), Qt::LocalTime)
+        .toUTC()
+        .toString(QStringLiteral("yyyy-MM-ddTHH:mm:ss.zzzZ"))
+        .toStdString();
+}
+
+QString describe(const core::storage::SessionSummary& s)
+{
+    return QObject::tr("#%1 %2 %3 (%4, %5)")
+        .arg(s.id)
+        .arg(QString::fromStdString(s.metadata.mode), QString::fromStdString(s.metadata.subject),
+             QString::fromStdString(s.startedUtc.substr(0, 16)).replace(QLatin1Char('T'), QLatin1Char(' ')) +
+                 QObject::tr(" UTC"),
+             durationText(s.duration_s()));
+}
+
+}  // namespace
+
+SessionBrowser::SessionBrowser(const QString& storePath, QWidget* parent)
+    : QDialog(parent),
+      m_storePath(storePath),
+      m_model(new SessionTableModel(this)),
+      m_sorted(new QSortFilterProxyModel(this)),
+      m_table(new QTableView(this)),
+      m_search(new QLineEdit(this)),
+      m_mode(new QComboBox(this)),
+      m_status(new QComboBox(this)),
+      m_verdict(new QComboBox(this)),
+      m_from(dateEdit(this, QStringLiteral("fromDate"))),
+      m_to(dateEdit(this, QStringLiteral("toDate"))),
+      m_count(new QLabel(this)),
+      m_problem(wrappedLabel({}, this)),
+      m_open(new QPushButton(tr("&Open for review"), this)),
+      m_delete(new QPushButton(tr("&Delete…"), this))
+{
+    setWindowTitle(tr("Sessions — %1").arg(QFileInfo(storePath).fileName()));
+    setObjectName(QStringLiteral("sessionBrowser"));
+    m_table->setObjectName(QStringLiteral("sessionTable"));
+    m_search->setObjectName(QStringLiteral("searchEdit"));
+    m_mode->setObjectName(QStringLiteral("modeFilter"));
+    m_status->setObjectName(QStringLiteral("statusFilter"));
+    m_verdict->setObjectName(QStringLiteral("verdictFilter"));
+    m_count->setObjectName(QStringLiteral("countText"));
+    m_problem->setObjectName(QStringLiteral("problemText"));
+    m_open->setObjectName(QStringLiteral("openButton"));
+    m_delete->setObjectName(QStringLiteral("deleteButton"));
+    m_problem->setStyleSheet(QStringLiteral("color: #b00020"));
+    m_problem->hide();
+
+    m_search->setPlaceholderText(tr("Search subject, operator, site, notes, verdict, serial…"));
+    m_search->setClearButtonEnabled(true);
+    m_mode->addItem(tr("Any mode"));
+    m_mode->addItems({QStringLiteral("panel-scan"), QStringLiteral("palpation"), QStringLiteral("capacitive")});
+    m_status->addItem(tr("Any status"));
+    for (const auto status : {core::storage::SessionStatus::Complete, core::storage::SessionStatus::Interrupted,
+                              core::storage::SessionStatus::Recording})
+        m_status->addItem(QString::fromLatin1(core::storage::toString(status)));
+    m_verdict->addItem(tr("Any verdict"));
+
+    m_sorted->setSourceModel(m_model);
+    m_sorted->setSortRole(SessionTableModel::kSortRole);
+    m_table->setModel(m_sorted);
+    m_table->setSortingEnabled(true);
+    m_table->sortByColumn(SessionTableModel::Started, Qt::DescendingOrder);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setAlternatingRowColors(true);
+    m_table->verticalHeader()->setVisible(false);
+    m_table->horizontalHeader()->setStretchLastSection(false);
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_table->horizontalHeader()->setSectionResizeMode(SessionTableModel::Subject, QHeaderView::Stretch);
+
+    auto* filters = new QHBoxLayout;
+    filters->addWidget(m_search, 3);
+    filters->addWidget(m_mode);
+    filters->addWidget(m_status);
+    filters->addWidget(m_verdict);
+    filters->addWidget(new QLabel(tr("From"), this));
+    filters->addWidget(m_from);
+    filters->addWidget(new QLabel(tr("to"), this));
+    filters->addWidget(m_to);
+
+    auto* buttons = new QDialogButtonBox(this);
+    buttons->addButton(m_open, QDialogButtonBox::ActionRole);
+    buttons->addButton(m_delete, QDialogButtonBox::DestructiveRole);
+    QPushButton* refresh = buttons->addButton(tr("&Refresh"), QDialogButtonBox::ResetRole);
+    buttons->addButton(QDialogButtonBox::Close);
+    m_open->setDefault(true);
+    m_open->setToolTip(tr("Open each selected session in its own review window (Enter)"));
+    m_delete->setToolTip(tr("Delete the selected sessions with their samples, events and annotations (Del)"));
+    refresh->setToolTip(tr("Read the store again (F5)"));
+
+    auto* bottom = new QHBoxLayout;
+    bottom->addWidget(m_count, 1);
+    bottom->addWidget(buttons);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(filters);
+    layout->addWidget(m_problem);
+    layout->addWidget(m_table, 1);
+    layout->addLayout(bottom);
+    resize(1040, 560);
+
+    m_searchDelay.setSingleShot(true);
+    m_searchDelay.setInterval(200);
+    connect(&m_searchDelay, &QTimer::timeout, this, &SessionBrowser::reload);
+    connect(m_search, &QLineEdit::textChanged, this, [this] { m_searchDelay.start(); });
+    for (QComboBox* box : {m_mode, m_status, m_verdict})
+        connect(box, &QComboBox::currentIndexChanged, this, &SessionBrowser::reload);
+    for (QDateEdit* edit : {m_from, m_to}) connect(edit, &QDateEdit::dateChanged, this, &SessionBrowser::reload);
+    connect(m_table, &QTableView::doubleClicked, this, &SessionBrowser::openSelected);
+    connect(m_table->selectionModel(), &QItemSelectionModel::selectionChanged, this, &SessionBrowser::updateButtons);
+    connect(m_open, &QPushButton::clicked, this, &SessionBrowser::openSelected);
+    connect(m_delete, &QPushButton::clicked, this, &SessionBrowser::deleteSelected);
+    connect(refresh, &QPushButton::clicked, this, &SessionBrowser::reload);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::close);
+    connect(new QShortcut(QKeySequence::Delete, m_table), &QShortcut::activated, this, &SessionBrowser::deleteSelected);
+    connect(new QShortcut(QKeySequence::Refresh, this), &QShortcut::activated, this, &SessionBrowser::reload);
+    reload();
+}
+
+void SessionBrowser::reload()
+{
+    m_problem->hide();
+    std::vector<core::storage::SessionSummary> shown;
+    std::size_t total = 0;
+    if (!QFileInfo::exists(m_storePath)) {
+        m_problem->setText(tr("No session has been recorded into %1 yet.").arg(m_storePath));
+        m_problem->show();
+    } else {
+        core::storage::SessionFilter filter;
+        filter.text = m_search->text().trimmed().toStdString();
+        if (m_mode->currentIndex() > 0) filter.mode = m_mode->currentText().toStdString();
+        if (m_verdict->currentIndex() > 0) filter.verdict = m_verdict->currentText().toStdString();
+        if (m_from->date() != kAnyDate) filter.startedFrom = utcStartOf(m_from->date());
+        if (m_to->date() != kAnyDate) filter.startedBefore = utcStartOf(m_to->date().addDays(1));
+        try {
+            SessionStore store(m_storePath.toStdString(), core::storage::Database::Access::ReadOnly);
+            const auto all = store.sessions();
+            total = all.size();
+            QStringList verdicts;
+            for (const auto& s : all)
+                if (!s.verdict.empty()) verdicts << QString::fromStdString(s.verdict);
+            fillChoices(m_verdict, verdicts);
+            shown = store.sessions(filter);
+        } catch (const core::storage::StorageError& e) {
+            m_problem->setText(tr("The store cannot be read: %1").arg(QString::fromStdString(e.what())));
+            m_problem->show();
+        }
+        if (m_status->currentIndex() > 0)
+            std::erase_if(shown,
+                          [&](const auto& s) { return QString::fromStdString(s.status) != m_status->currentText(); });
+    }
+    m_model->setSessions(std::move(shown));
+    m_count->setText(tr("%1 of %2 sessions").arg(m_model->rowCount()).arg(total));
+    updateButtons();
+}
+
+// Keeps the chosen verdict while offering every verdict the store holds.
+void SessionBrowser::fillChoices(QComboBox* box, const QStringList& values)
+{
+    QStringList unique = values;
+    unique.removeDuplicates();
+    unique.sort(Qt::CaseInsensitive);
+    QStringList present;
+    for (int i = 1; i < box->count(); ++i) present << box->itemText(i);
+    if (present == unique) return;
+    const QString chosen = box->currentIndex() > 0 ? box->currentText() : QString();
+    const QSignalBlocker quiet(box);
+    while (box->count() > 1) box->removeItem(1);
+    box->addItems(unique);
+    box->setCurrentIndex(std::max(0, box->findText(chosen)));
+}
+
+std::vector<std::int64_t> SessionBrowser::selectedSessions() const
+{
+    QModelIndexList rows = m_table->selectionModel()->selectedRows();
+    std::ranges::sort(rows, [](const QModelIndex& a, const QModelIndex& b) { return a.row() < b.row(); });
+    std::vector<std::int64_t> ids;
+    for (const QModelIndex& row : rows) ids.push_back(row.data(SessionTableModel::kIdRole).toLongLong());
+    return ids;
+}
+
+void SessionBrowser::openSelected()
+{
+    const auto ids = selectedSessions();
+    if (!ids.empty()) emit openSessions(ids);
+}
+
+void SessionBrowser::deleteSelected()
+{
+    const auto ids = selectedSessions();
+    if (ids.empty()) return;
+    QStringList names;
+    for (int row = 0; row < m_model->rowCount(); ++row) {
+        const auto* s = m_model->summaryAt(row);
+        if (std::ranges::find(ids, s->id) != ids.end()) names << describe(*s);
+    }
+    auto* box =
+        new QMessageBox(QMessageBox::Warning, tr("Delete sessions"),
+                        ids.size() == 1 ? tr("Delete this session?") : tr("Delete these %1 sessions?").arg(ids.size()),
+                        QMessageBox::Cancel, this);
+    box->setObjectName(QStringLiteral("deleteConfirmBox"));
+    box->setInformativeText(names.join(QLatin1Char('\n')) +
+                            tr("\n\nTheir samples, events, readings and annotations are removed for good. This "
+                               "cannot be undone; export a session first to keep a copy."));
+    QPushButton* confirm = box->addButton(tr("Delete"), QMessageBox::DestructiveRole);
+    confirm->setObjectName(QStringLiteral("confirmDeleteButton"));
+    box->setDefaultButton(QMessageBox::Cancel);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    connect(confirm, &QPushButton::clicked, this, [this, ids] { deleteSessions(ids); });
+    box->open();
+}
+
+void SessionBrowser::deleteSessions(const std::vector<std::int64_t>& sessions)
+{
+    std::vector<std::int64_t> deleted;
+    QStringList refused;
+    try {
+        SessionStore store(m_storePath.toStdString());
+        for (const std::int64_t id : sessions) {
+            try {
+                store.deleteSession(id);
+                deleted.push_back(id);
+            } catch (const core::storage::StorageError& e) {
+                refused << tr("#%1: %2").arg(id).arg(QString::fromStdString(e.what()));
+            }
+        }
+    } catch (const core::storage::StorageError& e) {
+        refused << QString::fromStdString(e.what());
+    }
+    reload();
+    if (!deleted.empty()) emit sessionsDeleted(deleted);
+    if (!refused.isEmpty()) {
+        m_problem->setText(tr("Not deleted: %1").arg(refused.join(QStringLiteral("; "))));
+        m_problem->show();
+    }
+}
+
+void SessionBrowser::updateButtons()
+{
+    const bool any = m_table->selectionModel()->hasSelection();
+    m_open->setEnabled(any);
+    m_delete->setEnabled(any);
+}
+
+}  // namespace tactiscope::ui
