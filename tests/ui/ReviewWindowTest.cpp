@@ -108,6 +108,8 @@ TEST_F(ReviewWindowTest, TheOverviewReadsAFewChunksAndAZoomShowsTheExactSamples)
     const std::uint64_t whole = chunksOfWholeSession(m_db);
     const std::uint64_t read = m_window->store().chunksRead();
     EXPECT_LT(read * 10, whole) << read << " of " << whole << " chunks";
+    RecordProperty("overview_chunks_read", std::to_string(read));
+    RecordProperty("whole_session_chunks", std::to_string(whole));
 
     // 0.2 s at 500 Hz: the CSV's own rows 50000 to 50100, to the binary32 bit.
     m_window->plot()->setRange(100.0, 100.2);
@@ -122,6 +124,11 @@ TEST_F(ReviewWindowTest, TheOverviewReadsAFewChunksAndAZoomShowsTheExactSamples)
         EXPECT_EQ(static_cast<float>(zoomed.low[i]), row[2].toFloat()) << i;
     }
     EXPECT_TRUE(m_window->plot()->readoutAt(100.1).contains(QStringLiteral("b: "))) << "readout names the channel";
+
+    // A still view reads nothing more (no reload on every repaint).
+    const std::uint64_t settled = m_window->store().chunksRead();
+    tactiscope::testing::runEventLoopFor(300);
+    EXPECT_EQ(m_window->store().chunksRead(), settled);
 }
 
 TEST_F(ReviewWindowTest, TheListJumpsAndNotesAreAddedEditedDeletedAndBroughtBack)

@@ -109,7 +109,10 @@ ReviewPlot::ReviewPlot(core::storage::SessionStore& store, const core::storage::
     connect(m_plot, &QCustomPlot::mouseMove, this, &ReviewPlot::showHover);
     connect(m_plot, &QCustomPlot::mousePress, this, [this](QMouseEvent* event) { m_pressedAt = event->position(); });
     connect(m_plot, &QCustomPlot::mouseRelease, this, &ReviewPlot::pinCursor);
-    connect(m_plot, &QCustomPlot::afterLayout, this, [this] { m_reloadTimer.start(); });
+    // Every replot lays out; only a new width calls for other stretches.
+    connect(m_plot, &QCustomPlot::afterLayout, this, [this] {
+        if (m_markerLane->width() != m_loadedWidth_px) m_reloadTimer.start();
+    });
     showWholeSession();
 }
 
@@ -220,8 +223,9 @@ void ReviewPlot::syncRange(QCPAxisRect* source)
 void ReviewPlot::reload()
 {
     m_reloadTimer.stop();
-    const int width_px = m_lanes.empty() ? 0 : m_lanes.front()->width();
-    const std::size_t pixels = static_cast<std::size_t>(width_px > 10 ? width_px : 800);
+    m_loadedWidth_px = m_markerLane->width();
+    // Before the first layout the lanes have no width yet: assume a screen's.
+    const std::size_t pixels = static_cast<std::size_t>(m_loadedWidth_px > 10 ? m_loadedWidth_px : 800);
     for (std::size_t c = 0; c < m_channels.size(); ++c) {
         auto& window = m_windows[c];
         window = core::storage::readTraceWindow(m_store, m_session.id, c, m_channels[c].sampleRate_hz,

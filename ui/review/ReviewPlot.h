@@ -94,8 +94,9 @@ private:
     std::vector<core::storage::TraceWindow> m_windows;
     std::vector<QCPItemStraightLine*> m_hoverLines, m_cursorLines, m_playheadLines;
     std::optional<double> m_cursor_s;
-    QPointF m_pressedAt;   // a release near it is a click, not a drag
-    QTimer m_reloadTimer;  // one read per event-loop turn, however many moves
+    QPointF m_pressedAt;       // a release near it is a click, not a drag
+    QTimer m_reloadTimer;      // one read per event-loop turn, however many moves
+    int m_loadedWidth_px = 0;  // the lane width the shown windows were read for
     bool m_syncing = false;
 };
 

@@ -90,7 +90,13 @@ struct Entry {
 ReviewWindow* ReviewWindow::open(const QString& storePath, std::int64_t session, QWidget* parent, QString& error)
 {
     try {
-        auto store = std::make_unique<SessionStore>(storePath.toStdString());
+        std::unique_ptr<SessionStore> store;
+        try {
+            store = std::make_unique<SessionStore>(storePath.toStdString());
+        } catch (const core::storage::StorageError&) {
+            // A store on read-only media can still be reviewed; saving notes then says why it cannot.
+            store = std::make_unique<SessionStore>(storePath.toStdString(), core::storage::Database::Access::ReadOnly);
+        }
         auto summary = store->session(session);
         if (!summary) {
             error = tr("There is no session %1 in %2.").arg(session).arg(storePath);
