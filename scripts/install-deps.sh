@@ -11,6 +11,7 @@ packages=(
   libeigen3-dev libsqlite3-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
   xvfb xauth file fonts-dejavu-core clang-format poppler-utils
+  desktop-file-utils appstream
   clang libclang-rt-14-dev
 )
 

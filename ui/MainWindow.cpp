@@ -13,6 +13,7 @@
 #include "devices/emulator/ProbeEmulator.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
+#include "ui/AboutText.h"
 #include "ui/ActiveProfiles.h"
 #include "ui/CapacitiveView.h"
 #include "ui/DesignTool.h"
@@ -1045,14 +1046,7 @@ void MainWindow::updateStatus()
 
 void MainWindow::showAbout()
 {
-    QMessageBox::about(this, tr("About Tactiscope"),
-                       tr("<h3>Tactiscope %1</h3>"
-                          "<p>An inspection workstation for cantilever tactile sensors.</p>"
-                          "<p>It implements three published sensors:</p><ul>"
-                          "<li>a surface deflection detector with a viscous-capsule shear-strain probe,</li>"
-                          "<li>compliance detection with two cantilevers of different stiffness,</li>"
-                          "<li>a capacitive uniform-strength beam for µN forces.</li></ul>")
-                           .arg(QString::fromUtf8(core::versionString())));
+    QMessageBox::about(this, tr("About Tactiscope"), aboutText());
 }
 
 }  // namespace tactiscope::ui
