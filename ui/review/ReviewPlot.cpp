@@ -82,7 +82,6 @@ ReviewPlot::ReviewPlot(core::storage::SessionStore& store, const core::storage::
         QCPGraph* graph = m_plot->addGraph(time, rect->axis(QCPAxis::atLeft));
         graph->setPen(QPen(kTrace, 1.0));
         m_graphs.push_back(graph);
-        m_lanes.push_back(rect);
         for (const auto& gap : gaps) {
             auto* item = new QCPItemRect(m_plot);
             item->setClipAxisRect(rect);

@@ -88,7 +88,6 @@ private:
     double m_duration_s = 0.0;
     QCustomPlot* m_plot;
     QLabel* m_readout;
-    std::vector<QCPAxisRect*> m_lanes;
     std::vector<QCPGraph*> m_graphs;
     QCPAxisRect* m_markerLane = nullptr;
     std::vector<core::storage::TraceWindow> m_windows;

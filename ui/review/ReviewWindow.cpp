@@ -116,7 +116,6 @@ ReviewWindow* ReviewWindow::open(const QString& storePath, std::int64_t session,
 ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionStore> store,
                            core::storage::SessionSummary session, QWidget* parent)
     : QMainWindow(parent),
-      m_storePath(storePath),
       m_store(std::move(store)),
       m_session(std::move(session))
 {

@@ -15,6 +15,7 @@
 #include <QTimer>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -78,7 +79,6 @@ private:
     void showProblem(const QString& text);
     QString author() const;
 
-    QString m_storePath;
     std::unique_ptr<core::storage::SessionStore> m_store;
     core::storage::SessionSummary m_session;
     ReviewPlot* m_plot = nullptr;
