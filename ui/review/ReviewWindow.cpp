@@ -322,6 +322,8 @@ void ReviewWindow::jumpTo(QTreeWidgetItem* item)
     // Wide enough to see the record and what led up to it.
     m_plot->centreOn(0.5 * (start_s + end_s), std::max(2.0, 4.0 * (end_s - start_s)));
     m_plot->setCursorTime(start_s);
+    m_list->setCurrentItem(item);
+    m_list->scrollToItem(item, QAbstractItemView::PositionAtCenter);
 }
 
 QString ReviewWindow::author() const
