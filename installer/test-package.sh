@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The package test (run by CTest when dpkg-deb is present): builds the .deb
-# from a build directory, checks what it holds (the executables, the desktop
+# and the .tar.gz from a build directory, checks what the .deb holds (the executables, the desktop
 # entry with desktop-file-validate, the AppStream metainfo with appstreamcli
 # where installed, the icons, man page, udev rules, profiles and the
 # dependencies dpkg-shlibdeps computed), installs it with dpkg into a
@@ -13,9 +13,15 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "test-package: $*" >&2; exit 1; }
 
-(cd "$build" && cpack -G DEB -B "$work/out" >"$work/cpack.log" 2>&1) || { cat "$work/cpack.log" >&2; fail "cpack failed"; }
+(cd "$build" && cpack -G "DEB;TGZ" -B "$work/out" >"$work/cpack.log" 2>&1) || { cat "$work/cpack.log" >&2; fail "cpack failed"; }
 deb=$(ls "$work"/out/*.deb)
-echo "test-package: built $(basename "$deb")"
+tarball=$(ls "$work"/out/*.tar.gz)
+echo "test-package: built $(basename "$deb") and $(basename "$tarball")"
+# The tarball is the same tree under one top folder.
+listing=$(tar tzf "$tarball")
+for path in usr/bin/tactiscope usr/bin/tactiscope-cli usr/lib/udev/rules.d/70-tactiscope-probes.rules; do
+  grep -qE "^[^/]+/$path\$" <<<"$listing" || fail "the tarball lacks $path"
+done
 
 contents=$(dpkg-deb -c "$deb" | awk '{print $6}')
 for path in \
@@ -57,7 +63,7 @@ if command -v appstreamcli >/dev/null; then
   appstreamcli validate --no-net "$root/usr/share/metainfo/org.tactiscope.Tactiscope.metainfo.xml" ||
     fail "the AppStream metainfo is not valid"
 fi
-zcat "$root/usr/share/man/man1/tactiscope-cli.1.gz" | grep -q '^\.TH TACTISCOPE-CLI 1' || fail "the man page is not one"
+grep -q '^\.TH TACTISCOPE-CLI 1' <<<"$(zcat "$root/usr/share/man/man1/tactiscope-cli.1.gz")" || fail "the man page is not one"
 
 version=$("$root/usr/bin/tactiscope-cli" --version) || fail "the installed tactiscope-cli does not run"
 grep -q "^tactiscope-cli " <<<"$version" || fail "unexpected --version output: $version"
