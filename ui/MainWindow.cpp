@@ -7,6 +7,7 @@
 #include "core/capacitive/LiveCapacitive.h"
 #include "core/compliance/LivePalpation.h"
 #include "core/detector/LiveDetection.h"
+#include "core/storage/DefectRecords.h"
 #include "core/storage/Recorder.h"
 #include "core/storage/RecordingTap.h"
 #include "devices/Acquisition.h"
@@ -552,14 +553,10 @@ void MainWindow::takeDetectorEvents()
     if (events.empty() || !isRecording()) return;
     std::vector<core::storage::SessionEvent> stored;
     for (const auto& e : events) {
-        core::storage::SessionEvent event;
-        event.kind = "defect";
+        auto event = core::storage::defectRecord(e);
+        // The detector counts the stream's time; the session starts at its record press.
         event.start_s = m_recorder->sessionTimeOf(e.start_s);
         event.end_s = m_recorder->sessionTimeOf(e.end_s);
-        event.direction = e.direction;
-        event.peakR = e.peakR;
-        event.lag_s = e.peakLag_s;
-        event.speed_m_per_s = e.speed_m_per_s;
         stored.push_back(event);
     }
     m_recorder->addEvents(std::move(stored));

@@ -6,6 +6,7 @@
 #include "DetectorOptions.h"
 #include "SessionArgument.h"
 #include "core/detector/OfflineDetection.h"
+#include "core/storage/DefectRecords.h"
 #include "core/storage/SessionStore.h"
 
 #include <chrono>
@@ -14,7 +15,6 @@
 namespace tactiscope::cli {
 namespace {
 
-using core::detector::DefectEvent;
 using core::storage::SessionStore;
 
 // The cantilever channels: named with --channels, else every strain channel.
@@ -105,13 +105,7 @@ int runAnalyze(const QStringList& arguments)
         const auto [events, analysed] = core::detector::detectStretches(
             series, {options.parameters, options.hold_s, options.spacing_m, options.threads});
         const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-        if (!save.isEmpty()) {
-            std::vector<core::storage::SessionEvent> stored;
-            for (const DefectEvent& e : events)
-                stored.push_back({0, save.toStdString(), "defect", e.start_s, e.end_s, e.direction, e.peakR,
-                                  e.peakLag_s, e.speed_m_per_s, ""});
-            store.addEvents(*id, stored);
-        }
+        if (!save.isEmpty()) store.addEvents(*id, core::storage::defectRecords(events, save.toStdString()));
         if (options.json)
             std::cout << eventsJson(analysed, lags, elapsed_s, events, options) << '\n';
         else

@@ -19,7 +19,6 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLineEdit>
-#include <QMessageBox>
 #include <QPushButton>
 #include <QVBoxLayout>
 
@@ -432,17 +431,10 @@ void CapacitiveWizard::accept()
     record.operatorName = m_operator->text().trimmed().toStdString();
     record.timestampUtc = core::calibration::utcTimestampNow();
     record.values.emplace_back("sensitivity_standard_error_pf_per_mn", m_result->forceFit->slopeStandardError * 1e9);
-    std::int64_t id = 0;
-    try {
-        id = storeCalibration(m_context.storePath, record);
-    } catch (const core::storage::StorageError& e) {
-        QMessageBox::warning(this, tr("Calibration not stored"),
-                             tr("The calibration could not be stored in %1:\n%2")
-                                 .arg(m_context.storePath, QString::fromStdString(e.what())));
-        return;
-    }
+    const auto id = storeCalibrationOrSay(this, m_context.storePath, record);
+    if (!id) return;
     m_watch->disarm();
-    emit calibrationStored(id, QString::fromStdString(record.sensorName));
+    emit calibrationStored(*id, QString::fromStdString(record.sensorName));
     QWizard::accept();
 }
 

@@ -22,7 +22,6 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
-#include <QMessageBox>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QVBoxLayout>
@@ -573,17 +572,10 @@ void GaugeFactorWizard::accept()
         {"adc_reference_v", c.adc().reference_v},
         {"adc_bipolar", c.adc().bipolar ? 1.0 : 0.0}};
     record.values.insert(record.values.end(), setup.begin(), setup.end());
-    std::int64_t id = 0;
-    try {
-        id = storeCalibration(m_context.storePath, record);
-    } catch (const core::storage::StorageError& e) {
-        QMessageBox::warning(this, tr("Calibration not stored"),
-                             tr("The calibration could not be stored in %1:\n%2")
-                                 .arg(m_context.storePath, QString::fromStdString(e.what())));
-        return;
-    }
+    const auto id = storeCalibrationOrSay(this, m_context.storePath, record);
+    if (!id) return;
     m_watch->disarm();
-    emit calibrationStored(id, QString::fromStdString(record.sensorName));
+    emit calibrationStored(*id, QString::fromStdString(record.sensorName));
     QWizard::accept();
 }
 

@@ -5,6 +5,7 @@
 
 #include <QDir>
 #include <QFileInfo>
+#include <QMessageBox>
 
 namespace tactiscope::ui {
 
@@ -27,6 +28,19 @@ std::int64_t storeCalibration(const QString& storePath, const core::calibration:
 {
     QDir().mkpath(QFileInfo(storePath).absolutePath());  // a first calibration may come before any session
     return core::storage::SessionStore(storePath.toStdString()).addCalibration(record);
+}
+
+std::optional<std::int64_t> storeCalibrationOrSay(QWidget* parent, const QString& storePath,
+                                                  const core::calibration::CalibrationRecord& record)
+{
+    try {
+        return storeCalibration(storePath, record);
+    } catch (const core::storage::StorageError& e) {
+        QMessageBox::warning(parent, QObject::tr("Calibration not stored"),
+                             QObject::tr("The calibration could not be stored in %1:\n%2")
+                                 .arg(storePath, QString::fromStdString(e.what())));
+        return std::nullopt;
+    }
 }
 
 std::string beamSensorName(const std::string& probeName, bool stiffBeam)

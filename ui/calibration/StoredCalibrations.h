@@ -8,6 +8,8 @@
 
 #include <QString>
 
+class QWidget;
+
 #include <optional>
 #include <string>
 
@@ -19,6 +21,10 @@ std::optional<core::storage::StoredCalibration> newestCalibration(const QString&
 
 // Stores the record and returns its id. Throws core::storage::StorageError.
 std::int64_t storeCalibration(const QString& storePath, const core::calibration::CalibrationRecord& record);
+// The same for a wizard's Accept: a failure is told in a message box over
+// `parent`, and the wizard stays open with nothing lost.
+std::optional<std::int64_t> storeCalibrationOrSay(QWidget* parent, const QString& storePath,
+                                                  const core::calibration::CalibrationRecord& record);
 
 std::string beamSensorName(const std::string& probeName, bool stiffBeam);
 

@@ -1,6 +1,8 @@
 // ReanalysisPanel: detector parameters, the worker run, saving the result.
 #include "ui/review/ReanalysisPanel.h"
 
+#include "core/storage/DefectRecords.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDateTime>
@@ -230,11 +232,7 @@ QString ReanalysisPanel::saveAs(const QString& name)
         const auto existing = m_store.analyses(m_session.id);
         if (std::ranges::find(existing, trimmed.toStdString()) != existing.end())
             return tr("The session already has an analysis named \"%1\".").arg(trimmed);
-        std::vector<core::storage::SessionEvent> stored;
-        for (const auto& e : m_events)
-            stored.push_back({0, trimmed.toStdString(), "defect", e.start_s, e.end_s, e.direction, e.peakR, e.peakLag_s,
-                              e.speed_m_per_s, ""});
-        m_store.addEvents(m_session.id, stored);
+        m_store.addEvents(m_session.id, core::storage::defectRecords(m_events, trimmed.toStdString()));
     } catch (const core::storage::StorageError& e) {
         return tr("The analysis was not saved: %1").arg(QString::fromStdString(e.what()));
     }

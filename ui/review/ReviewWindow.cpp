@@ -2,6 +2,7 @@
 #include "ui/review/ReviewWindow.h"
 
 #include "core/report/ReportData.h"
+#include "core/storage/DefectRecords.h"
 #include "core/storage/SessionExport.h"
 #include "ui/calibration/WizardText.h"
 #include "ui/report/ReportDocument.h"
@@ -271,8 +272,7 @@ void ReviewWindow::refreshRecords()
             rows << tr("Re-analysis");
             const int row = static_cast<int>(rows.size()) - 1;
             for (const auto& d : m_reanalysis->unsavedEvents()) {
-                const core::storage::SessionEvent e{0,           {},      "defect",    d.start_s,       d.end_s,
-                                                    d.direction, d.peakR, d.peakLag_s, d.speed_m_per_s, {}};
+                const auto e = core::storage::defectRecord(d);
                 spans.push_back({e.start_s, e.end_s, row, eventColour(e)});
                 entries.push_back({e.start_s, e.end_s, tr("defect"), tr("re-analysis"), eventDetails(e)});
             }

@@ -1,0 +1,38 @@
+// A detector's defect as a session record: the one place a DefectEvent
+// becomes a stored "defect" event, whether live, from `tactiscope-cli
+// analyze --save` or from a re-analysis saved in the review window.
+#pragma once
+
+#include "core/detector/DefectEvent.h"
+#include "core/storage/SessionRecords.h"
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace tactiscope::core::storage {
+
+inline SessionEvent defectRecord(const detector::DefectEvent& e, const std::string& analysis = kLiveAnalysis)
+{
+    SessionEvent event;
+    event.analysis = analysis;
+    event.kind = "defect";
+    event.start_s = e.start_s;
+    event.end_s = e.end_s;
+    event.direction = e.direction;
+    event.peakR = e.peakR;
+    event.lag_s = e.peakLag_s;
+    event.speed_m_per_s = e.speed_m_per_s;
+    return event;
+}
+
+inline std::vector<SessionEvent> defectRecords(std::span<const detector::DefectEvent> events,
+                                               const std::string& analysis)
+{
+    std::vector<SessionEvent> records;
+    records.reserve(events.size());
+    for (const auto& e : events) records.push_back(defectRecord(e, analysis));
+    return records;
+}
+
+}  // namespace tactiscope::core::storage
