@@ -46,7 +46,7 @@ void removeStore(const std::string& path)
 SessionMetadata panelScan()
 {
     SessionMetadata metadata;
-    metadata.mode = "panel-scan";
+    metadata.mode = tactiscope::core::Mode::PanelScan;
     return metadata;
 }
 
@@ -88,7 +88,7 @@ void BM_RecordEightChannels2kHz(benchmark::State& state)
         removeStore(path);
         Recorder recorder(path, panelScan(), eightChannels(), kRate_hz, 1'000'000);
         for (const auto& f : frames) recorder.consume(f);
-        const auto stats = recorder.finish(SessionStatus::Complete);
+        const auto stats = recorder.finish(tactiscope::core::SessionStatus::Complete);
         if (stats.samplesDropped > 0 || !stats.error.empty()) state.SkipWithError("samples were dropped");
     }
     removeStore(path);
@@ -110,7 +110,7 @@ struct ReviewStore {
         for (int s = 0; s < 999; ++s) {
             const auto id = store.beginSession(panelScan(), eightChannels(), kRate_hz);
             store.appendBlocks(id, std::vector{eightChannelBlock(0, 2000)});
-            store.endSession(id, SessionStatus::Complete);
+            store.endSession(id, tactiscope::core::SessionStatus::Complete);
         }
         hour = store.beginSession(panelScan(), eightChannels(), kRate_hz);
         std::vector<core::SampleBlock> batch;
@@ -122,7 +122,7 @@ struct ReviewStore {
             }
         }
         store.appendBlocks(hour, batch);
-        store.endSession(hour, SessionStatus::Complete);
+        store.endSession(hour, tactiscope::core::SessionStatus::Complete);
         samples = store.sampleCount(hour);
     }
     ~ReviewStore() { removeStore(path); }

@@ -5,10 +5,12 @@
 #pragma once
 
 #include "core/ChannelDescriptor.h"
+#include "core/Vocabulary.h"
 #include "devices/protocol/DecoderCounters.h"
 
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,15 @@ class SampleBlock;
 }
 
 namespace tactiscope::devices {
+
+// Who a device is, for a session's record: from a TSP/1 device's INFO, or
+// the simulator's scenario; a device that does not say has only its model
+// (the port's description).
+struct DeviceIdentity {
+    std::string model;
+    std::string serial;
+    std::string firmware;
+};
 
 enum class ReadStatus {
     Block,     // `out` holds a new block
@@ -31,6 +42,11 @@ public:
 
     // Human-readable identity, e.g. "Simulator — panel scan".
     virtual std::string name() const = 0;
+    // Known once constructed; a reconnection keeps the first connection's.
+    virtual DeviceIdentity identity() const { return {name(), {}, {}}; }
+    // The mode the source is made for, when it says so (a simulator
+    // scenario does; a port's device is judged by its channels instead).
+    virtual std::optional<core::Mode> declaredMode() const { return std::nullopt; }
     virtual const std::vector<core::ChannelDescriptor>& channels() const = 0;
     virtual double nominalSampleRate_hz() const = 0;
 

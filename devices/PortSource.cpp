@@ -63,6 +63,13 @@ std::string PortSource::name() const
     return m_transport->description();
 }
 
+DeviceIdentity PortSource::identity() const
+{
+    if (const auto info = deviceInfo())
+        return {info->vendor + " " + info->model, info->serialNumber, info->firmwareVersion};
+    return {m_transport->description(), {}, {}};
+}
+
 bool PortSource::layoutKnown() const
 {
     if (m_text) return m_text->sampleRate_hz().has_value() && !m_queue.empty();

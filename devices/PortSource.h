@@ -38,6 +38,7 @@ public:
     ~PortSource() override;
 
     std::string name() const override;
+    DeviceIdentity identity() const override;
     const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
     double nominalSampleRate_hz() const override { return m_rate_hz; }
     ReadStatus readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout) override;

@@ -28,6 +28,8 @@ ReconnectingSource::ReconnectingSource(Opener opener, std::chrono::milliseconds 
       m_retryInterval(retryInterval),
       m_source(m_opener()),
       m_name(m_source->name()),
+      m_identity(m_source->identity()),
+      m_declaredMode(m_source->declaredMode()),
       m_channels(m_source->channels()),
       m_rate_hz(m_source->nominalSampleRate_hz()),
       m_start(std::chrono::steady_clock::now())

@@ -37,6 +37,8 @@ public:
     ReconnectingSource(Opener opener, std::chrono::milliseconds retryInterval = std::chrono::milliseconds(500));
 
     std::string name() const override { return m_name; }
+    DeviceIdentity identity() const override { return m_identity; }
+    std::optional<core::Mode> declaredMode() const override { return m_declaredMode; }
     const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
     double nominalSampleRate_hz() const override { return m_rate_hz; }
     ReadStatus readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout) override;
@@ -59,6 +61,8 @@ private:
     std::chrono::milliseconds m_retryInterval;
     std::unique_ptr<BlockSource> m_source;
     std::string m_name;
+    DeviceIdentity m_identity;
+    std::optional<core::Mode> m_declaredMode;
     std::vector<core::ChannelDescriptor> m_channels;
     double m_rate_hz = 0.0;
     std::string m_error;

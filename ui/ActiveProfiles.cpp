@@ -1,6 +1,9 @@
 // ActiveProfiles: settings key, built-in fallback and the kind check.
 #include "ui/ActiveProfiles.h"
 
+#include "core/sensors/BuiltInProfiles.h"
+#include "ui/VocabularyText.h"
+
 #include <QFile>
 #include <QFileInfo>
 #include <QObject>
@@ -20,16 +23,24 @@ QString settingsKey(const QString& mode)
 
 bool profileFitsMode(const core::sensors::SensorProfile& profile, const QString& mode)
 {
-    if (mode == QLatin1String("palpation"))
-        return std::holds_alternative<core::sensors::CompliancePairProfile>(profile);
-    if (mode == QLatin1String("capacitive"))
-        return std::holds_alternative<core::sensors::CapacitiveBeamProfile>(profile);
-    return false;
+    const auto parsed = core::modeFromString(mode.toStdString());
+    return parsed && core::sensors::profileFitsMode(profile, *parsed);
+}
+
+const QStringList& profileModes()
+{
+    static const QStringList modes = [] {
+        QStringList names;
+        for (const core::Mode mode : core::kModes)
+            if (!core::sensors::builtInProfileJson(mode).empty()) names << wordText(mode);
+        return names;
+    }();
+    return modes;
 }
 
 QString builtInProfilePath(const QString& mode)
 {
-    if (mode == QLatin1String("capacitive"))
+    if (core::modeFromString(mode.toStdString()) == core::Mode::Capacitive)
         return QStringLiteral(":/tactiscope/profiles/capacitive-beam-paper-no1.json");
     return QStringLiteral(":/tactiscope/profiles/compliance-probe-paper.json");
 }

@@ -21,11 +21,7 @@ struct ActiveProfile {
 // The modes that run on a sensor profile, and whether a profile is a probe
 // for one: a compliance pair for "palpation", a capacitive beam for
 // "capacitive".
-inline const QStringList& profileModes()
-{
-    static const QStringList modes{QStringLiteral("palpation"), QStringLiteral("capacitive")};
-    return modes;
-}
+const QStringList& profileModes();
 bool profileFitsMode(const core::sensors::SensorProfile& profile, const QString& mode);
 
 // The built-in profile of a mode ("palpation", "capacitive").

@@ -33,7 +33,8 @@ CapacitiveView::CapacitiveView(QWidget* parent)
     m_calibration->setObjectName(QStringLiteral("calibrationLabel"));
     m_tare->setObjectName(QStringLiteral("tareButton"));
     m_tare->setMinimumHeight(40);
-    m_tare->setToolTip(tr("With the beam unloaded: the last half second's mean becomes the baseline C0"));
+    m_tare->setToolTip(tr(
+        "With the signal settled: the last half second's mean becomes the baseline C0 (refused while a load changes)"));
     m_calibration->setWordWrap(true);
     m_calibration->setStyleSheet(QStringLiteral("color: palette(placeholder-text);"));
     m_calibration->setTextFormat(Qt::RichText);
@@ -52,7 +53,7 @@ CapacitiveView::CapacitiveView(QWidget* parent)
     layout->setContentsMargins(0, 0, 6, 0);
     layout->addWidget(m_lanes, 3);
     layout->addLayout(side, 2);
-    connect(m_tare, &QPushButton::clicked, this, &CapacitiveView::tare);
+    connect(m_tare, &QPushButton::clicked, this, &CapacitiveView::tareRequested);
 }
 
 QLabel* CapacitiveView::addReadout(const QString& caption, const char* objectName)
@@ -88,11 +89,6 @@ void CapacitiveView::setCapacitive(std::shared_ptr<core::capacitive::LiveCapacit
     m_lanes->setSource(m_capacitive->output(), core::capacitive::LiveCapacitive::outputChannels(), sampleRate_hz,
                        {{1e6, tr("µN"), tr("Force")}, {1e3, tr("mm"), tr("Deflection")}});
     updateReadouts();
-}
-
-void CapacitiveView::tare()
-{
-    if (m_capacitive) m_capacitive->tare();
 }
 
 void CapacitiveView::updateReadouts()

@@ -32,11 +32,9 @@ public:
     void updateReadouts();
     LivePlotWidget* lanes() const { return m_lanes; }
 
-public slots:
-    void tare();
-
 signals:
     void profilesRequested();  // the probe line's "Change…" link
+    void tareRequested();      // the tare button
 
 private:
     QLabel* addReadout(const QString& caption, const char* objectName);

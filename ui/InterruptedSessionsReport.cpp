@@ -1,5 +1,6 @@
 // InterruptedSessionsReport: finding the sessions, the message and the export.
 #include "ui/InterruptedSessionsReport.h"
+#include "ui/VocabularyText.h"
 
 #include "core/storage/SessionExport.h"
 #include "core/storage/SessionStore.h"
@@ -20,7 +21,7 @@ QString describe(const core::storage::SessionSummary& s)
         s.metadata.subject.empty() ? QObject::tr("no subject") : QString::fromStdString(s.metadata.subject);
     return QObject::tr("Session %1 (%2, %3), started %4: %5 s kept")
         .arg(s.id)
-        .arg(QString::fromStdString(s.metadata.mode), subject, QString::fromStdString(s.startedUtc))
+        .arg(wordText(s.metadata.mode), subject, QString::fromStdString(s.startedUtc))
         .arg(QLocale().toString(s.duration_s(), 'f', 1));
 }
 
@@ -48,8 +49,7 @@ std::vector<std::int64_t> interruptedSessionsAfter(const QString& storePath, std
     try {
         core::storage::SessionStore store(storePath.toStdString());  // marks crashed recordings interrupted
         for (const auto& s : store.sessions())
-            if (s.id > afterId && s.status == core::storage::toString(core::storage::SessionStatus::Interrupted))
-                found.push_back(s.id);
+            if (s.id > afterId && s.status == core::SessionStatus::Interrupted) found.push_back(s.id);
     } catch (const core::storage::StorageError& e) {
         qWarning("interrupted sessions not checked: %s", e.what());
     }

@@ -1,17 +1,12 @@
-// MainWindow: wiring of acquisition, live plot, menus and status bar.
+// MainWindow: wiring of the live session, the plots, menus and status bar.
 #include "ui/MainWindow.h"
 
 #include "core/LiveBuffer.h"
-#include "core/SinkSlot.h"
-#include "core/Version.h"
 #include "core/capacitive/LiveCapacitive.h"
 #include "core/compliance/LivePalpation.h"
 #include "core/detector/LiveDetection.h"
-#include "core/storage/DefectRecords.h"
-#include "core/storage/Recorder.h"
-#include "core/storage/RecordingTap.h"
-#include "devices/Acquisition.h"
 #include "devices/emulator/ProbeEmulator.h"
+#include "devices/session/LiveSession.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
 #include "ui/AboutText.h"
@@ -26,7 +21,9 @@
 #include "ui/RawConsole.h"
 #include "ui/SensorProfileDialog.h"
 #include "ui/SessionBar.h"
+#include "ui/SiteGridMap.h"
 #include "ui/VerdictDialog.h"
+#include "ui/VocabularyText.h"
 #include "ui/XYPlotWidget.h"
 #include "ui/calibration/CalibrationHistory.h"
 #include "ui/calibration/CapacitiveWizard.h"
@@ -61,9 +58,6 @@ namespace tactiscope::ui {
 namespace {
 
 constexpr int kStatusInterval_ms = 250;
-// The recorder's queue: 30 s of samples, beyond which a stalled disk turns
-// into a recorded gap instead of unbounded memory.
-constexpr double kRecorderQueue_s = 30.0;
 
 QString defaultStorePath()
 {
@@ -155,7 +149,7 @@ MainWindow::MainWindow(QWidget* parent)
     sessionToolBar->setMovable(false);
     sessionToolBar->addWidget(m_sessionBar);
     connect(m_sessionBar, &SessionBar::recordClicked, this, &MainWindow::toggleRecording);
-    connect(m_sessionBar, &SessionBar::modeChanged, this, &MainWindow::showModeView);
+    connect(m_sessionBar, &SessionBar::modeChanged, this, &MainWindow::modeChosen);
     m_deviceDock = new QDockWidget(tr("Device"), this);
     m_deviceDock->setObjectName(QStringLiteral("deviceDock"));
     m_deviceDock->setWidget(m_devicePanel);
@@ -177,6 +171,8 @@ MainWindow::MainWindow(QWidget* parent)
     addDockWidget(Qt::BottomDockWidgetArea, m_consoleDock);
     m_consoleDock->hide();  // for troubleshooting a probe
     connect(m_palpationView, &PalpationView::profilesRequested, this, &MainWindow::showProfiles);
+    connect(m_palpationView, &PalpationView::tareRequested, this, &MainWindow::tare);
+    connect(m_capacitiveView, &CapacitiveView::tareRequested, this, &MainWindow::tare);
     connect(m_capacitiveView, &CapacitiveView::profilesRequested, this, &MainWindow::showProfiles);
     connect(m_devicePanel, &DevicePanel::connectRequested, this, &MainWindow::connectRequest);
     connect(m_devicePanel, &DevicePanel::disconnectRequested, this, &MainWindow::disconnectSource);
@@ -205,8 +201,8 @@ void MainWindow::restoreSettings()
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     core::storage::SessionMetadata metadata;
-    metadata.mode =
-        settings.value(QStringLiteral("session/mode"), QStringLiteral("panel-scan")).toString().toStdString();
+    metadata.mode = core::modeFromString(settings.value(QStringLiteral("session/mode")).toString().toStdString())
+                        .value_or(core::Mode::PanelScan);
     metadata.operatorName = settings.value(QStringLiteral("session/operator")).toString().toStdString();
     m_sessionBar->setMetadata(metadata);
     setStorePath(settings.value(QStringLiteral("recording/store"), defaultStorePath()).toString());
@@ -215,28 +211,48 @@ void MainWindow::restoreSettings()
 
 void MainWindow::showModeView()
 {
-    const std::string mode = m_sessionBar->metadata().mode;
+    const core::Mode mode = m_sessionBar->metadata().mode;
     QWidget* view = nullptr;
-    if (m_detection && mode == "panel-scan") view = m_panelScan;
-    if (m_palpation && mode == "palpation") view = m_palpationView;
-    if (m_capacitive && mode == "capacitive") view = m_capacitiveView;
+    if (m_session) {
+        if (m_session->detection() && mode == core::Mode::PanelScan) view = m_panelScan;
+        if (m_session->palpation() && mode == core::Mode::Palpation) view = m_palpationView;
+        if (m_session->capacitive() && mode == core::Mode::Capacitive) view = m_capacitiveView;
+    }
     if (view) m_modeViews->setCurrentWidget(view);
     m_modeViews->setVisible(view != nullptr);
     showModeXY(view);
+}
+
+// A mode the device cannot feed is refused here, before anything is
+// recorded: the bar goes back to the session's mode and says why.
+void MainWindow::modeChosen()
+{
+    if (m_session) {
+        const core::Mode chosen = m_sessionBar->metadata().mode;
+        if (const auto refusal = m_session->setMode(chosen)) {
+            const QSignalBlocker quiet(m_sessionBar);
+            m_sessionBar->setMode(m_session->mode());
+            showProblem(
+                tr("Mode not available"),
+                tr("%1 cannot run on %2.").arg(modeTitle(chosen), QString::fromStdString(m_session->source().name())),
+                QString::fromStdString(*refusal), QStringLiteral("modeRefusedBox"));
+        }
+    }
+    showModeView();
 }
 
 // The XY plot the mode calls for: F_H against F_L in palpation (slope Q),
 // force against tip deflection for the capacitive beam (slope k_s).
 void MainWindow::showModeXY(const QWidget* view)
 {
-    const double rate_hz = m_acquisition ? m_acquisition->source().nominalSampleRate_hz() : 0.0;
+    const double rate_hz = m_session ? m_session->source().nominalSampleRate_hz() : 0.0;
     if (view == m_palpationView) {
         const DisplayUnit high{1e3, tr("mN"), tr("F_H")}, low{1e3, tr("mN"), tr("F_L")};
-        m_xyPlot->setSource(m_palpation->output(), 1, 0, low, high, rate_hz);
+        m_xyPlot->setSource(m_session->palpation()->output(), 1, 0, low, high, rate_hz);
         m_xyDock->setWindowTitle(tr("XY plot: F_H against F_L (slope Q)"));
     } else if (view == m_capacitiveView) {
         const DisplayUnit deflection{1e3, tr("mm"), tr("Tip deflection")}, force{1e6, tr("µN"), tr("Force")};
-        m_xyPlot->setSource(m_capacitive->output(), 1, 0, deflection, force, rate_hz);
+        m_xyPlot->setSource(m_session->capacitive()->output(), 1, 0, deflection, force, rate_hz);
         m_xyDock->setWindowTitle(tr("XY plot: force against deflection (slope k_s)"));
     } else {
         m_xyPlot->clearSource();
@@ -250,7 +266,7 @@ void MainWindow::saveSettings() const
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());
     const auto metadata = m_sessionBar->metadata();
-    settings.setValue(QStringLiteral("session/mode"), QString::fromStdString(metadata.mode));
+    settings.setValue(QStringLiteral("session/mode"), wordText(metadata.mode));
     settings.setValue(QStringLiteral("session/operator"), QString::fromStdString(metadata.operatorName));
     settings.setValue(QStringLiteral("recording/store"), m_storePath);
 }
@@ -387,9 +403,20 @@ void MainWindow::chooseStore()
     reportInterruptedSessions();
 }
 
-bool MainWindow::setMode(const QString& mode)
+bool MainWindow::setMode(core::Mode mode)
 {
-    return m_sessionBar->setMode(mode);  // the bar says when the mode changed
+    m_sessionBar->setMode(mode);  // modeChosen() asks the session
+    return m_sessionBar->metadata().mode == mode;
+}
+
+core::Mode MainWindow::mode() const
+{
+    return m_sessionBar->metadata().mode;
+}
+
+bool MainWindow::isRecording() const
+{
+    return m_session && m_session->isRecording();
 }
 
 void MainWindow::reportInterruptedSessions()
@@ -454,35 +481,14 @@ void MainWindow::toggleRecording()
 bool MainWindow::startRecording()
 {
     if (isRecording()) return true;
-    if (!m_acquisition) {
+    if (!m_session) {
         statusBar()->showMessage(tr("Connect a device to record."), 5000);
         return false;
     }
-    const auto& source = m_acquisition->source();
-    auto metadata = m_sessionBar->metadata();
-    metadata.deviceModel = source.name();
-    if (const auto profile = m_modeProfiles.find(metadata.mode); profile != m_modeProfiles.end())
-        metadata.profileJson = profile->second;
-    const auto& calibrations = m_modeCalibrations[metadata.mode];
-    if (!calibrations.empty()) {
-        std::string records;
-        for (const auto& stored : calibrations) records += (records.empty() ? "" : ",") + stored.record.toJson();
-        metadata.calibrationsJson = "[" + records + "]";
-    }
-    QDir().mkpath(QFileInfo(m_storePath).absolutePath());
-    const double rate_hz = source.nominalSampleRate_hz();
-    try {
-        m_recorder = std::make_shared<core::storage::Recorder>(
-            m_storePath.toStdString(), metadata, source.channels(), rate_hz,
-            static_cast<std::uint64_t>(std::ceil(kRecorderQueue_s * rate_hz)));
-    } catch (const core::storage::StorageError& e) {
-        showProblem(tr("Cannot record"), tr("Recording could not start."), QString::fromStdString(e.what()));
+    if (const auto error = m_session->startRecording(m_sessionBar->metadata())) {
+        showProblem(tr("Cannot record"), tr("Recording could not start."), QString::fromStdString(*error));
         return false;
     }
-    for (const auto& stored : calibrations) linkCalibration(m_recorder->sessionId(), stored.id);
-    m_tap->attach(m_recorder);
-    m_panelScan->startPanel();
-    m_palpationView->startSubject();
     m_sessionBar->setRecording(true);
     lockProfiles();
     updateRecording();
@@ -492,51 +498,52 @@ bool MainWindow::startRecording()
 void MainWindow::stopRecording()
 {
     if (!isRecording()) return;
-    m_tap->detach();
-    const auto recorder = std::exchange(m_recorder, nullptr);
-    const double end_s = recorder->sessionTime_s();
-    const auto stats = recorder->finish(core::storage::SessionStatus::Complete);
+    if (const auto summary = m_session->stopRecording()) recordingEnded(*summary);
+}
+
+void MainWindow::recordingEnded(const devices::session::RecordingSummary& summary)
+{
     m_sessionBar->setRecording(false);
     if (m_browser) m_browser->reload();
     lockProfiles();
-    m_sessionBar->setRecordEnabled(m_acquisition != nullptr);
+    m_sessionBar->setRecordEnabled(m_session != nullptr);
     const QLocale locale;
     m_recordingLabel->setStyleSheet(QString());
     m_recordingLabel->setText(tr("Session %1 saved: %2 samples per channel")
-                                  .arg(recorder->sessionId())
-                                  .arg(locale.toString(static_cast<qulonglong>(stats.samplesWritten))));
-    if (!stats.error.empty())
-        showProblem(tr("Recording stopped"), tr("Recording stopped early."), QString::fromStdString(stats.error));
-    else if (m_panelScan->isVisible())
-        askVerdict(recorder->sessionId(), end_s, m_panelScan->defectCount(), m_panelScan->verdict());
+                                  .arg(summary.session)
+                                  .arg(locale.toString(static_cast<qulonglong>(summary.stats.samplesWritten))));
+    if (!summary.stats.error.empty())
+        showProblem(tr("Recording stopped"), tr("Recording stopped early."),
+                    QString::fromStdString(summary.stats.error));
+    else if (summary.verdict)
+        askVerdict(summary.session, summary.end_s, static_cast<int>(summary.defects), *summary.verdict);
 }
 
-// The panel's verdict follows the defect count and is stored at once; the
-// operator keeps it or overrides it, with a note that goes into the session
-// as an annotation at its end, without being held up.
-void MainWindow::askVerdict(std::int64_t session, double end_s, int defects, const QString& verdict)
+// The panel's automatic verdict is stored with the session; the operator
+// keeps it or overrides it, with a note that goes into the session as an
+// annotation at its end, without being held up.
+void MainWindow::askVerdict(std::int64_t session, double end_s, int defects, core::Verdict verdict)
 {
     const std::string store = m_storePath.toStdString();
-    const auto save = [this, store, session](const QString& text) {
+    const auto save = [this, store, session](core::Verdict chosen) {
         try {
-            core::storage::SessionStore(store).setVerdict(session, text.toStdString());
-            statusBar()->showMessage(tr("Session %1: verdict \"%2\"").arg(session).arg(text), 5000);
+            core::storage::SessionStore(store).setVerdict(session, chosen);
+            statusBar()->showMessage(tr("Session %1: verdict \"%2\"").arg(session).arg(wordText(chosen)), 5000);
         } catch (const core::storage::StorageError& e) {
             showProblem(tr("Verdict not saved"), tr("The verdict could not be saved."),
                         QString::fromStdString(e.what()));
         }
     };
-    save(verdict);
     auto* dialog = new VerdictDialog(defects, verdict, this);
     const std::string author = m_sessionBar->metadata().operatorName;
     connect(dialog, &VerdictDialog::decided, this,
-            [this, save, store, session, end_s, author, verdict](const QString& chosen, const QString& note) {
+            [this, save, store, session, end_s, author, verdict](core::Verdict chosen, const QString& note) {
                 if (chosen != verdict) save(chosen);
                 if (note.isEmpty()) return;
                 core::storage::Annotation annotation;
                 annotation.time_s = end_s;
                 annotation.author = author;
-                annotation.text = tr("Verdict \"%1\": %2").arg(chosen, note).toStdString();
+                annotation.text = tr("Verdict \"%1\": %2").arg(wordText(chosen), note).toStdString();
                 try {
                     core::storage::SessionStore(store).addAnnotation(session, annotation);
                 } catch (const core::storage::StorageError& e) {
@@ -547,54 +554,6 @@ void MainWindow::askVerdict(std::int64_t session, double end_s, int defects, con
     dialog->show();
 }
 
-void MainWindow::takeDetectorEvents()
-{
-    const auto events = m_panelScan->takeNewEvents();
-    if (events.empty() || !isRecording()) return;
-    std::vector<core::storage::SessionEvent> stored;
-    for (const auto& e : events) {
-        auto event = core::storage::defectRecord(e);
-        // The detector counts the stream's time; the session starts at its record press.
-        event.start_s = m_recorder->sessionTimeOf(e.start_s);
-        event.end_s = m_recorder->sessionTimeOf(e.end_s);
-        stored.push_back(event);
-    }
-    m_recorder->addEvents(std::move(stored));
-}
-
-// The paper's lags (2–150 ms in 2 ms steps) assume 500 Hz; a slower probe
-// starts at one sample interval and steps by it. A rate the detector still
-// cannot work at is said, and the traces go on without it.
-void MainWindow::attachDetection(const std::vector<std::size_t>& strain, double rate_hz)
-{
-    core::detector::LiveDetectionSettings settings;
-    const double step_s = std::max(0.002, 1.0 / rate_hz);
-    try {
-        settings.parameters.lags_s = core::detector::lagRange_s(step_s, 0.150, step_s);
-        m_detection = std::make_shared<core::detector::LiveDetection>(strain, rate_hz, settings,
-                                                                      LivePlotWidget::kMaxWindow_s + 2.0);
-    } catch (const std::invalid_argument& e) {
-        showProblem(tr("No defect detection"), tr("The surface-deflection detector cannot run on this probe's stream."),
-                    QString::fromStdString(e.what()));
-        return;
-    }
-    m_acquisition->addSink(m_detection);
-}
-
-// The mode's active profile, remembered for the sessions it records; a bad
-// file is said, and the built-in profile of the mode is used instead.
-core::sensors::SensorProfile MainWindow::modeProfile(const std::string& mode)
-{
-    ActiveProfile active = activeProfile(QString::fromStdString(mode));
-    if (!active.error.isEmpty())
-        showProblem(tr("Bad profile"),
-                    tr("The %1 profile could not be used; the paper's sensor is used instead.")
-                        .arg(QString::fromStdString(mode)),
-                    active.error);
-    m_modeProfiles[mode] = core::sensors::toJson(active.profile);
-    return std::move(active.profile);
-}
-
 SensorProfileDialog* MainWindow::showProfiles()
 {
     if (!m_profileDialog) {
@@ -602,8 +561,7 @@ SensorProfileDialog* MainWindow::showProfiles()
         connect(m_profileDialog, &SensorProfileDialog::activeProfileChanged, this, &MainWindow::applyProfile);
         lockProfiles();
     }
-    if (!m_profileDialog->hasUnsavedChanges())
-        m_profileDialog->setMode(QString::fromStdString(m_sessionBar->metadata().mode));
+    if (!m_profileDialog->hasUnsavedChanges()) m_profileDialog->setMode(wordText(m_sessionBar->metadata().mode));
     m_profileDialog->show();
     m_profileDialog->raise();
     m_profileDialog->activateWindow();
@@ -618,98 +576,64 @@ void MainWindow::lockProfiles()
         m_profileDialog->setLocked(isRecording(), tr("fixed while recording: a session keeps one sensor"));
 }
 
-void MainWindow::applyProfile(const QString& mode)
+void MainWindow::applyProfile(const QString& modeName)
 {
-    if (!m_acquisition) return;  // the next connection reads it
-    const auto channels = m_acquisition->source().channels();
-    const double rate_hz = m_acquisition->source().nominalSampleRate_hz();
-    if (mode == QLatin1String("palpation")) {
-        attachPalpation(channels, rate_hz);
-        if (m_palpation) statusBar()->showMessage(tr("New probe profile: keep the probe lifted while it tares"), 5000);
-    } else if (mode == QLatin1String("capacitive")) {
-        attachCapacitive(channels, rate_hz);
-        if (m_capacitive) statusBar()->showMessage(tr("New beam profile: the baseline C0 is re-taken"), 5000);
+    const auto mode = core::modeFromString(modeName.toStdString());
+    if (!m_session || !mode) return;  // the next connection reads it
+    ActiveProfile active = activeProfile(modeName);
+    if (!active.error.isEmpty())
+        showProblem(tr("Bad profile"),
+                    tr("The %1 profile could not be used; the paper's sensor is used instead.").arg(modeName),
+                    active.error);
+    if (const auto refusal = m_session->setProfile(*mode, std::move(active.profile))) {
+        showProblem(tr("Bad profile"), tr("The %1 probe was not changed.").arg(modeName),
+                    QString::fromStdString(*refusal));
+        return;
+    }
+    showMode(*mode);
+    if (*mode == core::Mode::Palpation && m_session->palpation())
+        statusBar()->showMessage(tr("New probe profile: keep the probe lifted while it tares"), 5000);
+    if (*mode == core::Mode::Capacitive && m_session->capacitive())
+        statusBar()->showMessage(tr("New beam profile: the baseline C0 is re-taken"), 5000);
+}
+
+// A mode's view on the session's processor, with the probe's name and the
+// calibrations it reads through.
+void MainWindow::showMode(core::Mode mode)
+{
+    const double rate_hz = m_session ? m_session->source().nominalSampleRate_hz() : 0.0;
+    const auto* profile = m_session ? m_session->profile(mode) : nullptr;
+    const QString probe = profile ? QString::fromStdString(core::sensors::profileName(*profile)) : QString();
+    QStringList calibrations;
+    if (m_session)
+        for (const auto& stored : m_session->calibrations(mode))
+            calibrations << tr("%1 on %2 by %3")
+                                .arg(QString::fromStdString(stored.record.sensorName),
+                                     QString::fromStdString(stored.record.timestampUtc),
+                                     QString::fromStdString(stored.record.operatorName));
+    switch (mode) {
+    case core::Mode::PanelScan:
+        m_panelScan->setDetection(m_session ? m_session->detection() : nullptr, rate_hz);
+        break;
+    case core::Mode::Palpation:
+        m_palpationView->setPalpation(m_session ? m_session->palpation() : nullptr, rate_hz, probe,
+                                      calibrations.join(QStringLiteral(", ")));
+        break;
+    case core::Mode::Capacitive:
+        m_capacitiveView->setCapacitive(m_session ? m_session->capacitive() : nullptr, rate_hz, probe,
+                                        calibrations.isEmpty()
+                                            ? tr("none — the beam model (uncalibrated); drift tracking off")
+                                            : calibrations.join(QStringLiteral(", ")));
+        break;
     }
     showModeView();
-}
-
-// Palpation runs whenever the probe has two beams and a displacement
-// channel, with the palpation mode's active profile.
-void MainWindow::attachPalpation(const std::vector<core::ChannelDescriptor>& channels, double rate_hz)
-{
-    const auto probe = std::get<core::sensors::CompliancePairProfile>(modeProfile("palpation"));
-    core::compliance::LivePalpationSettings settings;
-    settings.high = probe.high;
-    settings.low = probe.low;
-    // A tenth of a second at least: a shorter contact is a tap, not a press.
-    settings.press.minimumSamples = std::max<std::size_t>(20, static_cast<std::size_t>(0.1 * rate_hz));
-    // Each beam reads through its newest gauge-factor calibration, if any.
-    auto& calibrations = m_modeCalibrations["palpation"];
-    calibrations.clear();
-    QStringList calibrated;
-    for (const bool stiff : {true, false}) {
-        auto newest = newestCalibration(m_storePath, "gauge_factor", beamSensorName(probe.name, stiff));
-        const auto gaugeFactor = newest ? newest->record.value("gauge_factor") : std::nullopt;
-        if (!gaugeFactor || !(*gaugeFactor > 0.0)) continue;
-        (stiff ? settings.highGaugeFactor : settings.lowGaugeFactor) = *gaugeFactor;
-        calibrated << tr("%1 beam %2 by %3")
-                          .arg(stiff ? tr("stiff") : tr("soft"), QString::fromStdString(newest->record.timestampUtc),
-                               QString::fromStdString(newest->record.operatorName));
-        calibrations.push_back(std::move(*newest));
-    }
-    try {
-        m_palpation = std::make_shared<core::compliance::LivePalpation>(channels, rate_hz, settings,
-                                                                        LivePlotWidget::kMaxWindow_s + 2.0);
-    } catch (const std::invalid_argument&) {
-        m_palpation.reset();  // not a compliance probe
-    }
-    m_palpationSlot->set(m_palpation);
-    m_palpationView->setPalpation(m_palpation, rate_hz, QString::fromStdString(probe.name),
-                                  calibrated.join(QStringLiteral(", ")));
-}
-
-// The capacitive readout runs whenever the probe has a capacitance channel,
-// with the capacitive mode's profile and the newest calibration of that
-// sensor in the session store (else the beam model).
-void MainWindow::attachCapacitive(const std::vector<core::ChannelDescriptor>& channels, double rate_hz)
-{
-    const auto probe = std::get<core::sensors::CapacitiveBeamProfile>(modeProfile("capacitive"));
-    const core::sensors::CapacitiveBeam beam(probe.geometry);
-    auto sensitivity = core::capacitive::CapacitiveSensitivity::fromModel(beam);
-    core::capacitive::DriftSettings drift;
-    QString source = tr("none — the beam model (uncalibrated); drift tracking off");
-    auto& calibrations = m_modeCalibrations["capacitive"];
-    calibrations.clear();
-    if (auto newest = newestCalibration(m_storePath, "capacitive", probe.name)) {
-        calibrations.push_back(std::move(*newest));
-        const auto& record = calibrations.back().record;
-        try {
-            const auto stored = core::capacitive::capacitiveCalibrationOf(record, beam);
-            sensitivity = stored.sensitivity;
-            drift.noiseSigma_f = stored.noiseSigma_f;
-            source = tr("%1 by %2")
-                         .arg(QString::fromStdString(record.timestampUtc), QString::fromStdString(record.operatorName));
-        } catch (const std::invalid_argument& e) {
-            showProblem(tr("Bad calibration"), tr("The newest capacitive calibration cannot be used."),
-                        QString::fromStdString(e.what()));
-            calibrations.clear();
-        }
-    }
-    try {
-        m_capacitive = std::make_shared<core::capacitive::LiveCapacitive>(channels, rate_hz, sensitivity, drift,
-                                                                          LivePlotWidget::kMaxWindow_s + 2.0);
-    } catch (const std::invalid_argument&) {
-        m_capacitive.reset();  // no capacitance channel
-    }
-    m_capacitiveSlot->set(m_capacitive);
-    m_capacitiveView->setCapacitive(m_capacitive, rate_hz, QString::fromStdString(probe.name), source);
 }
 
 // Calibrating needs the live signal and must not change the calibration of
 // a session being recorded.
 void MainWindow::calibrate(const QString& which)
 {
-    if (!m_acquisition) {
+    if (!m_session) {
         statusBar()->showMessage(tr("Connect the probe to calibrate (or the simulator's calibration rig)."), 6000);
         m_deviceDock->show();
         return;
@@ -718,9 +642,9 @@ void MainWindow::calibrate(const QString& which)
         statusBar()->showMessage(tr("Stop recording first: a session keeps the calibration it started with."), 6000);
         return;
     }
-    CalibrationContext context{m_buffer,
-                               m_acquisition->source().channels(),
-                               m_acquisition->source().nominalSampleRate_hz(),
+    CalibrationContext context{m_session->buffer(),
+                               m_session->source().channels(),
+                               m_session->source().nominalSampleRate_hz(),
                                m_loadRig,
                                m_storePath,
                                QString::fromStdString(m_sessionBar->metadata().operatorName),
@@ -729,7 +653,8 @@ void MainWindow::calibrate(const QString& which)
     if (which == QLatin1String("gauge")) {
         auto* gauge = new GaugeFactorWizard(std::move(context), this);
         connect(gauge, &GaugeFactorWizard::calibrationStored, this, [this](std::int64_t, const QString& sensor) {
-            applyProfile(QStringLiteral("palpation"));
+            if (m_session) m_session->reloadCalibrations(core::Mode::Palpation);
+            showMode(core::Mode::Palpation);
             statusBar()->showMessage(tr("Gauge factor of %1 stored; the palpation view reads through it.").arg(sensor),
                                      8000);
         });
@@ -737,7 +662,8 @@ void MainWindow::calibrate(const QString& which)
     } else if (which == QLatin1String("capacitive")) {
         auto* capacitive = new CapacitiveWizard(std::move(context), this);
         connect(capacitive, &CapacitiveWizard::calibrationStored, this, [this](std::int64_t, const QString& sensor) {
-            applyProfile(QStringLiteral("capacitive"));
+            if (m_session) m_session->reloadCalibrations(core::Mode::Capacitive);
+            showMode(core::Mode::Capacitive);
             statusBar()->showMessage(tr("Calibration of %1 stored; the capacitive view reads through it.").arg(sensor),
                                      8000);
         });
@@ -748,49 +674,17 @@ void MainWindow::calibrate(const QString& which)
     wizard->show();
 }
 
-void MainWindow::linkCalibration(std::int64_t session, std::int64_t calibration)
-{
-    try {
-        core::storage::SessionStore(m_storePath.toStdString()).linkCalibration(session, calibration);
-    } catch (const core::storage::StorageError& e) {
-        showProblem(tr("Calibration not linked"), tr("The session's calibration could not be noted in the store."),
-                    QString::fromStdString(e.what()));
-    }
-}
-
-void MainWindow::takePalpationReadings()
-{
-    const auto readings = m_palpationView->takeNewReadings();
-    if (readings.empty() || !isRecording()) return;
-    std::vector<core::storage::SessionReading> stored;
-    for (const auto& [press, site] : readings) {
-        if (press.stiffness.range != core::sensors::ComplianceRange::InRange) continue;
-        core::storage::SessionReading reading;
-        reading.kind = "compliance";
-        reading.quantity = "stiffness";
-        reading.unit = "N/m";
-        reading.start_s = m_recorder->sessionTimeOf(press.start_s);
-        reading.end_s = m_recorder->sessionTimeOf(press.end_s);
-        reading.value = press.stiffness.objectStiffness_n_per_m;
-        reading.standardError = press.standardError_n_per_m;
-        reading.site = site.toStdString();
-        reading.detailsJson = core::compliance::pressDetailsJson(press);
-        stored.push_back(reading);
-    }
-    m_recorder->addReadings(std::move(stored));
-}
-
 void MainWindow::tare()
 {
-    if (m_palpationView->isVisible()) {
-        m_palpationView->tare();
-        statusBar()->showMessage(tr("Tare: keep the probe lifted for half a second"), 4000);
-    } else if (m_capacitiveView->isVisible()) {
-        m_capacitiveView->tare();
-        statusBar()->showMessage(tr("Tare: the baseline C0 is re-taken"), 4000);
-    } else {
-        statusBar()->showMessage(tr("Nothing to tare in this mode"), 4000);
+    if (!m_session) {
+        statusBar()->showMessage(tr("Connect a probe to tare it."), 5000);
+        return;
     }
+    if (const auto refusal = m_session->tare()) {
+        statusBar()->showMessage(tr("Not tared: %1").arg(QString::fromStdString(*refusal)), 8000);
+        return;
+    }
+    statusBar()->showMessage(tr("Tared: the last half second is the new zero"), 4000);
 }
 
 void MainWindow::markEvent(const QString& note)
@@ -799,7 +693,7 @@ void MainWindow::markEvent(const QString& note)
         statusBar()->showMessage(tr("Markers go into a recording: start one first (Ctrl+R)."), 5000);
         return;
     }
-    addMarker(m_recorder->sessionTime_s(), note);
+    addMarker(m_session->sessionTime_s(), note);
 }
 
 // The marker's time is the key press; typing the note does not delay it, and
@@ -810,15 +704,15 @@ void MainWindow::markEventWithNote()
         markEvent();  // says why not
         return;
     }
-    const double time_s = m_recorder->sessionTime_s();
-    const std::int64_t session = m_recorder->sessionId();
+    const double time_s = m_session->sessionTime_s();
+    const std::int64_t session = m_session->sessionId();
     auto* dialog = new QInputDialog(this);
     dialog->setObjectName(QStringLiteral("markerNoteDialog"));
     dialog->setWindowTitle(tr("Marker"));
     dialog->setLabelText(tr("Note for the marker at %1 s:").arg(QLocale().toString(time_s, 'f', 2)));
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &QInputDialog::textValueSelected, this, [this, time_s, session](const QString& note) {
-        if (isRecording() && m_recorder->sessionId() == session)
+        if (isRecording() && m_session->sessionId() == session)
             addMarker(time_s, note);
         else
             showProblem(tr("Marker not stored"), tr("The recording ended before the note was entered."), note);
@@ -828,27 +722,19 @@ void MainWindow::markEventWithNote()
 
 void MainWindow::addMarker(double time_s, const QString& note)
 {
-    core::storage::SessionEvent marker;
-    marker.kind = "marker";
-    marker.start_s = marker.end_s = time_s;
-    marker.note = note.toStdString();
-    m_recorder->addEvents({marker});
+    m_session->addMarker(time_s, note.toStdString());
     statusBar()->showMessage(tr("Marker at %1 s").arg(QLocale().toString(time_s, 'f', 2)), 4000);
 }
 
 void MainWindow::updateRecording()
 {
     if (!isRecording()) return;
-    const auto stats = m_recorder->stats();
-    if (!stats.error.empty()) {
-        stopRecording();  // keeps everything committed, and says why
-        return;
-    }
-    const double elapsed_s = m_recorder->sessionTime_s();
+    const auto stats = m_session->recorderStats();
+    const double elapsed_s = m_session->sessionTime_s();
     m_sessionBar->setElapsed(elapsed_s);
     const QLocale locale;
     QString text = tr("● REC session %1: %2 samples")
-                       .arg(m_recorder->sessionId())
+                       .arg(m_session->sessionId())
                        .arg(locale.toString(static_cast<qulonglong>(stats.samplesWritten)));
     if (stats.samplesDropped > 0)
         text += tr(", %1 lost").arg(locale.toString(static_cast<qulonglong>(stats.samplesDropped)));
@@ -956,38 +842,43 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
 {
     disconnectSource();
     if (!source) return;
-    const auto channels = source->channels();
-    const double rate_hz = source->nominalSampleRate_hz();
-    // Two seconds of headroom: the display reads 40 times a second, so only a
-    // GUI stalled that long loses display samples (never recorded ones).
-    auto buffer =
-        std::make_shared<core::LiveBuffer>(channels.size(), static_cast<std::size_t>(std::ceil(2.0 * rate_hz)) + 1);
-    m_acquisition = std::make_unique<devices::Acquisition>(std::move(source));
-    m_acquisition->addSink(buffer);
-    m_buffer = buffer;
-    m_tap = std::make_shared<core::storage::RecordingTap>();
-    m_acquisition->addSink(m_tap);
-    // The panel-scan detector runs whenever the probe has two cantilevers.
-    std::vector<std::size_t> strain;
-    for (std::size_t c = 0; c < channels.size(); ++c)
-        if (channels[c].kind == core::ChannelKind::Strain) strain.push_back(c);
-    if (strain.size() >= 2) attachDetection(strain, rate_hz);
-    m_panelScan->setDetection(m_detection, rate_hz);
-    m_palpationSlot = std::make_shared<core::SinkSlot>();
-    m_capacitiveSlot = std::make_shared<core::SinkSlot>();
-    m_acquisition->addSink(m_palpationSlot);
-    m_acquisition->addSink(m_capacitiveSlot);
-    attachPalpation(channels, rate_hz);
-    attachCapacitive(channels, rate_hz);
-    showModeView();
-    m_plot->setSource(buffer, channels, rate_hz);
-    m_acquisition->start();
+    devices::session::LiveSessionOptions options;
+    options.storePath = m_storePath.toStdString();
+    options.displaySeconds = LivePlotWidget::kMaxWindow_s + 2.0;
+    for (const QString& mode : profileModes()) {
+        ActiveProfile active = activeProfile(mode);
+        if (!active.error.isEmpty())
+            showProblem(tr("Bad profile"),
+                        tr("The %1 profile could not be used; the paper's sensor is used instead.").arg(mode),
+                        active.error);
+        options.profiles.emplace(*core::modeFromString(mode.toStdString()), std::move(active.profile));
+    }
+    m_session = std::make_unique<devices::session::LiveSession>(std::move(source), std::move(options));
+    for (const auto& problem : m_session->takeProblems())
+        showProblem(tr("Analysis not available"), tr("Part of the analysis cannot run on this device."),
+                    QString::fromStdString(problem));
+    // The source's own mode wins; a source that declares none keeps the
+    // bar's mode if its channels can feed it.
+    const core::Mode chosen = m_sessionBar->metadata().mode;
+    if (!m_session->declaredMode() && !m_session->refusalOf(chosen)) m_session->setMode(chosen);
+    if (m_session->mode() != chosen) {
+        const QSignalBlocker quiet(m_sessionBar);
+        m_sessionBar->setMode(m_session->mode());
+        statusBar()->showMessage(
+            tr("Mode: %1, the mode of %2")
+                .arg(modeTitle(m_session->mode()), QString::fromStdString(m_session->source().name())),
+            6000);
+    }
+    for (const core::Mode mode : core::kModes) showMode(mode);
+    const auto& device = m_session->source();
+    m_plot->setSource(m_session->buffer(), device.channels(), device.nominalSampleRate_hz());
+    m_session->start();
 
-    const QString name = QString::fromStdString(m_acquisition->source().name());
+    const QString name = QString::fromStdString(device.name());
     setWindowTitle(tr("Tactiscope — %1").arg(name));
     m_deviceLabel->setText(name);
     m_devicePanel->setConnected(true, name);
-    m_rawConsole->setSource(&m_acquisition->source());
+    m_rawConsole->setSource(&device);
     updateStatus();
     m_statusTimer.start();
     m_sessionBar->setRecordEnabled(true);
@@ -1000,21 +891,12 @@ void MainWindow::disconnectSource()
     stopRecording();  // the user ended the session by disconnecting
     m_statusTimer.stop();
     m_rawConsole->setSource(nullptr);  // before the source goes
-    if (m_acquisition) m_acquisition->stop();
     m_plot->clearSource();
-    m_acquisition.reset();
-    m_tap.reset();
-    m_detection.reset();
-    m_palpation.reset();
-    m_capacitive.reset();
-    m_palpationSlot.reset();
-    m_capacitiveSlot.reset();
-    m_modeCalibrations.clear();
-    m_buffer.reset();
-    m_loadRig.reset();
     m_panelScan->setDetection(nullptr, 0.0);
     m_palpationView->setPalpation(nullptr, 0.0, QString());
     m_capacitiveView->setCapacitive(nullptr, 0.0, QString(), QString());
+    m_session.reset();
+    m_loadRig.reset();
     showModeView();
     setWindowTitle(tr("Tactiscope"));
     m_deviceLabel->setText(tr("No device"));
@@ -1025,8 +907,8 @@ void MainWindow::disconnectSource()
 
 void MainWindow::updateStatus()
 {
-    if (!m_acquisition) return;
-    const LinkCounters counters = linkCounters(m_acquisition->stats(), m_acquisition->source());
+    if (!m_session) return;
+    const LinkCounters counters = linkCounters(m_session->stats(), m_session->source());
     m_devicePanel->showCounters(counters);
     QString link = counters.state;
     if (counters.rate_hz) link += tr(" · %1 Hz").arg(QLocale().toString(*counters.rate_hz, 'f', 1));
@@ -1034,8 +916,11 @@ void MainWindow::updateStatus()
         link += tr(" · %1 lost").arg(QLocale().toString(static_cast<qulonglong>(counters.samplesLost)));
     m_linkLabel->setText(link);
     m_linkLabel->setStyleSheet(counters.healthy ? QString() : QStringLiteral("color: #c62828; font-weight: 600;"));
-    takeDetectorEvents();
-    takePalpationReadings();
+    // The site first: a press completed in this poll was taken there.
+    m_session->setSite(m_palpationView->siteGrid()->currentSite().toStdString());
+    if (const auto stopped = m_session->poll()) recordingEnded(*stopped);  // the disk stopped it
+    m_panelScan->showDefects(m_session->panelDefects());
+    m_palpationView->showPresses(m_session->presses());
     m_palpationView->updateReadout();
     m_capacitiveView->updateReadouts();
     updateRecording();

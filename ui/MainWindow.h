@@ -4,12 +4,14 @@
 // name, its state, the measured sample rate, the samples received and what
 // is being recorded.
 //
-// The window owns the device's Acquisition (a worker thread) and the
-// LiveBuffer between them; it only reads counters and buffered samples, so
-// the GUI never waits on the device.
+// The window owns one live-session controller (devices/session/LiveSession)
+// per connected device and only wires widgets to it: the controller runs the
+// acquisition, the mode processors and the recording, and decides what is
+// allowed; the window shows what it says, so the GUI never waits on the
+// device.
 #pragma once
 
-#include "core/sensors/SensorProfile.h"
+#include "core/Vocabulary.h"
 #include "core/storage/SessionStore.h"
 #include "devices/BlockSource.h"
 #include "devices/ReconnectingSource.h"
@@ -30,29 +32,13 @@ class QDockWidget;
 class QLabel;
 class QStackedWidget;
 
-namespace tactiscope::devices {
-class Acquisition;
-}
-namespace tactiscope::core {
-class LiveBuffer;
-class SinkSlot;
-}  // namespace tactiscope::core
 namespace tactiscope::devices::simulator {
 class LoadRig;
 }
-namespace tactiscope::core::storage {
-class Recorder;
-class RecordingTap;
-}  // namespace tactiscope::core::storage
-namespace tactiscope::core::detector {
-class LiveDetection;
-}  // namespace tactiscope::core::detector
-namespace tactiscope::core::compliance {
-class LivePalpation;
-}  // namespace tactiscope::core::compliance
-namespace tactiscope::core::capacitive {
-class LiveCapacitive;
-}  // namespace tactiscope::core::capacitive
+namespace tactiscope::devices::session {
+class LiveSession;
+struct RecordingSummary;
+}  // namespace tactiscope::devices::session
 
 namespace tactiscope::ui {
 
@@ -82,7 +68,7 @@ public:
     // device is reopened automatically after an unplug.
     void connectDevice(const QString& label, devices::ReconnectingSource::Opener opener);
     void disconnectSource();
-    bool isConnected() const { return m_acquisition != nullptr; }
+    bool isConnected() const { return m_session != nullptr; }
     bool isConnecting() const { return m_connectingLabel.has_value(); }
 
     LivePlotWidget* livePlot() const { return m_plot; }
@@ -99,9 +85,13 @@ public:
     QString storePath() const { return m_storePath; }
     bool startRecording();
     void stopRecording();
-    bool isRecording() const { return m_recorder != nullptr; }
-    // "panel-scan", "palpation" or "capacitive"; false for another name.
-    bool setMode(const QString& mode);
+    bool isRecording() const;
+    // The session's mode; false (and a message naming the channels it
+    // needs) when the connected device cannot feed it.
+    bool setMode(core::Mode mode);
+    core::Mode mode() const;
+    // The controller of the connected device; null when none is.
+    devices::session::LiveSession* liveSession() const { return m_session.get(); }
     // Reports, once, sessions of the store that a crash cut short.
     void reportInterruptedSessions();
     // A timestamped marker in the session being recorded.
@@ -135,24 +125,21 @@ private:
     void showProblem(const QString& title, const QString& text, const QString& detail,
                      const QString& objectName = QStringLiteral("problemBox"));
     void restoreSettings();
+    // The bar's mode changed: the controller agrees, or the bar goes back.
+    void modeChosen();
     void showModeView();
     void showModeXY(const QWidget* view);
-    void takeDetectorEvents();
     void addMarker(double time_s, const QString& note);
-    core::sensors::SensorProfile modeProfile(const std::string& mode);
-    // Rebuilds the mode's processor on its newly chosen profile.
+    // The mode's processor reads the newly chosen profile.
     void applyProfile(const QString& mode);
-    void lockProfiles();  // while recording
-    void attachDetection(const std::vector<std::size_t>& strain, double rate_hz);
-    void attachPalpation(const std::vector<core::ChannelDescriptor>& channels, double rate_hz);
-    void takePalpationReadings();
-    void attachCapacitive(const std::vector<core::ChannelDescriptor>& channels, double rate_hz);
+    void showMode(core::Mode mode);  // the views of a mode, with its probe and calibrations
+    void lockProfiles();             // while recording
     // A calibration wizard on the connected device ("gauge" or "capacitive").
     void calibrate(const QString& which);
     void connectSimulator(const std::string& scenario);
-    void linkCalibration(std::int64_t session, std::int64_t calibration);
-    void tare();  // the visible mode's zero
-    void askVerdict(std::int64_t session, double end_s, int defects, const QString& verdict);
+    void tare();  // the mode's zero, when its rule allows
+    void recordingEnded(const devices::session::RecordingSummary& summary);
+    void askVerdict(std::int64_t session, double end_s, int defects, core::Verdict verdict);
     void saveSettings() const;
 
     LivePlotWidget* m_plot = nullptr;
@@ -173,23 +160,9 @@ private:
     QLabel* m_deviceLabel = nullptr;
     QLabel* m_linkLabel = nullptr;  // state, rate and losses in one line
     QTimer m_statusTimer;
-    std::unique_ptr<devices::Acquisition> m_acquisition;
-    std::shared_ptr<core::storage::RecordingTap> m_tap;              // on every acquisition
-    std::shared_ptr<core::detector::LiveDetection> m_detection;      // when the probe has two strain channels
-    std::shared_ptr<core::compliance::LivePalpation> m_palpation;    // when it is a compliance probe
-    std::shared_ptr<core::capacitive::LiveCapacitive> m_capacitive;  // when it has a capacitance channel
-    // Where those two sit on the acquisition: a new profile swaps them live.
-    std::shared_ptr<core::SinkSlot> m_palpationSlot;
-    std::shared_ptr<core::SinkSlot> m_capacitiveSlot;
-    // The calibrations each mode's processor reads with ("palpation": the
-    // beams' gauge factors, "capacitive": C0 and sensitivity), stored with
-    // every session recorded in that mode.
-    std::map<std::string, std::vector<core::storage::StoredCalibration>> m_modeCalibrations;
-    std::shared_ptr<core::LiveBuffer> m_buffer;              // every channel, for the display and the wizards
-    std::shared_ptr<devices::simulator::LoadRig> m_loadRig;  // when the simulator is a calibration rig
-    std::shared_ptr<core::storage::Recorder> m_recorder;     // while recording
+    std::unique_ptr<devices::session::LiveSession> m_session;  // of the connected device
+    std::shared_ptr<devices::simulator::LoadRig> m_loadRig;    // when the simulator is a calibration rig
     QString m_storePath;
-    std::map<std::string, std::string> m_modeProfiles;  // mode → JSON of the profile its view uses
     std::optional<QString> m_connectingLabel;
     std::uint64_t m_connectAttempt = 0;  // a newer attempt or a disconnect drops older results
     // One per connect attempt, so a new attempt never waits for an old

@@ -94,7 +94,8 @@ PalpationView::PalpationView(QWidget* parent)
     m_probe->setTextFormat(Qt::RichText);
     connect(m_probe, &QLabel::linkActivated, this, &PalpationView::profilesRequested);
     m_tare->setMinimumHeight(40);
-    m_tare->setToolTip(tr("Lift the probe, then tare: the next half second becomes the zero"));
+    m_tare->setToolTip(
+        tr("With the probe lifted and still: the last half second becomes the zero (refused while pressing)"));
     m_scale->setTissues(builtInTissues());
 
     m_presses->setHorizontalHeaderLabels(
@@ -123,7 +124,7 @@ PalpationView::PalpationView(QWidget* parent)
     layout->addLayout(readout, 3);
     layout->addLayout(presses, 4);
 
-    connect(m_tare, &QPushButton::clicked, this, &PalpationView::tare);
+    connect(m_tare, &QPushButton::clicked, this, &PalpationView::tareRequested);
     startSubject();
 }
 
@@ -163,11 +164,6 @@ void PalpationView::resizeEvent(QResizeEvent* event)
     m_stiffness->setFont(font);
 }
 
-void PalpationView::tare()
-{
-    if (m_palpation) m_palpation->tare();
-}
-
 void PalpationView::updateReadout()
 {
     if (!m_palpation) return;
@@ -187,13 +183,14 @@ void PalpationView::updateReadout()
     }
 }
 
-std::vector<SiteReading> PalpationView::takeNewReadings()
+void PalpationView::showPresses(const std::vector<devices::session::PressRecord>& presses)
 {
-    if (!m_palpation) return {};
-    std::vector<SiteReading> taken;
+    if (presses.size() < static_cast<std::size_t>(m_presses->rowCount())) startSubject();
+    if (presses.size() == static_cast<std::size_t>(m_presses->rowCount())) return;
     const QLocale locale;
-    for (const auto& press : m_palpation->takeReadings()) {
-        SiteReading reading{press, m_grid->currentSite()};
+    for (auto record = presses.begin() + m_presses->rowCount(); record != presses.end(); ++record) {
+        const auto& press = record->press;
+        const QString site = QString::fromStdString(record->site);
         const bool inRange = press.stiffness.range == core::sensors::ComplianceRange::InRange;
         const double k = press.stiffness.objectStiffness_n_per_m;
         const int row = m_presses->rowCount();
@@ -208,7 +205,7 @@ std::vector<SiteReading> PalpationView::takeNewReadings()
                                                 locale.toString(press.displacementMax_m * 1e3, 'f', 2)),
                                 inRange ? locale.toString(press.displacementSlope_n_per_m_per_m * 1e-3, 'f', 2)
                                         : tr("—"),
-                                reading.site.isEmpty() ? tr("—") : reading.site};
+                                site.isEmpty() ? tr("—") : site};
         for (int c = 0; c < cells.size(); ++c) m_presses->setItem(row, c, new QTableWidgetItem(cells[c]));
         if (inRange) {
             m_stiffness->setText(stiffnessText(k, press.standardError_n_per_m));
@@ -218,10 +215,8 @@ std::vector<SiteReading> PalpationView::takeNewReadings()
             m_stiffness->setText(outOfRange);
             m_scale->setReading(std::nullopt);
         }
-        taken.push_back(std::move(reading));
     }
-    if (!taken.empty()) m_presses->scrollToBottom();
-    return taken;
+    m_presses->scrollToBottom();
 }
 
 void PalpationView::startSubject()

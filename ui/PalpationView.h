@@ -7,6 +7,7 @@
 #pragma once
 
 #include "core/compliance/LivePalpation.h"
+#include "devices/session/LiveSession.h"
 
 #include <QString>
 #include <QWidget>
@@ -24,12 +25,6 @@ class LivePlotWidget;
 class SiteGridMap;
 class StiffnessScale;
 
-// A completed press and the site it was taken at (empty without a grid map).
-struct SiteReading {
-    core::compliance::PressReading press;
-    QString site;
-};
-
 class PalpationView : public QWidget {
     Q_OBJECT
 
@@ -43,26 +38,25 @@ public:
                       const QString& probeName, const QString& calibration = {});
     // Refreshes the large readout; called by the main window's timer.
     void updateReadout();
-    // Takes the presses completed since the last call into the list, the
-    // scale and the grid, and returns them (the main window stores them).
-    std::vector<SiteReading> takeNewReadings();
-    // A new recording: empties the list (the grid map stays: same phantom).
-    void startSubject();
+    // Shows the session's presses: rows, the scale and the grid for those
+    // not listed yet; a shorter list is a new subject (the grid map stays:
+    // same phantom). The grid then selects the next site.
+    void showPresses(const std::vector<devices::session::PressRecord>& presses);
     int readingCount() const;
 
     LivePlotWidget* lanes() const { return m_lanes; }
     SiteGridMap* siteGrid() const { return m_grid; }
 
-public slots:
-    void tare();
-
 signals:
     void profilesRequested();  // the probe line's "Change…" link
+    void tareRequested();      // the tare button
 
 protected:
     void resizeEvent(QResizeEvent* event) override;
 
 private:
+    void startSubject();
+
     std::shared_ptr<core::compliance::LivePalpation> m_palpation;
     LivePlotWidget* m_lanes = nullptr;
     QLabel* m_probe = nullptr;

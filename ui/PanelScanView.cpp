@@ -3,6 +3,7 @@
 
 #include "ui/LivePlotWidget.h"
 #include "ui/VerdictDialog.h"
+#include "ui/VocabularyText.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -197,12 +198,14 @@ void PanelScanView::applySettings()
     }
 }
 
-std::vector<core::detector::DefectEvent> PanelScanView::takeNewEvents()
+void PanelScanView::showDefects(const std::vector<core::detector::DefectEvent>& defects)
 {
-    if (!m_detection) return {};
-    auto events = m_detection->takeEvents();
+    const auto listed = static_cast<std::size_t>(m_events->rowCount());
+    if (defects.size() < listed) startPanel();
+    if (defects.size() == static_cast<std::size_t>(m_events->rowCount())) return;
     const QLocale locale;
-    for (const auto& e : events) {
+    for (auto it = defects.begin() + m_events->rowCount(); it != defects.end(); ++it) {
+        const auto& e = *it;
         const int row = m_events->rowCount();
         m_events->insertRow(row);
         const QStringList cells{locale.toString(e.start_s, 'f', 2), order(e.direction),
@@ -211,11 +214,8 @@ std::vector<core::detector::DefectEvent> PanelScanView::takeNewEvents()
         for (int c = 0; c < cells.size(); ++c) m_events->setItem(row, c, new QTableWidgetItem(cells[c]));
         raiseAlarm(e);
     }
-    if (!events.empty()) {
-        m_events->scrollToBottom();
-        m_countLabel->setText(tr("%1 on this panel — %2").arg(defectCountText(defectCount()), verdict()));
-    }
-    return events;
+    m_events->scrollToBottom();
+    m_countLabel->setText(tr("%1 on this panel — %2").arg(defectCountText(defectCount()), verdictText()));
 }
 
 void PanelScanView::raiseAlarm(const core::detector::DefectEvent& event)
@@ -235,7 +235,7 @@ void PanelScanView::calmAlarm()
 void PanelScanView::startPanel()
 {
     m_events->setRowCount(0);
-    m_countLabel->setText(tr("No defect on this panel yet — %1").arg(verdict()));
+    m_countLabel->setText(tr("No defect on this panel yet — %1").arg(verdictText()));
 }
 
 int PanelScanView::defectCount() const
@@ -243,9 +243,9 @@ int PanelScanView::defectCount() const
     return m_events->rowCount();  // one row per defect of this panel
 }
 
-QString PanelScanView::verdict() const
+QString PanelScanView::verdictText() const
 {
-    return defectCount() == 0 ? VerdictDialog::passVerdict() : VerdictDialog::defectsVerdict();
+    return wordText(core::automaticVerdict(static_cast<std::size_t>(defectCount())));
 }
 
 }  // namespace tactiscope::ui

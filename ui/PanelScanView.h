@@ -32,17 +32,15 @@ public:
 
     // Shows `detection`'s output and edits its settings; null detaches.
     void setDetection(std::shared_ptr<core::detector::LiveDetection> detection, double sampleRate_hz);
-    // Takes the defects found since the last call into the list, raises the
-    // alarm for them and returns them (the main window stores them).
-    std::vector<core::detector::DefectEvent> takeNewEvents();
-    // A new panel: empties the list and the count.
-    void startPanel();
+    // Shows the panel's defects (the live session's list): rows for those
+    // not listed yet, with the alarm; a shorter list is a new panel.
+    void showDefects(const std::vector<core::detector::DefectEvent>& defects);
     int defectCount() const;
-    // "pass" or "defects found", from the count.
-    QString verdict() const;
     LivePlotWidget* lanes() const { return m_lanes; }
 
 private:
+    void startPanel();
+    QString verdictText() const;  // the automatic verdict of the rows listed
     void applySettings();
     void showSettings(const core::detector::LiveDetectionSettings& settings);
     void raiseAlarm(const core::detector::DefectEvent& event);

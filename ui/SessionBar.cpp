@@ -1,6 +1,8 @@
 // SessionBar: layout, the record button's two faces, elapsed time.
 #include "ui/SessionBar.h"
 
+#include "ui/VocabularyText.h"
+
 #include <QComboBox>
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -38,9 +40,7 @@ SessionBar::SessionBar(QWidget* parent)
     m_elapsed->setObjectName(QStringLiteral("elapsedLabel"));
     m_store->setObjectName(QStringLiteral("storeLabel"));
 
-    m_mode->addItem(tr("Panel scan"), QStringLiteral("panel-scan"));
-    m_mode->addItem(tr("Palpation"), QStringLiteral("palpation"));
-    m_mode->addItem(tr("Capacitive"), QStringLiteral("capacitive"));
+    for (const core::Mode mode : core::kModes) m_mode->addItem(modeTitle(mode), static_cast<int>(mode));
     m_subject->setPlaceholderText(tr("panel or phantom id"));
     m_operator->setPlaceholderText(tr("your name"));
     m_subject->setMinimumWidth(160);
@@ -87,7 +87,7 @@ SessionBar::SessionBar(QWidget* parent)
 core::storage::SessionMetadata SessionBar::metadata() const
 {
     core::storage::SessionMetadata m;
-    m.mode = m_mode->currentData().toString().toStdString();
+    m.mode = static_cast<core::Mode>(m_mode->currentData().toInt());
     m.subject = m_subject->text().trimmed().toStdString();
     m.operatorName = m_operator->text().trimmed().toStdString();
     return m;
@@ -95,16 +95,14 @@ core::storage::SessionMetadata SessionBar::metadata() const
 
 void SessionBar::setMetadata(const core::storage::SessionMetadata& metadata)
 {
-    setMode(QString::fromStdString(metadata.mode));
+    setMode(metadata.mode);
     m_subject->setText(QString::fromStdString(metadata.subject));
     m_operator->setText(QString::fromStdString(metadata.operatorName));
 }
 
-bool SessionBar::setMode(const QString& mode)
+void SessionBar::setMode(core::Mode mode)
 {
-    const int index = m_mode->findData(mode);
-    if (index >= 0) m_mode->setCurrentIndex(index);
-    return index >= 0;
+    m_mode->setCurrentIndex(m_mode->findData(static_cast<int>(mode)));
 }
 
 void SessionBar::setRecordEnabled(bool enabled)

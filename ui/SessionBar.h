@@ -25,8 +25,7 @@ public:
     // Mode, subject and operator as typed (trimmed).
     core::storage::SessionMetadata metadata() const;
     void setMetadata(const core::storage::SessionMetadata& metadata);
-    // False, and nothing changes, for an unknown mode.
-    bool setMode(const QString& mode);
+    void setMode(core::Mode mode);
 
     void setRecordEnabled(bool enabled);  // a device is streaming
     void setRecording(bool recording);

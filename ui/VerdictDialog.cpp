@@ -1,6 +1,8 @@
 // VerdictDialog: three answers and a note.
 #include "ui/VerdictDialog.h"
 
+#include "ui/VocabularyText.h"
+
 #include <QDialogButtonBox>
 #include <QLabel>
 #include <QLineEdit>
@@ -9,7 +11,7 @@
 
 namespace tactiscope::ui {
 
-VerdictDialog::VerdictDialog(int defects, const QString& verdict, QWidget* parent)
+VerdictDialog::VerdictDialog(int defects, core::Verdict verdict, QWidget* parent)
     : QDialog(parent),
       m_note(new QLineEdit(this))
 {
@@ -17,7 +19,8 @@ VerdictDialog::VerdictDialog(int defects, const QString& verdict, QWidget* paren
     setWindowTitle(tr("Panel verdict"));
     setAttribute(Qt::WA_DeleteOnClose);
     setModal(false);
-    auto* summary = new QLabel(tr("%1 found: the verdict is \"%2\".").arg(defectCountText(defects), verdict), this);
+    auto* summary =
+        new QLabel(tr("%1 found: the verdict is \"%2\".").arg(defectCountText(defects), wordText(verdict)), this);
     QFont bold = summary->font();
     bold.setBold(true);
     summary->setFont(bold);
@@ -29,13 +32,13 @@ VerdictDialog::VerdictDialog(int defects, const QString& verdict, QWidget* paren
     auto* buttons = new QDialogButtonBox(this);
     QPushButton* pass = buttons->addButton(tr("Pass"), QDialogButtonBox::ActionRole);
     QPushButton* defective = buttons->addButton(tr("Defects found"), QDialogButtonBox::ActionRole);
-    QPushButton* keep = buttons->addButton(tr("Keep \"%1\"").arg(verdict), QDialogButtonBox::AcceptRole);
+    QPushButton* keep = buttons->addButton(tr("Keep \"%1\"").arg(wordText(verdict)), QDialogButtonBox::AcceptRole);
     pass->setObjectName(QStringLiteral("passButton"));
     defective->setObjectName(QStringLiteral("defectsButton"));
     keep->setObjectName(QStringLiteral("keepButton"));
     keep->setDefault(true);
-    connect(pass, &QPushButton::clicked, this, [this] { decide(passVerdict()); });
-    connect(defective, &QPushButton::clicked, this, [this] { decide(defectsVerdict()); });
+    connect(pass, &QPushButton::clicked, this, [this] { decide(core::Verdict::Pass); });
+    connect(defective, &QPushButton::clicked, this, [this] { decide(core::Verdict::DefectsFound); });
     connect(keep, &QPushButton::clicked, this, [this, verdict] { decide(verdict); });
 
     auto* layout = new QVBoxLayout(this);
@@ -50,7 +53,7 @@ QString defectCountText(int defects)
     return defects == 1 ? VerdictDialog::tr("1 defect") : VerdictDialog::tr("%1 defects").arg(defects);
 }
 
-void VerdictDialog::decide(const QString& verdict)
+void VerdictDialog::decide(core::Verdict verdict)
 {
     emit decided(verdict, m_note->text().trimmed());
     close();

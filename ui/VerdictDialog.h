@@ -4,6 +4,8 @@
 // line goes on while it waits, and the automatic verdict is already stored.
 #pragma once
 
+#include "core/Vocabulary.h"
+
 #include <QDialog>
 #include <QString>
 
@@ -15,18 +17,14 @@ class VerdictDialog : public QDialog {
     Q_OBJECT
 
 public:
-    VerdictDialog(int defects, const QString& verdict, QWidget* parent = nullptr);
-
-    // Stored as they are, untranslated: filters and reports read them.
-    static QString passVerdict() { return QStringLiteral("pass"); }
-    static QString defectsVerdict() { return QStringLiteral("defects found"); }
+    VerdictDialog(int defects, core::Verdict verdict, QWidget* parent = nullptr);
 
 signals:
     // The verdict chosen (the same one when kept) and the note, maybe empty.
-    void decided(const QString& verdict, const QString& note);
+    void decided(core::Verdict verdict, const QString& note);
 
 private:
-    void decide(const QString& verdict);
+    void decide(core::Verdict verdict);
 
     QLineEdit* m_note;
 };

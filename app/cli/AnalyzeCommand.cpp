@@ -82,10 +82,10 @@ int runAnalyze(const QStringList& arguments)
             return usageError(
                 QStringLiteral("no session '%1' in the store").arg(parser.value(QStringLiteral("session"))), usage);
         const auto summary = *store.session(*id);
-        if (summary.metadata.mode != "panel-scan")
+        if (summary.metadata.mode != core::Mode::PanelScan)
             return usageError(QStringLiteral("session %1 is a %2 session; analyze runs the panel-scan detector")
                                   .arg(*id)
-                                  .arg(toQString(summary.metadata.mode)),
+                                  .arg(toQString(core::toString(summary.metadata.mode))),
                               usage);
         const auto channels = store.channels(*id);
         std::vector<std::size_t> picked;

@@ -89,4 +89,19 @@ QString toQString(std::string_view text)
     return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
 }
 
+QString modeOptionText(const QString& more)
+{
+    return toQString(core::modeChoices()) + QStringLiteral(" ") + more;
+}
+
+std::optional<core::Mode> parseMode(const QString& text)
+{
+    return core::modeFromString(text.toStdString());
+}
+
+QString modeUsageError()
+{
+    return QStringLiteral("--mode must be %1").arg(toQString(core::modeChoices()));
+}
+
 }  // namespace tactiscope::cli

@@ -2,6 +2,7 @@
 // lines on stderr, and conversions between Qt and standard strings.
 #pragma once
 
+#include "core/Vocabulary.h"
 #include "devices/PortSource.h"
 
 #include <QCommandLineParser>
@@ -41,6 +42,12 @@ bool stopRequested();
 // --protocol: "binary" (also when empty, the default) or "text"; nothing
 // for anything else.
 std::optional<devices::WireProtocol> parseWireProtocol(const QString& text);
+
+// --mode: the option's description ("panel-scan, palpation or capacitive"
+// with `more` after it) and its value; nothing for an unknown mode.
+QString modeOptionText(const QString& more);
+std::optional<core::Mode> parseMode(const QString& text);
+QString modeUsageError();  // "--mode must be panel-scan, palpation or capacitive"
 
 // A finite number, or nothing when `text` is not one.
 std::optional<double> parseNumber(const QString& text);

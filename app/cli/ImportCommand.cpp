@@ -29,7 +29,7 @@ int runImport(const QStringList& arguments)
         {QStringLiteral("time-column"), QStringLiteral("The time column (seconds)."), QStringLiteral("NAME")},
         {QStringLiteral("columns"), QStringLiteral("Data columns to import, in order (default: all but time)."),
          QStringLiteral("A,B,…")},
-        {QStringLiteral("mode"), QStringLiteral("panel-scan (default), palpation or capacitive."),
+        {QStringLiteral("mode"), modeOptionText(QStringLiteral("(default: the metadata file's, else panel-scan).")),
          QStringLiteral("MODE")},
         {QStringLiteral("subject"), QStringLiteral("Panel or phantom id."), QStringLiteral("ID")},
         {QStringLiteral("operator"), QStringLiteral("Who recorded it."), QStringLiteral("NAME")},
@@ -54,10 +54,10 @@ int runImport(const QStringList& arguments)
             options.columns.push_back(column.trimmed().toStdString());
     }
     auto& metadata = options.metadata;
-    metadata.mode = parser.value(QStringLiteral("mode")).toStdString();
-    if (!metadata.mode.empty() && metadata.mode != "panel-scan" && metadata.mode != "palpation" &&
-        metadata.mode != "capacitive")
-        return usageError(QStringLiteral("--mode must be panel-scan, palpation or capacitive"), usage);
+    if (parser.isSet(QStringLiteral("mode"))) {
+        options.mode = parseMode(parser.value(QStringLiteral("mode")));
+        if (!options.mode) return usageError(modeUsageError(), usage);
+    }
     metadata.subject = parser.value(QStringLiteral("subject")).toStdString();
     metadata.operatorName = parser.value(QStringLiteral("operator")).toStdString();
     metadata.notes = parser.value(QStringLiteral("notes")).toStdString();

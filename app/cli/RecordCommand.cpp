@@ -1,12 +1,13 @@
-// The record subcommand: options, the device with reconnection, the
-// recorder, and the summary.
+// The record subcommand: options, the device with reconnection, and the
+// live-session controller the GUI uses too (devices/session/LiveSession),
+// so a recording from here stores what the workstation would; the summary.
 #include "RecordCommand.h"
 
 #include "CliSupport.h"
-#include "core/storage/Recorder.h"
+#include "core/sensors/SensorProfile.h"
 #include "core/storage/RecorderLock.h"
-#include "devices/Acquisition.h"
 #include "devices/ReconnectingSource.h"
+#include "devices/session/LiveSession.h"
 #include "devices/transport/SerialPorts.h"
 
 #include <QLocale>
@@ -22,7 +23,6 @@ namespace tactiscope::cli {
 namespace {
 
 constexpr int kDefaultBaud = 921600;
-constexpr double kQueueSeconds = 30.0;  // the recorder's memory bound, in time
 
 // The USB serial number of the port behind `path` (a link is followed), so a
 // replugged probe is found again even under another name.
@@ -37,6 +37,33 @@ std::string usbSerialOf(const std::string& path)
     return {};
 }
 
+// What the mode's analysis stored, after the samples: "3 defects stored,
+// verdict defects found", "5 stiffness readings stored", "calibration: …".
+QString analysisSummary(const devices::session::LiveSession& session, const devices::session::RecordingSummary& summary)
+{
+    const auto count = [](std::size_t n, const char* one, const char* many) {
+        return QStringLiteral("%1 %2").arg(n).arg(QLatin1String(n == 1 ? one : many));
+    };
+    switch (session.recordingMetadata().mode) {
+    case core::Mode::PanelScan:
+        return QStringLiteral("panel-scan: %1 stored, verdict %2")
+            .arg(count(summary.defects, "defect", "defects"), toQString(core::verdictText(summary.verdict)));
+    case core::Mode::Palpation: {
+        std::size_t stored = 0;
+        for (const auto& press : session.presses()) stored += press.stored ? 1 : 0;
+        return QStringLiteral("palpation: %1 stored").arg(count(stored, "stiffness reading", "stiffness readings"));
+    }
+    case core::Mode::Capacitive: {
+        const auto& used = session.calibrations(core::Mode::Capacitive);
+        return QStringLiteral("capacitive: calibration %1")
+            .arg(used.empty()
+                     ? QStringLiteral("none (the beam model)")
+                     : toQString(used.front().record.timestampUtc + " by " + used.front().record.operatorName));
+    }
+    }
+    return {};
+}
+
 }  // namespace
 
 int runRecord(const QStringList& arguments)
@@ -44,7 +71,9 @@ int runRecord(const QStringList& arguments)
     const QString name = QStringLiteral("record");
     QCommandLineParser parser;
     parser.setApplicationDescription(
-        QStringLiteral("Record a probe on a serial port into a session store, until --seconds or Ctrl-C.\n"
+        QStringLiteral("Record a probe on a serial port into a session store, until --seconds or Ctrl-C, running\n"
+                       "the mode's analysis as the workstation does: a panel scan stores its defects and\n"
+                       "verdict, a palpation its stiffness readings, every session its profile and calibrations.\n"
                        "An unplugged probe is waited for and the gap is marked in the recording."));
     parser.addOptions({
         {QStringLiteral("port"), QStringLiteral("Serial port or link to it (required)."), QStringLiteral("PATH")},
@@ -59,8 +88,11 @@ int runRecord(const QStringList& arguments)
          QStringLiteral("FILE")},
         {QStringLiteral("subject"), QStringLiteral("Panel or phantom id."), QStringLiteral("ID")},
         {QStringLiteral("operator"), QStringLiteral("Who records."), QStringLiteral("NAME")},
-        {QStringLiteral("mode"), QStringLiteral("panel-scan (default), palpation or capacitive."),
+        {QStringLiteral("mode"), modeOptionText(QStringLiteral("(default: the device's own, from its channels).")),
          QStringLiteral("MODE")},
+        {QStringLiteral("profile"),
+         QStringLiteral("Sensor profile (JSON) for palpation or capacitive (default: the paper's, built in)."),
+         QStringLiteral("FILE")},
     });
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
@@ -92,11 +124,21 @@ int runRecord(const QStringList& arguments)
         if (!seconds || *seconds <= 0.0)
             return usageError(QStringLiteral("--seconds must be a positive number"), usage);
     }
+    std::optional<core::Mode> mode;
+    if (parser.isSet(QStringLiteral("mode"))) {
+        mode = parseMode(parser.value(QStringLiteral("mode")));
+        if (!mode) return usageError(modeUsageError(), usage);
+    }
+    std::optional<core::sensors::SensorProfile> profile;
+    if (parser.isSet(QStringLiteral("profile"))) {
+        try {
+            profile = core::sensors::loadSensorProfile(parser.value(QStringLiteral("profile")).toStdString());
+        } catch (const core::sensors::ProfileError& e) {
+            printError(QStringLiteral("bad profile: %1").arg(QString::fromStdString(e.what())));
+            return kExitUsage;
+        }
+    }
     core::storage::SessionMetadata metadata;
-    metadata.mode = parser.isSet(QStringLiteral("mode")) ? parser.value(QStringLiteral("mode")).toStdString()
-                                                         : std::string("panel-scan");
-    if (metadata.mode != "panel-scan" && metadata.mode != "palpation" && metadata.mode != "capacitive")
-        return usageError(QStringLiteral("--mode must be panel-scan, palpation or capacitive"), usage);
     metadata.subject = parser.value(QStringLiteral("subject")).toStdString();
     metadata.operatorName = parser.value(QStringLiteral("operator")).toStdString();
 
@@ -110,20 +152,13 @@ int runRecord(const QStringList& arguments)
         return kExitUsage;
     }
 
-    // The first connection is made here, to read the device's identity;
-    // the reconnecting source takes it over and reopens it after an unplug.
+    // The first connection is made here, to know the device before the
+    // recording; the reconnecting source takes it over and reopens it after
+    // an unplug.
     const auto reopen = devices::serialOpener(port, usbSerialOf(port), baud, options);
     std::unique_ptr<devices::BlockSource> first;
     try {
-        auto source = reopen();
-        if (const auto* portSource = dynamic_cast<const devices::PortSource*>(source.get())) {
-            if (const auto info = portSource->deviceInfo()) {
-                metadata.deviceModel = info->vendor + " " + info->model;
-                metadata.deviceSerial = info->serialNumber;
-                metadata.deviceFirmware = info->firmwareVersion;
-            }
-        }
-        first = std::move(source);
+        first = reopen();
     } catch (const std::exception& e) {
         printError(QString::fromStdString(e.what()));
         return kExitFailure;
@@ -137,50 +172,68 @@ int runRecord(const QStringList& arguments)
     auto handover = std::make_shared<std::unique_ptr<devices::BlockSource>>(std::move(first));
     auto source = std::make_unique<devices::ReconnectingSource>(
         [handover, reopen] { return *handover ? std::move(*handover) : reopen(); });
+    const auto* device = source.get();
 
-    std::shared_ptr<core::storage::Recorder> recorder;
-    try {
-        recorder = std::make_shared<core::storage::Recorder>(
-            db, metadata, channels, rate_hz, static_cast<std::uint64_t>(std::ceil(kQueueSeconds * rate_hz)));
-    } catch (const core::storage::StorageError& e) {
-        printError(QString::fromStdString(e.what()));
+    devices::session::LiveSessionOptions sessionOptions;
+    sessionOptions.storePath = db;
+    devices::session::LiveSession session(std::move(source), sessionOptions);
+    // The mode asked for must run on the device; without one, the device's own.
+    if (!mode) mode = session.declaredMode();
+    if (!mode) {
+        printError(QStringLiteral("the device's channels feed no mode: %1")
+                       .arg(QString::fromStdString(*session.refusalOf(core::Mode::PanelScan))));
         return kExitUsage;
     }
-    const auto* device = source.get();
-    devices::Acquisition acquisition(std::move(source));
-    acquisition.addSink(recorder);
+    if (const auto refusal = session.setMode(*mode)) {
+        printError(QStringLiteral("cannot record in this mode: %1").arg(QString::fromStdString(*refusal)));
+        return kExitUsage;
+    }
+    if (profile) {
+        if (const auto refusal = session.setProfile(*mode, std::move(*profile))) {
+            printError(QStringLiteral("bad profile: %1").arg(QString::fromStdString(*refusal)));
+            return kExitUsage;
+        }
+    }
+    for (const auto& problem : session.takeProblems()) printError(QString::fromStdString(problem));
+    // Recording from the first block: attached before the device streams.
+    if (const auto error = session.startRecording(metadata)) {
+        printError(QString::fromStdString(*error));
+        return kExitUsage;
+    }
     installStopSignals();
-    acquisition.start();
+    session.start();
 
     const bool progress = ::isatty(STDERR_FILENO) != 0;
     const auto start = std::chrono::steady_clock::now();
     auto nextProgress = start + std::chrono::seconds(5);
     QTextStream err(stderr);
+    std::optional<devices::session::RecordingSummary> summary;
     for (;;) {
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        if ((summary = session.poll())) break;  // the disk stopped it
         const auto now = std::chrono::steady_clock::now();
-        const auto state = acquisition.stats().state;
+        const auto state = session.stats().state;
         if (stopRequested() || state == devices::AcquisitionState::Finished ||
             state == devices::AcquisitionState::Failed ||
             (seconds && std::chrono::duration<double>(now - start).count() >= *seconds))
             break;
-        if (!recorder->stats().error.empty()) break;
         if (progress && now >= nextProgress) {
             nextProgress += std::chrono::seconds(5);
             err << "recording… " << std::llround(std::chrono::duration<double>(now - start).count()) << " s, "
-                << acquisition.stats().samples << " samples per channel\r" << Qt::flush;
+                << session.stats().samples << " samples per channel\r" << Qt::flush;
         }
     }
-    acquisition.stop();
-    const auto acquired = acquisition.stats();
+    const auto acquired = session.stats();
+    if (!summary) summary = session.stopRecording();
     const auto counters = device->decoderCounters();
-    const auto stored = recorder->finish(core::storage::SessionStatus::Complete);
     if (progress) err << '\n';
 
-    QTextStream(stdout) << "Recorded session " << recorder->sessionId() << ": " << stored.samplesWritten
+    const auto& stored = summary->stats;
+    QTextStream(stdout) << "Recorded session " << summary->session << ": " << stored.samplesWritten
                         << " samples per channel, " << acquired.samplesLost + stored.samplesDropped << " lost, "
                         << counters.crcErrors << " CRC errors (" << channels.size() << " channels at "
-                        << QLocale::c().toString(rate_hz) << " Hz, into " << QString::fromStdString(db) << ")\n";
+                        << QLocale::c().toString(rate_hz) << " Hz, into " << QString::fromStdString(db) << "); "
+                        << analysisSummary(session, *summary) << "\n";
     if (!stored.error.empty()) {
         printError(QString::fromStdString(stored.error));
         return kExitFailure;

@@ -29,12 +29,12 @@ int list(SessionStore& store, const core::storage::SessionFilter& filter, bool j
             out.beginObject();
             out.key("id").value(static_cast<long long>(s.id));
             out.key("uuid").value(s.uuid);
-            out.key("mode").value(s.metadata.mode);
+            out.key("mode").value(core::toString(s.metadata.mode));
             out.key("subject").value(s.metadata.subject);
             out.key("operator").value(s.metadata.operatorName);
             out.key("started_utc").value(s.startedUtc);
-            out.key("status").value(s.status);
-            out.key("verdict").value(s.verdict);
+            out.key("status").value(core::toString(s.status));
+            out.key("verdict").value(core::verdictText(s.verdict));
             out.key("duration_s").value(s.duration_s());
             out.endObject();
         }
@@ -52,8 +52,8 @@ int list(SessionStore& store, const core::storage::SessionFilter& filter, bool j
         << QString("status").leftJustified(12) << QString("duration").rightJustified(10) << "  subject / operator\n";
     for (const auto& s : sessions) {
         out << qSetFieldWidth(6) << Qt::right << s.id << qSetFieldWidth(0) << "  "
-            << toQString(s.startedUtc).leftJustified(26) << toQString(s.metadata.mode).leftJustified(11)
-            << toQString(s.status).leftJustified(12)
+            << toQString(s.startedUtc).leftJustified(26) << toQString(core::toString(s.metadata.mode)).leftJustified(11)
+            << toQString(core::toString(s.status)).leftJustified(12)
             << (QString::number(s.duration_s(), 'f', 1) + QStringLiteral(" s")).rightJustified(10) << "  "
             << toQString(s.metadata.subject) << " / " << toQString(s.metadata.operatorName) << '\n';
     }
@@ -73,15 +73,15 @@ int show(SessionStore& store, std::int64_t id, bool json)
     };
     line("id", std::to_string(s.id));
     line("uuid", s.uuid);
-    line("mode", s.metadata.mode);
+    line("mode", std::string(core::toString(s.metadata.mode)));
     line("subject", s.metadata.subject);
     line("operator", s.metadata.operatorName);
     line("site", s.metadata.site);
     line("notes", s.metadata.notes);
     line("started (UTC)", s.startedUtc);
     line("ended (UTC)", s.endedUtc);
-    line("status", s.status);
-    line("verdict", s.verdict);
+    line("status", std::string(core::toString(s.status)));
+    line("verdict", std::string(core::verdictText(s.verdict)));
     line("device", s.metadata.deviceModel + (s.metadata.deviceSerial.empty() ? "" : " " + s.metadata.deviceSerial));
     line("firmware", s.metadata.deviceFirmware);
     line("recorded by", "Tactiscope " + s.appVersion);
@@ -183,10 +183,17 @@ int runSessions(const QStringList& arguments)
             const auto value = [&](const char* option) {
                 return parser.value(QString::fromLatin1(option)).toStdString();
             };
-            filter.mode = value("mode");
+            if (parser.isSet(QStringLiteral("mode"))) {
+                filter.mode = parseMode(parser.value(QStringLiteral("mode")));
+                if (!filter.mode) return usageError(modeUsageError(), usage);
+            }
             filter.subject = value("subject");
             filter.operatorName = value("operator");
-            filter.verdict = value("verdict");
+            if (parser.isSet(QStringLiteral("verdict"))) {
+                filter.verdict = core::verdictFromString(value("verdict"));
+                if (!filter.verdict)
+                    return usageError(QStringLiteral("--verdict must be \"pass\" or \"defects found\""), usage);
+            }
             filter.startedFrom = value("from");
             filter.startedBefore = value("before");
             filter.text = value("search");

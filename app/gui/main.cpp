@@ -30,9 +30,12 @@ int main(int argc, char* argv[])
     for (const auto& id : ids) scenarios << QString::fromStdString(id);
     parser.addOptions({
         {QStringLiteral("scenario"),
-         QStringLiteral("Start on this simulator scenario: %1 (default panel-scan).").arg(scenarios.join(", ")),
-         QStringLiteral("ID"), QStringLiteral("panel-scan")},
-        {QStringLiteral("mode"), QStringLiteral("Start in this mode: panel-scan, palpation or capacitive."),
+         QStringLiteral("Start on this simulator scenario: %1 (default %2).")
+             .arg(scenarios.join(", "), QString::fromStdString(tactiscope::devices::simulator::kPanelScanScenario)),
+         QStringLiteral("ID"), QString::fromStdString(tactiscope::devices::simulator::kPanelScanScenario)},
+        {QStringLiteral("mode"),
+         QStringLiteral("Start in this mode: %1 (a scenario of another mode switches to it).")
+             .arg(QString::fromStdString(tactiscope::core::modeChoices())),
          QStringLiteral("MODE")},
         {QStringLiteral("screenshot"), QStringLiteral("Save the window as a PNG after a delay, then quit."),
          QStringLiteral("FILE")},
@@ -49,11 +52,13 @@ int main(int argc, char* argv[])
 
     tactiscope::ui::MainWindow window;
     if (parser.isSet(QStringLiteral("mode"))) {
-        if (!window.setMode(parser.value(QStringLiteral("mode")))) {
-            QTextStream(stderr) << "tactiscope: unknown mode " << parser.value(QStringLiteral("mode"))
-                                << "; one of panel-scan, palpation, capacitive\n";
+        const auto mode = tactiscope::core::modeFromString(parser.value(QStringLiteral("mode")).toStdString());
+        if (!mode) {
+            QTextStream(stderr) << "tactiscope: unknown mode " << parser.value(QStringLiteral("mode")) << "; one of "
+                                << QString::fromStdString(tactiscope::core::modeChoices()) << '\n';
             return 2;
         }
+        window.setMode(*mode);
     }
     window.connectSource(std::make_unique<tactiscope::devices::simulator::SimulatorSource>(
         tactiscope::devices::simulator::makeScenario(scenario)));

@@ -80,4 +80,9 @@ std::string utcTimestampNow()
     return text;
 }
 
+std::string beamSensorName(const std::string& probeName, bool stiffBeam)
+{
+    return probeName + (stiffBeam ? " — stiff beam" : " — soft beam");
+}
+
 }  // namespace tactiscope::core::calibration

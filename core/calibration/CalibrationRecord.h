@@ -13,8 +13,17 @@
 
 namespace tactiscope::core::calibration {
 
+// The kinds of record, as stored.
+inline constexpr std::string_view kGaugeFactorKind = "gauge_factor";  // a strain-gauged beam's gauge factor
+inline constexpr std::string_view kCapacitiveKind = "capacitive";     // the capacitive beam's C0 and sensitivity
+
+// The sensor a record belongs to. A compliance probe's two strain-gauged
+// beams are sensors of their own ("<probe> — stiff beam"), since each
+// beam's gauge has its own factor; a capacitive beam is its profile's name.
+std::string beamSensorName(const std::string& probeName, bool stiffBeam);
+
 struct CalibrationRecord {
-    std::string kind;  // "gauge_factor", "capacitive", …
+    std::string kind;  // kGaugeFactorKind, kCapacitiveKind, …
     std::string sensorName;
     std::string operatorName;
     std::string timestampUtc;  // ISO 8601, e.g. 2026-11-21T13:40:00Z

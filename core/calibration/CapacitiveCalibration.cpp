@@ -72,7 +72,7 @@ CapacitiveCalibrationResult calibrateCapacitive(const CapacitiveCalibrationInput
     };
 
     CalibrationRecord& record = r.record;
-    record.kind = "capacitive";
+    record.kind = kCapacitiveKind;
     record.sensorName = sensorName;
     record.operatorName = operatorName;
     record.timestampUtc = utcTimestampNow();

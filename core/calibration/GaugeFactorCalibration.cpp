@@ -40,7 +40,7 @@ GaugeFactorResult calibrateGaugeFactor(const sensors::CantileverBeam& beam, cons
     result.zeroCounts = zeroCounts;
 
     CalibrationRecord& r = result.record;
-    r.kind = "gauge_factor";
+    r.kind = kGaugeFactorKind;
     r.sensorName = sensorName;
     r.operatorName = operatorName;
     r.timestampUtc = utcTimestampNow();

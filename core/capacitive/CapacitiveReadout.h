@@ -54,6 +54,7 @@ public:
 
     CapacitiveReading push(double t_s, double capacitance_f);
     void tare();
+    void setBaseline(double c0_f) { m_c0_f = c0_f; }
     double c0_f() const { return m_c0_f; }
 
 private:

@@ -1,19 +1,21 @@
 // LiveCapacitive: the readout per sample, the start tare and the display block.
 #include "core/capacitive/LiveCapacitive.h"
 
+#include "core/ModeCapability.h"
 #include "core/SampleBlock.h"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
+#include <utility>
 
 namespace tactiscope::core::capacitive {
 namespace {
 
 std::size_t capacitanceChannel(const std::vector<ChannelDescriptor>& channels)
 {
-    for (std::size_t c = 0; c < channels.size(); ++c)
-        if (channels[c].kind == ChannelKind::Capacitance) return c;
-    throw std::invalid_argument("the capacitive readout needs a capacitance channel");
+    if (const auto picked = modeChannels(Mode::Capacitive, channels)) return picked->front();
+    throw std::invalid_argument(*modeRefusal(Mode::Capacitive, channels));
 }
 
 }  // namespace
@@ -24,7 +26,7 @@ StoredCapacitiveCalibration capacitiveCalibrationOf(const calibration::Calibrati
     const auto c0 = record.value("c0_pf");
     const auto perMilliNewton = record.value("sensitivity_pf_per_mn");
     const auto perMillimetre = record.value("displacement_sensitivity_pf_per_mm");
-    if (record.kind != "capacitive" || !c0 || (!perMilliNewton && !perMillimetre))
+    if (record.kind != calibration::kCapacitiveKind || !c0 || (!perMilliNewton && !perMillimetre))
         throw std::invalid_argument("not a capacitive calibration with C0 and a sensitivity");
     // pF per mN = 1e-12 F / 1e-3 N: ×1e-9 to F/N; likewise pF per mm to F/m.
     const double k = beam.stiffness_n_per_m();
@@ -40,8 +42,25 @@ LiveCapacitive::LiveCapacitive(const std::vector<ChannelDescriptor>& channels, d
     : m_channel(capacitanceChannel(channels)),
       m_output(std::make_shared<LiveBuffer>(outputChannels().size(),
                                             static_cast<std::size_t>(std::ceil(displaySeconds * sampleRate_hz)) + 1)),
+      m_noiseSigma_f(drift.noiseSigma_f),
+      m_window(std::max<std::size_t>(4, static_cast<std::size_t>(std::lround(kTare_s * sampleRate_hz)))),
       m_readout(sensitivity, drift)
 {
+}
+
+std::optional<std::string> LiveCapacitive::tare()
+{
+    const std::lock_guard lock(m_mutex);
+    if (!m_window.full()) return "wait half a second: the signal is too short to judge";
+    const double shift_f = m_window.halfShift();
+    if (m_window.halfShiftScore() > kSteadyScore && std::abs(shift_f) > 3.0 * m_noiseSigma_f) {
+        char change[32];
+        std::snprintf(change, sizeof change, "%.3f", shift_f * 1e12);
+        return std::string("the capacitance is changing (") + change +
+               " pF within half a second): wait until the load is placed or lifted and the signal settles";
+    }
+    m_pendingC0_f = m_window.mean();
+    return std::nullopt;
 }
 
 std::vector<ChannelDescriptor> LiveCapacitive::outputChannels()
@@ -52,7 +71,10 @@ std::vector<ChannelDescriptor> LiveCapacitive::outputChannels()
 void LiveCapacitive::consume(const SampleBlock& block)
 {
     if (block.empty()) return;
-    if (m_tareRequested.exchange(false)) m_readout.tare();
+    {
+        const std::lock_guard lock(m_mutex);
+        if (const auto c0 = std::exchange(m_pendingC0_f, std::nullopt)) m_readout.setBaseline(*c0);
+    }
     if (!m_firstTime_s) m_firstTime_s = block.t0_s();
     SampleBlock display(2, block.sampleCount(), block.t0_s(), block.dt_s(), block.firstSampleIndex(), block.sequence());
     CapacitiveReading reading;
@@ -69,6 +91,7 @@ void LiveCapacitive::consume(const SampleBlock& block)
     m_output->consume(display);
     const std::lock_guard lock(m_mutex);
     m_latest = reading;
+    for (std::size_t s = 0; s < block.sampleCount(); ++s) m_window.push(block.value(m_channel, s));
 }
 
 std::optional<CapacitiveReading> LiveCapacitive::latest() const

@@ -6,8 +6,10 @@
 //
 // Zero: the beam is unloaded when a stream starts, so the baseline C0 is
 // re-taken once kStartTare_s into the stream (the calibration's C0 is from
-// another day; the baseline drifts). tare() re-baselines at the next block,
-// from the readout's 0.5 s running mean.
+// another day; the baseline drifts). tare() is a rule: the mean of the last
+// kTare_s becomes C0 only when that stretch is steady (its two halves agree
+// within their noise, or within 3σ of the calibrated baseline noise), so a
+// weight being placed or lifted is never zeroed; otherwise it says why.
 #pragma once
 
 #include "core/BlockSink.h"
@@ -15,11 +17,12 @@
 #include "core/LiveBuffer.h"
 #include "core/calibration/CalibrationRecord.h"
 #include "core/capacitive/CapacitiveReadout.h"
+#include "core/signal/SteadyWindow.h"
 
-#include <atomic>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace tactiscope::core::capacitive {
@@ -40,6 +43,10 @@ StoredCapacitiveCalibration capacitiveCalibrationOf(const calibration::Calibrati
 class LiveCapacitive final : public BlockSink {
 public:
     static constexpr double kStartTare_s = 0.5;
+    static constexpr double kTare_s = 0.5;
+    // How far the halves of the tare window may differ, in standard errors
+    // of their difference: a steady noisy signal scores about 1.
+    static constexpr double kSteadyScore = 6.0;
 
     // Throws std::invalid_argument without a capacitance channel or for
     // non-positive sensitivities.
@@ -49,8 +56,9 @@ public:
     // The channels of output(): force in N, tip displacement in m.
     static std::vector<ChannelDescriptor> outputChannels();
 
-    // Any thread: re-baseline C0 at the next block.
-    void tare() { m_tareRequested = true; }
+    // Any thread: the last kTare_s's mean becomes C0 (see above); nothing
+    // when taken, else the reason, in words for the operator.
+    std::optional<std::string> tare();
 
     // Acquisition thread.
     void consume(const SampleBlock& block) override;
@@ -62,10 +70,12 @@ public:
 private:
     std::size_t m_channel = 0;
     std::shared_ptr<LiveBuffer> m_output;
-    std::atomic<bool> m_tareRequested = false;
+    double m_noiseSigma_f;
 
-    mutable std::mutex m_mutex;  // guards m_latest
+    mutable std::mutex m_mutex;  // guards the members below
     std::optional<CapacitiveReading> m_latest;
+    signal::SteadyWindow m_window;  // the last kTare_s of capacitance
+    std::optional<double> m_pendingC0_f;
 
     // Acquisition thread only.
     CapacitiveReadout m_readout;

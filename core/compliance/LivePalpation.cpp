@@ -1,11 +1,14 @@
 // LivePalpation: channel roles, tare, forces per sample, press readings.
 #include "core/compliance/LivePalpation.h"
 
+#include "core/ModeCapability.h"
 #include "core/SampleBlock.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace tactiscope::core::compliance {
@@ -42,20 +45,16 @@ LivePalpation::LivePalpation(const std::vector<ChannelDescriptor>& channels, dou
       m_tareSamples(std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(kTare_s * sampleRate_hz)))),
       m_output(std::make_shared<LiveBuffer>(outputChannels().size(),
                                             static_cast<std::size_t>(std::ceil(displaySeconds * sampleRate_hz)) + 1)),
+      m_rawHigh(std::max<std::size_t>(4, m_tareSamples)),
+      m_rawLow(m_rawHigh.length()),
+      m_forceHigh(m_rawHigh.length()),
+      m_forceLow(m_rawHigh.length()),
       m_reader(m_pair, settings.press)
 {
-    std::optional<std::size_t> displacement;
-    std::vector<std::size_t> beams;
-    for (std::size_t c = 0; c < channels.size(); ++c) {
-        if (channels[c].kind == ChannelKind::Position) {
-            if (!displacement) displacement = c;
-        } else if (beams.size() < 2) {
-            beams.push_back(c);
-        }
-    }
-    if (!displacement || beams.size() < 2)
-        throw std::invalid_argument("palpation needs two beam channels and a displacement channel");
-    m_displacement = *displacement;
+    const auto picked = modeChannels(Mode::Palpation, channels);
+    if (!picked) throw std::invalid_argument(*modeRefusal(Mode::Palpation, channels));
+    const std::vector<std::size_t>& beams = *picked;  // stiff, soft, then the displacement
+    m_displacement = beams[2];
     const auto input = [&](std::size_t c, std::optional<double> gaugeFactor) {
         Input in;
         in.channel = c;
@@ -81,16 +80,50 @@ std::vector<ChannelDescriptor> LivePalpation::outputChannels()
     return {{"F_H", "N", ChannelKind::Force}, {"F_L", "N", ChannelKind::Force}, {"Q", "", ChannelKind::Other}};
 }
 
+std::optional<std::string> LivePalpation::tare()
+{
+    const std::lock_guard lock(m_mutex);
+    if (m_state.taring) return "the first zero is still being taken: keep the probe lifted";
+    if (!m_forceHigh.full()) return "wait half a second: the signal since the last zero or gap is too short to judge";
+    const auto milliNewtons = [](double n) { return std::to_string(static_cast<long long>(std::lround(n * 1e3))); };
+    if (m_state.pressing)
+        return "the probe is pressing (F_H " + milliNewtons(m_forceHigh.mean()) + " mN, F_L " +
+               milliNewtons(m_forceLow.mean()) + " mN): lift it, then tare";
+    const double moving = std::max(m_forceHigh.spread(), m_forceLow.spread());
+    if (moving > m_pressSettings.contactThreshold_n)
+        return "the beams are moving (their force changed by " + milliNewtons(moving) +
+               " mN in the last half second): hold the probe lifted and still, then tare";
+    m_pendingZero = {m_rawHigh.mean(), m_rawLow.mean()};
+    return std::nullopt;
+}
+
 void LivePalpation::consume(const SampleBlock& block)
 {
     if (block.empty()) return;
     const bool gap = m_nextIndex && block.firstSampleIndex() != *m_nextIndex;
-    const bool tareRequested = m_tareRequested.exchange(false);
+    std::optional<std::pair<double, double>> newZero;
+    {
+        const std::lock_guard lock(m_mutex);
+        newZero = std::exchange(m_pendingZero, std::nullopt);
+        // A zero is judged on samples without a gap, on one zero.
+        if (gap || newZero) {
+            m_forceHigh.clear();
+            m_forceLow.clear();
+        }
+        if (gap) {
+            m_rawHigh.clear();
+            m_rawLow.clear();
+        }
+    }
     m_nextIndex = block.endSampleIndex();
     // Drop a press in progress: it would be read across a gap or two zeros.
-    if (gap || tareRequested) m_reader = PressReader(m_pair, m_pressSettings);
-    // A zero comes from samples without a gap: one a gap interrupted starts over.
-    if (tareRequested || (gap && m_tareCount < m_tareSamples)) {
+    if (gap || newZero) m_reader = PressReader(m_pair, m_pressSettings);
+    if (newZero) {
+        m_high.setZero(newZero->first);
+        m_low.setZero(newZero->second);
+    }
+    // The first zero comes from samples without a gap: one a gap interrupted starts over.
+    if (gap && m_tareCount < m_tareSamples) {
         m_tareCount = 0;
         m_tareHigh = m_tareLow = 0.0;
     }
@@ -121,6 +154,13 @@ void LivePalpation::consume(const SampleBlock& block)
     m_output->consume(display);
 
     const std::lock_guard lock(m_mutex);
+    for (std::size_t s = 0; s < block.sampleCount(); ++s) {
+        m_rawHigh.push(block.value(m_high.channel, s));
+        m_rawLow.push(block.value(m_low.channel, s));
+        if (std::isnan(display.channel(0)[s])) continue;  // no force while the first zero is taken
+        m_forceHigh.push(display.channel(0)[s]);
+        m_forceLow.push(display.channel(1)[s]);
+    }
     m_state.taring = m_tareCount < m_tareSamples;
     m_state.pressing = m_reader.pressing();
     m_state.current = m_reader.current();

@@ -10,9 +10,13 @@
 // (root strain per newton)), a force channel is used as it is.
 //
 // Tare: the probe's zero is the mean of the first kTare_s of the stream (the
-// probe is lifted when a session starts) and again after tare(). While a
-// zero is being taken no force is computed (the output is NaN), and a press
-// in progress is dropped rather than read across two zeros. Lost samples end
+// probe is lifted when a stream starts); while it is being taken no force is
+// computed (the output is NaN). tare() is a rule, not a wish: it takes the
+// mean of the last kTare_s already seen as the new zero only when the probe
+// is not pressing and both beams stayed within the contact threshold over
+// that stretch, and otherwise says why not and changes nothing, so a zero is
+// never taken under a load. A press in progress is dropped rather than read
+// across two zeros. Lost samples end
 // a press in progress without a reading; what follows the gap is read as a
 // press of its own, so a reading never spans a gap.
 #pragma once
@@ -21,12 +25,13 @@
 #include "core/ChannelDescriptor.h"
 #include "core/LiveBuffer.h"
 #include "core/compliance/StiffnessReadings.h"
+#include "core/signal/SteadyWindow.h"
 #include "core/straingauge/StrainGaugeChain.h"
 
-#include <atomic>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace tactiscope::core::compliance {
@@ -66,8 +71,9 @@ public:
     // the device sends strain or force itself.
     std::optional<double> gaugeFactor(bool highBeam) const;
 
-    // Any thread: the next kTare_s of samples become the zero.
-    void tare() { m_tareRequested = true; }
+    // Any thread: the last kTare_s become the zero (see above); nothing when
+    // taken, else the reason, in words for the operator.
+    std::optional<std::string> tare();
 
     // Acquisition thread.
     void consume(const SampleBlock& block) override;
@@ -94,11 +100,14 @@ private:
     std::size_t m_displacement = 0;
     std::size_t m_tareSamples;
     std::shared_ptr<LiveBuffer> m_output;
-    std::atomic<bool> m_tareRequested = false;
 
     mutable std::mutex m_mutex;  // guards the members below
     PalpationState m_state;
     std::vector<PressReading> m_readings;
+    // The last kTare_s without a gap: raw values for the zero, forces (on
+    // the current zero) for judging it.
+    signal::SteadyWindow m_rawHigh, m_rawLow, m_forceHigh, m_forceLow;
+    std::optional<std::pair<double, double>> m_pendingZero;  // raw high, low
 
     // Acquisition thread only.
     PressReader m_reader;

@@ -160,4 +160,11 @@ std::string pressDetailsJson(const PressReading& reading)
     return json.str();
 }
 
+PressSettings pressSettingsAt(double sampleRate_hz)
+{
+    PressSettings settings;
+    settings.minimumSamples = std::max<std::size_t>(20, static_cast<std::size_t>(0.1 * sampleRate_hz));
+    return settings;
+}
+
 }  // namespace tactiscope::core::compliance

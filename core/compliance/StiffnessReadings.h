@@ -83,6 +83,9 @@ struct PressSettings {
     double contactThreshold_n = 0.01;
     std::size_t minimumSamples = 20;  // shorter presses are taps, not readings
 };
+// At a stream's rate: a tenth of a second at least (a shorter contact is a
+// tap, not a press), and never fewer than 20 samples.
+PressSettings pressSettingsAt(double sampleRate_hz);
 
 class PressReader {
 public:

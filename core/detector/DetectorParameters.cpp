@@ -39,6 +39,12 @@ std::vector<double> lagRange_s(double start_s, double stop_s, double step_s)
     return lags;
 }
 
+std::vector<double> liveLags_s(double sampleRate_hz)
+{
+    const double step_s = std::max(0.002, 1.0 / sampleRate_hz);
+    return lagRange_s(step_s, 0.150, step_s);
+}
+
 ResolvedParameters resolve(const DetectorParameters& p)
 {
     if (!positiveFinite(p.sampleInterval_s)) throw std::invalid_argument("sampling interval must be positive");

@@ -36,6 +36,10 @@ struct DetectorParameters {
 // stop is included when it lies within 1e-9 s of a step. Throws
 // std::invalid_argument when start or step is not positive or stop < start.
 std::vector<double> lagRange_s(double start_s, double stop_s, double step_s);
+// The paper's lags (2–150 ms in 2 ms steps) assume 500 Hz; a slower stream
+// starts at one sample interval and steps by it, up to 150 ms. Throws
+// std::invalid_argument for a rate too slow to give a lag under 150 ms.
+std::vector<double> liveLags_s(double sampleRate_hz);
 
 // The parameters in samples, checked. A lag c becomes k = round(c/Δt) samples;
 // lags that round to the same k are kept once, in increasing order. The

@@ -115,7 +115,6 @@ void completeMetadata(SessionMetadata& m, const nlohmann::json& session)
     const auto fill = [&](std::string& field, const char* key) {
         if (field.empty()) field = textOf(session, key);
     };
-    fill(m.mode, "mode");
     fill(m.subject, "subject");
     fill(m.operatorName, "operator");
     fill(m.site, "site");
@@ -131,13 +130,19 @@ void importRecords(SessionStore& store, std::int64_t session, const nlohmann::js
 {
     std::vector<SessionEvent> events;
     for (const auto& e : side.value("events", nlohmann::json::array())) {
-        events.push_back({0, textOf(e, "analysis"), textOf(e, "kind"), e.value("start_s", 0.0), e.value("end_s", 0.0),
+        const std::string kind = textOf(e, "kind");
+        const auto eventKind = eventKindFromString(kind);
+        if (!eventKind) throw CsvError("the metadata file has an event of unknown kind '" + kind + "'");
+        events.push_back({0, textOf(e, "analysis"), *eventKind, e.value("start_s", 0.0), e.value("end_s", 0.0),
                           e.value("direction", 0), optionalOf(e, "peak_r"), optionalOf(e, "lag_s"),
                           optionalOf(e, "speed_m_per_s"), textOf(e, "note")});
     }
     store.addEvents(session, events);
     for (const auto& r : side.value("readings", nlohmann::json::array())) {
-        store.addReading(session, {0, textOf(r, "kind"), r.value("start_s", 0.0), r.value("end_s", 0.0),
+        const std::string kind = textOf(r, "kind");
+        const auto readingKind = readingKindFromString(kind);
+        if (!readingKind) throw CsvError("the metadata file has a reading of unknown kind '" + kind + "'");
+        store.addReading(session, {0, *readingKind, r.value("start_s", 0.0), r.value("end_s", 0.0),
                                    textOf(r, "quantity"), r.value("value", 0.0), textOf(r, "unit"),
                                    optionalOf(r, "standard_error"), textOf(r, "site"), textOf(r, "details_json")});
     }
@@ -233,8 +238,16 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
         throw CsvError("'" + path + "' has no time column (t, time, time_s or timestamp): give its name or the rate");
 
     SessionMetadata metadata = options.metadata;
-    if (side) completeMetadata(metadata, (*side)["session"]);
-    if (metadata.mode.empty()) metadata.mode = "panel-scan";  // as when recording
+    std::optional<Mode> mode = options.mode;
+    if (side) {
+        completeMetadata(metadata, (*side)["session"]);
+        const std::string sideMode = textOf((*side)["session"], "mode");
+        if (!mode && !sideMode.empty()) {
+            mode = modeFromString(sideMode);
+            if (!mode) throw CsvError("the metadata file names an unknown mode '" + sideMode + "'");
+        }
+    }
+    metadata.mode = mode.value_or(Mode::PanelScan);  // as when recording
 
     CsvImportResult result;
     result.usedSideFile = side.has_value();
@@ -249,7 +262,7 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
     for (const std::size_t c : dataColumns) {
         auto [name, unit] = splitHeader(header[c]);
         // Unitless columns of a panel scan are the cantilevers' strains.
-        const bool strain = unit.empty() && metadata.mode == "panel-scan";
+        const bool strain = unit.empty() && metadata.mode == Mode::PanelScan;
         ChannelDescriptor channel{name, unit, strain ? ChannelKind::Strain : kindFromUnit(unit)};
         if (side) {
             for (const auto& stored : (*side)["channels"]) {

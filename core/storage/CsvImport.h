@@ -30,7 +30,8 @@ struct CsvImportOptions {
     std::optional<double> rate_hz;     // fixed rate: rows are consecutive samples unless timeColumn is given
     std::string timeColumn;            // empty: a column named t, time, time_s or timestamp, if any
     std::vector<std::string> columns;  // data columns, in order; empty: every column but the time column
-    SessionMetadata metadata;          // its non-empty fields win over the side file's; mode defaults to panel-scan
+    SessionMetadata metadata;          // its non-empty text fields win over the side file's
+    std::optional<Mode> mode;          // none: the side file's, else panel-scan (as when recording)
 };
 
 struct CsvImportResult {

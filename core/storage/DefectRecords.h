@@ -16,7 +16,7 @@ inline SessionEvent defectRecord(const detector::DefectEvent& e, const std::stri
 {
     SessionEvent event;
     event.analysis = analysis;
-    event.kind = "defect";
+    event.kind = EventKind::Defect;
     event.start_s = e.start_s;
     event.end_s = e.end_s;
     event.direction = e.direction;

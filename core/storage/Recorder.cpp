@@ -123,7 +123,7 @@ void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
     }
 }
 
-RecorderStats Recorder::finish(SessionStatus status)
+RecorderStats Recorder::finish(SessionStatus status, std::optional<Verdict> verdict)
 {
     {
         const std::lock_guard lock(m_mutex);
@@ -136,6 +136,7 @@ RecorderStats Recorder::finish(SessionStatus status)
     try {
         if (m_stats.error.empty()) m_store.markLostUntil(m_session, m_consumedEnd);
         m_store.endSession(m_session, m_stats.error.empty() ? status : SessionStatus::Interrupted);
+        if (verdict) m_store.setVerdict(m_session, *verdict);
     } catch (const StorageError& e) {
         // The samples are committed; only the end mark is missing.
         if (m_stats.error.empty()) m_stats.error = e.what();

@@ -60,8 +60,9 @@ public:
     double sessionTimeOf(double acquisitionTime_s) const;
     RecorderStats stats() const;
     // Stores what is queued, ends the session with `status` (interrupted if
-    // a write failed) and stops the writer. Idempotent.
-    RecorderStats finish(SessionStatus status);
+    // a write failed) and its verdict, if any, and stops the writer.
+    // Idempotent.
+    RecorderStats finish(SessionStatus status, std::optional<Verdict> verdict = std::nullopt);
 
 private:
     void run(const std::stop_token& stop);

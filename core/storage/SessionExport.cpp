@@ -78,7 +78,7 @@ void writeRecords(text::JsonWriter& json, SessionStore& store, std::int64_t sess
         for (const auto& e : store.events(session, analysis)) {
             json.beginObject();
             json.key("analysis").value(e.analysis);
-            json.key("kind").value(e.kind);
+            json.key("kind").value(toString(e.kind));
             json.key("start_s").value(e.start_s);
             json.key("end_s").value(e.end_s);
             json.key("direction").value(static_cast<long long>(e.direction));
@@ -93,7 +93,7 @@ void writeRecords(text::JsonWriter& json, SessionStore& store, std::int64_t sess
     json.key("readings").beginArray();
     for (const auto& r : store.readings(session)) {
         json.beginObject();
-        json.key("kind").value(r.kind);
+        json.key("kind").value(toString(r.kind));
         json.key("start_s").value(r.start_s);
         json.key("end_s").value(r.end_s);
         json.key("quantity").value(r.quantity);
@@ -125,15 +125,15 @@ void writeMetadata(text::JsonWriter& json, SessionStore& store, std::int64_t ses
     json.key("session").beginObject();
     json.key("id").value(static_cast<long long>(s.id));
     json.key("uuid").value(s.uuid);
-    json.key("mode").value(s.metadata.mode);
+    json.key("mode").value(toString(s.metadata.mode));
     json.key("subject").value(s.metadata.subject);
     json.key("operator").value(s.metadata.operatorName);
     json.key("site").value(s.metadata.site);
     json.key("notes").value(s.metadata.notes);
     json.key("started_utc").value(s.startedUtc);
     json.key("ended_utc").value(s.endedUtc);
-    json.key("status").value(s.status);
-    json.key("verdict").value(s.verdict);
+    json.key("status").value(toString(s.status));
+    json.key("verdict").value(verdictText(s.verdict));
     json.key("device_model").value(s.metadata.deviceModel);
     json.key("device_serial").value(s.metadata.deviceSerial);
     json.key("device_firmware").value(s.metadata.deviceFirmware);

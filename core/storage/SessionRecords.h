@@ -5,6 +5,7 @@
 // session start, like the samples'.
 #pragma once
 
+#include "core/Vocabulary.h"
 #include "core/calibration/CalibrationRecord.h"
 
 #include <cstdint>
@@ -20,7 +21,7 @@ inline constexpr const char* kLiveAnalysis = "live";
 struct SessionEvent {
     std::int64_t id = 0;  // given by the store
     std::string analysis = kLiveAnalysis;
-    std::string kind;  // "defect", "contact", "press", "alarm" or "marker"
+    EventKind kind = EventKind::Marker;
     double start_s = 0.0;
     double end_s = 0.0;
     int direction = 0;  // a defect's order: +1 A then B, −1 B then A
@@ -32,7 +33,7 @@ struct SessionEvent {
 
 struct SessionReading {
     std::int64_t id = 0;
-    std::string kind;  // "compliance" or "capacitive"
+    ReadingKind kind = ReadingKind::Compliance;
     double start_s = 0.0;
     double end_s = 0.0;
     std::string quantity;  // e.g. "stiffness", "force"

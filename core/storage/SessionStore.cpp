@@ -40,12 +40,21 @@ SessionSummary summaryFrom(const Statement& row)
     SessionSummary s;
     s.id = row.int64(0);
     s.uuid = row.text(1);
-    s.metadata = {row.text(2), row.text(3), row.text(4), row.text(5),  row.text(6),
-                  row.text(7), row.text(8), row.text(9), row.text(10), row.text(11)};
+    // The schema's CHECK admits only the vocabulary's modes and statuses.
+    s.metadata = {modeFromString(row.text(2)).value_or(Mode::PanelScan),
+                  row.text(3),
+                  row.text(4),
+                  row.text(5),
+                  row.text(6),
+                  row.text(7),
+                  row.text(8),
+                  row.text(9),
+                  row.text(10),
+                  row.text(11)};
     s.startedUtc = row.text(12);
     s.endedUtc = row.text(13);
-    s.status = row.text(14);
-    s.verdict = row.text(15);
+    s.status = sessionStatusFromString(row.text(14)).value_or(SessionStatus::Interrupted);
+    s.verdict = verdictFromString(row.text(15));
     s.appVersion = row.text(16);
     s.sampleRate_hz = row.real(17);
     s.sampleCount = static_cast<std::uint64_t>(row.int64(18));
@@ -93,19 +102,6 @@ constexpr std::uint64_t kChunkSamples = 4096;
 
 }  // namespace
 
-std::string_view toString(SessionStatus status)
-{
-    switch (status) {
-    case SessionStatus::Recording:
-        return "recording";
-    case SessionStatus::Complete:
-        return "complete";
-    case SessionStatus::Interrupted:
-        return "interrupted";
-    }
-    return "interrupted";
-}
-
 SessionStore::SessionStore(const std::string& path, Database::Access access)
     : m_db(path, access)
 {
@@ -127,15 +123,17 @@ void SessionStore::deleteSession(std::int64_t session)
     if (!summary) throw StorageError("there is no session " + std::to_string(session));
     // Opening read-write marked crashed recordings interrupted, so one still
     // "recording" has a live recorder.
-    if (summary->status == toString(SessionStatus::Recording))
+    if (summary->status == SessionStatus::Recording)
         throw StorageError("session " + std::to_string(session) + " is being recorded; stop the recording first");
     m_db.prepare("DELETE FROM sessions WHERE id = ?").bind(1, session).run();  // cascades
 }
 
 int SessionStore::markCrashedSessionsInterrupted()
 {
-    auto update = m_db.prepare("UPDATE sessions SET status = 'interrupted' WHERE status = 'recording'");
-    update.run();
+    m_db.prepare("UPDATE sessions SET status = ? WHERE status = ?")
+        .bind(1, toString(SessionStatus::Interrupted))
+        .bind(2, toString(SessionStatus::Recording))
+        .run();
     return m_db.changes();
 }
 
@@ -148,9 +146,9 @@ std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<cons
     Transaction transaction(m_db);
     m_db.prepare("INSERT INTO sessions (uuid, mode, subject, operator, site, notes, device_model, device_serial, "
                  "device_firmware, profile_json, calibrations_json, started_utc, status, app_version) "
-                 "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, 'recording', ?)")
+                 "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
         .bind(1, newUuid())
-        .bind(2, m.mode)
+        .bind(2, toString(m.mode))
         .bind(3, m.subject)
         .bind(4, m.operatorName)
         .bind(5, m.site)
@@ -161,7 +159,8 @@ std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<cons
         .bind(10, m.profileJson)
         .bind(11, m.calibrationsJson)
         .bind(12, utcNow())
-        .bind(13, std::string_view(versionString()))
+        .bind(13, toString(SessionStatus::Recording))
+        .bind(14, std::string_view(versionString()))
         .run();
     const std::int64_t id = m_db.lastInsertId();
     auto insert = m_db.prepare("INSERT INTO channels VALUES (?, ?, ?, ?, ?, ?)");
@@ -296,9 +295,9 @@ void SessionStore::endSession(std::int64_t session, SessionStatus status)
         .run();
 }
 
-void SessionStore::setVerdict(std::int64_t session, const std::string& verdict)
+void SessionStore::setVerdict(std::int64_t session, Verdict verdict)
 {
-    m_db.prepare("UPDATE sessions SET verdict = ? WHERE id = ?").bind(1, verdict).bind(2, session).run();
+    m_db.prepare("UPDATE sessions SET verdict = ? WHERE id = ?").bind(1, toString(verdict)).bind(2, session).run();
     if (m_db.changes() == 0) throw StorageError("there is no session " + std::to_string(session));
 }
 
@@ -320,10 +319,10 @@ std::vector<SessionSummary> SessionStore::sessions(const SessionFilter& filter)
     };
     condition(filter.startedFrom, " AND started_utc >= ?");
     condition(filter.startedBefore, " AND started_utc < ?");
-    condition(filter.mode, " AND mode = ?");
+    if (filter.mode) condition(std::string(toString(*filter.mode)), " AND mode = ?");
     condition(filter.subject, " AND subject = ?");
     condition(filter.operatorName, " AND operator = ?");
-    condition(filter.verdict, " AND verdict = ?");
+    if (filter.verdict) condition(std::string(toString(*filter.verdict)), " AND verdict = ?");
     if (!filter.text.empty()) {
         // One parameter, numbered, used for every searched column.
         const std::string like = " LIKE ?" + std::to_string(values.size() + 1) + " ESCAPE '\\'";

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/ChannelDescriptor.h"
+#include "core/Vocabulary.h"
 #include "core/storage/Database.h"
 #include "core/storage/LodTable.h"
 #include "core/storage/SessionRecords.h"
@@ -21,12 +22,9 @@ class SampleBlock;
 
 namespace tactiscope::core::storage {
 
-enum class SessionStatus { Recording, Complete, Interrupted };
-std::string_view toString(SessionStatus status);
-
 // What the user and the device tell about a session before it starts.
 struct SessionMetadata {
-    std::string mode;  // "panel-scan", "palpation" or "capacitive"
+    Mode mode = Mode::PanelScan;
     std::string subject;
     std::string operatorName;
     std::string site;
@@ -44,8 +42,8 @@ struct SessionSummary {
     SessionMetadata metadata;
     std::string startedUtc;  // ISO 8601, e.g. 2026-11-21T14:20:28.123Z
     std::string endedUtc;    // empty while recording or when interrupted
-    std::string status;
-    std::string verdict;
+    SessionStatus status = SessionStatus::Recording;
+    std::optional<Verdict> verdict;  // none until one is given (another word in the file reads as none)
     std::string appVersion;
     double sampleRate_hz = 0.0;
     std::uint64_t sampleCount = 0;  // per channel, including lost samples
@@ -57,11 +55,11 @@ struct SessionSummary {
 struct SessionFilter {
     std::string startedFrom;    // UTC, ISO 8601 or a prefix such as "2026-11-21"; inclusive
     std::string startedBefore;  // exclusive
-    std::string mode;
+    std::optional<Mode> mode;
     std::string subject;       // exact
     std::string operatorName;  // exact
-    std::string verdict;       // exact
-    std::string text;          // found in subject, operator, site, notes, verdict or device serial (any case)
+    std::optional<Verdict> verdict;
+    std::string text;  // found in subject, operator, site, notes, verdict or device serial (any case)
 };
 
 using lod::OverviewPoint;
@@ -93,7 +91,7 @@ public:
     // recording, where no later block marks the gap). No-op when none are.
     void markLostUntil(std::int64_t session, std::uint64_t endIndex);
     void endSession(std::int64_t session, SessionStatus status);
-    void setVerdict(std::int64_t session, const std::string& verdict);
+    void setVerdict(std::int64_t session, Verdict verdict);
     // Deletes a session with its channels, samples and gaps. Throws
     // StorageError for an unknown id or a session still being recorded.
     void deleteSession(std::int64_t session);
@@ -134,7 +132,9 @@ public:
     std::int64_t addCalibration(const calibration::CalibrationRecord& record);
     std::optional<StoredCalibration> calibration(std::int64_t id);
     std::vector<StoredCalibration>
-    calibrations(const std::string& sensor = {});                          // oldest first; all sensors when empty
+    calibrations(const std::string& sensor = {});  // oldest first; all sensors when empty
+    // The newest record of `kind` for `sensor`: the one in use.
+    std::optional<StoredCalibration> newestCalibration(std::string_view kind, const std::string& sensor);
     void linkCalibration(std::int64_t session, std::int64_t calibration);  // the session used it
     std::vector<std::int64_t> calibrationsOfSession(std::int64_t session);
     std::vector<std::int64_t> sessionsUsingCalibration(std::int64_t calibration);

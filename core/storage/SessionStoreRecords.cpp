@@ -49,7 +49,7 @@ void SessionStore::addEvents(std::int64_t session, std::span<const SessionEvent>
     for (const SessionEvent& e : events) {
         insert.bind(1, session)
             .bind(2, e.analysis)
-            .bind(3, e.kind)
+            .bind(3, toString(e.kind))
             .bind(4, e.start_s)
             .bind(5, e.end_s)
             .bind(6, std::int64_t{e.direction});
@@ -68,9 +68,10 @@ std::vector<SessionEvent> SessionStore::events(std::int64_t session, const std::
                               "note FROM events WHERE session_id = ? AND analysis = ? ORDER BY start_s, id");
     query.bind(1, session).bind(2, analysis);
     while (query.step()) {
-        result.push_back({query.int64(0), query.text(1), query.text(2), query.real(3), query.real(4),
-                          static_cast<int>(query.int64(5)), optionalReal(query, 6), optionalReal(query, 7),
-                          optionalReal(query, 8), query.text(9)});
+        // The schema's CHECK admits only the vocabulary's kinds.
+        result.push_back({query.int64(0), query.text(1), eventKindFromString(query.text(2)).value_or(EventKind::Marker),
+                          query.real(3), query.real(4), static_cast<int>(query.int64(5)), optionalReal(query, 6),
+                          optionalReal(query, 7), optionalReal(query, 8), query.text(9)});
     }
     return result;
 }
@@ -89,7 +90,7 @@ std::int64_t SessionStore::addReading(std::int64_t session, const SessionReading
 {
     auto insert = m_db.prepare("INSERT INTO readings (session_id, kind, start_s, end_s, quantity, value, unit, "
                                "standard_error, site, details_json) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
-    insert.bind(1, session).bind(2, r.kind).bind(3, r.start_s).bind(4, r.end_s).bind(5, r.quantity);
+    insert.bind(1, session).bind(2, toString(r.kind)).bind(3, r.start_s).bind(4, r.end_s).bind(5, r.quantity);
     insert.bind(6, r.value).bind(7, r.unit);
     bindOptional(insert, 8, r.standardError);
     insert.bind(9, r.site).bind(10, r.detailsJson).run();
@@ -103,8 +104,9 @@ std::vector<SessionReading> SessionStore::readings(std::int64_t session)
                               "details_json FROM readings WHERE session_id = ? ORDER BY start_s, id");
     query.bind(1, session);
     while (query.step()) {
-        result.push_back({query.int64(0), query.text(1), query.real(2), query.real(3), query.text(4), query.real(5),
-                          query.text(6), optionalReal(query, 7), query.text(8), query.text(9)});
+        result.push_back({query.int64(0), readingKindFromString(query.text(1)).value_or(ReadingKind::Compliance),
+                          query.real(2), query.real(3), query.text(4), query.real(5), query.text(6),
+                          optionalReal(query, 7), query.text(8), query.text(9)});
     }
     return result;
 }
@@ -182,6 +184,14 @@ std::vector<StoredCalibration> SessionStore::calibrations(const std::string& sen
     query.bind(1, sensor);
     while (query.step()) result.push_back(calibrationFrom(query));
     return result;
+}
+
+std::optional<StoredCalibration> SessionStore::newestCalibration(std::string_view kind, const std::string& sensor)
+{
+    auto all = calibrations(sensor);
+    for (auto it = all.rbegin(); it != all.rend(); ++it)
+        if (it->record.kind == kind) return std::move(*it);
+    return std::nullopt;
 }
 
 void SessionStore::linkCalibration(std::int64_t session, std::int64_t calibration)

@@ -12,6 +12,7 @@
 
 #include "devices/PortSource.h"
 #include "devices/protocol/BinaryDecoder.h"
+#include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatedScenario.h"
 
 #include <atomic>
@@ -28,7 +29,7 @@ namespace tactiscope::devices::emulator {
 struct EmulatorOptions {
     std::string linkPath;
     WireProtocol protocol = WireProtocol::Binary;
-    std::string scenario = "panel-scan";
+    std::string scenario = simulator::kPanelScanScenario;
     std::optional<double> rate_hz;
     std::optional<std::size_t> channels;  // fewer: the first N; more: repeated
     std::optional<double> seconds;        // stream this long, then hang up

@@ -57,6 +57,7 @@ public:
     explicit CapacitiveWeightsScenario(const CapacitiveWeightsParameters& parameters = {});
 
     std::string name() const override { return "capacitive weights"; }
+    std::optional<core::Mode> mode() const override { return core::Mode::Capacitive; }
     const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
     double sampleRate_hz() const override { return m_p.sampleRate_hz; }
     void generate(core::SampleBlock& block) override;

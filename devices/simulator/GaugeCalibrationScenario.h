@@ -39,6 +39,7 @@ public:
     explicit GaugeCalibrationScenario(const GaugeCalibrationParameters& parameters = {});
 
     std::string name() const override { return "gauge-factor calibration rig"; }
+    std::optional<core::Mode> mode() const override { return std::nullopt; }
     const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
     double sampleRate_hz() const override { return m_p.sampleRate_hz; }
     void generate(core::SampleBlock& block) override;

@@ -47,6 +47,7 @@ public:
     explicit PalpationScenario(const PalpationParameters& parameters = {});
 
     std::string name() const override { return "palpation"; }
+    std::optional<core::Mode> mode() const override { return core::Mode::Palpation; }
     const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
     double sampleRate_hz() const override { return m_p.sampleRate_hz; }
     void generate(core::SampleBlock& block) override;

@@ -46,6 +46,7 @@ public:
     explicit PanelScanScenario(const PanelScanParameters& parameters = {});
 
     std::string name() const override { return "panel scan"; }
+    std::optional<core::Mode> mode() const override { return core::Mode::PanelScan; }
     const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
     double sampleRate_hz() const override { return m_p.sampleRate_hz; }
     void generate(core::SampleBlock& block) override;

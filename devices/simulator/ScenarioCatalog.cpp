@@ -10,18 +10,19 @@ namespace tactiscope::devices::simulator {
 
 std::vector<std::string> scenarioIds()
 {
-    return {"panel-scan", "palpation", "capacitive-weights", "gauge-calibration", "capacitive-calibration"};
+    return {kPanelScanScenario, kPalpationScenario, "capacitive-weights", "gauge-calibration",
+            "capacitive-calibration"};
 }
 
 std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64_t seed, std::optional<double> rate_hz)
 {
-    if (id == "panel-scan") {
+    if (id == kPanelScanScenario) {
         PanelScanParameters parameters;
         parameters.seed = seed;
         if (rate_hz) parameters.sampleRate_hz = *rate_hz;
         return std::make_unique<PanelScanScenario>(parameters);
     }
-    if (id == "palpation") {
+    if (id == kPalpationScenario) {
         PalpationParameters parameters;
         parameters.seed = seed;
         if (rate_hz) parameters.sampleRate_hz = *rate_hz;

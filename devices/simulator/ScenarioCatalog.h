@@ -13,6 +13,10 @@
 
 namespace tactiscope::devices::simulator {
 
+// The scenarios of the two hand-held probes are named after their modes.
+inline const std::string kPanelScanScenario{core::toString(core::Mode::PanelScan)};
+inline const std::string kPalpationScenario{core::toString(core::Mode::Palpation)};
+
 std::vector<std::string> scenarioIds();
 
 // A new scenario with default parameters, the given noise seed and, when

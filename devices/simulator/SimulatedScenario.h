@@ -4,10 +4,11 @@
 #pragma once
 
 #include "core/ChannelDescriptor.h"
+#include "core/Vocabulary.h"
 #include "devices/simulator/LoadRig.h"
 
 #include <memory>
-
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,9 @@ public:
     virtual ~SimulatedScenario() = default;
 
     virtual std::string name() const = 0;
+    // The mode whose probe this scenario simulates; none for a calibration
+    // rig that only a wizard reads.
+    virtual std::optional<core::Mode> mode() const = 0;
     virtual const std::vector<core::ChannelDescriptor>& channels() const = 0;
     virtual double sampleRate_hz() const = 0;
 

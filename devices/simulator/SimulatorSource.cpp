@@ -2,6 +2,7 @@
 #include "devices/simulator/SimulatorSource.h"
 
 #include "core/SampleBlock.h"
+#include "core/Version.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,6 +27,11 @@ SimulatorSource::SimulatorSource(std::unique_ptr<SimulatedScenario> scenario, co
 std::string SimulatorSource::name() const
 {
     return "Simulator — " + m_scenario->name();
+}
+
+DeviceIdentity SimulatorSource::identity() const
+{
+    return {"Tactiscope simulator", m_scenario->name(), core::versionString()};
 }
 
 ReadStatus SimulatorSource::readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout)

@@ -33,6 +33,10 @@ public:
     SimulatorSource(std::unique_ptr<SimulatedScenario> scenario, const SimulatorOptions& options = {});
 
     std::string name() const override;
+    // Model "Tactiscope simulator", the scenario as serial, the program's
+    // version as firmware.
+    DeviceIdentity identity() const override;
+    std::optional<core::Mode> declaredMode() const override { return m_scenario->mode(); }
     const std::vector<core::ChannelDescriptor>& channels() const override { return m_scenario->channels(); }
     double nominalSampleRate_hz() const override { return m_scenario->sampleRate_hz(); }
     ReadStatus readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout) override;

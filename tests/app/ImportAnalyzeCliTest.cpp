@@ -53,9 +53,9 @@ TEST(ImportCli, AForeignCsvWithMillisecondsAndMissingRowsBecomesASessionWithGaps
 
     core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
     const auto session = *store.session(1);
-    EXPECT_EQ(session.metadata.mode, "palpation");
+    EXPECT_EQ(session.metadata.mode, tactiscope::core::Mode::Palpation);
     EXPECT_EQ(session.metadata.subject, "phantom-9");
-    EXPECT_EQ(session.status, "complete");
+    EXPECT_EQ(session.status, tactiscope::core::SessionStatus::Complete);
     EXPECT_EQ(session.sampleRate_hz, 250.0);
     EXPECT_EQ(session.sampleCount, 7u);
     const auto channels = store.channels(1);
@@ -83,7 +83,7 @@ TEST(ImportCli, ExportImportExportIsTheSameFileAndTheSameBits)
         // Values with no short decimal form: the export must carry every bit.
         core::storage::SessionStore store(db.toStdString());
         core::storage::SessionMetadata metadata;
-        metadata.mode = "capacitive";
+        metadata.mode = tactiscope::core::Mode::Capacitive;
         metadata.subject = "beam-7";
         metadata.operatorName = "Lin";
         const auto id =
@@ -100,10 +100,11 @@ TEST(ImportCli, ExportImportExportIsTheSameFileAndTheSameBits)
             return b;
         };
         store.appendBlocks(id, std::vector{block(0, 700), block(750, 500)});  // 50 lost
-        store.addEvents(id, std::vector<core::storage::SessionEvent>{
-                                {0, "live", "alarm", 0.7, 0.75, 0, std::nullopt, std::nullopt, std::nullopt, "lost"}});
+        store.addEvents(
+            id, std::vector<core::storage::SessionEvent>{{0, "live", tactiscope::core::EventKind::Alarm, 0.7, 0.75, 0,
+                                                          std::nullopt, std::nullopt, std::nullopt, "lost"}});
         store.addAnnotation(id, {0, 0.9, "Lin", "tare drift", "", ""});
-        store.endSession(id, core::storage::SessionStatus::Complete);
+        store.endSession(id, tactiscope::core::SessionStatus::Complete);
     }
     const QString first = dir.filePath("first.csv"), second = dir.filePath("second.csv");
     ASSERT_EQ(runCli({"sessions", "--db", db, "export", "1", "--format", "csv", "--output", first}).exitCode, 0);
@@ -124,7 +125,7 @@ TEST(ImportCli, ExportImportExportIsTheSameFileAndTheSameBits)
     }
     // The side file brought the metadata and the records along.
     const auto copy = *store.session(2);
-    EXPECT_EQ(copy.metadata.mode, "capacitive");
+    EXPECT_EQ(copy.metadata.mode, tactiscope::core::Mode::Capacitive);
     EXPECT_EQ(copy.metadata.operatorName, "Lin");
     EXPECT_EQ(store.channels(2)[0].descriptor, (core::ChannelDescriptor{"c", "pF", core::ChannelKind::Capacitance}));
     ASSERT_EQ(store.events(2).size(), 1u);

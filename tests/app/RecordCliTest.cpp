@@ -69,8 +69,8 @@ TEST(RecordCli, TheStoreHoldsExactlyTheSamplesTheEmulatorSent)
     core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
     const auto session = store.session(id);
     ASSERT_TRUE(session.has_value());
-    EXPECT_EQ(session->status, "complete");
-    EXPECT_EQ(session->metadata.mode, "panel-scan");
+    EXPECT_EQ(session->status, tactiscope::core::SessionStatus::Complete);
+    EXPECT_EQ(session->metadata.mode, tactiscope::core::Mode::PanelScan);
     EXPECT_EQ(session->metadata.subject, "door-17");
     EXPECT_EQ(session->metadata.operatorName, "Ada");
     EXPECT_EQ(session->metadata.deviceSerial, "EMU-9");
@@ -116,7 +116,7 @@ TEST(RecordCli, CtrlCEndsTheRecordingAndKeepsTheData)
     const std::int64_t id = sessionIdIn(out);
     ASSERT_GT(id, 0) << out.toStdString();
     core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
-    EXPECT_EQ(store.session(id)->status, "complete");
+    EXPECT_EQ(store.session(id)->status, tactiscope::core::SessionStatus::Complete);
     EXPECT_GT(store.sampleCount(id), 100u);
     EXPECT_EQ(store.channels(id).size(), 3u);
 }
@@ -139,7 +139,7 @@ TEST(RecordCli, AKilledRecordingKeepsItsCommittedSamplesAndIsMarkedInterrupted)
     core::storage::SessionStore store(db.toStdString());  // read-write: recovers
     ASSERT_EQ(store.sessions().size(), 1u);
     const auto session = store.sessions().front();
-    EXPECT_EQ(session.status, "interrupted");
+    EXPECT_EQ(session.status, tactiscope::core::SessionStatus::Interrupted);
     EXPECT_EQ(store.checkIntegrity(), "ok");
     // Commits come every 250 ms, so about 2 s of recording left more than
     // half a second of samples, all of them the emulator's, in order.
@@ -179,7 +179,7 @@ TEST(RecordCli, BadInputExitsWithCodeTwoAndAMissingPortWithOne)
         // A store another recorder is writing into.
         const QString busy = dir.filePath("busy.tactiscope");
         core::storage::SessionMetadata metadata;
-        metadata.mode = "palpation";
+        metadata.mode = tactiscope::core::Mode::Palpation;
         core::storage::Recorder other(busy.toStdString(), metadata, {{"x", "m", core::ChannelKind::Position}}, 100.0,
                                       1000);
         const auto result = runCli({"record", "--port", link, "--db", busy, "--seconds", "1"});

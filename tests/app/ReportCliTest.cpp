@@ -31,7 +31,7 @@ QString makeStore(const QTemporaryDir& dir)
     const QString path = dir.filePath(QStringLiteral("r.tactiscope"));
     core::storage::SessionStore store(path.toStdString());
     core::storage::SessionMetadata metadata;
-    metadata.mode = "panel-scan";
+    metadata.mode = tactiscope::core::Mode::PanelScan;
     metadata.subject = "door-42";
     metadata.operatorName = "Ada Lovelace";
     metadata.deviceModel = "Simulator — panel scan";
@@ -52,13 +52,24 @@ QString makeStore(const QTemporaryDir& dir)
     }
     store.appendBlocks(id, blocks);
     store.addEvents(id, std::vector<core::storage::SessionEvent>{
-                            {0, core::storage::kLiveAnalysis, "defect", 2.5, 2.6, 1, 0.953, 0.052, 0.96, ""},
-                            {0, core::storage::kLiveAnalysis, "defect", 7.1, 7.2, -1, 0.912, 0.048, 1.04, ""},
-                            {0, core::storage::kLiveAnalysis, "marker", 4.0, 4.0, 0, {}, {}, {}, "oil stain"},
+                            {0, core::storage::kLiveAnalysis, tactiscope::core::EventKind::Defect, 2.5, 2.6, 1, 0.953,
+                             0.052, 0.96, ""},
+                            {0, core::storage::kLiveAnalysis, tactiscope::core::EventKind::Defect, 7.1, 7.2, -1, 0.912,
+                             0.048, 1.04, ""},
+                            {0,
+                             core::storage::kLiveAnalysis,
+                             tactiscope::core::EventKind::Marker,
+                             4.0,
+                             4.0,
+                             0,
+                             {},
+                             {},
+                             {},
+                             "oil stain"},
                         });
     store.addAnnotation(id, {0, 9.0, "Grace", "second dent seen by eye", "", ""});
-    store.endSession(id, core::storage::SessionStatus::Complete);
-    store.setVerdict(id, "defects found");
+    store.endSession(id, tactiscope::core::SessionStatus::Complete);
+    store.setVerdict(id, tactiscope::core::Verdict::DefectsFound);
     return path;
 }
 

@@ -44,18 +44,18 @@ QString makeStore(const QTemporaryDir& dir)
     const std::vector<core::ChannelDescriptor> channels{{"a", "", core::ChannelKind::Strain},
                                                         {"force", "N", core::ChannelKind::Force}};
     core::storage::SessionMetadata first;
-    first.mode = "palpation";
+    first.mode = tactiscope::core::Mode::Palpation;
     first.subject = "phantom-2";
     const auto one = store.beginSession(first, channels, 200.0);
     store.appendBlocks(one, std::vector{block(0, 20)});
-    store.endSession(one, core::storage::SessionStatus::Complete);
+    store.endSession(one, tactiscope::core::SessionStatus::Complete);
     core::storage::SessionMetadata second;
-    second.mode = "panel-scan";
+    second.mode = tactiscope::core::Mode::PanelScan;
     second.subject = "door-17";
     second.operatorName = "Ada";
     const auto two = store.beginSession(second, channels, 200.0);
     store.appendBlocks(two, std::vector{block(0, 50), block(60, 40)});
-    store.endSession(two, core::storage::SessionStatus::Complete);
+    store.endSession(two, tactiscope::core::SessionStatus::Complete);
     return path;
 }
 

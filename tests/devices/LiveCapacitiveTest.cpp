@@ -20,8 +20,9 @@ using core::capacitive::LiveCapacitive;
 namespace {
 
 struct Stream {
-    std::vector<double> t, c;  // the input
-    core::LiveChunk shown;     // the display buffer's F and w
+    std::vector<double> t, c;                // the input
+    core::LiveChunk shown;                   // the display buffer's F and w
+    std::optional<std::string> tareRefusal;  // what the tare answered
 };
 
 // Feeds the whole protocol in blocks of 7 samples; tares before block
@@ -42,7 +43,7 @@ Stream feed(LiveCapacitive& live, const devices::simulator::CapacitiveWeightsSce
             run.t.push_back(all.timeAt_s(s + i));
             run.c.push_back(all.value(0, s + i));
         }
-        if (tareBlock && b == *tareBlock) live.tare();
+        if (tareBlock && b == *tareBlock) run.tareRefusal = live.tare();
         live.consume(block);
     }
     core::LiveCursor cursor;
@@ -110,16 +111,48 @@ TEST(LiveCapacitive, ReadsEachSettledWeightWithinFivePercentPlusTheBaselineDrift
     EXPECT_GE(checked, 20);
 }
 
-TEST(LiveCapacitive, TareTakesTheRunningMeanAsTheNewZero)
+TEST(LiveCapacitive, TareTakesTheLastHalfSecondsMeanWhenTheSignalIsSteady)
 {
     const devices::simulator::CapacitiveWeightsScenario scenario;
+    ASSERT_GT(scenario.schedule().front().start_s, 8.0);  // unloaded until then
     LiveCapacitive live(scenario.channels(), scenario.sampleRate_hz(),
                         CapacitiveSensitivity::fromModel(scenario.beam()), {}, 400.0);
-    const Stream run = feed(live, scenario, 10);  // before sample 70
-    const double c0 = runningMean(run, 70);
+    const Stream run = feed(live, scenario, 10);  // before sample 70, 7 s in
+    EXPECT_FALSE(run.tareRefusal.has_value()) << *run.tareRefusal;
+    // At 10 Hz the last half second is samples 65 to 69.
+    double c0 = 0.0;
+    for (std::size_t i = 65; i < 70; ++i) c0 += run.c[i] / 5.0;
     const auto sensitivity = CapacitiveSensitivity::fromModel(scenario.beam());
-    EXPECT_NEAR(run.shown.values[0][70], (run.c[70] - c0) / sensitivity.perNewton_f, 1e-12);
-    EXPECT_DOUBLE_EQ(live.latest()->c0_f, c0);
+    EXPECT_NEAR(run.shown.values[0][70], (run.c[70] - c0) / sensitivity.perNewton_f, 1e-9);
+}
+
+TEST(LiveCapacitive, TareIsRefusedWhileTheCapacitanceStepsAndTakenOnceItSettles)
+{
+    const devices::simulator::CapacitiveWeightsScenario scenario;
+    const auto sensitivity = CapacitiveSensitivity::fromModel(scenario.beam());
+    LiveCapacitive live(scenario.channels(), 100.0, sensitivity, {}, 10.0);
+    std::uint64_t index = 0;
+    // Samples at `c_pf` with ±1 fF of alternating noise, in blocks of 10.
+    const auto feedAt = [&](double c_pf, std::size_t samples) {
+        for (std::size_t done = 0; done < samples; done += 10) {
+            core::SampleBlock block(1, 10, static_cast<double>(index) / 100.0, 0.01, index);
+            for (std::size_t i = 0; i < 10; ++i)
+                block.channel(0)[i] = (c_pf + ((index + i) % 2 ? 1e-3 : -1e-3)) * 1e-12;
+            index += 10;
+            live.consume(block);
+        }
+    };
+    feedAt(50.0, 100);
+    feedAt(51.0, 20);  // a weight goes on: the last half second holds the step
+    const auto refusal = live.tare();
+    ASSERT_TRUE(refusal.has_value());
+    EXPECT_NE(refusal->find("changing"), std::string::npos) << *refusal;
+    feedAt(51.0, 10);
+    EXPECT_NEAR(live.latest()->c0_f, 50.0e-12, 2e-15);  // the start's zero stays
+    feedAt(51.0, 60);                                   // settled
+    EXPECT_FALSE(live.tare().has_value());
+    feedAt(51.0, 10);
+    EXPECT_NEAR(live.latest()->c0_f, 51.0e-12, 1e-16);  // the mean of the last half second
 }
 
 TEST(LiveCapacitive, TakesItsSensitivitiesFromAStoredCalibrationRecord)

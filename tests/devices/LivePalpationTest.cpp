@@ -174,7 +174,7 @@ TEST(LivePalpation, DisplaysTheForcesAndQOfEachSample)
     EXPECT_GT(pressed, 1000u);  // the first press is in these 6 s
 }
 
-TEST(LivePalpation, AGapSplitsThePressInProgressAndATareDropsIt)
+TEST(LivePalpation, AGapSplitsThePressInProgressAndATareIsRefusedWhilePressing)
 {
     const Recording r = palpate(18.0);
     const auto expected = wholeRecordReadings(r);
@@ -195,22 +195,31 @@ TEST(LivePalpation, AGapSplitsThePressInProgressAndATareDropsIt)
     EXPECT_NEAR(readings[1].stiffness.objectStiffness_n_per_m, kTruth_n_per_m, 0.05 * kTruth_n_per_m);
     EXPECT_DOUBLE_EQ(readings[2].start_s, expected[2].start_s);
 
-    // A tare there: the same press is dropped, and the next 0.5 s show nothing.
+    // A tare there is refused (the probe is pressing) and changes nothing.
     LivePalpation tared(r.scenario.channels(), kRate_hz, settingsOf(r.scenario), 20.0);
     feed(tared, r.samples, 0, middle, 0);
-    tared.tare();
-    feed(tared, r.samples, middle, middle + 100, middle);
-    EXPECT_TRUE(tared.state().taring);
+    const auto refusal = tared.tare();
+    ASSERT_TRUE(refusal.has_value());
+    EXPECT_NE(refusal->find("pressing"), std::string::npos) << *refusal;
+    feed(tared, r.samples, middle, r.samples.sampleCount(), middle);
     readings = tared.takeReadings();
-    ASSERT_EQ(readings.size(), 1u);
-    EXPECT_DOUBLE_EQ(readings[0].start_s, expected[0].start_s);
-    // The rest of the press was in the zero, so it reads as lifted: no reading
-    // until the probe is pressed again.
-    feed(tared, r.samples, middle + 100, r.samples.sampleCount(), middle + 100);
-    EXPECT_FALSE(tared.state().taring);
-    readings = tared.takeReadings();
-    ASSERT_FALSE(readings.empty());
-    EXPECT_GT(readings[0].start_s, expected[1].end_s);
+    ASSERT_EQ(readings.size(), expected.size());
+    EXPECT_DOUBLE_EQ(readings[1].start_s, expected[1].start_s);
+    EXPECT_DOUBLE_EQ(readings[1].stiffness.objectStiffness_n_per_m, expected[1].stiffness.objectStiffness_n_per_m);
+
+    // Between presses, lifted and still, it is taken at once from the last
+    // half second, and the next press reads the same stiffness.
+    const auto lifted = static_cast<std::size_t>((expected[1].end_s + expected[2].start_s) / 2.0 * kRate_hz);
+    LivePalpation between(r.scenario.channels(), kRate_hz, settingsOf(r.scenario), 20.0);
+    feed(between, r.samples, 0, lifted, 0);
+    const auto accepted = between.tare();
+    EXPECT_FALSE(accepted.has_value()) << *accepted;
+    feed(between, r.samples, lifted, r.samples.sampleCount(), lifted);
+    EXPECT_FALSE(between.state().taring);
+    readings = between.takeReadings();
+    ASSERT_EQ(readings.size(), expected.size());
+    EXPECT_NEAR(readings[2].stiffness.objectStiffness_n_per_m, expected[2].stiffness.objectStiffness_n_per_m,
+                0.02 * expected[2].stiffness.objectStiffness_n_per_m);
 }
 
 TEST(LivePalpation, RefusesAProbeWithoutADisplacementChannel)

@@ -53,11 +53,11 @@ protected:
         store.addCalibration(record("capacitive", "Beam No. 1", "2026-11-20T10:00:00Z",
                                     {{"sensitivity_pf_per_mn", 1.8}, {"c0_pf", 51.44}}));
         core::storage::SessionMetadata metadata;
-        metadata.mode = "palpation";
+        metadata.mode = tactiscope::core::Mode::Palpation;
         metadata.subject = "phantom-3";
         const std::vector<core::ChannelDescriptor> channels{{"high", "count", core::ChannelKind::Other}};
         const auto session = store.beginSession(metadata, channels, 100.0);
-        store.endSession(session, core::storage::SessionStatus::Complete);
+        store.endSession(session, tactiscope::core::SessionStatus::Complete);
         store.linkCalibration(session, m_middle);
     }
 

@@ -98,7 +98,7 @@ TEST(CapacitiveView, ReadoutsFollowTheStoredCalibrationWhichTheSessionRecords)
 
     core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
     const auto session = sessions.sessions().front();
-    EXPECT_EQ(session.metadata.mode, "capacitive");
+    EXPECT_EQ(session.metadata.mode, tactiscope::core::Mode::Capacitive);
     EXPECT_NE(session.metadata.calibrationsJson.find("Dr Calibrator"), std::string::npos);
     EXPECT_NE(session.metadata.profileJson.find("capacitive_beam"), std::string::npos);
     EXPECT_EQ(sessions.calibrationsOfSession(session.id), std::vector<std::int64_t>{calibration});

@@ -37,7 +37,7 @@ protected:
             ui::readProfile(ui::builtInProfilePath(QStringLiteral("palpation"))));
         core::calibration::CalibrationRecord r;
         r.kind = "gauge_factor";
-        r.sensorName = ui::beamSensorName(probe.name, stiff);
+        r.sensorName = tactiscope::core::calibration::beamSensorName(probe.name, stiff);
         r.operatorName = "Ada";
         r.timestampUtc = when;
         r.values = {{"gauge_factor", gaugeFactor}, {"nominal_gauge_factor", 2.0}};
@@ -64,10 +64,10 @@ TEST_F(GaugeCalibrationInUseTest, TheNewestCalibrationOfEachBeamIsReadAndRecorde
     const auto newest = ui::storeCalibration(store(), gaugeRecord(true, 2.14, "2026-11-20T08:00:00Z"));
     ui::MainWindow window;
     window.setStorePath(store());
-    window.setMode(QStringLiteral("palpation"));
+    window.setMode(tactiscope::core::Mode::Palpation);
     window.connectSource(tactiscope::testing::liveSimulator("palpation"));
     const QString probe = child<QLabel>(*window.palpationView(), "probeLabel")->text();
-    EXPECT_TRUE(probe.contains(QStringLiteral("stiff beam 2026-11-20T08:00:00Z by Ada"))) << probe.toStdString();
+    EXPECT_TRUE(probe.contains(QStringLiteral("stiff beam on 2026-11-20T08:00:00Z by Ada"))) << probe.toStdString();
     EXPECT_TRUE(probe.contains(QStringLiteral("gauge factors 2.14 (stiff) and 2 (soft)"))) << probe.toStdString();
 
     ASSERT_TRUE(window.startRecording());

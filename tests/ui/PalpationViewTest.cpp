@@ -6,6 +6,7 @@
 
 #include "core/compliance/StiffnessReadings.h"
 #include "core/storage/SessionStore.h"
+#include "devices/session/LiveSession.h"
 #include "devices/simulator/PalpationScenario.h"
 #include "support/MainWindowHelpers.h"
 #include "support/Screenshot.h"
@@ -19,6 +20,7 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QPushButton>
+#include <QStatusBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
@@ -84,7 +86,7 @@ TEST(PalpationView, PressesAreListedMappedStoredAndMatchTheCoreReading)
 
     core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
     const auto session = sessions.sessions().front();
-    EXPECT_EQ(session.metadata.mode, "palpation");
+    EXPECT_EQ(session.metadata.mode, tactiscope::core::Mode::Palpation);
     EXPECT_NE(session.metadata.profileJson.find("compliance_pair"), std::string::npos);
     const auto readings = sessions.readings(session.id);
     ASSERT_GE(readings.size(), 2u);
@@ -137,11 +139,23 @@ TEST(PalpationView, TareTakesANewZeroFromTheButtonOrCtrlTAndTheXYPlotShowsTheFor
     window.show();
     auto* status = child<QLabel>(*window.palpationView(), "palpationStatus");
     ASSERT_TRUE(waitFor([&] { return status->text().startsWith(QStringLiteral("Ready")); }, 3000));
-    QTest::mouseClick(child<QPushButton>(*window.palpationView(), "tareButton"), Qt::LeftButton);
-    EXPECT_TRUE(waitFor([&] { return status->text().startsWith(QStringLiteral("Taking the zero")); }, 1000));
-    EXPECT_TRUE(waitFor([&] { return !status->text().startsWith(QStringLiteral("Taking the zero")); }, 2000));
+    // Lifted and still for half a second: taken at once from that stretch
+    // (the simulator presses every few seconds, so the button is tried until then).
+    auto* tareButton = child<QPushButton>(*window.palpationView(), "tareButton");
+    EXPECT_TRUE(waitFor(
+        [&] {
+            QTest::mouseClick(tareButton, Qt::LeftButton);
+            return window.statusBar()->currentMessage().startsWith(QStringLiteral("Tared"));
+        },
+        8000));
+    // At a press the rule refuses it, with the reason, and the zero stays.
+    ASSERT_TRUE(waitFor([&] { return status->text().startsWith(QStringLiteral("Pressing")); }, 8000));
+    runEventLoopFor(600);  // half a second into the press, so the rule sees it whole
+    ASSERT_TRUE(status->text().startsWith(QStringLiteral("Pressing")));
     QTest::keyClick(&window, Qt::Key_T, Qt::ControlModifier);
-    EXPECT_TRUE(waitFor([&] { return status->text().startsWith(QStringLiteral("Taking the zero")); }, 1000));
+    const QString refused = window.statusBar()->currentMessage();
+    EXPECT_TRUE(refused.startsWith(QStringLiteral("Not tared: the probe is pressing"))) << refused.toStdString();
+    EXPECT_FALSE(window.liveSession()->palpation()->state().taring);
 
     // The mode's XY plot (F_H against F_L), on request.
     child<QDockWidget>(window, "xyDock")->show();

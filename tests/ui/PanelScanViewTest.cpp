@@ -7,6 +7,7 @@
 #include "core/detector/LiveDetection.h"
 #include "core/detector/OfflineDetection.h"
 #include "core/storage/SessionStore.h"
+#include "devices/session/LiveSession.h"
 #include "support/MainWindowHelpers.h"
 #include "support/Screenshot.h"
 #include "support/WaitFor.h"
@@ -55,7 +56,7 @@ TEST(PanelScanView, DefectsAreListedStoredAndMatchTheCoreDetector)
     {
         // The automatic verdict is stored before the operator answers.
         core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
-        EXPECT_EQ(sessions.sessions().front().verdict, "defects found");
+        EXPECT_EQ(sessions.sessions().front().verdict, tactiscope::core::Verdict::DefectsFound);
     }
     // The operator overrides it, saying why.
     QTest::keyClicks(child<QLineEdit>(*verdict, "verdictNote"), QStringLiteral("oil drops, no dent"));
@@ -64,7 +65,7 @@ TEST(PanelScanView, DefectsAreListedStoredAndMatchTheCoreDetector)
 
     core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
     const auto session = sessions.sessions().front();
-    EXPECT_EQ(session.verdict, "pass");
+    EXPECT_EQ(session.verdict, tactiscope::core::Verdict::Pass);
     const auto notes = sessions.annotations(session.id);
     ASSERT_EQ(notes.size(), 1u);
     EXPECT_EQ(notes[0].text, "Verdict \"pass\": oil drops, no dent");
@@ -102,10 +103,10 @@ TEST(PanelScanView, EditedParametersReachTheLiveDetectorAndBadOnesAreRefused)
     auto* threshold = child<QDoubleSpinBox>(*view, "thresholdBox");
     threshold->setValue(0.999);
     runEventLoopFor(300);
-    view->takeNewEvents();  // whatever the old threshold found
+    const std::size_t before = window.liveSession()->panelDefects().size();  // whatever the old threshold found
     // R stays below 0.999 on this probe: no defect for three seconds.
     runEventLoopFor(3000);
-    EXPECT_TRUE(view->takeNewEvents().empty());
+    EXPECT_EQ(window.liveSession()->panelDefects().size(), before);
     // Lags from 200 to 100 ms cannot be: refused, with the reason shown.
     child<QDoubleSpinBox>(*view, "lagFromBox")->setValue(200);
     child<QDoubleSpinBox>(*view, "lagToBox")->setValue(100);
@@ -117,5 +118,5 @@ TEST(PanelScanView, EditedParametersReachTheLiveDetectorAndBadOnesAreRefused)
     child<QDoubleSpinBox>(*view, "lagToBox")->setValue(150);
     threshold->setValue(0.85);
     EXPECT_FALSE(error->isVisible());
-    EXPECT_TRUE(waitFor([&] { return !view->takeNewEvents().empty(); }, 5000));
+    EXPECT_TRUE(waitFor([&] { return window.liveSession()->panelDefects().size() > before; }, 5000));
 }

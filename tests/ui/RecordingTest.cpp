@@ -5,6 +5,7 @@
 // the markers. A store that cannot be opened is shown without stopping the
 // live view; sessions a crash cut short are reported once.
 #include "core/SampleBlock.h"
+#include "core/Version.h"
 #include "core/storage/SessionStore.h"
 #include "support/MainWindowHelpers.h"
 #include "support/Screenshot.h"
@@ -72,11 +73,14 @@ TEST(Recording, TheSessionBarRecordsASessionWithItsMetadataAndAMarker)
     const auto list = sessions.sessions();
     ASSERT_EQ(list.size(), 1u);
     const auto& s = list.front();
-    EXPECT_EQ(s.status, "complete");
-    EXPECT_EQ(s.metadata.mode, "panel-scan");
+    EXPECT_EQ(s.status, tactiscope::core::SessionStatus::Complete);
+    EXPECT_EQ(s.metadata.mode, tactiscope::core::Mode::PanelScan);
     EXPECT_EQ(s.metadata.subject, "door-17");
     EXPECT_EQ(s.metadata.operatorName, "Ada");
-    EXPECT_EQ(s.metadata.deviceModel, "Simulator — panel scan");
+    // The simulator's identity, as a device's INFO would give it.
+    EXPECT_EQ(s.metadata.deviceModel, "Tactiscope simulator");
+    EXPECT_EQ(s.metadata.deviceSerial, "panel scan");
+    EXPECT_EQ(s.metadata.deviceFirmware, tactiscope::core::versionString());
     EXPECT_EQ(s.sampleRate_hz, 500.0);
     // About two seconds of the 500 Hz simulator, with nothing lost.
     EXPECT_GT(s.sampleCount, 700u);
@@ -84,7 +88,7 @@ TEST(Recording, TheSessionBarRecordsASessionWithItsMetadataAndAMarker)
     EXPECT_TRUE(sessions.gaps(s.id).empty());
     std::vector<core::storage::SessionEvent> markers;  // the detector's defects are there too
     for (const auto& e : sessions.events(s.id))
-        if (e.kind == "marker") markers.push_back(e);
+        if (e.kind == tactiscope::core::EventKind::Marker) markers.push_back(e);
     ASSERT_EQ(markers.size(), 2u);
     EXPECT_GT(markers[0].start_s, 0.9);
     EXPECT_TRUE(markers[0].note.empty());
@@ -125,7 +129,7 @@ TEST(Recording, SessionsACrashCutShortAreReportedOnce)
         // A recording that never ended: what a crash leaves behind.
         core::storage::SessionStore sessions(store.toStdString());
         core::storage::SessionMetadata metadata;
-        metadata.mode = "palpation";
+        metadata.mode = tactiscope::core::Mode::Palpation;
         metadata.subject = "phantom-4";
         const std::vector<core::ChannelDescriptor> channels{{"a", "", core::ChannelKind::Strain}};
         const auto id = sessions.beginSession(metadata, channels, 100.0);
@@ -147,7 +151,7 @@ TEST(Recording, SessionsACrashCutShortAreReportedOnce)
     runEventLoopFor(50);
 
     core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
-    EXPECT_EQ(sessions.sessions().front().status, "interrupted");
+    EXPECT_EQ(sessions.sessions().front().status, tactiscope::core::SessionStatus::Interrupted);
     window.reportInterruptedSessions();  // already reported
     EXPECT_EQ(window.findChild<QMessageBox*>(QStringLiteral("interruptedBox")), nullptr);
 }

@@ -19,13 +19,13 @@ core::report::ReportData oneChannelSession(const QTemporaryDir& dir)
 {
     core::storage::SessionStore store(dir.filePath(QStringLiteral("p.tactiscope")).toStdString());
     core::storage::SessionMetadata metadata;
-    metadata.mode = "capacitive";
+    metadata.mode = tactiscope::core::Mode::Capacitive;
     const std::vector<core::ChannelDescriptor> channels{{"C", "F", core::ChannelKind::Capacitance}};
     const auto id = store.beginSession(metadata, channels, 10.0);
     core::SampleBlock block(1, 100, 0.0, 0.1, 0);
     for (std::size_t i = 0; i < 100; ++i) block.channel(0)[i] = 51.44e-12 + 1e-15 * static_cast<double>(i);
     store.appendBlocks(id, std::span(&block, 1));
-    store.endSession(id, core::storage::SessionStatus::Complete);
+    store.endSession(id, tactiscope::core::SessionStatus::Complete);
     return core::report::gatherReport(store, id);
 }
 

@@ -52,11 +52,12 @@ protected:
         ASSERT_EQ(runCli({"import", m_csv, "--db", m_db, "--subject", "door-5"}).exitCode, 0);
         core::storage::SessionStore store(m_db.toStdString());
         // Two recorded defects and an operator's marker, as a live session has.
-        store.addEvents(1, std::vector<core::storage::SessionEvent>{
-                               {0, "live", "defect", 120.0, 120.1, 1, 0.91, 0.052, std::nullopt, ""},
-                               {0, "live", "defect", 300.5, 300.6, -1, 0.88, 0.050, std::nullopt, ""},
-                               {0, "live", "marker", 450.0, 450.0, 0, std::nullopt, std::nullopt, std::nullopt,
-                                "scratch by the hem"}});
+        store.addEvents(
+            1, std::vector<core::storage::SessionEvent>{
+                   {0, "live", tactiscope::core::EventKind::Defect, 120.0, 120.1, 1, 0.91, 0.052, std::nullopt, ""},
+                   {0, "live", tactiscope::core::EventKind::Defect, 300.5, 300.6, -1, 0.88, 0.050, std::nullopt, ""},
+                   {0, "live", tactiscope::core::EventKind::Marker, 450.0, 450.0, 0, std::nullopt, std::nullopt,
+                    std::nullopt, "scratch by the hem"}});
         QString error;
         m_window = ui::ReviewWindow::open(m_db, 1, nullptr, error);
         ASSERT_NE(m_window, nullptr) << error.toStdString();

@@ -357,7 +357,7 @@ TEST_F(SensorProfileDialogTest, AProbeChosenWhileStreamingReadsTheNextPressesAnd
     ui::MainWindow window;
     window.setStorePath(store);
     window.resize(1400, 900);
-    window.setMode(QStringLiteral("palpation"));
+    window.setMode(tactiscope::core::Mode::Palpation);
     window.connectSource(tactiscope::testing::liveSimulator("palpation"));
     window.show();
     ui::SensorProfileDialog* dialog = window.showProfiles();

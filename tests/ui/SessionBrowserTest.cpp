@@ -39,13 +39,12 @@ using tactiscope::testing::waitFor;
 namespace {
 
 constexpr int kSessions = 60;
-const char* const kModes[] = {"panel-scan", "palpation", "capacitive"};
 
 // Session i (from 0): mode i % 3, i + 1 seconds at 10 Hz, i % 5 events,
-// interrupted when i % 7 == 3, verdict "defect" for panel scans with
+// interrupted when i % 7 == 3, verdict "defects found" for panel scans with
 // events, else "pass" for panel scans; subject "door-<i>" or "phantom-<i>".
 struct Expected {
-    std::map<std::string, int> perMode;
+    std::map<tactiscope::core::Mode, int> perMode;
     int interrupted = 0;
     int defectVerdicts = 0;
 };
@@ -60,21 +59,22 @@ protected:
         const std::vector<core::ChannelDescriptor> channels{{"a", "", core::ChannelKind::Strain}};
         for (int i = 0; i < kSessions; ++i) {
             SessionMetadata metadata;
-            metadata.mode = kModes[i % 3];
+            metadata.mode = tactiscope::core::kModes[static_cast<std::size_t>(i % 3)];
             metadata.subject = (i % 3 == 0 ? "door-" : "phantom-") + std::to_string(i);
             metadata.operatorName = i % 2 ? "Ada" : "Grace";
             const auto id = store.beginSession(metadata, channels, 10.0);
             core::SampleBlock block(1, static_cast<std::size_t>(10 * (i + 1)), 0.0, 0.1, 0);
             store.appendBlocks(id, std::vector{block});
             std::vector<SessionEvent> events(static_cast<std::size_t>(i % 5));
-            for (auto& e : events) e.kind = "marker";
+            for (auto& e : events) e.kind = tactiscope::core::EventKind::Marker;
             store.addEvents(id, events);
             const bool interrupted = i % 7 == 3;
-            store.endSession(id, interrupted ? SessionStatus::Interrupted : SessionStatus::Complete);
+            store.endSession(id, interrupted ? tactiscope::core::SessionStatus::Interrupted
+                                             : tactiscope::core::SessionStatus::Complete);
             m_expected.perMode[metadata.mode] += 1;
             m_expected.interrupted += interrupted ? 1 : 0;
             if (i % 3 == 0) {
-                store.setVerdict(id, i % 5 ? "defect" : "pass");
+                store.setVerdict(id, i % 5 ? tactiscope::core::Verdict::DefectsFound : tactiscope::core::Verdict::Pass);
                 m_expected.defectVerdicts += i % 5 ? 1 : 0;
             }
             m_ids.push_back(id);
@@ -108,7 +108,7 @@ TEST_F(SessionBrowserTest, ListsEverySessionAndFiltersAsCountedWhenWritten)
 
     auto* mode = child<QComboBox>(browser, "modeFilter");
     mode->setCurrentText(QStringLiteral("palpation"));
-    EXPECT_EQ(rows(browser), m_expected.perMode["palpation"]);
+    EXPECT_EQ(rows(browser), m_expected.perMode[tactiscope::core::Mode::Palpation]);
     for (int r = 0; r < rows(browser); ++r)
         EXPECT_EQ(cell(browser, r, ui::SessionTableModel::Mode).toString(), QStringLiteral("palpation"));
     mode->setCurrentIndex(0);
@@ -123,7 +123,7 @@ TEST_F(SessionBrowserTest, ListsEverySessionAndFiltersAsCountedWhenWritten)
 
     auto* verdict = child<QComboBox>(browser, "verdictFilter");
     ASSERT_EQ(verdict->count(), 3);  // any, defect, pass: what the store holds
-    verdict->setCurrentText(QStringLiteral("defect"));
+    verdict->setCurrentText(QStringLiteral("defects found"));
     EXPECT_EQ(rows(browser), m_expected.defectVerdicts);
     verdict->setCurrentIndex(0);
 

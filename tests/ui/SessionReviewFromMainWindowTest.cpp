@@ -33,12 +33,12 @@ QString storeWithACrash(const QTemporaryDir& dir)
     const std::vector<core::ChannelDescriptor> channels{{"a", "", core::ChannelKind::Strain}};
     for (int i = 0; i < 3; ++i) {
         core::storage::SessionMetadata metadata;
-        metadata.mode = "palpation";
+        metadata.mode = tactiscope::core::Mode::Palpation;
         metadata.subject = "phantom-" + std::to_string(i);
         const auto id = store.beginSession(metadata, channels, 100.0);
         core::SampleBlock block(1, 250, 0.0, 0.01, 0);
         store.appendBlocks(id, std::span(&block, 1));
-        if (i < 2) store.endSession(id, core::storage::SessionStatus::Complete);
+        if (i < 2) store.endSession(id, tactiscope::core::SessionStatus::Complete);
     }
     return path;
 }

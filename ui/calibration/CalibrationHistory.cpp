@@ -1,5 +1,6 @@
 // CalibrationHistory: sensors, records, drift plot, sessions per record.
 #include "ui/calibration/CalibrationHistory.h"
+#include "ui/VocabularyText.h"
 
 #include "core/calibration/CalibrationDrift.h"
 #include "core/storage/SessionStore.h"
@@ -33,7 +34,7 @@ struct MainValue {
 
 MainValue mainValueOf(const std::string& kind)
 {
-    if (kind == "capacitive")
+    if (kind == core::calibration::kCapacitiveKind)
         return {"sensitivity_pf_per_mn", "sensitivity_standard_error_pf_per_mn", "Sensitivity (pF/mN)", 4};
     return {"gauge_factor", "gauge_factor_standard_error", "Gauge factor", 4};
 }
@@ -247,7 +248,7 @@ void CalibrationHistory::showSessions()
                                     .arg(id)
                                     .arg(QString::fromStdString(session->startedUtc),
                                          QString::fromStdString(session->metadata.subject),
-                                         QString::fromStdString(session->metadata.mode)));
+                                         wordText(session->metadata.mode)));
         }
         if (ids.empty()) m_sessions->addItem(tr("none yet"));
     } catch (const core::storage::StorageError& e) {

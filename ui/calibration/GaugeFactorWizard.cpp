@@ -287,7 +287,7 @@ core::sensors::CantileverBeam GaugeFactorWizard::beam() const
 
 std::string GaugeFactorWizard::sensorName() const
 {
-    return beamSensorName(probe()->name, m_beam->currentIndex() == 0);
+    return core::calibration::beamSensorName(probe()->name, m_beam->currentIndex() == 0);
 }
 
 void GaugeFactorWizard::showBeam()
@@ -325,7 +325,7 @@ void GaugeFactorWizard::prefillChain()
 {
     core::straingauge::AdcSettings adc;
     core::straingauge::BridgeSettings bridge;
-    const auto stored = newestCalibration(m_context.storePath, "gauge_factor", sensorName());
+    const auto stored = newestCalibration(m_context.storePath, core::calibration::kGaugeFactorKind, sensorName());
     if (stored) {
         const auto& r = stored->record;
         bridge.type = bridgeOfGauges(r.value("bridge_active_gauges").value_or(2.0));

@@ -9,15 +9,13 @@
 
 namespace tactiscope::ui {
 
-std::optional<core::storage::StoredCalibration> newestCalibration(const QString& storePath, const std::string& kind,
+std::optional<core::storage::StoredCalibration> newestCalibration(const QString& storePath, std::string_view kind,
                                                                   const std::string& sensor)
 {
     if (!QFileInfo::exists(storePath)) return std::nullopt;
     try {
         core::storage::SessionStore store(storePath.toStdString(), core::storage::Database::Access::ReadOnly);
-        auto all = store.calibrations(sensor);
-        for (auto it = all.rbegin(); it != all.rend(); ++it)
-            if (it->record.kind == kind) return std::move(*it);
+        return store.newestCalibration(kind, sensor);
     } catch (const core::storage::StorageError& e) {
         qWarning("calibrations not read: %s", e.what());
     }
@@ -41,11 +39,6 @@ std::optional<std::int64_t> storeCalibrationOrSay(QWidget* parent, const QString
                                  .arg(storePath, QString::fromStdString(e.what())));
         return std::nullopt;
     }
-}
-
-std::string beamSensorName(const std::string& probeName, bool stiffBeam)
-{
-    return probeName + (stiffBeam ? " — stiff beam" : " — soft beam");
 }
 
 }  // namespace tactiscope::ui

@@ -1,7 +1,6 @@
 // The calibration records of the session store as the live views and the
 // wizards use them: the newest record of a kind for a sensor is the active
-// one, and a strain-gauged beam of a compliance probe is a sensor of its
-// own ("<probe> — stiff beam"), since each beam's gauge has its own factor.
+// one (sensor names: core::calibration::beamSensorName).
 #pragma once
 
 #include "core/storage/SessionRecords.h"
@@ -16,7 +15,7 @@ class QWidget;
 namespace tactiscope::ui {
 
 // None when the store does not exist or cannot be read (logged).
-std::optional<core::storage::StoredCalibration> newestCalibration(const QString& storePath, const std::string& kind,
+std::optional<core::storage::StoredCalibration> newestCalibration(const QString& storePath, std::string_view kind,
                                                                   const std::string& sensor);
 
 // Stores the record and returns its id. Throws core::storage::StorageError.
@@ -25,7 +24,5 @@ std::int64_t storeCalibration(const QString& storePath, const core::calibration:
 // `parent`, and the wizard stays open with nothing lost.
 std::optional<std::int64_t> storeCalibrationOrSay(QWidget* parent, const QString& storePath,
                                                   const core::calibration::CalibrationRecord& record);
-
-std::string beamSensorName(const std::string& probeName, bool stiffBeam);
 
 }  // namespace tactiscope::ui

@@ -1,5 +1,6 @@
 // ReportDocument: the report's HTML, its plot resource, and the PDF.
 #include "ui/report/ReportDocument.h"
+#include "ui/VocabularyText.h"
 
 #include "core/Version.h"
 #include "core/text/UtcTime.h"
@@ -89,7 +90,7 @@ QString header(const core::report::ReportData& data)
     QString html = QStringLiteral("<table class=header cellspacing=0 cellpadding=2>");
     html += row(QObject::tr("Subject"), orDash(m.subject));
     html += row(QObject::tr("Operator"), orDash(m.operatorName));
-    html += row(QObject::tr("Mode"), orDash(m.mode));
+    html += row(QObject::tr("Mode"), wordText(m.mode));
     if (!m.site.empty()) html += row(QObject::tr("Site"), text(m.site));
     html += row(QObject::tr("Started"), QObject::tr("%1 (UTC)").arg(text(s.startedUtc)));
     html += row(QObject::tr("Covered"), range);
@@ -106,19 +107,18 @@ QString header(const core::report::ReportData& data)
                                             .arg(number(s.sampleRate_hz, 1))
                                             .arg(QLocale().toString(static_cast<qulonglong>(s.sampleCount)))
                                             .arg(losses));
-    html += row(QObject::tr("Session"), QObject::tr("%1 (%2), %3").arg(s.id).arg(text(s.uuid), text(s.status)));
+    html += row(QObject::tr("Session"), QObject::tr("%1 (%2), %3").arg(s.id).arg(text(s.uuid), wordText(s.status)));
     if (!m.notes.empty()) html += row(QObject::tr("Notes"), text(m.notes));
     return html + QStringLiteral("</table>");
 }
 
 QString verdict(const core::report::ReportData& data)
 {
-    const std::string& verdict = data.session.verdict;
-    if (!verdict.empty()) {
-        const bool pass = verdict == "pass";
+    if (const auto verdict = data.session.verdict) {
+        const bool pass = *verdict == core::Verdict::Pass;
         return QStringLiteral("<p class=verdict style='color:%1'>%2 %3</p>")
             .arg(pass ? QStringLiteral("#2e7d32") : QStringLiteral("#c62828"), QObject::tr("Verdict:"),
-                 text(verdict).toUpper());
+                 wordText(*verdict).toUpper());
     }
     if (!data.readings.empty()) {
         double sum = 0.0;
@@ -136,18 +136,18 @@ QString eventTables(const core::report::ReportData& data)
 {
     std::vector<QStringList> defects, others;
     for (const auto& e : data.events) {
-        if (e.kind == "defect") {
+        if (e.kind == core::EventKind::Defect) {
             defects.push_back({number(e.start_s, 3),
                                e.direction > 0 ? QObject::tr("A then B") : QObject::tr("B then A"),
                                e.peakR ? number(*e.peakR, 3) : QStringLiteral("—"),
                                e.lag_s ? number(*e.lag_s * 1e3, 0) : QStringLiteral("—"),
                                e.speed_m_per_s ? number(*e.speed_m_per_s * 1e3, 0) : QStringLiteral("—")});
         } else {
-            others.push_back({number(e.start_s, 3), text(e.kind), orDash(e.note)});
+            others.push_back({number(e.start_s, 3), wordText(e.kind), orDash(e.note)});
         }
     }
     QString html;
-    if (data.session.metadata.mode == "panel-scan" || !defects.empty()) {
+    if (data.session.metadata.mode == core::Mode::PanelScan || !defects.empty()) {
         html += QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Defects (%1)").arg(defects.size()));
         html += defects.empty() ? QStringLiteral("<p>%1</p>").arg(QObject::tr("None found."))
                                 : table({QObject::tr("Time (s)"), QObject::tr("Order"), QObject::tr("Peak R"),

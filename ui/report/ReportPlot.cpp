@@ -95,9 +95,9 @@ std::unique_ptr<QCustomPlot> buildPlot(const core::report::ReportData& data)
             shade(*plot, rect, static_cast<double>(gap.firstIndex) / rate_hz,
                   static_cast<double>(gap.firstIndex + gap.count) / rate_hz, kGap);
         for (const auto& event : data.events) {
-            if (event.kind == "defect")
+            if (event.kind == core::EventKind::Defect)
                 shade(*plot, rect, event.start_s, event.end_s, event.direction > 0 ? kDefectAThenB : kDefectBThenA);
-            else if (event.kind == "marker")
+            else if (event.kind == core::EventKind::Marker)
                 mark(*plot, rect, event.start_s);
         }
         for (const auto& reading : data.readings) shade(*plot, rect, reading.start_s, reading.end_s, kReading);

@@ -1,5 +1,6 @@
 // ReviewWindow: header, plot, record list, notes, replay, re-analysis and exports.
 #include "ui/review/ReviewWindow.h"
+#include "ui/VocabularyText.h"
 
 #include "core/report/ReportData.h"
 #include "core/storage/DefectRecords.h"
@@ -53,13 +54,13 @@ QString text(const std::string& s)
 
 QColor eventColour(const core::storage::SessionEvent& e)
 {
-    if (e.kind != "defect") return kOtherEvent;
+    if (e.kind != core::EventKind::Defect) return kOtherEvent;
     return e.direction > 0 ? kAThenB : kBThenA;
 }
 
 QString eventDetails(const core::storage::SessionEvent& e)
 {
-    if (e.kind != "defect") return text(e.note);
+    if (e.kind != core::EventKind::Defect) return text(e.note);
     QStringList parts{e.direction > 0 ? QObject::tr("A then B") : QObject::tr("B then A")};
     if (e.peakR) parts << QObject::tr("R = %1").arg(*e.peakR, 0, 'f', 3);
     if (e.lag_s) parts << QObject::tr("lag %1 ms").arg(*e.lag_s * 1e3, 0, 'f', 0);
@@ -124,12 +125,12 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionStor
     setWindowFlag(Qt::Window);
     setObjectName(QStringLiteral("reviewWindow"));
     const auto& meta = m_session.metadata;
-    setWindowTitle(tr("Review: session %1 — %2 %3").arg(m_session.id).arg(text(meta.mode), text(meta.subject)));
+    setWindowTitle(tr("Review: session %1 — %2 %3").arg(m_session.id).arg(wordText(meta.mode), text(meta.subject)));
 
-    const bool interrupted = m_session.status == core::storage::toString(core::storage::SessionStatus::Interrupted);
+    const bool interrupted = m_session.status == core::SessionStatus::Interrupted;
     const QDateTime started = QDateTime::fromString(text(m_session.startedUtc), Qt::ISODateWithMs).toLocalTime();
     // Only what the session holds: an empty field says nothing.
-    QStringList header{tr("<b>%1</b>").arg(text(meta.mode).toHtmlEscaped())};
+    QStringList header{tr("<b>%1</b>").arg(wordText(meta.mode).toHtmlEscaped())};
     const auto add = [&header](const QString& format, const std::string& value) {
         if (!value.empty()) header << format.arg(text(value).toHtmlEscaped());
     };
@@ -140,8 +141,8 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionStor
            << tr("%1 at %2 Hz").arg(durationText(m_session.duration_s())).arg(m_session.sampleRate_hz, 0, 'g', 6);
     add(tr("device %1"), (meta.deviceModel + " " + meta.deviceSerial).substr(meta.deviceModel.empty() ? 1 : 0));
     header << (interrupted ? tr("<span style='color:#a05000'><b>interrupted</b> (kept up to the cut)</span>")
-                           : tr("status %1").arg(text(m_session.status)));
-    add(tr("verdict <b>%1</b>"), m_session.verdict);
+                           : tr("status %1").arg(wordText(m_session.status)));
+    add(tr("verdict <b>%1</b>"), std::string(core::verdictText(m_session.verdict)));
     auto* headerLabel = wrappedLabel(header.join(QStringLiteral(" · ")), this);
     headerLabel->setObjectName(QStringLiteral("sessionHeader"));
     m_problem = wrappedLabel({}, this);
@@ -157,7 +158,7 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionStor
     m_list->setAlternatingRowColors(true);
     m_list->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_list->header()->setStretchLastSection(true);
-    if (meta.mode == "panel-scan") m_reanalysis = new ReanalysisPanel(storePath, *m_store, m_session, this);
+    if (meta.mode == core::Mode::PanelScan) m_reanalysis = new ReanalysisPanel(storePath, *m_store, m_session, this);
 
     auto* bottom = new QSplitter(Qt::Horizontal, this);
     bottom->addWidget(m_list);
@@ -266,7 +267,7 @@ void ReviewWindow::refreshRecords()
     try {
         for (const auto& e : m_store->events(m_session.id)) {
             spans.push_back({e.start_s, e.end_s, 0, eventColour(e)});
-            entries.push_back({e.start_s, e.end_s, text(e.kind), tr("recorded"), eventDetails(e)});
+            entries.push_back({e.start_s, e.end_s, wordText(e.kind), tr("recorded"), eventDetails(e)});
         }
         if (m_reanalysis) {
             rows << tr("Re-analysis");
@@ -284,13 +285,13 @@ void ReviewWindow::refreshRecords()
             for (const auto& e : m_store->events(m_session.id, analysis)) {
                 spans.push_back({e.start_s, e.end_s, row, eventColour(e)});
                 entries.push_back(
-                    {e.start_s, e.end_s, text(e.kind), tr("saved \"%1\"").arg(text(analysis)), eventDetails(e)});
+                    {e.start_s, e.end_s, wordText(e.kind), tr("saved \"%1\"").arg(text(analysis)), eventDetails(e)});
             }
         }
         rows << tr("Readings");
         for (const auto& r : m_store->readings(m_session.id)) {
             spans.push_back({r.start_s, r.end_s, static_cast<int>(rows.size()) - 1, kReading});
-            entries.push_back({r.start_s, r.end_s, text(r.kind), tr("reading"), readingDetails(r)});
+            entries.push_back({r.start_s, r.end_s, wordText(r.kind), tr("reading"), readingDetails(r)});
         }
         rows << tr("Notes");
         for (const auto& a : m_store->annotations(m_session.id)) {

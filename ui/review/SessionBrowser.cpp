@@ -1,5 +1,6 @@
 // SessionBrowser: filters, table, open and delete.
 #include "ui/review/SessionBrowser.h"
+#include "ui/VocabularyText.h"
 
 #include "ui/calibration/WizardText.h"
 #include "ui/review/SessionTableModel.h"
@@ -54,7 +55,7 @@ QString describe(const core::storage::SessionSummary& s)
 {
     return QObject::tr("#%1 %2 %3 (%4, %5)")
         .arg(s.id)
-        .arg(QString::fromStdString(s.metadata.mode), QString::fromStdString(s.metadata.subject),
+        .arg(wordText(s.metadata.mode), QString::fromStdString(s.metadata.subject),
              QString::fromStdString(s.startedUtc.substr(0, 16)).replace(QLatin1Char('T'), QLatin1Char(' ')) +
                  QObject::tr(" UTC"),
              durationText(s.duration_s()));
@@ -96,11 +97,11 @@ SessionBrowser::SessionBrowser(const QString& storePath, QWidget* parent)
     m_search->setPlaceholderText(tr("Search subject, operator, site, notes, verdict, serial…"));
     m_search->setClearButtonEnabled(true);
     m_mode->addItem(tr("Any mode"));
-    m_mode->addItems({QStringLiteral("panel-scan"), QStringLiteral("palpation"), QStringLiteral("capacitive")});
+    for (const core::Mode mode : core::kModes) m_mode->addItem(wordText(mode));
     m_status->addItem(tr("Any status"));
-    for (const auto status : {core::storage::SessionStatus::Complete, core::storage::SessionStatus::Interrupted,
-                              core::storage::SessionStatus::Recording})
-        m_status->addItem(QString::fromLatin1(core::storage::toString(status)));
+    for (const auto status :
+         {core::SessionStatus::Complete, core::SessionStatus::Interrupted, core::SessionStatus::Recording})
+        m_status->addItem(wordText(status));
     m_verdict->addItem(tr("Any verdict"));
 
     m_sorted->setSourceModel(m_model);
@@ -176,8 +177,9 @@ void SessionBrowser::reload()
     } else {
         core::storage::SessionFilter filter;
         filter.text = m_search->text().trimmed().toStdString();
-        if (m_mode->currentIndex() > 0) filter.mode = m_mode->currentText().toStdString();
-        if (m_verdict->currentIndex() > 0) filter.verdict = m_verdict->currentText().toStdString();
+        if (m_mode->currentIndex() > 0) filter.mode = core::modeFromString(m_mode->currentText().toStdString());
+        if (m_verdict->currentIndex() > 0)
+            filter.verdict = core::verdictFromString(m_verdict->currentText().toStdString());
         if (m_from->date() != kAnyDate) filter.startedFrom = utcStartOf(m_from->date());
         if (m_to->date() != kAnyDate) filter.startedBefore = utcStartOf(m_to->date().addDays(1));
         try {
@@ -186,7 +188,7 @@ void SessionBrowser::reload()
             total = all.size();
             QStringList verdicts;
             for (const auto& s : all)
-                if (!s.verdict.empty()) verdicts << QString::fromStdString(s.verdict);
+                if (s.verdict) verdicts << wordText(s.verdict);
             fillChoices(m_verdict, verdicts);
             shown = store.sessions(filter);
         } catch (const core::storage::StorageError& e) {
@@ -194,8 +196,7 @@ void SessionBrowser::reload()
             m_problem->show();
         }
         if (m_status->currentIndex() > 0)
-            std::erase_if(shown,
-                          [&](const auto& s) { return QString::fromStdString(s.status) != m_status->currentText(); });
+            std::erase_if(shown, [&](const auto& s) { return wordText(s.status) != m_status->currentText(); });
     }
     m_model->setSessions(std::move(shown));
     m_count->setText(tr("%1 of %2 sessions").arg(m_model->rowCount()).arg(total));

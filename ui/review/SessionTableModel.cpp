@@ -1,5 +1,6 @@
 // SessionTableModel: one row per stored session.
 #include "ui/review/SessionTableModel.h"
+#include "ui/VocabularyText.h"
 
 #include <QApplication>
 #include <QColor>
@@ -18,7 +19,7 @@ QString text(const std::string& s)
 
 bool isInterrupted(const core::storage::SessionSummary& s)
 {
-    return s.status == core::storage::toString(core::storage::SessionStatus::Interrupted);
+    return s.status == core::SessionStatus::Interrupted;
 }
 
 // The start as local time, which is what the operator saw on the wall clock.
@@ -83,7 +84,7 @@ QVariant SessionTableModel::data(const QModelIndex& index, int role) const
         return sortKey ? QVariant(QStringLiteral("%1#%2").arg(text(s->startedUtc)).arg(s->id, 12, 10, QLatin1Char('0')))
                        : QVariant(startOf(*s).toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")));
     case Mode:
-        return text(s->metadata.mode);
+        return wordText(s->metadata.mode);
     case Subject:
         return text(s->metadata.subject);
     case Operator:
@@ -91,9 +92,9 @@ QVariant SessionTableModel::data(const QModelIndex& index, int role) const
     case Duration:
         return sortKey ? QVariant(s->duration_s()) : QVariant(durationText(s->duration_s()));
     case Status:
-        return text(s->status);
+        return wordText(s->status);
     case Verdict:
-        return text(s->verdict);
+        return wordText(s->verdict);
     case Events:
         return QVariant::fromValue<qulonglong>(s->eventCount);
     default:

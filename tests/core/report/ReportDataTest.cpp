@@ -29,7 +29,7 @@ double sampleValue(std::size_t i)
 std::int64_t recordSession(SessionStore& store)
 {
     SessionMetadata metadata;
-    metadata.mode = "panel-scan";
+    metadata.mode = tactiscope::core::Mode::PanelScan;
     metadata.subject = "door-7";
     metadata.operatorName = "Ada";
     metadata.profileJson = R"({"kind": "cantilever", "name": "Capsule probe 3", "length_m": 0.05})";
@@ -49,13 +49,14 @@ std::int64_t recordSession(SessionStore& store)
         blocks.push_back(std::move(block));
     }
     store.appendBlocks(id, blocks);
-    store.addEvents(id, std::vector<SessionEvent>{
-                            {0, kLiveAnalysis, "defect", 2.0, 2.2, 1, 0.95, 0.05, 0.9, ""},
-                            {0, kLiveAnalysis, "defect", 12.0, 12.3, -1, 0.93, 0.04, 1.1, ""},
-                            {0, "other", "defect", 12.0, 12.3, -1, 0.5, 0.04, 1.1, ""},
-                        });
+    store.addEvents(id,
+                    std::vector<SessionEvent>{
+                        {0, kLiveAnalysis, tactiscope::core::EventKind::Defect, 2.0, 2.2, 1, 0.95, 0.05, 0.9, ""},
+                        {0, kLiveAnalysis, tactiscope::core::EventKind::Defect, 12.0, 12.3, -1, 0.93, 0.04, 1.1, ""},
+                        {0, "other", tactiscope::core::EventKind::Defect, 12.0, 12.3, -1, 0.5, 0.04, 1.1, ""},
+                    });
     store.addAnnotation(id, {0, 15.0, "Ada", "scratch, not a dent", "", ""});
-    store.endSession(id, SessionStatus::Complete);
+    store.endSession(id, tactiscope::core::SessionStatus::Complete);
     return id;
 }
 

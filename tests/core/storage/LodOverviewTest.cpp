@@ -28,7 +28,7 @@ const std::vector<ChannelDescriptor> kChannels{{"a", "", ChannelKind::Strain}, {
 SessionMetadata panelScan()
 {
     SessionMetadata metadata;
-    metadata.mode = "panel-scan";
+    metadata.mode = tactiscope::core::Mode::PanelScan;
     return metadata;
 }
 

@@ -50,7 +50,7 @@ const std::vector<ChannelDescriptor> kChannels{{"x", "m", ChannelKind::Position}
 SessionMetadata palpation()
 {
     SessionMetadata metadata;
-    metadata.mode = "palpation";
+    metadata.mode = tactiscope::core::Mode::Palpation;
     return metadata;
 }
 
@@ -74,13 +74,13 @@ TEST_F(RecorderTest, StoresEveryConsumedSampleFromSampleZero)
         id = recorder.sessionId();
         // The device's count starts at 5000: the session still starts at 0.
         for (std::uint64_t first = 5000; first < 8000; first += 30) recorder.consume(deviceBlock(first, 30));
-        const auto stats = recorder.finish(SessionStatus::Complete);
+        const auto stats = recorder.finish(tactiscope::core::SessionStatus::Complete);
         EXPECT_EQ(stats.samplesWritten, 3000u);
         EXPECT_EQ(stats.samplesDropped, 0u);
         EXPECT_TRUE(stats.error.empty());
     }
     SessionStore store(m_path, Database::Access::ReadOnly);
-    EXPECT_EQ(store.session(id)->status, "complete");
+    EXPECT_EQ(store.session(id)->status, tactiscope::core::SessionStatus::Complete);
     EXPECT_EQ(store.sampleCount(id), 3000u);
     EXPECT_TRUE(store.gaps(id).empty());
     const auto force = store.readChannel(id, 1, 0, 3000);
@@ -112,7 +112,7 @@ TEST_F(RecorderTest, MemoryStaysBoundedWhileTheDiskIsHeldUpAndTheOverflowIsAGap)
     }));
     recorder.consume(deviceBlock(sent, 50));
     sent += 50;
-    const auto stats = recorder.finish(SessionStatus::Complete);
+    const auto stats = recorder.finish(tactiscope::core::SessionStatus::Complete);
     EXPECT_GE(stats.samplesDropped, 20'000u - 2 * 200u);  // at most the queue and one batch in flight
     EXPECT_EQ(stats.samplesWritten + stats.samplesDropped, sent);
 
@@ -130,7 +130,7 @@ TEST_F(RecorderTest, SamplesDroppedAtTheEndAreMarkedLost)
     Recorder recorder(m_path, palpation(), kChannels, 1000.0, 100);
     const auto id = recorder.sessionId();
     for (std::uint64_t first = 0; first < 1000; first += 50) recorder.consume(deviceBlock(first, 50));
-    const auto stats = recorder.finish(SessionStatus::Complete);
+    const auto stats = recorder.finish(tactiscope::core::SessionStatus::Complete);
     EXPECT_EQ(stats.samplesWritten + stats.samplesDropped, 1000u);
     EXPECT_TRUE(stats.error.empty()) << stats.error;
     SessionStore store(m_path, Database::Access::ReadOnly);
@@ -150,14 +150,14 @@ TEST_F(RecorderTest, AWriteErrorStopsRecordingAndKeepsWhatWasCommitted)
     recorder.consume(deviceBlock(50, 100));  // out of order: the store refuses the batch
     ASSERT_TRUE(eventually([&] { return !recorder.stats().error.empty(); }));
     recorder.consume(deviceBlock(200, 100));  // dropped: recording has stopped
-    const auto stats = recorder.finish(SessionStatus::Complete);
+    const auto stats = recorder.finish(tactiscope::core::SessionStatus::Complete);
     EXPECT_NE(stats.error.find("out of order"), std::string::npos) << stats.error;
     EXPECT_NE(stats.error.find("everything recorded before was kept"), std::string::npos);
     EXPECT_EQ(stats.samplesWritten, 100u);
     EXPECT_EQ(stats.samplesDropped, 300u);
 
     SessionStore store(m_path, Database::Access::ReadOnly);
-    EXPECT_EQ(store.session(id)->status, "interrupted");
+    EXPECT_EQ(store.session(id)->status, tactiscope::core::SessionStatus::Interrupted);
     EXPECT_EQ(store.sampleCount(id), 100u);
 }
 
@@ -188,13 +188,13 @@ TEST_F(RecorderTest, OpeningTheStoreLeavesALiveRecordingAloneAndMarksACrashedOne
     Recorder live(m_path, palpation(), kChannels, 1000.0, 1000);  // recovers the crashed one
     {
         SessionStore reviewer(m_path);  // e.g. `sessions list` while recording
-        EXPECT_EQ(reviewer.session(crashed)->status, "interrupted");
+        EXPECT_EQ(reviewer.session(crashed)->status, tactiscope::core::SessionStatus::Interrupted);
         EXPECT_EQ(reviewer.sampleCount(crashed), 100u);
-        EXPECT_EQ(reviewer.session(live.sessionId())->status, "recording");
+        EXPECT_EQ(reviewer.session(live.sessionId())->status, tactiscope::core::SessionStatus::Recording);
     }
-    live.finish(SessionStatus::Complete);
+    live.finish(tactiscope::core::SessionStatus::Complete);
     SessionStore after(m_path);
-    EXPECT_EQ(after.session(live.sessionId())->status, "complete");
+    EXPECT_EQ(after.session(live.sessionId())->status, tactiscope::core::SessionStatus::Complete);
 }
 
 TEST_F(RecorderTest, AFullDiskStopsRecordingAndKeepsEveryCommittedSample)
@@ -215,7 +215,7 @@ TEST_F(RecorderTest, AFullDiskStopsRecordingAndKeepsEveryCommittedSample)
                 recorder.consume(deviceBlock(first, 500));
                 std::this_thread::sleep_for(std::chrono::milliseconds(5));  // ~100 k samples/s: several commits
             }
-            const auto stats = recorder.finish(SessionStatus::Complete);
+            const auto stats = recorder.finish(tactiscope::core::SessionStatus::Complete);
             code = stats.error.empty()                                  ? 1
                    : stats.samplesWritten == 0                          ? 2
                    : stats.error.find("disk full") == std::string::npos ? 5
@@ -234,7 +234,7 @@ TEST_F(RecorderTest, AFullDiskStopsRecordingAndKeepsEveryCommittedSample)
     SessionStore store(m_path);  // the next open: recovers what finish() could not mark
     ASSERT_EQ(store.sessions().size(), 1u);
     const auto session = store.sessions().front();
-    EXPECT_EQ(session.status, "interrupted");
+    EXPECT_EQ(session.status, tactiscope::core::SessionStatus::Interrupted);
     EXPECT_EQ(store.checkIntegrity(), "ok");
     const std::uint64_t n = store.sampleCount(session.id);
     ASSERT_GT(n, 0u);
@@ -258,7 +258,7 @@ TEST_F(RecorderTest, AReaderDuringRecordingSeesAGrowingConsistentPrefix)
     });
     // Another connection, read-only, as the review window opens the store.
     SessionStore reader(m_path, Database::Access::ReadOnly);
-    EXPECT_EQ(reader.session(id)->status, "recording");
+    EXPECT_EQ(reader.session(id)->status, tactiscope::core::SessionStatus::Recording);
     std::size_t previous = 0, reads = 0, grew = 0;
     while (!done) {
         const auto x = reader.readChannel(id, 0, 0, 1'000'000);
@@ -277,11 +277,11 @@ TEST_F(RecorderTest, AReaderDuringRecordingSeesAGrowingConsistentPrefix)
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
     writer.join();
-    recorder.finish(SessionStatus::Complete);
+    recorder.finish(tactiscope::core::SessionStatus::Complete);
     EXPECT_GT(reads, 10u);
     EXPECT_GT(grew, 2u);  // the reader saw several commits land
     EXPECT_EQ(reader.readChannel(id, 0, 0, 1'000'000).size(), 30'000u);
-    EXPECT_EQ(reader.session(id)->status, "complete");
+    EXPECT_EQ(reader.session(id)->status, tactiscope::core::SessionStatus::Complete);
 }
 
 TEST_F(RecorderTest, AStoreWhoseDiskTurnsReadOnlyStopsRecordingAndKeepsWhatWasCommitted)
@@ -297,7 +297,7 @@ TEST_F(RecorderTest, AStoreWhoseDiskTurnsReadOnlyStopsRecordingAndKeepsWhatWasCo
         disk.failWrites();
         recorder.consume(deviceBlock(300, 300));
         ASSERT_TRUE(eventually([&] { return !recorder.stats().error.empty(); }));
-        const auto stats = recorder.finish(SessionStatus::Complete);
+        const auto stats = recorder.finish(tactiscope::core::SessionStatus::Complete);
         committed = stats.samplesWritten;
         EXPECT_EQ(committed, 300u);
         EXPECT_NE(stats.error.find("disk I/O error"), std::string::npos) << stats.error;
@@ -308,7 +308,7 @@ TEST_F(RecorderTest, AStoreWhoseDiskTurnsReadOnlyStopsRecordingAndKeepsWhatWasCo
     tactiscope::testing::ReadOnlyAfterVfs writable;
     SessionStore store(m_path);
     EXPECT_EQ(store.checkIntegrity(), "ok");
-    EXPECT_EQ(store.session(id)->status, "interrupted");
+    EXPECT_EQ(store.session(id)->status, tactiscope::core::SessionStatus::Interrupted);
     const auto force = store.readChannel(id, 1, 0, 1000);
     ASSERT_EQ(force.size(), committed);
     for (std::uint64_t i = 0; i < committed; ++i) ASSERT_EQ(force[i], static_cast<double>(i) + 0.5) << i;
@@ -321,7 +321,7 @@ TEST_F(RecorderTest, ADamagedStoreIsReportedAndNeverWritten)
         Recorder recorder(m_path, palpation(), kChannels, 1000.0, 1'000'000);
         id = recorder.sessionId();
         for (std::uint64_t first = 0; first < 200'000; first += 1000) recorder.consume(deviceBlock(first, 1000));
-        recorder.finish(SessionStatus::Complete);
+        recorder.finish(tactiscope::core::SessionStatus::Complete);
     }
     {
         SessionStore checkpoint(m_path);  // the last connection folds the WAL into the file
@@ -361,10 +361,11 @@ TEST_F(RecorderTest, ATapRecordsOnlyWhileARecorderIsAttachedAndMarkersLandInTheS
     tap.attach(recorder);
     tap.consume(deviceBlock(100, 250));
     EXPECT_DOUBLE_EQ(recorder->sessionTime_s(), 0.249);  // the newest sample, session-relative
-    recorder->addEvents({{0, kLiveAnalysis, "marker", 0.2, 0.2, 0, {}, {}, {}, "weld seam"}});
+    recorder->addEvents(
+        {{0, kLiveAnalysis, tactiscope::core::EventKind::Marker, 0.2, 0.2, 0, {}, {}, {}, "weld seam"}});
     EXPECT_EQ(tap.detach(), recorder);
     tap.consume(deviceBlock(350, 100));  // detached: not recorded
-    const auto stats = recorder->finish(SessionStatus::Complete);
+    const auto stats = recorder->finish(tactiscope::core::SessionStatus::Complete);
     EXPECT_EQ(stats.samplesWritten, 250u);
     EXPECT_EQ(stats.eventsWritten, 1u);
 
@@ -373,7 +374,7 @@ TEST_F(RecorderTest, ATapRecordsOnlyWhileARecorderIsAttachedAndMarkersLandInTheS
     EXPECT_EQ(store.readChannel(recorder->sessionId(), 0, 0, 1)[0], 100.0);
     const auto markers = store.events(recorder->sessionId());
     ASSERT_EQ(markers.size(), 1u);
-    EXPECT_EQ(markers[0].kind, "marker");
+    EXPECT_EQ(markers[0].kind, tactiscope::core::EventKind::Marker);
     EXPECT_EQ(markers[0].start_s, 0.2);
     EXPECT_EQ(markers[0].note, "weld seam");
 }

@@ -33,14 +33,14 @@ TEST_F(SessionExportRangeTest, ARangeHoldsItsStoredSamplesAndSaysWhichInItsMetad
 {
     SessionStore store(file("s.tactiscope"));
     SessionMetadata metadata;
-    metadata.mode = "capacitive";
+    metadata.mode = tactiscope::core::Mode::Capacitive;
     metadata.calibrationsJson = R"([{"kind":"capacitive","c0_pf":51.44}])";
     const std::vector<ChannelDescriptor> channels{{"a", "pF", ChannelKind::Capacitance}};
     const auto id = store.beginSession(metadata, channels, 4.0);
     // Samples 0–5, then 6 and 7 lost, then 8–19.
     store.appendBlocks(id, std::vector{blockAt(0, 6)});
     store.appendBlocks(id, std::vector{blockAt(8, 12)});
-    store.endSession(id, SessionStatus::Complete);
+    store.endSession(id, tactiscope::core::SessionStatus::Complete);
 
     std::ostringstream csv;
     writeSessionCsv(store, id, csv, {4, 6});  // samples 4…9: 6 and 7 are lost

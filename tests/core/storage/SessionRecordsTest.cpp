@@ -16,7 +16,7 @@ using SessionRecordsTest = tactiscope::testing::TempDirectoryTest;
 
 const std::vector<ChannelDescriptor> kOneChannel{{"f", "N", ChannelKind::Force}};
 
-std::int64_t begin(SessionStore& store, const std::string& mode, const std::string& subject,
+std::int64_t begin(SessionStore& store, tactiscope::core::Mode mode, const std::string& subject,
                    const std::string& operatorName, const std::string& notes = {})
 {
     SessionMetadata metadata;
@@ -58,25 +58,24 @@ calibration::CalibrationRecord gaugeCalibration(const std::string& sensor, const
 TEST_F(SessionRecordsTest, EventsOfEachAnalysisRoundTrip)
 {
     SessionStore store(file("r.tactiscope"));
-    const auto id = begin(store, "panel-scan", "door-1", "Ada");
+    const auto id = begin(store, tactiscope::core::Mode::PanelScan, "door-1", "Ada");
     const std::vector<SessionEvent> live{
-        {0, kLiveAnalysis, "defect", 1.25, 1.5, 1, 0.93, 0.052, 0.96, ""},
-        {0, kLiveAnalysis, "marker", 0.5, 0.5, 0, std::nullopt, std::nullopt, std::nullopt, "scratch seen here"},
-        {0, kLiveAnalysis, "alarm", 2.0, 2.0, 0, std::nullopt, std::nullopt, std::nullopt, "samples lost"},
+        {0, kLiveAnalysis, tactiscope::core::EventKind::Defect, 1.25, 1.5, 1, 0.93, 0.052, 0.96, ""},
+        {0, kLiveAnalysis, tactiscope::core::EventKind::Marker, 0.5, 0.5, 0, std::nullopt, std::nullopt, std::nullopt,
+         "scratch seen here"},
+        {0, kLiveAnalysis, tactiscope::core::EventKind::Alarm, 2.0, 2.0, 0, std::nullopt, std::nullopt, std::nullopt,
+         "samples lost"},
     };
     store.addEvents(id, live);
-    store.addEvents(
-        id, std::vector<SessionEvent>{{0, "threshold 0.9", "defect", 1.3, 1.45, -1, 0.91, 0.05, std::nullopt, ""}});
-    EXPECT_THROW(
-        store.addEvents(id, std::vector<SessionEvent>{{0, kLiveAnalysis, "explosion", 0, 0, 0, {}, {}, {}, ""}}),
-        StorageError);
+    store.addEvents(id, std::vector<SessionEvent>{{0, "threshold 0.9", tactiscope::core::EventKind::Defect, 1.3, 1.45,
+                                                   -1, 0.91, 0.05, std::nullopt, ""}});
 
     const auto events = store.events(id);
     ASSERT_EQ(events.size(), 3u);  // in time order, the re-analysis apart
-    EXPECT_EQ(events[0].kind, "marker");
+    EXPECT_EQ(events[0].kind, tactiscope::core::EventKind::Marker);
     EXPECT_EQ(events[0].note, "scratch seen here");
     EXPECT_FALSE(events[0].peakR);
-    EXPECT_EQ(events[1].kind, "defect");
+    EXPECT_EQ(events[1].kind, tactiscope::core::EventKind::Defect);
     EXPECT_EQ(events[1].start_s, 1.25);
     EXPECT_EQ(events[1].end_s, 1.5);
     EXPECT_EQ(events[1].direction, 1);
@@ -95,10 +94,11 @@ TEST_F(SessionRecordsTest, EventsOfEachAnalysisRoundTrip)
 TEST_F(SessionRecordsTest, ReadingsAndAnnotationsRoundTrip)
 {
     SessionStore store(file("r.tactiscope"));
-    const auto id = begin(store, "palpation", "phantom-3", "Lin");
-    const auto reading =
-        store.addReading(id, {0, "compliance", 3.0, 4.5, "stiffness", 812.5, "N/m", 12.25, "B3", R"({"slope":0.97})"});
-    store.addReading(id, {0, "compliance", 1.0, 2.0, "stiffness", 400.0, "N/m", std::nullopt, "", ""});
+    const auto id = begin(store, tactiscope::core::Mode::Palpation, "phantom-3", "Lin");
+    const auto reading = store.addReading(id, {0, tactiscope::core::ReadingKind::Compliance, 3.0, 4.5, "stiffness",
+                                               812.5, "N/m", 12.25, "B3", R"({"slope":0.97})"});
+    store.addReading(
+        id, {0, tactiscope::core::ReadingKind::Compliance, 1.0, 2.0, "stiffness", 400.0, "N/m", std::nullopt, "", ""});
     const auto readings = store.readings(id);
     ASSERT_EQ(readings.size(), 2u);
     EXPECT_EQ(readings[0].value, 400.0);
@@ -134,8 +134,8 @@ TEST_F(SessionRecordsTest, CalibrationsAreKeptAcrossSessionsWithTheirStatistics)
     const auto older = store.addCalibration(gaugeCalibration("beam-A", "2026-10-01T08:00:00Z", 2.05));
     const auto newer = store.addCalibration(gaugeCalibration("beam-A", "2026-11-01T08:00:00Z", 2.11));
     const auto other = store.addCalibration(gaugeCalibration("beam-B", "2026-10-15T08:00:00Z", 1.98));
-    const auto first = begin(store, "panel-scan", "door-1", "Ada");
-    const auto second = begin(store, "panel-scan", "door-2", "Ada");
+    const auto first = begin(store, tactiscope::core::Mode::PanelScan, "door-1", "Ada");
+    const auto second = begin(store, tactiscope::core::Mode::PanelScan, "door-2", "Ada");
     store.linkCalibration(first, older);
     store.linkCalibration(second, newer);
     store.linkCalibration(second, other);
@@ -156,7 +156,7 @@ TEST_F(SessionRecordsTest, CalibrationsAreKeptAcrossSessionsWithTheirStatistics)
     EXPECT_EQ(store.sessionsUsingCalibration(older), (std::vector<std::int64_t>{first}));
     // A calibration in use cannot vanish; a deleted session lets go of it.
     EXPECT_THROW(store.database().exec("DELETE FROM calibrations WHERE id = " + std::to_string(older)), StorageError);
-    store.endSession(first, SessionStatus::Complete);
+    store.endSession(first, tactiscope::core::SessionStatus::Complete);
     store.deleteSession(first);
     EXPECT_TRUE(store.sessionsUsingCalibration(older).empty());
 }
@@ -164,11 +164,12 @@ TEST_F(SessionRecordsTest, CalibrationsAreKeptAcrossSessionsWithTheirStatistics)
 TEST_F(SessionRecordsTest, DeletingASessionDeletesItsRecords)
 {
     SessionStore store(file("r.tactiscope"));
-    const auto id = begin(store, "capacitive", "beam-7", "Mo");
-    store.addEvents(id, std::vector<SessionEvent>{{0, kLiveAnalysis, "alarm", 1, 1, 0, {}, {}, {}, "x"}});
-    store.addReading(id, {0, "capacitive", 1, 2, "force", 12.5, "uN", 0.5, "", ""});
+    const auto id = begin(store, tactiscope::core::Mode::Capacitive, "beam-7", "Mo");
+    store.addEvents(id, std::vector<SessionEvent>{
+                            {0, kLiveAnalysis, tactiscope::core::EventKind::Alarm, 1, 1, 0, {}, {}, {}, "x"}});
+    store.addReading(id, {0, tactiscope::core::ReadingKind::Capacitive, 1, 2, "force", 12.5, "uN", 0.5, "", ""});
     store.addAnnotation(id, {0, 1.0, "me", "hello", "", ""});
-    store.endSession(id, SessionStatus::Complete);
+    store.endSession(id, tactiscope::core::SessionStatus::Complete);
     store.deleteSession(id);
     for (const char* table : {"events", "readings", "annotations", "channels", "lod"}) {
         auto count = store.database().prepare(std::string("SELECT count(*) FROM ") + table);
@@ -180,10 +181,10 @@ TEST_F(SessionRecordsTest, DeletingASessionDeletesItsRecords)
 TEST_F(SessionRecordsTest, SessionsAreFilteredByEveryField)
 {
     SessionStore store(file("r.tactiscope"));
-    const auto a = begin(store, "panel-scan", "door-17", "Ada", "left fender, 50% speed");
-    const auto b = begin(store, "panel-scan", "door-18", "Grace");
-    const auto c = begin(store, "palpation", "phantom-3", "Ada");
-    const auto d = begin(store, "capacitive", "beam-7", "Lin", "Door seal test");
+    const auto a = begin(store, tactiscope::core::Mode::PanelScan, "door-17", "Ada", "left fender, 50% speed");
+    const auto b = begin(store, tactiscope::core::Mode::PanelScan, "door-18", "Grace");
+    const auto c = begin(store, tactiscope::core::Mode::Palpation, "phantom-3", "Ada");
+    const auto d = begin(store, tactiscope::core::Mode::Capacitive, "beam-7", "Lin", "Door seal test");
     // Known start times, so the date filter has something to bite on.
     const char* starts[] = {"2026-11-01T09:00:00.000Z", "2026-11-02T09:00:00.000Z", "2026-11-03T09:00:00.000Z",
                             "2026-11-04T09:00:00.000Z"};
@@ -194,29 +195,32 @@ TEST_F(SessionRecordsTest, SessionsAreFilteredByEveryField)
             .bind(2, id)
             .run();
     }
-    store.setVerdict(a, "defects found");
-    store.setVerdict(b, "pass");
-    EXPECT_THROW(store.setVerdict(999, "pass"), StorageError);
+    store.setVerdict(a, tactiscope::core::Verdict::DefectsFound);
+    store.setVerdict(b, tactiscope::core::Verdict::Pass);
+    EXPECT_THROW(store.setVerdict(999, tactiscope::core::Verdict::Pass), StorageError);
 
     const auto query = [&](const SessionFilter& f) { return idsOf(store.sessions(f)); };
-    const auto by = [](std::string SessionFilter::*field, const std::string& value) {
+    const auto by = []<typename Field>(Field SessionFilter::*field, const Field& value) {
         SessionFilter filter;
         filter.*field = value;
         return filter;
     };
     EXPECT_EQ(query({}), (std::vector<std::int64_t>{d, c, b, a}));  // newest first
-    SessionFilter dates = by(&SessionFilter::startedFrom, "2026-11-02");
+    SessionFilter dates = by(&SessionFilter::startedFrom, std::string("2026-11-02"));
     dates.startedBefore = "2026-11-04";
     EXPECT_EQ(query(dates), (std::vector<std::int64_t>{c, b}));
-    EXPECT_EQ(query(by(&SessionFilter::mode, "panel-scan")), (std::vector<std::int64_t>{b, a}));
-    EXPECT_EQ(query(by(&SessionFilter::subject, "phantom-3")), (std::vector<std::int64_t>{c}));
-    EXPECT_EQ(query(by(&SessionFilter::operatorName, "Ada")), (std::vector<std::int64_t>{c, a}));
-    EXPECT_EQ(query(by(&SessionFilter::verdict, "pass")), (std::vector<std::int64_t>{b}));
+    EXPECT_EQ(query(by(&SessionFilter::mode, std::optional(tactiscope::core::Mode::PanelScan))),
+              (std::vector<std::int64_t>{b, a}));
+    EXPECT_EQ(query(by(&SessionFilter::subject, std::string("phantom-3"))), (std::vector<std::int64_t>{c}));
+    EXPECT_EQ(query(by(&SessionFilter::operatorName, std::string("Ada"))), (std::vector<std::int64_t>{c, a}));
+    EXPECT_EQ(query(by(&SessionFilter::verdict, std::optional(tactiscope::core::Verdict::Pass))),
+              (std::vector<std::int64_t>{b}));
     // Text is found in the subject or the notes, in any case.
-    EXPECT_EQ(query(by(&SessionFilter::text, "door")), (std::vector<std::int64_t>{d, b, a}));
-    EXPECT_EQ(query(by(&SessionFilter::text, "50%")), (std::vector<std::int64_t>{a}));  // % is not a wildcard
-    EXPECT_EQ(query(by(&SessionFilter::text, "5_%")), (std::vector<std::int64_t>{}));
-    SessionFilter all = by(&SessionFilter::mode, "panel-scan");
+    EXPECT_EQ(query(by(&SessionFilter::text, std::string("door"))), (std::vector<std::int64_t>{d, b, a}));
+    EXPECT_EQ(query(by(&SessionFilter::text, std::string("50%"))),
+              (std::vector<std::int64_t>{a}));  // % is not a wildcard
+    EXPECT_EQ(query(by(&SessionFilter::text, std::string("5_%"))), (std::vector<std::int64_t>{}));
+    SessionFilter all = by(&SessionFilter::mode, std::optional(tactiscope::core::Mode::PanelScan));
     all.operatorName = "Ada";
     all.text = "fender";
     EXPECT_EQ(query(all), (std::vector<std::int64_t>{a}));

@@ -40,7 +40,7 @@ SampleBlock blockAt(std::uint64_t first, std::size_t count)
 
 const std::vector<ChannelDescriptor> kChannels{{"a", "", ChannelKind::Strain}, {"force", "N", ChannelKind::Force}};
 
-SessionMetadata modeOnly(const std::string& mode)
+SessionMetadata modeOnly(tactiscope::core::Mode mode)
 {
     SessionMetadata metadata;
     metadata.mode = mode;
@@ -54,14 +54,21 @@ TEST_F(SessionStoreTest, SessionsChannelsSamplesAndGapsRoundTrip)
     std::int64_t id = 0;
     {
         SessionStore store(file("s.tactiscope"));
-        SessionMetadata metadata{"panel-scan",         "door-17",      "Ada",  "press 3",
-                                 "first shift",        "TSP-2",        "SN42", "1.2.0",
-                                 R"({"profile":"x"})", R"([{"id":1}])"};
+        SessionMetadata metadata{tactiscope::core::Mode::PanelScan,
+                                 "door-17",
+                                 "Ada",
+                                 "press 3",
+                                 "first shift",
+                                 "TSP-2",
+                                 "SN42",
+                                 "1.2.0",
+                                 R"({"profile":"x"})",
+                                 R"([{"id":1}])"};
         id = store.beginSession(metadata, kChannels, 500.0);
         // Samples 0–99, then 30 lost (100–129), then 130–229 in three blocks.
         store.appendBlocks(id, std::vector{blockAt(0, 60), blockAt(60, 40)});
         store.appendBlocks(id, std::vector{blockAt(130, 25), blockAt(155, 25), blockAt(180, 50)});
-        store.endSession(id, SessionStatus::Complete);
+        store.endSession(id, tactiscope::core::SessionStatus::Complete);
     }
     SessionStore store(file("s.tactiscope"), Database::Access::ReadOnly);
     const auto sessions = store.sessions();
@@ -70,7 +77,7 @@ TEST_F(SessionStoreTest, SessionsChannelsSamplesAndGapsRoundTrip)
     EXPECT_EQ(s.id, id);
     EXPECT_EQ(s.uuid.size(), 36u);
     EXPECT_EQ(s.uuid[14], '4');  // version 4
-    EXPECT_EQ(s.metadata.mode, "panel-scan");
+    EXPECT_EQ(s.metadata.mode, tactiscope::core::Mode::PanelScan);
     EXPECT_EQ(s.metadata.subject, "door-17");
     EXPECT_EQ(s.metadata.operatorName, "Ada");
     EXPECT_EQ(s.metadata.site, "press 3");
@@ -82,7 +89,7 @@ TEST_F(SessionStoreTest, SessionsChannelsSamplesAndGapsRoundTrip)
     EXPECT_DOUBLE_EQ(s.sampleRate_hz, 500.0);
     EXPECT_EQ(s.sampleCount, 230u);
     EXPECT_DOUBLE_EQ(s.duration_s(), 0.46);
-    EXPECT_EQ(s.status, "complete");
+    EXPECT_EQ(s.status, tactiscope::core::SessionStatus::Complete);
     EXPECT_EQ(s.startedUtc.size(), 24u);  // 2026-11-21T14:20:28.123Z
     EXPECT_EQ(s.startedUtc.back(), 'Z');
     EXPECT_FALSE(s.endedUtc.empty());
@@ -132,7 +139,7 @@ TEST_F(SessionStoreTest, AChunkIsLittleEndianBinary32ChannelMajor)
 TEST_F(SessionStoreTest, OutOfOrderBlocksAreRefusedAndTheBatchIsNotStored)
 {
     SessionStore store(file("s.tactiscope"));
-    const auto id = store.beginSession(modeOnly("palpation"), kChannels, 500.0);
+    const auto id = store.beginSession(modeOnly(tactiscope::core::Mode::Palpation), kChannels, 500.0);
     store.appendBlocks(id, std::vector{blockAt(0, 10)});
     EXPECT_THROW(store.appendBlocks(id, std::vector{blockAt(10, 10), blockAt(5, 10)}), StorageError);
     EXPECT_EQ(store.sampleCount(id), 10u);
@@ -174,7 +181,7 @@ TEST_F(SessionStoreTest, ANewerStoreOpensReadOnlyButIsNotWritten)
     const std::string path = file("newer.tactiscope");
     {
         SessionStore store(path);
-        store.beginSession(modeOnly("capacitive"), kChannels, 100.0);
+        store.beginSession(modeOnly(tactiscope::core::Mode::Capacitive), kChannels, 100.0);
         store.database().exec("PRAGMA user_version = " + std::to_string(kSchemaVersion + 1));
     }
     try {
@@ -185,7 +192,7 @@ TEST_F(SessionStoreTest, ANewerStoreOpensReadOnlyButIsNotWritten)
     }
     SessionStore reader(path, Database::Access::ReadOnly);
     ASSERT_EQ(reader.sessions().size(), 1u);
-    EXPECT_EQ(reader.sessions().front().metadata.mode, "capacitive");
+    EXPECT_EQ(reader.sessions().front().metadata.mode, tactiscope::core::Mode::Capacitive);
 }
 
 TEST_F(SessionStoreTest, ANewStoreHasTheCurrentVersionAndWal)

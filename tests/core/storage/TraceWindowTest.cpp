@@ -30,12 +30,12 @@ SampleBlock blockAt(std::uint64_t first, std::size_t count)
 std::int64_t writeSession(SessionStore& store)
 {
     SessionMetadata metadata;
-    metadata.mode = "palpation";
+    metadata.mode = tactiscope::core::Mode::Palpation;
     const std::vector<ChannelDescriptor> channels{{"f", "N", ChannelKind::Force}};
     const auto id = store.beginSession(metadata, channels, 100.0);
     store.appendBlocks(id, std::vector{blockAt(0, 400)});
     store.appendBlocks(id, std::vector{blockAt(500, 500)});
-    store.endSession(id, SessionStatus::Complete);
+    store.endSession(id, tactiscope::core::SessionStatus::Complete);
     return id;
 }
 

@@ -1,0 +1,58 @@
+// The words a session is recorded in: its mode, its status, its verdict,
+// and the kinds of its events and readings. Each word's text exists here
+// once; the store's columns, the files, the command line and the settings
+// all go through toString() and the *FromString() parsers. The schema's
+// CHECK lists (core/storage/Schema.cpp, frozen migrations) hold the same
+// texts, and VocabularyTest checks the schema accepts each and refuses others.
+//
+// Adding a mode means: a value here, its processor in core, its capability
+// in ModeCapability.cpp, and its view in ui/.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace tactiscope::core {
+
+// What a session inspects, and so which processor reads the probe.
+enum class Mode {
+    PanelScan,   // seed 000: surface-deflection detector on two strain cantilevers
+    Palpation,   // seed 001: object stiffness from two beams of different stiffness
+    Capacitive,  // seed 002: force and deflection of the capacitive beam
+};
+inline constexpr std::array kModes{Mode::PanelScan, Mode::Palpation, Mode::Capacitive};
+std::string_view toString(Mode mode);  // "panel-scan", "palpation", "capacitive"
+std::optional<Mode> modeFromString(std::string_view text);
+// "panel-scan, palpation or capacitive", for usage lines.
+std::string modeChoices();
+
+enum class SessionStatus { Recording, Complete, Interrupted };
+inline constexpr std::array kSessionStatuses{SessionStatus::Recording, SessionStatus::Complete,
+                                             SessionStatus::Interrupted};
+std::string_view toString(SessionStatus status);  // "recording", "complete", "interrupted"
+std::optional<SessionStatus> sessionStatusFromString(std::string_view text);
+
+// A panel's verdict, stored untranslated: filters and reports read it.
+enum class Verdict { Pass, DefectsFound };
+inline constexpr std::array kVerdicts{Verdict::Pass, Verdict::DefectsFound};
+std::string_view toString(Verdict verdict);  // "pass", "defects found"
+std::optional<Verdict> verdictFromString(std::string_view text);
+std::string_view verdictText(std::optional<Verdict> verdict);  // "" when there is none
+// The detector's verdict on a panel: it passes when no defect was found.
+Verdict automaticVerdict(std::size_t defects);
+
+enum class EventKind { Defect, Contact, Press, Alarm, Marker };
+inline constexpr std::array kEventKinds{EventKind::Defect, EventKind::Contact, EventKind::Press, EventKind::Alarm,
+                                        EventKind::Marker};
+std::string_view toString(EventKind kind);  // "defect", "contact", "press", "alarm", "marker"
+std::optional<EventKind> eventKindFromString(std::string_view text);
+
+enum class ReadingKind { Compliance, Capacitive };
+inline constexpr std::array kReadingKinds{ReadingKind::Compliance, ReadingKind::Capacitive};
+std::string_view toString(ReadingKind kind);  // "compliance", "capacitive"
+std::optional<ReadingKind> readingKindFromString(std::string_view text);
+
+}  // namespace tactiscope::core

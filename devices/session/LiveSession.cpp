@@ -1,0 +1,238 @@
+// LiveSession: the acquisition's sinks, the mode, recording and what poll()
+// moves from the processors into the store. The processors are built in
+// LiveSessionProcessors.cpp.
+#include "devices/session/LiveSession.h"
+
+#include "core/ModeCapability.h"
+#include "core/SinkSlot.h"
+#include "core/capacitive/LiveCapacitive.h"
+#include "core/compliance/LivePalpation.h"
+#include "core/detector/LiveDetection.h"
+#include "core/storage/DefectRecords.h"
+#include "core/storage/RecordingTap.h"
+
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+namespace tactiscope::devices::session {
+
+LiveSession::LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions options)
+    : m_options(std::move(options))
+{
+    if (!source) throw std::invalid_argument("a live session needs a source");
+    const auto channels = source->channels();
+    const double rate_hz = source->nominalSampleRate_hz();
+    m_acquisition = std::make_unique<Acquisition>(std::move(source));
+    // Two seconds of headroom: the display reads 40 times a second, so only
+    // an owner stalled that long loses display samples (never recorded ones).
+    m_buffer =
+        std::make_shared<core::LiveBuffer>(channels.size(), static_cast<std::size_t>(std::ceil(2.0 * rate_hz)) + 1);
+    m_acquisition->addSink(m_buffer);
+    m_tap = std::make_shared<core::storage::RecordingTap>();
+    m_acquisition->addSink(m_tap);
+    // Processors rebuilt for another profile go into their slot while the
+    // device streams; the detector is built once.
+    m_palpationSlot = std::make_shared<core::SinkSlot>();
+    m_capacitiveSlot = std::make_shared<core::SinkSlot>();
+    m_acquisition->addSink(m_palpationSlot);
+    m_acquisition->addSink(m_capacitiveSlot);
+    for (const core::Mode mode : core::runnableModes(channels))
+        if (const auto problem = build(mode)) m_problems.push_back(*problem);
+    if (m_detection) m_acquisition->addSink(m_detection);
+    m_mode = declaredMode().value_or(core::Mode::PanelScan);
+}
+
+LiveSession::~LiveSession()
+{
+    stopRecording();
+    m_acquisition->stop();
+}
+
+void LiveSession::start()
+{
+    m_acquisition->start();
+}
+
+std::optional<core::Mode> LiveSession::declaredMode() const
+{
+    if (const auto declared = source().declaredMode()) return declared;
+    const auto runnable = core::runnableModes(source().channels());
+    if (runnable.empty()) return std::nullopt;
+    return runnable.front();
+}
+
+std::optional<std::string> LiveSession::refusalOf(core::Mode mode) const
+{
+    return core::modeRefusal(mode, source().channels());
+}
+
+std::optional<std::string> LiveSession::setMode(core::Mode mode)
+{
+    if (mode == m_mode) return std::nullopt;
+    if (isRecording()) return "the recording keeps its mode; stop it first";
+    if (auto refusal = refusalOf(mode)) return refusal;
+    m_mode = mode;
+    return std::nullopt;
+}
+
+std::optional<std::string> LiveSession::tare()
+{
+    switch (m_mode) {
+    case core::Mode::Palpation:
+        if (!m_palpation) break;
+        return m_palpation->tare();
+    case core::Mode::Capacitive:
+        if (!m_capacitive) break;
+        return m_capacitive->tare();
+    case core::Mode::PanelScan:
+        return "panel scan has no zero to take: the detector works on the signals' changes";
+    }
+    return refusalOf(m_mode).value_or("this mode's processor is not running");
+}
+
+std::optional<std::string> LiveSession::startRecording(const core::storage::SessionMetadata& request)
+{
+    if (isRecording()) return std::nullopt;
+    if (auto refusal = refusalOf(m_mode)) return refusal;
+    core::storage::SessionMetadata metadata = request;
+    metadata.mode = m_mode;
+    const DeviceIdentity device = source().identity();
+    metadata.deviceModel = device.model;
+    metadata.deviceSerial = device.serial;
+    metadata.deviceFirmware = device.firmware;
+    metadata.profileJson.clear();
+    if (const auto* used = profile(m_mode)) metadata.profileJson = core::sensors::toJson(*used);
+    const auto& used = calibrations(m_mode);
+    metadata.calibrationsJson.clear();
+    if (!used.empty()) {
+        std::string records;
+        for (const auto& stored : used) records += (records.empty() ? "" : ",") + stored.record.toJson();
+        metadata.calibrationsJson = "[" + records + "]";
+    }
+    const double rate_hz = source().nominalSampleRate_hz();
+    try {
+        const auto directory = std::filesystem::path(m_options.storePath).parent_path();
+        if (!directory.empty()) std::filesystem::create_directories(directory);
+        m_recorder = std::make_shared<core::storage::Recorder>(
+            m_options.storePath, metadata, source().channels(), rate_hz,
+            static_cast<std::uint64_t>(std::ceil(m_options.recorderQueue_s * rate_hz)));
+        core::storage::SessionStore store(m_options.storePath);
+        for (const auto& stored : used) store.linkCalibration(m_recorder->sessionId(), stored.id);
+    } catch (const std::exception& e) {  // StorageError, or the folder cannot be made
+        if (m_recorder) m_recorder->finish(core::SessionStatus::Interrupted);
+        m_recorder.reset();
+        return e.what();
+    }
+    m_metadata = std::move(metadata);
+    takeDefects();  // those found before the record press belong to no panel
+    takePresses();
+    m_defects.clear();
+    m_presses.clear();
+    m_tap->attach(m_recorder);
+    return std::nullopt;
+}
+
+std::optional<RecordingSummary> LiveSession::stopRecording()
+{
+    if (!isRecording()) return std::nullopt;
+    return finishRecording();
+}
+
+RecordingSummary LiveSession::finishRecording()
+{
+    m_tap->detach();
+    takeDefects();  // what completed up to the last recorded block
+    takePresses();
+    RecordingSummary summary;
+    summary.session = m_recorder->sessionId();
+    summary.end_s = m_recorder->sessionTime_s();
+    summary.defects = m_defects.size();
+    if (m_metadata.mode == core::Mode::PanelScan) summary.verdict = automaticVerdict();
+    summary.stats = m_recorder->finish(core::SessionStatus::Complete, summary.verdict);
+    if (!summary.stats.error.empty()) summary.verdict.reset();  // the session ended interrupted
+    m_recorder.reset();
+    return summary;
+}
+
+std::int64_t LiveSession::sessionId() const
+{
+    return m_recorder ? m_recorder->sessionId() : 0;
+}
+
+double LiveSession::sessionTime_s() const
+{
+    return m_recorder ? m_recorder->sessionTime_s() : 0.0;
+}
+
+core::storage::RecorderStats LiveSession::recorderStats() const
+{
+    return m_recorder ? m_recorder->stats() : core::storage::RecorderStats{};
+}
+
+bool LiveSession::addMarker(double time_s, const std::string& note)
+{
+    if (!m_recorder) return false;
+    core::storage::SessionEvent marker;
+    marker.kind = core::EventKind::Marker;
+    marker.start_s = marker.end_s = time_s;
+    marker.note = note;
+    m_recorder->addEvents({marker});
+    return true;
+}
+
+std::optional<RecordingSummary> LiveSession::poll()
+{
+    takeDefects();
+    takePresses();
+    if (m_recorder && !m_recorder->stats().error.empty()) return finishRecording();
+    return std::nullopt;
+}
+
+void LiveSession::takeDefects()
+{
+    if (!m_detection) return;
+    const auto found = m_detection->takeEvents();
+    if (found.empty()) return;
+    m_defects.insert(m_defects.end(), found.begin(), found.end());
+    if (!m_recorder || m_metadata.mode != core::Mode::PanelScan) return;
+    std::vector<core::storage::SessionEvent> stored;
+    stored.reserve(found.size());
+    for (const auto& e : found) {
+        auto event = core::storage::defectRecord(e);
+        // The detector counts the stream's time; the session starts at its record press.
+        event.start_s = m_recorder->sessionTimeOf(e.start_s);
+        event.end_s = m_recorder->sessionTimeOf(e.end_s);
+        stored.push_back(event);
+    }
+    m_recorder->addEvents(std::move(stored));
+}
+
+void LiveSession::takePresses()
+{
+    if (!m_palpation) return;
+    const bool storing = m_recorder && m_metadata.mode == core::Mode::Palpation;
+    std::vector<core::storage::SessionReading> stored;
+    for (auto& press : m_palpation->takeReadings()) {
+        PressRecord record{std::move(press), m_site, false};
+        // Out of range is a state, not a stiffness: shown, not stored as a number.
+        if (storing && record.press.stiffness.range == core::sensors::ComplianceRange::InRange) {
+            core::storage::SessionReading reading;
+            reading.kind = core::ReadingKind::Compliance;
+            reading.quantity = "stiffness";
+            reading.unit = "N/m";
+            reading.start_s = m_recorder->sessionTimeOf(record.press.start_s);
+            reading.end_s = m_recorder->sessionTimeOf(record.press.end_s);
+            reading.value = record.press.stiffness.objectStiffness_n_per_m;
+            reading.standardError = record.press.standardError_n_per_m;
+            reading.site = record.site;
+            reading.detailsJson = core::compliance::pressDetailsJson(record.press);
+            stored.push_back(std::move(reading));
+            record.stored = true;
+        }
+        m_presses.push_back(std::move(record));
+    }
+    if (!stored.empty()) m_recorder->addReadings(std::move(stored));
+}
+
+}  // namespace tactiscope::devices::session

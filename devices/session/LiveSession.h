@@ -1,0 +1,189 @@
+// The live-session controller: one connected device and everything that
+// happens to its stream, for the GUI's main window and `tactiscope-cli
+// record` alike (as PulseView's pv::Session carries acquisition for its
+// window). It owns the acquisition, the live buffer the display and the
+// wizards read, the mode processors (detector, palpation, capacitive
+// readout), the recorder and the recording's metadata, and it moves the
+// processors' events and readings into the store itself. Owners only
+// observe it and call poll() now and then.
+//
+// Rules it keeps, so no owner can break them:
+// - a mode runs only on channels that can feed it (core/ModeCapability.h),
+//   and a source that declares a mode starts in it;
+// - a recording keeps its mode, profile and calibrations from start to end;
+// - a panel-scan recording stores its defects and the automatic verdict, a
+//   palpation recording its in-range stiffness readings (with the site),
+//   and every recording its profile and the calibrations used;
+// - a tare is refused with the reason while the probe is loaded or its
+//   signal is not steady (the processors' tare rules).
+//
+// Threading: every call from one owner thread (the GUI thread, the CLI's
+// main loop). The processors run on the acquisition thread; poll() takes
+// what they completed.
+#pragma once
+
+#include "core/LiveBuffer.h"
+#include "core/Vocabulary.h"
+#include "core/compliance/StiffnessReadings.h"
+#include "core/detector/DefectEvent.h"
+#include "core/sensors/SensorProfile.h"
+#include "core/storage/Recorder.h"
+#include "devices/Acquisition.h"
+#include "devices/BlockSource.h"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tactiscope::core {
+class SinkSlot;
+}
+namespace tactiscope::core::storage {
+class RecordingTap;
+}
+namespace tactiscope::core::detector {
+class LiveDetection;
+}
+namespace tactiscope::core::compliance {
+class LivePalpation;
+}
+namespace tactiscope::core::capacitive {
+class LiveCapacitive;
+}
+
+namespace tactiscope::devices::session {
+
+struct LiveSessionOptions {
+    std::string storePath;  // recordings and calibrations; need not exist yet
+    // How much of each processor's output the display may look back on.
+    double displaySeconds = 62.0;
+    // The sensor profile of each mode that takes one; the built-in one
+    // (core/sensors/BuiltInProfiles.h) for a mode not given.
+    std::map<core::Mode, core::sensors::SensorProfile> profiles;
+    // The recorder's memory bound, in time: a stalled disk beyond it turns
+    // into a recorded gap instead of unbounded memory.
+    double recorderQueue_s = 30.0;
+};
+
+// A completed press as the session saw it: the site it was taken at (empty
+// without a site map) and its time on the session's clock when it was
+// recorded.
+struct PressRecord {
+    core::compliance::PressReading press;
+    std::string site;
+    bool stored = false;  // went into the recording
+};
+
+struct RecordingSummary {
+    std::int64_t session = 0;
+    core::storage::RecorderStats stats;
+    std::optional<core::Verdict> verdict;  // stored with the session (panel scan)
+    std::size_t defects = 0;               // of this recording's panel
+    double end_s = 0.0;                    // session time of the last sample
+};
+
+class LiveSession {
+public:
+    // Takes the source and builds the processors of every mode its channels
+    // can feed; starts in the source's declared mode, else the first mode
+    // its channels can feed, else panel scan (with no processor).
+    // Throws std::invalid_argument for a null source.
+    LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions options);
+    ~LiveSession();  // ends a recording as complete, then stops the device
+
+    LiveSession(const LiveSession&) = delete;
+    LiveSession& operator=(const LiveSession&) = delete;
+
+    void start();  // starts streaming
+    const BlockSource& source() const { return m_acquisition->source(); }
+    AcquisitionStats stats() const { return m_acquisition->stats(); }
+    // Every channel of the device, for the traces and the wizards.
+    std::shared_ptr<const core::LiveBuffer> buffer() const { return m_buffer; }
+
+    // Mode. setMode() returns why it refuses: the mode's channels are
+    // missing (one sentence naming them) or a recording is running.
+    core::Mode mode() const { return m_mode; }
+    std::optional<core::Mode> declaredMode() const;
+    std::optional<std::string> refusalOf(core::Mode mode) const;
+    std::optional<std::string> setMode(core::Mode mode);
+
+    // Profiles and calibrations. setProfile() refuses a profile of the
+    // wrong kind, a probe the model rejects, or any change while recording;
+    // reloadCalibrations() rebuilds a mode's processor on the store's newest
+    // calibrations (after a wizard stored one).
+    std::optional<std::string> setProfile(core::Mode mode, core::sensors::SensorProfile profile);
+    std::optional<std::string> reloadCalibrations(core::Mode mode);
+    const core::sensors::SensorProfile* profile(core::Mode mode) const;
+    const std::vector<core::storage::StoredCalibration>& calibrations(core::Mode mode) const;
+
+    // The processors, for the views; null when the channels cannot feed them.
+    std::shared_ptr<core::detector::LiveDetection> detection() const { return m_detection; }
+    std::shared_ptr<core::compliance::LivePalpation> palpation() const { return m_palpation; }
+    std::shared_ptr<core::capacitive::LiveCapacitive> capacitive() const { return m_capacitive; }
+
+    // The current mode's zero; nothing when taken, else why not.
+    std::optional<std::string> tare();
+
+    // Recording into the store, with `request`'s subject, operator, site and
+    // notes; the rest of the metadata is the session's. Returns why it
+    // cannot start (the mode cannot run, the store refuses), nothing when
+    // it started.
+    std::optional<std::string> startRecording(const core::storage::SessionMetadata& request);
+    // Ends it as complete, with the automatic verdict in panel scan.
+    std::optional<RecordingSummary> stopRecording();
+    bool isRecording() const { return m_recorder != nullptr; }
+    std::int64_t sessionId() const;  // 0 when not recording
+    double sessionTime_s() const;    // of the newest sample recorded
+    core::storage::RecorderStats recorderStats() const;
+    const core::storage::SessionMetadata& recordingMetadata() const { return m_metadata; }
+    // An operator's marker at a session time; false when not recording.
+    bool addMarker(double time_s, const std::string& note);
+
+    // The owner's periodic call: takes the processors' completed defects and
+    // presses into the lists below and, while recording, into the store.
+    // A recording the disk stopped ends here; its summary is returned.
+    std::optional<RecordingSummary> poll();
+
+    // The current panel's defects (since the recording began, or since the
+    // device connected), stream times; the presses likewise.
+    const std::vector<core::detector::DefectEvent>& panelDefects() const { return m_defects; }
+    const std::vector<PressRecord>& presses() const { return m_presses; }
+    core::Verdict automaticVerdict() const { return core::automaticVerdict(m_defects.size()); }
+    // The site the next presses are taken at (a phantom's grid cell).
+    void setSite(std::string site) { m_site = std::move(site); }
+
+    // Problems met building the processors (a bad calibration, a probe the
+    // model rejects), each one sentence; taken once.
+    std::vector<std::string> takeProblems() { return std::exchange(m_problems, {}); }
+
+private:
+    std::optional<std::string> build(core::Mode mode);
+    std::optional<std::string> buildPalpation();
+    std::optional<std::string> buildCapacitive();
+    void buildDetection();
+    void takeDefects();
+    void takePresses();
+    RecordingSummary finishRecording();
+
+    LiveSessionOptions m_options;
+    std::unique_ptr<Acquisition> m_acquisition;
+    std::shared_ptr<core::LiveBuffer> m_buffer;
+    std::shared_ptr<core::storage::RecordingTap> m_tap;
+    std::shared_ptr<core::SinkSlot> m_palpationSlot, m_capacitiveSlot;
+    std::shared_ptr<core::detector::LiveDetection> m_detection;
+    std::shared_ptr<core::compliance::LivePalpation> m_palpation;
+    std::shared_ptr<core::capacitive::LiveCapacitive> m_capacitive;
+    std::map<core::Mode, std::vector<core::storage::StoredCalibration>> m_calibrations;
+    core::Mode m_mode = core::Mode::PanelScan;
+    std::shared_ptr<core::storage::Recorder> m_recorder;
+    core::storage::SessionMetadata m_metadata;  // of the recording
+    std::vector<core::detector::DefectEvent> m_defects;
+    std::vector<PressRecord> m_presses;
+    std::string m_site;
+    std::vector<std::string> m_problems;
+};
+
+}  // namespace tactiscope::devices::session

@@ -1,0 +1,172 @@
+// LiveSession: building each mode's processor from the device's channels,
+// the mode's profile and the newest calibrations in the store, and
+// rebuilding it when the profile or the calibrations change.
+#include "devices/session/LiveSession.h"
+
+#include "core/ModeCapability.h"
+#include "core/SinkSlot.h"
+#include "core/calibration/CalibrationRecord.h"
+#include "core/capacitive/LiveCapacitive.h"
+#include "core/compliance/LivePalpation.h"
+#include "core/detector/LiveDetection.h"
+#include "core/sensors/BuiltInProfiles.h"
+#include "core/storage/SessionStore.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace tactiscope::devices::session {
+namespace {
+
+// The newest calibration of `kind` for `sensor`; none when the store does
+// not exist yet or cannot be read (then the model is used, as before any).
+std::optional<core::storage::StoredCalibration> newestCalibration(const std::string& storePath, std::string_view kind,
+                                                                  const std::string& sensor)
+{
+    if (!std::filesystem::exists(storePath)) return std::nullopt;
+    try {
+        core::storage::SessionStore store(storePath, core::storage::Database::Access::ReadOnly);
+        return store.newestCalibration(kind, sensor);
+    } catch (const core::storage::StorageError&) {
+        return std::nullopt;
+    }
+}
+
+}  // namespace
+
+const core::sensors::SensorProfile* LiveSession::profile(core::Mode mode) const
+{
+    const auto found = m_options.profiles.find(mode);
+    return found == m_options.profiles.end() ? nullptr : &found->second;
+}
+
+const std::vector<core::storage::StoredCalibration>& LiveSession::calibrations(core::Mode mode) const
+{
+    static const std::vector<core::storage::StoredCalibration> none;
+    const auto found = m_calibrations.find(mode);
+    return found == m_calibrations.end() ? none : found->second;
+}
+
+std::optional<std::string> LiveSession::setProfile(core::Mode mode, core::sensors::SensorProfile profile)
+{
+    if (!core::sensors::profileFitsMode(profile, mode))
+        return "'" + core::sensors::profileName(profile) + "' is not a probe for " + std::string(core::toString(mode)) +
+               ": that mode takes " + std::string(core::sensors::profileKindFor(mode));
+    if (isRecording() && mode == m_mode) return "a recording keeps its sensor from start to end; stop it first";
+    auto previous = std::exchange(m_options.profiles[mode], std::move(profile));
+    if (refusalOf(mode)) return std::nullopt;  // kept for a device that can feed the mode
+    if (auto problem = build(mode)) {
+        m_options.profiles[mode] = std::move(previous);
+        build(mode);
+        return problem;
+    }
+    return std::nullopt;
+}
+
+std::optional<std::string> LiveSession::reloadCalibrations(core::Mode mode)
+{
+    if (isRecording() && mode == m_mode) return "a recording keeps its calibration from start to end";
+    if (refusalOf(mode)) return std::nullopt;
+    return build(mode);
+}
+
+// Builds `mode`'s processor; returns the problem when it cannot (a bad
+// profile, a bad calibration), in which case the mode runs without one.
+std::optional<std::string> LiveSession::build(core::Mode mode)
+{
+    if (mode != core::Mode::PanelScan && !profile(mode)) {
+        auto builtIn = core::sensors::builtInProfile(mode);
+        m_options.profiles.emplace(mode, std::move(*builtIn));
+    }
+    switch (mode) {
+    case core::Mode::PanelScan:
+        buildDetection();
+        return std::nullopt;
+    case core::Mode::Palpation:
+        return buildPalpation();
+    case core::Mode::Capacitive:
+        return buildCapacitive();
+    }
+    return std::nullopt;
+}
+
+void LiveSession::buildDetection()
+{
+    const auto& channels = source().channels();
+    const double rate_hz = source().nominalSampleRate_hz();
+    core::detector::LiveDetectionSettings settings;
+    try {
+        settings.parameters.lags_s = core::detector::liveLags_s(rate_hz);
+        m_detection = std::make_shared<core::detector::LiveDetection>(
+            *core::modeChannels(core::Mode::PanelScan, channels), rate_hz, settings, m_options.displaySeconds);
+    } catch (const std::invalid_argument& e) {
+        m_problems.push_back(std::string("the surface-deflection detector cannot run on this stream: ") + e.what());
+    }
+}
+
+std::optional<std::string> LiveSession::buildPalpation()
+{
+    const auto& probe = std::get<core::sensors::CompliancePairProfile>(m_options.profiles.at(core::Mode::Palpation));
+    const double rate_hz = source().nominalSampleRate_hz();
+    core::compliance::LivePalpationSettings settings;
+    settings.high = probe.high;
+    settings.low = probe.low;
+    settings.press = core::compliance::pressSettingsAt(rate_hz);
+    // Each beam reads through its newest gauge-factor calibration, if any.
+    auto& used = m_calibrations[core::Mode::Palpation];
+    used.clear();
+    for (const bool stiff : {true, false}) {
+        auto newest = newestCalibration(m_options.storePath, core::calibration::kGaugeFactorKind,
+                                        core::calibration::beamSensorName(probe.name, stiff));
+        const auto gaugeFactor = newest ? newest->record.value("gauge_factor") : std::nullopt;
+        if (!gaugeFactor || !(*gaugeFactor > 0.0)) continue;
+        (stiff ? settings.highGaugeFactor : settings.lowGaugeFactor) = *gaugeFactor;
+        used.push_back(std::move(*newest));
+    }
+    try {
+        m_palpation = std::make_shared<core::compliance::LivePalpation>(source().channels(), rate_hz, settings,
+                                                                        m_options.displaySeconds);
+    } catch (const std::invalid_argument& e) {
+        m_palpation.reset();
+        used.clear();
+        m_palpationSlot->set(nullptr);
+        return "the profile '" + probe.name + "' cannot be used: " + e.what();
+    }
+    m_palpationSlot->set(m_palpation);
+    return std::nullopt;
+}
+
+std::optional<std::string> LiveSession::buildCapacitive()
+{
+    const auto& probe = std::get<core::sensors::CapacitiveBeamProfile>(m_options.profiles.at(core::Mode::Capacitive));
+    std::optional<std::string> problem;
+    auto& used = m_calibrations[core::Mode::Capacitive];
+    used.clear();
+    try {
+        const core::sensors::CapacitiveBeam beam(probe.geometry);
+        auto sensitivity = core::capacitive::CapacitiveSensitivity::fromModel(beam);
+        core::capacitive::DriftSettings drift;
+        if (auto newest = newestCalibration(m_options.storePath, core::calibration::kCapacitiveKind, probe.name)) {
+            try {
+                const auto stored = core::capacitive::capacitiveCalibrationOf(newest->record, beam);
+                sensitivity = stored.sensitivity;
+                drift.noiseSigma_f = stored.noiseSigma_f;
+                used.push_back(std::move(*newest));
+            } catch (const std::invalid_argument& e) {
+                problem = "the newest capacitive calibration of '" + probe.name +
+                          "' cannot be used (the beam model is used instead): " + e.what();
+            }
+        }
+        m_capacitive = std::make_shared<core::capacitive::LiveCapacitive>(
+            source().channels(), source().nominalSampleRate_hz(), sensitivity, drift, m_options.displaySeconds);
+    } catch (const std::invalid_argument& e) {
+        m_capacitive.reset();
+        used.clear();
+        m_capacitiveSlot->set(nullptr);
+        return "the profile '" + probe.name + "' cannot be used: " + e.what();
+    }
+    m_capacitiveSlot->set(m_capacitive);
+    return problem;
+}
+
+}  // namespace tactiscope::devices::session

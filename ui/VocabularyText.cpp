@@ -1,0 +1,21 @@
+// VocabularyText: the modes' titles.
+#include "ui/VocabularyText.h"
+
+#include <QCoreApplication>
+
+namespace tactiscope::ui {
+
+QString modeTitle(core::Mode mode)
+{
+    switch (mode) {
+    case core::Mode::PanelScan:
+        return QCoreApplication::translate("Mode", "Panel scan");
+    case core::Mode::Palpation:
+        return QCoreApplication::translate("Mode", "Palpation");
+    case core::Mode::Capacitive:
+        return QCoreApplication::translate("Mode", "Capacitive");
+    }
+    return {};
+}
+
+}  // namespace tactiscope::ui
