@@ -22,7 +22,6 @@
 #include <QTimer>
 
 #include <cstdint>
-#include <map>
 #include <memory>
 #include <optional>
 #include <thread>

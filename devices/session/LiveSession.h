@@ -68,9 +68,9 @@ struct LiveSessionOptions {
     double recorderQueue_s = 30.0;
 };
 
-// A completed press as the session saw it: the site it was taken at (empty
-// without a site map) and its time on the session's clock when it was
-// recorded.
+// A completed press as the session saw it (stream times), the site it was
+// taken at (empty without a site map), and whether it went into the
+// recording.
 struct PressRecord {
     core::compliance::PressReading press;
     std::string site;
