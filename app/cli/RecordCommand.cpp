@@ -88,6 +88,8 @@ int runRecord(const QStringList& arguments)
          QStringLiteral("FILE")},
         {QStringLiteral("subject"), QStringLiteral("Panel or phantom id."), QStringLiteral("ID")},
         {QStringLiteral("operator"), QStringLiteral("Who records."), QStringLiteral("NAME")},
+        {QStringLiteral("site"), QStringLiteral("Where on the subject (palpation: the site of every reading)."),
+         QStringLiteral("SITE")},
         {QStringLiteral("mode"), modeOptionText(QStringLiteral("(default: the device's own, from its channels).")),
          QStringLiteral("MODE")},
         {QStringLiteral("profile"),
@@ -141,6 +143,7 @@ int runRecord(const QStringList& arguments)
     core::storage::SessionMetadata metadata;
     metadata.subject = parser.value(QStringLiteral("subject")).toStdString();
     metadata.operatorName = parser.value(QStringLiteral("operator")).toStdString();
+    metadata.site = parser.value(QStringLiteral("site")).toStdString();
 
     // A store we may not write (not ours, newer, being recorded into) is bad
     // input: say so before touching the device.
@@ -195,6 +198,7 @@ int runRecord(const QStringList& arguments)
         }
     }
     for (const auto& problem : session.takeProblems()) printError(QString::fromStdString(problem));
+    session.setSite(metadata.site);
     // Recording from the first block: attached before the device streams.
     if (const auto error = session.startRecording(metadata)) {
         printError(QString::fromStdString(*error));

@@ -1,25 +1,34 @@
 // `tactiscope-cli record` against `tactiscope-cli emulate`, both as real
 // processes over a real pseudo-terminal, into a real store: the samples in
-// the store are exactly those the emulator sent, Ctrl-C ends a recording
-// cleanly, and bad input is refused with exit code 2.
+// the store are exactly those the emulator sent, the mode's analysis runs on
+// them (events of a panel scan, stiffness readings of palpation), Ctrl-C
+// ends a recording cleanly, and bad input is refused with exit code 2.
 #include "core/SampleBlock.h"
 #include "core/storage/Recorder.h"
 #include "core/storage/SessionStore.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "support/CliRunner.h"
+#include "support/PdfText.h"
 
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <thread>
 
 using namespace tactiscope;
+using tactiscope::testing::pdfText;
 using tactiscope::testing::runCli;
 
 namespace {
@@ -93,6 +102,101 @@ TEST(RecordCli, TheStoreHoldsExactlyTheSamplesTheEmulatorSent)
         ASSERT_EQ(stored.size(), n);
         for (std::uint64_t i = 0; i < n; ++i)
             ASSERT_EQ(stored[i], static_cast<double>(static_cast<float>(expected.value(c, i)))) << c << ", " << i;
+    }
+}
+
+TEST(RecordCli, APanelScanRecordingStoresTheDetectorsEventsAndTheReportListsThem)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("probe");
+    const QString db = dir.filePath("line3.tactiscope");
+    QProcess emulator;
+    ASSERT_TRUE(startEmulator(emulator, link, {"--scenario", "panel-scan", "--rate", "500", "--seed", "5"}));
+    const auto result = runCli({"record", "--port", link, "--seconds", "8", "--db", db, "--subject", "door-8"});
+    stopEmulator(emulator);
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+
+    // The scenario's stroke is x(t) = 0.1·sin(πt) m with one dent at 30 mm
+    // and B 15 mm behind A: each 2 s stroke crosses the dent once each way,
+    // and B meets it (asin 0.45 − asin 0.30)/π = 51.5 ms after A (the
+    // panel-scan test's figure), in both directions.
+    const auto show = runCli({"sessions", "--db", db, "show", "last", "--json"});
+    ASSERT_EQ(show.exitCode, 0) << show.err.toStdString();
+    const QJsonObject json = QJsonDocument::fromJson(show.out.toUtf8()).object();
+    EXPECT_EQ(json["session"].toObject()["mode"].toString(), "panel-scan");
+    EXPECT_EQ(json["session"].toObject()["verdict"].toString(), "defects found");
+    const QJsonArray events = json["events"].toArray();
+    EXPECT_GE(events.size(), 7) << show.out.toStdString();  // 8 crossings, one maybe cut by the ends
+    EXPECT_LE(events.size(), 9);
+    const double crossing_s = (std::asin(0.45) - std::asin(0.30)) / std::numbers::pi;
+    int forwards = 0, backwards = 0;
+    for (const auto& value : events) {
+        const QJsonObject event = value.toObject();
+        EXPECT_EQ(event["kind"].toString(), "defect");
+        EXPECT_NEAR(event["lag_s"].toDouble(), crossing_s, 0.004) << event["start_s"].toDouble();
+        (event["direction"].toInt() > 0 ? forwards : backwards) += 1;
+    }
+    EXPECT_LE(std::abs(forwards - backwards), 1);
+    EXPECT_TRUE(result.out.contains(QStringLiteral("panel-scan: %1 defects stored").arg(events.size())))
+        << result.out.toStdString();
+
+    if (QStandardPaths::findExecutable(QStringLiteral("pdftotext")).isEmpty())
+        GTEST_SKIP() << "pdftotext (poppler-utils, in scripts/install-deps.sh) is needed to read the report";
+    const QString pdf = dir.filePath("door-8.pdf");
+    const auto report = runCli({"report", "--db", db, "--session", "last", "--output", pdf});
+    ASSERT_EQ(report.exitCode, 0) << report.err.toStdString();
+    const QString text = pdfText(pdf);
+    EXPECT_TRUE(text.contains(QStringLiteral("Defects (%1)").arg(events.size()))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("A then B"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("B then A"))) << text.toStdString();
+}
+
+TEST(RecordCli, APalpationRecordingStoresAStiffnessReadingPerPress)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("probe");
+    const QString db = dir.filePath("clinic.tactiscope");
+    QProcess emulator;
+    ASSERT_TRUE(startEmulator(emulator, link, {"--scenario", "palpation", "--seed", "3"}));
+    const auto result = runCli({"record", "--port", link, "--seconds", "12", "--db", db, "--site", "B2"});
+    stopEmulator(emulator);
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto session = store.sessions().front();
+    EXPECT_EQ(session.metadata.mode, tactiscope::core::Mode::Palpation);
+    const auto readings = store.readings(session.id);
+    // A press, hold and release take about 2–3 s with a 1 s pause between
+    // presses: 12 s hold at least three whole ones.
+    ASSERT_GE(readings.size(), 3u) << result.out.toStdString();
+    for (const auto& reading : readings) {
+        EXPECT_EQ(reading.kind, tactiscope::core::ReadingKind::Compliance);
+        EXPECT_EQ(reading.unit, "N/m");
+        EXPECT_NEAR(reading.value, 117.0, 0.05 * 117.0);  // the scenario's specimen
+        EXPECT_EQ(reading.site, "B2");
+        EXPECT_LT(reading.start_s, reading.end_s);
+    }
+    EXPECT_TRUE(result.out.contains(QStringLiteral("palpation: %1 stiffness readings stored").arg(readings.size())))
+        << result.out.toStdString();
+}
+
+TEST(RecordCli, AModeTheDeviceCannotFeedIsRefusedWithTheChannelsItNeeds)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("probe");
+    const QString db = dir.filePath("s.tactiscope");
+    QProcess emulator;
+    ASSERT_TRUE(startEmulator(emulator, link, {"--scenario", "panel-scan"}));
+    const auto result = runCli({"record", "--port", link, "--seconds", "2", "--db", db, "--mode", "palpation"});
+    stopEmulator(emulator);
+    EXPECT_EQ(result.exitCode, 2);
+    EXPECT_TRUE(result.err.contains(QStringLiteral("cannot record in this mode: "))) << result.err.toStdString();
+    EXPECT_TRUE(result.err.contains(QStringLiteral("displacement"))) << result.err.toStdString();
+    EXPECT_TRUE(result.out.isEmpty()) << result.out.toStdString();
+    // Nothing was recorded.
+    if (std::filesystem::exists(db.toStdString())) {
+        core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+        EXPECT_TRUE(store.sessions().empty());
     }
 }
 

@@ -6,6 +6,7 @@
 #include "core/SampleBlock.h"
 #include "core/storage/SessionStore.h"
 #include "support/CliRunner.h"
+#include "support/PdfText.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -19,6 +20,7 @@
 #include <cmath>
 
 using namespace tactiscope;
+using tactiscope::testing::pdfText;
 using tactiscope::testing::runCli;
 
 namespace {
@@ -71,15 +73,6 @@ QString makeStore(const QTemporaryDir& dir)
     store.endSession(id, tactiscope::core::SessionStatus::Complete);
     store.setVerdict(id, tactiscope::core::Verdict::DefectsFound);
     return path;
-}
-
-// The PDF's text, laid out; empty when pdftotext is missing or fails.
-QString pdfText(const QString& pdf)
-{
-    QProcess process;
-    process.start(QStringLiteral("pdftotext"), {QStringLiteral("-layout"), pdf, QStringLiteral("-")});
-    process.waitForFinished(30000);
-    return process.exitCode() == 0 ? QString::fromUtf8(process.readAllStandardOutput()) : QString();
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 
 #include "support/CliRunner.h"
 #include "support/MainWindowHelpers.h"
+#include "support/PdfText.h"
 #include "support/Screenshot.h"
 #include "support/TextFiles.h"
 #include "support/WaitFor.h"
@@ -34,6 +35,7 @@
 
 using namespace tactiscope;
 using tactiscope::testing::child;
+using tactiscope::testing::pdfText;
 using tactiscope::testing::runCli;
 using tactiscope::testing::waitFor;
 
@@ -87,14 +89,6 @@ QJsonArray cliEvents(const QStringList& arguments)
     const auto result = runCli(arguments);
     EXPECT_EQ(result.exitCode, 0) << result.err.toStdString();
     return QJsonDocument::fromJson(result.out.toUtf8()).object()["events"].toArray();
-}
-
-QString pdfText(const QString& pdf)
-{
-    QProcess process;
-    process.start(QStringLiteral("pdftotext"), {QStringLiteral("-layout"), pdf, QStringLiteral("-")});
-    if (!process.waitForFinished(60000) || process.exitCode() != 0) return {};
-    return QString::fromUtf8(process.readAllStandardOutput());
 }
 
 }  // namespace
