@@ -1,5 +1,7 @@
 // InterruptedSessionsReport: finding the sessions, the message and the export.
 #include "ui/InterruptedSessionsReport.h"
+
+#include "ui/ProblemReport.h"
 #include "ui/VocabularyText.h"
 
 #include "core/storage/SessionExport.h"
@@ -89,7 +91,10 @@ void showInterruptedSessionsReport(QWidget* parent, const QString& storePath, co
             QFileDialog::getExistingDirectory(parent, QObject::tr("Export the interrupted sessions to"));
         if (folder.isEmpty()) return;
         const QString error = exportSessions(storePath, sessions, folder);
-        if (!error.isEmpty()) QMessageBox::warning(parent, QObject::tr("Export failed"), error);
+        if (!error.isEmpty())
+            reportProblem(parent,
+                          {QObject::tr("Export failed"), QObject::tr("Not every interrupted session was exported."),
+                           error, QObject::tr("Choose a folder with space that you may write to, and export again.")});
     });
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->setModal(false);

@@ -5,32 +5,32 @@
 #include "core/capacitive/LiveCapacitive.h"
 #include "core/compliance/LivePalpation.h"
 #include "core/detector/LiveDetection.h"
-#include "devices/emulator/ProbeEmulator.h"
+#include "core/storage/StoreWorker.h"
 #include "devices/session/LiveSession.h"
 #include "devices/simulator/ScenarioCatalog.h"
-#include "devices/simulator/SimulatorSource.h"
 #include "ui/AboutText.h"
 #include "ui/ActiveProfiles.h"
 #include "ui/CapacitiveView.h"
 #include "ui/DesignTool.h"
+#include "ui/DeviceConnector.h"
 #include "ui/DevicePanel.h"
 #include "ui/InterruptedSessionsReport.h"
+#include "ui/LinkStatus.h"
 #include "ui/LivePlotWidget.h"
 #include "ui/PalpationView.h"
 #include "ui/PanelScanView.h"
+#include "ui/ProblemReport.h"
 #include "ui/RawConsole.h"
 #include "ui/SensorProfileDialog.h"
 #include "ui/SessionBar.h"
 #include "ui/SiteGridMap.h"
+#include "ui/StoreJobs.h"
 #include "ui/VerdictDialog.h"
 #include "ui/VocabularyText.h"
 #include "ui/XYPlotWidget.h"
 #include "ui/calibration/CalibrationHistory.h"
-#include "ui/calibration/CapacitiveWizard.h"
-#include "ui/calibration/GaugeFactorWizard.h"
-#include "ui/calibration/StoredCalibrations.h"
-#include "ui/review/ReviewWindow.h"
-#include "ui/review/SessionBrowser.h"
+#include "ui/calibration/CalibrationWizards.h"
+#include "ui/review/ReviewWindows.h"
 
 #include <QActionGroup>
 #include <QApplication>
@@ -65,52 +65,11 @@ QString defaultStorePath()
         .filePath(QStringLiteral("sessions.tactiscope"));
 }
 
-LinkCounters linkCounters(const devices::AcquisitionStats& stats, const devices::BlockSource& source)
+Problem badProfile(const QString& mode, const QString& error)
 {
-    LinkCounters counters;
-    counters.rate_hz = stats.measuredRate_hz;
-    counters.nominalRate_hz = source.nominalSampleRate_hz();
-    counters.samples = stats.samples;
-    counters.samplesLost = stats.samplesLost;
-    switch (stats.state) {
-    case devices::AcquisitionState::Idle:
-        counters.state = MainWindow::tr("Idle");
-        break;
-    case devices::AcquisitionState::Streaming:
-        counters.state = MainWindow::tr("Streaming");
-        break;
-    case devices::AcquisitionState::Finished:
-        counters.state = MainWindow::tr("Finished");
-        break;
-    case devices::AcquisitionState::Failed:
-        counters.state = MainWindow::tr("Failed: %1").arg(QString::fromStdString(stats.error));
-        counters.healthy = false;
-        break;
-    }
-    // A device away (unplugged) is still "streaming" to the acquisition.
-    if (const auto* reconnecting = dynamic_cast<const devices::ReconnectingSource*>(&source)) {
-        counters.decoder = reconnecting->decoderCounters();
-        counters.reconnections = reconnecting->reconnections();
-        switch (reconnecting->state()) {
-        case devices::DeviceState::Lost:
-            counters.state = MainWindow::tr("Device lost");
-            counters.healthy = false;
-            break;
-        case devices::DeviceState::Reconnecting:
-            counters.state = MainWindow::tr("Reconnecting…");
-            counters.healthy = false;
-            break;
-        case devices::DeviceState::Streaming:
-            break;
-        }
-    }
-    return counters;
-}
-
-// Where the emulator puts its link: one per running Tactiscope.
-QString emulatorLinkPath()
-{
-    return QDir::temp().filePath(QStringLiteral("tactiscope-emulator-%1").arg(QApplication::applicationPid()));
+    return {MainWindow::tr("Bad profile"),
+            MainWindow::tr("The %1 profile could not be used; the paper's sensor is used instead.").arg(mode), error,
+            MainWindow::tr("Fix or choose another profile in Session ▸ Sensor profiles.")};
 }
 
 }  // namespace
@@ -121,7 +80,8 @@ MainWindow::MainWindow(QWidget* parent)
       m_panelScan(new PanelScanView(this)),
       m_palpationView(new PalpationView(this)),
       m_capacitiveView(new CapacitiveView(this)),
-      m_devicePanel(new DevicePanel(this))
+      m_devicePanel(new DevicePanel(this)),
+      m_review(new ReviewWindows(this))
 {
     setWindowTitle(tr("Tactiscope"));
     setWindowIcon(QIcon(QStringLiteral(":/tactiscope/icons/tactiscope.svg")));
@@ -174,7 +134,25 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_palpationView, &PalpationView::tareRequested, this, &MainWindow::tare);
     connect(m_capacitiveView, &CapacitiveView::tareRequested, this, &MainWindow::tare);
     connect(m_capacitiveView, &CapacitiveView::profilesRequested, this, &MainWindow::showProfiles);
-    connect(m_devicePanel, &DevicePanel::connectRequested, this, &MainWindow::connectRequest);
+    m_connector = new DeviceConnector(
+        {[this] { disconnectSource(); },
+         [this](const QString& label) {
+             m_deviceLabel->setText(label);
+             m_linkLabel->setText(tr("Connecting…"));
+             m_devicePanel->setConnecting(label);
+         },
+         [this](std::unique_ptr<devices::BlockSource> source, std::shared_ptr<devices::simulator::LoadRig> rig) {
+             connectSource(std::move(source));
+             m_loadRig = std::move(rig);  // after connectSource, which forgets the old device's rig
+         },
+         [this](const Problem& problem) {
+             m_devicePanel->setConnected(false);
+             m_devicePanel->clearCounters(tr("Connection failed"));
+             m_linkLabel->setText(tr("Connection failed"));
+             reportProblem(this, problem);
+         }},
+        this);
+    connect(m_devicePanel, &DevicePanel::connectRequested, m_connector, &DeviceConnector::request);
     connect(m_devicePanel, &DevicePanel::disconnectRequested, this, &MainWindow::disconnectSource);
     createMenus();
     createStatusBar();
@@ -232,10 +210,12 @@ void MainWindow::modeChosen()
         if (const auto refusal = m_session->setMode(chosen)) {
             const QSignalBlocker quiet(m_sessionBar);
             m_sessionBar->setMode(m_session->mode());
-            showProblem(
-                tr("Mode not available"),
-                tr("%1 cannot run on %2.").arg(modeTitle(chosen), QString::fromStdString(m_session->source().name())),
-                QString::fromStdString(*refusal), QStringLiteral("modeRefusedBox"));
+            const QString device = QString::fromStdString(m_session->source().name());
+            reportProblem(this, {tr("Mode not available"), tr("%1 cannot run on %2.").arg(modeTitle(chosen), device),
+                                 QString::fromStdString(*refusal),
+                                 tr("The session stays in %1. Connect the probe made for %2 to record in it.")
+                                     .arg(modeTitle(m_session->mode()), modeTitle(chosen)),
+                                 QStringLiteral("modeRefusedBox")});
         }
     }
     showModeView();
@@ -284,7 +264,7 @@ void MainWindow::createMenus()
     });
     QMenu* simulator = device->addMenu(tr("&Simulator"));
     for (const std::string& id : devices::simulator::scenarioIds()) {
-        simulator->addAction(QString::fromStdString(id), this, [this, id] { connectSimulator(id); });
+        simulator->addAction(QString::fromStdString(id), this, [this, id] { m_connector->connectSimulator(id); });
     }
     device->addSeparator();
     device->addAction(tr("&Disconnect"), this, &MainWindow::disconnectSource);
@@ -345,9 +325,9 @@ void MainWindow::createMenus()
     }
 
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
-    tools->addAction(tr("Calibrate the &gauge factor…"), this, [this] { calibrate(QStringLiteral("gauge")); });
+    tools->addAction(tr("Calibrate the &gauge factor…"), this, [this] { calibrate(core::Mode::Palpation); });
     tools->addAction(tr("Calibrate the &capacitive beam (C0, sensitivity)…"), this,
-                     [this] { calibrate(QStringLiteral("capacitive")); });
+                     [this] { calibrate(core::Mode::Capacitive); });
     tools->addAction(tr("Calibration &history…"), this, [this] {
         auto* history = new CalibrationHistory(m_storePath, this);
         history->setAttribute(Qt::WA_DeleteOnClose);
@@ -388,8 +368,9 @@ void MainWindow::createStatusBar()
 
 void MainWindow::setStorePath(const QString& path)
 {
-    if (m_browser && path != m_storePath) m_browser->close();  // it lists the old store
+    m_review->setStorePath(path);
     m_storePath = path;
+    m_store = std::make_unique<core::storage::StoreWorker>(path.toStdString());
     m_sessionBar->setStorePath(path);
 }
 
@@ -421,53 +402,17 @@ bool MainWindow::isRecording() const
 
 void MainWindow::reportInterruptedSessions()
 {
-    // Each interrupted session is reported once, on the first start after it.
-    QSettings settings;
-    const QString key =
-        QStringLiteral("recording/interruptedReported/%1").arg(QFileInfo(m_storePath).absoluteFilePath());
-    const auto sessions = interruptedSessionsAfter(m_storePath, settings.value(key, 0).toLongLong());
-    if (sessions.empty()) return;
-    settings.setValue(key, static_cast<qlonglong>(sessions.back()));
-    showInterruptedSessionsReport(this, m_storePath, sessions,
-                                  [this](const std::vector<std::int64_t>& ids) { reviewSessions(ids); });
+    m_review->reportInterrupted();
 }
 
 SessionBrowser* MainWindow::showSessionBrowser()
 {
-    if (!m_browser) {
-        m_browser = new SessionBrowser(m_storePath, this);
-        m_browser->setAttribute(Qt::WA_DeleteOnClose);
-        connect(m_browser, &SessionBrowser::openSessions, this, &MainWindow::reviewSessions);
-        // A deleted session's review window has nothing left to show.
-        connect(m_browser, &SessionBrowser::sessionsDeleted, this, [this](const std::vector<std::int64_t>& ids) {
-            for (ReviewWindow* window : findChildren<ReviewWindow*>())
-                if (std::ranges::find(ids, window->sessionId()) != ids.end()) window->close();
-        });
-    }
-    m_browser->show();
-    m_browser->raise();
-    m_browser->activateWindow();
-    return m_browser;
+    return m_review->showBrowser();
 }
 
 void MainWindow::reviewSessions(const std::vector<std::int64_t>& sessions)
 {
-    QStringList problems;
-    for (const std::int64_t id : sessions) {
-        const auto windows = findChildren<ReviewWindow*>();
-        const auto open = std::ranges::find(windows, id, &ReviewWindow::sessionId);
-        ReviewWindow* window = open != windows.end() ? *open : nullptr;
-        QString error;
-        if (!window) window = ReviewWindow::open(m_storePath, id, this, error);
-        if (!window) {
-            problems << error;
-            continue;
-        }
-        window->show();
-        window->raise();
-    }
-    if (!problems.isEmpty())
-        showProblem(tr("Review"), tr("Not every session could be opened."), problems.join(QLatin1Char('\n')));
+    m_review->review(sessions);
 }
 
 void MainWindow::toggleRecording()
@@ -486,7 +431,9 @@ bool MainWindow::startRecording()
         return false;
     }
     if (const auto error = m_session->startRecording(m_sessionBar->metadata())) {
-        showProblem(tr("Cannot record"), tr("Recording could not start."), QString::fromStdString(*error));
+        reportProblem(this, {tr("Cannot record"), tr("Recording could not start."), QString::fromStdString(*error),
+                             tr("Choose another session store (Session ▸ Session store…) or free space on its "
+                                "disk, then record again.")});
         return false;
     }
     m_sessionBar->setRecording(true);
@@ -504,7 +451,7 @@ void MainWindow::stopRecording()
 void MainWindow::recordingEnded(const devices::session::RecordingSummary& summary)
 {
     m_sessionBar->setRecording(false);
-    if (m_browser) m_browser->reload();
+    m_review->sessionRecorded();
     lockProfiles();
     m_sessionBar->setRecordEnabled(m_session != nullptr);
     const QLocale locale;
@@ -513,8 +460,11 @@ void MainWindow::recordingEnded(const devices::session::RecordingSummary& summar
                                   .arg(summary.session)
                                   .arg(locale.toString(static_cast<qulonglong>(summary.stats.samplesWritten))));
     if (!summary.stats.error.empty())
-        showProblem(tr("Recording stopped"), tr("Recording stopped early."),
-                    QString::fromStdString(summary.stats.error));
+        reportProblem(this, {tr("Recording stopped"), tr("Recording stopped early."),
+                             QString::fromStdString(summary.stats.error),
+                             tr("The samples up to the stop are kept in session %1. Free space or choose another "
+                                "store, then record again.")
+                                 .arg(summary.session)});
     else if (summary.verdict)
         askVerdict(summary.session, summary.end_s, static_cast<int>(summary.defects), *summary.verdict);
 }
@@ -524,33 +474,38 @@ void MainWindow::recordingEnded(const devices::session::RecordingSummary& summar
 // annotation at its end, without being held up.
 void MainWindow::askVerdict(std::int64_t session, double end_s, int defects, core::Verdict verdict)
 {
-    const std::string store = m_storePath.toStdString();
-    const auto save = [this, store, session](core::Verdict chosen) {
-        try {
-            core::storage::SessionStore(store).setVerdict(session, chosen);
-            statusBar()->showMessage(tr("Session %1: verdict \"%2\"").arg(session).arg(wordText(chosen)), 5000);
-        } catch (const core::storage::StorageError& e) {
-            showProblem(tr("Verdict not saved"), tr("The verdict could not be saved."),
-                        QString::fromStdString(e.what()));
-        }
-    };
     auto* dialog = new VerdictDialog(defects, verdict, this);
     const std::string author = m_sessionBar->metadata().operatorName;
-    connect(dialog, &VerdictDialog::decided, this,
-            [this, save, store, session, end_s, author, verdict](core::Verdict chosen, const QString& note) {
-                if (chosen != verdict) save(chosen);
-                if (note.isEmpty()) return;
-                core::storage::Annotation annotation;
-                annotation.time_s = end_s;
-                annotation.author = author;
-                annotation.text = tr("Verdict \"%1\": %2").arg(wordText(chosen), note).toStdString();
-                try {
-                    core::storage::SessionStore(store).addAnnotation(session, annotation);
-                } catch (const core::storage::StorageError& e) {
-                    showProblem(tr("Note not saved"), tr("The verdict's note could not be saved."),
-                                QString::fromStdString(e.what()));
-                }
-            });
+    connect(
+        dialog, &VerdictDialog::decided, this,
+        [this, session, end_s, author, verdict](core::Verdict chosen, const QString& note) {
+            const auto failed = [this, session](const QString& what) {
+                return [this, session, what](const QString& error) {
+                    reportProblem(this, {tr("Not saved"), what, error,
+                                         tr("Session %1 is kept with its automatic verdict; add the note as an "
+                                            "annotation in its review window.")
+                                             .arg(session)});
+                };
+            };
+            if (chosen != verdict)
+                runOnStore(
+                    *m_store, this,
+                    [session, chosen](core::storage::SessionStore& store) { store.setVerdict(session, chosen); },
+                    [this, session, chosen] {
+                        statusBar()->showMessage(tr("Session %1: verdict \"%2\"").arg(session).arg(wordText(chosen)),
+                                                 5000);
+                    },
+                    failed(tr("The verdict could not be saved.")));
+            if (note.isEmpty()) return;
+            core::storage::Annotation annotation;
+            annotation.time_s = end_s;
+            annotation.author = author;
+            annotation.text = tr("Verdict \"%1\": %2").arg(wordText(chosen), note).toStdString();
+            runOnStore(
+                *m_store, this,
+                [session, annotation](core::storage::SessionStore& store) { store.addAnnotation(session, annotation); },
+                [] {}, failed(tr("The verdict's note could not be saved.")));
+        });
     dialog->show();
 }
 
@@ -581,13 +536,10 @@ void MainWindow::applyProfile(const QString& modeName)
     const auto mode = core::modeFromString(modeName.toStdString());
     if (!m_session || !mode) return;  // the next connection reads it
     ActiveProfile active = activeProfile(modeName);
-    if (!active.error.isEmpty())
-        showProblem(tr("Bad profile"),
-                    tr("The %1 profile could not be used; the paper's sensor is used instead.").arg(modeName),
-                    active.error);
+    if (!active.error.isEmpty()) reportProblem(this, badProfile(modeName, active.error));
     if (const auto refusal = m_session->setProfile(*mode, std::move(active.profile))) {
-        showProblem(tr("Bad profile"), tr("The %1 probe was not changed.").arg(modeName),
-                    QString::fromStdString(*refusal));
+        reportProblem(this, {tr("Bad profile"), tr("The %1 probe was not changed.").arg(modeName),
+                             QString::fromStdString(*refusal), tr("Fix the profile in Session ▸ Sensor profiles.")});
         return;
     }
     showMode(*mode);
@@ -631,7 +583,7 @@ void MainWindow::showMode(core::Mode mode)
 
 // Calibrating needs the live signal and must not change the calibration of
 // a session being recorded.
-void MainWindow::calibrate(const QString& which)
+void MainWindow::calibrate(core::Mode mode)
 {
     if (!m_session) {
         statusBar()->showMessage(tr("Connect the probe to calibrate (or the simulator's calibration rig)."), 6000);
@@ -649,29 +601,12 @@ void MainWindow::calibrate(const QString& which)
                                m_storePath,
                                QString::fromStdString(m_sessionBar->metadata().operatorName),
                                ProfileLibrary::defaultDirectory()};
-    QWizard* wizard = nullptr;
-    if (which == QLatin1String("gauge")) {
-        auto* gauge = new GaugeFactorWizard(std::move(context), this);
-        connect(gauge, &GaugeFactorWizard::calibrationStored, this, [this](std::int64_t, const QString& sensor) {
-            if (m_session) m_session->reloadCalibrations(core::Mode::Palpation);
-            showMode(core::Mode::Palpation);
-            statusBar()->showMessage(tr("Gauge factor of %1 stored; the palpation view reads through it.").arg(sensor),
-                                     8000);
-        });
-        wizard = gauge;
-    } else if (which == QLatin1String("capacitive")) {
-        auto* capacitive = new CapacitiveWizard(std::move(context), this);
-        connect(capacitive, &CapacitiveWizard::calibrationStored, this, [this](std::int64_t, const QString& sensor) {
-            if (m_session) m_session->reloadCalibrations(core::Mode::Capacitive);
-            showMode(core::Mode::Capacitive);
-            statusBar()->showMessage(tr("Calibration of %1 stored; the capacitive view reads through it.").arg(sensor),
-                                     8000);
-        });
-        wizard = capacitive;
-    }
-    if (!wizard) return;
-    wizard->setAttribute(Qt::WA_DeleteOnClose);
-    wizard->show();
+    openCalibrationWizard(mode, std::move(context), this, [this, mode](const QString& sensor) {
+        if (m_session) m_session->reloadCalibrations(mode);
+        showMode(mode);
+        statusBar()->showMessage(
+            tr("Calibration of %1 stored; the %2 view reads through it.").arg(sensor, modeTitle(mode).toLower()), 8000);
+    });
 }
 
 void MainWindow::tare()
@@ -715,7 +650,8 @@ void MainWindow::markEventWithNote()
         if (isRecording() && m_session->sessionId() == session)
             addMarker(time_s, note);
         else
-            showProblem(tr("Marker not stored"), tr("The recording ended before the note was entered."), note);
+            reportProblem(this, {tr("Marker not stored"), tr("The recording ended before the note was entered."), note,
+                                 tr("Add the note as an annotation in the session's review window.")});
     });
     dialog->open();
 }
@@ -742,100 +678,14 @@ void MainWindow::updateRecording()
     m_recordingLabel->setStyleSheet(QStringLiteral("color: #c62828; font-weight: 600;"));
 }
 
-// Problems are shown in a window that does not block: acquisition and
-// recording go on, and the operator closes it when convenient.
-void MainWindow::showProblem(const QString& title, const QString& text, const QString& detail,
-                             const QString& objectName)
-{
-    qWarning("%s: %s", qPrintable(text), qPrintable(detail));
-    auto* box = new QMessageBox(QMessageBox::Warning, title, text, QMessageBox::Ok, this);
-    box->setObjectName(objectName);
-    box->setInformativeText(detail);
-    box->setAttribute(Qt::WA_DeleteOnClose);
-    box->setModal(false);
-    box->show();
-}
-
-void MainWindow::connectSimulator(const std::string& scenario)
-{
-    auto simulated = devices::simulator::makeScenario(scenario);
-    auto rig = simulated->loadRig();
-    connectSource(std::make_unique<devices::simulator::SimulatorSource>(std::move(simulated)));
-    m_loadRig = std::move(rig);  // after connectSource, which forgets the old device's rig
-}
-
-void MainWindow::connectRequest(const SourceRequest& request)
-{
-    switch (request.kind) {
-    case SourceKind::Simulator:
-        connectSimulator(request.scenario);
-        return;
-    case SourceKind::Emulator: {
-        devices::emulator::EmulatorOptions options;
-        options.linkPath = emulatorLinkPath().toStdString();
-        options.protocol = request.options.protocol;
-        options.scenario = request.scenario;
-        disconnectSource();  // the old emulator's link goes before the new one takes its path
-        std::shared_ptr<devices::emulator::ProbeEmulator> emulator;
-        try {
-            emulator = std::make_shared<devices::emulator::ProbeEmulator>(options);
-            emulator->start();
-        } catch (const std::exception& e) {
-            showProblem(tr("Cannot start the emulator"), tr("The probe emulator could not start."),
-                        QString::fromStdString(e.what()));
-            return;
-        }
-        // The opener owns the emulator, so it lives exactly as long as the
-        // connection to it (and goes after the port, which is closed first).
-        const devices::DiscoveredDevice link{devices::DeviceBus::Serial, options.linkPath, {}, options.linkPath};
-        connectDevice(tr("emulator (%1)").arg(QString::fromStdString(request.scenario)),
-                      [emulator, open = devices::deviceOpener(link, request.baud, request.options)] { return open(); });
-        return;
-    }
-    case SourceKind::Port:
-        connectDevice(QString::fromStdString(request.device.path),
-                      devices::deviceOpener(request.device, request.baud, request.options));
-        return;
-    }
-}
-
 void MainWindow::connectDevice(const QString& label, devices::ReconnectingSource::Opener opener)
 {
-    disconnectSource();
-    const std::uint64_t attempt = ++m_connectAttempt;
-    m_connectingLabel = label;
-    m_deviceLabel->setText(label);
-    m_linkLabel->setText(tr("Connecting…"));
-    m_devicePanel->setConnecting(label);
-    m_connectors.emplace_back([this, attempt, opener = std::move(opener)] {
-        auto result = std::make_shared<std::unique_ptr<devices::BlockSource>>();
-        QString error;
-        try {
-            *result = std::make_unique<devices::ReconnectingSource>(opener);
-        } catch (const std::exception& e) {
-            error = QString::fromStdString(e.what());
-        }
-        QMetaObject::invokeMethod(
-            this, [this, attempt, result, error] { finishConnecting(attempt, std::move(*result), error); },
-            Qt::QueuedConnection);
-    });
+    m_connector->open(label, std::move(opener));
 }
 
-void MainWindow::finishConnecting(std::uint64_t attempt, std::unique_ptr<devices::BlockSource> source,
-                                  const QString& error)
+bool MainWindow::isConnecting() const
 {
-    if (attempt != m_connectAttempt) return;  // cancelled, or superseded by another connect
-    const QString label = m_connectingLabel.value_or(QString());
-    m_connectingLabel.reset();
-    if (source) {
-        connectSource(std::move(source));
-        return;
-    }
-    m_devicePanel->setConnected(false);
-    m_devicePanel->clearCounters(tr("Connection failed"));
-    m_linkLabel->setText(tr("Connection failed"));
-    showProblem(tr("Cannot connect"), tr("Tactiscope could not connect to %1.").arg(label), error,
-                QStringLiteral("connectErrorBox"));
+    return m_connector->connecting().has_value();
 }
 
 void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
@@ -847,16 +697,14 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
     options.displaySeconds = LivePlotWidget::kMaxWindow_s + 2.0;
     for (const QString& mode : profileModes()) {
         ActiveProfile active = activeProfile(mode);
-        if (!active.error.isEmpty())
-            showProblem(tr("Bad profile"),
-                        tr("The %1 profile could not be used; the paper's sensor is used instead.").arg(mode),
-                        active.error);
+        if (!active.error.isEmpty()) reportProblem(this, badProfile(mode, active.error));
         options.profiles.emplace(*core::modeFromString(mode.toStdString()), std::move(active.profile));
     }
     m_session = std::make_unique<devices::session::LiveSession>(std::move(source), std::move(options));
     for (const auto& problem : m_session->takeProblems())
-        showProblem(tr("Analysis not available"), tr("Part of the analysis cannot run on this device."),
-                    QString::fromStdString(problem));
+        reportProblem(this, {tr("Analysis not available"), tr("Part of the analysis cannot run on this device."),
+                             QString::fromStdString(problem),
+                             tr("The live view and recording go on; check the probe's profile and calibrations.")});
     // The source's own mode wins; a source that declares none keeps the
     // bar's mode if its channels can feed it.
     const core::Mode chosen = m_sessionBar->metadata().mode;
@@ -886,9 +734,8 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
 
 void MainWindow::disconnectSource()
 {
-    ++m_connectAttempt;  // a connect still in its handshake is dropped when it answers
-    m_connectingLabel.reset();
-    stopRecording();  // the user ended the session by disconnecting
+    m_connector->cancel();  // a connect still in its handshake is dropped when it answers
+    stopRecording();        // the user ended the session by disconnecting
     m_statusTimer.stop();
     m_rawConsole->setSource(nullptr);  // before the source goes
     m_plot->clearSource();
@@ -910,11 +757,7 @@ void MainWindow::updateStatus()
     if (!m_session) return;
     const LinkCounters counters = linkCounters(m_session->stats(), m_session->source());
     m_devicePanel->showCounters(counters);
-    QString link = counters.state;
-    if (counters.rate_hz) link += tr(" · %1 Hz").arg(QLocale().toString(*counters.rate_hz, 'f', 1));
-    if (counters.samplesLost > 0)
-        link += tr(" · %1 lost").arg(QLocale().toString(static_cast<qulonglong>(counters.samplesLost)));
-    m_linkLabel->setText(link);
+    m_linkLabel->setText(linkLine(counters));
     m_linkLabel->setStyleSheet(counters.healthy ? QString() : QStringLiteral("color: #c62828; font-weight: 600;"));
     // The site first: a press completed in this poll was taken there.
     m_session->setSite(m_palpationView->siteGrid()->currentSite().toStdString());

@@ -17,20 +17,21 @@
 #include "devices/ReconnectingSource.h"
 
 #include <QMainWindow>
-#include <QPointer>
 #include <QString>
 #include <QTimer>
 
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <thread>
 #include <vector>
 
 class QDockWidget;
 class QLabel;
 class QStackedWidget;
 
+namespace tactiscope::core::storage {
+class StoreWorker;
+}
 namespace tactiscope::devices::simulator {
 class LoadRig;
 }
@@ -42,11 +43,12 @@ struct RecordingSummary;
 namespace tactiscope::ui {
 
 class CapacitiveView;
+class DeviceConnector;
 class DevicePanel;
 class LivePlotWidget;
 class PalpationView;
 class RawConsole;
-struct SourceRequest;
+class ReviewWindows;
 class PanelScanView;
 class SensorProfileDialog;
 class SessionBar;
@@ -68,7 +70,7 @@ public:
     void connectDevice(const QString& label, devices::ReconnectingSource::Opener opener);
     void disconnectSource();
     bool isConnected() const { return m_session != nullptr; }
-    bool isConnecting() const { return m_connectingLabel.has_value(); }
+    bool isConnecting() const;
 
     LivePlotWidget* livePlot() const { return m_plot; }
     PanelScanView* panelScanView() const { return m_panelScan; }
@@ -110,9 +112,6 @@ protected:
 
 private:
     void createMenus();
-    // A simulator, an emulator behind a pty, or a port, as the device panel asks.
-    void connectRequest(const SourceRequest& request);
-    void finishConnecting(std::uint64_t attempt, std::unique_ptr<devices::BlockSource> source, const QString& error);
     void createStatusBar();
     // The traces and every mode view's lanes.
     std::vector<LivePlotWidget*> allPlots() const;
@@ -121,8 +120,6 @@ private:
     void chooseStore();
     void toggleRecording();
     void updateRecording();
-    void showProblem(const QString& title, const QString& text, const QString& detail,
-                     const QString& objectName = QStringLiteral("problemBox"));
     void restoreSettings();
     // The bar's mode changed: the controller agrees, or the bar goes back.
     void modeChosen();
@@ -133,9 +130,8 @@ private:
     void applyProfile(const QString& mode);
     void showMode(core::Mode mode);  // the views of a mode, with its probe and calibrations
     void lockProfiles();             // while recording
-    // A calibration wizard on the connected device ("gauge" or "capacitive").
-    void calibrate(const QString& which);
-    void connectSimulator(const std::string& scenario);
+    // The mode's calibration wizard on the connected device.
+    void calibrate(core::Mode mode);
     void tare();  // the mode's zero, when its rule allows
     void recordingEnded(const devices::session::RecordingSummary& summary);
     void askVerdict(std::int64_t session, double end_s, int defects, core::Verdict verdict);
@@ -148,13 +144,13 @@ private:
     CapacitiveView* m_capacitiveView = nullptr;
     QStackedWidget* m_modeViews = nullptr;  // the mode's view under the traces
     DevicePanel* m_devicePanel = nullptr;
+    ReviewWindows* m_review = nullptr;  // the browser and review windows of the store
     QDockWidget* m_deviceDock = nullptr;
     XYPlotWidget* m_xyPlot = nullptr;
     QDockWidget* m_xyDock = nullptr;
     RawConsole* m_rawConsole = nullptr;
     QDockWidget* m_consoleDock = nullptr;
     SensorProfileDialog* m_profileDialog = nullptr;  // created when first asked for
-    QPointer<SessionBrowser> m_browser;              // of the current store, while open
     QLabel* m_recordingLabel = nullptr;
     QLabel* m_deviceLabel = nullptr;
     QLabel* m_linkLabel = nullptr;  // state, rate and losses in one line
@@ -162,11 +158,8 @@ private:
     std::unique_ptr<devices::session::LiveSession> m_session;  // of the connected device
     std::shared_ptr<devices::simulator::LoadRig> m_loadRig;    // when the simulator is a calibration rig
     QString m_storePath;
-    std::optional<QString> m_connectingLabel;
-    std::uint64_t m_connectAttempt = 0;  // a newer attempt or a disconnect drops older results
-    // One per connect attempt, so a new attempt never waits for an old
-    // handshake; declared last: joined before the members they report to go.
-    std::vector<std::jthread> m_connectors;
+    std::unique_ptr<core::storage::StoreWorker> m_store;  // the window's connection to the store, off its thread
+    DeviceConnector* m_connector = nullptr;
 };
 
 }  // namespace tactiscope::ui

@@ -153,4 +153,10 @@ private:
     std::uint64_t m_chunksRead = 0;
 };
 
+// The newest record of `kind` for `sensor` in the store at `path`, opened
+// read-only: none when the store does not exist yet (no calibration has been
+// made). Throws StorageError when it exists but cannot be read.
+std::optional<StoredCalibration> newestCalibrationIn(const std::string& path, std::string_view kind,
+                                                     const std::string& sensor);
+
 }  // namespace tactiscope::core::storage

@@ -3,6 +3,7 @@
 
 #include "core/text/UtcTime.h"
 
+#include <filesystem>
 #include <stdexcept>
 
 namespace tactiscope::core::storage {
@@ -192,6 +193,13 @@ std::optional<StoredCalibration> SessionStore::newestCalibration(std::string_vie
     for (auto it = all.rbegin(); it != all.rend(); ++it)
         if (it->record.kind == kind) return std::move(*it);
     return std::nullopt;
+}
+
+std::optional<StoredCalibration> newestCalibrationIn(const std::string& path, std::string_view kind,
+                                                     const std::string& sensor)
+{
+    if (!std::filesystem::exists(path)) return std::nullopt;
+    return SessionStore(path, Database::Access::ReadOnly).newestCalibration(kind, sensor);
 }
 
 void SessionStore::linkCalibration(std::int64_t session, std::int64_t calibration)

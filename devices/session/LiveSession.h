@@ -161,6 +161,7 @@ public:
 
 private:
     std::optional<std::string> build(core::Mode mode);
+    std::optional<core::storage::StoredCalibration> newestCalibration(std::string_view kind, const std::string& sensor);
     std::optional<std::string> buildPalpation();
     std::optional<std::string> buildCapacitive();
     void buildDetection();

@@ -12,27 +12,9 @@
 #include "core/sensors/BuiltInProfiles.h"
 #include "core/storage/SessionStore.h"
 
-#include <filesystem>
 #include <stdexcept>
 
 namespace tactiscope::devices::session {
-namespace {
-
-// The newest calibration of `kind` for `sensor`; none when the store does
-// not exist yet or cannot be read (then the model is used, as before any).
-std::optional<core::storage::StoredCalibration> newestCalibration(const std::string& storePath, std::string_view kind,
-                                                                  const std::string& sensor)
-{
-    if (!std::filesystem::exists(storePath)) return std::nullopt;
-    try {
-        core::storage::SessionStore store(storePath, core::storage::Database::Access::ReadOnly);
-        return store.newestCalibration(kind, sensor);
-    } catch (const core::storage::StorageError&) {
-        return std::nullopt;
-    }
-}
-
-}  // namespace
 
 const core::sensors::SensorProfile* LiveSession::profile(core::Mode mode) const
 {
@@ -104,6 +86,20 @@ void LiveSession::buildDetection()
     }
 }
 
+// A store that exists but cannot be read is a problem to tell: the
+// processor then reads through the nominal values, and says so.
+std::optional<core::storage::StoredCalibration> LiveSession::newestCalibration(std::string_view kind,
+                                                                               const std::string& sensor)
+{
+    try {
+        return core::storage::newestCalibrationIn(m_options.storePath, kind, sensor);
+    } catch (const core::storage::StorageError& e) {
+        m_problems.push_back("the calibrations of '" + sensor + "' could not be read from " + m_options.storePath +
+                             " (its nominal values are used): " + e.what());
+        return std::nullopt;
+    }
+}
+
 std::optional<std::string> LiveSession::buildPalpation()
 {
     const auto& probe = std::get<core::sensors::CompliancePairProfile>(m_options.profiles.at(core::Mode::Palpation));
@@ -116,7 +112,7 @@ std::optional<std::string> LiveSession::buildPalpation()
     auto& used = m_calibrations[core::Mode::Palpation];
     used.clear();
     for (const bool stiff : {true, false}) {
-        auto newest = newestCalibration(m_options.storePath, core::calibration::kGaugeFactorKind,
+        auto newest = newestCalibration(core::calibration::kGaugeFactorKind,
                                         core::calibration::beamSensorName(probe.name, stiff));
         const auto gaugeFactor = newest ? newest->record.value("gauge_factor") : std::nullopt;
         if (!gaugeFactor || !(*gaugeFactor > 0.0)) continue;
@@ -146,7 +142,7 @@ std::optional<std::string> LiveSession::buildCapacitive()
         const core::sensors::CapacitiveBeam beam(probe.geometry);
         auto sensitivity = core::capacitive::CapacitiveSensitivity::fromModel(beam);
         core::capacitive::DriftSettings drift;
-        if (auto newest = newestCalibration(m_options.storePath, core::calibration::kCapacitiveKind, probe.name)) {
+        if (auto newest = newestCalibration(core::calibration::kCapacitiveKind, probe.name)) {
             try {
                 const auto stored = core::capacitive::capacitiveCalibrationOf(newest->record, beam);
                 sensitivity = stored.sensitivity;

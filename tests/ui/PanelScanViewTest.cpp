@@ -63,7 +63,9 @@ TEST(PanelScanView, DefectsAreListedStoredAndMatchTheCoreDetector)
     tactiscope::testing::saveScreenshot(*verdict, QStringLiteral("verdict"));
     QTest::mouseClick(child<QPushButton>(*verdict, "passButton"), Qt::LeftButton);
 
+    // The window writes off its thread, the verdict then the note.
     core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
+    EXPECT_TRUE(waitFor([&] { return !sessions.annotations(sessions.sessions().front().id).empty(); }, 5000));
     const auto session = sessions.sessions().front();
     EXPECT_EQ(session.verdict, tactiscope::core::Verdict::Pass);
     const auto notes = sessions.annotations(session.id);

@@ -3,6 +3,7 @@
 
 #include "core/calibration/FitCredibility.h"
 #include "core/storage/Database.h"
+#include "core/storage/SessionStore.h"
 #include "ui/ActiveProfiles.h"
 #include "ui/QuantityEdit.h"
 #include "ui/calibration/CalibrationPlot.h"
@@ -325,7 +326,15 @@ void GaugeFactorWizard::prefillChain()
 {
     core::straingauge::AdcSettings adc;
     core::straingauge::BridgeSettings bridge;
-    const auto stored = newestCalibration(m_context.storePath, core::calibration::kGaugeFactorKind, sensorName());
+    std::optional<core::storage::StoredCalibration> stored;
+    QString unread;
+    try {
+        stored = core::storage::newestCalibrationIn(m_context.storePath.toStdString(),
+                                                    core::calibration::kGaugeFactorKind, sensorName());
+    } catch (const core::storage::StorageError& e) {
+        unread = QString::fromStdString(e.what());
+        qWarning("calibrations not read: %s", e.what());
+    }
     if (stored) {
         const auto& r = stored->record;
         bridge.type = bridgeOfGauges(r.value("bridge_active_gauges").value_or(2.0));
@@ -337,6 +346,10 @@ void GaugeFactorWizard::prefillChain()
         adc.bipolar = r.value("adc_bipolar").value_or(1.0) != 0.0;
         m_prefill->setText(tr("Prefilled from this beam's calibration of %1 by %2.")
                                .arg(QString::fromStdString(r.timestampUtc), QString::fromStdString(r.operatorName)));
+    } else if (!unread.isEmpty()) {
+        m_prefill->setText(tr("Prefilled with the palpation view's settings: the store's calibrations could not be "
+                              "read (%1). Check them against the amplifier.")
+                               .arg(unread));
     } else {
         m_prefill->setText(tr("Prefilled with the settings the palpation view reads counts with (this beam has no "
                               "calibration yet). Check them against the amplifier."));

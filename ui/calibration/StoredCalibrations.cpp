@@ -1,26 +1,13 @@
-// StoredCalibrations: reading and adding records through SessionStore.
+// StoredCalibrations: adding a wizard's record through SessionStore.
 #include "ui/calibration/StoredCalibrations.h"
 
 #include "core/storage/SessionStore.h"
+#include "ui/ProblemReport.h"
 
 #include <QDir>
 #include <QFileInfo>
-#include <QMessageBox>
 
 namespace tactiscope::ui {
-
-std::optional<core::storage::StoredCalibration> newestCalibration(const QString& storePath, std::string_view kind,
-                                                                  const std::string& sensor)
-{
-    if (!QFileInfo::exists(storePath)) return std::nullopt;
-    try {
-        core::storage::SessionStore store(storePath.toStdString(), core::storage::Database::Access::ReadOnly);
-        return store.newestCalibration(kind, sensor);
-    } catch (const core::storage::StorageError& e) {
-        qWarning("calibrations not read: %s", e.what());
-    }
-    return std::nullopt;
-}
 
 std::int64_t storeCalibration(const QString& storePath, const core::calibration::CalibrationRecord& record)
 {
@@ -34,9 +21,11 @@ std::optional<std::int64_t> storeCalibrationOrSay(QWidget* parent, const QString
     try {
         return storeCalibration(storePath, record);
     } catch (const core::storage::StorageError& e) {
-        QMessageBox::warning(parent, QObject::tr("Calibration not stored"),
-                             QObject::tr("The calibration could not be stored in %1:\n%2")
-                                 .arg(storePath, QString::fromStdString(e.what())));
+        reportProblem(parent, {QObject::tr("Calibration not stored"),
+                               QObject::tr("The calibration could not be stored in %1.").arg(storePath),
+                               QString::fromStdString(e.what()),
+                               QObject::tr("The wizard stays open with every point: free space or fix the store's "
+                                           "permissions, then accept again.")});
         return std::nullopt;
     }
 }

@@ -1,6 +1,5 @@
-// The calibration records of the session store as the live views and the
-// wizards use them: the newest record of a kind for a sensor is the active
-// one (sensor names: core::calibration::beamSensorName).
+// Adding a wizard's calibration record to the session store (reading the
+// newest one: core::storage::newestCalibrationIn).
 #pragma once
 
 #include "core/storage/SessionRecords.h"
@@ -13,10 +12,6 @@ class QWidget;
 #include <string>
 
 namespace tactiscope::ui {
-
-// None when the store does not exist or cannot be read (logged).
-std::optional<core::storage::StoredCalibration> newestCalibration(const QString& storePath, std::string_view kind,
-                                                                  const std::string& sensor);
 
 // Stores the record and returns its id. Throws core::storage::StorageError.
 std::int64_t storeCalibration(const QString& storePath, const core::calibration::CalibrationRecord& record);

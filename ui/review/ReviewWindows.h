@@ -1,0 +1,39 @@
+// The review side of the session store, as the main window offers it: the
+// session browser (one at a time, closed when the store changes), a review
+// window per session (an open one is raised, a deleted session's is closed),
+// and the once-only report of sessions a crash cut short. The windows are
+// children of `owner`, so they close with it.
+#pragma once
+
+#include <QObject>
+#include <QPointer>
+#include <QString>
+
+#include <cstdint>
+#include <vector>
+
+class QWidget;
+
+namespace tactiscope::ui {
+
+class SessionBrowser;
+
+class ReviewWindows : public QObject {
+    Q_OBJECT
+
+public:
+    explicit ReviewWindows(QWidget* owner);
+
+    void setStorePath(const QString& path);
+    SessionBrowser* showBrowser();
+    void review(const std::vector<std::int64_t>& sessions);  // failures are reported
+    void reportInterrupted();
+    void sessionRecorded();  // an open browser lists it
+
+private:
+    QWidget* m_owner;
+    QString m_storePath;
+    QPointer<SessionBrowser> m_browser;  // of the current store, while open
+};
+
+}  // namespace tactiscope::ui
