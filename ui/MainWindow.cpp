@@ -1,10 +1,6 @@
 // MainWindow: wiring of the live session, the plots, menus and status bar.
 #include "ui/MainWindow.h"
 
-#include "core/LiveBuffer.h"
-#include "core/capacitive/LiveCapacitive.h"
-#include "core/compliance/LivePalpation.h"
-#include "core/detector/LiveDetection.h"
 #include "core/storage/StoreWorker.h"
 #include "devices/session/LiveSession.h"
 #include "devices/simulator/ScenarioCatalog.h"
@@ -17,8 +13,11 @@
 #include "ui/InterruptedSessionsReport.h"
 #include "ui/LinkStatus.h"
 #include "ui/LivePlotWidget.h"
+#include "ui/MarkerNote.h"
+#include "ui/ModeXY.h"
 #include "ui/PalpationView.h"
 #include "ui/PanelScanView.h"
+#include "ui/PlotControls.h"
 #include "ui/ProblemReport.h"
 #include "ui/RawConsole.h"
 #include "ui/SensorProfileDialog.h"
@@ -30,17 +29,15 @@
 #include "ui/XYPlotWidget.h"
 #include "ui/calibration/CalibrationHistory.h"
 #include "ui/calibration/CalibrationWizards.h"
+#include "ui/calibration/StoredCalibrations.h"
 #include "ui/review/ReviewWindows.h"
 
-#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
-#include <QFileInfo>
 #include <QIcon>
-#include <QInputDialog>
 #include <QLabel>
 #include <QLocale>
 #include <QMenuBar>
@@ -51,8 +48,6 @@
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QToolBar>
-
-#include <cmath>
 
 namespace tactiscope::ui {
 namespace {
@@ -70,6 +65,16 @@ Problem badProfile(const QString& mode, const QString& error)
     return {MainWindow::tr("Bad profile"),
             MainWindow::tr("The %1 profile could not be used; the paper's sensor is used instead.").arg(mode), error,
             MainWindow::tr("Fix or choose another profile in Session ▸ Sensor profiles.")};
+}
+
+QDockWidget* addDock(QMainWindow* window, const QString& title, const QString& name, QWidget* widget,
+                     Qt::DockWidgetArea area)
+{
+    auto* dock = new QDockWidget(title, window);
+    dock->setObjectName(name);
+    dock->setWidget(widget);
+    window->addDockWidget(area, dock);
+    return dock;
 }
 
 }  // namespace
@@ -110,25 +115,17 @@ MainWindow::MainWindow(QWidget* parent)
     sessionToolBar->addWidget(m_sessionBar);
     connect(m_sessionBar, &SessionBar::recordClicked, this, &MainWindow::toggleRecording);
     connect(m_sessionBar, &SessionBar::modeChanged, this, &MainWindow::modeChosen);
-    m_deviceDock = new QDockWidget(tr("Device"), this);
-    m_deviceDock->setObjectName(QStringLiteral("deviceDock"));
-    m_deviceDock->setWidget(m_devicePanel);
+    m_deviceDock = addDock(this, tr("Device"), QStringLiteral("deviceDock"), m_devicePanel, Qt::LeftDockWidgetArea);
     m_deviceDock->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable);
-    addDockWidget(Qt::LeftDockWidgetArea, m_deviceDock);
     resizeDocks({m_deviceDock}, {290}, Qt::Horizontal);
     m_xyPlot = new XYPlotWidget(this);
     m_xyPlot->setObjectName(QStringLiteral("xyPlot"));
-    m_xyDock = new QDockWidget(tr("XY plot"), this);
-    m_xyDock->setObjectName(QStringLiteral("xyDock"));
-    m_xyDock->setWidget(m_xyPlot);
-    addDockWidget(Qt::RightDockWidgetArea, m_xyDock);
+    m_xyDock = addDock(this, tr("XY plot"), QStringLiteral("xyDock"), m_xyPlot, Qt::RightDockWidgetArea);
     m_xyDock->hide();  // on request (View menu): the mode views come first
     m_rawConsole = new RawConsole(this);
     m_rawConsole->setObjectName(QStringLiteral("rawConsole"));
-    m_consoleDock = new QDockWidget(tr("Raw data"), this);
-    m_consoleDock->setObjectName(QStringLiteral("consoleDock"));
-    m_consoleDock->setWidget(m_rawConsole);
-    addDockWidget(Qt::BottomDockWidgetArea, m_consoleDock);
+    m_consoleDock =
+        addDock(this, tr("Raw data"), QStringLiteral("consoleDock"), m_rawConsole, Qt::BottomDockWidgetArea);
     m_consoleDock->hide();  // for troubleshooting a probe
     connect(m_palpationView, &PalpationView::profilesRequested, this, &MainWindow::showProfiles);
     connect(m_palpationView, &PalpationView::tareRequested, this, &MainWindow::tare);
@@ -198,7 +195,7 @@ void MainWindow::showModeView()
     }
     if (view) m_modeViews->setCurrentWidget(view);
     m_modeViews->setVisible(view != nullptr);
-    showModeXY(view);
+    m_xyDock->setWindowTitle(showModeXY(*m_xyPlot, m_session.get(), view ? std::optional(mode) : std::nullopt));
 }
 
 // A mode the device cannot feed is refused here, before anything is
@@ -219,25 +216,6 @@ void MainWindow::modeChosen()
         }
     }
     showModeView();
-}
-
-// The XY plot the mode calls for: F_H against F_L in palpation (slope Q),
-// force against tip deflection for the capacitive beam (slope k_s).
-void MainWindow::showModeXY(const QWidget* view)
-{
-    const double rate_hz = m_session ? m_session->source().nominalSampleRate_hz() : 0.0;
-    if (view == m_palpationView) {
-        const DisplayUnit high{1e3, tr("mN"), tr("F_H")}, low{1e3, tr("mN"), tr("F_L")};
-        m_xyPlot->setSource(m_session->palpation()->output(), 1, 0, low, high, rate_hz);
-        m_xyDock->setWindowTitle(tr("XY plot: F_H against F_L (slope Q)"));
-    } else if (view == m_capacitiveView) {
-        const DisplayUnit deflection{1e3, tr("mm"), tr("Tip deflection")}, force{1e6, tr("µN"), tr("Force")};
-        m_xyPlot->setSource(m_session->capacitive()->output(), 1, 0, deflection, force, rate_hz);
-        m_xyDock->setWindowTitle(tr("XY plot: force against deflection (slope k_s)"));
-    } else {
-        m_xyPlot->clearSource();
-        m_xyDock->setWindowTitle(tr("XY plot (palpation and capacitive modes)"));
-    }
 }
 
 void MainWindow::saveSettings() const
@@ -285,44 +263,12 @@ void MainWindow::createMenus()
     view->addAction(m_xyDock->toggleViewAction());
     view->addAction(m_consoleDock->toggleViewAction());
     view->addSeparator();
-    // Pause and hold act on every plot together, so traces and lanes stay aligned.
-    const auto plotToggle = [this, view](const QString& text, const QString& name, const QString& keys,
-                                         const QString& tip, void (LivePlotWidget::*set)(bool)) {
-        QAction* action = view->addAction(text);
-        action->setObjectName(name);
-        action->setCheckable(true);
-        action->setShortcut(QKeySequence(keys));
-        action->setToolTip(tip);
-        connect(action, &QAction::toggled, this, [this, set](bool on) {
-            for (LivePlotWidget* plot : allPlots()) (plot->*set)(on);
-        });
-        return action;
-    };
-    QAction* pause = plotToggle(tr("&Pause display"), QStringLiteral("pauseAction"), tr("Ctrl+Space"),
-                                tr("Freeze the plots to look back; acquisition and recording go on (Ctrl+Space)"),
-                                &LivePlotWidget::setPaused);
-    QAction* hold =
-        plotToggle(tr("&Hold value scale"), QStringLiteral("holdScaleAction"), tr("Ctrl+H"),
-                   tr("Stop autoscaling the value axes; drag them to adjust (Ctrl+H)"), &LivePlotWidget::setScaleHeld);
     QToolBar* display = addToolBar(tr("Display"));
     display->setObjectName(QStringLiteral("displayToolBar"));
     display->setMovable(false);
     display->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    display->addAction(pause);
-    display->addAction(hold);
-    QMenu* window = view->addMenu(tr("Time &window"));
-    // One window for the traces and the mode's lanes, so they line up in time.
-    auto* windows = new QActionGroup(this);
-    for (const double seconds : {5.0, 10.0, 30.0, 60.0}) {
-        QAction* action = window->addAction(tr("%1 s").arg(seconds));
-        action->setCheckable(true);
-        action->setChecked(seconds == LivePlotWidget::kDefaultWindow_s);
-        windows->addAction(action);
-        connect(action, &QAction::triggered, this, [this, seconds] {
-            for (LivePlotWidget* plot : allPlots()) plot->setWindowLength(seconds);
-            m_xyPlot->setWindowLength(seconds);
-        });
-    }
+    addPlotControls(view, display,
+                    {[this] { return allPlots(); }, [this](double seconds) { m_xyPlot->setWindowLength(seconds); }});
 
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
     tools->addAction(tr("Calibrate the &gauge factor…"), this, [this] { calibrate(core::Mode::Palpation); });
@@ -370,7 +316,7 @@ void MainWindow::setStorePath(const QString& path)
 {
     m_review->setStorePath(path);
     m_storePath = path;
-    m_store = std::make_unique<core::storage::StoreWorker>(path.toStdString());
+    m_store = std::make_shared<core::storage::StoreWorker>(path.toStdString());
     m_sessionBar->setStorePath(path);
 }
 
@@ -466,47 +412,10 @@ void MainWindow::recordingEnded(const devices::session::RecordingSummary& summar
                                 "store, then record again.")
                                  .arg(summary.session)});
     else if (summary.verdict)
-        askVerdict(summary.session, summary.end_s, static_cast<int>(summary.defects), *summary.verdict);
-}
-
-// The panel's automatic verdict is stored with the session; the operator
-// keeps it or overrides it, with a note that goes into the session as an
-// annotation at its end, without being held up.
-void MainWindow::askVerdict(std::int64_t session, double end_s, int defects, core::Verdict verdict)
-{
-    auto* dialog = new VerdictDialog(defects, verdict, this);
-    const std::string author = m_sessionBar->metadata().operatorName;
-    connect(
-        dialog, &VerdictDialog::decided, this,
-        [this, session, end_s, author, verdict](core::Verdict chosen, const QString& note) {
-            const auto failed = [this, session](const QString& what) {
-                return [this, session, what](const QString& error) {
-                    reportProblem(this, {tr("Not saved"), what, error,
-                                         tr("Session %1 is kept with its automatic verdict; add the note as an "
-                                            "annotation in its review window.")
-                                             .arg(session)});
-                };
-            };
-            if (chosen != verdict)
-                runOnStore(
-                    *m_store, this,
-                    [session, chosen](core::storage::SessionStore& store) { store.setVerdict(session, chosen); },
-                    [this, session, chosen] {
-                        statusBar()->showMessage(tr("Session %1: verdict \"%2\"").arg(session).arg(wordText(chosen)),
-                                                 5000);
-                    },
-                    failed(tr("The verdict could not be saved.")));
-            if (note.isEmpty()) return;
-            core::storage::Annotation annotation;
-            annotation.time_s = end_s;
-            annotation.author = author;
-            annotation.text = tr("Verdict \"%1\": %2").arg(wordText(chosen), note).toStdString();
-            runOnStore(
-                *m_store, this,
-                [session, annotation](core::storage::SessionStore& store) { store.addAnnotation(session, annotation); },
-                [] {}, failed(tr("The verdict's note could not be saved.")));
-        });
-    dialog->show();
+        askVerdict(this, m_store,
+                   {summary.session, summary.end_s, static_cast<int>(summary.defects), *summary.verdict,
+                    m_sessionBar->metadata().operatorName},
+                   [this](const QString& message) { statusBar()->showMessage(message, 5000); });
 }
 
 SensorProfileDialog* MainWindow::showProfiles()
@@ -556,26 +465,18 @@ void MainWindow::showMode(core::Mode mode)
     const double rate_hz = m_session ? m_session->source().nominalSampleRate_hz() : 0.0;
     const auto* profile = m_session ? m_session->profile(mode) : nullptr;
     const QString probe = profile ? QString::fromStdString(core::sensors::profileName(*profile)) : QString();
-    QStringList calibrations;
-    if (m_session)
-        for (const auto& stored : m_session->calibrations(mode))
-            calibrations << tr("%1 on %2 by %3")
-                                .arg(QString::fromStdString(stored.record.sensorName),
-                                     QString::fromStdString(stored.record.timestampUtc),
-                                     QString::fromStdString(stored.record.operatorName));
+    const QString calibrations = m_session ? calibrationsText(m_session->calibrations(mode)) : QString();
     switch (mode) {
     case core::Mode::PanelScan:
         m_panelScan->setDetection(m_session ? m_session->detection() : nullptr, rate_hz);
         break;
     case core::Mode::Palpation:
-        m_palpationView->setPalpation(m_session ? m_session->palpation() : nullptr, rate_hz, probe,
-                                      calibrations.join(QStringLiteral(", ")));
+        m_palpationView->setPalpation(m_session ? m_session->palpation() : nullptr, rate_hz, probe, calibrations);
         break;
     case core::Mode::Capacitive:
-        m_capacitiveView->setCapacitive(m_session ? m_session->capacitive() : nullptr, rate_hz, probe,
-                                        calibrations.isEmpty()
-                                            ? tr("none — the beam model (uncalibrated); drift tracking off")
-                                            : calibrations.join(QStringLiteral(", ")));
+        m_capacitiveView->setCapacitive(
+            m_session ? m_session->capacitive() : nullptr, rate_hz, probe,
+            calibrations.isEmpty() ? tr("none — the beam model (uncalibrated); drift tracking off") : calibrations);
         break;
     }
     showModeView();
@@ -631,8 +532,8 @@ void MainWindow::markEvent(const QString& note)
     addMarker(m_session->sessionTime_s(), note);
 }
 
-// The marker's time is the key press; typing the note does not delay it, and
-// the recording goes on meanwhile.
+// A note entered after the recording ended still reaches its session, as
+// an annotation at the marker's time.
 void MainWindow::markEventWithNote()
 {
     if (!isRecording()) {
@@ -641,19 +542,22 @@ void MainWindow::markEventWithNote()
     }
     const double time_s = m_session->sessionTime_s();
     const std::int64_t session = m_session->sessionId();
-    auto* dialog = new QInputDialog(this);
-    dialog->setObjectName(QStringLiteral("markerNoteDialog"));
-    dialog->setWindowTitle(tr("Marker"));
-    dialog->setLabelText(tr("Note for the marker at %1 s:").arg(QLocale().toString(time_s, 'f', 2)));
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(dialog, &QInputDialog::textValueSelected, this, [this, time_s, session](const QString& note) {
-        if (isRecording() && m_session->sessionId() == session)
+    askMarkerNote(this, time_s, [this, time_s, session, store = m_store](const QString& note) {
+        if (isRecording() && m_session->sessionId() == session) {
             addMarker(time_s, note);
-        else
-            reportProblem(this, {tr("Marker not stored"), tr("The recording ended before the note was entered."), note,
-                                 tr("Add the note as an annotation in the session's review window.")});
+            return;
+        }
+        core::storage::Annotation annotation{0,  time_s, m_sessionBar->metadata().operatorName, note.toStdString(),
+                                             "", ""};
+        runOnStore(
+            *store, this,
+            [session, annotation](core::storage::SessionStore& s) { s.addAnnotation(session, annotation); },
+            [this, session] { statusBar()->showMessage(tr("Note stored in session %1").arg(session), 5000); },
+            [this, note](const QString& error) {
+                reportProblem(this, {tr("Note not stored"), tr("The marker's note could not be stored."), error,
+                                     tr("Your note: %1").arg(note)});
+            });
     });
-    dialog->open();
 }
 
 void MainWindow::addMarker(double time_s, const QString& note)

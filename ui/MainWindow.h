@@ -124,7 +124,6 @@ private:
     // The bar's mode changed: the controller agrees, or the bar goes back.
     void modeChosen();
     void showModeView();
-    void showModeXY(const QWidget* view);
     void addMarker(double time_s, const QString& note);
     // The mode's processor reads the newly chosen profile.
     void applyProfile(const QString& mode);
@@ -134,7 +133,6 @@ private:
     void calibrate(core::Mode mode);
     void tare();  // the mode's zero, when its rule allows
     void recordingEnded(const devices::session::RecordingSummary& summary);
-    void askVerdict(std::int64_t session, double end_s, int defects, core::Verdict verdict);
     void saveSettings() const;
 
     LivePlotWidget* m_plot = nullptr;
@@ -158,7 +156,7 @@ private:
     std::unique_ptr<devices::session::LiveSession> m_session;  // of the connected device
     std::shared_ptr<devices::simulator::LoadRig> m_loadRig;    // when the simulator is a calibration rig
     QString m_storePath;
-    std::unique_ptr<core::storage::StoreWorker> m_store;  // the window's connection to the store, off its thread
+    std::shared_ptr<core::storage::StoreWorker> m_store;  // the window's connection to the store, off its thread
     DeviceConnector* m_connector = nullptr;
 };
 

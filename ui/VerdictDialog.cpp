@@ -1,6 +1,9 @@
-// VerdictDialog: three answers and a note.
+// VerdictDialog: three answers and a note, and storing what was decided.
 #include "ui/VerdictDialog.h"
 
+#include "core/storage/SessionStore.h"
+#include "ui/ProblemReport.h"
+#include "ui/StoreJobs.h"
 #include "ui/VocabularyText.h"
 
 #include <QDialogButtonBox>
@@ -57,6 +60,44 @@ void VerdictDialog::decide(core::Verdict verdict)
 {
     emit decided(verdict, m_note->text().trimmed());
     close();
+}
+
+void askVerdict(QWidget* parent, std::shared_ptr<core::storage::StoreWorker> store, const VerdictQuestion& question,
+                std::function<void(const QString& message)> saved)
+{
+    auto* dialog = new VerdictDialog(question.defects, question.automatic, parent);
+    QObject::connect(
+        dialog, &VerdictDialog::decided, parent,
+        [parent, store, question, saved](core::Verdict chosen, const QString& note) {
+            const std::int64_t session = question.session;
+            const auto failed = [parent, session](const QString& what) {
+                return [parent, session, what](const QString& error) {
+                    reportProblem(parent, {VerdictDialog::tr("Not saved"), what, error,
+                                           VerdictDialog::tr("Session %1 keeps its automatic verdict; "
+                                                             "add the note as an annotation in its "
+                                                             "review window.")
+                                               .arg(session)});
+                };
+            };
+            if (chosen != question.automatic)
+                runOnStore(
+                    *store, parent,
+                    [session, chosen](core::storage::SessionStore& s) { s.setVerdict(session, chosen); },
+                    [saved, session, chosen] {
+                        saved(VerdictDialog::tr("Session %1: verdict \"%2\"").arg(session).arg(wordText(chosen)));
+                    },
+                    failed(VerdictDialog::tr("The verdict could not be saved.")));
+            if (note.isEmpty()) return;
+            core::storage::Annotation annotation;
+            annotation.time_s = question.end_s;
+            annotation.author = question.author;
+            annotation.text = VerdictDialog::tr("Verdict \"%1\": %2").arg(wordText(chosen), note).toStdString();
+            runOnStore(
+                *store, parent,
+                [session, annotation](core::storage::SessionStore& s) { s.addAnnotation(session, annotation); }, [] {},
+                failed(VerdictDialog::tr("The verdict's note could not be saved.")));
+        });
+    dialog->show();
 }
 
 }  // namespace tactiscope::ui

@@ -9,7 +9,16 @@
 #include <QDialog>
 #include <QString>
 
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
 class QLineEdit;
+
+namespace tactiscope::core::storage {
+class StoreWorker;
+}
 
 namespace tactiscope::ui {
 
@@ -28,6 +37,22 @@ private:
 
     QLineEdit* m_note;
 };
+
+// What the operator is asked about a recorded panel.
+struct VerdictQuestion {
+    std::int64_t session = 0;
+    double end_s = 0.0;  // the note's annotation goes here
+    int defects = 0;
+    core::Verdict automatic = core::Verdict::Pass;  // already stored with the session
+    std::string author;
+};
+
+// Asks without blocking and writes the answer through the store worker of
+// the store the session was recorded into (kept alive until answered): a
+// changed verdict, and the note as an annotation at the session's end. `saved(message)` tells a status line; a failure
+// is reported.
+void askVerdict(QWidget* parent, std::shared_ptr<core::storage::StoreWorker> store, const VerdictQuestion& question,
+                std::function<void(const QString& message)> saved);
 
 // "1 defect", "5 defects".
 QString defectCountText(int defects);

@@ -2,7 +2,8 @@
 // bar starts and stops a session, Ctrl+M drops a marker and Ctrl+Shift+M one
 // with a note (timed at the key press), and the store then holds a complete
 // session with the bar's metadata, the samples streamed while recording, and
-// the markers. A store that cannot be opened is shown without stopping the
+// the markers; a note finished after the recording stopped still reaches
+// its session. A store that cannot be opened is shown without stopping the
 // live view; sessions a crash cut short are reported once.
 #include "core/SampleBlock.h"
 #include "core/Version.h"
@@ -119,6 +120,34 @@ TEST(Recording, AStoreThatCannotBeOpenedIsShownAndTheLiveViewGoesOn)
         << box->informativeText().toStdString();
     const auto drawn = window.livePlot()->drawnPointCount(0);
     EXPECT_TRUE(waitFor([&] { return window.livePlot()->drawnPointCount(0) != drawn; }, 2000));
+}
+
+TEST(Recording, ANoteFinishedAfterTheRecordingStoppedIsKeptInItsSession)
+{
+    QTemporaryDir dir;
+    const QString store = dir.filePath("s.tactiscope");
+    ui::MainWindow window;
+    window.setStorePath(store);
+    window.show();
+    window.connectSource(liveSimulator("palpation"));
+    ASSERT_TRUE(window.startRecording());
+    runEventLoopFor(800);
+    window.markEventWithNote();
+    auto* note = window.findChild<QInputDialog*>(QStringLiteral("markerNoteDialog"));
+    ASSERT_NE(note, nullptr);
+    runEventLoopFor(300);
+    window.stopRecording();  // while the operator is still typing
+    note->setTextValue(QStringLiteral("bruise at the edge"));
+    note->accept();
+
+    core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto id = sessions.sessions().front().id;
+    ASSERT_TRUE(waitFor([&] { return !sessions.annotations(id).empty(); }, 5000));
+    const auto annotations = sessions.annotations(id);
+    ASSERT_EQ(annotations.size(), 1u);
+    EXPECT_EQ(annotations[0].text, "bruise at the edge");
+    EXPECT_GT(annotations[0].time_s, 0.6);  // the key press, not the accept
+    EXPECT_LT(annotations[0].time_s, 1.0);
 }
 
 TEST(Recording, SessionsACrashCutShortAreReportedOnce)

@@ -1,4 +1,4 @@
-// StoredCalibrations: adding a wizard's record through SessionStore.
+// StoredCalibrations: naming the records in use, adding a wizard's record.
 #include "ui/calibration/StoredCalibrations.h"
 
 #include "core/storage/SessionStore.h"
@@ -8,6 +8,17 @@
 #include <QFileInfo>
 
 namespace tactiscope::ui {
+
+QString calibrationsText(const std::vector<core::storage::StoredCalibration>& calibrations)
+{
+    QStringList texts;
+    for (const auto& stored : calibrations)
+        texts << QObject::tr("%1 on %2 by %3")
+                     .arg(QString::fromStdString(stored.record.sensorName),
+                          QString::fromStdString(stored.record.timestampUtc),
+                          QString::fromStdString(stored.record.operatorName));
+    return texts.join(QStringLiteral(", "));
+}
 
 std::int64_t storeCalibration(const QString& storePath, const core::calibration::CalibrationRecord& record)
 {

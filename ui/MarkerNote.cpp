@@ -1,0 +1,20 @@
+// MarkerNote: a non-modal input dialog that deletes itself.
+#include "ui/MarkerNote.h"
+
+#include <QInputDialog>
+#include <QLocale>
+
+namespace tactiscope::ui {
+
+void askMarkerNote(QWidget* parent, double time_s, std::function<void(const QString& note)> entered)
+{
+    auto* dialog = new QInputDialog(parent);
+    dialog->setObjectName(QStringLiteral("markerNoteDialog"));
+    dialog->setWindowTitle(QObject::tr("Marker"));
+    dialog->setLabelText(QObject::tr("Note for the marker at %1 s:").arg(QLocale().toString(time_s, 'f', 2)));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    QObject::connect(dialog, &QInputDialog::textValueSelected, parent, std::move(entered));
+    dialog->open();
+}
+
+}  // namespace tactiscope::ui
