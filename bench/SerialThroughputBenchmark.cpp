@@ -29,7 +29,7 @@ double threadCpuSeconds()
 
 emulator::EmulatorOptions eightChannels(const std::string& link)
 {
-    return {link, WireProtocol::Binary, "panel-scan", 2000.0, 8u, kSeconds, 0.0, 10, 1};
+    return {link, WireProtocol::Binary, simulator::kPanelScanScenario, 2000.0, 8u, kSeconds, 0.0, 10, 1};
 }
 
 std::string linkPath()

@@ -26,8 +26,8 @@ constexpr int kIdRole = Qt::UserRole + 1;  // scenario id, or index into the dis
 
 QString scenarioTitle(const std::string& id)
 {
-    if (id == "panel-scan") return DevicePanel::tr("Panel scan — two strain cantilevers");
-    if (id == "palpation") return DevicePanel::tr("Palpation — compliance probe");
+    if (id == devices::simulator::kPanelScanScenario) return DevicePanel::tr("Panel scan — two strain cantilevers");
+    if (id == devices::simulator::kPalpationScenario) return DevicePanel::tr("Palpation — compliance probe");
     if (id == "capacitive-weights") return DevicePanel::tr("Capacitive beam — weights");
     if (id == "gauge-calibration") return DevicePanel::tr("Gauge-factor calibration rig");
     if (id == "capacitive-calibration") return DevicePanel::tr("Capacitive beam — calibration rig");

@@ -56,9 +56,11 @@ int runSimulate(const QStringList& arguments)
     const QString name = QStringLiteral("simulate");
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Write a simulated recording as CSV."));
-    const QCommandLineOption scenarioOption(QStringLiteral("scenario"),
-                                            QStringLiteral("Scenario: %1 (default panel-scan).").arg(scenarioList()),
-                                            QStringLiteral("ID"), QStringLiteral("panel-scan"));
+    const QCommandLineOption scenarioOption(
+        QStringLiteral("scenario"),
+        QStringLiteral("Scenario: %1 (default %2).")
+            .arg(scenarioList(), QString::fromStdString(devices::simulator::kPanelScanScenario)),
+        QStringLiteral("ID"), QString::fromStdString(devices::simulator::kPanelScanScenario));
     const QCommandLineOption secondsOption(QStringLiteral("seconds"), QStringLiteral("Length in seconds (default 10)."),
                                            QStringLiteral("S"), QStringLiteral("10"));
     const QCommandLineOption seedOption(QStringLiteral("seed"), QStringLiteral("Noise seed (default 1)."),
