@@ -8,7 +8,10 @@
 // per connected device and only wires widgets to it: the controller runs the
 // acquisition, the mode processors and the recording, and decides what is
 // allowed; the window shows what it says, so the GUI never waits on the
-// device.
+// device. Its writes to the store go through one store worker, so it never
+// waits on SQLite either; connecting, reviewing, calibrating and telling
+// problems are in modules of their own (DeviceConnector, ReviewWindows,
+// CalibrationWizards, ProblemReport).
 #pragma once
 
 #include "core/Vocabulary.h"
