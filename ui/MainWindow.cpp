@@ -616,10 +616,11 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
     if (m_session->mode() != chosen) {
         const QSignalBlocker quiet(m_sessionBar);
         m_sessionBar->setMode(m_session->mode());
-        statusBar()->showMessage(
-            tr("Mode: %1, the mode of %2")
-                .arg(modeTitle(m_session->mode()), QString::fromStdString(m_session->source().name())),
-            6000);
+        // Told once the window is up: a message shown while it is hidden
+        // leaves the status bar's device label drawn underneath it.
+        const QString told = tr("Mode: %1, the mode of %2")
+                                 .arg(modeTitle(m_session->mode()), QString::fromStdString(m_session->source().name()));
+        QTimer::singleShot(0, this, [this, told] { statusBar()->showMessage(told, 6000); });
     }
     for (const core::Mode mode : core::kModes) showMode(mode);
     const auto& device = m_session->source();
