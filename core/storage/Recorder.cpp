@@ -8,7 +8,8 @@
 namespace tactiscope::core::storage {
 
 Recorder::Recorder(const std::string& storePath, const SessionMetadata& metadata,
-                   std::vector<ChannelDescriptor> channels, double sampleRate_hz, std::uint64_t maxQueuedSamples)
+                   std::vector<ChannelDescriptor> channels, double sampleRate_hz, std::uint64_t maxQueuedSamples,
+                   const std::vector<std::int64_t>& calibrations)
     : m_sampleRate_hz(sampleRate_hz),
       m_lock(RecorderLock::acquire(storePath)),
       m_store(storePath),
@@ -16,6 +17,12 @@ Recorder::Recorder(const std::string& storePath, const SessionMetadata& metadata
 {
     m_store.markCrashedSessionsInterrupted();
     m_session = m_store.beginSession(metadata, channels, sampleRate_hz);
+    try {
+        for (const std::int64_t calibration : calibrations) m_store.linkCalibration(m_session, calibration);
+    } catch (const StorageError&) {
+        m_store.endSession(m_session, SessionStatus::Interrupted);  // not left "recording"
+        throw;
+    }
     // From here on only the writer thread touches m_store, until finish().
     m_writer = std::jthread([this](const std::stop_token& stop) { run(stop); });
 }

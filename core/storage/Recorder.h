@@ -22,6 +22,7 @@
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <vector>
 
 namespace tactiscope::core::storage {
 
@@ -39,10 +40,11 @@ public:
     static constexpr std::chrono::milliseconds kCommitInterval{250};
 
     // Takes the store's RecorderLock (one recorder per store), marks sessions
-    // a crash left "recording" as interrupted, and begins the session.
-    // Throws StorageError, e.g. when another recorder holds the store.
+    // a crash left "recording" as interrupted, and begins the session,
+    // linked with the stored calibrations it uses. Throws StorageError, e.g.
+    // when another recorder holds the store.
     Recorder(const std::string& storePath, const SessionMetadata& metadata, std::vector<ChannelDescriptor> channels,
-             double sampleRate_hz, std::uint64_t maxQueuedSamples);
+             double sampleRate_hz, std::uint64_t maxQueuedSamples, const std::vector<std::int64_t>& calibrations = {});
     ~Recorder() override;  // finish(Interrupted) unless finished
 
     Recorder(const Recorder&) = delete;

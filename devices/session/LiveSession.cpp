@@ -103,25 +103,21 @@ std::optional<std::string> LiveSession::startRecording(const core::storage::Sess
     metadata.deviceFirmware = device.firmware;
     metadata.profileJson.clear();
     if (const auto* used = profile(m_mode)) metadata.profileJson = core::sensors::toJson(*used);
-    const auto& used = calibrations(m_mode);
     metadata.calibrationsJson.clear();
-    if (!used.empty()) {
-        std::string records;
-        for (const auto& stored : used) records += (records.empty() ? "" : ",") + stored.record.toJson();
-        metadata.calibrationsJson = "[" + records + "]";
+    std::vector<std::int64_t> used;
+    for (const auto& stored : calibrations(m_mode)) {
+        metadata.calibrationsJson += (used.empty() ? "[" : ",") + stored.record.toJson();
+        used.push_back(stored.id);
     }
+    if (!used.empty()) metadata.calibrationsJson += "]";
     const double rate_hz = source().nominalSampleRate_hz();
     try {
         const auto directory = std::filesystem::path(m_options.storePath).parent_path();
         if (!directory.empty()) std::filesystem::create_directories(directory);
         m_recorder = std::make_shared<core::storage::Recorder>(
             m_options.storePath, metadata, source().channels(), rate_hz,
-            static_cast<std::uint64_t>(std::ceil(m_options.recorderQueue_s * rate_hz)));
-        core::storage::SessionStore store(m_options.storePath);
-        for (const auto& stored : used) store.linkCalibration(m_recorder->sessionId(), stored.id);
+            static_cast<std::uint64_t>(std::ceil(m_options.recorderQueue_s * rate_hz)), used);
     } catch (const std::exception& e) {  // StorageError, or the folder cannot be made
-        if (m_recorder) m_recorder->finish(core::SessionStatus::Interrupted);
-        m_recorder.reset();
         return e.what();
     }
     m_metadata = std::move(metadata);

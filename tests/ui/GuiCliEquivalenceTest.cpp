@@ -90,6 +90,21 @@ TwoRecordings recordBoth(const QTemporaryDir& dir, const std::string& scenario, 
     return r;
 }
 
+// The records (events or readings) that `wanted` keeps, moved by `shift_s`
+// onto the CLI's clock, and lying wholly inside the stretch both sessions hold.
+template <typename Record, typename Wanted>
+std::vector<Record> inShared(const TwoRecordings& r, std::vector<Record> records, double shift_s, Wanted wanted)
+{
+    std::vector<Record> kept;
+    for (auto& record : records) {
+        record.start_s += shift_s;
+        record.end_s += shift_s;
+        if (wanted(record) && record.start_s > r.guiStart_s + 0.2 && record.end_s < r.overlapEnd_s - 0.2)
+            kept.push_back(std::move(record));
+    }
+    return kept;
+}
+
 }  // namespace
 
 TEST(GuiCliEquivalence, APanelScanGivesTheSameDefectsAndVerdictFromBothPaths)
@@ -103,19 +118,9 @@ TEST(GuiCliEquivalence, APanelScanGivesTheSameDefectsAndVerdictFromBothPaths)
     EXPECT_EQ(r.guiSession.metadata.deviceModel, r.cliSession.metadata.deviceModel);
     EXPECT_EQ(r.guiSession.metadata.deviceSerial, r.cliSession.metadata.deviceSerial);
     EXPECT_EQ(r.guiSession.metadata.deviceFirmware, r.cliSession.metadata.deviceFirmware);
-    // Events wholly inside the shared stretch, in CLI session time.
-    const auto shared = [&](const std::vector<core::storage::SessionEvent>& events, double shift_s) {
-        std::vector<core::storage::SessionEvent> kept;
-        for (auto e : events) {
-            e.start_s += shift_s;
-            e.end_s += shift_s;
-            if (e.kind == core::EventKind::Defect && e.start_s > r.guiStart_s + 0.2 && e.end_s < r.overlapEnd_s - 0.2)
-                kept.push_back(e);
-        }
-        return kept;
-    };
-    const auto gui = shared(r.gui->events(r.guiSession.id), r.guiStart_s);
-    const auto cli = shared(r.cli->events(r.cliSession.id), 0.0);
+    const auto defects = [](const auto& e) { return e.kind == core::EventKind::Defect; };
+    const auto gui = inShared(r, r.gui->events(r.guiSession.id), r.guiStart_s, defects);
+    const auto cli = inShared(r, r.cli->events(r.cliSession.id), 0.0, defects);
     ASSERT_GE(cli.size(), 4u);  // one crossing a second
     ASSERT_EQ(gui.size(), cli.size());
     for (std::size_t i = 0; i < gui.size(); ++i) {
@@ -133,17 +138,9 @@ TEST(GuiCliEquivalence, APalpationGivesTheSameStiffnessReadingsFromBothPaths)
     const TwoRecordings r = recordBoth(dir, "palpation", 10.0);
     ASSERT_TRUE(r.gui && r.cli);
     EXPECT_EQ(r.guiSession.metadata.mode, core::Mode::Palpation);
-    const auto shared = [&](const std::vector<core::storage::SessionReading>& readings, double shift_s) {
-        std::vector<core::storage::SessionReading> kept;
-        for (auto reading : readings) {
-            reading.start_s += shift_s;
-            reading.end_s += shift_s;
-            if (reading.start_s > r.guiStart_s + 0.2 && reading.end_s < r.overlapEnd_s - 0.2) kept.push_back(reading);
-        }
-        return kept;
-    };
-    const auto gui = shared(r.gui->readings(r.guiSession.id), r.guiStart_s);
-    const auto cli = shared(r.cli->readings(r.cliSession.id), 0.0);
+    const auto any = [](const auto&) { return true; };
+    const auto gui = inShared(r, r.gui->readings(r.guiSession.id), r.guiStart_s, any);
+    const auto cli = inShared(r, r.cli->readings(r.cliSession.id), 0.0, any);
     ASSERT_GE(cli.size(), 2u);
     ASSERT_EQ(gui.size(), cli.size());
     for (std::size_t i = 0; i < gui.size(); ++i) {
