@@ -499,7 +499,7 @@ void MainWindow::calibrate(core::Mode mode)
                                m_session->source().channels(),
                                m_session->source().nominalSampleRate_hz(),
                                m_loadRig,
-                               m_storePath,
+                               m_store,
                                QString::fromStdString(m_sessionBar->metadata().operatorName),
                                ProfileLibrary::defaultDirectory()};
     openCalibrationWizard(mode, std::move(context), this, [this, mode](const QString& sensor) {

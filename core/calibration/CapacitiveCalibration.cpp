@@ -114,4 +114,16 @@ CapacitiveCalibrationResult calibrateCapacitive(const CapacitiveCalibrationInput
     return r;
 }
 
+StabilitySettings capacitiveStabilityDefaults()
+{
+    return {2.0, 5e-15, 20e-15};
+}
+
+CredibilityLimits capacitiveCredibilityLimits()
+{
+    CredibilityLimits limits;
+    limits.maximumOffLine = 0.03;
+    return limits;
+}
+
 }  // namespace tactiscope::core::calibration

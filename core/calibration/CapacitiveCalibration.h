@@ -9,6 +9,7 @@
 #pragma once
 
 #include "core/calibration/CalibrationRecord.h"
+#include "core/calibration/FitCredibility.h"
 #include "core/calibration/StabilityMonitor.h"
 
 #include <optional>
@@ -57,6 +58,17 @@ struct CapacitiveCalibrationResult {
 // two a displacement.
 CapacitiveCalibrationResult calibrateCapacitive(const CapacitiveCalibrationInput& input, const std::string& sensorName,
                                                 const std::string& operatorName);
+
+// What "stable" means for the beam's capacitance: over 2 s a drift of at
+// most 5 fF/s and a σ of at most 20 fF. The soft silicone creeps for
+// seconds after a weight is placed; a shorter or looser window would take
+// the step's mean on that creep.
+StabilitySettings capacitiveStabilityDefaults();
+
+// A hysteresis of the soft silicone of a few per cent of full scale is the
+// sensor's, not a bad point: a point may lie 3 % of the span off the line
+// through the others (2 % elsewhere).
+CredibilityLimits capacitiveCredibilityLimits();
 
 // 1 mgf, the unit of the paper's weights: 9.80665 µN.
 inline constexpr double kMilligramForce_n = 9.80665e-6;

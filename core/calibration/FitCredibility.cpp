@@ -67,4 +67,17 @@ FitCredibility judgeFit(std::span<const double> x, std::span<const double> y, co
     return result;
 }
 
+std::vector<double> residualsOfSpan(std::span<const double> residuals, std::span<const double> y)
+{
+    if (residuals.size() != y.size()) throw std::invalid_argument("residuals of span: one residual per point");
+    if (y.empty()) return {};
+    const auto [low, high] = std::minmax_element(y.begin(), y.end());
+    const double span = *high - *low;
+    if (!(span > 0.0)) return {};
+    std::vector<double> fractions;
+    fractions.reserve(residuals.size());
+    for (double r : residuals) fractions.push_back(r / span);
+    return fractions;
+}
+
 }  // namespace tactiscope::core::calibration

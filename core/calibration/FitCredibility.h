@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <vector>
 
 namespace tactiscope::core::calibration {
 
@@ -42,5 +43,12 @@ struct FitCredibility {
 // Judges the straight-line fit y = a + b·x of the given points. Throws
 // std::invalid_argument when x and y differ in length.
 FitCredibility judgeFit(std::span<const double> x, std::span<const double> y, const CredibilityLimits& limits);
+
+// Each point's residual from `residuals` (y − fit) as a fraction of the
+// full-scale span of y, the scale the off-line limit is judged on, so a
+// wizard's table and its verdict speak of the same number. Empty when y
+// spans nothing (a fraction of nothing means nothing). Throws
+// std::invalid_argument when the lengths differ.
+std::vector<double> residualsOfSpan(std::span<const double> residuals, std::span<const double> y);
 
 }  // namespace tactiscope::core::calibration

@@ -1,6 +1,7 @@
 // Gauge-factor and counts-per-newton fits from calibration loads.
 #include "core/calibration/GaugeFactorCalibration.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 
@@ -51,6 +52,17 @@ GaugeFactorResult calibrateGaugeFactor(const sensors::CantileverBeam& beam, cons
                 {"counts_per_newton_standard_error", result.forceFit.slopeStandardError}};
     r.fit = result.strainFit;
     return result;
+}
+
+StabilitySettings gaugeStabilityDefaults(const straingauge::StrainGaugeChain& chain)
+{
+    const double fullScale = chain.fullScaleCounts();
+    return {1.0, 2e-4 * fullScale, 1e-3 * fullScale};
+}
+
+bool nearAdcLimit(double meanCounts, const straingauge::StrainGaugeChain& chain)
+{
+    return std::abs(meanCounts) > 0.95 * chain.fullScaleCounts();
 }
 
 }  // namespace tactiscope::core::calibration

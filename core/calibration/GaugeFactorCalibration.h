@@ -9,6 +9,7 @@
 #pragma once
 
 #include "core/calibration/CalibrationRecord.h"
+#include "core/calibration/StabilityMonitor.h"
 #include "core/sensors/CantileverBeam.h"
 #include "core/straingauge/StrainGaugeChain.h"
 
@@ -56,6 +57,17 @@ struct GaugeFactorResult {
 GaugeFactorResult calibrateGaugeFactor(const sensors::CantileverBeam& beam, const straingauge::StrainGaugeChain& chain,
                                        double zeroCounts, const std::vector<CalibrationLoad>& loads,
                                        const std::string& sensorName, const std::string& operatorName);
+
+// What "stable" means for a bridge reading, scaled to the ADC: over 1 s a
+// drift of at most 0.02 % of full scale per second and a σ of at most
+// 0.1 % of full scale, far above a bridge amplifier's noise and far below a
+// swinging beam, whatever the resolution.
+StabilitySettings gaugeStabilityDefaults(const straingauge::StrainGaugeChain& chain);
+
+// Whether a mean reading lies within 5 % of the ADC's limit: there the ADC,
+// not the beam, may have set it (a clipped peak pulls the mean), so it is
+// no calibration point.
+bool nearAdcLimit(double meanCounts, const straingauge::StrainGaugeChain& chain);
 
 // Standard gravity, for loads given as masses (1 gf = 9.80665 mN).
 inline constexpr double kStandardGravity_m_per_s2 = 9.80665;

@@ -17,6 +17,8 @@ struct StabilitySettings {
     double window_s = 2.0;
     double maxDrift_per_s = 0.0;  // |slope| limit, in the signal's unit per second
     double maxNoise = 0.0;        // residual σ limit, in the signal's unit
+
+    friend bool operator==(const StabilitySettings&, const StabilitySettings&) = default;
 };
 
 struct WindowStatistics {

@@ -38,13 +38,14 @@ public:
         m_acquisition->start();
         context.buffer = buffer;
         context.rig = m_rig;
-        context.storePath = storePath;
+        context.store = std::make_shared<core::storage::StoreWorker>(storePath.toStdString());
         context.operatorName = operatorName;
         context.profileDirectory = profileDirectory;
     }
     ~SimulatedRig() { m_acquisition->stop(); }
 
     devices::simulator::LoadRig& rig() { return *m_rig; }
+    QString storePath() const { return QString::fromStdString(context.store->path()); }
 
     ui::CalibrationContext context;
 

@@ -1,7 +1,7 @@
 // The C0 and sensitivity wizard completed from the keyboard against the
 // simulator's capacitive calibration rig (the paper's sensor No. 1, 10 Hz,
 // ten times faster than real time): weights on in 30 mgf steps to 150 mgf
-// and off again, then a final baseline. The simulator's truth is its beam
+// and off again, then a final zero. The simulator's truth is its beam
 // model: C0 = 51.44 pF and ΔC/F from eq. 13, which the slow creep of the
 // silicone (1 % at most, τ = 4 s) can only raise.
 #include "ui/calibration/CapacitiveWizard.h"
@@ -53,10 +53,10 @@ protected:
     {
         ASSERT_TRUE(tactiscope::testing::showActive(wizard));
         pressMnemonic(wizard, Qt::Key_N);
-        ASSERT_EQ(wizard.currentId(), ui::CapacitiveWizard::BaselinePage);
-        ASSERT_TRUE(waitFor([&] { return pageComplete(wizard); }, 15000)) << "no stable baseline";
+        ASSERT_EQ(wizard.currentId(), ui::CapacitiveWizard::ZeroPage);
+        ASSERT_TRUE(waitFor([&] { return pageComplete(wizard); }, 15000)) << "no stable zero";
         pressMnemonic(wizard, Qt::Key_N);
-        ASSERT_EQ(wizard.currentId(), ui::CapacitiveWizard::StepsPage);
+        ASSERT_EQ(wizard.currentId(), ui::CapacitiveWizard::LoadsPage);
     }
 
     // Captures a total in mgf; `actual` is what really lies on the beam.
@@ -78,7 +78,7 @@ TEST_F(CapacitiveWizardTest, LoadAndUnloadOnTheSimulatorStoresItsC0AndSensitivit
     ASSERT_NO_FATAL_FAILURE(toSteps(wizard));
     for (double mgf : {30.0, 60.0, 90.0, 120.0, 150.0, 120.0, 90.0, 60.0, 30.0})
         ASSERT_NO_FATAL_FAILURE(capture(wizard, mgf));
-    pressMnemonic(wizard, Qt::Key_F);  // the final baseline
+    pressMnemonic(wizard, Qt::Key_F);  // the final zero
     ASSERT_TRUE(waitFor([&] { return child<QPushButton>(wizard, "captureButton")->isEnabled(); }, 15000));
     auto* table = child<QTableWidget>(wizard, "pointsTable");
     ASSERT_EQ(table->rowCount(), 9);
@@ -89,10 +89,9 @@ TEST_F(CapacitiveWizardTest, LoadAndUnloadOnTheSimulatorStoresItsC0AndSensitivit
     ASSERT_EQ(wizard.currentId(), ui::CapacitiveWizard::ResultPage);
     ASSERT_TRUE(pageComplete(wizard)) << child<QLabel>(wizard, "problemsText")->text().toStdString();
     pressMnemonic(wizard, Qt::Key_A);
-    EXPECT_FALSE(wizard.isVisible());
+    ASSERT_TRUE(waitFor([&] { return !wizard.isVisible(); }, 10000)) << "not stored";
 
-    core::storage::SessionStore store(m_rig->context.storePath.toStdString(),
-                                      core::storage::Database::Access::ReadOnly);
+    core::storage::SessionStore store(m_rig->context.store->path(), core::storage::Database::Access::ReadOnly);
     const auto all = store.calibrations();
     ASSERT_EQ(all.size(), 1u);
     const auto& r = all.front().record;
@@ -110,10 +109,10 @@ TEST_F(CapacitiveWizardTest, LoadAndUnloadOnTheSimulatorStoresItsC0AndSensitivit
     EXPECT_NEAR(*r.value("detection_limit_mn"), 3 * *r.value("baseline_sigma_pf") / *r.value("sensitivity_pf_per_mn"),
                 1e-9);
     ASSERT_TRUE(r.value("detection_limit_mm"));
-    EXPECT_NE(*r.value("drift_pf_per_s"), 0.0);  // the final baseline was used
+    EXPECT_NE(*r.value("drift_pf_per_s"), 0.0);  // the final zero was used
 }
 
-TEST_F(CapacitiveWizardTest, AMiscountedStepIsRefusedAndCancelStoresNothing)
+TEST_F(CapacitiveWizardTest, AMiscountedLoadIsRefusedAndCancelStoresNothing)
 {
     ui::CapacitiveWizard wizard(m_rig->context);
     ASSERT_NO_FATAL_FAILURE(toSteps(wizard));
@@ -124,8 +123,8 @@ TEST_F(CapacitiveWizardTest, AMiscountedStepIsRefusedAndCancelStoresNothing)
     ASSERT_EQ(wizard.currentId(), ui::CapacitiveWizard::ResultPage);
     EXPECT_FALSE(pageComplete(wizard));
     const QString problems = child<QLabel>(wizard, "problemsText")->text();
-    EXPECT_TRUE(problems.contains(QStringLiteral("Step 3 (90 mgf, loading)"))) << problems.toStdString();
+    EXPECT_TRUE(problems.contains(QStringLiteral("Load 3 (90 mgf, loading)"))) << problems.toStdString();
     QTest::keyClick(&wizard, Qt::Key_Escape);
     EXPECT_FALSE(wizard.isVisible());
-    EXPECT_FALSE(QFileInfo::exists(m_rig->context.storePath));
+    EXPECT_FALSE(QFileInfo::exists(m_rig->storePath()));
 }

@@ -12,7 +12,6 @@
 #include "ui/MainWindow.h"
 #include "ui/PalpationView.h"
 #include "ui/calibration/GaugeFactorWizard.h"
-#include "ui/calibration/StoredCalibrations.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -60,8 +59,12 @@ protected:
 
 TEST_F(GaugeCalibrationInUseTest, TheNewestCalibrationOfEachBeamIsReadAndRecorded)
 {
-    ui::storeCalibration(store(), gaugeRecord(true, 2.30, "2026-11-01T08:00:00Z"));  // superseded
-    const auto newest = ui::storeCalibration(store(), gaugeRecord(true, 2.14, "2026-11-20T08:00:00Z"));
+    std::int64_t newest = 0;
+    {
+        core::storage::SessionStore calibrations(store().toStdString());
+        calibrations.addCalibration(gaugeRecord(true, 2.30, "2026-11-01T08:00:00Z"));  // superseded
+        newest = calibrations.addCalibration(gaugeRecord(true, 2.14, "2026-11-20T08:00:00Z"));
+    }
     ui::MainWindow window;
     window.setStorePath(store());
     window.setMode(tactiscope::core::Mode::Palpation);

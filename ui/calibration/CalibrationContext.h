@@ -1,10 +1,12 @@
 // What a calibration wizard works with: the connected device's live samples
 // and channels, the simulator's load rig when the device is the simulator,
-// where records are stored, who calibrates and where the profiles are.
+// the window's store worker its record goes to, who calibrates and where
+// the profiles are.
 #pragma once
 
 #include "core/ChannelDescriptor.h"
 #include "core/LiveBuffer.h"
+#include "core/storage/StoreWorker.h"
 #include "devices/simulator/LoadRig.h"
 
 #include <QString>
@@ -21,7 +23,7 @@ struct CalibrationContext {
     // The simulator's rig: the wizard hangs each load itself. Null for a
     // real probe, where the operator does.
     std::shared_ptr<devices::simulator::LoadRig> rig;
-    QString storePath;
+    std::shared_ptr<core::storage::StoreWorker> store;
     QString operatorName;
     QString profileDirectory;
 };

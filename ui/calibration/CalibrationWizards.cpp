@@ -9,24 +9,19 @@ namespace tactiscope::ui {
 QWizard* openCalibrationWizard(core::Mode mode, CalibrationContext context, QWidget* parent,
                                std::function<void(const QString& sensor)> stored)
 {
-    QWizard* wizard = nullptr;
-    const auto report = [stored](std::int64_t, const QString& sensor) { stored(sensor); };
+    CalibrationWizard* wizard = nullptr;
     switch (mode) {
     case core::Mode::PanelScan:
         return nullptr;
-    case core::Mode::Palpation: {
-        auto* gauge = new GaugeFactorWizard(std::move(context), parent);
-        QObject::connect(gauge, &GaugeFactorWizard::calibrationStored, parent, report);
-        wizard = gauge;
+    case core::Mode::Palpation:
+        wizard = new GaugeFactorWizard(std::move(context), parent);
+        break;
+    case core::Mode::Capacitive:
+        wizard = new CapacitiveWizard(std::move(context), parent);
         break;
     }
-    case core::Mode::Capacitive: {
-        auto* capacitive = new CapacitiveWizard(std::move(context), parent);
-        QObject::connect(capacitive, &CapacitiveWizard::calibrationStored, parent, report);
-        wizard = capacitive;
-        break;
-    }
-    }
+    QObject::connect(wizard, &CalibrationWizard::calibrationStored, parent,
+                     [stored](std::int64_t, const QString& sensor) { stored(sensor); });
     wizard->setAttribute(Qt::WA_DeleteOnClose);
     wizard->show();
     return wizard;

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <random>
 #include <stdexcept>
 
@@ -120,4 +121,29 @@ TEST(CapacitiveCalibration, DisplacementsGiveTheirOwnSensitivityAndDetectionLimi
     EXPECT_NEAR(r.displacementFit->slope * 1e9, 0.533, 1e-9);  // pF/mm
     EXPECT_NEAR(*r.detectionLimit_m, 3 * 5e-15 / 0.533e-9, 1e-12);
     EXPECT_THROW(calibrateCapacitive(CapacitiveCalibrationInput{}, "b", "o"), std::invalid_argument);
+}
+
+TEST(CapacitiveCalibration, StableMeansReadOutNoiseButNotACreepingBeam)
+{
+    const StabilitySettings settings = capacitiveStabilityDefaults();
+    EXPECT_DOUBLE_EQ(settings.window_s, 2.0);
+    // 2 s at 10 Hz, the paper's meter; the simulator's 4 fF white noise is
+    // a square wave of ±4 fF here (σ 4 fF exactly, no slope).
+    auto judge = [&](double slope_f_per_s) {
+        StabilityMonitor monitor(settings);
+        std::optional<WindowStatistics> last;
+        for (int i = 0; i <= 20; ++i)
+            if (auto s = monitor.push(0.1 * i, 51.44e-12 + slope_f_per_s * 0.1 * i + (i % 2 ? 4e-15 : -4e-15)))
+                last = s;
+        return last.value();
+    };
+    EXPECT_TRUE(judge(0.0).stable);
+    // Creep of 10 fF/s, twice the limit.
+    EXPECT_FALSE(judge(10e-15).stable);
+}
+
+TEST(CapacitiveCalibration, ThePointsMayLieFurtherOffTheLineForTheSiliconesHysteresis)
+{
+    EXPECT_DOUBLE_EQ(capacitiveCredibilityLimits().maximumOffLine, 0.03);
+    EXPECT_EQ(capacitiveCredibilityLimits().minimumPoints, CredibilityLimits{}.minimumPoints);
 }

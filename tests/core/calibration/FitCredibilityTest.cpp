@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <vector>
 
 using namespace tactiscope::core::calibration;
@@ -87,4 +88,24 @@ TEST(FitCredibility, NoLineAtAllIsNotCredible)
     EXPECT_TRUE(c.rSquaredTooLow);
     EXPECT_FALSE(c.credible());
     EXPECT_THROW(judgeFit(x, std::vector<double>{1.0}, {}), std::invalid_argument);
+}
+
+TEST(FitCredibility, ResidualsAreTakenAsAFractionOfTheSpanOfY)
+{
+    // y spans 8 (0 to 8): residuals 0.4 and −0.2 are 5 % and −2.5 % of it.
+    const std::vector<double> y{0, 2, 5, 6, 8};
+    const std::vector<double> residuals{0.0, 0.4, -0.2, 0.0, 0.0};
+    const std::vector<double> fractions = residualsOfSpan(residuals, y);
+    ASSERT_EQ(fractions.size(), 5u);
+    EXPECT_DOUBLE_EQ(fractions[1], 0.05);
+    EXPECT_DOUBLE_EQ(fractions[2], -0.025);
+    EXPECT_DOUBLE_EQ(fractions[0], 0.0);
+}
+
+TEST(FitCredibility, ResidualsOfNoSpanAreNone)
+{
+    const std::vector<double> flat{3, 3, 3};
+    EXPECT_TRUE(residualsOfSpan(std::vector<double>{0.1, 0.0, -0.1}, flat).empty());
+    EXPECT_TRUE(residualsOfSpan({}, {}).empty());
+    EXPECT_THROW(residualsOfSpan(std::vector<double>{0.1}, flat), std::invalid_argument);
 }

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
+#include <optional>
 #include <random>
 #include <stdexcept>
 
@@ -56,4 +58,48 @@ TEST(GaugeFactorCalibration, RefusesTooFewOrAmbiguousLoads)
     EXPECT_THROW(calibrateGaugeFactor(beam, chain, 0.0, {{0.1, 0.0, 100.0}}, "b", "o"), std::invalid_argument);
     EXPECT_THROW(calibrateGaugeFactor(beam, chain, 0.0, {{0.1, 0.001, 100.0}, {0.2, 0.0, 200.0}}, "b", "o"),
                  std::invalid_argument);
+}
+
+namespace {
+
+// The statistics of 1 s of a signal at 1 kHz under `settings`.
+calibration::WindowStatistics judged(const calibration::StabilitySettings& settings, double (*signal)(double t_s))
+{
+    calibration::StabilityMonitor monitor(settings);
+    std::optional<calibration::WindowStatistics> last;
+    for (int i = 0; i <= 1000; ++i)
+        if (auto statistics = monitor.push(i * 1e-3, signal(i * 1e-3))) last = statistics;
+    return last.value();
+}
+
+}  // namespace
+
+TEST(GaugeFactorCalibration, StableMeansAmplifierNoiseButNotASwingingOrSettlingBeam)
+{
+    // A ±10 V 16-bit ADC: full scale 2^15 = 32768 counts, so at most
+    // 6.55 counts/s of drift and 32.8 counts of σ over 1 s.
+    const straingauge::StrainGaugeChain chain({16, 10.0, true, 200.0},
+                                              {straingauge::BridgeType::HalfBending, 5.0, 2.0});
+    const auto settings = calibration::gaugeStabilityDefaults(chain);
+    EXPECT_DOUBLE_EQ(settings.window_s, 1.0);
+    EXPECT_DOUBLE_EQ(settings.maxDrift_per_s, 6.5536);
+    EXPECT_DOUBLE_EQ(settings.maxNoise, 32.768);
+    // Amplifier noise of ±3 counts (a square wave: σ 3 counts exactly).
+    EXPECT_TRUE(
+        judged(settings, [](double t) { return 120.0 + ((static_cast<int>(t * 1e3) % 2) ? 3.0 : -3.0); }).stable);
+    // A beam still swinging 200 counts at 5 Hz: σ about 141 counts.
+    EXPECT_FALSE(
+        judged(settings, [](double t) { return 120.0 + 200.0 * std::sin(2 * std::numbers::pi * 5.0 * t); }).stable);
+    // A beam still creeping 20 counts/s.
+    EXPECT_FALSE(judged(settings, [](double t) { return 120.0 + 20.0 * t; }).stable);
+}
+
+TEST(GaugeFactorCalibration, AMeanWithinFivePerCentOfTheAdcLimitIsNoPoint)
+{
+    // 95 % of 32768 counts is 31129.6.
+    const straingauge::StrainGaugeChain chain({16, 10.0, true, 200.0}, {straingauge::BridgeType::Quarter, 5.0, 2.0});
+    EXPECT_FALSE(calibration::nearAdcLimit(31129.0, chain));
+    EXPECT_TRUE(calibration::nearAdcLimit(31130.0, chain));
+    EXPECT_TRUE(calibration::nearAdcLimit(-31130.0, chain));
+    EXPECT_FALSE(calibration::nearAdcLimit(0.0, chain));
 }
