@@ -15,9 +15,12 @@
 
 #include <QFileInfo>
 #include <QLabel>
+#include <QMessageBox>
 #include <QTableWidget>
 
 #include <gtest/gtest.h>
+
+#include <fstream>
 
 using namespace tactiscope;
 using tactiscope::testing::captureLoad;
@@ -166,4 +169,26 @@ TEST_F(GaugeFactorWizardTest, TooFewPointsAreRefusedAndCancelStoresNothing)
     QTest::keyClick(&wizard, Qt::Key_Escape);
     EXPECT_FALSE(wizard.isVisible());
     EXPECT_FALSE(QFileInfo::exists(m_rig->storePath()));
+}
+
+TEST_F(GaugeFactorWizardTest, AStoreThatCannotBeWrittenKeepsTheWizardOpenWithEveryLoad)
+{
+    // The store's folder would be a regular file: no one, root included,
+    // can create the store there.
+    std::ofstream(file("not-a-folder")) << "x";
+    m_rig->context.store = std::make_shared<core::storage::StoreWorker>(file("not-a-folder") + "/sessions.tsdb");
+    ui::GaugeFactorWizard wizard(m_rig->context);
+    ASSERT_NO_FATAL_FAILURE(toLoads(wizard));
+    for (double grams : {20.0, 50.0, 100.0, 200.0}) ASSERT_NO_FATAL_FAILURE(capture(wizard, grams));
+    pressMnemonic(wizard, Qt::Key_N);
+    ASSERT_TRUE(pageComplete(wizard));
+    pressMnemonic(wizard, Qt::Key_A);
+    QMessageBox* problem = nullptr;
+    ASSERT_TRUE(
+        waitFor([&] { return (problem = wizard.findChild<QMessageBox*>(QStringLiteral("problemBox"))); }, 10000));
+    EXPECT_TRUE(problem->text().contains(QStringLiteral("not-a-folder"))) << problem->text().toStdString();
+    EXPECT_TRUE(wizard.isVisible());
+    EXPECT_EQ(wizard.currentId(), ui::GaugeFactorWizard::ResultPage);
+    EXPECT_TRUE(pageComplete(wizard));  // Accept again, once the store is fixed
+    EXPECT_EQ(child<QTableWidget>(wizard, "pointsTable")->rowCount(), 4);
 }
