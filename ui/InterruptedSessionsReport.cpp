@@ -2,6 +2,7 @@
 #include "ui/InterruptedSessionsReport.h"
 
 #include "ui/ProblemReport.h"
+#include "ui/StoreJobs.h"
 #include "ui/VocabularyText.h"
 
 #include "core/storage/SessionExport.h"
@@ -9,10 +10,11 @@
 
 #include <QDir>
 #include <QFileDialog>
-#include <QFileInfo>
 #include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
+
+#include <algorithm>
 
 namespace tactiscope::ui {
 namespace {
@@ -28,73 +30,65 @@ QString describe(const core::storage::SessionSummary& s)
 }
 
 // Each session as session-N.csv with session-N.meta.json beside it.
-QString exportSessions(const QString& storePath, const std::vector<std::int64_t>& sessions, const QString& folder)
+void exportSessions(core::storage::SessionStore& store, const std::vector<std::int64_t>& sessions,
+                    const QString& folder)
 {
-    try {
-        core::storage::SessionStore store(storePath.toStdString(), core::storage::Database::Access::ReadOnly);
-        for (const std::int64_t id : sessions) {
-            const QString csv = QDir(folder).filePath(QStringLiteral("session-%1.csv").arg(id));
-            core::storage::exportSession(store, id, core::storage::ExportFormat::Csv, csv.toStdString());
-        }
-    } catch (const core::storage::StorageError& e) {
-        return QString::fromStdString(e.what());
+    for (const std::int64_t id : sessions) {
+        const QString csv = QDir(folder).filePath(QStringLiteral("session-%1.csv").arg(id));
+        core::storage::exportSession(store, id, core::storage::ExportFormat::Csv, csv.toStdString());
     }
-    return {};
 }
 
 }  // namespace
 
-std::vector<std::int64_t> interruptedSessionsAfter(const QString& storePath, std::int64_t afterId)
+std::vector<core::storage::SessionSummary> interruptedSessionsAfter(core::storage::SessionStore& store,
+                                                                    std::int64_t afterId)
 {
-    std::vector<std::int64_t> found;
-    if (!QFileInfo::exists(storePath)) return found;
-    try {
-        core::storage::SessionStore store(storePath.toStdString());  // marks crashed recordings interrupted
-        for (const auto& s : store.sessions())
-            if (s.id > afterId && s.status == core::SessionStatus::Interrupted) found.push_back(s.id);
-    } catch (const core::storage::StorageError& e) {
-        qWarning("interrupted sessions not checked: %s", e.what());
-    }
-    std::ranges::sort(found);
+    std::vector<core::storage::SessionSummary> found;
+    for (auto& s : store.sessions())
+        if (s.id > afterId && s.status == core::SessionStatus::Interrupted) found.push_back(std::move(s));
+    std::ranges::sort(found, {}, &core::storage::SessionSummary::id);
     return found;
 }
 
-void showInterruptedSessionsReport(QWidget* parent, const QString& storePath, const std::vector<std::int64_t>& sessions,
+void showInterruptedSessionsReport(QWidget* parent, std::shared_ptr<core::storage::StoreWorker> store,
+                                   const std::vector<core::storage::SessionSummary>& sessions,
                                    const std::function<void(const std::vector<std::int64_t>&)>& review)
 {
     if (sessions.empty()) return;
     QStringList lines;
-    try {
-        core::storage::SessionStore store(storePath.toStdString(), core::storage::Database::Access::ReadOnly);
-        for (const std::int64_t id : sessions)
-            if (const auto summary = store.session(id)) lines << describe(*summary);
-    } catch (const core::storage::StorageError& e) {
-        lines << QString::fromStdString(e.what());
+    std::vector<std::int64_t> ids;
+    for (const auto& s : sessions) {
+        lines << describe(s);
+        ids.push_back(s.id);
     }
-    auto* box = new QMessageBox(QMessageBox::Information, QObject::tr("Interrupted sessions"),
-                                (sessions.size() == 1
-                                     ? QObject::tr("A recording ended without being stopped")
-                                     : QObject::tr("%1 recordings ended without being stopped").arg(sessions.size())) +
-                                    QObject::tr(" (a crash, a power cut or a full disk). Everything written "
-                                                "before that was kept."),
-                                QMessageBox::Close, parent);
+    auto* box =
+        new QMessageBox(QMessageBox::Information, QObject::tr("Interrupted sessions"),
+                        (ids.size() == 1 ? QObject::tr("A recording ended without being stopped")
+                                         : QObject::tr("%1 recordings ended without being stopped").arg(ids.size())) +
+                            QObject::tr(" (a crash, a power cut or a full disk). Everything written "
+                                        "before that was kept."),
+                        QMessageBox::Close, parent);
     box->setObjectName(QStringLiteral("interruptedBox"));
     box->setInformativeText(lines.join(QLatin1Char('\n')));
     QPushButton* reviewButton = box->addButton(QObject::tr("Review…"), QMessageBox::ActionRole);
     reviewButton->setObjectName(QStringLiteral("reviewInterruptedButton"));
-    QObject::connect(reviewButton, &QPushButton::clicked, parent, [review, sessions] { review(sessions); });
+    QObject::connect(reviewButton, &QPushButton::clicked, parent, [review, ids] { review(ids); });
     QPushButton* exportButton = box->addButton(QObject::tr("Export to CSV…"), QMessageBox::ActionRole);
     exportButton->setObjectName(QStringLiteral("exportInterruptedButton"));
     // The box closes on any button, so the export talks to the parent.
-    QObject::connect(exportButton, &QPushButton::clicked, parent, [parent, storePath, sessions] {
+    QObject::connect(exportButton, &QPushButton::clicked, parent, [parent, store, ids] {
         const QString folder =
             QFileDialog::getExistingDirectory(parent, QObject::tr("Export the interrupted sessions to"));
         if (folder.isEmpty()) return;
-        const QString error = exportSessions(storePath, sessions, folder);
-        if (!error.isEmpty())
-            reportProblem(parent,
-                          {QObject::tr("Export failed"), QObject::tr("Not every interrupted session was exported."),
-                           error, QObject::tr("Choose a folder with space that you may write to, and export again.")});
+        runOnStore(
+            *store, parent, [ids, folder](core::storage::SessionStore& s) { exportSessions(s, ids, folder); }, [] {},
+            [parent](const QString& error) {
+                reportProblem(parent, {QObject::tr("Export failed"),
+                                       QObject::tr("Not every interrupted session was exported."), error,
+                                       QObject::tr("Choose a folder with space that you may write to, and export "
+                                                   "again.")});
+            });
     });
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->setModal(false);

@@ -4,24 +4,33 @@
 // them (CSV plus metadata) or to open them in the review view.
 #pragma once
 
+#include "core/storage/SessionStore.h"
+
 #include <QString>
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 class QWidget;
 
+namespace tactiscope::core::storage {
+class StoreWorker;
+}
+
 namespace tactiscope::ui {
 
-// Marks the store's crashed sessions interrupted and returns the ids of the
-// interrupted sessions newer than `afterId`. Nothing when the store does not
-// exist or cannot be opened (the recording path reports that).
-std::vector<std::int64_t> interruptedSessionsAfter(const QString& storePath, std::int64_t afterId);
+// The interrupted sessions newer than `afterId`, oldest first: a job for the
+// store's worker, whose read-write open has marked crashed recordings
+// interrupted.
+std::vector<core::storage::SessionSummary> interruptedSessionsAfter(core::storage::SessionStore& store,
+                                                                    std::int64_t afterId);
 
-// Shows the report for `sessions` of the store, non-modal, owned by
-// `parent`; its Review button calls `review` with them.
-void showInterruptedSessionsReport(QWidget* parent, const QString& storePath, const std::vector<std::int64_t>& sessions,
+// Shows the report for `sessions`, non-modal, owned by `parent`; its Review
+// button calls `review` with them, its export runs on `store`'s worker.
+void showInterruptedSessionsReport(QWidget* parent, std::shared_ptr<core::storage::StoreWorker> store,
+                                   const std::vector<core::storage::SessionSummary>& sessions,
                                    const std::function<void(const std::vector<std::int64_t>&)>& review);
 
 }  // namespace tactiscope::ui

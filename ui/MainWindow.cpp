@@ -314,9 +314,9 @@ void MainWindow::createStatusBar()
 
 void MainWindow::setStorePath(const QString& path)
 {
-    m_review->setStorePath(path);
     m_storePath = path;
     m_store = std::make_shared<core::storage::StoreWorker>(path.toStdString());
+    m_review->setStore(m_store);
     m_sessionBar->setStorePath(path);
 }
 

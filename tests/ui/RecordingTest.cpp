@@ -169,8 +169,9 @@ TEST(Recording, SessionsACrashCutShortAreReportedOnce)
     window.setStorePath(store);
     window.show();
     window.reportInterruptedSessions();
-    auto* box = window.findChild<QMessageBox*>(QStringLiteral("interruptedBox"));
-    ASSERT_NE(box, nullptr);
+    QMessageBox* box = nullptr;
+    ASSERT_TRUE(
+        waitFor([&] { return (box = window.findChild<QMessageBox*>(QStringLiteral("interruptedBox"))); }, 10000));
     EXPECT_FALSE(box->isModal());
     EXPECT_TRUE(box->informativeText().contains(QStringLiteral("Session 1 (palpation, phantom-4)")))
         << box->informativeText().toStdString();
@@ -182,5 +183,6 @@ TEST(Recording, SessionsACrashCutShortAreReportedOnce)
     core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
     EXPECT_EQ(sessions.sessions().front().status, tactiscope::core::SessionStatus::Interrupted);
     window.reportInterruptedSessions();  // already reported
+    runEventLoopFor(500);                // the worker's answer
     EXPECT_EQ(window.findChild<QMessageBox*>(QStringLiteral("interruptedBox")), nullptr);
 }

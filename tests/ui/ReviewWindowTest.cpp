@@ -245,3 +245,16 @@ TEST_F(ReviewWindowTest, ExportsTheReportThePlotAndTheRangeShownAsCsv)
     EXPECT_EQ(meta["exported_range"]["first_index"].toInt(), 5000);
     EXPECT_EQ(meta["exported_range"]["count"].toInt(), 1002);
 }
+
+TEST_F(ReviewWindowTest, ASessionDeletedUnderTheWindowIsSaidNotThrown)
+{
+    // Another station, or the CLI, deletes the session while it is shown.
+    const auto before = m_window->plot()->shown(0).t_s.size();
+    core::storage::SessionStore(m_db.toStdString()).deleteSession(1);
+    m_window->plot()->setRange(10.0, 20.0);
+    EXPECT_NO_THROW(m_window->plot()->reload());
+    const auto* problem = child<QLabel>(*m_window, "problemText");
+    EXPECT_TRUE(problem->isVisibleTo(m_window));
+    EXPECT_TRUE(problem->text().contains(QStringLiteral("cannot be read"))) << problem->text().toStdString();
+    EXPECT_EQ(m_window->plot()->shown(0).t_s.size(), before);  // the lanes keep what they showed
+}

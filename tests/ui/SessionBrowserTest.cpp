@@ -7,6 +7,7 @@
 
 #include "core/SampleBlock.h"
 #include "core/storage/SessionStore.h"
+#include "core/storage/StoreWorker.h"
 #include "ui/review/SessionTableModel.h"
 
 #include "support/MainWindowHelpers.h"
@@ -101,7 +102,7 @@ QVariant cell(const ui::SessionBrowser& browser, int row, int column, int role =
 
 TEST_F(SessionBrowserTest, ListsEverySessionAndFiltersAsCountedWhenWritten)
 {
-    ui::SessionBrowser browser(m_path);
+    ui::SessionBrowser browser(std::make_shared<core::storage::StoreWorker>(m_path.toStdString()));
     browser.show();
     EXPECT_EQ(rows(browser), kSessions);
     EXPECT_EQ(child<QLabel>(browser, "countText")->text(), QStringLiteral("60 of 60 sessions"));
@@ -148,7 +149,7 @@ TEST_F(SessionBrowserTest, ListsEverySessionAndFiltersAsCountedWhenWritten)
 
 TEST_F(SessionBrowserTest, ColumnsSortAsNumbersAndDates)
 {
-    ui::SessionBrowser browser(m_path);
+    ui::SessionBrowser browser(std::make_shared<core::storage::StoreWorker>(m_path.toStdString()));
     browser.show();
     QHeaderView* header = browser.table()->horizontalHeader();
     // Newest first by default: the last written session on top.
@@ -175,7 +176,7 @@ TEST_F(SessionBrowserTest, ColumnsSortAsNumbersAndDates)
 
 TEST_F(SessionBrowserTest, DeleteAsksFirstAndRemovesExactlyTheSelected)
 {
-    ui::SessionBrowser browser(m_path);
+    ui::SessionBrowser browser(std::make_shared<core::storage::StoreWorker>(m_path.toStdString()));
     browser.show();
     QSignalSpy deleted(&browser, &ui::SessionBrowser::sessionsDeleted);
     browser.table()->selectRow(0);  // the newest two
@@ -198,7 +199,7 @@ TEST_F(SessionBrowserTest, DeleteAsksFirstAndRemovesExactlyTheSelected)
     ASSERT_NE(box, nullptr);
     tactiscope::testing::saveScreenshot(*box, QStringLiteral("session-browser-delete"));
     child<QPushButton>(*box, "confirmDeleteButton")->click();
-    ASSERT_EQ(deleted.count(), 1);
+    ASSERT_TRUE(waitFor([&] { return deleted.count() == 1; }, 10000));
     EXPECT_EQ(rows(browser), kSessions - 2);
 
     SessionStore store(m_path.toStdString(), Database::Access::ReadOnly);

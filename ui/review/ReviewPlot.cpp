@@ -225,10 +225,19 @@ void ReviewPlot::reload()
     m_loadedWidth_px = m_markerLane->width();
     // Before the first layout the lanes have no width yet: assume a screen's.
     const std::size_t pixels = static_cast<std::size_t>(m_loadedWidth_px > 10 ? m_loadedWidth_px : 800);
+    std::vector<core::storage::TraceWindow> read;
+    try {
+        for (std::size_t c = 0; c < m_channels.size(); ++c)
+            read.push_back(core::storage::readTraceWindow(m_store, m_session.id, c, m_channels[c].sampleRate_hz,
+                                                          m_session.sampleCount, from_s(), to_s(), pixels));
+    } catch (const core::storage::StorageError& e) {
+        // Called from a timer: an exception must not reach the event loop.
+        emit readFailed(tr("The samples cannot be read: %1").arg(QString::fromStdString(e.what())));
+        return;
+    }
+    m_windows = std::move(read);
     for (std::size_t c = 0; c < m_channels.size(); ++c) {
-        auto& window = m_windows[c];
-        window = core::storage::readTraceWindow(m_store, m_session.id, c, m_channels[c].sampleRate_hz,
-                                                m_session.sampleCount, from_s(), to_s(), pixels);
+        const auto& window = m_windows[c];
         const DisplayUnit unit = displayUnitFor(m_channels[c].descriptor);
         QVector<double> keys, values;
         keys.reserve(static_cast<qsizetype>(2 * window.t_s.size()));

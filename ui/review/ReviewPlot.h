@@ -67,13 +67,16 @@ public:
 
     // What each lane shows now (for tests and the readout).
     const core::storage::TraceWindow& shown(std::size_t channel) const { return m_windows.at(channel); }
-    // Reads the shown span again now instead of at the next event-loop turn.
+    // Reads the shown span again now instead of at the next event-loop turn;
+    // a store that can no longer be read leaves the lanes as they were and
+    // says so through readFailed.
     void reload();
     void saveImage(const QString& path) const;  // PNG or SVG by suffix
 
 signals:
     void rangeChanged(double from_s, double to_s);
     void cursorPinned(double time_s);
+    void readFailed(const QString& error);
 
 private:
     void syncRange(QCPAxisRect* source);

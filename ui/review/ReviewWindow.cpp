@@ -182,6 +182,7 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionStor
 
     m_replay.setInterval(40);
     connect(&m_replay, &QTimer::timeout, this, &ReviewWindow::advanceReplay);
+    connect(m_plot, &ReviewPlot::readFailed, this, &ReviewWindow::showProblem);
     connect(m_list, &QTreeWidget::itemClicked, this, &ReviewWindow::jumpTo);
     connect(m_list, &QTreeWidget::itemActivated, this, &ReviewWindow::jumpTo);
     connect(m_list, &QTreeWidget::itemDoubleClicked, this, &ReviewWindow::editSelectedNote);

@@ -3,6 +3,7 @@
 
 #include "ui/InterruptedSessionsReport.h"
 #include "ui/ProblemReport.h"
+#include "ui/StoreJobs.h"
 #include "ui/review/ReviewWindow.h"
 #include "ui/review/SessionBrowser.h"
 
@@ -20,20 +21,22 @@ ReviewWindows::ReviewWindows(QWidget* owner)
 {
 }
 
-void ReviewWindows::setStorePath(const QString& path)
+void ReviewWindows::setStore(std::shared_ptr<core::storage::StoreWorker> store)
 {
-    if (m_browser && path != m_storePath) m_browser->close();  // it lists the old store
-    m_storePath = path;
+    if (m_browser && store != m_store) m_browser->close();  // it lists the old store
+    m_store = std::move(store);
+    m_storePath = QString::fromStdString(m_store->path());
 }
 
 SessionBrowser* ReviewWindows::showBrowser()
 {
     if (!m_browser) {
-        m_browser = new SessionBrowser(m_storePath, m_owner);
+        m_browser = new SessionBrowser(m_store, m_owner);
         m_browser->setAttribute(Qt::WA_DeleteOnClose);
         connect(m_browser, &SessionBrowser::openSessions, this, &ReviewWindows::review);
-        // A deleted session's review window has nothing left to show.
-        connect(m_browser, &SessionBrowser::sessionsDeleted, this, [this](const std::vector<std::int64_t>& ids) {
+        // A deleted session's review window would have nothing left to show:
+        // it closes before its samples go.
+        connect(m_browser, &SessionBrowser::deletingSessions, this, [this](const std::vector<std::int64_t>& ids) {
             for (ReviewWindow* window : m_owner->findChildren<ReviewWindow*>())
                 if (std::ranges::find(ids, window->sessionId()) != ids.end()) window->close();
         });
@@ -69,15 +72,21 @@ void ReviewWindows::review(const std::vector<std::int64_t>& sessions)
 
 void ReviewWindows::reportInterrupted()
 {
+    if (!QFileInfo::exists(m_storePath)) return;  // no store, no crash (and none is made here)
     // Each interrupted session is reported once, on the first start after it.
-    QSettings settings;
     const QString key =
         QStringLiteral("recording/interruptedReported/%1").arg(QFileInfo(m_storePath).absoluteFilePath());
-    const auto sessions = interruptedSessionsAfter(m_storePath, settings.value(key, 0).toLongLong());
-    if (sessions.empty()) return;
-    settings.setValue(key, static_cast<qlonglong>(sessions.back()));
-    showInterruptedSessionsReport(m_owner, m_storePath, sessions,
-                                  [this](const std::vector<std::int64_t>& ids) { review(ids); });
+    const std::int64_t reported = QSettings().value(key, 0).toLongLong();
+    runOnStore(
+        *m_store, this,
+        [reported](core::storage::SessionStore& store) { return interruptedSessionsAfter(store, reported); },
+        [this, key, store = m_store](const std::vector<core::storage::SessionSummary>& sessions) {
+            if (sessions.empty()) return;
+            QSettings().setValue(key, static_cast<qlonglong>(sessions.back().id));
+            showInterruptedSessionsReport(m_owner, store, sessions,
+                                          [this](const std::vector<std::int64_t>& ids) { review(ids); });
+        },
+        [](const QString& error) { qWarning("interrupted sessions not checked: %s", qPrintable(error)); });
 }
 
 void ReviewWindows::sessionRecorded()

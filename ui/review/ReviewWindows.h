@@ -10,9 +10,14 @@
 #include <QString>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 class QWidget;
+
+namespace tactiscope::core::storage {
+class StoreWorker;
+}
 
 namespace tactiscope::ui {
 
@@ -24,7 +29,9 @@ class ReviewWindows : public QObject {
 public:
     explicit ReviewWindows(QWidget* owner);
 
-    void setStorePath(const QString& path);
+    // The window's store: its worker deletes sessions and finds the
+    // interrupted ones (its read-write open marks them).
+    void setStore(std::shared_ptr<core::storage::StoreWorker> store);
     SessionBrowser* showBrowser();
     void review(const std::vector<std::int64_t>& sessions);  // failures are reported
     void reportInterrupted();
@@ -32,6 +39,7 @@ public:
 
 private:
     QWidget* m_owner;
+    std::shared_ptr<core::storage::StoreWorker> m_store;
     QString m_storePath;
     QPointer<SessionBrowser> m_browser;  // of the current store, while open
 };

@@ -1,5 +1,6 @@
 // SessionBrowser: filters, table, open and delete.
 #include "ui/review/SessionBrowser.h"
+#include "ui/StoreJobs.h"
 #include "ui/VocabularyText.h"
 
 #include "ui/calibration/WizardText.h"
@@ -63,9 +64,10 @@ QString describe(const core::storage::SessionSummary& s)
 
 }  // namespace
 
-SessionBrowser::SessionBrowser(const QString& storePath, QWidget* parent)
+SessionBrowser::SessionBrowser(std::shared_ptr<core::storage::StoreWorker> store, QWidget* parent)
     : QDialog(parent),
-      m_storePath(storePath),
+      m_store(std::move(store)),
+      m_storePath(QString::fromStdString(m_store->path())),
       m_model(new SessionTableModel(this)),
       m_sorted(new QSortFilterProxyModel(this)),
       m_table(new QTableView(this)),
@@ -80,7 +82,7 @@ SessionBrowser::SessionBrowser(const QString& storePath, QWidget* parent)
       m_open(new QPushButton(tr("&Open for review"), this)),
       m_delete(new QPushButton(tr("&Delete…"), this))
 {
-    setWindowTitle(tr("Sessions — %1").arg(QFileInfo(storePath).fileName()));
+    setWindowTitle(tr("Sessions — %1").arg(QFileInfo(m_storePath).fileName()));
     setObjectName(QStringLiteral("sessionBrowser"));
     m_table->setObjectName(QStringLiteral("sessionTable"));
     m_search->setObjectName(QStringLiteral("searchEdit"));
@@ -261,34 +263,48 @@ void SessionBrowser::deleteSelected()
 
 void SessionBrowser::deleteSessions(const std::vector<std::int64_t>& sessions)
 {
-    std::vector<std::int64_t> deleted;
-    QStringList refused;
-    try {
-        SessionStore store(m_storePath.toStdString());
-        for (const std::int64_t id : sessions) {
-            try {
-                store.deleteSession(id);
-                deleted.push_back(id);
-            } catch (const core::storage::StorageError& e) {
-                refused << tr("#%1: %2").arg(id).arg(QString::fromStdString(e.what()));
-            }
+    struct Outcome {
+        std::vector<std::int64_t> deleted;
+        QStringList refused;
+    };
+    emit deletingSessions(sessions);
+    m_deleting = true;
+    updateButtons();
+    m_count->setText(tr("Deleting %n session(s)…", nullptr, static_cast<int>(sessions.size())));
+    const auto finish = [this](const Outcome& outcome) {
+        m_deleting = false;
+        reload();
+        if (!outcome.deleted.empty()) emit sessionsDeleted(outcome.deleted);
+        if (!outcome.refused.isEmpty()) {
+            m_problem->setText(tr("Not deleted: %1").arg(outcome.refused.join(QStringLiteral("; "))));
+            m_problem->show();
         }
-    } catch (const core::storage::StorageError& e) {
-        refused << QString::fromStdString(e.what());
-    }
-    reload();
-    if (!deleted.empty()) emit sessionsDeleted(deleted);
-    if (!refused.isEmpty()) {
-        m_problem->setText(tr("Not deleted: %1").arg(refused.join(QStringLiteral("; "))));
-        m_problem->show();
-    }
+    };
+    runOnStore(
+        *m_store, this,
+        [sessions](SessionStore& store) {
+            Outcome outcome;
+            for (const std::int64_t id : sessions) {
+                try {
+                    store.deleteSession(id);
+                    outcome.deleted.push_back(id);
+                } catch (const core::storage::StorageError& e) {
+                    outcome.refused << tr("#%1: %2").arg(id).arg(QString::fromStdString(e.what()));
+                }
+            }
+            return outcome;
+        },
+        finish,
+        [finish](const QString& error) {
+            finish({{}, {error}});
+        });
 }
 
 void SessionBrowser::updateButtons()
 {
     const bool any = m_table->selectionModel()->hasSelection();
     m_open->setEnabled(any);
-    m_delete->setEnabled(any);
+    m_delete->setEnabled(any && !m_deleting);
 }
 
 }  // namespace tactiscope::ui

@@ -3,13 +3,16 @@
 // verdict and a date range; the store does the filtering (SessionFilter),
 // so a store of thousands of sessions lists at once. Sessions are opened
 // for review (several at a time) or deleted after a confirmation that
-// names them; a session still being recorded cannot be deleted.
+// names them; a session still being recorded cannot be deleted. The list
+// is read through a read-only open; deleting (which may remove millions of
+// samples) runs on the window's store worker, off the GUI thread.
 #pragma once
 
 #include <QDialog>
 #include <QTimer>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 class QComboBox;
@@ -20,6 +23,10 @@ class QPushButton;
 class QSortFilterProxyModel;
 class QTableView;
 
+namespace tactiscope::core::storage {
+class StoreWorker;
+}
+
 namespace tactiscope::ui {
 
 class SessionTableModel;
@@ -28,7 +35,7 @@ class SessionBrowser : public QDialog {
     Q_OBJECT
 
 public:
-    explicit SessionBrowser(const QString& storePath, QWidget* parent = nullptr);
+    explicit SessionBrowser(std::shared_ptr<core::storage::StoreWorker> store, QWidget* parent = nullptr);
 
     // Re-reads the store with the current filters.
     void reload();
@@ -36,12 +43,15 @@ public:
     std::vector<std::int64_t> selectedSessions() const;
     // Opens the selected sessions (emits openSessions).
     void openSelected();
-    // Asks, without blocking, to delete the selected sessions.
+    // Asks, without blocking, to delete the selected sessions; once they
+    // are deleted, sessionsDeleted is emitted and the list reloaded.
     void deleteSelected();
     QTableView* table() const { return m_table; }
 
 signals:
     void openSessions(const std::vector<std::int64_t>& sessions);
+    // Before the deletion starts: whatever shows these sessions closes.
+    void deletingSessions(const std::vector<std::int64_t>& sessions);
     void sessionsDeleted(const std::vector<std::int64_t>& sessions);
 
 private:
@@ -49,7 +59,9 @@ private:
     void updateButtons();
     void fillChoices(QComboBox* box, const QStringList& values);
 
+    std::shared_ptr<core::storage::StoreWorker> m_store;
     QString m_storePath;
+    bool m_deleting = false;
     SessionTableModel* m_model;
     QSortFilterProxyModel* m_sorted;
     QTableView* m_table;
