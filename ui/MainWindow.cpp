@@ -14,22 +14,21 @@
 #include "ui/LinkStatus.h"
 #include "ui/LivePlotWidget.h"
 #include "ui/MarkerNote.h"
+#include "ui/ModeViews.h"
 #include "ui/ModeXY.h"
 #include "ui/PalpationView.h"
-#include "ui/PanelScanView.h"
 #include "ui/PlotControls.h"
 #include "ui/ProblemReport.h"
 #include "ui/RawConsole.h"
 #include "ui/SensorProfileDialog.h"
 #include "ui/SessionBar.h"
-#include "ui/SiteGridMap.h"
+#include "ui/StatusLine.h"
 #include "ui/StoreJobs.h"
 #include "ui/VerdictDialog.h"
 #include "ui/VocabularyText.h"
 #include "ui/XYPlotWidget.h"
 #include "ui/calibration/CalibrationHistory.h"
 #include "ui/calibration/CalibrationWizards.h"
-#include "ui/calibration/StoredCalibrations.h"
 #include "ui/review/ReviewWindows.h"
 
 #include <QApplication>
@@ -38,13 +37,10 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QIcon>
-#include <QLabel>
-#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
 #include <QSplitter>
-#include <QStackedWidget>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QToolBar>
@@ -82,9 +78,7 @@ QDockWidget* addDock(QMainWindow* window, const QString& title, const QString& n
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
       m_plot(new LivePlotWidget(this)),
-      m_panelScan(new PanelScanView(this)),
-      m_palpationView(new PalpationView(this)),
-      m_capacitiveView(new CapacitiveView(this)),
+      m_modeViews(new ModeViews(this)),
       m_devicePanel(new DevicePanel(this)),
       m_review(new ReviewWindows(this))
 {
@@ -95,11 +89,6 @@ MainWindow::MainWindow(QWidget* parent)
     centre->setObjectName(QStringLiteral("centreSplitter"));
     centre->addWidget(m_plot);
     // One mode view at a time, in one splitter pane whose height the user sets.
-    m_modeViews = new QStackedWidget(this);
-    m_modeViews->setObjectName(QStringLiteral("modeViews"));
-    m_modeViews->addWidget(m_panelScan);
-    m_modeViews->addWidget(m_palpationView);
-    m_modeViews->addWidget(m_capacitiveView);
     centre->addWidget(m_modeViews);
     centre->setStretchFactor(0, 3);
     centre->setStretchFactor(1, 2);
@@ -127,15 +116,16 @@ MainWindow::MainWindow(QWidget* parent)
     m_consoleDock =
         addDock(this, tr("Raw data"), QStringLiteral("consoleDock"), m_rawConsole, Qt::BottomDockWidgetArea);
     m_consoleDock->hide();  // for troubleshooting a probe
-    connect(m_palpationView, &PalpationView::profilesRequested, this, &MainWindow::showProfiles);
-    connect(m_palpationView, &PalpationView::tareRequested, this, &MainWindow::tare);
-    connect(m_capacitiveView, &CapacitiveView::tareRequested, this, &MainWindow::tare);
-    connect(m_capacitiveView, &CapacitiveView::profilesRequested, this, &MainWindow::showProfiles);
+    connect(palpationView(), &PalpationView::profilesRequested, this, &MainWindow::showProfiles);
+    connect(palpationView(), &PalpationView::tareRequested, this, &MainWindow::tare);
+    connect(capacitiveView(), &CapacitiveView::tareRequested, this, &MainWindow::tare);
+    connect(capacitiveView(), &CapacitiveView::profilesRequested, this, &MainWindow::showProfiles);
+    m_status = new StatusLine(statusBar());
     m_connector = new DeviceConnector(
         {[this] { disconnectSource(); },
          [this](const QString& label) {
-             m_deviceLabel->setText(label);
-             m_linkLabel->setText(tr("Connecting…"));
+             m_status->setDevice(label);
+             m_status->setLink(tr("Connecting…"));
              m_devicePanel->setConnecting(label);
          },
          [this](std::unique_ptr<devices::BlockSource> source, std::shared_ptr<devices::simulator::LoadRig> rig) {
@@ -145,14 +135,13 @@ MainWindow::MainWindow(QWidget* parent)
          [this](const Problem& problem) {
              m_devicePanel->setConnected(false);
              m_devicePanel->clearCounters(tr("Connection failed"));
-             m_linkLabel->setText(tr("Connection failed"));
+             m_status->setLink(tr("Connection failed"));
              reportProblem(this, problem);
          }},
         this);
     connect(m_devicePanel, &DevicePanel::connectRequested, m_connector, &DeviceConnector::request);
     connect(m_devicePanel, &DevicePanel::disconnectRequested, this, &MainWindow::disconnectSource);
     createMenus();
-    createStatusBar();
     restoreSettings();
     m_statusTimer.setInterval(kStatusInterval_ms);
     connect(&m_statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
@@ -186,16 +175,8 @@ void MainWindow::restoreSettings()
 
 void MainWindow::showModeView()
 {
-    const core::Mode mode = m_sessionBar->metadata().mode;
-    QWidget* view = nullptr;
-    if (m_session) {
-        if (m_session->detection() && mode == core::Mode::PanelScan) view = m_panelScan;
-        if (m_session->palpation() && mode == core::Mode::Palpation) view = m_palpationView;
-        if (m_session->capacitive() && mode == core::Mode::Capacitive) view = m_capacitiveView;
-    }
-    if (view) m_modeViews->setCurrentWidget(view);
-    m_modeViews->setVisible(view != nullptr);
-    m_xyDock->setWindowTitle(showModeXY(*m_xyPlot, m_session.get(), view ? std::optional(mode) : std::nullopt));
+    const auto shown = m_modeViews->show(m_session.get(), m_sessionBar->metadata().mode);
+    m_xyDock->setWindowTitle(showModeXY(*m_xyPlot, m_session.get(), shown));
 }
 
 // A mode the device cannot feed is refused here, before anything is
@@ -292,24 +273,24 @@ void MainWindow::createMenus()
 
 std::vector<LivePlotWidget*> MainWindow::allPlots() const
 {
-    return {m_plot, m_panelScan->lanes(), m_palpationView->lanes(), m_capacitiveView->lanes()};
+    std::vector<LivePlotWidget*> plots{m_plot};
+    for (LivePlotWidget* lanes : m_modeViews->lanes()) plots.push_back(lanes);
+    return plots;
 }
 
-void MainWindow::createStatusBar()
+PanelScanView* MainWindow::panelScanView() const
 {
-    m_deviceLabel = new QLabel(tr("No device"), this);
-    m_linkLabel = new QLabel(this);
-    m_recordingLabel = new QLabel(this);
-    m_deviceLabel->setObjectName(QStringLiteral("deviceLabel"));
-    m_linkLabel->setObjectName(QStringLiteral("linkLabel"));
-    m_recordingLabel->setObjectName(QStringLiteral("recordingLabel"));
-    m_deviceLabel->setContentsMargins(6, 0, 6, 0);
-    statusBar()->addWidget(m_deviceLabel, 1);
-    // Fixed fields on the right, each with breathing room.
-    for (QLabel* label : {m_linkLabel, m_recordingLabel}) {
-        label->setContentsMargins(10, 0, 10, 0);
-        statusBar()->addPermanentWidget(label);
-    }
+    return m_modeViews->panelScan();
+}
+
+PalpationView* MainWindow::palpationView() const
+{
+    return m_modeViews->palpation();
+}
+
+CapacitiveView* MainWindow::capacitiveView() const
+{
+    return m_modeViews->capacitive();
 }
 
 void MainWindow::setStorePath(const QString& path)
@@ -400,11 +381,7 @@ void MainWindow::recordingEnded(const devices::session::RecordingSummary& summar
     m_review->sessionRecorded();
     lockProfiles();
     m_sessionBar->setRecordEnabled(m_session != nullptr);
-    const QLocale locale;
-    m_recordingLabel->setStyleSheet(QString());
-    m_recordingLabel->setText(tr("Session %1 saved: %2 samples per channel")
-                                  .arg(summary.session)
-                                  .arg(locale.toString(static_cast<qulonglong>(summary.stats.samplesWritten))));
+    m_status->showSaved(summary.session, summary.stats);
     if (!summary.stats.error.empty())
         reportProblem(this, {tr("Recording stopped"), tr("Recording stopped early."),
                              QString::fromStdString(summary.stats.error),
@@ -458,27 +435,9 @@ void MainWindow::applyProfile(const QString& modeName)
         statusBar()->showMessage(tr("New beam profile: the baseline C0 is re-taken"), 5000);
 }
 
-// A mode's view on the session's processor, with the probe's name and the
-// calibrations it reads through.
 void MainWindow::showMode(core::Mode mode)
 {
-    const double rate_hz = m_session ? m_session->source().nominalSampleRate_hz() : 0.0;
-    const auto* profile = m_session ? m_session->profile(mode) : nullptr;
-    const QString probe = profile ? QString::fromStdString(core::sensors::profileName(*profile)) : QString();
-    const QString calibrations = m_session ? calibrationsText(m_session->calibrations(mode)) : QString();
-    switch (mode) {
-    case core::Mode::PanelScan:
-        m_panelScan->setDetection(m_session ? m_session->detection() : nullptr, rate_hz);
-        break;
-    case core::Mode::Palpation:
-        m_palpationView->setPalpation(m_session ? m_session->palpation() : nullptr, rate_hz, probe, calibrations);
-        break;
-    case core::Mode::Capacitive:
-        m_capacitiveView->setCapacitive(
-            m_session ? m_session->capacitive() : nullptr, rate_hz, probe,
-            calibrations.isEmpty() ? tr("none — the beam model (uncalibrated); drift tracking off") : calibrations);
-        break;
-    }
+    m_modeViews->bind(m_session.get(), mode);
     showModeView();
 }
 
@@ -569,17 +528,8 @@ void MainWindow::addMarker(double time_s, const QString& note)
 void MainWindow::updateRecording()
 {
     if (!isRecording()) return;
-    const auto stats = m_session->recorderStats();
-    const double elapsed_s = m_session->sessionTime_s();
-    m_sessionBar->setElapsed(elapsed_s);
-    const QLocale locale;
-    QString text = tr("● REC session %1: %2 samples")
-                       .arg(m_session->sessionId())
-                       .arg(locale.toString(static_cast<qulonglong>(stats.samplesWritten)));
-    if (stats.samplesDropped > 0)
-        text += tr(", %1 lost").arg(locale.toString(static_cast<qulonglong>(stats.samplesDropped)));
-    m_recordingLabel->setText(text);
-    m_recordingLabel->setStyleSheet(QStringLiteral("color: #c62828; font-weight: 600;"));
+    m_sessionBar->setElapsed(m_session->sessionTime_s());
+    m_status->showRecording(m_session->sessionId(), m_session->recorderStats());
 }
 
 void MainWindow::connectDevice(const QString& label, devices::ReconnectingSource::Opener opener)
@@ -622,14 +572,15 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
                                  .arg(modeTitle(m_session->mode()), QString::fromStdString(m_session->source().name()));
         QTimer::singleShot(0, this, [this, told] { statusBar()->showMessage(told, 6000); });
     }
-    for (const core::Mode mode : core::kModes) showMode(mode);
+    m_modeViews->bindAll(m_session.get());
+    showModeView();
     const auto& device = m_session->source();
     m_plot->setSource(m_session->buffer(), device.channels(), device.nominalSampleRate_hz());
     m_session->start();
 
     const QString name = QString::fromStdString(device.name());
     setWindowTitle(tr("Tactiscope — %1").arg(name));
-    m_deviceLabel->setText(name);
+    m_status->setDevice(name);
     m_devicePanel->setConnected(true, name);
     m_rawConsole->setSource(&device);
     updateStatus();
@@ -644,15 +595,13 @@ void MainWindow::disconnectSource()
     m_statusTimer.stop();
     m_rawConsole->setSource(nullptr);  // before the source goes
     m_plot->clearSource();
-    m_panelScan->setDetection(nullptr, 0.0);
-    m_palpationView->setPalpation(nullptr, 0.0, QString());
-    m_capacitiveView->setCapacitive(nullptr, 0.0, QString(), QString());
+    m_modeViews->bindAll(nullptr);
     m_session.reset();
     m_loadRig.reset();
     showModeView();
     setWindowTitle(tr("Tactiscope"));
-    m_deviceLabel->setText(tr("No device"));
-    m_linkLabel->clear();
+    m_status->setDevice({});
+    m_status->setLink({});
     m_devicePanel->setConnected(false);
     m_sessionBar->setRecordEnabled(false);
 }
@@ -662,15 +611,9 @@ void MainWindow::updateStatus()
     if (!m_session) return;
     const LinkCounters counters = linkCounters(m_session->stats(), m_session->source());
     m_devicePanel->showCounters(counters);
-    m_linkLabel->setText(linkLine(counters));
-    m_linkLabel->setStyleSheet(counters.healthy ? QString() : QStringLiteral("color: #c62828; font-weight: 600;"));
-    // The site first: a press completed in this poll was taken there.
-    m_session->setSite(m_palpationView->siteGrid()->currentSite().toStdString());
+    m_status->showLink(counters);
+    m_modeViews->update(*m_session);
     if (const auto stopped = m_session->poll()) recordingEnded(*stopped);  // the disk stopped it
-    m_panelScan->showDefects(m_session->panelDefects());
-    m_palpationView->showPresses(m_session->presses());
-    m_palpationView->updateReadout();
-    m_capacitiveView->updateReadouts();
     updateRecording();
 }
 

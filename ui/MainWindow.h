@@ -29,8 +29,6 @@
 #include <vector>
 
 class QDockWidget;
-class QLabel;
-class QStackedWidget;
 
 namespace tactiscope::core::storage {
 class StoreWorker;
@@ -49,6 +47,7 @@ class CapacitiveView;
 class DeviceConnector;
 class DevicePanel;
 class LivePlotWidget;
+class ModeViews;
 class PalpationView;
 class RawConsole;
 class ReviewWindows;
@@ -56,6 +55,7 @@ class PanelScanView;
 class SensorProfileDialog;
 class SessionBar;
 class SessionBrowser;
+class StatusLine;
 class XYPlotWidget;
 
 class MainWindow : public QMainWindow {
@@ -76,9 +76,9 @@ public:
     bool isConnecting() const;
 
     LivePlotWidget* livePlot() const { return m_plot; }
-    PanelScanView* panelScanView() const { return m_panelScan; }
-    PalpationView* palpationView() const { return m_palpationView; }
-    CapacitiveView* capacitiveView() const { return m_capacitiveView; }
+    PanelScanView* panelScanView() const;
+    PalpationView* palpationView() const;
+    CapacitiveView* capacitiveView() const;
     DevicePanel* devicePanel() const { return m_devicePanel; }
 
     // Recording: into the session store at storePath() (remembered across
@@ -115,7 +115,6 @@ protected:
 
 private:
     void createMenus();
-    void createStatusBar();
     // The traces and every mode view's lanes.
     std::vector<LivePlotWidget*> allPlots() const;
     void updateStatus();
@@ -140,10 +139,7 @@ private:
 
     LivePlotWidget* m_plot = nullptr;
     SessionBar* m_sessionBar = nullptr;
-    PanelScanView* m_panelScan = nullptr;
-    PalpationView* m_palpationView = nullptr;
-    CapacitiveView* m_capacitiveView = nullptr;
-    QStackedWidget* m_modeViews = nullptr;  // the mode's view under the traces
+    ModeViews* m_modeViews = nullptr;  // the mode's view under the traces
     DevicePanel* m_devicePanel = nullptr;
     ReviewWindows* m_review = nullptr;  // the browser and review windows of the store
     QDockWidget* m_deviceDock = nullptr;
@@ -152,9 +148,7 @@ private:
     RawConsole* m_rawConsole = nullptr;
     QDockWidget* m_consoleDock = nullptr;
     SensorProfileDialog* m_profileDialog = nullptr;  // created when first asked for
-    QLabel* m_recordingLabel = nullptr;
-    QLabel* m_deviceLabel = nullptr;
-    QLabel* m_linkLabel = nullptr;  // state, rate and losses in one line
+    StatusLine* m_status = nullptr;
     QTimer m_statusTimer;
     std::unique_ptr<devices::session::LiveSession> m_session;  // of the connected device
     std::shared_ptr<devices::simulator::LoadRig> m_loadRig;    // when the simulator is a calibration rig

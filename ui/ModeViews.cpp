@@ -1,0 +1,79 @@
+// ModeViews: binding each mode's view to the live session's processor.
+#include "ui/ModeViews.h"
+
+#include "devices/session/LiveSession.h"
+#include "ui/CapacitiveView.h"
+#include "ui/PalpationView.h"
+#include "ui/PanelScanView.h"
+#include "ui/SiteGridMap.h"
+#include "ui/calibration/StoredCalibrations.h"
+
+namespace tactiscope::ui {
+
+ModeViews::ModeViews(QWidget* parent)
+    : QStackedWidget(parent),
+      m_panelScan(new PanelScanView(this)),
+      m_palpation(new PalpationView(this)),
+      m_capacitive(new CapacitiveView(this))
+{
+    setObjectName(QStringLiteral("modeViews"));
+    addWidget(m_panelScan);
+    addWidget(m_palpation);
+    addWidget(m_capacitive);
+}
+
+std::vector<LivePlotWidget*> ModeViews::lanes() const
+{
+    return {m_panelScan->lanes(), m_palpation->lanes(), m_capacitive->lanes()};
+}
+
+void ModeViews::bind(const devices::session::LiveSession* session, core::Mode mode)
+{
+    const double rate_hz = session ? session->source().nominalSampleRate_hz() : 0.0;
+    const auto* profile = session ? session->profile(mode) : nullptr;
+    const QString probe = profile ? QString::fromStdString(core::sensors::profileName(*profile)) : QString();
+    const QString calibrations = session ? calibrationsText(session->calibrations(mode)) : QString();
+    switch (mode) {
+    case core::Mode::PanelScan:
+        m_panelScan->setDetection(session ? session->detection() : nullptr, rate_hz);
+        break;
+    case core::Mode::Palpation:
+        m_palpation->setPalpation(session ? session->palpation() : nullptr, rate_hz, probe, calibrations);
+        break;
+    case core::Mode::Capacitive:
+        m_capacitive->setCapacitive(
+            session ? session->capacitive() : nullptr, rate_hz, probe,
+            calibrations.isEmpty() ? tr("none — the beam model (uncalibrated); drift tracking off") : calibrations);
+        break;
+    }
+}
+
+void ModeViews::bindAll(const devices::session::LiveSession* session)
+{
+    for (const core::Mode mode : core::kModes) bind(session, mode);
+}
+
+std::optional<core::Mode> ModeViews::show(const devices::session::LiveSession* session, core::Mode mode)
+{
+    QWidget* view = nullptr;
+    if (session) {
+        if (session->detection() && mode == core::Mode::PanelScan) view = m_panelScan;
+        if (session->palpation() && mode == core::Mode::Palpation) view = m_palpation;
+        if (session->capacitive() && mode == core::Mode::Capacitive) view = m_capacitive;
+    }
+    if (view) setCurrentWidget(view);
+    setVisible(view != nullptr);
+    return view ? std::optional(mode) : std::nullopt;
+}
+
+void ModeViews::update(devices::session::LiveSession& session)
+{
+    // The site first: a press completed in this poll was taken there.
+    session.setSite(m_palpation->siteGrid()->currentSite().toStdString());
+    m_panelScan->showDefects(session.panelDefects());
+    m_palpation->showPresses(session.presses());
+    m_palpation->updateReadout();
+    m_capacitive->updateReadouts();
+}
+
+}  // namespace tactiscope::ui
