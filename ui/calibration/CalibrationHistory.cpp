@@ -4,6 +4,7 @@
 
 #include "core/calibration/CalibrationDrift.h"
 #include "core/storage/SessionStore.h"
+#include "ui/ProblemReport.h"
 #include "ui/calibration/WizardText.h"
 
 #include <QDateTime>
@@ -118,6 +119,7 @@ void CalibrationHistory::reload()
             m_all = store.calibrations();
         } catch (const core::storage::StorageError& e) {
             m_problem->setText(tr("The store cannot be read: %1").arg(QString::fromStdString(e.what())));
+            logProblem({tr("Calibration history"), m_problem->text(), {}, {}});
         }
     }
     std::set<QString> sensors;

@@ -1,5 +1,7 @@
 // ReviewWindow: header, plot, record list, notes, replay, re-analysis and exports.
 #include "ui/review/ReviewWindow.h"
+
+#include "ui/ProblemReport.h"
 #include "ui/VocabularyText.h"
 
 #include "core/report/ReportData.h"
@@ -544,6 +546,7 @@ void ReviewWindow::exportWithDialog(const QString& title, const QString& filter,
 
 void ReviewWindow::showProblem(const QString& message)
 {
+    logProblem({tr("Review of session %1").arg(m_session.id), message, {}, {}});
     m_problem->setText(message);
     m_problem->show();
 }

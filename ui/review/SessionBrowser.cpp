@@ -1,5 +1,6 @@
 // SessionBrowser: filters, table, open and delete.
 #include "ui/review/SessionBrowser.h"
+#include "ui/ProblemReport.h"
 #include "ui/StoreJobs.h"
 #include "ui/VocabularyText.h"
 
@@ -194,8 +195,7 @@ void SessionBrowser::reload()
             fillChoices(m_verdict, verdicts);
             shown = store.sessions(filter);
         } catch (const core::storage::StorageError& e) {
-            m_problem->setText(tr("The store cannot be read: %1").arg(QString::fromStdString(e.what())));
-            m_problem->show();
+            showProblem(tr("The store cannot be read: %1").arg(QString::fromStdString(e.what())));
         }
         if (m_status->currentIndex() > 0)
             std::erase_if(shown, [&](const auto& s) { return wordText(s.status) != m_status->currentText(); });
@@ -276,8 +276,7 @@ void SessionBrowser::deleteSessions(const std::vector<std::int64_t>& sessions)
         reload();
         if (!outcome.deleted.empty()) emit sessionsDeleted(outcome.deleted);
         if (!outcome.refused.isEmpty()) {
-            m_problem->setText(tr("Not deleted: %1").arg(outcome.refused.join(QStringLiteral("; "))));
-            m_problem->show();
+            showProblem(tr("Not deleted: %1").arg(outcome.refused.join(QStringLiteral("; "))));
         }
     };
     runOnStore(
@@ -298,6 +297,14 @@ void SessionBrowser::deleteSessions(const std::vector<std::int64_t>& sessions)
         [finish](const QString& error) {
             finish({{}, {error}});
         });
+}
+
+// A problem of the store, logged and shown in the browser's own line.
+void SessionBrowser::showProblem(const QString& message)
+{
+    logProblem({tr("Session browser"), message, {}, {}});
+    m_problem->setText(message);
+    m_problem->show();
 }
 
 void SessionBrowser::updateButtons()

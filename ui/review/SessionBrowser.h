@@ -57,6 +57,7 @@ signals:
 private:
     void deleteSessions(const std::vector<std::int64_t>& sessions);
     void updateButtons();
+    void showProblem(const QString& message);
     void fillChoices(QComboBox* box, const QStringList& values);
 
     std::shared_ptr<core::storage::StoreWorker> m_store;
