@@ -51,6 +51,8 @@ public:
 
     AcquisitionStats stats() const;
     const BlockSource& source() const { return *m_source; }
+    // The source's notices since the last call (any thread).
+    std::vector<LinkNotice> takeNotices() { return m_source->takeNotices(); }
 
 private:
     void run(const std::stop_token& stopToken);

@@ -6,6 +6,7 @@
 
 #include "core/ChannelDescriptor.h"
 #include "core/Vocabulary.h"
+#include "devices/LinkNotice.h"
 #include "devices/protocol/DecoderCounters.h"
 
 #include <chrono>
@@ -60,6 +61,9 @@ public:
     // all zero for sources without one. Callable from any thread.
     virtual protocol::DecoderCounters decoderCounters() const { return {}; }
 
+    // What the link noticed since the last call (a device restart, a
+    // sequence its clock contradicted), oldest first. Any thread.
+    virtual std::vector<LinkNotice> takeNotices() { return {}; }
     // The last bytes received on the wire (at most a few kB), for the raw
     // data console; empty for sources without a wire. Any thread.
     virtual std::vector<std::uint8_t> recentBytes() const { return {}; }

@@ -109,9 +109,11 @@ void PortSource::pump(std::chrono::milliseconds timeout)
         m_counters = m_text->counters();
     } else {
         protocol::StreamOutput out;
-        m_binary.push(bytes, out);
+        m_binary.push(bytes, arrival_s, out);
         const std::lock_guard lock(m_statusMutex);
         enqueue(out.blocks);
+        m_notices.insert(m_notices.end(), std::make_move_iterator(out.notices.begin()),
+                         std::make_move_iterator(out.notices.end()));
         m_counters = m_binary.counters();
         if (out.infoChanged) m_info = m_binary.info();
     }
@@ -139,6 +141,12 @@ double PortSource::hostTime_s(double blockTime_s) const
 {
     const std::lock_guard lock(m_statusMutex);
     return m_clock.hostTime_s(blockTime_s);
+}
+
+std::vector<LinkNotice> PortSource::takeNotices()
+{
+    const std::lock_guard lock(m_statusMutex);
+    return std::exchange(m_notices, {});
 }
 
 protocol::DecoderCounters PortSource::decoderCounters() const

@@ -46,6 +46,7 @@ public:
 
     // Thread-safe snapshots for the UI and the record summary.
     protocol::DecoderCounters decoderCounters() const override;
+    std::vector<LinkNotice> takeNotices() override;
     std::vector<std::uint8_t> recentBytes() const override;
     bool textProtocol() const override { return m_text.has_value(); }
     std::optional<protocol::DeviceInfo> deviceInfo() const;
@@ -74,6 +75,7 @@ private:
     std::vector<std::uint8_t> m_chunk = std::vector<std::uint8_t>(4096);
     mutable std::mutex m_statusMutex;  // guards the snapshots below
     protocol::DecoderCounters m_counters;
+    std::vector<LinkNotice> m_notices;  // not yet taken
     std::deque<std::uint8_t> m_recent;  // the last kRecentBytes received
     std::optional<protocol::DeviceInfo> m_info;
     ClockSync m_clock;

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <thread>
+#include <utility>
 
 namespace tactiscope::devices {
 
@@ -66,8 +67,27 @@ bool ReconnectingSource::tryReconnect()
 void ReconnectingSource::replaceSource(std::unique_ptr<BlockSource> source)
 {
     const std::lock_guard lock(m_countersMutex);
-    if (m_source) m_pastCounters += m_source->decoderCounters();
+    if (m_source) {
+        m_pastCounters += m_source->decoderCounters();
+        for (auto& notice : m_source->takeNotices()) {
+            notice.time_s += m_timeOffset_s;  // the offset its blocks were given
+            m_pastNotices.push_back(std::move(notice));
+        }
+    }
     m_source = std::move(source);
+}
+
+std::vector<LinkNotice> ReconnectingSource::takeNotices()
+{
+    const std::lock_guard lock(m_countersMutex);
+    auto notices = std::exchange(m_pastNotices, {});
+    if (m_source) {
+        for (auto& notice : m_source->takeNotices()) {
+            notice.time_s += m_timeOffset_s;
+            notices.push_back(std::move(notice));
+        }
+    }
+    return notices;
 }
 
 protocol::DecoderCounters ReconnectingSource::decoderCounters() const

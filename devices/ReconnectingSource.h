@@ -45,6 +45,8 @@ public:
     std::string lastError() const override { return m_error; }
     // Summed over every connection so far.
     protocol::DecoderCounters decoderCounters() const override;
+    // Of every connection so far, in the stream's time.
+    std::vector<LinkNotice> takeNotices() override;
     // Of the current connection.
     std::vector<std::uint8_t> recentBytes() const override;
     bool textProtocol() const override;
@@ -76,6 +78,7 @@ private:
     std::uint64_t m_indexOffset = 0;           // added to its sample indices
     mutable std::mutex m_countersMutex;        // guards m_source's replacement and the sum below
     protocol::DecoderCounters m_pastCounters;  // of the connections closed so far
+    std::vector<LinkNotice> m_pastNotices;     // of those, not yet taken
 };
 
 // An opener for a serial device: by USB serial number when given (searching

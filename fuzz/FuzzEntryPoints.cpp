@@ -29,7 +29,11 @@ void binaryStream(const std::uint8_t* data, std::size_t size)
 {
     devices::protocol::BinaryStream stream;
     devices::protocol::StreamOutput out;
-    inChunks(data, size, [&](std::span<const std::uint8_t> chunk) { stream.push(chunk, out); });
+    double t = 0.0;
+    inChunks(data, size, [&](std::span<const std::uint8_t> chunk) {
+        stream.push(chunk, t, out);
+        t += 0.01;
+    });
     // Whatever came out must be internally consistent.
     for (const auto& block : out.blocks) {
         if (block.values().size() != block.channelCount() * block.sampleCount()) __builtin_trap();

@@ -37,6 +37,7 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QIcon>
+#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
@@ -614,6 +615,13 @@ void MainWindow::updateStatus()
     m_status->showLink(counters);
     m_modeViews->update(*m_session);
     if (const auto stopped = m_session->poll()) recordingEnded(*stopped);  // the disk stopped it
+    // What the link noticed is in the record (an alarm) and told here.
+    for (const auto& notice : m_session->takeLinkNotices()) {
+        const QString text = tr("Device, at %1 s: %2")
+                                 .arg(QLocale().toString(notice.time_s, 'f', 1), QString::fromStdString(notice.text));
+        logProblem({tr("Device"), text, {}, {}});
+        statusBar()->showMessage(text, 15000);
+    }
     updateRecording();
 }
 

@@ -98,10 +98,14 @@ void RawConsole::refresh()
     const QLocale l;
     const auto n = [&l](std::uint64_t v) { return l.toString(static_cast<qulonglong>(v)); };
     const bool text = m_source->textProtocol();
-    m_counters->setText(tr("%1 bytes · %2 good %3 · %4 CRC errors · %5 resyncs · %6 malformed · %7 lines skipped · "
-                           "%8 samples lost")
-                            .arg(n(c.bytes), n(c.frames), text ? tr("lines") : tr("frames"), n(c.crcErrors),
-                                 n(c.resyncs), n(c.malformedPayloads), n(c.linesSkipped), n(c.samplesLost)));
+    QString line = tr("%1 bytes · %2 good %3 · %4 CRC errors · %5 resyncs · %6 malformed · %7 lines skipped · "
+                      "%8 samples lost")
+                       .arg(n(c.bytes), n(c.frames), text ? tr("lines") : tr("frames"), n(c.crcErrors), n(c.resyncs),
+                            n(c.malformedPayloads), n(c.linesSkipped), n(c.samplesLost));
+    // What the firmware got wrong, shown once it has.
+    if (c.sequenceFaults > 0) line += tr(" · %1 sequence faults").arg(n(c.sequenceFaults));
+    if (c.deviceRestarts > 0) line += tr(" · %1 device restarts").arg(n(c.deviceRestarts));
+    m_counters->setText(line);
     m_text->setPlainText(text ? lastLines(bytes, kLines) : hexDump(bytes, kHexBytes));
     m_text->moveCursor(QTextCursor::End);
 }

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <thread>
+#include <tuple>
 
 namespace tactiscope::cli {
 
@@ -33,6 +34,10 @@ int runEmulate(const QStringList& arguments)
         {QStringLiteral("garbage"), QStringLiteral("Fraction of frames with injected garbage, 0 to 1."),
          QStringLiteral("RATE")},
         {QStringLiteral("seed"), QStringLiteral("Noise seed (default 1)."), QStringLiteral("N")},
+        {QStringLiteral("fault"),
+         QStringLiteral("Misbehave as broken firmware (TSP/1): restart@S (silent 0.5 s, then sequence and clock "
+                        "from 0), sequence-jump@S (one frame's sequence +30000) or frozen-sequence."),
+         QStringLiteral("FAULT")},
     });
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
@@ -76,6 +81,13 @@ int runEmulate(const QStringList& arguments)
         bool ok = false;
         options.seed = parser.value(QStringLiteral("seed")).toULongLong(&ok);
         if (!ok) return usageError(QStringLiteral("--seed must be a non-negative integer"), usage);
+    }
+
+    if (parser.isSet(QStringLiteral("fault"))) {
+        const auto fault = devices::emulator::parseFault(parser.value(QStringLiteral("fault")).toStdString());
+        if (!fault)
+            return usageError(QStringLiteral("--fault must be restart@S, sequence-jump@S or frozen-sequence"), usage);
+        std::tie(options.fault, options.faultAt_s) = *fault;
     }
 
     std::unique_ptr<devices::emulator::ProbeEmulator> emulator;

@@ -212,9 +212,17 @@ int runRecord(const QStringList& arguments)
     auto nextProgress = start + std::chrono::seconds(5);
     QTextStream err(stderr);
     std::optional<devices::session::RecordingSummary> summary;
+    // What the link noticed is stored as an alarm and told here, as it comes.
+    const auto tellNotices = [&] {
+        for (const auto& notice : session.takeLinkNotices())
+            printError(QStringLiteral("at %1 s: %2")
+                           .arg(QLocale::c().toString(notice.time_s, 'f', 1), QString::fromStdString(notice.text)));
+    };
     for (;;) {
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        if ((summary = session.poll())) break;  // the disk stopped it
+        summary = session.poll();
+        tellNotices();
+        if (summary) break;  // the disk stopped it
         const auto now = std::chrono::steady_clock::now();
         const auto state = session.stats().state;
         if (stopRequested() || state == devices::AcquisitionState::Finished ||
@@ -229,6 +237,7 @@ int runRecord(const QStringList& arguments)
     }
     const auto acquired = session.stats();
     if (!summary) summary = session.stopRecording();
+    tellNotices();
     const auto counters = device->decoderCounters();
     if (progress) err << '\n';
 

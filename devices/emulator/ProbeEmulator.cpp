@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
@@ -23,7 +24,24 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// How long a restarting probe is silent.
+constexpr std::chrono::milliseconds kRestartPause(500);
+
 }  // namespace
+
+std::optional<std::pair<EmulatorFault, double>> parseFault(const std::string& text)
+{
+    if (text == "frozen-sequence") return std::pair(EmulatorFault::FrozenSequence, 0.0);
+    const auto at = text.find('@');
+    if (at == std::string::npos) return std::nullopt;
+    const std::string kind = text.substr(0, at), when = text.substr(at + 1);
+    char* end = nullptr;
+    const double seconds = std::strtod(when.c_str(), &end);
+    if (when.empty() || *end != '\0' || !std::isfinite(seconds) || seconds < 0.0) return std::nullopt;
+    if (kind == "restart") return std::pair(EmulatorFault::Restart, seconds);
+    if (kind == "sequence-jump") return std::pair(EmulatorFault::SequenceJump, seconds);
+    return std::nullopt;
+}
 
 ProbeEmulator::ProbeEmulator(const EmulatorOptions& options)
     : m_options(options),
@@ -35,6 +53,8 @@ ProbeEmulator::ProbeEmulator(const EmulatorOptions& options)
         throw std::invalid_argument("samples per frame must be 1 to 1000");
     if (!(options.garbageRate >= 0.0 && options.garbageRate <= 1.0))
         throw std::invalid_argument("garbage rate must lie between 0 and 1");
+    if (options.fault != EmulatorFault::None && options.protocol != WireProtocol::Binary)
+        throw std::invalid_argument("firmware faults are emulated on TSP/1 (binary) only");
     m_rate_hz = m_scenario->sampleRate_hz();
     const auto& base = m_scenario->channels();
     const std::size_t count = options.channels.value_or(base.size());
@@ -189,16 +209,23 @@ std::vector<std::uint8_t> ProbeEmulator::nextPayload(std::size_t& samples)
         return {text.begin(), text.end()};
     }
     protocol::DataPayload data;
-    data.timestamp_us =
-        static_cast<std::uint32_t>(std::llround(static_cast<double>(m_sampleIndex) * 1e6 / m_rate_hz) & 0xFFFFFFFF);
+    data.timestamp_us = static_cast<std::uint32_t>(
+        std::llround(static_cast<double>(m_sampleIndex - m_clockStart) * 1e6 / m_rate_hz) & 0xFFFFFFFF);
     data.format = protocol::SampleFormat::Float32;
     data.channelCount = static_cast<std::uint8_t>(m_channels.size());
     data.samplesPerChannel = static_cast<std::uint16_t>(n);
     for (std::size_t s = 0; s < n; ++s) {
         for (std::size_t c = 0; c < m_channels.size(); ++c) data.raw.push_back(block.value(c % baseChannels, s));
     }
+    std::uint16_t sequence = m_sequence++;
+    if (m_options.fault == EmulatorFault::FrozenSequence) sequence = 0;
+    if (m_options.fault == EmulatorFault::SequenceJump && !m_faulted &&
+        static_cast<double>(m_sampleIndex) / m_rate_hz >= m_options.faultAt_s) {
+        m_faulted = true;
+        sequence = static_cast<std::uint16_t>(sequence + 30000);  // this frame only
+    }
     m_sampleIndex += n;
-    return protocol::encodeFrame(protocol::FrameType::Data, m_sequence++, protocol::encodeData(data));
+    return protocol::encodeFrame(protocol::FrameType::Data, sequence, protocol::encodeData(data));
 }
 
 void ProbeEmulator::handleCommands()
@@ -267,6 +294,17 @@ void ProbeEmulator::run(const std::stop_token& stop)
         if (Clock::now() < due) {
             std::this_thread::sleep_until(std::min(due, Clock::now() + std::chrono::milliseconds(5)));
             continue;
+        }
+        if (m_options.fault == EmulatorFault::Restart && !m_faulted &&
+            static_cast<double>(m_sampleIndex) / m_rate_hz >= m_options.faultAt_s) {
+            // The firmware reboots: nothing for a while, then its sequence
+            // and clock start again at 0; the world it measures went on.
+            m_faulted = true;
+            std::this_thread::sleep_for(kRestartPause);
+            streamStart += kRestartPause;
+            m_sampleIndex += static_cast<std::uint64_t>(std::llround(kRestartPause.count() * 1e-3 * m_rate_hz));
+            m_clockStart = m_sampleIndex;
+            m_sequence = 0;
         }
         std::size_t samples = 0;
         auto payload = nextPayload(samples);

@@ -4,7 +4,8 @@
 // request-info, obeys start/stop/set-rate/tare; streams only after start) or
 // Serial-Plotter text (streams at once). Samples come from a simulator
 // scenario in real time; optionally it injects corrupt bytes, and counts
-// what it injected so tests can compare.
+// what it injected so tests can compare, or misbehaves as broken firmware
+// does (EmulatorFault) so the host's checks can be tried.
 //
 // A device with no reader behaves like a UART with nobody listening: frames
 // that cannot be written within 50 ms are dropped (and counted).
@@ -23,8 +24,14 @@
 #include <random>
 #include <string>
 #include <thread>
+#include <utility>
 
 namespace tactiscope::devices::emulator {
+
+// Firmware faults, for TSP/1: a restart (the probe stops for half a second,
+// then its sequence and clock begin again at 0), one frame whose sequence
+// jumps by 30 000, or a sequence that never moves from 0.
+enum class EmulatorFault { None, Restart, SequenceJump, FrozenSequence };
 
 struct EmulatorOptions {
     std::string linkPath;
@@ -36,7 +43,13 @@ struct EmulatorOptions {
     double garbageRate = 0.0;             // fraction of frames with garbage
     std::size_t samplesPerFrame = 10;
     std::uint64_t seed = 1;
+    EmulatorFault fault = EmulatorFault::None;
+    double faultAt_s = 3.0;  // stream time of a restart or a jump
 };
+
+// "restart@3", "sequence-jump@2.5", "frozen-sequence": the command line's
+// words for a fault; none for anything else.
+std::optional<std::pair<EmulatorFault, double>> parseFault(const std::string& text);
 
 struct EmulatorStats {
     std::uint64_t framesSent = 0;       // data frames or lines written whole
@@ -85,6 +98,8 @@ private:
     std::atomic<bool> m_finished = false;
     std::uint16_t m_sequence = 0;
     std::uint64_t m_sampleIndex = 0;
+    std::uint64_t m_clockStart = 0;            // the sample index the device clock counts from
+    bool m_faulted = false;                    // a one-off fault has happened
     protocol::BinaryDecoder m_commandDecoder;  // host → device commands
     mutable std::mutex m_statsMutex;
     EmulatorStats m_stats;

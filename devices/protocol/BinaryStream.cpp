@@ -1,7 +1,39 @@
-// BinaryStream: frames to SampleBlocks with scaling, clock unwrap and gaps.
+// BinaryStream: frames to SampleBlocks with scaling, clock unwrap, and the
+// losses that sequence, device clock and host clock agree on.
 #include "devices/protocol/BinaryStream.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
 namespace tactiscope::devices::protocol {
+namespace {
+
+// How far the device clock may be from what a sequence gap implies and
+// still confirm it, in samples: a frame is stamped when its first sample
+// is taken, give or take a sample, and half a frame tells a gap of one
+// frame from none.
+double agreementSamples(std::uint16_t frameSamples)
+{
+    return std::max(2.0, 0.5 * frameSamples);
+}
+
+// The host may have seen the device for up to this much less than the
+// stream spans (bytes buffered before the first read), and the device's
+// crystal may run this much fast, before a loss is cut to what the host saw.
+constexpr double kHostSlack_s = 1.0;
+constexpr double kHostRateMargin = 1.1;
+// A misbehaving device's contradictions are noticed at most this often.
+constexpr double kNoticeInterval_s = 10.0;
+
+std::string seconds(double s)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f s", s);
+    return text;
+}
+
+}  // namespace
 
 void BinaryStream::reset()
 {
@@ -27,15 +59,7 @@ std::vector<core::ChannelDescriptor> BinaryStream::channels() const
     return result;
 }
 
-std::uint64_t BinaryStream::unwrap(std::uint32_t raw)
-{
-    // A step back by more than half the range is the 32-bit counter wrapping.
-    if (m_lastRawTimestamp && raw<*m_lastRawTimestamp&& * m_lastRawTimestamp - raw> 0x80000000u) ++m_wraps;
-    m_lastRawTimestamp = raw;
-    return (m_wraps << 32) + raw;
-}
-
-void BinaryStream::push(std::span<const std::uint8_t> bytes, StreamOutput& out)
+void BinaryStream::push(std::span<const std::uint8_t> bytes, double hostTime_s, StreamOutput& out)
 {
     m_frames.clear();
     m_decoder.push(bytes, m_frames);
@@ -50,7 +74,7 @@ void BinaryStream::push(std::span<const std::uint8_t> bytes, StreamOutput& out)
             }
             break;
         case FrameType::Data:
-            onData(frame, out);
+            onData(frame, hostTime_s, out);
             break;
         case FrameType::Status:
             if (auto status = parseStatus(frame.payload))
@@ -71,24 +95,51 @@ void BinaryStream::push(std::span<const std::uint8_t> bytes, StreamOutput& out)
     m_counters.resyncs = d.resyncs;
 }
 
-void BinaryStream::onData(const Frame& frame, StreamOutput& out)
+double BinaryStream::streamTime_s(std::uint64_t timestamp_us) const
+{
+    return m_originTime_s + (static_cast<double>(timestamp_us) - static_cast<double>(*m_originDevice_us)) * 1e-6;
+}
+
+void BinaryStream::onData(const Frame& frame, double hostTime_s, StreamOutput& out)
 {
     auto data = parseData(frame.payload);
     if (!data || (m_info && data->channelCount != m_info->channels.size())) {
         ++m_counters.malformedPayloads;
         return;
     }
-    if (m_lastSequence) {
-        const auto gap = static_cast<std::uint16_t>(frame.sequence - *m_lastSequence - 1);
-        const std::uint64_t lost = static_cast<std::uint64_t>(gap) * m_lastSamples;
+    if (!m_hostStart_s) m_hostStart_s = hostTime_s;
+    // The clock going back by less than half its range is no wrap: the
+    // device began counting again.
+    const std::uint32_t raw = data->timestamp_us;
+    const bool clockWentBack =
+        m_lastRawTimestamp && raw < *m_lastRawTimestamp && *m_lastRawTimestamp - raw <= 0x80000000u;
+    if (clockWentBack)
+        m_wraps = 0;
+    else if (m_lastRawTimestamp && raw < *m_lastRawTimestamp)
+        ++m_wraps;
+    m_lastRawTimestamp = raw;
+    const std::uint64_t timestamp = (m_wraps << 32) + raw;
+
+    if (!m_originDevice_us) m_originDevice_us = timestamp;
+    if (clockWentBack && m_waiting) {
+        // Restarted before the interval was known: the waiting frame has no
+        // clock to be placed on any more.
+        m_counters.samplesLost += m_waiting->first.samplesPerChannel;
+        ++m_counters.deviceRestarts;
+        m_waiting.reset();
+        m_originDevice_us = timestamp;
+    } else if (clockWentBack) {
+        restart(timestamp, data->samplesPerChannel, hostTime_s, out);
+    } else if (m_lastSequence && !m_waiting) {
+        const std::uint64_t lost = believedLoss(frame.sequence, timestamp, hostTime_s, out);
         m_counters.samplesLost += lost;
         m_nextSampleIndex += lost;
     }
     m_lastSequence = frame.sequence;
     m_lastSamples = data->samplesPerChannel;
+    m_lastTimestamp_us = timestamp;
+    m_lastHost_s = hostTime_s;
     m_dataChannels = data->channelCount;
-    const std::uint64_t timestamp = unwrap(data->timestamp_us);
-    if (!m_firstTimestamp_us) m_firstTimestamp_us = timestamp;
 
     if (!sampleRate_hz()) {
         if (!m_waiting) {
@@ -109,10 +160,67 @@ void BinaryStream::onData(const Frame& frame, StreamOutput& out)
     publish(*data, timestamp, out);
 }
 
+std::uint64_t BinaryStream::believedLoss(std::uint16_t sequence, std::uint64_t timestamp_us, double hostTime_s,
+                                         StreamOutput& out)
+{
+    const double rate = *sampleRate_hz();
+    const auto gap = static_cast<std::uint16_t>(sequence - *m_lastSequence - 1);
+    const double claimed = static_cast<double>(gap) * m_lastSamples;
+    // What the device clock says is missing between the last frame's end and this frame.
+    const double byClock =
+        (static_cast<double>(timestamp_us) - static_cast<double>(m_lastTimestamp_us)) * 1e-6 * rate - m_lastSamples;
+    const bool agree = std::abs(byClock - claimed) <= std::max(agreementSamples(m_lastSamples), 0.01 * claimed);
+    auto lost = static_cast<std::uint64_t>(agree ? claimed : 0.0);
+    // The host's bound: never more samples than the host saw time for.
+    const double allowed = (hostTime_s - *m_hostStart_s + kHostSlack_s) * rate * kHostRateMargin;
+    const bool beyondHost = lost > 0 && static_cast<double>(m_nextSampleIndex + lost) > allowed;
+    if (beyondHost) lost = static_cast<std::uint64_t>(std::max(0.0, allowed - static_cast<double>(m_nextSampleIndex)));
+    if (agree && !beyondHost) return lost;
+
+    ++m_counters.sequenceFaults;
+    // This frame follows the last one after the loss believed: the device's
+    // clock no longer places it.
+    m_originDevice_us = timestamp_us;
+    m_originTime_s = m_lastEnd_s + static_cast<double>(lost) / rate;
+    if (!m_lastFaultNotice_s || m_lastEnd_s - *m_lastFaultNotice_s >= kNoticeInterval_s) {
+        m_lastFaultNotice_s = m_lastEnd_s;
+        const std::string moved = seconds(static_cast<double>(timestamp_us - m_lastTimestamp_us) * 1e-6);
+        std::string text;
+        if (beyondHost)
+            text = "the device claimed " + std::to_string(static_cast<std::uint64_t>(claimed)) +
+                   " samples lost, more than the time that passed allows; " + std::to_string(lost) + " counted";
+        else if (gap == 0)
+            text = "the device's clock moved " + moved +
+                   " between two consecutive frames: the samples are placed "
+                   "by their count";
+        else
+            text = "the device's sequence number skipped " + std::to_string(gap) + " frames while its clock moved " +
+                   moved + ": no sample counted lost for it";
+        out.notices.push_back({m_lastEnd_s, text});
+    }
+    return lost;
+}
+
+void BinaryStream::restart(std::uint64_t timestamp_us, std::size_t samples, double hostTime_s, StreamOutput& out)
+{
+    const double rate = *sampleRate_hz();
+    // The device was away from the end of its last frame until this frame's
+    // first sample, taken about the frame's length before it arrived.
+    const double away_s = std::max(0.0, hostTime_s - static_cast<double>(samples) / rate - m_lastHost_s);
+    const auto gap = static_cast<std::uint64_t>(std::llround(away_s * rate));
+    ++m_counters.deviceRestarts;
+    m_counters.samplesLost += gap;
+    m_nextSampleIndex += gap;
+    m_originDevice_us = timestamp_us;
+    m_originTime_s = m_lastEnd_s + static_cast<double>(gap) / rate;
+    out.notices.push_back({m_lastEnd_s, "the device restarted (its clock and sequence began again): " +
+                                            seconds(static_cast<double>(gap) / rate) + " without samples"});
+}
+
 void BinaryStream::publish(const DataPayload& data, std::uint64_t timestamp_us, StreamOutput& out)
 {
     const double dt = 1.0 / *sampleRate_hz();
-    const double t0 = static_cast<double>(timestamp_us - *m_firstTimestamp_us) * 1e-6;
+    const double t0 = streamTime_s(timestamp_us);
     core::SampleBlock block(data.channelCount, data.samplesPerChannel, t0, dt, m_nextSampleIndex, m_blockSequence++);
     for (std::size_t c = 0; c < data.channelCount; ++c) {
         const double scale = m_info ? static_cast<double>(m_info->channels[c].scale) : 1.0;
@@ -122,6 +230,7 @@ void BinaryStream::publish(const DataPayload& data, std::uint64_t timestamp_us, 
             channel[s] = data.raw[s * data.channelCount + c] * scale + offset;
     }
     m_nextSampleIndex += data.samplesPerChannel;
+    m_lastEnd_s = t0 + static_cast<double>(data.samplesPerChannel) * dt;
     out.blocks.push_back(std::move(block));
 }
 

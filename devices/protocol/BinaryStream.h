@@ -1,7 +1,18 @@
 // TSP/1 bytes → SampleBlocks: decodes frames, applies the channel scaling of
-// the last INFO frame, unwraps the device's 32-bit microsecond clock, counts
-// samples lost to sequence gaps (gap × the previous frame's samples) and
-// numbers samples so that the loss shows as a gap in firstSampleIndex.
+// the last INFO frame, unwraps the device's 32-bit microsecond clock and
+// numbers samples so that a loss shows as a gap in firstSampleIndex.
+//
+// Nothing the device says about time is believed alone:
+// - A sequence gap is a loss only when the device clock agrees (the frame's
+//   timestamp is as far on as the missing frames would take it); otherwise
+//   it is a sequence fault, counted, and no sample is invented. A sequence
+//   that never moves is thus no loss.
+// - A clock that goes back (not a 32-bit wrap) is a device restart: the
+//   stream goes on after a gap as long as the host saw pass, with a notice.
+// - However the two agree, the samples lost between the first frame and now
+//   never exceed what the host clock allows at the device's rate (plus a
+//   second of slack for buffering): a device cannot make hours out of
+//   seconds.
 //
 // Without an INFO frame the channels are ch1…chN, unscaled, and the sample
 // interval is taken from the timestamps of the first two DATA frames (the
@@ -9,6 +20,7 @@
 #pragma once
 
 #include "core/SampleBlock.h"
+#include "devices/LinkNotice.h"
 #include "devices/protocol/BinaryDecoder.h"
 
 #include <optional>
@@ -20,12 +32,14 @@ namespace tactiscope::devices::protocol {
 struct StreamOutput {
     std::vector<core::SampleBlock> blocks;
     std::vector<StatusPayload> statuses;
+    std::vector<LinkNotice> notices;
     bool infoChanged = false;
 };
 
 class BinaryStream {
 public:
-    void push(std::span<const std::uint8_t> bytes, StreamOutput& out);
+    // hostTime_s: when the bytes arrived, on a steady host clock.
+    void push(std::span<const std::uint8_t> bytes, double hostTime_s, StreamOutput& out);
 
     const std::optional<DeviceInfo>& info() const { return m_info; }
     // Known once an INFO or a second DATA frame has arrived.
@@ -35,9 +49,13 @@ public:
     void reset();
 
 private:
-    void onData(const Frame& frame, StreamOutput& out);
+    void onData(const Frame& frame, double hostTime_s, StreamOutput& out);
+    // Samples lost before this frame, as far as sequence, clock and host agree.
+    std::uint64_t believedLoss(std::uint16_t sequence, std::uint64_t timestamp_us, double hostTime_s,
+                               StreamOutput& out);
+    void restart(std::uint64_t timestamp_us, std::size_t samples, double hostTime_s, StreamOutput& out);
     void publish(const DataPayload& data, std::uint64_t timestamp_us, StreamOutput& out);
-    std::uint64_t unwrap(std::uint32_t timestamp_us);
+    double streamTime_s(std::uint64_t timestamp_us) const;
 
     BinaryDecoder m_decoder;
     DecoderCounters m_counters;
@@ -47,8 +65,15 @@ private:
     std::optional<std::uint16_t> m_lastSequence;
     std::uint16_t m_lastSamples = 0;
     std::optional<std::uint32_t> m_lastRawTimestamp;
+    std::uint64_t m_lastTimestamp_us = 0;  // unwrapped, of the last frame
     std::uint64_t m_wraps = 0;
-    std::optional<std::uint64_t> m_firstTimestamp_us;
+    // Device clock → stream time: this device time is this stream time.
+    std::optional<std::uint64_t> m_originDevice_us;
+    double m_originTime_s = 0.0;
+    double m_lastEnd_s = 0.0;  // stream time just after the last published sample
+    std::optional<double> m_lastFaultNotice_s;
+    std::optional<double> m_hostStart_s;
+    double m_lastHost_s = 0.0;
     std::uint64_t m_nextSampleIndex = 0;
     std::uint32_t m_blockSequence = 0;
     std::size_t m_dataChannels = 0;

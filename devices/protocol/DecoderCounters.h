@@ -13,7 +13,9 @@ struct DecoderCounters {
     std::uint64_t resyncs = 0;            // times bytes had to be skipped to find the next frame
     std::uint64_t malformedPayloads = 0;  // CRC fine, payload not (a firmware bug)
     std::uint64_t linesSkipped = 0;       // text lines that did not parse
-    std::uint64_t samplesLost = 0;        // from gaps in the sequence numbers
+    std::uint64_t samplesLost = 0;        // gaps the sequence and the clock agree on, and restarts
+    std::uint64_t sequenceFaults = 0;     // frames whose sequence number the device clock contradicted
+    std::uint64_t deviceRestarts = 0;     // times the device clock began again
 
     // Sums counts over several connections to one device.
     DecoderCounters& operator+=(const DecoderCounters& other)
@@ -25,6 +27,8 @@ struct DecoderCounters {
         malformedPayloads += other.malformedPayloads;
         linesSkipped += other.linesSkipped;
         samplesLost += other.samplesLost;
+        sequenceFaults += other.sequenceFaults;
+        deviceRestarts += other.deviceRestarts;
         return *this;
     }
 };

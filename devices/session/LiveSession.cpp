@@ -111,6 +111,7 @@ std::optional<std::string> LiveSession::startRecording(const core::storage::Sess
     }
     if (!used.empty()) metadata.calibrationsJson += "]";
     const double rate_hz = source().nominalSampleRate_hz();
+    takeNotices();  // what the link noticed before belongs to no session
     try {
         const auto directory = std::filesystem::path(m_options.storePath).parent_path();
         if (!directory.empty()) std::filesystem::create_directories(directory);
@@ -140,6 +141,7 @@ RecordingSummary LiveSession::finishRecording()
     m_tap->detach();
     takeDefects();  // what completed up to the last recorded block
     takePresses();
+    takeNotices();
     RecordingSummary summary;
     summary.session = m_recorder->sessionId();
     summary.end_s = m_recorder->sessionTime_s();
@@ -181,8 +183,28 @@ std::optional<RecordingSummary> LiveSession::poll()
 {
     takeDefects();
     takePresses();
+    takeNotices();
     if (m_recorder && !m_recorder->stats().error.empty()) return finishRecording();
     return std::nullopt;
+}
+
+// The link's notices are part of the record: a recording keeps each as an
+// alarm at the moment it happened.
+void LiveSession::takeNotices()
+{
+    std::vector<core::storage::SessionEvent> stored;
+    for (auto& notice : m_acquisition->takeNotices()) {
+        if (m_recorder && m_recorder->sessionTimeOf(notice.time_s) >= 0.0) {
+            notice.time_s = m_recorder->sessionTimeOf(notice.time_s);
+            core::storage::SessionEvent alarm;
+            alarm.kind = core::EventKind::Alarm;
+            alarm.start_s = alarm.end_s = notice.time_s;
+            alarm.note = notice.text;
+            stored.push_back(std::move(alarm));
+        }
+        m_linkNotices.push_back(std::move(notice));
+    }
+    if (!stored.empty()) m_recorder->addEvents(std::move(stored));
 }
 
 void LiveSession::takeDefects()

@@ -158,6 +158,10 @@ public:
     // Problems met building the processors (a bad calibration, a probe the
     // model rejects), each one sentence; taken once.
     std::vector<std::string> takeProblems() { return std::exchange(m_problems, {}); }
+    // What the link noticed (a device restart, a sequence its clock
+    // contradicted), in session time while recording (where poll() has
+    // stored each as an alarm event) and stream time otherwise; taken once.
+    std::vector<LinkNotice> takeLinkNotices() { return std::exchange(m_linkNotices, {}); }
 
 private:
     std::optional<std::string> build(core::Mode mode);
@@ -167,6 +171,7 @@ private:
     void buildDetection();
     void takeDefects();
     void takePresses();
+    void takeNotices();
     RecordingSummary finishRecording();
 
     LiveSessionOptions m_options;
@@ -185,6 +190,7 @@ private:
     std::vector<PressRecord> m_presses;
     std::string m_site;
     std::vector<std::string> m_problems;
+    std::vector<LinkNotice> m_linkNotices;
 };
 
 }  // namespace tactiscope::devices::session

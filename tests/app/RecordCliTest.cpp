@@ -8,6 +8,7 @@
 #include "core/storage/SessionStore.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "support/CliRunner.h"
+#include "support/EmulatorProcess.h"
 #include "support/PdfText.h"
 
 #include <QJsonArray>
@@ -31,32 +32,9 @@ using namespace tactiscope;
 using tactiscope::testing::pdfText;
 using tactiscope::testing::runCli;
 
-namespace {
-
-// Starts `tactiscope-cli emulate` and waits for its link.
-bool startEmulator(QProcess& emulator, const QString& link, const QStringList& extra = {})
-{
-    emulator.start(QStringLiteral(TACTISCOPE_CLI), QStringList{"emulate", "--link", link} + extra);
-    if (!emulator.waitForStarted()) return false;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
-    while (!std::filesystem::is_symlink(link.toStdString()) && std::chrono::steady_clock::now() < deadline)
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    return std::filesystem::is_symlink(link.toStdString());
-}
-
-void stopEmulator(QProcess& emulator)
-{
-    emulator.terminate();  // SIGTERM: the emulator's clean stop
-    emulator.waitForFinished(5000);
-}
-
-std::int64_t sessionIdIn(const QString& summary)
-{
-    const auto match = QRegularExpression(QStringLiteral("^Recorded session (\\d+): ")).match(summary);
-    return match.hasMatch() ? match.captured(1).toLongLong() : -1;
-}
-
-}  // namespace
+using tactiscope::testing::sessionIdIn;
+using tactiscope::testing::startEmulator;
+using tactiscope::testing::stopEmulator;
 
 TEST(RecordCli, TheStoreHoldsExactlyTheSamplesTheEmulatorSent)
 {

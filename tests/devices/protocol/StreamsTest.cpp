@@ -43,7 +43,7 @@ TEST(BinaryStream, ScalesSamplesWithTheInfoFramesChannels)
     auto bytes = info();
     const auto frame = data(0, 5000, 100);
     bytes.insert(bytes.end(), frame.begin(), frame.end());
-    stream.push(bytes, out);
+    stream.push(bytes, 0.0, out);
     EXPECT_TRUE(out.infoChanged);
     ASSERT_EQ(out.blocks.size(), 1u);
     const auto& block = out.blocks[0];
@@ -59,10 +59,10 @@ TEST(BinaryStream, CountsSamplesLostToSequenceGapsAndLeavesAGapInTheIndex)
 {
     BinaryStream stream;
     StreamOutput out;
-    stream.push(info(), out);
-    stream.push(data(10, 0, 0), out);
-    stream.push(data(11, 4000, 4), out);
-    stream.push(data(14, 16000, 16), out);  // frames 12 and 13 lost
+    stream.push(info(), 0.0, out);
+    stream.push(data(10, 0, 0), 0.0, out);
+    stream.push(data(11, 4000, 4), 0.0, out);
+    stream.push(data(14, 16000, 16), 0.0, out);  // frames 12 and 13 lost
     ASSERT_EQ(out.blocks.size(), 3u);
     EXPECT_EQ(stream.counters().samplesLost, 8u);
     EXPECT_EQ(out.blocks[2].firstSampleIndex(), 16u);
@@ -70,24 +70,103 @@ TEST(BinaryStream, CountsSamplesLostToSequenceGapsAndLeavesAGapInTheIndex)
     EXPECT_DOUBLE_EQ(out.blocks[2].t0_s(), 0.016);
 }
 
+namespace {
+
+// Ten frames of 4 samples at 1 kHz (sequence 0…9, clock 0…36 ms), each
+// arriving on the host when its last sample is taken: 4, 8, … 40 ms.
+void tenFrames(BinaryStream& stream, StreamOutput& out)
+{
+    stream.push(info(), 0.0, out);
+    for (std::uint16_t k = 0; k < 10; ++k) stream.push(data(k, 4000u * k, 0), 0.004 * (k + 1), out);
+}
+
+}  // namespace
+
+TEST(BinaryStream, ARestartIsAGapOfTheTimeTheHostSawPassNotOfTheSequencesWrap)
+{
+    BinaryStream stream;
+    StreamOutput out;
+    tenFrames(stream, out);
+    // Silent for 0.5 s, then sequence and clock from 0; the frame arrives
+    // 4 ms after its first sample.
+    stream.push(data(0, 0, 0), 0.040 + 0.5 + 0.004, out);
+    stream.push(data(1, 4000, 0), 0.040 + 0.5 + 0.008, out);
+    ASSERT_EQ(out.blocks.size(), 12u);
+    EXPECT_EQ(stream.counters().deviceRestarts, 1u);
+    EXPECT_EQ(stream.counters().samplesLost, 500u);  // 0.5 s at 1 kHz, not 65 526 frames
+    EXPECT_EQ(out.blocks[10].firstSampleIndex(), 540u);
+    EXPECT_NEAR(out.blocks[10].t0_s(), 0.540, 1e-9);
+    EXPECT_NEAR(out.blocks[11].t0_s(), 0.544, 1e-9);
+    ASSERT_EQ(out.notices.size(), 1u);
+    EXPECT_NEAR(out.notices[0].time_s, 0.040, 1e-9);
+    EXPECT_NE(out.notices[0].text.find("restarted"), std::string::npos) << out.notices[0].text;
+    EXPECT_NE(out.notices[0].text.find("0.5 s without samples"), std::string::npos) << out.notices[0].text;
+}
+
+TEST(BinaryStream, ASequenceThatNeverMovesIsNoLoss)
+{
+    BinaryStream stream;
+    StreamOutput out;
+    stream.push(info(), 0.0, out);
+    for (std::uint32_t k = 0; k < 10; ++k) stream.push(data(0, 4000u * k, 0), 0.004 * (k + 1), out);
+    ASSERT_EQ(out.blocks.size(), 10u);
+    EXPECT_EQ(stream.counters().samplesLost, 0u);
+    EXPECT_EQ(out.blocks[9].firstSampleIndex(), 36u);
+    EXPECT_NEAR(out.blocks[9].t0_s(), 0.036, 1e-9);
+    EXPECT_EQ(stream.counters().sequenceFaults, 9u);
+    EXPECT_EQ(out.notices.size(), 1u);  // told once, counted always
+}
+
+TEST(BinaryStream, ASequenceJumpTheClockDoesNotConfirmIsNoLoss)
+{
+    BinaryStream stream;
+    StreamOutput out;
+    stream.push(info(), 0.0, out);
+    for (std::uint16_t k = 0; k < 10; ++k) {
+        const std::uint16_t sequence = k == 5 ? static_cast<std::uint16_t>(k + 30000) : k;
+        stream.push(data(sequence, 4000u * k, 0), 0.004 * (k + 1), out);
+    }
+    EXPECT_EQ(stream.counters().samplesLost, 0u);
+    EXPECT_EQ(out.blocks[9].firstSampleIndex(), 36u);
+    EXPECT_NEAR(out.blocks[9].t0_s(), 0.036, 1e-9);
+    EXPECT_EQ(stream.counters().sequenceFaults, 2u);  // the jump, and the step back after it
+}
+
+TEST(BinaryStream, ALossNeverExceedsWhatTheHostSawTimeFor)
+{
+    BinaryStream stream;
+    StreamOutput out;
+    tenFrames(stream, out);
+    // Sequence and clock agree on 1000 lost frames (4 s), but the host saw
+    // 4 ms pass: since the first frame (host 4 ms) at most (0.040 s + 1 s of
+    // slack) × 1 kHz × 1.1 = 1144 samples may have gone by.
+    stream.push(data(1010, 4000u * 1010, 0), 0.044, out);
+    ASSERT_EQ(out.blocks.size(), 11u);
+    EXPECT_EQ(out.blocks[10].firstSampleIndex(), 1144u);
+    EXPECT_EQ(stream.counters().samplesLost, 1104u);
+    EXPECT_EQ(stream.counters().sequenceFaults, 1u);
+}
+
 TEST(BinaryStream, UnwrapsTheDeviceClock)
 {
     BinaryStream stream;
     StreamOutput out;
-    stream.push(info(), out);
-    stream.push(data(0, 0xFFFFF000u, 0), out);  // 4096 µs before the wrap
-    stream.push(data(1, 0x00000FA0u, 4), out);  // 4000 µs after it
+    stream.push(info(), 0.0, out);
+    stream.push(data(0, 0xFFFFF830u, 0), 0.0, out);  // 2000 µs before the wrap
+    stream.push(data(1, 0x000007D0u, 4), 0.0, out);  // 2000 µs after it
     ASSERT_EQ(out.blocks.size(), 2u);
-    EXPECT_NEAR(out.blocks[1].t0_s() - out.blocks[0].t0_s(), (4096 + 4000) * 1e-6, 1e-12);
+    EXPECT_NEAR(out.blocks[1].t0_s() - out.blocks[0].t0_s(), 4000e-6, 1e-12);
+    EXPECT_EQ(stream.counters().deviceRestarts, 0u);  // a wrap, not a restart
+    EXPECT_EQ(stream.counters().sequenceFaults, 0u);
 }
 
 TEST(BinaryStream, WithoutInfoTheRateComesFromTheTimestamps)
 {
     BinaryStream stream;
     StreamOutput out;
-    stream.push(data(0, 1000, 7), out);
-    EXPECT_TRUE(out.blocks.empty());      // the first frame waits for the interval
-    stream.push(data(1, 3000, 11), out);  // 4 samples in 2000 µs: 2 kHz
+    stream.push(data(0, 1000, 7), 0.0, out);
+    EXPECT_TRUE(out.blocks.empty());           // the first frame waits for the interval
+    stream.push(data(1, 3000, 11), 0.0, out);  // 4 samples in 2000 µs: 2 kHz
     ASSERT_EQ(out.blocks.size(), 2u);
     EXPECT_DOUBLE_EQ(*stream.sampleRate_hz(), 2000.0);
     EXPECT_EQ(stream.channels()[0].name, "ch1");
@@ -102,7 +181,7 @@ TEST(BinaryStream, PassesStatusMessagesAndCountsMalformedPayloads)
     auto bytes = encodeFrame(FrameType::Status, 0, encodeStatus({StatusLevel::Error, "bridge open"}));
     const auto bad = encodeFrame(FrameType::Data, 1, {1, 2, 3});
     bytes.insert(bytes.end(), bad.begin(), bad.end());
-    stream.push(bytes, out);
+    stream.push(bytes, 0.0, out);
     ASSERT_EQ(out.statuses.size(), 1u);
     EXPECT_EQ(out.statuses[0].message, "bridge open");
     EXPECT_EQ(stream.counters().malformedPayloads, 1u);

@@ -1,0 +1,125 @@
+// `tactiscope-cli record` from a probe whose firmware misbehaves, emulated
+// behind a real pty (`emulate --fault`), into a real store: what a device
+// says about its sequence and its clock is checked, never believed alone.
+// A restart is a gap of the time the host saw pass plus an alarm, not the
+// hours a wrapped sequence would claim; a sequence that never moves or
+// jumps once loses nothing. Before, the 6 s restart recording was stored as
+// 658 s with 652 360 invented lost samples (issue 19).
+#include "core/storage/SessionStore.h"
+#include "support/CliRunner.h"
+#include "support/EmulatorProcess.h"
+
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace tactiscope;
+using tactiscope::testing::runCli;
+using tactiscope::testing::sessionIdIn;
+using tactiscope::testing::startEmulator;
+using tactiscope::testing::stopEmulator;
+
+namespace {
+
+struct Recorded {
+    tactiscope::testing::CliResult result;
+    std::int64_t session = -1;
+};
+
+// Records `seconds` from a 1 kHz panel-scan probe with `fault`.
+Recorded recordFrom(const QTemporaryDir& dir, const QString& fault, const QString& seconds)
+{
+    const QString link = dir.filePath("probe");
+    QProcess emulator;
+    if (!startEmulator(emulator, link, {"--scenario", "panel-scan", "--rate", "1000", "--fault", fault})) return {};
+    Recorded recorded;
+    recorded.result = runCli(
+        {"record", "--port", link, "--seconds", seconds, "--db", dir.filePath("s.tactiscope"), "--subject", "door-3"});
+    stopEmulator(emulator);
+    recorded.session = sessionIdIn(recorded.result.out);
+    return recorded;
+}
+
+std::vector<core::storage::SessionEvent> alarms(core::storage::SessionStore& store, std::int64_t session)
+{
+    auto events = store.events(session);
+    std::erase_if(events, [](const auto& e) { return e.kind != core::EventKind::Alarm; });
+    return events;
+}
+
+}  // namespace
+
+TEST(MisbehavingProbe, ARestartIsAGapOfTheTimeItWasAwayAndAnAlarm)
+{
+    QTemporaryDir dir;
+    // The emulator falls silent for 0.5 s at 1.5 s of its stream, then its
+    // sequence and clock begin again at 0.
+    const auto recorded = recordFrom(dir, "restart@1.5", "4");
+    ASSERT_EQ(recorded.result.exitCode, 0) << recorded.result.err.toStdString();
+    ASSERT_GT(recorded.session, 0) << recorded.result.out.toStdString();
+    EXPECT_TRUE(recorded.result.err.contains(QStringLiteral("restarted"))) << recorded.result.err.toStdString();
+
+    core::storage::SessionStore store(dir.filePath("s.tactiscope").toStdString(),
+                                      core::storage::Database::Access::ReadOnly);
+    // 4 s of recording at 1 kHz, the restart's half second included: not 658 s.
+    const auto n = store.sampleCount(recorded.session);
+    EXPECT_GE(n, 3000u);
+    EXPECT_LE(n, 4600u);
+    const auto gaps = store.gaps(recorded.session);
+    ASSERT_EQ(gaps.size(), 1u);
+    // The half second the probe was away, give or take the pty's delivery.
+    EXPECT_NEAR(static_cast<double>(gaps[0].count), 500.0, 150.0);
+    const auto restart = alarms(store, recorded.session);
+    ASSERT_EQ(restart.size(), 1u);
+    EXPECT_NE(restart[0].note.find("restarted"), std::string::npos) << restart[0].note;
+    EXPECT_NEAR(restart[0].start_s, static_cast<double>(gaps[0].firstIndex) / 1000.0, 0.05);
+}
+
+TEST(MisbehavingProbe, ASequenceThatNeverMovesLosesNothing)
+{
+    QTemporaryDir dir;
+    const auto recorded = recordFrom(dir, "frozen-sequence", "2");
+    ASSERT_EQ(recorded.result.exitCode, 0) << recorded.result.err.toStdString();
+    ASSERT_GT(recorded.session, 0) << recorded.result.out.toStdString();
+    EXPECT_TRUE(recorded.result.out.contains(QStringLiteral(" 0 lost,"))) << recorded.result.out.toStdString();
+
+    core::storage::SessionStore store(dir.filePath("s.tactiscope").toStdString(),
+                                      core::storage::Database::Access::ReadOnly);
+    // Every frame's sequence is 0: 65 535 frames "lost" each time, before.
+    EXPECT_LE(store.sampleCount(recorded.session), 2600u);
+    EXPECT_TRUE(store.gaps(recorded.session).empty());
+    // Told once, in the record: the device's sequence is not to be trusted.
+    const auto told = alarms(store, recorded.session);
+    ASSERT_EQ(told.size(), 1u);
+    EXPECT_NE(told[0].note.find("sequence number"), std::string::npos) << told[0].note;
+}
+
+TEST(MisbehavingProbe, OneFramesSequenceJumpLosesNothing)
+{
+    QTemporaryDir dir;
+    const auto recorded = recordFrom(dir, "sequence-jump@1", "2.5");
+    ASSERT_EQ(recorded.result.exitCode, 0) << recorded.result.err.toStdString();
+    ASSERT_GT(recorded.session, 0) << recorded.result.out.toStdString();
+    EXPECT_TRUE(recorded.result.out.contains(QStringLiteral(" 0 lost,"))) << recorded.result.out.toStdString();
+
+    core::storage::SessionStore store(dir.filePath("s.tactiscope").toStdString(),
+                                      core::storage::Database::Access::ReadOnly);
+    EXPECT_LE(store.sampleCount(recorded.session), 3100u);  // 2.5 s, not 661 s
+    EXPECT_TRUE(store.gaps(recorded.session).empty());
+    EXPECT_EQ(alarms(store, recorded.session).size(), 1u);
+}
+
+TEST(MisbehavingProbe, AFaultTheEmulatorCannotSpeakIsRefused)
+{
+    QTemporaryDir dir;
+    const auto result = runCli({"emulate", "--link", dir.filePath("probe"), "--fault", "restart"});
+    EXPECT_EQ(result.exitCode, 2);
+    EXPECT_TRUE(result.err.contains(QStringLiteral("--fault"))) << result.err.toStdString();
+    const auto text =
+        runCli({"emulate", "--link", dir.filePath("probe"), "--protocol", "text", "--fault", "frozen-sequence"});
+    EXPECT_EQ(text.exitCode, 2);
+    EXPECT_TRUE(text.err.contains(QStringLiteral("TSP/1"))) << text.err.toStdString();
+}
