@@ -29,7 +29,13 @@ double threadCpuSeconds()
 
 emulator::EmulatorOptions eightChannels(const std::string& link)
 {
-    return {link, WireProtocol::Binary, simulator::kPanelScanScenario, 2000.0, 8u, kSeconds, 0.0, 10, 1};
+    emulator::EmulatorOptions options;
+    options.linkPath = link;
+    options.scenario = simulator::kPanelScanScenario;
+    options.rate_hz = 2000.0;
+    options.channels = 8u;
+    options.seconds = kSeconds;
+    return options;
 }
 
 std::string linkPath()

@@ -56,6 +56,9 @@ public:
 
     // Why the last readBlock() returned Failed, in words a user can act on.
     virtual std::string lastError() const { return {}; }
+    // Whether that failure is the device's own (a rate it lies about):
+    // reopening it would only fail again, so nobody should retry.
+    virtual bool failedForGood() const { return false; }
 
     // What the wire protocol has counted (bytes, CRC errors, resyncs, …);
     // all zero for sources without one. Callable from any thread.

@@ -27,7 +27,7 @@ PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const Po
         sendCommand(protocol::CommandCode::Start);
     }
     const auto deadline = std::chrono::steady_clock::now() + options.handshakeTimeout;
-    while (!layoutKnown()) {
+    while (!layoutKnown() || !rateConfirmed(deadline)) {
         if (std::chrono::steady_clock::now() >= deadline) {
             throw transport::TransportError(m_transport->description() + ": no " +
                                             (options.protocol == WireProtocol::Binary ? std::string("TSP/1 frames")
@@ -37,6 +37,8 @@ PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const Po
         }
         pump(std::chrono::milliseconds(50));
     }
+    if (!m_text && m_binary.rateProblem())
+        throw transport::TransportError(m_transport->description() + ": " + *m_binary.rateProblem());
     if (m_text) {
         m_channels = m_text->channels();
         m_rate_hz = *m_text->sampleRate_hz();
@@ -68,6 +70,16 @@ DeviceIdentity PortSource::identity() const
     if (const auto info = deviceInfo())
         return {info->vendor + " " + info->model, info->serialNumber, info->firmwareVersion};
     return {m_transport->description(), {}, {}};
+}
+
+// A TSP/1 device's INFO rate is checked against its clock before anyone
+// records with it: the handshake waits for two consecutively numbered
+// frames, among the first four at most (a device whose sequence does not
+// count, or a slow one, is checked in the stream instead).
+bool PortSource::rateConfirmed(std::chrono::steady_clock::time_point deadline) const
+{
+    if (m_text || !m_binary.info() || m_binary.clockRate_hz() || m_binary.rateProblem()) return true;
+    return m_binary.dataFrames() >= 4 || std::chrono::steady_clock::now() >= deadline - std::chrono::milliseconds(100);
 }
 
 bool PortSource::layoutKnown() const
@@ -125,6 +137,11 @@ ReadStatus PortSource::readBlock(core::SampleBlock& out, std::chrono::millisecon
         if (m_queue.empty()) pump(timeout);
     } catch (const transport::TransportError& e) {
         m_error = e.what();
+        return ReadStatus::Failed;
+    }
+    if (!m_text && m_binary.rateProblem()) {
+        m_error = *m_binary.rateProblem();
+        m_failedForGood = true;
         return ReadStatus::Failed;
     }
     if (m_queue.empty()) return ReadStatus::Timeout;

@@ -43,6 +43,7 @@ public:
     double nominalSampleRate_hz() const override { return m_rate_hz; }
     ReadStatus readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout) override;
     std::string lastError() const override { return m_error; }
+    bool failedForGood() const override { return m_failedForGood; }
 
     // Thread-safe snapshots for the UI and the record summary.
     protocol::DecoderCounters decoderCounters() const override;
@@ -58,6 +59,7 @@ public:
 
 private:
     void sendCommand(protocol::CommandCode code, std::uint32_t argument = 0);
+    bool rateConfirmed(std::chrono::steady_clock::time_point deadline) const;
     // Reads one chunk into the stream; queues blocks. Throws TransportError.
     void pump(std::chrono::milliseconds timeout);
     bool layoutKnown() const;
@@ -70,6 +72,7 @@ private:
     std::vector<core::ChannelDescriptor> m_channels;
     double m_rate_hz = 0.0;
     std::string m_error;
+    bool m_failedForGood = false;
     std::uint16_t m_commandSequence = 0;
     static constexpr std::size_t kRecentBytes = 4096;
     std::vector<std::uint8_t> m_chunk = std::vector<std::uint8_t>(4096);

@@ -123,6 +123,11 @@ ReadStatus ReconnectingSource::readBlock(core::SampleBlock& out, std::chrono::mi
         if (!tryReconnect()) return ReadStatus::Timeout;
     }
     const ReadStatus status = m_source->readBlock(out, timeout);
+    if (status == ReadStatus::Failed && m_source->failedForGood()) {
+        m_error = m_source->lastError();
+        m_failedForGood = true;
+        return ReadStatus::Failed;  // reopening would fail the same way
+    }
     if (status == ReadStatus::Failed) {
         m_error = m_source->lastError();
         replaceSource(nullptr);

@@ -43,6 +43,7 @@ public:
     double nominalSampleRate_hz() const override { return m_rate_hz; }
     ReadStatus readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout) override;
     std::string lastError() const override { return m_error; }
+    bool failedForGood() const override { return m_failedForGood; }
     // Summed over every connection so far.
     protocol::DecoderCounters decoderCounters() const override;
     // Of every connection so far, in the stream's time.
@@ -68,6 +69,7 @@ private:
     std::vector<core::ChannelDescriptor> m_channels;
     double m_rate_hz = 0.0;
     std::string m_error;
+    bool m_failedForGood = false;
     std::atomic<DeviceState> m_state = DeviceState::Streaming;
     std::atomic<std::uint64_t> m_reconnections = 0;
     std::chrono::steady_clock::time_point m_start;

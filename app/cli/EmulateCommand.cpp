@@ -34,6 +34,9 @@ int runEmulate(const QStringList& arguments)
         {QStringLiteral("garbage"), QStringLiteral("Fraction of frames with injected garbage, 0 to 1."),
          QStringLiteral("RATE")},
         {QStringLiteral("seed"), QStringLiteral("Noise seed (default 1)."), QStringLiteral("N")},
+        {QStringLiteral("info-rate"),
+         QStringLiteral("The rate its INFO frame claims, in Hz (default: the true rate; another is a lie)."),
+         QStringLiteral("HZ")},
         {QStringLiteral("fault"),
          QStringLiteral("Misbehave as broken firmware (TSP/1): restart@S (silent 0.5 s, then sequence and clock "
                         "from 0), sequence-jump@S (one frame's sequence +30000) or frozen-sequence."),
@@ -60,6 +63,11 @@ int runEmulate(const QStringList& arguments)
     if (parser.isSet(QStringLiteral("rate"))) {
         options.rate_hz = positive("rate", false);
         if (!options.rate_hz) return usageError(QStringLiteral("--rate must be a positive number of Hz"), usage);
+    }
+    if (parser.isSet(QStringLiteral("info-rate"))) {
+        options.infoRate_hz = positive("info-rate", false);
+        if (!options.infoRate_hz)
+            return usageError(QStringLiteral("--info-rate must be a positive number of Hz"), usage);
     }
     if (parser.isSet(QStringLiteral("channels"))) {
         const auto channels = positive("channels", true);

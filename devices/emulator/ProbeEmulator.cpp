@@ -244,12 +244,13 @@ void ProbeEmulator::handleCommands()
         }
         switch (command->code) {
         case protocol::CommandCode::RequestInfo: {
-            protocol::DeviceInfo info{"Tactiscope",
-                                      "Emulator (" + m_options.scenario + ")",
-                                      "EMU-" + std::to_string(m_options.seed),
-                                      core::versionString(),
-                                      static_cast<std::uint32_t>(std::llround(m_rate_hz * 1000.0)),
-                                      {}};
+            protocol::DeviceInfo info{
+                "Tactiscope",
+                "Emulator (" + m_options.scenario + ")",
+                "EMU-" + std::to_string(m_options.seed),
+                core::versionString(),
+                static_cast<std::uint32_t>(std::llround(m_options.infoRate_hz.value_or(m_rate_hz) * 1000.0)),
+                {}};
             for (const auto& c : m_channels) info.channels.push_back({c, 1.0f, 0.0f});
             writeAll(protocol::encodeFrame(protocol::FrameType::Info, m_sequence++, protocol::encodeInfo(info)));
             break;

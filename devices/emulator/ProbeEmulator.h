@@ -43,6 +43,7 @@ struct EmulatorOptions {
     double garbageRate = 0.0;             // fraction of frames with garbage
     std::size_t samplesPerFrame = 10;
     std::uint64_t seed = 1;
+    std::optional<double> infoRate_hz = std::nullopt;  // the rate its INFO claims (a lie when not the true rate)
     EmulatorFault fault = EmulatorFault::None;
     double faultAt_s = 3.0;  // stream time of a restart or a jump
 };

@@ -25,6 +25,21 @@ constexpr double kHostSlack_s = 1.0;
 constexpr double kHostRateMargin = 1.1;
 // A misbehaving device's contradictions are noticed at most this often.
 constexpr double kNoticeInterval_s = 10.0;
+// An INFO rate this far off the device's own clock is wrong.
+constexpr double kClockRateTolerance = 0.02;
+// The host's arrivals are judged over this long, from this long after the
+// first frame (what was buffered before the first read arrives at once),
+// and only a factor this large is believed over the host's scheduling.
+constexpr double kArrivalWindow_s = 3.0;
+constexpr double kArrivalSettle_s = 0.5;
+constexpr double kArrivalFactor = 2.0;
+
+std::string hertz(double rate)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g Hz", rate);
+    return text;
+}
 
 std::string seconds(double s)
 {
@@ -108,6 +123,7 @@ void BinaryStream::onData(const Frame& frame, double hostTime_s, StreamOutput& o
         return;
     }
     if (!m_hostStart_s) m_hostStart_s = hostTime_s;
+    ++m_dataFrames;
     // The clock going back by less than half its range is no wrap: the
     // device began counting again.
     const std::uint32_t raw = data->timestamp_us;
@@ -134,6 +150,8 @@ void BinaryStream::onData(const Frame& frame, double hostTime_s, StreamOutput& o
         const std::uint64_t lost = believedLoss(frame.sequence, timestamp, hostTime_s, out);
         m_counters.samplesLost += lost;
         m_nextSampleIndex += lost;
+        if (frame.sequence == static_cast<std::uint16_t>(*m_lastSequence + 1) && timestamp > m_lastTimestamp_us)
+            m_clockRate_hz = m_lastSamples / (static_cast<double>(timestamp - m_lastTimestamp_us) * 1e-6);
     }
     m_lastSequence = frame.sequence;
     m_lastSamples = data->samplesPerChannel;
@@ -158,6 +176,31 @@ void BinaryStream::onData(const Frame& frame, double hostTime_s, StreamOutput& o
         publish(waiting.first, waiting.second, out);
     }
     publish(*data, timestamp, out);
+    checkRate(hostTime_s);
+}
+
+void BinaryStream::checkRate(double hostTime_s)
+{
+    if (m_rateProblem) return;
+    const double rate = *sampleRate_hz();
+    if (m_info && m_clockRate_hz && std::abs(*m_clockRate_hz / rate - 1.0) > kClockRateTolerance) {
+        m_rateProblem = "the device says it samples at " + hertz(rate) + " but its own clock puts " +
+                        hertz(*m_clockRate_hz) +
+                        " between its frames: its rate is wrong, and so would every time in "
+                        "the recording be; correct the firmware's sample rate";
+        return;
+    }
+    if (!m_arrivalStart) {
+        if (hostTime_s - *m_hostStart_s >= kArrivalSettle_s) m_arrivalStart.emplace(hostTime_s, m_nextSampleIndex);
+        return;
+    }
+    const double window_s = hostTime_s - m_arrivalStart->first;
+    if (window_s < kArrivalWindow_s) return;
+    const double arriving = static_cast<double>(m_nextSampleIndex - m_arrivalStart->second) / window_s;
+    if (arriving > kArrivalFactor * rate || arriving * kArrivalFactor < rate)
+        m_rateProblem = "the device's samples arrive at about " + hertz(arriving) + ", not at the " + hertz(rate) +
+                        (m_info ? " it says" : " its first timestamps gave") +
+                        ": the rate is wrong, and so would every time in the recording be";
 }
 
 std::uint64_t BinaryStream::believedLoss(std::uint16_t sequence, std::uint64_t timestamp_us, double hostTime_s,

@@ -13,6 +13,11 @@
 //   never exceed what the host clock allows at the device's rate (plus a
 //   second of slack for buffering): a device cannot make hours out of
 //   seconds.
+// - The rate is checked twice: against the device clock between two
+//   consecutive frames (an INFO rate more than 2 % off it is wrong), and
+//   against the host's arrivals over 3 s (more than a factor of 2 off:
+//   clock and rate both wrong, or a bad estimate). Either makes
+//   rateProblem() say why; the stream cannot be recorded truthfully then.
 //
 // Without an INFO frame the channels are ch1…chN, unscaled, and the sample
 // interval is taken from the timestamps of the first two DATA frames (the
@@ -25,6 +30,7 @@
 
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace tactiscope::devices::protocol {
@@ -46,6 +52,12 @@ public:
     std::optional<double> sampleRate_hz() const;
     std::vector<core::ChannelDescriptor> channels() const;
     const DecoderCounters& counters() const { return m_counters; }
+    // The rate between two consecutive frames by the device clock; none
+    // before two such frames have arrived.
+    std::optional<double> clockRate_hz() const { return m_clockRate_hz; }
+    std::uint64_t dataFrames() const { return m_dataFrames; }
+    // Why the rate cannot be believed (see above); none while it can.
+    const std::optional<std::string>& rateProblem() const { return m_rateProblem; }
     void reset();
 
 private:
@@ -56,6 +68,7 @@ private:
     void restart(std::uint64_t timestamp_us, std::size_t samples, double hostTime_s, StreamOutput& out);
     void publish(const DataPayload& data, std::uint64_t timestamp_us, StreamOutput& out);
     double streamTime_s(std::uint64_t timestamp_us) const;
+    void checkRate(double hostTime_s);
 
     BinaryDecoder m_decoder;
     DecoderCounters m_counters;
@@ -75,6 +88,10 @@ private:
     std::optional<double> m_hostStart_s;
     double m_lastHost_s = 0.0;
     std::uint64_t m_nextSampleIndex = 0;
+    std::optional<double> m_clockRate_hz;
+    std::uint64_t m_dataFrames = 0;
+    std::optional<std::pair<double, std::uint64_t>> m_arrivalStart;  // host time, sample index
+    std::optional<std::string> m_rateProblem;
     std::uint32_t m_blockSequence = 0;
     std::size_t m_dataChannels = 0;
     std::vector<Frame> m_frames;  // scratch

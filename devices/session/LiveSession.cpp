@@ -11,6 +11,7 @@
 #include "core/storage/DefectRecords.h"
 #include "core/storage/RecordingTap.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -115,9 +116,9 @@ std::optional<std::string> LiveSession::startRecording(const core::storage::Sess
     try {
         const auto directory = std::filesystem::path(m_options.storePath).parent_path();
         if (!directory.empty()) std::filesystem::create_directories(directory);
-        m_recorder = std::make_shared<core::storage::Recorder>(
-            m_options.storePath, metadata, source().channels(), rate_hz,
-            static_cast<std::uint64_t>(std::ceil(m_options.recorderQueue_s * rate_hz)), used);
+        m_recorder =
+            std::make_shared<core::storage::Recorder>(m_options.storePath, metadata, source().channels(), rate_hz,
+                                                      recorderQueueBound(rate_hz, source().channels().size()), used);
     } catch (const std::exception& e) {  // StorageError, or the folder cannot be made
         return e.what();
     }
@@ -126,8 +127,25 @@ std::optional<std::string> LiveSession::startRecording(const core::storage::Sess
     takePresses();
     m_defects.clear();
     m_presses.clear();
+    recordStandingFaults();
     m_tap->attach(m_recorder);
     return std::nullopt;
+}
+
+// A device that contradicted itself before the record press still does:
+// the recording says so from its start, as the link tells it only now and
+// then.
+void LiveSession::recordStandingFaults()
+{
+    const auto counters = source().decoderCounters();
+    if (counters.sequenceFaults == 0) return;
+    core::storage::SessionEvent alarm;
+    alarm.kind = core::EventKind::Alarm;
+    alarm.note = "before this recording the device's sequence numbers contradicted its clock " +
+                 std::to_string(counters.sequenceFaults) +
+                 " times: they are not believed, losses are counted "
+                 "only where its clock agrees";
+    m_recorder->addEvents({alarm});
 }
 
 std::optional<RecordingSummary> LiveSession::stopRecording()
@@ -186,6 +204,17 @@ std::optional<RecordingSummary> LiveSession::poll()
     takeNotices();
     if (m_recorder && !m_recorder->stats().error.empty()) return finishRecording();
     return std::nullopt;
+}
+
+// The samples per channel the recorder may hold while the disk is slow:
+// recorderQueue_s at the device's rate, but never less than 32 MB of values,
+// so a device that claims a far lower rate than it sends (until the link's
+// rate check stops it) has its samples kept, not dropped.
+std::uint64_t LiveSession::recorderQueueBound(double rate_hz, std::size_t channels) const
+{
+    constexpr std::uint64_t kMinimumValues = std::uint64_t{1} << 22;
+    const auto byRate = static_cast<std::uint64_t>(std::ceil(m_options.recorderQueue_s * rate_hz));
+    return std::max(byRate, kMinimumValues / std::max<std::size_t>(channels, 1));
 }
 
 // The link's notices are part of the record: a recording keeps each as an

@@ -172,6 +172,8 @@ private:
     void takeDefects();
     void takePresses();
     void takeNotices();
+    void recordStandingFaults();
+    std::uint64_t recorderQueueBound(double rate_hz, std::size_t channels) const;
     RecordingSummary finishRecording();
 
     LiveSessionOptions m_options;

@@ -9,6 +9,7 @@
 #include "support/CliRunner.h"
 #include "support/EmulatorProcess.h"
 
+#include <QFileInfo>
 #include <QProcess>
 #include <QTemporaryDir>
 
@@ -122,4 +123,24 @@ TEST(MisbehavingProbe, AFaultTheEmulatorCannotSpeakIsRefused)
         runCli({"emulate", "--link", dir.filePath("probe"), "--protocol", "text", "--fault", "frozen-sequence"});
     EXPECT_EQ(text.exitCode, 2);
     EXPECT_TRUE(text.err.contains(QStringLiteral("TSP/1"))) << text.err.toStdString();
+}
+
+TEST(MisbehavingProbe, ARateTheDeviceLiesAboutIsRefusedBeforeAnythingIsRecorded)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("probe");
+    QProcess emulator;
+    // INFO says 1 mHz; the probe streams 1 kHz. Before, 0 of 6000 samples
+    // were stored ("6000 lost") and the command exited 0.
+    ASSERT_TRUE(startEmulator(emulator, link, {"--scenario", "panel-scan", "--rate", "1000", "--info-rate", "0.001"}));
+    const auto result = runCli({"record", "--port", link, "--seconds", "3", "--db", dir.filePath("s.tactiscope")});
+    stopEmulator(emulator);
+    EXPECT_EQ(result.exitCode, 1) << result.out.toStdString();
+    EXPECT_TRUE(result.err.contains(QStringLiteral("says it samples at 0.001 Hz"))) << result.err.toStdString();
+    EXPECT_TRUE(result.err.contains(QStringLiteral("1000 Hz"))) << result.err.toStdString();
+    if (QFileInfo::exists(dir.filePath("s.tactiscope"))) {  // opened first, and nothing recorded into it
+        core::storage::SessionStore store(dir.filePath("s.tactiscope").toStdString(),
+                                          core::storage::Database::Access::ReadOnly);
+        EXPECT_TRUE(store.sessions().empty());
+    }
 }

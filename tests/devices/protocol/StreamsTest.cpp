@@ -214,3 +214,35 @@ TEST(TextStream, EstimatesTheRateFromTwoSecondsOfArrivals)
     ASSERT_FALSE(out.empty());
     EXPECT_EQ(out[0].value(0, 0), 0.0);  // held lines come out first, in order
 }
+
+TEST(BinaryStream, AnInfoRateItsOwnClockContradictsIsAProblem)
+{
+    BinaryStream stream;
+    StreamOutput out;
+    tenFrames(stream, out);  // INFO says 1 kHz, and the clock agrees
+    EXPECT_NEAR(*stream.clockRate_hz(), 1000.0, 1e-9);
+    EXPECT_FALSE(stream.rateProblem());
+
+    BinaryStream lying;
+    StreamOutput lies;
+    lying.push(info(), 0.0, lies);
+    // 4 samples every 2 ms: 2 kHz by the device's own clock, 100 % off.
+    for (std::uint16_t k = 0; k < 3; ++k) lying.push(data(k, 2000u * k, 0), 0.002 * (k + 1), lies);
+    ASSERT_TRUE(lying.rateProblem());
+    EXPECT_NE(lying.rateProblem()->find("says it samples at 1000 Hz"), std::string::npos) << *lying.rateProblem();
+    EXPECT_NE(lying.rateProblem()->find("2000 Hz"), std::string::npos) << *lying.rateProblem();
+}
+
+TEST(BinaryStream, AnEstimatedRateTheArrivalsContradictIsAProblem)
+{
+    BinaryStream stream;
+    StreamOutput out;
+    // No INFO; the first two frames are stamped 40 ms apart for 4 samples
+    // (an estimate of 100 Hz), but frames of 4 samples arrive every 4 ms,
+    // as a 1 kHz device's do, for 4 s.
+    stream.push(data(0, 0, 0), 0.004, out);
+    for (std::uint16_t k = 1; k < 1000; ++k) stream.push(data(k, 40000u * k, 0), 0.004 * (k + 1), out);
+    EXPECT_DOUBLE_EQ(*stream.sampleRate_hz(), 100.0);
+    ASSERT_TRUE(stream.rateProblem());
+    EXPECT_NE(stream.rateProblem()->find("arrive at about"), std::string::npos) << *stream.rateProblem();
+}
