@@ -2,6 +2,7 @@
 #include "devices/Acquisition.h"
 
 #include "core/SampleBlock.h"
+#include "devices/SteadyClock.h"
 
 #include <chrono>
 #include <exception>
@@ -12,11 +13,6 @@ namespace {
 
 // Bounds how long stop() can wait for a blocked read.
 constexpr std::chrono::milliseconds kReadTimeout{100};
-
-double steadySeconds()
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 }  // namespace
 
@@ -105,7 +101,9 @@ void Acquisition::run(const std::stop_token& stopToken)
         if (previousEnd) m_stats.samplesLost += block.samplesLostAfter(*previousEnd);
         m_stats.samples += block.sampleCount();
         ++m_stats.blocks;
-        m_rateMeter.observe(steadySeconds(), m_stats.samples);
+        const double now = steadySeconds();
+        m_rateMeter.observe(now, m_stats.samples);
+        m_stats.lastBlockHost_s = now;
         m_stats.measuredRate_hz = m_rateMeter.rate_hz();
         previousEnd = block.endSampleIndex();
     }

@@ -29,7 +29,8 @@ struct AcquisitionStats {
     std::uint64_t blocks = 0;
     std::uint64_t samplesLost = 0;  // from gaps in the device's sample index
     std::optional<double> measuredRate_hz;
-    std::string error;  // set when state is Failed
+    std::optional<double> lastBlockHost_s;  // steady clock, when the newest block came
+    std::string error;                      // set when state is Failed
 };
 
 class Acquisition {

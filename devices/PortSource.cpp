@@ -1,17 +1,11 @@
 // PortSource: handshake, reading and protocol dispatch.
 #include "devices/PortSource.h"
 
+#include "devices/SteadyClock.h"
+
 #include <cmath>
 
 namespace tactiscope::devices {
-namespace {
-
-double steadySeconds()
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-}  // namespace
 
 PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const PortSourceOptions& options)
     : m_transport(std::move(transport)),
@@ -146,7 +140,9 @@ ReadStatus PortSource::readBlock(core::SampleBlock& out, std::chrono::millisecon
     }
     if (m_queue.empty()) return ReadStatus::Timeout;
     if (m_queue.front().channelCount() != m_channels.size()) {
-        m_error = "the device changed its channels while streaming; reconnect it";
+        m_error = "the device changed its channels while streaming (" + std::to_string(m_channels.size()) + " to " +
+                  std::to_string(m_queue.front().channelCount()) + "); reconnect it by hand to record the new ones";
+        m_failedForGood = true;  // reopened, it would be another recording's device
         return ReadStatus::Failed;
     }
     out = std::move(m_queue.front());

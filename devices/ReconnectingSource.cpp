@@ -6,6 +6,7 @@
 #include "devices/transport/SerialPorts.h"
 
 #include <cmath>
+#include <cstdio>
 #include <thread>
 #include <utility>
 
@@ -43,7 +44,10 @@ bool ReconnectingSource::tryReconnect()
     try {
         auto source = m_opener();
         if (source->channels() != m_channels || source->nominalSampleRate_hz() != m_rate_hz) {
+            // Another device, for the record: what came before is kept, and
+            // nothing after is mixed into it.
             m_error = "the device came back with other channels or another rate; reconnect it by hand";
+            m_failedForGood = true;
             m_state = DeviceState::Lost;
             return false;
         }
@@ -53,6 +57,12 @@ bool ReconnectingSource::tryReconnect()
         // outage cost; time goes on from the host's clock.
         m_indexOffset = m_endIndex + static_cast<std::uint64_t>(std::llround(away_s * m_rate_hz));
         m_timeOffset_s = std::chrono::duration<double>(now - m_start).count();
+        {
+            const std::lock_guard lock(m_countersMutex);
+            char text[96];
+            std::snprintf(text, sizeof text, "the probe was away %.1f s and came back", away_s);
+            m_pastNotices.push_back({m_lostAtTime_s, text});
+        }
         replaceSource(std::move(source));
         m_state = DeviceState::Streaming;
         ++m_reconnections;
@@ -112,6 +122,7 @@ bool ReconnectingSource::textProtocol() const
 
 ReadStatus ReconnectingSource::readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout)
 {
+    if (m_failedForGood) return ReadStatus::Failed;
     if (!m_source) {
         const auto now = std::chrono::steady_clock::now();
         if (now < m_nextRetry) {
@@ -133,12 +144,14 @@ ReadStatus ReconnectingSource::readBlock(core::SampleBlock& out, std::chrono::mi
         replaceSource(nullptr);
         m_state = DeviceState::Lost;
         m_lostAt = std::chrono::steady_clock::now();
+        m_lostAtTime_s = m_lastEnd_s;
         m_nextRetry = m_lostAt + m_retryInterval;
         return ReadStatus::Timeout;
     }
     if (status != ReadStatus::Block) return status;
     out.rebase(m_timeOffset_s, m_indexOffset);
     m_endIndex = out.endSampleIndex();
+    m_lastEnd_s = out.endTime_s();
     return ReadStatus::Block;
 }
 

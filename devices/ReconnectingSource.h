@@ -76,6 +76,8 @@ private:
     std::chrono::steady_clock::time_point m_lostAt;
     std::chrono::steady_clock::time_point m_nextRetry;
     std::uint64_t m_endIndex = 0;              // one past the last sample delivered
+    double m_lastEnd_s = 0.0;                  // and its time, just after it
+    double m_lostAtTime_s = 0.0;               // the stream time the link was lost at
     double m_timeOffset_s = 0.0;               // added to the current connection's times
     std::uint64_t m_indexOffset = 0;           // added to its sample indices
     mutable std::mutex m_countersMutex;        // guards m_source's replacement and the sum below

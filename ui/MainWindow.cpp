@@ -389,6 +389,15 @@ void MainWindow::recordingEnded(const devices::session::RecordingSummary& summar
                              tr("The samples up to the stop are kept in session %1. Free space or choose another "
                                 "store, then record again.")
                                  .arg(summary.session)});
+    else if (summary.lostAt_s || !summary.stoppedBecause.empty())
+        reportProblem(this, {tr("Probe lost"),
+                             summary.lostAt_s ? tr("The probe was lost at %1 s and did not come back before the stop.")
+                                                    .arg(QLocale().toString(*summary.lostAt_s, 'f', 1))
+                                              : tr("The link to the probe failed during the recording."),
+                             QString::fromStdString(summary.stoppedBecause),
+                             tr("Session %1 keeps every sample up to the loss; the time after it is a gap with an "
+                                "alarm. Check the cable and the probe, then record again.")
+                                 .arg(summary.session)});
     else if (summary.verdict)
         askVerdict(this, m_store,
                    {summary.session, summary.end_s, static_cast<int>(summary.defects), *summary.verdict,

@@ -243,7 +243,8 @@ int runRecord(const QStringList& arguments)
 
     const auto& stored = summary->stats;
     QTextStream(stdout) << "Recorded session " << summary->session << ": " << stored.samplesWritten
-                        << " samples per channel, " << acquired.samplesLost + stored.samplesDropped << " lost, "
+                        << " samples per channel, "
+                        << acquired.samplesLost + stored.samplesDropped + summary->samplesLostAtEnd << " lost, "
                         << counters.crcErrors << " CRC errors (" << channels.size() << " channels at "
                         << QLocale::c().toString(rate_hz) << " Hz, into " << QString::fromStdString(db) << "); "
                         << analysisSummary(session, *summary) << "\n";
@@ -253,6 +254,12 @@ int runRecord(const QStringList& arguments)
     }
     if (acquired.state == devices::AcquisitionState::Failed) {
         printError(QString::fromStdString(acquired.error));
+        return kExitFailure;
+    }
+    if (summary->lostAt_s) {
+        printError(QStringLiteral("the probe was lost at %1 s and did not come back; %2 samples kept")
+                       .arg(QLocale::c().toString(*summary->lostAt_s, 'f', 1))
+                       .arg(stored.samplesWritten));
         return kExitFailure;
     }
     return kExitOk;

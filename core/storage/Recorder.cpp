@@ -3,6 +3,7 @@
 
 #include "core/SampleBlock.h"
 
+#include <cmath>
 #include <vector>
 
 namespace tactiscope::core::storage {
@@ -71,6 +72,13 @@ double Recorder::sessionTime_s() const
 {
     const std::lock_guard lock(m_mutex);
     return m_consumedEnd == 0 ? 0.0 : static_cast<double>(m_consumedEnd - 1) / m_sampleRate_hz;
+}
+
+void Recorder::markLostUntil(double sessionTime_s)
+{
+    const std::lock_guard lock(m_mutex);
+    const double end = std::ceil(sessionTime_s * m_sampleRate_hz);
+    if (end > static_cast<double>(m_consumedEnd)) m_consumedEnd = static_cast<std::uint64_t>(end);
 }
 
 double Recorder::sessionTimeOf(double acquisitionTime_s) const

@@ -56,6 +56,10 @@ public:
     void addEvents(std::vector<SessionEvent> events);
     // Readings (e.g. a press's stiffness), likewise; times on the session clock.
     void addReadings(std::vector<SessionReading> readings);
+    // Samples that should have come after the last one consumed, to a
+    // session time (a probe that went and did not come back): finish()
+    // records them as a gap at the session's end. Any thread.
+    void markLostUntil(double sessionTime_s);
     // The session time of the newest sample consumed (0 before the first).
     double sessionTime_s() const;
     // An acquisition time (a block's clock) on the session's clock.

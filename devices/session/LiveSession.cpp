@@ -10,9 +10,11 @@
 #include "core/detector/LiveDetection.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/RecordingTap.h"
+#include "devices/SteadyClock.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
@@ -127,9 +129,51 @@ std::optional<std::string> LiveSession::startRecording(const core::storage::Sess
     takePresses();
     m_defects.clear();
     m_presses.clear();
+    m_recordingStartHost_s = steadySeconds();
     recordStandingFaults();
     m_tap->attach(m_recorder);
     return std::nullopt;
+}
+
+// The probe's silence before the stop is part of the record: longer than
+// a second (or three of its blocks) means it was lost and did not come
+// back, so the samples to the stop are a gap, with an alarm; a link that
+// failed for good says why.
+void LiveSession::recordUnstoppedEnd(RecordingSummary& summary)
+{
+    const auto acquired = m_acquisition->stats();
+    const double rate_hz = source().nominalSampleRate_hz();
+    const double lastBlock_s =
+        std::max(acquired.lastBlockHost_s.value_or(m_recordingStartHost_s), m_recordingStartHost_s);
+    const double silence_s = steadySeconds() - lastBlock_s;
+    const double blockDuration_s =
+        acquired.blocks > 0 ? static_cast<double>(acquired.samples) / static_cast<double>(acquired.blocks) / rate_hz
+                            : 0.0;
+    std::vector<core::storage::SessionEvent> alarms;
+    if (acquired.state == AcquisitionState::Failed) {
+        summary.stoppedBecause = acquired.error;
+        core::storage::SessionEvent alarm;
+        alarm.kind = core::EventKind::Alarm;
+        alarm.start_s = alarm.end_s = m_recorder->sessionTime_s();
+        alarm.note = "the link failed: " + acquired.error;
+        alarms.push_back(alarm);
+    }
+    if (silence_s > std::max(1.0, 3.0 * blockDuration_s)) {
+        const double lostAt_s = m_recorder->sessionTime_s();
+        summary.lostAt_s = lostAt_s;
+        summary.samplesLostAtEnd = static_cast<std::uint64_t>(std::llround(silence_s * rate_hz));
+        m_recorder->markLostUntil(lostAt_s + silence_s);
+        char text[128];
+        std::snprintf(text, sizeof text, "the probe was lost at %.1f s and did not come back: %.1f s without samples",
+                      lostAt_s, silence_s);
+        core::storage::SessionEvent alarm;
+        alarm.kind = core::EventKind::Alarm;
+        alarm.start_s = lostAt_s;
+        alarm.end_s = lostAt_s + silence_s;
+        alarm.note = text;
+        alarms.push_back(alarm);
+    }
+    if (!alarms.empty()) m_recorder->addEvents(std::move(alarms));
 }
 
 // A device that contradicted itself before the record press still does:
@@ -161,10 +205,14 @@ RecordingSummary LiveSession::finishRecording()
     takePresses();
     takeNotices();
     RecordingSummary summary;
+    recordUnstoppedEnd(summary);
     summary.session = m_recorder->sessionId();
     summary.end_s = m_recorder->sessionTime_s();
     summary.defects = m_defects.size();
-    if (m_metadata.mode == core::Mode::PanelScan) summary.verdict = automaticVerdict();
+    // A panel the probe left before the stop was not wholly inspected: no
+    // automatic verdict says it passed.
+    const bool whole = !summary.lostAt_s && summary.stoppedBecause.empty();
+    if (m_metadata.mode == core::Mode::PanelScan && whole) summary.verdict = automaticVerdict();
     summary.stats = m_recorder->finish(core::SessionStatus::Complete, summary.verdict);
     if (!summary.stats.error.empty()) summary.verdict.reset();  // the session ended interrupted
     m_recorder.reset();

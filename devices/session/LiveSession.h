@@ -83,6 +83,12 @@ struct RecordingSummary {
     std::optional<core::Verdict> verdict;  // stored with the session (panel scan)
     std::size_t defects = 0;               // of this recording's panel
     double end_s = 0.0;                    // session time of the last sample
+    // An end that was not a stop: the probe went silent (lost, and not back
+    // by the stop) at lostAt_s, and the samples to the stop are a gap;
+    // or the link failed for good (why, in stoppedBecause).
+    std::optional<double> lostAt_s;
+    std::uint64_t samplesLostAtEnd = 0;
+    std::string stoppedBecause;
 };
 
 class LiveSession {
@@ -173,6 +179,7 @@ private:
     void takePresses();
     void takeNotices();
     void recordStandingFaults();
+    void recordUnstoppedEnd(RecordingSummary& summary);
     std::uint64_t recorderQueueBound(double rate_hz, std::size_t channels) const;
     RecordingSummary finishRecording();
 
@@ -193,6 +200,7 @@ private:
     std::string m_site;
     std::vector<std::string> m_problems;
     std::vector<LinkNotice> m_linkNotices;
+    double m_recordingStartHost_s = 0.0;  // steady clock
 };
 
 }  // namespace tactiscope::devices::session

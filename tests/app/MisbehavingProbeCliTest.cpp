@@ -144,3 +144,73 @@ TEST(MisbehavingProbe, ARateTheDeviceLiesAboutIsRefusedBeforeAnythingIsRecorded)
         EXPECT_TRUE(store.sessions().empty());
     }
 }
+
+TEST(MisbehavingProbe, AProbeLostForGoodIsAGapToTheStopAnAlarmAndExitOne)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("probe");
+    QProcess emulator;
+    // The probe streams 1.5 s, hangs up and never comes back; the recording
+    // runs 4 s. Before: exit 0, "0 lost", no gap, the missing time nowhere.
+    ASSERT_TRUE(startEmulator(emulator, link, {"--scenario", "panel-scan", "--rate", "1000", "--seconds", "1.5"}));
+    const auto result = runCli({"record", "--port", link, "--seconds", "4", "--db", dir.filePath("s.tactiscope")});
+    stopEmulator(emulator);
+    EXPECT_EQ(result.exitCode, 1) << result.out.toStdString();
+    EXPECT_TRUE(result.err.contains(QStringLiteral("the probe was lost at 1.")) &&
+                result.err.contains(QStringLiteral("and did not come back;")) &&
+                result.err.contains(QStringLiteral("samples kept")))
+        << result.err.toStdString();
+    const std::int64_t id = sessionIdIn(result.out);
+    ASSERT_GT(id, 0) << result.out.toStdString();
+
+    core::storage::SessionStore store(dir.filePath("s.tactiscope").toStdString(),
+                                      core::storage::Database::Access::ReadOnly);
+    const auto session = store.session(id);
+    ASSERT_TRUE(session);
+    EXPECT_FALSE(session->verdict);  // a panel left half-inspected passes nothing
+    const auto gaps = store.gaps(id);
+    ASSERT_FALSE(gaps.empty());
+    const auto& tail = gaps.back();
+    EXPECT_EQ(tail.firstIndex + tail.count, store.sampleCount(id));  // open to the session's end
+    EXPECT_GE(tail.count, 2000u);                                    // of the 4 s, 1.5 s were streamed
+    EXPECT_NEAR(static_cast<double>(tail.firstIndex), 1500.0, 200.0);
+    const auto lost = alarms(store, id);
+    ASSERT_EQ(lost.size(), 1u);
+    EXPECT_NE(lost[0].note.find("did not come back"), std::string::npos) << lost[0].note;
+    EXPECT_NEAR(lost[0].start_s, static_cast<double>(tail.firstIndex) / 1000.0, 0.01);
+}
+
+TEST(MisbehavingProbe, AProbeThatComesBackChangedEndsTheRecordingWithWhatCameBefore)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("probe");
+    QProcess first;
+    ASSERT_TRUE(startEmulator(first, link, {"--scenario", "panel-scan", "--rate", "1000", "--seconds", "1"}));
+    QProcess record;
+    record.start(QStringLiteral(TACTISCOPE_CLI),
+                 {"record", "--port", link, "--seconds", "6", "--db", dir.filePath("s.tactiscope")});
+    ASSERT_TRUE(record.waitForStarted());
+    ASSERT_TRUE(first.waitForFinished(10000));  // hung up after its second
+    // Back on the same port at another rate: another device, for the record.
+    QProcess second;
+    ASSERT_TRUE(startEmulator(second, link, {"--scenario", "panel-scan", "--rate", "500"}));
+    ASSERT_TRUE(record.waitForFinished(20000));
+    stopEmulator(second);
+    const QString out = QString::fromUtf8(record.readAllStandardOutput());
+    const QString err = QString::fromUtf8(record.readAllStandardError());
+    EXPECT_EQ(record.exitCode(), 1) << out.toStdString();
+    EXPECT_TRUE(err.contains(QStringLiteral("came back with other channels or another rate"))) << err.toStdString();
+    const std::int64_t id = sessionIdIn(out);
+    ASSERT_GT(id, 0) << out.toStdString();
+
+    core::storage::SessionStore store(dir.filePath("s.tactiscope").toStdString(),
+                                      core::storage::Database::Access::ReadOnly);
+    EXPECT_DOUBLE_EQ(store.channels(id)[0].sampleRate_hz, 1000.0);  // nothing of the 500 Hz device mixed in
+    std::uint64_t kept = 0;
+    for (const auto& gap : store.gaps(id)) kept += gap.count;
+    kept = store.sampleCount(id) - kept;
+    EXPECT_NEAR(static_cast<double>(kept), 1000.0, 150.0);  // the first device's second
+    const auto told = alarms(store, id);
+    ASSERT_FALSE(told.empty());
+    EXPECT_NE(told.front().note.find("another rate"), std::string::npos) << told.front().note;
+}
