@@ -72,6 +72,9 @@ public:
     virtual std::vector<std::uint8_t> recentBytes() const { return {}; }
     // Whether the wire carries text lines (else binary frames).
     virtual bool textProtocol() const { return false; }
+    // How the rate was found when it is not the device's own word (a text
+    // device's estimate), for the record; none otherwise.
+    virtual std::optional<std::string> rateNote() const { return std::nullopt; }
 };
 
 }  // namespace tactiscope::devices

@@ -4,6 +4,7 @@
 #include "devices/SteadyClock.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace tactiscope::devices {
 
@@ -11,6 +12,7 @@ PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const Po
     : m_transport(std::move(transport)),
       m_options(options)
 {
+    discardWaiting();
     if (options.protocol == WireProtocol::Text) {
         m_text.emplace(options.textRate_hz);
     } else {
@@ -64,6 +66,28 @@ DeviceIdentity PortSource::identity() const
     if (const auto info = deviceInfo())
         return {info->vendor + " " + info->model, info->serialNumber, info->firmwareVersion};
     return {m_transport->description(), {}, {}};
+}
+
+// What waits in the port when it opens was sent before this connection
+// (by a device left streaming): it belongs to no session and would give the
+// text rate estimate a burst. Read away for at most 50 ms, since a device
+// that streams on keeps the port from ever being empty.
+void PortSource::discardWaiting()
+{
+    const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(50);
+    while (std::chrono::steady_clock::now() < until && m_transport->read(m_chunk, std::chrono::milliseconds(1)) > 0) {
+    }
+}
+
+std::optional<std::string> PortSource::rateNote() const
+{
+    if (!m_text || m_options.textRate_hz) return std::nullopt;
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "the sample rate, %.6g Hz, was estimated from the arrival times of the first %.0f s: a text device "
+                  "sends no clock, so every time in this recording rests on it",
+                  m_rate_hz, protocol::TextStream::kEstimationWindow_s);
+    return text;
 }
 
 // A TSP/1 device's INFO rate is checked against its clock before anyone

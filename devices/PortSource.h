@@ -50,6 +50,7 @@ public:
     std::vector<LinkNotice> takeNotices() override;
     std::vector<std::uint8_t> recentBytes() const override;
     bool textProtocol() const override { return m_text.has_value(); }
+    std::optional<std::string> rateNote() const override;
     std::optional<protocol::DeviceInfo> deviceInfo() const;
     // Host steady-clock time (seconds) of a block time, drift-corrected
     // (ClockSync.h). Block times count the device's clock (binary) or
@@ -60,6 +61,7 @@ public:
 private:
     void sendCommand(protocol::CommandCode code, std::uint32_t argument = 0);
     bool rateConfirmed(std::chrono::steady_clock::time_point deadline) const;
+    void discardWaiting();
     // Reads one chunk into the stream; queues blocks. Throws TransportError.
     void pump(std::chrono::milliseconds timeout);
     bool layoutKnown() const;

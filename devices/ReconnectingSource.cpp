@@ -34,6 +34,7 @@ ReconnectingSource::ReconnectingSource(Opener opener, std::chrono::milliseconds 
       m_declaredMode(m_source->declaredMode()),
       m_channels(m_source->channels()),
       m_rate_hz(m_source->nominalSampleRate_hz()),
+      m_rateNote(m_source->rateNote()),
       m_start(std::chrono::steady_clock::now())
 {
 }

@@ -51,6 +51,7 @@ public:
     // Of the current connection.
     std::vector<std::uint8_t> recentBytes() const override;
     bool textProtocol() const override;
+    std::optional<std::string> rateNote() const override { return m_rateNote; }
 
     DeviceState state() const { return m_state; }  // any thread
     std::uint64_t reconnections() const { return m_reconnections; }
@@ -68,6 +69,7 @@ private:
     std::optional<core::Mode> m_declaredMode;
     std::vector<core::ChannelDescriptor> m_channels;
     double m_rate_hz = 0.0;
+    std::optional<std::string> m_rateNote;  // the first connection's: the rate kept
     std::string m_error;
     bool m_failedForGood = false;
     std::atomic<DeviceState> m_state = DeviceState::Streaming;

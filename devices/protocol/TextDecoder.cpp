@@ -12,6 +12,8 @@ void TextDecoder::reset()
     m_overlong = false;
     m_names.clear();
     m_labels.clear();
+    m_candidate.reset();
+    m_candidateLabels.clear();
     m_counters = {};
 }
 
@@ -20,9 +22,10 @@ void TextDecoder::push(std::span<const std::uint8_t> bytes, double hostTime_s, s
     m_counters.bytes += bytes.size();
     for (const std::uint8_t byte : bytes) {
         if (byte == '\n') {
-            if (m_overlong)
+            if (m_overlong) {
                 ++m_counters.linesSkipped;
-            else
+                if (!m_labels.empty()) out.push_back({hostTime_s, {}});  // a hole, as any unreadable line
+            } else
                 parseLine(hostTime_s, out);
             m_line.clear();
             m_overlong = false;
@@ -66,16 +69,31 @@ void TextDecoder::parseLine(double hostTime_s, std::vector<TextSample>& out)
         i = end;
     }
     if (empty) return;
-    if (!ok) {
-        ++m_counters.linesSkipped;
-        return;
-    }
     if (m_labels.empty()) {
+        // The layout is fixed by two consecutive lines that agree: a port
+        // opened mid-line starts with a fragment, which must not decide it.
+        if (!ok || !m_candidate || m_candidateLabels != labels) {
+            if (m_candidate) ++m_counters.linesSkipped;
+            m_candidate.reset();
+            if (ok) {
+                m_candidate = std::move(sample);
+                m_candidateLabels = std::move(labels);
+            } else {
+                ++m_counters.linesSkipped;
+            }
+            return;
+        }
         m_labels = labels;
         for (std::size_t c = 0; c < labels.size(); ++c)
             m_names.push_back(labels[c].empty() ? "ch" + std::to_string(c + 1) : labels[c]);
-    } else if (labels != m_labels) {
+        ++m_counters.frames;
+        out.push_back(std::move(*m_candidate));
+        m_candidate.reset();
+    } else if (!ok || labels != m_labels) {
+        // A sample was sent here and cannot be read: a hole, so that the
+        // samples after it keep their time.
         ++m_counters.linesSkipped;
+        out.push_back({hostTime_s, {}});
         return;
     }
     ++m_counters.frames;

@@ -2,15 +2,19 @@
 // Plotter: one sample per line, values separated by commas, spaces or tabs,
 // optionally as label:value pairs, ended by \n or \r\n.
 //
-// The first line that parses fixes the channels: their names come from the
-// labels, else ch1…chN. A later line with another number of values or other
-// labels, a value that is not a finite number, or a line longer than
-// kMaxLine is skipped and counted, never fatal. Empty lines are ignored.
+// The first two consecutive lines that parse alike fix the channels (a port
+// opened mid-line begins with a fragment): their names come from the
+// labels, else ch1…chN. After that, a line with another number of values or
+// other labels, or a value that is not a finite number, is counted and
+// comes out as a sample without values (a hole: the sample was sent and is
+// lost, and the ones after it keep their time); a line longer than kMaxLine
+// is skipped and counted. Empty lines are ignored.
 #pragma once
 
 #include "devices/protocol/DecoderCounters.h"
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -18,8 +22,8 @@
 namespace tactiscope::devices::protocol {
 
 struct TextSample {
-    double hostTime_s = 0.0;  // when the chunk holding the line's end arrived
-    std::vector<double> values;
+    double hostTime_s = 0.0;     // when the chunk holding the line's end arrived
+    std::vector<double> values;  // empty: a line that could not be read
 };
 
 class TextDecoder {
@@ -38,7 +42,9 @@ private:
     std::string m_line;
     bool m_overlong = false;
     std::vector<std::string> m_names;
-    std::vector<std::string> m_labels;  // as they appeared ("" when unlabelled)
+    std::vector<std::string> m_labels;      // as they appeared ("" when unlabelled)
+    std::optional<TextSample> m_candidate;  // the first line, until the next one agrees
+    std::vector<std::string> m_candidateLabels;
     DecoderCounters m_counters;
 };
 

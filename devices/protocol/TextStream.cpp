@@ -1,6 +1,7 @@
 // TextStream: line samples into uniformly spaced blocks.
 #include "devices/protocol/TextStream.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace tactiscope::devices::protocol {
@@ -24,9 +25,16 @@ void TextStream::push(std::span<const std::uint8_t> bytes, double hostTime_s, st
     m_decoder.push(bytes, hostTime_s, m_scratch);
     if (!m_rate_hz) {
         m_held.insert(m_held.end(), m_scratch.begin(), m_scratch.end());
-        if (m_held.size() < 3 || m_held.back().hostTime_s - m_held.front().hostTime_s < kEstimationWindow_s) return;
-        // Lines arrive in bursts (USB packets); over 2 s the count is what matters.
-        m_rate_hz = static_cast<double>(m_held.size() - 1) / (m_held.back().hostTime_s - m_held.front().hostTime_s);
+        if (m_held.empty()) return;
+        const double first_s = m_held.front().hostTime_s;
+        const double span_s = m_held.back().hostTime_s - first_s;
+        if (span_s < kEstimationWindow_s) return;
+        // Lines arrive in bursts (USB packets); over 2 s the count is what
+        // matters, of the lines that came after the first read.
+        const auto later = std::count_if(m_held.begin(), m_held.end(),
+                                         [first_s](const TextSample& s) { return s.hostTime_s > first_s; });
+        if (later < 2) return;
+        m_rate_hz = static_cast<double>(later) / span_s;
         publish(m_held, out);
         m_held.clear();
         return;
@@ -34,18 +42,37 @@ void TextStream::push(std::span<const std::uint8_t> bytes, double hostTime_s, st
     publish(m_scratch, out);
 }
 
+DecoderCounters TextStream::counters() const
+{
+    DecoderCounters counters = m_decoder.counters();
+    counters.samplesLost = m_samplesLost;
+    return counters;
+}
+
+// One block per run of readable lines; each unreadable line between runs
+// moves the index on by one.
 void TextStream::publish(std::vector<TextSample>& samples, std::vector<core::SampleBlock>& out)
 {
-    if (samples.empty()) return;
-    const std::size_t channels = samples.front().values.size();
     const double dt = 1.0 / *m_rate_hz;
-    core::SampleBlock block(channels, samples.size(), static_cast<double>(m_nextSampleIndex) * dt, dt,
-                            m_nextSampleIndex, m_blockSequence++);
-    for (std::size_t s = 0; s < samples.size(); ++s) {
-        for (std::size_t c = 0; c < channels; ++c) block.channel(c)[s] = samples[s].values[c];
+    std::size_t s = 0;
+    while (s < samples.size()) {
+        if (samples[s].values.empty()) {
+            ++m_samplesLost;
+            ++m_nextSampleIndex;
+            ++s;
+            continue;
+        }
+        std::size_t end = s;
+        while (end < samples.size() && !samples[end].values.empty()) ++end;
+        const std::size_t channels = samples[s].values.size();
+        core::SampleBlock block(channels, end - s, static_cast<double>(m_nextSampleIndex) * dt, dt, m_nextSampleIndex,
+                                m_blockSequence++);
+        for (std::size_t i = s; i < end; ++i)
+            for (std::size_t c = 0; c < channels; ++c) block.channel(c)[i - s] = samples[i].values[c];
+        m_nextSampleIndex += end - s;
+        out.push_back(std::move(block));
+        s = end;
     }
-    m_nextSampleIndex += samples.size();
-    out.push_back(std::move(block));
 }
 
 }  // namespace tactiscope::devices::protocol

@@ -1,7 +1,10 @@
 // Serial-Plotter text → SampleBlocks. Text carries no timing: the sample
 // rate is the one given, or (none given) estimated from the arrival times of
-// the lines of the first 2 s, which are held back until then. Each block
-// holds the lines of one read.
+// the lines of the first 2 s, which are held back until then. The lines of
+// the first read are not counted in the estimate (they may have waited in
+// the port for any time); the lines after it over the time they took are.
+// Each block holds the lines of one read; a line that could not be read is
+// a lost sample (a gap of one), so the lines after it keep their time.
 #pragma once
 
 #include "core/ChannelDescriptor.h"
@@ -24,7 +27,7 @@ public:
 
     std::optional<double> sampleRate_hz() const { return m_rate_hz; }
     std::vector<core::ChannelDescriptor> channels() const;
-    const DecoderCounters& counters() const { return m_decoder.counters(); }
+    DecoderCounters counters() const;
 
     static constexpr double kEstimationWindow_s = 2.0;
 
@@ -36,6 +39,7 @@ private:
     std::vector<TextSample> m_held;  // until the rate is known
     std::vector<TextSample> m_scratch;
     std::uint64_t m_nextSampleIndex = 0;
+    std::uint64_t m_samplesLost = 0;
     std::uint32_t m_blockSequence = 0;
 };
 

@@ -107,6 +107,29 @@ TEST(EmulatorPort, TextProtocolWithAGivenRate)
     EXPECT_EQ(source->decoderCounters().linesSkipped, 0u);
 }
 
+TEST(EmulatorPort, ATextProbeOpenedMidStreamIsTimedByWhatArrivesAfterwards)
+{
+    // A text probe streams from power-up: by the time the port is opened,
+    // old lines fill its buffer, the last one cut mid-line. Before, the rate
+    // was estimated at 1162 to 2312 Hz for this 1000 Hz probe (the waiting
+    // lines counted as arrivals), or the fragment fixed the column count.
+    const std::string link = uniqueTempPath("text-waiting");
+    EmulatorOptions options;
+    options.linkPath = link;
+    options.protocol = WireProtocol::Text;
+    options.scenario = "panel-scan";
+    options.rate_hz = 1000.0;
+    options.samplesPerFrame = 7;  // lines come in odd bursts, so an opening cuts one
+    ProbeEmulator emulator(options);
+    emulator.start();
+    std::this_thread::sleep_for(std::chrono::seconds(1));
+    auto source = connect(link, WireProtocol::Text);
+    EXPECT_EQ(source->channels().size(), 2u);
+    EXPECT_NEAR(source->nominalSampleRate_hz(), 1000.0, 30.0);
+    ASSERT_TRUE(source->rateNote());
+    EXPECT_NE(source->rateNote()->find("estimated"), std::string::npos);
+}
+
 TEST(EmulatorPort, InjectedGarbageIsCountedAndNoGoodFrameIsLost)
 {
     const std::string link = uniqueTempPath("garbage");

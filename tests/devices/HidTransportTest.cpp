@@ -26,9 +26,11 @@ public:
     {
     }
     std::string description() const override { return "recorded HID reports"; }
+    // Like TSP/1 firmware, it answers once the host has spoken (request
+    // info, start): a host reads away what waited before it did.
     std::optional<std::vector<std::uint8_t>> readReport(std::chrono::milliseconds) override
     {
-        if (m_reports.empty()) return std::nullopt;
+        if (m_reports.empty() || m_written->empty()) return std::nullopt;
         auto report = std::move(m_reports.front());
         m_reports.pop_front();
         return report;

@@ -11,6 +11,7 @@
 #include <fcntl.h>
 #include <stdlib.h>
 #include <string_view>
+#include <thread>
 #include <unistd.h>
 
 using namespace tactiscope;
@@ -37,10 +38,16 @@ std::pair<std::unique_ptr<PortSource>, std::vector<double>> readText(std::string
     const int master = openPtyMaster(slave);
     EXPECT_GE(master, 0);
     auto transport = std::make_unique<devices::transport::PosixSerialTransport>(slave, 115200);
-    EXPECT_EQ(::write(master, text.data(), text.size()), static_cast<ssize_t>(text.size()));
+    // The board prints once the port is open (what waits before is read
+    // away as another session's).
+    std::jthread board([master, text] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        EXPECT_EQ(::write(master, text.data(), text.size()), static_cast<ssize_t>(text.size()));
+    });
     auto source = std::make_unique<PortSource>(
         std::move(transport),
         devices::PortSourceOptions{devices::WireProtocol::Text, 100.0, std::chrono::milliseconds(3000), std::nullopt});
+    board.join();
     std::vector<double> values;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
     while (values.size() < samples && std::chrono::steady_clock::now() < deadline) {

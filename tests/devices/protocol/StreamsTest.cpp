@@ -246,3 +246,40 @@ TEST(BinaryStream, AnEstimatedRateTheArrivalsContradictIsAProblem)
     ASSERT_TRUE(stream.rateProblem());
     EXPECT_NE(stream.rateProblem()->find("arrive at about"), std::string::npos) << *stream.rateProblem();
 }
+
+namespace {
+
+void pushText(TextStream& stream, const std::string& text, double hostTime_s,
+              std::vector<tactiscope::core::SampleBlock>& out)
+{
+    stream.push(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()), hostTime_s, out);
+}
+
+}  // namespace
+
+TEST(TextStream, LinesThatWaitedInThePortDoNotCountInTheRate)
+{
+    TextStream stream;
+    std::vector<tactiscope::core::SampleBlock> out;
+    // The first read brings 1000 lines that waited; then 100 lines per
+    // second in bursts of five. Counting the first read too gives 600 Hz.
+    std::string waited;
+    for (int i = 0; i < 1000; ++i) waited += "1,2\n";
+    pushText(stream, waited, 0.0, out);
+    for (int burst = 1; burst <= 41; ++burst) pushText(stream, "3,4\n3,4\n3,4\n3,4\n3,4\n", burst * 0.05, out);
+    ASSERT_TRUE(stream.sampleRate_hz());
+    EXPECT_DOUBLE_EQ(*stream.sampleRate_hz(), 100.0);  // 200 lines after the first read, over 2 s
+}
+
+TEST(TextStream, AnUnreadableLineIsALostSampleAndTheRestKeepTheirTime)
+{
+    TextStream stream(100.0);
+    std::vector<tactiscope::core::SampleBlock> out;
+    pushText(stream, "1,2\n3,4\n5,#\n7,8\n", 0.0, out);
+    ASSERT_EQ(out.size(), 2u);
+    EXPECT_EQ(out[1].firstSampleIndex(), 3u);  // "7,8" is the fourth sample sent
+    EXPECT_DOUBLE_EQ(out[1].t0_s(), 0.03);
+    EXPECT_EQ(out[1].samplesLostAfter(out[0].endSampleIndex()), 1u);
+    EXPECT_EQ(stream.counters().samplesLost, 1u);
+    EXPECT_EQ(stream.counters().linesSkipped, 1u);
+}

@@ -37,14 +37,30 @@ TEST(TextDecoder, NamesChannelsFromLabels)
     EXPECT_EQ(out[0].values[1], -32.5);
 }
 
-TEST(TextDecoder, SkipsAndCountsLinesThatDoNotParse)
+TEST(TextDecoder, LinesThatDoNotParseAreCountedHolesOnceTheChannelsAreKnown)
 {
     TextDecoder decoder;
     const std::string longLine(TextDecoder::kMaxLine + 10, '1');
-    const auto out = decode(decoder, "1,2\nhello,3\n4\n5,6,7\n\n\r\n" + longLine + "\n1,inf\n8,9\n");
-    ASSERT_EQ(out.size(), 2u);                       // "1,2" and "8,9"
-    EXPECT_EQ(decoder.counters().linesSkipped, 5u);  // word, too few, too many, overlong, inf
-    EXPECT_EQ(decoder.counters().frames, 2u);
+    const auto out = decode(decoder, "1,2\n3,4\nhello,3\n4\n5,6,7\n\n\r\n" + longLine + "\n1,inf\n8,9\n");
+    // "1,2", "3,4", five holes (word, too few, too many, overlong, inf), "8,9";
+    // the empty lines are nothing.
+    ASSERT_EQ(out.size(), 8u);
+    EXPECT_EQ(out[1].values, (std::vector<double>{3, 4}));
+    for (std::size_t i = 2; i < 7; ++i) EXPECT_TRUE(out[i].values.empty()) << i;
+    EXPECT_EQ(out[7].values, (std::vector<double>{8, 9}));
+    EXPECT_EQ(decoder.counters().linesSkipped, 5u);
+    EXPECT_EQ(decoder.counters().frames, 3u);
+}
+
+TEST(TextDecoder, AFragmentFirstDoesNotFixTheChannels)
+{
+    // The port opened in the middle of "1.25,2.5": only "2.5" arrived whole.
+    TextDecoder decoder;
+    const auto out = decode(decoder, "2.5\n3,4\n5,6\n7,8\n");
+    ASSERT_EQ(out.size(), 3u);  // before: one channel, and every later line skipped
+    EXPECT_EQ(decoder.channelNames(), (std::vector<std::string>{"ch1", "ch2"}));
+    EXPECT_EQ(out[0].values, (std::vector<double>{3, 4}));
+    EXPECT_EQ(decoder.counters().linesSkipped, 1u);
 }
 
 TEST(TextDecoder, LinesSplitAcrossChunksKeepTheTimeOfTheirEnd)
