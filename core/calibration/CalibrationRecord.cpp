@@ -1,6 +1,7 @@
 // CalibrationRecord lookup and JSON form.
 #include "core/calibration/CalibrationRecord.h"
 
+#include "core/JsonText.h"
 #include "core/text/JsonWriter.h"
 
 #include <nlohmann/json.hpp>
@@ -48,7 +49,7 @@ std::string CalibrationRecord::toJson() const
 CalibrationRecord CalibrationRecord::fromJson(std::string_view text)
 {
     try {
-        const auto json = nlohmann::ordered_json::parse(text);  // keeps the values' order
+        const auto json = parseOrderedJsonText(text, "calibration record");  // keeps the values' order
         CalibrationRecord record;
         record.kind = json.at("kind").get<std::string>();
         record.sensorName = json.at("sensor").get<std::string>();
@@ -66,6 +67,8 @@ CalibrationRecord CalibrationRecord::fromJson(std::string_view text)
         record.fit.residuals = fit.at("residuals").get<std::vector<double>>();
         return record;
     } catch (const nlohmann::ordered_json::exception& e) {
+        throw std::invalid_argument(std::string("not a calibration record: ") + e.what());
+    } catch (const JsonTextError& e) {
         throw std::invalid_argument(std::string("not a calibration record: ") + e.what());
     }
 }

@@ -1,6 +1,8 @@
 // Reference tissue table: loading and placing a reading.
 #include "core/compliance/ReferenceTissues.h"
 
+#include "core/JsonText.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -15,9 +17,9 @@ std::vector<ReferenceTissue> parseReferenceTissues(std::string_view text, const 
     using Json = nlohmann::json;
     Json json;
     try {
-        json = Json::parse(text);
-    } catch (const Json::parse_error& e) {
-        throw ReferenceTissueError(source + ": not valid JSON (" + e.what() + ")");
+        json = parseJsonText(text, source);
+    } catch (const JsonTextError& e) {
+        throw ReferenceTissueError(e.what());
     }
     if (!json.is_object() || !json.contains("tissues") || !json["tissues"].is_array())
         throw ReferenceTissueError(source + ": tissues: missing or not a list");

@@ -1,6 +1,7 @@
 // Sensor profile JSON: parsing with key-level errors, and writing.
 #include "core/sensors/SensorProfile.h"
 
+#include "core/JsonText.h"
 #include "core/sensors/CompliancePair.h"
 
 #include <nlohmann/json.hpp>
@@ -142,9 +143,9 @@ SensorProfile parseSensorProfile(std::string_view text, const std::string& sourc
 {
     Json json;
     try {
-        json = Json::parse(text);
-    } catch (const Json::parse_error& e) {
-        throw ProfileError(source + ": not valid JSON (" + e.what() + ")");
+        json = parseJsonText(text, source);
+    } catch (const JsonTextError& e) {
+        throw ProfileError(e.what());
     }
     ObjectReader reader(json, source, "");
     const std::string kind = reader.string("kind");

@@ -149,3 +149,26 @@ TEST_F(ComplianceCli, BadProfilesAndReadingsExitWithCodeTwo)
             << first.toStdString() << " lacks " << message.toStdString();
     }
 }
+
+TEST_F(ComplianceCli, ANumberBeyondADoubleIsAnErrorNamingItsKeyNotAnAbort)
+{
+    // Before, nlohmann's overflow error escaped: `model` and `compliance`
+    // died of an uncaught exception (issue 19).
+    QString pair = kPairProfile;
+    pair.replace(QStringLiteral("\"length_m\": 0.05, \"width_m\": 0.01, \"thickness_m\": 0.003"),
+                 QStringLiteral("\"length_m\": 1e400, \"width_m\": 0.01, \"thickness_m\": 0.003"));
+    write("overflow.json", pair);
+    const CliResult model = runCli({"model", path("overflow.json")});
+    EXPECT_EQ(model.exitCode, 2);
+    EXPECT_TRUE(model.err.contains(QStringLiteral("overflow.json: high.length_m: number overflow parsing '1e400'")))
+        << model.err.toStdString();
+
+    write("press.csv", pressReadings(127.0));
+    write("tissues.json", R"({"tissues": [{"name": "a", "stiffness_n_per_m": 40}, {"name": "b",
+        "stiffness_n_per_m": 4e400}]})");
+    const CliResult compliance =
+        runCli({"compliance", path("pair.json"), path("press.csv"), "--tissues", path("tissues.json")});
+    EXPECT_EQ(compliance.exitCode, 2);
+    EXPECT_TRUE(compliance.err.contains(QStringLiteral("tissues[1].stiffness_n_per_m: number overflow")))
+        << compliance.err.toStdString();
+}

@@ -139,6 +139,22 @@ TEST_F(SensorProfileDialogTest, ListsTheBuiltInProbeThenTheLibraryOfTheModeAndMa
     tactiscope::testing::saveScreenshot(dialog, QStringLiteral("profile-dialog"));
 }
 
+TEST_F(SensorProfileDialogTest, AFileWithANumberBeyondADoubleIsListedWithItsProblem)
+{
+    // Before, opening the dialog with this file in the library aborted the
+    // program, every time (issue 19).
+    QString overflow = kThickerPair;
+    overflow.replace(QStringLiteral("\"length_m\": 0.04"), QStringLiteral("\"length_m\": 1e400"));
+    libraryFile(QStringLiteral("overflow.json"), overflow);
+    ui::SensorProfileDialog dialog(m_library.path());
+    dialog.setMode(QStringLiteral("palpation"));
+    EXPECT_TRUE(listed(dialog).contains(QStringLiteral("overflow.json")));
+    dialog.selectPath(m_library.filePath(QStringLiteral("overflow.json")));
+    EXPECT_TRUE(text(dialog, "problemLabel").contains(QStringLiteral("number overflow parsing '1e400'")))
+        << text(dialog, "problemLabel").toStdString();
+    EXPECT_FALSE(enabled(dialog, "useButton"));
+}
+
 TEST_F(SensorProfileDialogTest, ShowsTheFieldsInTheUnitsTheyAreMeasuredInWithWhatTheyComeTo)
 {
     ui::SensorProfileDialog dialog(m_library.path());
