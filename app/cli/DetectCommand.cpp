@@ -7,6 +7,8 @@
 #include "core/detector/PartialCorrelationKernel.h"
 #include "core/io/CsvColumns.h"
 #include "core/io/UniformTimeBase.h"
+#include "core/storage/Database.h"
+#include "core/storage/SafeOutput.h"
 #include "core/text/JsonWriter.h"
 #include "core/text/NumberFormat.h"
 
@@ -102,6 +104,12 @@ int runDetect(const QStringList& arguments)
 
     DetectOptions options;
     if (const auto error = readOptions(parser, options)) return usageError(*error, usage);
+    try {
+        if (!options.output.isEmpty())
+            core::storage::refuseOverwriting(options.output.toStdString(), {options.input.toStdString()});
+    } catch (const core::storage::StorageError& e) {
+        return usageError(QString::fromStdString(e.what()), usage);
+    }
 
     core::io::CsvColumns csv;
     try {
@@ -137,12 +145,11 @@ int runDetect(const QStringList& arguments)
     const auto events = core::detector::segmentEvents(outputs, dt, options.detector.hold_s, options.detector.spacing_m);
 
     if (!options.output.isEmpty()) {
-        std::ofstream file(options.output.toStdString(), std::ios::binary | std::ios::trunc);
-        if (file) writeOutputCsv(file, t, outputs, dt);
-        file.close();
-        if (!file) {
-            printError(QStringLiteral("cannot write '%1': %2")
-                           .arg(options.output, QString::fromLocal8Bit(std::strerror(errno))));
+        try {
+            core::storage::writeAtomically(options.output.toStdString(),
+                                           [&](std::ostream& out) { writeOutputCsv(out, t, outputs, dt); });
+        } catch (const core::storage::StorageError& e) {
+            printError(QString::fromStdString(e.what()));
             return kExitFailure;
         }
     }

@@ -4,6 +4,8 @@
 #include "CliSupport.h"
 #include "SessionArgument.h"
 #include "core/report/ReportData.h"
+#include "core/storage/Database.h"
+#include "core/storage/SafeOutput.h"
 #include "ui/report/ReportDocument.h"
 
 #include <QDir>
@@ -62,6 +64,11 @@ int runReport(const QStringList& arguments)
     const QString db = parser.value(QStringLiteral("db"));
     const QString output = parser.value(QStringLiteral("output"));
     if (!QFileInfo::exists(db)) return badInput(QStringLiteral("report: no session store at %1").arg(db));
+    try {
+        core::storage::refuseOverwriting(output.toStdString(), core::storage::storeFiles(db.toStdString()));
+    } catch (const core::storage::StorageError& e) {
+        return badInput(QStringLiteral("report: %1").arg(toQString(e.what())));
+    }
 
     core::report::ReportData data;
     try {

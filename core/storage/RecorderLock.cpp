@@ -10,17 +10,18 @@
 #include <unistd.h>
 
 namespace tactiscope::core::storage {
-namespace {
 
-std::string lockPath(const std::string& storePath)
+std::string RecorderLock::lockPath(const std::string& storePath)
 {
     return storePath + "-recorder.lock";
 }
 
+namespace {
+
 // The locked descriptor, or -1 with errno set.
 int lockFile(const std::string& storePath)
 {
-    const int fd = ::open(lockPath(storePath).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    const int fd = ::open(RecorderLock::lockPath(storePath).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (fd < 0) return -1;
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
         const int error = errno;
@@ -40,7 +41,7 @@ RecorderLock RecorderLock::acquire(const std::string& storePath)
     if (errno == EWOULDBLOCK)
         throw StorageError("another Tactiscope is recording into " + storePath +
                            "; record into another file or stop that recording first");
-    throw StorageError("cannot create " + lockPath(storePath) + ": " + std::strerror(errno));
+    throw StorageError("cannot create " + RecorderLock::lockPath(storePath) + ": " + std::strerror(errno));
 }
 
 std::optional<RecorderLock> RecorderLock::tryAcquire(const std::string& storePath)

@@ -17,6 +17,8 @@ class RecorderLock {
 public:
     // Throws StorageError when another recorder holds the store.
     static RecorderLock acquire(const std::string& storePath);
+    // The lock file beside a store.
+    static std::string lockPath(const std::string& storePath);
     // Nothing when another recorder holds it (or the lock file cannot be made).
     static std::optional<RecorderLock> tryAcquire(const std::string& storePath);
 

@@ -1,6 +1,8 @@
 // Session export to CSV and JSON, window by window.
 #include "core/storage/SessionExport.h"
 
+#include "core/storage/SafeOutput.h"
+
 #include "core/text/JsonWriter.h"
 #include "core/text/NumberFormat.h"
 
@@ -238,31 +240,13 @@ std::string metadataSidePath(const std::string& csvPath)
     return std::filesystem::path(csvPath).replace_extension(".meta.json").string();
 }
 
-namespace {
-
-void writeAtomically(const std::string& path, const std::function<void(std::ostream&)>& write)
-{
-    const std::string temporary = path + ".partial";
-    {
-        std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-        if (!file) throw StorageError("cannot write " + path);
-        write(file);
-        file.flush();
-        if (!file) {
-            std::filesystem::remove(temporary);
-            throw StorageError("writing " + path + " failed (disk full?)");
-        }
-    }
-    std::error_code code;
-    std::filesystem::rename(temporary, path, code);
-    if (code) throw StorageError("cannot write " + path + ": " + code.message());
-}
-
-}  // namespace
-
 void exportSession(SessionStore& store, std::int64_t session, ExportFormat format, const std::string& path,
                    const ExportRange& range)
 {
+    // The store is the one file an export must never replace.
+    const auto protectedFiles = storeFiles(store.database().path());
+    refuseOverwriting(path, protectedFiles);
+    if (format == ExportFormat::Csv) refuseOverwriting(metadataSidePath(path), protectedFiles);
     if (format == ExportFormat::Json) {
         writeAtomically(path, [&](std::ostream& out) { writeSessionJson(store, session, out); });
         return;

@@ -6,6 +6,7 @@
 
 #include "core/report/ReportData.h"
 #include "core/storage/DefectRecords.h"
+#include "core/storage/SafeOutput.h"
 #include "core/storage/SessionExport.h"
 #include "ui/calibration/WizardText.h"
 #include "ui/report/ReportDocument.h"
@@ -476,6 +477,7 @@ void ReviewWindow::advanceReplay()
 QString ReviewWindow::exportReport(const QString& pdfPath)
 {
     try {
+        core::storage::refuseOverwriting(pdfPath.toStdString(), core::storage::storeFiles(m_store->database().path()));
         const auto report = core::report::gatherReport(*m_store, m_session.id);
         const int pages = writeReportPdf(report, pdfPath);
         statusBar()->showMessage(tr("Report saved to %1 (%2 pages).").arg(pdfPath).arg(pages));
