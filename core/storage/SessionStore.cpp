@@ -374,6 +374,26 @@ std::vector<SampleGap> SessionStore::gaps(std::int64_t session)
     return result;
 }
 
+// Before anything is allocated for a read: the chunk that ends the session
+// must hold as many samples as its count says (a damaged count would have
+// the reader allocate for it), and no single read may ask for more samples
+// than a computer holds.
+void SessionStore::checkSampleEnd(std::int64_t session, std::size_t channelCount, std::uint64_t samples)
+{
+    constexpr std::uint64_t kMostSamplesPerRead = std::uint64_t{1} << 30;  // 8 GiB of doubles
+    auto last = m_db.prepare(
+        "SELECT count, length(samples) FROM chunks WHERE session_id = ? ORDER BY first_index DESC LIMIT 1");
+    last.bind(1, session);
+    if (last.step() &&
+        static_cast<std::uint64_t>(last.int64(1)) != static_cast<std::uint64_t>(last.int64(0)) * channelCount * 4)
+        throw StorageError("the last sample chunk of session " + std::to_string(session) + " says it holds " +
+                           std::to_string(last.int64(0)) + " samples but has " + std::to_string(last.int64(1)) +
+                           " bytes; the store is damaged");
+    if (samples > kMostSamplesPerRead)
+        throw StorageError("session " + std::to_string(session) + " would need " + std::to_string(samples) +
+                           " samples read at once, more than a computer holds; the store is damaged");
+}
+
 std::vector<double> SessionStore::readChannel(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,
                                               std::uint64_t count)
 {
@@ -384,6 +404,7 @@ std::vector<double> SessionStore::readChannel(std::int64_t session, std::size_t 
     const std::uint64_t end = std::min(sampleCount(session), firstIndex + count);
     std::vector<double> result;
     if (firstIndex >= end) return result;
+    checkSampleEnd(session, channelCount, end - firstIndex);
     result.reserve(end - firstIndex);
     // The chunk holding firstIndex starts at or before it; the primary key
     // makes both lookups index searches, not scans.

@@ -148,6 +148,7 @@ private:
     void appendChunk(std::int64_t session, std::span<const SampleBlock> run);
     void rebuildPyramids(std::int64_t session);
     lod::LodTable pyramid(std::int64_t session, std::size_t channel);
+    void checkSampleEnd(std::int64_t session, std::size_t channelCount, std::uint64_t samples);
 
     Database m_db;
     std::uint64_t m_chunksRead = 0;
