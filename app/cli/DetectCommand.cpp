@@ -138,6 +138,16 @@ int runDetect(const QStringList& arguments)
 
     core::detector::SeriesInput series{t.front(), {}, t};
     for (std::size_t c = 1; c < csv.columns.size(); ++c) series.cantilevers.emplace_back(csv.columns[c]);
+    if (const auto bad = core::detector::firstUnusableSample(series)) {
+        const auto [cantilever, index] = *bad;
+        printError(QStringLiteral("'%1' line %2, column '%3': %4 is beyond what the detector can use (|value| ≤ %5)")
+                       .arg(options.input)
+                       .arg(csv.lines[index])
+                       .arg(QString::fromStdString(options.columns[cantilever + 1]))
+                       .arg(series.cantilevers[cantilever][index])
+                       .arg(core::detector::kLargestUsableValue));
+        return kExitUsage;
+    }
     const auto started = std::chrono::steady_clock::now();
     const auto outputs = core::detector::detectSeries(series, options.detector.parameters, options.detector.threads);
     const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

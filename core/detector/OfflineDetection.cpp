@@ -40,6 +40,14 @@ struct Worker {
 
 }  // namespace
 
+std::optional<std::pair<std::size_t, std::size_t>> firstUnusableSample(const SeriesInput& input)
+{
+    for (std::size_t c = 0; c < input.cantilevers.size(); ++c)
+        for (std::size_t i = 0; i < input.cantilevers[c].size(); ++i)
+            if (!(std::abs(input.cantilevers[c][i]) <= kLargestUsableValue)) return std::pair(c, i);
+    return std::nullopt;
+}
+
 std::vector<ProbeOutput> detectSeries(const SeriesInput& input, const DetectorParameters& parameters, unsigned threads)
 {
     if (input.cantilevers.size() < 2) throw std::invalid_argument("a probe needs at least two cantilevers");

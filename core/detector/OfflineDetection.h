@@ -10,6 +10,7 @@
 
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace tactiscope::core::detector {
@@ -21,6 +22,15 @@ struct SeriesInput {
     // times are t0_s + i·Δt.
     std::span<const double> times;
 };
+
+// The largest magnitude a sample may have: the detector sums squares and
+// products over a window, and 1e150² summed over millions of samples still
+// fits a double, where one 1e308 would make every later output inf or NaN.
+inline constexpr double kLargestUsableValue = 1e150;
+
+// The first sample the detector cannot use (not finite, or beyond
+// kLargestUsableValue), as (cantilever, index); none when all can be used.
+std::optional<std::pair<std::size_t, std::size_t>> firstUnusableSample(const SeriesInput& input);
 
 // One ProbeOutput per sample. threads ≥ 1 (more than the lag groups is
 // pointless and is reduced). Throws std::invalid_argument on bad input.

@@ -166,3 +166,18 @@ TEST_F(DetectCli, BadInputExitsWithCodeTwoAndOneClearLine)
     // Data errors are one line: no usage dump for a problem in the file.
     EXPECT_EQ(runCli({"detect", path("word.csv")}).err.count('\n'), 1);
 }
+
+TEST_F(DetectCli, AValueTheDetectorCannotSquareIsRefusedNamingItsCell)
+{
+    // b = 1e308 on line 101: before, it was accepted and every output after
+    // it was inf or NaN, so nothing more was reported, exit 0 (issue 19).
+    QStringList rows = lines(path("scan.csv"));
+    QStringList cells = rows[100].split(QLatin1Char(','));
+    cells[2] = QStringLiteral("1e308");
+    rows[100] = cells.join(QLatin1Char(','));
+    writeText(path("poisoned.csv"), rows.join(QLatin1Char('\n')) + QLatin1Char('\n'));
+    const CliResult run = runCli({"detect", path("poisoned.csv")});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.err.contains(QStringLiteral("line 101, column 'b': 1e+308 is beyond what the detector can use")))
+        << run.err.toStdString();
+}
