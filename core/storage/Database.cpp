@@ -4,10 +4,38 @@
 #include <sqlite3.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <unistd.h>
 
 namespace tactiscope::core::storage {
 namespace {
+
+// Whether the store's folder cannot be written at all (a read-only mount:
+// access() says so even to root, who ignores file modes).
+bool onReadOnlyMedia(const std::string& path)
+{
+    const auto folder = std::filesystem::path(path).parent_path();
+    return ::access(folder.empty() ? "." : folder.c_str(), W_OK) != 0 && errno == EROFS;
+}
+
+// The store as an SQLite URI that reads it as immutable; the characters a
+// URI gives a meaning to are escaped.
+std::string immutableUri(const std::string& path)
+{
+    std::string uri = "file:";
+    for (const char c : std::filesystem::absolute(path).string()) {
+        if (c == '%' || c == '?' || c == '#') {
+            char escaped[4];
+            std::snprintf(escaped, sizeof escaped, "%%%02X", static_cast<unsigned char>(c));
+            uri += escaped;
+        } else {
+            uri += c;
+        }
+    }
+    return uri + "?immutable=1";
+}
 
 // SQLite's message for the last error, with what a user can do about the
 // ones recording meets: a full disk, a read-only file, an I/O error (with
@@ -144,7 +172,17 @@ Database::Database(const std::string& path, Access access)
       m_access(access)
 {
     const int flags = access == Access::ReadOnly ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
-    const int code = sqlite3_open_v2(path.c_str(), &m_db, flags | SQLITE_OPEN_NOMUTEX, nullptr);
+    // On read-only media SQLite cannot make the WAL's shared-memory file a
+    // reader needs: nobody can be writing there, so the file is read as
+    // immutable.
+    const bool readOnlyMedia = onReadOnlyMedia(path);
+    if (access == Access::ReadWrite && readOnlyMedia)
+        throw StorageError(path + ": the store is on a read-only disk; it can be reviewed (opened read-only), not "
+                                  "written; copy it to a writable disk to record into it");
+    const bool immutable = access == Access::ReadOnly && readOnlyMedia;
+    const std::string name = immutable ? immutableUri(path) : path;
+    const int code =
+        sqlite3_open_v2(name.c_str(), &m_db, flags | SQLITE_OPEN_NOMUTEX | (immutable ? SQLITE_OPEN_URI : 0), nullptr);
     if (code != SQLITE_OK) {
         const std::string message = m_db ? sqlite3_errmsg(m_db) : sqlite3_errstr(code);
         sqlite3_close(m_db);
