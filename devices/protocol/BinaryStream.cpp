@@ -150,8 +150,7 @@ void BinaryStream::onData(const Frame& frame, double hostTime_s, StreamOutput& o
         const std::uint64_t lost = believedLoss(frame.sequence, timestamp, hostTime_s, out);
         m_counters.samplesLost += lost;
         m_nextSampleIndex += lost;
-        if (frame.sequence == static_cast<std::uint16_t>(*m_lastSequence + 1) && timestamp > m_lastTimestamp_us)
-            m_clockRate_hz = m_lastSamples / (static_cast<double>(timestamp - m_lastTimestamp_us) * 1e-6);
+        measureClockRate(frame.sequence, timestamp);
     }
     m_lastSequence = frame.sequence;
     m_lastSamples = data->samplesPerChannel;
@@ -179,11 +178,29 @@ void BinaryStream::onData(const Frame& frame, double hostTime_s, StreamOutput& o
     checkRate(hostTime_s);
 }
 
+// The rate by the device clock over the current run of consecutively
+// numbered frames: averaged so a timestamp's jitter of a sample or two
+// does not look like a wrong rate.
+void BinaryStream::measureClockRate(std::uint16_t sequence, std::uint64_t timestamp_us)
+{
+    if (sequence != static_cast<std::uint16_t>(*m_lastSequence + 1) || timestamp_us <= m_lastTimestamp_us) {
+        m_clockRun.reset();
+        return;
+    }
+    if (!m_clockRun) m_clockRun = ClockRun{m_lastTimestamp_us, 0};
+    m_clockRun->samples += m_lastSamples;
+    m_clockRate_hz =
+        static_cast<double>(m_clockRun->samples) / (static_cast<double>(timestamp_us - m_clockRun->start_us) * 1e-6);
+}
+
 void BinaryStream::checkRate(double hostTime_s)
 {
     if (m_rateProblem) return;
     const double rate = *sampleRate_hz();
-    if (m_info && m_clockRate_hz && std::abs(*m_clockRate_hz / rate - 1.0) > kClockRateTolerance) {
+    // Two samples of stamping jitter over the run, and never less than 2 %.
+    const double tolerance =
+        m_clockRun ? std::max(kClockRateTolerance, 2.0 / static_cast<double>(m_clockRun->samples)) : 1.0;
+    if (m_info && m_clockRate_hz && std::abs(*m_clockRate_hz / rate - 1.0) > tolerance) {
         m_rateProblem = "the device says it samples at " + hertz(rate) + " but its own clock puts " +
                         hertz(*m_clockRate_hz) +
                         " between its frames: its rate is wrong, and so would every time in "

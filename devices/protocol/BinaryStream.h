@@ -13,8 +13,9 @@
 //   never exceed what the host clock allows at the device's rate (plus a
 //   second of slack for buffering): a device cannot make hours out of
 //   seconds.
-// - The rate is checked twice: against the device clock between two
-//   consecutive frames (an INFO rate more than 2 % off it is wrong), and
+// - The rate is checked twice: against the device clock over a run of
+//   consecutive frames (an INFO rate more than 2 % off it, or two samples
+//   of stamping jitter over a short run, is wrong), and
 //   against the host's arrivals over 3 s (more than a factor of 2 off:
 //   clock and rate both wrong, or a bad estimate). Either makes
 //   rateProblem() say why; the stream cannot be recorded truthfully then.
@@ -52,8 +53,8 @@ public:
     std::optional<double> sampleRate_hz() const;
     std::vector<core::ChannelDescriptor> channels() const;
     const DecoderCounters& counters() const { return m_counters; }
-    // The rate between two consecutive frames by the device clock; none
-    // before two such frames have arrived.
+    // The rate by the device clock over the latest run of consecutively
+    // numbered frames; none before two such frames have arrived.
     std::optional<double> clockRate_hz() const { return m_clockRate_hz; }
     std::uint64_t dataFrames() const { return m_dataFrames; }
     // Why the rate cannot be believed (see above); none while it can.
@@ -69,6 +70,7 @@ private:
     void publish(const DataPayload& data, std::uint64_t timestamp_us, StreamOutput& out);
     double streamTime_s(std::uint64_t timestamp_us) const;
     void checkRate(double hostTime_s);
+    void measureClockRate(std::uint16_t sequence, std::uint64_t timestamp_us);
 
     BinaryDecoder m_decoder;
     DecoderCounters m_counters;
@@ -88,6 +90,11 @@ private:
     std::optional<double> m_hostStart_s;
     double m_lastHost_s = 0.0;
     std::uint64_t m_nextSampleIndex = 0;
+    struct ClockRun {
+        std::uint64_t start_us = 0;
+        std::uint64_t samples = 0;  // from start_us to the newest frame
+    };
+    std::optional<ClockRun> m_clockRun;  // consecutively numbered frames
     std::optional<double> m_clockRate_hz;
     std::uint64_t m_dataFrames = 0;
     std::optional<std::pair<double, std::uint64_t>> m_arrivalStart;  // host time, sample index

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
 #include <string>
 
 using namespace tactiscope::devices::protocol;
@@ -282,4 +284,29 @@ TEST(TextStream, AnUnreadableLineIsALostSampleAndTheRestKeepTheirTime)
     EXPECT_EQ(out[1].samplesLostAfter(out[0].endSampleIndex()), 1u);
     EXPECT_EQ(stream.counters().samplesLost, 1u);
     EXPECT_EQ(stream.counters().linesSkipped, 1u);
+}
+
+TEST(BinaryStream, ATimestampsJitterIsNoWrongRateButASmallSteadyErrorIs)
+{
+    // 10 samples per frame at 1 kHz, each frame stamped a sample early or
+    // late at random: a single pair of frames may say 800 or 1250 Hz.
+    BinaryStream jittery;
+    StreamOutput out;
+    jittery.push(info(), 0.0, out);
+    std::mt19937 random(3);
+    for (std::uint16_t k = 0; k < 200; ++k) {
+        const auto jitter = static_cast<std::int32_t>(random() % 3) - 1;  // −1, 0, +1 sample
+        const auto stamp = static_cast<std::uint32_t>(10000 * k + 1000 * jitter + 1000);
+        jittery.push(data(k, stamp, 0, 10), 0.010 * (k + 1), out);
+    }
+    EXPECT_FALSE(jittery.rateProblem()) << *jittery.rateProblem();
+
+    // INFO says 1 kHz; the clock says 1.05 kHz, steadily: wrong by 5 %.
+    BinaryStream fast;
+    StreamOutput fastOut;
+    fast.push(info(), 0.0, fastOut);
+    for (std::uint16_t k = 0; k < 200; ++k)
+        fast.push(data(k, static_cast<std::uint32_t>(std::llround(10000 * k / 1.05)), 0, 10), 0.010 * (k + 1), fastOut);
+    ASSERT_TRUE(fast.rateProblem());
+    EXPECT_NE(fast.rateProblem()->find("clock puts 1050"), std::string::npos) << *fast.rateProblem();
 }
