@@ -239,7 +239,8 @@ std::uint64_t BinaryStream::believedLoss(std::uint16_t sequence, std::uint64_t t
 
     ++m_counters.sequenceFaults;
     // This frame follows the last one after the loss believed: the device's
-    // clock no longer places it.
+    // clock no longer places it, nor measures the rate across it.
+    m_clockRun.reset();
     m_originDevice_us = timestamp_us;
     m_originTime_s = m_lastEnd_s + static_cast<double>(lost) / rate;
     if (!m_lastFaultNotice_s || m_lastEnd_s - *m_lastFaultNotice_s >= kNoticeInterval_s) {
@@ -269,6 +270,7 @@ void BinaryStream::restart(std::uint64_t timestamp_us, std::size_t samples, doub
     const double away_s = std::max(0.0, hostTime_s - static_cast<double>(samples) / rate - m_lastHost_s);
     const auto gap = static_cast<std::uint64_t>(std::llround(away_s * rate));
     ++m_counters.deviceRestarts;
+    m_clockRun.reset();  // its clock began again
     m_counters.samplesLost += gap;
     m_nextSampleIndex += gap;
     m_originDevice_us = timestamp_us;

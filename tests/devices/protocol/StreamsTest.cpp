@@ -310,3 +310,14 @@ TEST(BinaryStream, ATimestampsJitterIsNoWrongRateButASmallSteadyErrorIs)
     ASSERT_TRUE(fast.rateProblem());
     EXPECT_NE(fast.rateProblem()->find("clock puts 1050"), std::string::npos) << *fast.rateProblem();
 }
+
+TEST(BinaryStream, TheClockRateIsMeasuredAfreshAfterARestart)
+{
+    BinaryStream stream;
+    StreamOutput out;
+    tenFrames(stream, out);
+    for (std::uint16_t k = 0; k < 5; ++k) stream.push(data(k, 4000u * k, 0), 0.544 + 0.004 * k, out);
+    EXPECT_EQ(stream.counters().deviceRestarts, 1u);
+    EXPECT_NEAR(*stream.clockRate_hz(), 1000.0, 1e-9);
+    EXPECT_FALSE(stream.rateProblem()) << *stream.rateProblem();
+}
