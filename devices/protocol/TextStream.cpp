@@ -27,14 +27,17 @@ void TextStream::push(std::span<const std::uint8_t> bytes, double hostTime_s, st
         m_held.insert(m_held.end(), m_scratch.begin(), m_scratch.end());
         if (m_held.empty()) return;
         const double first_s = m_held.front().hostTime_s;
-        const double span_s = m_held.back().hostTime_s - first_s;
-        if (span_s < kEstimationWindow_s) return;
-        // Lines arrive in bursts (USB packets); over 2 s the count is what
-        // matters, of the lines that came after the first read.
+        const double last_s = m_held.back().hostTime_s;
+        if (last_s - first_s < kEstimationWindow_s) return;
+        // Lines arrive in bursts (USB packets); what counts is how many
+        // arrive over a long stretch, once the backlog that waited in the
+        // port (read in the first moments, however many reads it takes) is
+        // through: the lines after kSettle_s, over the time after it.
+        const double settled_s = first_s + kSettle_s;
         const auto later = std::count_if(m_held.begin(), m_held.end(),
-                                         [first_s](const TextSample& s) { return s.hostTime_s > first_s; });
+                                         [settled_s](const TextSample& s) { return s.hostTime_s > settled_s; });
         if (later < 2) return;
-        m_rate_hz = static_cast<double>(later) / span_s;
+        m_rate_hz = static_cast<double>(later) / (last_s - settled_s);
         publish(m_held, out);
         m_held.clear();
         return;

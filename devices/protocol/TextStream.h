@@ -1,8 +1,9 @@
 // Serial-Plotter text → SampleBlocks. Text carries no timing: the sample
 // rate is the one given, or (none given) estimated from the arrival times of
 // the lines of the first 2 s, which are held back until then. The lines of
-// the first read are not counted in the estimate (they may have waited in
-// the port for any time); the lines after it over the time they took are.
+// the first half second are not counted in the estimate (a backlog that
+// waited in the port arrives then, at once); the lines after it over the
+// time they took are.
 // Each block holds the lines of one read; a line that could not be read is
 // a lost sample (a gap of one), so the lines after it keep their time.
 #pragma once
@@ -30,6 +31,7 @@ public:
     DecoderCounters counters() const;
 
     static constexpr double kEstimationWindow_s = 2.0;
+    static constexpr double kSettle_s = 0.5;
 
 private:
     void publish(std::vector<TextSample>& samples, std::vector<core::SampleBlock>& out);

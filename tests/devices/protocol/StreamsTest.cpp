@@ -264,13 +264,13 @@ TEST(TextStream, LinesThatWaitedInThePortDoNotCountInTheRate)
     TextStream stream;
     std::vector<tactiscope::core::SampleBlock> out;
     // The first read brings 1000 lines that waited; then 100 lines per
-    // second in bursts of five. Counting the first read too gives 600 Hz.
+    // second in bursts of five. Counting the backlog too gives 600 Hz.
     std::string waited;
     for (int i = 0; i < 1000; ++i) waited += "1,2\n";
     pushText(stream, waited, 0.0, out);
     for (int burst = 1; burst <= 41; ++burst) pushText(stream, "3,4\n3,4\n3,4\n3,4\n3,4\n", burst * 0.05, out);
     ASSERT_TRUE(stream.sampleRate_hz());
-    EXPECT_DOUBLE_EQ(*stream.sampleRate_hz(), 100.0);  // 200 lines after the first read, over 2 s
+    EXPECT_DOUBLE_EQ(*stream.sampleRate_hz(), 100.0);  // 150 lines from 0.5 s to 2 s
 }
 
 TEST(TextStream, AnUnreadableLineIsALostSampleAndTheRestKeepTheirTime)
