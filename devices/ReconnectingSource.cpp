@@ -80,10 +80,8 @@ void ReconnectingSource::replaceSource(std::unique_ptr<BlockSource> source)
     const std::lock_guard lock(m_countersMutex);
     if (m_source) {
         m_pastCounters += m_source->decoderCounters();
-        for (auto& notice : m_source->takeNotices()) {
-            notice.time_s += m_timeOffset_s;  // the offset its blocks were given
-            m_pastNotices.push_back(std::move(notice));
-        }
+        auto notices = takeCurrentNotices();
+        m_pastNotices.insert(m_pastNotices.end(), notices.begin(), notices.end());
     }
     m_source = std::move(source);
 }
@@ -92,12 +90,18 @@ std::vector<LinkNotice> ReconnectingSource::takeNotices()
 {
     const std::lock_guard lock(m_countersMutex);
     auto notices = std::exchange(m_pastNotices, {});
-    if (m_source) {
-        for (auto& notice : m_source->takeNotices()) {
-            notice.time_s += m_timeOffset_s;
-            notices.push_back(std::move(notice));
-        }
-    }
+    auto current = takeCurrentNotices();
+    notices.insert(notices.end(), current.begin(), current.end());
+    return notices;
+}
+
+// The current connection's notices, in the stream's time (the offset its
+// blocks are given). The caller holds m_countersMutex.
+std::vector<LinkNotice> ReconnectingSource::takeCurrentNotices()
+{
+    if (!m_source) return {};
+    auto notices = m_source->takeNotices();
+    for (auto& notice : notices) notice.time_s += m_timeOffset_s;
     return notices;
 }
 

@@ -60,6 +60,7 @@ private:
     bool tryReconnect();
 
     void replaceSource(std::unique_ptr<BlockSource> source);
+    std::vector<LinkNotice> takeCurrentNotices();
 
     Opener m_opener;
     std::chrono::milliseconds m_retryInterval;

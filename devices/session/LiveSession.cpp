@@ -19,6 +19,20 @@
 #include <stdexcept>
 
 namespace tactiscope::devices::session {
+namespace {
+
+// An alarm of the record: what the link or the session noticed, when.
+core::storage::SessionEvent alarmAt(double start_s, double end_s, std::string note)
+{
+    core::storage::SessionEvent alarm;
+    alarm.kind = core::EventKind::Alarm;
+    alarm.start_s = start_s;
+    alarm.end_s = end_s;
+    alarm.note = std::move(note);
+    return alarm;
+}
+
+}  // namespace
 
 LiveSession::LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions options)
     : m_options(std::move(options))
@@ -152,11 +166,8 @@ void LiveSession::recordUnstoppedEnd(RecordingSummary& summary)
     std::vector<core::storage::SessionEvent> alarms;
     if (acquired.state == AcquisitionState::Failed) {
         summary.stoppedBecause = acquired.error;
-        core::storage::SessionEvent alarm;
-        alarm.kind = core::EventKind::Alarm;
-        alarm.start_s = alarm.end_s = m_recorder->sessionTime_s();
-        alarm.note = "the link failed: " + acquired.error;
-        alarms.push_back(alarm);
+        const double end_s = m_recorder->sessionTime_s();
+        alarms.push_back(alarmAt(end_s, end_s, "the link failed: " + acquired.error));
     }
     if (silence_s > std::max(1.0, 3.0 * blockDuration_s)) {
         const double lostAt_s = m_recorder->sessionTime_s();
@@ -166,30 +177,25 @@ void LiveSession::recordUnstoppedEnd(RecordingSummary& summary)
         char text[128];
         std::snprintf(text, sizeof text, "the probe was lost at %.1f s and did not come back: %.1f s without samples",
                       lostAt_s, silence_s);
-        core::storage::SessionEvent alarm;
-        alarm.kind = core::EventKind::Alarm;
-        alarm.start_s = lostAt_s;
-        alarm.end_s = lostAt_s + silence_s;
-        alarm.note = text;
-        alarms.push_back(alarm);
+        alarms.push_back(alarmAt(lostAt_s, lostAt_s + silence_s, text));
     }
     if (!alarms.empty()) m_recorder->addEvents(std::move(alarms));
 }
 
-// A device that contradicted itself before the record press still does:
-// the recording says so from its start, as the link tells it only now and
-// then.
+// What the record must carry from before its start: a device that
+// contradicted itself still does (the link tells it only now and then), and
+// a rate that was estimated rather than given.
 void LiveSession::recordStandingFaults()
 {
+    std::vector<core::storage::SessionEvent> alarms;
     const auto counters = source().decoderCounters();
-    if (counters.sequenceFaults == 0) return;
-    core::storage::SessionEvent alarm;
-    alarm.kind = core::EventKind::Alarm;
-    alarm.note = "before this recording the device's sequence numbers contradicted its clock " +
-                 std::to_string(counters.sequenceFaults) +
-                 " times: they are not believed, losses are counted "
-                 "only where its clock agrees";
-    m_recorder->addEvents({alarm});
+    if (counters.sequenceFaults > 0)
+        alarms.push_back(alarmAt(0.0, 0.0,
+                                 "before this recording the device's sequence numbers contradicted its clock " +
+                                     std::to_string(counters.sequenceFaults) +
+                                     " times: they are not believed, losses are counted only where its clock agrees"));
+    if (const auto rate = source().rateNote()) alarms.push_back(alarmAt(0.0, 0.0, *rate));
+    if (!alarms.empty()) m_recorder->addEvents(std::move(alarms));
 }
 
 std::optional<RecordingSummary> LiveSession::stopRecording()
@@ -273,11 +279,7 @@ void LiveSession::takeNotices()
     for (auto& notice : m_acquisition->takeNotices()) {
         if (m_recorder && m_recorder->sessionTimeOf(notice.time_s) >= 0.0) {
             notice.time_s = m_recorder->sessionTimeOf(notice.time_s);
-            core::storage::SessionEvent alarm;
-            alarm.kind = core::EventKind::Alarm;
-            alarm.start_s = alarm.end_s = notice.time_s;
-            alarm.note = notice.text;
-            stored.push_back(std::move(alarm));
+            stored.push_back(alarmAt(notice.time_s, notice.time_s, notice.text));
         }
         m_linkNotices.push_back(std::move(notice));
     }

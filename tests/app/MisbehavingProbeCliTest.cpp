@@ -44,6 +44,13 @@ Recorded recordFrom(const QTemporaryDir& dir, const QString& fault, const QStrin
     return recorded;
 }
 
+// The store the recordings went into, read-only.
+core::storage::SessionStore storeIn(const QTemporaryDir& dir)
+{
+    return core::storage::SessionStore(dir.filePath("s.tactiscope").toStdString(),
+                                       core::storage::Database::Access::ReadOnly);
+}
+
 std::vector<core::storage::SessionEvent> alarms(core::storage::SessionStore& store, std::int64_t session)
 {
     auto events = store.events(session);
@@ -63,8 +70,7 @@ TEST(MisbehavingProbe, ARestartIsAGapOfTheTimeItWasAwayAndAnAlarm)
     ASSERT_GT(recorded.session, 0) << recorded.result.out.toStdString();
     EXPECT_TRUE(recorded.result.err.contains(QStringLiteral("restarted"))) << recorded.result.err.toStdString();
 
-    core::storage::SessionStore store(dir.filePath("s.tactiscope").toStdString(),
-                                      core::storage::Database::Access::ReadOnly);
+    auto store = storeIn(dir);
     // 4 s of recording at 1 kHz, the restart's half second included: not 658 s.
     const auto n = store.sampleCount(recorded.session);
     EXPECT_GE(n, 3000u);
@@ -87,8 +93,7 @@ TEST(MisbehavingProbe, ASequenceThatNeverMovesLosesNothing)
     ASSERT_GT(recorded.session, 0) << recorded.result.out.toStdString();
     EXPECT_TRUE(recorded.result.out.contains(QStringLiteral(" 0 lost,"))) << recorded.result.out.toStdString();
 
-    core::storage::SessionStore store(dir.filePath("s.tactiscope").toStdString(),
-                                      core::storage::Database::Access::ReadOnly);
+    auto store = storeIn(dir);
     // Every frame's sequence is 0: 65 535 frames "lost" each time, before.
     EXPECT_LE(store.sampleCount(recorded.session), 2600u);
     EXPECT_TRUE(store.gaps(recorded.session).empty());
@@ -106,8 +111,7 @@ TEST(MisbehavingProbe, OneFramesSequenceJumpLosesNothing)
     ASSERT_GT(recorded.session, 0) << recorded.result.out.toStdString();
     EXPECT_TRUE(recorded.result.out.contains(QStringLiteral(" 0 lost,"))) << recorded.result.out.toStdString();
 
-    core::storage::SessionStore store(dir.filePath("s.tactiscope").toStdString(),
-                                      core::storage::Database::Access::ReadOnly);
+    auto store = storeIn(dir);
     EXPECT_LE(store.sampleCount(recorded.session), 3100u);  // 2.5 s, not 661 s
     EXPECT_TRUE(store.gaps(recorded.session).empty());
     EXPECT_EQ(alarms(store, recorded.session).size(), 1u);
@@ -163,8 +167,7 @@ TEST(MisbehavingProbe, AProbeLostForGoodIsAGapToTheStopAnAlarmAndExitOne)
     const std::int64_t id = sessionIdIn(result.out);
     ASSERT_GT(id, 0) << result.out.toStdString();
 
-    core::storage::SessionStore store(dir.filePath("s.tactiscope").toStdString(),
-                                      core::storage::Database::Access::ReadOnly);
+    auto store = storeIn(dir);
     const auto session = store.session(id);
     ASSERT_TRUE(session);
     EXPECT_FALSE(session->verdict);  // a panel left half-inspected passes nothing
@@ -203,8 +206,7 @@ TEST(MisbehavingProbe, AProbeThatComesBackChangedEndsTheRecordingWithWhatCameBef
     const std::int64_t id = sessionIdIn(out);
     ASSERT_GT(id, 0) << out.toStdString();
 
-    core::storage::SessionStore store(dir.filePath("s.tactiscope").toStdString(),
-                                      core::storage::Database::Access::ReadOnly);
+    auto store = storeIn(dir);
     EXPECT_DOUBLE_EQ(store.channels(id)[0].sampleRate_hz, 1000.0);  // nothing of the 500 Hz device mixed in
     std::uint64_t kept = 0;
     for (const auto& gap : store.gaps(id)) kept += gap.count;
