@@ -20,9 +20,7 @@ CsvColumns readCsvColumns(const std::string& path, const std::vector<std::string
         for (std::size_t w = 0; w < wanted.size(); ++w) {
             const std::string_view cell = fields[wantedField[w]];
             const double value = reader.number(cell, wantedField[w]);
-            if (!std::isfinite(value))
-                throw CsvError("'" + path + "' line " + std::to_string(reader.lineNumber()) + ", column '" + wanted[w] +
-                               "': '" + std::string(cell) + "' is not a number");
+            if (std::isnan(value)) throw reader.cellError(cell, wantedField[w], "is not a number");
             result.columns[w].push_back(value);
         }
         result.lines.push_back(reader.lineNumber());

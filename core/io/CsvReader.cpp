@@ -3,6 +3,7 @@
 
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 
 namespace tactiscope::core::io {
@@ -16,7 +17,25 @@ std::string_view trim(std::string_view s)
     return s;
 }
 
+// The line terminator: CR alone when the file's start has CRs and no LF.
+char lineEndOf(std::ifstream& file)
+{
+    char start[65536];
+    file.read(start, sizeof start);
+    const std::string_view text(start, static_cast<std::size_t>(file.gcount()));
+    file.clear();
+    file.seekg(0);
+    return text.find('\n') == std::string_view::npos && text.find('\r') != std::string_view::npos ? '\r' : '\n';
+}
+
 }  // namespace
+
+std::string quotedForMessage(std::string_view text)
+{
+    constexpr std::size_t kShown = 80;
+    if (text.size() <= kShown) return "'" + std::string(text) + "'";
+    return "'" + std::string(text.substr(0, kShown)) + "…' (" + std::to_string(text.size()) + " characters)";
+}
 
 void splitCsvLine(std::string_view line, char delimiter, std::vector<std::string_view>& fields)
 {
@@ -35,7 +54,13 @@ CsvReader::CsvReader(const std::string& path)
       m_file(path, std::ios::binary)
 {
     if (!m_file) throw CsvError("cannot open '" + path + "': " + std::strerror(errno));
+    m_lineEnd = lineEndOf(m_file);
     if (!nextLine()) throw CsvError("'" + path + "' is empty");
+    readHeader();
+}
+
+void CsvReader::readHeader()
+{
     // A tab-separated header may hold commas in names ("force, N"), so tabs
     // win, then semicolons (a decimal-comma locale), then commas.
     for (const char candidate : {'\t', ';', ','}) {
@@ -46,14 +71,29 @@ CsvReader::CsvReader(const std::string& path)
     }
     std::vector<std::string_view> fields;
     splitCsvLine(m_line, m_delimiter, fields);
-    for (const auto field : fields) m_header.emplace_back(field);
+    if (fields.size() > 1 && fields.back().empty()) {
+        fields.pop_back();
+        m_trailingDelimiter = true;
+    }
+    for (std::size_t c = 0; c < fields.size(); ++c) {
+        if (fields[c].empty())
+            throw CsvError("'" + m_path + "': column " + std::to_string(c + 1) + " of the header has no name");
+        for (std::size_t before = 0; before < c; ++before) {
+            if (fields[before] == fields[c])
+                throw CsvError("'" + m_path + "': the header names " + quotedForMessage(fields[c]) +
+                               " twice (columns " + std::to_string(before + 1) + " and " + std::to_string(c + 1) + ")");
+        }
+        m_header.emplace_back(fields[c]);
+    }
 }
 
 bool CsvReader::nextLine()
 {
-    while (std::getline(m_file, m_line)) {
+    while (std::getline(m_file, m_line, m_lineEnd)) {
         ++m_lineNumber;
         m_bytesRead += m_line.size() + 1;
+        constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";  // UTF-8's, written by spreadsheet programs
+        if (m_lineNumber == 1 && m_line.starts_with(kByteOrderMark)) m_line.erase(0, kByteOrderMark.size());
         const std::string_view line = trim(m_line);
         if (!line.empty() && line.front() != '#') return true;
     }
@@ -67,14 +107,15 @@ std::size_t CsvReader::column(const std::string& name) const
         if (m_header[c] == name) return c;
     }
     std::string names;
-    for (const auto& h : m_header) names += (names.empty() ? "" : ", ") + h;
-    throw CsvError("'" + m_path + "' has no column '" + name + "' (columns: " + names + ")");
+    for (const auto& h : m_header) names += (names.empty() ? "" : ", ") + quotedForMessage(h);
+    throw CsvError("'" + m_path + "' has no column " + quotedForMessage(name) + " (columns: " + names + ")");
 }
 
 bool CsvReader::next(std::vector<std::string_view>& fields)
 {
     if (!nextLine()) return false;
     splitCsvLine(m_line, m_delimiter, fields);
+    if (m_trailingDelimiter && fields.size() == m_header.size() + 1 && fields.back().empty()) fields.pop_back();
     if (fields.size() != m_header.size())
         throw CsvError("'" + m_path + "' line " + std::to_string(m_lineNumber) + " has " +
                        std::to_string(fields.size()) + " fields, the header has " + std::to_string(m_header.size()));
@@ -85,10 +126,17 @@ double CsvReader::number(std::string_view cell, std::size_t column) const
 {
     double value = 0.0;
     const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
+    if (error == std::errc::result_out_of_range) throw cellError(cell, column, "is out of a number's range");
     if (cell.empty() || error != std::errc() || end != cell.data() + cell.size())
-        throw CsvError("'" + m_path + "' line " + std::to_string(m_lineNumber) + ", column '" + m_header[column] +
-                       "': '" + std::string(cell) + "' is not a number");
+        throw cellError(cell, column, "is not a number");
+    if (std::isinf(value)) throw cellError(cell, column, "is not a finite number");
     return value;
+}
+
+CsvError CsvReader::cellError(std::string_view cell, std::size_t column, const std::string& why) const
+{
+    return CsvError("'" + m_path + "' line " + std::to_string(m_lineNumber) + ", column " +
+                    quotedForMessage(m_header[column]) + ": " + quotedForMessage(cell) + " " + why);
 }
 
 }  // namespace tactiscope::core::io

@@ -1,8 +1,11 @@
 // Reading a CSV file row by row, for files too large to hold: the header,
 // then the fields of each data row with its line number. The delimiter is
 // the header's (comma, semicolon or tab, as other DAQ programs write);
-// blank lines and lines starting with '#' are skipped. Errors name the file
-// and the line, so a user can fix the file.
+// lines end in LF, CRLF or CR alone (old Mac programs); a UTF-8 byte-order
+// mark is skipped; a delimiter ending every line (some loggers write one)
+// adds no column; blank lines and lines starting with '#' are skipped.
+// Errors name the file, the line and the column, and quote at most 80
+// characters of a cell, so a user can fix the file.
 #pragma once
 
 #include "core/io/CsvColumns.h"
@@ -31,11 +34,16 @@ public:
     const std::string& path() const { return m_path; }
 
     // A cell as a number (std::from_chars: no locale); "nan" is a missing
-    // value. Throws CsvError naming the line and the column.
+    // value, an infinity is refused. Throws CsvError naming the line and
+    // the column.
     double number(std::string_view cell, std::size_t column) const;
+    // The error for a cell of the current line: "'P' line L, column 'C':
+    // 'cell' why".
+    CsvError cellError(std::string_view cell, std::size_t column, const std::string& why) const;
 
 private:
     bool nextLine();
+    void readHeader();
 
     std::string m_path;
     std::ifstream m_file;
@@ -43,8 +51,14 @@ private:
     std::size_t m_lineNumber = 0;
     std::uint64_t m_bytesRead = 0;
     char m_delimiter = ',';
+    char m_lineEnd = '\n';
+    bool m_trailingDelimiter = false;  // every line ends in the delimiter
     std::vector<std::string> m_header;
 };
+
+// A file's text quoted for a message: at most 80 characters, so an error on
+// a 200 MB cell is one line, not the cell.
+std::string quotedForMessage(std::string_view text);
 
 // Splits `line` at `delimiter` into trimmed fields (views into the line).
 void splitCsvLine(std::string_view line, char delimiter, std::vector<std::string_view>& fields);

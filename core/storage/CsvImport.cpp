@@ -4,6 +4,7 @@
 
 #include "core/SampleBlock.h"
 #include "core/io/CsvReader.h"
+#include "core/storage/Database.h"
 #include "core/storage/RecorderLock.h"
 #include "core/storage/SessionExport.h"
 
@@ -74,13 +75,20 @@ double timeScale(const std::string& header, const std::string& path)
     throw CsvError("'" + path + "': the time column '" + header + "' is in '" + unit + "'; use s, ms or us");
 }
 
-// A measured rate rounded to 12 significant digits, so that 1/median step
-// of a 2 kHz file is 2000, not 1999.9999999999998.
-double roundRate(double rate_hz)
+// The simplest rate (fewest significant digits) that puts the last of
+// `steps` sample steps over `span_s` within 1 % of a sample of where the
+// measured rate puts it: 500 Hz, not 499.999999999, for an hour written
+// with rounded times, while a true 499.9 Hz stays 499.9.
+double simplestRate(double steps, double span_s)
 {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.12g", rate_hz);
-    return std::strtod(text, nullptr);
+    const double measured = steps / span_s;
+    for (int digits = 1; digits < 17; ++digits) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.*g", digits, measured);
+        const double rate = std::strtod(text, nullptr);
+        if (std::abs(rate - measured) * span_s <= 0.01) return rate;
+    }
+    return measured;
 }
 
 // The side file of a Tactiscope export, when there is one: X.csv → X.meta.json.
@@ -126,6 +134,42 @@ void completeMetadata(SessionMetadata& m, const nlohmann::json& session)
     fill(m.calibrationsJson, "calibrations_json");
 }
 
+// Whether the side file's export holds the whole session (an export of a
+// range chosen in review holds part of it: another session, so it is
+// imported under a new identity).
+bool holdsWholeSession(const nlohmann::json& side)
+{
+    if (!side.contains("exported_range")) return true;  // exports from before ranges existed
+    const auto& range = side["exported_range"];
+    const auto total = side["session"].value("samples_per_channel", std::int64_t{-1});
+    return range.value("first_index", std::int64_t{0}) == 0 && range.value("count", std::int64_t{-1}) == total;
+}
+
+// The session as it was recorded, as docs/storage.md promises an export
+// keeps it: its uuid, times, status, verdict and app version.
+struct RecordedIdentity {
+    SessionOrigin origin;
+    SessionStatus status = SessionStatus::Complete;
+    std::optional<std::string> endedUtc;  // none: ended by this import
+    std::optional<Verdict> verdict;
+    std::uint64_t samplesPerChannel = 0;  // lost ones at the end included
+};
+
+RecordedIdentity identityOf(const std::optional<nlohmann::json>& side)
+{
+    RecordedIdentity identity;
+    if (!side || !holdsWholeSession(*side)) return identity;
+    const auto& session = (*side)["session"];
+    identity.origin = {textOf(session, "uuid"), textOf(session, "started_utc"), textOf(session, "app_version")};
+    // A session exported while "recording" had lost its recorder (none
+    // records an export): it was interrupted.
+    if (textOf(session, "status") != "complete") identity.status = SessionStatus::Interrupted;
+    identity.endedUtc = textOf(session, "ended_utc");
+    identity.verdict = verdictFromString(textOf(session, "verdict"));
+    identity.samplesPerChannel = session.value("samples_per_channel", std::uint64_t{0});
+    return identity;
+}
+
 void importRecords(SessionStore& store, std::int64_t session, const nlohmann::json& side)
 {
     std::vector<SessionEvent> events;
@@ -147,7 +191,8 @@ void importRecords(SessionStore& store, std::int64_t session, const nlohmann::js
                                    optionalOf(r, "standard_error"), textOf(r, "site"), textOf(r, "details_json")});
     }
     for (const auto& a : side.value("annotations", nlohmann::json::array()))
-        store.addAnnotation(session, {0, a.value("time_s", 0.0), textOf(a, "author"), textOf(a, "text"), "", ""});
+        store.addAnnotation(session, {0, a.value("time_s", 0.0), textOf(a, "author"), textOf(a, "text"),
+                                      textOf(a, "created_utc"), textOf(a, "modified_utc")});
 }
 
 // Where each row goes on the sample grid.
@@ -189,29 +234,39 @@ private:
     std::uint64_t m_rows = 0;
 };
 
-// The rate from the time column: 1 / the median step (robust to missing rows).
+// The rate from the time column: the median step (robust to missing rows)
+// tells how many sample steps the file spans, and the span over that many
+// steps is the rate, exact to the times' rounding over the whole file.
 double measureRate(const std::string& path, std::size_t timeColumn)
 {
     CsvReader reader(path);
     const double scale = timeScale(reader.header()[timeColumn], path);
     std::vector<double> steps;
     std::vector<std::string_view> fields;
-    std::optional<double> previous;
+    std::optional<double> first, previous;
     while (reader.next(fields)) {
         const double t = reader.number(fields[timeColumn], timeColumn) * scale;
         if (previous) steps.push_back(t - *previous);
+        if (!first) first = t;
         previous = t;
     }
     if (steps.empty()) throw CsvError("'" + path + "' needs at least two rows to tell its sample rate");
     auto middle = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
     std::nth_element(steps.begin(), middle, steps.end());
-    if (!(*middle > 0.0)) throw CsvError("'" + path + "': the time column does not increase");
-    return roundRate(1.0 / *middle);
+    const double span_s = *previous - *first;
+    if (!(*middle > 0.0) || !(span_s > 0.0)) throw CsvError("'" + path + "': the time column does not increase");
+    return simplestRate(std::round(span_s / *middle), span_s);
 }
 
+// A cell as the binary32 sample it is stored as: a number beyond its range
+// would be stored as infinity, so it is refused.
 double cellValue(const CsvReader& reader, std::string_view cell, std::size_t column)
 {
-    return cell.empty() ? std::numeric_limits<double>::quiet_NaN() : reader.number(cell, column);
+    if (cell.empty()) return std::numeric_limits<double>::quiet_NaN();
+    const double value = reader.number(cell, column);
+    if (std::abs(value) > static_cast<double>(std::numeric_limits<float>::max()))
+        throw reader.cellError(cell, column, "is beyond the ±3.4e38 a stored sample holds");
+    return value;
 }
 
 }  // namespace
@@ -284,63 +339,65 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
     if (!(result.rate_hz > 0.0) || !std::isfinite(result.rate_hz))
         throw CsvError("the sample rate must be a positive number of Hz");
 
-    // Like a recorder, so no other process takes the session for a crashed one.
+    const RecordedIdentity identity = identityOf(side);
+    if (const auto existing = identity.origin.uuid.empty() ? std::nullopt : store.sessionWithUuid(identity.origin.uuid))
+        throw CsvError("'" + path + "' is session " + identity.origin.uuid + ", already in this store as session " +
+                       std::to_string(*existing) + "; it was not imported again");
+
+    // Like a recorder, so no other process records into the store meanwhile.
     const RecorderLock lock = RecorderLock::acquire(store.database().path());
-    result.session = store.beginSession(metadata, result.channels, result.rate_hz);
-    try {
-        const auto fileSize = static_cast<double>(std::filesystem::file_size(path));
-        RowIndexer indexer(result.rate_hz, timeColumn ? timeScale(header[*timeColumn], path) : 1.0);
-        const double dt_s = 1.0 / result.rate_hz;
-        std::vector<SampleBlock> batch;
-        SampleBlock block;
-        std::size_t filled = 0;
-        std::uint64_t end = 0;  // one past the last stored index
-        const auto flushBlock = [&] {
-            if (filled == 0) return;
-            SampleBlock full(result.channels.size(), filled, block.t0_s(), dt_s, block.firstSampleIndex());
-            for (std::size_t c = 0; c < result.channels.size(); ++c)
-                std::copy_n(block.channel(c).begin(), filled, full.channel(c).begin());
-            batch.push_back(std::move(full));
-            filled = 0;
-        };
-        const auto flushBatch = [&] {
+    // One transaction: an import cancelled, failed or killed leaves nothing.
+    Transaction transaction(store.database());
+    result.session = store.beginSession(metadata, result.channels, result.rate_hz, identity.origin);
+    const auto fileSize = static_cast<double>(std::filesystem::file_size(path));
+    RowIndexer indexer(result.rate_hz, timeColumn ? timeScale(header[*timeColumn], path) : 1.0);
+    const double dt_s = 1.0 / result.rate_hz;
+    std::vector<SampleBlock> batch;
+    SampleBlock block;
+    std::size_t filled = 0;
+    std::uint64_t end = 0;  // one past the last stored index
+    const auto flushBlock = [&] {
+        if (filled == 0) return;
+        SampleBlock full(result.channels.size(), filled, block.t0_s(), dt_s, block.firstSampleIndex());
+        for (std::size_t c = 0; c < result.channels.size(); ++c)
+            std::copy_n(block.channel(c).begin(), filled, full.channel(c).begin());
+        batch.push_back(std::move(full));
+        filled = 0;
+    };
+    const auto flushBatch = [&] {
+        flushBlock();
+        store.appendBlocks(result.session, batch);
+        batch.clear();
+        if (progress && !progress(static_cast<double>(reader.bytesRead()) / fileSize))
+            throw std::runtime_error("cancelled");
+    };
+    std::vector<std::string_view> fields;
+    while (reader.next(fields)) {
+        const std::uint64_t index =
+            timed ? indexer.next(reader.number(fields[*timeColumn], *timeColumn), reader) : indexer.next();
+        if (filled > 0 && (index != end || filled == kBlockRows)) {
             flushBlock();
-            store.appendBlocks(result.session, batch);
-            batch.clear();
-            if (progress && !progress(static_cast<double>(reader.bytesRead()) / fileSize))
-                throw std::runtime_error("cancelled");
-        };
-        std::vector<std::string_view> fields;
-        while (reader.next(fields)) {
-            const std::uint64_t index =
-                timed ? indexer.next(reader.number(fields[*timeColumn], *timeColumn), reader) : indexer.next();
-            if (filled > 0 && (index != end || filled == kBlockRows)) {
-                flushBlock();
-                if (batch.size() == kBatchBlocks) flushBatch();
-            }
-            if (filled == 0)
-                block = SampleBlock(result.channels.size(), kBlockRows, static_cast<double>(index) * dt_s, dt_s, index);
-            for (std::size_t c = 0; c < dataColumns.size(); ++c)
-                block.channel(c)[filled] = cellValue(reader, fields[dataColumns[c]], dataColumns[c]);
-            ++filled;
-            result.lostSamples += index - end;
-            end = index + 1;
-            ++result.rows;
+            if (batch.size() == kBatchBlocks) flushBatch();
         }
-        if (result.rows == 0) throw CsvError("'" + path + "' has a header but no data rows");
-        flushBatch();
-        if (side) importRecords(store, result.session, *side);
-        store.endSession(result.session, SessionStatus::Complete);
-    } catch (...) {
-        // An import is all or nothing: the file is still there to fix.
-        try {
-            store.endSession(result.session, SessionStatus::Interrupted);
-            store.deleteSession(result.session);
-        } catch (const StorageError&) {
-            // The store failed too; the session stays marked interrupted.
-        }
-        throw;
+        if (filled == 0)
+            block = SampleBlock(result.channels.size(), kBlockRows, static_cast<double>(index) * dt_s, dt_s, index);
+        for (std::size_t c = 0; c < dataColumns.size(); ++c)
+            block.channel(c)[filled] = cellValue(reader, fields[dataColumns[c]], dataColumns[c]);
+        ++filled;
+        result.lostSamples += index - end;
+        end = index + 1;
+        ++result.rows;
     }
+    if (result.rows == 0) throw CsvError("'" + path + "' has a header but no data rows");
+    flushBatch();
+    if (side) importRecords(store, result.session, *side);
+    if (identity.samplesPerChannel > end) {  // lost at the recording's end
+        store.markLostUntil(result.session, identity.samplesPerChannel);
+        result.lostSamples += identity.samplesPerChannel - end;
+    }
+    if (identity.verdict) store.setVerdict(result.session, *identity.verdict);
+    store.endSession(result.session, identity.status, identity.endedUtc);
+    transaction.commit();
     return result;
 }
 

@@ -12,7 +12,10 @@
 //
 // A Tactiscope export's side file (X.meta.json beside X.csv) restores the
 // channels' units and kinds, the exact rate, the session's metadata and
-// its events, readings and annotations; options given explicitly win.
+// its events, readings and annotations; options given explicitly win. An
+// export of a whole session also brings back its identity: uuid, started
+// and ended times, status, verdict, app version and the samples lost at
+// its end. A session whose uuid is already in the store is refused.
 //
 // Samples are stored as binary32, like recorded ones, so an export of a
 // session imported from a Tactiscope export is the same file, to the bit.
@@ -43,12 +46,12 @@ struct CsvImportResult {
     bool usedSideFile = false;
 };
 
-// Imports `path` into `store` as a complete session. progress(fraction of
-// the file read) is called now and then; returning false cancels. Throws
-// io::CsvError for a file that cannot be imported (nothing is stored),
-// StorageError when the store fails or another process records into it,
-// and std::runtime_error("cancelled") on cancel; nothing of a failed or
-// cancelled import stays in the store.
+// Imports `path` into `store` as a session, complete unless the side file
+// says otherwise. progress(fraction of the file read) is called now and
+// then; returning false cancels. Throws io::CsvError for a file that cannot
+// be imported, StorageError when the store fails or another process records
+// into it, and std::runtime_error("cancelled") on cancel. The import is one
+// transaction: nothing of a failed, cancelled or killed import stays.
 CsvImportResult importCsv(SessionStore& store, const std::string& path, const CsvImportOptions& options,
                           const std::function<bool(double)>& progress = {});
 

@@ -171,6 +171,9 @@ Database::Database(const std::string& path, Access access)
     : m_path(path),
       m_access(access)
 {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error))  // else SQLite says "disk I/O error"
+        throw StorageError(path + " is a folder, not a session store; choose a store file (or a new file name) in it");
     const int flags = access == Access::ReadOnly ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
     // On read-only media SQLite cannot make the WAL's shared-memory file a
     // reader needs: nobody can be writing there, so the file is read as
@@ -229,16 +232,17 @@ bool Database::inTransaction() const
 }
 
 Transaction::Transaction(Database& db)
-    : m_db(db)
+    : m_db(db),
+      m_nested(db.inTransaction())
 {
-    m_db.exec("BEGIN IMMEDIATE");
+    m_db.exec(m_nested ? "SAVEPOINT nested" : "BEGIN IMMEDIATE");
 }
 
 Transaction::~Transaction()
 {
     if (m_done) return;
     try {
-        m_db.exec("ROLLBACK");
+        m_db.exec(m_nested ? "ROLLBACK TO nested; RELEASE nested" : "ROLLBACK");
     } catch (const StorageError&) {
         // SQLite already rolled back (e.g. after a full disk); nothing to undo.
     }
@@ -246,7 +250,7 @@ Transaction::~Transaction()
 
 void Transaction::commit()
 {
-    m_db.exec("COMMIT");
+    m_db.exec(m_nested ? "RELEASE nested" : "COMMIT");
     m_done = true;
 }
 

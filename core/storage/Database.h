@@ -80,7 +80,9 @@ private:
 };
 
 // Runs a scope in one transaction: committed by commit(), rolled back when
-// the scope is left by an exception.
+// the scope is left by an exception. Inside another transaction it is a
+// savepoint, so a whole import (many appends, each its own transaction
+// when alone) commits at once or not at all, even through kill -9.
 class Transaction {
 public:
     explicit Transaction(Database& db);
@@ -91,6 +93,7 @@ public:
 
 private:
     Database& m_db;
+    bool m_nested = false;
     bool m_done = false;
 };
 

@@ -4,9 +4,11 @@
 #include "core/storage/Database.h"
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <fcntl.h>
 #include <sys/file.h>
+#include <thread>
 #include <unistd.h>
 
 namespace tactiscope::core::storage {
@@ -36,7 +38,15 @@ int lockFile(const std::string& storePath)
 
 RecorderLock RecorderLock::acquire(const std::string& storePath)
 {
-    const int fd = lockFile(storePath);
+    // A reader's probe (isHeld) or a read-write open (tryAcquire) holds the
+    // lock for microseconds: only a lock held past a short wait is a recorder.
+    constexpr auto kProbeWait = std::chrono::milliseconds(250);
+    const auto deadline = std::chrono::steady_clock::now() + kProbeWait;
+    int fd = lockFile(storePath);
+    while (fd < 0 && errno == EWOULDBLOCK && std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        fd = lockFile(storePath);
+    }
     if (fd >= 0) return RecorderLock(fd);
     if (errno == EWOULDBLOCK)
         throw StorageError("another Tactiscope is recording into " + storePath +
@@ -49,6 +59,15 @@ std::optional<RecorderLock> RecorderLock::tryAcquire(const std::string& storePat
     const int fd = lockFile(storePath);
     if (fd < 0) return std::nullopt;
     return RecorderLock(fd);
+}
+
+bool RecorderLock::isHeld(const std::string& storePath)
+{
+    const int fd = ::open(RecorderLock::lockPath(storePath).c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return errno != ENOENT;  // no lock file: no recorder ever ran; unreadable: cannot tell
+    const bool held = ::flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+    ::close(fd);  // releases the shared lock, if it was taken
+    return held;
 }
 
 RecorderLock::RecorderLock(RecorderLock&& other) noexcept

@@ -21,6 +21,10 @@ public:
     static std::string lockPath(const std::string& storePath);
     // Nothing when another recorder holds it (or the lock file cannot be made).
     static std::optional<RecorderLock> tryAcquire(const std::string& storePath);
+    // Whether a recorder (in this process or another) holds the store, for
+    // readers: probed with a shared lock, so a reader never takes the store
+    // from a recorder, and without creating the lock file (read-only media).
+    static bool isHeld(const std::string& storePath);
 
     RecorderLock(RecorderLock&& other) noexcept;
     RecorderLock& operator=(RecorderLock&&) = delete;

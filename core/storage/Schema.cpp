@@ -186,6 +186,9 @@ int prepareSchema(Database& db, int targetVersion)
                            "); open it read-only or update Tactiscope");
     db.exec("PRAGMA foreign_keys = ON");
     if (version >= targetVersion || db.access() == Database::Access::ReadOnly) {
+        if (tables == 0)  // an empty file: SQLite reads it as an empty database
+            throw StorageError(db.path() + " is empty: it holds no sessions yet (recording or importing into it "
+                                           "makes it a session store)");
         if (version < targetVersion)
             throw StorageError(db.path() + " has an older store version (" + std::to_string(version) +
                                "); open it read-write once to update it");

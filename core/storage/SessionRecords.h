@@ -49,8 +49,8 @@ struct Annotation {
     double time_s = 0.0;
     std::string author;
     std::string text;
-    std::string createdUtc;   // set by the store
-    std::string modifiedUtc;  // set by the store
+    std::string createdUtc;   // set by the store when empty (an import gives the recorded one)
+    std::string modifiedUtc;  // likewise
 };
 
 struct StoredCalibration {

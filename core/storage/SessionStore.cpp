@@ -8,6 +8,7 @@
 #include "core/storage/Schema.h"
 #include "core/text/UtcTime.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -138,16 +139,19 @@ int SessionStore::markCrashedSessionsInterrupted()
 }
 
 std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<const ChannelDescriptor> channels,
-                                        double sampleRate_hz)
+                                        double sampleRate_hz, const SessionOrigin& origin)
 {
     if (channels.empty()) throw StorageError("a session needs at least one channel");
     if (!(sampleRate_hz > 0.0) || !std::isfinite(sampleRate_hz))
         throw StorageError("a session needs a positive sample rate");
     Transaction transaction(m_db);
+    if (const auto existing = origin.uuid.empty() ? std::nullopt : sessionWithUuid(origin.uuid))
+        throw StorageError("session " + origin.uuid + " is already in this store, as session " +
+                           std::to_string(*existing));
     m_db.prepare("INSERT INTO sessions (uuid, mode, subject, operator, site, notes, device_model, device_serial, "
                  "device_firmware, profile_json, calibrations_json, started_utc, status, app_version) "
                  "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
-        .bind(1, newUuid())
+        .bind(1, origin.uuid.empty() ? newUuid() : origin.uuid)
         .bind(2, toString(m.mode))
         .bind(3, m.subject)
         .bind(4, m.operatorName)
@@ -158,9 +162,9 @@ std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<cons
         .bind(9, m.deviceFirmware)
         .bind(10, m.profileJson)
         .bind(11, m.calibrationsJson)
-        .bind(12, utcNow())
+        .bind(12, origin.startedUtc.empty() ? utcNow() : origin.startedUtc)
         .bind(13, toString(SessionStatus::Recording))
-        .bind(14, std::string_view(versionString()))
+        .bind(14, origin.appVersion.empty() ? std::string(versionString()) : origin.appVersion)
         .run();
     const std::int64_t id = m_db.lastInsertId();
     auto insert = m_db.prepare("INSERT INTO channels VALUES (?, ?, ?, ?, ?, ?)");
@@ -286,11 +290,11 @@ void SessionStore::rebuildPyramids(std::int64_t session)
     }
 }
 
-void SessionStore::endSession(std::int64_t session, SessionStatus status)
+void SessionStore::endSession(std::int64_t session, SessionStatus status, std::optional<std::string> endedUtc)
 {
     m_db.prepare("UPDATE sessions SET status = ?, ended_utc = ? WHERE id = ?")
         .bind(1, toString(status))
-        .bind(2, utcNow())
+        .bind(2, endedUtc.value_or(utcNow()))
         .bind(3, session)
         .run();
 }
@@ -333,7 +337,20 @@ std::vector<SessionSummary> SessionStore::sessions(const SessionFilter& filter)
     auto query = m_db.prepare(summaryQuery() + where + " ORDER BY started_utc DESC, id DESC");
     for (std::size_t i = 0; i < values.size(); ++i) query.bind(static_cast<int>(i + 1), values[i]);
     while (query.step()) result.push_back(summaryFrom(query));
+    showCrashedRecordingsInterrupted(result);
     return result;
+}
+
+// A session still marked "recording" while no recorder holds the store was
+// cut short by a crash; a reader (which may not mark it, see the
+// constructor) shows it as what it is, so a list, an export or a report of
+// it never says it is being recorded.
+void SessionStore::showCrashedRecordingsInterrupted(std::span<SessionSummary> summaries)
+{
+    const auto recording = [](const SessionSummary& s) { return s.status == SessionStatus::Recording; };
+    if (std::none_of(summaries.begin(), summaries.end(), recording) || RecorderLock::isHeld(m_db.path())) return;
+    for (SessionSummary& s : summaries)
+        if (recording(s)) s.status = SessionStatus::Interrupted;
 }
 
 std::optional<SessionSummary> SessionStore::session(std::int64_t id)
@@ -341,7 +358,17 @@ std::optional<SessionSummary> SessionStore::session(std::int64_t id)
     auto query = m_db.prepare(summaryQuery() + "WHERE id = ?");
     query.bind(1, id);
     if (!query.step()) return std::nullopt;
-    return summaryFrom(query);
+    SessionSummary summary = summaryFrom(query);
+    showCrashedRecordingsInterrupted(std::span(&summary, 1));
+    return summary;
+}
+
+std::optional<std::int64_t> SessionStore::sessionWithUuid(const std::string& uuid)
+{
+    auto query = m_db.prepare("SELECT id FROM sessions WHERE uuid = ?");
+    query.bind(1, uuid);
+    if (!query.step()) return std::nullopt;
+    return query.int64(0);
 }
 
 std::vector<StoredChannel> SessionStore::channels(std::int64_t session)

@@ -36,6 +36,15 @@ struct SessionMetadata {
     std::string calibrationsJson;  // the calibration records used, copied in (a JSON array)
 };
 
+// Who a session is when it was recorded elsewhere (an import of an export):
+// its identity and when and by which version it was recorded. Empty fields
+// are this store's: a new uuid, now, this version.
+struct SessionOrigin {
+    std::string uuid;
+    std::string startedUtc;
+    std::string appVersion;
+};
+
 struct SessionSummary {
     std::int64_t id = 0;
     std::string uuid;
@@ -83,14 +92,17 @@ public:
     SessionStore(const std::string& path, Database::Access access = Database::Access::ReadWrite);
 
     // Writing. Blocks are stored as they come; a block whose first sample
-    // index is past the end of the previous one records a gap.
+    // index is past the end of the previous one records a gap. A uuid
+    // already in the store is refused (StorageError).
     std::int64_t beginSession(const SessionMetadata& metadata, std::span<const ChannelDescriptor> channels,
-                              double sampleRate_hz);
+                              double sampleRate_hz, const SessionOrigin& origin = {});
     void appendBlocks(std::int64_t session, std::span<const SampleBlock> blocks);  // one transaction
     // Records samples lost after the last stored ones (e.g. at the end of a
     // recording, where no later block marks the gap). No-op when none are.
     void markLostUntil(std::int64_t session, std::uint64_t endIndex);
-    void endSession(std::int64_t session, SessionStatus status);
+    // Ends it now, or at `endedUtc` (an imported session's own end; empty
+    // for one that never ended).
+    void endSession(std::int64_t session, SessionStatus status, std::optional<std::string> endedUtc = std::nullopt);
     void setVerdict(std::int64_t session, Verdict verdict);
     // Deletes a session with its channels, samples and gaps. Throws
     // StorageError for an unknown id or a session still being recorded.
@@ -102,6 +114,7 @@ public:
     // Reading.
     std::vector<SessionSummary> sessions(const SessionFilter& filter = {});  // newest first
     std::optional<SessionSummary> session(std::int64_t id);
+    std::optional<std::int64_t> sessionWithUuid(const std::string& uuid);
     std::vector<StoredChannel> channels(std::int64_t session);
     std::uint64_t sampleCount(std::int64_t session);  // per channel, including gaps and lost ones at the end
     std::vector<SampleGap> gaps(std::int64_t session);
@@ -149,6 +162,7 @@ private:
     void rebuildPyramids(std::int64_t session);
     lod::LodTable pyramid(std::int64_t session, std::size_t channel);
     void checkSampleEnd(std::int64_t session, std::size_t channelCount, std::uint64_t samples);
+    void showCrashedRecordingsInterrupted(std::span<SessionSummary> summaries);
 
     Database m_db;
     std::uint64_t m_chunksRead = 0;

@@ -121,8 +121,8 @@ std::int64_t SessionStore::addAnnotation(std::int64_t session, const Annotation&
         .bind(2, a.time_s)
         .bind(3, a.author)
         .bind(4, a.text)
-        .bind(5, now)
-        .bind(6, now)
+        .bind(5, a.createdUtc.empty() ? now : a.createdUtc)
+        .bind(6, a.modifiedUtc.empty() ? now : a.modifiedUtc)
         .run();
     return m_db.lastInsertId();
 }

@@ -1,23 +1,29 @@
 // `tactiscope-cli import` and `analyze` on real files: a foreign CSV with a
 // millisecond time column and missing rows lands as a session with gaps;
-// export → import → export gives the same file to the byte, and the same
-// samples to the bit; analyze finds the events detect finds in the same
-// data; bad input gives exit code 2 and one clear line.
+// export → import into another store → export gives the same files to the
+// byte (the session's identity, times, status and verdict included), and
+// the same samples to the bit; importing a session a store already holds
+// is refused; analyze finds the events detect finds in the same data; bad
+// input gives exit code 2 and one clear line.
 #include "core/SampleBlock.h"
 #include "core/storage/SessionStore.h"
 #include "support/CliRunner.h"
 #include "support/TextFiles.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>
+#include <csignal>
+#include <utility>
 
 using namespace tactiscope;
 using tactiscope::testing::readBytes;
@@ -75,12 +81,14 @@ TEST(ImportCli, AForeignCsvWithMillisecondsAndMissingRowsBecomesASessionWithGaps
     EXPECT_TRUE(std::isnan(store.readChannel(1, 1, 5, 1)[0]));  // the blank cell
 }
 
-TEST(ImportCli, ExportImportExportIsTheSameFileAndTheSameBits)
+TEST(ImportCli, ExportImportExportIsTheSameFilesAndTheSameBits)
 {
     QTemporaryDir dir;
-    const QString db = dir.filePath("s.tactiscope");
+    const QString db = dir.filePath("s.tactiscope"), elsewhere = dir.filePath("elsewhere.tactiscope");
     {
         // Values with no short decimal form: the export must carry every bit.
+        // The recording was cut short (interrupted, its last 50 samples
+        // lost) and judged afterwards: all of that is its identity.
         core::storage::SessionStore store(db.toStdString());
         core::storage::SessionMetadata metadata;
         metadata.mode = tactiscope::core::Mode::Capacitive;
@@ -100,38 +108,100 @@ TEST(ImportCli, ExportImportExportIsTheSameFileAndTheSameBits)
             return b;
         };
         store.appendBlocks(id, std::vector{block(0, 700), block(750, 500)});  // 50 lost
+        store.markLostUntil(id, 1300);                                        // and 50 at the end
         store.addEvents(
             id, std::vector<core::storage::SessionEvent>{{0, "live", tactiscope::core::EventKind::Alarm, 0.7, 0.75, 0,
                                                           std::nullopt, std::nullopt, std::nullopt, "lost"}});
         store.addAnnotation(id, {0, 0.9, "Lin", "tare drift", "", ""});
-        store.endSession(id, tactiscope::core::SessionStatus::Complete);
+        store.endSession(id, tactiscope::core::SessionStatus::Interrupted);
+        store.setVerdict(id, tactiscope::core::Verdict::DefectsFound);
     }
     const QString first = dir.filePath("first.csv"), second = dir.filePath("second.csv");
     ASSERT_EQ(runCli({"sessions", "--db", db, "export", "1", "--format", "csv", "--output", first}).exitCode, 0);
-    const auto imported = runCli({"import", first, "--db", db});
+    const auto imported = runCli({"import", first, "--db", elsewhere});
     ASSERT_EQ(imported.exitCode, 0) << imported.err.toStdString();
-    EXPECT_TRUE(imported.out.contains("as session 2: 1200 rows of 2 channels at 1000 Hz, 50 missing"))
+    EXPECT_TRUE(imported.out.contains("as session 1: 1200 rows of 2 channels at 1000 Hz, 100 missing"))
         << imported.out.toStdString();
-    ASSERT_EQ(runCli({"sessions", "--db", db, "export", "2", "--format", "csv", "--output", second}).exitCode, 0);
+    ASSERT_EQ(runCli({"sessions", "--db", elsewhere, "export", "1", "--format", "csv", "--output", second}).exitCode,
+              0);
     EXPECT_EQ(readBytes(second), readBytes(first));
+    // The metadata too: uuid, started and ended times, status, verdict, app
+    // version, gaps, the records and their times.
+    EXPECT_EQ(readBytes(dir.filePath("second.meta.json")), readBytes(dir.filePath("first.meta.json")));
 
-    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    core::storage::SessionStore original(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    core::storage::SessionStore store(elsewhere.toStdString(), core::storage::Database::Access::ReadOnly);
     for (std::size_t c = 0; c < 2; ++c) {
-        const auto original = store.readChannel(1, c, 0, 1250), copy = store.readChannel(2, c, 0, 1250);
-        ASSERT_EQ(copy.size(), original.size());
-        for (std::size_t i = 0; i < original.size(); ++i)
-            ASSERT_EQ(std::bit_cast<std::uint64_t>(copy[i]), std::bit_cast<std::uint64_t>(original[i]))
-                << c << ", " << i;
+        const auto before = original.readChannel(1, c, 0, 1300), copy = store.readChannel(1, c, 0, 1300);
+        ASSERT_EQ(copy.size(), before.size());
+        for (std::size_t i = 0; i < before.size(); ++i)
+            ASSERT_EQ(std::bit_cast<std::uint64_t>(copy[i]), std::bit_cast<std::uint64_t>(before[i])) << c << ", " << i;
     }
-    // The side file brought the metadata and the records along.
-    const auto copy = *store.session(2);
-    EXPECT_EQ(copy.metadata.mode, tactiscope::core::Mode::Capacitive);
+    const auto copy = *store.session(1), recorded = *original.session(1);
+    EXPECT_EQ(copy.uuid, recorded.uuid);
+    EXPECT_EQ(copy.startedUtc, recorded.startedUtc);
+    EXPECT_EQ(copy.status, tactiscope::core::SessionStatus::Interrupted);
+    EXPECT_EQ(copy.verdict, tactiscope::core::Verdict::DefectsFound);
     EXPECT_EQ(copy.metadata.operatorName, "Lin");
-    EXPECT_EQ(store.channels(2)[0].descriptor, (core::ChannelDescriptor{"c", "pF", core::ChannelKind::Capacitance}));
-    ASSERT_EQ(store.events(2).size(), 1u);
-    EXPECT_EQ(store.events(2)[0].note, "lost");
-    ASSERT_EQ(store.annotations(2).size(), 1u);
-    EXPECT_EQ(store.annotations(2)[0].text, "tare drift");
+    EXPECT_EQ(store.channels(1)[0].descriptor, (core::ChannelDescriptor{"c", "pF", core::ChannelKind::Capacitance}));
+
+    // The session is already in its own store and now in the other one.
+    for (const QString& into : {db, elsewhere}) {
+        const auto again = runCli({"import", first, "--db", into});
+        EXPECT_EQ(again.exitCode, 2);
+        EXPECT_TRUE(again.err.contains("is session " + QString::fromStdString(recorded.uuid) +
+                                       ", already in this store as session 1; it was not imported again"))
+            << again.err.toStdString();
+    }
+    EXPECT_EQ(core::storage::SessionStore(db.toStdString()).sessions().size(), 1u);
+}
+
+TEST(ImportCli, TimesSinceMidnightGiveTheRoundRateTheyWereWrittenAt)
+{
+    // 10 s at 500 Hz stamped in seconds since midnight, to the millisecond:
+    // each step read back is 0.002 only to ±1.5e-11 s, so the median step
+    // made the rate 500.000001717 Hz. The span over its 4999 steps does not.
+    QTemporaryDir dir;
+    const QString csv = dir.filePath("midnight.csv"), db = dir.filePath("s.tactiscope");
+    QString text = QStringLiteral("time_s,a\n");
+    for (int i = 0; i < 5000; ++i) text += QString::asprintf("%.3f,%d\n", 80000.0 + i * 0.002, i % 7);
+    writeText(csv, text);
+    const auto result = runCli({"import", csv, "--db", db});
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    EXPECT_TRUE(result.out.contains("5000 rows of 1 channel at 500 Hz, 0 missing")) << result.out.toStdString();
+    EXPECT_EQ(core::storage::SessionStore(db.toStdString()).session(1)->sampleRate_hz, 500.0);
+}
+
+TEST(ImportCli, AnImportKilledMidwayLeavesNothing)
+{
+    // Before, the part imported so far stayed, and read as an interrupted
+    // recording. The import is one transaction now.
+    QTemporaryDir dir;
+    const QString csv = dir.filePath("long.csv"), db = dir.filePath("s.tactiscope");
+    {
+        QFile file(csv);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        QByteArray rows = "a,b\n";
+        for (int i = 0; i < 2'000'000; ++i) {
+            rows += QByteArray::number(i % 1000) + ",0.5\n";
+            if (rows.size() > (1 << 20)) file.write(std::exchange(rows, QByteArray()));
+        }
+        file.write(rows);
+    }
+    QProcess importing;
+    importing.start(QStringLiteral(TACTISCOPE_CLI), {"import", csv, "--db", db, "--rate", "1000"});
+    ASSERT_TRUE(importing.waitForStarted());
+    // Killed once it has written a good part of the session (the WAL holds
+    // the pages the transaction could not keep in memory).
+    const QString wal = db + "-wal";
+    while (QFileInfo(wal).size() < 4 << 20 && !importing.waitForFinished(5)) {
+    }
+    ASSERT_EQ(importing.state(), QProcess::Running) << "the import ended before it could be killed midway";
+    ::kill(static_cast<pid_t>(importing.processId()), SIGKILL);
+    importing.waitForFinished();
+
+    core::storage::SessionStore store(db.toStdString());
+    EXPECT_TRUE(store.sessions().empty());
 }
 
 TEST(ImportCli, BadInputIsExitCodeTwoWithOneClearLineAndNothingStored)
@@ -139,8 +209,10 @@ TEST(ImportCli, BadInputIsExitCodeTwoWithOneClearLineAndNothingStored)
     QTemporaryDir dir;
     const QString db = dir.filePath("s.tactiscope");
     const QString noTime = dir.filePath("no-time.csv"), jitter = dir.filePath("jitter.csv"),
-                  text = dir.filePath("text.csv"), ragged = dir.filePath("ragged.csv");
+                  text = dir.filePath("text.csv"), ragged = dir.filePath("ragged.csv"),
+                  beyondFloat = dir.filePath("beyond-float.csv");
     writeText(noTime, "a,b\n1,2\n3,4\n");
+    writeText(beyondFloat, "t,a\n0,1e308\n0.01,2\n");  // a double, but a stored sample would be inf
     writeText(jitter, "t,a\n0,1\n0.01,2\n0.02,3\n0.0335,4\n0.04,5\n");
     writeText(text, "t,a\n0,1\n0.01,one\n");
     writeText(ragged, "t,a\n0,1\n0.01\n");
@@ -153,6 +225,8 @@ TEST(ImportCli, BadInputIsExitCodeTwoWithOneClearLineAndNothingStored)
         {{"import", jitter, "--db", db}, "line 5: t = 0.033500 s is off the"},
         {{"import", text, "--db", db}, "line 3, column 'a': 'one' is not a number"},
         {{"import", ragged, "--db", db}, "line 3 has 1 fields, the header has 2"},
+        {{"import", beyondFloat, "--db", db},
+         "line 2, column 'a': '1e308' is beyond the ±3.4e38 a stored sample holds"},
         {{"import", noTime, "--db", db, "--rate", "-5"}, "--rate must be a positive number"},
         {{"import", noTime, "--db", db, "--rate", "10", "--mode", "surgery"}, "--mode must be"},
         {{"import", noTime, "--db", db, "--rate", "10", "--time-column", "x"}, "has no column 'x'"},

@@ -1,6 +1,6 @@
 // The session store on real SQLite files in a temporary folder: a round
 // trip of sessions, channels, chunks and gaps; the byte layout of a chunk;
-// and the files it must refuse without touching them.
+// and the files and folders it must refuse, named, without touching them.
 #include "core/storage/SessionStore.h"
 
 #include "core/SampleBlock.h"
@@ -157,6 +157,27 @@ TEST_F(SessionStoreTest, ANonDatabaseFileIsRefusedAndLeftUntouched)
         EXPECT_NE(std::string(e.what()).find("is not a Tactiscope session store"), std::string::npos) << e.what();
     }
     EXPECT_EQ(tactiscope::testing::fileBytes(path), before);
+}
+
+TEST_F(SessionStoreTest, AFolderOrAnEmptyFileIsCalledWhatItIs)
+{
+    // Before: "disk I/O error" for a folder and "an older store version (0)"
+    // for an empty file opened to read.
+    const auto errorOpening = [](const std::string& path, Database::Access access) -> std::string {
+        try {
+            SessionStore store(path, access);
+        } catch (const StorageError& e) {
+            return e.what();
+        }
+        return "opened";
+    };
+    for (const auto access : {Database::Access::ReadOnly, Database::Access::ReadWrite})
+        EXPECT_NE(errorOpening(m_dir.string(), access).find("is a folder, not a session store"), std::string::npos);
+    const std::string empty = file("empty.tactiscope");
+    std::ofstream{empty};
+    EXPECT_NE(errorOpening(empty, Database::Access::ReadOnly).find("is empty: it holds no sessions yet"),
+              std::string::npos);
+    EXPECT_EQ(std::filesystem::file_size(empty), 0u);
 }
 
 TEST_F(SessionStoreTest, AnotherProgramsSqliteFileIsRefusedAndLeftUntouched)
