@@ -148,8 +148,17 @@ RecorderStats Recorder::finish(SessionStatus status, std::optional<Verdict> verd
     m_writer.request_stop();
     m_writer.join();  // writes what was queued
     const std::lock_guard lock(m_mutex);
+    // What was not stored (lost by the device at the end, over the memory
+    // bound, or after a write failed) is a gap to the end, so the session
+    // shows what it lacks. A gap is one small row, which a disk too full for
+    // another chunk usually still takes, as it takes the end mark.
     try {
-        if (m_stats.error.empty()) m_store.markLostUntil(m_session, m_consumedEnd);
+        m_store.markLostUntil(m_session, m_consumedEnd);
+    } catch (const StorageError& e) {
+        if (m_stats.error.empty()) m_stats.error = e.what();
+        m_stats.error += "; the samples not stored could not be marked as lost in the store";
+    }
+    try {
         m_store.endSession(m_session, m_stats.error.empty() ? status : SessionStatus::Interrupted);
         if (verdict) m_store.setVerdict(m_session, *verdict);
     } catch (const StorageError& e) {

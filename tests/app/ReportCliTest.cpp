@@ -1,12 +1,14 @@
 // `tactiscope-cli report` on a real store written through the store API:
 // the PDF's text (read back with pdftotext) holds the subject, the verdict
 // and the event table; a range narrows it; bad input ends with exit 2 and
-// one line. The first page is rendered to PNG for a look
+// one line; the page count printed is the written PDF's; a full disk is
+// exit 1 and no file. The first page is rendered to PNG for a look
 // (build/<preset>/screenshots/report-page1.png, or TACTISCOPE_SCREENSHOT_DIR).
 #include "core/SampleBlock.h"
 #include "core/storage/SessionStore.h"
 #include "support/CliRunner.h"
 #include "support/PdfText.h"
+#include "support/TmpfsMount.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -135,6 +137,45 @@ TEST_F(ReportCli, ARangeReportsOnlyWhatLiesInIt)
     EXPECT_TRUE(text.contains(locale.toString(0.912, 'f', 3)));
     EXPECT_FALSE(text.contains(locale.toString(0.953, 'f', 3)));
     EXPECT_FALSE(text.contains(QStringLiteral("oil stain")));  // the marker at 4 s
+}
+
+TEST_F(ReportCli, ThePageCountIsTheWrittenDocuments)
+{
+    // 120 events make the event table run over several pages; before, the
+    // count came from the document before layout and said "(1 page)".
+    {
+        core::storage::SessionStore store(m_store.toStdString());
+        std::vector<core::storage::SessionEvent> events;
+        for (int i = 0; i < 120; ++i)
+            events.push_back({0, core::storage::kLiveAnalysis, tactiscope::core::EventKind::Defect, 0.05 * i,
+                              0.05 * i + 0.01, 1, 0.9, 0.05, 1.0, ""});
+        store.addEvents(1, events);
+    }
+    const QString pdf = m_dir.filePath(QStringLiteral("long.pdf"));
+    const auto result = runCli({QStringLiteral("report"), QStringLiteral("--db"), m_store, QStringLiteral("--session"),
+                                QStringLiteral("1"), QStringLiteral("--output"), pdf});
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    const auto pages = pdfText(pdf).count(QLatin1Char('\f'));  // pdftotext ends each page with a form feed
+    ASSERT_GT(pages, 1);
+    EXPECT_TRUE(result.out.endsWith(QStringLiteral("(%1 pages)\n").arg(pages))) << result.out.toStdString();
+}
+
+TEST_F(ReportCli, AReportOntoAFullDiskFailsAndLeavesNoFile)
+{
+    // Before: "(1 page)", exit 0, and a truncated PDF.
+    const tactiscope::testing::TmpfsMount disk("16k");  // a report with its plot is far larger
+    if (!disk.mounted()) GTEST_SKIP() << tactiscope::testing::TmpfsMount::kSkipReason;
+    const QString pdf = QString::fromStdString(disk.file("report.pdf"));
+    const auto result = runCli({QStringLiteral("report"), QStringLiteral("--db"), m_store, QStringLiteral("--session"),
+                                QStringLiteral("1"), QStringLiteral("--output"), pdf});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_TRUE(result.err.contains(QStringLiteral("No space left on device")) ||
+                result.err.contains(QStringLiteral("disk full")))
+        << result.err.toStdString();
+    EXPECT_TRUE(result.out.isEmpty()) << result.out.toStdString();
+    EXPECT_TRUE(
+        QDir(QString::fromStdString(disk.path())).isEmpty(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden))
+        << "a partial or temporary file was left";
 }
 
 TEST_F(ReportCli, BadInputEndsWithExitTwoAndOneLine)

@@ -3,16 +3,19 @@
 #include "ui/VocabularyText.h"
 
 #include "core/Version.h"
+#include "core/storage/SafeOutput.h"
 #include "core/text/UtcTime.h"
 #include "ui/report/ReportPlot.h"
 
+#include <QBuffer>
 #include <QFileInfo>
 #include <QLocale>
 #include <QPdfWriter>
-#include <QSaveFile>
 #include <QTextDocument>
 #include <QUrl>
 
+#include <cctype>
+#include <ostream>
 #include <stdexcept>
 
 namespace tactiscope::ui {
@@ -24,6 +27,19 @@ namespace {
 constexpr int kTextWidth_px = 640;
 constexpr int kLaneHeight_px = 150;
 constexpr double kPlotScale = 3.0;  // ≈ 290 dpi on paper
+
+// The page count of a PDF as written: its page tree's root says
+// "/Count N" after "/Type /Pages" (Qt's writer makes one root, no subtrees).
+int pageCountOf(const QByteArray& pdf)
+{
+    const qsizetype root = pdf.indexOf("/Type /Pages");
+    const qsizetype count = root < 0 ? -1 : pdf.indexOf("/Count ", root);
+    int pages = 0;
+    for (qsizetype at = count < 0 ? pdf.size() : count + 7; at < pdf.size() && std::isdigit(pdf[at]); ++at)
+        pages = pages * 10 + (pdf[at] - '0');
+    if (pages < 1) throw std::runtime_error("the report was laid out without a page tree");
+    return pages;
+}
 
 QString text(const std::string& value)
 {
@@ -221,22 +237,25 @@ std::unique_ptr<QTextDocument> buildReportDocument(const core::report::ReportDat
 
 int writeReportPdf(const core::report::ReportData& data, const QString& path)
 {
-    int pages = 0;
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        throw std::runtime_error("cannot write " + path.toStdString() + ": " + file.errorString().toStdString());
+    // Laid out in memory (a report is a few MB at most), then written
+    // through core's atomic output, which checks every write and the close:
+    // QSaveFile committed a truncated PDF on a full disk, as QPdfWriter does
+    // not pass its write errors on.
+    QByteArray pdf;
     {
-        QPdfWriter writer(&file);
+        QBuffer buffer(&pdf);
+        buffer.open(QIODevice::WriteOnly);
+        QPdfWriter writer(&buffer);
         writer.setPageSize(QPageSize(QPageSize::A4));
         writer.setPageMargins(QMarginsF(0, 0, 0, 0), QPageLayout::Millimeter);  // print() adds 2 cm
         writer.setTitle(QObject::tr("Inspection report, session %1").arg(data.session.id));
         writer.setCreator(QStringLiteral("Tactiscope %1").arg(QString::fromUtf8(core::versionString())));
-        const auto document = buildReportDocument(data);
-        document->print(&writer);
-        pages = document->pageCount();
+        buildReportDocument(data)->print(&writer);
     }
-    if (!file.commit())
-        throw std::runtime_error("writing " + path.toStdString() + " failed: " + file.errorString().toStdString());
+    const int pages = pageCountOf(pdf);
+    core::storage::writeAtomically(path.toStdString(), [&pdf](std::ostream& out) {  // throws StorageError
+        out.write(pdf.constData(), static_cast<std::streamsize>(pdf.size()));
+    });
     return pages;
 }
 

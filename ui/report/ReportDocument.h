@@ -20,9 +20,9 @@ namespace tactiscope::ui {
 // printer or PDF writer.
 std::unique_ptr<QTextDocument> buildReportDocument(const core::report::ReportData& data);
 
-// Writes the PDF (A4) atomically: a temporary file renamed into place.
-// Returns its page count; throws std::runtime_error when it cannot be
-// written.
+// Writes the PDF (A4) atomically: a temporary file, every write checked,
+// renamed into place; a full disk leaves no file. Returns the page count
+// of the PDF written; throws std::runtime_error when it cannot be written.
 int writeReportPdf(const core::report::ReportData& data, const QString& path);
 
 }  // namespace tactiscope::ui

@@ -6,13 +6,10 @@
 // Mounting needs root, which CI is; elsewhere the test skips, saying so.
 #include "core/SampleBlock.h"
 #include "core/storage/SessionStore.h"
+#include "support/TmpfsMount.h"
 
 #include <gtest/gtest.h>
 
-#include <sys/mount.h>
-
-#include <cstdlib>
-#include <filesystem>
 #include <string>
 
 using namespace tactiscope::core;
@@ -26,15 +23,8 @@ class ReadOnlyMedia : public ::testing::Test {
 protected:
     void SetUp() override
     {
-        char folder[] = "/tmp/tactiscope-ro-XXXXXX";
-        ASSERT_NE(::mkdtemp(folder), nullptr);
-        m_mount = folder;
-        if (::mount("tmpfs", m_mount.c_str(), "tmpfs", 0, "size=8m") != 0) {
-            std::filesystem::remove(m_mount);
-            m_mount.clear();
-            GTEST_SKIP() << "mounting a tmpfs needs root: the read-only media test is skipped";
-        }
-        m_store = m_mount + "/sessions.tactiscope";
+        if (!m_media.mounted()) GTEST_SKIP() << tactiscope::testing::TmpfsMount::kSkipReason;
+        m_store = m_media.file("sessions.tactiscope");
         {
             SessionStore store(m_store);
             storage::SessionMetadata metadata;
@@ -47,17 +37,11 @@ protected:
             store.appendBlocks(id, std::span(&block, 1));
             store.endSession(id, SessionStatus::Complete);
         }
-        ASSERT_EQ(::mount("tmpfs", m_mount.c_str(), "tmpfs", MS_REMOUNT | MS_RDONLY, "size=8m"), 0);
+        ASSERT_TRUE(m_media.makeReadOnly());
     }
 
-    void TearDown() override
-    {
-        if (m_mount.empty()) return;
-        ::umount(m_mount.c_str());
-        std::filesystem::remove(m_mount);
-    }
-
-    std::string m_mount, m_store;
+    tactiscope::testing::TmpfsMount m_media{"8m"};
+    std::string m_store;
 };
 
 }  // namespace

@@ -2,6 +2,7 @@
 // stays bounded while the disk is held up (the overflow becomes a gap), and
 // a write error ends the recording with everything before it kept.
 #include "core/storage/Recorder.h"
+#include "core/storage/RecorderLock.h"
 #include "core/storage/RecordingTap.h"
 
 #include "core/SampleBlock.h"
@@ -158,7 +159,11 @@ TEST_F(RecorderTest, AWriteErrorStopsRecordingAndKeepsWhatWasCommitted)
 
     SessionStore store(m_path, Database::Access::ReadOnly);
     EXPECT_EQ(store.session(id)->status, tactiscope::core::SessionStatus::Interrupted);
-    EXPECT_EQ(store.sampleCount(id), 100u);
+    // The samples after the failure are a gap to the end, not missing.
+    EXPECT_EQ(store.sampleCount(id), 300u);
+    ASSERT_EQ(store.gaps(id).size(), 1u);
+    EXPECT_EQ(store.gaps(id)[0].firstIndex, 100u);
+    EXPECT_EQ(store.gaps(id)[0].count, 200u);
 }
 
 TEST_F(RecorderTest, OneRecorderPerStoreAtATime)
@@ -197,10 +202,40 @@ TEST_F(RecorderTest, OpeningTheStoreLeavesALiveRecordingAloneAndMarksACrashedOne
     EXPECT_EQ(after.session(live.sessionId())->status, tactiscope::core::SessionStatus::Complete);
 }
 
-TEST_F(RecorderTest, AFullDiskStopsRecordingAndKeepsEveryCommittedSample)
+TEST_F(RecorderTest, AReaderSeesACrashedRecordingAsInterruptedAndALiveOneAsRecording)
+{
+    // Before, a reader (list, show, export, report: all read-only opens)
+    // said "recording" until something opened the store read-write.
+    std::int64_t crashed = 0;
+    {
+        SessionStore store(m_path);
+        crashed = store.beginSession(palpation(), kChannels, 1000.0);  // never ended: killed
+    }
+    {
+        SessionStore reader(m_path, Database::Access::ReadOnly);
+        EXPECT_EQ(reader.session(crashed)->status, tactiscope::core::SessionStatus::Interrupted);
+        EXPECT_EQ(reader.sessions().at(0).status, tactiscope::core::SessionStatus::Interrupted);
+    }
+    {
+        const auto recorder = RecorderLock::acquire(m_path);  // a live recorder holds the store
+        SessionStore reader(m_path, Database::Access::ReadOnly);
+        EXPECT_EQ(reader.session(crashed)->status, tactiscope::core::SessionStatus::Recording);
+    }
+    // The reader changed nothing in the file.
+    Database db(m_path, Database::Access::ReadOnly);
+    auto status = db.prepare("SELECT status FROM sessions WHERE id = ?");
+    status.bind(1, crashed);
+    ASSERT_TRUE(status.step());
+    EXPECT_EQ(status.text(0), "recording");
+}
+
+TEST_F(RecorderTest, AFullDiskStopsRecordingAndKeepsEveryCommittedSampleAndMarksTheRestLost)
 {
     // In a child process, so the file-size limit (a full disk, as far as
-    // SQLite can tell) and its signal stay there.
+    // SQLite can tell) and its signal stay there. The child tells how many
+    // samples it dropped through a pipe.
+    int pipe[2];
+    ASSERT_EQ(::pipe(pipe), 0);
     const pid_t child = ::fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
@@ -215,32 +250,50 @@ TEST_F(RecorderTest, AFullDiskStopsRecordingAndKeepsEveryCommittedSample)
                 recorder.consume(deviceBlock(first, 500));
                 std::this_thread::sleep_for(std::chrono::milliseconds(5));  // ~100 k samples/s: several commits
             }
+            recorder.consume(deviceBlock(first, 500));  // after the failure: dropped, and part of the gap
             const auto stats = recorder.finish(tactiscope::core::SessionStatus::Complete);
             code = stats.error.empty()                                  ? 1
                    : stats.samplesWritten == 0                          ? 2
                    : stats.error.find("disk full") == std::string::npos ? 5
                                                                         : 0;
             if (code != 0) std::fprintf(stderr, "recorder: %s\n", stats.error.c_str());  // for the failure
+            const bool marked = stats.error.find("could not be marked") == std::string::npos;
+            const std::uint64_t report[2] = {stats.samplesDropped, marked ? 1u : 0u};
+            if (::write(pipe[1], report, sizeof report) != sizeof report) code = 6;
         } catch (const std::exception&) {
             code = 4;
         }
         std::_Exit(code);
     }
+    ::close(pipe[1]);
+    std::uint64_t report[2] = {0, 0};
+    const auto got = ::read(pipe[0], report, sizeof report);
+    ::close(pipe[0]);
     int status = 0;
     ASSERT_EQ(::waitpid(child, &status, 0), child);
     ASSERT_TRUE(WIFEXITED(status));
     ASSERT_EQ(WEXITSTATUS(status), 0) << "1: never full, 2: nothing written, 3/4: could not start, 5: unclear message";
+    ASSERT_EQ(got, static_cast<ssize_t>(sizeof report));
+    const auto [dropped, marked] = report;
 
-    SessionStore store(m_path);  // the next open: recovers what finish() could not mark
+    SessionStore store(m_path);
     ASSERT_EQ(store.sessions().size(), 1u);
     const auto session = store.sessions().front();
     EXPECT_EQ(session.status, tactiscope::core::SessionStatus::Interrupted);
     EXPECT_EQ(store.checkIntegrity(), "ok");
     const std::uint64_t n = store.sampleCount(session.id);
     ASSERT_GT(n, 0u);
-    const auto force = store.readChannel(session.id, 1, 0, n);
-    EXPECT_TRUE(store.gaps(session.id).empty());
-    for (std::uint64_t i = 0; i < n; ++i) ASSERT_EQ(force[i], static_cast<double>(i) + 0.5) << i;
+    // The samples the summary calls lost are the store's gap to the end (or,
+    // were the disk too full even for that row, the summary says so).
+    const auto gaps = store.gaps(session.id);
+    ASSERT_EQ(gaps.size(), marked ? 1u : 0u);
+    const std::uint64_t stored = marked ? gaps[0].firstIndex : n;
+    if (marked) {
+        EXPECT_EQ(gaps[0].count, dropped);
+        EXPECT_EQ(gaps[0].firstIndex + gaps[0].count, n);
+    }
+    const auto force = store.readChannel(session.id, 1, 0, stored);
+    for (std::uint64_t i = 0; i < stored; ++i) ASSERT_EQ(force[i], static_cast<double>(i) + 0.5) << i;
 }
 
 TEST_F(RecorderTest, AReaderDuringRecordingSeesAGrowingConsistentPrefix)
