@@ -30,6 +30,7 @@ void installStopSignals()
 {
     std::signal(SIGINT, onStopSignal);
     std::signal(SIGTERM, onStopSignal);
+    std::signal(SIGHUP, onStopSignal);  // the terminal was closed: end as cleanly as on Ctrl+C
 }
 
 bool stopRequested()

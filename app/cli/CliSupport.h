@@ -34,8 +34,8 @@ QString commandUsage(const QCommandLineParser& parser, const QString& command);
 
 QString toQString(std::string_view text);
 
-// SIGINT and SIGTERM end long-running commands (emulate, record) cleanly:
-// after installStopSignals(), stopRequested() turns true on either.
+// SIGINT, SIGTERM and SIGHUP end long-running commands (emulate, record)
+// cleanly: after installStopSignals(), stopRequested() turns true on any.
 void installStopSignals();
 bool stopRequested();
 

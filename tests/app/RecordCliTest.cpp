@@ -178,7 +178,11 @@ TEST(RecordCli, AModeTheDeviceCannotFeedIsRefusedWithTheChannelsItNeeds)
     }
 }
 
-TEST(RecordCli, CtrlCEndsTheRecordingAndKeepsTheData)
+// Ctrl+C, `kill`, and a closed terminal (SIGHUP, which before killed the
+// recording without a clean end) each end it cleanly.
+class RecordCliStopSignal : public ::testing::TestWithParam<int> {};
+
+TEST_P(RecordCliStopSignal, EndsTheRecordingAndKeepsTheData)
 {
     QTemporaryDir dir;
     const QString link = dir.filePath("probe");
@@ -189,7 +193,7 @@ TEST(RecordCli, CtrlCEndsTheRecordingAndKeepsTheData)
     record.start(QStringLiteral(TACTISCOPE_CLI), {"record", "--port", link, "--db", db, "--mode", "palpation"});
     ASSERT_TRUE(record.waitForStarted());
     std::this_thread::sleep_for(std::chrono::milliseconds(1500));
-    ::kill(static_cast<pid_t>(record.processId()), SIGINT);
+    ::kill(static_cast<pid_t>(record.processId()), GetParam());
     ASSERT_TRUE(record.waitForFinished(10000));
     stopEmulator(emulator);
     EXPECT_EQ(record.exitStatus(), QProcess::NormalExit);
@@ -202,6 +206,13 @@ TEST(RecordCli, CtrlCEndsTheRecordingAndKeepsTheData)
     EXPECT_GT(store.sampleCount(id), 100u);
     EXPECT_EQ(store.channels(id).size(), 3u);
 }
+
+INSTANTIATE_TEST_SUITE_P(RecordCli, RecordCliStopSignal, ::testing::Values(SIGINT, SIGTERM, SIGHUP),
+                         [](const ::testing::TestParamInfo<int>& signal) {
+                             return std::string(signal.param == SIGINT    ? "SIGINT"
+                                                : signal.param == SIGTERM ? "SIGTERM"
+                                                                          : "SIGHUP");
+                         });
 
 TEST(RecordCli, AKilledRecordingKeepsItsCommittedSamplesAndIsMarkedInterrupted)
 {
