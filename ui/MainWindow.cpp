@@ -309,7 +309,7 @@ void MainWindow::chooseStore()
                                                       nullptr, QFileDialog::DontConfirmOverwrite);
     if (path.isEmpty()) return;
     setStorePath(path);
-    reportInterruptedSessions();
+    checkStore();
 }
 
 bool MainWindow::setMode(core::Mode mode)
@@ -328,9 +328,9 @@ bool MainWindow::isRecording() const
     return m_session && m_session->isRecording();
 }
 
-void MainWindow::reportInterruptedSessions()
+void MainWindow::checkStore()
 {
-    m_review->reportInterrupted();
+    m_review->checkStore();
 }
 
 SessionBrowser* MainWindow::showSessionBrowser()

@@ -96,8 +96,9 @@ public:
     core::Mode mode() const;
     // The controller of the connected device; null when none is.
     devices::session::LiveSession* liveSession() const { return m_session.get(); }
-    // Reports, once, sessions of the store that a crash cut short.
-    void reportInterruptedSessions();
+    // Reports a damaged or unreadable store at once, and, once, the
+    // sessions of the store that a crash cut short.
+    void checkStore();
     // A timestamped marker in the session being recorded.
     void markEvent(const QString& note = {});
     // Takes the time now and asks for the note without blocking.

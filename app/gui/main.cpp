@@ -63,7 +63,7 @@ int main(int argc, char* argv[])
     window.connectSource(std::make_unique<tactiscope::devices::simulator::SimulatorSource>(
         tactiscope::devices::simulator::makeScenario(scenario)));
     window.show();
-    window.reportInterruptedSessions();
+    window.checkStore();
 
     if (parser.isSet(QStringLiteral("screenshot"))) {
         const QString file = parser.value(QStringLiteral("screenshot"));

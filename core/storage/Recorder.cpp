@@ -16,6 +16,7 @@ Recorder::Recorder(const std::string& storePath, const SessionMetadata& metadata
       m_store(storePath),
       m_maxQueued(maxQueuedSamples)
 {
+    m_store.refuseIfDamaged();  // a damaged file only gets worse with every page written
     m_store.markCrashedSessionsInterrupted();
     m_session = m_store.beginSession(metadata, channels, sampleRate_hz);
     try {

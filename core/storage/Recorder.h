@@ -39,8 +39,9 @@ class Recorder final : public BlockSink {
 public:
     static constexpr std::chrono::milliseconds kCommitInterval{250};
 
-    // Takes the store's RecorderLock (one recorder per store), marks sessions
-    // a crash left "recording" as interrupted, and begins the session,
+    // Takes the store's RecorderLock (one recorder per store), refuses a
+    // damaged store, marks sessions a crash left "recording" as
+    // interrupted, and begins the session,
     // linked with the stored calibrations it uses. Throws StorageError, e.g.
     // when another recorder holds the store.
     Recorder(const std::string& storePath, const SessionMetadata& metadata, std::vector<ChannelDescriptor> channels,

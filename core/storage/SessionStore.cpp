@@ -311,6 +311,26 @@ std::string SessionStore::checkIntegrity()
     return check.step() ? check.text(0) : std::string("no answer from the integrity check");
 }
 
+void SessionStore::refuseIfDamaged()
+{
+    std::string finding;
+    try {
+        auto check = m_db.prepare("PRAGMA quick_check(1)");
+        finding = check.step() ? check.text(0) : std::string("no answer from the check");
+    } catch (const StorageError& e) {
+        finding = e.what();  // a page too damaged to even be checked
+    }
+    if (finding == "ok") return;
+    // SQLite heads its findings "*** in database main ***" on a line of its own.
+    constexpr std::string_view kHeading = "*** in database main ***";
+    if (const auto at = finding.find(kHeading); at != std::string::npos) finding.erase(at, kHeading.size());
+    std::ranges::replace(finding, '\n', ' ');
+    while (!finding.empty() && finding.front() == ' ') finding.erase(0, 1);
+    throw StorageError(m_db.path() + " is damaged (" + finding +
+                       "); nothing was written to it. Record into another store, and export what can still be read "
+                       "from this one");
+}
+
 std::vector<SessionSummary> SessionStore::sessions(const SessionFilter& filter)
 {
     std::vector<SessionSummary> result;

@@ -154,6 +154,10 @@ public:
 
     // SQLite's integrity check: "ok", or its first finding.
     std::string checkIntegrity();
+    // SQLite's quick check (the pages and their structure, ~1.5 GB/s, not
+    // the indexes' content), before a store is written or first shown:
+    // throws StorageError saying the store is damaged and what to do.
+    void refuseIfDamaged();
 
     Database& database() { return m_db; }
 

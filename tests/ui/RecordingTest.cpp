@@ -8,6 +8,7 @@
 #include "core/SampleBlock.h"
 #include "core/Version.h"
 #include "core/storage/SessionStore.h"
+#include "support/DamagedStore.h"
 #include "support/MainWindowHelpers.h"
 #include "support/Screenshot.h"
 #include "support/WaitFor.h"
@@ -168,7 +169,7 @@ TEST(Recording, SessionsACrashCutShortAreReportedOnce)
     ui::MainWindow window;
     window.setStorePath(store);
     window.show();
-    window.reportInterruptedSessions();
+    window.checkStore();
     QMessageBox* box = nullptr;
     ASSERT_TRUE(
         waitFor([&] { return (box = window.findChild<QMessageBox*>(QStringLiteral("interruptedBox"))); }, 10000));
@@ -182,7 +183,35 @@ TEST(Recording, SessionsACrashCutShortAreReportedOnce)
 
     core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
     EXPECT_EQ(sessions.sessions().front().status, tactiscope::core::SessionStatus::Interrupted);
-    window.reportInterruptedSessions();  // already reported
-    runEventLoopFor(500);                // the worker's answer
+    window.checkStore();   // already reported
+    runEventLoopFor(500);  // the worker's answer
     EXPECT_EQ(window.findChild<QMessageBox*>(QStringLiteral("interruptedBox")), nullptr);
+}
+
+TEST(Recording, ADamagedStoreIsShownAtStartNotAtRecord)
+{
+    // Before, the window started on it with no notice, and recording into
+    // it went ahead silently.
+    QTemporaryDir dir;
+    const QString store = dir.filePath("damaged.tactiscope");
+    {
+        core::storage::SessionStore sessions(store.toStdString());
+        const std::vector<core::ChannelDescriptor> channels{{"a", "", core::ChannelKind::Strain}};
+        const auto id = sessions.beginSession({}, channels, 1000.0);
+        core::SampleBlock block(1, 200'000, 0.0, 0.001, 0);
+        for (std::size_t i = 0; i < 200'000; ++i) block.channel(0)[i] = static_cast<double>(i % 977);
+        sessions.appendBlocks(id, std::span(&block, 1));
+        sessions.endSession(id, tactiscope::core::SessionStatus::Complete);
+    }
+    ASSERT_TRUE(tactiscope::testing::scribbleOverTheMiddle(store.toStdString()));
+    ui::MainWindow window;
+    window.setStorePath(store);
+    window.show();
+    window.checkStore();
+    QMessageBox* box = nullptr;
+    ASSERT_TRUE(
+        waitFor([&] { return (box = window.findChild<QMessageBox*>(QStringLiteral("storeProblemBox"))); }, 10000));
+    EXPECT_FALSE(box->isModal());
+    EXPECT_TRUE(box->informativeText().contains(QStringLiteral("is damaged"))) << box->informativeText().toStdString();
+    tactiscope::testing::saveScreenshot(*box, QStringLiteral("damaged-store"));
 }

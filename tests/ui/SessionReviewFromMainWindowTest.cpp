@@ -59,7 +59,7 @@ TEST(SessionReviewFromMainWindow, TheInterruptedReportOffersReview)
     ui::MainWindow window;
     window.setStorePath(storeWithACrash(dir));
     window.show();
-    window.reportInterruptedSessions();
+    window.checkStore();
     QMessageBox* box = nullptr;
     ASSERT_TRUE(
         waitFor([&] { return (box = window.findChild<QMessageBox*>(QStringLiteral("interruptedBox"))); }, 10000));

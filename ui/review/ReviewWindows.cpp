@@ -7,6 +7,7 @@
 #include "ui/review/ReviewWindow.h"
 #include "ui/review/SessionBrowser.h"
 
+#include <QDir>
 #include <QFileInfo>
 #include <QSettings>
 #include <QWidget>
@@ -70,7 +71,7 @@ void ReviewWindows::review(const std::vector<std::int64_t>& sessions)
                           "session browser.")});
 }
 
-void ReviewWindows::reportInterrupted()
+void ReviewWindows::checkStore()
 {
     if (!QFileInfo::exists(m_storePath)) return;  // no store, no crash (and none is made here)
     // Each interrupted session is reported once, on the first start after it.
@@ -79,14 +80,24 @@ void ReviewWindows::reportInterrupted()
     const std::int64_t reported = QSettings().value(key, 0).toLongLong();
     runOnStore(
         *m_store, this,
-        [reported](core::storage::SessionStore& store) { return interruptedSessionsAfter(store, reported); },
+        [reported](core::storage::SessionStore& store) {
+            store.refuseIfDamaged();
+            return interruptedSessionsAfter(store, reported);
+        },
         [this, key, store = m_store](const std::vector<core::storage::SessionSummary>& sessions) {
             if (sessions.empty()) return;
             QSettings().setValue(key, static_cast<qlonglong>(sessions.back().id));
             showInterruptedSessionsReport(m_owner, store, sessions,
                                           [this](const std::vector<std::int64_t>& ids) { review(ids); });
         },
-        [](const QString& error) { qWarning("interrupted sessions not checked: %s", qPrintable(error)); });
+        [this, path = m_storePath](const QString& error) {
+            // Shown, not only logged: sessions recorded now would be lost
+            // with the file or refused at Record.
+            reportProblem(m_owner, {tr("Session store unusable"),
+                                    tr("The session store %1 cannot be used.").arg(QDir::toNativeSeparators(path)),
+                                    error, tr("Choose another store with Session ▸ Session store… before recording."),
+                                    QStringLiteral("storeProblemBox")});
+        });
 }
 
 void ReviewWindows::sessionRecorded()

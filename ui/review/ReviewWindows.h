@@ -34,7 +34,9 @@ public:
     void setStore(std::shared_ptr<core::storage::StoreWorker> store);
     SessionBrowser* showBrowser();
     void review(const std::vector<std::int64_t>& sessions);  // failures are reported
-    void reportInterrupted();
+    // After a start or a change of store: a damaged or unreadable store is
+    // reported at once, and sessions a crash cut short are offered for review.
+    void checkStore();
     void sessionRecorded();  // an open browser lists it
 
 private:

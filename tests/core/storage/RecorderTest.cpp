@@ -7,6 +7,7 @@
 
 #include "core/SampleBlock.h"
 
+#include "support/DamagedStore.h"
 #include "support/Eventually.h"
 #include "support/FileBytes.h"
 #include "support/ReadOnlyAfterVfs.h"
@@ -379,16 +380,8 @@ TEST_F(RecorderTest, ADamagedStoreIsReportedAndNeverWritten)
     {
         SessionStore checkpoint(m_path);  // the last connection folds the WAL into the file
     }
-    // Scribble over pages in the middle of the file, where chunks live.
     const auto size = std::filesystem::file_size(m_path);
-    {
-        std::FILE* file = std::fopen(m_path.c_str(), "r+b");
-        ASSERT_NE(file, nullptr);
-        std::fseek(file, static_cast<long>(size / 2), SEEK_SET);
-        const std::string junk(16384, '\xA5');
-        std::fwrite(junk.data(), 1, junk.size(), file);
-        std::fclose(file);
-    }
+    ASSERT_TRUE(tactiscope::testing::scribbleOverTheMiddle(m_path));
     const std::string damaged = tactiscope::testing::fileBytes(m_path);
     ASSERT_EQ(damaged.size(), size);
     {
@@ -401,6 +394,14 @@ TEST_F(RecorderTest, ADamagedStoreIsReportedAndNeverWritten)
         } catch (const StorageError& e) {
             EXPECT_NE(std::string(e.what()).find(m_path), std::string::npos) << e.what();
         }
+    }
+    // Recording into it is refused before anything is written (before, it
+    // went ahead silently).
+    try {
+        Recorder recorder(m_path, palpation(), kChannels, 1000.0, 1'000'000);
+        ADD_FAILURE() << "recorded into a damaged store";
+    } catch (const StorageError& e) {
+        EXPECT_NE(std::string(e.what()).find(m_path + " is damaged ("), std::string::npos) << e.what();
     }
     // Nothing was written to repair or reset it.
     EXPECT_TRUE(tactiscope::testing::fileBytes(m_path) == damaged);
