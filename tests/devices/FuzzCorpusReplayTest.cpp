@@ -1,6 +1,6 @@
 // Replays the kept fuzzing corpus (fuzz/corpus/) through the same entry
 // points the libFuzzer targets use, with whatever compiler built the suite:
-// an input that once crashed a decoder keeps being checked.
+// an input that once crashed a decoder or the CSV reader keeps being checked.
 #include "FuzzEntryPoints.h"
 
 #include <gtest/gtest.h>
@@ -33,4 +33,9 @@ TEST(FuzzCorpusReplay, BinaryDecoderSurvivesEveryKeptInput)
 TEST(FuzzCorpusReplay, TextDecoderSurvivesEveryKeptInput)
 {
     EXPECT_GE(replay(TACTISCOPE_SOURCE_DIR "/fuzz/corpus/text", tactiscope::fuzz::textStream), 300u);
+}
+
+TEST(FuzzCorpusReplay, CsvReaderSurvivesEveryKeptInput)
+{
+    EXPECT_GE(replay(TACTISCOPE_SOURCE_DIR "/fuzz/corpus/csv", tactiscope::fuzz::csvReader), 100u);
 }
