@@ -3,6 +3,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 
 namespace tactiscope::devices::protocol {
 
@@ -60,7 +61,12 @@ void TextDecoder::parseLine(double hostTime_s, std::vector<TextSample>& out)
         }
         double value = 0.0;
         const auto [ptr, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-        if (error != std::errc() || ptr != token.data() + token.size() || token.empty() || !std::isfinite(value)) {
+        // A value beyond the ±3.4e38 a stored (binary32) sample holds would
+        // be stored as infinity and poison the live detector for the rest of
+        // the session: like an unreadable line, it is a hole.
+        constexpr auto kLargestStorable = static_cast<double>(std::numeric_limits<float>::max());
+        if (error != std::errc() || ptr != token.data() + token.size() || token.empty() || !std::isfinite(value) ||
+            std::abs(value) > kLargestStorable) {
             ok = false;
             break;
         }

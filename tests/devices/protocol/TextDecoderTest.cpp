@@ -41,14 +41,15 @@ TEST(TextDecoder, LinesThatDoNotParseAreCountedHolesOnceTheChannelsAreKnown)
 {
     TextDecoder decoder;
     const std::string longLine(TextDecoder::kMaxLine + 10, '1');
-    const auto out = decode(decoder, "1,2\n3,4\nhello,3\n4\n5,6,7\n\n\r\n" + longLine + "\n1,inf\n8,9\n");
-    // "1,2", "3,4", five holes (word, too few, too many, overlong, inf), "8,9";
-    // the empty lines are nothing.
-    ASSERT_EQ(out.size(), 8u);
+    const auto out =
+        decode(decoder, "1,2\n3,4\nhello,3\n4\n5,6,7\n\n\r\n" + longLine + "\n1,inf\n1e308,2\n8,-3.4e38\n");
+    // "1,2", "3,4", six holes (word, too few, too many, overlong, inf, beyond
+    // what a stored sample holds), "8,-3.4e38"; the empty lines are nothing.
+    ASSERT_EQ(out.size(), 9u);
     EXPECT_EQ(out[1].values, (std::vector<double>{3, 4}));
-    for (std::size_t i = 2; i < 7; ++i) EXPECT_TRUE(out[i].values.empty()) << i;
-    EXPECT_EQ(out[7].values, (std::vector<double>{8, 9}));
-    EXPECT_EQ(decoder.counters().linesSkipped, 5u);
+    for (std::size_t i = 2; i < 8; ++i) EXPECT_TRUE(out[i].values.empty()) << i;
+    EXPECT_EQ(out[8].values, (std::vector<double>{8, -3.4e38}));
+    EXPECT_EQ(decoder.counters().linesSkipped, 6u);
     EXPECT_EQ(decoder.counters().frames, 3u);
 }
 
