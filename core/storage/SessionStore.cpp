@@ -145,9 +145,6 @@ std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<cons
     if (!(sampleRate_hz > 0.0) || !std::isfinite(sampleRate_hz))
         throw StorageError("a session needs a positive sample rate");
     Transaction transaction(m_db);
-    if (const auto existing = origin.uuid.empty() ? std::nullopt : sessionWithUuid(origin.uuid))
-        throw StorageError("session " + origin.uuid + " is already in this store, as session " +
-                           std::to_string(*existing));
     m_db.prepare("INSERT INTO sessions (uuid, mode, subject, operator, site, notes, device_model, device_serial, "
                  "device_firmware, profile_json, calibrations_json, started_utc, status, app_version) "
                  "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")

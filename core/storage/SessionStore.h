@@ -93,7 +93,8 @@ public:
 
     // Writing. Blocks are stored as they come; a block whose first sample
     // index is past the end of the previous one records a gap. A uuid
-    // already in the store is refused (StorageError).
+    // already in the store is refused by the schema (StorageError); an
+    // import says so first, in its own words.
     std::int64_t beginSession(const SessionMetadata& metadata, std::span<const ChannelDescriptor> channels,
                               double sampleRate_hz, const SessionOrigin& origin = {});
     void appendBlocks(std::int64_t session, std::span<const SampleBlock> blocks);  // one transaction

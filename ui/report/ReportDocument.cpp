@@ -35,7 +35,8 @@ int pageCountOf(const QByteArray& pdf)
     const qsizetype root = pdf.indexOf("/Type /Pages");
     const qsizetype count = root < 0 ? -1 : pdf.indexOf("/Count ", root);
     int pages = 0;
-    for (qsizetype at = count < 0 ? pdf.size() : count + 7; at < pdf.size() && std::isdigit(pdf[at]); ++at)
+    for (qsizetype at = count < 0 ? pdf.size() : count + 7;
+         at < pdf.size() && std::isdigit(static_cast<unsigned char>(pdf[at])); ++at)
         pages = pages * 10 + (pdf[at] - '0');
     if (pages < 1) throw std::runtime_error("the report was laid out without a page tree");
     return pages;
