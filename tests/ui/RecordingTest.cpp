@@ -151,6 +151,22 @@ TEST(Recording, ANoteFinishedAfterTheRecordingStoppedIsKeptInItsSession)
     EXPECT_LT(annotations[0].time_s, 1.0);
 }
 
+namespace {
+
+// The window started on `store`: the box named `name` its check of the
+// store shows, or nullptr when none comes within 10 s.
+QMessageBox* boxOnStart(ui::MainWindow& window, const QString& store, const QString& name)
+{
+    window.setStorePath(store);
+    window.show();
+    window.checkStore();
+    QMessageBox* box = nullptr;
+    waitFor([&] { return (box = window.findChild<QMessageBox*>(name)); }, 10000);
+    return box;
+}
+
+}  // namespace
+
 TEST(Recording, SessionsACrashCutShortAreReportedOnce)
 {
     QTemporaryDir dir;
@@ -167,12 +183,8 @@ TEST(Recording, SessionsACrashCutShortAreReportedOnce)
         sessions.appendBlocks(id, std::span(&block, 1));
     }
     ui::MainWindow window;
-    window.setStorePath(store);
-    window.show();
-    window.checkStore();
-    QMessageBox* box = nullptr;
-    ASSERT_TRUE(
-        waitFor([&] { return (box = window.findChild<QMessageBox*>(QStringLiteral("interruptedBox"))); }, 10000));
+    QMessageBox* box = boxOnStart(window, store, QStringLiteral("interruptedBox"));
+    ASSERT_NE(box, nullptr);
     EXPECT_FALSE(box->isModal());
     EXPECT_TRUE(box->informativeText().contains(QStringLiteral("Session 1 (palpation, phantom-4)")))
         << box->informativeText().toStdString();
@@ -205,12 +217,8 @@ TEST(Recording, ADamagedStoreIsShownAtStartNotAtRecord)
     }
     ASSERT_TRUE(tactiscope::testing::scribbleOverTheMiddle(store.toStdString()));
     ui::MainWindow window;
-    window.setStorePath(store);
-    window.show();
-    window.checkStore();
-    QMessageBox* box = nullptr;
-    ASSERT_TRUE(
-        waitFor([&] { return (box = window.findChild<QMessageBox*>(QStringLiteral("storeProblemBox"))); }, 10000));
+    QMessageBox* box = boxOnStart(window, store, QStringLiteral("storeProblemBox"));
+    ASSERT_NE(box, nullptr);
     EXPECT_FALSE(box->isModal());
     EXPECT_TRUE(box->informativeText().contains(QStringLiteral("is damaged"))) << box->informativeText().toStdString();
     tactiscope::testing::saveScreenshot(*box, QStringLiteral("damaged-store"));
