@@ -24,6 +24,11 @@ constexpr Words<Verdict, 2> kVerdictWords{{
     {Verdict::Pass, "pass"},
     {Verdict::DefectsFound, "defects found"},
 }};
+constexpr Words<VerdictRole, 3> kVerdictRoleWords{{
+    {VerdictRole::Automatic, "automatic"},
+    {VerdictRole::Operator, "operator"},
+    {VerdictRole::Reviewer, "reviewer"},
+}};
 constexpr Words<EventKind, 5> kEventWords{{
     {EventKind::Defect, "defect"},
     {EventKind::Contact, "contact"},
@@ -100,6 +105,16 @@ std::string_view verdictText(std::optional<Verdict> verdict)
 Verdict automaticVerdict(std::size_t defects)
 {
     return defects == 0 ? Verdict::Pass : Verdict::DefectsFound;
+}
+
+std::string_view toString(VerdictRole role)
+{
+    return wordOf(kVerdictRoleWords, role);
+}
+
+std::optional<VerdictRole> verdictRoleFromString(std::string_view text)
+{
+    return valueOf(kVerdictRoleWords, text);
 }
 
 std::string_view toString(EventKind kind)

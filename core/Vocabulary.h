@@ -44,6 +44,12 @@ std::string_view verdictText(std::optional<Verdict> verdict);  // "" when there 
 // The detector's verdict on a panel: it passes when no defect was found.
 Verdict automaticVerdict(std::size_t defects);
 
+// Who decided a verdict: the detector, the operator at the stop, a reviewer later.
+enum class VerdictRole { Automatic, Operator, Reviewer };
+inline constexpr std::array kVerdictRoles{VerdictRole::Automatic, VerdictRole::Operator, VerdictRole::Reviewer};
+std::string_view toString(VerdictRole role);  // "automatic", "operator", "reviewer"
+std::optional<VerdictRole> verdictRoleFromString(std::string_view text);
+
 enum class EventKind { Defect, Contact, Press, Alarm, Marker };
 inline constexpr std::array kEventKinds{EventKind::Defect, EventKind::Contact, EventKind::Press, EventKind::Alarm,
                                         EventKind::Marker};

@@ -400,8 +400,8 @@ void MainWindow::recordingEnded(const devices::session::RecordingSummary& summar
                                  .arg(summary.session)});
     else if (summary.verdict)
         askVerdict(this, m_store,
-                   {summary.session, summary.end_s, static_cast<int>(summary.defects), *summary.verdict,
-                    m_sessionBar->metadata().operatorName},
+                   {summary.session, static_cast<int>(summary.defects), static_cast<int>(summary.sites),
+                    *summary.verdict, m_sessionBar->metadata().operatorName},
                    [this](const QString& message) { statusBar()->showMessage(message, 5000); });
 }
 

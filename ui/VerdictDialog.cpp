@@ -14,7 +14,7 @@
 
 namespace tactiscope::ui {
 
-VerdictDialog::VerdictDialog(int defects, core::Verdict verdict, QWidget* parent)
+VerdictDialog::VerdictDialog(int crossings, int sites, core::Verdict verdict, QWidget* parent)
     : QDialog(parent),
       m_note(new QLineEdit(this))
 {
@@ -22,8 +22,9 @@ VerdictDialog::VerdictDialog(int defects, core::Verdict verdict, QWidget* parent
     setWindowTitle(tr("Panel verdict"));
     setAttribute(Qt::WA_DeleteOnClose);
     setModal(false);
-    auto* summary =
-        new QLabel(tr("%1 found: the verdict is \"%2\".").arg(defectCountText(defects), wordText(verdict)), this);
+    const QString found = crossings == 0 ? tr("No defect found")
+                                         : tr("%1 at %2 found").arg(defectCountText(crossings), siteCountText(sites));
+    auto* summary = new QLabel(tr("%1: the verdict is \"%2\".").arg(found, wordText(verdict)), this);
     QFont bold = summary->font();
     bold.setBold(true);
     summary->setFont(bold);
@@ -56,6 +57,11 @@ QString defectCountText(int defects)
     return defects == 1 ? VerdictDialog::tr("1 defect") : VerdictDialog::tr("%1 defects").arg(defects);
 }
 
+QString siteCountText(int sites)
+{
+    return sites == 1 ? VerdictDialog::tr("1 site") : VerdictDialog::tr("%1 sites").arg(sites);
+}
+
 void VerdictDialog::decide(core::Verdict verdict)
 {
     emit decided(verdict, m_note->text().trimmed());
@@ -65,37 +71,29 @@ void VerdictDialog::decide(core::Verdict verdict)
 void askVerdict(QWidget* parent, std::shared_ptr<core::storage::StoreWorker> store, const VerdictQuestion& question,
                 std::function<void(const QString& message)> saved)
 {
-    auto* dialog = new VerdictDialog(question.defects, question.automatic, parent);
+    auto* dialog = new VerdictDialog(question.crossings, question.sites, question.automatic, parent);
     QObject::connect(
         dialog, &VerdictDialog::decided, parent,
         [parent, store, question, saved](core::Verdict chosen, const QString& note) {
             const std::int64_t session = question.session;
-            const auto failed = [parent, session](const QString& what) {
-                return [parent, session, what](const QString& error) {
-                    reportProblem(parent, {VerdictDialog::tr("Not saved"), what, error,
-                                           VerdictDialog::tr("Session %1 keeps its automatic verdict; "
-                                                             "add the note as an annotation in its "
-                                                             "review window.")
-                                               .arg(session)});
-                };
-            };
-            if (chosen != question.automatic)
-                runOnStore(
-                    *store, parent,
-                    [session, chosen](core::storage::SessionStore& s) { s.setVerdict(session, chosen); },
-                    [saved, session, chosen] {
-                        saved(VerdictDialog::tr("Session %1: verdict \"%2\"").arg(session).arg(wordText(chosen)));
-                    },
-                    failed(VerdictDialog::tr("The verdict could not be saved.")));
-            if (note.isEmpty()) return;
-            core::storage::Annotation annotation;
-            annotation.time_s = question.end_s;
-            annotation.author = question.author;
-            annotation.text = VerdictDialog::tr("Verdict \"%1\": %2").arg(wordText(chosen), note).toStdString();
+            core::storage::VerdictDecision decision;
+            decision.role = core::VerdictRole::Operator;
+            decision.verdict = chosen;
+            decision.decidedBy = question.operatorName;
+            decision.note = note.toStdString();
             runOnStore(
                 *store, parent,
-                [session, annotation](core::storage::SessionStore& s) { s.addAnnotation(session, annotation); }, [] {},
-                failed(VerdictDialog::tr("The verdict's note could not be saved.")));
+                [session, decision](core::storage::SessionStore& s) { s.decideVerdict(session, decision); },
+                [saved, session, chosen] {
+                    saved(VerdictDialog::tr("Session %1: verdict \"%2\"").arg(session).arg(wordText(chosen)));
+                },
+                [parent, session](const QString& error) {
+                    reportProblem(parent, {VerdictDialog::tr("Not saved"),
+                                           VerdictDialog::tr("The operator's verdict could not be saved."), error,
+                                           VerdictDialog::tr("Session %1 keeps its automatic verdict; set it in "
+                                                             "its review window.")
+                                               .arg(session)});
+                });
         });
     dialog->show();
 }

@@ -1,7 +1,9 @@
 // The panel's verdict when a panel-scan recording stops: the detector's
-// count and verdict, which the operator keeps or overrides (a dent the probe
+// sites and verdict, which the operator keeps or overrides (a dent the probe
 // missed, a false alarm), with an optional note saying why. Non-modal: the
 // line goes on while it waits, and the automatic verdict is already stored.
+// Either answer goes into the session's verdict trail with the operator's
+// name, so a report tells who decided what.
 #pragma once
 
 #include "core/Vocabulary.h"
@@ -26,7 +28,7 @@ class VerdictDialog : public QDialog {
     Q_OBJECT
 
 public:
-    VerdictDialog(int defects, core::Verdict verdict, QWidget* parent = nullptr);
+    VerdictDialog(int crossings, int sites, core::Verdict verdict, QWidget* parent = nullptr);
 
 signals:
     // The verdict chosen (the same one when kept) and the note, maybe empty.
@@ -41,20 +43,22 @@ private:
 // What the operator is asked about a recorded panel.
 struct VerdictQuestion {
     std::int64_t session = 0;
-    double end_s = 0.0;  // the note's annotation goes here
-    int defects = 0;
+    int crossings = 0;                              // the detector's events
+    int sites = 0;                                  // the places they group into
     core::Verdict automatic = core::Verdict::Pass;  // already stored with the session
-    std::string author;
+    std::string operatorName;
 };
 
 // Asks without blocking and writes the answer through the store worker of
-// the store the session was recorded into (kept alive until answered): a
-// changed verdict, and the note as an annotation at the session's end. `saved(message)` tells a status line; a failure
-// is reported.
+// the store the session was recorded into (kept alive until answered): the
+// operator's decision, kept or changed, with the note. `saved(message)`
+// tells a status line; a failure is reported.
 void askVerdict(QWidget* parent, std::shared_ptr<core::storage::StoreWorker> store, const VerdictQuestion& question,
                 std::function<void(const QString& message)> saved);
 
 // "1 defect", "5 defects".
 QString defectCountText(int defects);
+// "1 site", "3 sites".
+QString siteCountText(int sites);
 
 }  // namespace tactiscope::ui

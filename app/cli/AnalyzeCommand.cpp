@@ -49,7 +49,8 @@ int runAnalyze(const QStringList& arguments)
     parser.setApplicationDescription(
         QStringLiteral("Re-run the surface-deflection detector (seed 000) on a stored panel-scan session and print "
                        "its events.\nThe detector restarts after lost samples. The recorded events are kept; "
-                       "--save stores the new ones beside them under a name."));
+                       "--save stores the new ones beside them under a name. Without --spacing-mm the paper's "
+                       "prototype's 15 mm gives each event its scan speed, as in a live recording."));
     parser.addOptions({
         {QStringLiteral("db"), QStringLiteral("The session store (required)."), QStringLiteral("FILE")},
         {QStringLiteral("session"), QStringLiteral("The session: its id, or 'last' (required)."),
@@ -68,6 +69,7 @@ int runAnalyze(const QStringList& arguments)
     if (!parser.isSet(QStringLiteral("session")))
         return usageError(QStringLiteral("--session ID|last is required"), usage);
     DetectorOptions options;
+    options.spacing_m = core::detector::kPrototypeSpacing_m;
     if (const auto error = readDetectorOptions(parser, options)) return usageError(*error, usage);
     const QString save = parser.value(QStringLiteral("save"));
     if (parser.isSet(QStringLiteral("save")) && (save.isEmpty() || save == QLatin1String(core::storage::kLiveAnalysis)))

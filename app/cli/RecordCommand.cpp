@@ -37,8 +37,8 @@ std::string usbSerialOf(const std::string& path)
     return {};
 }
 
-// What the mode's analysis stored, after the samples: "3 defects stored,
-// verdict defects found", "5 stiffness readings stored", "calibration: …".
+// What the mode's analysis stored, after the samples: "20 defects stored at
+// 1 site, verdict defects found", "5 stiffness readings stored", "calibration: …".
 QString analysisSummary(const devices::session::LiveSession& session, const devices::session::RecordingSummary& summary)
 {
     const auto count = [](std::size_t n, const char* one, const char* many) {
@@ -46,8 +46,10 @@ QString analysisSummary(const devices::session::LiveSession& session, const devi
     };
     switch (session.recordingMetadata().mode) {
     case core::Mode::PanelScan:
-        return QStringLiteral("panel-scan: %1 stored, verdict %2")
-            .arg(count(summary.defects, "defect", "defects"), toQString(core::verdictText(summary.verdict)));
+        return QStringLiteral("panel-scan: %1 stored%2, verdict %3")
+            .arg(count(summary.defects, "defect", "defects"),
+                 summary.defects == 0 ? QString() : QStringLiteral(" at ") + count(summary.sites, "site", "sites"),
+                 summary.verdict ? toQString(core::verdictText(summary.verdict)) : QStringLiteral("none"));
     case core::Mode::Palpation: {
         std::size_t stored = 0;
         for (const auto& press : session.presses()) stored += press.stored ? 1 : 0;

@@ -38,7 +38,8 @@ int runReport(const QStringList& arguments)
     QCommandLineParser parser;
     parser.setApplicationDescription(
         QStringLiteral("Write a session's inspection report as a PDF: subject, operator, date, device, sensor and "
-                       "calibration, the verdict, the key plot, and the events, readings and notes."));
+                       "calibration, the verdict and who decided it, the key plot, and the defect sites, events, "
+                       "readings and notes."));
     parser.addOptions({
         {QStringLiteral("db"), QStringLiteral("The session store (required)."), QStringLiteral("FILE")},
         {QStringLiteral("session"), QStringLiteral("The session: its id, or 'last' (required)."),
@@ -47,6 +48,10 @@ int runReport(const QStringList& arguments)
         {QStringLiteral("from"), QStringLiteral("Start of the part reported, in session seconds."),
          QStringLiteral("S")},
         {QStringLiteral("to"), QStringLiteral("End of the part reported, in session seconds."), QStringLiteral("S")},
+        {QStringLiteral("analysis"),
+         QStringLiteral("Whose defects to report: 'live' (the recorded ones, the default) or a re-analysis saved "
+                        "with analyze --save."),
+         QStringLiteral("NAME")},
     });
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     if (!parser.positionalArguments().isEmpty())
@@ -55,7 +60,11 @@ int runReport(const QStringList& arguments)
         if (parser.value(QLatin1String(option)).isEmpty())
             return badInput(QStringLiteral("report: --%1 is required").arg(QLatin1String(option)));
     }
-    core::report::ReportRange range;
+    core::report::ReportRequest request;
+    if (parser.isSet(QStringLiteral("analysis")))
+        request.analysis = parser.value(QStringLiteral("analysis")).toStdString();
+    if (request.analysis.empty()) return badInput(QStringLiteral("report: --analysis needs a name"));
+    core::report::ReportRange& range = request.range;
     for (const auto& [option, bound] : {std::pair{"from", &range.from_s}, std::pair{"to", &range.to_s}}) {
         if (!parser.isSet(QLatin1String(option))) continue;
         *bound = parseNumber(parser.value(QLatin1String(option)));
@@ -77,7 +86,7 @@ int runReport(const QStringList& arguments)
         if (!id)
             return badInput(
                 QStringLiteral("report: no session '%1' in %2").arg(parser.value(QStringLiteral("session")), db));
-        data = core::report::gatherReport(store, *id, range);
+        data = core::report::gatherReport(store, *id, request);
     } catch (const core::storage::StorageError& e) {
         return badInput(QStringLiteral("report: %1").arg(toQString(e.what())));
     } catch (const std::invalid_argument& e) {

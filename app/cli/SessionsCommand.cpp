@@ -1,8 +1,9 @@
-// The sessions subcommand: list, show, export and delete.
+// The sessions subcommand: list, show, export, verdict and delete.
 #include "SessionsCommand.h"
 
 #include "CliSupport.h"
 #include "SessionArgument.h"
+#include "core/report/VerdictTrail.h"
 #include "core/storage/SessionExport.h"
 #include "core/storage/SessionStore.h"
 #include "core/text/JsonWriter.h"
@@ -82,6 +83,7 @@ int show(SessionStore& store, std::int64_t id, bool json)
     line("ended (UTC)", s.endedUtc);
     line("status", std::string(core::toString(s.status)));
     line("verdict", std::string(core::verdictText(s.verdict)));
+    for (const auto& decision : core::report::verdictTrailLines(store.verdicts(id))) line("", "  " + decision);
     line("device", s.metadata.deviceModel + (s.metadata.deviceSerial.empty() ? "" : " " + s.metadata.deviceSerial));
     line("firmware", s.metadata.deviceFirmware);
     line("recorded by", "Tactiscope " + s.appVersion);
@@ -103,6 +105,37 @@ int show(SessionStore& store, std::int64_t id, bool json)
     line("events", analyses.join(QStringLiteral(", ")).toStdString());
     line("readings", std::to_string(store.readings(id).size()));
     line("annotations", std::to_string(store.annotations(id).size()));
+    return kExitOk;
+}
+
+// A reviewer's verdict, added to the session's trail.
+int decideVerdict(SessionStore& store, std::int64_t id, const QString& word, const QString& by, const QString& note)
+{
+    const auto verdict =
+        core::verdictFromString(QString(word).replace(QLatin1Char('-'), QLatin1Char(' ')).toStdString());
+    if (!verdict) {
+        printError(QStringLiteral("the verdict must be pass or defects-found, not '%1'").arg(word));
+        return kExitUsage;
+    }
+    const auto session = store.session(id);
+    if (session->metadata.mode != core::Mode::PanelScan) {
+        printError(QStringLiteral("session %1 is a %2 session: only a panel scan has a verdict")
+                       .arg(id)
+                       .arg(toQString(core::toString(session->metadata.mode))));
+        return kExitUsage;
+    }
+    if (session->status == core::SessionStatus::Recording) {
+        printError(QStringLiteral("session %1 is still being recorded: its verdict is decided when it stops").arg(id));
+        return kExitUsage;
+    }
+    core::storage::VerdictDecision decision;
+    decision.role = core::VerdictRole::Reviewer;
+    decision.verdict = *verdict;
+    decision.decidedBy = by.trimmed().toStdString();
+    decision.note = note.trimmed().toStdString();
+    store.decideVerdict(id, decision);
+    const auto trail = core::report::verdictTrailLines(store.verdicts(id));
+    QTextStream(stdout) << "Session " << id << ": " << toQString(trail.back()) << '\n';
     return kExitOk;
 }
 
@@ -133,8 +166,10 @@ int runSessions(const QStringList& arguments)
         "  show ID|last             one session's metadata, channels and losses\n"
         "  export ID|last --format csv|json --output PATH\n"
         "                           CSV: t then the channels (metadata in PATH's .meta.json); JSON: all\n"
+        "  verdict ID|last pass|defects-found --by NAME [--note TEXT]\n"
+        "                           a reviewer's verdict, added to the session's verdict trail\n"
         "  delete ID                remove a session and its samples"));
-    parser.addPositionalArgument(QStringLiteral("action"), QStringLiteral("list, show, export or delete."));
+    parser.addPositionalArgument(QStringLiteral("action"), QStringLiteral("list, show, export, verdict or delete."));
     parser.addOptions({
         {QStringLiteral("db"), QStringLiteral("The session store (required)."), QStringLiteral("FILE")},
         {QStringLiteral("json"), QStringLiteral("list, show: print JSON.")},
@@ -149,21 +184,30 @@ int runSessions(const QStringList& arguments)
         {QStringLiteral("before"), QStringLiteral("list: started before (UTC)."), QStringLiteral("DATE")},
         {QStringLiteral("search"), QStringLiteral("list: text in subject, operator, site, notes, verdict or serial."),
          QStringLiteral("TEXT")},
+        {QStringLiteral("by"), QStringLiteral("verdict: who decides it (required)."), QStringLiteral("NAME")},
+        {QStringLiteral("note"), QStringLiteral("verdict: why."), QStringLiteral("TEXT")},
     });
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
     if (!parser.isSet(QStringLiteral("db"))) return usageError(QStringLiteral("--db FILE is required"), usage);
     const QStringList positional = parser.positionalArguments();
-    if (positional.isEmpty()) return usageError(QStringLiteral("say what to do: list, show, export or delete"), usage);
+    if (positional.isEmpty())
+        return usageError(QStringLiteral("say what to do: list, show, export, verdict or delete"), usage);
     const QString action = positional.front();
-    const bool takesId =
-        action == QLatin1String("show") || action == QLatin1String("export") || action == QLatin1String("delete");
+    const bool decides = action == QLatin1String("verdict");
+    const bool takesId = action == QLatin1String("show") || action == QLatin1String("export") ||
+                         action == QLatin1String("delete") || decides;
     if (action != QLatin1String("list") && !takesId)
         return usageError(QStringLiteral("unknown action '%1'").arg(action), usage);
-    if (positional.size() != (takesId ? 2 : 1))
+    if (decides && positional.size() != 3)
+        return usageError(QStringLiteral("verdict needs a session and a verdict: verdict ID|last pass|defects-found"),
+                          usage);
+    if (!decides && positional.size() != (takesId ? 2 : 1))
         return usageError(takesId ? QStringLiteral("%1 needs one session: ID or last").arg(action)
                                   : QStringLiteral("list takes no session"),
                           usage);
+    if (decides && parser.value(QStringLiteral("by")).trimmed().isEmpty())
+        return usageError(QStringLiteral("verdict needs --by NAME: the trail says who decided"), usage);
     const QString format = parser.value(QStringLiteral("format"));
     if (action == QLatin1String("export")) {
         if (format != QLatin1String("csv") && format != QLatin1String("json"))
@@ -175,9 +219,10 @@ int runSessions(const QStringList& arguments)
     if (!std::filesystem::exists(db)) return usageError(QStringLiteral("%1 does not exist").arg(toQString(db)), usage);
 
     try {
-        // Only delete writes; the others read, and work beside a recording.
-        SessionStore store(db, action == QLatin1String("delete") ? core::storage::Database::Access::ReadWrite
-                                                                 : core::storage::Database::Access::ReadOnly);
+        // Only delete and verdict write; the others read, and work beside a recording.
+        SessionStore store(db, action == QLatin1String("delete") || decides
+                                   ? core::storage::Database::Access::ReadWrite
+                                   : core::storage::Database::Access::ReadOnly);
         if (action == QLatin1String("list")) {
             core::storage::SessionFilter filter;
             const auto value = [&](const char* option) {
@@ -209,6 +254,9 @@ int runSessions(const QStringList& arguments)
         if (action == QLatin1String("show")) return show(store, *id, parser.isSet(QStringLiteral("json")));
         if (action == QLatin1String("export"))
             return exportSession(store, *id, format, parser.value(QStringLiteral("output")));
+        if (decides)
+            return decideVerdict(store, *id, positional[2], parser.value(QStringLiteral("by")),
+                                 parser.value(QStringLiteral("note")));
         store.deleteSession(*id);
         QTextStream(stdout) << "Deleted session " << *id << ".\n";
         return kExitOk;

@@ -14,6 +14,12 @@ enum class LambdaRule {
     Fixed,      // one λ for every lag
 };
 
+// The cantilever spacing of the paper's prototype (15 mm), which turns the
+// detector's lag into a scan speed: the default wherever a panel probe's
+// own is not given (live, `analyze`, the review's re-analysis), so their
+// events can be placed along the stroke (DefectSites.h).
+inline constexpr double kPrototypeSpacing_m = 0.015;
+
 struct DetectorParameters {
     double sampleInterval_s = 0.002;
     std::vector<double> lags_s = defaultLags_s();

@@ -2,6 +2,8 @@
 // copies of profile and calibrations the session carries.
 #include "core/report/ReportData.h"
 
+#include "core/storage/DefectRecords.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -37,6 +39,13 @@ std::vector<calibration::CalibrationRecord> calibrationsOf(const std::string& ca
     return records;
 }
 
+std::string listed(const std::vector<std::string>& names)
+{
+    std::string text;
+    for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
+    return text.empty() ? "none" : text;
+}
+
 bool overlaps(double start_s, double end_s, double from_s, double to_s)
 {
     return end_s >= from_s && start_s <= to_s;
@@ -49,9 +58,10 @@ bool ReportData::wholeSession() const
     return from_s <= 0.0 && to_s >= session.duration_s();
 }
 
-ReportData gatherReport(storage::SessionStore& store, std::int64_t session, const ReportRange& range,
+ReportData gatherReport(storage::SessionStore& store, std::int64_t session, const ReportRequest& request,
                         std::size_t overviewPoints)
 {
+    const ReportRange& range = request.range;
     const auto summary = store.session(session);
     if (!summary) throw storage::StorageError("no session " + std::to_string(session) + " in the store");
     ReportData data;
@@ -65,8 +75,22 @@ ReportData gatherReport(storage::SessionStore& store, std::int64_t session, cons
         throw std::invalid_argument("the range must lie within the session (0 to " + std::to_string(duration_s) +
                                     " s) and end after it starts");
 
-    for (auto& event : store.events(session))
+    const auto analyses = store.analyses(session);
+    if (request.analysis != storage::kLiveAnalysis && std::ranges::find(analyses, request.analysis) == analyses.end())
+        throw std::invalid_argument("session " + std::to_string(session) + " has no analysis '" + request.analysis +
+                                    "' (it has: " + listed(analyses) + ")");
+    data.analysis = request.analysis;
+    // The analysis's defects; alarms, markers, contacts and presses are the recording's.
+    std::vector<storage::SessionEvent> events = store.events(session, request.analysis);
+    if (request.analysis != storage::kLiveAnalysis) {
+        for (auto& event : store.events(session))
+            if (event.kind != EventKind::Defect) events.push_back(std::move(event));
+        std::ranges::stable_sort(events, {}, &storage::SessionEvent::start_s);
+    }
+    for (auto& event : events)
         if (overlaps(event.start_s, event.end_s, data.from_s, data.to_s)) data.events.push_back(std::move(event));
+    data.sites = detector::scanSites(storage::defectEventsOf(data.events));
+    data.verdicts = store.verdicts(session);
     for (auto& reading : store.readings(session))
         if (overlaps(reading.start_s, reading.end_s, data.from_s, data.to_s))
             data.readings.push_back(std::move(reading));

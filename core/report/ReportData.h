@@ -7,6 +7,7 @@
 #pragma once
 
 #include "core/calibration/CalibrationRecord.h"
+#include "core/detector/DefectSites.h"
 #include "core/storage/SessionStore.h"
 
 #include <cstdint>
@@ -26,13 +27,22 @@ struct ReportRange {
     std::optional<double> to_s;    // to the end when empty
 };
 
+// What a report covers and which analysis's defects it shows.
+struct ReportRequest {
+    ReportRange range;
+    std::string analysis = storage::kLiveAnalysis;  // the recorded events, or a saved re-analysis
+};
+
 struct ReportData {
     storage::SessionSummary session;
     std::string sensorName;  // the profile's name; empty when none was stored
     std::vector<calibration::CalibrationRecord> calibrations;
     double from_s = 0.0;
     double to_s = 0.0;
-    std::vector<storage::SessionEvent> events;  // live events overlapping the range
+    std::string analysis;                            // whose defects `events` holds
+    std::vector<storage::SessionEvent> events;       // the analysis's defects and the live other events in the range
+    detector::SiteGrouping sites;                    // the defects grouped by place along the stroke
+    std::vector<storage::VerdictDecision> verdicts;  // the verdict's trail, oldest first
     std::vector<storage::SessionReading> readings;
     std::vector<storage::Annotation> annotations;
     std::vector<storage::SampleGap> gaps;
@@ -42,8 +52,9 @@ struct ReportData {
 };
 
 // Throws storage::StorageError for an unknown session and
-// std::invalid_argument for a range outside the session or backwards.
-ReportData gatherReport(storage::SessionStore& store, std::int64_t session, const ReportRange& range = {},
+// std::invalid_argument for a range outside the session or backwards, or an
+// analysis the session does not have (the message lists the ones it has).
+ReportData gatherReport(storage::SessionStore& store, std::int64_t session, const ReportRequest& request = {},
                         std::size_t overviewPoints = 1000);
 
 }  // namespace tactiscope::core::report

@@ -195,6 +195,23 @@ void importRecords(SessionStore& store, std::int64_t session, const nlohmann::js
                                       textOf(a, "created_utc"), textOf(a, "modified_utc")});
 }
 
+// The verdict's trail, in its order; the last decision is the verdict.
+// False when the file has none (an export from before trails existed).
+bool importVerdictTrail(SessionStore& store, std::int64_t session, const nlohmann::json& side)
+{
+    const auto trail = side.value("verdicts", nlohmann::json::array());
+    for (const auto& d : trail) {
+        const auto role = verdictRoleFromString(textOf(d, "role"));
+        const auto verdict = verdictFromString(textOf(d, "verdict"));
+        if (!role || !verdict)
+            throw CsvError("the metadata file has a verdict decision with an unknown role or verdict ('" +
+                           textOf(d, "role") + "', '" + textOf(d, "verdict") + "')");
+        store.decideVerdict(session, {0, *role, *verdict, textOf(d, "decided_by"), textOf(d, "decided_utc"),
+                                      textOf(d, "note"), textOf(d, "basis_json")});
+    }
+    return !trail.empty();
+}
+
 // Where each row goes on the sample grid.
 class RowIndexer {
 public:
@@ -395,7 +412,8 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
         store.markLostUntil(result.session, identity.samplesPerChannel);
         result.lostSamples += identity.samplesPerChannel - end;
     }
-    if (identity.verdict) store.setVerdict(result.session, *identity.verdict);
+    const bool trail = side && holdsWholeSession(*side) && importVerdictTrail(store, result.session, *side);
+    if (identity.verdict && !trail) store.setVerdict(result.session, *identity.verdict);
     store.endSession(result.session, identity.status, identity.endedUtc);
     transaction.commit();
     return result;

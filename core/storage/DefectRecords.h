@@ -1,5 +1,5 @@
-// A detector's defect as a session record: the one place a DefectEvent
-// becomes a stored "defect" event, whether live, from `tactiscope-cli
+// A detector's defect as a session record, and back: the one place a
+// DefectEvent becomes a stored "defect" event, whether live, from `tactiscope-cli
 // analyze --save` or from a re-analysis saved in the review window.
 #pragma once
 
@@ -33,6 +33,19 @@ inline std::vector<SessionEvent> defectRecords(std::span<const detector::DefectE
     records.reserve(events.size());
     for (const auto& e : events) records.push_back(defectRecord(e, analysis));
     return records;
+}
+
+// The stored defects among `events` back as the detector's (other kinds
+// are left out), e.g. to group them into sites.
+inline std::vector<detector::DefectEvent> defectEventsOf(std::span<const SessionEvent> events)
+{
+    std::vector<detector::DefectEvent> defects;
+    for (const SessionEvent& e : events) {
+        if (e.kind != EventKind::Defect) continue;
+        defects.push_back(
+            {e.start_s, e.end_s, e.direction, e.peakR.value_or(0.0), e.lag_s.value_or(0.0), e.speed_m_per_s});
+    }
+    return defects;
 }
 
 }  // namespace tactiscope::core::storage

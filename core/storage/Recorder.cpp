@@ -139,7 +139,7 @@ void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
     }
 }
 
-RecorderStats Recorder::finish(SessionStatus status, std::optional<Verdict> verdict)
+RecorderStats Recorder::finish(SessionStatus status, const std::optional<VerdictDecision>& verdict)
 {
     {
         const std::lock_guard lock(m_mutex);
@@ -161,7 +161,7 @@ RecorderStats Recorder::finish(SessionStatus status, std::optional<Verdict> verd
     }
     try {
         m_store.endSession(m_session, m_stats.error.empty() ? status : SessionStatus::Interrupted);
-        if (verdict) m_store.setVerdict(m_session, *verdict);
+        if (verdict) m_store.decideVerdict(m_session, *verdict);
     } catch (const StorageError& e) {
         // The samples are committed; only the end mark is missing.
         if (m_stats.error.empty()) m_stats.error = e.what();

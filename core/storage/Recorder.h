@@ -67,9 +67,9 @@ public:
     double sessionTimeOf(double acquisitionTime_s) const;
     RecorderStats stats() const;
     // Stores what is queued, ends the session with `status` (interrupted if
-    // a write failed) and its verdict, if any, and stops the writer.
-    // Idempotent.
-    RecorderStats finish(SessionStatus status, std::optional<Verdict> verdict = std::nullopt);
+    // a write failed) and its automatic verdict, if any, and stops the
+    // writer. Idempotent.
+    RecorderStats finish(SessionStatus status, const std::optional<VerdictDecision>& verdict = std::nullopt);
 
 private:
     void run(const std::stop_token& stop);

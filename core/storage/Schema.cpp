@@ -153,7 +153,26 @@ CREATE TABLE session_calibrations (
 CREATE INDEX session_calibrations_by_calibration ON session_calibrations (calibration_id);
 )sql";
 
-constexpr std::array kMigrations{kVersion1, kVersion2};
+// Version 2 → 3: who decided a session's verdict. Each decision is a row:
+// the automatic one (its analysis and parameters in basis_json), the
+// operator's at the stop, a reviewer's later; sessions.verdict stays the
+// final one, for listing and filtering. Sessions recorded before keep their
+// verdict without a trail: nobody knows any more who decided it.
+constexpr const char* kVersion3 = R"sql(
+CREATE TABLE verdicts (
+    id          INTEGER PRIMARY KEY,
+    session_id  INTEGER NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    role        TEXT NOT NULL CHECK (role IN ('automatic', 'operator', 'reviewer')),
+    verdict     TEXT NOT NULL CHECK (verdict IN ('pass', 'defects found')),
+    decided_by  TEXT NOT NULL DEFAULT '',
+    decided_utc TEXT NOT NULL,
+    note        TEXT NOT NULL DEFAULT '',
+    basis_json  TEXT NOT NULL DEFAULT ''
+);
+CREATE INDEX verdicts_by_session ON verdicts (session_id, id);
+)sql";
+
+constexpr std::array kMigrations{kVersion1, kVersion2, kVersion3};
 static_assert(kMigrations.size() == kSchemaVersion);
 
 std::int64_t pragma(Database& db, const char* name)

@@ -72,7 +72,7 @@ void optional(text::JsonWriter& json, const char* key, std::optional<double> val
         json.null();
 }
 
-// Events of every analysis, readings and annotations.
+// Events of every analysis, readings, annotations and the verdict's trail.
 void writeRecords(text::JsonWriter& json, SessionStore& store, std::int64_t session)
 {
     json.key("events").beginArray();
@@ -115,6 +115,18 @@ void writeRecords(text::JsonWriter& json, SessionStore& store, std::int64_t sess
         json.key("text").value(a.text);
         json.key("created_utc").value(a.createdUtc);
         json.key("modified_utc").value(a.modifiedUtc);
+        json.endObject();
+    }
+    json.endArray();
+    json.key("verdicts").beginArray();
+    for (const auto& d : store.verdicts(session)) {
+        json.beginObject();
+        json.key("role").value(toString(d.role));
+        json.key("verdict").value(toString(d.verdict));
+        json.key("decided_by").value(d.decidedBy);
+        json.key("decided_utc").value(d.decidedUtc);
+        json.key("note").value(d.note);
+        json.key("basis_json").value(d.basisJson);
         json.endObject();
     }
     json.endArray();

@@ -53,6 +53,21 @@ struct Annotation {
     std::string modifiedUtc;  // likewise
 };
 
+// One decision on a session's verdict; a session's trail is its decisions
+// in order, and the last one is its verdict.
+struct VerdictDecision {
+    std::int64_t id = 0;
+    VerdictRole role = VerdictRole::Automatic;
+    Verdict verdict = Verdict::Pass;
+    std::string decidedBy;   // the operator's or reviewer's name; empty for the automatic one
+    std::string decidedUtc;  // set by the store when empty (an import gives the recorded one)
+    std::string note;        // why, in the decider's words
+    // The automatic verdict's grounds, a JSON object: the analysis, its
+    // parameters and what it found (e.g. {"analysis":"live","defects":21,
+    // "sites":3,"threshold":0.85}).
+    std::string basisJson;
+};
+
 struct StoredCalibration {
     std::int64_t id = 0;
     calibration::CalibrationRecord record;

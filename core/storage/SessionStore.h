@@ -104,6 +104,11 @@ public:
     // Ends it now, or at `endedUtc` (an imported session's own end; empty
     // for one that never ended).
     void endSession(std::int64_t session, SessionStatus status, std::optional<std::string> endedUtc = std::nullopt);
+    // Adds a decision to the session's verdict trail, which makes it the
+    // session's verdict (one transaction). Returns its id.
+    std::int64_t decideVerdict(std::int64_t session, const VerdictDecision& decision);
+    // Sets the verdict without a trail: only for an import of an export
+    // made before verdicts had one.
     void setVerdict(std::int64_t session, Verdict verdict);
     // Deletes a session with its channels, samples and gaps. Throws
     // StorageError for an unknown id or a session still being recorded.
@@ -141,6 +146,7 @@ public:
     void updateAnnotation(std::int64_t annotation, const std::string& text);
     void deleteAnnotation(std::int64_t annotation);
     std::vector<Annotation> annotations(std::int64_t session);
+    std::vector<VerdictDecision> verdicts(std::int64_t session);  // the trail, oldest first
 
     // The calibration history, shared by all sessions of the store.
     std::int64_t addCalibration(const calibration::CalibrationRecord& record);

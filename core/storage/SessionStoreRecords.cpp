@@ -154,6 +154,40 @@ std::vector<Annotation> SessionStore::annotations(std::int64_t session)
     return result;
 }
 
+std::int64_t SessionStore::decideVerdict(std::int64_t session, const VerdictDecision& d)
+{
+    Transaction transaction(m_db);
+    setVerdict(session, d.verdict);
+    m_db.prepare("INSERT INTO verdicts (session_id, role, verdict, decided_by, decided_utc, note, basis_json) "
+                 "VALUES (?, ?, ?, ?, ?, ?, ?)")
+        .bind(1, session)
+        .bind(2, toString(d.role))
+        .bind(3, toString(d.verdict))
+        .bind(4, d.decidedBy)
+        .bind(5, d.decidedUtc.empty() ? text::utcNow() : d.decidedUtc)
+        .bind(6, d.note)
+        .bind(7, d.basisJson)
+        .run();
+    const std::int64_t id = m_db.lastInsertId();
+    transaction.commit();
+    return id;
+}
+
+std::vector<VerdictDecision> SessionStore::verdicts(std::int64_t session)
+{
+    std::vector<VerdictDecision> result;
+    auto query = m_db.prepare("SELECT id, role, verdict, decided_by, decided_utc, note, basis_json FROM verdicts "
+                              "WHERE session_id = ? ORDER BY id");
+    query.bind(1, session);
+    while (query.step()) {
+        // The schema's CHECKs admit only the vocabulary's words.
+        result.push_back({query.int64(0), verdictRoleFromString(query.text(1)).value_or(VerdictRole::Reviewer),
+                          verdictFromString(query.text(2)).value_or(Verdict::DefectsFound), query.text(3),
+                          query.text(4), query.text(5), query.text(6)});
+    }
+    return result;
+}
+
 std::int64_t SessionStore::addCalibration(const calibration::CalibrationRecord& record)
 {
     m_db.prepare("INSERT INTO calibrations (kind, sensor, operator, created_utc, r_squared, points, record_json) "

@@ -8,6 +8,7 @@
 #include "core/capacitive/LiveCapacitive.h"
 #include "core/compliance/LivePalpation.h"
 #include "core/detector/LiveDetection.h"
+#include "core/storage/AutomaticVerdict.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/RecordingTap.h"
 #include "devices/SteadyClock.h"
@@ -218,11 +219,27 @@ RecordingSummary LiveSession::finishRecording()
     // A panel the probe left before the stop was not wholly inspected: no
     // automatic verdict says it passed.
     const bool whole = !summary.lostAt_s && summary.stoppedBecause.empty();
-    if (m_metadata.mode == core::Mode::PanelScan && whole) summary.verdict = automaticVerdict();
-    summary.stats = m_recorder->finish(core::SessionStatus::Complete, summary.verdict);
+    std::optional<core::storage::VerdictDecision> decision;
+    if (m_metadata.mode == core::Mode::PanelScan) summary.sites = panelSites().sites.size();
+    if (m_metadata.mode == core::Mode::PanelScan && whole) {
+        decision = core::storage::automaticDecision(core::storage::kLiveAnalysis, m_defects.size(), summary.sites,
+                                                    detectorParameters());
+        summary.verdict = decision->verdict;
+    }
+    summary.stats = m_recorder->finish(core::SessionStatus::Complete, decision);
     if (!summary.stats.error.empty()) summary.verdict.reset();  // the session ended interrupted
     m_recorder.reset();
     return summary;
+}
+
+core::detector::SiteGrouping LiveSession::panelSites() const
+{
+    return core::detector::scanSites(m_defects);
+}
+
+core::detector::DetectorParameters LiveSession::detectorParameters() const
+{
+    return m_detection ? m_detection->settings().parameters : core::detector::DetectorParameters{};
 }
 
 std::int64_t LiveSession::sessionId() const

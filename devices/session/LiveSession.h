@@ -26,6 +26,8 @@
 #include "core/Vocabulary.h"
 #include "core/compliance/StiffnessReadings.h"
 #include "core/detector/DefectEvent.h"
+#include "core/detector/DefectSites.h"
+#include "core/detector/DetectorParameters.h"
 #include "core/sensors/SensorProfile.h"
 #include "core/storage/Recorder.h"
 #include "devices/Acquisition.h"
@@ -66,6 +68,10 @@ struct LiveSessionOptions {
     // The recorder's memory bound, in time: a stalled disk beyond it turns
     // into a recorded gap instead of unbounded memory.
     double recorderQueue_s = 30.0;
+    // The panel probe's cantilever spacing, which turns the detector's lag
+    // into a scan speed and so places defects along the stroke (sites). A
+    // panel-scan probe has no profile yet: the paper's prototype's.
+    double panelSpacing_m = core::detector::kPrototypeSpacing_m;
 };
 
 // A completed press as the session saw it (stream times), the site it was
@@ -80,8 +86,9 @@ struct PressRecord {
 struct RecordingSummary {
     std::int64_t session = 0;
     core::storage::RecorderStats stats;
-    std::optional<core::Verdict> verdict;  // stored with the session (panel scan)
-    std::size_t defects = 0;               // of this recording's panel
+    std::optional<core::Verdict> verdict;  // the automatic one, stored with the session (panel scan)
+    std::size_t defects = 0;               // of this recording's panel: crossings
+    std::size_t sites = 0;                 // where they are: a defect crossed N times is one site
     double end_s = 0.0;                    // session time of the last sample
     // An end that was not a stop: the probe went silent (lost, and not back
     // by the stop) at lostAt_s, and the samples to the stop are a gap;
@@ -157,7 +164,10 @@ public:
     // device connected), stream times; the presses likewise.
     const std::vector<core::detector::DefectEvent>& panelDefects() const { return m_defects; }
     const std::vector<PressRecord>& presses() const { return m_presses; }
-    core::Verdict automaticVerdict() const { return core::automaticVerdict(m_defects.size()); }
+    // The panel's defects grouped into sites (core/detector/DefectSites.h),
+    // which the automatic verdict counts.
+    core::detector::SiteGrouping panelSites() const;
+    core::Verdict automaticVerdict() const { return core::automaticVerdict(panelSites().sites.size()); }
     // The site the next presses are taken at (a phantom's grid cell).
     void setSite(std::string site) { m_site = std::move(site); }
 
@@ -171,6 +181,7 @@ public:
 
 private:
     std::optional<std::string> build(core::Mode mode);
+    core::detector::DetectorParameters detectorParameters() const;
     std::optional<core::storage::StoredCalibration> newestCalibration(std::string_view kind, const std::string& sensor);
     std::optional<std::string> buildPalpation();
     std::optional<std::string> buildCapacitive();

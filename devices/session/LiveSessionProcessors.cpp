@@ -79,6 +79,7 @@ void LiveSession::buildDetection()
     core::detector::LiveDetectionSettings settings;
     try {
         settings.parameters.lags_s = core::detector::liveLags_s(rate_hz);
+        settings.spacing_m = m_options.panelSpacing_m;
         m_detection = std::make_shared<core::detector::LiveDetection>(
             *core::modeChannels(core::Mode::PanelScan, channels), rate_hz, settings, m_options.displaySeconds);
     } catch (const std::invalid_argument& e) {

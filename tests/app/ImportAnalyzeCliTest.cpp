@@ -1,7 +1,7 @@
 // `tactiscope-cli import` and `analyze` on real files: a foreign CSV with a
 // millisecond time column and missing rows lands as a session with gaps;
 // export → import into another store → export gives the same files to the
-// byte (the session's identity, times, status and verdict included), and
+// byte (the session's identity, times, status and verdict trail included), and
 // the same samples to the bit; importing a session a store already holds
 // is refused; analyze finds the events detect finds in the same data; bad
 // input gives exit code 2 and one clear line.
@@ -114,7 +114,10 @@ TEST(ImportCli, ExportImportExportIsTheSameFilesAndTheSameBits)
                                                           std::nullopt, std::nullopt, std::nullopt, "lost"}});
         store.addAnnotation(id, {0, 0.9, "Lin", "tare drift", "", ""});
         store.endSession(id, tactiscope::core::SessionStatus::Interrupted);
-        store.setVerdict(id, tactiscope::core::Verdict::DefectsFound);
+        store.decideVerdict(id, {0, tactiscope::core::VerdictRole::Automatic, tactiscope::core::Verdict::Pass, "",
+                                 "2026-11-20T10:00:00.000Z", "", R"({"analysis":"live","defects":0,"sites":0})"});
+        store.decideVerdict(id, {0, tactiscope::core::VerdictRole::Reviewer, tactiscope::core::Verdict::DefectsFound,
+                                 "Q. Engineer", "2026-11-21T16:02:00.000Z", "crack at the root", ""});
     }
     const QString first = dir.filePath("first.csv"), second = dir.filePath("second.csv");
     ASSERT_EQ(runCli({"sessions", "--db", db, "export", "1", "--format", "csv", "--output", first}).exitCode, 0);
@@ -142,6 +145,15 @@ TEST(ImportCli, ExportImportExportIsTheSameFilesAndTheSameBits)
     EXPECT_EQ(copy.startedUtc, recorded.startedUtc);
     EXPECT_EQ(copy.status, tactiscope::core::SessionStatus::Interrupted);
     EXPECT_EQ(copy.verdict, tactiscope::core::Verdict::DefectsFound);
+    const auto trail = store.verdicts(1), recordedTrail = original.verdicts(1);
+    ASSERT_EQ(trail.size(), 2u);
+    for (std::size_t d = 0; d < trail.size(); ++d) {
+        EXPECT_EQ(trail[d].role, recordedTrail[d].role);
+        EXPECT_EQ(trail[d].decidedBy, recordedTrail[d].decidedBy);
+        EXPECT_EQ(trail[d].decidedUtc, recordedTrail[d].decidedUtc);
+        EXPECT_EQ(trail[d].note, recordedTrail[d].note);
+        EXPECT_EQ(trail[d].basisJson, recordedTrail[d].basisJson);
+    }
     EXPECT_EQ(copy.metadata.operatorName, "Lin");
     EXPECT_EQ(store.channels(1)[0].descriptor, (core::ChannelDescriptor{"c", "pF", core::ChannelKind::Capacitance}));
 

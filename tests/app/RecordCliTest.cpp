@@ -124,7 +124,14 @@ TEST(RecordCli, APanelScanRecordingStoresTheDetectorsEventsAndTheReportListsThem
     const auto report = runCli({"report", "--db", db, "--session", "last", "--output", pdf});
     ASSERT_EQ(report.exitCode, 0) << report.err.toStdString();
     const QString text = pdfText(pdf);
-    EXPECT_TRUE(text.contains(QStringLiteral("Defects (%1)").arg(events.size()))) << text.toStdString();
+    // Every crossing of the one dent is one site, which the verdict counts.
+    EXPECT_TRUE(result.out.contains(QStringLiteral("defects stored at 1 site, verdict defects found")))
+        << result.out.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("Defect sites (1)"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("Crossings (%1)").arg(events.size()))) << text.toStdString();
+    EXPECT_TRUE(text.simplified().contains(
+        QStringLiteral("automatic: defects found (live detector: %1 defects at 1 site").arg(events.size())))
+        << text.toStdString();
     EXPECT_TRUE(text.contains(QStringLiteral("A then B"))) << text.toStdString();
     EXPECT_TRUE(text.contains(QStringLiteral("B then A"))) << text.toStdString();
 }

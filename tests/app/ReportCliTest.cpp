@@ -73,7 +73,9 @@ QString makeStore(const QTemporaryDir& dir)
                         });
     store.addAnnotation(id, {0, 9.0, "Grace", "second dent seen by eye", "", ""});
     store.endSession(id, tactiscope::core::SessionStatus::Complete);
-    store.setVerdict(id, tactiscope::core::Verdict::DefectsFound);
+    store.decideVerdict(id, {0, tactiscope::core::VerdictRole::Automatic, tactiscope::core::Verdict::DefectsFound, "",
+                             "2026-11-21T14:12:00.000Z", "",
+                             R"({"analysis":"live","defects":2,"sites":2,"threshold":0.85})"});
     return path;
 }
 
@@ -105,10 +107,11 @@ TEST_F(ReportCli, ThePdfHoldsTheSubjectTheVerdictAndTheEventTable)
     const QLocale locale;
     for (const QString& expected :
          {QStringLiteral("door-42"), QStringLiteral("Ada Lovelace"), QStringLiteral("DEFECTS FOUND"),
-          QStringLiteral("Capsule probe 3"), QStringLiteral("Defects (2)"), QStringLiteral("A then B"),
-          QStringLiteral("B then A"), locale.toString(0.953, 'f', 3), locale.toString(0.912, 'f', 3),
-          locale.toString(2.5, 'f', 3), locale.toString(7.1, 'f', 3), QStringLiteral("oil stain"),
-          QStringLiteral("second dent seen by eye")})
+          QStringLiteral("Capsule probe 3"), QStringLiteral("Defect sites (2)"), QStringLiteral("Crossings (2)"),
+          QStringLiteral("automatic: defects found (live detector: 2 defects at 2 sites, threshold 0.85)"),
+          QStringLiteral("From the events recorded live."), QStringLiteral("A then B"), QStringLiteral("B then A"),
+          locale.toString(0.953, 'f', 3), locale.toString(0.912, 'f', 3), locale.toString(2.5, 'f', 3),
+          locale.toString(7.1, 'f', 3), QStringLiteral("oil stain"), QStringLiteral("second dent seen by eye")})
         EXPECT_TRUE(text.contains(expected)) << expected.toStdString() << "\n" << text.toStdString();
 
     // The first page as a picture, for a person to look at.
@@ -133,7 +136,7 @@ TEST_F(ReportCli, ARangeReportsOnlyWhatLiesInIt)
     ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
     const QString text = pdfText(pdf);
     const QLocale locale;
-    EXPECT_TRUE(text.contains(QStringLiteral("Defects (1)"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("Crossings (1)"))) << text.toStdString();
     EXPECT_TRUE(text.contains(locale.toString(0.912, 'f', 3)));
     EXPECT_FALSE(text.contains(locale.toString(0.953, 'f', 3)));
     EXPECT_FALSE(text.contains(QStringLiteral("oil stain")));  // the marker at 4 s

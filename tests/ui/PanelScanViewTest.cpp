@@ -40,6 +40,7 @@ TEST(PanelScanView, DefectsAreListedStoredAndMatchTheCoreDetector)
     window.connectSource(liveSimulator());
     window.show();
     ASSERT_TRUE(window.panelScanView()->isVisible());
+    QTest::keyClicks(child<QLineEdit>(window, "operatorEdit"), QStringLiteral("Ada"));
     ASSERT_TRUE(window.startRecording());
     auto* table = child<QTableWidget>(*window.panelScanView(), "defectTable");
     // The simulated hand passes the dent about once a second, in both directions.
@@ -63,15 +64,21 @@ TEST(PanelScanView, DefectsAreListedStoredAndMatchTheCoreDetector)
     tactiscope::testing::saveScreenshot(*verdict, QStringLiteral("verdict"));
     QTest::mouseClick(child<QPushButton>(*verdict, "passButton"), Qt::LeftButton);
 
-    // The window writes off its thread, the verdict then the note.
+    // The window writes off its thread: the operator's decision joins the
+    // automatic one in the verdict's trail, with the name and the note.
     core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
-    EXPECT_TRUE(waitFor([&] { return !sessions.annotations(sessions.sessions().front().id).empty(); }, 5000));
+    EXPECT_TRUE(waitFor([&] { return sessions.verdicts(sessions.sessions().front().id).size() == 2; }, 5000));
     const auto session = sessions.sessions().front();
     EXPECT_EQ(session.verdict, tactiscope::core::Verdict::Pass);
-    const auto notes = sessions.annotations(session.id);
-    ASSERT_EQ(notes.size(), 1u);
-    EXPECT_EQ(notes[0].text, "Verdict \"pass\": oil drops, no dent");
-    EXPECT_NEAR(notes[0].time_s, static_cast<double>(session.sampleCount) / 500.0, 0.01);
+    const auto trail = sessions.verdicts(session.id);
+    ASSERT_EQ(trail.size(), 2u);
+    EXPECT_EQ(trail[0].role, tactiscope::core::VerdictRole::Automatic);
+    EXPECT_EQ(trail[0].verdict, tactiscope::core::Verdict::DefectsFound);
+    EXPECT_NE(trail[0].basisJson.find("\"analysis\":\"live\""), std::string::npos) << trail[0].basisJson;
+    EXPECT_EQ(trail[1].role, tactiscope::core::VerdictRole::Operator);
+    EXPECT_EQ(trail[1].verdict, tactiscope::core::Verdict::Pass);
+    EXPECT_EQ(trail[1].decidedBy, "Ada");
+    EXPECT_EQ(trail[1].note, "oil drops, no dent");
     const auto stored = sessions.events(session.id);
     ASSERT_GE(static_cast<int>(stored.size()), listed - 1);  // the last may still have been open
     // The core's detector over the recorded samples finds each stored defect

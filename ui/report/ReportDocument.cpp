@@ -3,6 +3,8 @@
 #include "ui/VocabularyText.h"
 
 #include "core/Version.h"
+#include "core/report/VerdictTrail.h"
+#include "core/storage/DefectRecords.h"
 #include "core/storage/SafeOutput.h"
 #include "core/text/UtcTime.h"
 #include "ui/report/ReportPlot.h"
@@ -133,9 +135,14 @@ QString verdict(const core::report::ReportData& data)
 {
     if (const auto verdict = data.session.verdict) {
         const bool pass = *verdict == core::Verdict::Pass;
-        return QStringLiteral("<p class=verdict style='color:%1'>%2 %3</p>")
-            .arg(pass ? QStringLiteral("#2e7d32") : QStringLiteral("#c62828"), QObject::tr("Verdict:"),
-                 wordText(*verdict).toUpper());
+        QString html = QStringLiteral("<p class=verdict style='color:%1'>%2 %3</p>")
+                           .arg(pass ? QStringLiteral("#2e7d32") : QStringLiteral("#c62828"), QObject::tr("Verdict:"),
+                                wordText(*verdict).toUpper());
+        QStringList trail;
+        for (const auto& line : core::report::verdictTrailLines(data.verdicts)) trail << text(line);
+        if (trail.isEmpty())
+            trail << QObject::tr("Recorded before verdicts kept a trail: who decided it is not known.");
+        return html + QStringLiteral("<p class=trail>%1</p>").arg(trail.join(QStringLiteral("<br>")));
     }
     if (!data.readings.empty()) {
         double sum = 0.0;
@@ -149,28 +156,61 @@ QString verdict(const core::report::ReportData& data)
     return QStringLiteral("<p class=verdict>%1</p>").arg(QObject::tr("No verdict recorded"));
 }
 
+// The defects as sites (a defect crossed in every stroke is one), then each
+// crossing with the site it belongs to.
+QString defectTables(const core::report::ReportData& data)
+{
+    const auto defects = core::storage::defectEventsOf(data.events);
+    const QString source = data.analysis == core::storage::kLiveAnalysis
+                               ? QObject::tr("the events recorded live")
+                               : QObject::tr("the saved re-analysis \"%1\"").arg(text(data.analysis));
+    QString html = QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Defect sites (%1)").arg(data.sites.sites.size()));
+    html += QStringLiteral("<p>%1</p>").arg(QObject::tr("From %1.").arg(source));
+    if (defects.empty()) return html + QStringLiteral("<p>%1</p>").arg(QObject::tr("None found."));
+    std::vector<int> siteOf(defects.size());
+    std::vector<QStringList> sites;
+    for (std::size_t k = 0; k < data.sites.sites.size(); ++k) {
+        const auto& site = data.sites.sites[k];
+        for (const std::size_t i : site.crossings) siteOf[i] = static_cast<int>(k + 1);
+        sites.push_back(
+            {QString::number(k + 1),
+             site.position_m ? QStringLiteral("%1 ± %2").arg(QLocale().toString(*site.position_m * 1e3, 'f', 0),
+                                                             number(site.spread_m * 1e3, 0))
+                             : QObject::tr("not placed"),
+             QString::number(site.crossings.size()), QObject::tr("%1 A→B, %2 B→A").arg(site.forward).arg(site.backward),
+             QStringLiteral("%1 – %2").arg(number(site.first_s, 2), number(site.last_s, 2))});
+    }
+    html += table({QObject::tr("Site"), QObject::tr("Position (mm)"), QObject::tr("Crossings"),
+                   QObject::tr("Directions"), QObject::tr("Time (s)")},
+                  sites);
+    html += QStringLiteral("<p><small>%1</small></p>")
+                .arg(QObject::tr("Position along the stroke from its centre, from the scan speed (cantilever "
+                                 "spacing / lag) between reversals; see docs/detector.md."));
+    std::vector<QStringList> crossings;
+    for (std::size_t i = 0; i < defects.size(); ++i) {
+        const auto& e = defects[i];
+        crossings.push_back({number(e.start_s, 3), QString::number(siteOf[i]),
+                             e.direction > 0 ? QObject::tr("A then B") : QObject::tr("B then A"), number(e.peakR, 3),
+                             number(e.peakLag_s * 1e3, 0),
+                             e.speed_m_per_s ? number(*e.speed_m_per_s * 1e3, 0) : QStringLiteral("—")});
+    }
+    html += QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Crossings (%1)").arg(defects.size()));
+    return html + table({QObject::tr("Time (s)"), QObject::tr("Site"), QObject::tr("Order"), QObject::tr("Peak R"),
+                         QObject::tr("Lag (ms)"), QObject::tr("Speed (mm/s)")},
+                        crossings);
+}
+
 QString eventTables(const core::report::ReportData& data)
 {
-    std::vector<QStringList> defects, others;
+    std::vector<QStringList> others;
+    bool anyDefect = false;
     for (const auto& e : data.events) {
-        if (e.kind == core::EventKind::Defect) {
-            defects.push_back({number(e.start_s, 3),
-                               e.direction > 0 ? QObject::tr("A then B") : QObject::tr("B then A"),
-                               e.peakR ? number(*e.peakR, 3) : QStringLiteral("—"),
-                               e.lag_s ? number(*e.lag_s * 1e3, 0) : QStringLiteral("—"),
-                               e.speed_m_per_s ? number(*e.speed_m_per_s * 1e3, 0) : QStringLiteral("—")});
-        } else {
+        anyDefect = anyDefect || e.kind == core::EventKind::Defect;
+        if (e.kind != core::EventKind::Defect)
             others.push_back({number(e.start_s, 3), wordText(e.kind), orDash(e.note)});
-        }
     }
     QString html;
-    if (data.session.metadata.mode == core::Mode::PanelScan || !defects.empty()) {
-        html += QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Defects (%1)").arg(defects.size()));
-        html += defects.empty() ? QStringLiteral("<p>%1</p>").arg(QObject::tr("None found."))
-                                : table({QObject::tr("Time (s)"), QObject::tr("Order"), QObject::tr("Peak R"),
-                                         QObject::tr("Lag (ms)"), QObject::tr("Speed (mm/s)")},
-                                        defects);
-    }
+    if (data.session.metadata.mode == core::Mode::PanelScan || anyDefect) html += defectTables(data);
     if (!data.readings.empty()) {
         std::vector<QStringList> rows;
         for (const auto& r : data.readings) {
@@ -202,7 +242,8 @@ const char* kStyle = "body { font-family: 'DejaVu Sans'; font-size: 9pt; }"
                      "table.header th { padding-right: 12px; color: #555; font-weight: normal; }"
                      "table.list th { background-color: #eeeeee; }"
                      "table.list td { border-bottom: 1px solid #dddddd; }"
-                     "p.verdict { font-size: 14pt; font-weight: bold; margin-top: 10px; }"
+                     "p.verdict { font-size: 14pt; font-weight: bold; margin-top: 10px; margin-bottom: 2px; }"
+                     "p.trail { color: #444; }"
                      "p.footer { color: #777; font-size: 7pt; }";
 
 }  // namespace

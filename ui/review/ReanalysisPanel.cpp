@@ -65,7 +65,7 @@ ReanalysisPanel::ReanalysisPanel(const QString& storePath, core::storage::Sessio
       m_threshold(spin(this, "thresholdSpin", 0.01, 0.999, 0.85, 3, {})),
       m_faceToFace(new QCheckBox(tr("Gauges face to face (negate b)"), this)),
       m_hold(spin(this, "holdSpin", 0.0, 10000.0, 20.0, 1, tr(" ms"))),
-      m_spacing(spin(this, "spacingSpin", 0.0, 1000.0, 0.0, 2, tr(" mm"))),
+      m_spacing(spin(this, "spacingSpin", 0.0, 1000.0, core::detector::kPrototypeSpacing_m * 1e3, 2, tr(" mm"))),
       m_run(new QPushButton(tr("&Run"), this)),
       m_save(new QPushButton(tr("&Save as analysis…"), this)),
       m_status(new QLabel(this))
@@ -85,7 +85,8 @@ ReanalysisPanel::ReanalysisPanel(const QString& storePath, core::storage::Sessio
     m_epsilon->setToolTip(tr("Regularisation ε, in strain (eq. 9)"));
     m_threshold->setToolTip(tr("Decision threshold on the partial correlation R"));
     m_hold->setToolTip(tr("Gaps in the decision up to this long are bridged within one event"));
-    m_spacing->setToolTip(tr("Cantilever spacing, to give each event's scan speed"));
+    m_spacing->setToolTip(tr("Cantilever spacing, to give each event's scan speed and so its place along the "
+                             "stroke (the paper's prototype: 15 mm)"));
     m_run->setToolTip(tr("Run the detector on the stored samples (Ctrl+Return)"));
     m_save->setToolTip(tr("Store these events under a name, beside the recorded ones"));
     m_save->setEnabled(false);

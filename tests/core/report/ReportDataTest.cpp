@@ -82,7 +82,7 @@ TEST_F(ReportDataTest, ARangeNarrowsTheRecordsAndTheOverviewMatchesTheSamples)
 {
     SessionStore store(file("r.tactiscope"));
     const auto id = recordSession(store);
-    const auto data = report::gatherReport(store, id, {10.0, 14.0}, 40);
+    const auto data = report::gatherReport(store, id, {{10.0, 14.0}}, 40);
     EXPECT_FALSE(data.wholeSession());
     ASSERT_EQ(data.events.size(), 1u);
     EXPECT_EQ(data.events[0].start_s, 12.0);
@@ -110,7 +110,7 @@ TEST_F(ReportDataTest, RefusesAnUnknownSessionOrARangeOutsideIt)
     SessionStore store(file("r.tactiscope"));
     const auto id = recordSession(store);
     EXPECT_THROW(report::gatherReport(store, id + 1), StorageError);
-    EXPECT_THROW(report::gatherReport(store, id, {5.0, 4.0}), std::invalid_argument);
-    EXPECT_THROW(report::gatherReport(store, id, {std::nullopt, 25.0}), std::invalid_argument);
-    EXPECT_THROW(report::gatherReport(store, id, {-1.0, std::nullopt}), std::invalid_argument);
+    EXPECT_THROW(report::gatherReport(store, id, {{5.0, 4.0}}), std::invalid_argument);
+    EXPECT_THROW(report::gatherReport(store, id, {{std::nullopt, 25.0}}), std::invalid_argument);
+    EXPECT_THROW(report::gatherReport(store, id, {{-1.0, std::nullopt}}), std::invalid_argument);
 }

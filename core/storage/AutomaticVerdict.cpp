@@ -1,0 +1,33 @@
+// AutomaticVerdict: the grounds written as a JSON object.
+#include "core/storage/AutomaticVerdict.h"
+
+#include <nlohmann/json.hpp>
+
+namespace tactiscope::core::storage {
+
+VerdictDecision automaticDecision(const std::string& analysis, std::size_t defects, std::size_t sites,
+                                  const detector::DetectorParameters& parameters)
+{
+    nlohmann::ordered_json basis;
+    basis["analysis"] = analysis;
+    basis["defects"] = defects;
+    basis["sites"] = sites;
+    basis["threshold"] = parameters.threshold;
+    basis["epsilon"] = parameters.epsilon;
+    if (!parameters.lags_s.empty()) {
+        basis["lag_min_s"] = parameters.lags_s.front();
+        basis["lag_max_s"] = parameters.lags_s.back();
+    }
+    basis["lambda"] = parameters.lambdaRule == detector::LambdaRule::EqualsLag ? "lag" : "fixed";
+    if (parameters.lambdaRule == detector::LambdaRule::Fixed) basis["lambda_s"] = parameters.fixedLambda_s;
+    if (parameters.window_s) basis["window_s"] = *parameters.window_s;
+    basis["face_to_face"] = parameters.faceToFace;
+
+    VerdictDecision decision;
+    decision.role = VerdictRole::Automatic;
+    decision.verdict = automaticVerdict(sites);
+    decision.basisJson = basis.dump();
+    return decision;
+}
+
+}  // namespace tactiscope::core::storage

@@ -1,0 +1,63 @@
+// Defect sites on the simulator's reciprocating scan, whose dent position is
+// known: every crossing of the one dent groups into one site, placed where
+// the dent is.
+#include "core/SampleBlock.h"
+#include "core/detector/DefectSites.h"
+#include "core/detector/OfflineDetection.h"
+#include "devices/simulator/PanelScanScenario.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace tactiscope;
+
+namespace {
+
+std::vector<core::detector::DefectEvent> detectScan(const devices::simulator::PanelScanParameters& p, double seconds)
+{
+    devices::simulator::PanelScanScenario scenario(p);
+    core::SampleBlock block(2, static_cast<std::size_t>(seconds * p.sampleRate_hz), 0.0, 1.0 / p.sampleRate_hz);
+    scenario.generate(block);
+    const std::vector<std::vector<double>> cantilevers{{block.channel(0).begin(), block.channel(0).end()},
+                                                       {block.channel(1).begin(), block.channel(1).end()}};
+    core::detector::StretchSettings settings;
+    settings.spacing_m = p.cantileverSpacing_m;
+    return core::detector::detectStretches(cantilevers, settings).events;
+}
+
+// The simulator's dent position is measured along cantilever A's stroke;
+// sites are placed along the stroke of the probe's centre, half a spacing
+// behind A: its stroke's centre lies half a spacing behind A's, so the dent
+// is half a spacing further from it.
+double dentFromCentreStroke_m(const devices::simulator::PanelScanParameters& p)
+{
+    return p.defectPosition_m + 0.5 * p.cantileverSpacing_m;
+}
+
+}  // namespace
+
+TEST(DefectSitesScan, OneDentCrossedInEveryStrokeIsOneSiteWhereTheDentIs)
+{
+    for (const double dent_m : {0.030, -0.050, 0.0}) {
+        devices::simulator::PanelScanParameters p;
+        p.defectPosition_m = dent_m;
+        p.seed = 7;
+        const auto events = detectScan(p, 30.0);
+        ASSERT_GE(events.size(), 28u) << "dent at " << dent_m;
+        const auto positions = core::detector::strokePositions(events);
+        for (std::size_t i = 0; i < events.size(); ++i) {
+            ASSERT_TRUE(positions[i]) << "event at " << events[i].start_s << " s";
+            EXPECT_NEAR(*positions[i], dentFromCentreStroke_m(p), 0.010) << "event at " << events[i].start_s << " s";
+        }
+        const auto grouping = core::detector::scanSites(events);
+        ASSERT_EQ(grouping.sites.size(), 1u) << "dent at " << dent_m;
+        const auto& site = grouping.sites.front();
+        EXPECT_EQ(site.crossings.size(), events.size());
+        EXPECT_EQ(site.forward + site.backward, events.size());
+        EXPECT_LE(std::max(site.forward, site.backward) - std::min(site.forward, site.backward), 1u);
+        ASSERT_TRUE(site.position_m);
+        EXPECT_NEAR(*site.position_m, dentFromCentreStroke_m(p), 0.010) << "dent at " << dent_m;
+        EXPECT_EQ(grouping.method, "scan speed");
+    }
+}
