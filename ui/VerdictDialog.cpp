@@ -14,7 +14,8 @@
 
 namespace tactiscope::ui {
 
-VerdictDialog::VerdictDialog(int crossings, int sites, core::Verdict verdict, QWidget* parent)
+VerdictDialog::VerdictDialog(const QString& summaryText, const QStringList& trail, core::Verdict verdict,
+                             QWidget* parent)
     : QDialog(parent),
       m_note(new QLineEdit(this))
 {
@@ -22,16 +23,23 @@ VerdictDialog::VerdictDialog(int crossings, int sites, core::Verdict verdict, QW
     setWindowTitle(tr("Panel verdict"));
     setAttribute(Qt::WA_DeleteOnClose);
     setModal(false);
-    const QString found = crossings == 0 ? tr("No defect found")
-                                         : tr("%1 at %2 found").arg(defectCountText(crossings), siteCountText(sites));
-    auto* summary = new QLabel(tr("%1: the verdict is \"%2\".").arg(found, wordText(verdict)), this);
+    auto* summary = new QLabel(summaryText, this);
     QFont bold = summary->font();
     bold.setBold(true);
     summary->setFont(bold);
-    auto* hint = new QLabel(tr("Keep it, or override it if the probe was wrong."), this);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(summary);
+    if (!trail.isEmpty()) {
+        auto* history = new QLabel(trail.join(QLatin1Char('\n')), this);
+        history->setObjectName(QStringLiteral("verdictTrail"));
+        history->setStyleSheet(QStringLiteral("color: #555"));
+        history->setWordWrap(true);
+        layout->addWidget(history);
+    }
+    auto* hint = new QLabel(tr("Keep it, or override it if the probe was wrong; the note says why."), this);
     m_note->setObjectName(QStringLiteral("verdictNote"));
     m_note->setPlaceholderText(tr("Note (optional): what was seen on the panel"));
-    m_note->setMinimumWidth(380);
+    m_note->setMinimumWidth(420);
 
     auto* buttons = new QDialogButtonBox(this);
     QPushButton* pass = buttons->addButton(tr("Pass"), QDialogButtonBox::ActionRole);
@@ -45,8 +53,6 @@ VerdictDialog::VerdictDialog(int crossings, int sites, core::Verdict verdict, QW
     connect(defective, &QPushButton::clicked, this, [this] { decide(core::Verdict::DefectsFound); });
     connect(keep, &QPushButton::clicked, this, [this, verdict] { decide(verdict); });
 
-    auto* layout = new QVBoxLayout(this);
-    layout->addWidget(summary);
     layout->addWidget(hint);
     layout->addWidget(m_note);
     layout->addWidget(buttons);
@@ -71,7 +77,13 @@ void VerdictDialog::decide(core::Verdict verdict)
 void askVerdict(QWidget* parent, std::shared_ptr<core::storage::StoreWorker> store, const VerdictQuestion& question,
                 std::function<void(const QString& message)> saved)
 {
-    auto* dialog = new VerdictDialog(question.crossings, question.sites, question.automatic, parent);
+    const QString found = question.crossings == 0
+                              ? VerdictDialog::tr("No defect found")
+                              : VerdictDialog::tr("%1 at %2 found")
+                                    .arg(defectCountText(question.crossings), siteCountText(question.sites));
+    auto* dialog =
+        new VerdictDialog(VerdictDialog::tr("%1: the verdict is \"%2\".").arg(found, wordText(question.automatic)), {},
+                          question.automatic, parent);
     QObject::connect(
         dialog, &VerdictDialog::decided, parent,
         [parent, store, question, saved](core::Verdict chosen, const QString& note) {

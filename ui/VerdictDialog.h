@@ -1,15 +1,16 @@
-// The panel's verdict when a panel-scan recording stops: the detector's
-// sites and verdict, which the operator keeps or overrides (a dent the probe
-// missed, a false alarm), with an optional note saying why. Non-modal: the
-// line goes on while it waits, and the automatic verdict is already stored.
-// Either answer goes into the session's verdict trail with the operator's
-// name, so a report tells who decided what.
+// A panel's verdict, kept or overridden (a dent the probe missed, a false
+// alarm) with an optional note saying why: asked of the operator when a
+// panel-scan recording stops (the automatic verdict is already stored) and
+// of a reviewer in the review window. Non-modal: the line goes on while it
+// waits. Either answer goes into the session's verdict trail with the
+// decider's name, so a report tells who decided what.
 #pragma once
 
 #include "core/Vocabulary.h"
 
 #include <QDialog>
 #include <QString>
+#include <QStringList>
 
 #include <cstdint>
 #include <functional>
@@ -28,7 +29,9 @@ class VerdictDialog : public QDialog {
     Q_OBJECT
 
 public:
-    VerdictDialog(int crossings, int sites, core::Verdict verdict, QWidget* parent = nullptr);
+    // `summary` says what was found and the verdict; `trail` lists the
+    // decisions so far (core/report/VerdictTrail.h), shown small.
+    VerdictDialog(const QString& summary, const QStringList& trail, core::Verdict verdict, QWidget* parent = nullptr);
 
 signals:
     // The verdict chosen (the same one when kept) and the note, maybe empty.

@@ -25,8 +25,12 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
+#include <QLineEdit>
 #include <QProcess>
+#include <QPushButton>
+#include <QSettings>
 #include <QTemporaryDir>
+#include <QTest>
 #include <QTreeWidget>
 
 #include <gtest/gtest.h>
@@ -60,6 +64,7 @@ protected:
                    {0, "live", tactiscope::core::EventKind::Defect, 300.5, 300.6, -1, 0.88, 0.050, std::nullopt, ""},
                    {0, "live", tactiscope::core::EventKind::Marker, 450.0, 450.0, 0, std::nullopt, std::nullopt,
                     std::nullopt, "scratch by the hem"}});
+        QSettings().remove(QStringLiteral("review/reviewer"));  // no reviewer has typed a name yet
         QString error;
         m_window = ui::ReviewWindow::open(m_db, 1, nullptr, error);
         ASSERT_NE(m_window, nullptr) << error.toStdString();
@@ -138,6 +143,12 @@ TEST_F(ReviewWindowTest, TheListJumpsAndNotesAreAddedEditedDeletedAndBroughtBack
     EXPECT_LE(m_window->plot()->to_s() - m_window->plot()->from_s(), 2.0 + 1e-9);
     EXPECT_EQ(m_window->plot()->cursorTime(), 300.5);
 
+    // A note needs a name: the first is refused and says where to type it.
+    EXPECT_FALSE(m_window->addNoteAt(300.5, QStringLiteral("nameless")).isEmpty());
+    auto* reviewer = child<QLineEdit>(*m_window, "reviewerEdit");
+    EXPECT_TRUE(reviewer->hasFocus() || !m_window->isActiveWindow());
+    EXPECT_TRUE(child<QLabel>(*m_window, "problemText")->text().contains("Reviewer box"));
+    QTest::keyClicks(reviewer, QStringLiteral("Grace Hopper"));
     // A note at the pinned cursor, through the dialog as a reviewer types it.
     m_window->addNote();
     auto* dialog = m_window->findChild<QInputDialog*>(QStringLiteral("noteDialog"));
@@ -150,6 +161,8 @@ TEST_F(ReviewWindowTest, TheListJumpsAndNotesAreAddedEditedDeletedAndBroughtBack
     ASSERT_EQ(notes.size(), 1u);
     EXPECT_EQ(notes[0].time_s, 300.5);
     EXPECT_EQ(notes[0].text, "dent confirmed by eye");
+    EXPECT_EQ(notes[0].author, "Grace Hopper");
+    EXPECT_EQ(QSettings().value(QStringLiteral("review/reviewer")).toString(), QStringLiteral("Grace Hopper"));
 
     EXPECT_TRUE(m_window->editNote(notes[0].id, QStringLiteral("dent confirmed, 2 mm")).isEmpty());
     EXPECT_EQ(store.annotations(1)[0].text, "dent confirmed, 2 mm");
@@ -161,6 +174,35 @@ TEST_F(ReviewWindowTest, TheListJumpsAndNotesAreAddedEditedDeletedAndBroughtBack
     ASSERT_EQ(notes.size(), 1u);
     EXPECT_EQ(notes[0].text, "dent confirmed, 2 mm");
     EXPECT_EQ(notes[0].time_s, 300.5);
+}
+
+TEST_F(ReviewWindowTest, AReviewersVerdictJoinsTheTrailWithTheNameAndTheNote)
+{
+    {
+        core::storage::SessionStore store(m_db.toStdString());
+        store.decideVerdict(1, {0, tactiscope::core::VerdictRole::Automatic, tactiscope::core::Verdict::DefectsFound,
+                                "", "", "", R"({"analysis":"live","defects":2,"sites":2,"threshold":0.85})"});
+    }
+    child<QLineEdit>(*m_window, "reviewerEdit")->setText(QStringLiteral("Q. Engineer"));
+    m_window->findChild<QAction*>(QStringLiteral("verdictAction"))->trigger();
+    auto* box = m_window->findChild<QDialog*>(QStringLiteral("verdictBox"));
+    ASSERT_NE(box, nullptr);
+    EXPECT_FALSE(box->isModal());
+    EXPECT_TRUE(child<QLabel>(*box, "verdictTrail")->text().startsWith("automatic: defects found (live detector: 2"));
+    QTest::keyClicks(child<QLineEdit>(*box, "verdictNote"), QStringLiteral("bump is a marker pen line"));
+    tactiscope::testing::saveScreenshot(*box, QStringLiteral("review-verdict"));
+    QTest::mouseClick(child<QPushButton>(*box, "passButton"), Qt::LeftButton);
+
+    core::storage::SessionStore store(m_db.toStdString(), core::storage::Database::Access::ReadOnly);
+    EXPECT_EQ(store.session(1)->verdict, tactiscope::core::Verdict::Pass);
+    const auto trail = store.verdicts(1);
+    ASSERT_EQ(trail.size(), 2u);
+    EXPECT_EQ(trail[1].role, tactiscope::core::VerdictRole::Reviewer);
+    EXPECT_EQ(trail[1].decidedBy, "Q. Engineer");
+    EXPECT_EQ(trail[1].note, "bump is a marker pen line");
+    const QString header = child<QLabel>(*m_window, "sessionHeader")->text();
+    EXPECT_TRUE(header.contains("verdict <b>pass</b> (reviewer Q. Engineer changed it to pass"))
+        << header.toStdString();
 }
 
 TEST_F(ReviewWindowTest, ReanalysisFindsWhatTheCliFindsAndSavesBesideTheRecordedEvents)

@@ -2,9 +2,11 @@
 #include "ui/review/ReviewWindow.h"
 
 #include "ui/ProblemReport.h"
+#include "ui/VerdictDialog.h"
 #include "ui/VocabularyText.h"
 
 #include "core/report/ReportData.h"
+#include "core/report/VerdictTrail.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/SafeOutput.h"
 #include "core/storage/SessionExport.h"
@@ -21,6 +23,7 @@
 #include <QHeaderView>
 #include <QInputDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QPrintDialog>
 #include <QPrinter>
@@ -130,24 +133,9 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionStor
     const auto& meta = m_session.metadata;
     setWindowTitle(tr("Review: session %1 — %2 %3").arg(m_session.id).arg(wordText(meta.mode), text(meta.subject)));
 
-    const bool interrupted = m_session.status == core::SessionStatus::Interrupted;
-    const QDateTime started = QDateTime::fromString(text(m_session.startedUtc), Qt::ISODateWithMs).toLocalTime();
-    // Only what the session holds: an empty field says nothing.
-    QStringList header{tr("<b>%1</b>").arg(wordText(meta.mode).toHtmlEscaped())};
-    const auto add = [&header](const QString& format, const std::string& value) {
-        if (!value.empty()) header << format.arg(text(value).toHtmlEscaped());
-    };
-    add(tr("subject <b>%1</b>"), meta.subject);
-    add(tr("operator %1"), meta.operatorName);
-    add(tr("site %1"), meta.site);
-    header << tr("started %1").arg(started.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")))
-           << tr("%1 at %2 Hz").arg(durationText(m_session.duration_s())).arg(m_session.sampleRate_hz, 0, 'g', 6);
-    add(tr("device %1"), (meta.deviceModel + " " + meta.deviceSerial).substr(meta.deviceModel.empty() ? 1 : 0));
-    header << (interrupted ? tr("<span style='color:#a05000'><b>interrupted</b> (kept up to the cut)</span>")
-                           : tr("status %1").arg(wordText(m_session.status)));
-    add(tr("verdict <b>%1</b>"), std::string(core::verdictText(m_session.verdict)));
-    auto* headerLabel = wrappedLabel(header.join(QStringLiteral(" · ")), this);
-    headerLabel->setObjectName(QStringLiteral("sessionHeader"));
+    m_header = wrappedLabel({}, this);
+    m_header->setObjectName(QStringLiteral("sessionHeader"));
+    refreshHeader();
     m_problem = wrappedLabel({}, this);
     m_problem->setObjectName(QStringLiteral("problemText"));
     m_problem->setStyleSheet(QStringLiteral("color: #b00020"));
@@ -173,7 +161,7 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionStor
     auto* top = new QWidget(this);
     auto* topLayout = new QVBoxLayout(top);
     topLayout->setContentsMargins(6, 6, 6, 0);
-    topLayout->addWidget(headerLabel);
+    topLayout->addWidget(m_header);
     topLayout->addWidget(m_problem);
     topLayout->addWidget(m_plot, 1);
     split->addWidget(top);
@@ -199,6 +187,37 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionStor
 }
 
 ReviewWindow::~ReviewWindow() = default;
+
+void ReviewWindow::refreshHeader()
+{
+    const auto& meta = m_session.metadata;
+    const bool interrupted = m_session.status == core::SessionStatus::Interrupted;
+    const QDateTime started = QDateTime::fromString(text(m_session.startedUtc), Qt::ISODateWithMs).toLocalTime();
+    // Only what the session holds: an empty field says nothing.
+    QStringList header{tr("<b>%1</b>").arg(wordText(meta.mode).toHtmlEscaped())};
+    const auto add = [&header](const QString& format, const std::string& value) {
+        if (!value.empty()) header << format.arg(text(value).toHtmlEscaped());
+    };
+    add(tr("subject <b>%1</b>"), meta.subject);
+    add(tr("operator %1"), meta.operatorName);
+    add(tr("site %1"), meta.site);
+    header << tr("started %1").arg(started.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")))
+           << tr("%1 at %2 Hz").arg(durationText(m_session.duration_s())).arg(m_session.sampleRate_hz, 0, 'g', 6);
+    add(tr("device %1"), (meta.deviceModel + " " + meta.deviceSerial).substr(meta.deviceModel.empty() ? 1 : 0));
+    header << (interrupted ? tr("<span style='color:#a05000'><b>interrupted</b> (kept up to the cut)</span>")
+                           : tr("status %1").arg(wordText(m_session.status)));
+    add(tr("verdict <b>%1</b>"), std::string(core::verdictText(m_session.verdict)));
+    QStringList trail;
+    try {
+        for (const auto& line : core::report::verdictTrailLines(m_store->verdicts(m_session.id))) trail << text(line);
+    } catch (const core::storage::StorageError& e) {
+        trail << tr("the verdict's trail cannot be read: %1").arg(text(e.what()));
+    }
+    // The last decision says who the verdict is whose; the whole trail is a hover away.
+    if (!trail.isEmpty()) header.back() += QStringLiteral(" (%1)").arg(trail.back().toHtmlEscaped());
+    m_header->setText(header.join(QStringLiteral(" · ")));
+    m_header->setToolTip(trail.join(QLatin1Char('\n')));
+}
 
 void ReviewWindow::createActions()
 {
@@ -247,6 +266,15 @@ void ReviewWindow::createActions()
     m_speed->setToolTip(tr("Replay speed"));
     bar->addWidget(m_speed);
     bar->addSeparator();
+    bar->addWidget(new QLabel(tr(" Reviewer "), bar));
+    m_reviewer = new QLineEdit(QSettings().value(QStringLiteral("review/reviewer")).toString(), bar);
+    m_reviewer->setObjectName(QStringLiteral("reviewerEdit"));
+    m_reviewer->setPlaceholderText(tr("your name"));
+    m_reviewer->setToolTip(tr("Who reviews: every note and verdict carries this name (remembered)"));
+    m_reviewer->setMaximumWidth(160);
+    connect(m_reviewer, &QLineEdit::editingFinished, this,
+            [this] { QSettings().setValue(QStringLiteral("review/reviewer"), m_reviewer->text().trimmed()); });
+    bar->addWidget(m_reviewer);
     QAction* note = bar->addAction(tr("Add note…"), this, &ReviewWindow::addNote);
     note->setShortcut(QKeySequence(tr("Ctrl+N")));
     note->setToolTip(tr("A note at the pinned cursor (click the plot to pin it), Ctrl+N"));
@@ -261,6 +289,11 @@ void ReviewWindow::createActions()
     });
     undo->setShortcut(QKeySequence::Undo);
     undo->setToolTip(tr("Bring back the last deleted note (Ctrl+Z)"));
+    if (m_session.metadata.mode == core::Mode::PanelScan) {
+        QAction* verdict = bar->addAction(tr("Verdict…"), this, &ReviewWindow::askVerdict);
+        verdict->setObjectName(QStringLiteral("verdictAction"));
+        verdict->setToolTip(tr("Keep or change the panel's verdict, with a note; the report shows who decided what"));
+    }
 }
 
 void ReviewWindow::refreshRecords()
@@ -331,11 +364,59 @@ void ReviewWindow::jumpTo(QTreeWidgetItem* item)
     m_list->scrollToItem(item, QAbstractItemView::PositionAtCenter);
 }
 
-QString ReviewWindow::author() const
+QString ReviewWindow::author()
 {
-    QString name = QSettings().value(QStringLiteral("session/operator")).toString().trimmed();
-    if (name.isEmpty()) name = qEnvironmentVariable("USER");
-    return name.isEmpty() ? tr("reviewer") : name;
+    const QString name = m_reviewer->text().trimmed();
+    if (name.isEmpty()) {
+        m_reviewer->setFocus();
+        showProblem(tr("Type your name in the Reviewer box first: notes and verdicts carry who wrote them."));
+    } else {
+        QSettings().setValue(QStringLiteral("review/reviewer"), name);
+    }
+    return name;
+}
+
+void ReviewWindow::askVerdict()
+{
+    if (author().isEmpty()) return;
+    QStringList trail;
+    try {
+        // As it is now: another station or the CLI may have decided since the window opened.
+        if (const auto now = m_store->session(m_session.id)) m_session.verdict = now->verdict;
+        for (const auto& line : core::report::verdictTrailLines(m_store->verdicts(m_session.id))) trail << text(line);
+    } catch (const core::storage::StorageError& e) {
+        showProblem(tr("The verdict's trail cannot be read: %1").arg(text(e.what())));
+        return;
+    }
+    const auto current = m_session.verdict.value_or(core::Verdict::Pass);
+    const QString summary =
+        m_session.verdict ? tr("The verdict is \"%1\".").arg(wordText(current)) : tr("The session has no verdict yet.");
+    auto* dialog = new VerdictDialog(summary, trail, current, this);
+    connect(dialog, &VerdictDialog::decided, this, [this](core::Verdict verdict, const QString& note) {
+        const QString error = decideVerdict(verdict, note);
+        if (!error.isEmpty()) showProblem(error);
+    });
+    dialog->show();
+}
+
+QString ReviewWindow::decideVerdict(core::Verdict verdict, const QString& note)
+{
+    const QString name = author();
+    if (name.isEmpty()) return tr("The verdict was not saved: type your name in the Reviewer box first.");
+    try {
+        core::storage::VerdictDecision decision;
+        decision.role = core::VerdictRole::Reviewer;
+        decision.verdict = verdict;
+        decision.decidedBy = name.toStdString();
+        decision.note = note.trimmed().toStdString();
+        m_store->decideVerdict(m_session.id, decision);
+        m_session.verdict = verdict;
+    } catch (const core::storage::StorageError& e) {
+        return tr("The verdict was not saved: %1").arg(text(e.what()));
+    }
+    refreshHeader();
+    statusBar()->showMessage(tr("Verdict \"%1\" saved by %2.").arg(wordText(verdict), name));
+    return {};
 }
 
 void ReviewWindow::askNoteText(const QString& title, const QString& initial,
@@ -364,10 +445,12 @@ void ReviewWindow::addNote()
 QString ReviewWindow::addNoteAt(double time_s, const QString& value)
 {
     if (value.trimmed().isEmpty()) return tr("An empty note was not added.");
+    const QString name = author();
+    if (name.isEmpty()) return tr("The note was not added: type your name in the Reviewer box first.");
     try {
         core::storage::Annotation note;
         note.time_s = time_s;
-        note.author = author().toStdString();
+        note.author = name.toStdString();
         note.text = value.trimmed().toStdString();
         m_store->addAnnotation(m_session.id, note);
     } catch (const core::storage::StorageError& e) {

@@ -4,8 +4,11 @@
 // readout, markers), the list of its events, readings and notes (a click
 // jumps there), the reviewer's notes (add, edit, delete with undo), replay
 // at 1–10× real time, re-analysis beside the recorded events
-// (ReanalysisPanel, panel-scan sessions), and the exports: the PDF report,
+// (ReanalysisPanel, panel-scan sessions), a reviewer's verdict (panel
+// scans) joining the verdict's trail, and the exports: the PDF report,
 // printing, the plot as PNG or SVG, CSV of the session or of the range shown.
+// Notes and verdicts carry the reviewer's name, typed once in the toolbar
+// and remembered.
 #pragma once
 
 #include "core/storage/SessionStore.h"
@@ -20,6 +23,7 @@
 #include <optional>
 
 class QLabel;
+class QLineEdit;
 class QSpinBox;
 class QTreeWidget;
 class QTreeWidgetItem;
@@ -50,6 +54,10 @@ public:
     QString editNote(std::int64_t annotation, const QString& text);
     QString deleteNote(std::int64_t annotation);
     QString undoDelete();
+    // A reviewer's verdict on a panel scan, added to its trail; returns an
+    // error, or empty. askVerdict() shows the trail and asks, without blocking.
+    QString decideVerdict(core::Verdict verdict, const QString& note);
+    void askVerdict();
     // Jumps to a row of the list (a click does this).
     void jumpTo(QTreeWidgetItem* item);
 
@@ -77,12 +85,17 @@ private:
     void exportWithDialog(const QString& title, const QString& filter, const QString& suffix,
                           const std::function<QString(const QString&)>& write);
     void showProblem(const QString& text);
-    QString author() const;
+    void refreshHeader();
+    // The reviewer's name; empty (and the name box focused, with the
+    // reason shown) when none was typed.
+    QString author();
 
     std::unique_ptr<core::storage::SessionStore> m_store;
     core::storage::SessionSummary m_session;
     ReviewPlot* m_plot = nullptr;
     QTreeWidget* m_list = nullptr;
+    QLabel* m_header = nullptr;
+    QLineEdit* m_reviewer = nullptr;
     ReanalysisPanel* m_reanalysis = nullptr;
     QLabel* m_problem = nullptr;
     QSpinBox* m_speed = nullptr;
