@@ -333,13 +333,18 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
     if (dataColumns.empty()) throw CsvError("'" + path + "' has no data column besides the time");
     for (const std::size_t c : dataColumns) {
         auto [name, unit] = splitHeader(header[c]);
-        // Unitless columns of a panel scan are the cantilevers' strains.
-        const bool strain = unit.empty() && metadata.mode == Mode::PanelScan;
+        // "[strain]" (as exported) and the unitless columns of a panel scan
+        // are the cantilevers' strains, which are dimensionless.
+        const bool strain = unit == "strain" || (unit.empty() && metadata.mode == Mode::PanelScan);
+        if (unit == "strain") unit.clear();
         ChannelDescriptor channel{name, unit, strain ? ChannelKind::Strain : kindFromUnit(unit)};
         if (side) {
             for (const auto& stored : (*side)["channels"]) {
-                if (textOf(stored, "name") != header[c]) continue;
-                channel = {header[c], textOf(stored, "unit"),
+                // Exports name each channel's column; older ones had the name alone as the column.
+                const std::string column =
+                    stored.contains("column") ? textOf(stored, "column") : textOf(stored, "name");
+                if (column != header[c]) continue;
+                channel = {textOf(stored, "name"), textOf(stored, "unit"),
                            channelKindFromString(textOf(stored, "kind")).value_or(ChannelKind::Other)};
             }
         }

@@ -168,6 +168,7 @@ void writeMetadata(text::JsonWriter& json, SessionStore& store, std::int64_t ses
     for (const auto& channel : store.channels(session)) {
         json.beginObject();
         json.key("name").value(channel.descriptor.name);
+        json.key("column").value(csvHeader(channel.descriptor));
         json.key("unit").value(channel.descriptor.unit);
         json.key("kind").value(toString(channel.descriptor.kind));
         json.key("sample_rate_hz").value(channel.sampleRate_hz);
@@ -187,12 +188,19 @@ void writeMetadata(text::JsonWriter& json, SessionStore& store, std::int64_t ses
 
 }  // namespace
 
+std::string csvHeader(const ChannelDescriptor& channel)
+{
+    if (!channel.unit.empty()) return channel.name + " [" + channel.unit + "]";
+    if (channel.kind == ChannelKind::Strain) return channel.name + " [strain]";
+    return channel.name;
+}
+
 void writeSessionCsv(SessionStore& store, std::int64_t session, std::ostream& out, const ExportRange& range)
 {
     requireSession(store, session);
     const auto channels = store.channels(session);
-    out << 't';
-    for (const auto& channel : channels) out << ',' << channel.descriptor.name;
+    out << "t [s]";
+    for (const auto& channel : channels) out << ',' << csvHeader(channel.descriptor);
     out << '\n';
     const double rate_hz = channels.front().sampleRate_hz;
     char buffer[32];

@@ -1,10 +1,12 @@
 // Exporting a stored session for other tools:
-//  - CSV: a header `t` then the channel names, one row per stored sample,
+//  - CSV: a header `t [s]` then each channel's csvHeader() (its name and
+//    unit, e.g. `force [N]`, `a [strain]`), one row per stored sample,
 //    t in seconds from the session start (index / sample rate); samples in
 //    gaps have no row. Values are written as the shortest text that reads
 //    back to the same binary32, so a re-import is exact to the bit.
 //  - metadata JSON (the CSV's side file, and part of the JSON export): the
-//    session's fields, its channels and its gaps.
+//    session's fields, its channels (each with its CSV column, unit and
+//    kind) and its gaps.
 //  - JSON: the metadata plus "t" and one array per channel.
 // Samples are read in windows, so memory stays small for hour-long sessions.
 // A CSV export may cover part of a session (a range chosen in review); its
@@ -25,6 +27,11 @@ struct ExportRange {
     std::uint64_t first = 0;
     std::uint64_t count = std::numeric_limits<std::uint64_t>::max();
 };
+
+// A channel's CSV column: "name [unit]"; a strain, dimensionless, says
+// "[strain]" (an import reads that back as a strain channel); any other
+// dimensionless channel is its name alone.
+std::string csvHeader(const ChannelDescriptor& channel);
 
 void writeSessionCsv(SessionStore& store, std::int64_t session, std::ostream& out, const ExportRange& range = {});
 void writeSessionMetadataJson(SessionStore& store, std::int64_t session, std::ostream& out,

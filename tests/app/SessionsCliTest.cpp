@@ -119,7 +119,7 @@ TEST(SessionsCli, CsvExportHasOneRowPerStoredSampleExactToTheBit)
     ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
     const QStringList lines = readFile(csv).split('\n', Qt::SkipEmptyParts);
     ASSERT_EQ(lines.size(), 1 + 90);  // header, 50 + 40 samples (the 10 lost have no row)
-    EXPECT_EQ(lines[0], "t,a,force");
+    EXPECT_EQ(lines[0], "t [s],a [strain],force [N]");
     for (int row = 1; row < lines.size(); ++row) {
         const auto index = static_cast<std::uint64_t>(row <= 50 ? row - 1 : row - 1 + 10);
         const QStringList fields = lines[row].split(',');
@@ -132,7 +132,23 @@ TEST(SessionsCli, CsvExportHasOneRowPerStoredSampleExactToTheBit)
     }
     const QJsonObject meta = parse(readFile(dir.filePath("out.meta.json"))).object();
     EXPECT_EQ(meta["session"].toObject()["subject"].toString(), "door-17");
+    const QJsonObject strain = meta["channels"].toArray()[0].toObject();
+    EXPECT_EQ(strain["column"].toString(), "a [strain]");
+    EXPECT_EQ(strain["unit"].toString(), "");
+    EXPECT_EQ(strain["kind"].toString(), "strain");
     EXPECT_FALSE(QFile::exists(csv + ".partial"));
+
+    // Without its side file, as another tool passes it on, the units in
+    // the header still say what each column is.
+    ASSERT_TRUE(QFile::remove(dir.filePath("out.meta.json")));
+    const QString elsewhere = dir.filePath("elsewhere.tactiscope");
+    ASSERT_EQ(runCli({"import", csv, "--db", elsewhere, "--mode", "palpation"}).exitCode, 0);
+    core::storage::SessionStore imported(elsewhere.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto channels = imported.channels(1);
+    ASSERT_EQ(channels.size(), 2u);
+    EXPECT_EQ(channels[0].descriptor, (core::ChannelDescriptor{"a", "", core::ChannelKind::Strain}));
+    EXPECT_EQ(channels[1].descriptor, (core::ChannelDescriptor{"force", "N", core::ChannelKind::Force}));
+    EXPECT_EQ(channels[0].sampleRate_hz, 200.0);
 }
 
 TEST(SessionsCli, JsonExportHoldsMetadataAndColumns)

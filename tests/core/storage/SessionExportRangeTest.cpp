@@ -44,7 +44,7 @@ TEST_F(SessionExportRangeTest, ARangeHoldsItsStoredSamplesAndSaysWhichInItsMetad
 
     std::ostringstream csv;
     writeSessionCsv(store, id, csv, {4, 6});  // samples 4…9: 6 and 7 are lost
-    EXPECT_EQ(csv.str(), "t,a\n1,2\n1.25,2.5\n2,4\n2.25,4.5\n");
+    EXPECT_EQ(csv.str(), "t [s],a [pF]\n1,2\n1.25,2.5\n2,4\n2.25,4.5\n");
 
     std::ostringstream meta;
     writeSessionMetadataJson(store, id, meta, {4, 6});
@@ -57,5 +57,5 @@ TEST_F(SessionExportRangeTest, ARangeHoldsItsStoredSamplesAndSaysWhichInItsMetad
 
     std::ostringstream tail;  // a range past the end is clipped to it
     writeSessionCsv(store, id, tail, {18, 100});
-    EXPECT_EQ(tail.str(), "t,a\n4.5,9\n4.75,9.5\n");
+    EXPECT_EQ(tail.str(), "t [s],a [pF]\n4.5,9\n4.75,9.5\n");
 }
