@@ -3,6 +3,7 @@
 
 #include "CliSupport.h"
 #include "SessionArgument.h"
+#include "core/derived/PalpationChannels.h"
 #include "core/report/VerdictTrail.h"
 #include "core/storage/SessionExport.h"
 #include "core/storage/SessionStore.h"
@@ -12,6 +13,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
 namespace tactiscope::cli {
 namespace {
@@ -139,13 +141,30 @@ int decideVerdict(SessionStore& store, std::int64_t id, const QString& word, con
     return kExitOk;
 }
 
-int exportSession(SessionStore& store, std::int64_t id, const QString& format, const QString& output)
+int exportSession(SessionStore& store, std::int64_t id, const QString& format, const QString& output, bool derived)
 {
+    std::unique_ptr<core::storage::ComputedColumns> computed;
+    if (derived) {
+        const auto mode = store.session(id)->metadata.mode;
+        if (mode != core::Mode::Palpation) {
+            printError(QStringLiteral("--derived: session %1 is a %2 session; only palpation sessions have derived "
+                                      "channels so far")
+                           .arg(id)
+                           .arg(toQString(core::toString(mode))));
+            return kExitUsage;
+        }
+        try {
+            computed = std::make_unique<core::derived::PalpationChannels>(store, id);
+        } catch (const std::invalid_argument& e) {
+            printError(QStringLiteral("--derived: %1").arg(toQString(e.what())));
+            return kExitUsage;
+        }
+    }
     try {
         core::storage::exportSession(store, id,
                                      format == QLatin1String("csv") ? core::storage::ExportFormat::Csv
                                                                     : core::storage::ExportFormat::Json,
-                                     output.toStdString());
+                                     output.toStdString(), {}, computed.get());
     } catch (const core::storage::StorageError& e) {
         printError(toQString(e.what()));
         return kExitFailure;
@@ -164,8 +183,10 @@ int runSessions(const QStringList& arguments)
         "  list                     the sessions, newest first (filters: --mode, --subject, --operator,\n"
         "                           --verdict, --from, --before, --search)\n"
         "  show ID|last             one session's metadata, channels and losses\n"
-        "  export ID|last --format csv|json --output PATH\n"
-        "                           CSV: t then the channels (metadata in PATH's .meta.json); JSON: all\n"
+        "  export ID|last --format csv|json --output PATH [--derived]\n"
+        "                           CSV: t then the channels (metadata in PATH's .meta.json); JSON: all;\n"
+        "                           --derived (CSV): the mode's physical quantities too (palpation:\n"
+        "                           force_high [N], force_low [N], Q, stiffness [N/m])\n"
         "  verdict ID|last pass|defects-found --by NAME [--note TEXT]\n"
         "                           a reviewer's verdict, added to the session's verdict trail\n"
         "  delete ID                remove a session and its samples"));
@@ -175,6 +196,7 @@ int runSessions(const QStringList& arguments)
         {QStringLiteral("json"), QStringLiteral("list, show: print JSON.")},
         {QStringLiteral("format"), QStringLiteral("export: csv or json."), QStringLiteral("csv|json")},
         {QStringLiteral("output"), QStringLiteral("export: the file to write."), QStringLiteral("PATH")},
+        {QStringLiteral("derived"), QStringLiteral("export (CSV): add the mode's physical quantities.")},
         {QStringLiteral("mode"), QStringLiteral("list: only this mode."), QStringLiteral("MODE")},
         {QStringLiteral("subject"), QStringLiteral("list: only this panel or phantom."), QStringLiteral("ID")},
         {QStringLiteral("operator"), QStringLiteral("list: only this operator."), QStringLiteral("NAME")},
@@ -214,6 +236,8 @@ int runSessions(const QStringList& arguments)
             return usageError(QStringLiteral("--format must be csv or json"), usage);
         if (!parser.isSet(QStringLiteral("output")))
             return usageError(QStringLiteral("--output PATH is required"), usage);
+        if (parser.isSet(QStringLiteral("derived")) && format != QLatin1String("csv"))
+            return usageError(QStringLiteral("--derived goes with --format csv"), usage);
     }
     const std::string db = parser.value(QStringLiteral("db")).toStdString();
     if (!std::filesystem::exists(db)) return usageError(QStringLiteral("%1 does not exist").arg(toQString(db)), usage);
@@ -253,7 +277,8 @@ int runSessions(const QStringList& arguments)
         }
         if (action == QLatin1String("show")) return show(store, *id, parser.isSet(QStringLiteral("json")));
         if (action == QLatin1String("export"))
-            return exportSession(store, *id, format, parser.value(QStringLiteral("output")));
+            return exportSession(store, *id, format, parser.value(QStringLiteral("output")),
+                                 parser.isSet(QStringLiteral("derived")));
         if (decides)
             return decideVerdict(store, *id, positional[2], parser.value(QStringLiteral("by")),
                                  parser.value(QStringLiteral("note")));

@@ -73,6 +73,20 @@ CalibrationRecord CalibrationRecord::fromJson(std::string_view text)
     }
 }
 
+std::vector<CalibrationRecord> recordsFromJsonArray(const std::string& json)
+{
+    std::vector<CalibrationRecord> records;
+    const auto array = nlohmann::json::parse(json.empty() ? "[]" : json, nullptr, false);
+    if (!array.is_array()) return records;
+    for (const auto& record : array) {
+        try {
+            records.push_back(CalibrationRecord::fromJson(record.dump()));
+        } catch (const std::invalid_argument&) {
+        }
+    }
+    return records;
+}
+
 std::string utcTimestampNow()
 {
     const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());

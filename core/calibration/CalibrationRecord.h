@@ -37,6 +37,11 @@ struct CalibrationRecord {
     static CalibrationRecord fromJson(std::string_view json);
 };
 
+// The records a session carries (storage::SessionMetadata::calibrationsJson,
+// a JSON array of toJson() objects); one that cannot be read is left out,
+// so one damaged record does not hide the others.
+std::vector<CalibrationRecord> recordsFromJsonArray(const std::string& json);
+
 // The current time as ISO 8601 UTC with seconds.
 std::string utcTimestampNow();
 

@@ -1,7 +1,6 @@
 // LivePalpation: channel roles, tare, forces per sample, press readings.
 #include "core/compliance/LivePalpation.h"
 
-#include "core/ModeCapability.h"
 #include "core/SampleBlock.h"
 
 #include <algorithm>
@@ -16,31 +15,11 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-bool inCounts(const ChannelDescriptor& channel)
-{
-    return channel.unit == "count" || channel.unit == "counts";
-}
-
 }  // namespace
-
-void LivePalpation::Input::setZero(double value)
-{
-    if (chain)
-        chain->tare(value);
-    else
-        zero = value;
-}
-
-double LivePalpation::Input::force(const sensors::CantileverBeam& beam, double value) const
-{
-    if (chain) return chain->strain(value) / beam.rootStrainPerNewton();
-    if (kind == ChannelKind::Force) return value - zero;
-    return (value - zero) / beam.rootStrainPerNewton();  // a strain channel
-}
 
 LivePalpation::LivePalpation(const std::vector<ChannelDescriptor>& channels, double sampleRate_hz,
                              const LivePalpationSettings& settings, double displaySeconds)
-    : m_pair(sensors::CantileverBeam(settings.high), sensors::CantileverBeam(settings.low)),
+    : m_forces(channels, settings),
       m_pressSettings(settings.press),
       m_tareSamples(std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(kTare_s * sampleRate_hz)))),
       m_output(std::make_shared<LiveBuffer>(outputChannels().size(),
@@ -49,30 +28,28 @@ LivePalpation::LivePalpation(const std::vector<ChannelDescriptor>& channels, dou
       m_rawLow(m_rawHigh.length()),
       m_forceHigh(m_rawHigh.length()),
       m_forceLow(m_rawHigh.length()),
-      m_reader(m_pair, settings.press)
+      m_reader(m_forces.pair(), settings.press)
 {
-    const auto picked = modeChannels(Mode::Palpation, channels);
-    if (!picked) throw std::invalid_argument(*modeRefusal(Mode::Palpation, channels));
-    const std::vector<std::size_t>& beams = *picked;  // stiff, soft, then the displacement
-    m_displacement = beams[2];
-    const auto input = [&](std::size_t c, std::optional<double> gaugeFactor) {
-        Input in;
-        in.channel = c;
-        in.kind = channels[c].kind;
-        straingauge::BridgeSettings bridge = settings.bridge;
-        bridge.gaugeFactor = gaugeFactor.value_or(bridge.gaugeFactor);
-        if (inCounts(channels[c])) in.chain.emplace(settings.adc, bridge);
-        return in;
-    };
-    m_high = input(beams[0], settings.highGaugeFactor);
-    m_low = input(beams[1], settings.lowGaugeFactor);
 }
 
-std::optional<double> LivePalpation::gaugeFactor(bool highBeam) const
+void LivePalpation::setZero(std::uint64_t firstIndex, double rawHigh, double rawLow)
 {
-    const Input& beam = highBeam ? m_high : m_low;
-    if (beam.chain) return beam.chain->bridge().gaugeFactor;
-    return std::nullopt;
+    m_forces.setZero(rawHigh, rawLow);
+    const std::lock_guard lock(m_mutex);
+    m_zero = ZeroChange{firstIndex, rawHigh, rawLow};
+    m_zeroChanges.push_back(*m_zero);
+}
+
+std::optional<ZeroChange> LivePalpation::currentZero() const
+{
+    const std::lock_guard lock(m_mutex);
+    return m_zero;
+}
+
+std::vector<ZeroChange> LivePalpation::takeZeroChanges()
+{
+    const std::lock_guard lock(m_mutex);
+    return std::exchange(m_zeroChanges, {});
 }
 
 std::vector<ChannelDescriptor> LivePalpation::outputChannels()
@@ -117,11 +94,8 @@ void LivePalpation::consume(const SampleBlock& block)
     }
     m_nextIndex = block.endSampleIndex();
     // Drop a press in progress: it would be read across a gap or two zeros.
-    if (gap || newZero) m_reader = PressReader(m_pair, m_pressSettings);
-    if (newZero) {
-        m_high.setZero(newZero->first);
-        m_low.setZero(newZero->second);
-    }
+    if (gap || newZero) m_reader = PressReader(m_forces.pair(), m_pressSettings);
+    if (newZero) setZero(block.firstSampleIndex(), newZero->first, newZero->second);
     // The first zero comes from samples without a gap: one a gap interrupted starts over.
     if (gap && m_tareCount < m_tareSamples) {
         m_tareCount = 0;
@@ -130,33 +104,32 @@ void LivePalpation::consume(const SampleBlock& block)
 
     SampleBlock display(3, block.sampleCount(), block.t0_s(), block.dt_s(), block.firstSampleIndex(), block.sequence());
     for (std::size_t s = 0; s < block.sampleCount(); ++s) {
-        const double high = block.value(m_high.channel, s);
-        const double low = block.value(m_low.channel, s);
+        const double high = block.value(m_forces.highChannel(), s);
+        const double low = block.value(m_forces.lowChannel(), s);
         if (m_tareCount < m_tareSamples) {
             m_tareHigh += high;
             m_tareLow += low;
-            if (++m_tareCount == m_tareSamples) {
-                m_high.setZero(m_tareHigh / static_cast<double>(m_tareSamples));
-                m_low.setZero(m_tareLow / static_cast<double>(m_tareSamples));
-            }
+            if (++m_tareCount == m_tareSamples)
+                setZero(block.firstSampleIndex() + s + 1, m_tareHigh / static_cast<double>(m_tareSamples),
+                        m_tareLow / static_cast<double>(m_tareSamples));
             for (std::size_t c = 0; c < 3; ++c) display.channel(c)[s] = kNaN;
             continue;
         }
-        const double fHigh = m_high.force(m_pair.high(), high);
-        const double fLow = m_low.force(m_pair.low(), low);
+        const double fHigh = m_forces.forceHigh(high);
+        const double fLow = m_forces.forceLow(low);
         display.channel(0)[s] = fHigh;
         display.channel(1)[s] = fLow;
-        const bool contact = fHigh > m_pressSettings.contactThreshold_n && fLow > m_pressSettings.contactThreshold_n;
-        display.channel(2)[s] = contact ? fHigh / fLow : kNaN;
-        if (auto reading = m_reader.push(block.timeAt_s(s), block.value(m_displacement, s), fHigh, fLow))
+        display.channel(2)[s] = m_forces.q(fHigh, fLow);
+        if (auto reading =
+                m_reader.push(block.timeAt_s(s), block.value(m_forces.displacementChannel(), s), fHigh, fLow))
             m_completed.push_back(*reading);
     }
     m_output->consume(display);
 
     const std::lock_guard lock(m_mutex);
     for (std::size_t s = 0; s < block.sampleCount(); ++s) {
-        m_rawHigh.push(block.value(m_high.channel, s));
-        m_rawLow.push(block.value(m_low.channel, s));
+        m_rawHigh.push(block.value(m_forces.highChannel(), s));
+        m_rawLow.push(block.value(m_forces.lowChannel(), s));
         if (std::isnan(display.channel(0)[s])) continue;  // no force while the first zero is taken
         m_forceHigh.push(display.channel(0)[s]);
         m_forceLow.push(display.channel(1)[s]);

@@ -3,11 +3,8 @@
 // F_H, F_L and Q = F_H/F_L in a LiveBuffer, keeps the running k_o of the
 // press in progress, and hands each completed press (PressReader) to the GUI.
 //
-// Channels: the first Position channel is the displacement; the first two
-// other channels are the high- and the low-stiffness beam, in the device's
-// order. A channel in ADC counts goes through the strain-gauge chain
-// (counts → strain), a strain channel through the beam model (F = ε /
-// (root strain per newton)), a force channel is used as it is.
+// Channels and forces: PalpationForces, the same per-sample code a stored
+// session's review and export run.
 //
 // Tare: the probe's zero is the mean of the first kTare_s of the stream (the
 // probe is lifted when a stream starts); while it is being taken no force is
@@ -24,9 +21,9 @@
 #include "core/BlockSink.h"
 #include "core/ChannelDescriptor.h"
 #include "core/LiveBuffer.h"
+#include "core/compliance/PalpationForces.h"
 #include "core/compliance/StiffnessReadings.h"
 #include "core/signal/SteadyWindow.h"
-#include "core/straingauge/StrainGaugeChain.h"
 
 #include <memory>
 #include <mutex>
@@ -36,14 +33,11 @@
 
 namespace tactiscope::core::compliance {
 
-struct LivePalpationSettings {
-    sensors::CantileverGeometry high;
-    sensors::CantileverGeometry low;
-    straingauge::AdcSettings adc;  // for channels in counts
-    straingauge::BridgeSettings bridge;
-    PressSettings press;
-    // Each beam's calibrated gauge factor; bridge.gaugeFactor (nominal) when none.
-    std::optional<double> highGaugeFactor, lowGaugeFactor;
+// A zero taken (the first, or a tare) and the first stream sample read on it.
+struct ZeroChange {
+    std::uint64_t firstIndex = 0;
+    double rawHigh = 0.0;
+    double rawLow = 0.0;
 };
 
 // What the display shows between presses and while pressing.
@@ -66,10 +60,10 @@ public:
     // The channels of output(): F_H and F_L in N (NaN while taring), and Q
     // (NaN unless both forces are above the contact threshold).
     static std::vector<ChannelDescriptor> outputChannels();
-    const sensors::CompliancePair& pair() const { return m_pair; }
+    const sensors::CompliancePair& pair() const { return m_forces.pair(); }
     // The gauge factor that turns a beam's counts into strain; none when
     // the device sends strain or force itself.
-    std::optional<double> gaugeFactor(bool highBeam) const;
+    std::optional<double> gaugeFactor(bool highBeam) const { return m_forces.gaugeFactor(highBeam); }
 
     // Any thread: the last kTare_s become the zero (see above); nothing when
     // taken, else the reason, in words for the operator.
@@ -82,22 +76,16 @@ public:
     PalpationState state() const;
     // Presses completed since the last call, in time order.
     std::vector<PressReading> takeReadings();
+    // Any thread: the zero in use (none while the first is taken), and the
+    // zeros taken since the last call, in order, for a recording to store.
+    std::optional<ZeroChange> currentZero() const;
+    std::vector<ZeroChange> takeZeroChanges();
 
 private:
-    // One beam's channel and how its values become a force.
-    struct Input {
-        std::size_t channel = 0;
-        ChannelKind kind = ChannelKind::Other;
-        std::optional<straingauge::StrainGaugeChain> chain;  // a channel in counts; holds its zero
-        double zero = 0.0;                                   // other channels
-        void setZero(double value);
-        double force(const sensors::CantileverBeam& beam, double value) const;
-    };
+    void setZero(std::uint64_t firstIndex, double rawHigh, double rawLow);
 
-    sensors::CompliancePair m_pair;
+    PalpationForces m_forces;  // acquisition thread, but for the constant parts
     PressSettings m_pressSettings;
-    Input m_high, m_low;
-    std::size_t m_displacement = 0;
     std::size_t m_tareSamples;
     std::shared_ptr<LiveBuffer> m_output;
 
@@ -108,6 +96,8 @@ private:
     // the current zero) for judging it.
     signal::SteadyWindow m_rawHigh, m_rawLow, m_forceHigh, m_forceLow;
     std::optional<std::pair<double, double>> m_pendingZero;  // raw high, low
+    std::optional<ZeroChange> m_zero;
+    std::vector<ZeroChange> m_zeroChanges;
 
     // Acquisition thread only.
     PressReader m_reader;

@@ -23,22 +23,6 @@ std::string profileName(const std::string& profileJson)
                                                                                  : std::string();
 }
 
-// The session keeps its calibrations as a JSON array of records; one that
-// cannot be read is left out rather than failing the whole report.
-std::vector<calibration::CalibrationRecord> calibrationsOf(const std::string& calibrationsJson)
-{
-    std::vector<calibration::CalibrationRecord> records;
-    const Json json = Json::parse(calibrationsJson.empty() ? "[]" : calibrationsJson, nullptr, false);
-    if (!json.is_array()) return records;
-    for (const Json& record : json) {
-        try {
-            records.push_back(calibration::CalibrationRecord::fromJson(record.dump()));
-        } catch (const std::invalid_argument&) {
-        }
-    }
-    return records;
-}
-
 std::string listed(const std::vector<std::string>& names)
 {
     std::string text;
@@ -67,7 +51,7 @@ ReportData gatherReport(storage::SessionStore& store, std::int64_t session, cons
     ReportData data;
     data.session = *summary;
     data.sensorName = profileName(summary->metadata.profileJson);
-    data.calibrations = calibrationsOf(summary->metadata.calibrationsJson);
+    data.calibrations = calibration::recordsFromJsonArray(summary->metadata.calibrationsJson);
     const double duration_s = summary->duration_s();
     data.from_s = range.from_s.value_or(0.0);
     data.to_s = range.to_s.value_or(duration_s);

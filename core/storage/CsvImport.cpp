@@ -195,6 +195,17 @@ void importRecords(SessionStore& store, std::int64_t session, const nlohmann::js
                                       textOf(a, "created_utc"), textOf(a, "modified_utc")});
 }
 
+// The zeros the session's samples were read on (for its derived channels):
+// only with the whole session, since their indices are the session's.
+void importZeros(SessionStore& store, std::int64_t session, const nlohmann::json& side)
+{
+    for (const auto& zero : side.value("zeros", nlohmann::json::array())) {
+        const auto first = zero.value("first_index", std::int64_t{-1});
+        if (first < 0) throw CsvError("the metadata file has a zero without a first sample index");
+        store.addZero(session, {static_cast<std::uint64_t>(first), textOf(zero, "values_json")});
+    }
+}
+
 // The verdict's trail, in its order; the last decision is the verdict.
 // False when the file has none (an export from before trails existed).
 bool importVerdictTrail(SessionStore& store, std::int64_t session, const nlohmann::json& side)
@@ -323,10 +334,16 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
 
     CsvImportResult result;
     result.usedSideFile = side.has_value();
+    // Columns an export computed from the samples (its side file names
+    // them) are not measurements: they are left out.
+    std::vector<std::string> computed;
+    if (side)
+        for (const auto& column : side->value("computed_columns", nlohmann::json::array()))
+            computed.push_back(textOf(column, "column"));
     std::vector<std::size_t> dataColumns;
     if (options.columns.empty()) {
         for (std::size_t c = 0; c < header.size(); ++c)
-            if (c != timeColumn) dataColumns.push_back(c);
+            if (c != timeColumn && std::ranges::find(computed, header[c]) == computed.end()) dataColumns.push_back(c);
     } else {
         for (const auto& name : options.columns) dataColumns.push_back(reader.column(name));
     }
@@ -417,6 +434,7 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
         store.markLostUntil(result.session, identity.samplesPerChannel);
         result.lostSamples += identity.samplesPerChannel - end;
     }
+    if (side && holdsWholeSession(*side)) importZeros(store, result.session, *side);
     const bool trail = side && holdsWholeSession(*side) && importVerdictTrail(store, result.session, *side);
     if (identity.verdict && !trail) store.setVerdict(result.session, *identity.verdict);
     store.endSession(result.session, identity.status, identity.endedUtc);

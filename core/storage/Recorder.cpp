@@ -69,6 +69,13 @@ void Recorder::addReadings(std::vector<SessionReading> readings)
     m_wake.notify_one();
 }
 
+void Recorder::addZero(std::uint64_t streamIndex, std::string valuesJson)
+{
+    const std::lock_guard lock(m_mutex);
+    m_queuedZeros.push_back({streamIndex, std::move(valuesJson)});
+    m_wake.notify_one();
+}
+
 double Recorder::sessionTime_s() const
 {
     const std::lock_guard lock(m_mutex);
@@ -107,7 +114,16 @@ void Recorder::run(const std::stop_token& stop)
 
 void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
 {
-    if ((m_queue.empty() && m_queuedEvents.empty() && m_queuedReadings.empty()) || !m_stats.error.empty()) return;
+    // Zeros wait for the first block, which fixes the session's sample 0.
+    const bool zeros = !m_queuedZeros.empty() && m_firstIndex;
+    if ((m_queue.empty() && m_queuedEvents.empty() && m_queuedReadings.empty() && !zeros) || !m_stats.error.empty())
+        return;
+    std::vector<SessionZero> zeroRecords;
+    if (zeros) {
+        zeroRecords = std::move(m_queuedZeros);
+        m_queuedZeros.clear();
+        for (auto& zero : zeroRecords) zero.firstIndex -= std::min(zero.firstIndex, *m_firstIndex);
+    }
     std::vector<SampleBlock> batch(std::make_move_iterator(m_queue.begin()), std::make_move_iterator(m_queue.end()));
     m_queue.clear();
     std::vector<SessionEvent> events = std::move(m_queuedEvents);
@@ -122,6 +138,7 @@ void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
         m_store.appendBlocks(m_session, batch);
         if (!events.empty()) m_store.addEvents(m_session, events);
         for (const auto& reading : readings) m_store.addReading(m_session, reading);
+        for (const auto& zero : zeroRecords) m_store.addZero(m_session, zero);
     } catch (const StorageError& e) {
         error = e.what();
     }

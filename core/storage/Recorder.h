@@ -57,6 +57,10 @@ public:
     void addEvents(std::vector<SessionEvent> events);
     // Readings (e.g. a press's stiffness), likewise; times on the session clock.
     void addReadings(std::vector<SessionReading> readings);
+    // A zero the processor reads samples on from stream sample `streamIndex`
+    // (the device's index, before the session's rebase); one from before
+    // the first recorded sample applies from the session's start. Any thread.
+    void addZero(std::uint64_t streamIndex, std::string valuesJson);
     // Samples that should have come after the last one consumed, to a
     // session time (a probe that went and did not come back): finish()
     // records them as a gap at the session's end. Any thread.
@@ -85,6 +89,7 @@ private:
     std::deque<SampleBlock> m_queue;
     std::vector<SessionEvent> m_queuedEvents;
     std::vector<SessionReading> m_queuedReadings;
+    std::vector<SessionZero> m_queuedZeros;  // stream indices until the first block is seen
     std::uint64_t m_queuedSamples = 0;
     std::optional<std::uint64_t> m_firstIndex;  // of the first block consumed
     double m_firstTime_s = 0.0;

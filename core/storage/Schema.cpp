@@ -153,11 +153,15 @@ CREATE TABLE session_calibrations (
 CREATE INDEX session_calibrations_by_calibration ON session_calibrations (calibration_id);
 )sql";
 
-// Version 2 → 3: who decided a session's verdict. Each decision is a row:
+// Version 2 → 3: who decided a session's verdict, and the zeros the mode's
+// processor read the samples on. Each verdict decision is a row:
 // the automatic one (its analysis and parameters in basis_json), the
 // operator's at the stop, a reviewer's later; sessions.verdict stays the
 // final one, for listing and filtering. Sessions recorded before keep their
-// verdict without a trail: nobody knows any more who decided it.
+// verdict without a trail: nobody knows any more who decided it. A zero
+// (e.g. a compliance probe's raw beam values with nothing pressed) applies
+// from its first sample index to the next zero, so the review derives the
+// same forces the operator saw.
 constexpr const char* kVersion3 = R"sql(
 CREATE TABLE verdicts (
     id          INTEGER PRIMARY KEY,
@@ -170,6 +174,13 @@ CREATE TABLE verdicts (
     basis_json  TEXT NOT NULL DEFAULT ''
 );
 CREATE INDEX verdicts_by_session ON verdicts (session_id, id);
+
+CREATE TABLE zeros (
+    session_id  INTEGER NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    first_index INTEGER NOT NULL,
+    values_json TEXT NOT NULL,
+    PRIMARY KEY (session_id, first_index)
+) WITHOUT ROWID;
 )sql";
 
 constexpr std::array kMigrations{kVersion1, kVersion2, kVersion3};

@@ -42,9 +42,10 @@ std::uint64_t endOf(const ExportRange& range, std::uint64_t total)
 }
 
 // Calls row(index, window, s) for every stored sample (not in a gap) of the
-// range, in order; window[k][s] is the value of channel wanted[k].
+// range, in order; window[k][s] is the value of channel wanted[k], then of
+// each computed column.
 void forEachSample(SessionStore& store, std::int64_t session, const std::vector<std::size_t>& wanted,
-                   const RowFunction& row, const ExportRange& range = {})
+                   const RowFunction& row, const ExportRange& range = {}, ComputedColumns* computed = nullptr)
 {
     const ReadSnapshot snapshot(store.database());  // one consistent state, even while recording
     const std::uint64_t end = endOf(range, store.sampleCount(session));
@@ -52,8 +53,14 @@ void forEachSample(SessionStore& store, std::int64_t session, const std::vector<
     auto gap = gaps.begin();
     std::vector<std::vector<double>> window(wanted.size());
     for (std::uint64_t first = range.first; first < end; first += kWindow) {
+        window.resize(wanted.size());
         for (std::size_t k = 0; k < wanted.size(); ++k)
             window[k] = store.readChannel(session, wanted[k], first, std::min(kWindow, end - first));
+        if (computed) {
+            auto columns = computed->read(first, std::min(kWindow, end - first));
+            window.insert(window.end(), std::make_move_iterator(columns.begin()),
+                          std::make_move_iterator(columns.end()));
+        }
         for (std::size_t s = 0; s < window[0].size(); ++s) {
             const std::uint64_t index = first + s;
             while (gap != gaps.end() && gap->firstIndex + gap->count <= index) ++gap;
@@ -72,7 +79,7 @@ void optional(text::JsonWriter& json, const char* key, std::optional<double> val
         json.null();
 }
 
-// Events of every analysis, readings, annotations and the verdict's trail.
+// Events of every analysis, readings, annotations, the zeros and the verdict's trail.
 void writeRecords(text::JsonWriter& json, SessionStore& store, std::int64_t session)
 {
     json.key("events").beginArray();
@@ -115,6 +122,14 @@ void writeRecords(text::JsonWriter& json, SessionStore& store, std::int64_t sess
         json.key("text").value(a.text);
         json.key("created_utc").value(a.createdUtc);
         json.key("modified_utc").value(a.modifiedUtc);
+        json.endObject();
+    }
+    json.endArray();
+    json.key("zeros").beginArray();
+    for (const auto& zero : store.zeros(session)) {
+        json.beginObject();
+        json.key("first_index").value(static_cast<long long>(zero.firstIndex));
+        json.key("values_json").value(zero.valuesJson);
         json.endObject();
     }
     json.endArray();
@@ -195,12 +210,15 @@ std::string csvHeader(const ChannelDescriptor& channel)
     return channel.name;
 }
 
-void writeSessionCsv(SessionStore& store, std::int64_t session, std::ostream& out, const ExportRange& range)
+void writeSessionCsv(SessionStore& store, std::int64_t session, std::ostream& out, const ExportRange& range,
+                     ComputedColumns* computed)
 {
     requireSession(store, session);
     const auto channels = store.channels(session);
     out << "t [s]";
     for (const auto& channel : channels) out << ',' << csvHeader(channel.descriptor);
+    if (computed)
+        for (const auto& channel : computed->channels()) out << ',' << csvHeader(channel);
     out << '\n';
     const double rate_hz = channels.front().sampleRate_hz;
     char buffer[32];
@@ -210,17 +228,34 @@ void writeSessionCsv(SessionStore& store, std::int64_t session, std::ostream& ou
         store, session, all,
         [&](std::uint64_t index, const auto& window, std::size_t s) {
             out << text::formatShortest(static_cast<double>(index) / rate_hz);
-            for (const auto& values : window) out << ',' << formatSample(values[s], buffer);
+            // Stored samples are binary32; computed ones keep every digit.
+            for (std::size_t c = 0; c < window.size(); ++c)
+                out << ','
+                    << (c < all.size() ? formatSample(window[c][s], buffer) : text::formatShortest(window[c][s]));
             out << '\n';
         },
-        range);
+        range, computed);
 }
 
-void writeSessionMetadataJson(SessionStore& store, std::int64_t session, std::ostream& out, const ExportRange& range)
+void writeSessionMetadataJson(SessionStore& store, std::int64_t session, std::ostream& out, const ExportRange& range,
+                              ComputedColumns* computed)
 {
     text::JsonWriter json;
     json.beginObject();
     writeMetadata(json, store, session, range);
+    if (computed) {
+        json.key("computed_columns").beginArray();
+        for (const auto& channel : computed->channels()) {
+            json.beginObject();
+            json.key("name").value(channel.name);
+            json.key("column").value(csvHeader(channel));
+            json.key("unit").value(channel.unit);
+            json.key("kind").value(toString(channel.kind));
+            json.key("computed_with").value(computed->basis());
+            json.endObject();
+        }
+        json.endArray();
+    }
     json.endObject();
     out << json.str() << '\n';
 }
@@ -261,7 +296,7 @@ std::string metadataSidePath(const std::string& csvPath)
 }
 
 void exportSession(SessionStore& store, std::int64_t session, ExportFormat format, const std::string& path,
-                   const ExportRange& range)
+                   const ExportRange& range, ComputedColumns* computed)
 {
     // The store is the one file an export must never replace.
     const auto protectedFiles = storeFiles(store.database().path());
@@ -271,9 +306,9 @@ void exportSession(SessionStore& store, std::int64_t session, ExportFormat forma
         writeAtomically(path, [&](std::ostream& out) { writeSessionJson(store, session, out); });
         return;
     }
-    writeAtomically(path, [&](std::ostream& out) { writeSessionCsv(store, session, out, range); });
+    writeAtomically(path, [&](std::ostream& out) { writeSessionCsv(store, session, out, range, computed); });
     writeAtomically(metadataSidePath(path),
-                    [&](std::ostream& out) { writeSessionMetadataJson(store, session, out, range); });
+                    [&](std::ostream& out) { writeSessionMetadataJson(store, session, out, range, computed); });
 }
 
 }  // namespace tactiscope::core::storage

@@ -28,14 +28,29 @@ struct ExportRange {
     std::uint64_t count = std::numeric_limits<std::uint64_t>::max();
 };
 
+// Columns computed from a session's stored samples (a mode's physical
+// quantities, core/derived), written after the stored channels of a CSV
+// export and named in its metadata ("computed_columns"), so an import of
+// the export leaves them out.
+class ComputedColumns {
+public:
+    virtual ~ComputedColumns() = default;
+    virtual std::vector<ChannelDescriptor> channels() const = 0;
+    // What they were computed with, in words (profile, calibrations).
+    virtual std::string basis() const = 0;
+    // Samples [first, first + count) of each column, clipped to the session.
+    virtual std::vector<std::vector<double>> read(std::uint64_t first, std::uint64_t count) = 0;
+};
+
 // A channel's CSV column: "name [unit]"; a strain, dimensionless, says
 // "[strain]" (an import reads that back as a strain channel); any other
 // dimensionless channel is its name alone.
 std::string csvHeader(const ChannelDescriptor& channel);
 
-void writeSessionCsv(SessionStore& store, std::int64_t session, std::ostream& out, const ExportRange& range = {});
+void writeSessionCsv(SessionStore& store, std::int64_t session, std::ostream& out, const ExportRange& range = {},
+                     ComputedColumns* computed = nullptr);
 void writeSessionMetadataJson(SessionStore& store, std::int64_t session, std::ostream& out,
-                              const ExportRange& range = {});
+                              const ExportRange& range = {}, ComputedColumns* computed = nullptr);
 void writeSessionJson(SessionStore& store, std::int64_t session, std::ostream& out);
 
 // The side file a CSV export's metadata goes to (and an import reads it
@@ -48,8 +63,9 @@ enum class ExportFormat { Csv, Json };
 // Each file goes through a temporary one renamed into place, so a failed
 // export never leaves half a file under the requested name. Throws
 // StorageError ("cannot write P", "writing P failed (disk full?)").
-// The range applies to CSV only; JSON is always the whole session.
+// The range and computed columns apply to CSV only; JSON is always the
+// whole session as stored.
 void exportSession(SessionStore& store, std::int64_t session, ExportFormat format, const std::string& path,
-                   const ExportRange& range = {});
+                   const ExportRange& range = {}, ComputedColumns* computed = nullptr);
 
 }  // namespace tactiscope::core::storage

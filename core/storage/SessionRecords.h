@@ -68,6 +68,14 @@ struct VerdictDecision {
     std::string basisJson;
 };
 
+// A zero the live processor read a session's samples on, from a sample on:
+// a JSON object of raw values in the channels' units, e.g.
+// {"high": 2051.3, "low": 1998.7} for a compliance probe's two beams.
+struct SessionZero {
+    std::uint64_t firstIndex = 0;
+    std::string valuesJson;
+};
+
 struct StoredCalibration {
     std::int64_t id = 0;
     calibration::CalibrationRecord record;

@@ -147,6 +147,9 @@ public:
     void deleteAnnotation(std::int64_t annotation);
     std::vector<Annotation> annotations(std::int64_t session);
     std::vector<VerdictDecision> verdicts(std::int64_t session);  // the trail, oldest first
+    // The zeros, by first sample; a second one at the same sample replaces the first.
+    void addZero(std::int64_t session, const SessionZero& zero);
+    std::vector<SessionZero> zeros(std::int64_t session);
 
     // The calibration history, shared by all sessions of the store.
     std::int64_t addCalibration(const calibration::CalibrationRecord& record);

@@ -188,6 +188,24 @@ std::vector<VerdictDecision> SessionStore::verdicts(std::int64_t session)
     return result;
 }
 
+void SessionStore::addZero(std::int64_t session, const SessionZero& zero)
+{
+    m_db.prepare("INSERT OR REPLACE INTO zeros (session_id, first_index, values_json) VALUES (?, ?, ?)")
+        .bind(1, session)
+        .bind(2, static_cast<std::int64_t>(zero.firstIndex))
+        .bind(3, zero.valuesJson)
+        .run();
+}
+
+std::vector<SessionZero> SessionStore::zeros(std::int64_t session)
+{
+    std::vector<SessionZero> result;
+    auto query = m_db.prepare("SELECT first_index, values_json FROM zeros WHERE session_id = ? ORDER BY first_index");
+    query.bind(1, session);
+    while (query.step()) result.push_back({static_cast<std::uint64_t>(query.int64(0)), query.text(1)});
+    return result;
+}
+
 std::int64_t SessionStore::addCalibration(const calibration::CalibrationRecord& record)
 {
     m_db.prepare("INSERT INTO calibrations (kind, sensor, operator, created_utc, r_squared, points, record_json) "

@@ -130,6 +130,10 @@ std::optional<std::string> LiveSession::startRecording(const core::storage::Sess
     if (!used.empty()) metadata.calibrationsJson += "]";
     const double rate_hz = source().nominalSampleRate_hz();
     takeNotices();  // what the link noticed before belongs to no session
+    // Nor do the defects and presses found before the record press: taken
+    // now, while no recorder would store them.
+    takeDefects();
+    takePresses();
     try {
         const auto directory = std::filesystem::path(m_options.storePath).parent_path();
         if (!directory.empty()) std::filesystem::create_directories(directory);
@@ -140,10 +144,15 @@ std::optional<std::string> LiveSession::startRecording(const core::storage::Sess
         return e.what();
     }
     m_metadata = std::move(metadata);
-    takeDefects();  // those found before the record press belong to no panel
-    takePresses();
     m_defects.clear();
     m_presses.clear();
+    if (m_palpation && m_metadata.mode == core::Mode::Palpation) {
+        // The zero in use reads the session's first samples; those taken
+        // before were not.
+        m_palpation->takeZeroChanges();
+        if (const auto zero = m_palpation->currentZero())
+            m_recorder->addZero(zero->firstIndex, core::compliance::zeroJson(zero->rawHigh, zero->rawLow));
+    }
     m_recordingStartHost_s = steadySeconds();
     recordStandingFaults();
     m_tap->attach(m_recorder);
@@ -347,6 +356,8 @@ void LiveSession::takePresses()
         m_presses.push_back(std::move(record));
     }
     if (!stored.empty()) m_recorder->addReadings(std::move(stored));
+    for (const auto& zero : m_palpation->takeZeroChanges())
+        if (storing) m_recorder->addZero(zero.firstIndex, core::compliance::zeroJson(zero.rawHigh, zero.rawLow));
 }
 
 }  // namespace tactiscope::devices::session

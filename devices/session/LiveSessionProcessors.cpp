@@ -105,21 +105,20 @@ std::optional<std::string> LiveSession::buildPalpation()
 {
     const auto& probe = std::get<core::sensors::CompliancePairProfile>(m_options.profiles.at(core::Mode::Palpation));
     const double rate_hz = source().nominalSampleRate_hz();
-    core::compliance::LivePalpationSettings settings;
-    settings.high = probe.high;
-    settings.low = probe.low;
-    settings.press = core::compliance::pressSettingsAt(rate_hz);
     // Each beam reads through its newest gauge-factor calibration, if any.
+    std::vector<core::storage::StoredCalibration> newest;
+    for (const bool stiff : {true, false}) {
+        if (auto record = newestCalibration(core::calibration::kGaugeFactorKind,
+                                            core::calibration::beamSensorName(probe.name, stiff)))
+            newest.push_back(std::move(*record));
+    }
+    std::vector<core::calibration::CalibrationRecord> records;
+    for (const auto& stored : newest) records.push_back(stored.record);
+    std::vector<std::size_t> usable;
+    const auto settings = core::compliance::palpationSettings(probe, rate_hz, records, &usable);
     auto& used = m_calibrations[core::Mode::Palpation];
     used.clear();
-    for (const bool stiff : {true, false}) {
-        auto newest = newestCalibration(core::calibration::kGaugeFactorKind,
-                                        core::calibration::beamSensorName(probe.name, stiff));
-        const auto gaugeFactor = newest ? newest->record.value("gauge_factor") : std::nullopt;
-        if (!gaugeFactor || !(*gaugeFactor > 0.0)) continue;
-        (stiff ? settings.highGaugeFactor : settings.lowGaugeFactor) = *gaugeFactor;
-        used.push_back(std::move(*newest));
-    }
+    for (const std::size_t i : usable) used.push_back(newest[i]);
     try {
         m_palpation = std::make_shared<core::compliance::LivePalpation>(source().channels(), rate_hz, settings,
                                                                         m_options.displaySeconds);

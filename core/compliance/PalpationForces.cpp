@@ -1,0 +1,130 @@
+// PalpationForces: channel roles, a beam's raw value to force, Q and k_o.
+#include "core/compliance/PalpationForces.h"
+
+#include "core/ModeCapability.h"
+#include "core/text/JsonWriter.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace tactiscope::core::compliance {
+namespace {
+
+bool inCounts(const ChannelDescriptor& channel)
+{
+    return channel.unit == "count" || channel.unit == "counts";
+}
+
+}  // namespace
+
+LivePalpationSettings palpationSettings(const sensors::CompliancePairProfile& probe, double sampleRate_hz,
+                                        std::span<const calibration::CalibrationRecord> calibrations,
+                                        std::vector<std::size_t>* used)
+{
+    LivePalpationSettings settings;
+    settings.high = probe.high;
+    settings.low = probe.low;
+    settings.press = pressSettingsAt(sampleRate_hz);
+    for (const bool stiff : {true, false}) {
+        const std::string sensor = calibration::beamSensorName(probe.name, stiff);
+        std::optional<std::size_t> newest;
+        for (std::size_t i = 0; i < calibrations.size(); ++i) {
+            const auto& record = calibrations[i];
+            const auto factor = record.value("gauge_factor");
+            if (record.kind != calibration::kGaugeFactorKind || record.sensorName != sensor || !factor ||
+                !(*factor > 0.0))
+                continue;
+            if (!newest || record.timestampUtc >= calibrations[*newest].timestampUtc) newest = i;
+        }
+        if (!newest) continue;
+        (stiff ? settings.highGaugeFactor : settings.lowGaugeFactor) = calibrations[*newest].value("gauge_factor");
+        if (used) used->push_back(*newest);
+    }
+    return settings;
+}
+
+std::string zeroJson(double rawHigh, double rawLow)
+{
+    text::JsonWriter json;
+    json.beginObject().key("high").value(rawHigh).key("low").value(rawLow).endObject();
+    return json.str();
+}
+
+std::optional<std::pair<double, double>> zeroFromJson(const std::string& text)
+{
+    const auto json = nlohmann::json::parse(text, nullptr, false);
+    const auto number = [&](const char* key) {
+        return json.is_object() && json.contains(key) && json[key].is_number() ? json[key].get<double>()
+                                                                               : PalpationForces::kNaN;
+    };
+    const double high = number("high"), low = number("low");
+    if (!std::isfinite(high) || !std::isfinite(low)) return std::nullopt;
+    return std::pair{high, low};
+}
+
+void PalpationForces::Input::setZero(double value)
+{
+    if (chain)
+        chain->tare(value);
+    else
+        zero = value;
+}
+
+double PalpationForces::Input::force(const sensors::CantileverBeam& beam, double value) const
+{
+    if (chain) return chain->strain(value) / beam.rootStrainPerNewton();
+    if (kind == ChannelKind::Force) return value - zero;
+    return (value - zero) / beam.rootStrainPerNewton();  // a strain channel
+}
+
+PalpationForces::PalpationForces(const std::vector<ChannelDescriptor>& channels, const LivePalpationSettings& settings)
+    : m_pair(sensors::CantileverBeam(settings.high), sensors::CantileverBeam(settings.low)),
+      m_contactThreshold_n(settings.press.contactThreshold_n)
+{
+    const auto picked = modeChannels(Mode::Palpation, channels);
+    if (!picked) throw std::invalid_argument(*modeRefusal(Mode::Palpation, channels));
+    const std::vector<std::size_t>& beams = *picked;  // stiff, soft, then the displacement
+    m_displacement = beams[2];
+    const auto input = [&](std::size_t c, std::optional<double> gaugeFactor) {
+        Input in;
+        in.channel = c;
+        in.kind = channels[c].kind;
+        straingauge::BridgeSettings bridge = settings.bridge;
+        bridge.gaugeFactor = gaugeFactor.value_or(bridge.gaugeFactor);
+        if (inCounts(channels[c])) in.chain.emplace(settings.adc, bridge);
+        return in;
+    };
+    m_high = input(beams[0], settings.highGaugeFactor);
+    m_low = input(beams[1], settings.lowGaugeFactor);
+}
+
+std::optional<double> PalpationForces::gaugeFactor(bool highBeam) const
+{
+    const Input& beam = highBeam ? m_high : m_low;
+    if (beam.chain) return beam.chain->bridge().gaugeFactor;
+    return std::nullopt;
+}
+
+void PalpationForces::setZero(double rawHigh, double rawLow)
+{
+    m_high.setZero(rawHigh);
+    m_low.setZero(rawLow);
+    m_zero = {rawHigh, rawLow};
+}
+
+double PalpationForces::q(double forceHigh_n, double forceLow_n) const
+{
+    const bool contact = forceHigh_n > m_contactThreshold_n && forceLow_n > m_contactThreshold_n;
+    return contact ? forceHigh_n / forceLow_n : kNaN;
+}
+
+double PalpationForces::stiffness(double q) const
+{
+    if (std::isnan(q)) return kNaN;
+    const auto reading = m_pair.objectStiffness(q);
+    return reading.range == sensors::ComplianceRange::InRange ? reading.objectStiffness_n_per_m : kNaN;
+}
+
+}  // namespace tactiscope::core::compliance

@@ -1,0 +1,102 @@
+// The per-sample part of palpation (seed 001), one implementation for the
+// live sink (LivePalpation) and for a stored session's review and export
+// (core/derived/PalpationChannels): each beam's raw value through its zero
+// to a force, Q = F_H/F_L while both beams touch, and k_o (eq. 2) where Q is
+// in range. What depends on history is only the zero, which a recording
+// stores whenever it changes (SessionStore::addZero).
+//
+// Channels: the first Position channel is the displacement; the first two
+// other channels are the high- and the low-stiffness beam, in the device's
+// order. A channel in ADC counts goes through the strain-gauge chain
+// (counts → strain), a strain channel through the beam model (F = ε /
+// (root strain per newton)), a force channel is used as it is. Every one of
+// these is an increasing function of the raw value, so the force of a
+// stretch's raw minimum and maximum are the stretch's force extremes.
+#pragma once
+
+#include "core/ChannelDescriptor.h"
+#include "core/calibration/CalibrationRecord.h"
+#include "core/compliance/StiffnessReadings.h"
+#include "core/sensors/SensorProfile.h"
+#include "core/straingauge/StrainGaugeChain.h"
+
+#include <limits>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tactiscope::core::compliance {
+
+struct LivePalpationSettings {
+    sensors::CantileverGeometry high;
+    sensors::CantileverGeometry low;
+    straingauge::AdcSettings adc;  // for channels in counts
+    straingauge::BridgeSettings bridge;
+    PressSettings press;
+    // Each beam's calibrated gauge factor; bridge.gaugeFactor (nominal) when none.
+    std::optional<double> highGaugeFactor, lowGaugeFactor;
+};
+
+// A probe's settings at a stream's rate, with each beam's gauge factor from
+// the newest usable "gauge_factor" record among `calibrations` for that
+// beam (calibration::beamSensorName), the nominal one otherwise. The
+// records used are returned in `used` when given.
+LivePalpationSettings palpationSettings(const sensors::CompliancePairProfile& probe, double sampleRate_hz,
+                                        std::span<const calibration::CalibrationRecord> calibrations,
+                                        std::vector<std::size_t>* used = nullptr);
+
+// A zero as a session stores it (storage::SessionZero): {"high": …, "low": …},
+// raw values in the beams' channel units; and back (none when unreadable).
+std::string zeroJson(double rawHigh, double rawLow);
+std::optional<std::pair<double, double>> zeroFromJson(const std::string& json);
+
+class PalpationForces {
+public:
+    // Throws std::invalid_argument when the channels lack a displacement or
+    // two beams, or for a non-physical probe.
+    PalpationForces(const std::vector<ChannelDescriptor>& channels, const LivePalpationSettings& settings);
+
+    const sensors::CompliancePair& pair() const { return m_pair; }
+    std::size_t highChannel() const { return m_high.channel; }
+    std::size_t lowChannel() const { return m_low.channel; }
+    std::size_t displacementChannel() const { return m_displacement; }
+    double contactThreshold_n() const { return m_contactThreshold_n; }
+    // The gauge factor that turns a beam's counts into strain; none when
+    // the device sends strain or force itself.
+    std::optional<double> gaugeFactor(bool highBeam) const;
+
+    // The zero: each beam's raw value with nothing pressed. No force before one is set.
+    void setZero(double rawHigh, double rawLow);
+    const std::optional<std::pair<double, double>>& zero() const { return m_zero; }
+
+    // In N on the zero; NaN before there is one.
+    double forceHigh(double raw) const { return m_zero ? m_high.force(m_pair.high(), raw) : kNaN; }
+    double forceLow(double raw) const { return m_zero ? m_low.force(m_pair.low(), raw) : kNaN; }
+    // F_H/F_L while both exceed the contact threshold, else NaN.
+    double q(double forceHigh_n, double forceLow_n) const;
+    // k_o in N/m for a Q in range (1 < Q < k_h/k_l), else NaN.
+    double stiffness(double q) const;
+
+    static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+private:
+    // One beam's channel and how its values become a force.
+    struct Input {
+        std::size_t channel = 0;
+        ChannelKind kind = ChannelKind::Other;
+        std::optional<straingauge::StrainGaugeChain> chain;  // a channel in counts; holds its zero
+        double zero = 0.0;                                   // other channels
+        void setZero(double value);
+        double force(const sensors::CantileverBeam& beam, double value) const;
+    };
+
+    sensors::CompliancePair m_pair;
+    double m_contactThreshold_n;
+    Input m_high, m_low;
+    std::size_t m_displacement = 0;
+    std::optional<std::pair<double, double>> m_zero;
+};
+
+}  // namespace tactiscope::core::compliance
