@@ -50,3 +50,22 @@ TEST(ReportPlot, SavesPngAtTwiceTheSizeAndSvgAsVectors)
     EXPECT_THROW(ui::saveReportPlot(data, QSize(600, 240), dir.filePath(QStringLiteral("no/folder/p.png"))),
                  std::runtime_error);
 }
+
+TEST(ReportPlot, AShortDefectIsShadedAtLeastTwoPixelsWide)
+{
+    // A 10 ms defect on a 10 s axis is 0.6 px of a 600 px plot: before, it
+    // was drawn that thin and could not be seen.
+    QTemporaryDir dir;
+    auto data = oneChannelSession(dir);
+    data.events.push_back({0, "live", tactiscope::core::EventKind::Defect, 5.0, 5.01, 1, 0.9, 0.05, 0.3, ""});
+    const QImage image = ui::renderReportPlot(data, QSize(600, 240), 1.0);
+    // Columns through the lane's middle that the orange shading tints.
+    int tinted = 0;
+    const int y = image.height() / 2;
+    for (int x = 0; x < image.width(); ++x) {
+        const QColor pixel = image.pixelColor(x, y);
+        tinted += pixel.red() > pixel.green() + 20 && pixel.green() > pixel.blue() + 10;
+    }
+    EXPECT_GE(tinted, 2);
+    EXPECT_LE(tinted, 4);
+}

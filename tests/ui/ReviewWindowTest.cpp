@@ -20,6 +20,7 @@
 
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QImage>
 #include <QInputDialog>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -264,11 +265,27 @@ TEST_F(ReviewWindowTest, ExportsTheReportThePlotAndTheRangeShownAsCsv)
         EXPECT_TRUE(text.contains(QStringLiteral("B then A")));
     }
 
+    // A replay's playhead is on the screen but not in the saved image.
+    m_window->plot()->setPlayhead(0.5 * (m_window->plot()->from_s() + m_window->plot()->to_s()));
+    tactiscope::testing::runEventLoopFor(100);  // the queued replot
+    const auto playheadPixels = [](const QImage& image) {
+        int count = 0;
+        for (int y = 0; y < image.height(); ++y) {
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor c = image.pixelColor(x, y);  // the playhead's red, antialiased
+                count += c.red() > 150 && c.green() < 110 && c.blue() < 130 && c.red() - c.green() > 80;
+            }
+        }
+        return count;
+    };
+    ASSERT_GT(playheadPixels(m_window->plot()->grab().toImage()), 50);
     for (const char* name : {"plot.png", "plot.svg"}) {
         const QString image = m_dir.filePath(QString::fromLatin1(name));
         ASSERT_TRUE(m_window->savePlot(image).isEmpty());
         EXPECT_GT(QFile(image).size(), 1000) << name;
     }
+    EXPECT_EQ(playheadPixels(QImage(m_dir.filePath("plot.png"))), 0);
+    EXPECT_GT(playheadPixels(m_window->plot()->grab().toImage()), 50) << "the screen keeps it";
 
     // 2 s shown at 500 Hz, from 10.001 s (sample 5000.5) to 12.001 s
     // (6000.5), rounded outwards: samples 5000 to 6001, as simulated.

@@ -6,6 +6,7 @@
 
 #include <qcustomplot.h>
 
+#include <algorithm>
 #include <memory>
 
 namespace tactiscope::ui {
@@ -27,8 +28,16 @@ void placeInLane(QCPItemPosition* position, QCPAxisRect* rect, double time_s, do
     position->setCoords(time_s, heightRatio);
 }
 
-void shade(QCustomPlot& plot, QCPAxisRect* rect, double from_s, double to_s, const QColor& colour)
+// A span at least `minimum_s` wide, centred on itself: a 10 ms defect on a
+// minute-long axis would otherwise be narrower than a pixel, and invisible.
+void shade(QCustomPlot& plot, QCPAxisRect* rect, double from_s, double to_s, const QColor& colour,
+           double minimum_s = 0.0)
 {
+    if (to_s - from_s < minimum_s) {
+        const double middle_s = 0.5 * (from_s + to_s);
+        from_s = middle_s - 0.5 * minimum_s;
+        to_s = middle_s + 0.5 * minimum_s;
+    }
     auto* item = new QCPItemRect(&plot);
     item->setClipAxisRect(rect);
     placeInLane(item->topLeft, rect, from_s, 0.0);
@@ -70,13 +79,16 @@ void addBand(QCustomPlot& plot, QCPAxisRect* rect, const core::report::ReportTra
     values->setRange(range.lower - margin, range.upper + margin);
 }
 
-// Builds the plot; the caller renders it.
-std::unique_ptr<QCustomPlot> buildPlot(const core::report::ReportData& data)
+// Builds the plot `width` pixels wide; the caller renders it.
+std::unique_ptr<QCustomPlot> buildPlot(const core::report::ReportData& data, int width)
 {
     auto plot = std::make_unique<QCustomPlot>();
     plot->plotLayout()->clear();
     auto* margins = new QCPMarginGroup(plot.get());
     const double rate_hz = data.session.sampleRate_hz;
+    // Defects at least 2 px wide in a lane, which is the plot less its
+    // axis margin (under 100 px).
+    const double minimumEvent_s = 2.0 * (data.to_s - data.from_s) / std::max(1, width - 100);
     for (std::size_t lane = 0; lane < data.traces.size(); ++lane) {
         const auto& trace = data.traces[lane];
         auto* rect = new QCPAxisRect(plot.get());
@@ -96,7 +108,8 @@ std::unique_ptr<QCustomPlot> buildPlot(const core::report::ReportData& data)
                   static_cast<double>(gap.firstIndex + gap.count) / rate_hz, kGap);
         for (const auto& event : data.events) {
             if (event.kind == core::EventKind::Defect)
-                shade(*plot, rect, event.start_s, event.end_s, event.direction > 0 ? kDefectAThenB : kDefectBThenA);
+                shade(*plot, rect, event.start_s, event.end_s, event.direction > 0 ? kDefectAThenB : kDefectBThenA,
+                      minimumEvent_s);
             else if (event.kind == core::EventKind::Marker)
                 mark(*plot, rect, event.start_s);
         }
@@ -110,13 +123,13 @@ std::unique_ptr<QCustomPlot> buildPlot(const core::report::ReportData& data)
 
 QImage renderReportPlot(const core::report::ReportData& data, QSize size, double scale)
 {
-    const auto plot = buildPlot(data);
+    const auto plot = buildPlot(data, size.width());
     return plot->toPixmap(size.width(), size.height(), scale).toImage();
 }
 
 void saveReportPlot(const core::report::ReportData& data, QSize size, const QString& path)
 {
-    const auto plot = buildPlot(data);
+    const auto plot = buildPlot(data, size.width());
     savePlotImage(*plot, size, path, QObject::tr("Session %1").arg(data.session.id));
 }
 

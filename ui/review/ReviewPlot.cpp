@@ -316,7 +316,23 @@ void ReviewPlot::setPlayhead(std::optional<double> time_s)
 
 void ReviewPlot::saveImage(const QString& path) const
 {
-    savePlotImage(*m_plot, m_plot->size(), path, tr("Session %1").arg(m_session.id));
+    // The playhead says where a replay was, not what the session holds: the
+    // image leaves it out, and the screen keeps it.
+    std::vector<bool> shown;
+    for (auto* line : m_playheadLines) {
+        shown.push_back(line->visible());
+        line->setVisible(false);
+    }
+    const auto restore = [&] {
+        for (std::size_t i = 0; i < m_playheadLines.size(); ++i) m_playheadLines[i]->setVisible(shown[i]);
+    };
+    try {
+        savePlotImage(*m_plot, m_plot->size(), path, tr("Session %1").arg(m_session.id));
+    } catch (...) {
+        restore();
+        throw;
+    }
+    restore();
 }
 
 }  // namespace tactiscope::ui
