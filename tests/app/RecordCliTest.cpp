@@ -16,7 +16,6 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -118,8 +117,7 @@ TEST(RecordCli, APanelScanRecordingStoresTheDetectorsEventsAndTheReportListsThem
     EXPECT_TRUE(result.out.contains(QStringLiteral("panel-scan: %1 defects stored").arg(events.size())))
         << result.out.toStdString();
 
-    if (QStandardPaths::findExecutable(QStringLiteral("pdftotext")).isEmpty())
-        GTEST_SKIP() << "pdftotext (poppler-utils, in scripts/install-deps.sh) is needed to read the report";
+    if (*tactiscope::testing::pdfTextMissing()) GTEST_SKIP() << tactiscope::testing::pdfTextMissing();
     const QString pdf = dir.filePath("door-8.pdf");
     const auto report = runCli({"report", "--db", db, "--session", "last", "--output", pdf});
     ASSERT_EQ(report.exitCode, 0) << report.err.toStdString();

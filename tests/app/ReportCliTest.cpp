@@ -14,7 +14,6 @@
 #include <QFileInfo>
 #include <QLocale>
 #include <QProcess>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -85,8 +84,7 @@ class ReportCli : public ::testing::Test {
 protected:
     void SetUp() override
     {
-        if (QStandardPaths::findExecutable(QStringLiteral("pdftotext")).isEmpty())
-            GTEST_SKIP() << "pdftotext (poppler-utils, in scripts/install-deps.sh) is needed to read the PDF";
+        if (*tactiscope::testing::pdfTextMissing()) GTEST_SKIP() << tactiscope::testing::pdfTextMissing();
         ASSERT_TRUE(m_dir.isValid());
         m_store = makeStore(m_dir);
     }

@@ -5,7 +5,6 @@
 #include "support/CliRunner.h"
 #include "support/PdfText.h"
 
-#include <QStandardPaths>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -19,8 +18,7 @@ class VerdictCli : public ::testing::Test {
 protected:
     void SetUp() override
     {
-        if (QStandardPaths::findExecutable(QStringLiteral("pdftotext")).isEmpty())
-            GTEST_SKIP() << "pdftotext (poppler-utils, in scripts/install-deps.sh) is needed to read the PDF";
+        if (*tactiscope::testing::pdfTextMissing()) GTEST_SKIP() << tactiscope::testing::pdfTextMissing();
         ASSERT_TRUE(m_dir.isValid());
         // 8 s of the simulator's scan, imported: no live events, as from another program.
         const QString csv = m_dir.filePath("scan.csv");

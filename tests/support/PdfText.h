@@ -3,9 +3,18 @@
 #pragma once
 
 #include <QProcess>
+#include <QStandardPaths>
 #include <QString>
 
 namespace tactiscope::testing {
+
+// Why a test that reads a PDF is skipped, or empty when it can run.
+inline const char* pdfTextMissing()
+{
+    return QStandardPaths::findExecutable(QStringLiteral("pdftotext")).isEmpty()
+               ? "pdftotext (poppler-utils, in scripts/install-deps.sh) is needed to read the PDF"
+               : "";
+}
 
 // Empty when pdftotext is missing or fails.
 inline QString pdfText(const QString& pdf)
