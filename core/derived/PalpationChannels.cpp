@@ -59,8 +59,9 @@ PalpationChannels::PalpationChannels(storage::SessionStore& store, std::int64_t 
     const auto zeros = store.zeros(session);
     for (std::size_t z = 0; z < zeros.size(); ++z) {
         const auto zero = compliance::zeroFromJson(zeros[z].valuesJson);
-        if (!zero) throw storage::StorageError("a zero of session " + std::to_string(session) +
-                                               " cannot be read; the store is damaged");
+        if (!zero)
+            throw storage::StorageError("a zero of session " + std::to_string(session) +
+                                        " cannot be read; the store is damaged");
         const std::uint64_t end = z + 1 < zeros.size() ? zeros[z + 1].firstIndex : m_sampleCount;
         m_spans.push_back({zeros[z].firstIndex, end, zero->first, zero->second});
     }
