@@ -37,6 +37,9 @@ public:
 
     // force_high [N], force_low [N], Q, stiffness [N/m].
     std::vector<ChannelDescriptor> channels() const override;
+    // The stored channels the beams' forces come from.
+    std::size_t highChannel() const { return m_forces->highChannel(); }
+    std::size_t lowChannel() const { return m_forces->lowChannel(); }
     // What the forces were computed with, in words: the profile and each
     // beam's gauge factor (calibrated or nominal).
     std::string basis() const override { return m_basis; }

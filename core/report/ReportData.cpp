@@ -2,6 +2,7 @@
 // copies of profile and calibrations the session carries.
 #include "core/report/ReportData.h"
 
+#include "core/derived/PalpationChannels.h"
 #include "core/storage/DefectRecords.h"
 
 #include <nlohmann/json.hpp>
@@ -88,7 +89,25 @@ ReportData gatherReport(storage::SessionStore& store, std::int64_t session, cons
     for (const auto& gap : store.gaps(session))
         if (gap.firstIndex < end && gap.firstIndex + gap.count > first) data.gaps.push_back(gap);
     const auto channels = store.channels(session);
-    for (std::size_t c = 0; c < channels.size(); ++c)
+    std::vector<std::size_t> rawLanes(channels.size());
+    for (std::size_t c = 0; c < channels.size(); ++c) rawLanes[c] = c;
+    if (summary->metadata.mode == Mode::Palpation) {
+        try {
+            derived::PalpationChannels palpation(store, session);
+            const auto derivedChannels = palpation.channels();
+            // F_H, F_L and Q; k_o is in the readings table, per press.
+            for (std::size_t d = 0; d < 3; ++d)
+                data.traces.push_back(
+                    {{derivedChannels[d], rate_hz}, palpation.overview(d, first, end - first, overviewPoints)});
+            if (data.traces.back().points.empty()) data.traces.pop_back();  // Q over too long a range
+            std::erase_if(rawLanes,
+                          [&](std::size_t c) { return c == palpation.highChannel() || c == palpation.lowChannel(); });
+            data.derivedBasis = palpation.basis();
+        } catch (const std::invalid_argument& e) {
+            data.derivedProblem = e.what();
+        }
+    }
+    for (const std::size_t c : rawLanes)
         data.traces.push_back({channels[c], store.overview(session, c, first, end - first, overviewPoints)});
     return data;
 }

@@ -1,5 +1,5 @@
 // What an inspection report of one session says, gathered from the store
-// without loading the samples: the session's fields, the sensor and the
+// without loading the samples (but for Q, see core/derived): the session's fields, the sensor and the
 // calibrations it was recorded with, its live events, readings, operator
 // notes and gaps, and each channel's min/max overview (from the store's
 // level-of-detail pyramid) for the plots. A time range narrows everything to
@@ -46,7 +46,12 @@ struct ReportData {
     std::vector<storage::SessionReading> readings;
     std::vector<storage::Annotation> annotations;
     std::vector<storage::SampleGap> gaps;
+    // The key plot's lanes: a palpation's forces (derived, in N) and Q in
+    // place of its beams' raw values, then the stored channels that are
+    // already physical; every stored channel otherwise.
     std::vector<ReportTrace> traces;
+    std::string derivedBasis;    // what the derived lanes were computed with; empty without them
+    std::string derivedProblem;  // why a palpation's forces could not be computed, if so
 
     bool wholeSession() const;
 };

@@ -3,8 +3,10 @@
 // stored channels; Q is the force ratio while both beams touch and k_o
 // follows from it by eq. 2 with the beams' stiffnesses computed here from
 // the profile's geometry (k = E·w·t³ / (4·L³)); the stiffness while pressed
-// is the specimen's; and an import of the export leaves the computed
-// columns out, so it reads back as the session recorded.
+// is the specimen's; an import of the export leaves the computed columns
+// out, so it reads back as the session recorded; and the report plots the
+// forces and Q instead of the counts.
+#include "core/report/ReportData.h"
 #include "core/storage/SessionStore.h"
 #include "support/CliRunner.h"
 #include "support/EmulatorProcess.h"
@@ -92,6 +94,15 @@ TEST(DerivedExportCli, APalpationExportsItsForcesQAndStiffnessWithUnits)
     ASSERT_EQ(channels.size(), 3u);
     for (std::size_t c = 0; c < channels.size(); ++c) EXPECT_EQ(channels[c].descriptor, recordedChannels[c].descriptor);
     EXPECT_EQ(copy.zeros(1).size(), original.zeros(1).size());
+
+    // The report's key plot shows the forces and Q in place of the beams'
+    // counts, and says what they were computed with.
+    const auto report = core::report::gatherReport(original, 1);
+    std::vector<std::string> lanes;
+    for (const auto& trace : report.traces) lanes.push_back(trace.channel.descriptor.name);
+    EXPECT_EQ(lanes, (std::vector<std::string>{"force_high", "force_low", "Q", "displacement"}));
+    EXPECT_EQ(report.traces[0].channel.descriptor.unit, "N");
+    EXPECT_NE(report.derivedBasis.find("gauge factor"), std::string::npos) << report.derivedBasis;
 
     // Other modes say what they lack; JSON has no computed columns.
     const auto json = runCli({"sessions", "--db", db, "export", "last", "--format", "json", "--derived", "--output",

@@ -16,9 +16,13 @@
 #include <QTextDocument>
 #include <QUrl>
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <map>
 #include <ostream>
 #include <stdexcept>
+#include <tuple>
 
 namespace tactiscope::ui {
 namespace {
@@ -115,6 +119,11 @@ QString header(const core::report::ReportData& data)
     html += row(QObject::tr("Covered"), range);
     html += row(QObject::tr("Device"), device);
     html += row(QObject::tr("Sensor"), orDash(data.sensorName));
+    if (!data.derivedBasis.empty())
+        html += row(QObject::tr("Forces from"), text(data.derivedBasis) + QObject::tr(" and the zeros recorded"));
+    else if (!data.derivedProblem.empty())
+        html += row(QObject::tr("Forces"),
+                    QObject::tr("not computed: %1; the plot shows the raw channels").arg(text(data.derivedProblem)));
     html += row(QObject::tr("Calibration"), calibrations.isEmpty() ? QObject::tr("none recorded with the session")
                                                                    : calibrations.join(QStringLiteral("<br>")));
     const QString losses = lost == 0 ? QObject::tr("none lost")
@@ -200,6 +209,38 @@ QString defectTables(const core::report::ReportData& data)
                         crossings);
 }
 
+// Repeated presses at one site, summed up: how many, their mean and spread
+// (sample standard deviation) and range, per quantity and unit.
+QString readingsBySite(const core::report::ReportData& data)
+{
+    struct Site {
+        std::vector<double> values;
+    };
+    std::map<std::tuple<std::string, std::string, std::string>, Site> sites;  // site, quantity, unit
+    for (const auto& r : data.readings)
+        if (!r.site.empty()) sites[{r.site, r.quantity, r.unit}].values.push_back(r.value);
+    if (sites.empty()) return {};
+    std::vector<QStringList> rows;
+    for (const auto& [key, site] : sites) {
+        const auto& [name, quantity, unit] = key;
+        const auto n = static_cast<double>(site.values.size());
+        double sum = 0.0;
+        for (const double v : site.values) sum += v;
+        const double mean = sum / n;
+        double squares = 0.0;
+        for (const double v : site.values) squares += (v - mean) * (v - mean);
+        const auto [low, high] = std::ranges::minmax(site.values);
+        rows.push_back({text(name), text(quantity), QString::number(site.values.size()),
+                        number(mean, 2) + QStringLiteral(" ") + text(unit),
+                        site.values.size() > 1 ? number(std::sqrt(squares / (n - 1.0)), 2) : QStringLiteral("—"),
+                        QStringLiteral("%1 – %2").arg(number(low, 2), number(high, 2))});
+    }
+    return QStringLiteral("<h2>%1</h2>").arg(QObject::tr("By site")) +
+           table({QObject::tr("Site"), QObject::tr("Quantity"), QObject::tr("n"), QObject::tr("Mean"),
+                  QObject::tr("SD"), QObject::tr("Range")},
+                 rows);
+}
+
 QString eventTables(const core::report::ReportData& data)
 {
     std::vector<QStringList> others;
@@ -222,6 +263,7 @@ QString eventTables(const core::report::ReportData& data)
         html += QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Readings (%1)").arg(data.readings.size()));
         html +=
             table({QObject::tr("Time (s)"), QObject::tr("Quantity"), QObject::tr("Value"), QObject::tr("Site")}, rows);
+        html += readingsBySite(data);
     }
     if (!others.empty()) {
         html += QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Markers and alarms"));
@@ -265,9 +307,12 @@ std::unique_ptr<QTextDocument> buildReportDocument(const core::report::ReportDat
                 .arg(plotUrl.toString())
                 .arg(kTextWidth_px)
                 .arg(plotHeight);
-    html += QStringLiteral("<p><small>%1</small></p>")
-                .arg(QObject::tr("Shaded: defects (orange A then B, purple B then A), readings (green), lost "
-                                 "samples (grey); dashed: markers. Bands show each stretch's minimum and maximum."));
+    const QString shaded = data.session.metadata.mode == core::Mode::PanelScan
+                               ? QObject::tr("Shaded: defects (orange A then B, purple B then A), lost samples "
+                                             "(grey); dashed: markers.")
+                               : QObject::tr("Shaded: readings (green), lost samples (grey); dashed: markers.");
+    html += QStringLiteral("<p><small>%1 %2</small></p>")
+                .arg(shaded, QObject::tr("Bands show each stretch's minimum and maximum."));
     html += eventTables(data);
     html += QStringLiteral("<p class=footer>%1</p>")
                 .arg(QObject::tr("Tactiscope %1 (recorded with %2), %3 UTC")
