@@ -2,7 +2,7 @@
 // copies of profile and calibrations the session carries.
 #include "core/report/ReportData.h"
 
-#include "core/derived/PalpationChannels.h"
+#include "core/derived/SessionLanes.h"
 #include "core/storage/DefectRecords.h"
 
 #include <nlohmann/json.hpp>
@@ -88,27 +88,16 @@ ReportData gatherReport(storage::SessionStore& store, std::int64_t session, cons
     const auto end = std::min(summary->sampleCount, static_cast<std::uint64_t>(std::ceil(data.to_s * rate_hz)));
     for (const auto& gap : store.gaps(session))
         if (gap.firstIndex < end && gap.firstIndex + gap.count > first) data.gaps.push_back(gap);
-    const auto channels = store.channels(session);
-    std::vector<std::size_t> rawLanes(channels.size());
-    for (std::size_t c = 0; c < channels.size(); ++c) rawLanes[c] = c;
-    if (summary->metadata.mode == Mode::Palpation) {
-        try {
-            derived::PalpationChannels palpation(store, session);
-            const auto derivedChannels = palpation.channels();
-            // F_H, F_L and Q; k_o is in the readings table, per press.
-            for (std::size_t d = 0; d < 3; ++d)
-                data.traces.push_back(
-                    {{derivedChannels[d], rate_hz}, palpation.overview(d, first, end - first, overviewPoints)});
-            if (data.traces.back().points.empty()) data.traces.pop_back();  // Q over too long a range
-            std::erase_if(rawLanes,
-                          [&](std::size_t c) { return c == palpation.highChannel() || c == palpation.lowChannel(); });
-            data.derivedBasis = palpation.basis();
-        } catch (const std::invalid_argument& e) {
-            data.derivedProblem = e.what();
-        }
+    auto lanes = derived::sessionLanes(store, *summary);
+    data.derivedBasis = lanes.basis;
+    data.derivedProblem = lanes.problem;
+    for (const auto& lane : lanes.lanes) {
+        auto points = lane->overview(first, end - first, overviewPoints);
+        // k_o is in the readings table, per press; a lane with nothing to
+        // draw (Q over a range too long to read exactly) is left out.
+        if (points.empty() || lane->descriptor().name == "stiffness") continue;
+        data.traces.push_back({{lane->descriptor(), rate_hz}, std::move(points)});
     }
-    for (const std::size_t c : rawLanes)
-        data.traces.push_back({channels[c], store.overview(session, c, first, end - first, overviewPoints)});
     return data;
 }
 

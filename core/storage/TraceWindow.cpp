@@ -20,6 +20,13 @@ long long TraceWindow::nearest(double time_s) const
 TraceWindow readTraceWindow(SessionStore& store, std::int64_t session, std::size_t channel, double sampleRate_hz,
                             std::uint64_t sampleCount, double from_s, double to_s, std::size_t pixels)
 {
+    StoredLane lane(store, session, channel, {});
+    return readTraceWindow(lane, sampleRate_hz, sampleCount, from_s, to_s, pixels);
+}
+
+TraceWindow readTraceWindow(LaneSource& lane, double sampleRate_hz, std::uint64_t sampleCount, double from_s,
+                            double to_s, std::size_t pixels)
+{
     TraceWindow window;
     if (sampleRate_hz <= 0.0 || sampleCount == 0 || !(to_s > from_s)) return window;
     const auto indexAt = [&](double t) {
@@ -35,14 +42,14 @@ TraceWindow readTraceWindow(SessionStore& store, std::int64_t session, std::size
     if (static_cast<double>(count) <= kExactSamplesPerPixel * static_cast<double>(width)) {
         window.exact = true;
         window.firstIndex = first;
-        window.low = store.readChannel(session, channel, first, count);
+        window.low = lane.exact(first, count);
         window.high = window.low;
         window.t_s.resize(window.low.size());
         for (std::size_t i = 0; i < window.t_s.size(); ++i)
             window.t_s[i] = static_cast<double>(first + i) / sampleRate_hz;
         return window;
     }
-    for (const OverviewPoint& p : store.overview(session, channel, first, count, width)) {
+    for (const OverviewPoint& p : lane.overview(first, count, width)) {
         const bool stored = std::isfinite(p.min) && std::isfinite(p.max);  // a stretch wholly lost has neither
         const double mid = static_cast<double>(p.firstIndex) + static_cast<double>(p.count) / 2.0;
         window.t_s.push_back(mid / sampleRate_hz);

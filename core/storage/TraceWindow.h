@@ -8,6 +8,7 @@
 #include "core/storage/SessionStore.h"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace tactiscope::core::storage {
@@ -28,9 +29,51 @@ struct TraceWindow {
 // Samples per pixel at or below which the exact samples are read.
 inline constexpr double kExactSamplesPerPixel = 4.0;
 
-// The window of `channel` over [from_s, to_s] (session seconds, clipped to
+// What a review lane plots: a stored channel, or a quantity derived from
+// the stored ones (core/derived), read exactly or as a min/max overview.
+class LaneSource {
+public:
+    virtual ~LaneSource() = default;
+    virtual ChannelDescriptor descriptor() const = 0;
+    // Samples [first, first + count), NaN where lost or undefined.
+    virtual std::vector<double> exact(std::uint64_t first, std::uint64_t count) = 0;
+    // About `points` min/max stretches of [first, first + count).
+    virtual std::vector<OverviewPoint> overview(std::uint64_t first, std::uint64_t count, std::size_t points) = 0;
+};
+
+// A stored channel as a lane.
+class StoredLane final : public LaneSource {
+public:
+    StoredLane(SessionStore& store, std::int64_t session, std::size_t channel, ChannelDescriptor descriptor)
+        : m_store(store),
+          m_session(session),
+          m_channel(channel),
+          m_descriptor(std::move(descriptor))
+    {
+    }
+    ChannelDescriptor descriptor() const override { return m_descriptor; }
+    std::vector<double> exact(std::uint64_t first, std::uint64_t count) override
+    {
+        return m_store.readChannel(m_session, m_channel, first, count);
+    }
+    std::vector<OverviewPoint> overview(std::uint64_t first, std::uint64_t count, std::size_t points) override
+    {
+        return m_store.overview(m_session, m_channel, first, count, points);
+    }
+
+private:
+    SessionStore& m_store;
+    std::int64_t m_session;
+    std::size_t m_channel;
+    ChannelDescriptor m_descriptor;
+};
+
+// The window of a lane over [from_s, to_s] (session seconds, clipped to
 // the recording) for a plot `pixels` wide. One sample beyond each end is
 // included when exact, so a line reaches the plot's edges.
+TraceWindow readTraceWindow(LaneSource& lane, double sampleRate_hz, std::uint64_t sampleCount, double from_s,
+                            double to_s, std::size_t pixels);
+// The same for stored channel `channel`.
 TraceWindow readTraceWindow(SessionStore& store, std::int64_t session, std::size_t channel, double sampleRate_hz,
                             std::uint64_t sampleCount, double from_s, double to_s, std::size_t pixels);
 

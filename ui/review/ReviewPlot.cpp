@@ -36,16 +36,16 @@ QString valueText(double value, const DisplayUnit& unit)
 
 }  // namespace
 
-ReviewPlot::ReviewPlot(core::storage::SessionStore& store, const core::storage::SessionSummary& session,
+ReviewPlot::ReviewPlot(core::storage::SessionStore& store, const core::storage::SessionSummary& session, bool raw,
                        QWidget* parent)
     : QWidget(parent),
       m_store(store),
       m_session(session),
-      m_channels(store.channels(session.id)),
+      m_lanes(core::derived::sessionLanes(store, session, raw)),
       m_duration_s(session.duration_s()),
       m_plot(new QCustomPlot(this)),
       m_readout(new QLabel(this)),
-      m_windows(m_channels.size())
+      m_windows(m_lanes.lanes.size())
 {
     m_plot->setObjectName(QStringLiteral("reviewPlot"));
     m_readout->setObjectName(QStringLiteral("cursorReadout"));
@@ -59,7 +59,7 @@ ReviewPlot::ReviewPlot(core::storage::SessionStore& store, const core::storage::
     auto* margins = new QCPMarginGroup(m_plot);
     const auto gaps = store.gaps(session.id);
     const double rate_hz = session.sampleRate_hz;
-    for (std::size_t c = 0; c <= m_channels.size(); ++c) {
+    for (std::size_t c = 0; c <= m_lanes.lanes.size(); ++c) {
         auto* rect = new QCPAxisRect(m_plot);
         m_plot->plotLayout()->addElement(static_cast<int>(c), 0, rect);
         rect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
@@ -67,7 +67,7 @@ ReviewPlot::ReviewPlot(core::storage::SessionStore& store, const core::storage::
         rect->setRangeZoom(Qt::Horizontal);
         QCPAxis* time = rect->axis(QCPAxis::atBottom);
         connect(time, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this, rect] { syncRange(rect); });
-        if (c == m_channels.size()) {
+        if (c == m_lanes.lanes.size()) {
             m_markerLane = rect;
             time->setLabel(tr("Time from the session start (s)"));
             rect->axis(QCPAxis::atLeft)->setRangeReversed(true);
@@ -75,10 +75,10 @@ ReviewPlot::ReviewPlot(core::storage::SessionStore& store, const core::storage::
             break;
         }
         time->setTickLabels(false);
-        const DisplayUnit unit = displayUnitFor(m_channels[c].descriptor);
+        const auto descriptor = m_lanes.lanes[c]->descriptor();
+        const DisplayUnit unit = displayUnitFor(descriptor);
         rect->axis(QCPAxis::atLeft)
-            ->setLabel(
-                QStringLiteral("%1\n%2").arg(QString::fromStdString(m_channels[c].descriptor.name), unit.axisTitle()));
+            ->setLabel(QStringLiteral("%1\n%2").arg(QString::fromStdString(descriptor.name), unit.axisTitle()));
         QCPGraph* graph = m_plot->addGraph(time, rect->axis(QCPAxis::atLeft));
         graph->setPen(QPen(kTrace, 1.0));
         m_graphs.push_back(graph);
@@ -113,6 +113,13 @@ ReviewPlot::ReviewPlot(core::storage::SessionStore& store, const core::storage::
         if (m_markerLane->width() != m_loadedWidth_px) m_reloadTimer.start();
     });
     showWholeSession();
+}
+
+std::vector<std::string> ReviewPlot::laneNames() const
+{
+    std::vector<std::string> names;
+    for (const auto& lane : m_lanes.lanes) names.push_back(lane->descriptor().name);
+    return names;
 }
 
 std::vector<QCPItemStraightLine*> ReviewPlot::makeLines(const QPen& pen)
@@ -227,18 +234,18 @@ void ReviewPlot::reload()
     const std::size_t pixels = static_cast<std::size_t>(m_loadedWidth_px > 10 ? m_loadedWidth_px : 800);
     std::vector<core::storage::TraceWindow> read;
     try {
-        for (std::size_t c = 0; c < m_channels.size(); ++c)
-            read.push_back(core::storage::readTraceWindow(m_store, m_session.id, c, m_channels[c].sampleRate_hz,
-                                                          m_session.sampleCount, from_s(), to_s(), pixels));
+        for (const auto& lane : m_lanes.lanes)
+            read.push_back(core::storage::readTraceWindow(*lane, m_session.sampleRate_hz, m_session.sampleCount,
+                                                          from_s(), to_s(), pixels));
     } catch (const core::storage::StorageError& e) {
         // Called from a timer: an exception must not reach the event loop.
         emit readFailed(tr("The samples cannot be read: %1").arg(QString::fromStdString(e.what())));
         return;
     }
     m_windows = std::move(read);
-    for (std::size_t c = 0; c < m_channels.size(); ++c) {
+    for (std::size_t c = 0; c < m_lanes.lanes.size(); ++c) {
         const auto& window = m_windows[c];
-        const DisplayUnit unit = displayUnitFor(m_channels[c].descriptor);
+        const DisplayUnit unit = displayUnitFor(m_lanes.lanes[c]->descriptor());
         QVector<double> keys, values;
         keys.reserve(static_cast<qsizetype>(2 * window.t_s.size()));
         values.reserve(keys.capacity());
@@ -267,11 +274,12 @@ void ReviewPlot::reload()
 QString ReviewPlot::readoutAt(double time_s) const
 {
     QStringList parts{tr("t = %1 s").arg(time_s, 0, 'f', 4)};
-    for (std::size_t c = 0; c < m_channels.size(); ++c) {
+    for (std::size_t c = 0; c < m_lanes.lanes.size(); ++c) {
         const auto& window = m_windows[c];
         const auto i = window.nearest(time_s);
-        const DisplayUnit unit = displayUnitFor(m_channels[c].descriptor);
-        const QString name = QString::fromStdString(m_channels[c].descriptor.name);
+        const auto descriptor = m_lanes.lanes[c]->descriptor();
+        const DisplayUnit unit = displayUnitFor(descriptor);
+        const QString name = QString::fromStdString(descriptor.name);
         if (i < 0) continue;
         const auto k = static_cast<std::size_t>(i);
         if (std::isnan(window.low[k]))

@@ -1,5 +1,7 @@
-// The review view's plot of one stored session: a lane per channel on a
-// shared time axis, read from the store window by window
+// The review view's plot of one stored session: a lane per quantity on a
+// shared time axis — the mode's physical quantities, or the stored channels
+// as they are (core/derived/SessionLanes.h) — read from the store window by
+// window
 // (core::storage::readTraceWindow) each time the view moves, so the whole
 // session shows from the overview pyramid and a zoom reads only the samples
 // on screen; nothing of the session is kept beyond what is drawn.
@@ -11,6 +13,7 @@
 // Lost stretches are greyed.
 #pragma once
 
+#include "core/derived/SessionLanes.h"
 #include "core/storage/SessionStore.h"
 #include "core/storage/TraceWindow.h"
 
@@ -43,8 +46,16 @@ class ReviewPlot : public QWidget {
     Q_OBJECT
 
 public:
-    // The store must outlive the plot.
-    ReviewPlot(core::storage::SessionStore& store, const core::storage::SessionSummary& session, QWidget* parent);
+    // The store must outlive the plot. `raw`: the stored channels as they
+    // are, instead of the mode's physical quantities.
+    ReviewPlot(core::storage::SessionStore& store, const core::storage::SessionSummary& session, bool raw,
+               QWidget* parent);
+    // What the derived lanes were computed with, or why there are none
+    // (empty for a mode without them).
+    const std::string& derivedBasis() const { return m_lanes.basis; }
+    const std::string& derivedProblem() const { return m_lanes.problem; }
+    bool showsDerived() const { return m_lanes.derived; }
+    std::vector<std::string> laneNames() const;
 
     void setMarkers(const QStringList& rows, const std::vector<MarkerSpan>& spans);
 
@@ -87,7 +98,7 @@ private:
 
     core::storage::SessionStore& m_store;
     core::storage::SessionSummary m_session;
-    std::vector<core::storage::StoredChannel> m_channels;
+    core::derived::SessionLanes m_lanes;
     double m_duration_s = 0.0;
     QCustomPlot* m_plot;
     QLabel* m_readout;

@@ -141,7 +141,7 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionStor
     m_problem->setStyleSheet(QStringLiteral("color: #b00020"));
     m_problem->hide();
 
-    m_plot = new ReviewPlot(*m_store, m_session, this);
+    m_plot = new ReviewPlot(*m_store, m_session, false, this);
     m_list = new QTreeWidget(this);
     m_list->setObjectName(QStringLiteral("recordList"));
     m_list->setHeaderLabels({tr("Time (s)"), tr("What"), tr("Source"), tr("Details")});
@@ -174,6 +174,9 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionStor
     m_replay.setInterval(40);
     connect(&m_replay, &QTimer::timeout, this, &ReviewWindow::advanceReplay);
     connect(m_plot, &ReviewPlot::readFailed, this, &ReviewWindow::showProblem);
+    if (!m_plot->derivedProblem().empty())
+        showProblem(tr("The physical quantities cannot be computed (%1): the stored channels are shown.")
+                        .arg(text(m_plot->derivedProblem())));
     connect(m_list, &QTreeWidget::itemClicked, this, &ReviewWindow::jumpTo);
     connect(m_list, &QTreeWidget::itemActivated, this, &ReviewWindow::jumpTo);
     connect(m_list, &QTreeWidget::itemDoubleClicked, this, &ReviewWindow::editSelectedNote);
@@ -187,6 +190,26 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionStor
 }
 
 ReviewWindow::~ReviewWindow() = default;
+
+void ReviewWindow::setRawChannels(bool raw)
+{
+    const double from_s = m_plot->from_s(), to_s = m_plot->to_s();
+    const auto cursor = m_plot->cursorTime();
+    ReviewPlot* plot = nullptr;
+    try {
+        plot = new ReviewPlot(*m_store, m_session, raw, this);
+    } catch (const core::storage::StorageError& e) {
+        showProblem(tr("The samples cannot be read: %1").arg(text(e.what())));
+        return;
+    }
+    m_plot->parentWidget()->layout()->replaceWidget(m_plot, plot);
+    delete m_plot;
+    m_plot = plot;
+    connect(m_plot, &ReviewPlot::readFailed, this, &ReviewWindow::showProblem);
+    refreshRecords();  // the markers
+    m_plot->setRange(from_s, to_s);
+    if (cursor) m_plot->setCursorTime(*cursor);
+}
 
 void ReviewWindow::refreshHeader()
 {
@@ -247,13 +270,21 @@ void ReviewWindow::createActions()
     bar->setObjectName(QStringLiteral("reviewToolBar"));
     bar->setMovable(false);
     bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    QAction* whole = bar->addAction(tr("Whole session"), m_plot, &ReviewPlot::showWholeSession);
+    QAction* whole = bar->addAction(tr("Whole session"), this, [this] { m_plot->showWholeSession(); });
     whole->setShortcut(QKeySequence(Qt::Key_Home));
     whole->setToolTip(tr("Show the whole session (Home)"));
     QAction* in = bar->addAction(tr("Zoom in"), this, [this] { m_plot->zoom(0.5); });
     in->setShortcuts({QKeySequence::ZoomIn, QKeySequence(Qt::Key_Plus)});
     QAction* out = bar->addAction(tr("Zoom out"), this, [this] { m_plot->zoom(2.0); });
     out->setShortcuts({QKeySequence::ZoomOut, QKeySequence(Qt::Key_Minus)});
+    if (m_plot->showsDerived()) {
+        QAction* raw = bar->addAction(tr("Raw channels"), this, &ReviewWindow::setRawChannels);
+        raw->setObjectName(QStringLiteral("rawChannelsAction"));
+        raw->setCheckable(true);
+        raw->setToolTip(tr("The channels as the probe sent them, instead of the physical quantities computed "
+                           "from them (%1)")
+                            .arg(text(m_plot->derivedBasis())));
+    }
     bar->addSeparator();
     m_playAction = bar->addAction(tr("Play"), this, [this] { isPlaying() ? pause() : play(); });
     m_playAction->setObjectName(QStringLiteral("playAction"));

@@ -61,6 +61,9 @@ public:
     // Jumps to a row of the list (a click does this).
     void jumpTo(QTreeWidgetItem* item);
 
+    // The stored channels as they are (raw), or the mode's physical quantities.
+    void setRawChannels(bool raw);
+
     // Replay from the left of the view at `speed`× real time.
     void setReplaySpeed(int speed);
     void play();

@@ -1,0 +1,61 @@
+// SessionLanes: derived lanes where the mode has them, stored ones after.
+#include "core/derived/SessionLanes.h"
+
+#include "core/derived/PalpationChannels.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace tactiscope::core::derived {
+namespace {
+
+// One derived channel of a palpation session; the lanes share the computation.
+class PalpationLane final : public storage::LaneSource {
+public:
+    PalpationLane(std::shared_ptr<PalpationChannels> channels, std::size_t index)
+        : m_channels(std::move(channels)),
+          m_index(index)
+    {
+    }
+    ChannelDescriptor descriptor() const override { return m_channels->channels()[m_index]; }
+    std::vector<double> exact(std::uint64_t first, std::uint64_t count) override
+    {
+        return std::move(m_channels->read(first, count)[m_index]);
+    }
+    std::vector<storage::OverviewPoint> overview(std::uint64_t first, std::uint64_t count, std::size_t points) override
+    {
+        return m_channels->overview(m_index, first, count, points);
+    }
+
+private:
+    std::shared_ptr<PalpationChannels> m_channels;
+    std::size_t m_index;
+};
+
+}  // namespace
+
+SessionLanes sessionLanes(storage::SessionStore& store, const storage::SessionSummary& session, bool raw)
+{
+    SessionLanes result;
+    const auto channels = store.channels(session.id);
+    std::vector<std::size_t> stored(channels.size());
+    for (std::size_t c = 0; c < channels.size(); ++c) stored[c] = c;
+    if (!raw && session.metadata.mode == Mode::Palpation) {
+        try {
+            auto palpation = std::make_shared<PalpationChannels>(store, session.id);
+            for (std::size_t d = 0; d < palpation->channels().size(); ++d)
+                result.lanes.push_back(std::make_unique<PalpationLane>(palpation, d));
+            std::erase_if(stored,
+                          [&](std::size_t c) { return c == palpation->highChannel() || c == palpation->lowChannel(); });
+            result.basis = palpation->basis();
+            result.derived = true;
+        } catch (const std::invalid_argument& e) {
+            result.problem = e.what();
+        }
+    }
+    for (const std::size_t c : stored)
+        result.lanes.push_back(std::make_unique<storage::StoredLane>(store, session.id, c, channels[c].descriptor));
+    return result;
+}
+
+}  // namespace tactiscope::core::derived

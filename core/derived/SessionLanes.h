@@ -1,0 +1,28 @@
+// Which lanes a session is plotted in, for the review window and the
+// report alike: a mode's physical quantities by default (palpation: F_H,
+// F_L, Q and k_o from core/derived/PalpationChannels, then the stored
+// channels the forces did not come from), or every stored channel as it is
+// (`raw`). Other modes are plotted as stored until they have derived
+// channels.
+#pragma once
+
+#include "core/storage/SessionStore.h"
+#include "core/storage/TraceWindow.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tactiscope::core::derived {
+
+struct SessionLanes {
+    std::vector<std::unique_ptr<storage::LaneSource>> lanes;
+    std::string basis;    // what the derived lanes were computed with; empty without them
+    std::string problem;  // why a mode's quantities could not be derived, if so
+    bool derived = false;
+};
+
+// Throws storage::StorageError when the store cannot be read.
+SessionLanes sessionLanes(storage::SessionStore& store, const storage::SessionSummary& session, bool raw = false);
+
+}  // namespace tactiscope::core::derived

@@ -1,0 +1,72 @@
+// The review window of a palpation recorded from the emulator: it opens on
+// the physical quantities (F_H, F_L, Q, k_o, then the displacement), the
+// beams' counts are one click away and back, and zoomed on a press the
+// forces are what the derived channels give for those samples.
+#include "ui/review/ReviewWindow.h"
+
+#include "core/derived/PalpationChannels.h"
+#include "core/storage/SessionStore.h"
+#include "ui/review/ReviewPlot.h"
+
+#include "support/CliRunner.h"
+#include "support/EmulatorProcess.h"
+#include "support/Screenshot.h"
+#include "support/WaitFor.h"
+
+#include <QAction>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace tactiscope;
+
+TEST(ReviewPalpation, OpensOnTheForcesAndTheCountsAreOneClickAway)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("probe"), db = dir.filePath("clinic.tactiscope");
+    QProcess emulator;
+    ASSERT_TRUE(tactiscope::testing::startEmulator(emulator, link, {"--scenario", "palpation", "--seed", "3"}));
+    const auto recorded = tactiscope::testing::runCli(
+        {"record", "--port", link, "--seconds", "7", "--db", db, "--site", "B2", "--subject", "phantom-1"});
+    tactiscope::testing::stopEmulator(emulator);
+    ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
+
+    QString error;
+    auto* window = ui::ReviewWindow::open(db, 1, nullptr, error);
+    ASSERT_NE(window, nullptr) << error.toStdString();
+    window->setAttribute(Qt::WA_DeleteOnClose, false);
+    window->show();
+    window->plot()->reload();
+    EXPECT_EQ(window->plot()->laneNames(),
+              (std::vector<std::string>{"force_high", "force_low", "Q", "stiffness", "displacement"}));
+
+    // Zoomed on the first press: the exact forces of those samples.
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto readings = store.readings(1);
+    ASSERT_FALSE(readings.empty());
+    window->plot()->setRange(readings[0].start_s, readings[0].start_s + 1.0);
+    window->plot()->reload();
+    const auto& shown = window->plot()->shown(0);
+    ASSERT_TRUE(shown.exact);
+    core::derived::PalpationChannels derived(store, 1);
+    const auto want = derived.read(shown.firstIndex, shown.low.size())[0];
+    ASSERT_EQ(want.size(), shown.low.size());
+    int pressing = 0;
+    for (std::size_t i = 0; i < want.size(); ++i) {
+        EXPECT_DOUBLE_EQ(shown.low[i], want[i]) << i;
+        pressing += want[i] > 0.05;  // newtons: the press is on screen
+    }
+    EXPECT_GT(pressing, 100);
+    tactiscope::testing::saveScreenshot(*window, QStringLiteral("review-palpation"));
+
+    auto* raw = window->findChild<QAction*>(QStringLiteral("rawChannelsAction"));
+    ASSERT_NE(raw, nullptr);
+    raw->trigger();
+    EXPECT_EQ(window->plot()->laneNames(), (std::vector<std::string>{"high", "low", "displacement"}));
+    EXPECT_NEAR(window->plot()->from_s(), readings[0].start_s, 1e-6);  // the view stays where it was
+    raw->trigger();
+    EXPECT_EQ(window->plot()->laneNames().front(), "force_high");
+    delete window;
+}
