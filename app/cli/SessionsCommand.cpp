@@ -3,7 +3,7 @@
 
 #include "CliSupport.h"
 #include "SessionArgument.h"
-#include "core/derived/PalpationChannels.h"
+#include "core/derived/SessionLanes.h"
 #include "core/report/VerdictTrail.h"
 #include "core/storage/SessionExport.h"
 #include "core/storage/SessionStore.h"
@@ -145,16 +145,8 @@ int exportSession(SessionStore& store, std::int64_t id, const QString& format, c
 {
     std::unique_ptr<core::storage::ComputedColumns> computed;
     if (derived) {
-        const auto mode = store.session(id)->metadata.mode;
-        if (mode != core::Mode::Palpation) {
-            printError(QStringLiteral("--derived: session %1 is a %2 session; only palpation sessions have derived "
-                                      "channels so far")
-                           .arg(id)
-                           .arg(toQString(core::toString(mode))));
-            return kExitUsage;
-        }
         try {
-            computed = std::make_unique<core::derived::PalpationChannels>(store, id);
+            computed = core::derived::computedColumns(store, *store.session(id));
         } catch (const std::invalid_argument& e) {
             printError(QStringLiteral("--derived: %1").arg(toQString(e.what())));
             return kExitUsage;
@@ -186,7 +178,8 @@ int runSessions(const QStringList& arguments)
         "  export ID|last --format csv|json --output PATH [--derived]\n"
         "                           CSV: t then the channels (metadata in PATH's .meta.json); JSON: all;\n"
         "                           --derived (CSV): the mode's physical quantities too (palpation:\n"
-        "                           force_high [N], force_low [N], Q, stiffness [N/m])\n"
+        "                           force_high [N], force_low [N], Q, stiffness [N/m]; capacitive:\n"
+        "                           delta_c [F], relative_change, force [N], deflection [m])\n"
         "  verdict ID|last pass|defects-found --by NAME [--note TEXT]\n"
         "                           a reviewer's verdict, added to the session's verdict trail\n"
         "  delete ID                remove a session and its samples"));

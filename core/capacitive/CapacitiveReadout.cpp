@@ -27,7 +27,8 @@ CapacitiveSensitivity CapacitiveSensitivity::fromCalibration(const calibration::
 CapacitiveReadout::CapacitiveReadout(const CapacitiveSensitivity& sensitivity, const DriftSettings& drift)
     : m_sensitivity(sensitivity),
       m_drift(drift),
-      m_c0_f(sensitivity.c0_f)
+      m_c0_f(sensitivity.c0_f),
+      m_tracked_f(sensitivity.c0_f)
 {
     if (!(sensitivity.c0_f > 0.0) || !(sensitivity.perNewton_f > 0.0) || !(sensitivity.perMetre_f > 0.0))
         throw std::invalid_argument("capacitive readout needs positive C0 and sensitivities");
@@ -36,7 +37,27 @@ CapacitiveReadout::CapacitiveReadout(const CapacitiveSensitivity& sensitivity, c
 
 void CapacitiveReadout::tare()
 {
-    if (m_last_s) m_c0_f = m_smoothed_f;
+    if (m_last_s) setBaseline(m_smoothed_f);
+}
+
+void CapacitiveReadout::setBaseline(double c0_f)
+{
+    m_c0_f = m_tracked_f = c0_f;
+    ++m_baselineChanges;
+}
+
+CapacitiveReading CapacitiveReadout::readingAt(double t_s, double c_f, double c0_f,
+                                               const CapacitiveSensitivity& sensitivity)
+{
+    CapacitiveReading r;
+    r.t_s = t_s;
+    r.capacitance_f = c_f;
+    r.c0_f = c0_f;
+    r.deltaC_f = c_f - c0_f;
+    r.relativeChange = r.deltaC_f / c0_f;
+    r.force_n = r.deltaC_f / sensitivity.perNewton_f;
+    r.displacement_m = r.deltaC_f / sensitivity.perMetre_f;
+    return r;
 }
 
 CapacitiveReading CapacitiveReadout::push(double t_s, double c_f)
@@ -51,17 +72,16 @@ CapacitiveReading CapacitiveReadout::push(double t_s, double c_f)
         if (quiet && !m_quiet) m_quietSince_s = t_s;
         m_quiet = quiet;
         unloaded = quiet && t_s - m_quietSince_s >= m_drift.quietFor_s;
-        if (unloaded) m_c0_f += (c_f - m_c0_f) * (1.0 - std::exp(-dt / m_drift.timeConstant_s));
+        if (unloaded) {
+            m_tracked_f += (c_f - m_tracked_f) * (1.0 - std::exp(-dt / m_drift.timeConstant_s));
+            if (std::abs(m_tracked_f - m_c0_f) > kStep_sigmas * m_drift.noiseSigma_f) {
+                m_c0_f = m_tracked_f;
+                ++m_baselineChanges;
+            }
+        }
     }
 
-    CapacitiveReading r;
-    r.t_s = t_s;
-    r.capacitance_f = c_f;
-    r.c0_f = m_c0_f;
-    r.deltaC_f = c_f - m_c0_f;
-    r.relativeChange = r.deltaC_f / m_c0_f;
-    r.force_n = r.deltaC_f / m_sensitivity.perNewton_f;
-    r.displacement_m = r.deltaC_f / m_sensitivity.perMetre_f;
+    CapacitiveReading r = readingAt(t_s, c_f, m_c0_f, m_sensitivity);
     r.unloaded = unloaded;
     return r;
 }

@@ -8,11 +8,18 @@
 // the signal with a 30 s time constant, slow enough not to follow a weight
 // that is being placed. While loaded C0 is frozen, and tare() re-baselines
 // at once (to a 0.5 s running mean of the signal).
+//
+// The C0 in use steps to the tracked one whenever they differ by more than
+// kStep_sigmas·σ, rather than moving every sample: the readings differ from
+// a continuous C0 by at most that, and a recording can store each step
+// (baselineChanges() counts every change of C0), so a review derives the
+// same ΔC, force and deflection from the stored samples (readingAt()).
 #pragma once
 
 #include "core/calibration/CapacitiveCalibration.h"
 #include "core/sensors/CapacitiveBeam.h"
 
+#include <cstdint>
 #include <optional>
 
 namespace tactiscope::core::capacitive {
@@ -49,18 +56,30 @@ struct CapacitiveReading {
 
 class CapacitiveReadout {
 public:
+    static constexpr double kStep_sigmas = 0.05;
+
+    // One sample read on a given C0: the per-sample formulas, shared with the
+    // stored session's derived channels (core/derived).
+    static CapacitiveReading readingAt(double t_s, double capacitance_f, double c0_f,
+                                       const CapacitiveSensitivity& sensitivity);
+
     // Throws std::invalid_argument for non-positive sensitivities or C0.
     CapacitiveReadout(const CapacitiveSensitivity& sensitivity, const DriftSettings& drift);
 
     CapacitiveReading push(double t_s, double capacitance_f);
     void tare();
-    void setBaseline(double c0_f) { m_c0_f = c0_f; }
+    void setBaseline(double c0_f);
     double c0_f() const { return m_c0_f; }
+    const CapacitiveSensitivity& sensitivity() const { return m_sensitivity; }
+    // How many times C0 changed (tare, setBaseline, a drift step) so far.
+    std::uint64_t baselineChanges() const { return m_baselineChanges; }
 
 private:
     CapacitiveSensitivity m_sensitivity;
     DriftSettings m_drift;
     double m_c0_f;
+    double m_tracked_f;  // the drift rule's C0, which m_c0_f steps to
+    std::uint64_t m_baselineChanges = 0;
     std::optional<double> m_last_s;
     double m_smoothed_f = 0.0;
     double m_quietSince_s = 0.0;

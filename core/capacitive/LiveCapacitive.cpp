@@ -3,6 +3,9 @@
 
 #include "core/ModeCapability.h"
 #include "core/SampleBlock.h"
+#include "core/text/JsonWriter.h"
+
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -19,6 +22,47 @@ std::size_t capacitanceChannel(const std::vector<ChannelDescriptor>& channels)
 }
 
 }  // namespace
+
+std::string baselineJson(double c0_f)
+{
+    text::JsonWriter json;
+    json.beginObject().key("c0_f").value(c0_f).endObject();
+    return json.str();
+}
+
+std::optional<double> baselineFromJson(const std::string& text)
+{
+    const auto json = nlohmann::json::parse(text, nullptr, false);
+    if (!json.is_object() || !json.contains("c0_f") || !json["c0_f"].is_number()) return std::nullopt;
+    const double c0_f = json["c0_f"].get<double>();
+    return std::isfinite(c0_f) && c0_f > 0.0 ? std::optional(c0_f) : std::nullopt;
+}
+
+ReadoutSettings readoutSettings(const sensors::CapacitiveBeamProfile& probe,
+                                std::span<const calibration::CalibrationRecord> calibrations,
+                                std::optional<std::size_t>* used, std::string* problem)
+{
+    const sensors::CapacitiveBeam beam(probe.geometry);
+    ReadoutSettings settings{CapacitiveSensitivity::fromModel(beam), {}};
+    std::optional<std::size_t> newest;
+    for (std::size_t i = 0; i < calibrations.size(); ++i) {
+        const auto& record = calibrations[i];
+        if (record.kind != calibration::kCapacitiveKind || record.sensorName != probe.name) continue;
+        if (!newest || record.timestampUtc >= calibrations[*newest].timestampUtc) newest = i;
+    }
+    if (!newest) return settings;
+    try {
+        const auto stored = capacitiveCalibrationOf(calibrations[*newest], beam);
+        settings.sensitivity = stored.sensitivity;
+        settings.drift.noiseSigma_f = stored.noiseSigma_f;
+        if (used) *used = newest;
+    } catch (const std::invalid_argument& e) {
+        if (problem)
+            *problem = "the newest capacitive calibration of '" + probe.name +
+                       "' cannot be used (the beam model is used instead): " + e.what();
+    }
+    return settings;
+}
 
 StoredCapacitiveCalibration capacitiveCalibrationOf(const calibration::CalibrationRecord& record,
                                                     const sensors::CapacitiveBeam& beam)
@@ -44,6 +88,7 @@ LiveCapacitive::LiveCapacitive(const std::vector<ChannelDescriptor>& channels, d
                                             static_cast<std::size_t>(std::ceil(displaySeconds * sampleRate_hz)) + 1)),
       m_noiseSigma_f(drift.noiseSigma_f),
       m_window(std::max<std::size_t>(4, static_cast<std::size_t>(std::lround(kTare_s * sampleRate_hz)))),
+      m_baseline{0, sensitivity.c0_f},
       m_readout(sensitivity, drift)
 {
 }
@@ -71,6 +116,7 @@ std::vector<ChannelDescriptor> LiveCapacitive::outputChannels()
 void LiveCapacitive::consume(const SampleBlock& block)
 {
     if (block.empty()) return;
+    std::vector<BaselineChange> changes;
     {
         const std::lock_guard lock(m_mutex);
         if (const auto c0 = std::exchange(m_pendingC0_f, std::nullopt)) m_readout.setBaseline(*c0);
@@ -85,13 +131,32 @@ void LiveCapacitive::consume(const SampleBlock& block)
             m_startTared = true;
         }
         reading = m_readout.push(t_s, block.value(m_channel, s));
+        // A new C0 (a tare before this sample, a drift step at it) reads this sample on.
+        if (m_readout.baselineChanges() != m_changesSeen) {
+            m_changesSeen = m_readout.baselineChanges();
+            changes.push_back({block.firstSampleIndex() + s, m_readout.c0_f()});
+        }
         display.channel(0)[s] = reading.force_n;
         display.channel(1)[s] = reading.displacement_m;
     }
     m_output->consume(display);
     const std::lock_guard lock(m_mutex);
+    if (!changes.empty()) m_baseline = changes.back();
+    m_baselineChanges.insert(m_baselineChanges.end(), changes.begin(), changes.end());
     m_latest = reading;
     for (std::size_t s = 0; s < block.sampleCount(); ++s) m_window.push(block.value(m_channel, s));
+}
+
+BaselineChange LiveCapacitive::currentBaseline() const
+{
+    const std::lock_guard lock(m_mutex);
+    return m_baseline;
+}
+
+std::vector<BaselineChange> LiveCapacitive::takeBaselineChanges()
+{
+    const std::lock_guard lock(m_mutex);
+    return std::exchange(m_baselineChanges, {});
 }
 
 std::optional<CapacitiveReading> LiveCapacitive::latest() const

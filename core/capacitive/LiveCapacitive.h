@@ -17,11 +17,13 @@
 #include "core/LiveBuffer.h"
 #include "core/calibration/CalibrationRecord.h"
 #include "core/capacitive/CapacitiveReadout.h"
+#include "core/sensors/SensorProfile.h"
 #include "core/signal/SteadyWindow.h"
 
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -39,6 +41,31 @@ struct StoredCapacitiveCalibration {
 // Throws std::invalid_argument when the record lacks them.
 StoredCapacitiveCalibration capacitiveCalibrationOf(const calibration::CalibrationRecord& record,
                                                     const sensors::CapacitiveBeam& beam);
+
+// The readout's C0 as it changed (start tare, tare, a drift step) and the
+// first stream sample read on it.
+struct BaselineChange {
+    std::uint64_t firstIndex = 0;
+    double c0_f = 0.0;
+};
+
+// A baseline as a session stores it (storage::SessionZero): {"c0_f": …};
+// and back (none when unreadable).
+std::string baselineJson(double c0_f);
+std::optional<double> baselineFromJson(const std::string& json);
+
+// The readout of a capacitive beam: its calibration's sensitivity and
+// baseline noise from the newest usable "capacitive" record for the beam
+// among `calibrations` (its index in `used`, if given), else the beam model
+// without drift tracking. Throws std::invalid_argument for a beam the model
+// rejects; `problem` says why a record could not be used.
+struct ReadoutSettings {
+    CapacitiveSensitivity sensitivity;
+    DriftSettings drift;
+};
+ReadoutSettings readoutSettings(const sensors::CapacitiveBeamProfile& probe,
+                                std::span<const calibration::CalibrationRecord> calibrations,
+                                std::optional<std::size_t>* used = nullptr, std::string* problem = nullptr);
 
 class LiveCapacitive final : public BlockSink {
 public:
@@ -66,6 +93,10 @@ public:
     std::shared_ptr<const LiveBuffer> output() const { return m_output; }
     // The newest reading; none before the first sample.
     std::optional<CapacitiveReading> latest() const;
+    // Any thread: the C0 in use and the first stream sample read on it, and
+    // the changes since the last call, for a recording to store.
+    BaselineChange currentBaseline() const;
+    std::vector<BaselineChange> takeBaselineChanges();
 
 private:
     std::size_t m_channel = 0;
@@ -76,11 +107,14 @@ private:
     std::optional<CapacitiveReading> m_latest;
     signal::SteadyWindow m_window;  // the last kTare_s of capacitance
     std::optional<double> m_pendingC0_f;
+    BaselineChange m_baseline;
+    std::vector<BaselineChange> m_baselineChanges;
 
     // Acquisition thread only.
     CapacitiveReadout m_readout;
     std::optional<double> m_firstTime_s;
     bool m_startTared = false;
+    std::uint64_t m_changesSeen = 0;  // the readout's baselineChanges() already recorded
 };
 
 }  // namespace tactiscope::core::capacitive

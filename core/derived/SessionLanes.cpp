@@ -1,6 +1,7 @@
 // SessionLanes: derived lanes where the mode has them, stored ones after.
 #include "core/derived/SessionLanes.h"
 
+#include "core/derived/CapacitiveChannels.h"
 #include "core/derived/PalpationChannels.h"
 
 #include <algorithm>
@@ -9,10 +10,11 @@
 namespace tactiscope::core::derived {
 namespace {
 
-// One derived channel of a palpation session; the lanes share the computation.
-class PalpationLane final : public storage::LaneSource {
+// One derived channel of a session; the lanes share the computation.
+template <typename Channels>
+class DerivedLane final : public storage::LaneSource {
 public:
-    PalpationLane(std::shared_ptr<PalpationChannels> channels, std::size_t index)
+    DerivedLane(std::shared_ptr<Channels> channels, std::size_t index)
         : m_channels(std::move(channels)),
           m_index(index)
     {
@@ -28,7 +30,7 @@ public:
     }
 
 private:
-    std::shared_ptr<PalpationChannels> m_channels;
+    std::shared_ptr<Channels> m_channels;
     std::size_t m_index;
 };
 
@@ -44,7 +46,7 @@ SessionLanes sessionLanes(storage::SessionStore& store, const storage::SessionSu
         try {
             auto palpation = std::make_shared<PalpationChannels>(store, session.id);
             for (std::size_t d = 0; d < palpation->channels().size(); ++d)
-                result.lanes.push_back(std::make_unique<PalpationLane>(palpation, d));
+                result.lanes.push_back(std::make_unique<DerivedLane<PalpationChannels>>(palpation, d));
             std::erase_if(stored,
                           [&](std::size_t c) { return c == palpation->highChannel() || c == palpation->lowChannel(); });
             result.basis = palpation->basis();
@@ -53,9 +55,40 @@ SessionLanes sessionLanes(storage::SessionStore& store, const storage::SessionSu
             result.problem = e.what();
         }
     }
+    if (!raw && session.metadata.mode == Mode::Capacitive) {
+        try {
+            auto capacitive = std::make_shared<CapacitiveChannels>(store, session.id);
+            // The capacitance as stored, then ΔC, the force and the deflection.
+            const std::size_t c = capacitive->capacitanceChannel();
+            result.lanes.push_back(std::make_unique<storage::StoredLane>(store, session.id, c, channels[c].descriptor));
+            for (const std::size_t d : {std::size_t{0}, std::size_t{2}, std::size_t{3}})
+                result.lanes.push_back(std::make_unique<DerivedLane<CapacitiveChannels>>(capacitive, d));
+            std::erase(stored, c);
+            result.basis = capacitive->basis();
+            result.derived = true;
+        } catch (const std::invalid_argument& e) {
+            result.problem = e.what();
+        }
+    }
     for (const std::size_t c : stored)
         result.lanes.push_back(std::make_unique<storage::StoredLane>(store, session.id, c, channels[c].descriptor));
     return result;
+}
+
+std::unique_ptr<storage::ComputedColumns> computedColumns(storage::SessionStore& store,
+                                                          const storage::SessionSummary& session)
+{
+    switch (session.metadata.mode) {
+    case Mode::Palpation:
+        return std::make_unique<PalpationChannels>(store, session.id);
+    case Mode::Capacitive:
+        return std::make_unique<CapacitiveChannels>(store, session.id);
+    case Mode::PanelScan:
+        break;
+    }
+    throw std::invalid_argument("session " + std::to_string(session.id) +
+                                " is a panel-scan session; only palpation and capacitive sessions have derived "
+                                "channels so far");
 }
 
 }  // namespace tactiscope::core::derived

@@ -1,11 +1,13 @@
 // Which lanes a session is plotted in, for the review window and the
 // report alike: a mode's physical quantities by default (palpation: F_H,
 // F_L, Q and k_o from core/derived/PalpationChannels, then the stored
-// channels the forces did not come from), or every stored channel as it is
-// (`raw`). Other modes are plotted as stored until they have derived
-// channels.
+// channels the forces did not come from; capacitive: the capacitance, then
+// ΔC, the force and the deflection from core/derived/CapacitiveChannels),
+// or every stored channel as it is (`raw`). Panel scans are plotted as
+// stored until they have derived channels.
 #pragma once
 
+#include "core/storage/SessionExport.h"
 #include "core/storage/SessionStore.h"
 #include "core/storage/TraceWindow.h"
 
@@ -24,5 +26,11 @@ struct SessionLanes {
 
 // Throws storage::StorageError when the store cannot be read.
 SessionLanes sessionLanes(storage::SessionStore& store, const storage::SessionSummary& session, bool raw = false);
+
+// The mode's physical quantities as export columns. Throws
+// std::invalid_argument saying why a session has none (a panel scan, so
+// far; a session without a profile).
+std::unique_ptr<storage::ComputedColumns> computedColumns(storage::SessionStore& store,
+                                                          const storage::SessionSummary& session);
 
 }  // namespace tactiscope::core::derived

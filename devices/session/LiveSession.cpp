@@ -134,6 +134,7 @@ std::optional<std::string> LiveSession::startRecording(const core::storage::Sess
     // now, while no recorder would store them.
     takeDefects();
     takePresses();
+    takeZeros();
     try {
         const auto directory = std::filesystem::path(m_options.storePath).parent_path();
         if (!directory.empty()) std::filesystem::create_directories(directory);
@@ -146,12 +147,15 @@ std::optional<std::string> LiveSession::startRecording(const core::storage::Sess
     m_metadata = std::move(metadata);
     m_defects.clear();
     m_presses.clear();
+    // The zero in use reads the session's first samples (it applies from
+    // index 0); those taken before were dropped above.
     if (m_palpation && m_metadata.mode == core::Mode::Palpation) {
-        // The zero in use reads the session's first samples; those taken
-        // before were not.
-        m_palpation->takeZeroChanges();
         if (const auto zero = m_palpation->currentZero())
             m_recorder->addZero(zero->firstIndex, core::compliance::zeroJson(zero->rawHigh, zero->rawLow));
+    }
+    if (m_capacitive && m_metadata.mode == core::Mode::Capacitive) {
+        const auto baseline = m_capacitive->currentBaseline();
+        m_recorder->addZero(baseline.firstIndex, core::capacitive::baselineJson(baseline.c0_f));
     }
     m_recordingStartHost_s = steadySeconds();
     recordStandingFaults();
@@ -219,6 +223,7 @@ RecordingSummary LiveSession::finishRecording()
     m_tap->detach();
     takeDefects();  // what completed up to the last recorded block
     takePresses();
+    takeZeros();
     takeNotices();
     RecordingSummary summary;
     recordUnstoppedEnd(summary);
@@ -281,6 +286,7 @@ std::optional<RecordingSummary> LiveSession::poll()
 {
     takeDefects();
     takePresses();
+    takeZeros();
     takeNotices();
     if (m_recorder && !m_recorder->stats().error.empty()) return finishRecording();
     return std::nullopt;
@@ -356,8 +362,23 @@ void LiveSession::takePresses()
         m_presses.push_back(std::move(record));
     }
     if (!stored.empty()) m_recorder->addReadings(std::move(stored));
-    for (const auto& zero : m_palpation->takeZeroChanges())
-        if (storing) m_recorder->addZero(zero.firstIndex, core::compliance::zeroJson(zero.rawHigh, zero.rawLow));
+}
+
+// The zeros the mode's processor reads the samples on, into the recording
+// (those before it are dropped): the review derives the same quantities.
+void LiveSession::takeZeros()
+{
+    const auto recording = [this](core::Mode mode) { return m_recorder && m_metadata.mode == mode; };
+    if (m_palpation) {
+        for (const auto& zero : m_palpation->takeZeroChanges())
+            if (recording(core::Mode::Palpation))
+                m_recorder->addZero(zero.firstIndex, core::compliance::zeroJson(zero.rawHigh, zero.rawLow));
+    }
+    if (m_capacitive) {
+        for (const auto& baseline : m_capacitive->takeBaselineChanges())
+            if (recording(core::Mode::Capacitive))
+                m_recorder->addZero(baseline.firstIndex, core::capacitive::baselineJson(baseline.c0_f));
+    }
 }
 
 }  // namespace tactiscope::devices::session

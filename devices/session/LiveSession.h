@@ -188,6 +188,7 @@ private:
     void buildDetection();
     void takeDefects();
     void takePresses();
+    void takeZeros();
     void takeNotices();
     void recordStandingFaults();
     void recordUnstoppedEnd(RecordingSummary& summary);

@@ -139,20 +139,16 @@ std::optional<std::string> LiveSession::buildCapacitive()
     auto& used = m_calibrations[core::Mode::Capacitive];
     used.clear();
     try {
-        const core::sensors::CapacitiveBeam beam(probe.geometry);
-        auto sensitivity = core::capacitive::CapacitiveSensitivity::fromModel(beam);
-        core::capacitive::DriftSettings drift;
-        if (auto newest = newestCalibration(core::calibration::kCapacitiveKind, probe.name)) {
-            try {
-                const auto stored = core::capacitive::capacitiveCalibrationOf(newest->record, beam);
-                sensitivity = stored.sensitivity;
-                drift.noiseSigma_f = stored.noiseSigma_f;
-                used.push_back(std::move(*newest));
-            } catch (const std::invalid_argument& e) {
-                problem = "the newest capacitive calibration of '" + probe.name +
-                          "' cannot be used (the beam model is used instead): " + e.what();
-            }
-        }
+        std::vector<core::storage::StoredCalibration> newest;
+        if (auto record = newestCalibration(core::calibration::kCapacitiveKind, probe.name))
+            newest.push_back(std::move(*record));
+        std::vector<core::calibration::CalibrationRecord> records;
+        for (const auto& stored : newest) records.push_back(stored.record);
+        std::optional<std::size_t> usable;
+        std::string refused;
+        const auto [sensitivity, drift] = core::capacitive::readoutSettings(probe, records, &usable, &refused);
+        if (usable) used.push_back(newest[*usable]);
+        if (!refused.empty()) problem = refused;
         m_capacitive = std::make_shared<core::capacitive::LiveCapacitive>(
             source().channels(), source().nominalSampleRate_hz(), sensitivity, drift, m_options.displaySeconds);
     } catch (const std::invalid_argument& e) {

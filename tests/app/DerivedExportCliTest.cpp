@@ -110,3 +110,29 @@ TEST(DerivedExportCli, APalpationExportsItsForcesQAndStiffnessWithUnits)
     EXPECT_EQ(json.exitCode, 2);
     EXPECT_TRUE(json.err.contains("--derived goes with --format csv")) << json.err.toStdString();
 }
+
+TEST(DerivedExportCli, ACapacitiveSessionExportsItsChangeForceAndDeflection)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("probe"), db = dir.filePath("lab.tactiscope");
+    QProcess emulator;
+    ASSERT_TRUE(startEmulator(emulator, link, {"--scenario", "capacitive-weights"}));
+    const auto recorded = runCli({"record", "--port", link, "--seconds", "3", "--db", db});
+    stopEmulator(emulator);
+    ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
+    const QString csv = dir.filePath("beam.csv");
+    const auto exported =
+        runCli({"sessions", "--db", db, "export", "last", "--format", "csv", "--derived", "--output", csv});
+    ASSERT_EQ(exported.exitCode, 0) << exported.err.toStdString();
+    const QStringList lines = QString::fromUtf8(readBytes(csv)).split('\n', Qt::SkipEmptyParts);
+    ASSERT_GT(lines.size(), 20);
+    EXPECT_EQ(lines[0], "t [s],capacitance [F],delta_c [F],relative_change,force [N],deflection [m]");
+    // ΔC/C0 is ΔC over the baseline: C − ΔC, as the readout had it.
+    for (int row = 1; row < lines.size(); ++row) {
+        const QStringList f = lines[row].split(',');
+        ASSERT_EQ(f.size(), 6) << row;
+        // The stored capacitance is binary32: its shortest text read as a float is exact.
+        const double c = static_cast<double>(f[1].toFloat()), delta = f[2].toDouble(), relative = f[3].toDouble();
+        EXPECT_NEAR(relative, delta / (c - delta), 1e-9 * std::abs(relative) + 1e-15) << row;
+    }
+}
