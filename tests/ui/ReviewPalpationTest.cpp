@@ -1,7 +1,8 @@
-// The review window of a palpation recorded from the emulator: it opens on
+// The review window of a palpation recorded from the emulator opens on
 // the physical quantities (F_H, F_L, Q, k_o, then the displacement), the
 // beams' counts are one click away and back, and zoomed on a press the
-// forces are what the derived channels give for those samples.
+// forces are what the derived channels give for those samples. A capacitive
+// session opens on its capacitance, ΔC, force and deflection.
 #include "ui/review/ReviewWindow.h"
 
 #include "core/derived/PalpationChannels.h"
@@ -68,5 +69,33 @@ TEST(ReviewPalpation, OpensOnTheForcesAndTheCountsAreOneClickAway)
     EXPECT_NEAR(window->plot()->from_s(), readings[0].start_s, 1e-6);  // the view stays where it was
     raw->trigger();
     EXPECT_EQ(window->plot()->laneNames().front(), "force_high");
+    delete window;
+}
+
+TEST(ReviewCapacitive, OpensOnTheCapacitanceChangeForceAndDeflection)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("probe"), db = dir.filePath("lab.tactiscope");
+    QProcess emulator;
+    ASSERT_TRUE(tactiscope::testing::startEmulator(emulator, link, {"--scenario", "capacitive-weights"}));
+    const auto recorded =
+        tactiscope::testing::runCli({"record", "--port", link, "--seconds", "4", "--db", db, "--subject", "beam-1"});
+    tactiscope::testing::stopEmulator(emulator);
+    ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
+
+    QString error;
+    auto* window = ui::ReviewWindow::open(db, 1, nullptr, error);
+    ASSERT_NE(window, nullptr) << error.toStdString();
+    window->setAttribute(Qt::WA_DeleteOnClose, false);
+    window->show();
+    window->plot()->reload();
+    EXPECT_EQ(window->plot()->laneNames(), (std::vector<std::string>{"capacitance", "delta_c", "force", "deflection"}));
+    EXPECT_NE(window->plot()->derivedBasis().find("the beam model"), std::string::npos)
+        << window->plot()->derivedBasis();  // no calibration in this store
+    tactiscope::testing::saveScreenshot(*window, QStringLiteral("review-capacitive"));
+    auto* raw = window->findChild<QAction*>(QStringLiteral("rawChannelsAction"));
+    ASSERT_NE(raw, nullptr);
+    raw->trigger();
+    EXPECT_EQ(window->plot()->laneNames(), (std::vector<std::string>{"capacitance"}));
     delete window;
 }
