@@ -24,8 +24,6 @@
 using namespace tactiscope;
 using tactiscope::testing::readBytes;
 using tactiscope::testing::runCli;
-using tactiscope::testing::startEmulator;
-using tactiscope::testing::stopEmulator;
 
 namespace {
 
@@ -41,11 +39,8 @@ double beamStiffness(const QJsonObject& beam)
 TEST(DerivedExportCli, APalpationExportsItsForcesQAndStiffnessWithUnits)
 {
     QTemporaryDir dir;
-    const QString link = dir.filePath("probe"), db = dir.filePath("clinic.tactiscope");
-    QProcess emulator;
-    ASSERT_TRUE(startEmulator(emulator, link, {"--scenario", "palpation", "--seed", "3"}));
-    const auto recorded = runCli({"record", "--port", link, "--seconds", "8", "--db", db});
-    stopEmulator(emulator);
+    const QString db = dir.filePath("clinic.tactiscope");
+    const auto recorded = tactiscope::testing::recordEmulated(dir.path(), db, "palpation", 8);
     ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
 
     const QString csv = dir.filePath("derived.csv");
@@ -114,11 +109,8 @@ TEST(DerivedExportCli, APalpationExportsItsForcesQAndStiffnessWithUnits)
 TEST(DerivedExportCli, ACapacitiveSessionExportsItsChangeForceAndDeflection)
 {
     QTemporaryDir dir;
-    const QString link = dir.filePath("probe"), db = dir.filePath("lab.tactiscope");
-    QProcess emulator;
-    ASSERT_TRUE(startEmulator(emulator, link, {"--scenario", "capacitive-weights"}));
-    const auto recorded = runCli({"record", "--port", link, "--seconds", "3", "--db", db});
-    stopEmulator(emulator);
+    const QString db = dir.filePath("lab.tactiscope");
+    const auto recorded = tactiscope::testing::recordEmulated(dir.path(), db, "capacitive-weights", 3);
     ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
     const QString csv = dir.filePath("beam.csv");
     const auto exported =

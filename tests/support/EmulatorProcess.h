@@ -3,6 +3,8 @@
 // the session id a `record` summary line names.
 #pragma once
 
+#include "support/CliRunner.h"
+
 #include <QProcess>
 #include <QRegularExpression>
 #include <QString>
@@ -30,6 +32,21 @@ inline void stopEmulator(QProcess& emulator)
 {
     emulator.terminate();  // SIGTERM: the emulator's clean stop
     emulator.waitForFinished(5000);
+}
+
+// `record` from an emulated probe of `scenario` into `db` for `seconds`,
+// with extra record arguments; the emulator's link goes in `folder`.
+inline CliResult recordEmulated(const QString& folder, const QString& db, const QString& scenario, int seconds,
+                                const QStringList& extra = {})
+{
+    const QString link = folder + QStringLiteral("/probe");
+    QProcess emulator;
+    if (!startEmulator(emulator, link, {"--scenario", scenario, "--seed", "3"}))
+        return {-1, {}, QStringLiteral("the emulator did not start")};
+    auto result =
+        runCli(QStringList{"record", "--port", link, "--seconds", QString::number(seconds), "--db", db} + extra);
+    stopEmulator(emulator);
+    return result;
 }
 
 inline std::int64_t sessionIdIn(const QString& summary)

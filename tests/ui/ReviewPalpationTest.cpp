@@ -26,12 +26,9 @@ using namespace tactiscope;
 TEST(ReviewPalpation, OpensOnTheForcesAndTheCountsAreOneClickAway)
 {
     QTemporaryDir dir;
-    const QString link = dir.filePath("probe"), db = dir.filePath("clinic.tactiscope");
-    QProcess emulator;
-    ASSERT_TRUE(tactiscope::testing::startEmulator(emulator, link, {"--scenario", "palpation", "--seed", "3"}));
-    const auto recorded = tactiscope::testing::runCli(
-        {"record", "--port", link, "--seconds", "7", "--db", db, "--site", "B2", "--subject", "phantom-1"});
-    tactiscope::testing::stopEmulator(emulator);
+    const QString db = dir.filePath("clinic.tactiscope");
+    const auto recorded =
+        tactiscope::testing::recordEmulated(dir.path(), db, "palpation", 7, {"--site", "B2", "--subject", "phantom-1"});
     ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
 
     QString error;
@@ -75,12 +72,9 @@ TEST(ReviewPalpation, OpensOnTheForcesAndTheCountsAreOneClickAway)
 TEST(ReviewCapacitive, OpensOnTheCapacitanceChangeForceAndDeflection)
 {
     QTemporaryDir dir;
-    const QString link = dir.filePath("probe"), db = dir.filePath("lab.tactiscope");
-    QProcess emulator;
-    ASSERT_TRUE(tactiscope::testing::startEmulator(emulator, link, {"--scenario", "capacitive-weights"}));
+    const QString db = dir.filePath("lab.tactiscope");
     const auto recorded =
-        tactiscope::testing::runCli({"record", "--port", link, "--seconds", "4", "--db", db, "--subject", "beam-1"});
-    tactiscope::testing::stopEmulator(emulator);
+        tactiscope::testing::recordEmulated(dir.path(), db, "capacitive-weights", 4, {"--subject", "beam-1"});
     ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
 
     QString error;
