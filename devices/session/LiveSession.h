@@ -167,7 +167,6 @@ public:
     // The panel's defects grouped into sites (core/detector/DefectSites.h),
     // which the automatic verdict counts.
     core::detector::SiteGrouping panelSites() const;
-    core::Verdict automaticVerdict() const { return core::automaticVerdict(panelSites().sites.size()); }
     // The site the next presses are taken at (a phantom's grid cell).
     void setSite(std::string site) { m_site = std::move(site); }
 

@@ -202,7 +202,7 @@ void ReviewWindow::setRawChannels(bool raw)
         showProblem(tr("The samples cannot be read: %1").arg(text(e.what())));
         return;
     }
-    m_plot->parentWidget()->layout()->replaceWidget(m_plot, plot);
+    delete m_plot->parentWidget()->layout()->replaceWidget(m_plot, plot);  // the old item is ours to delete
     delete m_plot;
     m_plot = plot;
     connect(m_plot, &ReviewPlot::readFailed, this, &ReviewWindow::showProblem);
