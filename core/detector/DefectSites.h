@@ -19,8 +19,8 @@
 // What is placed: the probe's centre at the event's middle. An event lasts
 // from about when the leading cantilever's signal is matched to when the
 // trailing one's fades, so its middle finds the defect between the two
-// (measured on the simulator: within 0.3 mm either way; placing it under
-// the trailing cantilever instead puts the two directions a spacing apart).
+// (measured on the simulator at +30 mm: the two directions agree within
+// 0.3 mm; placing it under the trailing cantilever puts them a spacing apart).
 //
 // Limits: events without a speed (no spacing known) or in a scan with no
 // reversal cannot be placed and are sites of their own; a stroke that turns
