@@ -11,6 +11,6 @@ TACTISCOPE_SCREENSHOT_DIR="$PWD/docs/screenshots" QT_QPA_PLATFORM=offscreen \
   --gtest_filter='PanelScanView.Defects*:PalpationView.Presses*:CapacitiveView.Readouts*:DevicePanel.TheEmulator*:Recording.Sessions*:SensorProfileDialogTest.Lists*:DesignTool.Curves*:GaugeFactorWizardTest.Completed*:GaugeFactorWizardTest.AMislabelled*:CapacitiveWizardTest.LoadAndUnload*:CalibrationHistoryTest.Shows*:SessionBrowserTest.ListsEvery*:SessionBrowserTest.DeleteAsks*:ReviewWindowTest.Reanalysis*:ReviewWindowTest.AReviewersVerdict*:ReviewPalpation.*:ReviewCapacitive.*:ModeAndSource.AMode*'
 # The first page of an inspection report (tactiscope-cli report → pdftoppm).
 TACTISCOPE_SCREENSHOT_DIR="$PWD/docs/screenshots" \
-  build/dev/tests/tactiscope_cli_tests --gtest_filter='ReportCli.ThePdf*'
+  build/dev/tests/tactiscope_cli_tests --gtest_filter='ReportCli.ThePdf*:ModeReportsCli.*'
 echo "update-screenshots: docs/screenshots/ regenerated"
 ls docs/screenshots

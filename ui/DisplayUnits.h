@@ -4,15 +4,31 @@
 #pragma once
 
 #include "core/ChannelDescriptor.h"
+#include "core/Vocabulary.h"
 
 #include <QString>
+
+#include <utility>
+#include <vector>
 
 namespace tactiscope::ui {
 
 struct DisplayUnit {
+    DisplayUnit() = default;
+    DisplayUnit(double scale_, QString symbol_, QString quantity_, std::vector<std::pair<double, QString>> levels_ = {})
+        : scale(scale_),
+          symbol(std::move(symbol_)),
+          quantity(std::move(quantity_)),
+          levels(std::move(levels_))
+    {
+    }
+
     double scale = 1.0;  // displayed value = SI value × scale
     QString symbol;      // unit symbol shown on axes and readouts
     QString quantity;    // "Strain", "Capacitance", ...
+    // A quantity that takes a few values only (the detector's decision):
+    // each value's name, shown on its axis in place of numbers.
+    std::vector<std::pair<double, QString>> levels;
 
     // Axis title such as "Strain (µε)".
     QString axisTitle() const;
@@ -20,5 +36,21 @@ struct DisplayUnit {
 };
 
 DisplayUnit displayUnitFor(const core::ChannelDescriptor& channel);
+
+// How a lane of a session's review or report plot is titled and scaled:
+// the mode's derived quantities (core/derived) by their names, in the
+// units of their users — a palpation force in mN, a capacitive beam's in
+// µN (its scale, seed 002), ΔC/C₀ in % — and a stored channel by its name,
+// in its kind's unit. `quantity` is the lane's title: short, as a lane is
+// low; the readout and the report name the quantity in full.
+DisplayUnit laneUnit(const core::ChannelDescriptor& lane, core::Mode mode);
+// A value and its standard error as a reader takes them: the error to two
+// significant digits (at most two decimals), the value to the same decimal
+// place; no error, no decimals.
+std::pair<QString, QString> valueAndErrorTexts(double value, double standardError);
+int decimalsFor(double standardError);  // the decimals of both
+
+// The lane's axis label: the title over the unit, two short lines.
+QString laneLabel(const DisplayUnit& unit);
 
 }  // namespace tactiscope::ui

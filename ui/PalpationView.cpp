@@ -7,7 +7,6 @@
 #include "ui/SiteGridMap.h"
 #include "ui/StiffnessScale.h"
 
-#include <QFile>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -23,28 +22,9 @@
 namespace tactiscope::ui {
 namespace {
 
-// The reference table ships inside the program (resources/reference-tissues.json).
-std::vector<core::compliance::ReferenceTissue> builtInTissues()
-{
-    QFile file(QStringLiteral(":/tactiscope/reference-tissues.json"));
-    if (!file.open(QIODevice::ReadOnly)) return {};
-    return core::compliance::parseReferenceTissues(file.readAll().toStdString(), "reference-tissues.json");
-}
-
-// A reading as the clinician reads it: the standard error to two
-// significant digits and the value to the same decimal place.
-std::pair<QString, QString> readingTexts(double k_n_per_m, double standardError_n_per_m)
-{
-    const int decimals = standardError_n_per_m > 0.0
-                             ? std::clamp(1 - static_cast<int>(std::floor(std::log10(standardError_n_per_m))), 0, 2)
-                             : 0;
-    const QLocale locale;
-    return {locale.toString(k_n_per_m, 'f', decimals), locale.toString(standardError_n_per_m, 'f', decimals)};
-}
-
 QString stiffnessText(double k_n_per_m, double standardError_n_per_m)
 {
-    const auto [k, se] = readingTexts(k_n_per_m, standardError_n_per_m);
+    const auto [k, se] = valueAndErrorTexts(k_n_per_m, standardError_n_per_m);
     return PalpationView::tr("%1 ± %2 N/m").arg(k, se);
 }
 
@@ -197,7 +177,7 @@ void PalpationView::showPresses(const std::vector<devices::session::PressRecord>
         m_presses->insertRow(row);
         const QString outOfRange =
             press.stiffness.range == core::sensors::ComplianceRange::Below ? tr("below range") : tr("above range");
-        const auto [kText, seText] = readingTexts(k, press.standardError_n_per_m);
+        const auto [kText, seText] = valueAndErrorTexts(k, press.standardError_n_per_m);
         const QStringList cells{locale.toString(press.start_s, 'f', 1),
                                 inRange ? kText : outOfRange,
                                 inRange ? seText : tr("—"),

@@ -1,6 +1,7 @@
 // StiffnessScale: log axis, tissue marks with spread labels, reading arrow.
 #include "ui/StiffnessScale.h"
 
+#include <QFile>
 #include <QLocale>
 #include <QPainter>
 #include <QPainterPath>
@@ -18,6 +19,7 @@ constexpr int kMargin = 12;
 constexpr int kAxisX = 70;
 constexpr int kMarkX = kAxisX + 26;
 constexpr int kLabelX = kMarkX + 22;
+constexpr int kMarkLabelWidth = 60;  // a site's name, at the right edge
 
 // Viridis at five stops: even in lightness, readable by the colour-blind.
 constexpr std::array<QRgb, 5> kStops{0x440154, 0x3b528b, 0x21918c, 0x5ec962, 0xfde725};
@@ -30,6 +32,13 @@ double logPosition(double stiffness_n_per_m)
 }
 
 }  // namespace
+
+std::vector<core::compliance::ReferenceTissue> builtInTissues()
+{
+    QFile file(QStringLiteral(":/tactiscope/reference-tissues.json"));
+    if (!file.open(QIODevice::ReadOnly)) return {};
+    return core::compliance::parseReferenceTissues(file.readAll().toStdString(), "reference-tissues.json");
+}
 
 QColor stiffnessColour(double stiffness_n_per_m)
 {
@@ -68,6 +77,12 @@ void StiffnessScale::setTissues(std::vector<core::compliance::ReferenceTissue> t
 void StiffnessScale::setReading(std::optional<double> stiffness_n_per_m)
 {
     m_reading = stiffness_n_per_m;
+    update();
+}
+
+void StiffnessScale::setMarks(std::vector<Mark> marks)
+{
+    m_marks = std::move(marks);
     update();
 }
 
@@ -137,13 +152,14 @@ void StiffnessScale::paintEvent(QPaintEvent*)
         p.setPen(QPen(mid, 1));
         p.drawLine(QPointF(kMarkX + 3, (top + bottom) / 2), QPointF(labelX - 3, labelY[i]));
         p.setPen(text);
-        const QString name = metrics.elidedText(QString::fromStdString(t->name), Qt::ElideRight, width() - labelX - 4);
+        const int room = width() - labelX - 4 - (m_marks.empty() ? 0 : kMarkLabelWidth + 4);
+        const QString name = metrics.elidedText(QString::fromStdString(t->name), Qt::ElideRight, room);
         p.drawText(QPointF(labelX, labelY[i] + metrics.ascent() / 2.0 - 1), name);
     }
 
     // The reading: a red arrow at the bar, its line reaching the tissues' marks.
-    if (m_reading) {
-        const double y = yOf(*m_reading);
+    const auto drawArrow = [&](double stiffness_n_per_m) {
+        const double y = yOf(stiffness_n_per_m);
         QPainterPath arrow;
         arrow.moveTo(kAxisX + 5, y);
         arrow.lineTo(kAxisX + 19, y - 7);
@@ -152,6 +168,21 @@ void StiffnessScale::paintEvent(QPaintEvent*)
         p.fillPath(arrow, QColor(0xc62828));
         p.setPen(QPen(QColor(0xc62828), 2));
         p.drawLine(QPointF(kAxisX - 4, y), QPointF(kMarkX + 6, y));
+        return y;
+    };
+    if (m_reading) drawArrow(*m_reading);
+    // Sites' means: each arrow with its site's name in red at the far right,
+    // clear of the tissues' names.
+    double lastLabelY = -line;
+    std::vector<const Mark*> marks;
+    for (const auto& mark : m_marks) marks.push_back(&mark);
+    std::ranges::sort(marks, [](const Mark* a, const Mark* b) { return a->stiffness_n_per_m > b->stiffness_n_per_m; });
+    for (const Mark* mark : marks) {
+        const double y = drawArrow(mark->stiffness_n_per_m);
+        const double markY = std::max(y, lastLabelY + line);
+        lastLabelY = markY;
+        const QString label = metrics.elidedText(mark->label, Qt::ElideRight, kMarkLabelWidth);
+        p.drawText(QPointF(width() - 4 - metrics.horizontalAdvance(label), markY + metrics.ascent() / 2.0 - 1), label);
     }
 }
 

@@ -1,7 +1,8 @@
 // The reference scale of the palpation mode: a vertical logarithmic axis of
 // stiffness in N/m with the reference tissues (seed 001, §2.1) marked and
 // named along it, and the current reading as an arrow, so a clinician sees
-// at a glance what the phantom feels like. Labels that would overlap are
+// at a glance what the phantom feels like (a review or report marks each
+// site's mean instead, with the site's name beside the arrow). Labels that would overlap are
 // pushed apart and tied to their mark by a leader line.
 #pragma once
 
@@ -26,6 +27,11 @@ public:
     void setTissues(std::vector<core::compliance::ReferenceTissue> tissues);
     void setReading(std::optional<double> stiffness_n_per_m);
     std::optional<double> reading() const { return m_reading; }
+    struct Mark {
+        QString label;
+        double stiffness_n_per_m = 0.0;
+    };
+    void setMarks(std::vector<Mark> marks);
 
     QSize minimumSizeHint() const override;
 
@@ -37,7 +43,12 @@ private:
 
     std::vector<core::compliance::ReferenceTissue> m_tissues;
     std::optional<double> m_reading;
+    std::vector<Mark> m_marks;
 };
+
+// The reference tissues shipped inside the program
+// (resources/reference-tissues.json).
+std::vector<core::compliance::ReferenceTissue> builtInTissues();
 
 // The colour of a stiffness on the same logarithmic range (a perceptually
 // even blue → green → yellow map), for the site grid and its legend.

@@ -5,6 +5,7 @@
 #include "core/ModeCapability.h"
 #include "core/calibration/CalibrationRecord.h"
 #include "core/capacitive/LiveCapacitive.h"
+#include "core/derived/ExactOverview.h"
 
 #include <algorithm>
 #include <cmath>
@@ -49,6 +50,7 @@ CapacitiveChannels::CapacitiveChannels(storage::SessionStore& store, std::int64_
     m_sampleCount = summary->sampleCount;
     std::ostringstream basis;
     basis << "profile " << beam->name << "; ";
+    if (used) m_calibration = records[*used];
     if (used)
         basis << "calibration of " << records[*used].timestampUtc;
     else
@@ -75,6 +77,13 @@ std::vector<ChannelDescriptor> CapacitiveChannels::channels() const
             {"relative_change", "", ChannelKind::Other},
             {"force", "N", ChannelKind::Force},
             {"deflection", "m", ChannelKind::Position}};
+}
+
+std::vector<std::pair<std::uint64_t, double>> CapacitiveChannels::baselines() const
+{
+    std::vector<std::pair<std::uint64_t, double>> baselines;
+    for (const Span& span : m_spans) baselines.emplace_back(span.first, span.c0_f);
+    return baselines;
 }
 
 const CapacitiveChannels::Span* CapacitiveChannels::spanAt(std::uint64_t index) const
@@ -125,13 +134,7 @@ std::vector<storage::OverviewPoint> CapacitiveChannels::overview(std::size_t cha
                               value(channel, stretch.max, span->c0_f)});
             continue;
         }
-        storage::OverviewPoint point{stretch.firstIndex, stretch.count, kNaN, kNaN};
-        for (const double v : read(stretch.firstIndex, stretch.count)[channel]) {
-            if (std::isnan(v)) continue;
-            point.min = std::isnan(point.min) ? v : std::min(point.min, v);
-            point.max = std::isnan(point.max) ? v : std::max(point.max, v);
-        }
-        result.push_back(point);
+        appendExactOverview(read(stretch.firstIndex, stretch.count)[channel], stretch.firstIndex, 1, result);
     }
     return result;
 }

@@ -9,12 +9,15 @@
 #pragma once
 
 #include "core/ChannelDescriptor.h"
+#include "core/calibration/CalibrationRecord.h"
 #include "core/capacitive/CapacitiveReadout.h"
 #include "core/storage/SessionExport.h"
 #include "core/storage/SessionStore.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tactiscope::core::derived {
@@ -30,6 +33,11 @@ public:
     std::vector<ChannelDescriptor> channels() const override;
     std::string basis() const override { return m_basis; }
     std::size_t capacitanceChannel() const { return m_channel; }
+    // The calibration record the readings went through; none: the beam model.
+    const std::optional<calibration::CalibrationRecord>& calibration() const { return m_calibration; }
+    const capacitive::CapacitiveSensitivity& sensitivity() const { return m_sensitivity; }
+    // Each baseline C0 (F) and the first sample read on it, in order.
+    std::vector<std::pair<std::uint64_t, double>> baselines() const;
 
     std::vector<std::vector<double>> read(std::uint64_t first, std::uint64_t count) override;
     std::vector<storage::OverviewPoint> overview(std::size_t channel, std::uint64_t first, std::uint64_t count,
@@ -49,6 +57,7 @@ private:
     std::uint64_t m_sampleCount = 0;
     std::size_t m_channel = 0;
     capacitive::CapacitiveSensitivity m_sensitivity;
+    std::optional<calibration::CalibrationRecord> m_calibration;
     std::vector<Span> m_spans;
     std::string m_basis;
 };

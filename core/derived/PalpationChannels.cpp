@@ -3,6 +3,7 @@
 #include "core/derived/PalpationChannels.h"
 
 #include "core/calibration/CalibrationRecord.h"
+#include "core/derived/ExactOverview.h"
 
 #include <algorithm>
 #include <cmath>
@@ -113,17 +114,7 @@ std::vector<storage::OverviewPoint> PalpationChannels::overview(std::size_t chan
     std::vector<storage::OverviewPoint> result;
     // Exact samples: Q and k_o always (within the limit), forces when zoomed in.
     const auto fromExact = [&](std::uint64_t from, std::uint64_t to, std::size_t stretches) {
-        const auto values = read(from, to - from)[channel];
-        const std::uint64_t size = std::max<std::uint64_t>(1, (to - from + stretches - 1) / stretches);
-        for (std::uint64_t at = 0; at < values.size(); at += size) {
-            storage::OverviewPoint point{from + at, std::min<std::uint64_t>(size, values.size() - at), kNaN, kNaN};
-            for (std::uint64_t s = at; s < at + point.count; ++s) {
-                if (std::isnan(values[s])) continue;
-                point.min = std::isnan(point.min) ? values[s] : std::min(point.min, values[s]);
-                point.max = std::isnan(point.max) ? values[s] : std::max(point.max, values[s]);
-            }
-            result.push_back(point);
-        }
+        appendExactOverview(read(from, to - from)[channel], from, stretches, result);
     };
     if (channel >= 2) {
         if (end - first <= kExactLimit) fromExact(first, end, points);

@@ -3,6 +3,7 @@
 
 #include "core/derived/CapacitiveChannels.h"
 #include "core/derived/PalpationChannels.h"
+#include "core/derived/PanelScanChannels.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -14,9 +15,10 @@ namespace {
 template <typename Channels>
 class DerivedLane final : public storage::LaneSource {
 public:
-    DerivedLane(std::shared_ptr<Channels> channels, std::size_t index)
+    DerivedLane(std::shared_ptr<Channels> channels, std::size_t index, std::optional<double> threshold = {})
         : m_channels(std::move(channels)),
-          m_index(index)
+          m_index(index),
+          m_threshold(threshold)
     {
     }
     ChannelDescriptor descriptor() const override { return m_channels->channels()[m_index]; }
@@ -28,10 +30,12 @@ public:
     {
         return m_channels->overview(m_index, first, count, points);
     }
+    std::optional<double> threshold() const override { return m_threshold; }
 
 private:
     std::shared_ptr<Channels> m_channels;
     std::size_t m_index;
+    std::optional<double> m_threshold;
 };
 
 }  // namespace
@@ -72,6 +76,19 @@ SessionLanes sessionLanes(storage::SessionStore& store, const storage::SessionSu
     }
     for (const std::size_t c : stored)
         result.lanes.push_back(std::make_unique<storage::StoredLane>(store, session.id, c, channels[c].descriptor));
+    if (!raw && session.metadata.mode == Mode::PanelScan) {
+        // The strains as stored (shown in µε), then what the detector made of them.
+        try {
+            auto detector = std::make_shared<PanelScanChannels>(store, session.id);
+            result.lanes.push_back(
+                std::make_unique<DerivedLane<PanelScanChannels>>(detector, 0, detector->parameters().threshold));
+            result.lanes.push_back(std::make_unique<DerivedLane<PanelScanChannels>>(detector, 1));
+            result.basis = detector->basis();
+            result.derived = true;
+        } catch (const std::invalid_argument& e) {
+            result.problem = e.what();
+        }
+    }
     return result;
 }
 
@@ -84,11 +101,9 @@ std::unique_ptr<storage::ComputedColumns> computedColumns(storage::SessionStore&
     case Mode::Capacitive:
         return std::make_unique<CapacitiveChannels>(store, session.id);
     case Mode::PanelScan:
-        break;
+        return std::make_unique<PanelScanChannels>(store, session.id);
     }
-    throw std::invalid_argument("session " + std::to_string(session.id) +
-                                " is a panel-scan session; only palpation and capacitive sessions have derived "
-                                "channels so far");
+    throw std::invalid_argument("session " + std::to_string(session.id) + " has no mode with derived channels");
 }
 
 }  // namespace tactiscope::core::derived

@@ -2,9 +2,10 @@
 // report alike: a mode's physical quantities by default (palpation: F_H,
 // F_L, Q and k_o from core/derived/PalpationChannels, then the stored
 // channels the forces did not come from; capacitive: the capacitance, then
-// ΔC, the force and the deflection from core/derived/CapacitiveChannels),
-// or every stored channel as it is (`raw`). Panel scans are plotted as
-// stored until they have derived channels.
+// ΔC, the force and the deflection from core/derived/CapacitiveChannels;
+// panel scan: the strains, then the best R against the threshold and the
+// decision from core/derived/PanelScanChannels), or every stored channel
+// as it is (`raw`).
 #pragma once
 
 #include "core/storage/SessionExport.h"
@@ -28,8 +29,8 @@ struct SessionLanes {
 SessionLanes sessionLanes(storage::SessionStore& store, const storage::SessionSummary& session, bool raw = false);
 
 // The mode's physical quantities as export columns. Throws
-// std::invalid_argument saying why a session has none (a panel scan, so
-// far; a session without a profile).
+// std::invalid_argument saying why a session has none (e.g. a palpation
+// session without a profile).
 std::unique_ptr<storage::ComputedColumns> computedColumns(storage::SessionStore& store,
                                                           const storage::SessionSummary& session);
 

@@ -2,6 +2,7 @@
 // copies of profile and calibrations the session carries.
 #include "core/report/ReportData.h"
 
+#include "core/derived/CapacitiveChannels.h"
 #include "core/derived/SessionLanes.h"
 #include "core/storage/DefectRecords.h"
 
@@ -41,6 +42,24 @@ bool overlaps(double start_s, double end_s, double from_s, double to_s)
 bool ReportData::wholeSession() const
 {
     return from_s <= 0.0 && to_s >= session.duration_s();
+}
+
+std::optional<CapacitiveBasis> capacitiveBasis(storage::SessionStore& store, const storage::SessionSummary& session,
+                                               std::uint64_t first, std::uint64_t end)
+{
+    try {
+        const derived::CapacitiveChannels channels(store, session.id);
+        CapacitiveBasis basis{
+            {}, channels.calibration(), channels.sensitivity().perNewton_f, channels.sensitivity().perMetre_f};
+        const auto baselines = channels.baselines();
+        for (std::size_t b = 0; b < baselines.size(); ++b) {
+            const std::uint64_t next = b + 1 < baselines.size() ? baselines[b + 1].first : session.sampleCount;
+            if (next > first && baselines[b].first < end) basis.baselines_f.push_back(baselines[b].second);
+        }
+        return basis;
+    } catch (const std::invalid_argument&) {
+        return std::nullopt;  // no usable profile: the lanes' problem says so
+    }
 }
 
 ReportData gatherReport(storage::SessionStore& store, std::int64_t session, const ReportRequest& request,
@@ -88,6 +107,7 @@ ReportData gatherReport(storage::SessionStore& store, std::int64_t session, cons
     const auto end = std::min(summary->sampleCount, static_cast<std::uint64_t>(std::ceil(data.to_s * rate_hz)));
     for (const auto& gap : store.gaps(session))
         if (gap.firstIndex < end && gap.firstIndex + gap.count > first) data.gaps.push_back(gap);
+    if (summary->metadata.mode == Mode::Capacitive) data.capacitive = capacitiveBasis(store, *summary, first, end);
     auto lanes = derived::sessionLanes(store, *summary);
     data.derivedBasis = lanes.basis;
     data.derivedProblem = lanes.problem;
@@ -96,7 +116,7 @@ ReportData gatherReport(storage::SessionStore& store, std::int64_t session, cons
         // k_o is in the readings table, per press; a lane with nothing to
         // draw (Q over a range too long to read exactly) is left out.
         if (points.empty() || lane->descriptor().name == "stiffness") continue;
-        data.traces.push_back({{lane->descriptor(), rate_hz}, std::move(points)});
+        data.traces.push_back({{lane->descriptor(), rate_hz}, std::move(points), lane->threshold()});
     }
     return data;
 }

@@ -20,6 +20,7 @@ namespace tactiscope::core::report {
 struct ReportTrace {
     storage::StoredChannel channel;
     std::vector<storage::OverviewPoint> points;  // min/max per stretch, across the range
+    std::optional<double> threshold;             // the level the lane is read against, if any
 };
 
 struct ReportRange {
@@ -31,6 +32,14 @@ struct ReportRange {
 struct ReportRequest {
     ReportRange range;
     std::string analysis = storage::kLiveAnalysis;  // the recorded events, or a saved re-analysis
+};
+
+// What a capacitive session's readings went through.
+struct CapacitiveBasis {
+    std::vector<double> baselines_f;  // C0 in use over the range: at its start, then each tare or drift step
+    std::optional<calibration::CalibrationRecord> calibration;  // none: the beam model
+    double perNewton_f = 0.0;                                   // the sensitivity used, F/N and F/m
+    double perMetre_f = 0.0;
 };
 
 struct ReportData {
@@ -46,15 +55,19 @@ struct ReportData {
     std::vector<storage::SessionReading> readings;
     std::vector<storage::Annotation> annotations;
     std::vector<storage::SampleGap> gaps;
-    // The key plot's lanes: a palpation's forces (derived, in N) and Q in
-    // place of its beams' raw values, then the stored channels that are
-    // already physical; every stored channel otherwise.
+    // The key plot's lanes, as the review shows them (core/derived/SessionLanes.h).
     std::vector<ReportTrace> traces;
     std::string derivedBasis;    // what the derived lanes were computed with; empty without them
-    std::string derivedProblem;  // why a palpation's forces could not be computed, if so
+    std::string derivedProblem;  // why the mode's quantities could not be computed, if so
+    std::optional<CapacitiveBasis> capacitive;
 
     bool wholeSession() const;
 };
+
+// The basis of a capacitive session's samples [first, end); none when the
+// session has no usable profile. Throws storage::StorageError.
+std::optional<CapacitiveBasis> capacitiveBasis(storage::SessionStore& store, const storage::SessionSummary& session,
+                                               std::uint64_t first, std::uint64_t end);
 
 // Throws storage::StorageError for an unknown session and
 // std::invalid_argument for a range outside the session or backwards, or an

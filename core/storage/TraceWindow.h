@@ -8,6 +8,7 @@
 #include "core/storage/SessionStore.h"
 
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -39,6 +40,8 @@ public:
     virtual std::vector<double> exact(std::uint64_t first, std::uint64_t count) = 0;
     // About `points` min/max stretches of [first, first + count).
     virtual std::vector<OverviewPoint> overview(std::uint64_t first, std::uint64_t count, std::size_t points) = 0;
+    // The level the lane is read against (the detector's threshold on R), if any.
+    virtual std::optional<double> threshold() const { return std::nullopt; }
 };
 
 // A stored channel as a lane.

@@ -13,7 +13,6 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QLocale>
-#include <QProcess>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -113,16 +112,7 @@ TEST_F(ReportCli, ThePdfHoldsTheSubjectTheVerdictAndTheEventTable)
         EXPECT_TRUE(text.contains(expected)) << expected.toStdString() << "\n" << text.toStdString();
 
     // The first page as a picture, for a person to look at.
-    const QString override = qEnvironmentVariable("TACTISCOPE_SCREENSHOT_DIR");
-    const QDir shots(override.isEmpty() ? QStringLiteral(TACTISCOPE_SCREENSHOT_DIR) : override);
-    ASSERT_TRUE(shots.mkpath(QStringLiteral(".")));
-    const QString png = shots.filePath(QStringLiteral("report-page1"));
-    EXPECT_EQ(QProcess::execute(QStringLiteral("pdftoppm"),
-                                {QStringLiteral("-png"), QStringLiteral("-r"), QStringLiteral("80"),
-                                 QStringLiteral("-f"), QStringLiteral("1"), QStringLiteral("-l"), QStringLiteral("1"),
-                                 QStringLiteral("-singlefile"), pdf, png}),
-              0);
-    EXPECT_TRUE(QFileInfo::exists(png + QStringLiteral(".png")));
+    EXPECT_TRUE(tactiscope::testing::savePdfFirstPage(pdf, QStringLiteral("report-page1")));
 }
 
 TEST_F(ReportCli, ARangeReportsOnlyWhatLiesInIt)

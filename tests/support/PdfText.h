@@ -1,7 +1,10 @@
 // A PDF's text as laid out on the page (poppler's pdftotext), so tests read
-// what a person reading the report would read.
+// what a person reading the report would read, and its first page as a
+// picture (pdftoppm).
 #pragma once
 
+#include <QDir>
+#include <QFileInfo>
 #include <QProcess>
 #include <QStandardPaths>
 #include <QString>
@@ -24,5 +27,23 @@ inline QString pdfText(const QString& pdf)
     if (!process.waitForFinished(60000) || process.exitCode() != 0) return {};
     return QString::fromUtf8(process.readAllStandardOutput());
 }
+
+#ifdef TACTISCOPE_SCREENSHOT_DIR
+// Renders a PDF's first page to <screenshots>/<name>.png for a person to
+// look at (build/<preset>/screenshots, or TACTISCOPE_SCREENSHOT_DIR); true
+// when the picture was written.
+inline bool savePdfFirstPage(const QString& pdf, const QString& name)
+{
+    const QString override = qEnvironmentVariable("TACTISCOPE_SCREENSHOT_DIR");
+    const QDir shots(override.isEmpty() ? QStringLiteral(TACTISCOPE_SCREENSHOT_DIR) : override);
+    if (!shots.mkpath(QStringLiteral("."))) return false;
+    const QString png = shots.filePath(name);
+    return QProcess::execute(QStringLiteral("pdftoppm"),
+                             {QStringLiteral("-png"), QStringLiteral("-r"), QStringLiteral("80"), QStringLiteral("-f"),
+                              QStringLiteral("1"), QStringLiteral("-l"), QStringLiteral("1"),
+                              QStringLiteral("-singlefile"), pdf, png}) == 0 &&
+           QFileInfo::exists(png + QStringLiteral(".png"));
+}
+#endif
 
 }  // namespace tactiscope::testing

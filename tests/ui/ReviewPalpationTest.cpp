@@ -1,12 +1,15 @@
 // The review window of a palpation recorded from the emulator opens on
 // the physical quantities (F_H, F_L, Q, k_o, then the displacement), the
 // beams' counts are one click away and back, and zoomed on a press the
-// forces are what the derived channels give for those samples. A capacitive
-// session opens on its capacitance, ΔC, force and deflection.
+// forces are what the derived channels give for those samples; its presses
+// are listed with site, k_o ± SE and depth, and summed up per site. A
+// capacitive session opens on its capacitance, ΔC, force and deflection,
+// beside the calibration its readings went through.
 #include "ui/review/ReviewWindow.h"
 
 #include "core/derived/PalpationChannels.h"
 #include "core/storage/SessionStore.h"
+#include "ui/review/PressesPanel.h"
 #include "ui/review/ReviewPlot.h"
 
 #include "support/CliRunner.h"
@@ -15,10 +18,14 @@
 #include "support/WaitFor.h"
 
 #include <QAction>
+#include <QLabel>
+#include <QLocale>
 #include <QTemporaryDir>
+#include <QTreeWidget>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace tactiscope;
@@ -57,6 +64,34 @@ TEST(ReviewPalpation, OpensOnTheForcesAndTheCountsAreOneClickAway)
         pressing += want[i] > 0.05;  // newtons: the press is on screen
     }
     EXPECT_GT(pressing, 100);
+
+    // The presses in the clinician's terms: each stored reading, at its
+    // site, with its depth; the site summed up and on the grid map.
+    ASSERT_NE(window->presses(), nullptr);
+    QTreeWidget* presses = window->presses()->pressList();
+    ASSERT_EQ(presses->topLevelItemCount(), static_cast<int>(readings.size()));
+    double sum = 0.0;
+    for (int i = 0; i < presses->topLevelItemCount(); ++i) {
+        const auto* row = presses->topLevelItem(i);
+        const auto& r = readings[static_cast<std::size_t>(i)];
+        sum += r.value;
+        EXPECT_EQ(row->text(1), "B2");
+        // The SE to two significant digits (at most two decimals), the value to its decimal place.
+        ASSERT_TRUE(r.standardError);
+        const int decimals = std::clamp(1 - static_cast<int>(std::floor(std::log10(*r.standardError))), 0, 2);
+        EXPECT_EQ(row->text(2), QLocale().toString(r.value, 'f', decimals) + " ± " +
+                                    QLocale().toString(*r.standardError, 'f', decimals));
+        EXPECT_TRUE(row->text(3).contains(" – ")) << "a press has a depth range";
+    }
+    QTreeWidget* sites = window->presses()->siteList();
+    ASSERT_EQ(sites->topLevelItemCount(), 1);
+    EXPECT_EQ(sites->topLevelItem(0)->text(0), "B2");
+    EXPECT_EQ(sites->topLevelItem(0)->text(1), QString::number(readings.size()));
+    const double mean = sum / static_cast<double>(readings.size());
+    EXPECT_NEAR(QLocale().toDouble(sites->topLevelItem(0)->text(2)), mean, 0.05);
+    auto* grid = window->findChild<QLabel*>(QStringLiteral("siteGrid"));
+    ASSERT_NE(grid, nullptr);
+    EXPECT_TRUE(grid->text().contains(QStringLiteral("n = %1").arg(readings.size())));
     tactiscope::testing::saveScreenshot(*window, QStringLiteral("review-palpation"));
 
     auto* raw = window->findChild<QAction*>(QStringLiteral("rawChannelsAction"));
@@ -86,6 +121,12 @@ TEST(ReviewCapacitive, OpensOnTheCapacitanceChangeForceAndDeflection)
     EXPECT_EQ(window->plot()->laneNames(), (std::vector<std::string>{"capacitance", "delta_c", "force", "deflection"}));
     EXPECT_NE(window->plot()->derivedBasis().find("the beam model"), std::string::npos)
         << window->plot()->derivedBasis();  // no calibration in this store
+    // The calibration used, beside the records: here the beam model, with
+    // the baseline the session started on.
+    auto* basis = window->findChild<QLabel*>(QStringLiteral("capacitiveBasisText"));
+    ASSERT_NE(basis, nullptr);
+    EXPECT_TRUE(basis->text().contains("the beam model")) << basis->text().toStdString();
+    EXPECT_TRUE(basis->text().contains("pF at the start")) << basis->text().toStdString();
     tactiscope::testing::saveScreenshot(*window, QStringLiteral("review-capacitive"));
     auto* raw = window->findChild<QAction*>(QStringLiteral("rawChannelsAction"));
     ASSERT_NE(raw, nullptr);

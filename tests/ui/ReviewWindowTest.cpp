@@ -103,6 +103,7 @@ TEST_F(ReviewWindowTest, TheOverviewReadsAFewChunksAndAZoomShowsTheExactSamples)
 {
     const auto& overview = m_window->plot()->shown(0);
     EXPECT_FALSE(overview.exact);
+    EXPECT_TRUE(m_window->plot()->shown(2).t_s.empty()) << "600 s of R would be computed for the overview";
     ASSERT_FALSE(overview.t_s.empty());
     EXPECT_LT(overview.t_s.front(), 1.0);
     EXPECT_GT(overview.t_s.back(), kSeconds - 1.0);
@@ -125,6 +126,14 @@ TEST_F(ReviewWindowTest, TheOverviewReadsAFewChunksAndAZoomShowsTheExactSamples)
         EXPECT_EQ(static_cast<float>(zoomed.low[i]), row[2].toFloat()) << i;
     }
     EXPECT_TRUE(m_window->plot()->readoutAt(100.1).contains(QStringLiteral("b: "))) << "readout names the channel";
+    // The detector's lanes follow the strains: too long a span to compute
+    // over the whole session, exact when zoomed in (values in
+    // DerivedPanelScanTest).
+    EXPECT_EQ(m_window->plot()->laneNames(), (std::vector<std::string>{"a", "b", "best_r", "decision"}));
+    const auto& bestR = m_window->plot()->shown(2);
+    ASSERT_TRUE(bestR.exact);
+    ASSERT_EQ(bestR.t_s.size(), zoomed.t_s.size());
+    for (const double r : bestR.low) EXPECT_TRUE(r >= -1.0 && r <= 1.0) << r;
 
     // A still view reads nothing more (no reload on every repaint).
     const std::uint64_t settled = m_window->store().chunksRead();
@@ -234,6 +243,7 @@ TEST_F(ReviewWindowTest, ReanalysisFindsWhatTheCliFindsAndSavesBesideTheRecorded
     const auto recorded = list->findItems(QStringLiteral("recorded"), Qt::MatchExactly, 2);
     ASSERT_EQ(recorded.size(), 3);
     m_window->jumpTo(recorded.front());
+    m_window->plot()->reload();  // what the next event-loop turn reads
     tactiscope::testing::saveScreenshot(*m_window, QStringLiteral("review-window"));
 
     EXPECT_FALSE(panel->saveAs(QStringLiteral("live")).isEmpty());

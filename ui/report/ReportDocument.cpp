@@ -3,10 +3,14 @@
 #include "ui/VocabularyText.h"
 
 #include "core/Version.h"
+#include "core/report/PressTable.h"
 #include "core/report/VerdictTrail.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/SafeOutput.h"
 #include "core/text/UtcTime.h"
+#include "ui/report/CapacitiveSummary.h"
+#include "ui/report/PalpationFigures.h"
+#include "ui/report/ReportHtml.h"
 #include "ui/report/ReportPlot.h"
 
 #include <QBuffer>
@@ -19,20 +23,23 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <map>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
-#include <tuple>
 
 namespace tactiscope::ui {
 namespace {
+
+using namespace reporthtml;
 
 // QTextDocument::print() sets 2 cm margins of its own (and puts the page
 // number in the bottom one): an A4 page has 170 mm of text width, 642 px of
 // the document's 96 dpi.
 constexpr int kTextWidth_px = 640;
-constexpr int kLaneHeight_px = 150;
+constexpr int kLaneHeight_px = 130;  // four lanes and the header fit on the first page
 constexpr double kPlotScale = 3.0;  // ≈ 290 dpi on paper
+constexpr int kScaleWidth_px = 300;
+constexpr int kScaleHeight_px = 260;
 
 // The page count of a PDF as written: its page tree's root says
 // "/Count N" after "/Type /Pages" (Qt's writer makes one root, no subtrees).
@@ -46,40 +53,6 @@ int pageCountOf(const QByteArray& pdf)
         pages = pages * 10 + (pdf[at] - '0');
     if (pages < 1) throw std::runtime_error("the report was laid out without a page tree");
     return pages;
-}
-
-QString text(const std::string& value)
-{
-    return QString::fromStdString(value).toHtmlEscaped();
-}
-
-QString orDash(const std::string& value)
-{
-    return value.empty() ? QStringLiteral("—") : text(value);
-}
-
-QString number(double value, int decimals)
-{
-    return QLocale().toString(value, 'f', decimals);
-}
-
-QString row(const QString& name, const QString& value)
-{
-    return QStringLiteral("<tr><th align=left>%1</th><td>%2</td></tr>").arg(name, value);
-}
-
-QString table(const QStringList& headers, const std::vector<QStringList>& rows)
-{
-    // A header row (thead) is repeated on each page a long table runs onto.
-    QString html = QStringLiteral("<table class=list width=100% cellspacing=0 cellpadding=3><thead><tr>");
-    for (const QString& header : headers) html += QStringLiteral("<th align=left>%1</th>").arg(header);
-    html += QStringLiteral("</tr></thead>");
-    for (const QStringList& cells : rows) {
-        html += QStringLiteral("<tr>");
-        for (const QString& cell : cells) html += QStringLiteral("<td>%1</td>").arg(cell);
-        html += QStringLiteral("</tr>");
-    }
-    return html + QStringLiteral("</table>");
 }
 
 QString calibrationText(const core::calibration::CalibrationRecord& record)
@@ -120,9 +93,11 @@ QString header(const core::report::ReportData& data)
     html += row(QObject::tr("Device"), device);
     html += row(QObject::tr("Sensor"), orDash(data.sensorName));
     if (!data.derivedBasis.empty())
-        html += row(QObject::tr("Forces from"), text(data.derivedBasis) + QObject::tr(" and the zeros recorded"));
+        html += row(QObject::tr("Computed from"),
+                    text(data.derivedBasis) +
+                        (m.mode == core::Mode::PanelScan ? QString() : QObject::tr(" and the zeros recorded")));
     else if (!data.derivedProblem.empty())
-        html += row(QObject::tr("Forces"),
+        html += row(QObject::tr("Physical quantities"),
                     QObject::tr("not computed: %1; the plot shows the raw channels").arg(text(data.derivedProblem)));
     html += row(QObject::tr("Calibration"), calibrations.isEmpty() ? QObject::tr("none recorded with the session")
                                                                    : calibrations.join(QStringLiteral("<br>")));
@@ -138,6 +113,28 @@ QString header(const core::report::ReportData& data)
     html += row(QObject::tr("Session"), QObject::tr("%1 (%2), %3").arg(s.id).arg(text(s.uuid), wordText(s.status)));
     if (!m.notes.empty()) html += row(QObject::tr("Notes"), text(m.notes));
     return html + QStringLiteral("</table>");
+}
+
+// The largest of a plotted derived quantity over the range, in SI.
+std::optional<double> peakOf(const core::report::ReportData& data, const std::string& name)
+{
+    std::optional<double> peak;
+    for (const auto& trace : data.traces) {
+        if (trace.channel.descriptor.name != name) continue;
+        for (const auto& p : trace.points)
+            if (!std::isnan(p.max)) peak = std::max(peak.value_or(p.max), p.max);
+    }
+    return peak;
+}
+
+// A capacitive session's heading: the largest force and deflection read.
+QString capacitivePeaks(const core::report::ReportData& data)
+{
+    if (!data.capacitive) return {};
+    const auto force = peakOf(data, "force"), deflection = peakOf(data, "deflection");
+    if (!force || !deflection) return {};
+    return QObject::tr("Peak tip force %1 µN, deflection %2 mm")
+        .arg(number(*force * 1e6, 1), number(*deflection * 1e3, 3));
 }
 
 QString verdict(const core::report::ReportData& data)
@@ -162,6 +159,8 @@ QString verdict(const core::report::ReportData& data)
             .arg(QObject::tr("%1, mean %2 %3")
                      .arg(readings, number(sum / static_cast<double>(count), 1), text(data.readings[0].unit)));
     }
+    if (const QString peaks = capacitivePeaks(data); !peaks.isEmpty())
+        return QStringLiteral("<p class=verdict>%1</p>").arg(peaks);
     return QStringLiteral("<p class=verdict>%1</p>").arg(QObject::tr("No verdict recorded"));
 }
 
@@ -209,40 +208,60 @@ QString defectTables(const core::report::ReportData& data)
                         crossings);
 }
 
-// Repeated presses at one site, summed up: how many, their mean and spread
-// (sample standard deviation) and range, per quantity and unit.
-QString readingsBySite(const core::report::ReportData& data)
+// The presses (site, k_o ± SE, depth), each site's presses summed up
+// (n, mean, SD, range), the grid map and the tissue scale with the sites'
+// means; the scale image is added to the document.
+QString palpationSection(const core::report::ReportData& data, QTextDocument& document)
 {
-    struct Site {
-        std::vector<double> values;
-    };
-    std::map<std::tuple<std::string, std::string, std::string>, Site> sites;  // site, quantity, unit
-    for (const auto& r : data.readings)
-        if (!r.site.empty()) sites[{r.site, r.quantity, r.unit}].values.push_back(r.value);
-    if (sites.empty()) return {};
+    const auto presses = core::report::pressRows(data.readings);
+    if (presses.empty()) return {};
     std::vector<QStringList> rows;
-    for (const auto& [key, site] : sites) {
-        const auto& [name, quantity, unit] = key;
-        const auto n = static_cast<double>(site.values.size());
-        double sum = 0.0;
-        for (const double v : site.values) sum += v;
-        const double mean = sum / n;
-        double squares = 0.0;
-        for (const double v : site.values) squares += (v - mean) * (v - mean);
-        const auto [low, high] = std::ranges::minmax(site.values);
-        rows.push_back({text(name), text(quantity), QString::number(site.values.size()),
-                        number(mean, 2) + QStringLiteral(" ") + text(unit),
-                        site.values.size() > 1 ? number(std::sqrt(squares / (n - 1.0)), 2) : QStringLiteral("—"),
-                        QStringLiteral("%1 – %2").arg(number(low, 2), number(high, 2))});
+    const auto escaped = [](QStringList cells) {
+        for (QString& cell : cells) cell = cell.toHtmlEscaped();
+        return cells;
+    };
+    for (const auto& p : presses) rows.push_back(escaped(pressCells(p)));
+    QString html = QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Presses (%1)").arg(presses.size()));
+    html += table({QObject::tr("Time (s)"), QObject::tr("Site"), QObject::tr("k<sub>o</sub> ± SE (N/m)"),
+                   QObject::tr("Depth (mm)")},
+                  rows);
+    const auto sites = core::report::siteSummaries(presses);
+    if (!sites.empty()) {
+        std::vector<QStringList> siteRows;
+        for (const auto& site : sites) siteRows.push_back(escaped(siteCells(site)));
+        html += QStringLiteral("<h2>%1</h2>").arg(QObject::tr("By site"));
+        html += table({QObject::tr("Site"), QObject::tr("n"), QObject::tr("Mean (N/m)"), QObject::tr("SD (N/m)"),
+                       QObject::tr("Range (N/m)")},
+                      siteRows);
     }
-    return QStringLiteral("<h2>%1</h2>").arg(QObject::tr("By site")) +
-           table({QObject::tr("Site"), QObject::tr("Quantity"), QObject::tr("n"), QObject::tr("Mean"),
-                  QObject::tr("SD"), QObject::tr("Range")},
-                 rows);
+    const QUrl scaleUrl(QStringLiteral("tactiscope://tissue-scale.png"));
+    document.addResource(QTextDocument::ImageResource, scaleUrl,
+                         renderTissueScale(core::report::scaleMarks(presses, QObject::tr("all").toStdString()),
+                                           QSize(kScaleWidth_px, kScaleHeight_px), kPlotScale));
+    const QString grid = siteGridHtml(sites);
+    html += QStringLiteral("<h2>%1</h2>")
+                .arg(grid.isEmpty() ? QObject::tr("Tissue scale") : QObject::tr("Site map and tissue scale"));
+    html += QStringLiteral("<table cellspacing=0 cellpadding=6><tr><td valign=top>%1</td>"
+                           "<td valign=top><img src='%2' width=%3 height=%4></td></tr></table>")
+                .arg(grid)
+                .arg(scaleUrl.toString())
+                .arg(kScaleWidth_px)
+                .arg(kScaleHeight_px);
+    return html + QStringLiteral("<p><small>%1</small></p>")
+                      .arg(QObject::tr("Each cell and red arrow: the mean object stiffness of a site's presses, "
+                                       "against the reference tissues of seed 001."));
 }
 
-QString eventTables(const core::report::ReportData& data)
+// The baselines and the calibration a capacitive session's readings went through.
+QString capacitiveSection(const core::report::ReportData& data)
 {
+    if (!data.capacitive) return {};
+    return QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Capacitive beam")) + capacitiveBasisHtml(*data.capacitive);
+}
+
+QString eventTables(const core::report::ReportData& data, QTextDocument& document)
+{
+    QString html = capacitiveSection(data);
     std::vector<QStringList> others;
     bool anyDefect = false;
     for (const auto& e : data.events) {
@@ -250,9 +269,10 @@ QString eventTables(const core::report::ReportData& data)
         if (e.kind != core::EventKind::Defect)
             others.push_back({number(e.start_s, 3), wordText(e.kind), orDash(e.note)});
     }
-    QString html;
     if (data.session.metadata.mode == core::Mode::PanelScan || anyDefect) html += defectTables(data);
-    if (!data.readings.empty()) {
+    if (data.session.metadata.mode == core::Mode::Palpation) {
+        html += palpationSection(data, document);
+    } else if (!data.readings.empty()) {
         std::vector<QStringList> rows;
         for (const auto& r : data.readings) {
             QString value = number(r.value, 2);
@@ -263,7 +283,6 @@ QString eventTables(const core::report::ReportData& data)
         html += QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Readings (%1)").arg(data.readings.size()));
         html +=
             table({QObject::tr("Time (s)"), QObject::tr("Quantity"), QObject::tr("Value"), QObject::tr("Site")}, rows);
-        html += readingsBySite(data);
     }
     if (!others.empty()) {
         html += QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Markers and alarms"));
@@ -309,11 +328,11 @@ std::unique_ptr<QTextDocument> buildReportDocument(const core::report::ReportDat
                 .arg(plotHeight);
     const QString shaded = data.session.metadata.mode == core::Mode::PanelScan
                                ? QObject::tr("Shaded: defects (orange A then B, purple B then A), lost samples "
-                                             "(grey); dashed: markers.")
+                                             "(grey); dashed: markers; teal dashed: the detector's threshold.")
                                : QObject::tr("Shaded: readings (green), lost samples (grey); dashed: markers.");
     html += QStringLiteral("<p><small>%1 %2</small></p>")
                 .arg(shaded, QObject::tr("Bands show each stretch's minimum and maximum."));
-    html += eventTables(data);
+    html += eventTables(data, *document);
     html += QStringLiteral("<p class=footer>%1</p>")
                 .arg(QObject::tr("Tactiscope %1 (recorded with %2), %3 UTC")
                          .arg(QString::fromUtf8(core::versionString()), orDash(data.session.appVersion),

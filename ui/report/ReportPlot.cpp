@@ -2,6 +2,7 @@
 #include "ui/report/ReportPlot.h"
 
 #include "ui/DisplayUnits.h"
+#include "ui/report/LaneAxis.h"
 #include "ui/report/PlotImage.h"
 
 #include <qcustomplot.h>
@@ -71,12 +72,13 @@ void addBand(QCustomPlot& plot, QCPAxisRect* rect, const core::report::ReportTra
     high->setPen(QPen(kTrace, 1.0));
     high->setBrush(QColor(kTrace.red(), kTrace.green(), kTrace.blue(), 110));
     high->setChannelFillGraph(low);
-    low->rescaleValueAxis(false, true);
-    high->rescaleValueAxis(true, true);
-    QCPAxis* values = rect->axis(QCPAxis::atLeft);
-    const QCPRange range = values->range();
-    const double margin = range.size() > 0.0 ? 0.08 * range.size() : 1.0;
-    values->setRange(range.lower - margin, range.upper + margin);
+    bool found = false;
+    QCPRange shown = low->getValueRange(found);
+    if (found) {
+        bool foundHigh = false;
+        shown.expand(high->getValueRange(foundHigh));
+    }
+    fitLaneRange(*rect->axis(QCPAxis::atLeft), unit, found ? std::optional(shown) : std::nullopt, trace.threshold);
 }
 
 // Builds the plot `width` pixels wide; the caller renders it.
@@ -94,10 +96,8 @@ std::unique_ptr<QCustomPlot> buildPlot(const core::report::ReportData& data, int
         auto* rect = new QCPAxisRect(plot.get());
         plot->plotLayout()->addElement(static_cast<int>(lane), 0, rect);
         rect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
-        const DisplayUnit unit = displayUnitFor(trace.channel.descriptor);
-        rect->axis(QCPAxis::atLeft)
-            ->setLabel(
-                QStringLiteral("%1\n%2").arg(QString::fromStdString(trace.channel.descriptor.name), unit.axisTitle()));
+        const DisplayUnit unit = laneUnit(trace.channel.descriptor, data.session.metadata.mode);
+        setUpLaneAxis(*rect, unit, trace.threshold);
         QCPAxis* time = rect->axis(QCPAxis::atBottom);
         time->setRange(data.from_s, data.to_s);
         // Only the bottom lane names the shared time axis.

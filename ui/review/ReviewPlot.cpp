@@ -3,6 +3,7 @@
 #include "ui/review/ReviewPlot.h"
 
 #include "ui/DisplayUnits.h"
+#include "ui/report/LaneAxis.h"
 #include "ui/report/PlotImage.h"
 
 #include <QLabel>
@@ -75,13 +76,20 @@ ReviewPlot::ReviewPlot(core::storage::SessionStore& store, const core::storage::
             break;
         }
         time->setTickLabels(false);
-        const auto descriptor = m_lanes.lanes[c]->descriptor();
-        const DisplayUnit unit = displayUnitFor(descriptor);
-        rect->axis(QCPAxis::atLeft)
-            ->setLabel(QStringLiteral("%1\n%2").arg(QString::fromStdString(descriptor.name), unit.axisTitle()));
+        setUpLaneAxis(*rect, unitOf(c), m_lanes.lanes[c]->threshold());
         QCPGraph* graph = m_plot->addGraph(time, rect->axis(QCPAxis::atLeft));
         graph->setPen(QPen(kTrace, 1.0));
         m_graphs.push_back(graph);
+        // A quantity with no overview (computed from exact samples only) says how to see it.
+        auto* zoomIn = new QCPItemText(m_plot);
+        zoomIn->setClipAxisRect(rect);
+        zoomIn->position->setType(QCPItemPosition::ptAxisRectRatio);
+        zoomIn->position->setAxisRect(rect);
+        zoomIn->position->setCoords(0.5, 0.5);
+        zoomIn->setColor(QColor(90, 90, 90));
+        zoomIn->setText(tr("Computed from exact samples only: zoom in to see it"));
+        zoomIn->setVisible(false);
+        m_emptyTexts.push_back(zoomIn);
         for (const auto& gap : gaps) {
             auto* item = new QCPItemRect(m_plot);
             item->setClipAxisRect(rect);
@@ -113,6 +121,11 @@ ReviewPlot::ReviewPlot(core::storage::SessionStore& store, const core::storage::
         if (m_markerLane->width() != m_loadedWidth_px) m_reloadTimer.start();
     });
     showWholeSession();
+}
+
+DisplayUnit ReviewPlot::unitOf(std::size_t lane) const
+{
+    return laneUnit(m_lanes.lanes[lane]->descriptor(), m_session.metadata.mode);
 }
 
 std::vector<std::string> ReviewPlot::laneNames() const
@@ -245,7 +258,8 @@ void ReviewPlot::reload()
     m_windows = std::move(read);
     for (std::size_t c = 0; c < m_lanes.lanes.size(); ++c) {
         const auto& window = m_windows[c];
-        const DisplayUnit unit = displayUnitFor(m_lanes.lanes[c]->descriptor());
+        const DisplayUnit unit = unitOf(c);
+        m_emptyTexts[c]->setVisible(window.t_s.empty());
         QVector<double> keys, values;
         keys.reserve(static_cast<qsizetype>(2 * window.t_s.size()));
         values.reserve(keys.capacity());
@@ -263,10 +277,8 @@ void ReviewPlot::reload()
         graph->setScatterStyle(dots ? QCPScatterStyle(QCPScatterStyle::ssDisc, 4) : QCPScatterStyle());
         bool found = false;
         const QCPRange shown = graph->getValueRange(found, QCP::sdBoth, graph->keyAxis()->range());
-        if (found) {
-            const double margin = shown.size() > 0.0 ? 0.08 * shown.size() : std::max(1e-9, std::abs(shown.lower));
-            graph->valueAxis()->setRange(shown.lower - margin, shown.upper + margin);
-        }
+        fitLaneRange(*graph->valueAxis(), unit, found ? std::optional(shown) : std::nullopt,
+                     m_lanes.lanes[c]->threshold());
     }
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
@@ -277,9 +289,8 @@ QString ReviewPlot::readoutAt(double time_s) const
     for (std::size_t c = 0; c < m_lanes.lanes.size(); ++c) {
         const auto& window = m_windows[c];
         const auto i = window.nearest(time_s);
-        const auto descriptor = m_lanes.lanes[c]->descriptor();
-        const DisplayUnit unit = displayUnitFor(descriptor);
-        const QString name = QString::fromStdString(descriptor.name);
+        const DisplayUnit unit = unitOf(c);
+        const QString& name = unit.quantity;
         if (i < 0) continue;
         const auto k = static_cast<std::size_t>(i);
         if (std::isnan(window.low[k]))

@@ -16,6 +16,7 @@
 #include "core/derived/SessionLanes.h"
 #include "core/storage/SessionStore.h"
 #include "core/storage/TraceWindow.h"
+#include "ui/DisplayUnits.h"
 
 #include <QColor>
 #include <QPointF>
@@ -29,6 +30,7 @@
 class QCPAxisRect;
 class QCPGraph;
 class QCPItemStraightLine;
+class QCPItemText;
 class QCustomPlot;
 class QLabel;
 class QMouseEvent;
@@ -95,6 +97,7 @@ private:
     void pinCursor(QMouseEvent* event);
     void placeLines(std::vector<QCPItemStraightLine*>& lines, std::optional<double> time_s);
     std::vector<QCPItemStraightLine*> makeLines(const QPen& pen);
+    DisplayUnit unitOf(std::size_t lane) const;
 
     core::storage::SessionStore& m_store;
     core::storage::SessionSummary m_session;
@@ -103,6 +106,7 @@ private:
     QCustomPlot* m_plot;
     QLabel* m_readout;
     std::vector<QCPGraph*> m_graphs;
+    std::vector<QCPItemText*> m_emptyTexts;  // per lane, shown when it has nothing to draw
     QCPAxisRect* m_markerLane = nullptr;
     std::vector<core::storage::TraceWindow> m_windows;
     std::vector<QCPItemStraightLine*> m_hoverLines, m_cursorLines, m_playheadLines;

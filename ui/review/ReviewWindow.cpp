@@ -5,13 +5,16 @@
 #include "ui/VerdictDialog.h"
 #include "ui/VocabularyText.h"
 
+#include "core/report/PressTable.h"
 #include "core/report/ReportData.h"
 #include "core/report/VerdictTrail.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/SafeOutput.h"
 #include "core/storage/SessionExport.h"
 #include "ui/calibration/WizardText.h"
+#include "ui/report/CapacitiveSummary.h"
 #include "ui/report/ReportDocument.h"
+#include "ui/review/PressesPanel.h"
 #include "ui/review/ReanalysisPanel.h"
 #include "ui/review/ReviewPlot.h"
 #include "ui/review/SessionTableModel.h"
@@ -20,6 +23,7 @@
 #include <QDateTime>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGroupBox>
 #include <QHeaderView>
 #include <QInputDialog>
 #include <QLabel>
@@ -149,14 +153,32 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionStor
     m_list->setAlternatingRowColors(true);
     m_list->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_list->header()->setStretchLastSection(true);
-    if (meta.mode == core::Mode::PanelScan) m_reanalysis = new ReanalysisPanel(storePath, *m_store, m_session, this);
-
     auto* bottom = new QSplitter(Qt::Horizontal, this);
     bottom->addWidget(m_list);
-    if (m_reanalysis) bottom->addWidget(m_reanalysis);
-    bottom->setStretchFactor(0, 3);
-    bottom->setStretchFactor(1, 2);
-    bottom->setSizes({720, 480});
+    // The mode's own account beside the list: a panel's re-analysis, a
+    // palpation's presses and sites, a capacitive beam's calibration.
+    switch (meta.mode) {
+    case core::Mode::PanelScan:
+        m_reanalysis = new ReanalysisPanel(storePath, *m_store, m_session, this);
+        bottom->addWidget(m_reanalysis);
+        break;
+    case core::Mode::Palpation:
+        m_presses = new PressesPanel(this);
+        connect(m_presses, &PressesPanel::pressChosen, this, [this](double start_s, double end_s) {
+            m_plot->centreOn(0.5 * (start_s + end_s), std::max(2.0, 2.0 * (end_s - start_s)));
+            m_plot->setCursorTime(start_s);
+        });
+        bottom->addWidget(m_presses);
+        break;
+    case core::Mode::Capacitive:
+        bottom->addWidget(capacitiveBasisBox());
+        break;
+    }
+    // A palpation's presses, sites and scale need the room; a panel's list of crossings does.
+    const bool accountFirst = meta.mode == core::Mode::Palpation;
+    bottom->setStretchFactor(0, accountFirst ? 2 : 3);
+    bottom->setStretchFactor(1, accountFirst ? 3 : 2);
+    bottom->setSizes(accountFirst ? QList<int>{460, 740} : QList<int>{720, 480});
     auto* split = new QSplitter(Qt::Vertical, this);
     auto* top = new QWidget(this);
     auto* topLayout = new QVBoxLayout(top);
@@ -209,6 +231,26 @@ void ReviewWindow::setRawChannels(bool raw)
     refreshRecords();  // the markers
     m_plot->setRange(from_s, to_s);
     if (cursor) m_plot->setCursorTime(*cursor);
+}
+
+QWidget* ReviewWindow::capacitiveBasisBox()
+{
+    auto* box = new QGroupBox(tr("Calibration used"), this);
+    box->setObjectName(QStringLiteral("capacitiveBasis"));
+    auto* label = wrappedLabel({}, box);
+    label->setObjectName(QStringLiteral("capacitiveBasisText"));
+    label->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    try {
+        const auto basis = core::report::capacitiveBasis(*m_store, m_session, 0, m_session.sampleCount);
+        label->setText(basis ? capacitiveBasisHtml(*basis)
+                             : tr("Not known: %1").arg(text(m_plot->derivedProblem()).toHtmlEscaped()));
+    } catch (const core::storage::StorageError& e) {
+        label->setText(tr("The calibration cannot be read: %1").arg(text(e.what()).toHtmlEscaped()));
+    }
+    auto* layout = new QVBoxLayout(box);
+    layout->addWidget(label);
+    layout->addStretch(1);
+    return box;
 }
 
 void ReviewWindow::refreshHeader()
@@ -367,6 +409,7 @@ void ReviewWindow::refreshRecords()
             entries.push_back({a.time_s, a.time_s, tr("note"), text(a.author),
                                text(a.text) + (a.modifiedUtc != a.createdUtc ? tr(" (edited)") : QString()), a.id});
         }
+        if (m_presses) m_presses->setPresses(core::report::pressRows(m_store->readings(m_session.id)));
     } catch (const core::storage::StorageError& e) {
         showProblem(tr("The session's records cannot be read: %1").arg(text(e.what())));
     }

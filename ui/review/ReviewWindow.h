@@ -3,8 +3,9 @@
 // session's plot (ReviewPlot: the overview, zoom to single samples, cursor
 // readout, markers), the list of its events, readings and notes (a click
 // jumps there), the reviewer's notes (add, edit, delete with undo), replay
-// at 1–10× real time, re-analysis beside the recorded events
-// (ReanalysisPanel, panel-scan sessions), a reviewer's verdict (panel
+// at 1–10× real time, the mode's own account (a panel scan's re-analysis
+// beside the recorded events, ReanalysisPanel; a palpation's presses and
+// sites, PressesPanel; a capacitive beam's calibration), a reviewer's verdict (panel
 // scans) joining the verdict's trail, and the exports: the PDF report,
 // printing, the plot as PNG or SVG, CSV of the session or of the range shown.
 // Notes and verdicts carry the reviewer's name, typed once in the toolbar
@@ -30,6 +31,7 @@ class QTreeWidgetItem;
 
 namespace tactiscope::ui {
 
+class PressesPanel;
 class ReanalysisPanel;
 class ReviewPlot;
 
@@ -44,6 +46,7 @@ public:
     std::int64_t sessionId() const { return m_session.id; }
     ReviewPlot* plot() const { return m_plot; }
     ReanalysisPanel* reanalysis() const { return m_reanalysis; }  // null unless panel-scan
+    PressesPanel* presses() const { return m_presses; }           // null unless palpation
     QTreeWidget* recordList() const { return m_list; }
     core::storage::SessionStore& store() { return *m_store; }
 
@@ -89,6 +92,7 @@ private:
                           const std::function<QString(const QString&)>& write);
     void showProblem(const QString& text);
     void refreshHeader();
+    QWidget* capacitiveBasisBox();
     // The reviewer's name; empty (and the name box focused, with the
     // reason shown) when none was typed.
     QString author();
@@ -100,6 +104,7 @@ private:
     QLabel* m_header = nullptr;
     QLineEdit* m_reviewer = nullptr;
     ReanalysisPanel* m_reanalysis = nullptr;
+    PressesPanel* m_presses = nullptr;
     QLabel* m_problem = nullptr;
     QSpinBox* m_speed = nullptr;
     QAction* m_playAction = nullptr;

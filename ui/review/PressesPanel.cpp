@@ -1,0 +1,86 @@
+// PressesPanel: two lists, the grid map's table and the scale.
+#include "ui/review/PressesPanel.h"
+
+#include "ui/StiffnessScale.h"
+#include "ui/report/PalpationFigures.h"
+
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QTabWidget>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+namespace tactiscope::ui {
+namespace {
+
+enum Role { StartRole = Qt::UserRole, EndRole };
+
+QTreeWidget* list(const QStringList& headers, const QString& name, QWidget* parent)
+{
+    auto* tree = new QTreeWidget(parent);
+    tree->setObjectName(name);
+    tree->setHeaderLabels(headers);
+    tree->setRootIsDecorated(false);
+    tree->setAlternatingRowColors(true);
+    tree->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    return tree;
+}
+
+}  // namespace
+
+PressesPanel::PressesPanel(QWidget* parent)
+    : QGroupBox(tr("Presses"), parent),
+      m_presses(
+          list({tr("Time (s)"), tr("Site"), tr("kₒ ± SE (N/m)"), tr("Depth (mm)")}, QStringLiteral("pressList"), this)),
+      m_sites(list({tr("Site"), tr("n"), tr("Mean (N/m)"), tr("SD (N/m)"), tr("Range (N/m)")},
+                   QStringLiteral("siteList"), this)),
+      m_grid(new QLabel(this)),
+      m_scale(new StiffnessScale(this))
+{
+    setObjectName(QStringLiteral("pressesPanel"));
+    m_grid->setObjectName(QStringLiteral("siteGrid"));
+    m_grid->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    m_scale->setTissues(builtInTissues());
+    m_scale->setObjectName(QStringLiteral("tissueScale"));
+
+    auto* sites = new QWidget(this);
+    auto* sitesLayout = new QVBoxLayout(sites);
+    sitesLayout->setContentsMargins(0, 0, 0, 0);
+    sitesLayout->addWidget(m_sites, 1);
+    sitesLayout->addWidget(m_grid);
+    auto* tabs = new QTabWidget(this);
+    tabs->addTab(m_presses, tr("Each press"));
+    tabs->addTab(sites, tr("By site"));
+    auto* layout = new QHBoxLayout(this);
+    layout->addWidget(tabs, 3);
+    layout->addWidget(m_scale, 2);
+
+    connect(m_presses, &QTreeWidget::itemClicked, this, [this](QTreeWidgetItem* item) {
+        emit pressChosen(item->data(0, StartRole).toDouble(), item->data(0, EndRole).toDouble());
+    });
+}
+
+void PressesPanel::setPresses(std::vector<core::report::PressRow> presses)
+{
+    m_presses->clear();
+    m_sites->clear();
+    for (const auto& p : presses) {
+        auto* item = new QTreeWidgetItem(m_presses, pressCells(p));
+        item->setData(0, StartRole, p.start_s);
+        item->setData(0, EndRole, p.end_s);
+        for (const int column : {0, 2, 3}) item->setTextAlignment(column, Qt::AlignRight | Qt::AlignVCenter);
+    }
+    const auto sites = core::report::siteSummaries(presses);
+    for (const auto& site : sites) {
+        auto* item = new QTreeWidgetItem(m_sites, siteCells(site));
+        for (const int column : {1, 2, 3, 4}) item->setTextAlignment(column, Qt::AlignRight | Qt::AlignVCenter);
+    }
+    const QString grid = siteGridHtml(sites);
+    m_grid->setText(grid);
+    m_grid->setVisible(!grid.isEmpty());
+    markSites(*m_scale, core::report::scaleMarks(presses, tr("all").toStdString()));
+    setTitle(tr("Presses (%1)").arg(presses.size()));
+}
+
+}  // namespace tactiscope::ui
