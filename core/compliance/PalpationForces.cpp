@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace tactiscope::core::compliance {
@@ -43,6 +44,20 @@ LivePalpationSettings palpationSettings(const sensors::CompliancePairProfile& pr
         if (used) used->push_back(*newest);
     }
     return settings;
+}
+
+std::string basisText(const sensors::CompliancePairProfile& probe, const LivePalpationSettings& settings)
+{
+    const auto beam = [&settings](bool high) {
+        const auto& factor = high ? settings.highGaugeFactor : settings.lowGaugeFactor;
+        std::ostringstream text;
+        if (factor)
+            text << "gauge factor " << *factor << " (calibrated)";
+        else
+            text << "gauge factor " << settings.bridge.gaugeFactor << " (nominal)";
+        return text.str();
+    };
+    return "profile " + probe.name + "; stiff beam " + beam(true) + ", soft beam " + beam(false);
 }
 
 std::string zeroJson(double rawHigh, double rawLow)

@@ -47,6 +47,10 @@ LivePalpationSettings palpationSettings(const sensors::CompliancePairProfile& pr
                                         std::span<const calibration::CalibrationRecord> calibrations,
                                         std::vector<std::size_t>* used = nullptr);
 
+// What forces are computed with, in words: the profile and each beam's
+// gauge factor, calibrated or nominal.
+std::string basisText(const sensors::CompliancePairProfile& probe, const LivePalpationSettings& settings);
+
 // A zero as a session stores it (storage::SessionZero): {"high": …, "low": …},
 // raw values in the beams' channel units; and back (none when unreadable).
 std::string zeroJson(double rawHigh, double rawLow);

@@ -8,24 +8,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 
 namespace tactiscope::core::derived {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-std::string gaugeFactorText(const compliance::LivePalpationSettings& settings, bool high)
-{
-    const auto& factor = high ? settings.highGaugeFactor : settings.lowGaugeFactor;
-    std::ostringstream text;
-    if (factor)
-        text << "gauge factor " << *factor << " (calibrated)";
-    else
-        text << "gauge factor " << settings.bridge.gaugeFactor << " (nominal)";
-    return text.str();
-}
 
 }  // namespace
 
@@ -54,8 +42,7 @@ PalpationChannels::PalpationChannels(storage::SessionStore& store, std::int64_t 
     const auto settings = compliance::palpationSettings(*probe, summary->sampleRate_hz, records);
     m_forces = std::make_unique<compliance::PalpationForces>(raw, settings);
     m_sampleCount = summary->sampleCount;
-    m_basis = "profile " + probe->name + "; stiff beam " + gaugeFactorText(settings, true) + ", soft beam " +
-              gaugeFactorText(settings, false);
+    m_basis = compliance::basisText(*probe, settings);
 
     const auto zeros = store.zeros(session);
     for (std::size_t z = 0; z < zeros.size(); ++z) {

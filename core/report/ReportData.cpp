@@ -95,7 +95,7 @@ ReportData gatherReport(storage::SessionStore& store, std::int64_t session, cons
         if (overlaps(event.start_s, event.end_s, data.from_s, data.to_s)) data.events.push_back(std::move(event));
     data.sites = detector::scanSites(storage::defectEventsOf(data.events));
     data.verdicts = store.verdicts(session);
-    for (auto& reading : store.readings(session))
+    for (auto& reading : store.readings(session, request.analysis))
         if (overlaps(reading.start_s, reading.end_s, data.from_s, data.to_s))
             data.readings.push_back(std::move(reading));
     for (auto& annotation : store.annotations(session))

@@ -28,10 +28,10 @@ struct ReportRange {
     std::optional<double> to_s;    // to the end when empty
 };
 
-// What a report covers and which analysis's defects it shows.
+// What a report covers and which analysis's defects or readings it shows.
 struct ReportRequest {
     ReportRange range;
-    std::string analysis = storage::kLiveAnalysis;  // the recorded events, or a saved re-analysis
+    std::string analysis = storage::kLiveAnalysis;  // the recording's, or a saved re-analysis
 };
 
 // What a capacitive session's readings went through.
@@ -48,7 +48,7 @@ struct ReportData {
     std::vector<calibration::CalibrationRecord> calibrations;
     double from_s = 0.0;
     double to_s = 0.0;
-    std::string analysis;                            // whose defects `events` holds
+    std::string analysis;                            // whose defects `events` and whose `readings` hold
     std::vector<storage::SessionEvent> events;       // the analysis's defects and the live other events in the range
     detector::SiteGrouping sites;                    // the defects grouped by place along the stroke
     std::vector<storage::VerdictDecision> verdicts;  // the verdict's trail, oldest first

@@ -188,7 +188,8 @@ void importRecords(SessionStore& store, std::int64_t session, const nlohmann::js
         if (!readingKind) throw CsvError("the metadata file has a reading of unknown kind '" + kind + "'");
         store.addReading(session, {0, *readingKind, r.value("start_s", 0.0), r.value("end_s", 0.0),
                                    textOf(r, "quantity"), r.value("value", 0.0), textOf(r, "unit"),
-                                   optionalOf(r, "standard_error"), textOf(r, "site"), textOf(r, "details_json")});
+                                   optionalOf(r, "standard_error"), textOf(r, "site"), textOf(r, "details_json"),
+                                   r.contains("analysis") ? textOf(r, "analysis") : std::string(kLiveAnalysis)});
     }
     for (const auto& a : side.value("annotations", nlohmann::json::array()))
         store.addAnnotation(session, {0, a.value("time_s", 0.0), textOf(a, "author"), textOf(a, "text"),

@@ -183,7 +183,17 @@ CREATE TABLE zeros (
 ) WITHOUT ROWID;
 )sql";
 
-constexpr std::array kMigrations{kVersion1, kVersion2, kVersion3};
+// Version 3 → 4: readings, like events, belong to an analysis: the
+// recording's ('live'), or a re-analysis saved under a name (a palpation's
+// presses read again through another profile or calibration). Existing
+// readings are the recording's.
+constexpr const char* kVersion4 = R"sql(
+ALTER TABLE readings ADD COLUMN analysis TEXT NOT NULL DEFAULT 'live';
+DROP INDEX readings_by_session;
+CREATE INDEX readings_by_session ON readings (session_id, analysis, start_s);
+)sql";
+
+constexpr std::array kMigrations{kVersion1, kVersion2, kVersion3, kVersion4};
 static_assert(kMigrations.size() == kSchemaVersion);
 
 std::int64_t pragma(Database& db, const char* name)

@@ -100,18 +100,21 @@ void writeRecords(text::JsonWriter& json, SessionStore& store, std::int64_t sess
     }
     json.endArray();
     json.key("readings").beginArray();
-    for (const auto& r : store.readings(session)) {
-        json.beginObject();
-        json.key("kind").value(toString(r.kind));
-        json.key("start_s").value(r.start_s);
-        json.key("end_s").value(r.end_s);
-        json.key("quantity").value(r.quantity);
-        json.key("value").value(r.value);
-        json.key("unit").value(r.unit);
-        optional(json, "standard_error", r.standardError);
-        json.key("site").value(r.site);
-        json.key("details_json").value(r.detailsJson);
-        json.endObject();
+    for (const auto& analysis : store.analyses(session)) {
+        for (const auto& r : store.readings(session, analysis)) {
+            json.beginObject();
+            json.key("analysis").value(r.analysis);
+            json.key("kind").value(toString(r.kind));
+            json.key("start_s").value(r.start_s);
+            json.key("end_s").value(r.end_s);
+            json.key("quantity").value(r.quantity);
+            json.key("value").value(r.value);
+            json.key("unit").value(r.unit);
+            optional(json, "standard_error", r.standardError);
+            json.key("site").value(r.site);
+            json.key("details_json").value(r.detailsJson);
+            json.endObject();
+        }
     }
     json.endArray();
     json.key("annotations").beginArray();

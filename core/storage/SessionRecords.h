@@ -42,6 +42,9 @@ struct SessionReading {
     std::optional<double> standardError;  // in `unit`
     std::string site;                     // where on the subject, e.g. a phantom grid cell "B3"
     std::string detailsJson;              // the rest, e.g. displacement range and slope of a press
+    // Whose reading: the recording's (kLiveAnalysis) or a saved re-analysis's
+    // (e.g. the presses read again through another calibration).
+    std::string analysis = std::string(kLiveAnalysis);
 };
 
 struct Annotation {

@@ -139,9 +139,11 @@ public:
     // Events, readings and annotations (SessionStoreRecords.cpp).
     void addEvents(std::int64_t session, std::span<const SessionEvent> events);  // one transaction
     std::vector<SessionEvent> events(std::int64_t session, const std::string& analysis = kLiveAnalysis);
-    std::vector<std::string> analyses(std::int64_t session);  // "live" and saved re-analyses
+    // "live" and the saved re-analyses, of events or readings.
+    std::vector<std::string> analyses(std::int64_t session);
     std::int64_t addReading(std::int64_t session, const SessionReading& reading);
-    std::vector<SessionReading> readings(std::int64_t session);
+    void addReadings(std::int64_t session, std::span<const SessionReading> readings);  // one transaction
+    std::vector<SessionReading> readings(std::int64_t session, const std::string& analysis = kLiveAnalysis);
     std::int64_t addAnnotation(std::int64_t session, const Annotation& annotation);
     void updateAnnotation(std::int64_t annotation, const std::string& text);
     void deleteAnnotation(std::int64_t annotation);

@@ -80,8 +80,8 @@ std::vector<SessionEvent> SessionStore::events(std::int64_t session, const std::
 std::vector<std::string> SessionStore::analyses(std::int64_t session)
 {
     std::vector<std::string> result{kLiveAnalysis};
-    auto query = m_db.prepare("SELECT DISTINCT analysis FROM events WHERE session_id = ? AND analysis <> ? "
-                              "ORDER BY analysis");
+    auto query = m_db.prepare("SELECT analysis FROM events WHERE session_id = ?1 AND analysis <> ?2 UNION "
+                              "SELECT analysis FROM readings WHERE session_id = ?1 AND analysis <> ?2 ORDER BY 1");
     query.bind(1, session).bind(2, std::string_view(kLiveAnalysis));
     while (query.step()) result.push_back(query.text(0));
     return result;
@@ -89,25 +89,34 @@ std::vector<std::string> SessionStore::analyses(std::int64_t session)
 
 std::int64_t SessionStore::addReading(std::int64_t session, const SessionReading& r)
 {
-    auto insert = m_db.prepare("INSERT INTO readings (session_id, kind, start_s, end_s, quantity, value, unit, "
-                               "standard_error, site, details_json) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    auto insert =
+        m_db.prepare("INSERT INTO readings (session_id, kind, start_s, end_s, quantity, value, unit, "
+                     "standard_error, site, details_json, analysis) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     insert.bind(1, session).bind(2, toString(r.kind)).bind(3, r.start_s).bind(4, r.end_s).bind(5, r.quantity);
     insert.bind(6, r.value).bind(7, r.unit);
     bindOptional(insert, 8, r.standardError);
-    insert.bind(9, r.site).bind(10, r.detailsJson).run();
+    insert.bind(9, r.site).bind(10, r.detailsJson).bind(11, r.analysis).run();
     return m_db.lastInsertId();
 }
 
-std::vector<SessionReading> SessionStore::readings(std::int64_t session)
+void SessionStore::addReadings(std::int64_t session, std::span<const SessionReading> readings)
+{
+    Transaction transaction(m_db);
+    for (const auto& reading : readings) addReading(session, reading);
+    transaction.commit();
+}
+
+std::vector<SessionReading> SessionStore::readings(std::int64_t session, const std::string& analysis)
 {
     std::vector<SessionReading> result;
     auto query = m_db.prepare("SELECT id, kind, start_s, end_s, quantity, value, unit, standard_error, site, "
-                              "details_json FROM readings WHERE session_id = ? ORDER BY start_s, id");
-    query.bind(1, session);
+                              "details_json, analysis FROM readings WHERE session_id = ? AND analysis = ? "
+                              "ORDER BY start_s, id");
+    query.bind(1, session).bind(2, analysis);
     while (query.step()) {
         result.push_back({query.int64(0), readingKindFromString(query.text(1)).value_or(ReadingKind::Compliance),
                           query.real(2), query.real(3), query.text(4), query.real(5), query.text(6),
-                          optionalReal(query, 7), query.text(8), query.text(9)});
+                          optionalReal(query, 7), query.text(8), query.text(9), query.text(10)});
     }
     return result;
 }

@@ -9,6 +9,7 @@
 
 #include "core/derived/PalpationChannels.h"
 #include "core/storage/SessionStore.h"
+#include "ui/review/PalpationReanalysisBox.h"
 #include "ui/review/PressesPanel.h"
 #include "ui/review/ReviewPlot.h"
 
@@ -18,6 +19,7 @@
 #include "support/WaitFor.h"
 
 #include <QAction>
+#include <QComboBox>
 #include <QLabel>
 #include <QLocale>
 #include <QTemporaryDir>
@@ -75,13 +77,14 @@ TEST(ReviewPalpation, OpensOnTheForcesAndTheCountsAreOneClickAway)
         const auto* row = presses->topLevelItem(i);
         const auto& r = readings[static_cast<std::size_t>(i)];
         sum += r.value;
-        EXPECT_EQ(row->text(1), "B2");
+        EXPECT_EQ(row->text(1), "recorded");
+        EXPECT_EQ(row->text(2), "B2");
         // The SE to two significant digits (at most two decimals), the value to its decimal place.
         ASSERT_TRUE(r.standardError);
         const int decimals = std::clamp(1 - static_cast<int>(std::floor(std::log10(*r.standardError))), 0, 2);
-        EXPECT_EQ(row->text(2), QLocale().toString(r.value, 'f', decimals) + " ± " +
+        EXPECT_EQ(row->text(3), QLocale().toString(r.value, 'f', decimals) + " ± " +
                                     QLocale().toString(*r.standardError, 'f', decimals));
-        EXPECT_TRUE(row->text(3).contains(" – ")) << "a press has a depth range";
+        EXPECT_TRUE(row->text(4).contains(" – ")) << "a press has a depth range";
     }
     QTreeWidget* sites = window->presses()->siteList();
     ASSERT_EQ(sites->topLevelItemCount(), 1);
@@ -92,7 +95,25 @@ TEST(ReviewPalpation, OpensOnTheForcesAndTheCountsAreOneClickAway)
     auto* grid = window->findChild<QLabel*>(QStringLiteral("siteGrid"));
     ASSERT_NE(grid, nullptr);
     EXPECT_TRUE(grid->text().contains(QStringLiteral("n = %1").arg(readings.size())));
+
+    // Read again with the profile's nominal gauge factors — the ones this
+    // session used — the re-analysis lists each press beside its recorded
+    // twin, with the same k_o; saved, it is an analysis of its own.
+    auto* again = window->presses()->reanalysis();
+    again->gaugeFactorBox()->setCurrentIndex(
+        again->gaugeFactorBox()->findData(static_cast<int>(ui::PalpationReanalysisBox::GaugeFactors::Nominal)));
+    ASSERT_TRUE(again->run().isEmpty());
+    ASSERT_EQ(presses->topLevelItemCount(), static_cast<int>(2 * readings.size()));
+    for (int i = 0; i + 1 < presses->topLevelItemCount(); i += 2) {
+        EXPECT_EQ(presses->topLevelItem(i)->text(1), "recorded");
+        EXPECT_EQ(presses->topLevelItem(i + 1)->text(1), "re-analysis");
+        EXPECT_EQ(presses->topLevelItem(i + 1)->text(3), presses->topLevelItem(i)->text(3));
+    }
     tactiscope::testing::saveScreenshot(*window, QStringLiteral("review-palpation"));
+    EXPECT_TRUE(again->saveAs(QStringLiteral("nominal")).isEmpty());
+    EXPECT_FALSE(again->saveAs(QStringLiteral("nominal")).isEmpty()) << "a result is saved once";
+    EXPECT_EQ(store.readings(1, "nominal").size(), readings.size());
+    EXPECT_EQ(presses->topLevelItem(1)->text(1), "saved \"nominal\"");
 
     auto* raw = window->findChild<QAction*>(QStringLiteral("rawChannelsAction"));
     ASSERT_NE(raw, nullptr);

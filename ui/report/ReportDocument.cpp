@@ -37,7 +37,7 @@ using namespace reporthtml;
 // the document's 96 dpi.
 constexpr int kTextWidth_px = 640;
 constexpr int kLaneHeight_px = 130;  // four lanes and the header fit on the first page
-constexpr double kPlotScale = 3.0;  // ≈ 290 dpi on paper
+constexpr double kPlotScale = 3.0;   // ≈ 290 dpi on paper
 constexpr int kScaleWidth_px = 300;
 constexpr int kScaleHeight_px = 260;
 
@@ -222,6 +222,10 @@ QString palpationSection(const core::report::ReportData& data, QTextDocument& do
     };
     for (const auto& p : presses) rows.push_back(escaped(pressCells(p)));
     QString html = QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Presses (%1)").arg(presses.size()));
+    if (data.analysis != core::storage::kLiveAnalysis)
+        html += QStringLiteral("<p>%1</p>")
+                    .arg(QObject::tr("From the saved re-analysis \"%1\" (the recorded readings are in the session).")
+                             .arg(text(data.analysis)));
     html += table({QObject::tr("Time (s)"), QObject::tr("Site"), QObject::tr("k<sub>o</sub> ± SE (N/m)"),
                    QObject::tr("Depth (mm)")},
                   rows);

@@ -3,6 +3,7 @@
 
 #include "ui/StiffnessScale.h"
 #include "ui/report/PalpationFigures.h"
+#include "ui/review/PalpationReanalysisBox.h"
 
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -10,6 +11,8 @@
 #include <QTabWidget>
 #include <QTreeWidget>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace tactiscope::ui {
 namespace {
@@ -29,10 +32,12 @@ QTreeWidget* list(const QStringList& headers, const QString& name, QWidget* pare
 
 }  // namespace
 
-PressesPanel::PressesPanel(QWidget* parent)
+PressesPanel::PressesPanel(core::storage::SessionStore& store, const core::storage::SessionSummary& session,
+                           QWidget* parent)
     : QGroupBox(tr("Presses"), parent),
-      m_presses(
-          list({tr("Time (s)"), tr("Site"), tr("kₒ ± SE (N/m)"), tr("Depth (mm)")}, QStringLiteral("pressList"), this)),
+      m_presses(list({tr("Time (s)"), tr("Source"), tr("Site"), tr("kₒ ± SE (N/m)"), tr("Depth (mm)")},
+                     QStringLiteral("pressList"), this)),
+      m_reanalysis(new PalpationReanalysisBox(store, session, this)),
       m_sites(list({tr("Site"), tr("n"), tr("Mean (N/m)"), tr("SD (N/m)"), tr("Range (N/m)")},
                    QStringLiteral("siteList"), this)),
       m_grid(new QLabel(this)),
@@ -52,6 +57,9 @@ PressesPanel::PressesPanel(QWidget* parent)
     auto* tabs = new QTabWidget(this);
     tabs->addTab(m_presses, tr("Each press"));
     tabs->addTab(sites, tr("By site"));
+    tabs->addTab(m_reanalysis, tr("Read again"));
+    // What was read again shows beside the recorded presses.
+    connect(m_reanalysis, &PalpationReanalysisBox::analysed, tabs, [tabs, this] { tabs->setCurrentWidget(m_presses); });
     auto* layout = new QHBoxLayout(this);
     layout->addWidget(tabs, 3);
     layout->addWidget(m_scale, 2);
@@ -61,17 +69,25 @@ PressesPanel::PressesPanel(QWidget* parent)
     });
 }
 
-void PressesPanel::setPresses(std::vector<core::report::PressRow> presses)
+void PressesPanel::setPresses(std::vector<core::report::PressRow> recorded, const std::vector<Source>& others)
 {
     m_presses->clear();
     m_sites->clear();
-    for (const auto& p : presses) {
-        auto* item = new QTreeWidgetItem(m_presses, pressCells(p));
-        item->setData(0, StartRole, p.start_s);
-        item->setData(0, EndRole, p.end_s);
-        for (const int column : {0, 2, 3}) item->setTextAlignment(column, Qt::AlignRight | Qt::AlignVCenter);
+    // Every source's presses in time order, so a re-read press sits by its recorded one.
+    std::vector<std::pair<const core::report::PressRow*, QString>> rows;
+    for (const auto& p : recorded) rows.emplace_back(&p, tr("recorded"));
+    for (const auto& source : others)
+        for (const auto& p : source.presses) rows.emplace_back(&p, source.name);
+    std::ranges::stable_sort(rows, {}, [](const auto& row) { return row.first->start_s; });
+    for (const auto& [press, source] : rows) {
+        QStringList cells = pressCells(*press);
+        cells.insert(1, source);
+        auto* item = new QTreeWidgetItem(m_presses, cells);
+        item->setData(0, StartRole, press->start_s);
+        item->setData(0, EndRole, press->end_s);
+        for (const int column : {0, 3, 4}) item->setTextAlignment(column, Qt::AlignRight | Qt::AlignVCenter);
     }
-    const auto sites = core::report::siteSummaries(presses);
+    const auto sites = core::report::siteSummaries(recorded);
     for (const auto& site : sites) {
         auto* item = new QTreeWidgetItem(m_sites, siteCells(site));
         for (const int column : {1, 2, 3, 4}) item->setTextAlignment(column, Qt::AlignRight | Qt::AlignVCenter);
@@ -79,8 +95,8 @@ void PressesPanel::setPresses(std::vector<core::report::PressRow> presses)
     const QString grid = siteGridHtml(sites);
     m_grid->setText(grid);
     m_grid->setVisible(!grid.isEmpty());
-    markSites(*m_scale, core::report::scaleMarks(presses, tr("all").toStdString()));
-    setTitle(tr("Presses (%1)").arg(presses.size()));
+    markSites(*m_scale, core::report::scaleMarks(recorded, tr("all").toStdString()));
+    setTitle(tr("Presses (%1 recorded)").arg(recorded.size()));
 }
 
 }  // namespace tactiscope::ui

@@ -1,11 +1,13 @@
 // The review window's account of a palpation session in the clinician's
 // terms: every press (time, site, k_o ± SE, depth range), each site's
 // presses summed up (n, mean, SD), the phantom's grid map and the tissue
-// scale with each site's mean, as the live view showed them. A click on a
+// scale with each site's mean, as the live view showed them; the presses
+// read again (PalpationReanalysisBox) listed beside them. A click on a
 // press shows it on the plot.
 #pragma once
 
 #include "core/report/PressTable.h"
+#include "core/storage/SessionStore.h"
 
 #include <QGroupBox>
 
@@ -16,15 +18,24 @@ class QTreeWidget;
 
 namespace tactiscope::ui {
 
+class PalpationReanalysisBox;
 class StiffnessScale;
 
 class PressesPanel : public QGroupBox {
     Q_OBJECT
 
 public:
-    explicit PressesPanel(QWidget* parent);
+    // The store and session are the review window's; the re-analysis reads them.
+    PressesPanel(core::storage::SessionStore& store, const core::storage::SessionSummary& session, QWidget* parent);
 
-    void setPresses(std::vector<core::report::PressRow> presses);
+    // Presses read by something else than the recording, listed beside its own.
+    struct Source {
+        QString name;  // "re-analysis", "saved \"…\""
+        std::vector<core::report::PressRow> presses;
+    };
+    // The recorded presses fill every view; the others join the press list.
+    void setPresses(std::vector<core::report::PressRow> recorded, const std::vector<Source>& others = {});
+    PalpationReanalysisBox* reanalysis() const { return m_reanalysis; }
     QTreeWidget* pressList() const { return m_presses; }
     QTreeWidget* siteList() const { return m_sites; }
 
@@ -33,6 +44,7 @@ signals:
 
 private:
     QTreeWidget* m_presses;
+    PalpationReanalysisBox* m_reanalysis;
     QTreeWidget* m_sites;
     QLabel* m_grid;
     StiffnessScale* m_scale;

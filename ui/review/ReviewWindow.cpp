@@ -14,6 +14,7 @@
 #include "ui/calibration/WizardText.h"
 #include "ui/report/CapacitiveSummary.h"
 #include "ui/report/ReportDocument.h"
+#include "ui/review/PalpationReanalysisBox.h"
 #include "ui/review/PressesPanel.h"
 #include "ui/review/ReanalysisPanel.h"
 #include "ui/review/ReviewPlot.h"
@@ -163,7 +164,9 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionStor
         bottom->addWidget(m_reanalysis);
         break;
     case core::Mode::Palpation:
-        m_presses = new PressesPanel(this);
+        m_presses = new PressesPanel(*m_store, m_session, this);
+        connect(m_presses->reanalysis(), &PalpationReanalysisBox::analysed, this, &ReviewWindow::refreshRecords);
+        connect(m_presses->reanalysis(), &PalpationReanalysisBox::saved, this, &ReviewWindow::refreshRecords);
         connect(m_presses, &PressesPanel::pressChosen, this, [this](double start_s, double end_s) {
             m_plot->centreOn(0.5 * (start_s + end_s), std::max(2.0, 2.0 * (end_s - start_s)));
             m_plot->setCursorTime(start_s);
@@ -388,15 +391,29 @@ void ReviewWindow::refreshRecords()
                 entries.push_back({e.start_s, e.end_s, tr("defect"), tr("re-analysis"), eventDetails(e)});
             }
         }
+        std::vector<PressesPanel::Source> pressSources;
+        if (const auto* unsaved = m_presses ? m_presses->reanalysis()->unsaved() : nullptr) {
+            rows << tr("Re-analysis");
+            const int row = static_cast<int>(rows.size()) - 1;
+            const auto& readings = unsaved->readings;
+            for (const auto& r : readings) spans.push_back({r.start_s, r.end_s, row, kReading});
+            pressSources.push_back({tr("re-analysis"), core::report::pressRows(readings)});
+        }
         for (const auto& analysis : m_store->analyses(m_session.id)) {
             if (analysis == core::storage::kLiveAnalysis) continue;
             rows << text(analysis);
             const int row = static_cast<int>(rows.size()) - 1;
+            const QString source = tr("saved \"%1\"").arg(text(analysis));
             for (const auto& e : m_store->events(m_session.id, analysis)) {
                 spans.push_back({e.start_s, e.end_s, row, eventColour(e)});
-                entries.push_back(
-                    {e.start_s, e.end_s, wordText(e.kind), tr("saved \"%1\"").arg(text(analysis)), eventDetails(e)});
+                entries.push_back({e.start_s, e.end_s, wordText(e.kind), source, eventDetails(e)});
             }
+            const auto readings = m_store->readings(m_session.id, analysis);
+            for (const auto& r : readings) {
+                spans.push_back({r.start_s, r.end_s, row, kReading});
+                entries.push_back({r.start_s, r.end_s, wordText(r.kind), source, readingDetails(r)});
+            }
+            if (!readings.empty()) pressSources.push_back({source, core::report::pressRows(readings)});
         }
         rows << tr("Readings");
         for (const auto& r : m_store->readings(m_session.id)) {
@@ -409,7 +426,7 @@ void ReviewWindow::refreshRecords()
             entries.push_back({a.time_s, a.time_s, tr("note"), text(a.author),
                                text(a.text) + (a.modifiedUtc != a.createdUtc ? tr(" (edited)") : QString()), a.id});
         }
-        if (m_presses) m_presses->setPresses(core::report::pressRows(m_store->readings(m_session.id)));
+        if (m_presses) m_presses->setPresses(core::report::pressRows(m_store->readings(m_session.id)), pressSources);
     } catch (const core::storage::StorageError& e) {
         showProblem(tr("The session's records cannot be read: %1").arg(text(e.what())));
     }

@@ -1,0 +1,34 @@
+// A palpation session's presses read again — through another probe profile
+// or other gauge-factor calibrations — by the live reading's own code
+// (compliance::PalpationForces and PressReader) over the stored samples, on
+// the zeros the recording took (raw values, so they hold for any gauge
+// factor). As live, a press in progress is dropped at a zero change, at a
+// lost sample and at the end of the recording, and a press whose Q lies out
+// of the probe's range is a state, not a reading. With the session's own
+// profile and calibrations it gives the recorded readings again.
+#pragma once
+
+#include "core/calibration/CalibrationRecord.h"
+#include "core/sensors/SensorProfile.h"
+#include "core/storage/SessionStore.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tactiscope::core::derived {
+
+struct PalpationReanalysis {
+    std::vector<storage::SessionReading> readings;  // as the recording stores them, analysis unset
+    std::size_t outOfRange = 0;                     // presses read out of the probe's range
+    std::string basis;                              // the profile and gauge factors, in words
+};
+
+// Each reading takes the site of the recorded reading it overlaps, else the
+// session's. Throws std::invalid_argument for a session that is not a
+// palpation one or channels the probe cannot read; storage::StorageError.
+PalpationReanalysis reanalysePalpation(storage::SessionStore& store, std::int64_t session,
+                                       const sensors::CompliancePairProfile& probe,
+                                       const std::vector<calibration::CalibrationRecord>& calibrations);
+
+}  // namespace tactiscope::core::derived
