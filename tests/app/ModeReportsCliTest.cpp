@@ -89,9 +89,8 @@ TEST(ModeReportsCli, ACapacitiveReportStatesItsBaselineAndTheCalibrationsFit)
     // The beam's own C0 (the model's), so the readings before the first tare are the beam's.
     const auto model =
         core::capacitive::CapacitiveSensitivity::fromModel(core::sensors::CapacitiveBeam(profile.geometry));
-    record.values = {{"c0_pf", model.c0_f * 1e12},           {"baseline_sigma_pf", 0.0038},
-                     {"drift_pf_per_s", 0.00012}, {"sensitivity_pf_per_mn", 0.5678},
-                     {"r_squared", 0.99931},      {"detection_limit_mn", 0.02008}};
+    record.values = {{"c0_pf", model.c0_f * 1e12},      {"baseline_sigma_pf", 0.0038}, {"drift_pf_per_s", 0.00012},
+                     {"sensitivity_pf_per_mn", 0.5678}, {"r_squared", 0.99931},        {"detection_limit_mn", 0.02008}};
     record.fit.slope = 0.5678e-9;
     record.fit.rSquared = 0.99931;
     record.fit.slopeStandardError = 0.0042e-9;
