@@ -20,7 +20,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 }  // namespace
 
-CapacitiveChannels::CapacitiveChannels(storage::SessionStore& store, std::int64_t session)
+CapacitiveChannels::CapacitiveChannels(storage::SessionStore& store, std::int64_t session,
+                                       const std::optional<calibration::CalibrationRecord>& calibration)
     : m_store(store),
       m_session(session)
 {
@@ -44,9 +45,15 @@ CapacitiveChannels::CapacitiveChannels(storage::SessionStore& store, std::int64_
     const auto picked = modeChannels(Mode::Capacitive, raw);
     if (!picked) throw std::invalid_argument(*modeRefusal(Mode::Capacitive, raw));
     m_channel = picked->front();
-    const auto records = calibration::recordsFromJsonArray(summary->metadata.calibrationsJson);
+    const auto records =
+        calibration ? std::vector{*calibration} : calibration::recordsFromJsonArray(summary->metadata.calibrationsJson);
     std::optional<std::size_t> used;
-    m_sensitivity = capacitive::readoutSettings(*beam, records, &used).sensitivity;
+    std::string problem;
+    m_sensitivity = capacitive::readoutSettings(*beam, records, &used, &problem).sensitivity;
+    if (calibration && !used)
+        throw std::invalid_argument(problem.empty() ? "the calibration of " + calibration->timestampUtc +
+                                                          " is not one of '" + beam->name + "'"
+                                                    : problem);
     m_sampleCount = summary->sampleCount;
     std::ostringstream basis;
     basis << "profile " << beam->name << "; ";

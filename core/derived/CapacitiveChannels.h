@@ -24,10 +24,14 @@ namespace tactiscope::core::derived {
 
 class CapacitiveChannels final : public storage::ComputedColumns {
 public:
+    // Through the calibration recorded with the session, else the beam
+    // model; or through `calibration` (a re-analysis with another record).
     // Throws std::invalid_argument for a session that is not a capacitive
-    // one or lacks a usable profile (the message says which);
+    // one, lacks a usable profile, or a `calibration` that is not this
+    // beam's or cannot be used (the message says which);
     // storage::StorageError when the store cannot be read.
-    CapacitiveChannels(storage::SessionStore& store, std::int64_t session);
+    CapacitiveChannels(storage::SessionStore& store, std::int64_t session,
+                       const std::optional<calibration::CalibrationRecord>& calibration = std::nullopt);
 
     // delta_c [F], relative_change, force [N], deflection [m].
     std::vector<ChannelDescriptor> channels() const override;

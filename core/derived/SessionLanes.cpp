@@ -40,8 +40,10 @@ private:
 
 }  // namespace
 
-SessionLanes sessionLanes(storage::SessionStore& store, const storage::SessionSummary& session, bool raw)
+SessionLanes sessionLanes(storage::SessionStore& store, const storage::SessionSummary& session,
+                          const LaneOptions& options)
 {
+    const bool raw = options.raw;
     SessionLanes result;
     const auto channels = store.channels(session.id);
     std::vector<std::size_t> stored(channels.size());
@@ -61,7 +63,7 @@ SessionLanes sessionLanes(storage::SessionStore& store, const storage::SessionSu
     }
     if (!raw && session.metadata.mode == Mode::Capacitive) {
         try {
-            auto capacitive = std::make_shared<CapacitiveChannels>(store, session.id);
+            auto capacitive = std::make_shared<CapacitiveChannels>(store, session.id, options.capacitiveCalibration);
             // The capacitance as stored, then ΔC, the force and the deflection.
             const std::size_t c = capacitive->capacitanceChannel();
             result.lanes.push_back(std::make_unique<storage::StoredLane>(store, session.id, c, channels[c].descriptor));

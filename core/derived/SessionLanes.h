@@ -8,11 +8,13 @@
 // as it is (`raw`).
 #pragma once
 
+#include "core/calibration/CalibrationRecord.h"
 #include "core/storage/SessionExport.h"
 #include "core/storage/SessionStore.h"
 #include "core/storage/TraceWindow.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,8 +27,16 @@ struct SessionLanes {
     bool derived = false;
 };
 
+struct LaneOptions {
+    bool raw = false;  // every stored channel as it is
+    // A capacitive session read through another calibration record (a
+    // re-analysis); none: the one recorded with it.
+    std::optional<calibration::CalibrationRecord> capacitiveCalibration;
+};
+
 // Throws storage::StorageError when the store cannot be read.
-SessionLanes sessionLanes(storage::SessionStore& store, const storage::SessionSummary& session, bool raw = false);
+SessionLanes sessionLanes(storage::SessionStore& store, const storage::SessionSummary& session,
+                          const LaneOptions& options = {});
 
 // The mode's physical quantities as export columns. Throws
 // std::invalid_argument saying why a session has none (e.g. a palpation

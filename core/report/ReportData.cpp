@@ -45,10 +45,11 @@ bool ReportData::wholeSession() const
 }
 
 std::optional<CapacitiveBasis> capacitiveBasis(storage::SessionStore& store, const storage::SessionSummary& session,
-                                               std::uint64_t first, std::uint64_t end)
+                                               std::uint64_t first, std::uint64_t end,
+                                               const std::optional<calibration::CalibrationRecord>& calibration)
 {
     try {
-        const derived::CapacitiveChannels channels(store, session.id);
+        const derived::CapacitiveChannels channels(store, session.id, calibration);
         CapacitiveBasis basis{
             {}, channels.calibration(), channels.sensitivity().perNewton_f, channels.sensitivity().perMetre_f};
         const auto baselines = channels.baselines();

@@ -66,8 +66,10 @@ struct ReportData {
 
 // The basis of a capacitive session's samples [first, end); none when the
 // session has no usable profile. Throws storage::StorageError.
+// `calibration`: another record than the recorded one (see CapacitiveChannels).
 std::optional<CapacitiveBasis> capacitiveBasis(storage::SessionStore& store, const storage::SessionSummary& session,
-                                               std::uint64_t first, std::uint64_t end);
+                                               std::uint64_t first, std::uint64_t end,
+                                               const std::optional<calibration::CalibrationRecord>& calibration = {});
 
 // Throws storage::StorageError for an unknown session and
 // std::invalid_argument for a range outside the session or backwards, or an

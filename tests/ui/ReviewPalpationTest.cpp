@@ -7,7 +7,9 @@
 // beside the calibration its readings went through.
 #include "ui/review/ReviewWindow.h"
 
+#include "core/capacitive/CapacitiveReadout.h"
 #include "core/derived/PalpationChannels.h"
+#include "core/sensors/BuiltInProfiles.h"
 #include "core/storage/SessionStore.h"
 #include "ui/review/PalpationReanalysisBox.h"
 #include "ui/review/PressesPanel.h"
@@ -144,10 +146,50 @@ TEST(ReviewCapacitive, OpensOnTheCapacitanceChangeForceAndDeflection)
         << window->plot()->derivedBasis();  // no calibration in this store
     // The calibration used, beside the records: here the beam model, with
     // the baseline the session started on.
-    auto* basis = window->findChild<QLabel*>(QStringLiteral("capacitiveBasisText"));
+    QLabel* basis = window->findChild<QLabel*>(QStringLiteral("capacitiveBasisText"));
     ASSERT_NE(basis, nullptr);
     EXPECT_TRUE(basis->text().contains("the beam model")) << basis->text().toStdString();
     EXPECT_TRUE(basis->text().contains("pF at the start")) << basis->text().toStdString();
+
+    // Read through a calibration stored after the recording: the force
+    // scales by the sensitivities' ratio, sample for sample; the recording
+    // keeps its own basis.
+    const auto beam =
+        std::get<core::sensors::CapacitiveBeamProfile>(*core::sensors::builtInProfile(core::Mode::Capacitive));
+    const auto model = core::capacitive::CapacitiveSensitivity::fromModel(core::sensors::CapacitiveBeam(beam.geometry));
+    core::calibration::CalibrationRecord record;
+    record.kind = core::calibration::kCapacitiveKind;
+    record.sensorName = beam.name;
+    record.operatorName = "Grace";
+    record.timestampUtc = "2026-11-24T08:00:00Z";
+    record.values = {{"c0_pf", model.c0_f * 1e12}, {"sensitivity_pf_per_mn", 2.5}, {"baseline_sigma_pf", 0.004}};
+    window->store().addCalibration(record);
+    delete window;
+    window = ui::ReviewWindow::open(db, 1, nullptr, error);
+    ASSERT_NE(window, nullptr) << error.toStdString();
+    window->setAttribute(Qt::WA_DeleteOnClose, false);
+    window->show();
+    window->plot()->setRange(0.0, 4.0);
+    window->plot()->reload();
+    ASSERT_TRUE(window->plot()->shown(2).exact);
+    const auto before = window->plot()->shown(2).low;  // the force, through the beam model
+    auto* choice = window->findChild<QComboBox*>(QStringLiteral("capacitiveCalibrationChoice"));
+    ASSERT_NE(choice, nullptr);
+    ASSERT_EQ(choice->count(), 2);
+    choice->setCurrentIndex(1);
+    window->plot()->reload();
+    const auto after = window->plot()->shown(2).low;
+    ASSERT_EQ(after.size(), before.size());
+    const double ratio = model.perNewton_f / 2.5e-9;  // 2.5 pF/mN is 2.5e-9 F/N
+    int compared = 0;
+    for (std::size_t i = 0; i < after.size(); ++i) {
+        if (std::isnan(before[i]) || before[i] == 0.0) continue;
+        EXPECT_NEAR(after[i] / before[i], ratio, 1e-9 * ratio) << i;
+        ++compared;
+    }
+    EXPECT_GT(compared, 10);
+    basis = window->findChild<QLabel*>(QStringLiteral("capacitiveBasisText"));
+    EXPECT_TRUE(basis->text().contains("2026-11-24T08:00:00Z by Grace")) << basis->text().toStdString();
     tactiscope::testing::saveScreenshot(*window, QStringLiteral("review-capacitive"));
     auto* raw = window->findChild<QAction*>(QStringLiteral("rawChannelsAction"));
     ASSERT_NE(raw, nullptr);

@@ -41,9 +41,11 @@ QString capacitiveBasisHtml(const core::report::CapacitiveBasis& c)
                 QObject::tr("%1 by %2").arg(text(record.timestampUtc), orDash(record.operatorName)));
     QString slope = value("sensitivity_pf_per_mn", 4, QString());
     if (record.fit.points > 2) slope += QStringLiteral(" ± ") + number(record.fit.slopeStandardError * 1e9, 4);
-    html += row(
-        QObject::tr("Force fit"),
-        QObject::tr("%1 pF/mN, R² = %2, %3 points").arg(slope, number(record.fit.rSquared, 5)).arg(record.fit.points));
+    html += row(QObject::tr("Force fit"), record.fit.points > 0
+                                              ? QObject::tr("%1 pF/mN, R² = %2, %3 points")
+                                                    .arg(slope, number(record.fit.rSquared, 5))
+                                                    .arg(record.fit.points)
+                                              : QObject::tr("%1 pF/mN (the record keeps no fit)").arg(slope));
     const auto limit = record.value("detection_limit_mn");
     html += row(QObject::tr("Detection limit (3σ)"),
                 limit ? QObject::tr("%1 µN (%2 mgf), %3 mm")

@@ -37,12 +37,12 @@ QString valueText(double value, const DisplayUnit& unit)
 
 }  // namespace
 
-ReviewPlot::ReviewPlot(core::storage::SessionStore& store, const core::storage::SessionSummary& session, bool raw,
-                       QWidget* parent)
+ReviewPlot::ReviewPlot(core::storage::SessionStore& store, const core::storage::SessionSummary& session,
+                       const core::derived::LaneOptions& options, QWidget* parent)
     : QWidget(parent),
       m_store(store),
       m_session(session),
-      m_lanes(core::derived::sessionLanes(store, session, raw)),
+      m_lanes(core::derived::sessionLanes(store, session, options)),
       m_duration_s(session.duration_s()),
       m_plot(new QCustomPlot(this)),
       m_readout(new QLabel(this)),

@@ -48,10 +48,11 @@ class ReviewPlot : public QWidget {
     Q_OBJECT
 
 public:
-    // The store must outlive the plot. `raw`: the stored channels as they
-    // are, instead of the mode's physical quantities.
-    ReviewPlot(core::storage::SessionStore& store, const core::storage::SessionSummary& session, bool raw,
-               QWidget* parent);
+    // The store must outlive the plot. `options`: the stored channels as
+    // they are instead of the mode's physical quantities, or another
+    // calibration to compute them through.
+    ReviewPlot(core::storage::SessionStore& store, const core::storage::SessionSummary& session,
+               const core::derived::LaneOptions& options, QWidget* parent);
     // What the derived lanes were computed with, or why there are none
     // (empty for a mode without them).
     const std::string& derivedBasis() const { return m_lanes.basis; }

@@ -8,6 +8,7 @@
 #include "core/report/PressTable.h"
 #include "core/report/ReportData.h"
 #include "core/report/VerdictTrail.h"
+#include "core/sensors/SensorProfile.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/SafeOutput.h"
 #include "core/storage/SessionExport.h"
@@ -21,10 +22,12 @@
 #include "ui/review/SessionTableModel.h"
 
 #include <QAction>
+#include <QComboBox>
 #include <QDateTime>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGroupBox>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QInputDialog>
 #include <QLabel>
@@ -146,7 +149,7 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionStor
     m_problem->setStyleSheet(QStringLiteral("color: #b00020"));
     m_problem->hide();
 
-    m_plot = new ReviewPlot(*m_store, m_session, false, this);
+    m_plot = new ReviewPlot(*m_store, m_session, m_laneOptions, this);
     m_list = new QTreeWidget(this);
     m_list->setObjectName(QStringLiteral("recordList"));
     m_list->setHeaderLabels({tr("Time (s)"), tr("What"), tr("Source"), tr("Details")});
@@ -218,14 +221,20 @@ ReviewWindow::~ReviewWindow() = default;
 
 void ReviewWindow::setRawChannels(bool raw)
 {
+    m_laneOptions.raw = raw;
+    rebuildPlot();
+}
+
+bool ReviewWindow::rebuildPlot()
+{
     const double from_s = m_plot->from_s(), to_s = m_plot->to_s();
     const auto cursor = m_plot->cursorTime();
     ReviewPlot* plot = nullptr;
     try {
-        plot = new ReviewPlot(*m_store, m_session, raw, this);
+        plot = new ReviewPlot(*m_store, m_session, m_laneOptions, this);
     } catch (const core::storage::StorageError& e) {
         showProblem(tr("The samples cannot be read: %1").arg(text(e.what())));
-        return;
+        return false;
     }
     delete m_plot->parentWidget()->layout()->replaceWidget(m_plot, plot);  // the old item is ours to delete
     delete m_plot;
@@ -234,24 +243,75 @@ void ReviewWindow::setRawChannels(bool raw)
     refreshRecords();  // the markers
     m_plot->setRange(from_s, to_s);
     if (cursor) m_plot->setCursorTime(*cursor);
+    return true;
+}
+
+QString ReviewWindow::setCapacitiveCalibration(const std::optional<core::calibration::CalibrationRecord>& record)
+{
+    std::optional<core::report::CapacitiveBasis> basis;
+    try {
+        basis = core::report::capacitiveBasis(*m_store, m_session, 0, m_session.sampleCount, record);
+    } catch (const core::storage::StorageError& e) {
+        return tr("The calibration cannot be read: %1").arg(text(e.what()));
+    }
+    if (!basis) return tr("This calibration cannot be used for session %1.").arg(m_session.id);
+    m_laneOptions.capacitiveCalibration = record;
+    if (!rebuildPlot()) return tr("The plot could not be redrawn through this calibration.");
+    if (!m_plot->derivedProblem().empty()) return text(m_plot->derivedProblem());
+    m_capacitiveBasis->setText(capacitiveBasisHtml(*basis));
+    statusBar()->showMessage(record ? tr("Force and deflection through the calibration of %1 (the recording's "
+                                         "stays as it was).")
+                                          .arg(text(record->timestampUtc))
+                                    : tr("Force and deflection through the calibration recorded with the session."));
+    return {};
 }
 
 QWidget* ReviewWindow::capacitiveBasisBox()
 {
     auto* box = new QGroupBox(tr("Calibration used"), this);
     box->setObjectName(QStringLiteral("capacitiveBasis"));
-    auto* label = wrappedLabel({}, box);
-    label->setObjectName(QStringLiteral("capacitiveBasisText"));
-    label->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    // Another record of this beam, to read the session through (a re-analysis; nothing stored changes).
+    auto* choice = new QComboBox(box);
+    choice->setObjectName(QStringLiteral("capacitiveCalibrationChoice"));
+    choice->addItem(tr("as recorded with the session"));
+    try {
+        const auto profile = core::sensors::parseSensorProfile(m_session.metadata.profileJson, "the session's");
+        if (const auto* beam = std::get_if<core::sensors::CapacitiveBeamProfile>(&profile))
+            for (const auto& stored : m_store->calibrations(beam->name))
+                if (stored.record.kind == core::calibration::kCapacitiveKind) {
+                    m_capacitiveRecords.push_back(stored.record);
+                    choice->addItem(tr("%1 by %2")
+                                        .arg(text(stored.record.timestampUtc), stored.record.operatorName.empty()
+                                                                                   ? tr("(no name)")
+                                                                                   : text(stored.record.operatorName)));
+                }
+    } catch (const std::exception&) {
+        // No profile or store records: the recorded basis is all there is.
+    }
+    choice->setEnabled(choice->count() > 1);
+    choice->setToolTip(tr("Read the force and deflection through another calibration of this beam in the store"));
+    m_capacitiveBasis = wrappedLabel({}, box);
+    m_capacitiveBasis->setObjectName(QStringLiteral("capacitiveBasisText"));
+    m_capacitiveBasis->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     try {
         const auto basis = core::report::capacitiveBasis(*m_store, m_session, 0, m_session.sampleCount);
-        label->setText(basis ? capacitiveBasisHtml(*basis)
-                             : tr("Not known: %1").arg(text(m_plot->derivedProblem()).toHtmlEscaped()));
+        m_capacitiveBasis->setText(basis ? capacitiveBasisHtml(*basis)
+                                         : tr("Not known: %1").arg(text(m_plot->derivedProblem()).toHtmlEscaped()));
     } catch (const core::storage::StorageError& e) {
-        label->setText(tr("The calibration cannot be read: %1").arg(text(e.what()).toHtmlEscaped()));
+        m_capacitiveBasis->setText(tr("The calibration cannot be read: %1").arg(text(e.what()).toHtmlEscaped()));
     }
+    connect(choice, &QComboBox::currentIndexChanged, this, [this](int index) {
+        const auto record =
+            index > 0 ? std::optional(m_capacitiveRecords[static_cast<std::size_t>(index - 1)]) : std::nullopt;
+        const QString error = setCapacitiveCalibration(record);
+        if (!error.isEmpty()) showProblem(error);
+    });
     auto* layout = new QVBoxLayout(box);
-    layout->addWidget(label);
+    auto* row = new QHBoxLayout;
+    row->addWidget(new QLabel(tr("Read through"), box));
+    row->addWidget(choice, 1);
+    layout->addLayout(row);
+    layout->addWidget(m_capacitiveBasis);
     layout->addStretch(1);
     return box;
 }

@@ -4,14 +4,16 @@
 // readout, markers), the list of its events, readings and notes (a click
 // jumps there), the reviewer's notes (add, edit, delete with undo), replay
 // at 1–10× real time, the mode's own account (a panel scan's re-analysis
-// beside the recorded events, ReanalysisPanel; a palpation's presses and
-// sites, PressesPanel; a capacitive beam's calibration), a reviewer's verdict (panel
+// beside the recorded events, ReanalysisPanel; a palpation's presses,
+// sites and presses read again, PressesPanel; a capacitive beam's
+// calibration, and another to read it through), a reviewer's verdict (panel
 // scans) joining the verdict's trail, and the exports: the PDF report,
 // printing, the plot as PNG or SVG, CSV of the session or of the range shown.
 // Notes and verdicts carry the reviewer's name, typed once in the toolbar
 // and remembered.
 #pragma once
 
+#include "core/derived/SessionLanes.h"
 #include "core/storage/SessionStore.h"
 
 #include <QElapsedTimer>
@@ -22,6 +24,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <vector>
 
 class QLabel;
 class QLineEdit;
@@ -66,6 +69,9 @@ public:
 
     // The stored channels as they are (raw), or the mode's physical quantities.
     void setRawChannels(bool raw);
+    // A capacitive session's force and deflection through another
+    // calibration record, or (none) the recorded one; returns an error, or empty.
+    QString setCapacitiveCalibration(const std::optional<core::calibration::CalibrationRecord>& record);
 
     // Replay from the left of the view at `speed`× real time.
     void setReplaySpeed(int speed);
@@ -93,6 +99,7 @@ private:
     void showProblem(const QString& text);
     void refreshHeader();
     QWidget* capacitiveBasisBox();
+    bool rebuildPlot();  // with m_laneOptions, keeping the view; false (and said) when it cannot
     // The reviewer's name; empty (and the name box focused, with the
     // reason shown) when none was typed.
     QString author();
@@ -105,6 +112,9 @@ private:
     QLineEdit* m_reviewer = nullptr;
     ReanalysisPanel* m_reanalysis = nullptr;
     PressesPanel* m_presses = nullptr;
+    core::derived::LaneOptions m_laneOptions;
+    QLabel* m_capacitiveBasis = nullptr;
+    std::vector<core::calibration::CalibrationRecord> m_capacitiveRecords;  // the choices after "as recorded"
     QLabel* m_problem = nullptr;
     QSpinBox* m_speed = nullptr;
     QAction* m_playAction = nullptr;
