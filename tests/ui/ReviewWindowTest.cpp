@@ -147,7 +147,7 @@ TEST_F(ReviewWindowTest, TheListJumpsAndNotesAreAddedEditedDeletedAndBroughtBack
     ASSERT_EQ(list->topLevelItemCount(), 3);
     QTreeWidgetItem* second = list->topLevelItem(1);
     EXPECT_EQ(second->text(1), QStringLiteral("defect"));
-    EXPECT_TRUE(second->text(3).startsWith(QStringLiteral("B then A"))) << second->text(3).toStdString();
+    EXPECT_TRUE(second->text(3).startsWith(QStringLiteral("site 2: B then A"))) << second->text(3).toStdString();
     m_window->jumpTo(second);
     EXPECT_NEAR(0.5 * (m_window->plot()->from_s() + m_window->plot()->to_s()), 300.55, 1e-6);
     EXPECT_LE(m_window->plot()->to_s() - m_window->plot()->from_s(), 2.0 + 1e-9);
@@ -242,6 +242,9 @@ TEST_F(ReviewWindowTest, ReanalysisFindsWhatTheCliFindsAndSavesBesideTheRecorded
     EXPECT_EQ(list->topLevelItemCount(), 3 + expected.size());
     const auto recorded = list->findItems(QStringLiteral("recorded"), Qt::MatchExactly, 2);
     ASSERT_EQ(recorded.size(), 3);
+    // Defects are named by their site (these two, without a speed, are not placed along the stroke).
+    EXPECT_TRUE(recorded.front()->text(3).startsWith(QStringLiteral("site 1: A then B")))
+        << recorded.front()->text(3).toStdString();
     m_window->jumpTo(recorded.front());
     m_window->plot()->reload();  // what the next event-loop turn reads
     tactiscope::testing::saveScreenshot(*m_window, QStringLiteral("review-window"));

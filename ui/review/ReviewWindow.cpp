@@ -5,6 +5,7 @@
 #include "ui/VerdictDialog.h"
 #include "ui/VocabularyText.h"
 
+#include "core/detector/DefectSites.h"
 #include "core/report/PressTable.h"
 #include "core/report/ReportData.h"
 #include "core/report/VerdictTrail.h"
@@ -81,6 +82,22 @@ QString eventDetails(const core::storage::SessionEvent& e)
     if (e.speed_m_per_s) parts << QObject::tr("%1 mm/s").arg(*e.speed_m_per_s * 1e3, 0, 'f', 0);
     parts << QObject::tr("%1 s long").arg(e.end_s - e.start_s, 0, 'f', 3);
     return parts.join(QStringLiteral(", "));
+}
+
+// Each defect's site ("site 2 (+31 mm)"), by its index among the defects:
+// a reciprocating scan crosses one defect again and again.
+std::vector<QString> siteTexts(const std::vector<core::detector::DefectEvent>& defects)
+{
+    std::vector<QString> texts(defects.size());
+    const auto grouping = core::detector::scanSites(defects);
+    for (std::size_t k = 0; k < grouping.sites.size(); ++k) {
+        const auto& site = grouping.sites[k];
+        const QString text = site.position_m
+                                 ? QObject::tr("site %1 (%2 mm)").arg(k + 1).arg(*site.position_m * 1e3, 0, 'f', 0)
+                                 : QObject::tr("site %1").arg(k + 1);
+        for (const std::size_t i : site.crossings) texts[i] = text;
+    }
+    return texts;
 }
 
 QString readingDetails(const core::storage::SessionReading& r)
@@ -438,17 +455,25 @@ void ReviewWindow::refreshRecords()
     std::vector<MarkerSpan> spans;
     std::vector<Entry> entries;
     try {
-        for (const auto& e : m_store->events(m_session.id)) {
+        const auto recorded = m_store->events(m_session.id);
+        const auto sites = siteTexts(core::storage::defectEventsOf(recorded));
+        std::size_t defect = 0;
+        for (const auto& e : recorded) {
             spans.push_back({e.start_s, e.end_s, 0, eventColour(e)});
-            entries.push_back({e.start_s, e.end_s, wordText(e.kind), tr("recorded"), eventDetails(e)});
+            QString details = eventDetails(e);
+            if (e.kind == core::EventKind::Defect) details = sites[defect++] + QStringLiteral(": ") + details;
+            entries.push_back({e.start_s, e.end_s, wordText(e.kind), tr("recorded"), details});
         }
         if (m_reanalysis) {
             rows << tr("Re-analysis");
             const int row = static_cast<int>(rows.size()) - 1;
-            for (const auto& d : m_reanalysis->unsavedEvents()) {
-                const auto e = core::storage::defectRecord(d);
+            const auto unsaved = m_reanalysis->unsavedEvents();
+            const auto unsavedSites = siteTexts(unsaved);
+            for (std::size_t i = 0; i < unsaved.size(); ++i) {
+                const auto e = core::storage::defectRecord(unsaved[i]);
                 spans.push_back({e.start_s, e.end_s, row, eventColour(e)});
-                entries.push_back({e.start_s, e.end_s, tr("defect"), tr("re-analysis"), eventDetails(e)});
+                entries.push_back({e.start_s, e.end_s, tr("defect"), tr("re-analysis"),
+                                   unsavedSites[i] + QStringLiteral(": ") + eventDetails(e)});
             }
         }
         std::vector<PressesPanel::Source> pressSources;
@@ -464,9 +489,15 @@ void ReviewWindow::refreshRecords()
             rows << text(analysis);
             const int row = static_cast<int>(rows.size()) - 1;
             const QString source = tr("saved \"%1\"").arg(text(analysis));
-            for (const auto& e : m_store->events(m_session.id, analysis)) {
+            const auto events = m_store->events(m_session.id, analysis);
+            const auto eventSites = siteTexts(core::storage::defectEventsOf(events));
+            std::size_t crossing = 0;
+            for (const auto& e : events) {
                 spans.push_back({e.start_s, e.end_s, row, eventColour(e)});
-                entries.push_back({e.start_s, e.end_s, wordText(e.kind), source, eventDetails(e)});
+                QString details = eventDetails(e);
+                if (e.kind == core::EventKind::Defect)
+                    details = eventSites[crossing++] + QStringLiteral(": ") + details;
+                entries.push_back({e.start_s, e.end_s, wordText(e.kind), source, details});
             }
             const auto readings = m_store->readings(m_session.id, analysis);
             for (const auto& r : readings) {
