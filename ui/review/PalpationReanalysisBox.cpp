@@ -2,14 +2,13 @@
 #include "ui/review/PalpationReanalysisBox.h"
 
 #include "ui/ProfileLibrary.h"
+#include "ui/review/AnalysisName.h"
 
 #include "core/sensors/BuiltInProfiles.h"
 
 #include <QComboBox>
-#include <QDateTime>
 #include <QFormLayout>
 #include <QHBoxLayout>
-#include <QInputDialog>
 #include <QLabel>
 #include <QPushButton>
 
@@ -135,12 +134,9 @@ QString PalpationReanalysisBox::saveAs(const QString& name)
 {
     const QString trimmed = name.trimmed();
     if (!m_result || m_saved) return tr("Read the presses again first: this result is saved already.");
-    if (trimmed.isEmpty() || trimmed == QLatin1String(core::storage::kLiveAnalysis))
-        return tr("The analysis needs a name other than \"live\".");
     try {
-        const auto existing = m_store.analyses(m_session.id);
-        if (std::ranges::find(existing, trimmed.toStdString()) != existing.end())
-            return tr("The session already has an analysis named \"%1\".").arg(trimmed);
+        if (const QString problem = analysisNameProblem(m_store, m_session.id, trimmed); !problem.isEmpty())
+            return problem;
         auto readings = m_result->readings;
         for (auto& reading : readings) reading.analysis = trimmed.toStdString();
         m_store.addReadings(m_session.id, readings);
@@ -156,18 +152,10 @@ QString PalpationReanalysisBox::saveAs(const QString& name)
 
 void PalpationReanalysisBox::askNameAndSave()
 {
-    auto* dialog = new QInputDialog(this);
-    dialog->setObjectName(QStringLiteral("analysisNameDialog"));
-    dialog->setWindowTitle(tr("Save the re-analysis"));
-    dialog->setLabelText(tr("Name of the analysis (the recorded readings stay as they are):"));
-    dialog->setTextValue(
-        tr("review %1").arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"))));
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(dialog, &QInputDialog::textValueSelected, this, [this](const QString& name) {
+    askAnalysisName(this, tr("the recorded readings"), [this](const QString& name) {
         const QString error = saveAs(name);
         if (!error.isEmpty()) m_status->setText(error);
     });
-    dialog->open();
 }
 
 }  // namespace tactiscope::ui

@@ -1,15 +1,15 @@
 // ReanalysisPanel: detector parameters, the worker run, saving the result.
 #include "ui/review/ReanalysisPanel.h"
 
+#include "ui/review/AnalysisName.h"
+
 #include "core/storage/DefectRecords.h"
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDateTime>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
-#include <QInputDialog>
 #include <QLabel>
 #include <QPushButton>
 #include <QShortcut>
@@ -227,12 +227,9 @@ QString ReanalysisPanel::saveAs(const QString& name)
 {
     const QString trimmed = name.trimmed();
     if (!m_hasResult || m_saved) return tr("Run the re-analysis first: this result is saved already.");
-    if (trimmed.isEmpty() || trimmed == QLatin1String(core::storage::kLiveAnalysis))
-        return tr("The analysis needs a name other than \"live\".");
     try {
-        const auto existing = m_store.analyses(m_session.id);
-        if (std::ranges::find(existing, trimmed.toStdString()) != existing.end())
-            return tr("The session already has an analysis named \"%1\".").arg(trimmed);
+        if (const QString problem = analysisNameProblem(m_store, m_session.id, trimmed); !problem.isEmpty())
+            return problem;
         m_store.addEvents(m_session.id, core::storage::defectRecords(m_events, trimmed.toStdString()));
     } catch (const core::storage::StorageError& e) {
         return tr("The analysis was not saved: %1").arg(QString::fromStdString(e.what()));
@@ -246,18 +243,10 @@ QString ReanalysisPanel::saveAs(const QString& name)
 
 void ReanalysisPanel::askNameAndSave()
 {
-    auto* dialog = new QInputDialog(this);
-    dialog->setObjectName(QStringLiteral("analysisNameDialog"));
-    dialog->setWindowTitle(tr("Save the re-analysis"));
-    dialog->setLabelText(tr("Name of the analysis (the recorded events stay as they are):"));
-    dialog->setTextValue(
-        tr("review %1").arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"))));
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(dialog, &QInputDialog::textValueSelected, this, [this](const QString& name) {
+    askAnalysisName(this, tr("the recorded events"), [this](const QString& name) {
         const QString error = saveAs(name);
         if (!error.isEmpty()) m_status->setText(error);
     });
-    dialog->open();
 }
 
 }  // namespace tactiscope::ui
