@@ -1,6 +1,8 @@
 // Display scaling per channel kind.
 #include "ui/DisplayUnits.h"
 
+#include "core/text/UncertaintyFormat.h"
+
 #include <QLocale>
 #include <QObject>
 
@@ -66,7 +68,7 @@ DisplayUnit laneUnit(const core::ChannelDescriptor& lane, core::Mode mode)
 
 int decimalsFor(double standardError)
 {
-    return standardError > 0.0 ? std::clamp(1 - static_cast<int>(std::floor(std::log10(standardError))), 0, 2) : 0;
+    return core::text::uncertaintyDecimals(standardError, 6);
 }
 
 std::pair<QString, QString> valueAndErrorTexts(double value, double standardError)

@@ -45,8 +45,8 @@ DisplayUnit displayUnitFor(const core::ChannelDescriptor& channel);
 // low; the readout and the report name the quantity in full.
 DisplayUnit laneUnit(const core::ChannelDescriptor& lane, core::Mode mode);
 // A value and its standard error as a reader takes them: the error to two
-// significant digits (at most two decimals), the value to the same decimal
-// place; no error, no decimals.
+// significant digits (core::text::uncertaintyDecimals, at most six
+// decimals), the value to the same decimal place; no error, no decimals.
 std::pair<QString, QString> valueAndErrorTexts(double value, double standardError);
 int decimalsFor(double standardError);  // the decimals of both
 

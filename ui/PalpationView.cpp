@@ -79,7 +79,7 @@ PalpationView::PalpationView(QWidget* parent)
     m_scale->setTissues(builtInTissues());
 
     m_presses->setHorizontalHeaderLabels(
-        {tr("Time (s)"), tr("k_o (N/m)"), tr("± SE"), tr("Depth (mm)"), tr("Slope"), tr("Site")});
+        {tr("Time (s)"), tr("k_o (N/m)"), tr("± u"), tr("Depth (mm)"), tr("Slope"), tr("Site")});
     m_presses->horizontalHeaderItem(4)->setToolTip(
         tr("Change of k_o per mm pressed, in N/m per mm: near zero when the reading does not depend on the depth"));
     m_presses->verticalHeader()->hide();
@@ -177,7 +177,7 @@ void PalpationView::showPresses(const std::vector<devices::session::PressRecord>
         m_presses->insertRow(row);
         const QString outOfRange =
             press.stiffness.range == core::sensors::ComplianceRange::Below ? tr("below range") : tr("above range");
-        const auto [kText, seText] = valueAndErrorTexts(k, press.standardError_n_per_m);
+        const auto [kText, seText] = valueAndErrorTexts(k, press.uncertainty_n_per_m());
         const QStringList cells{locale.toString(press.start_s, 'f', 1),
                                 inRange ? kText : outOfRange,
                                 inRange ? seText : tr("—"),
@@ -188,9 +188,9 @@ void PalpationView::showPresses(const std::vector<devices::session::PressRecord>
                                 site.isEmpty() ? tr("—") : site};
         for (int c = 0; c < cells.size(); ++c) m_presses->setItem(row, c, new QTableWidgetItem(cells[c]));
         if (inRange) {
-            m_stiffness->setText(stiffnessText(k, press.standardError_n_per_m));
+            m_stiffness->setText(stiffnessText(k, press.uncertainty_n_per_m()));
             m_scale->setReading(k);
-            if (m_grid->isActive()) m_grid->place(k, press.standardError_n_per_m);
+            if (m_grid->isActive()) m_grid->place(k, press.uncertainty_n_per_m());
         } else {
             m_stiffness->setText(outOfRange);
             m_scale->setReading(std::nullopt);

@@ -88,7 +88,7 @@ int runModel(const QStringList& arguments)
         }
         if (objectStiffness) {
             json.key("q").value(pair.forceRatio(*objectStiffness));
-            json.key("dq_dk").value(pair.sensitivity_m_per_n(*objectStiffness));
+            json.key("dq_dk_m_per_n").value(pair.sensitivity_m_per_n(*objectStiffness));
         }
     } else if (const auto* capacitiveProfile = std::get_if<CapacitiveBeamProfile>(&profile)) {
         if (q || objectStiffness) {
@@ -103,8 +103,8 @@ int runModel(const QStringList& arguments)
         json.key("force_sensitivity_pf_per_mn").value(beam.capacitancePerNewton_f_per_n() * 1e9);
         json.key("displacement_sensitivity_pf_per_mm").value(beam.capacitancePerMetre_f_per_m() * 1e9);
         json.key("neutral_axis_m").value(beam.segment1().neutralAxis_m);
-        json.key("bending_stiffness_segment1_nm").value(beam.segment1().bendingStiffnessPerWidth_nm);
-        json.key("bending_stiffness_segment2_nm").value(beam.segment2().bendingStiffnessPerWidth_nm);
+        json.key("bending_stiffness_segment1_n_m").value(beam.segment1().bendingStiffnessPerWidth_n_m);
+        json.key("bending_stiffness_segment2_n_m").value(beam.segment2().bendingStiffnessPerWidth_n_m);
     }
     json.endObject();
     std::cout << json.str() << '\n';

@@ -3,6 +3,7 @@
 
 #include "CliSupport.h"
 #include "core/SampleBlock.h"
+#include "core/storage/SessionExport.h"
 #include "core/text/NumberFormat.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
@@ -25,11 +26,16 @@ QString scenarioList()
     return ids.join(QStringLiteral(", "));
 }
 
-// Streams the whole simulation into `out` as CSV.
-void writeCsv(devices::simulator::SimulatorSource& source, std::ostream& out)
+// Streams the whole simulation into `out` as CSV: units in the header, as
+// a session export writes them, and the load a calibration scenario
+// applies as its last column (the researcher's log of the weights).
+void writeCsv(devices::simulator::SimulatorSource& source, const devices::simulator::SimulatedScenario& scenario,
+              std::ostream& out)
 {
-    std::string line = "t";
-    for (const auto& channel : source.channels()) line += ',' + channel.name;
+    const bool loads = scenario.appliedLoad_n(0.0).has_value();
+    std::string line = "t [s]";
+    for (const auto& channel : source.channels()) line += ',' + core::storage::csvHeader(channel);
+    if (loads) line += ",load [N]";
     out << line << '\n';
 
     const double rate_hz = source.nominalSampleRate_hz();
@@ -43,6 +49,11 @@ void writeCsv(devices::simulator::SimulatorSource& source, std::ostream& out)
                 line += ',';
                 core::text::appendShortest(line, block.value(c, i));
             }
+            if (loads) {
+                line += ',';
+                const double t_s = static_cast<double>(block.firstSampleIndex() + i) / rate_hz;
+                core::text::appendShortest(line, *scenario.appliedLoad_n(t_s));
+            }
             line += '\n';
             out << line;
         }
@@ -55,7 +66,9 @@ int runSimulate(const QStringList& arguments)
 {
     const QString name = QStringLiteral("simulate");
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Write a simulated recording as CSV."));
+    parser.setApplicationDescription(QStringLiteral(
+        "Write a simulated recording as CSV, units in the header (t [s], high [count], …); a scenario that "
+        "places loads adds the load it applies at each sample, load [N]."));
     const QCommandLineOption scenarioOption(
         QStringLiteral("scenario"),
         QStringLiteral("Scenario: %1 (default %2).")
@@ -88,11 +101,12 @@ int runSimulate(const QStringList& arguments)
     if (!scenario)
         return usageError(QStringLiteral("unknown scenario '%1' (known: %2)").arg(scenarioId, scenarioList()), usage);
 
+    const devices::simulator::SimulatedScenario& simulated = *scenario;  // owned by the source from here
     devices::simulator::SimulatorSource source(std::move(scenario),
                                                {devices::simulator::Pacing::AsFastAsPossible, 500, seconds});
 
     if (!parser.isSet(outputOption)) {
-        writeCsv(source, std::cout);
+        writeCsv(source, simulated, std::cout);
         std::cout.flush();
         if (!std::cout) {
             printError(QStringLiteral("cannot write to standard output"));
@@ -106,7 +120,7 @@ int runSimulate(const QStringList& arguments)
         printError(QStringLiteral("cannot create '%1': %2").arg(path, QString::fromLocal8Bit(std::strerror(errno))));
         return kExitFailure;
     }
-    writeCsv(source, file);
+    writeCsv(source, simulated, file);
     file.close();
     if (!file) {
         printError(QStringLiteral("cannot write '%1': %2").arg(path, QString::fromLocal8Bit(std::strerror(errno))));

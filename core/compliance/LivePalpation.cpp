@@ -32,11 +32,12 @@ LivePalpation::LivePalpation(const std::vector<ChannelDescriptor>& channels, dou
 {
 }
 
-void LivePalpation::setZero(std::uint64_t firstIndex, double rawHigh, double rawLow)
+void LivePalpation::setZero(std::uint64_t firstIndex, const RawZero& zero)
 {
-    m_forces.setZero(rawHigh, rawLow);
+    m_forces.setZero(zero);
+    m_reader.setZeroUncertainty(m_forces.zeroUncertainty());
     const std::lock_guard lock(m_mutex);
-    m_zero = ZeroChange{firstIndex, rawHigh, rawLow};
+    m_zero = ZeroChange{firstIndex, zero};
     m_zeroChanges.push_back(*m_zero);
 }
 
@@ -70,7 +71,8 @@ std::optional<std::string> LivePalpation::tare()
     if (moving > m_pressSettings.contactThreshold_n)
         return "the beams are moving (their force changed by " + milliNewtons(moving) +
                " mN in the last half second): hold the probe lifted and still, then tare";
-    m_pendingZero = {m_rawHigh.mean(), m_rawLow.mean()};
+    m_pendingZero = RawZero{m_rawHigh.mean(), m_rawLow.mean(),
+                            std::pair{m_rawHigh.standardErrorOfMean(), m_rawLow.standardErrorOfMean()}};
     return std::nullopt;
 }
 
@@ -78,7 +80,7 @@ void LivePalpation::consume(const SampleBlock& block)
 {
     if (block.empty()) return;
     const bool gap = m_nextIndex && block.firstSampleIndex() != *m_nextIndex;
-    std::optional<std::pair<double, double>> newZero;
+    std::optional<RawZero> newZero;
     {
         const std::lock_guard lock(m_mutex);
         newZero = std::exchange(m_pendingZero, std::nullopt);
@@ -94,12 +96,12 @@ void LivePalpation::consume(const SampleBlock& block)
     }
     m_nextIndex = block.endSampleIndex();
     // Drop a press in progress: it would be read across a gap or two zeros.
-    if (gap || newZero) m_reader = PressReader(m_forces.pair(), m_pressSettings);
-    if (newZero) setZero(block.firstSampleIndex(), newZero->first, newZero->second);
+    if (gap || newZero) m_reader.dropPress();
+    if (newZero) setZero(block.firstSampleIndex(), *newZero);
     // The first zero comes from samples without a gap: one a gap interrupted starts over.
     if (gap && m_tareCount < m_tareSamples) {
         m_tareCount = 0;
-        m_tareHigh = m_tareLow = 0.0;
+        m_tareHigh = m_tareLow = m_tareHighSquares = m_tareLowSquares = 0.0;
     }
 
     SampleBlock display(3, block.sampleCount(), block.t0_s(), block.dt_s(), block.firstSampleIndex(), block.sequence());
@@ -109,9 +111,9 @@ void LivePalpation::consume(const SampleBlock& block)
         if (m_tareCount < m_tareSamples) {
             m_tareHigh += high;
             m_tareLow += low;
-            if (++m_tareCount == m_tareSamples)
-                setZero(block.firstSampleIndex() + s + 1, m_tareHigh / static_cast<double>(m_tareSamples),
-                        m_tareLow / static_cast<double>(m_tareSamples));
+            m_tareHighSquares += high * high;
+            m_tareLowSquares += low * low;
+            if (++m_tareCount == m_tareSamples) setZero(block.firstSampleIndex() + s + 1, firstZero());
             for (std::size_t c = 0; c < 3; ++c) display.channel(c)[s] = kNaN;
             continue;
         }
@@ -139,6 +141,20 @@ void LivePalpation::consume(const SampleBlock& block)
     m_state.current = m_reader.current();
     m_readings.insert(m_readings.end(), m_completed.begin(), m_completed.end());
     m_completed.clear();
+}
+
+RawZero LivePalpation::firstZero() const
+{
+    const auto n = static_cast<double>(m_tareSamples);
+    // σ/√n of each beam's samples (n − 1), from the sums; none from one sample.
+    const auto standardError = [n](double sum, double squares) {
+        return n > 1.0 ? std::sqrt(std::max(0.0, squares - sum * sum / n) / (n - 1.0) / n) : 0.0;
+    };
+    RawZero zero{m_tareHigh / n, m_tareLow / n, std::nullopt};
+    if (n > 1.0)
+        zero.uncertainty =
+            std::pair{standardError(m_tareHigh, m_tareHighSquares), standardError(m_tareLow, m_tareLowSquares)};
+    return zero;
 }
 
 PalpationState LivePalpation::state() const

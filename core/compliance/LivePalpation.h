@@ -7,7 +7,9 @@
 // session's review and export run.
 //
 // Tare: the probe's zero is the mean of the first kTare_s of the stream (the
-// probe is lifted when a stream starts); while it is being taken no force is
+// probe is lifted when a stream starts), with the standard error of that
+// mean as its uncertainty (each press reading carries what it adds to the
+// reading's uncertainty); while it is being taken no force is
 // computed (the output is NaN). tare() is a rule, not a wish: it takes the
 // mean of the last kTare_s already seen as the new zero only when the probe
 // is not pressing and both beams stayed within the contact threshold over
@@ -36,8 +38,7 @@ namespace tactiscope::core::compliance {
 // A zero taken (the first, or a tare) and the first stream sample read on it.
 struct ZeroChange {
     std::uint64_t firstIndex = 0;
-    double rawHigh = 0.0;
-    double rawLow = 0.0;
+    RawZero zero;
 };
 
 // What the display shows between presses and while pressing.
@@ -82,7 +83,8 @@ public:
     std::vector<ZeroChange> takeZeroChanges();
 
 private:
-    void setZero(std::uint64_t firstIndex, double rawHigh, double rawLow);
+    void setZero(std::uint64_t firstIndex, const RawZero& zero);
+    RawZero firstZero() const;  // from the sums of the first kTare_s
 
     PalpationForces m_forces;  // acquisition thread, but for the constant parts
     PressSettings m_pressSettings;
@@ -95,15 +97,16 @@ private:
     // The last kTare_s without a gap: raw values for the zero, forces (on
     // the current zero) for judging it.
     signal::SteadyWindow m_rawHigh, m_rawLow, m_forceHigh, m_forceLow;
-    std::optional<std::pair<double, double>> m_pendingZero;  // raw high, low
+    std::optional<RawZero> m_pendingZero;
     std::optional<ZeroChange> m_zero;
     std::vector<ZeroChange> m_zeroChanges;
 
     // Acquisition thread only.
     PressReader m_reader;
     std::optional<std::uint64_t> m_nextIndex;
-    std::size_t m_tareCount = 0;  // samples of the zero so far
-    double m_tareHigh = 0.0, m_tareLow = 0.0;
+    std::size_t m_tareCount = 0;               // samples of the zero so far
+    double m_tareHigh = 0.0, m_tareLow = 0.0;  // sums and sums of squares of the first zero's samples
+    double m_tareHighSquares = 0.0, m_tareLowSquares = 0.0;
     std::vector<PressReading> m_completed;
 };
 

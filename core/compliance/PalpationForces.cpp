@@ -60,14 +60,17 @@ std::string basisText(const sensors::CompliancePairProfile& probe, const LivePal
     return "profile " + probe.name + "; stiff beam " + beam(true) + ", soft beam " + beam(false);
 }
 
-std::string zeroJson(double rawHigh, double rawLow)
+std::string zeroJson(const RawZero& zero)
 {
     text::JsonWriter json;
-    json.beginObject().key("high").value(rawHigh).key("low").value(rawLow).endObject();
+    json.beginObject().key("high").value(zero.high).key("low").value(zero.low);
+    if (zero.uncertainty)
+        json.key("high_u").value(zero.uncertainty->first).key("low_u").value(zero.uncertainty->second);
+    json.endObject();
     return json.str();
 }
 
-std::optional<std::pair<double, double>> zeroFromJson(const std::string& text)
+std::optional<RawZero> zeroFromJson(const std::string& text)
 {
     const auto json = nlohmann::json::parse(text, nullptr, false);
     const auto number = [&](const char* key) {
@@ -76,7 +79,10 @@ std::optional<std::pair<double, double>> zeroFromJson(const std::string& text)
     };
     const double high = number("high"), low = number("low");
     if (!std::isfinite(high) || !std::isfinite(low)) return std::nullopt;
-    return std::pair{high, low};
+    RawZero zero{high, low, std::nullopt};
+    const double highU = number("high_u"), lowU = number("low_u");
+    if (std::isfinite(highU) && std::isfinite(lowU)) zero.uncertainty = std::pair{highU, lowU};
+    return zero;
 }
 
 void PalpationForces::Input::setZero(double value)
@@ -122,11 +128,20 @@ std::optional<double> PalpationForces::gaugeFactor(bool highBeam) const
     return std::nullopt;
 }
 
-void PalpationForces::setZero(double rawHigh, double rawLow)
+void PalpationForces::setZero(const RawZero& zero)
 {
-    m_high.setZero(rawHigh);
-    m_low.setZero(rawLow);
-    m_zero = {rawHigh, rawLow};
+    m_high.setZero(zero.high);
+    m_low.setZero(zero.low);
+    m_zero = zero;
+}
+
+std::optional<ZeroUncertainty> PalpationForces::zeroUncertainty() const
+{
+    if (!m_zero || !m_zero->uncertainty) return std::nullopt;
+    // The force of a raw value one uncertainty off the zero (the forces are
+    // linear in the raw value but for the quarter bridge's tiny curvature).
+    return ZeroUncertainty{std::abs(forceHigh(m_zero->high + m_zero->uncertainty->first)),
+                           std::abs(forceLow(m_zero->low + m_zero->uncertainty->second))};
 }
 
 double PalpationForces::q(double forceHigh_n, double forceLow_n) const

@@ -51,10 +51,20 @@ LivePalpationSettings palpationSettings(const sensors::CompliancePairProfile& pr
 // gauge factor, calibrated or nominal.
 std::string basisText(const sensors::CompliancePairProfile& probe, const LivePalpationSettings& settings);
 
-// A zero as a session stores it (storage::SessionZero): {"high": …, "low": …},
-// raw values in the beams' channel units; and back (none when unreadable).
-std::string zeroJson(double rawHigh, double rawLow);
-std::optional<std::pair<double, double>> zeroFromJson(const std::string& json);
+// A zero: each beam's raw value with nothing pressed (the mean of a
+// window), and the standard uncertainty of that mean, σ/√n of the window
+// (white noise), in the same units; none when not known (older sessions).
+struct RawZero {
+    double high = 0.0;
+    double low = 0.0;
+    std::optional<std::pair<double, double>> uncertainty;  // high, low
+};
+
+// A zero as a session stores it (storage::SessionZero): {"high": …, "low": …,
+// "high_u": …, "low_u": …}, raw values in the beams' channel units; and back
+// (none when unreadable).
+std::string zeroJson(const RawZero& zero);
+std::optional<RawZero> zeroFromJson(const std::string& json);
 
 class PalpationForces {
 public:
@@ -72,8 +82,10 @@ public:
     std::optional<double> gaugeFactor(bool highBeam) const;
 
     // The zero: each beam's raw value with nothing pressed. No force before one is set.
-    void setZero(double rawHigh, double rawLow);
-    const std::optional<std::pair<double, double>>& zero() const { return m_zero; }
+    void setZero(const RawZero& zero);
+    const std::optional<RawZero>& zero() const { return m_zero; }
+    // The zero's uncertainty in each beam's force; none when not known.
+    std::optional<ZeroUncertainty> zeroUncertainty() const;
 
     // In N on the zero; NaN before there is one.
     double forceHigh(double raw) const { return m_zero ? m_high.force(m_pair.high(), raw) : kNaN; }
@@ -100,7 +112,7 @@ private:
     double m_contactThreshold_n;
     Input m_high, m_low;
     std::size_t m_displacement = 0;
-    std::optional<std::pair<double, double>> m_zero;
+    std::optional<RawZero> m_zero;
 };
 
 }  // namespace tactiscope::core::compliance

@@ -1,4 +1,4 @@
-// Iterative k·σ rejection.
+// One k·σ rejection, then the statistics of the kept values.
 #include "core/compliance/RobustMean.h"
 
 #include <cmath>
@@ -12,7 +12,7 @@ RobustMean robustMean(std::span<const double> values, double k, std::vector<bool
     if (!(k > 0.0)) throw std::invalid_argument("rejection limit must be positive");
     std::vector<bool> kept(values.size(), true);
     RobustMean result;
-    for (int round = 0; round < 20; ++round) {
+    for (int round = 0; round < 2; ++round) {  // statistics, cut; statistics of the kept
         double sum = 0.0;
         std::size_t n = 0;
         for (std::size_t i = 0; i < values.size(); ++i) {
@@ -28,14 +28,10 @@ RobustMean robustMean(std::span<const double> values, double k, std::vector<bool
         }
         const double sigma = n > 1 ? std::sqrt(squares / static_cast<double>(n - 1)) : 0.0;
         result = {mean, sigma, sigma / std::sqrt(static_cast<double>(n)), n, values.size() - n};
-        bool changed = false;
+        if (round == 1) break;
         for (std::size_t i = 0; i < values.size() && sigma > 0.0; ++i) {
-            if (kept[i] && std::abs(values[i] - mean) > k * sigma) {
-                kept[i] = false;
-                changed = true;
-            }
+            if (std::abs(values[i] - mean) > k * sigma) kept[i] = false;
         }
-        if (!changed) break;
     }
     if (keptOut) *keptOut = kept;
     return result;

@@ -1,8 +1,8 @@
 // Mean with outlier rejection as the paper does it ("all readings more than
-// three standard deviations from the mean value were rejected"), iterated:
-// after a rejection the mean and σ change, so the test is repeated on the
-// kept values until nothing more is rejected (at most 20 rounds, which a
-// pathological sample could otherwise exceed).
+// three standard deviations from the mean value were rejected"): once. The
+// mean, σ and standard error are then those of the kept values. Repeating
+// the cut until nothing more goes would trim the tails of plain Gaussian
+// noise round after round (and bias σ low), which the paper does not do.
 #pragma once
 
 #include <cstddef>

@@ -34,43 +34,122 @@ std::optional<StepReading> StepReader::push(double forceHigh_n, double forceLow_
     return reading;
 }
 
+namespace {
+
+// Q = ΣF_H/ΣF_L over the samples marked, and its standard error from the
+// residuals F_H − Q·F_L (the sums' noise over ΣF_L).
+struct ForceRatio {
+    double q = 0.0;
+    double standardError = 0.0;
+    double residualSigma_n = 0.0;  // of one pair's F_H − Q·F_L
+    double meanLow_n = 0.0;
+    std::size_t count = 0;
+};
+
+ForceRatio forceRatio(double sumHigh, double sumLow, double sumSquaredResiduals, std::size_t count)
+{
+    ForceRatio ratio;
+    ratio.count = count;
+    if (count == 0 || !(sumLow > 0.0)) return ratio;
+    const auto n = static_cast<double>(count);
+    ratio.q = sumHigh / sumLow;
+    ratio.meanLow_n = sumLow / n;
+    if (count > 1) {
+        ratio.residualSigma_n = std::sqrt(std::max(0.0, sumSquaredResiduals) / (n - 1.0));
+        ratio.standardError = ratio.residualSigma_n * std::sqrt(n) / sumLow;
+    }
+    return ratio;
+}
+
+ForceRatio forceRatio(std::span<const double> high, std::span<const double> low, const std::vector<bool>& use)
+{
+    double sumHigh = 0.0, sumLow = 0.0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < high.size(); ++i) {
+        if (!use[i]) continue;
+        sumHigh += high[i];
+        sumLow += low[i];
+        ++count;
+    }
+    if (count == 0 || !(sumLow > 0.0)) return forceRatio(sumHigh, sumLow, 0.0, count);
+    const double q = sumHigh / sumLow;
+    double squares = 0.0;
+    for (std::size_t i = 0; i < high.size(); ++i) {
+        if (use[i]) squares += (high[i] - q * low[i]) * (high[i] - q * low[i]);
+    }
+    return forceRatio(sumHigh, sumLow, squares, count);
+}
+
+// The reading of a force ratio: k_o, its standard error and what a force
+// offset does to it (dk_o/dQ = 1/(dQ/dk_o), eq. 5).
+void readRatio(const sensors::CompliancePair& pair, const ForceRatio& ratio, std::optional<ZeroUncertainty> zero,
+               PressReading& r)
+{
+    r.q = ratio.q;
+    r.stiffness = pair.objectStiffness(ratio.q);
+    if (r.stiffness.range != sensors::ComplianceRange::InRange) return;
+    const double dkDq = 1.0 / pair.sensitivity_m_per_n(r.stiffness.objectStiffness_n_per_m);
+    r.standardError_n_per_m = dkDq * ratio.standardError;
+    r.offsetSensitivityHigh_per_m = dkDq / ratio.meanLow_n;
+    r.offsetSensitivityLow_per_m = -dkDq * ratio.q / ratio.meanLow_n;
+    if (zero)
+        r.zeroUncertainty_n_per_m =
+            std::hypot(r.offsetSensitivityHigh_per_m * zero->high_n, r.offsetSensitivityLow_per_m * zero->low_n);
+}
+
+}  // namespace
+
+double PressReading::uncertainty_n_per_m() const
+{
+    return std::hypot(standardError_n_per_m, zeroUncertainty_n_per_m.value_or(0.0));
+}
+
 PressReading readPress(const sensors::CompliancePair& pair, std::span<const double> displacement,
-                       std::span<const double> forceHigh, std::span<const double> forceLow)
+                       std::span<const double> forceHigh, std::span<const double> forceLow,
+                       std::optional<ZeroUncertainty> zero)
 {
     if (displacement.empty() || displacement.size() != forceHigh.size() || forceHigh.size() != forceLow.size())
         throw std::invalid_argument("a press needs equal, non-empty series of displacement and forces");
-    std::vector<double> stiffness, where;
-    std::size_t below = 0, above = 0;
+    std::vector<bool> use(displacement.size(), false);
+    std::size_t below = 0, above = 0, inRange = 0;
     for (std::size_t i = 0; i < displacement.size(); ++i) {
         const sensors::StiffnessReading k = pair.objectStiffness(forceHigh[i] / forceLow[i]);
         if (k.range == sensors::ComplianceRange::InRange) {
-            stiffness.push_back(k.objectStiffness_n_per_m);
-            where.push_back(displacement[i]);
+            use[i] = true;
+            ++inRange;
         } else {
             ++(k.range == sensors::ComplianceRange::Below ? below : above);
         }
     }
     PressReading r;
     r.samplesOutOfRange = below + above;
-    if (stiffness.size() * 2 < displacement.size()) {
+    if (inRange * 2 < displacement.size()) {
         // Mostly out of range: no number, but which way it is out.
         r.stiffness.range = above > below ? sensors::ComplianceRange::Above : sensors::ComplianceRange::Below;
         return r;
     }
-    std::vector<bool> kept;
-    const RobustMean mean = robustMean(stiffness, 3.0, &kept);
-    r.stiffness = {sensors::ComplianceRange::InRange, mean.mean};
-    r.standardError_n_per_m = mean.standardError;
-    r.samplesUsed = mean.used;
-    r.samplesRejected = mean.rejected;
+    // One 3σ rejection on the residuals, then the ratio of the kept pairs.
+    const ForceRatio first = forceRatio(forceHigh, forceLow, use);
+    const double sigma = first.residualSigma_n;
+    for (std::size_t i = 0; i < use.size() && sigma > 0.0; ++i) {
+        if (use[i] && std::abs(forceHigh[i] - first.q * forceLow[i]) > 3.0 * sigma) {
+            use[i] = false;
+            ++r.samplesRejected;
+        }
+    }
+    const ForceRatio kept = forceRatio(forceHigh, forceLow, use);
+    r.samplesUsed = kept.count;
+    readRatio(pair, kept, zero, r);
+    if (r.stiffness.range != sensors::ComplianceRange::InRange) return r;
+
     // Range and slope over the kept samples only: a rejected spike must not
     // tilt the displacement check either.
     std::vector<double> keptStiffness, keptWhere;
-    for (std::size_t i = 0; i < stiffness.size(); ++i) {
-        if (kept[i]) {
-            keptStiffness.push_back(stiffness[i]);
-            keptWhere.push_back(where[i]);
-        }
+    for (std::size_t i = 0; i < use.size(); ++i) {
+        if (!use[i]) continue;
+        const sensors::StiffnessReading k = pair.objectStiffness(forceHigh[i] / forceLow[i]);
+        keptStiffness.push_back(k.objectStiffness_n_per_m);
+        keptWhere.push_back(displacement[i]);
     }
     const auto [lo, hi] = std::minmax_element(keptWhere.begin(), keptWhere.end());
     r.displacementMin_m = *lo;
@@ -104,23 +183,26 @@ std::optional<PressReading> PressReader::push(double t_s, double displacement_m,
         m_displacement.push_back(displacement_m);
         m_forceHigh.push_back(forceHigh_n);
         m_forceLow.push_back(forceLow_n);
-        const sensors::StiffnessReading k = m_pair.objectStiffness(forceHigh_n / forceLow_n);
-        if (k.range == sensors::ComplianceRange::InRange) {
-            ++m_count;
-            m_sum += k.objectStiffness_n_per_m;
-            m_sumSquares += k.objectStiffness_n_per_m * k.objectStiffness_n_per_m;
-        }
+        ++m_count;
+        m_sumHigh += forceHigh_n;
+        m_sumLow += forceLow_n;
+        m_sumHighHigh += forceHigh_n * forceHigh_n;
+        m_sumHighLow += forceHigh_n * forceLow_n;
+        m_sumLowLow += forceLow_n * forceLow_n;
     }
     return ended;
 }
 
 std::optional<std::pair<double, double>> PressReader::current() const
 {
-    if (!m_pressing || m_count < 2) return std::nullopt;
-    const auto n = static_cast<double>(m_count);
-    const double mean = m_sum / n;
-    const double variance = std::max(0.0, (m_sumSquares - n * mean * mean) / (n - 1.0));
-    return std::pair{mean, std::sqrt(variance / n)};
+    if (!m_pressing || m_count < 2 || !(m_sumLow > 0.0)) return std::nullopt;
+    const double q = m_sumHigh / m_sumLow;
+    // Σ(F_H − Q·F_L)² from the running sums.
+    const double residuals = m_sumHighHigh - 2.0 * q * m_sumHighLow + q * q * m_sumLowLow;
+    PressReading r;
+    readRatio(m_pair, forceRatio(m_sumHigh, m_sumLow, residuals, m_count), std::nullopt, r);
+    if (r.stiffness.range != sensors::ComplianceRange::InRange) return std::nullopt;
+    return std::pair{r.stiffness.objectStiffness_n_per_m, r.standardError_n_per_m};
 }
 
 std::optional<PressReading> PressReader::finish()
@@ -133,26 +215,35 @@ std::optional<PressReading> PressReader::close()
     m_pressing = false;
     std::optional<PressReading> result;
     if (m_displacement.size() >= m_settings.minimumSamples) {
-        result = readPress(m_pair, m_displacement, m_forceHigh, m_forceLow);
+        result = readPress(m_pair, m_displacement, m_forceHigh, m_forceLow, m_zero);
         result->start_s = m_start_s;
         result->end_s = m_last_s;
     }
+    dropPress();
+    return result;
+}
+
+void PressReader::dropPress()
+{
+    m_pressing = false;
     m_displacement.clear();
     m_forceHigh.clear();
     m_forceLow.clear();
     m_count = 0;
-    m_sum = m_sumSquares = 0.0;
-    return result;
+    m_sumHigh = m_sumLow = m_sumHighHigh = m_sumHighLow = m_sumLowLow = 0.0;
 }
 
 std::string pressDetailsJson(const PressReading& reading)
 {
     text::JsonWriter json;
     json.beginObject();
+    json.key("q").value(reading.q);
+    json.key("noise_standard_error_n_per_m").value(reading.standardError_n_per_m);
+    if (reading.zeroUncertainty_n_per_m) json.key("zero_uncertainty_n_per_m").value(*reading.zeroUncertainty_n_per_m);
     json.key("displacement_min_m").value(reading.displacementMin_m);
     json.key("displacement_max_m").value(reading.displacementMax_m);
     json.key("displacement_slope_n_per_m_per_m").value(reading.displacementSlope_n_per_m_per_m);
-    json.key("displacement_slope_standard_error").value(reading.displacementSlopeStandardError);
+    json.key("displacement_slope_standard_error_n_per_m_per_m").value(reading.displacementSlopeStandardError);
     json.key("samples_used").value(static_cast<long long>(reading.samplesUsed));
     json.key("samples_rejected").value(static_cast<long long>(reading.samplesRejected));
     json.key("samples_out_of_range").value(static_cast<long long>(reading.samplesOutOfRange));

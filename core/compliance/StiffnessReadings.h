@@ -3,16 +3,30 @@
 //
 // Step mode (the paper's procedure): hold the probe at one displacement,
 // collect N readings of both forces (default 1000), reject each force's
-// readings beyond 3σ, and compute Q and k_o from the two robust means.
+// readings beyond 3σ once, and compute Q and k_o from the two means.
 //
 // Press mode (a hand-held probe): a press starts when both forces exceed the
 // contact threshold and ends when either falls below half of it (the
 // hysteresis keeps a trembling hand from splitting one press into many).
-// During the press k_o is computed for every sample; at the end the reading
-// is the robust mean of those values with its standard error, the
-// displacement range covered, and the slope of k_o against displacement —
-// near zero if, as the method promises, the reading does not depend on how
-// far the probe was pressed.
+// The press's Q is the ratio of its summed forces, ΣF_H/ΣF_L: the force
+// noise is the same at every depth, so each sample weighs by its force,
+// where a mean of per-sample k_o would weigh the shallow samples — whose k_o
+// is mostly noise — as much as the deep ones (and a 3σ cut on those would
+// reject the shallow end of every press). Pairs whose residual
+// F_H − Q·F_L lies beyond 3σ are rejected once, as the paper rejects its
+// readings. The reading carries the displacement range covered and the
+// slope of per-sample k_o against displacement — near zero if, as the
+// method promises, the reading does not depend on how far the probe was
+// pressed.
+//
+// Uncertainty: the standard error from the residuals' scatter (white force
+// noise), and, when the zero's own uncertainty is known, the part a zero
+// error adds: an offset δ in a force shifts every sample of the press alike,
+// so it does not average away. k_o moves by (dk_o/dQ)·δ/F̄_L for an offset of
+// F_H and by −(dk_o/dQ)·Q·δ/F̄_L for one of F_L (F̄_L the press's mean soft
+// force); the combined standard uncertainty adds both parts in quadrature
+// with the noise. Systematic terms of the beam model (E, t³, L³) are not in
+// it: docs/compliance.md states them.
 #pragma once
 
 #include "core/compliance/RobustMean.h"
@@ -48,14 +62,24 @@ private:
     std::vector<double> m_high, m_low;
 };
 
+// The standard uncertainty of a zero in each beam's force, N.
+struct ZeroUncertainty {
+    double high_n = 0.0;
+    double low_n = 0.0;
+};
+
 struct PressReading {
     double start_s = 0.0;
     double end_s = 0.0;
-    // In range: the robust mean of the press's per-sample stiffness.
+    // In range: k_o of the press's force ratio ΣF_H/ΣF_L.
     sensors::StiffnessReading stiffness;
-    double standardError_n_per_m = 0.0;
+    double q = 0.0;
+    double standardError_n_per_m = 0.0;             // from the noise of the forces
+    std::optional<double> zeroUncertainty_n_per_m;  // from the zero's; none when it is not known
+    double offsetSensitivityHigh_per_m = 0.0;       // dk_o per N of offset in F_H, N/m per N
+    double offsetSensitivityLow_per_m = 0.0;        // the same for F_L
     std::size_t samplesUsed = 0;
-    std::size_t samplesRejected = 0;    // beyond 3σ
+    std::size_t samplesRejected = 0;    // residual beyond 3σ
     std::size_t samplesOutOfRange = 0;  // Q ≤ 1 or Q ≥ k_h/k_l at that sample
     // When most samples were out of range, stiffness.range says which way.
     double displacementMin_m = 0.0;
@@ -63,20 +87,25 @@ struct PressReading {
     // d(k_o)/d(displacement) over the press and its standard error.
     double displacementSlope_n_per_m_per_m = 0.0;
     double displacementSlopeStandardError = 0.0;
+
+    // The combined standard uncertainty: noise and, when known, the zero.
+    double uncertainty_n_per_m() const;
 };
 
-// The reading of samples that all belong to one press: per-sample k_o from
-// the force ratio, the robust mean of those in range, the displacement range
-// and the slope of k_o against displacement. When most samples are out of
-// range, the reading is that state instead of a number. Spans of equal
-// length; throws std::invalid_argument when they differ or are empty.
+// The reading of samples that all belong to one press (see above). When
+// most samples are out of range, the reading is that state instead of a
+// number. Spans of equal length; throws std::invalid_argument when they
+// differ or are empty.
 PressReading readPress(const sensors::CompliancePair& pair, std::span<const double> displacement_m,
-                       std::span<const double> forceHigh_n, std::span<const double> forceLow_n);
+                       std::span<const double> forceHigh_n, std::span<const double> forceLow_n,
+                       std::optional<ZeroUncertainty> zero = std::nullopt);
 
 // A press's details beyond its value, as one JSON object for the session
-// store: displacement_min_m, displacement_max_m,
-// displacement_slope_n_per_m_per_m, displacement_slope_standard_error,
-// samples_used, samples_rejected, samples_out_of_range.
+// store: q, noise_standard_error_n_per_m, zero_uncertainty_n_per_m (when
+// known), displacement_min_m, displacement_max_m,
+// displacement_slope_n_per_m_per_m,
+// displacement_slope_standard_error_n_per_m_per_m, samples_used,
+// samples_rejected, samples_out_of_range.
 std::string pressDetailsJson(const PressReading& reading);
 
 struct PressSettings {
@@ -95,9 +124,15 @@ public:
     std::optional<PressReading> push(double t_s, double displacement_m, double forceHigh_n, double forceLow_n);
     // Ends the stream: returns the reading of a press still in progress.
     std::optional<PressReading> finish();
+    // Drops a press in progress unread (a lost sample, a new zero).
+    void dropPress();
+    // The uncertainty of the zero the forces are read on, for the readings
+    // to come; none: not known.
+    void setZeroUncertainty(std::optional<ZeroUncertainty> zero) { m_zero = zero; }
 
     bool pressing() const { return m_pressing; }
-    // While pressing: the plain mean and standard error so far (for display).
+    // While pressing: k_o of the force ratio so far and its standard error
+    // (for display); none before two samples or out of range.
     std::optional<std::pair<double, double>> current() const;
 
 private:
@@ -105,14 +140,14 @@ private:
 
     sensors::CompliancePair m_pair;
     PressSettings m_settings;
+    std::optional<ZeroUncertainty> m_zero;
     bool m_pressing = false;
     double m_start_s = 0.0;
     double m_last_s = 0.0;
     std::vector<double> m_displacement, m_forceHigh, m_forceLow;
-    // Running sums of the in-range k_o, for current().
+    // Running sums of the press's forces, for current().
     std::size_t m_count = 0;
-    double m_sum = 0.0;
-    double m_sumSquares = 0.0;
+    double m_sumHigh = 0.0, m_sumLow = 0.0, m_sumHighHigh = 0.0, m_sumHighLow = 0.0, m_sumLowLow = 0.0;
 };
 
 }  // namespace tactiscope::core::compliance

@@ -51,7 +51,7 @@ PalpationChannels::PalpationChannels(storage::SessionStore& store, std::int64_t 
             throw storage::StorageError("a zero of session " + std::to_string(session) +
                                         " cannot be read; the store is damaged");
         const std::uint64_t end = z + 1 < zeros.size() ? zeros[z + 1].firstIndex : m_sampleCount;
-        m_spans.push_back({zeros[z].firstIndex, end, zero->first, zero->second});
+        m_spans.push_back({zeros[z].firstIndex, end, zero->high, zero->low});
     }
 }
 
@@ -69,7 +69,7 @@ const compliance::PalpationForces* PalpationChannels::forcesAt(std::uint64_t ind
     const auto span = std::ranges::find_if(m_spans, [&](const Span& s) { return index >= s.first && index < s.end; });
     if (span == m_spans.end()) return nullptr;
     m_current = &*span;
-    m_forces->setZero(span->rawHigh, span->rawLow);
+    m_forces->setZero({span->rawHigh, span->rawLow, std::nullopt});
     return m_forces.get();
 }
 

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "core/calibration/CalibrationRecord.h"
+#include "core/compliance/StiffnessReadings.h"
 #include "core/sensors/SensorProfile.h"
 #include "core/storage/SessionStore.h"
 
@@ -17,6 +18,42 @@
 #include <vector>
 
 namespace tactiscope::core::derived {
+
+// A palpation session's presses read by the live code over its stored
+// samples: on the zeros the recording took when it has them, else as the
+// live view takes its first zero — the mean of the first
+// LivePalpation::kTare_s, the probe lifted — for a recording made by
+// another program or the simulator and imported.
+struct PalpationPresses {
+    std::vector<compliance::PressReading> presses;  // in time order, out-of-range ones included
+    std::string basis;                              // the profile and gauge factors, in words
+    bool recordedZeros = false;                     // read on the recording's zeros
+};
+
+// Throws std::invalid_argument for channels the probe cannot read, a
+// session shorter than the first zero or with samples lost in it;
+// storage::StorageError.
+PalpationPresses readPalpationPresses(storage::SessionStore& store, std::int64_t session,
+                                      const sensors::CompliancePairProfile& probe,
+                                      const std::vector<calibration::CalibrationRecord>& calibrations);
+
+// Every sample of a palpation session with its forces in N, on the same
+// zeros as readPalpationPresses (for the paper's step reading).
+struct ForceSample {
+    double t_s = 0.0;
+    double displacement_m = 0.0;
+    double forceHigh_n = 0.0;
+    double forceLow_n = 0.0;
+};
+struct PalpationForceSamples {
+    std::vector<ForceSample> samples;  // in time order, lost ones left out
+    std::string basis;
+    bool recordedZeros = false;
+    double contactThreshold_n = 0.0;
+};
+PalpationForceSamples readPalpationForces(storage::SessionStore& store, std::int64_t session,
+                                          const sensors::CompliancePairProfile& probe,
+                                          const std::vector<calibration::CalibrationRecord>& calibrations);
 
 struct PalpationReanalysis {
     std::vector<storage::SessionReading> readings;  // as the recording stores them, analysis unset

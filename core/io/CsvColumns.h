@@ -25,7 +25,9 @@ struct CsvColumns {
 };
 
 // Reads the columns named in `wanted` (header names are trimmed of spaces
-// and double quotes). Blank lines are skipped. Every cell of a wanted column
+// and double quotes); "a" is also found as "a [strain]" or "t" as "t [s]":
+// a header that names an SI unit (s, m, N, F, strain, count) reads as
+// it is, one in another unit ("t [ms]") is refused. Blank lines are skipped. Every cell of a wanted column
 // must be a finite number. Throws CsvError for a missing or unreadable
 // file, an empty file, a header without data rows, a missing column, a row
 // with a different number of fields, or a bad cell.

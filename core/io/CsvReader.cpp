@@ -101,6 +101,19 @@ bool CsvReader::nextLine()
     return false;
 }
 
+ColumnHeader splitColumnHeader(const std::string& header)
+{
+    for (const auto& [open, close] : {std::pair{'[', ']'}, std::pair{'(', ')'}}) {
+        const auto at = header.rfind(open);
+        if (at != std::string::npos && at > 0 && header.back() == close) {
+            std::string name = header.substr(0, at);
+            while (!name.empty() && name.back() == ' ') name.pop_back();
+            return {name, header.substr(at + 1, header.size() - at - 2)};
+        }
+    }
+    return {header, ""};
+}
+
 std::size_t CsvReader::column(const std::string& name) const
 {
     for (std::size_t c = 0; c < m_header.size(); ++c) {

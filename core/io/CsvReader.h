@@ -56,6 +56,14 @@ private:
     std::vector<std::string> m_header;
 };
 
+// A column header's name and unit: "force [N]" and "force (N)" → force, N;
+// "a" → a and no unit.
+struct ColumnHeader {
+    std::string name;
+    std::string unit;
+};
+ColumnHeader splitColumnHeader(const std::string& header);
+
 // A file's text quoted for a message: at most 80 characters, so an error on
 // a 200 MB cell is one line, not the cell.
 std::string quotedForMessage(std::string_view text);

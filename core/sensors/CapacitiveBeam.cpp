@@ -49,7 +49,7 @@ double CapacitiveBeam::sheetStrainPerNewton() const
 {
     const auto& b = m_g.beam;
     return (m_segment1.neutralAxis_m - m_interface_m) * b.length_m /
-           (m_segment1.bendingStiffnessPerWidth_nm * b.rootWidth_m);
+           (m_segment1.bendingStiffnessPerWidth_n_m * b.rootWidth_m);
 }
 
 double CapacitiveBeam::capacitancePerNewton_f_per_n() const
@@ -67,8 +67,8 @@ double CapacitiveBeam::tipDeflectionPerNewton_m() const
     const auto& b = m_g.beam;
     const double a = b.sheetLengthRatio;
     const double l3 = b.length_m * b.length_m * b.length_m;
-    return (2.0 * a - a * a) * l3 / (2.0 * m_segment1.bendingStiffnessPerWidth_nm * b.rootWidth_m) +
-           (1.0 - a) * (1.0 - a) * l3 / (3.0 * m_segment2.bendingStiffnessPerWidth_nm * b.rootWidth_m);
+    return (2.0 * a - a * a) * l3 / (2.0 * m_segment1.bendingStiffnessPerWidth_n_m * b.rootWidth_m) +
+           (1.0 - a) * (1.0 - a) * l3 / (3.0 * m_segment2.bendingStiffnessPerWidth_n_m * b.rootWidth_m);
 }
 
 double CapacitiveBeam::stiffness_n_per_m() const

@@ -2,6 +2,7 @@
 #include "core/sensors/CompliancePair.h"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace tactiscope::core::sensors {
@@ -24,8 +25,12 @@ double CompliancePair::forceRatio(double k_o) const
 
 StiffnessReading CompliancePair::objectStiffness(double q) const
 {
-    if (!(q > 1.0)) return {ComplianceRange::Below, 0.0};  // also NaN
-    if (q >= qMax()) return {ComplianceRange::Above, 0.0};
+    // The ends of the range within rounding: k_h/k_l of the paper's probe
+    // computes as 27.000000000000004, and Q = 27 typed or measured would
+    // otherwise give k_o ≈ 10¹⁹ N/m from a denominator of rounding error.
+    constexpr double kRounding = 8.0 * std::numeric_limits<double>::epsilon();
+    if (!(q > 1.0 + kRounding)) return {ComplianceRange::Below, 0.0};  // also NaN
+    if (q >= qMax() * (1.0 - kRounding)) return {ComplianceRange::Above, 0.0};
     return {ComplianceRange::InRange, m_kh * m_kl * (1.0 - q) / (q * m_kl - m_kh)};
 }
 

@@ -6,7 +6,8 @@
 //   k_o = k_h·k_l·(1 − Q) / (Q·k_l − k_h).                       (eq. 2)
 // Q runs from 1 (k_o → 0) to k_h/k_l (k_o → ∞); outside (1, k_h/k_l) there is
 // no stiffness to report, and this class says so instead of returning a
-// negative or infinite number.
+// negative or infinite number. Q within rounding (8 ulp) of either end is
+// out of range too: there k_o is a quotient of rounding errors.
 #pragma once
 
 #include "core/sensors/CantileverBeam.h"
@@ -17,9 +18,9 @@
 namespace tactiscope::core::sensors {
 
 enum class ComplianceRange {
-    Below,    // Q ≤ 1: softer than the probe can tell from nothing
+    Below,    // Q ≤ 1 (within rounding): softer than the probe can tell from nothing
     InRange,  // 1 < Q < k_h/k_l
-    Above,    // Q ≥ k_h/k_l: stiffer than the probe can resolve
+    Above,    // Q ≥ k_h/k_l (within rounding): stiffer than the probe can resolve
 };
 
 struct StiffnessReading {

@@ -20,9 +20,9 @@ struct Layer {
 };
 
 struct SectionProperties {
-    double bendingStiffnessPerWidth_nm = 0.0;  // A
-    double neutralAxis_m = 0.0;                // z_N, from the bottom of the stack
-    double height_m = 0.0;                     // total thickness
+    double bendingStiffnessPerWidth_n_m = 0.0;  // A
+    double neutralAxis_m = 0.0;                 // z_N, from the bottom of the stack
+    double height_m = 0.0;                      // total thickness
 };
 
 // Throws std::invalid_argument for an empty stack or a non-positive layer.

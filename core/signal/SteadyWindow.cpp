@@ -55,6 +55,14 @@ double SteadyWindow::spread() const
     return *high - *low;
 }
 
+double SteadyWindow::standardErrorOfMean() const
+{
+    if (m_values.size() < 2) return 0.0;
+    const HalfStatistics all = statisticsOf(m_values.begin(), m_values.end());
+    const auto n = static_cast<double>(all.count);
+    return std::sqrt(all.sumSquares / (n - 1.0) / n);
+}
+
 double SteadyWindow::halfShift() const
 {
     if (m_values.size() < 4) return 0.0;

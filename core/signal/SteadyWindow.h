@@ -21,6 +21,8 @@ public:
 
     double mean() const;
     double spread() const;  // max − min
+    // σ/√n of the values (n − 1): the uncertainty of mean() for white noise.
+    double standardErrorOfMean() const;
     // The second half's mean minus the first half's.
     double halfShift() const;
     // |halfShift()| over its standard error from the scatter within the

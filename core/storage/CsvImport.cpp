@@ -26,23 +26,11 @@ using io::CsvReader;
 constexpr std::size_t kBlockRows = 4096;  // one chunk
 constexpr std::size_t kBatchBlocks = 16;  // one transaction
 
-struct NameAndUnit {
-    std::string name;
-    std::string unit;
-};
+using NameAndUnit = io::ColumnHeader;
 
-// "force [N]" or "force (N)" → force, N; "a" → a, "".
 NameAndUnit splitHeader(const std::string& header)
 {
-    for (const auto& [open, close] : {std::pair{'[', ']'}, std::pair{'(', ')'}}) {
-        const auto at = header.rfind(open);
-        if (at != std::string::npos && at > 0 && header.back() == close) {
-            std::string name = header.substr(0, at);
-            while (!name.empty() && name.back() == ' ') name.pop_back();
-            return {name, header.substr(at + 1, header.size() - at - 2)};
-        }
-    }
-    return {header, ""};
+    return io::splitColumnHeader(header);
 }
 
 std::string lower(std::string text)

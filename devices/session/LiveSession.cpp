@@ -151,7 +151,7 @@ std::optional<std::string> LiveSession::startRecording(const core::storage::Sess
     // index 0); those taken before were dropped above.
     if (m_palpation && m_metadata.mode == core::Mode::Palpation) {
         if (const auto zero = m_palpation->currentZero())
-            m_recorder->addZero(zero->firstIndex, core::compliance::zeroJson(zero->rawHigh, zero->rawLow));
+            m_recorder->addZero(zero->firstIndex, core::compliance::zeroJson(zero->zero));
     }
     if (m_capacitive && m_metadata.mode == core::Mode::Capacitive) {
         const auto baseline = m_capacitive->currentBaseline();
@@ -353,7 +353,7 @@ void LiveSession::takePresses()
             reading.start_s = m_recorder->sessionTimeOf(record.press.start_s);
             reading.end_s = m_recorder->sessionTimeOf(record.press.end_s);
             reading.value = record.press.stiffness.objectStiffness_n_per_m;
-            reading.standardError = record.press.standardError_n_per_m;
+            reading.standardError = record.press.uncertainty_n_per_m();
             reading.site = record.site;
             reading.detailsJson = core::compliance::pressDetailsJson(record.press);
             stored.push_back(std::move(reading));
@@ -372,7 +372,7 @@ void LiveSession::takeZeros()
     if (m_palpation) {
         for (const auto& zero : m_palpation->takeZeroChanges())
             if (recording(core::Mode::Palpation))
-                m_recorder->addZero(zero.firstIndex, core::compliance::zeroJson(zero.rawHigh, zero.rawLow));
+                m_recorder->addZero(zero.firstIndex, core::compliance::zeroJson(zero.zero));
     }
     if (m_capacitive) {
         for (const auto& baseline : m_capacitive->takeBaselineChanges())

@@ -70,6 +70,7 @@ public:
     double duration_s() const { return m_duration_s; }
     double loadAt_n(double t_s) const;
     std::shared_ptr<LoadRig> loadRig() const override { return m_rig; }
+    std::optional<double> appliedLoad_n(double t_s) const override { return loadAt_n(t_s); }
 
 private:
     CapacitiveWeightsParameters m_p;

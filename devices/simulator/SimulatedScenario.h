@@ -36,6 +36,11 @@ public:
     // The rig a calibration wizard places loads with; null for scenarios that
     // follow their own script.
     virtual std::shared_ptr<LoadRig> loadRig() const { return nullptr; }
+
+    // The load the script applies at t_s, in N, for a scenario that places
+    // loads (a calibration's weights): what a researcher logs beside the
+    // recording. None for the others.
+    virtual std::optional<double> appliedLoad_n(double /*t_s*/) const { return std::nullopt; }
 };
 
 }  // namespace tactiscope::devices::simulator

@@ -97,7 +97,7 @@ TEST(Cli, SimulateWritesADeterministicCsvOfTheScan)
 
     const QStringList lines = readLines(first);
     ASSERT_EQ(lines.size(), 1001);  // header + 2 s × 500 Hz
-    EXPECT_EQ(lines.front(), QStringLiteral("t,a,b"));
+    EXPECT_EQ(lines.front(), QStringLiteral("t [s],a [strain],b [strain]"));
     for (qsizetype i = 1; i < lines.size(); ++i) {
         const QStringList cells = lines[i].split(QLatin1Char(','));
         ASSERT_EQ(cells.size(), 3);
@@ -116,7 +116,7 @@ TEST(Cli, SimulateWritesToStandardOutputByDefault)
     EXPECT_EQ(run.exitCode, 0);
     const QStringList lines = run.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
     EXPECT_EQ(lines.size(), 51);
-    EXPECT_EQ(lines.front(), QStringLiteral("t,a,b"));
+    EXPECT_EQ(lines.front(), QStringLiteral("t [s],a [strain],b [strain]"));
 }
 
 TEST(Cli, SimulateFailsClearlyWhenTheOutputCannotBeCreated)

@@ -83,12 +83,17 @@ TEST_F(ComplianceCli, ModelOfTheCompliancePairWithQAndObjectStiffness)
     EXPECT_NEAR(o["q_max"].toDouble(), 27.0, 1e-12);
     EXPECT_NEAR(o["object_stiffness_n_per_m"].toDouble(), 117.0, 1e-9);  // Q(117) = 1620·177/(60·1737)
     EXPECT_NEAR(o["q"].toDouble(), 1620.0 * 177.0 / (60.0 * 1737.0), 1e-12);
-    EXPECT_NEAR(o["dq_dk"].toDouble(), 1620.0 * 1560.0 / (60.0 * 1737.0 * 1737.0), 1e-12);
+    EXPECT_NEAR(o["dq_dk_m_per_n"].toDouble(), 1620.0 * 1560.0 / (60.0 * 1737.0 * 1737.0), 1e-12);
 
     run = runCli({"model", path("pair.json"), "--q", "0.8"});
     EXPECT_EQ(json(run)["range"].toString(), "below");
     EXPECT_FALSE(json(run).contains("object_stiffness_n_per_m"));
     EXPECT_EQ(json(runCli({"model", path("pair.json"), "--q", "27.5"}))["range"].toString(), "above");
+    // k_h/k_l computes as 27.000000000000004: Q = 27 is the end of the
+    // range, not an object of 10¹⁹ N/m.
+    run = runCli({"model", path("pair.json"), "--q", "27"});
+    EXPECT_EQ(json(run)["range"].toString(), "above") << run.out.toStdString();
+    EXPECT_FALSE(json(run).contains("object_stiffness_n_per_m"));
 }
 
 TEST_F(ComplianceCli, ComplianceReadsThePressRejectsSpikesAndSkipsNoContact)
@@ -103,6 +108,9 @@ TEST_F(ComplianceCli, ComplianceReadsThePressRejectsSpikesAndSkipsNoContact)
     EXPECT_GE(o["rows_skipped"].toInt(), 20);
     EXPECT_NEAR(o["displacement_slope_n_per_m_per_m"].toDouble(), 0.0, 1.0);
     EXPECT_LT(o["standard_error_n_per_m"].toDouble(), 1e-6);
+    // Exact forces: said in words, not as "± 0.0".
+    const CliResult text = runCli({"compliance", path("pair.json"), path("press.csv")});
+    EXPECT_TRUE(text.out.startsWith("object stiffness: 174 N/m (no scatter)")) << text.out.toStdString();
 }
 
 TEST_F(ComplianceCli, PlacesTheReadingAgainstReferenceTissues)
@@ -139,7 +147,7 @@ TEST_F(ComplianceCli, BadProfilesAndReadingsExitWithCodeTwo)
         {{"compliance", path("specimen.json"), path("press.csv")}, "a compliance_pair profile is needed"},
         {{"compliance", path("pair.json"), path("nocolumn.csv")}, "no column 'force_low_n'"},
         {{"compliance", path("pair.json"), path("nocontact.csv")}, "no row has both forces above"},
-        {{"compliance", path("pair.json")}, "needs PROFILE.json and READINGS.csv"},
+        {{"compliance", path("pair.json")}, "needs PROFILE.json and RECORDING.csv"},
     };
     for (const auto& [arguments, message] : cases) {
         const CliResult run = runCli(arguments);

@@ -1,5 +1,5 @@
 // `tactiscope-cli report` speaks each mode's language: a palpation recorded
-// from the emulator lists its presses with site, k_o ± SE and depth (from
+// from the emulator lists its presses with site, k_o ± u and depth (from
 // the stored readings), sums the site up and draws the site map and the
 // tissue scale; a capacitive one recorded through a stored calibration
 // heads with its peak force and deflection instead of "No verdict
@@ -58,8 +58,8 @@ TEST(ModeReportsCli, APalpationReportListsItsPressesBySiteWithTheMapAndTheScale)
     EXPECT_TRUE(text.contains(QStringLiteral("Presses (%1)").arg(readings.size()))) << text.toStdString();
     for (const auto& r : readings) {
         ASSERT_TRUE(r.standardError);
-        // The SE to two significant digits (at most two decimals), the value to its decimal place.
-        const int decimals = std::clamp(1 - static_cast<int>(std::floor(std::log10(*r.standardError))), 0, 2);
+        // The uncertainty to two significant digits (at most six decimals), the value to its place.
+        const int decimals = std::clamp(1 - static_cast<int>(std::floor(std::log10(*r.standardError))), 0, 6);
         const QString value =
             locale.toString(r.value, 'f', decimals) + " ± " + locale.toString(*r.standardError, 'f', decimals);
         EXPECT_TRUE(text.contains(value)) << value.toStdString();

@@ -27,6 +27,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace tactiscope;
 using tactiscope::testing::child;
 using tactiscope::testing::liveSimulator;
@@ -109,9 +111,19 @@ TEST(PalpationView, PressesAreListedMappedStoredAndMatchTheCoreReading)
         zeroHigh += high[i] / tare;
         zeroLow += low[i] / tare;
     }
+    // Each zero's standard error, σ/√n of its half second, in counts.
+    double squaresHigh = 0.0, squaresLow = 0.0;
+    for (std::size_t i = 0; i < tare; ++i) {
+        squaresHigh += (high[i] - zeroHigh) * (high[i] - zeroHigh);
+        squaresLow += (low[i] - zeroLow) * (low[i] - zeroLow);
+    }
+    const double zeroHighU_counts = std::sqrt(squaresHigh / (tare - 1.0) / tare);
+    const double zeroLowU_counts = std::sqrt(squaresLow / (tare - 1.0) / tare);
     highChain.tare(zeroHigh);
     lowChain.tare(zeroLow);
     const core::sensors::CantileverBeam highBeam(p.high), lowBeam(p.low);
+    const double zeroHighU_n = highChain.strain(zeroHigh + zeroHighU_counts) / highBeam.rootStrainPerNewton();
+    const double zeroLowU_n = lowChain.strain(zeroLow + zeroLowU_counts) / lowBeam.rootStrainPerNewton();
     const core::sensors::CompliancePair pair(highBeam, lowBeam);
     for (const auto& stored : readings) {
         std::vector<double> x, fh, fl;
@@ -127,7 +139,20 @@ TEST(PalpationView, PressesAreListedMappedStoredAndMatchTheCoreReading)
         }
         const auto expected = core::compliance::readPress(pair, x, fh, fl);
         EXPECT_NEAR(stored.value, expected.stiffness.objectStiffness_n_per_m, 0.005 * stored.value) << stored.start_s;
-        EXPECT_NEAR(*stored.standardError, expected.standardError_n_per_m, 0.2 * expected.standardError_n_per_m);
+        // The stored uncertainty adds the zero's: an offset δ of F_H moves
+        // k_o by (dk/dQ)·δ/F̄_L, one of F_L by (dk/dQ)·Q·δ/F̄_L, with dk/dQ
+        // the inverse of eq. 5 (k_h = 1620, k_l = 60 N/m).
+        double sumHigh = 0.0, sumLow = 0.0;
+        for (std::size_t i = 0; i < fh.size(); ++i) {
+            sumHigh += fh[i];
+            sumLow += fl[i];
+        }
+        const double q = sumHigh / sumLow, meanLow = sumLow / static_cast<double>(fl.size());
+        const double k = stored.value;
+        const double dkDq = 60.0 * (k + 1620.0) * (k + 1620.0) / (1620.0 * (1620.0 - 60.0));
+        const double zeroPart = std::hypot(dkDq * zeroHighU_n / meanLow, dkDq * q * zeroLowU_n / meanLow);
+        const double combined = std::hypot(expected.standardError_n_per_m, zeroPart);
+        EXPECT_NEAR(*stored.standardError, combined, 0.2 * combined);
     }
 }
 

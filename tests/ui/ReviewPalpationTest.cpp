@@ -2,7 +2,7 @@
 // the physical quantities (F_H, F_L, Q, k_o, then the displacement), the
 // beams' counts are one click away and back, and zoomed on a press the
 // forces are what the derived channels give for those samples; its presses
-// are listed with site, k_o ± SE and depth, and summed up per site. A
+// are listed with site, k_o ± u and depth, and summed up per site. A
 // capacitive session opens on its capacitance, ΔC, force and deflection,
 // beside the calibration its readings went through.
 #include "ui/review/ReviewWindow.h"
@@ -81,9 +81,9 @@ TEST(ReviewPalpation, OpensOnTheForcesAndTheCountsAreOneClickAway)
         sum += r.value;
         EXPECT_EQ(row->text(1), "recorded");
         EXPECT_EQ(row->text(2), "B2");
-        // The SE to two significant digits (at most two decimals), the value to its decimal place.
+        // The uncertainty to two significant digits (at most six decimals), the value to its place.
         ASSERT_TRUE(r.standardError);
-        const int decimals = std::clamp(1 - static_cast<int>(std::floor(std::log10(*r.standardError))), 0, 2);
+        const int decimals = std::clamp(1 - static_cast<int>(std::floor(std::log10(*r.standardError))), 0, 6);
         EXPECT_EQ(row->text(3), QLocale().toString(r.value, 'f', decimals) + " ± " +
                                     QLocale().toString(*r.standardError, 'f', decimals));
         EXPECT_TRUE(row->text(4).contains(" – ")) << "a press has a depth range";

@@ -208,7 +208,7 @@ QString defectTables(const core::report::ReportData& data)
                         crossings);
 }
 
-// The presses (site, k_o ± SE, depth), each site's presses summed up
+// The presses (site, k_o ± u, depth), each site's presses summed up
 // (n, mean, SD, range), the grid map and the tissue scale with the sites'
 // means; the scale image is added to the document.
 QString palpationSection(const core::report::ReportData& data, QTextDocument& document)
@@ -226,9 +226,12 @@ QString palpationSection(const core::report::ReportData& data, QTextDocument& do
         html += QStringLiteral("<p>%1</p>")
                     .arg(QObject::tr("From the saved re-analysis \"%1\" (the recorded readings are in the session).")
                              .arg(text(data.analysis)));
-    html += table({QObject::tr("Time (s)"), QObject::tr("Site"), QObject::tr("k<sub>o</sub> ± SE (N/m)"),
+    html += table({QObject::tr("Time (s)"), QObject::tr("Site"), QObject::tr("k<sub>o</sub> ± u (N/m)"),
                    QObject::tr("Depth (mm)")},
                   rows);
+    html += QStringLiteral("<p>%1</p>")
+                .arg(QObject::tr("u: standard uncertainty from the force noise and the zero's uncertainty; the "
+                                 "beam model's systematic terms (E, t³, L³) are not in it."));
     const auto sites = core::report::siteSummaries(presses);
     if (!sites.empty()) {
         std::vector<QStringList> siteRows;

@@ -35,7 +35,7 @@ QTreeWidget* list(const QStringList& headers, const QString& name, QWidget* pare
 PressesPanel::PressesPanel(core::storage::SessionStore& store, const core::storage::SessionSummary& session,
                            QWidget* parent)
     : QGroupBox(tr("Presses"), parent),
-      m_presses(list({tr("Time (s)"), tr("Source"), tr("Site"), tr("kₒ ± SE (N/m)"), tr("Depth (mm)")},
+      m_presses(list({tr("Time (s)"), tr("Source"), tr("Site"), tr("kₒ ± u (N/m)"), tr("Depth (mm)")},
                      QStringLiteral("pressList"), this)),
       m_reanalysis(new PalpationReanalysisBox(store, session, this)),
       m_sites(list({tr("Site"), tr("n"), tr("Mean (N/m)"), tr("SD (N/m)"), tr("Range (N/m)")},

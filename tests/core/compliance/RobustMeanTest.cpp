@@ -1,4 +1,4 @@
-// Iterative 3σ rejection with planted outliers.
+// The paper's 3σ rejection, once, with planted outliers.
 #include "core/compliance/RobustMean.h"
 
 #include <gtest/gtest.h>
@@ -17,25 +17,29 @@ TEST(RobustMean, RejectsPlantedOutliersAndKeepsTheRest)
     for (std::size_t i = 0; i < 10; ++i) values[i * 97] = 20.0 + static_cast<double>(i);  // ten gross outliers
     const auto r = robustMean(values);
     EXPECT_GE(r.rejected, 10u);  // the ten at least
-    // Iterating trims a normal sample's tails a little each round (the kept
-    // values' σ shrinks), settling near 0.5 %: allow 1 % of the good values.
-    EXPECT_LE(r.rejected, 20u);
+    // The ten inflate the first σ (to about 1.5), so no good value lies
+    // beyond 3σ of it: one pass rejects exactly the planted ones.
+    EXPECT_EQ(r.rejected, 10u);
     EXPECT_NEAR(r.mean, 10.0, 0.02);
     EXPECT_NEAR(r.standardDeviation, 0.1, 0.01);
     EXPECT_NEAR(r.standardError, r.standardDeviation / std::sqrt(static_cast<double>(r.used)), 1e-15);
 }
 
-TEST(RobustMean, NeedsIterationWhenOneOutlierHidesAnother)
+TEST(RobustMean, RejectsOnceAsThePaperDoes)
 {
-    // 30 values at 0 and ±1, one at 8 and one at 60. The first pass's σ is
-    // inflated by 60 and keeps 8; only after 60 is gone does 8 stand out.
+    // 30 values at 0 and ±1, one at 8 and one at 60. The pass's σ is
+    // inflated by 60 (mean 2.13, σ 10.7), so 8 stays: the paper rejects
+    // once, and the mean and σ are those of the 31 kept values.
     std::vector<double> values;
     for (int i = 0; i < 10; ++i) values.insert(values.end(), {-1.0, 0.0, 1.0});
     values.push_back(8.0);
     values.push_back(60.0);
     const auto r = robustMean(values);
-    EXPECT_EQ(r.rejected, 2u);
-    EXPECT_NEAR(r.mean, 0.0, 1e-15);
+    EXPECT_EQ(r.rejected, 1u);
+    EXPECT_EQ(r.used, 31u);
+    EXPECT_NEAR(r.mean, 8.0 / 31.0, 1e-15);
+    // Σ(x − 8/31)² over the kept: 20 + 64 − 31·(8/31)² by hand.
+    EXPECT_NEAR(r.standardDeviation, std::sqrt((84.0 - 64.0 / 31.0) / 30.0), 1e-12);
 }
 
 TEST(RobustMean, SmallSamplesCannotRejectAnything)

@@ -5,6 +5,7 @@
 // column names were accepted; "inf" and 1e400 passed as numbers; an error
 // on a huge cell echoed all of it.
 #include "core/io/CsvReader.h"
+#include "core/io/CsvColumns.h"
 #include "support/TempDirectory.h"
 
 #include <gtest/gtest.h>
@@ -106,4 +107,21 @@ TEST_F(CsvReaderTest, AnErrorOnAHugeCellQuotesEightyCharacters)
     EXPECT_NE(error.find("'" + std::string(80, 'x') + "…' (2000000 characters) is not a number"), std::string::npos)
         << error.substr(0, 300);
     EXPECT_LT(error.size(), 300u);
+}
+
+TEST_F(CsvReaderTest, AColumnIsFoundUnderItsSIUnitAndRefusedUnderAnother)
+{
+    // The simulator and the exports write units into their headers; the
+    // commands that want "t" and "a" read them there, in SI only.
+    const auto columns = tactiscope::core::io::readCsvColumns(
+        write("t [s],a [strain],b\n0,1e-6,2e-6\n0.002,3e-6,4e-6\n"), {"t", "a", "b"});
+    ASSERT_EQ(columns.rowCount(), 2u);
+    EXPECT_EQ(columns.columns[0][1], 0.002);
+    EXPECT_EQ(columns.columns[1][1], 3e-6);
+    try {
+        tactiscope::core::io::readCsvColumns(write("t [ms],a\n0,1\n2,3\n"), {"t", "a"});
+        ADD_FAILURE() << "a time in ms read as seconds";
+    } catch (const CsvError& e) {
+        EXPECT_NE(std::string(e.what()).find("the column 't [ms]' is in 'ms'"), std::string::npos) << e.what();
+    }
 }

@@ -40,13 +40,13 @@ TEST(CapacitiveBeam, SegmentsAndTheSheetStrainFollowTheEquations)
 {
     const CapacitiveBeam beam(sensorNo1());
     // Segment 2 is the bare beam: A_2 = E·h³/12.
-    EXPECT_NEAR(beam.segment2().bendingStiffnessPerWidth_nm, 83e3 * 0.002368 * 0.002368 * 0.002368 / 12.0, 1e-15);
+    EXPECT_NEAR(beam.segment2().bendingStiffnessPerWidth_n_m, 83e3 * 0.002368 * 0.002368 * 0.002368 / 12.0, 1e-15);
     EXPECT_DOUBLE_EQ(beam.interface_m(), 0.000462 * 2 + 0.000015);  // z_U below three sheet layers
     // The neutral axis lies in the (much stiffer) beam, so the sheet stretches.
     EXPECT_GT(beam.segment1().neutralAxis_m, beam.interface_m());
     const auto& s1 = beam.segment1();
     EXPECT_NEAR(beam.sheetStrainPerNewton(),
-                (s1.neutralAxis_m - beam.interface_m()) * 0.015 / (s1.bendingStiffnessPerWidth_nm * 0.005), 1e-12);
+                (s1.neutralAxis_m - beam.interface_m()) * 0.015 / (s1.bendingStiffnessPerWidth_n_m * 0.005), 1e-12);
     EXPECT_NEAR(beam.capacitancePerNewton_f_per_n(), 51.44e-12 * beam.sheetStrainPerNewton(), 1e-24);
     // Eq. 31 is eq. 13 over eq. 28.
     EXPECT_NEAR(beam.capacitancePerMetre_f_per_m(),

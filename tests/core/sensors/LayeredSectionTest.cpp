@@ -12,8 +12,8 @@ TEST(LayeredSection, OneLayerIsTheRectangularSection)
 {
     const Layer layer[] = {{0.003, 2e9}};
     const auto s = sectionProperties(layer);
-    EXPECT_NEAR(s.bendingStiffnessPerWidth_nm, 2e9 * 0.003 * 0.003 * 0.003 / 12.0, 1e-12);  // E·h³/12
-    EXPECT_NEAR(s.neutralAxis_m, 0.0015, 1e-15);                                            // mid-thickness
+    EXPECT_NEAR(s.bendingStiffnessPerWidth_n_m, 2e9 * 0.003 * 0.003 * 0.003 / 12.0, 1e-12);  // E·h³/12
+    EXPECT_NEAR(s.neutralAxis_m, 0.0015, 1e-15);                                             // mid-thickness
     EXPECT_DOUBLE_EQ(s.height_m, 0.003);
 }
 
@@ -29,7 +29,7 @@ TEST(LayeredSection, TwoLayersMatchTheTransformedSectionMethod)
                      w2 * (0.002 - zN) * (0.002 - zN);
     const auto s = sectionProperties(layers);
     EXPECT_NEAR(s.neutralAxis_m, zN, 1e-15);
-    EXPECT_NEAR(s.bendingStiffnessPerWidth_nm, A, 1e-12 * A);
+    EXPECT_NEAR(s.bendingStiffnessPerWidth_n_m, A, 1e-12 * A);
     EXPECT_NEAR(A, 4.0119, 1e-4);  // by hand: 0.0833 + 1.6531 + 2 + 0.2755
 }
 
