@@ -2,6 +2,7 @@
 #include "support/CliRunner.h"
 
 #include <QFile>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
@@ -91,4 +92,111 @@ TEST(CapacitiveCli, BadReadingsExitWithCodeTwo)
         EXPECT_EQ(run.exitCode, 2) << arguments.join(' ').toStdString();
         EXPECT_TRUE(run.err.section('\n', 0, 0).contains(message)) << run.err.toStdString();
     }
+}
+
+namespace {
+
+// The simulator's cumulative protocol: the unloaded baseline, 10 … 150 mgf
+// stacked in 10 mgf steps, taken off again, and the baseline at the end.
+QString simulatorLoads()
+{
+    QStringList loads{"0"};
+    for (int mgf = 10; mgf <= 150; mgf += 10) loads << QString::number(mgf);
+    for (int mgf = 140; mgf >= 0; mgf -= 10) loads << QString::number(mgf);
+    return loads.join(',');
+}
+
+}  // namespace
+
+TEST(CapacitiveCli, TheSimulatorsRawRecordingCalibratesItsBeamAndItsDriftIsNotHysteresis)
+{
+    QTemporaryDir dir;
+    const QString csv = dir.filePath("c.csv");
+    ASSERT_EQ(runCli({"simulate", "--scenario", "capacitive-weights", "--seconds", "165", "--output", csv}).exitCode,
+              0);
+    const CliResult model =
+        runCli({"model", TACTISCOPE_SOURCE_DIR "/resources/profiles/capacitive-beam-paper-no1.json"});
+    const double beam_pf_per_mn = json(model)["force_sensitivity_pf_per_mn"].toDouble();
+    ASSERT_GT(beam_pf_per_mn, 1.0);
+
+    const CliResult run = runCli({"calibrate-capacitive", csv, "--json"});
+    ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
+    const QJsonObject o = json(run);
+    // The simulator's beam, plus its 1 % creep.
+    EXPECT_NEAR(o["sensitivity_pf_per_mn"].toDouble(), beam_pf_per_mn, 0.03 * beam_pf_per_mn);
+    // σ of the first baseline alone: the simulator's 0.004 pF of noise, not
+    // the drift between the two baselines (0.0005 pF/s over 155 s).
+    EXPECT_NEAR(o["baseline_sigma_pf"].toDouble(), 0.004, 0.001);
+    EXPECT_LT(o["detection_limit_mgf"].toDouble(), 2.0);
+    EXPECT_NEAR(o["detection_limit_mn"].toDouble(),
+                3.0 * o["baseline_sigma_pf"].toDouble() / o["sensitivity_pf_per_mn"].toDouble(), 1e-12);
+    EXPECT_NEAR(o["drift_pf_per_s"].toDouble(), 0.0005, 0.0002);
+    EXPECT_LT(o["hysteresis_fraction"].toDouble(), 0.01) << "the drift and the creep are not hysteresis";
+    EXPECT_EQ(o["steps"].toArray().size(), 29);
+    int unloading = 0;
+    for (const auto step : o["steps"].toArray()) unloading += step.toObject()["loading"].toBool() ? 0 : 1;
+    EXPECT_EQ(unloading, 14);
+
+    // The same capacitance without the load column, the loads given in
+    // order: the steps found by their stability give the same calibration.
+    QFile full(csv), bare(dir.filePath("bare.csv"));
+    ASSERT_TRUE(full.open(QIODevice::ReadOnly) && bare.open(QIODevice::WriteOnly));
+    while (!full.atEnd()) {
+        const QByteArray line = full.readLine();
+        bare.write(line.left(line.lastIndexOf(',')) + '\n');
+    }
+    bare.close();
+    const CliResult byOrder =
+        runCli({"calibrate-capacitive", bare.fileName(), "--json", "--loads-mgf", simulatorLoads()});
+    ASSERT_EQ(byOrder.exitCode, 0) << byOrder.err.toStdString();
+    EXPECT_NEAR(json(byOrder)["sensitivity_pf_per_mn"].toDouble(), o["sensitivity_pf_per_mn"].toDouble(),
+                0.002 * o["sensitivity_pf_per_mn"].toDouble());
+    EXPECT_NEAR(json(byOrder)["c0_pf"].toDouble(), o["c0_pf"].toDouble(), 0.001);
+
+    const CliResult noLoads = runCli({"calibrate-capacitive", bare.fileName()});
+    EXPECT_EQ(noLoads.exitCode, 2);
+    EXPECT_TRUE(noLoads.err.contains("has no load column: give the loads placed")) << noLoads.err.toStdString();
+    const CliResult tooFew = runCli({"calibrate-capacitive", bare.fileName(), "--loads-mgf", "0,10,20"});
+    EXPECT_EQ(tooFew.exitCode, 2);
+    EXPECT_TRUE(tooFew.err.contains("stable steps, but 3 loads are listed")) << tooFew.err.toStdString();
+}
+
+TEST(CapacitiveCli, PerSampleRowsCountEveryRowOfAnUnloadingStepAndKeepTheFinalBaselineOutOfC0)
+{
+    // Three rows per step: 0, 10, 20, 10, 0 (mgf ×1000), exact on a line of
+    // 2 pF per mN, with the final baseline 0.05 pF higher (drift). Before,
+    // only the first row of the unloading step counted as unloading and the
+    // final baseline was pooled into C0 and its σ.
+    QTemporaryDir dir;
+    QString text = "force_n,capacitance_pf\n";
+    for (const auto& [force, pf] : std::vector<std::pair<double, double>>{{0, 50.0},
+                                                                          {0, 50.002},
+                                                                          {0, 49.998},
+                                                                          {0.1, 50.2},
+                                                                          {0.1, 50.2},
+                                                                          {0.1, 50.2},
+                                                                          {0.2, 50.4},
+                                                                          {0.2, 50.4},
+                                                                          {0.2, 50.4},
+                                                                          {0.1, 50.2},
+                                                                          {0.1, 50.2},
+                                                                          {0.1, 50.2},
+                                                                          {0, 50.05},
+                                                                          {0, 50.05}})
+        text += QString::number(force) + ',' + QString::number(pf, 'g', 10) + '\n';
+    write(dir.filePath("rows.csv"), text);
+    const CliResult run = runCli({"calibrate-capacitive", dir.filePath("rows.csv"), "--json"});
+    ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
+    const QJsonObject o = json(run);
+    EXPECT_NEAR(o["c0_pf"].toDouble(), 50.0, 1e-9);
+    EXPECT_NEAR(o["baseline_sigma_pf"].toDouble(), 0.002, 1e-9);  // of 50, 50.002, 49.998
+    EXPECT_NEAR(o["final_baseline_shift_pf"].toDouble(), 0.05, 1e-9);
+    const QJsonArray steps = o["steps"].toArray();
+    ASSERT_EQ(steps.size(), 3);
+    EXPECT_TRUE(steps[0].toObject()["loading"].toBool());
+    EXPECT_TRUE(steps[1].toObject()["loading"].toBool());
+    EXPECT_FALSE(steps[2].toObject()["loading"].toBool());
+    EXPECT_EQ(steps[2].toObject()["samples"].toInt(), 3);
+    EXPECT_NEAR(o["hysteresis_fraction"].toDouble(), 0.0, 1e-9);  // 10 mgf up and down alike
+    EXPECT_NEAR(o["sensitivity_pf_per_mn"].toDouble(), 2e-3, 1e-9);
 }
