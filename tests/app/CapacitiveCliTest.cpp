@@ -1,5 +1,6 @@
 // `tactiscope-cli model` for capacitive_beam and `calibrate-capacitive`.
 #include "support/CliRunner.h"
+#include "support/TextFiles.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -13,29 +14,15 @@
 #include <random>
 
 using tactiscope::testing::CliResult;
+using tactiscope::testing::jsonOf;
 using tactiscope::testing::runCli;
-
-namespace {
-
-QJsonObject json(const CliResult& run)
-{
-    return QJsonDocument::fromJson(run.out.toUtf8()).object();
-}
-
-void write(const QString& path, const QString& text)
-{
-    QFile file(path);
-    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
-    file.write(text.toUtf8());
-}
-
-}  // namespace
+using tactiscope::testing::writeText;
 
 TEST(CapacitiveCli, ModelOfThePapersSensorNumberOne)
 {
     const CliResult run = runCli({"model", TACTISCOPE_SOURCE_DIR "/resources/profiles/capacitive-beam-paper-no1.json"});
     ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
-    const QJsonObject o = json(run);
+    const QJsonObject o = jsonOf(run);
     EXPECT_EQ(o["kind"].toString(), "capacitive_beam");
     EXPECT_NEAR(o["stiffness_n_per_m"].toDouble(), 0.31, 0.01 * 0.31);     // paper: 0.31 N/m
     EXPECT_NEAR(o["compliance_m_per_n"].toDouble(), 3.22, 0.01 * 3.22);    // paper: 3.22 mm/mN
@@ -60,11 +47,11 @@ TEST(CapacitiveCli, CalibrationFromForceAndCapacitanceRows)
         out << QString::number(force, 'g', 12) << ','
             << QString::number(51.44 + 1.660e3 * force + noise(random), 'g', 12) << '\n';
     }
-    write(dir.filePath("weights.csv"), text);
+    writeText(dir.filePath("weights.csv"), text);
     const CliResult run =
         runCli({"calibrate-capacitive", dir.filePath("weights.csv"), "--json", "--contact-area-mm2", "9"});
     ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
-    const QJsonObject o = json(run);
+    const QJsonObject o = jsonOf(run);
     EXPECT_NEAR(o["c0_pf"].toDouble(), 51.44, 0.002);
     EXPECT_NEAR(o["baseline_sigma_pf"].toDouble(), 0.004, 0.0015);
     EXPECT_NEAR(o["sensitivity_pf_per_mn"].toDouble(), 1.660, 0.02);
@@ -78,9 +65,9 @@ TEST(CapacitiveCli, CalibrationFromForceAndCapacitanceRows)
 TEST(CapacitiveCli, BadReadingsExitWithCodeTwo)
 {
     QTemporaryDir dir;
-    write(dir.filePath("nobase.csv"), "force_n,capacitance_pf\n0.001,52\n0.002,53\n");
-    write(dir.filePath("negative.csv"), "force_n,capacitance_pf\n0,51\n0,51\n-0.001,52\n");
-    write(dir.filePath("falling.csv"), "force_n,capacitance_pf\n0,51\n0,51\n0.001,50\n0.002,49\n");
+    writeText(dir.filePath("nobase.csv"), "force_n,capacitance_pf\n0.001,52\n0.002,53\n");
+    writeText(dir.filePath("negative.csv"), "force_n,capacitance_pf\n0,51\n0,51\n-0.001,52\n");
+    writeText(dir.filePath("falling.csv"), "force_n,capacitance_pf\n0,51\n0,51\n0.001,50\n0.002,49\n");
     const std::vector<std::pair<QStringList, QString>> cases{
         {{"calibrate-capacitive", dir.filePath("missing.csv")}, "cannot open"},
         {{"calibrate-capacitive", dir.filePath("nobase.csv")}, "at least two rows with force 0"},
@@ -116,12 +103,12 @@ TEST(CapacitiveCli, TheSimulatorsRawRecordingCalibratesItsBeamAndItsDriftIsNotHy
               0);
     const CliResult model =
         runCli({"model", TACTISCOPE_SOURCE_DIR "/resources/profiles/capacitive-beam-paper-no1.json"});
-    const double beam_pf_per_mn = json(model)["force_sensitivity_pf_per_mn"].toDouble();
+    const double beam_pf_per_mn = jsonOf(model)["force_sensitivity_pf_per_mn"].toDouble();
     ASSERT_GT(beam_pf_per_mn, 1.0);
 
     const CliResult run = runCli({"calibrate-capacitive", csv, "--json"});
     ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
-    const QJsonObject o = json(run);
+    const QJsonObject o = jsonOf(run);
     // The simulator's beam, plus its 1 % creep.
     EXPECT_NEAR(o["sensitivity_pf_per_mn"].toDouble(), beam_pf_per_mn, 0.03 * beam_pf_per_mn);
     // σ of the first baseline alone: the simulator's 0.004 pF of noise, not
@@ -149,9 +136,9 @@ TEST(CapacitiveCli, TheSimulatorsRawRecordingCalibratesItsBeamAndItsDriftIsNotHy
     const CliResult byOrder =
         runCli({"calibrate-capacitive", bare.fileName(), "--json", "--loads-mgf", simulatorLoads()});
     ASSERT_EQ(byOrder.exitCode, 0) << byOrder.err.toStdString();
-    EXPECT_NEAR(json(byOrder)["sensitivity_pf_per_mn"].toDouble(), o["sensitivity_pf_per_mn"].toDouble(),
+    EXPECT_NEAR(jsonOf(byOrder)["sensitivity_pf_per_mn"].toDouble(), o["sensitivity_pf_per_mn"].toDouble(),
                 0.002 * o["sensitivity_pf_per_mn"].toDouble());
-    EXPECT_NEAR(json(byOrder)["c0_pf"].toDouble(), o["c0_pf"].toDouble(), 0.001);
+    EXPECT_NEAR(jsonOf(byOrder)["c0_pf"].toDouble(), o["c0_pf"].toDouble(), 0.001);
 
     const CliResult noLoads = runCli({"calibrate-capacitive", bare.fileName()});
     EXPECT_EQ(noLoads.exitCode, 2);
@@ -184,10 +171,10 @@ TEST(CapacitiveCli, PerSampleRowsCountEveryRowOfAnUnloadingStepAndKeepTheFinalBa
                                                                           {0, 50.05},
                                                                           {0, 50.05}})
         text += QString::number(force) + ',' + QString::number(pf, 'g', 10) + '\n';
-    write(dir.filePath("rows.csv"), text);
+    writeText(dir.filePath("rows.csv"), text);
     const CliResult run = runCli({"calibrate-capacitive", dir.filePath("rows.csv"), "--json"});
     ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
-    const QJsonObject o = json(run);
+    const QJsonObject o = jsonOf(run);
     EXPECT_NEAR(o["c0_pf"].toDouble(), 50.0, 1e-9);
     EXPECT_NEAR(o["baseline_sigma_pf"].toDouble(), 0.002, 1e-9);  // of 50, 50.002, 49.998
     EXPECT_NEAR(o["final_baseline_shift_pf"].toDouble(), 0.05, 1e-9);

@@ -6,6 +6,7 @@
 #include "core/storage/SessionStore.h"
 #include "support/CliRunner.h"
 #include "support/EmulatorProcess.h"
+#include "support/TextFiles.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -22,24 +23,14 @@
 
 using namespace tactiscope;
 using tactiscope::testing::CliResult;
+using tactiscope::testing::jsonOf;
 using tactiscope::testing::runCli;
+using tactiscope::testing::writeText;
 
 namespace {
 
 const QString kProbe = QStringLiteral(TACTISCOPE_SOURCE_DIR "/resources/profiles/compliance-probe-paper.json");
 constexpr double kSimulatedSpecimen_n_per_m = 117.0;  // PalpationParameters' default
-
-QJsonObject json(const CliResult& run)
-{
-    return QJsonDocument::fromJson(run.out.toUtf8()).object();
-}
-
-void write(const QString& path, const QString& text)
-{
-    QFile file(path);
-    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
-    file.write(text.toUtf8());
-}
 
 }  // namespace
 
@@ -50,7 +41,7 @@ TEST(ComplianceRecordingCli, TheSimulatorsCountsReadTheSimulatedSpecimenWithinOn
     ASSERT_EQ(runCli({"simulate", "--scenario", "palpation", "--seconds", "20", "--output", csv}).exitCode, 0);
     const CliResult run = runCli({"compliance", kProbe, csv, "--json"});
     ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
-    const QJsonObject o = json(run);
+    const QJsonObject o = jsonOf(run);
     const double k = o["object_stiffness_n_per_m"].toDouble();
     EXPECT_NEAR(k, kSimulatedSpecimen_n_per_m, 0.01 * kSimulatedSpecimen_n_per_m);
     EXPECT_GE(o["presses_read"].toInt(), 5);
@@ -88,7 +79,7 @@ TEST(ComplianceRecordingCli, ARecordedSessionsExportReadsAsTheRecordingReadItLiv
 
     const CliResult run = runCli({"compliance", kProbe, csv, "--json"});
     ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
-    const QJsonObject o = json(run);
+    const QJsonObject o = jsonOf(run);
     EXPECT_EQ(o["zero"].toString(), "recorded");
     core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
     const auto readings = store.readings(1);
@@ -125,10 +116,10 @@ TEST(ComplianceRecordingCli, TheStepProcedureReadsAThousandReadingsPerStepAndRej
                 << QString::number(low, 'g', 17) << '\n';
         }
     }
-    write(dir.filePath("steps.csv"), text);
+    writeText(dir.filePath("steps.csv"), text);
     const CliResult run = runCli({"compliance", kProbe, dir.filePath("steps.csv"), "--steps", "--json"});
     ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
-    const QJsonObject o = json(run);
+    const QJsonObject o = jsonOf(run);
     EXPECT_EQ(o["procedure"].toString(), "steps");
     EXPECT_EQ(o["steps_in_range"].toInt(), 3);
     const QJsonArray steps = o["steps"].toArray();
@@ -151,10 +142,10 @@ TEST(ComplianceRecordingCli, TheStepProcedureReadsAThousandReadingsPerStepAndRej
 TEST(ComplianceRecordingCli, RecordingsItCannotReadAreRefusedWithTheReason)
 {
     QTemporaryDir dir;
-    write(dir.filePath("unitless.csv"), "t,high,low,displacement [m]\n0,1,2,0\n0.001,1,2,0\n");
-    write(dir.filePath("short.csv"), "t [s],high [count],low [count],displacement [m]\n0,1,2,0\n0.001,1,2,0\n");
-    write(dir.filePath("other-probe.json"),
-          R"({"kind": "gauge_factor", "sensor": "another probe — stiff beam", "operator": "x",
+    writeText(dir.filePath("unitless.csv"), "t,high,low,displacement [m]\n0,1,2,0\n0.001,1,2,0\n");
+    writeText(dir.filePath("short.csv"), "t [s],high [count],low [count],displacement [m]\n0,1,2,0\n0.001,1,2,0\n");
+    writeText(dir.filePath("other-probe.json"),
+              R"({"kind": "gauge_factor", "sensor": "another probe — stiff beam", "operator": "x",
               "timestamp_utc": "2026-11-20T10:00:00Z", "values": {"gauge_factor": 2.1},
               "fit": {"slope": 1, "intercept": 0, "r_squared": 1, "slope_standard_error": 0,
                       "intercept_standard_error": 0, "residual_standard_deviation": 0, "points": 5,

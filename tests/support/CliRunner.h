@@ -2,6 +2,8 @@
 // other tools do, and captures its exit code and output.
 #pragma once
 
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QString>
 #include <QStringList>
@@ -21,6 +23,12 @@ inline CliResult runCli(const QStringList& arguments)
     process.waitForFinished(120000);
     return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
             QString::fromUtf8(process.readAllStandardOutput()), QString::fromUtf8(process.readAllStandardError())};
+}
+
+// The one JSON object a command printed with --json (empty when none).
+inline QJsonObject jsonOf(const CliResult& run)
+{
+    return QJsonDocument::fromJson(run.out.toUtf8()).object();
 }
 
 }  // namespace tactiscope::testing
