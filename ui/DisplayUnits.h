@@ -44,6 +44,10 @@ DisplayUnit displayUnitFor(const core::ChannelDescriptor& channel);
 // in its kind's unit. `quantity` is the lane's title: short, as a lane is
 // low; the readout and the report name the quantity in full.
 DisplayUnit laneUnit(const core::ChannelDescriptor& lane, core::Mode mode);
+// The colour a threshold line is drawn in on every plot (live, review,
+// report): teal, apart from the red playhead and the events' colours.
+inline constexpr unsigned kThresholdRgb = 0x00897b;
+
 // A value and its standard error as a reader takes them: the error to two
 // significant digits (core::text::uncertaintyDecimals, at most six
 // decimals), the value to the same decimal place; no error, no decimals.

@@ -37,6 +37,28 @@ void styleGrid(QCPAxisRect* rect)
     }
 }
 
+// Tick marks and labels at round values of the time shown (stream time
+// minus the origin), placed on the stream's time.
+class OffsetTicker : public QCPAxisTicker {
+public:
+    explicit OffsetTicker(double origin_s)
+        : m_origin_s(origin_s)
+    {
+    }
+    void generate(const QCPRange& range, const QLocale& locale, QChar formatChar, int precision, QVector<double>& ticks,
+                  QVector<double>* subTicks, QVector<QString>* tickLabels) override
+    {
+        QCPAxisTicker::generate(QCPRange(range.lower - m_origin_s, range.upper - m_origin_s), locale, formatChar,
+                                precision, ticks, subTicks, tickLabels);
+        for (double& tick : ticks) tick += m_origin_s;
+        if (subTicks)
+            for (double& tick : *subTicks) tick += m_origin_s;
+    }
+
+private:
+    double m_origin_s;
+};
+
 }  // namespace
 
 LivePlotWidget::LivePlotWidget(QWidget* parent)
@@ -79,7 +101,8 @@ LivePlotWidget::LivePlotWidget(QWidget* parent)
     // and clip the underscore off "F_H"; a line's height keeps it whole.
     m_plot->legend->setIconSize(18, QFontMetrics(legendFont).height() + 2);
     moveLegendTo(m_plot->axisRect());
-    m_plot->xAxis->setLabel(tr("Time (s)"));
+    m_timeLabel = tr("Time since connect (s)");
+    applyTimeAxis(m_plot->axisRect());
     m_plot->xAxis->setRange(0.0, m_window_s);
 
     m_frameTimer.setSingleShot(true);
@@ -101,17 +124,20 @@ void LivePlotWidget::setSource(std::shared_ptr<const core::LiveBuffer> buffer,
     }
 
     m_buffer = std::move(buffer);
+    m_sampleRate_hz = sampleRate_hz;
     // The longest window and then some, for scrolling back while paused.
     const auto capacity = static_cast<std::size_t>(std::ceil(sampleRate_hz * kHistory_s));
     m_time = std::make_unique<core::RingBuffer<double>>(capacity);
     m_values.assign(channels.size(), core::RingBuffer<double>(capacity));
     buildPlotItems(channels, units);
+    drawMarkers();
     scheduleFrame();
 }
 
 void LivePlotWidget::clearSource()
 {
     m_frameTimer.stop();
+    m_markers.clear();
     m_buffer.reset();
     m_cursor = {};
     m_time.reset();
@@ -147,14 +173,14 @@ void LivePlotWidget::buildPlotItems(const std::vector<core::ChannelDescriptor>& 
             if (lane > 0) {
                 rect = new QCPAxisRect(m_plot);
                 m_plot->plotLayout()->addElement(static_cast<int>(lane), 0, rect);
-                rect->axis(QCPAxis::atBottom)->setLabel(tr("Time (s)"));
             }
+            applyTimeAxis(rect);
             rect->setMarginGroup(QCP::msLeft | QCP::msRight, m_laneMargins);
             styleGrid(rect);
             connect(rect->axis(QCPAxis::atBottom), qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
                     &LivePlotWidget::syncTimeAxes, Qt::UniqueConnection);
             rect->axis(QCPAxis::atLeft)->setLabel(unit.axisTitle());
-            m_lanes.push_back({rect});
+            m_lanes.push_back({rect, {0.0, 0.0}, unit.scale, std::nullopt, nullptr});
         }
         QCPAxisRect* rect = m_lanes[lane].rect;
         QCPGraph* graph = m_plot->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
@@ -190,6 +216,13 @@ void LivePlotWidget::moveLegendTo(QCPAxisRect* rect)
 
 void LivePlotWidget::removePlotItems()
 {
+    for (Lane& lane : m_lanes)
+        if (lane.thresholdLine) m_plot->removeItem(lane.thresholdLine);
+    for (QCPAbstractItem* item : m_markerItems) m_plot->removeItem(item);
+    m_markerItems.clear();
+    for (QCPItemRect* band : m_gapBands) m_plot->removeItem(band);
+    m_gapBands.clear();
+    m_gaps.clear();
     moveLegendTo(m_plot->axisRect());  // out of the lanes about to go
     m_plot->clearGraphs();
     // Extra lanes live in rows 1.. of the layout; row 0 is the default rect.
@@ -226,7 +259,7 @@ std::uint64_t LivePlotWidget::firstIndexAtOrAfter(double t_s) const
 void LivePlotWidget::setPaused(bool paused)
 {
     m_paused = paused;
-    m_pausedBanner->setVisible(paused);
+    m_pausedBanner->setVisible(paused && m_showsBanner);
     m_viewChanged = true;
     updateInteractions();
 }
@@ -269,6 +302,120 @@ void LivePlotWidget::scrollTo(double start_s)
     m_plot->xAxis->setRange(start_s, start_s + m_plot->xAxis->range().size());
 }
 
+void LivePlotWidget::followTimeRange(double start_s, double end_s)
+{
+    if (!m_paused) return;
+    m_following = true;
+    m_plot->xAxis->setRange(start_s, end_s);
+    m_following = false;
+}
+
+void LivePlotWidget::setThreshold(std::size_t lane, std::optional<double> value_si)
+{
+    if (lane >= m_lanes.size()) return;
+    Lane& l = m_lanes[lane];
+    l.threshold_si = value_si;
+    if (l.thresholdLine) {
+        m_plot->removeItem(l.thresholdLine);
+        l.thresholdLine = nullptr;
+    }
+    if (value_si) {
+        auto* line = new QCPItemStraightLine(m_plot);
+        line->setClipAxisRect(l.rect);
+        for (QCPItemPosition* point : {line->point1, line->point2})
+            point->setAxes(l.rect->axis(QCPAxis::atBottom), l.rect->axis(QCPAxis::atLeft));
+        // Two points at the same value, any two times: the line is horizontal.
+        line->point1->setCoords(0.0, *value_si * l.scale);
+        line->point2->setCoords(1.0, *value_si * l.scale);
+        line->setPen(QPen(QColor(QRgb(kThresholdRgb)), 1.0, Qt::DashLine));
+        line->setSelectable(false);
+        l.thresholdLine = line;
+    }
+    m_viewChanged = true;
+    m_plot->replot();
+}
+
+std::optional<double> LivePlotWidget::threshold(std::size_t lane) const
+{
+    return lane < m_lanes.size() ? m_lanes[lane].threshold_si : std::nullopt;
+}
+
+void LivePlotWidget::setPausedBannerShown(bool shown)
+{
+    m_showsBanner = shown;
+    m_pausedBanner->setVisible(m_paused && shown);
+}
+
+void LivePlotWidget::applyTimeAxis(QCPAxisRect* rect)
+{
+    QCPAxis* axis = rect->axis(QCPAxis::atBottom);
+    axis->setTicker(QSharedPointer<QCPAxisTicker>(new OffsetTicker(m_origin_s)));
+    axis->setLabel(m_timeLabel);
+}
+
+void LivePlotWidget::setTimeOrigin(double origin_s, const QString& label)
+{
+    if (origin_s == m_origin_s && label == m_timeLabel) return;
+    m_origin_s = origin_s;
+    m_timeLabel = label;
+    applyTimeAxis(m_plot->axisRect());
+    for (const Lane& lane : m_lanes) applyTimeAxis(lane.rect);
+    m_viewChanged = true;
+    m_plot->replot();
+}
+
+QString LivePlotWidget::timeAxisLabel() const
+{
+    return m_timeLabel;
+}
+
+void LivePlotWidget::addMarker(double t_s, const QString& note)
+{
+    m_markers.push_back({t_s, note});
+    drawMarkers();
+    m_plot->replot();
+}
+
+// A dashed line per marker in every lane, its note at the top of the first.
+void LivePlotWidget::drawMarkers()
+{
+    for (QCPAbstractItem* item : m_markerItems) m_plot->removeItem(item);
+    m_markerItems.clear();
+    const QPen pen(QColor(0x6a, 0x3d, 0x9a), 1.0, Qt::DashLine);
+    for (const Marker& marker : m_markers) {
+        for (std::size_t l = 0; l < m_lanes.size(); ++l) {
+            QCPAxisRect* rect = m_lanes[l].rect;
+            auto* line = new QCPItemStraightLine(m_plot);
+            line->setLayer(QStringLiteral("grid"));
+            line->setPen(pen);
+            line->setClipAxisRect(rect);
+            for (QCPItemPosition* point : {line->point1, line->point2}) {
+                point->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+                point->setAxisRect(rect);
+                point->setTypeX(QCPItemPosition::ptPlotCoords);
+                point->setTypeY(QCPItemPosition::ptAxisRectRatio);
+            }
+            line->point1->setCoords(marker.t_s, 0.0);
+            line->point2->setCoords(marker.t_s, 1.0);
+            m_markerItems.push_back(line);
+            if (l != 0 || marker.note.isEmpty()) continue;
+            auto* label = new QCPItemText(m_plot);
+            label->setClipAxisRect(rect);
+            label->position->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+            label->position->setAxisRect(rect);
+            label->position->setTypeX(QCPItemPosition::ptPlotCoords);
+            label->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
+            label->position->setCoords(marker.t_s, 0.0);
+            label->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+            label->setPadding(QMargins(3, 1, 3, 1));
+            label->setBrush(QColor(255, 255, 255, 210));
+            label->setColor(pen.color());
+            label->setText(QFontMetrics(font()).elidedText(marker.note, Qt::ElideRight, 160));
+            m_markerItems.push_back(label);
+        }
+    }
+}
+
 // One lane's time axis moved (a drag, a zoom): every lane follows, and a
 // paused view is redrawn from the history at the next frame.
 void LivePlotWidget::syncTimeAxes(const QCPRange& range)
@@ -279,6 +426,7 @@ void LivePlotWidget::syncTimeAxes(const QCPRange& range)
     for (const Lane& lane : m_lanes) lane.rect->axis(QCPAxis::atBottom)->setRange(clamped);
     m_drawing = false;
     m_viewChanged = true;
+    if (m_paused && !m_following) emit userScrolled(clamped.lower, clamped.upper);
 }
 
 void LivePlotWidget::refresh()
@@ -361,8 +509,14 @@ void LivePlotWidget::draw(double start_s, double end_s)
 {
     std::vector<double> laneMin(m_lanes.size(), std::numeric_limits<double>::infinity());
     std::vector<double> laneMax(m_lanes.size(), -std::numeric_limits<double>::infinity());
+    // Consecutive points are less than two columns apart (and, when every
+    // sample is drawn, one sample period): a longer step is lost samples.
+    const int width_px = std::max(1, m_plot->axisRect()->width());
+    const double maxStep_s = std::max(2.0 * (end_s - start_s) / width_px, 1.5 / m_sampleRate_hz);
     for (std::size_t c = 0; c < m_graphs.size(); ++c) {
         decimatedPoints(c, start_s, end_s);
+        if (c == 0) m_gaps = core::signal::gapsIn(m_decimatedTime, maxStep_s);
+        core::signal::breakAtGaps(m_decimatedTime, m_decimatedValues, maxStep_s);
         QVector<double> keys(m_decimatedTime.begin(), m_decimatedTime.end());
         QVector<double> values(static_cast<qsizetype>(m_decimatedValues.size()));
         const double scale = m_graphScale[c];
@@ -385,13 +539,50 @@ void LivePlotWidget::draw(double start_s, double end_s)
         l.rect->axis(QCPAxis::atBottom)->setRange(start_s, end_s);
         // About one tick label per 40 px, so low lanes stay legible.
         l.rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(std::clamp(l.rect->height() / 40, 2, 6));
+        if (l.threshold_si) {  // the line it is read against stays in view
+            laneMin[lane] = std::min(laneMin[lane], *l.threshold_si * l.scale);
+            laneMax[lane] = std::max(laneMax[lane], *l.threshold_si * l.scale);
+        }
         if (m_scaleHeld || !std::isfinite(laneMin[lane])) continue;
         l.range = nextAxisRange(l.range, laneMin[lane], laneMax[lane]);
         l.rect->axis(QCPAxis::atLeft)->setRange(l.range.lower, l.range.upper);
     }
     m_drawing = false;
+    drawGapBands();
     m_plot->replot();
     ++m_framesDrawn;
+}
+
+// A grey band over each gap in every lane, under the traces.
+void LivePlotWidget::drawGapBands()
+{
+    const std::size_t wanted = m_gaps.size() * m_lanes.size();
+    while (m_gapBands.size() > wanted) {
+        m_plot->removeItem(m_gapBands.back());
+        m_gapBands.pop_back();
+    }
+    for (std::size_t i = 0; i < wanted; ++i) {
+        const Lane& lane = m_lanes[i % m_lanes.size()];
+        const core::signal::TimeGap& gap = m_gaps[i / m_lanes.size()];
+        if (i == m_gapBands.size()) {
+            auto* band = new QCPItemRect(m_plot);
+            band->setLayer(QStringLiteral("grid"));
+            band->setPen(Qt::NoPen);
+            band->setBrush(QColor(0, 0, 0, 28));
+            band->setSelectable(false);
+            m_gapBands.push_back(band);
+        }
+        QCPItemRect* band = m_gapBands[i];
+        band->setClipAxisRect(lane.rect);
+        for (QCPItemPosition* corner : {band->topLeft, band->bottomRight}) {
+            corner->setAxes(lane.rect->axis(QCPAxis::atBottom), lane.rect->axis(QCPAxis::atLeft));
+            corner->setAxisRect(lane.rect);
+            corner->setTypeX(QCPItemPosition::ptPlotCoords);
+            corner->setTypeY(QCPItemPosition::ptAxisRectRatio);
+        }
+        band->topLeft->setCoords(gap.from_s, 0.0);
+        band->bottomRight->setCoords(gap.to_s, 1.0);
+    }
 }
 
 }  // namespace tactiscope::ui

@@ -6,6 +6,14 @@
 // Channels with the same display unit share a lane; each unit gets its own
 // lane, stacked vertically.
 //
+// Samples the device lost are drawn as a gap — the line broken and a grey
+// band over the missing time — never joined across.
+//
+// Time base: the plot keeps the stream's seconds (since connect) inside,
+// and shows them from an origin — the recording's start while recording,
+// so the axis, the markers and the dialogs read the same clock — with the
+// axis saying which. Operators' markers are drawn where they were put.
+//
 // Paused, the view stops scrolling while samples keep arriving into the
 // history; the user drags (and wheel-zooms) the time axis back through it.
 // With the scale held, the value axes stop autoscaling and can be dragged.
@@ -17,6 +25,7 @@
 #include "core/ChannelDescriptor.h"
 #include "core/LiveBuffer.h"
 #include "core/RingBuffer.h"
+#include "core/signal/MinMaxDecimation.h"
 #include "core/signal/ScrollingMinMax.h"
 #include "ui/AxisAutoRange.h"
 #include "ui/DisplayUnits.h"
@@ -26,10 +35,13 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QCustomPlot;
 class QCPGraph;
+class QCPItemRect;
+class QCPAbstractItem;
 class QCPAxisRect;
 class QCPMarginGroup;
 class QCPRange;
@@ -71,6 +83,23 @@ public:
     std::pair<double, double> valueRange(std::size_t lane) const;
     // Shows another time range (paused only), as a drag would.
     void scrollTo(double start_s);
+    // Shows [start_s, end_s] (paused only) because another plot moved there:
+    // no userScrolled back.
+    void followTimeRange(double start_s, double end_s);
+    // The time axis shows stream time − origin_s, titled `label`.
+    void setTimeOrigin(double origin_s, const QString& label);
+    double timeOrigin_s() const { return m_origin_s; }
+    QString timeAxisLabel() const;
+    // An operator's marker at a stream time, drawn across every lane; the
+    // note labels it in the top lane.
+    void addMarker(double t_s, const QString& note);
+    std::size_t markerCount() const { return m_markers.size(); }
+    // A value a lane is read against (the detector's threshold on R), drawn
+    // as a dashed line and kept in view; none removes it. SI units.
+    void setThreshold(std::size_t lane, std::optional<double> value_si);
+    std::optional<double> threshold(std::size_t lane) const;
+    // Whether this plot shows the paused banner (one banner for the window).
+    void setPausedBannerShown(bool shown);
 
     // Number of stacked lanes (one per distinct display unit).
     std::size_t laneCount() const { return m_lanes.size(); }
@@ -82,6 +111,13 @@ public:
     std::uint64_t framesDrawn() const { return m_framesDrawn; }
     // Samples the display missed because it fell behind the buffer.
     std::uint64_t samplesOverrun() const { return m_cursor.overrun; }
+    // The gaps drawn in the last frame (stream seconds).
+    const std::vector<core::signal::TimeGap>& gapsShown() const { return m_gaps; }
+
+signals:
+    // Paused: the user moved the time axis (a drag, a wheel, scrollTo), so
+    // the window's other plots can follow.
+    void userScrolled(double start_s, double end_s);
 
 private slots:
     // One frame: takes new samples and redraws if anything changed. Run by
@@ -92,6 +128,9 @@ private:
     struct Lane {
         QCPAxisRect* rect = nullptr;
         AxisRange range{0.0, 0.0};  // empty until the first frame
+        double scale = 1.0;         // SI → display
+        std::optional<double> threshold_si;
+        QCPAbstractItem* thresholdLine = nullptr;
     };
 
     void scheduleFrame();
@@ -102,6 +141,9 @@ private:
     void followLive(double start_s, bool arrived);
     void decimatedPoints(std::size_t channel, double start_s, double end_s);
     void draw(double start_s, double end_s);
+    void drawGapBands();
+    void drawMarkers();
+    void applyTimeAxis(QCPAxisRect* rect);
     void syncTimeAxes(const QCPRange& range);
     std::uint64_t firstIndexAtOrAfter(double t_s) const;
 
@@ -130,6 +172,19 @@ private:
     std::vector<QCPGraph*> m_graphs;       // one per channel
     std::vector<std::size_t> m_graphLane;  // lane index per channel
     std::vector<double> m_graphScale;      // SI → display factor per channel
+    double m_sampleRate_hz = 0.0;
+    std::vector<core::signal::TimeGap> m_gaps;
+    std::vector<QCPItemRect*> m_gapBands;  // one per gap and lane, reused frame to frame
+    double m_origin_s = 0.0;
+    QString m_timeLabel;
+    struct Marker {
+        double t_s = 0.0;
+        QString note;
+    };
+    std::vector<Marker> m_markers;
+    std::vector<QCPAbstractItem*> m_markerItems;  // redrawn when lanes or markers change
+    bool m_showsBanner = true;
+    bool m_following = false;  // followTimeRange() is moving the axes
 
     // Per-frame scratch, kept to avoid reallocating every frame.
     std::vector<double> m_visibleTime;

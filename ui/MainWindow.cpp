@@ -143,6 +143,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_devicePanel, &DevicePanel::connectRequested, m_connector, &DeviceConnector::request);
     connect(m_devicePanel, &DevicePanel::disconnectRequested, this, &MainWindow::disconnectSource);
     createMenus();
+    linkPlots();
     restoreSettings();
     m_statusTimer.setInterval(kStatusInterval_ms);
     connect(&m_statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
@@ -532,6 +533,8 @@ void MainWindow::markEventWithNote()
 void MainWindow::addMarker(double time_s, const QString& note)
 {
     m_session->addMarker(time_s, note.toStdString());
+    if (const auto origin = m_session->recordingOrigin_s())
+        for (LivePlotWidget* plot : allPlots()) plot->addMarker(*origin + time_s, note);
     statusBar()->showMessage(tr("Marker at %1 s").arg(QLocale().toString(time_s, 'f', 2)), 4000);
 }
 
@@ -623,6 +626,7 @@ void MainWindow::updateStatus()
     m_devicePanel->showCounters(counters);
     m_status->showLink(counters);
     m_modeViews->update(*m_session);
+    updateTimeBase();
     if (const auto stopped = m_session->poll()) recordingEnded(*stopped);  // the disk stopped it
     // What the link noticed is in the record (an alarm) and told here.
     for (const auto& notice : m_session->takeLinkNotices()) {
@@ -632,6 +636,26 @@ void MainWindow::updateStatus()
         statusBar()->showMessage(text, 15000);
     }
     updateRecording();
+}
+
+// One clock on every plot: the recording's while recording (as the
+// markers, dialogs and the stored session read it), else since connect.
+void MainWindow::updateTimeBase()
+{
+    const auto origin = m_session->recordingOrigin_s();
+    const QString label = origin ? tr("Recording time (s)") : tr("Time since connect (s)");
+    for (LivePlotWidget* plot : allPlots()) plot->setTimeOrigin(origin.value_or(0.0), label);
+}
+
+// The window's plots move as one while paused, under one banner.
+void MainWindow::linkPlots()
+{
+    for (LivePlotWidget* lanes : m_modeViews->lanes()) lanes->setPausedBannerShown(false);
+    for (LivePlotWidget* from : allPlots())
+        connect(from, &LivePlotWidget::userScrolled, this, [this, from](double start_s, double end_s) {
+            for (LivePlotWidget* to : allPlots())
+                if (to != from) to->followTimeRange(start_s, end_s);
+        });
 }
 
 void MainWindow::showAbout()

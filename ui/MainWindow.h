@@ -128,6 +128,8 @@ private:
     void modeChosen();
     void showModeView();
     void addMarker(double time_s, const QString& note);
+    void updateTimeBase();
+    void linkPlots();
     // The mode's processor reads the newly chosen profile.
     void applyProfile(const QString& mode);
     void showMode(core::Mode mode);  // the views of a mode, with its probe and calibrations

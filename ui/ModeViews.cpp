@@ -70,7 +70,7 @@ void ModeViews::update(devices::session::LiveSession& session)
 {
     // The site first: a press completed in this poll was taken there.
     session.setSite(m_palpation->siteGrid()->currentSite().toStdString());
-    m_panelScan->showDefects(session.panelDefects());
+    m_panelScan->showDefects(session.panelDefects(), session.recordingOrigin_s());
     m_palpation->showPresses(session.presses());
     m_palpation->updateReadout();
     m_capacitive->updateReadouts();

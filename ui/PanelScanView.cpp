@@ -22,6 +22,8 @@ namespace tactiscope::ui {
 namespace {
 
 constexpr int kAlarm_ms = 3000;  // how long a defect alarm stays up
+// The lanes of the detector output: the decision, then both directions' best R.
+constexpr std::size_t kBestRLane = 1;
 
 QDoubleSpinBox* spinBox(double low, double high, double step, int decimals, const QString& suffix, QWidget* parent)
 {
@@ -154,6 +156,7 @@ void PanelScanView::setDetection(std::shared_ptr<core::detector::LiveDetection> 
     m_lanes->setSource(m_detection->output(), core::detector::LiveDetection::outputChannels(), sampleRate_hz,
                        {decision, correlation, correlation});
     showSettings(m_detection->settings());
+    m_lanes->setThreshold(kBestRLane, m_detection->settings().parameters.threshold);
 }
 
 void PanelScanView::showSettings(const core::detector::LiveDetectionSettings& settings)
@@ -190,6 +193,7 @@ void PanelScanView::applySettings()
         p.lags_s =
             core::detector::lagRange_s(m_lagFrom->value() * 1e-3, m_lagTo->value() * 1e-3, m_lagStep->value() * 1e-3);
         m_detection->setSettings(settings);
+        m_lanes->setThreshold(kBestRLane, p.threshold);
         m_settingsError->hide();
     } catch (const std::invalid_argument& e) {
         // The detector keeps its last good settings; say why these are not taken.
@@ -198,29 +202,44 @@ void PanelScanView::applySettings()
     }
 }
 
-void PanelScanView::showDefects(const std::vector<core::detector::DefectEvent>& defects)
+void PanelScanView::showDefects(const std::vector<core::detector::DefectEvent>& defects,
+                                std::optional<double> recordingOrigin_s)
 {
     const auto listed = static_cast<std::size_t>(m_events->rowCount());
+    const bool recordingChanged = recordingOrigin_s.has_value() != m_recording;
+    m_recording = recordingOrigin_s.has_value();
     if (defects.size() < listed) startPanel();
-    if (defects.size() == static_cast<std::size_t>(m_events->rowCount())) return;
+    if (defects.size() == static_cast<std::size_t>(m_events->rowCount())) {
+        if (recordingChanged) showCount();
+        return;
+    }
     const QLocale locale;
+    const double origin_s = recordingOrigin_s.value_or(0.0);
     for (auto it = defects.begin() + m_events->rowCount(); it != defects.end(); ++it) {
         const auto& e = *it;
         const int row = m_events->rowCount();
         m_events->insertRow(row);
-        const QStringList cells{locale.toString(e.start_s, 'f', 2), order(e.direction),
+        const QStringList cells{locale.toString(e.start_s - origin_s, 'f', 2), order(e.direction),
                                 locale.toString(e.peakR, 'f', 3), locale.toString(e.peakLag_s * 1e3, 'f', 0),
                                 e.speed_m_per_s ? locale.toString(*e.speed_m_per_s * 1e3, 'f', 0) : tr("—")};
         for (int c = 0; c < cells.size(); ++c) m_events->setItem(row, c, new QTableWidgetItem(cells[c]));
-        raiseAlarm(e);
+        raiseAlarm(e, e.start_s - origin_s);
     }
     m_events->scrollToBottom();
-    m_countLabel->setText(tr("%1 on this panel — %2").arg(defectCountText(defectCount()), verdictText()));
+    showCount();
 }
 
-void PanelScanView::raiseAlarm(const core::detector::DefectEvent& event)
+void PanelScanView::showCount()
 {
-    m_alarm->setText(tr("DEFECT  %1 at %2 s").arg(order(event.direction), QLocale().toString(event.start_s, 'f', 1)));
+    if (m_recording)
+        m_countLabel->setText(tr("%1 on this panel — %2").arg(defectCountText(defectCount()), verdictText()));
+    else
+        m_countLabel->setText(tr("%1 since connect — not recorded").arg(defectCountText(defectCount())));
+}
+
+void PanelScanView::raiseAlarm(const core::detector::DefectEvent& event, double shownTime_s)
+{
+    m_alarm->setText(tr("DEFECT  %1 at %2 s").arg(order(event.direction), QLocale().toString(shownTime_s, 'f', 1)));
     m_alarm->setStyleSheet(kDefectAlarm);
     m_alarmTimer.start(kAlarm_ms);
     if (m_sound->isChecked()) QApplication::beep();
@@ -235,7 +254,10 @@ void PanelScanView::calmAlarm()
 void PanelScanView::startPanel()
 {
     m_events->setRowCount(0);
-    m_countLabel->setText(tr("No defect on this panel yet — %1").arg(verdictText()));
+    if (m_recording)
+        m_countLabel->setText(tr("No defect on this panel yet — %1").arg(verdictText()));
+    else
+        showCount();
 }
 
 int PanelScanView::defectCount() const

@@ -12,6 +12,7 @@
 #include <QWidget>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QCheckBox;
@@ -33,21 +34,26 @@ public:
     // Shows `detection`'s output and edits its settings; null detaches.
     void setDetection(std::shared_ptr<core::detector::LiveDetection> detection, double sampleRate_hz);
     // Shows the panel's defects (the live session's list): rows for those
-    // not listed yet, with the alarm; a shorter list is a new panel.
-    void showDefects(const std::vector<core::detector::DefectEvent>& defects);
+    // not listed yet, with the alarm; a shorter list is a new panel. While
+    // recording, times are on the recording's clock (from its origin, a
+    // stream time) and the list is the panel's; else since connect, and
+    // nothing of it is recorded.
+    void showDefects(const std::vector<core::detector::DefectEvent>& defects, std::optional<double> recordingOrigin_s);
     int defectCount() const;
     LivePlotWidget* lanes() const { return m_lanes; }
 
 private:
     void startPanel();
     QString verdictText() const;  // the automatic verdict of the rows listed
+    void showCount();
     void applySettings();
     void showSettings(const core::detector::LiveDetectionSettings& settings);
-    void raiseAlarm(const core::detector::DefectEvent& event);
+    void raiseAlarm(const core::detector::DefectEvent& event, double shownTime_s);
     void calmAlarm();
 
     std::shared_ptr<core::detector::LiveDetection> m_detection;
     LivePlotWidget* m_lanes = nullptr;
+    bool m_recording = false;
     QDoubleSpinBox* m_threshold = nullptr;
     QDoubleSpinBox* m_lagFrom = nullptr;
     QDoubleSpinBox* m_lagTo = nullptr;

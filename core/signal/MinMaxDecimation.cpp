@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace tactiscope::core::signal {
@@ -53,6 +54,33 @@ void decimateMinMax(std::span<const double> t, std::span<const double> y, double
         }
         begin = end;
     }
+}
+
+std::vector<TimeGap> gapsIn(std::span<const double> t, double maxStep_s)
+{
+    std::vector<TimeGap> gaps;
+    for (std::size_t i = 1; i < t.size(); ++i)
+        if (t[i] - t[i - 1] > maxStep_s) gaps.push_back({t[i - 1], t[i]});
+    return gaps;
+}
+
+void breakAtGaps(std::vector<double>& t, std::vector<double>& y, double maxStep_s)
+{
+    const auto gaps = gapsIn(t, maxStep_s);
+    if (gaps.empty()) return;
+    std::vector<double> tBroken, yBroken;
+    tBroken.reserve(t.size() + gaps.size());
+    yBroken.reserve(t.size() + gaps.size());
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        if (i > 0 && t[i] - t[i - 1] > maxStep_s) {
+            tBroken.push_back(0.5 * (t[i - 1] + t[i]));
+            yBroken.push_back(std::numeric_limits<double>::quiet_NaN());
+        }
+        tBroken.push_back(t[i]);
+        yBroken.push_back(y[i]);
+    }
+    t.swap(tBroken);
+    y.swap(yBroken);
 }
 
 }  // namespace tactiscope::core::signal

@@ -31,4 +31,17 @@ ColumnExtremes columnExtremes(std::span<const double> y);
 void decimateMinMax(std::span<const double> t, std::span<const double> y, double columnWidth_s,
                     std::vector<double>& tOut, std::vector<double>& yOut);
 
+// Where a trace has no samples: every step of more than maxStep_s between
+// consecutive points of t (non-decreasing) is a gap, from the point before
+// it to the point after it. A display draws these as gaps, never joined.
+struct TimeGap {
+    double from_s = 0.0;
+    double to_s = 0.0;
+};
+std::vector<TimeGap> gapsIn(std::span<const double> t, double maxStep_s);
+
+// Puts a NaN point (a break in the drawn line) in the middle of each gap of
+// more than maxStep_s in the points (t, y).
+void breakAtGaps(std::vector<double>& t, std::vector<double>& y, double maxStep_s);
+
 }  // namespace tactiscope::core::signal

@@ -95,6 +95,12 @@ double Recorder::sessionTimeOf(double acquisitionTime_s) const
     return acquisitionTime_s - m_firstTime_s;
 }
 
+std::optional<double> Recorder::acquisitionOrigin_s() const
+{
+    const std::lock_guard lock(m_mutex);
+    return m_firstIndex ? std::optional<double>(m_firstTime_s) : std::nullopt;
+}
+
 RecorderStats Recorder::stats() const
 {
     const std::lock_guard lock(m_mutex);

@@ -69,6 +69,9 @@ public:
     double sessionTime_s() const;
     // An acquisition time (a block's clock) on the session's clock.
     double sessionTimeOf(double acquisitionTime_s) const;
+    // The acquisition time of the session's t = 0: its first sample's; none
+    // before the first block.
+    std::optional<double> acquisitionOrigin_s() const;
     RecorderStats stats() const;
     // Stores what is queued, ends the session with `status` (interrupted if
     // a write failed) and its automatic verdict, if any, and stops the

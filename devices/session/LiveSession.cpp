@@ -266,6 +266,11 @@ double LiveSession::sessionTime_s() const
     return m_recorder ? m_recorder->sessionTime_s() : 0.0;
 }
 
+std::optional<double> LiveSession::recordingOrigin_s() const
+{
+    return m_recorder ? m_recorder->acquisitionOrigin_s() : std::nullopt;
+}
+
 core::storage::RecorderStats LiveSession::recorderStats() const
 {
     return m_recorder ? m_recorder->stats() : core::storage::RecorderStats{};

@@ -150,6 +150,9 @@ public:
     bool isRecording() const { return m_recorder != nullptr; }
     std::int64_t sessionId() const;  // 0 when not recording
     double sessionTime_s() const;    // of the newest sample recorded
+    // The stream time (seconds since connect) of the recording's t = 0;
+    // none when not recording or before its first sample.
+    std::optional<double> recordingOrigin_s() const;
     core::storage::RecorderStats recorderStats() const;
     const core::storage::SessionMetadata& recordingMetadata() const { return m_metadata; }
     // An operator's marker at a session time; false when not recording.

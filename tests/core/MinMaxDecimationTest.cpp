@@ -125,3 +125,20 @@ TEST(MinMaxDecimation, NaNIsNoValueAndAColumnOfOnlyNaNBreaksTheLine)
     EXPECT_EQ(tOut[4], t[21]);
     for (const double v : yOut | std::views::drop(1)) EXPECT_FALSE(std::isnan(v));
 }
+
+TEST(MinMaxDecimation, AStepLongerThanTheLimitIsAGapAndBreaksTheLine)
+{
+    // Samples every 2 ms, with 0.010 → 0.100 s lost.
+    std::vector<double> t{0.000, 0.002, 0.004, 0.006, 0.008, 0.010, 0.100, 0.102};
+    std::vector<double> y{1, 2, 3, 4, 5, 6, 7, 8};
+    const auto gaps = tactiscope::core::signal::gapsIn(t, 0.003);
+    ASSERT_EQ(gaps.size(), 1u);
+    EXPECT_EQ(gaps[0].from_s, 0.010);
+    EXPECT_EQ(gaps[0].to_s, 0.100);
+    tactiscope::core::signal::breakAtGaps(t, y, 0.003);
+    ASSERT_EQ(t.size(), 9u);
+    EXPECT_EQ(t[6], 0.055);
+    EXPECT_TRUE(std::isnan(y[6]));
+    EXPECT_EQ(y[7], 7.0);
+    EXPECT_TRUE(tactiscope::core::signal::gapsIn(t, 0.1).empty());
+}

@@ -61,6 +61,32 @@ TEST(LivePlotWidget, DrawsAtMostTwoPointsPerPixelColumnInOneLanePerUnit)
     EXPECT_FALSE(saveScreenshot(plot, QStringLiteral("live-plot-two-lanes")).isEmpty());
 }
 
+TEST(LivePlotWidget, LostSamplesAreDrawnAsAGapNotJoined)
+{
+    // 0–4 s, then the device loses 2 s (as after a reconnect), then 6–9 s.
+    auto buffer = std::make_shared<core::LiveBuffer>(2, 20000);
+    fill(*buffer, 0.0, 4.0);
+    fill(*buffer, 6.0, 9.0);
+    ui::LivePlotWidget plot;
+    plot.resize(900, 600);
+    plot.show();
+    plot.setSource(buffer, kChannels, 500.0);
+    ASSERT_TRUE(waitFor([&] { return plot.samplesReceived() == 3500u && plot.drawnPointCount(0) > 0; }, 2000));
+    tactiscope::testing::runEventLoopFor(100);
+    ASSERT_EQ(plot.gapsShown().size(), 1u);
+    EXPECT_NEAR(plot.gapsShown()[0].from_s, 3.998, 0.02);
+    EXPECT_NEAR(plot.gapsShown()[0].to_s, 6.0, 0.02);
+    EXPECT_FALSE(saveScreenshot(plot, QStringLiteral("live-plot-gap")).isEmpty());
+
+    // The same 9 s without the loss: no gap.
+    auto whole = std::make_shared<core::LiveBuffer>(2, 20000);
+    fill(*whole, 0.0, 9.0);
+    plot.setSource(whole, kChannels, 500.0);
+    ASSERT_TRUE(waitFor([&] { return plot.samplesReceived() == 4500u && plot.drawnPointCount(0) > 0; }, 2000));
+    tactiscope::testing::runEventLoopFor(100);
+    EXPECT_TRUE(plot.gapsShown().empty());
+}
+
 TEST(LivePlotWidget, CountsSamplesItMissedWhenTheBufferOverran)
 {
     auto buffer = std::make_shared<core::LiveBuffer>(2, 100);

@@ -8,7 +8,7 @@
 namespace tactiscope::ui {
 namespace {
 
-const QColor kThreshold(0, 137, 123);  // teal: apart from the red playhead and the events' colours
+const QColor kThreshold{QRgb(kThresholdRgb)};
 
 }  // namespace
 
