@@ -1,5 +1,6 @@
 // CapacitiveView: lanes, large readouts, baseline and calibration lines.
 #include "ui/CapacitiveView.h"
+#include "ui/DisplayUnits.h"
 
 #include "ui/ActiveProfiles.h"
 #include "ui/LivePlotWidget.h"
@@ -101,13 +102,13 @@ void CapacitiveView::updateReadouts()
         return;
     }
     const QLocale locale;
-    m_capacitance->setText(tr("%1 pF").arg(locale.toString(reading->capacitance_f * 1e12, 'f', 3)));
-    m_deltaC->setText(tr("%1 pF").arg(locale.toString(reading->deltaC_f * 1e12, 'f', 3)));
-    m_relative->setText(tr("%1 %").arg(locale.toString(reading->relativeChange * 1e2, 'f', 3)));
-    m_force->setText(tr("%1 µN").arg(locale.toString(reading->force_n * 1e6, 'f', 1)));
-    m_displacement->setText(tr("%1 mm").arg(locale.toString(reading->displacement_m * 1e3, 'f', 3)));
+    m_capacitance->setText(tr("%1 pF").arg(fixedText(reading->capacitance_f * 1e12, 3)));
+    m_deltaC->setText(tr("%1 pF").arg(fixedText(reading->deltaC_f * 1e12, 3)));
+    m_relative->setText(tr("%1 %").arg(fixedText(reading->relativeChange * 1e2, 3)));
+    m_force->setText(tr("%1 µN").arg(fixedText(reading->force_n * 1e6, 1)));
+    m_displacement->setText(tr("%1 mm").arg(fixedText(reading->displacement_m * 1e3, 3)));
     m_baseline->setText(tr("C0 = %1 pF%2")
-                            .arg(locale.toString(reading->c0_f * 1e12, 'f', 3),
+                            .arg(fixedText(reading->c0_f * 1e12, 3),
                                  reading->unloaded ? tr(" (unloaded: following drift)") : QString()));
 }
 

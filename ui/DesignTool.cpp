@@ -31,12 +31,12 @@ struct Panel {
 };
 
 const std::array<Panel, 4> kPanels{{
-    {DesignTool::Curve::ForceRatio, "Q = F_H/F_L", [](const core::sensors::DesignPoint& p) { return p.q; }},
-    {DesignTool::Curve::Sensitivity, "dQ/dk_o (mm/N)",
+    {DesignTool::Curve::ForceRatio, "Q = F stiff / F soft", [](const core::sensors::DesignPoint& p) { return p.q; }},
+    {DesignTool::Curve::Sensitivity, "dQ/dkₒ (mm/N)",
      [](const core::sensors::DesignPoint& p) { return p.dqDk_m_per_n * 1e3; }},
-    {DesignTool::Curve::StrainRatio, "Strain ratio ε_l/ε_h",
+    {DesignTool::Curve::StrainRatio, "Strain ratio ε soft / ε stiff",
      [](const core::sensors::DesignPoint& p) { return p.strainRatio; }},
-    {DesignTool::Curve::DeflectionRatio, "Deflection ratio Δ_l/Δ_h",
+    {DesignTool::Curve::DeflectionRatio, "Deflection ratio Δ soft / Δ stiff",
      [](const core::sensors::DesignPoint& p) { return p.deflectionRatio; }},
 }};
 

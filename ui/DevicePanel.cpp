@@ -1,5 +1,6 @@
 // DevicePanel: the source list, link settings, connect buttons and counters.
 #include "ui/DevicePanel.h"
+#include "ui/DisplayUnits.h"
 
 #include "devices/simulator/ScenarioCatalog.h"
 
@@ -306,10 +307,10 @@ void DevicePanel::showCounters(const LinkCounters& counters)
     const QLocale locale;
     m_state->setText(counters.state);
     m_state->setStyleSheet(counters.healthy ? QStringLiteral("color: #2e7d32;") : QStringLiteral("color: #c62828;"));
-    m_rate->setText(counters.rate_hz
-                        ? tr("%1 Hz (nominal %2 Hz)")
-                              .arg(locale.toString(*counters.rate_hz, 'f', 1), locale.toString(counters.nominalRate_hz))
-                        : tr("measuring… (nominal %1 Hz)").arg(locale.toString(counters.nominalRate_hz)));
+    m_rate->setText(
+        counters.rate_hz
+            ? tr("%1 Hz (nominal %2 Hz)").arg(fixedText(*counters.rate_hz, 1), locale.toString(counters.nominalRate_hz))
+            : tr("measuring… (nominal %1 Hz)").arg(locale.toString(counters.nominalRate_hz)));
     m_samples->setText(count(counters.samples));
     m_lost->setText(count(counters.samplesLost));
     // Any loss is worth a glance: red, not hidden among the other numbers.

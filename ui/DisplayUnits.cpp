@@ -66,6 +66,13 @@ DisplayUnit laneUnit(const core::ChannelDescriptor& lane, core::Mode mode)
     return unit;
 }
 
+QString fixedText(double value, int decimals)
+{
+    // "-0.000": a tiny negative rounded away; the sign would claim what the digits do not.
+    if (std::abs(value) * std::pow(10.0, decimals) < 0.5) value = 0.0;
+    return QLocale().toString(value, 'f', decimals);
+}
+
 int decimalsFor(double standardError)
 {
     return core::text::uncertaintyDecimals(standardError, 6);
@@ -75,7 +82,7 @@ std::pair<QString, QString> valueAndErrorTexts(double value, double standardErro
 {
     const int decimals = decimalsFor(standardError);
     const QLocale locale;
-    return {locale.toString(value, 'f', decimals), locale.toString(standardError, 'f', decimals)};
+    return {fixedText(value, decimals), fixedText(standardError, decimals)};
 }
 
 QString laneLabel(const DisplayUnit& unit)

@@ -44,6 +44,11 @@ DisplayUnit displayUnitFor(const core::ChannelDescriptor& channel);
 // in its kind's unit. `quantity` is the lane's title: short, as a lane is
 // low; the readout and the report name the quantity in full.
 DisplayUnit laneUnit(const core::ChannelDescriptor& lane, core::Mode mode);
+// A number with `decimals` fixed decimals in the user's locale, as every
+// view, dialog and report writes one: never "-0.000" (a value that rounds
+// to zero is zero).
+QString fixedText(double value, int decimals);
+
 // The colour a threshold line is drawn in on every plot (live, review,
 // report): teal, apart from the red playhead and the events' colours.
 inline constexpr unsigned kThresholdRgb = 0x00897b;

@@ -1,5 +1,6 @@
 // InterruptedSessionsReport: finding the sessions, the message and the export.
 #include "ui/InterruptedSessionsReport.h"
+#include "ui/DisplayUnits.h"
 
 #include "ui/ProblemReport.h"
 #include "ui/StoreJobs.h"
@@ -26,7 +27,7 @@ QString describe(const core::storage::SessionSummary& s)
     return QObject::tr("Session %1 (%2, %3), started %4: %5 s kept")
         .arg(s.id)
         .arg(wordText(s.metadata.mode), subject, QString::fromStdString(s.startedUtc))
-        .arg(QLocale().toString(s.duration_s(), 'f', 1));
+        .arg(fixedText(s.duration_s(), 1));
 }
 
 // Each session as session-N.csv with session-N.meta.json beside it.

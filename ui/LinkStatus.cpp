@@ -1,5 +1,6 @@
 // LinkStatus: the counters from the acquisition and the reconnecting source.
 #include "ui/LinkStatus.h"
+#include "ui/DisplayUnits.h"
 
 #include "devices/Acquisition.h"
 #include "devices/ReconnectingSource.h"
@@ -54,7 +55,7 @@ LinkCounters linkCounters(const devices::AcquisitionStats& stats, const devices:
 QString linkLine(const LinkCounters& counters)
 {
     QString line = counters.state;
-    if (counters.rate_hz) line += QObject::tr(" · %1 Hz").arg(QLocale().toString(*counters.rate_hz, 'f', 1));
+    if (counters.rate_hz) line += QObject::tr(" · %1 Hz").arg(fixedText(*counters.rate_hz, 1));
     if (counters.samplesLost > 0)
         line += QObject::tr(" · %1 lost").arg(QLocale().toString(static_cast<qulonglong>(counters.samplesLost)));
     return line;

@@ -98,7 +98,7 @@ LivePlotWidget::LivePlotWidget(QWidget* parent)
     legendFont.setPointSizeF(legendFont.pointSizeF() * 0.85);
     m_plot->legend->setFont(legendFont);
     // An icon lower than the text lets QCustomPlot cut the item box short
-    // and clip the underscore off "F_H"; a line's height keeps it whole.
+    // and clip a descender ("g", "y"); a line's height keeps it whole.
     m_plot->legend->setIconSize(18, QFontMetrics(legendFont).height() + 2);
     moveLegendTo(m_plot->axisRect());
     m_timeLabel = tr("Time since connect (s)");

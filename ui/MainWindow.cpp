@@ -1,5 +1,6 @@
 // MainWindow: wiring of the live session, the plots, menus and status bar.
 #include "ui/MainWindow.h"
+#include "ui/DisplayUnits.h"
 
 #include "core/storage/StoreWorker.h"
 #include "devices/session/LiveSession.h"
@@ -393,7 +394,7 @@ void MainWindow::recordingEnded(const devices::session::RecordingSummary& summar
     else if (summary.lostAt_s || !summary.stoppedBecause.empty())
         reportProblem(this, {tr("Probe lost"),
                              summary.lostAt_s ? tr("The probe was lost at %1 s and did not come back before the stop.")
-                                                    .arg(QLocale().toString(*summary.lostAt_s, 'f', 1))
+                                                    .arg(fixedText(*summary.lostAt_s, 1))
                                               : tr("The link to the probe failed during the recording."),
                              QString::fromStdString(summary.stoppedBecause),
                              tr("Session %1 keeps every sample up to the loss; the time after it is a gap with an "
@@ -535,7 +536,7 @@ void MainWindow::addMarker(double time_s, const QString& note)
     m_session->addMarker(time_s, note.toStdString());
     if (const auto origin = m_session->recordingOrigin_s())
         for (LivePlotWidget* plot : allPlots()) plot->addMarker(*origin + time_s, note);
-    statusBar()->showMessage(tr("Marker at %1 s").arg(QLocale().toString(time_s, 'f', 2)), 4000);
+    statusBar()->showMessage(tr("Marker at %1 s").arg(fixedText(time_s, 2)), 4000);
 }
 
 void MainWindow::updateRecording()
@@ -630,8 +631,8 @@ void MainWindow::updateStatus()
     if (const auto stopped = m_session->poll()) recordingEnded(*stopped);  // the disk stopped it
     // What the link noticed is in the record (an alarm) and told here.
     for (const auto& notice : m_session->takeLinkNotices()) {
-        const QString text = tr("Device, at %1 s: %2")
-                                 .arg(QLocale().toString(notice.time_s, 'f', 1), QString::fromStdString(notice.text));
+        const QString text =
+            tr("Device, at %1 s: %2").arg(fixedText(notice.time_s, 1), QString::fromStdString(notice.text));
         logProblem({tr("Device"), text, {}, {}});
         statusBar()->showMessage(text, 15000);
     }

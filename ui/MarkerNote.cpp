@@ -1,5 +1,6 @@
 // MarkerNote: a non-modal input dialog that deletes itself.
 #include "ui/MarkerNote.h"
+#include "ui/DisplayUnits.h"
 
 #include <QInputDialog>
 #include <QLocale>
@@ -11,7 +12,7 @@ void askMarkerNote(QWidget* parent, double time_s, std::function<void(const QStr
     auto* dialog = new QInputDialog(parent);
     dialog->setObjectName(QStringLiteral("markerNoteDialog"));
     dialog->setWindowTitle(QObject::tr("Marker"));
-    dialog->setLabelText(QObject::tr("Note for the marker at %1 s:").arg(QLocale().toString(time_s, 'f', 2)));
+    dialog->setLabelText(QObject::tr("Note for the marker at %1 s:").arg(fixedText(time_s, 2)));
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     QObject::connect(dialog, &QInputDialog::textValueSelected, parent, std::move(entered));
     dialog->open();

@@ -15,19 +15,16 @@ QString showModeXY(XYPlotWidget& plot, const devices::session::LiveSession* sess
 {
     const double rate_hz = session ? session->source().nominalSampleRate_hz() : 0.0;
     if (session && mode == core::Mode::Palpation && session->palpation()) {
-        const DisplayUnit high{1e3, QObject::tr("mN"), QObject::tr("F_H")};
-        const DisplayUnit low{1e3, QObject::tr("mN"), QObject::tr("F_L")};
+        const DisplayUnit high{1e3, QObject::tr("mN"), QObject::tr("F stiff")};
+        const DisplayUnit low{1e3, QObject::tr("mN"), QObject::tr("F soft")};
         plot.setSource(session->palpation()->output(), 1, 0, low, high, rate_hz);
-        return QObject::tr("XY plot: F_H against F_L (slope Q)");
+        return QObject::tr("XY plot: F stiff against F soft (slope Q)");
     }
-    if (session && mode == core::Mode::Capacitive && session->capacitive()) {
-        const DisplayUnit deflection{1e3, QObject::tr("mm"), QObject::tr("Tip deflection")};
-        const DisplayUnit force{1e6, QObject::tr("µN"), QObject::tr("Force")};
-        plot.setSource(session->capacitive()->output(), 1, 0, deflection, force, rate_hz);
-        return QObject::tr("XY plot: force against deflection (slope k_s)");
-    }
+    // A capacitive beam's force and deflection both come from its one
+    // capacitance through the model: plotted against each other they make
+    // the model's straight line, not a measurement. Not offered.
     plot.clearSource();
-    return QObject::tr("XY plot (palpation and capacitive modes)");
+    return QObject::tr("XY plot (palpation: F stiff against F soft)");
 }
 
 }  // namespace tactiscope::ui

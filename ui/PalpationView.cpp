@@ -1,5 +1,6 @@
 // PalpationView: layout, the large readout, press rows, scale and grid.
 #include "ui/PalpationView.h"
+#include "ui/DisplayUnits.h"
 
 #include "core/compliance/ReferenceTissues.h"
 #include "ui/ActiveProfiles.h"
@@ -178,14 +179,13 @@ void PalpationView::showPresses(const std::vector<devices::session::PressRecord>
         const QString outOfRange =
             press.stiffness.range == core::sensors::ComplianceRange::Below ? tr("below range") : tr("above range");
         const auto [kText, seText] = valueAndErrorTexts(k, press.uncertainty_n_per_m());
-        const QStringList cells{locale.toString(press.start_s, 'f', 1),
-                                inRange ? kText : outOfRange,
-                                inRange ? seText : tr("—"),
-                                tr("%1–%2").arg(locale.toString(press.displacementMin_m * 1e3, 'f', 2),
-                                                locale.toString(press.displacementMax_m * 1e3, 'f', 2)),
-                                inRange ? locale.toString(press.displacementSlope_n_per_m_per_m * 1e-3, 'f', 2)
-                                        : tr("—"),
-                                site.isEmpty() ? tr("—") : site};
+        const QStringList cells{
+            fixedText(press.start_s, 1),
+            inRange ? kText : outOfRange,
+            inRange ? seText : tr("—"),
+            tr("%1–%2").arg(fixedText(press.displacementMin_m * 1e3, 2), fixedText(press.displacementMax_m * 1e3, 2)),
+            inRange ? fixedText(press.displacementSlope_n_per_m_per_m * 1e-3, 2) : tr("—"),
+            site.isEmpty() ? tr("—") : site};
         for (int c = 0; c < cells.size(); ++c) m_presses->setItem(row, c, new QTableWidgetItem(cells[c]));
         if (inRange) {
             m_stiffness->setText(stiffnessText(k, press.uncertainty_n_per_m()));

@@ -1,5 +1,6 @@
 // PanelScanView: parameter form → LiveDetectionSettings, events → table and alarm.
 #include "ui/PanelScanView.h"
+#include "ui/DisplayUnits.h"
 
 #include "ui/LivePlotWidget.h"
 #include "ui/VerdictDialog.h"
@@ -219,9 +220,9 @@ void PanelScanView::showDefects(const std::vector<core::detector::DefectEvent>& 
         const auto& e = *it;
         const int row = m_events->rowCount();
         m_events->insertRow(row);
-        const QStringList cells{locale.toString(e.start_s - origin_s, 'f', 2), order(e.direction),
-                                locale.toString(e.peakR, 'f', 3), locale.toString(e.peakLag_s * 1e3, 'f', 0),
-                                e.speed_m_per_s ? locale.toString(*e.speed_m_per_s * 1e3, 'f', 0) : tr("—")};
+        const QStringList cells{fixedText(e.start_s - origin_s, 2), order(e.direction), fixedText(e.peakR, 3),
+                                fixedText(e.peakLag_s * 1e3, 0),
+                                e.speed_m_per_s ? fixedText(*e.speed_m_per_s * 1e3, 0) : tr("—")};
         for (int c = 0; c < cells.size(); ++c) m_events->setItem(row, c, new QTableWidgetItem(cells[c]));
         raiseAlarm(e, e.start_s - origin_s);
     }
@@ -239,7 +240,7 @@ void PanelScanView::showCount()
 
 void PanelScanView::raiseAlarm(const core::detector::DefectEvent& event, double shownTime_s)
 {
-    m_alarm->setText(tr("DEFECT  %1 at %2 s").arg(order(event.direction), QLocale().toString(shownTime_s, 'f', 1)));
+    m_alarm->setText(tr("DEFECT  %1 at %2 s").arg(order(event.direction), fixedText(shownTime_s, 1)));
     m_alarm->setStyleSheet(kDefectAlarm);
     m_alarmTimer.start(kAlarm_ms);
     if (m_sound->isChecked()) QApplication::beep();

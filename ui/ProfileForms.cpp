@@ -1,6 +1,7 @@
 // ProfileForms: fields, their units and ranges, and the checks beyond one
 // field (the stiff beam stiffer than the soft one, a sheet with a layer).
 #include "ui/ProfileForms.h"
+#include "ui/DisplayUnits.h"
 
 #include "core/sensors/CapacitiveBeam.h"
 #include "core/sensors/CompliancePair.h"
@@ -44,7 +45,7 @@ const DisplayUnit kRatio{1.0, {}, {}};
 QString figures(double value)
 {
     const int magnitude = value != 0.0 ? static_cast<int>(std::floor(std::log10(std::abs(value)))) : 0;
-    return QLocale().toString(value, 'f', std::clamp(2 - magnitude, 0, 6));
+    return fixedText(value, std::clamp(2 - magnitude, 0, 6));
 }
 
 // Reads one field into `out`; false (with the problem said) when it has none.
@@ -345,7 +346,7 @@ QString profileSummary(const SensorProfile& profile)
     if (const auto* pair = std::get_if<core::sensors::CompliancePairProfile>(&profile)) {
         const core::sensors::CompliancePair probe{core::sensors::CantileverBeam(pair->high),
                                                   core::sensors::CantileverBeam(pair->low)};
-        return ProfileForm::tr("Beam stiffness k_H = %1 N/m, k_L = %2 N/m; Q = F_H/F_L runs from 1 to %3.")
+        return ProfileForm::tr("Beam stiffness: stiff %1 N/m, soft %2 N/m; Q = F stiff / F soft runs from 1 to %3.")
             .arg(figures(probe.kHigh_n_per_m()), figures(probe.kLow_n_per_m()), figures(probe.qMax()));
     }
     if (const auto* capacitive = std::get_if<core::sensors::CapacitiveBeamProfile>(&profile)) {

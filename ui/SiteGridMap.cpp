@@ -1,5 +1,6 @@
 // SiteGridMap: grid size, cell colours, the legend and the moving selection.
 #include "ui/SiteGridMap.h"
+#include "ui/DisplayUnits.h"
 
 #include "ui/StiffnessScale.h"
 
@@ -55,11 +56,11 @@ SiteGridMap::SiteGridMap(QWidget* parent)
     auto* ends = new QHBoxLayout;
     const QLocale locale;
     const double middle = std::sqrt(StiffnessScale::kLow_n_per_m * StiffnessScale::kHigh_n_per_m);
-    ends->addWidget(new QLabel(locale.toString(StiffnessScale::kLow_n_per_m, 'f', 0), m_legend));
+    ends->addWidget(new QLabel(fixedText(StiffnessScale::kLow_n_per_m, 0), m_legend));
     ends->addStretch(1);
-    ends->addWidget(new QLabel(locale.toString(middle, 'f', 0), m_legend));
+    ends->addWidget(new QLabel(fixedText(middle, 0), m_legend));
     ends->addStretch(1);
-    ends->addWidget(new QLabel(tr("%1 N/m").arg(locale.toString(StiffnessScale::kHigh_n_per_m, 'f', 0)), m_legend));
+    ends->addWidget(new QLabel(tr("%1 N/m").arg(fixedText(StiffnessScale::kHigh_n_per_m, 0)), m_legend));
     auto* legendLayout = new QVBoxLayout(m_legend);
     legendLayout->setContentsMargins(0, 0, 0, 0);
     legendLayout->setSpacing(2);
@@ -126,15 +127,15 @@ void SiteGridMap::place(double stiffness_n_per_m, double standardError_n_per_m)
     const int row = m_grid->currentRow(), column = m_grid->currentColumn();
     if (row < 0 || column < 0) return;
     const QLocale locale;
-    auto* cell = new QTableWidgetItem(locale.toString(stiffness_n_per_m, 'f', 0));
+    auto* cell = new QTableWidgetItem(fixedText(stiffness_n_per_m, 0));
     cell->setData(kValueRole, stiffness_n_per_m);
     cell->setTextAlignment(Qt::AlignCenter);
     const QColor colour = stiffnessColour(stiffness_n_per_m);
     cell->setBackground(colour);
     cell->setForeground(colour.lightnessF() > 0.55F ? Qt::black : Qt::white);
-    cell->setToolTip(tr("%1: %2 ± %3 N/m")
-                         .arg(siteName(row, column), locale.toString(stiffness_n_per_m, 'f', 1),
-                              locale.toString(standardError_n_per_m, 'f', 1)));
+    cell->setToolTip(
+        tr("%1: %2 ± %3 N/m")
+            .arg(siteName(row, column), fixedText(stiffness_n_per_m, 1), fixedText(standardError_n_per_m, 1)));
     m_grid->setItem(row, column, cell);
     // Row by row, as one works across a phantom; wraps at the end.
     const int next = (row * m_grid->columnCount() + column + 1) % (m_grid->rowCount() * m_grid->columnCount());

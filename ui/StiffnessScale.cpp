@@ -1,5 +1,6 @@
 // StiffnessScale: log axis, tissue marks with spread labels, reading arrow.
 #include "ui/StiffnessScale.h"
+#include "ui/DisplayUnits.h"
 
 #include <QFile>
 #include <QLocale>
@@ -118,7 +119,7 @@ void StiffnessScale::paintEvent(QPaintEvent*)
     for (const double tick : {20.0, 50.0, 100.0, 200.0, 500.0, 1000.0}) {
         const double y = yOf(tick);
         p.drawLine(QPointF(kAxisX - 8, y), QPointF(kAxisX - 4, y));
-        const QString label = locale.toString(tick, 'f', 0);
+        const QString label = fixedText(tick, 0);
         p.drawText(QPointF(kAxisX - 12 - metrics.horizontalAdvance(label), y + metrics.ascent() / 2.0), label);
     }
     p.save();

@@ -55,7 +55,7 @@ std::vector<ZeroChange> LivePalpation::takeZeroChanges()
 
 std::vector<ChannelDescriptor> LivePalpation::outputChannels()
 {
-    return {{"F_H", "N", ChannelKind::Force}, {"F_L", "N", ChannelKind::Force}, {"Q", "", ChannelKind::Other}};
+    return {{"F stiff", "N", ChannelKind::Force}, {"F soft", "N", ChannelKind::Force}, {"Q", "", ChannelKind::Other}};
 }
 
 std::optional<std::string> LivePalpation::tare()

@@ -59,7 +59,8 @@ public:
                   const LivePalpationSettings& settings, double displaySeconds);
 
     // The channels of output(): F_H and F_L in N (NaN while taring), and Q
-    // (NaN unless both forces are above the contact threshold).
+    // (NaN unless both forces are above the contact threshold), named for
+    // a display that has no subscripts: "F stiff", "F soft", "Q".
     static std::vector<ChannelDescriptor> outputChannels();
     const sensors::CompliancePair& pair() const { return m_forces.pair(); }
     // The gauge factor that turns a beam's counts into strain; none when

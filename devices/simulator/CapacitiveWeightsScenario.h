@@ -56,7 +56,11 @@ public:
     // Throws std::invalid_argument for non-physical parameters.
     explicit CapacitiveWeightsScenario(const CapacitiveWeightsParameters& parameters = {});
 
-    std::string name() const override { return "capacitive weights"; }
+    // The rig a wizard drives is named as the source list names it.
+    std::string name() const override
+    {
+        return m_p.protocol == WeightProtocol::Manual ? "capacitive calibration rig" : "capacitive weights";
+    }
     std::optional<core::Mode> mode() const override { return core::Mode::Capacitive; }
     const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
     double sampleRate_hz() const override { return m_p.sampleRate_hz; }

@@ -168,9 +168,9 @@ TEST_F(SensorProfileDialogTest, ShowsTheFieldsInTheUnitsTheyAreMeasuredInWithWha
     // and 60 N/m for the 1 mm beam; Q tops out at 1620/60 = 27.
     const QLocale locale;
     const QString summary = text(dialog, "summaryLabel");
-    EXPECT_TRUE(summary.contains(QStringLiteral("k_H = %1 N/m").arg(locale.toString(1620.0, 'f', 0))))
+    EXPECT_TRUE(summary.contains(QStringLiteral("stiff %1 N/m").arg(locale.toString(1620.0, 'f', 0))))
         << summary.toStdString();
-    EXPECT_TRUE(summary.contains(QStringLiteral("k_L = %1 N/m").arg(locale.toString(60.0, 'f', 1))))
+    EXPECT_TRUE(summary.contains(QStringLiteral("soft %1 N/m").arg(locale.toString(60.0, 'f', 1))))
         << summary.toStdString();
     EXPECT_TRUE(summary.contains(QStringLiteral("from 1 to %1").arg(locale.toString(27.0, 'f', 1))))
         << summary.toStdString();

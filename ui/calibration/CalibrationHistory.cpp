@@ -1,5 +1,6 @@
 // CalibrationHistory: sensors, records, drift plot, sessions per record.
 #include "ui/calibration/CalibrationHistory.h"
+#include "ui/DisplayUnits.h"
 #include "ui/VocabularyText.h"
 
 #include "core/calibration/CalibrationDrift.h"
@@ -187,9 +188,9 @@ void CalibrationHistory::showSensor()
         const bool active = i + 1 == m_shown.size();
         const QStringList cells{QString::fromStdString(r.timestampUtc) + (active ? tr("  ✓ active") : QString()),
                                 QString::fromStdString(r.operatorName),
-                                value ? locale.toString(*value, 'f', main.decimals) : QStringLiteral("–"),
+                                value ? fixedText(*value, main.decimals) : QStringLiteral("–"),
                                 error ? significant(*error, 2) : QStringLiteral("–"),
-                                locale.toString(r.fit.rSquared, 'f', 6),
+                                fixedText(r.fit.rSquared, 6),
                                 QString::number(r.fit.points),
                                 sessionCounts.count(m_shown[i]->id) ? QString::number(sessionCounts[m_shown[i]->id])
                                                                     : QStringLiteral("?")};
@@ -223,11 +224,11 @@ void CalibrationHistory::showSensor()
         m_drift->clear();
     } else {
         const auto d = core::calibration::summarizeDrift(t, v);
-        QString text = tr("%1 over %2 calibrations: mean %3, SD %4; newest %5 % against the first")
-                           .arg(title)
-                           .arg(d.count)
-                           .arg(locale.toString(d.mean, 'f', 4), significant(d.standardDeviation, 2),
-                                locale.toString(100.0 * d.firstToLast, 'f', 2));
+        QString text =
+            tr("%1 over %2 calibrations: mean %3, SD %4; newest %5 % against the first")
+                .arg(title)
+                .arg(d.count)
+                .arg(fixedText(d.mean, 4), significant(d.standardDeviation, 2), fixedText(100.0 * d.firstToLast, 2));
         if (d.trendPerYear) text += tr("; trend %1 per year").arg(significant(*d.trendPerYear, 3));
         m_drift->setText(text + QLatin1Char('.'));
     }

@@ -1,6 +1,7 @@
 // CalibrationWizard: the sensor, zero, loads and result pages every
 // calibration shares, and storing its record off the GUI thread.
 #include "ui/calibration/CalibrationWizard.h"
+#include "ui/DisplayUnits.h"
 
 #include "core/storage/SessionStore.h"
 #include "ui/ActiveProfiles.h"
@@ -230,9 +231,8 @@ void CalibrationWizard::takeZero()
         m_zero = window;
         const DisplayUnit& u = m_words.signal;
         m_zeroText->setText(tr("%1: %2 %3, σ %4 %3 (mean of %5 samples)")
-                                .arg(m_words.zeroName,
-                                     QLocale().toString(window.mean * u.scale, 'f', m_words.signalDecimals), u.symbol,
-                                     significant(window.sigma * u.scale, 3))
+                                .arg(m_words.zeroName, fixedText(window.mean * u.scale, m_words.signalDecimals),
+                                     u.symbol, significant(window.sigma * u.scale, 3))
                                 .arg(window.count));
         refit();
         recheck(ZeroPage);
@@ -274,8 +274,7 @@ void CalibrationWizard::captured(Load load)
         else
             m_loads.push_back(load);
         m_panel->setStatus(tr("Captured %1: %2 ± %3 %4.")
-                               .arg(loadText(load),
-                                    QLocale().toString(load.window.mean * u.scale, 'f', m_words.signalDecimals),
+                               .arg(loadText(load), fixedText(load.window.mean * u.scale, m_words.signalDecimals),
                                     significant(load.window.sigma * u.scale, 3), u.symbol));
     }
     m_retakeIndex.reset();
@@ -329,9 +328,8 @@ void CalibrationWizard::refit()
         const Load& load = m_loads[i];
         rows.push_back(
             {loadText(load), load.loading ? tr("loading") : tr("unloading"), significant(forceOf(load) * 1e3, 5),
-             locale.toString(load.window.mean * u.scale, 'f', m_words.signalDecimals),
-             significant(load.window.sigma * u.scale, 3),
-             i + 1 < residuals.size() ? locale.toString(100.0 * residuals[i + 1], 'f', 3) : QStringLiteral("–")});
+             fixedText(load.window.mean * u.scale, m_words.signalDecimals), significant(load.window.sigma * u.scale, 3),
+             i + 1 < residuals.size() ? fixedText(100.0 * residuals[i + 1], 3) : QStringLiteral("–")});
     }
     m_panel->setRows(rows, 2);
 

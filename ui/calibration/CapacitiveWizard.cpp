@@ -1,6 +1,7 @@
 // CapacitiveWizard: the beam's profile and the final zero around
 // core::calibration::calibrateCapacitive.
 #include "ui/calibration/CapacitiveWizard.h"
+#include "ui/DisplayUnits.h"
 
 #include "core/sensors/CapacitiveBeam.h"
 #include "ui/calibration/CapturePanel.h"
@@ -87,7 +88,7 @@ void CapacitiveWizard::takeFinalZero()
                       m_finalZero = window;
                       panel()->setWaiting(false);
                       panel()->setStatus(tr("Final zero %1 pF: the drift since C0 is taken out of every load.")
-                                             .arg(QLocale().toString(window.mean * 1e12, 'f', 4)));
+                                             .arg(fixedText(window.mean * 1e12, 4)));
                       refit();
                       panel()->focusEntry();
                   });
@@ -129,7 +130,7 @@ CalibrationWizard::Fit CapacitiveWizard::fitLoads()
     return {m_result->fitForce_n, m_result->fitDelta_f, fit,
             tr("Sensitivity %1 ± %2 pF/mN, R² = %3, %4 points with the zero.")
                 .arg(significant(fit.slope * 1e9, 5), significant(fit.slopeStandardError * 1e9, 2),
-                     QLocale().toString(fit.rSquared, 'f', 6))
+                     fixedText(fit.rSquared, 6))
                 .arg(fit.points)};
 }
 
@@ -138,18 +139,18 @@ QString CapacitiveWizard::resultHtml() const
     const QLocale locale;
     const auto& r = *m_result;
     const auto& fit = *r.forceFit;
-    const QString drift = finalZero() ? tr("drift %1 pF/min (removed from every load)")
-                                            .arg(locale.toString(r.drift_f_per_s * 1e12 * 60.0, 'f', 4))
-                                      : tr("no final zero, so no drift correction");
-    const QString hysteresis = r.hysteresis ? tr("%1 % of full scale").arg(locale.toString(*r.hysteresis * 100, 'f', 2))
+    const QString drift =
+        finalZero() ? tr("drift %1 pF/min (removed from every load)").arg(fixedText(r.drift_f_per_s * 1e12 * 60.0, 4))
+                    : tr("no final zero, so no drift correction");
+    const QString hysteresis = r.hysteresis ? tr("%1 % of full scale").arg(fixedText(*r.hysteresis * 100, 2))
                                             : tr("not measured (no load was both placed and removed)");
     return tr("<b>%1</b><br>C0 = <b>%2 pF</b>, noise σ %3 pF; %4.<br>Sensitivity <b>%5 ± %6 pF/mN</b> (standard "
               "error), intercept %7 pF, R² = %8; relative sensitivity %9 per mN.<br>Hysteresis %10.<br>Detection "
               "limit (3σ): %11 µN (%12 mgf), a tip displacement of %13 µm through k = %14 N/m.")
-        .arg(QString::fromStdString(profile()->name).toHtmlEscaped(), locale.toString(r.c0_f * 1e12, 'f', 4),
-             locale.toString(r.baselineSigma_f * 1e12, 'f', 4), drift, significant(fit.slope * 1e9, 5),
-             significant(fit.slopeStandardError * 1e9, 2), locale.toString(fit.intercept * 1e12, 'f', 4),
-             locale.toString(fit.rSquared, 'f', 6), significant(*r.relativeSensitivity_per_n * 1e-3, 3))
+        .arg(QString::fromStdString(profile()->name).toHtmlEscaped(), fixedText(r.c0_f * 1e12, 4),
+             fixedText(r.baselineSigma_f * 1e12, 4), drift, significant(fit.slope * 1e9, 5),
+             significant(fit.slopeStandardError * 1e9, 2), fixedText(fit.intercept * 1e12, 4),
+             fixedText(fit.rSquared, 6), significant(*r.relativeSensitivity_per_n * 1e-3, 3))
         .arg(hysteresis, significant(*r.detectionLimit_n * 1e6, 3),
              significant(*r.detectionLimit_n / kMilligramForce_n, 3),
              significant(r.detectionLimit_m.value_or(0) * 1e6, 3),

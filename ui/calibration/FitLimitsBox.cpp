@@ -1,5 +1,6 @@
 // FitLimitsBox: three limits and the problems text.
 #include "ui/calibration/FitLimitsBox.h"
+#include "ui/DisplayUnits.h"
 
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -61,11 +62,11 @@ QStringList FitLimitsBox::problems(const core::calibration::FitCredibility& c,
     if (c.pointOffLine)
         out << tr("%1 is %2 % of full scale off the line through the other points (limit %3 %). Go back, "
                   "select it and retake it.")
-                   .arg(pointName(c.farthest->index), locale.toString(100.0 * c.farthest->offLine, 'f', 1),
-                        locale.toString(100.0 * limits.maximumOffLine, 'f', 1));
+                   .arg(pointName(c.farthest->index), fixedText(100.0 * c.farthest->offLine, 1),
+                        fixedText(100.0 * limits.maximumOffLine, 1));
     if (c.rSquaredTooLow)
         out << tr("R² = %1 is below the limit %2: the points do not lie on a line.")
-                   .arg(locale.toString(c.rSquared, 'f', 5), locale.toString(limits.minimumRSquared, 'f', 5));
+                   .arg(fixedText(c.rSquared, 5), fixedText(limits.minimumRSquared, 5));
     return out;
 }
 

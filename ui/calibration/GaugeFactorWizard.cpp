@@ -1,6 +1,7 @@
 // GaugeFactorWizard: the beam and its chain around
 // core::calibration::calibrateGaugeFactor.
 #include "ui/calibration/GaugeFactorWizard.h"
+#include "ui/DisplayUnits.h"
 
 #include "core/storage/SessionStore.h"
 #include "ui/QuantityEdit.h"
@@ -77,7 +78,7 @@ GaugeFactorWizard::GaugeFactorWizard(CalibrationContext context, QWidget* parent
     setWindowTitle(tr("Gauge-factor calibration"));
     setObjectName(QStringLiteral("gaugeFactorWizard"));
     m_beam->setObjectName(QStringLiteral("beamBox"));
-    m_beam->addItems({tr("stiff beam (F_H)"), tr("soft beam (F_L)")});
+    m_beam->addItems({tr("stiff beam"), tr("soft beam")});
     addPages({{tr("Bea&m"), m_beam}}, createChainPage());
     addDeviationWarning();
     connect(profileBox(), &QComboBox::currentIndexChanged, this, &GaugeFactorWizard::showBeam);
@@ -291,7 +292,7 @@ CalibrationWizard::Fit GaugeFactorWizard::fitLoads()
     return {m_result->strain, m_result->relativeChange, fit,
             tr("Gauge factor %1 ± %2 (nominal %3), R² = %4, %5 points with the zero.")
                 .arg(significant(fit.slope, 5), significant(fit.slopeStandardError, 2),
-                     significant(m_result->nominalGaugeFactor, 4), QLocale().toString(fit.rSquared, 'f', 6))
+                     significant(m_result->nominalGaugeFactor, 4), fixedText(fit.rSquared, 6))
                 .arg(fit.points)};
 }
 
@@ -305,8 +306,8 @@ QString GaugeFactorWizard::resultHtml() const
               "residual σ %10 × 10⁻⁶ ΔR/R, %11 points with the zero.")
         .arg(QString::fromStdString(sensorName()).toHtmlEscaped(), significant(r.gaugeFactor, 5),
              significant(fit.slopeStandardError, 2), significant(r.nominalGaugeFactor, 4),
-             locale.toString(100.0 * r.deviationFromNominal, 'f', 2), significant(r.countsPerNewton, 6),
-             significant(r.zeroCounts, 6), significant(zero()->sigma, 3), locale.toString(fit.rSquared, 'f', 6))
+             fixedText(100.0 * r.deviationFromNominal, 2), significant(r.countsPerNewton, 6),
+             significant(r.zeroCounts, 6), significant(zero()->sigma, 3), fixedText(fit.rSquared, 6))
         .arg(significant(fit.residualStandardDeviation * 1e6, 3))
         .arg(fit.points);
 }
@@ -318,7 +319,7 @@ void GaugeFactorWizard::resultShown()
     m_deviationWarning->setText(
         warn ? tr("⚠ The gauge factor differs from the datasheet's by more than %1 %: check the bridge, gain and "
                   "excitation settings and the masses before you trust it (a poorly bonded gauge reads low).")
-                   .arg(QLocale().toString(m_warnPercent->value(), 'f', 1))
+                   .arg(fixedText(m_warnPercent->value(), 1))
              : QString());
 }
 

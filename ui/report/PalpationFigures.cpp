@@ -17,10 +17,10 @@ QStringList pressCells(const core::report::PressRow& press)
     const QLocale locale;
     const auto [k, se] = valueAndErrorTexts(press.stiffness_n_per_m, press.standardError_n_per_m.value_or(0.0));
     const QString depth = press.depthMin_m && press.depthMax_m
-                              ? QStringLiteral("%1 – %2").arg(locale.toString(*press.depthMin_m * 1e3, 'f', 2),
-                                                              locale.toString(*press.depthMax_m * 1e3, 'f', 2))
+                              ? QStringLiteral("%1 – %2").arg(fixedText(*press.depthMin_m * 1e3, 2),
+                                                              fixedText(*press.depthMax_m * 1e3, 2))
                               : QStringLiteral("—");
-    return {locale.toString(press.start_s, 'f', 2), QString::fromStdString(press.site),
+    return {fixedText(press.start_s, 2), QString::fromStdString(press.site),
             press.standardError_n_per_m ? k + QStringLiteral(" ± ") + se : k, depth};
 }
 
@@ -28,7 +28,7 @@ QStringList siteCells(const core::report::SiteSummary& site)
 {
     const QLocale locale;
     const int decimals = site.standardDeviation_n_per_m ? decimalsFor(*site.standardDeviation_n_per_m) : 1;
-    const auto value = [&](double v) { return locale.toString(v, 'f', decimals); };
+    const auto value = [&](double v) { return fixedText(v, decimals); };
     return {QString::fromStdString(site.site), QString::number(site.presses), value(site.mean_n_per_m),
             site.standardDeviation_n_per_m ? value(*site.standardDeviation_n_per_m) : QStringLiteral("—"),
             QStringLiteral("%1 – %2").arg(value(site.min_n_per_m), value(site.max_n_per_m))};
@@ -62,7 +62,7 @@ QString siteGridHtml(const std::vector<core::report::SiteSummary>& sites)
             const QColor fill = stiffnessColour(site.mean_n_per_m);
             const QString ink = fill.lightnessF() > 0.55f ? QStringLiteral("#000000") : QStringLiteral("#ffffff");
             html += QStringLiteral("<td align=center bgcolor=%1 style='color:%2'>%3<br><small>n = %4</small></td>")
-                        .arg(fill.name(), ink, locale.toString(site.mean_n_per_m, 'f', 0))
+                        .arg(fill.name(), ink, fixedText(site.mean_n_per_m, 0))
                         .arg(site.presses);
         }
         html += QStringLiteral("</tr>");

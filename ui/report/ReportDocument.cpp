@@ -1,5 +1,6 @@
 // ReportDocument: the report's HTML, its plot resource, and the PDF.
 #include "ui/report/ReportDocument.h"
+#include "ui/DisplayUnits.h"
 #include "ui/VocabularyText.h"
 
 #include "core/Version.h"
@@ -182,9 +183,9 @@ QString defectTables(const core::report::ReportData& data)
         for (const std::size_t i : site.crossings) siteOf[i] = static_cast<int>(k + 1);
         sites.push_back(
             {QString::number(k + 1),
-             site.position_m ? QStringLiteral("%1 ± %2").arg(QLocale().toString(*site.position_m * 1e3, 'f', 0),
-                                                             number(site.spread_m * 1e3, 0))
-                             : QObject::tr("not placed"),
+             site.position_m
+                 ? QStringLiteral("%1 ± %2").arg(fixedText(*site.position_m * 1e3, 0), number(site.spread_m * 1e3, 0))
+                 : QObject::tr("not placed"),
              QString::number(site.crossings.size()), QObject::tr("%1 A→B, %2 B→A").arg(site.forward).arg(site.backward),
              QStringLiteral("%1 – %2").arg(number(site.first_s, 2), number(site.last_s, 2))});
     }

@@ -1,5 +1,6 @@
 // ReportHtml: the report's HTML building blocks.
 #include "ui/report/ReportHtml.h"
+#include "ui/DisplayUnits.h"
 
 #include <QLocale>
 
@@ -17,7 +18,7 @@ QString orDash(const std::string& value)
 
 QString number(double value, int decimals)
 {
-    return QLocale().toString(value, 'f', decimals);
+    return fixedText(value, decimals);
 }
 
 QString row(const QString& name, const QString& value)
