@@ -11,6 +11,7 @@
 #include "ui/DesignTool.h"
 #include "ui/DeviceConnector.h"
 #include "ui/DevicePanel.h"
+#include "ui/HelpWindows.h"
 #include "ui/InterruptedSessionsReport.h"
 #include "ui/LinkStatus.h"
 #include "ui/LivePlotWidget.h"
@@ -41,6 +42,7 @@
 #include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QSplitter>
 #include <QStandardPaths>
@@ -155,11 +157,35 @@ MainWindow::~MainWindow()
     disconnectSource();  // ends a recording, with everything kept
 }
 
+// Quitting while recording asks first: stopping ends the session with its
+// verdict step (the operator's to answer), so the window stays for it.
 void MainWindow::closeEvent(QCloseEvent* event)
 {
-    stopRecording();
+    if (isRecording()) {
+        event->ignore();
+        askToStopBeforeQuitting();
+        return;
+    }
     saveSettings();
     event->accept();
+}
+
+void MainWindow::askToStopBeforeQuitting()
+{
+    if (findChild<QMessageBox*>(QStringLiteral("quitWhileRecordingBox"))) return;  // asked already
+    auto* box = new QMessageBox(QMessageBox::Question, tr("Recording"),
+                                tr("Session %1 is recording. Stop it before quitting?").arg(m_session->sessionId()),
+                                QMessageBox::NoButton, this);
+    box->setObjectName(QStringLiteral("quitWhileRecordingBox"));
+    box->setInformativeText(tr("Stopping ends the session and asks for its verdict; quit once that is done."));
+    QPushButton* stop = box->addButton(tr("Stop recording"), QMessageBox::AcceptRole);
+    stop->setObjectName(QStringLiteral("stopForQuitButton"));
+    QPushButton* keep = box->addButton(tr("Keep recording"), QMessageBox::RejectRole);
+    keep->setObjectName(QStringLiteral("keepRecordingButton"));
+    box->setDefaultButton(keep);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    connect(stop, &QPushButton::clicked, this, &MainWindow::stopRecording);
+    box->open();
 }
 
 void MainWindow::restoreSettings()
@@ -171,6 +197,7 @@ void MainWindow::restoreSettings()
     metadata.mode = core::modeFromString(settings.value(QStringLiteral("session/mode")).toString().toStdString())
                         .value_or(core::Mode::PanelScan);
     metadata.operatorName = settings.value(QStringLiteral("session/operator")).toString().toStdString();
+    metadata.subject = settings.value(QStringLiteral("session/subject")).toString().toStdString();
     m_sessionBar->setMetadata(metadata);
     setStorePath(settings.value(QStringLiteral("recording/store"), defaultStorePath()).toString());
     showModeView();
@@ -210,6 +237,7 @@ void MainWindow::saveSettings() const
     const auto metadata = m_sessionBar->metadata();
     settings.setValue(QStringLiteral("session/mode"), wordText(metadata.mode));
     settings.setValue(QStringLiteral("session/operator"), QString::fromStdString(metadata.operatorName));
+    settings.setValue(QStringLiteral("session/subject"), QString::fromStdString(metadata.subject));
     settings.setValue(QStringLiteral("recording/store"), m_storePath);
 }
 
@@ -271,6 +299,10 @@ void MainWindow::createMenus()
     });
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&User guide"), QKeySequence::HelpContents, this,
+                    [this] { showUserGuide(this, QCoreApplication::applicationDirPath()); });
+    help->addAction(tr("&Keyboard shortcuts"), this, [this] { showKeyboardShortcuts(*menuBar(), this); });
+    help->addSeparator();
     help->addAction(tr("&About Tactiscope"), this, &MainWindow::showAbout);
 }
 

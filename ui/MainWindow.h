@@ -113,6 +113,7 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void askToStopBeforeQuitting();
 
 private:
     void createMenus();

@@ -14,14 +14,30 @@
 
 #include <algorithm>
 
-int main(int argc, char* argv[])
-{
-    QApplication app(argc, argv);
-    QApplication::setApplicationName(QStringLiteral("Tactiscope"));
-    QApplication::setOrganizationName(QStringLiteral("Tactiscope"));
-    QApplication::setApplicationVersion(QString::fromUtf8(tactiscope::core::versionString()));
+namespace {
 
-    QCommandLineParser parser;
+void nameApplication()
+{
+    QCoreApplication::setApplicationName(QStringLiteral("Tactiscope"));
+    QCoreApplication::setOrganizationName(QStringLiteral("Tactiscope"));
+    QCoreApplication::setApplicationVersion(QString::fromUtf8(tactiscope::core::versionString()));
+}
+
+// --help and --version answer without a display: a QApplication would
+// abort where there is none (over ssh, in a script, in CI).
+bool asksOnlyForText(int argc, char* argv[])
+{
+    for (int i = 1; i < argc; ++i) {
+        const QByteArray argument(argv[i]);
+        if (argument == "-h" || argument == "--help" || argument == "--help-all" || argument == "-?" ||
+            argument == "-v" || argument == "--version")
+            return true;
+    }
+    return false;
+}
+
+void addOptions(QCommandLineParser& parser)
+{
     parser.setApplicationDescription(QStringLiteral("Inspection workstation for cantilever tactile sensors."));
     parser.addHelpOption();
     parser.addVersionOption();
@@ -42,7 +58,28 @@ int main(int argc, char* argv[])
         {QStringLiteral("screenshot-delay-ms"), QStringLiteral("How long to stream before the screenshot (4000)."),
          QStringLiteral("MS"), QStringLiteral("4000")},
     });
+}
+
+}  // namespace
+
+int main(int argc, char* argv[])
+{
+    if (asksOnlyForText(argc, argv)) {
+        QCoreApplication text(argc, argv);
+        nameApplication();
+        QCommandLineParser parser;
+        addOptions(parser);
+        parser.process(text);  // prints the help or the version and exits
+        return 0;
+    }
+    QApplication app(argc, argv);
+    nameApplication();
+    QCommandLineParser parser;
+    addOptions(parser);
     parser.process(app);
+    const auto ids = tactiscope::devices::simulator::scenarioIds();
+    QStringList scenarios;
+    for (const auto& id : ids) scenarios << QString::fromStdString(id);
     const std::string scenario = parser.value(QStringLiteral("scenario")).toStdString();
     if (std::ranges::find(ids, scenario) == ids.end()) {
         QTextStream(stderr) << "tactiscope: unknown scenario " << QString::fromStdString(scenario) << "; one of "

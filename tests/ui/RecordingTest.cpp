@@ -223,3 +223,36 @@ TEST(Recording, ADamagedStoreIsShownAtStartNotAtRecord)
     EXPECT_TRUE(box->informativeText().contains(QStringLiteral("is damaged"))) << box->informativeText().toStdString();
     tactiscope::testing::saveScreenshot(*box, QStringLiteral("damaged-store"));
 }
+
+TEST(Recording, QuittingWhileRecordingAsksFirstAndStoppingGoesThroughTheVerdict)
+{
+    // Before, Ctrl+Q stopped the recording and quit, storing a verdict
+    // nobody confirmed.
+    QTemporaryDir dir;
+    ui::MainWindow window;
+    window.setStorePath(dir.filePath("s.tactiscope"));
+    window.connectSource(liveSimulator());
+    window.show();
+    QTest::keyClicks(child<QLineEdit>(window, "operatorEdit"), QStringLiteral("Ada"));
+    ASSERT_TRUE(window.startRecording());
+    runEventLoopFor(500);
+
+    EXPECT_FALSE(window.close());  // refused: it asks
+    EXPECT_TRUE(window.isRecording());
+    auto* box = window.findChild<QMessageBox*>(QStringLiteral("quitWhileRecordingBox"));
+    ASSERT_NE(box, nullptr);
+    QTest::mouseClick(child<QPushButton>(*box, "keepRecordingButton"), Qt::LeftButton);
+    runEventLoopFor(100);
+    EXPECT_TRUE(window.isRecording());
+    EXPECT_TRUE(window.isVisible());
+
+    EXPECT_FALSE(window.close());
+    box = window.findChild<QMessageBox*>(QStringLiteral("quitWhileRecordingBox"));
+    ASSERT_NE(box, nullptr);
+    QTest::mouseClick(child<QPushButton>(*box, "stopForQuitButton"), Qt::LeftButton);
+    runEventLoopFor(100);
+    EXPECT_FALSE(window.isRecording());
+    EXPECT_TRUE(window.isVisible()) << "the verdict step is the operator's, in the open window";
+    EXPECT_NE(window.findChild<QDialog*>(QStringLiteral("verdictBox")), nullptr);
+    EXPECT_TRUE(window.close());  // nothing recording: it closes
+}

@@ -1,0 +1,107 @@
+// HelpWindows: a text browser on the guide, a table of the shortcuts.
+#include "ui/HelpWindows.h"
+
+#include <QAction>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QTableWidget>
+#include <QTextBrowser>
+#include <QUrl>
+#include <QVBoxLayout>
+
+namespace tactiscope::ui {
+namespace {
+
+QDialog* helpDialog(QWidget* parent, const QString& name, const QString& title)
+{
+    auto* dialog = new QDialog(parent);
+    dialog->setObjectName(name);
+    dialog->setWindowTitle(title);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    auto* layout = new QVBoxLayout(dialog);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, dialog);
+    QObject::connect(buttons, &QDialogButtonBox::rejected, dialog, &QDialog::reject);
+    layout->addWidget(buttons);
+    return dialog;
+}
+
+// The menu's entries with shortcuts, "Session › Start / stop recording".
+void collect(const QMenu& menu, const QString& path, QList<QPair<QString, QString>>& rows)
+{
+    for (const QAction* action : menu.actions()) {
+        const QString text = QString(action->text()).remove(QLatin1Char('&'));
+        if (action->menu()) {
+            collect(*action->menu(), path + QStringLiteral(" › ") + text, rows);
+            continue;
+        }
+        if (!action->shortcut().isEmpty())
+            rows.append({path + QStringLiteral(" › ") + text, action->shortcut().toString(QKeySequence::NativeText)});
+    }
+}
+
+}  // namespace
+
+QString userGuidePath(const QString& executableDirectory)
+{
+    for (const QString& candidate :
+         {QStringLiteral("../share/doc/tactiscope/user-guide.md"), QStringLiteral("doc/user-guide.md")}) {
+        const QFileInfo file(QDir(executableDirectory).filePath(candidate));
+        if (file.isReadable()) return file.canonicalFilePath();
+    }
+    return {};
+}
+
+void showUserGuide(QWidget* parent, const QString& executableDirectory)
+{
+    const QString path = userGuidePath(executableDirectory);
+    if (path.isEmpty()) {
+        auto* box = new QMessageBox(QMessageBox::Information, QObject::tr("User guide"),
+                                    QObject::tr("The user guide is not installed beside this program. It is "
+                                                "docs/user-guide.md in the source, and share/doc/tactiscope/ in a "
+                                                "package."),
+                                    QMessageBox::Close, parent);
+        box->setObjectName(QStringLiteral("userGuideMissing"));
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+        return;
+    }
+    QDialog* dialog = helpDialog(parent, QStringLiteral("userGuide"), QObject::tr("Tactiscope user guide"));
+    auto* browser = new QTextBrowser(dialog);
+    browser->setObjectName(QStringLiteral("userGuideText"));
+    browser->setOpenExternalLinks(true);
+    browser->setSearchPaths({QFileInfo(path).absolutePath()});  // its screenshots/
+    browser->setSource(QUrl::fromLocalFile(path), QTextDocument::MarkdownResource);
+    qobject_cast<QVBoxLayout*>(dialog->layout())->insertWidget(0, browser, 1);
+    dialog->resize(900, 700);
+    dialog->show();
+}
+
+void showKeyboardShortcuts(const QMenuBar& menus, QWidget* parent)
+{
+    QList<QPair<QString, QString>> rows;
+    for (const QAction* action : menus.actions())
+        if (action->menu()) collect(*action->menu(), QString(action->text()).remove(QLatin1Char('&')), rows);
+    QDialog* dialog = helpDialog(parent, QStringLiteral("keyboardShortcuts"), QObject::tr("Keyboard shortcuts"));
+    auto* table = new QTableWidget(static_cast<int>(rows.size()), 2, dialog);
+    table->setObjectName(QStringLiteral("shortcutTable"));
+    table->setHorizontalHeaderLabels({QObject::tr("Command"), QObject::tr("Keys")});
+    table->verticalHeader()->hide();
+    table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    for (int r = 0; r < rows.size(); ++r) {
+        table->setItem(r, 0, new QTableWidgetItem(rows[r].first));
+        table->setItem(r, 1, new QTableWidgetItem(rows[r].second));
+    }
+    table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    table->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    qobject_cast<QVBoxLayout*>(dialog->layout())->insertWidget(0, table, 1);
+    dialog->resize(520, 480);
+    dialog->show();
+}
+
+}  // namespace tactiscope::ui
