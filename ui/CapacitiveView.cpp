@@ -1,8 +1,8 @@
 // CapacitiveView: lanes, large readouts, baseline and calibration lines.
 #include "ui/CapacitiveView.h"
-#include "ui/DisplayUnits.h"
 
 #include "ui/ActiveProfiles.h"
+#include "ui/DisplayUnits.h"
 #include "ui/LivePlotWidget.h"
 
 #include <QGridLayout>

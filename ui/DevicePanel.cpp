@@ -1,8 +1,8 @@
 // DevicePanel: the source list, link settings, connect buttons and counters.
 #include "ui/DevicePanel.h"
-#include "ui/DisplayUnits.h"
 
 #include "devices/simulator/ScenarioCatalog.h"
+#include "ui/DisplayUnits.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -1,9 +1,9 @@
 // LinkStatus: the counters from the acquisition and the reconnecting source.
 #include "ui/LinkStatus.h"
-#include "ui/DisplayUnits.h"
 
 #include "devices/Acquisition.h"
 #include "devices/ReconnectingSource.h"
+#include "ui/DisplayUnits.h"
 
 #include <QLocale>
 #include <QObject>

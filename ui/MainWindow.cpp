@@ -1,7 +1,7 @@
 // MainWindow: wiring of the live session, the plots, menus and status bar.
 #include "ui/MainWindow.h"
-#include "ui/DisplayUnits.h"
 
+#include "core/storage/SessionStore.h"
 #include "core/storage/StoreWorker.h"
 #include "devices/session/LiveSession.h"
 #include "devices/simulator/ScenarioCatalog.h"
@@ -11,6 +11,7 @@
 #include "ui/DesignTool.h"
 #include "ui/DeviceConnector.h"
 #include "ui/DevicePanel.h"
+#include "ui/DisplayUnits.h"
 #include "ui/HelpWindows.h"
 #include "ui/InterruptedSessionsReport.h"
 #include "ui/LinkStatus.h"
@@ -38,6 +39,7 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QIcon>
 #include <QLocale>
 #include <QMenuBar>
@@ -342,8 +344,30 @@ void MainWindow::chooseStore()
                                                       tr("Tactiscope session stores (*.tactiscope);;All files (*)"),
                                                       nullptr, QFileDialog::DontConfirmOverwrite);
     if (path.isEmpty()) return;
+    useStore(path);
+}
+
+// A file that is there must be a store already: a CSV or a damaged file is
+// refused when chosen, with the reason, and the store stays what it was.
+// (A new path is a store to be made: the first recording creates it.)
+bool MainWindow::useStore(const QString& path)
+{
+    if (QFileInfo::exists(path)) {
+        try {
+            core::storage::SessionStore probe(path.toStdString(), core::storage::Database::Access::ReadOnly);
+            probe.refuseIfDamaged();
+        } catch (const core::storage::StorageError& e) {
+            reportProblem(this, {tr("Not a session store"),
+                                 tr("%1 cannot be the session store.").arg(QDir::toNativeSeparators(path)),
+                                 QString::fromStdString(e.what()),
+                                 tr("Sessions still go to %1.").arg(QDir::toNativeSeparators(m_storePath)),
+                                 QStringLiteral("storeRefusedBox")});
+            return false;
+        }
+    }
     setStorePath(path);
     checkStore();
+    return true;
 }
 
 bool MainWindow::setMode(core::Mode mode)

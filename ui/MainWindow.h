@@ -85,6 +85,9 @@ public:
     // runs), with the session bar's metadata and the device's identity.
     // Failures are shown without stopping the acquisition; start returns
     // whether recording started.
+    // Makes `path` the session store when it is one (or is not there yet,
+    // for the first recording to create); else says why and keeps the old.
+    bool useStore(const QString& path);
     void setStorePath(const QString& path);
     QString storePath() const { return m_storePath; }
     bool startRecording();

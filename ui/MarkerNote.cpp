@@ -1,5 +1,6 @@
 // MarkerNote: a non-modal input dialog that deletes itself.
 #include "ui/MarkerNote.h"
+
 #include "ui/DisplayUnits.h"
 
 #include <QInputDialog>

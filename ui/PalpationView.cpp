@@ -1,9 +1,9 @@
 // PalpationView: layout, the large readout, press rows, scale and grid.
 #include "ui/PalpationView.h"
-#include "ui/DisplayUnits.h"
 
 #include "core/compliance/ReferenceTissues.h"
 #include "ui/ActiveProfiles.h"
+#include "ui/DisplayUnits.h"
 #include "ui/LivePlotWidget.h"
 #include "ui/SiteGridMap.h"
 #include "ui/StiffnessScale.h"

@@ -1,7 +1,7 @@
 // PanelScanView: parameter form → LiveDetectionSettings, events → table and alarm.
 #include "ui/PanelScanView.h"
-#include "ui/DisplayUnits.h"
 
+#include "ui/DisplayUnits.h"
 #include "ui/LivePlotWidget.h"
 #include "ui/VerdictDialog.h"
 #include "ui/VocabularyText.h"

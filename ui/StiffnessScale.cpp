@@ -1,5 +1,6 @@
 // StiffnessScale: log axis, tissue marks with spread labels, reading arrow.
 #include "ui/StiffnessScale.h"
+
 #include "ui/DisplayUnits.h"
 
 #include <QFile>

@@ -16,6 +16,7 @@
 #include "ui/MainWindow.h"
 
 #include <QComboBox>
+#include <QFile>
 #include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
@@ -255,4 +256,26 @@ TEST(Recording, QuittingWhileRecordingAsksFirstAndStoppingGoesThroughTheVerdict)
     EXPECT_TRUE(window.isVisible()) << "the verdict step is the operator's, in the open window";
     EXPECT_NE(window.findChild<QDialog*>(QStringLiteral("verdictBox")), nullptr);
     EXPECT_TRUE(window.close());  // nothing recording: it closes
+}
+
+TEST(Recording, AFileThatIsNotAStoreIsRefusedWhenChosen)
+{
+    QTemporaryDir dir;
+    const QString good = dir.filePath("good.tactiscope");
+    const QString csv = dir.filePath("scan.csv");
+    QFile file(csv);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write("t,a,b\n0,1e-6,2e-6\n");
+    file.close();
+    ui::MainWindow window;
+    window.setStorePath(good);
+    window.show();
+    EXPECT_FALSE(window.useStore(csv));
+    auto* refused = window.findChild<QMessageBox*>(QStringLiteral("storeRefusedBox"));
+    ASSERT_NE(refused, nullptr);
+    EXPECT_TRUE(refused->text().contains("scan.csv")) << refused->text().toStdString();
+    const auto* store = child<QLabel>(window, "storeLabel");
+    EXPECT_TRUE(store->text().contains("good.tactiscope") || store->toolTip().contains("good.tactiscope"))
+        << "the store stays what it was";
+    EXPECT_TRUE(window.useStore(dir.filePath("new.tactiscope")));  // not there yet: the first recording makes it
 }

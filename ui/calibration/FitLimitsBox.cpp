@@ -1,5 +1,6 @@
 // FitLimitsBox: three limits and the problems text.
 #include "ui/calibration/FitLimitsBox.h"
+
 #include "ui/DisplayUnits.h"
 
 #include <QDoubleSpinBox>

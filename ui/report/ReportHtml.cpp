@@ -1,5 +1,6 @@
 // ReportHtml: the report's HTML building blocks.
 #include "ui/report/ReportHtml.h"
+
 #include "ui/DisplayUnits.h"
 
 #include <QLocale>
