@@ -23,6 +23,7 @@
 #include "ui/PlotControls.h"
 #include "ui/ProblemReport.h"
 #include "ui/RawConsole.h"
+#include "ui/RecordingPolicy.h"
 #include "ui/SensorProfileDialog.h"
 #include "ui/SessionBar.h"
 #include "ui/StatusLine.h"
@@ -294,6 +295,7 @@ void MainWindow::createMenus()
         history->show();
     });
     tools->addSeparator();
+    tools->addAction(tr("&Settings…"), this, [this] { showSettingsDialog(this); });
     tools->addAction(tr("Compliance probe &design…"), this, [this] {
         auto* tool = new DesignTool(ProfileLibrary::defaultDirectory(), this);
         tool->setAttribute(Qt::WA_DeleteOnClose);
@@ -416,7 +418,15 @@ bool MainWindow::startRecording()
         statusBar()->showMessage(tr("Connect a device to record."), 5000);
         return false;
     }
-    if (const auto error = m_session->startRecording(m_sessionBar->metadata())) {
+    const auto metadata = m_sessionBar->metadata();
+    if (const QString refusal = recordingRefusal(recordingPolicy(), QString::fromStdString(metadata.subject),
+                                                 QString::fromStdString(metadata.operatorName));
+        !refusal.isEmpty()) {
+        reportProblem(this, {tr("Cannot record"), tr("Recording did not start."), refusal, {},
+                             QStringLiteral("recordRefusedBox")});
+        return false;
+    }
+    if (const auto error = m_session->startRecording(metadata)) {
         reportProblem(this, {tr("Cannot record"), tr("Recording could not start."), QString::fromStdString(*error),
                              tr("Choose another session store (Session ▸ Session store…) or free space on its "
                                 "disk, then record again.")});

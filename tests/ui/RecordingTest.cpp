@@ -14,6 +14,7 @@
 #include "support/WaitFor.h"
 #include "ui/LivePlotWidget.h"
 #include "ui/MainWindow.h"
+#include "ui/RecordingPolicy.h"
 
 #include <QComboBox>
 #include <QFile>
@@ -278,4 +279,27 @@ TEST(Recording, AFileThatIsNotAStoreIsRefusedWhenChosen)
     EXPECT_TRUE(store->text().contains("good.tactiscope") || store->toolTip().contains("good.tactiscope"))
         << "the store stays what it was";
     EXPECT_TRUE(window.useStore(dir.filePath("new.tactiscope")));  // not there yet: the first recording makes it
+}
+
+TEST(Recording, AStationThatRequiresASubjectAndAnOperatorRecordsOnlyWithBoth)
+{
+    ui::setRequireSubjectAndOperator(true);
+    QTemporaryDir dir;
+    ui::MainWindow window;
+    window.setStorePath(dir.filePath("s.tactiscope"));
+    window.connectSource(liveSimulator());
+    window.show();
+    child<QLineEdit>(window, "subjectEdit")->clear();
+    child<QLineEdit>(window, "operatorEdit")->clear();
+    QTest::keyClicks(child<QLineEdit>(window, "operatorEdit"), QStringLiteral("Ada"));
+    EXPECT_FALSE(window.startRecording());
+    auto* refused = window.findChild<QMessageBox*>(QStringLiteral("recordRefusedBox"));
+    ASSERT_NE(refused, nullptr);
+    EXPECT_TRUE(refused->informativeText().contains("type the subject (panel or phantom id)"))
+        << refused->informativeText().toStdString();
+    EXPECT_FALSE(refused->informativeText().contains("operator's name")) << "the operator was given";
+    QTest::keyClicks(child<QLineEdit>(window, "subjectEdit"), QStringLiteral("door-17"));
+    EXPECT_TRUE(window.startRecording());
+    window.stopRecording();
+    ui::setRequireSubjectAndOperator(false);  // the process's other tests record without
 }
