@@ -350,7 +350,14 @@ void LivePlotWidget::applyTimeAxis(QCPAxisRect* rect)
 {
     QCPAxis* axis = rect->axis(QCPAxis::atBottom);
     axis->setTicker(QSharedPointer<QCPAxisTicker>(new OffsetTicker(m_origin_s)));
-    axis->setLabel(m_timeLabel);
+    axis->setLabel(m_compactTimeTitle ? tr("t (s)") : m_timeLabel);
+}
+
+void LivePlotWidget::setCompactTimeTitle(bool compact)
+{
+    m_compactTimeTitle = compact;
+    applyTimeAxis(m_plot->axisRect());
+    for (const Lane& lane : m_lanes) applyTimeAxis(lane.rect);
 }
 
 void LivePlotWidget::setTimeOrigin(double origin_s, const QString& label)

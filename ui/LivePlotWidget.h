@@ -98,6 +98,9 @@ public:
     // as a dashed line and kept in view; none removes it. SI units.
     void setThreshold(std::size_t lane, std::optional<double> value_si);
     std::optional<double> threshold(std::size_t lane) const;
+    // Narrow lanes under a plot that names the clock title their time axis
+    // "t (s)" only.
+    void setCompactTimeTitle(bool compact);
     // Whether this plot shows the paused banner (one banner for the window).
     void setPausedBannerShown(bool shown);
 
@@ -184,6 +187,7 @@ private:
     std::vector<Marker> m_markers;
     std::vector<QCPAbstractItem*> m_markerItems;  // redrawn when lanes or markers change
     bool m_showsBanner = true;
+    bool m_compactTimeTitle = false;
     bool m_following = false;  // followTimeRange() is moving the axes
 
     // Per-frame scratch, kept to avoid reallocating every frame.

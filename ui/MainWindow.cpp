@@ -41,11 +41,13 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGuiApplication>
 #include <QIcon>
 #include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScreen>
 #include <QSettings>
 #include <QSplitter>
 #include <QStandardPaths>
@@ -102,7 +104,8 @@ MainWindow::MainWindow(QWidget* parent)
     centre->setSizes({540, 360});
     centre->setChildrenCollapsible(false);
     setCentralWidget(centre);
-    resize(1200, 720);
+    // Fits a 1366×768 screen (less its panel) and any larger one at first start.
+    resize(QSize(1340, 720).boundedTo(QGuiApplication::primaryScreen()->availableSize()));
     m_sessionBar = new SessionBar(this);
     m_sessionBar->setObjectName(QStringLiteral("sessionBar"));
     QToolBar* sessionToolBar = addToolBar(tr("Session"));
@@ -422,8 +425,9 @@ bool MainWindow::startRecording()
     if (const QString refusal = recordingRefusal(recordingPolicy(), QString::fromStdString(metadata.subject),
                                                  QString::fromStdString(metadata.operatorName));
         !refusal.isEmpty()) {
-        reportProblem(this, {tr("Cannot record"), tr("Recording did not start."), refusal, {},
-                             QStringLiteral("recordRefusedBox")});
+        reportProblem(
+            this,
+            {tr("Cannot record"), tr("Recording did not start."), refusal, {}, QStringLiteral("recordRefusedBox")});
         return false;
     }
     if (const auto error = m_session->startRecording(metadata)) {
@@ -717,7 +721,10 @@ void MainWindow::updateTimeBase()
 // The window's plots move as one while paused, under one banner.
 void MainWindow::linkPlots()
 {
-    for (LivePlotWidget* lanes : m_modeViews->lanes()) lanes->setPausedBannerShown(false);
+    for (LivePlotWidget* lanes : m_modeViews->lanes()) {
+        lanes->setPausedBannerShown(false);
+        lanes->setCompactTimeTitle(true);  // the traces above name the clock
+    }
     for (LivePlotWidget* from : allPlots())
         connect(from, &LivePlotWidget::userScrolled, this, [this, from](double start_s, double end_s) {
             for (LivePlotWidget* to : allPlots())

@@ -129,6 +129,7 @@ PanelScanView::PanelScanView(QWidget* parent)
     // view stays low and the traces above keep most of the height.
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 6, 0);
+    m_lanes->setMinimumWidth(260);  // a lane narrower is a sliver of ticks
     layout->addWidget(m_lanes, 4);
     layout->addLayout(defects, 3);
     parameters->setMaximumWidth(420);  // spin boxes need no more; the lanes and the list use the rest

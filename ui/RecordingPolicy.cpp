@@ -54,8 +54,8 @@ void showSettingsDialog(QWidget* parent)
     require->setEnabled(!policy.setBySite);
     layout->addWidget(require);
     if (policy.setBySite) {
-        auto* site = new QLabel(QObject::tr("Required by this site's settings; only its administrator can change it."),
-                                dialog);
+        auto* site =
+            new QLabel(QObject::tr("Required by this site's settings; only its administrator can change it."), dialog);
         site->setWordWrap(true);
         layout->addWidget(site);
     }
