@@ -12,8 +12,9 @@ void askMarkerNote(QWidget* parent, double time_s, std::function<void(const QStr
 {
     auto* dialog = new QInputDialog(parent);
     dialog->setObjectName(QStringLiteral("markerNoteDialog"));
-    dialog->setWindowTitle(QObject::tr("Marker"));
-    dialog->setLabelText(QObject::tr("Note for the marker at %1 s:").arg(fixedText(time_s, 2)));
+    dialog->setWindowTitle(QObject::tr("Note for a marker"));
+    dialog->setLabelText(QObject::tr("Note for the marker at %1 s (recording time):").arg(fixedText(time_s, 2)));
+    dialog->setMinimumWidth(420);  // room for a sentence and the title
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     QObject::connect(dialog, &QInputDialog::textValueSelected, parent, std::move(entered));
     dialog->open();

@@ -41,16 +41,17 @@ VerdictDialog::VerdictDialog(const QString& summaryText, const QStringList& trai
     m_note->setPlaceholderText(tr("Note (optional): what was seen on the panel"));
     m_note->setMinimumWidth(420);
 
+    // Keep the automatic verdict or change it to the other: two buttons, not
+    // "Keep 'defects found'" beside "Defects found".
     auto* buttons = new QDialogButtonBox(this);
-    QPushButton* pass = buttons->addButton(tr("Pass"), QDialogButtonBox::ActionRole);
-    QPushButton* defective = buttons->addButton(tr("Defects found"), QDialogButtonBox::ActionRole);
+    const core::Verdict other = verdict == core::Verdict::Pass ? core::Verdict::DefectsFound : core::Verdict::Pass;
+    QPushButton* change = buttons->addButton(tr("Change to \"%1\"").arg(wordText(other)), QDialogButtonBox::ActionRole);
     QPushButton* keep = buttons->addButton(tr("Keep \"%1\"").arg(wordText(verdict)), QDialogButtonBox::AcceptRole);
-    pass->setObjectName(QStringLiteral("passButton"));
-    defective->setObjectName(QStringLiteral("defectsButton"));
+    change->setObjectName(other == core::Verdict::Pass ? QStringLiteral("passButton")
+                                                       : QStringLiteral("defectsButton"));
     keep->setObjectName(QStringLiteral("keepButton"));
     keep->setDefault(true);
-    connect(pass, &QPushButton::clicked, this, [this] { decide(core::Verdict::Pass); });
-    connect(defective, &QPushButton::clicked, this, [this] { decide(core::Verdict::DefectsFound); });
+    connect(change, &QPushButton::clicked, this, [this, other] { decide(other); });
     connect(keep, &QPushButton::clicked, this, [this, verdict] { decide(verdict); });
 
     layout->addWidget(hint);

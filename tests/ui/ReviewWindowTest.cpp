@@ -18,6 +18,7 @@
 #include "support/TextFiles.h"
 #include "support/WaitFor.h"
 
+#include <QAction>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QImage>
@@ -30,8 +31,10 @@
 #include <QProcess>
 #include <QPushButton>
 #include <QSettings>
+#include <QSpinBox>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolBar>
 #include <QTreeWidget>
 
 #include <gtest/gtest.h>
@@ -265,6 +268,22 @@ TEST_F(ReviewWindowTest, ReplayMovesThePlayheadAndTheView)
     ASSERT_TRUE(m_window->isPlaying());
     ASSERT_TRUE(waitFor([&] { return m_window->plot()->from_s() > 10.0; }, 20000)) << "the view follows the playhead";
     m_window->pause();
+    EXPECT_FALSE(m_window->isPlaying());
+
+    // Space plays and pauses even with the speed box in focus (it swallowed
+    // the key), and the button keeps its width as "Play" flips to "Pause".
+    auto* speed = child<QSpinBox>(*m_window, "replaySpeed");
+    m_window->activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(m_window));
+    speed->setFocus();
+    auto* button = m_window->findChild<QToolBar*>()->widgetForAction(m_window->findChild<QAction*>("playAction"));
+    ASSERT_NE(button, nullptr);
+    const int width = button->width();
+    QTest::keyClick(speed, Qt::Key_Space);
+    EXPECT_TRUE(m_window->isPlaying());
+    tactiscope::testing::runEventLoopFor(50);
+    EXPECT_EQ(button->width(), width);
+    QTest::keyClick(speed, Qt::Key_Space);
     EXPECT_FALSE(m_window->isPlaying());
 }
 

@@ -28,6 +28,7 @@ void askAnalysisName(QWidget* parent, const QString& kept, std::function<void(co
     dialog->setLabelText(QObject::tr("Name of the analysis (%1 stay as they are):").arg(kept));
     dialog->setTextValue(
         QObject::tr("review %1").arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"))));
+    dialog->setMinimumWidth(420);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     QObject::connect(dialog, &QInputDialog::textValueSelected, parent, std::move(save));
     dialog->open();

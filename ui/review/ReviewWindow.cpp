@@ -27,10 +27,12 @@
 #include <QDateTime>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFontMetrics>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QInputDialog>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
@@ -51,6 +53,21 @@
 
 namespace tactiscope::ui {
 namespace {
+
+// A spin box takes Space as text (and refuses it): the window's Space
+// shortcut (play, pause) is let through instead.
+class SpaceForShortcuts : public QObject {
+public:
+    using QObject::QObject;
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (event->type() == QEvent::ShortcutOverride && static_cast<QKeyEvent*>(event)->key() == Qt::Key_Space) {
+            event->ignore();  // not the box's: the shortcut takes it
+            return true;
+        }
+        return QObject::eventFilter(watched, event);
+    }
+};
 
 using core::storage::SessionStore;
 
@@ -417,7 +434,15 @@ void ReviewWindow::createActions()
     m_speed->setRange(1, 10);
     m_speed->setSuffix(tr("× real time"));
     m_speed->setToolTip(tr("Replay speed"));
+    m_speed->installEventFilter(new SpaceForShortcuts(m_speed));  // Space plays even from the speed box
     bar->addWidget(m_speed);
+    // "Play" and "Pause" in one width, so the bar does not jump when it flips.
+    if (QWidget* button = bar->widgetForAction(m_playAction)) {
+        const QFontMetrics metrics(button->font());
+        button->setMinimumWidth(
+            std::max(metrics.horizontalAdvance(tr("Play")), metrics.horizontalAdvance(tr("Pause"))) +
+            button->sizeHint().width() - metrics.horizontalAdvance(m_playAction->text()));
+    }
     bar->addSeparator();
     bar->addWidget(new QLabel(tr(" Reviewer "), bar));
     m_reviewer = new QLineEdit(QSettings().value(QStringLiteral("review/reviewer")).toString(), bar);
