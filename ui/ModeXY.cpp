@@ -17,7 +17,7 @@ QString showModeXY(XYPlotWidget& plot, const devices::session::LiveSession* sess
     if (session && mode == core::Mode::Palpation && session->palpation()) {
         const DisplayUnit high{1e3, QObject::tr("mN"), QObject::tr("F stiff")};
         const DisplayUnit low{1e3, QObject::tr("mN"), QObject::tr("F soft")};
-        plot.setSource(session->palpation()->output(), 1, 0, low, high, rate_hz);
+        plot.setSource(session->palpation()->output(), 1, 0, low, high, rate_hz, QStringLiteral("Q"));
         return QObject::tr("XY plot: F stiff against F soft (slope Q)");
     }
     // A capacitive beam's force and deflection both come from its one

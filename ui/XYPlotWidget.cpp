@@ -3,6 +3,7 @@
 
 #include <qcustomplot.h>
 
+#include <QLocale>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -24,6 +25,18 @@ XYPlotWidget::XYPlotWidget(QWidget* parent)
     layout->addWidget(m_plot);
     m_curve = new QCPCurve(m_plot->xAxis, m_plot->yAxis);
     m_curve->setPen(QPen(QColor(0x0072B2), 1.5));
+    m_slopeLabel = new QCPItemText(m_plot);
+    m_slopeLabel->setObjectName(QStringLiteral("slopeLabel"));
+    m_slopeLabel->position->setType(QCPItemPosition::ptAxisRectRatio);
+    m_slopeLabel->position->setCoords(0.03, 0.03);
+    m_slopeLabel->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+    m_slopeLabel->setPadding(QMargins(4, 2, 4, 2));
+    m_slopeLabel->setBrush(QColor(255, 255, 255, 220));
+    QFont bold = font();
+    bold.setBold(true);
+    m_slopeLabel->setFont(bold);
+    // Opened as a dock, it must not be a sliver: a square of useful size.
+    setMinimumSize(320, 280);
     m_plot->setPlottingHint(QCP::phFastPolylines, true);
     m_timer.setInterval(kRefresh_ms);
     connect(&m_timer, &QTimer::timeout, this, &XYPlotWidget::refresh);
@@ -32,9 +45,12 @@ XYPlotWidget::XYPlotWidget(QWidget* parent)
 XYPlotWidget::~XYPlotWidget() = default;
 
 void XYPlotWidget::setSource(std::shared_ptr<const core::LiveBuffer> buffer, std::size_t x, std::size_t y,
-                             const DisplayUnit& xUnit, const DisplayUnit& yUnit, double sampleRate_hz)
+                             const DisplayUnit& xUnit, const DisplayUnit& yUnit, double sampleRate_hz,
+                             const QString& slopeName)
 {
     clearSource();
+    m_slopeName = slopeName;
+    m_slopeUnit = xUnit.symbol == yUnit.symbol ? QString() : yUnit.symbol + QLatin1Char('/') + xUnit.symbol;
     if (!buffer || x >= buffer->channelCount() || y >= buffer->channelCount() || !(sampleRate_hz > 0.0)) return;
     m_buffer = std::move(buffer);
     m_x = x;
@@ -58,7 +74,17 @@ void XYPlotWidget::clearSource()
     m_xs.reset();
     m_ys.reset();
     m_curve->data()->clear();
+    m_slope.reset();
+    m_slopeLabel->setText(QString());
     m_plot->replot();
+}
+
+QString XYPlotWidget::slopeText() const
+{
+    if (!m_slope) return {};
+    const QString value = QLocale().toString(*m_slope, 'g', 4);
+    return m_slopeUnit.isEmpty() ? QStringLiteral("%1 = %2").arg(m_slopeName, value)
+                                 : QStringLiteral("%1 = %2 %3").arg(m_slopeName, value, m_slopeUnit);
 }
 
 void XYPlotWidget::setWindowLength(double seconds)
@@ -97,6 +123,17 @@ void XYPlotWidget::refresh()
         ys.push_back(m_ys->at(i) * m_yScale);
     }
     m_curve->setData(t, xs, ys, true);
+    // Least squares through the origin, y = s·x, over the finite points.
+    double xy = 0.0, xx = 0.0;
+    std::size_t points = 0;
+    for (qsizetype i = 0; i < xs.size(); ++i) {
+        if (!std::isfinite(xs[i]) || !std::isfinite(ys[i])) continue;
+        xy += xs[i] * ys[i];
+        xx += xs[i] * xs[i];
+        ++points;
+    }
+    m_slope = points >= 2 && xx > 0.0 ? std::optional(xy / xx) : std::nullopt;
+    m_slopeLabel->setText(slopeText());
     bool foundX = false, foundY = false;  // false while every point is NaN
     const QCPRange x = m_curve->getKeyRange(foundX), y = m_curve->getValueRange(foundY);
     if (foundX && foundY) {

@@ -187,6 +187,11 @@ TEST(PalpationView, TareTakesANewZeroFromTheButtonOrCtrlTAndTheXYPlotShowsTheFor
     auto* xy = child<ui::XYPlotWidget>(window, "xyPlot");
     EXPECT_TRUE(waitFor([&] { return xy->drawnPointCount() > 100; }, 2000));
     EXPECT_LE(xy->drawnPointCount(), static_cast<int>(ui::XYPlotWidget::kMaxPoints));
+    // Its slope is Q: 1620·(117 + 60)/(60·(117 + 1620)) = 2.751 (eq. 1) for the simulated specimen.
+    ASSERT_TRUE(xy->slope().has_value());
+    EXPECT_NEAR(*xy->slope(), 2.7513, 0.05);
+    EXPECT_TRUE(xy->slopeText().startsWith(QStringLiteral("Q = "))) << xy->slopeText().toStdString();
+    EXPECT_GE(xy->width(), 300) << "the dock opens at a usable width";
 }
 
 TEST(PalpationView, APanelScanProbeHasNoPalpationView)

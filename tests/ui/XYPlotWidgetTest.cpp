@@ -42,5 +42,9 @@ TEST(XYPlotWidget, DrawsTheLastSecondsOfOneChannelAgainstAnother)
     EXPECT_NEAR(x1, 15.0 + 5.5, 0.01);
     EXPECT_NEAR(y0, 45.0 - 16.5, 0.01);
     EXPECT_NEAR(y1, 45.0 + 16.5, 0.01);
+    // y = 3x through the origin: the slope, shown with its unit (s/s: none).
+    ASSERT_TRUE(plot.slope().has_value());
+    EXPECT_NEAR(*plot.slope(), 3.0, 1e-9);
+    EXPECT_EQ(plot.slopeText(), QStringLiteral("slope = 3"));
     EXPECT_FALSE(tactiscope::testing::saveScreenshot(plot, QStringLiteral("xy-plot")).isEmpty());
 }
