@@ -19,11 +19,27 @@
 #include <qcustomplot.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
 namespace tactiscope::ui {
 namespace {
+
+// Date ticks at whole UTC days, a few of them, each date once: a date-time
+// ticker's sub-day steps wrote the same date under several ticks.
+QSharedPointer<QCPAxisTickerText> dayTicks(const QCPRange& range)
+{
+    constexpr double kDay_s = 86400.0;
+    QSharedPointer<QCPAxisTickerText> ticker(new QCPAxisTickerText);
+    const double firstDay = std::ceil(range.lower / kDay_s) * kDay_s;
+    const double days = std::max(1.0, std::floor((range.upper - firstDay) / kDay_s) + 1.0);
+    const double step = std::ceil(days / 6.0) * kDay_s;
+    for (double t = firstDay; t <= range.upper; t += step)
+        ticker->addTick(
+            t, QDateTime::fromSecsSinceEpoch(static_cast<qint64>(t), Qt::UTC).toString(QStringLiteral("yyyy-MM-dd")));
+    return ticker;
+}
 
 // The value a kind of calibration is about, its standard error and how it
 // is named and shown.
@@ -62,6 +78,8 @@ CalibrationHistory::CalibrationHistory(const QString& storePath, QWidget* parent
     setWindowTitle(tr("Calibration history"));
     setObjectName(QStringLiteral("calibrationHistory"));
     m_sensors->setObjectName(QStringLiteral("sensorList"));
+    // A beam's name ends in "— stiff beam" or "— soft beam": wrapped, never cut.
+    m_sensors->setWordWrap(true);
     m_records->setObjectName(QStringLiteral("recordTable"));
     m_drift->setObjectName(QStringLiteral("driftText"));
     m_sessions->setObjectName(QStringLiteral("sessionList"));
@@ -74,10 +92,6 @@ CalibrationHistory::CalibrationHistory(const QString& storePath, QWidget* parent
     m_records->verticalHeader()->setVisible(false);
     m_records->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_plot->setMinimumHeight(200);
-    QSharedPointer<QCPAxisTickerDateTime> ticker(new QCPAxisTickerDateTime);
-    ticker->setDateTimeFormat(QStringLiteral("yyyy-MM-dd"));
-    ticker->setDateTimeSpec(Qt::UTC);
-    m_plot->xAxis->setTicker(ticker);
     m_plot->xAxis->setLabel(tr("Date of calibration"));
     QCPGraph* graph = m_plot->addGraph();
     graph->setPen(QPen(QColor(0x1f, 0x77, 0xb4), 1.2));
@@ -215,6 +229,7 @@ void CalibrationHistory::showSensor()
     const QCPRange x = m_plot->xAxis->range();
     const double xPad = std::max(0.06 * x.size(), 86400.0);
     m_plot->xAxis->setRange(x.lower - xPad, x.upper + xPad);
+    m_plot->xAxis->setTicker(dayTicks(m_plot->xAxis->range()));
     const QCPRange y = m_plot->yAxis->range();
     const double pad = std::max(0.1 * y.size(), 1e-3 * std::abs(y.center()));
     m_plot->yAxis->setRange(y.lower - pad, y.upper + pad);
