@@ -73,6 +73,12 @@ QString fixedText(double value, int decimals)
     return QLocale().toString(value, 'f', decimals);
 }
 
+int decimalsForMagnitude(double magnitude, int significant)
+{
+    if (!(std::abs(magnitude) > 0.0) || !std::isfinite(magnitude)) return std::max(0, significant - 1);
+    return std::clamp(significant - 1 - static_cast<int>(std::floor(std::log10(std::abs(magnitude)))), 0, 9);
+}
+
 int decimalsFor(double standardError)
 {
     return core::text::uncertaintyDecimals(standardError, 6);

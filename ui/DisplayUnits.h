@@ -49,6 +49,11 @@ DisplayUnit laneUnit(const core::ChannelDescriptor& lane, core::Mode mode);
 // to zero is zero).
 QString fixedText(double value, int decimals);
 
+// The decimals that give `significant` digits to numbers of the size of
+// `magnitude`, so values read side by side share their decimals
+// ("-5.8840 … -3.9928", not "-5.884 … -3.9928"); 0..9.
+int decimalsForMagnitude(double magnitude, int significant);
+
 // The colour a threshold line is drawn in on every plot (live, review,
 // report): teal, apart from the red playhead and the events' colours.
 inline constexpr unsigned kThresholdRgb = 0x00897b;

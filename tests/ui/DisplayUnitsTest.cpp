@@ -38,3 +38,12 @@ TEST(DisplayUnits, ANumberThatRoundsToZeroHasNoSign)
     EXPECT_EQ(tactiscope::ui::fixedText(-0.04, 1), QLocale().toString(0.0, 'f', 1));
     EXPECT_EQ(tactiscope::ui::fixedText(2.5, 0), QLocale().toString(2.5, 'f', 0));
 }
+
+TEST(DisplayUnits, ValuesReadSideBySideShareTheirDecimals)
+{
+    // Five significant digits at the larger of a stretch's extremes.
+    EXPECT_EQ(tactiscope::ui::decimalsForMagnitude(5.884, 5), 4);  // -5.8840 … -3.9928
+    EXPECT_EQ(tactiscope::ui::decimalsForMagnitude(117.0, 5), 2);  // 116.98
+    EXPECT_EQ(tactiscope::ui::decimalsForMagnitude(51440.0, 5), 0);
+    EXPECT_EQ(tactiscope::ui::decimalsForMagnitude(0.0, 5), 4);
+}

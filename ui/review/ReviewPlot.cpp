@@ -30,9 +30,11 @@ void placeInLane(QCPItemPosition* position, QCPAxisRect* rect, double time_s, do
     position->setCoords(time_s, heightRatio);
 }
 
-QString valueText(double value, const DisplayUnit& unit)
+// A readout value with the decimals of five significant digits at
+// `magnitude` (display units), so a stretch's minimum and maximum match.
+QString valueText(double value, const DisplayUnit& unit, double magnitude)
 {
-    return QString::number(value * unit.scale, 'g', 5);
+    return fixedText(value * unit.scale, decimalsForMagnitude(magnitude, 5));
 }
 
 }  // namespace
@@ -296,10 +298,13 @@ QString ReviewPlot::readoutAt(double time_s) const
         if (std::isnan(window.low[k]))
             parts << tr("%1: lost").arg(name);
         else if (window.exact)
-            parts << tr("%1: %2 %3").arg(name, valueText(window.low[k], unit), unit.symbol);
-        else
+            parts << tr("%1: %2 %3").arg(name, valueText(window.low[k], unit, window.low[k] * unit.scale), unit.symbol);
+        else {
+            const double magnitude = std::max(std::abs(window.low[k]), std::abs(window.high[k])) * unit.scale;
             parts << tr("%1: %2 … %3 %4")
-                         .arg(name, valueText(window.low[k], unit), valueText(window.high[k], unit), unit.symbol);
+                         .arg(name, valueText(window.low[k], unit, magnitude),
+                              valueText(window.high[k], unit, magnitude), unit.symbol);
+        }
     }
     return parts.join(QStringLiteral("   │   "));
 }

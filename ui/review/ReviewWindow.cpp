@@ -1,6 +1,7 @@
 // ReviewWindow: header, plot, record list, notes, replay, re-analysis and exports.
 #include "ui/review/ReviewWindow.h"
 
+#include "ui/DisplayUnits.h"
 #include "ui/ProblemReport.h"
 #include "ui/VerdictDialog.h"
 #include "ui/VocabularyText.h"
@@ -119,8 +120,13 @@ std::vector<QString> siteTexts(const std::vector<core::detector::DefectEvent>& d
 
 QString readingDetails(const core::storage::SessionReading& r)
 {
-    QString value = QObject::tr("%1 = %2").arg(text(r.quantity)).arg(r.value, 0, 'g', 5);
-    if (r.standardError) value += QObject::tr(" ± %1").arg(*r.standardError, 0, 'g', 3);
+    QString value;
+    if (r.standardError) {
+        const auto [number, error] = valueAndErrorTexts(r.value, *r.standardError);
+        value = QObject::tr("%1 = %2 ± %3").arg(text(r.quantity), number, error);
+    } else {
+        value = QObject::tr("%1 = %2").arg(text(r.quantity)).arg(r.value, 0, 'g', 5);
+    }
     value += QLatin1Char(' ') + text(r.unit);
     if (!r.site.empty()) value += QObject::tr(" at %1").arg(text(r.site));
     return value;
