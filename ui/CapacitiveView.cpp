@@ -37,7 +37,7 @@ CapacitiveView::CapacitiveView(QWidget* parent)
     m_tare->setToolTip(tr(
         "With the signal settled: the last half second's mean becomes the baseline C0 (refused while a load changes)"));
     m_calibration->setWordWrap(true);
-    m_calibration->setStyleSheet(QStringLiteral("color: palette(placeholder-text);"));
+    m_calibration->setStyleSheet(QStringLiteral("color: palette(window-text);"));
     m_calibration->setTextFormat(Qt::RichText);
     connect(m_calibration, &QLabel::linkActivated, this, &CapacitiveView::profilesRequested);
 
@@ -62,7 +62,8 @@ QLabel* CapacitiveView::addReadout(const QString& caption, const char* objectNam
     auto* grid = static_cast<QGridLayout*>(m_readoutPanel->layout());
     const int index = grid->count() / 2;
     auto* title = new QLabel(caption, m_readoutPanel);
-    title->setStyleSheet(QStringLiteral("color: palette(mid); font-weight: 600;"));
+    // Full contrast, in any theme: a caption must be read at arm's length.
+    title->setStyleSheet(QStringLiteral("color: palette(window-text); font-weight: 600;"));
     auto* value = new QLabel(QStringLiteral("—"), m_readoutPanel);
     value->setObjectName(QString::fromLatin1(objectName));
     QFont big = value->font();

@@ -87,7 +87,7 @@ LivePlotWidget::LivePlotWidget(QWidget* parent)
     m_plot->setNoAntialiasingOnDrag(true);
     // One row, small type, thin frame: in a lane a hundred pixels high the
     // legend must not hide the first second of the traces.
-    m_plot->legend->setVisible(true);
+    m_plot->legend->setVisible(false);  // shown once traces share a lane: never an empty box
     m_plot->legend->setBrush(QColor(255, 255, 255, 200));
     m_plot->legend->setBorderPen(QPen(QColor(0, 0, 0, 60)));
     m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
@@ -232,6 +232,7 @@ void LivePlotWidget::removePlotItems()
     m_plot->plotLayout()->simplify();
     m_plot->axisRect()->setMarginGroup(QCP::msLeft | QCP::msRight, nullptr);
     m_lanes.clear();
+    m_plot->legend->setVisible(false);
     m_graphs.clear();
     m_graphLane.clear();
     m_graphScale.clear();
