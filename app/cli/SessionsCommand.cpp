@@ -110,11 +110,17 @@ int show(SessionStore& store, std::int64_t id, bool json)
     return kExitOk;
 }
 
+// A verdict as the command line writes it: "pass" or "defects-found" (the
+// stored "defects found" too), for `verdict` and `list --verdict` alike.
+std::optional<core::Verdict> verdictArgument(const QString& word)
+{
+    return core::verdictFromString(QString(word).trimmed().replace(QLatin1Char('-'), QLatin1Char(' ')).toStdString());
+}
+
 // A reviewer's verdict, added to the session's trail.
 int decideVerdict(SessionStore& store, std::int64_t id, const QString& word, const QString& by, const QString& note)
 {
-    const auto verdict =
-        core::verdictFromString(QString(word).replace(QLatin1Char('-'), QLatin1Char(' ')).toStdString());
+    const auto verdict = verdictArgument(word);
     if (!verdict) {
         printError(QStringLiteral("the verdict must be pass or defects-found, not '%1'").arg(word));
         return kExitUsage;
@@ -193,7 +199,7 @@ int runSessions(const QStringList& arguments)
         {QStringLiteral("mode"), QStringLiteral("list: only this mode."), QStringLiteral("MODE")},
         {QStringLiteral("subject"), QStringLiteral("list: only this panel or phantom."), QStringLiteral("ID")},
         {QStringLiteral("operator"), QStringLiteral("list: only this operator."), QStringLiteral("NAME")},
-        {QStringLiteral("verdict"), QStringLiteral("list: only this verdict."), QStringLiteral("TEXT")},
+        {QStringLiteral("verdict"), QStringLiteral("list: only this verdict: pass or defects-found."), QStringLiteral("VERDICT")},
         {QStringLiteral("from"), QStringLiteral("list: started on or after (UTC, e.g. 2026-11-21)."),
          QStringLiteral("DATE")},
         {QStringLiteral("before"), QStringLiteral("list: started before (UTC)."), QStringLiteral("DATE")},
@@ -252,9 +258,9 @@ int runSessions(const QStringList& arguments)
             filter.subject = value("subject");
             filter.operatorName = value("operator");
             if (parser.isSet(QStringLiteral("verdict"))) {
-                filter.verdict = core::verdictFromString(value("verdict"));
+                filter.verdict = verdictArgument(parser.value(QStringLiteral("verdict")));
                 if (!filter.verdict)
-                    return usageError(QStringLiteral("--verdict must be \"pass\" or \"defects found\""), usage);
+                    return usageError(QStringLiteral("--verdict must be pass or defects-found"), usage);
             }
             filter.startedFrom = value("from");
             filter.startedBefore = value("before");

@@ -78,6 +78,13 @@ TEST_F(VerdictCli, AReviewersVerdictJoinsTheTrailWithTheNameAndTheNote)
 
     const auto list = runCli({"sessions", "--db", m_db, "list", "--verdict", "pass"});
     EXPECT_TRUE(list.out.contains("door-5")) << list.out.toStdString();
+    // The list filter takes the verdict as the verdict command writes it (and as stored).
+    for (const char* word : {"defects-found", "defects found"}) {
+        const auto none = runCli({"sessions", "--db", m_db, "list", "--verdict", word});
+        EXPECT_EQ(none.exitCode, 0) << word << ": " << none.err.toStdString();
+        EXPECT_FALSE(none.out.contains("door-5")) << none.out.toStdString();
+    }
+    EXPECT_EQ(runCli({"sessions", "--db", m_db, "list", "--verdict", "defect"}).exitCode, 2);
     const auto show = runCli({"sessions", "--db", m_db, "show", "1"});
     EXPECT_TRUE(show.out.contains("reviewer Ada decided: defects found")) << show.out.toStdString();
     EXPECT_TRUE(show.out.contains("\"bump is a marker pen line\"")) << show.out.toStdString();
