@@ -544,7 +544,15 @@ void MainWindow::calibrate(core::Mode mode)
                                QString::fromStdString(m_sessionBar->metadata().operatorName),
                                ProfileLibrary::defaultDirectory()};
     openCalibrationWizard(mode, std::move(context), this, [this, mode](const QString& sensor) {
-        if (m_session) m_session->reloadCalibrations(mode);
+        if (m_session) {
+            if (const auto problem = m_session->reloadCalibrations(mode))
+                reportProblem(
+                    this, {tr("Calibration not applied"),
+                           tr("The %1 view does not read through the new calibration.").arg(modeTitle(mode).toLower()),
+                           QString::fromStdString(*problem),
+                           {}});
+            reportSessionProblems();
+        }
         showMode(mode);
         statusBar()->showMessage(
             tr("Calibration of %1 stored; the %2 view reads through it.").arg(sensor, modeTitle(mode).toLower()), 8000);
@@ -639,10 +647,7 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
         options.profiles.emplace(*core::modeFromString(mode.toStdString()), std::move(active.profile));
     }
     m_session = std::make_unique<devices::session::LiveSession>(std::move(source), std::move(options));
-    for (const auto& problem : m_session->takeProblems())
-        reportProblem(this, {tr("Analysis not available"), tr("Part of the analysis cannot run on this device."),
-                             QString::fromStdString(problem),
-                             tr("The live view and recording go on; check the probe's profile and calibrations.")});
+    reportSessionProblems();
     // The source's own mode wins; a source that declares none keeps the
     // bar's mode if its channels can feed it.
     const core::Mode chosen = m_sessionBar->metadata().mode;
@@ -690,9 +695,21 @@ void MainWindow::disconnectSource()
     m_sessionBar->setRecordEnabled(false);
 }
 
+// What the live session could not do (a processor, a calibration it could
+// not read) is shown, never only logged: a calibration is never dropped
+// without the operator knowing.
+void MainWindow::reportSessionProblems()
+{
+    for (const auto& problem : m_session->takeProblems())
+        reportProblem(this, {tr("Analysis not available"), tr("Part of the analysis cannot run on this device."),
+                             QString::fromStdString(problem),
+                             tr("The live view and recording go on; check the probe's profile and calibrations.")});
+}
+
 void MainWindow::updateStatus()
 {
     if (!m_session) return;
+    reportSessionProblems();
     const LinkCounters counters = linkCounters(m_session->stats(), m_session->source());
     m_devicePanel->showCounters(counters);
     m_status->showLink(counters);

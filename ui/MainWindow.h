@@ -133,6 +133,7 @@ private:
     void showModeView();
     void addMarker(double time_s, const QString& note);
     void updateTimeBase();
+    void reportSessionProblems();
     void linkPlots();
     // The mode's processor reads the newly chosen profile.
     void applyProfile(const QString& mode);
