@@ -379,18 +379,48 @@ QString LivePlotWidget::timeAxisLabel() const
 
 void LivePlotWidget::addMarker(double t_s, const QString& note)
 {
-    m_markers.push_back({t_s, note});
+    m_markers.push_back({t_s, note, false});
     drawMarkers();
     m_plot->replot();
 }
 
-// A dashed line per marker in every lane, its note at the top of the first.
+std::size_t LivePlotWidget::markerCount() const
+{
+    return static_cast<std::size_t>(std::ranges::count(m_markers, false, &Marker::event));
+}
+
+void LivePlotWidget::addEvent(double t_s, const QString& text)
+{
+    // What the history no longer holds cannot be scrolled to: its items go,
+    // so a long shift does not pile them up.
+    std::erase_if(m_markers, [t_s](const Marker& m) { return m.t_s < t_s - kHistory_s; });
+    m_markers.push_back({t_s, text, true});
+    drawMarkers();
+    m_plot->replot();
+}
+
+void LivePlotWidget::clearEvents()
+{
+    std::erase_if(m_markers, [](const Marker& m) { return m.event; });
+    drawMarkers();
+    m_plot->replot();
+}
+
+std::size_t LivePlotWidget::eventCount() const
+{
+    return m_markers.size() - markerCount();
+}
+
+// A line per marker in every lane — dashed purple for the operator's,
+// solid red for the detector's events — its text at the top of the first.
 void LivePlotWidget::drawMarkers()
 {
     for (QCPAbstractItem* item : m_markerItems) m_plot->removeItem(item);
     m_markerItems.clear();
-    const QPen pen(QColor(0x6a, 0x3d, 0x9a), 1.0, Qt::DashLine);
+    const QPen markerPen(QColor(0x6a, 0x3d, 0x9a), 1.0, Qt::DashLine);
+    const QPen eventPen(QColor(0xc6, 0x28, 0x28, 150), 1.0, Qt::SolidLine);
     for (const Marker& marker : m_markers) {
+        const QPen& pen = marker.event ? eventPen : markerPen;
         for (std::size_t l = 0; l < m_lanes.size(); ++l) {
             QCPAxisRect* rect = m_lanes[l].rect;
             auto* line = new QCPItemStraightLine(m_plot);
@@ -413,11 +443,13 @@ void LivePlotWidget::drawMarkers()
             label->position->setAxisRect(rect);
             label->position->setTypeX(QCPItemPosition::ptPlotCoords);
             label->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
-            label->position->setCoords(marker.t_s, 0.0);
-            label->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+            // Markers' notes at the top, events' at the bottom: apart, and
+            // clear of the legend in the top left.
+            label->position->setCoords(marker.t_s, marker.event ? 1.0 : 0.0);
+            label->setPositionAlignment(Qt::AlignLeft | (marker.event ? Qt::AlignBottom : Qt::AlignTop));
             label->setPadding(QMargins(3, 1, 3, 1));
             label->setBrush(QColor(255, 255, 255, 210));
-            label->setColor(pen.color());
+            label->setColor(QColor(pen.color().rgb()));  // the text opaque
             label->setText(QFontMetrics(font()).elidedText(marker.note, Qt::ElideRight, 160));
             m_markerItems.push_back(label);
         }

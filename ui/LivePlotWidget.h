@@ -93,7 +93,12 @@ public:
     // An operator's marker at a stream time, drawn across every lane; the
     // note labels it in the top lane.
     void addMarker(double t_s, const QString& note);
-    std::size_t markerCount() const { return m_markers.size(); }
+    std::size_t markerCount() const;
+    // A detector's event (a defect) at a stream time, drawn as a solid line
+    // across every lane with its text; clearEvents() starts a new panel.
+    void addEvent(double t_s, const QString& text);
+    void clearEvents();
+    std::size_t eventCount() const;
     // A value a lane is read against (the detector's threshold on R), drawn
     // as a dashed line and kept in view; none removes it. SI units.
     void setThreshold(std::size_t lane, std::optional<double> value_si);
@@ -183,6 +188,7 @@ private:
     struct Marker {
         double t_s = 0.0;
         QString note;
+        bool event = false;  // the detector's, not the operator's
     };
     std::vector<Marker> m_markers;
     std::vector<QCPAbstractItem*> m_markerItems;  // redrawn when lanes or markers change

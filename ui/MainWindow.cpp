@@ -679,6 +679,7 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
 
 void MainWindow::disconnectSource()
 {
+    m_defectsOnTraces = 0;
     m_connector->cancel();  // a connect still in its handshake is dropped when it answers
     stopRecording();        // the user ended the session by disconnecting
     m_statusTimer.stop();
@@ -715,6 +716,7 @@ void MainWindow::updateStatus()
     m_status->showLink(counters);
     m_modeViews->update(*m_session);
     updateTimeBase();
+    showDefectsOnTraces();
     if (const auto stopped = m_session->poll()) recordingEnded(*stopped);  // the disk stopped it
     // What the link noticed is in the record (an alarm) and told here.
     for (const auto& notice : m_session->takeLinkNotices()) {
@@ -724,6 +726,19 @@ void MainWindow::updateStatus()
         statusBar()->showMessage(text, 15000);
     }
     updateRecording();
+}
+
+// The panel's defects where they happened on the traces; a shorter list
+// is a new panel (a recording started).
+void MainWindow::showDefectsOnTraces()
+{
+    const auto& defects = m_session->panelDefects();
+    if (defects.size() < m_defectsOnTraces) {
+        m_plot->clearEvents();
+        m_defectsOnTraces = 0;
+    }
+    for (; m_defectsOnTraces < defects.size(); ++m_defectsOnTraces)
+        m_plot->addEvent(defects[m_defectsOnTraces].start_s, orderText(defects[m_defectsOnTraces].direction));
 }
 
 // One clock on every plot: the recording's while recording (as the

@@ -133,6 +133,7 @@ private:
     void showModeView();
     void addMarker(double time_s, const QString& note);
     void updateTimeBase();
+    void showDefectsOnTraces();
     void reportSessionProblems();
     void linkPlots();
     // The mode's processor reads the newly chosen profile.
@@ -158,6 +159,7 @@ private:
     SensorProfileDialog* m_profileDialog = nullptr;  // created when first asked for
     StatusLine* m_status = nullptr;
     QTimer m_statusTimer;
+    std::size_t m_defectsOnTraces = 0;                         // of the session's panel defects, drawn on m_plot
     std::unique_ptr<devices::session::LiveSession> m_session;  // of the connected device
     std::shared_ptr<devices::simulator::LoadRig> m_loadRig;    // when the simulator is a calibration rig
     QString m_storePath;

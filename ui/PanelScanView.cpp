@@ -37,11 +37,6 @@ QDoubleSpinBox* spinBox(double low, double high, double step, int decimals, cons
     return box;
 }
 
-QString order(int direction)
-{
-    return direction > 0 ? PanelScanView::tr("A then B") : PanelScanView::tr("B then A");
-}
-
 const QString kCalmAlarm = QStringLiteral("QLabel { background: palette(window); color: palette(mid); "
                                           "border: 1px solid palette(mid); border-radius: 6px; padding: 8px; }");
 const QString kDefectAlarm = QStringLiteral("QLabel { background: #c62828; color: white; border-radius: 6px; "
@@ -114,7 +109,8 @@ PanelScanView::PanelScanView(QWidget* parent)
     m_events->setObjectName(QStringLiteral("defectTable"));
     m_events->setHorizontalHeaderLabels({tr("Time (s)"), tr("Order"), tr("Peak R"), tr("Lag (ms)"), tr("mm/s")});
     m_events->verticalHeader()->hide();
-    m_events->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);  // fits without scrolling
+    m_events->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);              // fits without scrolling
+    m_events->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);  // "A then B" on one line
     m_events->horizontalHeaderItem(4)->setToolTip(tr("Scan speed implied by the lag and the cantilever spacing"));
     m_events->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_events->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -221,7 +217,7 @@ void PanelScanView::showDefects(const std::vector<core::detector::DefectEvent>& 
         const auto& e = *it;
         const int row = m_events->rowCount();
         m_events->insertRow(row);
-        const QStringList cells{fixedText(e.start_s - origin_s, 2), order(e.direction), fixedText(e.peakR, 3),
+        const QStringList cells{fixedText(e.start_s - origin_s, 2), orderText(e.direction), fixedText(e.peakR, 3),
                                 fixedText(e.peakLag_s * 1e3, 0),
                                 e.speed_m_per_s ? fixedText(*e.speed_m_per_s * 1e3, 0) : tr("—")};
         for (int c = 0; c < cells.size(); ++c) m_events->setItem(row, c, new QTableWidgetItem(cells[c]));
@@ -241,7 +237,7 @@ void PanelScanView::showCount()
 
 void PanelScanView::raiseAlarm(const core::detector::DefectEvent& event, double shownTime_s)
 {
-    m_alarm->setText(tr("DEFECT  %1 at %2 s").arg(order(event.direction), fixedText(shownTime_s, 1)));
+    m_alarm->setText(tr("DEFECT  %1 at %2 s").arg(orderText(event.direction), fixedText(shownTime_s, 1)));
     m_alarm->setStyleSheet(kDefectAlarm);
     m_alarmTimer.start(kAlarm_ms);
     if (m_sound->isChecked()) QApplication::beep();

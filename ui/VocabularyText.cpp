@@ -18,4 +18,9 @@ QString modeTitle(core::Mode mode)
     return {};
 }
 
+QString orderText(int direction)
+{
+    return direction > 0 ? QObject::tr("A then B") : QObject::tr("B then A");
+}
+
 }  // namespace tactiscope::ui

@@ -25,4 +25,8 @@ inline QString wordText(std::optional<core::Verdict> verdict)
 // A mode's name in the session bar's words ("Panel scan").
 QString modeTitle(core::Mode mode);
 
+// A defect's order in the operator's words: which cantilever met it first
+// (direction > 0: "A then B").
+QString orderText(int direction);
+
 }  // namespace tactiscope::ui

@@ -58,6 +58,14 @@ TEST(LiveTruth, ThePlotsReadTheRecordingsClockAndShowItsMarkers)
     runEventLoopFor(300);
     tactiscope::testing::saveScreenshot(window, QStringLiteral("live-marker"));
 
+    // The panel's defects are drawn on the traces where they happened.
+    auto* traces = qobject_cast<ui::LivePlotWidget*>(child<QSplitter>(window, "centreSplitter")->widget(0));
+    ASSERT_NE(traces, nullptr);
+    ASSERT_TRUE(waitFor([&] { return window.panelScanView()->defectCount() >= 1; }, 5000));
+    EXPECT_TRUE(waitFor(
+        [&] { return traces->eventCount() == static_cast<std::size_t>(window.panelScanView()->defectCount()); }, 1000));
+    EXPECT_EQ(traces->markerCount(), 1u) << "events are not the operator's markers";
+
     // The detector's best R is drawn against its threshold.
     ASSERT_TRUE(window.panelScanView()->lanes()->threshold(1).has_value());
     EXPECT_EQ(*window.panelScanView()->lanes()->threshold(1), 0.85);
@@ -69,8 +77,7 @@ TEST(LiveTruth, ThePlotsReadTheRecordingsClockAndShowItsMarkers)
     for (const auto* banner : window.findChildren<QLabel*>(QStringLiteral("pausedBanner")))
         banners += banner->isVisible() ? 1 : 0;
     EXPECT_EQ(banners, 1);
-    auto* main = qobject_cast<ui::LivePlotWidget*>(child<QSplitter>(window, "centreSplitter")->widget(0));
-    ASSERT_NE(main, nullptr);
+    ui::LivePlotWidget* main = traces;
     const double start_s = main->visibleTimeRange().first - 0.5;
     main->scrollTo(start_s);
     for (const auto* plot : plots) {
