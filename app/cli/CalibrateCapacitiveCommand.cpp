@@ -244,15 +244,8 @@ int runCalibrateCapacitive(const QStringList& arguments)
         }
         steps.input.contactArea_m2 = area_m2;
         result = calibration::calibrateCapacitive(steps.input, path.toStdString(), "");
-    } catch (const io::CsvError& e) {
-        printError(toQString(e.what()));
-        return kExitUsage;
-    } catch (const storage::StorageError& e) {
-        printError(toQString(e.what()));
-        return kExitFailure;
-    } catch (const std::invalid_argument& e) {
-        printError(QStringLiteral("'%1': %2").arg(path, toQString(e.what())));
-        return kExitUsage;
+    } catch (const std::exception&) {  // the file, its steps
+        return exitForReadError(path);
     }
     if (!result.forceFit || !(result.forceFit->slope > 0.0)) {
         printError(QStringLiteral("'%1': capacitance does not rise with force; check the columns").arg(path));

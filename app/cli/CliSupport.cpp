@@ -1,6 +1,9 @@
 // Error reporting and parsing helpers for tactiscope-cli.
 #include "CliSupport.h"
 
+#include "core/io/CsvColumns.h"
+#include "core/storage/Database.h"
+
 #include <QTextStream>
 
 #include <atomic>
@@ -103,6 +106,22 @@ std::optional<core::Mode> parseMode(const QString& text)
 QString modeUsageError()
 {
     return QStringLiteral("--mode must be %1").arg(toQString(core::modeChoices()));
+}
+
+int exitForReadError(const QString& path)
+{
+    try {
+        throw;
+    } catch (const core::io::CsvError& e) {
+        printError(toQString(e.what()));
+        return kExitUsage;
+    } catch (const core::storage::StorageError& e) {
+        printError(toQString(e.what()));
+        return kExitFailure;
+    } catch (const std::exception& e) {
+        printError(QStringLiteral("'%1': %2").arg(path, toQString(e.what())));
+        return kExitUsage;
+    }
 }
 
 }  // namespace tactiscope::cli

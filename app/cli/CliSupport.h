@@ -49,6 +49,12 @@ QString modeOptionText(const QString& more);
 std::optional<core::Mode> parseMode(const QString& text);
 QString modeUsageError();  // "--mode must be panel-scan, palpation or capacitive"
 
+// Inside a catch block of a command that read the file `path`: prints the
+// error and returns the exit code. A file the importer refuses (io::CsvError,
+// which names the file) or bad data in it (any other std::exception) is the
+// user's to fix: 2; a store that failed (storage::StorageError): 1.
+int exitForReadError(const QString& path);
+
 // A finite number, or nothing when `text` is not one.
 std::optional<double> parseNumber(const QString& text);
 

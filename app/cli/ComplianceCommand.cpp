@@ -141,15 +141,8 @@ int readRecording(const QString& path, const sensors::CompliancePairProfile& pro
             output.basis = toQString(read.basis);
             output.recordedZeros = read.recordedZeros;
         }
-    } catch (const io::CsvError& e) {
-        printError(toQString(e.what()));
-        return kExitUsage;
-    } catch (const storage::StorageError& e) {
-        printError(toQString(e.what()));
-        return kExitFailure;
-    } catch (const std::exception& e) {  // calibration file, channels, too short a recording
-        printError(QStringLiteral("%1: %2").arg(path, toQString(e.what())));
-        return kExitUsage;
+    } catch (const std::exception&) {  // the file, a calibration file, channels, too short a recording
+        return exitForReadError(path);
     }
     output.source = output.recordedZeros ? QStringLiteral("the recording's zeros")
                                          : QStringLiteral("a zero from the first %1 s, as the live view takes it")
