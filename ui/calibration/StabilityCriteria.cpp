@@ -1,6 +1,8 @@
 // StabilityCriteria: three spin boxes in display units.
 #include "ui/calibration/StabilityCriteria.h"
 
+#include "ui/DisplayUnits.h"
+
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 
@@ -40,8 +42,12 @@ core::calibration::StabilitySettings StabilityCriteria::settings() const
 void StabilityCriteria::setSettings(const core::calibration::StabilitySettings& settings)
 {
     m_window->setValue(settings.window_s);
-    m_maxDrift->setValue(settings.maxDrift_per_s * m_unit.scale);
-    m_maxNoise->setValue(settings.maxNoise * m_unit.scale);
+    // Three significant digits of each limit ("6.55 counts/s", not "6.5536").
+    for (const auto& [box, value] : {std::pair{m_maxDrift, settings.maxDrift_per_s * m_unit.scale},
+                                     std::pair{m_maxNoise, settings.maxNoise * m_unit.scale}}) {
+        box->setDecimals(decimalsForMagnitude(value, 3));
+        box->setValue(value);
+    }
 }
 
 }  // namespace tactiscope::ui

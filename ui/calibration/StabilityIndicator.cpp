@@ -1,6 +1,7 @@
 // StabilityIndicator: the watch's state in words and a coloured dot.
 #include "ui/calibration/StabilityIndicator.h"
 
+#include "ui/DisplayUnits.h"
 #include "ui/calibration/StabilityWatch.h"
 
 #include <QLocale>
@@ -36,8 +37,10 @@ void StabilityIndicator::setUnit(const DisplayUnit& unit)
 void StabilityIndicator::refresh()
 {
     const QLocale locale;
+    // Fixed decimals for `digits` significant digits: never "1e+09 pF".
     const auto value = [&](double v, int digits = 3) {
-        return locale.toString(v * m_unit.scale, 'g', digits) + QChar(0x2009) + m_unit.symbol;
+        const double shown = v * m_unit.scale;
+        return fixedText(shown, decimalsForMagnitude(shown, digits)) + QChar(0x2009) + m_unit.symbol;
     };
     const auto& settings = m_watch->settings();
     if (!m_watch->receiving()) {
