@@ -155,7 +155,12 @@ void StiffnessScale::paintEvent(QPaintEvent*)
         p.drawLine(QPointF(kMarkX + 3, (top + bottom) / 2), QPointF(labelX - 3, labelY[i]));
         p.setPen(text);
         const int room = width() - labelX - 4 - (m_marks.empty() ? 0 : kMarkLabelWidth + 4);
-        const QString name = metrics.elidedText(QString::fromStdString(t->name), Qt::ElideRight, room);
+        // Short of room, the source in brackets goes first ("Muscle", not
+        // "Muscle (needle-insertion simul…"), then the end of the name.
+        QString name = QString::fromStdString(t->name);
+        if (metrics.horizontalAdvance(name) > room && name.contains(QStringLiteral(" (")))
+            name = name.left(name.indexOf(QStringLiteral(" (")));
+        name = metrics.elidedText(name, Qt::ElideRight, room);
         p.drawText(QPointF(labelX, labelY[i] + metrics.ascent() / 2.0 - 1), name);
     }
 
