@@ -154,6 +154,11 @@ MainWindow::MainWindow(QWidget* parent)
     createMenus();
     linkPlots();
     restoreSettings();
+    // The keyboard starts on the traces, where a stray key does nothing: not
+    // in the detector's threshold (the first spin box in the tab order), nor
+    // in a text field that would take Ctrl+K and Ctrl+H for itself.
+    m_plot->setFocusPolicy(Qt::StrongFocus);
+    m_plot->setFocus();
     m_statusTimer.setInterval(kStatusInterval_ms);
     connect(&m_statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
 }

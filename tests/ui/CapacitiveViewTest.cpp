@@ -65,7 +65,7 @@ TEST(CapacitiveView, ReadoutsFollowTheStoredCalibrationWhichTheSessionRecords)
     }
     ui::MainWindow window;
     window.setStorePath(store);
-    window.resize(1400, 900);
+    window.resize(1366, 768);  // the smallest screen the workstation is made for
     auto* mode = child<QComboBox>(window, "modeBox");
     mode->setCurrentIndex(mode->findData(QStringLiteral("capacitive")));
     window.connectSource(quickWeights());

@@ -3,6 +3,7 @@
 // session do, else the time since connect, saying which — an operator's
 // marker is drawn where it was put, and a paused window moves as one
 // under one banner.
+#include "devices/session/LiveSession.h"
 #include "support/MainWindowHelpers.h"
 #include "support/Screenshot.h"
 #include "support/WaitFor.h"
@@ -11,6 +12,7 @@
 #include "ui/PanelScanView.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSplitter>
@@ -88,4 +90,16 @@ TEST(LiveTruth, ThePlotsReadTheRecordingsClockAndShowItsMarkers)
 
     window.stopRecording();
     EXPECT_TRUE(waitFor([&] { return allRead(plots, "Time since connect (s)"); }, 3000));
+}
+
+TEST(LiveTruth, TheKeyboardStartsOnTheTracesNotInADetectorSetting)
+{
+    ui::MainWindow window;
+    window.connectSource(liveSimulator());
+    window.show();
+    window.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&window));
+    EXPECT_EQ(QApplication::focusWidget(), child<QSplitter>(window, "centreSplitter")->widget(0));
+    QTest::keyClick(&window, Qt::Key_5);  // a stray key changes no setting
+    EXPECT_EQ(window.liveSession()->detection()->settings().parameters.threshold, 0.85);
 }

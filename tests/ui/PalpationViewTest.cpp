@@ -51,7 +51,7 @@ TEST(PalpationView, PressesAreListedMappedStoredAndMatchTheCoreReading)
     const QString store = dir.filePath("s.tactiscope");
     ui::MainWindow window;
     window.setStorePath(store);
-    window.resize(1400, 900);
+    window.resize(1366, 768);  // the smallest screen the workstation is made for
     choosePalpationMode(window);
     // Recording starts with the stream, while the simulated hand still holds
     // the probe lifted (its first press comes after 1 s).

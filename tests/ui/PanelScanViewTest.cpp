@@ -36,7 +36,7 @@ TEST(PanelScanView, DefectsAreListedStoredAndMatchTheCoreDetector)
     const QString store = dir.filePath("s.tactiscope");
     ui::MainWindow window;
     window.setStorePath(store);
-    window.resize(1400, 900);
+    window.resize(1366, 768);  // the smallest screen the workstation is made for
     window.connectSource(liveSimulator());
     window.show();
     ASSERT_TRUE(window.panelScanView()->isVisible());
