@@ -99,9 +99,11 @@ MainWindow::MainWindow(QWidget* parent)
     centre->addWidget(m_plot);
     // One mode view at a time, in one splitter pane whose height the user sets.
     centre->addWidget(m_modeViews);
-    centre->setStretchFactor(0, 3);
-    centre->setStretchFactor(1, 2);
-    centre->setSizes({540, 360});
+    // Half and half: on a 768-pixel screen the mode's view (its readings,
+    // the tissue scale, the site map) needs the room as much as the traces.
+    centre->setStretchFactor(0, 1);
+    centre->setStretchFactor(1, 1);
+    centre->setSizes({400, 400});
     centre->setChildrenCollapsible(false);
     setCentralWidget(centre);
     // Fits a 1366×768 screen (less its panel) and any larger one at first start.
