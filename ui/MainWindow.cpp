@@ -364,6 +364,12 @@ void MainWindow::chooseStore()
 // (A new path is a store to be made: the first recording creates it.)
 bool MainWindow::useStore(const QString& path)
 {
+    if (isRecording()) {
+        reportProblem(this, {tr("Session store not changed"), tr("A recording is going to %1.").arg(m_storePath),
+                             tr("A recording keeps its session store to its end."),
+                             tr("Stop the recording, then choose the store."), QStringLiteral("storeRefusedBox")});
+        return false;
+    }
     if (QFileInfo::exists(path)) {
         try {
             core::storage::SessionStore probe(path.toStdString(), core::storage::Database::Access::ReadOnly);
@@ -378,6 +384,12 @@ bool MainWindow::useStore(const QString& path)
         }
     }
     setStorePath(path);
+    if (m_session) {
+        // The live session records there from now on and reads its calibrations.
+        m_session->setStorePath(path.toStdString());
+        showMode(m_sessionBar->metadata().mode);
+        reportSessionProblems();
+    }
     checkStore();
     return true;
 }

@@ -86,8 +86,11 @@ public:
     // Failures are shown without stopping the acquisition; start returns
     // whether recording started.
     // Makes `path` the session store when it is one (or is not there yet,
-    // for the first recording to create); else says why and keeps the old.
+    // for the first recording to create), for the live session too (its
+    // next recording, its calibrations); else says why and keeps the old.
+    // Refused while recording.
     bool useStore(const QString& path);
+    // The path alone, unchecked: at start, before a device is connected.
     void setStorePath(const QString& path);
     QString storePath() const { return m_storePath; }
     bool startRecording();

@@ -129,6 +129,10 @@ public:
     // calibrations (after a wizard stored one).
     std::optional<std::string> setProfile(core::Mode mode, core::sensors::SensorProfile profile);
     std::optional<std::string> reloadCalibrations(core::Mode mode);
+    // Another session store: the next recording goes there and the
+    // processors read its calibrations. Refused while recording (a
+    // recording keeps its store); the reason, or nothing when done.
+    std::optional<std::string> setStorePath(const std::string& path);
     const core::sensors::SensorProfile* profile(core::Mode mode) const;
     const std::vector<core::storage::StoredCalibration>& calibrations(core::Mode mode) const;
 

@@ -52,6 +52,16 @@ std::optional<std::string> LiveSession::reloadCalibrations(core::Mode mode)
     return build(mode);
 }
 
+std::optional<std::string> LiveSession::setStorePath(const std::string& path)
+{
+    if (isRecording()) return "a recording keeps its session store to its end";
+    m_options.storePath = path;
+    for (const core::Mode mode : {core::Mode::Palpation, core::Mode::Capacitive})
+        if (!refusalOf(mode))
+            if (auto problem = build(mode)) m_problems.push_back(std::move(*problem));
+    return std::nullopt;
+}
+
 // Builds `mode`'s processor; returns the problem when it cannot (a bad
 // profile, a bad calibration), in which case the mode runs without one.
 std::optional<std::string> LiveSession::build(core::Mode mode)

@@ -303,3 +303,23 @@ TEST(Recording, AStationThatRequiresASubjectAndAnOperatorRecordsOnlyWithBoth)
     window.stopRecording();
     ui::setRequireSubjectAndOperator(false);  // the process's other tests record without
 }
+
+TEST(Recording, AStoreChosenWhileConnectedIsWhereTheNextRecordingGoes)
+{
+    QTemporaryDir dir;
+    const QString first = dir.filePath("first.tactiscope");
+    const QString second = dir.filePath("second.tactiscope");
+    ui::MainWindow window;
+    window.setStorePath(first);
+    window.connectSource(liveSimulator());
+    window.show();
+    QTest::keyClicks(child<QLineEdit>(window, "operatorEdit"), QStringLiteral("Ada"));
+    ASSERT_TRUE(window.useStore(second));
+    ASSERT_TRUE(window.startRecording());
+    runEventLoopFor(300);
+    window.stopRecording();
+    EXPECT_FALSE(QFile::exists(first)) << "the recording went to the store chosen before";
+    ASSERT_TRUE(QFile::exists(second));
+    core::storage::SessionStore sessions(second.toStdString(), core::storage::Database::Access::ReadOnly);
+    EXPECT_EQ(sessions.sessions().size(), 1u);
+}
