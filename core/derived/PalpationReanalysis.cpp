@@ -4,6 +4,7 @@
 
 #include "core/compliance/LivePalpation.h"
 #include "core/compliance/PalpationForces.h"
+#include "core/signal/SteadyWindow.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,15 +44,13 @@ std::vector<storage::SessionZero> zerosOf(storage::SessionStore& store, std::int
     if (samples < 2 || summary.sampleCount <= samples)
         throw std::invalid_argument("session " + std::to_string(session) + " is shorter than the first zero (" +
                                     std::to_string(compliance::LivePalpation::kTare_s) + " s)");
+    // The window's mean and σ/√n as the live tare reads them (SteadyWindow).
     const auto meanAndError = [&](std::size_t channel) {
-        const auto values = store.readChannel(session, channel, 0, samples);
-        double sum = 0.0, squares = 0.0;
-        for (const double v : values) sum += v;
-        const double mean = sum / static_cast<double>(samples);
-        for (const double v : values) squares += (v - mean) * (v - mean);
-        if (std::isnan(mean))
+        signal::SteadyWindow window(std::max<std::size_t>(4, samples));
+        for (const double v : store.readChannel(session, channel, 0, samples)) window.push(v);
+        if (std::isnan(window.mean()))
             throw std::invalid_argument("session " + std::to_string(session) + " lost samples in its first zero");
-        return std::pair{mean, std::sqrt(squares / static_cast<double>(samples - 1) / static_cast<double>(samples))};
+        return std::pair{window.mean(), window.standardErrorOfMean()};
     };
     const auto [high, highU] = meanAndError(forces.highChannel());
     const auto [low, lowU] = meanAndError(forces.lowChannel());

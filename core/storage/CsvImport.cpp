@@ -26,13 +26,6 @@ using io::CsvReader;
 constexpr std::size_t kBlockRows = 4096;  // one chunk
 constexpr std::size_t kBatchBlocks = 16;  // one transaction
 
-using NameAndUnit = io::ColumnHeader;
-
-NameAndUnit splitHeader(const std::string& header)
-{
-    return io::splitColumnHeader(header);
-}
-
 std::string lower(std::string text)
 {
     for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -56,7 +49,7 @@ ChannelKind kindFromUnit(const std::string& unit)
 // Seconds per unit of a time column's header unit.
 double timeScale(const std::string& header, const std::string& path)
 {
-    const std::string unit = splitHeader(header).unit;
+    const std::string unit = io::splitColumnHeader(header).unit;
     if (unit.empty() || unit == "s") return 1.0;
     if (unit == "ms") return 1e-3;
     if (unit == "us" || unit == "µs") return 1e-6;
@@ -300,7 +293,7 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
         timeColumn = reader.column(options.timeColumn);
     } else {
         for (std::size_t c = 0; c < header.size() && !timeColumn; ++c) {
-            const std::string name = lower(splitHeader(header[c]).name);
+            const std::string name = lower(io::splitColumnHeader(header[c]).name);
             if (name == "t" || name == "time" || name == "time_s" || name == "timestamp") timeColumn = c;
         }
     }
@@ -338,7 +331,7 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
     }
     if (dataColumns.empty()) throw CsvError("'" + path + "' has no data column besides the time");
     for (const std::size_t c : dataColumns) {
-        auto [name, unit] = splitHeader(header[c]);
+        auto [name, unit] = io::splitColumnHeader(header[c]);
         // "[strain]" (as exported) and the unitless columns of a panel scan
         // are the cantilevers' strains, which are dimensionless.
         const bool strain = unit == "strain" || (unit.empty() && metadata.mode == Mode::PanelScan);
