@@ -1,14 +1,20 @@
 #!/usr/bin/env bash
 # Regenerates the screenshots of the documentation (docs/screenshots/): the
 # UI tests that drive each mode against the live simulator save what they
-# show there. Look at every one before committing them.
+# show there, at 100 % and at 200 % scaling (docs/screenshots/200-percent/).
+# Look at every one before committing them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh dev tactiscope_ui_tests tactiscope_cli_tests
 mkdir -p docs/screenshots
+views='PanelScanView.Defects*:PalpationView.Presses*:CapacitiveView.Readouts*:DevicePanel.TheEmulator*:Recording.Sessions*:SensorProfileDialogTest.Lists*:DesignTool.Curves*:GaugeFactorWizardTest.Completed*:GaugeFactorWizardTest.AMislabelled*:CapacitiveWizardTest.LoadAndUnload*:CalibrationHistoryTest.Shows*:SessionBrowserTest.ListsEvery*:SessionBrowserTest.DeleteAsks*:ReviewWindowTest.Reanalysis*:ReviewWindowTest.AReviewersVerdict*:ReviewPalpation.*:ReviewCapacitive.*:ModeAndSource.AMode*'
 TACTISCOPE_SCREENSHOT_DIR="$PWD/docs/screenshots" QT_QPA_PLATFORM=offscreen \
-  build/dev/tests/tactiscope_ui_tests \
-  --gtest_filter='PanelScanView.Defects*:PalpationView.Presses*:CapacitiveView.Readouts*:DevicePanel.TheEmulator*:Recording.Sessions*:SensorProfileDialogTest.Lists*:DesignTool.Curves*:GaugeFactorWizardTest.Completed*:GaugeFactorWizardTest.AMislabelled*:CapacitiveWizardTest.LoadAndUnload*:CalibrationHistoryTest.Shows*:SessionBrowserTest.ListsEvery*:SessionBrowserTest.DeleteAsks*:ReviewWindowTest.Reanalysis*:ReviewWindowTest.AReviewersVerdict*:ReviewPalpation.*:ReviewCapacitive.*:ModeAndSource.AMode*'
+  build/dev/tests/tactiscope_ui_tests --gtest_filter="$views"
+# The same views at 200 % scaling (a 4K screen, or a 2732×1536 laptop):
+# nothing may be clipped or overflow there either.
+mkdir -p docs/screenshots/200-percent
+TACTISCOPE_SCREENSHOT_DIR="$PWD/docs/screenshots/200-percent" QT_QPA_PLATFORM=offscreen QT_SCALE_FACTOR=2 \
+  build/dev/tests/tactiscope_ui_tests --gtest_filter="$views"
 # The first page of an inspection report (tactiscope-cli report → pdftoppm).
 TACTISCOPE_SCREENSHOT_DIR="$PWD/docs/screenshots" \
   build/dev/tests/tactiscope_cli_tests --gtest_filter='ReportCli.ThePdf*:ModeReportsCli.*'

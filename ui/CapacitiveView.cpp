@@ -2,8 +2,8 @@
 #include "ui/CapacitiveView.h"
 
 #include "ui/ActiveProfiles.h"
-#include "ui/DisplayUnits.h"
 #include "ui/LivePlotWidget.h"
+#include "ui/NumberText.h"
 
 #include <QGridLayout>
 #include <QHBoxLayout>

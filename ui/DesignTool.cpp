@@ -3,6 +3,7 @@
 
 #include "core/sensors/CompliancePair.h"
 #include "ui/ActiveProfiles.h"
+#include "ui/NumberText.h"
 #include "ui/QuantityEdit.h"
 
 #include <QComboBox>
@@ -81,7 +82,7 @@ DesignTool::DesignTool(const QString& libraryDirectory, QWidget* parent)
     range->addWidget(m_from);
     range->addWidget(new QLabel(tr("to"), this));
     range->addWidget(m_to);
-    inputs->addRow(tr("Object stiffness k_o:"), range);
+    inputs->addRow(tr("Object stiffness kₒ:"), range);
     auto* note = new QLabel(tr("Each length is applied to both beams; widths, thicknesses and moduli are the "
                                "probe's. Higher Q and dQ/dk_o read k_o more finely; ratios near 1 keep the two "
                                "beams' signals and deflections alike (less crosstalk through the tissue)."),
@@ -100,7 +101,7 @@ DesignTool::DesignTool(const QString& libraryDirectory, QWidget* parent)
     for (std::size_t i = 0; i < kPanels.size(); ++i) {
         auto* rect = new QCPAxisRect(m_plot);
         m_plot->plotLayout()->addElement(static_cast<int>(i / 2), static_cast<int>(i % 2), rect);
-        rect->axis(QCPAxis::atBottom)->setLabel(tr("k_o (N/m)"));
+        rect->axis(QCPAxis::atBottom)->setLabel(tr("kₒ (N/m)"));
         rect->axis(QCPAxis::atLeft)->setLabel(tr(kPanels[i].title));
     }
     // The default legend went with the default axis rect: one of our own,
@@ -169,7 +170,7 @@ void DesignTool::redraw()
         for (std::size_t l = 0; l < lengths_m.size(); ++l) {
             const auto curve = pair.withLength(lengths_m[l]).designCurve(*from, *to, kPoints);
             QCPGraph* graph = m_plot->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
-            graph->setName(tr("L = %1 mm").arg(QLocale().toString(lengths_m[l] * 1e3, 'g', 4)));
+            graph->setName(tr("L = %1 mm").arg(typedText(lengths_m[l] * 1e3)));
             graph->setPen(QPen(kLengthColours[l], 1.6));
             for (const auto& point : curve) graph->addData(point.objectStiffness_n_per_m, kPanels[p].value(point));
         }

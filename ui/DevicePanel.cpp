@@ -2,7 +2,7 @@
 #include "ui/DevicePanel.h"
 
 #include "devices/simulator/ScenarioCatalog.h"
-#include "ui/DisplayUnits.h"
+#include "ui/NumberText.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -1,13 +1,7 @@
 // Display scaling per channel kind.
 #include "ui/DisplayUnits.h"
 
-#include "core/text/UncertaintyFormat.h"
-
-#include <QLocale>
 #include <QObject>
-
-#include <algorithm>
-#include <cmath>
 
 namespace tactiscope::ui {
 
@@ -64,31 +58,6 @@ DisplayUnit laneUnit(const core::ChannelDescriptor& lane, core::Mode mode)
     DisplayUnit unit = displayUnitFor(lane);
     unit.quantity = QString::fromStdString(lane.name);
     return unit;
-}
-
-QString fixedText(double value, int decimals)
-{
-    // "-0.000": a tiny negative rounded away; the sign would claim what the digits do not.
-    if (std::abs(value) * std::pow(10.0, decimals) < 0.5) value = 0.0;
-    return QLocale().toString(value, 'f', decimals);
-}
-
-int decimalsForMagnitude(double magnitude, int significant)
-{
-    if (!(std::abs(magnitude) > 0.0) || !std::isfinite(magnitude)) return std::max(0, significant - 1);
-    return std::clamp(significant - 1 - static_cast<int>(std::floor(std::log10(std::abs(magnitude)))), 0, 9);
-}
-
-int decimalsFor(double standardError)
-{
-    return core::text::uncertaintyDecimals(standardError, 6);
-}
-
-std::pair<QString, QString> valueAndErrorTexts(double value, double standardError)
-{
-    const int decimals = decimalsFor(standardError);
-    const QLocale locale;
-    return {fixedText(value, decimals), fixedText(standardError, decimals)};
 }
 
 QString laneLabel(const DisplayUnit& unit)

@@ -44,25 +44,9 @@ DisplayUnit displayUnitFor(const core::ChannelDescriptor& channel);
 // in its kind's unit. `quantity` is the lane's title: short, as a lane is
 // low; the readout and the report name the quantity in full.
 DisplayUnit laneUnit(const core::ChannelDescriptor& lane, core::Mode mode);
-// A number with `decimals` fixed decimals in the user's locale, as every
-// view, dialog and report writes one: never "-0.000" (a value that rounds
-// to zero is zero).
-QString fixedText(double value, int decimals);
-
-// The decimals that give `significant` digits to numbers of the size of
-// `magnitude`, so values read side by side share their decimals
-// ("-5.8840 … -3.9928", not "-5.884 … -3.9928"); 0..9.
-int decimalsForMagnitude(double magnitude, int significant);
-
 // The colour a threshold line is drawn in on every plot (live, review,
 // report): teal, apart from the red playhead and the events' colours.
 inline constexpr unsigned kThresholdRgb = 0x00897b;
-
-// A value and its standard error as a reader takes them: the error to two
-// significant digits (core::text::uncertaintyDecimals, at most six
-// decimals), the value to the same decimal place; no error, no decimals.
-std::pair<QString, QString> valueAndErrorTexts(double value, double standardError);
-int decimalsFor(double standardError);  // the decimals of both
 
 // The lane's axis label: the title over the unit, two short lines.
 QString laneLabel(const DisplayUnit& unit);

@@ -1,7 +1,7 @@
 // InterruptedSessionsReport: finding the sessions, the message and the export.
 #include "ui/InterruptedSessionsReport.h"
 
-#include "ui/DisplayUnits.h"
+#include "ui/NumberText.h"
 #include "ui/ProblemReport.h"
 #include "ui/StoreJobs.h"
 #include "ui/VocabularyText.h"

@@ -3,7 +3,7 @@
 
 #include "devices/Acquisition.h"
 #include "devices/ReconnectingSource.h"
-#include "ui/DisplayUnits.h"
+#include "ui/NumberText.h"
 
 #include <QLocale>
 #include <QObject>

@@ -214,6 +214,20 @@ void LivePlotWidget::moveLegendTo(QCPAxisRect* rect)
     rect->insetLayout()->addElement(m_plot->legend, Qt::AlignTop | Qt::AlignLeft);
 }
 
+// The legend sits over the top of its lane: the lane's range is raised by
+// this fraction so no trace runs under it (a press's peak did).
+double LivePlotWidget::legendHeadroom(const QCPAxisRect* rect) const
+{
+    if (!m_plot->legend->visible() || m_plot->legend->layout() != rect->insetLayout()) return 0.0;
+    // From the lane's top to the legend's bottom (its inset margin
+    // included); before the first layout, its size hint and a margin.
+    const QRect legend = m_plot->legend->outerRect();
+    const int legend_px =
+        std::max(legend.bottom() - rect->top(), m_plot->legend->minimumOuterSizeHint().height() + 12) + 2;
+    const int free_px = rect->height() - legend_px;
+    return free_px > legend_px ? static_cast<double>(legend_px) / free_px : 0.0;
+}
+
 void LivePlotWidget::removePlotItems()
 {
     for (Lane& lane : m_lanes)
@@ -585,7 +599,8 @@ void LivePlotWidget::draw(double start_s, double end_s)
         }
         if (m_scaleHeld || !std::isfinite(laneMin[lane])) continue;
         l.range = nextAxisRange(l.range, laneMin[lane], laneMax[lane]);
-        l.rect->axis(QCPAxis::atLeft)->setRange(l.range.lower, l.range.upper);
+        const double headroom = legendHeadroom(l.rect);
+        l.rect->axis(QCPAxis::atLeft)->setRange(l.range.lower, l.range.upper + headroom * l.range.size());
     }
     m_drawing = false;
     drawGapBands();

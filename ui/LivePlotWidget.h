@@ -145,6 +145,7 @@ private:
     void buildPlotItems(const std::vector<core::ChannelDescriptor>& channels, const std::vector<DisplayUnit>& units);
     void removePlotItems();
     void moveLegendTo(QCPAxisRect* rect);
+    double legendHeadroom(const QCPAxisRect* rect) const;
     void updateInteractions();
     void followLive(double start_s, bool arrived);
     void decimatedPoints(std::size_t channel, double start_s, double end_s);

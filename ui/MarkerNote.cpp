@@ -1,7 +1,7 @@
 // MarkerNote: a non-modal input dialog that deletes itself.
 #include "ui/MarkerNote.h"
 
-#include "ui/DisplayUnits.h"
+#include "ui/NumberText.h"
 
 #include <QInputDialog>
 #include <QLocale>

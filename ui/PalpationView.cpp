@@ -5,6 +5,7 @@
 #include "ui/ActiveProfiles.h"
 #include "ui/DisplayUnits.h"
 #include "ui/LivePlotWidget.h"
+#include "ui/NumberText.h"
 #include "ui/SiteGridMap.h"
 #include "ui/StiffnessScale.h"
 
@@ -14,6 +15,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -37,10 +39,10 @@ QString calibrationLine(const core::compliance::LivePalpation& palpation, const 
 {
     const auto high = palpation.gaugeFactor(true), low = palpation.gaugeFactor(false);
     if (!high || !low) return PalpationView::tr("Calibration: strain or force as the device sends it");
-    const QLocale locale;
-    return PalpationView::tr("Calibration: %1 — gauge factors %2 (stiff) and %3 (soft); k_o needs only their ratio")
-        .arg(calibration.isEmpty() ? PalpationView::tr("none, nominal") : calibration, locale.toString(*high, 'g', 4),
-             locale.toString(*low, 'g', 4));
+    const auto factorText = [](double factor) { return compactText(factor, 4); };
+    return PalpationView::tr("Calibration: %1 — gauge factors %2 (stiff) and %3 (soft); kₒ needs only their ratio")
+        .arg(calibration.isEmpty() ? PalpationView::tr("none, nominal") : calibration, factorText(*high),
+             factorText(*low));
 }
 
 }  // namespace
@@ -80,12 +82,18 @@ PalpationView::PalpationView(QWidget* parent)
     m_scale->setTissues(builtInTissues());
 
     m_presses->setHorizontalHeaderLabels(
-        {tr("Time (s)"), tr("k_o (N/m)"), tr("± u"), tr("Depth (mm)"), tr("Slope"), tr("Site")});
+        {tr("Time (s)"), tr("kₒ (N/m)"), tr("± u"), tr("Depth (mm)"), tr("Slope"), tr("Site")});
     m_presses->horizontalHeaderItem(4)->setToolTip(
-        tr("Change of k_o per mm pressed, in N/m per mm: near zero when the reading does not depend on the depth"));
+        tr("Change of kₒ per mm pressed, in N/m per mm: near zero when the reading does not depend on the depth"));
     m_presses->verticalHeader()->hide();
     m_presses->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_presses->horizontalHeader()->setStretchLastSection(true);
+    // Never sideways: the table is at least as wide as its columns' headers
+    // (every value fits under its header but a long site name, elided).
+    m_presses->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    int columns_px = 2 * m_presses->frameWidth() + m_presses->verticalScrollBar()->sizeHint().width();
+    for (int c = 0; c < m_presses->columnCount(); ++c) columns_px += m_presses->horizontalHeader()->sectionSizeHint(c);
+    m_presses->setMinimumWidth(columns_px);
     m_presses->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_presses->setSelectionBehavior(QAbstractItemView::SelectRows);
 

@@ -3,6 +3,7 @@
 
 #include "ui/DisplayUnits.h"
 #include "ui/LivePlotWidget.h"
+#include "ui/NumberText.h"
 #include "ui/VerdictDialog.h"
 #include "ui/VocabularyText.h"
 

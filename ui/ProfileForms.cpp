@@ -2,6 +2,7 @@
 // field (the stiff beam stiffer than the soft one, a sheet with a layer).
 #include "ui/ProfileForms.h"
 #include "ui/DisplayUnits.h"
+#include "ui/NumberText.h"
 
 #include "core/sensors/CapacitiveBeam.h"
 #include "core/sensors/CompliancePair.h"
@@ -160,7 +161,7 @@ FormResult CompliancePairForm::fields() const
     const double kHigh = core::sensors::CantileverBeam(pair.high).stiffness_n_per_m();
     const double kLow = core::sensors::CantileverBeam(pair.low).stiffness_n_per_m();
     if (!(kHigh > kLow))
-        return {std::nullopt, tr("The stiff beam must be the stiffer one: k_H = %1 N/m, k_L = %2 N/m")
+        return {std::nullopt, tr("The stiff beam must be the stiffer one: k stiff = %1 N/m, k soft = %2 N/m")
                                   .arg(figures(kHigh), figures(kLow))};
     return {pair, {}};
 }
@@ -199,7 +200,7 @@ CapacitiveBeamForm::CapacitiveBeamForm(QWidget* parent)
     m_doubleLayerOn->setObjectName(QStringLiteral("doubleLayerOn"));
     m_doubleLayer = createField(kPicofarad, 0.0, kMaxCapacitance_f, QStringLiteral("doubleLayer"));
     capacitance->addRow(m_doubleLayerOn);
-    capacitance->addRow(tr("C_EDL:"), m_doubleLayer);
+    capacitance->addRow(tr("C<sub>EDL</sub>:"), m_doubleLayer);
     connect(m_doubleLayerOn, &QCheckBox::toggled, m_doubleLayer, &QWidget::setEnabled);
     connect(m_doubleLayerOn, &QCheckBox::clicked, this, &ProfileForm::edited);
     columns->addWidget(capacitanceBox, 0, Qt::AlignTop);
@@ -328,7 +329,8 @@ FormResult CapacitiveBeamForm::fields() const
     if (!take(m_c0, tr("C0"), g.c0_f, problem)) return {std::nullopt, problem};
     if (m_doubleLayerOn->isChecked()) {
         double doubleLayer_f = 0.0;
-        if (!take(m_doubleLayer, tr("C_EDL"), doubleLayer_f, problem)) return {std::nullopt, problem};
+        if (!take(m_doubleLayer, tr("Double-layer capacitance"), doubleLayer_f, problem))
+            return {std::nullopt, problem};
         g.doubleLayer_f = doubleLayer_f;
     }
     try {
@@ -352,7 +354,7 @@ QString profileSummary(const SensorProfile& profile)
     if (const auto* capacitive = std::get_if<core::sensors::CapacitiveBeamProfile>(&profile)) {
         const core::sensors::CapacitiveBeam beam(capacitive->geometry);
         // pF per mN and pF per mm: both F/N × 1e12 pF/F × 1e-3.
-        return ProfileForm::tr("Beam stiffness k_s = %1 N/m; sensitivity %2 pF/mN and %3 pF/mm of tip deflection.")
+        return ProfileForm::tr("Beam stiffness kₛ = %1 N/m; sensitivity %2 pF/mN and %3 pF/mm of tip deflection.")
             .arg(figures(beam.stiffness_n_per_m()), figures(beam.capacitancePerNewton_f_per_n() * 1e9),
                  figures(beam.capacitancePerMetre_f_per_m() * 1e9));
     }

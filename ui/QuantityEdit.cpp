@@ -1,6 +1,8 @@
 // QuantityEdit: locale-aware parsing, the open range and the red mark.
 #include "ui/QuantityEdit.h"
 
+#include "ui/NumberText.h"
+
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -34,11 +36,7 @@ QuantityEdit::QuantityEdit(const DisplayUnit& unit, double minimum_si, double ma
 
 void QuantityEdit::setValue(double si)
 {
-    // Ten significant digits: round trips of typed values, no float noise;
-    // no group separators, which nobody types.
-    QLocale locale;
-    locale.setNumberOptions(QLocale::OmitGroupSeparator);
-    m_edit->setText(locale.toString(si * m_unit.scale, 'g', 10));
+    m_edit->setText(typedText(si * m_unit.scale));
     showValidity();
 }
 
@@ -61,10 +59,8 @@ std::optional<double> QuantityEdit::value() const
 QString QuantityEdit::problem() const
 {
     if (value()) return {};
-    const QLocale locale;
     return tr("must be a number above %1 and below %2 %3")
-        .arg(locale.toString(m_minimum * m_unit.scale, 'g', 6), locale.toString(m_maximum * m_unit.scale, 'g', 6),
-             m_unit.symbol)
+        .arg(typedText(m_minimum * m_unit.scale), typedText(m_maximum * m_unit.scale), m_unit.symbol)
         .trimmed();
 }
 

@@ -1,7 +1,7 @@
 // SiteGridMap: grid size, cell colours, the legend and the moving selection.
 #include "ui/SiteGridMap.h"
 
-#include "ui/DisplayUnits.h"
+#include "ui/NumberText.h"
 #include "ui/StiffnessScale.h"
 
 #include <QCheckBox>

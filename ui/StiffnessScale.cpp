@@ -1,7 +1,7 @@
 // StiffnessScale: log axis, tissue marks with spread labels, reading arrow.
 #include "ui/StiffnessScale.h"
 
-#include "ui/DisplayUnits.h"
+#include "ui/NumberText.h"
 
 #include <QFile>
 #include <QLocale>

@@ -1,9 +1,10 @@
 // XYPlotWidget: history of the two channels, strided curve, both axes fitted.
 #include "ui/XYPlotWidget.h"
 
+#include "ui/NumberText.h"
+
 #include <qcustomplot.h>
 
-#include <QLocale>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -82,7 +83,7 @@ void XYPlotWidget::clearSource()
 QString XYPlotWidget::slopeText() const
 {
     if (!m_slope) return {};
-    const QString value = QLocale().toString(*m_slope, 'g', 4);
+    const QString value = significantText(*m_slope, 4);
     return m_slopeUnit.isEmpty() ? QStringLiteral("%1 = %2").arg(m_slopeName, value)
                                  : QStringLiteral("%1 = %2 %3").arg(m_slopeName, value, m_slopeUnit);
 }

@@ -22,7 +22,7 @@ LiveDetection::LiveDetection(std::vector<std::size_t> cantileverChannels, double
 
 std::vector<ChannelDescriptor> LiveDetection::outputChannels()
 {
-    return {{"decision", "", ChannelKind::Other}, {"R_ab", "", ChannelKind::Other}, {"R_ba", "", ChannelKind::Other}};
+    return {{"decision", "", ChannelKind::Other}, {"R A→B", "", ChannelKind::Other}, {"R B→A", "", ChannelKind::Other}};
 }
 
 std::unique_ptr<LiveDetection::Engine> LiveDetection::makeEngine(const LiveDetectionSettings& settings) const

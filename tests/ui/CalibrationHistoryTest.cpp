@@ -83,9 +83,9 @@ TEST_F(CalibrationHistoryTest, ShowsEachSensorsRecordsDriftAndTheSessionsThatUse
     EXPECT_FALSE(table->item(1, 0)->text().contains(QStringLiteral("active")));
     EXPECT_EQ(table->item(1, 6)->text(), QStringLiteral("1"));  // one session used it
     const QString drift = child<QLabel>(history, "driftText")->text();
-    EXPECT_TRUE(drift.contains(QStringLiteral("mean 2.1200, SD 0.02"))) << drift.toStdString();
+    EXPECT_TRUE(drift.contains(QStringLiteral("mean 2.1200, SD 0.020"))) << drift.toStdString();
     EXPECT_TRUE(drift.contains(QStringLiteral("newest 1.90 %"))) << drift.toStdString();
-    EXPECT_TRUE(drift.contains(QStringLiteral("trend 0.04 per year"))) << drift.toStdString();
+    EXPECT_TRUE(drift.contains(QStringLiteral("trend 0.0400 per year"))) << drift.toStdString();
 
     const auto points = history.plottedPoints();
     ASSERT_EQ(points.size(), 3u);

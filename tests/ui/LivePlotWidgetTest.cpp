@@ -7,6 +7,8 @@
 #include "support/Screenshot.h"
 #include "support/WaitFor.h"
 
+#include <qcustomplot.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -167,4 +169,47 @@ TEST(LivePlotWidget, AHeldScaleStopsAutoscaling)
     plot.setScaleHeld(false);
     fill(*buffer, 40.0, 40.1);
     EXPECT_TRUE(waitFor([&] { return plot.valueRange(1).second > held.second + 2.0; }, 1000));
+}
+
+TEST(LivePlotWidget, NoTraceRunsUnderTheLegend)
+{
+    // Two strain traces share a lane, so it has a legend in its top left;
+    // both are at their highest in the first seconds, right under it.
+    const std::vector<core::ChannelDescriptor> pair{{"stiff", "", core::ChannelKind::Strain},
+                                                    {"soft", "", core::ChannelKind::Strain}};
+    auto buffer = std::make_shared<core::LiveBuffer>(2, 20000);
+    for (std::uint64_t first = 0; first < 4000; first += 10) {
+        core::SampleBlock block(2, 10, static_cast<double>(first) * 0.002, 0.002, first);
+        for (std::size_t i = 0; i < 10; ++i) {
+            const double high = block.timeAt_s(i) < 2.0 ? 1.0 : 0.0;
+            block.channel(0)[i] = 400e-6 * high;
+            block.channel(1)[i] = 150e-6 * high;
+        }
+        buffer->consume(block);
+    }
+    ui::LivePlotWidget plot;
+    plot.resize(280, 150);  // as small as the palpation view's force lane
+    plot.show();
+    plot.setSource(buffer, pair, 500.0);
+    ASSERT_TRUE(waitFor([&] { return plot.samplesReceived() == 4000u && plot.drawnPointCount(0) > 0; }, 2000));
+    tactiscope::testing::runEventLoopFor(150);
+
+    auto* customPlot = plot.findChild<QCustomPlot*>();
+    ASSERT_NE(customPlot, nullptr);
+    ASSERT_TRUE(customPlot->legend->visible());
+    const QRect legend = customPlot->legend->outerRect();
+    ASSERT_GT(legend.height(), 0);
+    int points = 0;
+    for (int g = 0; g < customPlot->graphCount(); ++g) {
+        const QCPGraph* graph = customPlot->graph(g);
+        for (auto point = graph->data()->constBegin(); point != graph->data()->constEnd(); ++point) {
+            if (std::isnan(point->value)) continue;
+            const QPointF pixel(graph->keyAxis()->coordToPixel(point->key),
+                                graph->valueAxis()->coordToPixel(point->value));
+            EXPECT_FALSE(legend.contains(pixel.toPoint())) << "t = " << point->key << " s";
+            ++points;
+        }
+    }
+    EXPECT_GT(points, 100);
+    EXPECT_FALSE(saveScreenshot(plot, QStringLiteral("live-plot-legend")).isEmpty());
 }

@@ -18,6 +18,7 @@
 
 #include <QComboBox>
 #include <QDockWidget>
+#include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
 #include <QStatusBar>
@@ -69,6 +70,8 @@ TEST(PalpationView, PressesAreListedMappedStoredAndMatchTheCoreReading)
     ASSERT_TRUE(waitFor([&] { return table->rowCount() >= 2; }, 12000));
     runEventLoopFor(300);
     tactiscope::testing::saveScreenshot(window, QStringLiteral("palpation"));
+    // Every column is in view: the table never scrolls sideways.
+    EXPECT_LE(table->horizontalHeader()->length(), table->viewport()->width());
     window.stopRecording();
 
     // The simulated specimen is 117 N/m: every press reads it within 5 %.

@@ -45,6 +45,6 @@ TEST(XYPlotWidget, DrawsTheLastSecondsOfOneChannelAgainstAnother)
     // y = 3x through the origin: the slope, shown with its unit (s/s: none).
     ASSERT_TRUE(plot.slope().has_value());
     EXPECT_NEAR(*plot.slope(), 3.0, 1e-9);
-    EXPECT_EQ(plot.slopeText(), QStringLiteral("slope = 3"));
+    EXPECT_EQ(plot.slopeText(), QStringLiteral("slope = 3.000"));
     EXPECT_FALSE(tactiscope::testing::saveScreenshot(plot, QStringLiteral("xy-plot")).isEmpty());
 }

@@ -1,6 +1,6 @@
 // CalibrationHistory: sensors, records, drift plot, sessions per record.
 #include "ui/calibration/CalibrationHistory.h"
-#include "ui/DisplayUnits.h"
+#include "ui/NumberText.h"
 #include "ui/VocabularyText.h"
 
 #include "core/calibration/CalibrationDrift.h"
@@ -244,7 +244,8 @@ void CalibrationHistory::showSensor()
                 .arg(title)
                 .arg(d.count)
                 .arg(fixedText(d.mean, 4), significant(d.standardDeviation, 2), fixedText(100.0 * d.firstToLast, 2));
-        if (d.trendPerYear) text += tr("; trend %1 per year").arg(significant(*d.trendPerYear, 3));
+        // The trend in the mean's decimals: both are values of the same quantity.
+        if (d.trendPerYear) text += tr("; trend %1 per year").arg(fixedText(*d.trendPerYear, 4));
         m_drift->setText(text + QLatin1Char('.'));
     }
     if (!m_shown.empty()) m_records->selectRow(static_cast<int>(m_shown.size()) - 1);

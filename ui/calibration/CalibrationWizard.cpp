@@ -2,6 +2,7 @@
 // calibration shares, and storing its record off the GUI thread.
 #include "ui/calibration/CalibrationWizard.h"
 #include "ui/DisplayUnits.h"
+#include "ui/NumberText.h"
 
 #include "core/storage/SessionStore.h"
 #include "ui/ActiveProfiles.h"

@@ -1,7 +1,7 @@
 // CapacitiveWizard: the beam's profile and the final zero around
 // core::calibration::calibrateCapacitive.
 #include "ui/calibration/CapacitiveWizard.h"
-#include "ui/DisplayUnits.h"
+#include "ui/NumberText.h"
 
 #include "core/sensors/CapacitiveBeam.h"
 #include "ui/calibration/CapturePanel.h"
@@ -113,8 +113,8 @@ double CapacitiveWizard::forceOf(const Load& load) const
 
 QString CapacitiveWizard::loadText(const Load& load) const
 {
-    return static_cast<Unit>(load.unit) == Unit::Grams ? tr("%1 g").arg(significant(load.value, 6))
-                                                       : tr("%1 mgf").arg(significant(load.value, 6));
+    return static_cast<Unit>(load.unit) == Unit::Grams ? tr("%1 g").arg(typedText(load.value))
+                                                       : tr("%1 mgf").arg(typedText(load.value));
 }
 
 CalibrationWizard::Fit CapacitiveWizard::fitLoads()
@@ -146,14 +146,14 @@ QString CapacitiveWizard::resultHtml() const
                                             : tr("not measured (no load was both placed and removed)");
     return tr("<b>%1</b><br>C0 = <b>%2 pF</b>, noise σ %3 pF; %4.<br>Sensitivity <b>%5 ± %6 pF/mN</b> (standard "
               "error), intercept %7 pF, R² = %8; relative sensitivity %9 per mN.<br>Hysteresis %10.<br>Detection "
-              "limit (3σ): %11 µN (%12 mgf), a tip displacement of %13 µm through k = %14 N/m.")
+              "limit (3σ): %11 (%12 mgf), a tip displacement of %13 through k = %14 N/m.")
         .arg(QString::fromStdString(profile()->name).toHtmlEscaped(), fixedText(r.c0_f * 1e12, 4),
              fixedText(r.baselineSigma_f * 1e12, 4), drift, significant(fit.slope * 1e9, 5),
              significant(fit.slopeStandardError * 1e9, 2), fixedText(fit.intercept * 1e12, 4),
              fixedText(fit.rSquared, 6), significant(*r.relativeSensitivity_per_n * 1e-3, 3))
-        .arg(hysteresis, significant(*r.detectionLimit_n * 1e6, 3),
+        .arg(hysteresis, siText(*r.detectionLimit_n, QStringLiteral("N"), 3),
              significant(*r.detectionLimit_n / kMilligramForce_n, 3),
-             significant(r.detectionLimit_m.value_or(0) * 1e6, 3),
+             siText(r.detectionLimit_m.value_or(0), QStringLiteral("m"), 3),
              significant(core::sensors::CapacitiveBeam(profile()->geometry).stiffness_n_per_m(), 3));
 }
 

@@ -1,7 +1,7 @@
 // GaugeFactorWizard: the beam and its chain around
 // core::calibration::calibrateGaugeFactor.
 #include "ui/calibration/GaugeFactorWizard.h"
-#include "ui/DisplayUnits.h"
+#include "ui/NumberText.h"
 
 #include "core/storage/SessionStore.h"
 #include "ui/QuantityEdit.h"
@@ -265,11 +265,11 @@ QString GaugeFactorWizard::loadText(const Load& load) const
 {
     switch (static_cast<LoadUnit>(load.unit)) {
     case LoadUnit::Grams:
-        return tr("%1 g").arg(significant(load.value, 6));
+        return tr("%1 g").arg(typedText(load.value));
     case LoadUnit::MilligramsForce:
-        return tr("%1 mgf").arg(significant(load.value, 6));
+        return tr("%1 mgf").arg(typedText(load.value));
     case LoadUnit::TipDeflection_mm:
-        return tr("%1 mm tip deflection").arg(significant(load.value, 6));
+        return tr("%1 mm tip deflection").arg(typedText(load.value));
     }
     return {};
 }

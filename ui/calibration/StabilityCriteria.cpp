@@ -2,6 +2,7 @@
 #include "ui/calibration/StabilityCriteria.h"
 
 #include "ui/DisplayUnits.h"
+#include "ui/NumberText.h"
 
 #include <QDoubleSpinBox>
 #include <QFormLayout>

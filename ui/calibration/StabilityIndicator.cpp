@@ -2,9 +2,8 @@
 #include "ui/calibration/StabilityIndicator.h"
 
 #include "ui/DisplayUnits.h"
+#include "ui/NumberText.h"
 #include "ui/calibration/StabilityWatch.h"
-
-#include <QLocale>
 
 #include <cmath>
 
@@ -36,11 +35,8 @@ void StabilityIndicator::setUnit(const DisplayUnit& unit)
 
 void StabilityIndicator::refresh()
 {
-    const QLocale locale;
-    // Fixed decimals for `digits` significant digits: never "1e+09 pF".
     const auto value = [&](double v, int digits = 3) {
-        const double shown = v * m_unit.scale;
-        return fixedText(shown, decimalsForMagnitude(shown, digits)) + QChar(0x2009) + m_unit.symbol;
+        return significantText(v * m_unit.scale, digits) + QChar(0x2009) + m_unit.symbol;
     };
     const auto& settings = m_watch->settings();
     if (!m_watch->receiving()) {
@@ -49,7 +45,7 @@ void StabilityIndicator::refresh()
     }
     const auto& w = m_watch->latest();
     if (!w) {
-        setText(dot("#9e9e9e") + tr("Collecting a %1 s window…").arg(locale.toString(settings.window_s, 'g', 3)));
+        setText(dot("#9e9e9e") + tr("Collecting a %1 s window…").arg(typedText(settings.window_s)));
         return;
     }
     if (!w->stable) {

@@ -1,10 +1,10 @@
 // Small text helpers the calibration wizards share: a word-wrapped label
-// and a number in the user's locale with a given count of significant
-// digits.
+// and a measured number to a given count of significant digits.
 #pragma once
 
+#include "ui/NumberText.h"
+
 #include <QLabel>
-#include <QLocale>
 
 namespace tactiscope::ui {
 
@@ -17,7 +17,7 @@ inline QLabel* wrappedLabel(const QString& text, QWidget* parent)
 
 inline QString significant(double value, int digits = 4)
 {
-    return QLocale().toString(value, 'g', digits);
+    return significantText(value, digits);
 }
 
 }  // namespace tactiscope::ui

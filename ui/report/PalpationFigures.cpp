@@ -1,7 +1,7 @@
 // PalpationFigures: the grid map as a coloured table, the scale drawn off screen.
 #include "ui/report/PalpationFigures.h"
 
-#include "ui/DisplayUnits.h"
+#include "ui/NumberText.h"
 #include "ui/StiffnessScale.h"
 
 #include <QLocale>

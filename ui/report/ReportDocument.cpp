@@ -1,6 +1,6 @@
 // ReportDocument: the report's HTML, its plot resource, and the PDF.
 #include "ui/report/ReportDocument.h"
-#include "ui/DisplayUnits.h"
+#include "ui/NumberText.h"
 #include "ui/VocabularyText.h"
 
 #include "core/Version.h"
@@ -60,7 +60,7 @@ QString calibrationText(const core::calibration::CalibrationRecord& record)
 {
     QStringList values;
     for (const auto& [name, value] : record.values)
-        values << QStringLiteral("%1 = %2").arg(text(name), QLocale().toString(value, 'g', 5));
+        values << QStringLiteral("%1 = %2").arg(text(name), significantText(value, 5));
     QString line =
         QObject::tr("%1 of %2, %3 by %4")
             .arg(text(record.kind), text(record.sensorName), text(record.timestampUtc), orDash(record.operatorName));

@@ -61,7 +61,7 @@ PalpationReanalysisBox::PalpationReanalysisBox(core::storage::SessionStore& stor
     m_gaugeFactors->addItem(tr("the store's newest calibration of each beam"),
                             static_cast<int>(GaugeFactors::NewestInStore));
     m_gaugeFactors->addItem(tr("the profile's nominal gauge factor"), static_cast<int>(GaugeFactors::Nominal));
-    m_gaugeFactors->setToolTip(tr("k_o depends on the ratio of the beams' gauge factors only"));
+    m_gaugeFactors->setToolTip(tr("kₒ depends on the ratio of the beams' gauge factors only"));
 
     auto* run = new QPushButton(tr("Read again"), this);
     run->setObjectName(QStringLiteral("reanalysisRun"));

@@ -3,6 +3,7 @@
 #include "ui/review/ReviewPlot.h"
 
 #include "ui/DisplayUnits.h"
+#include "ui/NumberText.h"
 #include "ui/report/LaneAxis.h"
 #include "ui/report/PlotImage.h"
 

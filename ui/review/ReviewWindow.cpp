@@ -1,7 +1,7 @@
 // ReviewWindow: header, plot, record list, notes, replay, re-analysis and exports.
 #include "ui/review/ReviewWindow.h"
 
-#include "ui/DisplayUnits.h"
+#include "ui/NumberText.h"
 #include "ui/ProblemReport.h"
 #include "ui/VerdictDialog.h"
 #include "ui/VocabularyText.h"
@@ -125,7 +125,7 @@ QString readingDetails(const core::storage::SessionReading& r)
         const auto [number, error] = valueAndErrorTexts(r.value, *r.standardError);
         value = QObject::tr("%1 = %2 ± %3").arg(text(r.quantity), number, error);
     } else {
-        value = QObject::tr("%1 = %2").arg(text(r.quantity)).arg(r.value, 0, 'g', 5);
+        value = QObject::tr("%1 = %2").arg(text(r.quantity)).arg(significantText(r.value, 5));
     }
     value += QLatin1Char(' ') + text(r.unit);
     if (!r.site.empty()) value += QObject::tr(" at %1").arg(text(r.site));
@@ -370,7 +370,7 @@ void ReviewWindow::refreshHeader()
     add(tr("operator %1"), meta.operatorName);
     add(tr("site %1"), meta.site);
     header << tr("started %1").arg(started.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")))
-           << tr("%1 at %2 Hz").arg(durationText(m_session.duration_s())).arg(m_session.sampleRate_hz, 0, 'g', 6);
+           << tr("%1 at %2 Hz").arg(durationText(m_session.duration_s())).arg(typedText(m_session.sampleRate_hz));
     add(tr("device %1"), (meta.deviceModel + " " + meta.deviceSerial).substr(meta.deviceModel.empty() ? 1 : 0));
     header << (interrupted ? tr("<span style='color:#a05000'><b>interrupted</b> (kept up to the cut)</span>")
                            : tr("status %1").arg(wordText(m_session.status)));
