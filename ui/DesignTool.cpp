@@ -84,7 +84,7 @@ DesignTool::DesignTool(const QString& libraryDirectory, QWidget* parent)
     range->addWidget(m_to);
     inputs->addRow(tr("Object stiffness kₒ:"), range);
     auto* note = new QLabel(tr("Each length is applied to both beams; widths, thicknesses and moduli are the "
-                               "probe's. Higher Q and dQ/dk_o read k_o more finely; ratios near 1 keep the two "
+                               "probe's. Higher Q and dQ/dkₒ read kₒ more finely; ratios near 1 keep the two "
                                "beams' signals and deflections alike (less crosstalk through the tissue)."),
                             this);
     note->setWordWrap(true);

@@ -16,6 +16,7 @@
 #include <QLocale>
 #include <QPushButton>
 #include <QScrollBar>
+#include <QStyle>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -87,13 +88,12 @@ PalpationView::PalpationView(QWidget* parent)
         tr("Change of kₒ per mm pressed, in N/m per mm: near zero when the reading does not depend on the depth"));
     m_presses->verticalHeader()->hide();
     m_presses->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_presses->horizontalHeader()->setStretchLastSection(true);
-    // Never sideways: the table is at least as wide as its columns' headers
-    // (every value fits under its header but a long site name, elided).
+    // The site takes what is left (a stretched last section would keep at
+    // least the default 100 px and push the table sideways).
+    m_presses->horizontalHeader()->setSectionResizeMode(5, QHeaderView::Stretch);
+    // Never sideways: the table is kept as wide as its columns (fitPressColumns).
     m_presses->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    int columns_px = 2 * m_presses->frameWidth() + m_presses->verticalScrollBar()->sizeHint().width();
-    for (int c = 0; c < m_presses->columnCount(); ++c) columns_px += m_presses->horizontalHeader()->sectionSizeHint(c);
-    m_presses->setMinimumWidth(columns_px);
+    fitPressColumns();
     m_presses->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_presses->setSelectionBehavior(QAbstractItemView::SelectRows);
 
@@ -172,6 +172,25 @@ void PalpationView::updateReadout()
     }
 }
 
+// The press table's minimum width holds every column at its header's or
+// its widest value's width, so nothing is clipped and nothing scrolls.
+void PalpationView::fitPressColumns()
+{
+    const QHeaderView* header = m_presses->horizontalHeader();
+    const QFontMetrics metrics(m_presses->font());
+    // The item delegate's margins: a focus frame and a pixel on each side.
+    const int margins_px = 2 * (m_presses->style()->pixelMetric(QStyle::PM_FocusFrameHMargin) + 1);
+    int width_px = 2 * m_presses->frameWidth() + m_presses->verticalScrollBar()->sizeHint().width();
+    for (int c = 0; c < m_presses->columnCount(); ++c) {
+        int column_px = header->sectionSizeHint(c);
+        for (int row = 0; row < m_presses->rowCount(); ++row)
+            if (const QTableWidgetItem* item = m_presses->item(row, c))
+                column_px = std::max(column_px, metrics.horizontalAdvance(item->text()) + margins_px);
+        width_px += column_px;
+    }
+    m_presses->setMinimumWidth(width_px);
+}
+
 void PalpationView::showPresses(const std::vector<devices::session::PressRecord>& presses)
 {
     if (presses.size() < static_cast<std::size_t>(m_presses->rowCount())) startSubject();
@@ -204,6 +223,7 @@ void PalpationView::showPresses(const std::vector<devices::session::PressRecord>
             m_scale->setReading(std::nullopt);
         }
     }
+    fitPressColumns();
     m_presses->scrollToBottom();
 }
 

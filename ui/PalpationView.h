@@ -56,6 +56,7 @@ protected:
 
 private:
     void startSubject();
+    void fitPressColumns();
 
     std::shared_ptr<core::compliance::LivePalpation> m_palpation;
     LivePlotWidget* m_lanes = nullptr;

@@ -110,7 +110,7 @@ CompliancePairForm::CompliancePairForm(QWidget* parent)
     beams->addWidget(createBeamBox(tr("Soft beam (low)"), QStringLiteral("low"), m_low));
     layout->addLayout(beams);
     auto* note = new QLabel(tr("Both beams are rectangular cantilevers loaded at the tip; "
-                               "their ratio of stiffness sets the range of k_o the probe resolves."),
+                               "their ratio of stiffness sets the range of kₒ the probe resolves."),
                             this);
     note->setWordWrap(true);
     note->setEnabled(false);  // a hint, in the palette's quiet colour

@@ -1,6 +1,8 @@
 // Screenshot helper for widget tests.
 #include "support/Screenshot.h"
 
+#include "support/WaitFor.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QPixmap>
@@ -19,6 +21,19 @@ QString saveScreenshot(QWidget& widget, const QString& name)
     // would still have the sizes it had before its contents were set.
     QCoreApplication::sendPostedEvents();
     return widget.grab().save(path, "PNG") ? path : QString();
+}
+
+QString saveScreenshotAtSize(QWidget& widget, const QString& name, QSize size)
+{
+    const QSize before = widget.size();
+    widget.resize(size);
+    // A frame of the plots redrawn at the new width (they redraw on a timer).
+    runEventLoopFor(300);
+    const QString path =
+        saveScreenshot(widget, QStringLiteral("%1-%2x%3").arg(name).arg(size.width()).arg(size.height()));
+    widget.resize(before);
+    runEventLoopFor(100);
+    return path;
 }
 
 }  // namespace tactiscope::testing

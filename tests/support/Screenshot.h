@@ -4,6 +4,7 @@
 // docs/screenshots/).
 #pragma once
 
+#include <QSize>
 #include <QString>
 
 class QWidget;
@@ -13,5 +14,9 @@ namespace tactiscope::testing {
 // Grabs `widget` (which must be shown) into <screenshot dir>/<name>.png and
 // returns the file's path, or an empty string when it could not be written.
 QString saveScreenshot(QWidget& widget, const QString& name);
+
+// The same at another window size (a 1920×1080 screen), named
+// <name>-<width>x<height>; the widget gets its size back after.
+QString saveScreenshotAtSize(QWidget& widget, const QString& name, QSize size);
 
 }  // namespace tactiscope::testing

@@ -80,6 +80,7 @@ TEST(CapacitiveView, ReadoutsFollowTheStoredCalibrationWhichTheSessionRecords)
     ASSERT_TRUE(waitFor([&] { return number(force) > 20.0; }, 6000)) << force->text().toStdString();
     runEventLoopFor(300);
     tactiscope::testing::saveScreenshot(window, QStringLiteral("capacitive"));
+    tactiscope::testing::saveScreenshotAtSize(window, QStringLiteral("capacitive"), {1920, 1080});
     const double c_pf = number(child<QLabel>(*view, "capacitanceReadout"));
     const double deltaC_pf = number(child<QLabel>(*view, "deltaCReadout"));
     const double c0_pf =

@@ -70,6 +70,7 @@ TEST(PalpationView, PressesAreListedMappedStoredAndMatchTheCoreReading)
     ASSERT_TRUE(waitFor([&] { return table->rowCount() >= 2; }, 12000));
     runEventLoopFor(300);
     tactiscope::testing::saveScreenshot(window, QStringLiteral("palpation"));
+    tactiscope::testing::saveScreenshotAtSize(window, QStringLiteral("palpation"), {1920, 1080});
     // Every column is in view: the table never scrolls sideways.
     EXPECT_LE(table->horizontalHeader()->length(), table->viewport()->width());
     window.stopRecording();

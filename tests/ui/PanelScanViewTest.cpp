@@ -47,6 +47,7 @@ TEST(PanelScanView, DefectsAreListedStoredAndMatchTheCoreDetector)
     ASSERT_TRUE(waitFor([&] { return table->rowCount() >= 5; }, 10000));
     runEventLoopFor(300);
     tactiscope::testing::saveScreenshot(window, QStringLiteral("panel-scan"));
+    tactiscope::testing::saveScreenshotAtSize(window, QStringLiteral("panel-scan"), {1920, 1080});
     const int listed = table->rowCount();
     EXPECT_EQ(window.panelScanView()->defectCount(), listed);
     EXPECT_TRUE(child<QLabel>(*window.panelScanView(), "defectCountLabel")->text().contains("defects found"));

@@ -274,9 +274,9 @@ void CalibrationWizard::captured(Load load)
             m_loads[*m_retakeIndex] = load;
         else
             m_loads.push_back(load);
-        m_panel->setStatus(tr("Captured %1: %2 ± %3 %4.")
+        m_panel->setStatus(tr("Captured %1: %2 %3 (σ %4).")
                                .arg(loadText(load), fixedText(load.window.mean * u.scale, m_words.signalDecimals),
-                                    significant(load.window.sigma * u.scale, 3), u.symbol));
+                                    u.symbol, significant(load.window.sigma * u.scale, 3)));
     }
     m_retakeIndex.reset();
     refit();

@@ -127,10 +127,10 @@ CalibrationWizard::Fit CapacitiveWizard::fitLoads()
         input.steps.push_back({forceOf(load), std::nullopt, load.window.mean, load.window.middle_s(), load.loading});
     m_result = core::calibration::calibrateCapacitive(input, profile()->name, operatorName().toStdString());
     const auto& fit = *m_result->forceFit;
+    const auto [sensitivity, error] = valueAndErrorTexts(fit.slope * 1e9, fit.slopeStandardError * 1e9);
     return {m_result->fitForce_n, m_result->fitDelta_f, fit,
             tr("Sensitivity %1 ± %2 pF/mN, R² = %3, %4 points with the zero.")
-                .arg(significant(fit.slope * 1e9, 5), significant(fit.slopeStandardError * 1e9, 2),
-                     fixedText(fit.rSquared, 6))
+                .arg(sensitivity, error, fixedText(fit.rSquared, 6))
                 .arg(fit.points)};
 }
 
@@ -144,12 +144,12 @@ QString CapacitiveWizard::resultHtml() const
                     : tr("no final zero, so no drift correction");
     const QString hysteresis = r.hysteresis ? tr("%1 % of full scale").arg(fixedText(*r.hysteresis * 100, 2))
                                             : tr("not measured (no load was both placed and removed)");
+    const auto [sensitivity, error] = valueAndErrorTexts(fit.slope * 1e9, fit.slopeStandardError * 1e9);
     return tr("<b>%1</b><br>C0 = <b>%2 pF</b>, noise σ %3 pF; %4.<br>Sensitivity <b>%5 ± %6 pF/mN</b> (standard "
               "error), intercept %7 pF, R² = %8; relative sensitivity %9 per mN.<br>Hysteresis %10.<br>Detection "
               "limit (3σ): %11 (%12 mgf), a tip displacement of %13 through k = %14 N/m.")
         .arg(QString::fromStdString(profile()->name).toHtmlEscaped(), fixedText(r.c0_f * 1e12, 4),
-             fixedText(r.baselineSigma_f * 1e12, 4), drift, significant(fit.slope * 1e9, 5),
-             significant(fit.slopeStandardError * 1e9, 2), fixedText(fit.intercept * 1e12, 4),
+             fixedText(r.baselineSigma_f * 1e12, 4), drift, sensitivity, error, fixedText(fit.intercept * 1e12, 4),
              fixedText(fit.rSquared, 6), significant(*r.relativeSensitivity_per_n * 1e-3, 3))
         .arg(hysteresis, siText(*r.detectionLimit_n, QStringLiteral("N"), 3),
              significant(*r.detectionLimit_n / kMilligramForce_n, 3),

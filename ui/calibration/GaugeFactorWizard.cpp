@@ -289,23 +289,22 @@ CalibrationWizard::Fit GaugeFactorWizard::fitLoads()
     m_result = core::calibration::calibrateGaugeFactor(beam(), *chain(), zero()->mean, points, sensorName(),
                                                        operatorName().toStdString());
     const auto& fit = m_result->strainFit;
+    const auto [factor, error] = valueAndErrorTexts(fit.slope, fit.slopeStandardError);
     return {m_result->strain, m_result->relativeChange, fit,
             tr("Gauge factor %1 ± %2 (nominal %3), R² = %4, %5 points with the zero.")
-                .arg(significant(fit.slope, 5), significant(fit.slopeStandardError, 2),
-                     significant(m_result->nominalGaugeFactor, 4), fixedText(fit.rSquared, 6))
+                .arg(factor, error, compactText(m_result->nominalGaugeFactor, 4), fixedText(fit.rSquared, 6))
                 .arg(fit.points)};
 }
 
 QString GaugeFactorWizard::resultHtml() const
 {
-    const QLocale locale;
     const auto& r = *m_result;
     const auto& fit = r.strainFit;
+    const auto [factor, error] = valueAndErrorTexts(r.gaugeFactor, fit.slopeStandardError);
     return tr("<b>%1</b><br>Effective gauge factor <b>%2 ± %3</b> (standard error); nominal %4, a difference of "
               "%5 %.<br>Direct force calibration: %6 counts per newton over a zero of %7 counts (σ %8).<br>R² = %9, "
               "residual σ %10 × 10⁻⁶ ΔR/R, %11 points with the zero.")
-        .arg(QString::fromStdString(sensorName()).toHtmlEscaped(), significant(r.gaugeFactor, 5),
-             significant(fit.slopeStandardError, 2), significant(r.nominalGaugeFactor, 4),
+        .arg(QString::fromStdString(sensorName()).toHtmlEscaped(), factor, error, compactText(r.nominalGaugeFactor, 4),
              fixedText(100.0 * r.deviationFromNominal, 2), significant(r.countsPerNewton, 6),
              significant(r.zeroCounts, 6), significant(zero()->sigma, 3), fixedText(fit.rSquared, 6))
         .arg(significant(fit.residualStandardDeviation * 1e6, 3))
