@@ -5,7 +5,7 @@
 #include "CliSupport.h"
 #include "DetectorOptions.h"
 #include "SessionArgument.h"
-#include "core/detector/OfflineDetection.h"
+#include "core/derived/StoredDetection.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/SessionStore.h"
 
@@ -101,11 +101,10 @@ int runAnalyze(const QStringList& arguments)
         } catch (const std::invalid_argument& e) {
             return usageError(toQString(e.what()), usage);
         }
-        std::vector<std::vector<double>> series;
-        for (const std::size_t c : picked) series.push_back(store.readChannel(*id, c, 0, summary.sampleCount));
+        // Read and detection together: the store streams into the detector.
         const auto started = std::chrono::steady_clock::now();
-        const auto [events, analysed] = core::detector::detectStretches(
-            series, {options.parameters, options.hold_s, options.spacing_m, options.threads});
+        const auto [events, analysed] = *core::derived::detectStoredSession(
+            store, *id, picked, {options.parameters, options.hold_s, options.spacing_m, options.threads});
         const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         if (!save.isEmpty()) store.addEvents(*id, core::storage::defectRecords(events, save.toStdString()));
         if (options.json)

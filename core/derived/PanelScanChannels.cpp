@@ -4,7 +4,7 @@
 
 #include "core/ModeCapability.h"
 #include "core/derived/ExactOverview.h"
-#include "core/detector/OfflineDetection.h"
+#include "core/detector/StreamingDetection.h"
 
 #include <nlohmann/json.hpp>
 
@@ -89,34 +89,20 @@ std::vector<std::vector<double>> PanelScanChannels::read(std::uint64_t first, st
     std::vector<std::vector<double>> out(2, std::vector<double>(n, kNaN));
     const std::uint64_t start = first > m_warmUp ? first - m_warmUp : 0;
     std::vector<std::vector<double>> strains;
-    for (const std::size_t channel : m_cantilevers)
-        strains.push_back(m_store.readChannel(m_session, channel, start, end - start));
-    const std::size_t total = strains.front().size();
-    const auto complete = [&](std::size_t i) {
-        return std::ranges::none_of(strains, [i](const std::vector<double>& s) { return std::isnan(s[i]); });
-    };
+    m_store.readChannels(m_session, m_cantilevers, start, end - start, strains);
     // Each stretch without a lost sample restarts the detector, as the live one did.
-    for (std::size_t from = 0; from < total;) {
-        if (!complete(from)) {
-            ++from;
-            continue;
-        }
-        std::size_t to = from;
-        while (to < total && complete(to)) ++to;
-        if (start + to > first) {
-            detector::SeriesInput input;
-            for (const auto& s : strains) input.cantilevers.emplace_back(std::span(s).subspan(from, to - from));
-            const auto outputs = detector::detectSeries(input, m_parameters);
-            for (std::size_t i = 0; i < outputs.size(); ++i) {
-                const std::uint64_t index = start + from + i;
-                if (index < first) continue;
-                const auto& o = outputs[i].combined;
-                out[0][index - first] = std::max(o.rab, o.rba);
-                out[1][index - first] = o.decision;
-            }
-        }
-        from = to;
-    }
+    detector::StreamingDetection detection(m_cantilevers.size(), {m_parameters, 0.0, std::nullopt, 1}, 0.0,
+                                           [&](std::uint64_t runFirst, std::span<const detector::ProbeOutput> outputs) {
+                                               for (std::size_t i = 0; i < outputs.size(); ++i) {
+                                                   const std::uint64_t index = start + runFirst + i;
+                                                   if (index < first) continue;
+                                                   const auto& o = outputs[i].combined;
+                                                   out[0][index - first] = std::max(o.rab, o.rba);
+                                                   out[1][index - first] = o.decision;
+                                               }
+                                           });
+    const std::vector<std::span<const double>> series(strains.begin(), strains.end());
+    detection.push(series);
     m_cachedFirst = first;
     m_cached = out;
     return out;

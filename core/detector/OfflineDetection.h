@@ -1,12 +1,12 @@
-// Offline analysis of a whole recording (CLI, re-analysis): the probe
-// detector over complete series, optionally on several threads. Threads
-// split the lag set, which is exact: every lag's statistics are independent
-// of the others, so any thread count gives the same outputs.
+// Offline analysis of series held in memory: the probe detector over
+// complete series, optionally on several threads (StreamingDetection does
+// the work; these are its whole-series forms, for tests and short spans).
 #pragma once
 
 #include "core/detector/DefectEvent.h"
 #include "core/detector/DetectorParameters.h"
 #include "core/detector/ProbeDetector.h"
+#include "core/detector/StreamingDetection.h"
 
 #include <optional>
 #include <span>
@@ -33,26 +33,14 @@ inline constexpr double kLargestUsableValue = 1e150;
 std::optional<std::pair<std::size_t, std::size_t>> firstUnusableSample(const SeriesInput& input);
 
 // One ProbeOutput per sample. threads ≥ 1 (more than the lag groups is
-// pointless and is reduced). Throws std::invalid_argument on bad input.
+// pointless and is reduced). Throws std::invalid_argument on bad input,
+// including a sample without a value (NaN).
 std::vector<ProbeOutput> detectSeries(const SeriesInput& input, const DetectorParameters& parameters,
                                       unsigned threads = 1);
 
 // Events of a whole series (see EventSegmenter).
 std::vector<DefectEvent> segmentEvents(std::span<const ProbeOutput> outputs, double sampleInterval_s, double hold_s,
                                        std::optional<double> spacing_m);
-
-// How a stored recording is re-analysed (the CLI's analyze, the review view).
-struct StretchSettings {
-    DetectorParameters parameters;  // sampleInterval_s is the series'
-    double hold_s = 0.020;
-    std::optional<double> spacing_m;
-    unsigned threads = 1;
-};
-
-struct StretchDetection {
-    std::vector<DefectEvent> events;  // in time order
-    std::size_t analysedSamples = 0;  // samples where every cantilever had a value
-};
 
 // Events of series that start at t = 0 and hold NaN where samples were lost:
 // the detector runs over each stretch where every cantilever has a value and

@@ -31,23 +31,54 @@ std::size_t columnOf(const CsvReader& reader, const std::string& name)
 
 }  // namespace
 
+CsvColumnReader::CsvColumnReader(const std::string& path, const std::vector<std::string>& wanted)
+    : m_reader(std::make_unique<CsvReader>(path))
+{
+    for (const auto& name : wanted) m_fields.push_back(columnOf(*m_reader, name));
+}
+
+CsvColumnReader::~CsvColumnReader() = default;
+
+const std::vector<std::string>& CsvColumnReader::header() const
+{
+    return m_reader->header();
+}
+
+std::size_t CsvColumnReader::read(std::size_t maxRows, std::vector<std::vector<double>>& columns,
+                                  std::vector<std::size_t>& lines)
+{
+    columns.resize(m_fields.size());
+    // Sized once for the block, filled by index: no growth per row.
+    for (auto& column : columns) column.resize(maxRows);
+    lines.resize(maxRows);
+    std::size_t rows = 0;
+    while (rows < maxRows && m_reader->next(m_row)) {
+        for (std::size_t w = 0; w < m_fields.size(); ++w) {
+            const std::string_view cell = m_row[m_fields[w]];
+            const double value = m_reader->number(cell, m_fields[w]);
+            if (std::isnan(value)) throw m_reader->cellError(cell, m_fields[w], "is not a number");
+            columns[w][rows] = value;
+        }
+        lines[rows++] = m_reader->lineNumber();
+    }
+    for (auto& column : columns) column.resize(rows);
+    lines.resize(rows);
+    return rows;
+}
+
 CsvColumns readCsvColumns(const std::string& path, const std::vector<std::string>& wanted)
 {
-    CsvReader reader(path);
+    CsvColumnReader reader(path, wanted);
     CsvColumns result;
     result.header = reader.header();
-    std::vector<std::size_t> wantedField;
-    for (const auto& name : wanted) wantedField.push_back(columnOf(reader, name));
     result.columns.resize(wanted.size());
-    std::vector<std::string_view> fields;
-    while (reader.next(fields)) {
-        for (std::size_t w = 0; w < wanted.size(); ++w) {
-            const std::string_view cell = fields[wantedField[w]];
-            const double value = reader.number(cell, wantedField[w]);
-            if (std::isnan(value)) throw reader.cellError(cell, wantedField[w], "is not a number");
-            result.columns[w].push_back(value);
-        }
-        result.lines.push_back(reader.lineNumber());
+    constexpr std::size_t kBlock = 65536;
+    std::vector<std::vector<double>> block;
+    std::vector<std::size_t> lines;
+    while (reader.read(kBlock, block, lines) > 0) {
+        for (std::size_t w = 0; w < wanted.size(); ++w)
+            result.columns[w].insert(result.columns[w].end(), block[w].begin(), block[w].end());
+        result.lines.insert(result.lines.end(), lines.begin(), lines.end());
     }
     if (result.lines.empty()) throw CsvError("'" + path + "' has a header but no data rows");
     return result;

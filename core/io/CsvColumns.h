@@ -4,8 +4,10 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace tactiscope::core::io {
@@ -32,5 +34,30 @@ struct CsvColumns {
 // file, an empty file, a header without data rows, a missing column, a row
 // with a different number of fields, or a bad cell.
 CsvColumns readCsvColumns(const std::string& path, const std::vector<std::string>& wanted);
+
+class CsvReader;
+
+// The same columns, a block of rows at a time into buffers the caller
+// reuses, for a file read once from start to end (the detector's input):
+// memory stays one block whatever the file's size. Same rules and errors
+// as readCsvColumns.
+class CsvColumnReader {
+public:
+    CsvColumnReader(const std::string& path, const std::vector<std::string>& wanted);  // throws CsvError
+    ~CsvColumnReader();
+    CsvColumnReader(const CsvColumnReader&) = delete;
+    CsvColumnReader& operator=(const CsvColumnReader&) = delete;
+
+    const std::vector<std::string>& header() const;
+    // Up to `maxRows` more rows: columns[w] (one per wanted column) and
+    // `lines` (each row's file line number) resized to the rows read; 0 at
+    // the end of the file. Throws CsvError.
+    std::size_t read(std::size_t maxRows, std::vector<std::vector<double>>& columns, std::vector<std::size_t>& lines);
+
+private:
+    std::unique_ptr<CsvReader> m_reader;
+    std::vector<std::size_t> m_fields;  // file column of each wanted one
+    std::vector<std::string_view> m_row;
+};
 
 }  // namespace tactiscope::core::io

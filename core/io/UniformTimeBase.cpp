@@ -10,26 +10,45 @@ namespace tactiscope::core::io {
 
 double uniformSampleInterval(std::span<const double> t, double tolerance)
 {
-    if (t.size() < 2) throw TimeBaseError("at least two samples are needed to know the sampling interval", 0);
-    std::vector<double> steps(t.size() - 1);
-    for (std::size_t i = 1; i < t.size(); ++i) {
-        steps[i - 1] = t[i] - t[i - 1];
-        if (!(steps[i - 1] > 0.0)) throw TimeBaseError("time is not increasing", i);
-    }
-    // The median step is the reference: one odd step cannot move it, so the
-    // error names the line that is actually wrong.
-    std::vector<double> sorted = steps;
-    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
-    const double typical = sorted[sorted.size() / 2];
-    for (std::size_t i = 0; i < steps.size(); ++i) {
-        if (std::abs(steps[i] - typical) > tolerance * typical) {
-            throw TimeBaseError("time is irregular: step of " + std::to_string(steps[i]) + " s where " +
-                                    std::to_string(typical) + " s is expected",
-                                i + 1);
+    UniformTimeBaseCheck check(tolerance);
+    check.add(t);
+    return check.interval_s();
+}
+
+void UniformTimeBaseCheck::add(std::span<const double> t)
+{
+    if (t.empty()) return;
+    std::size_t row = 0;  // index in t of the sample checked against the one before
+    if (m_count == 0) {
+        if (t.size() < 2) throw TimeBaseError("at least two samples are needed to know the sampling interval", 0);
+        std::vector<double> steps(t.size() - 1);
+        for (std::size_t i = 1; i < t.size(); ++i) {
+            steps[i - 1] = t[i] - t[i - 1];
+            if (!(steps[i - 1] > 0.0)) throw TimeBaseError("time is not increasing", i);
         }
+        // The median step is the reference: one odd step cannot move it, so
+        // the error names the line that is actually wrong.
+        std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2), steps.end());
+        m_typical = steps[steps.size() / 2];
+        m_first = m_last = t.front();
+        m_count = 1;
+        row = 1;
     }
-    // The mean over the whole record is the most precise interval.
-    return (t.back() - t.front()) / static_cast<double>(t.size() - 1);
+    for (; row < t.size(); ++row) {
+        const double step = t[row] - m_last;
+        if (!(step > 0.0)) throw TimeBaseError("time is not increasing", row);
+        if (std::abs(step - m_typical) > m_tolerance * m_typical)
+            throw TimeBaseError("time is irregular: step of " + std::to_string(step) + " s where " +
+                                    std::to_string(m_typical) + " s is expected",
+                                row);
+        m_last = t[row];
+        ++m_count;
+    }
+}
+
+double UniformTimeBaseCheck::interval_s() const
+{
+    return m_count < 2 ? 0.0 : (m_last - m_first) / static_cast<double>(m_count - 1);
 }
 
 }  // namespace tactiscope::core::io

@@ -25,10 +25,10 @@ std::vector<std::uint8_t> encodeChunk(const SampleBlock& block);
 void putBinary32(float value, std::uint8_t* out);
 float getBinary32(const std::uint8_t* in);
 
-// Appends samples [first, first + count) of channel `channel` of a chunk
-// with `channels` channels and `samples` samples per channel to `out`.
-// Throws StorageError when the BLOB's size does not match.
+// Writes samples [first, first + out.size()) of channel `channel` of a
+// chunk with `channels` channels and `samples` samples per channel to
+// `out`. Throws StorageError when the BLOB's size does not match.
 void decodeChunkChannel(std::span<const std::uint8_t> blob, std::size_t channels, std::size_t samples,
-                        std::size_t channel, std::size_t first, std::size_t count, std::vector<double>& out);
+                        std::size_t channel, std::size_t first, std::span<double> out);
 
 }  // namespace tactiscope::core::storage

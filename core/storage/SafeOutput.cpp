@@ -29,9 +29,15 @@ void writeAtomically(const std::string& path, const std::function<void(std::ostr
     const std::string temporary = path + ".partial";
     std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
     if (!file) throw StorageError("cannot write " + path);
-    write(file);
-    file.close();  // flushes: a full disk shows here, if not before
     std::error_code code;
+    try {
+        write(file);
+    } catch (...) {  // the writer's own failure: no half file left behind
+        file.close();
+        std::filesystem::remove(temporary, code);
+        throw;
+    }
+    file.close();  // flushes: a full disk shows here, if not before
     if (!file) {
         std::filesystem::remove(temporary, code);
         throw StorageError("writing " + path + " failed: is the disk full or read-only?");

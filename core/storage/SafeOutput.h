@@ -20,7 +20,8 @@ std::vector<std::string> storeFiles(const std::string& storePath);
 void refuseOverwriting(const std::string& output, const std::vector<std::string>& inputs);
 
 // Writes through `write` to PATH.partial, then renames it to `path`.
-// Throws StorageError (the temporary removed) when any of it fails.
+// Throws StorageError (the temporary removed) when any of it fails; an
+// exception from `write` itself removes the temporary and goes on.
 void writeAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 }  // namespace tactiscope::core::storage

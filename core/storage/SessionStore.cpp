@@ -441,15 +441,27 @@ void SessionStore::checkSampleEnd(std::int64_t session, std::size_t channelCount
 std::vector<double> SessionStore::readChannel(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,
                                               std::uint64_t count)
 {
+    std::vector<std::vector<double>> out(1);
+    readChannels(session, std::span(&channel, 1), firstIndex, count, out);
+    return std::move(out.front());
+}
+
+std::size_t SessionStore::readChannels(std::int64_t session, std::span<const std::size_t> channels,
+                                       std::uint64_t firstIndex, std::uint64_t count,
+                                       std::vector<std::vector<double>>& out)
+{
     const ReadSnapshot snapshot(m_db);
-    const std::size_t channelCount = channels(session).size();
-    if (channel >= channelCount)
-        throw StorageError("session " + std::to_string(session) + " has no channel " + std::to_string(channel));
+    const std::size_t channelCount = this->channels(session).size();
+    for (const std::size_t channel : channels)
+        if (channel >= channelCount)
+            throw StorageError("session " + std::to_string(session) + " has no channel " + std::to_string(channel));
     const std::uint64_t end = std::min(sampleCount(session), firstIndex + count);
-    std::vector<double> result;
-    if (firstIndex >= end) return result;
-    checkSampleEnd(session, channelCount, end - firstIndex);
-    result.reserve(end - firstIndex);
+    const std::size_t n = firstIndex < end ? static_cast<std::size_t>(end - firstIndex) : 0;
+    out.resize(channels.size());
+    // NaN first: whatever no chunk covers is a gap.
+    for (auto& samples : out) samples.assign(n, std::numeric_limits<double>::quiet_NaN());
+    if (n == 0) return 0;
+    checkSampleEnd(session, channelCount, n);
     // The chunk holding firstIndex starts at or before it; the primary key
     // makes both lookups index searches, not scans.
     auto start = m_db.prepare("SELECT max(first_index) FROM chunks WHERE session_id = ? AND first_index <= ?");
@@ -458,20 +470,19 @@ std::vector<double> SessionStore::readChannel(std::int64_t session, std::size_t 
     auto query = m_db.prepare("SELECT first_index, count, samples FROM chunks "
                               "WHERE session_id = ? AND first_index >= ? AND first_index < ? ORDER BY first_index");
     query.bind(1, session).bind(2, from).bind(3, static_cast<std::int64_t>(end));
-    std::uint64_t next = firstIndex;
     while (query.step()) {
         const auto chunkFirst = static_cast<std::uint64_t>(query.int64(0));
         const auto chunkCount = static_cast<std::uint64_t>(query.int64(1));
-        if (chunkFirst + chunkCount <= next) continue;
-        if (chunkFirst > next) result.insert(result.end(), chunkFirst - next, std::numeric_limits<double>::quiet_NaN());
-        next = std::max(next, chunkFirst);
-        const std::uint64_t take = std::min(chunkFirst + chunkCount, end) - next;
-        decodeChunkChannel(query.blob(2), channelCount, chunkCount, channel, next - chunkFirst, take, result);
+        const std::uint64_t begin = std::max(chunkFirst, firstIndex);
+        const std::uint64_t stop = std::min(chunkFirst + chunkCount, end);
+        if (stop <= begin) continue;
+        const auto blob = query.blob(2);
+        for (std::size_t k = 0; k < channels.size(); ++k)
+            decodeChunkChannel(blob, channelCount, chunkCount, channels[k], begin - chunkFirst,
+                               std::span(out[k]).subspan(begin - firstIndex, stop - begin));
         ++m_chunksRead;
-        next += take;
     }
-    result.resize(end - firstIndex, std::numeric_limits<double>::quiet_NaN());
-    return result;
+    return n;
 }
 
 std::vector<OverviewPoint> SessionStore::overview(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,

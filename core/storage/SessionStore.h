@@ -128,6 +128,12 @@ public:
     // recording; samples inside a gap read as NaN.
     std::vector<double> readChannel(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,
                                     std::uint64_t count);
+    // The same for several channels at once, each chunk read and decoded
+    // once, into `out` (one vector per channel, resized to the samples
+    // read): a reader going through a recording in windows reuses its
+    // buffers and allocates nothing after the first. Returns the count.
+    std::size_t readChannels(std::int64_t session, std::span<const std::size_t> channels, std::uint64_t firstIndex,
+                             std::uint64_t count, std::vector<std::vector<double>>& out);
     // The min and max of about `points` stretches of samples
     // [firstIndex, firstIndex + count) of one channel, exact, read from the
     // pyramid (see LodTable::overview) without touching most samples.

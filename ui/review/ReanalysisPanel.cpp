@@ -3,6 +3,7 @@
 
 #include "ui/review/AnalysisName.h"
 
+#include "core/derived/StoredDetection.h"
 #include "core/storage/DefectRecords.h"
 
 #include <QCheckBox>
@@ -11,6 +12,7 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QShortcut>
 
@@ -68,6 +70,8 @@ ReanalysisPanel::ReanalysisPanel(const QString& storePath, core::storage::Sessio
       m_spacing(spin(this, "spacingSpin", 0.0, 1000.0, core::detector::kPrototypeSpacing_m * 1e3, 2, tr(" mm"))),
       m_run(new QPushButton(tr("&Run"), this)),
       m_save(new QPushButton(tr("&Save as analysis…"), this)),
+      m_cancel(new QPushButton(tr("Cancel"), this)),
+      m_progress(new QProgressBar(this)),
       m_status(new QLabel(this))
 {
     setObjectName(QStringLiteral("reanalysisPanel"));
@@ -76,6 +80,13 @@ ReanalysisPanel::ReanalysisPanel(const QString& storePath, core::storage::Sessio
     m_run->setObjectName(QStringLiteral("runButton"));
     m_save->setObjectName(QStringLiteral("saveAnalysisButton"));
     m_status->setObjectName(QStringLiteral("analysisStatus"));
+    m_cancel->setObjectName(QStringLiteral("cancelAnalysisButton"));
+    m_progress->setObjectName(QStringLiteral("analysisProgress"));
+    // Only while a run goes: how far through the samples, and a way out.
+    m_cancel->setToolTip(tr("Stop this run; the events shown before stay"));
+    m_cancel->hide();
+    m_progress->hide();
+    m_progress->setRange(0, 1000);
     m_status->setWordWrap(true);
     m_lambdaRule->addItems({tr("λ = lag (paper)"), tr("fixed λ")});
     m_lambda->setEnabled(false);
@@ -108,6 +119,10 @@ ReanalysisPanel::ReanalysisPanel(const QString& storePath, core::storage::Sessio
     form->addRow(tr("Hold"), m_hold);
     form->addRow(tr("Spacing"), m_spacing);
     form->addRow(row({m_run, m_save}));
+    auto* running = new QHBoxLayout;
+    running->addWidget(m_progress, 1);
+    running->addWidget(m_cancel);
+    form->addRow(running);
     form->addRow(m_status);
     setLayout(form);
 
@@ -129,6 +144,7 @@ ReanalysisPanel::ReanalysisPanel(const QString& storePath, core::storage::Sessio
     connect(m_faceToFace, &QCheckBox::toggled, this, &ReanalysisPanel::parametersChanged);
     connect(m_run, &QPushButton::clicked, this, &ReanalysisPanel::run);
     connect(m_save, &QPushButton::clicked, this, &ReanalysisPanel::askNameAndSave);
+    connect(m_cancel, &QPushButton::clicked, this, &ReanalysisPanel::cancel);
     connect(new QShortcut(QKeySequence(tr("Ctrl+Return")), this), &QShortcut::activated, this, &ReanalysisPanel::run);
 }
 
@@ -167,52 +183,71 @@ bool ReanalysisPanel::run()
     m_running = true;
     m_run->setEnabled(false);
     m_save->setEnabled(false);
+    m_progress->setValue(0);
+    m_progress->show();
+    m_cancel->show();
     m_status->setText(tr("Analysing %1 samples per channel…").arg(samplesText(m_session.sampleCount)));
-    m_worker = std::jthread([this, path = m_storePath.toStdString(), id = m_session.id, count = m_session.sampleCount,
-                             cantilevers = m_cantilevers, settings = *chosen] {
-        std::vector<core::detector::DefectEvent> events;
-        std::size_t samples = 0;
-        QString error;
+    m_worker = std::jthread([this, path = m_storePath.toStdString(), id = m_session.id, cantilevers = m_cantilevers,
+                             settings = *chosen](std::stop_token stop) {
+        Outcome outcome;
         const auto started = std::chrono::steady_clock::now();
         try {
             core::storage::SessionStore store(path, core::storage::Database::Access::ReadOnly);
-            std::vector<std::vector<double>> series;
-            for (const std::size_t c : cantilevers) series.push_back(store.readChannel(id, c, 0, count));
-            auto result = core::detector::detectStretches(series, settings);
-            events = std::move(result.events);
-            samples = result.analysedSamples;
+            outcome.detection = core::derived::detectStoredSession(
+                store, id, cantilevers, settings, [this, &stop](std::uint64_t done, std::uint64_t total) {
+                    QMetaObject::invokeMethod(
+                        this, [this, done, total] { showProgress(done, total); }, Qt::QueuedConnection);
+                    return !stop.stop_requested();
+                });
         } catch (const std::exception& e) {
-            error = QString::fromStdString(e.what());
+            outcome.error = QString::fromStdString(e.what());
         }
-        const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        outcome.elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         QMetaObject::invokeMethod(
-            this,
-            [this, events = std::move(events), samples, elapsed_s, error]() mutable {
-                finish(std::move(events), samples, elapsed_s, error);
-            },
-            Qt::QueuedConnection);
+            this, [this, outcome = std::move(outcome)]() mutable { finish(std::move(outcome)); }, Qt::QueuedConnection);
     });
     return true;
 }
 
-void ReanalysisPanel::finish(std::vector<core::detector::DefectEvent> events, std::size_t samples, double elapsed_s,
-                             const QString& error)
+void ReanalysisPanel::cancel()
+{
+    if (!m_running) return;
+    m_worker.request_stop();
+    m_cancel->setEnabled(false);
+    m_status->setText(tr("Cancelling…"));
+}
+
+void ReanalysisPanel::showProgress(std::uint64_t done, std::uint64_t total)
+{
+    if (!m_running || total == 0) return;
+    m_progress->setValue(static_cast<int>(1000 * done / total));
+}
+
+void ReanalysisPanel::finish(Outcome outcome)
 {
     m_running = false;
     m_run->setEnabled(true);
-    if (!error.isEmpty()) {
-        m_status->setText(tr("The re-analysis failed: %1").arg(error));
+    m_progress->hide();
+    m_cancel->hide();
+    m_cancel->setEnabled(true);
+    if (!outcome.error.isEmpty()) {
+        m_status->setText(tr("The re-analysis failed: %1").arg(outcome.error));
         return;
     }
-    m_events = std::move(events);
+    if (!outcome.detection) {
+        m_status->setText(m_hasResult ? tr("Cancelled: the events shown are those of the previous run.")
+                                      : tr("Cancelled before the end: no events are shown."));
+        return;
+    }
+    m_events = std::move(outcome.detection->events);
     m_hasResult = true;
     m_saved = false;
     m_save->setEnabled(true);
     m_status->setText(tr("%1 events in %2 samples, %3 s. Recorded events are unchanged until you save these as an "
                          "analysis.")
                           .arg(m_events.size())
-                          .arg(samplesText(samples))
-                          .arg(elapsed_s, 0, 'f', 2));
+                          .arg(samplesText(outcome.detection->analysedSamples))
+                          .arg(outcome.elapsed_s, 0, 'f', 2));
     emit analysed();
 }
 

@@ -1,14 +1,15 @@
 // Re-analysis of a stored panel-scan session: the surface-deflection
 // detector's parameters (seed 000: lags, λ, ε, threshold, gauge mounting,
 // hold and spacing), run on the stored samples on a worker thread with its
-// own store connection (core::detector::detectStretches, the same routine as
-// `tactiscope-cli analyze`), so the window stays responsive. The new events
+// own store connection (core::derived::detectStoredSession, the same routine
+// as `tactiscope-cli analyze`), streamed a window at a time with a progress
+// bar and Cancel, so the window stays responsive. The new events
 // are shown beside the recorded ones and never replace them; "Save as
 // analysis" stores them under a name of their own.
 #pragma once
 
 #include "core/detector/DefectEvent.h"
-#include "core/detector/OfflineDetection.h"
+#include "core/detector/StreamingDetection.h"
 #include "core/storage/SessionStore.h"
 
 #include <QGroupBox>
@@ -22,6 +23,7 @@ class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
+class QProgressBar;
 class QPushButton;
 
 namespace tactiscope::ui {
@@ -40,6 +42,8 @@ public:
     std::optional<core::detector::StretchSettings> settings();
     // Starts a run; false when one is running or the parameters are bad.
     bool run();
+    // Stops a run; the events shown before it stay.
+    void cancel();
     bool isRunning() const { return m_running; }
     const std::vector<core::detector::DefectEvent>& events() const { return m_events; }
     // The last result until it is saved (then it shows as its analysis).
@@ -58,8 +62,13 @@ signals:
     void saved(const QString& name);
 
 private:
-    void finish(std::vector<core::detector::DefectEvent> events, std::size_t samples, double elapsed_s,
-                const QString& error);
+    struct Outcome {
+        std::optional<core::detector::StretchDetection> detection;  // none when cancelled or failed
+        double elapsed_s = 0.0;
+        QString error;
+    };
+    void finish(Outcome outcome);
+    void showProgress(std::uint64_t done, std::uint64_t total);
     void parametersChanged();
 
     QString m_storePath;
@@ -78,6 +87,8 @@ private:
     QDoubleSpinBox* m_spacing;
     QPushButton* m_run;
     QPushButton* m_save;
+    QPushButton* m_cancel;
+    QProgressBar* m_progress;
     QLabel* m_status;
     std::vector<core::detector::DefectEvent> m_events;
     bool m_hasResult = false;

@@ -130,10 +130,10 @@ TEST_F(SessionStoreTest, AChunkIsLittleEndianBinary32ChannelMajor)
     const std::vector<std::uint8_t> expected{0x00, 0x00, 0x80, 0x3F, 0x00, 0x00, 0x00, 0xC0,
                                              0x00, 0x00, 0x00, 0x3F, 0x00, 0x00, 0xC0, 0x3E};
     EXPECT_EQ(encodeChunk(block), expected);
-    std::vector<double> second;
-    decodeChunkChannel(expected, 2, 2, 1, 0, 2, second);
+    std::vector<double> second(2);
+    decodeChunkChannel(expected, 2, 2, 1, 0, second);
     EXPECT_EQ(second, (std::vector<double>{0.5, 0.375}));
-    EXPECT_THROW(decodeChunkChannel(std::span(expected).first(12), 2, 2, 1, 0, 2, second), StorageError);
+    EXPECT_THROW(decodeChunkChannel(std::span(expected).first(12), 2, 2, 1, 0, second), StorageError);
 }
 
 TEST_F(SessionStoreTest, OutOfOrderBlocksAreRefusedAndTheBatchIsNotStored)
