@@ -181,3 +181,21 @@ TEST_F(DetectCli, AValueTheDetectorCannotSquareIsRefusedNamingItsCell)
     EXPECT_TRUE(run.err.contains(QStringLiteral("line 101, column 'b': 1e+308 is beyond what the detector can use")))
         << run.err.toStdString();
 }
+
+TEST_F(DetectCli, AFaultLateInALongFileLeavesNoOutputBehind)
+{
+    // 150 000 rows: the detector has streamed two blocks of output rows when
+    // the bad cell on line 140 002 comes. The output file must not exist.
+    QString text = QStringLiteral("t,a,b\n");
+    for (int i = 0; i < 150000; ++i) {
+        const QString b = i == 140000 ? QStringLiteral("oops") : QStringLiteral("0");
+        text += QStringLiteral("%1,0,%2\n").arg(QString::number(i / 500.0, 'g', 17), b);
+    }
+    writeText(path("long.csv"), text);
+    const CliResult run = runCli({"detect", path("long.csv"), "--output", path("out.csv")});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.err.contains(QStringLiteral("line 140002, column 'b': 'oops' is not a number")))
+        << run.err.toStdString();
+    EXPECT_FALSE(QFile::exists(path("out.csv")));
+    EXPECT_FALSE(QFile::exists(path("out.csv.partial")));
+}

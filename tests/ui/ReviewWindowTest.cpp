@@ -29,6 +29,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QProcess>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
@@ -258,6 +259,40 @@ TEST_F(ReviewWindowTest, ReanalysisFindsWhatTheCliFindsAndSavesBesideTheRecorded
     core::storage::SessionStore store(m_db.toStdString(), core::storage::Database::Access::ReadOnly);
     EXPECT_EQ(store.events(1).size(), 3u);  // the recorded events untouched
     EXPECT_EQ(store.events(1, "threshold 0.7").size(), found.size());
+}
+
+TEST_F(ReviewWindowTest, AReanalysisShowsItsProgressAndCanBeCancelled)
+{
+    ui::ReanalysisPanel* panel = m_window->reanalysis();
+    auto* progress = child<QProgressBar>(*panel, "analysisProgress");
+    auto* cancel = child<QPushButton>(*panel, "cancelAnalysisButton");
+    EXPECT_TRUE(progress->isHidden());
+    EXPECT_TRUE(cancel->isHidden());
+
+    // Cancelled at once: the worker stops after its first window of the
+    // ten-minute session, and no result appears.
+    ASSERT_TRUE(panel->run());
+    EXPECT_FALSE(progress->isHidden());
+    EXPECT_FALSE(cancel->isHidden());
+    QTest::mouseClick(cancel, Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return !panel->isRunning(); }, 60000));
+    EXPECT_FALSE(panel->hasResult());
+    EXPECT_TRUE(child<QLabel>(*panel, "analysisStatus")->text().startsWith(QStringLiteral("Cancelled")));
+    EXPECT_TRUE(progress->isHidden());
+    EXPECT_FALSE(child<QPushButton>(*panel, "saveAnalysisButton")->isEnabled());
+
+    // Run to the end: the bar moves through the windows and goes away.
+    int highest = 0;
+    ASSERT_TRUE(panel->run());
+    ASSERT_TRUE(waitFor(
+        [&] {
+            highest = std::max(highest, progress->value());
+            return !panel->isRunning();
+        },
+        120000));
+    EXPECT_TRUE(panel->hasResult());
+    EXPECT_GT(highest, 0);
+    EXPECT_TRUE(progress->isHidden());
 }
 
 TEST_F(ReviewWindowTest, ReplayMovesThePlayheadAndTheView)

@@ -63,6 +63,59 @@ TEST_F(CsvReaderTest, CarriageReturnsAloneEndLines)
     EXPECT_FALSE(reader.next(fields));
 }
 
+TEST_F(CsvReaderTest, LinesAcrossTheReadBufferAndLongerThanItReadWhole)
+{
+    // 3 MB of rows (the reader's buffer is 1 MB, so rows straddle its
+    // ends), one row with a 2.5 MB note, and a last line without an end.
+    std::string text = "t;a;note\r\n";
+    std::vector<double> expected;
+    for (int i = 0; i < 100000; ++i) {
+        const double value = 0.5 * i + 0.25;
+        expected.push_back(value);
+        text += std::to_string(i) + ";" + std::to_string(value) + ";row number " + std::to_string(i) + "\r\n";
+        if (i == 50000) text += "50000.5;7;" + std::string(2'500'000, 'x') + "\r\n";
+    }
+    text += "100000;9;last";
+    CsvReader reader(write(text));
+    std::vector<std::string_view> fields;
+    std::size_t row = 0;
+    while (reader.next(fields)) {
+        if (row == 50001) {
+            EXPECT_EQ(fields[2].size(), 2'500'000u);
+        } else if (row == 100001) {
+            EXPECT_EQ(fields[2], "last");
+        } else {
+            const std::size_t i = row > 50001 ? row - 1 : row;
+            ASSERT_EQ(reader.number(fields[1], 1), expected[i]) << "row " << row;
+            ASSERT_EQ(fields[2], "row number " + std::to_string(i));
+        }
+        ++row;
+    }
+    EXPECT_EQ(row, 100002u);
+    EXPECT_EQ(reader.lineNumber(), 100003u);
+}
+
+TEST_F(CsvReaderTest, ColumnsReadInBlocksAreTheWholeColumns)
+{
+    std::string text = "t [s],a [strain]\n";
+    for (int i = 0; i < 1000; ++i) text += std::to_string(i) + "," + std::to_string(i * i) + "\n";
+    const std::string path = write(text);
+    tactiscope::core::io::CsvColumnReader reader(path, {"a", "t"});
+    std::vector<std::vector<double>> block;
+    std::vector<std::size_t> lines;
+    std::size_t rows = 0;
+    while (const std::size_t n = reader.read(300, block, lines)) {
+        ASSERT_EQ(block[0].size(), n);
+        for (std::size_t i = 0; i < n; ++i) {
+            EXPECT_EQ(block[1][i], static_cast<double>(rows + i));
+            EXPECT_EQ(block[0][i], static_cast<double>((rows + i) * (rows + i)));
+            EXPECT_EQ(lines[i], rows + i + 2);
+        }
+        rows += n;
+    }
+    EXPECT_EQ(rows, 1000u);
+}
+
 TEST_F(CsvReaderTest, WindowsLineEndingsStillWork)
 {
     CsvReader reader(write("t,a\r\n0,1.5\r\n"));

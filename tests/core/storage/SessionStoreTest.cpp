@@ -118,6 +118,28 @@ TEST_F(SessionStoreTest, SessionsChannelsSamplesAndGapsRoundTrip)
     EXPECT_EQ(store.readChannel(id, 0, 220, 100).size(), 10u);
     EXPECT_TRUE(store.readChannel(id, 0, 400, 10).empty());
     EXPECT_THROW(store.readChannel(id, 2, 0, 10), StorageError);
+
+    // Both channels at once, in windows that cut chunks and the gap, into
+    // the same buffers each time: the values above, window by window.
+    std::vector<std::vector<double>> window;
+    const std::vector<std::size_t> both{1, 0};
+    for (std::uint64_t first = 0; first < 230; first += 37) {
+        const std::size_t n = store.readChannels(id, both, first, 37, window);
+        ASSERT_EQ(n, std::min<std::uint64_t>(37, 230 - first));
+        ASSERT_EQ(window.size(), 2u);
+        for (std::size_t k = 0; k < 2; ++k) {
+            ASSERT_EQ(window[k].size(), n);
+            for (std::size_t i = 0; i < n; ++i) {
+                const std::uint64_t index = first + i;
+                if (index >= 100 && index < 130)
+                    EXPECT_TRUE(std::isnan(window[k][i])) << index;
+                else
+                    EXPECT_EQ(window[k][i], valueAt(both[k], index)) << index;
+            }
+        }
+    }
+    EXPECT_EQ(store.readChannels(id, both, 400, 10, window), 0u);
+    EXPECT_TRUE(window[0].empty());
 }
 
 TEST_F(SessionStoreTest, AChunkIsLittleEndianBinary32ChannelMajor)
