@@ -3,6 +3,8 @@
 #include "core/detector/StreamingDetection.h"
 
 #include <algorithm>
+#include <atomic>
+#include <barrier>
 #include <cmath>
 #include <stdexcept>
 #include <thread>
@@ -33,6 +35,19 @@ struct StreamingDetection::Worker {
     }
 };
 
+struct StreamingDetection::Pool {
+    std::barrier<> start;
+    std::barrier<> done;
+    std::atomic<bool> stopping{false};
+    std::vector<std::jthread> threads;
+
+    explicit Pool(std::size_t workers)
+        : start(static_cast<std::ptrdiff_t>(workers)),
+          done(static_cast<std::ptrdiff_t>(workers))
+    {
+    }
+};
+
 StreamingDetection::StreamingDetection(std::size_t cantilevers, const StretchSettings& settings, double t0_s,
                                        SampleSink sink)
     : m_settings(settings),
@@ -57,13 +72,43 @@ StreamingDetection::StreamingDetection(std::size_t cantilevers, const StretchSet
         for (std::size_t i = first; i < last; ++i)
             subset.lags_s.push_back(static_cast<double>(resolved.lags[i]) * settings.parameters.sampleInterval_s);
         for (std::size_t p = 0; p + 1 < cantilevers; ++p) m_workers[w].pairs.emplace_back(subset);
-        m_workers[w].outputs.assign(cantilevers - 1, std::vector<DetectorOutput>(kChunk));
+        m_workers[w].outputs.assign(cantilevers - 1, std::vector<DetectorOutput>(kRun));
     }
-    m_outputs.resize(kChunk);
+    m_outputs.resize(kRun);
     m_slices.resize(cantilevers);
+    if (workerCount > 1) {
+        m_pool = std::make_unique<Pool>(workerCount);
+        for (std::size_t w = 1; w < workerCount; ++w) {
+            m_pool->threads.emplace_back([this, w] {
+                while (true) {
+                    m_pool->start.arrive_and_wait();
+                    if (m_pool->stopping) return;
+                    m_workers[w].run(m_runInput, m_runFrom, m_runCount);
+                    m_pool->done.arrive_and_wait();
+                }
+            });
+        }
+    }
 }
 
-StreamingDetection::~StreamingDetection() = default;
+StreamingDetection::~StreamingDetection()
+{
+    if (!m_pool) return;
+    m_pool->stopping = true;
+    m_pool->start.arrive_and_wait();  // the threads see `stopping` and end
+    m_pool->threads.clear();          // joined
+}
+
+// Every worker's lags over [from, from + count) of m_runInput; the calling
+// thread is worker 0.
+void StreamingDetection::runWorkers(std::size_t from, std::size_t count)
+{
+    m_runFrom = from;
+    m_runCount = count;
+    if (m_pool) m_pool->start.arrive_and_wait();
+    m_workers.front().run(m_runInput, from, count);
+    if (m_pool) m_pool->done.arrive_and_wait();
+}
 
 void StreamingDetection::push(std::span<const std::span<const double>> cantilevers, std::span<const double> times)
 {
@@ -83,7 +128,7 @@ void StreamingDetection::push(std::span<const std::span<const double>> cantileve
             continue;
         }
         std::size_t to = from;
-        while (to < n && to - from < kChunk && complete(to)) ++to;
+        while (to < n && to - from < kRun && complete(to)) ++to;
         if (!m_stretchStart) m_stretchStart = m_next + from;
         runStretch(cantilevers, times, from, to - from);
         from = to;
@@ -91,19 +136,16 @@ void StreamingDetection::push(std::span<const std::span<const double>> cantileve
     m_next += n;
 }
 
-// The run [from, from + count) of this push, inside one stretch.
+// The run [from, from + count) of this push, inside one stretch: every
+// worker's lags, then the merge of their bests per sample.
 void StreamingDetection::runStretch(std::span<const std::span<const double>> cantilevers, std::span<const double> times,
                                     std::size_t from, std::size_t count)
 {
-    if (m_workers.size() == 1) {
-        m_workers.front().run(cantilevers, from, count);
-    } else {
-        std::vector<std::jthread> pool;
-        for (Worker& worker : m_workers) pool.emplace_back([&] { worker.run(cantilevers, from, count); });
-    }
     const double dt = m_settings.parameters.sampleInterval_s;
     const double stretchT0_s = m_t0_s + static_cast<double>(*m_stretchStart) * dt;
     const std::uint64_t first = m_next + from;
+    m_runInput = cantilevers;
+    runWorkers(from, count);
     for (std::size_t j = 0; j < count; ++j) {
         ProbeOutput& o = m_outputs[j];
         o.t_s = times.empty() ? stretchT0_s + static_cast<double>(first + j - *m_stretchStart) * dt : times[from + j];

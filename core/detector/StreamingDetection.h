@@ -6,9 +6,11 @@
 //
 // Threads split the lag set, which is exact: every lag's statistics are
 // independent of the others, so any thread count gives the same outputs,
-// bit for bit. (A split in time would not be: the exponential state
-// forgets only asymptotically, so a thread starting mid-recording cannot
-// know the state its first sample needs exactly, whatever its warm-up.)
+// bit for bit. It pays less than the cores: each worker also carries the
+// per-sample work that does not depend on the lag count (measured in
+// docs/performance.md). A split in time would scale further but is exact
+// only where a warm-up's state matches the true one to the bit, which the
+// exponential state approaches without a bound that holds for every input.
 //
 // A sample where some cantilever has no value (NaN: lost on the way) ends a
 // stretch: the detector restarts after it, as a reconnection restarts the
@@ -23,6 +25,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -44,8 +47,12 @@ struct StretchDetection {
 
 class StreamingDetection {
 public:
-    // The most samples one push takes; a longer push is split.
+    // A good number of samples per push (a store window, a CSV block);
+    // pushes of any length are taken.
     static constexpr std::size_t kChunk = std::size_t{1} << 16;
+    // Samples the workers take per run: their outputs stay in cache until
+    // merged.
+    static constexpr std::size_t kRun = std::size_t{1} << 14;
 
     // Per-sample outputs of a run of samples without a gap, with the
     // recording index of the first; valid during the call only.
@@ -73,6 +80,12 @@ private:
     void runStretch(std::span<const std::span<const double>> cantilevers, std::span<const double> times,
                     std::size_t from, std::size_t count);
     void restart();
+    void runWorkers(std::size_t from, std::size_t count);
+
+    // Worker threads live as long as the detection: each run starts them
+    // through one barrier and waits for them at another (a thread per run
+    // cost more than the work of a short run).
+    struct Pool;
 
     StretchSettings m_settings;
     double m_t0_s;
@@ -80,6 +93,10 @@ private:
     std::size_t m_lagCount = 0;
     SampleSink m_sink;
     std::vector<Worker> m_workers;
+    std::unique_ptr<Pool> m_pool;                         // none with one worker
+    std::span<const std::span<const double>> m_runInput;  // what the pool's run reads
+    std::size_t m_runFrom = 0;
+    std::size_t m_runCount = 0;
     std::vector<ProbeOutput> m_outputs;  // one chunk, reused
     EventSegmenter m_segmenter;
     StretchDetection m_result;
