@@ -53,30 +53,39 @@ void appendSampleRows(std::string& text, std::span<const ProbeOutput> outputs, d
 CsvDetection detectCsv(const std::string& path, const std::vector<std::string>& columns, StretchSettings settings,
                        const CsvSampleSink& sink)
 {
-    io::CsvColumnReader reader(path, columns);
     std::vector<std::vector<double>> block;  // time, then the cantilevers; reused
     std::vector<std::size_t> lines;
-    if (reader.read(StreamingDetection::kChunk, block, lines) == 0)
-        throw io::CsvError("'" + path + "' has a header but no data rows");
-    io::UniformTimeBaseCheck timeBase;
-    const auto checkTimes = [&] {
-        try {
-            timeBase.add(block.front());
-        } catch (const io::TimeBaseError& e) {
-            throw CsvDetectionError("'" + path + "' line " + std::to_string(lines[e.row()]) + ": " + e.what());
-        }
+    const auto timeBaseError = [&](const io::TimeBaseError& e) {
+        return CsvDetectionError("'" + path + "' line " + std::to_string(lines[e.row()]) + ": " + e.what());
     };
-    checkTimes();
+    // First the time column alone, through the whole file: the forgetting
+    // factors depend on the interval to the last bit, so it must be the
+    // whole file's mean before the first sample is detected.
+    io::UniformTimeBaseCheck timeBase;
+    std::size_t rows = 0;
+    {
+        io::CsvColumnReader times(path, {columns.front()});
+        while (const std::size_t n = times.read(StreamingDetection::kChunk, block, lines)) {
+            try {
+                timeBase.add(block.front());
+            } catch (const io::TimeBaseError& e) {
+                throw timeBaseError(e);
+            }
+            rows += n;
+        }
+    }
+    if (rows == 0) throw io::CsvError("'" + path + "' has a header but no data rows");
     settings.parameters.sampleInterval_s = timeBase.interval_s();
-    const double usedInterval_s = settings.parameters.sampleInterval_s;
 
+    io::CsvColumnReader reader(path, columns);
     CsvDetection result;
-    StreamingDetection detection(block.size() - 1, settings, 0.0,
+    result.interval_s = settings.parameters.sampleInterval_s;
+    StreamingDetection detection(columns.size() - 1, settings, 0.0,
                                  [&](std::uint64_t, std::span<const ProbeOutput> outputs) {
-                                     if (sink) sink(outputs, usedInterval_s);
+                                     if (sink) sink(outputs, result.interval_s);
                                  });
     result.lags = detection.lagCount();
-    do {
+    while (reader.read(StreamingDetection::kChunk, block, lines) > 0) {
         const SeriesInput series{0.0, {block.begin() + 1, block.end()}, block.front()};
         if (const auto bad = firstUnusableSample(series)) {
             const auto [cantilever, index] = *bad;
@@ -88,13 +97,10 @@ CsvDetection detectCsv(const std::string& path, const std::vector<std::string>& 
         const auto started = std::chrono::steady_clock::now();
         detection.push(series.cantilevers, block.front());
         result.detectorSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-        if (reader.read(StreamingDetection::kChunk, block, lines) == 0) break;
-        checkTimes();
-    } while (true);
+    }
     result.samples = static_cast<std::size_t>(detection.samplesPushed());
+    if (result.samples != rows) throw CsvDetectionError("'" + path + "' changed while it was read");
     result.events = detection.finish().events;
-    result.interval_s = timeBase.interval_s();
-    restateLags(result.events, usedInterval_s, result.interval_s, settings.spacing_m);
     return result;
 }
 

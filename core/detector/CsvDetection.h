@@ -38,10 +38,9 @@ void appendSampleRows(std::string& text, std::span<const ProbeOutput> outputs, d
 
 // `columns`: the time column, then the cantilevers in probe order (each
 // also found under an SI unit, "t [s]"). settings.parameters'
-// sampleInterval_s is ignored: the file's times give it. The lags in
-// samples come from the first block's interval (65 536 rows: the same to
-// 10⁻¹⁰), the events' seconds from the whole file's at the end. Throws
-// io::CsvError, CsvDetectionError, std::invalid_argument (parameters).
+// sampleInterval_s is ignored: the file's times give it, their mean over
+// the whole file (read first, the time column alone). Throws io::CsvError,
+// CsvDetectionError, std::invalid_argument (parameters).
 CsvDetection detectCsv(const std::string& path, const std::vector<std::string>& columns, StretchSettings settings,
                        const CsvSampleSink& sink = {});
 

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <barrier>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <thread>
 
@@ -20,18 +21,50 @@ bool better(double r, std::size_t pair, std::uint32_t lag, double bestR, std::si
     return pair != bestPair ? pair < bestPair : lag < bestLag;
 }
 
+// Two states are the same to the bit (not merely ==: a −0 is not a +0).
+bool sameBits(const std::vector<double>& x, const std::vector<double>& y)
+{
+    return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(double)) == 0;
+}
+
+bool sameMoments(const LagMoments& x, const LagMoments& y)
+{
+    for (std::size_t k = 0; k < x.mean.size(); ++k)
+        if (!sameBits(x.mean[k], y.mean[k])) return false;
+    for (std::size_t k = 0; k < x.moment.size(); ++k)
+        if (!sameBits(x.moment[k], y.moment[k])) return false;
+    return true;
+}
+
+// The samples after which the state no longer remembers where it started:
+// 80 of the longest forgetting time plus the longest lag (the history then
+// holds only real samples). e⁻⁴⁰ is below a double's resolution, but a
+// moment can be 10⁴ times smaller at the junction than at the warm-up's
+// start and a last ulp of difference lingers: on the simulated hour 40
+// left most junctions one ulp apart, 50 none; 80 keeps a margin and costs
+// under 5 % of a half run. 0 for the sliding window, which never forgets.
+std::size_t warmUpOf(const ResolvedParameters& parameters)
+{
+    if (parameters.window != 0) return 0;
+    double longest = 0.0;
+    for (const double r : parameters.forgetting) longest = std::max(longest, 1.0 / (1.0 - r));
+    return static_cast<std::size_t>(std::ceil(80.0 * longest)) + parameters.maxLag();
+}
+
 }  // namespace
 
-// One worker: its lag subset for every pair, each pair's outputs of one chunk.
+// One worker: its lags for every pair, each pair's outputs of one run.
 struct StreamingDetection::Worker {
     std::vector<PairDetector> pairs;
     std::vector<std::vector<DetectorOutput>> outputs;
 
-    void run(std::span<const std::span<const double>> cantilevers, std::size_t from, std::size_t count)
+    // Samples [from, from + count) into the outputs from index `at` on.
+    void run(std::span<const std::span<const double>> cantilevers, std::size_t from, std::size_t count,
+             std::size_t at = 0)
     {
         for (std::size_t p = 0; p < pairs.size(); ++p)
             pairs[p].process(cantilevers[p].subspan(from, count), cantilevers[p + 1].subspan(from, count),
-                             std::span(outputs[p]).first(count));
+                             std::span(outputs[p]).subspan(at, count));
     }
 };
 
@@ -52,6 +85,7 @@ StreamingDetection::StreamingDetection(std::size_t cantilevers, const StretchSet
                                        SampleSink sink)
     : m_settings(settings),
       m_t0_s(t0_s),
+      m_cantilevers(cantilevers),
       m_sink(std::move(sink)),
       m_segmenter(settings.hold_s, settings.spacing_m)
 {
@@ -59,23 +93,35 @@ StreamingDetection::StreamingDetection(std::size_t cantilevers, const StretchSet
     const ResolvedParameters resolved = resolve(settings.parameters);
     m_threshold = resolved.threshold;
     m_lagCount = resolved.lags.size();
+    m_warmUp = warmUpOf(resolved);
+    // A split in time pays while the warm-up is a small part of a half run.
+    m_splitInTime = settings.threads >= 2 && m_warmUp > 0 && m_warmUp <= kChunk / 16;
 
-    // Lag subsets of whole groups of 8, so every thread keeps its vectors full.
-    const std::size_t groups = (resolved.lags.size() + kLaneWidth - 1) / kLaneWidth;
-    const std::size_t workerCount = std::max<std::size_t>(1, std::min<std::size_t>(settings.threads, groups));
-    m_workers.resize(workerCount);
-    for (std::size_t w = 0; w < workerCount; ++w) {
-        const std::size_t first = groups * w / workerCount * kLaneWidth;
-        const std::size_t last = std::min(resolved.lags.size(), groups * (w + 1) / workerCount * kLaneWidth);
-        DetectorParameters subset = settings.parameters;
-        subset.lags_s.clear();
-        for (std::size_t i = first; i < last; ++i)
-            subset.lags_s.push_back(static_cast<double>(resolved.lags[i]) * settings.parameters.sampleInterval_s);
-        for (std::size_t p = 0; p + 1 < cantilevers; ++p) m_workers[w].pairs.emplace_back(subset);
-        m_workers[w].outputs.assign(cantilevers - 1, std::vector<DetectorOutput>(kRun));
+    std::size_t workerCount = 1;
+    if (m_splitInTime) {
+        workerCount = 2;
+        m_runLength = kChunk;
+        m_workers.resize(2);
+        for (Worker& worker : m_workers)
+            for (std::size_t p = 0; p + 1 < cantilevers; ++p) worker.pairs.emplace_back(settings.parameters);
+    } else {
+        // Lag subsets of whole groups of 8, so every thread keeps its vectors full.
+        const std::size_t groups = (resolved.lags.size() + kLaneWidth - 1) / kLaneWidth;
+        workerCount = std::max<std::size_t>(1, std::min<std::size_t>(settings.threads, groups));
+        m_runLength = kRun;
+        m_workers.resize(workerCount);
+        for (std::size_t w = 0; w < workerCount; ++w) {
+            const std::size_t first = groups * w / workerCount * kLaneWidth;
+            const std::size_t last = std::min(resolved.lags.size(), groups * (w + 1) / workerCount * kLaneWidth);
+            DetectorParameters subset = settings.parameters;
+            subset.lags_s.clear();
+            for (std::size_t i = first; i < last; ++i)
+                subset.lags_s.push_back(static_cast<double>(resolved.lags[i]) * settings.parameters.sampleInterval_s);
+            for (std::size_t p = 0; p + 1 < cantilevers; ++p) m_workers[w].pairs.emplace_back(subset);
+        }
     }
-    m_outputs.resize(kRun);
-    m_slices.resize(cantilevers);
+    for (Worker& worker : m_workers) worker.outputs.assign(cantilevers - 1, std::vector<DetectorOutput>(m_runLength));
+    m_outputs.resize(m_runLength);
     if (workerCount > 1) {
         m_pool = std::make_unique<Pool>(workerCount);
         for (std::size_t w = 1; w < workerCount; ++w) {
@@ -83,7 +129,7 @@ StreamingDetection::StreamingDetection(std::size_t cantilevers, const StretchSet
                 while (true) {
                     m_pool->start.arrive_and_wait();
                     if (m_pool->stopping) return;
-                    m_workers[w].run(m_runInput, m_runFrom, m_runCount);
+                    m_job(w);
                     m_pool->done.arrive_and_wait();
                 }
             });
@@ -99,20 +145,17 @@ StreamingDetection::~StreamingDetection()
     m_pool->threads.clear();          // joined
 }
 
-// Every worker's lags over [from, from + count) of m_runInput; the calling
-// thread is worker 0.
-void StreamingDetection::runWorkers(std::size_t from, std::size_t count)
+void StreamingDetection::runWorkers(const std::function<void(std::size_t)>& job)
 {
-    m_runFrom = from;
-    m_runCount = count;
+    m_job = job;
     if (m_pool) m_pool->start.arrive_and_wait();
-    m_workers.front().run(m_runInput, from, count);
+    job(0);
     if (m_pool) m_pool->done.arrive_and_wait();
 }
 
 void StreamingDetection::push(std::span<const std::span<const double>> cantilevers, std::span<const double> times)
 {
-    if (cantilevers.size() != m_slices.size()) throw std::invalid_argument("a push needs every cantilever");
+    if (cantilevers.size() != m_cantilevers) throw std::invalid_argument("a push needs every cantilever");
     const std::size_t n = cantilevers.front().size();
     for (const auto& series : cantilevers)
         if (series.size() != n) throw std::invalid_argument("cantilever series differ in length");
@@ -128,7 +171,7 @@ void StreamingDetection::push(std::span<const std::span<const double>> cantileve
             continue;
         }
         std::size_t to = from;
-        while (to < n && to - from < kRun && complete(to)) ++to;
+        while (to < n && to - from < m_runLength && complete(to)) ++to;
         if (!m_stretchStart) m_stretchStart = m_next + from;
         runStretch(cantilevers, times, from, to - from);
         from = to;
@@ -136,23 +179,71 @@ void StreamingDetection::push(std::span<const std::span<const double>> cantileve
     m_next += n;
 }
 
-// The run [from, from + count) of this push, inside one stretch: every
-// worker's lags, then the merge of their bests per sample.
+std::size_t StreamingDetection::runSplitInTime(std::span<const std::span<const double>> cantilevers, std::size_t from,
+                                               std::size_t count)
+{
+    const std::size_t half = count / 2;
+    Worker& lead = m_workers[m_lead];
+    Worker& next = m_workers[1 - m_lead];
+    std::vector<PairDetector::Snapshot> junction(next.pairs.size());
+    runWorkers([&](std::size_t w) {
+        if (w == 0) {
+            lead.run(cantilevers, from, half);
+            return;
+        }
+        // From silence, over the warm-up (its outputs are overwritten), to
+        // the junction; its state there is kept to check.
+        for (PairDetector& pair : next.pairs) pair.reset();
+        next.run(cantilevers, from + half - m_warmUp, m_warmUp, half);
+        for (std::size_t p = 0; p < next.pairs.size(); ++p) junction[p] = next.pairs[p].snapshot();
+        next.run(cantilevers, from + half, count - half, half);
+    });
+    ++m_timeSplits.junctions;
+    bool exact = true;
+    for (std::size_t p = 0; p < lead.pairs.size(); ++p)
+        exact = exact && sameMoments(lead.pairs[p].snapshot().moments, junction[p].moments);
+    if (exact) {
+        m_lead = 1 - m_lead;  // it holds the true state now
+        return m_lead;
+    }
+    ++m_timeSplits.recomputed;
+    lead.run(cantilevers, from + half, count - half, half);
+    return m_lead;
+}
+
+// The run [from, from + count) of this push, inside one stretch: the
+// workers' share of it, then the best of every pair (and worker) per sample.
 void StreamingDetection::runStretch(std::span<const std::span<const double>> cantilevers, std::span<const double> times,
                                     std::size_t from, std::size_t count)
 {
     const double dt = m_settings.parameters.sampleInterval_s;
     const double stretchT0_s = m_t0_s + static_cast<double>(*m_stretchStart) * dt;
     const std::uint64_t first = m_next + from;
-    m_runInput = cantilevers;
-    runWorkers(from, count);
+    // Which workers' buffers hold sample j: all of them (a lag split), or
+    // one per half (a split in time).
+    std::span<const Worker> firstHalf = m_workers, secondHalf = m_workers;
+    std::size_t half = count;
+    if (m_splitInTime) {
+        const std::size_t firstWorker = m_lead;
+        if (count >= 4 * m_warmUp) {
+            half = count / 2;
+            const std::size_t secondWorker = runSplitInTime(cantilevers, from, count);
+            secondHalf = std::span(m_workers).subspan(secondWorker, 1);
+        } else {
+            m_workers[m_lead].run(cantilevers, from, count);  // too short to split
+        }
+        firstHalf = std::span(m_workers).subspan(firstWorker, 1);
+    } else {
+        runWorkers([&](std::size_t w) { m_workers[w].run(cantilevers, from, count); });
+    }
     for (std::size_t j = 0; j < count; ++j) {
         ProbeOutput& o = m_outputs[j];
         o.t_s = times.empty() ? stretchT0_s + static_cast<double>(first + j - *m_stretchStart) * dt : times[from + j];
-        o.combined = m_workers.front().outputs.front()[j];
+        const std::span<const Worker> sources = j < half ? firstHalf : secondHalf;
+        o.combined = sources.front().outputs.front()[j];
         o.pairAb = 0;
         o.pairBa = 0;
-        for (const Worker& worker : m_workers) {
+        for (const Worker& worker : sources) {
             for (std::size_t p = 0; p < worker.outputs.size(); ++p) {
                 const DetectorOutput& c = worker.outputs[p][j];
                 if (better(c.rab, p, c.lagAb, o.combined.rab, o.pairAb, o.combined.lagAb)) {
@@ -181,6 +272,7 @@ void StreamingDetection::restart()
     m_segmenter.reset();
     for (Worker& worker : m_workers)
         for (PairDetector& pair : worker.pairs) pair.reset();
+    m_lead = 0;
     m_stretchStart.reset();
 }
 
@@ -188,18 +280,6 @@ StretchDetection StreamingDetection::finish()
 {
     m_segmenter.finish(m_result.events);
     return std::move(m_result);
-}
-
-void restateLags(std::span<DefectEvent> events, double usedInterval_s, double interval_s,
-                 std::optional<double> spacing_m)
-{
-    if (usedInterval_s == interval_s) return;
-    for (DefectEvent& e : events) {
-        const double samples = std::round(e.peakLag_s / usedInterval_s);
-        e.peakLag_s = samples * interval_s;
-        e.speed_m_per_s.reset();
-        if (spacing_m && e.peakLag_s > 0.0) e.speed_m_per_s = *spacing_m / e.peakLag_s;
-    }
 }
 
 }  // namespace tactiscope::core::detector

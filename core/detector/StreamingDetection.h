@@ -4,13 +4,16 @@
 // per-sample outputs go to a sink only when someone asked for them. Every
 // buffer is allocated once, so memory does not grow with the recording.
 //
-// Threads split the lag set, which is exact: every lag's statistics are
-// independent of the others, so any thread count gives the same outputs,
-// bit for bit. It pays less than the cores: each worker also carries the
-// per-sample work that does not depend on the lag count (measured in
-// docs/performance.md). A split in time would scale further but is exact
-// only where a warm-up's state matches the true one to the bit, which the
-// exponential state approaches without a bound that holds for every input.
+// Threads give the same outputs as one, bit for bit. With the exponential
+// form and two or more threads each run is split in time: the first half
+// continues the true state, the second starts a warm-up before its first
+// sample (80 forgetting times plus the longest lag) on another core; where
+// the warmed-up state is not the true one to the bit at the junction, the
+// second half is recomputed from the true state. Otherwise (the sliding window, whose
+// running sums never forget; a forgetting time too long to warm up) the
+// threads split the lag set, which is exact as every lag is independent
+// but pays less: each worker also carries the per-sample work that does
+// not depend on the lag count (docs/performance.md).
 //
 // A sample where some cantilever has no value (NaN: lost on the way) ends a
 // stretch: the detector restarts after it, as a reconnection restarts the
@@ -47,11 +50,12 @@ struct StretchDetection {
 
 class StreamingDetection {
 public:
-    // A good number of samples per push (a store window, a CSV block);
-    // pushes of any length are taken.
-    static constexpr std::size_t kChunk = std::size_t{1} << 16;
-    // Samples the workers take per run: their outputs stay in cache until
-    // merged.
+    // A good number of samples per push (a store window, a CSV block:
+    // 2 MB a channel); pushes of any length are taken.
+    static constexpr std::size_t kChunk = std::size_t{1} << 18;
+    // Samples the workers take per run when they split the lags: their
+    // outputs stay in cache until merged. (A split in time takes kChunk:
+    // the longer the halves, the less the warm-up costs.)
     static constexpr std::size_t kRun = std::size_t{1} << 14;
 
     // Per-sample outputs of a run of samples without a gap, with the
@@ -75,41 +79,52 @@ public:
     std::uint64_t samplesPushed() const { return m_next; }
     std::size_t lagCount() const { return m_lagCount; }
 
+    // How often a run was split in time, and how often the second half's
+    // warm-up did not reach the true state to the bit and was recomputed.
+    struct TimeSplits {
+        std::size_t junctions = 0;
+        std::size_t recomputed = 0;
+    };
+    TimeSplits timeSplits() const { return m_timeSplits; }
+
 private:
     struct Worker;
-    void runStretch(std::span<const std::span<const double>> cantilevers, std::span<const double> times,
-                    std::size_t from, std::size_t count);
-    void restart();
-    void runWorkers(std::size_t from, std::size_t count);
-
     // Worker threads live as long as the detection: each run starts them
     // through one barrier and waits for them at another (a thread per run
     // cost more than the work of a short run).
     struct Pool;
 
+    void runStretch(std::span<const std::span<const double>> cantilevers, std::span<const double> times,
+                    std::size_t from, std::size_t count);
+    // Runs job(w) for every worker w, w = 0 on the calling thread.
+    void runWorkers(const std::function<void(std::size_t)>& job);
+    // The lead's first half and the other worker's warmed-up second half;
+    // returns the worker whose buffers hold samples [half, count).
+    std::size_t runSplitInTime(std::span<const std::span<const double>> cantilevers, std::size_t from,
+                               std::size_t count);
+    void restart();
+
     StretchSettings m_settings;
     double m_t0_s;
     double m_threshold = 0.0;
     std::size_t m_lagCount = 0;
+    std::size_t m_cantilevers = 0;
     SampleSink m_sink;
     std::vector<Worker> m_workers;
-    std::unique_ptr<Pool> m_pool;                         // none with one worker
-    std::span<const std::span<const double>> m_runInput;  // what the pool's run reads
-    std::size_t m_runFrom = 0;
-    std::size_t m_runCount = 0;
-    std::vector<ProbeOutput> m_outputs;  // one chunk, reused
+    std::unique_ptr<Pool> m_pool;            // none with one worker
+    std::function<void(std::size_t)> m_job;  // what the pool runs
+    // Split in time (two workers with every lag) rather than by lags: the
+    // samples a warm-up takes, and which worker holds the true state.
+    bool m_splitInTime = false;
+    std::size_t m_warmUp = 0;
+    std::size_t m_lead = 0;
+    TimeSplits m_timeSplits;
+    std::size_t m_runLength = 0;         // samples per run at most
+    std::vector<ProbeOutput> m_outputs;  // one run, reused
     EventSegmenter m_segmenter;
     StretchDetection m_result;
-    std::uint64_t m_next = 0;                       // recording index of the next sample
-    std::optional<std::uint64_t> m_stretchStart;    // index where the current stretch began
-    std::vector<std::span<const double>> m_slices;  // per cantilever, reused
+    std::uint64_t m_next = 0;                     // recording index of the next sample
+    std::optional<std::uint64_t> m_stretchStart;  // index where the current stretch began
 };
-
-// Events whose lags were put in seconds with `usedInterval_s` restated with
-// the recording's exact mean interval (a file read as a stream knows it
-// only at its end): the same lags in samples, their seconds and the speeds
-// from `interval_s`, as if that had been used from the start.
-void restateLags(std::span<DefectEvent> events, double usedInterval_s, double interval_s,
-                 std::optional<double> spacing_m);
 
 }  // namespace tactiscope::core::detector

@@ -1,7 +1,7 @@
 // The streaming offline detector against the live ProbeDetector (a separate
 // merge of the pairs) for any way of cutting the stream into pushes, across
-// its chunk size; a lost stretch restarts it as a separate recording would;
-// and events' lags restated for a more precise interval.
+// its chunk size, with one thread and split in two (in time, or by lags);
+// a lost stretch restarts it as a separate recording would.
 #include "core/detector/StreamingDetection.h"
 
 #include "DetectorSignals.h"
@@ -75,6 +75,11 @@ TEST(StreamingDetection, AnyCuttingOfTheStreamGivesTheLiveDetectorsOutputs)
                                                                 std::span(s.c).subspan(from, count)};
                 detection.push(part);
             }
+            // Two threads split long runs in time (the warm-up of λ = 75
+            // samples is 6 075 samples; a run needs four of them).
+            if (threads == 2 && push > 70000) {
+                EXPECT_GT(detection.timeSplits().junctions, 0u) << push;
+            }
             const auto result = detection.finish();
             EXPECT_EQ(result.analysedSamples, n);
             ASSERT_EQ(streamed.size(), n);
@@ -119,14 +124,32 @@ TEST(StreamingDetection, ALostStretchRestartsTheDetectorAsASeparateRecordingWoul
     }
 }
 
-TEST(StreamingDetection, LagsAreRestatedWithTheWholeRecordingsInterval)
+TEST(StreamingDetection, AWarmUpThatMissesTheTrueStateIsRecomputed)
 {
-    // Found with 2 ms; the file's mean interval is 2.000001 ms.
-    std::vector<DefectEvent> events{{1.0, 1.1, 1, 0.9, 26 * 0.002, 0.015 / (26 * 0.002)},
-                                    {2.0, 2.1, -1, 0.9, 40 * 0.002, 0.015 / (40 * 0.002)}};
-    restateLags(events, 0.002, 0.002000001, 0.015);
-    EXPECT_DOUBLE_EQ(events[0].peakLag_s, 26 * 0.002000001);
-    EXPECT_DOUBLE_EQ(*events[0].speed_m_per_s, 0.015 / (26 * 0.002000001));
-    EXPECT_DOUBLE_EQ(events[1].peakLag_s, 40 * 0.002000001);
-    EXPECT_EQ(events[0].start_s, 1.0);  // times are the file's own
+    // Loud (10⁶⁰) until sample 40 000, then quiet (10⁻⁶⁰): the second
+    // half's warm-up (from 43 925 on) sees only quiet samples, while the
+    // loud ones' trace in the true state (e⁻¹³³ · 10¹²⁰ in the longest
+    // lag's moments) still dwarfs the quiet moments at the junction
+    // (50 000). The second half must be recomputed, and every output still
+    // equal the live detector's.
+    const std::size_t n = 100000;
+    ThreeCantilevers s(n);
+    for (auto* series : {&s.a, &s.b, &s.c})
+        for (std::size_t i = 0; i < n; ++i) (*series)[i] *= i < 40000 ? 1e60 : 1e-60;
+    const auto live = liveOutputs(s, 0, n);
+    std::vector<ProbeOutput> streamed;
+    StreamingDetection detection(3, {DetectorParameters{}, 0.02, std::nullopt, 2}, 0.0,
+                                 [&](std::uint64_t, std::span<const ProbeOutput> run) {
+                                     streamed.insert(streamed.end(), run.begin(), run.end());
+                                 });
+    const std::vector<std::span<const double>> all{s.a, s.b, s.c};
+    detection.push(all);
+    EXPECT_EQ(detection.timeSplits().junctions, 1u);
+    EXPECT_EQ(detection.timeSplits().recomputed, 1u);
+    ASSERT_EQ(streamed.size(), n);
+    for (std::size_t i = 0; i < n; ++i) {
+        ASSERT_EQ(streamed[i].combined.rab, live[i].combined.rab) << i;
+        ASSERT_EQ(streamed[i].combined.rba, live[i].combined.rba) << i;
+        ASSERT_EQ(streamed[i].combined.decision, live[i].combined.decision) << i;
+    }
 }
