@@ -274,6 +274,7 @@ TEST_F(ReviewWindowTest, AReanalysisShowsItsProgressAndCanBeCancelled)
     ASSERT_TRUE(panel->run());
     EXPECT_FALSE(progress->isHidden());
     EXPECT_FALSE(cancel->isHidden());
+    tactiscope::testing::saveScreenshot(*panel, QStringLiteral("reanalysis-running"));
     QTest::mouseClick(cancel, Qt::LeftButton);
     ASSERT_TRUE(waitFor([&] { return !panel->isRunning(); }, 60000));
     EXPECT_FALSE(panel->hasResult());
