@@ -1,7 +1,7 @@
 // A stored panel scan's detector output — the best R over lags and pairs
 // (max of R_ab and R_ba, read against the threshold) and the decision
 // (+1 A then B, −1 B then A, 0 none) — computed from its strain samples by
-// the offline detector (detector::detectSeries, the code `analyze` and the
+// the offline detector (detector::StreamingDetection, the code `analyze` and the
 // review's re-analysis run) with the parameters the recording ran with: the
 // live lags for its rate, and the threshold, ε, λ rule and mounting named by
 // its automatic verdict.

@@ -1,5 +1,6 @@
-// Streaming offline detection: lag subsets on worker threads, merged per
-// sample into one reused chunk of outputs, events segmented as they come.
+// Streaming offline detection: halves of a run in time (or subsets of the
+// lags) on worker threads, merged per sample into one reused run of
+// outputs, events segmented as they come.
 #include "core/detector/StreamingDetection.h"
 
 #include <algorithm>
