@@ -9,6 +9,7 @@ packages=(
   qt6-base-dev qt6-svg-dev qt6-serialport-dev libqt6sql6-sqlite
   libqcustomplot-dev libhidapi-dev libserialport-dev
   libeigen3-dev libsqlite3-dev nlohmann-json3-dev
+  libpq-dev postgresql
   libgtest-dev libbenchmark-dev
   xvfb xauth file fonts-dejavu-core clang-format poppler-utils
   desktop-file-utils appstream

@@ -12,6 +12,7 @@
 #include "PortsCommand.h"
 #include "RecordCommand.h"
 #include "ReportCommand.h"
+#include "ServerCommand.h"
 #include "SessionsCommand.h"
 #include "SimulateCommand.h"
 #include "core/Version.h"
@@ -40,6 +41,7 @@ constexpr std::array kCommands{
     Command{"ports", "List serial ports and HID devices.", runPorts},
     Command{"record", "Record a probe on a serial port into a session store.", runRecord},
     Command{"report", "Write a session's inspection report as a PDF.", runReport},
+    Command{"server", "Set up a site's central store on PostgreSQL.", runServer},
     Command{"sessions", "List, show, export or delete the sessions of a store.", runSessions},
     Command{"simulate", "Write a simulated recording as CSV.", runSimulate},
 };

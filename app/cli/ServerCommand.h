@@ -1,0 +1,11 @@
+// `tactiscope-cli server init CONNINFO`: creates or upgrades a site's
+// central store on PostgreSQL, with its station and reviewer roles.
+#pragma once
+
+#include <QStringList>
+
+namespace tactiscope::cli {
+
+int runServer(const QStringList& arguments);
+
+}  // namespace tactiscope::cli

@@ -1,0 +1,238 @@
+// Central schema, roles and row-level security, idempotent.
+#include "core/storage/central/CentralSchema.h"
+
+namespace tactiscope::core::storage::central {
+namespace {
+
+// Every statement may run again: IF NOT EXISTS, and roles and policies
+// created only where missing.
+constexpr const char* kSchema = R"sql(
+DO $$ BEGIN
+    IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = 'tactiscope_station') THEN
+        CREATE ROLE tactiscope_station NOLOGIN;
+    END IF;
+    IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = 'tactiscope_reviewer') THEN
+        CREATE ROLE tactiscope_reviewer NOLOGIN;
+    END IF;
+END $$;
+
+CREATE TABLE IF NOT EXISTS schema_version (version INTEGER NOT NULL);
+
+CREATE TABLE IF NOT EXISTS sessions (
+    id                BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY,
+    uuid              TEXT NOT NULL UNIQUE,
+    station           TEXT NOT NULL DEFAULT current_user,
+    complete          BOOLEAN NOT NULL DEFAULT false,
+    checksum          TEXT NOT NULL DEFAULT '',
+    mode              TEXT NOT NULL CHECK (mode IN ('panel-scan', 'palpation', 'capacitive')),
+    subject           TEXT NOT NULL DEFAULT '',
+    operator          TEXT NOT NULL DEFAULT '',
+    site              TEXT NOT NULL DEFAULT '',
+    notes             TEXT NOT NULL DEFAULT '',
+    started_utc       TEXT NOT NULL,
+    ended_utc         TEXT,
+    status            TEXT NOT NULL CHECK (status IN ('recording', 'complete', 'interrupted')),
+    verdict           TEXT NOT NULL DEFAULT '',
+    device_model      TEXT NOT NULL DEFAULT '',
+    device_serial     TEXT NOT NULL DEFAULT '',
+    device_firmware   TEXT NOT NULL DEFAULT '',
+    profile_json      TEXT NOT NULL DEFAULT '',
+    calibrations_json TEXT NOT NULL DEFAULT '',
+    app_version       TEXT NOT NULL
+);
+CREATE INDEX IF NOT EXISTS sessions_started ON sessions (started_utc);
+CREATE INDEX IF NOT EXISTS sessions_by_station ON sessions (station, started_utc);
+
+CREATE TABLE IF NOT EXISTS channels (
+    session_id     BIGINT NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    position       INTEGER NOT NULL,
+    name           TEXT NOT NULL,
+    unit           TEXT NOT NULL,
+    kind           TEXT NOT NULL,
+    sample_rate_hz DOUBLE PRECISION NOT NULL CHECK (sample_rate_hz > 0),
+    PRIMARY KEY (session_id, position)
+);
+
+CREATE TABLE IF NOT EXISTS chunks (
+    session_id   BIGINT NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    first_index  BIGINT NOT NULL,
+    first_time_s DOUBLE PRECISION NOT NULL,
+    count        INTEGER NOT NULL CHECK (count > 0),
+    samples      BYTEA NOT NULL,
+    PRIMARY KEY (session_id, first_index)
+);
+
+CREATE TABLE IF NOT EXISTS gaps (
+    session_id  BIGINT NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    first_index BIGINT NOT NULL,
+    count       BIGINT NOT NULL CHECK (count > 0),
+    PRIMARY KEY (session_id, first_index)
+);
+
+CREATE TABLE IF NOT EXISTS lod (
+    session_id   BIGINT NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    channel      INTEGER NOT NULL,
+    level        INTEGER NOT NULL,
+    first_bucket BIGINT NOT NULL,
+    count        INTEGER NOT NULL CHECK (count > 0),
+    buckets      BYTEA NOT NULL,
+    PRIMARY KEY (session_id, channel, level, first_bucket)
+);
+
+CREATE TABLE IF NOT EXISTS events (
+    id            BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY,
+    session_id    BIGINT NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    analysis      TEXT NOT NULL DEFAULT 'live',
+    kind          TEXT NOT NULL CHECK (kind IN ('defect', 'contact', 'press', 'alarm', 'marker')),
+    start_s       DOUBLE PRECISION NOT NULL,
+    end_s         DOUBLE PRECISION NOT NULL CHECK (end_s >= start_s),
+    direction     INTEGER NOT NULL DEFAULT 0 CHECK (direction IN (-1, 0, 1)),
+    peak_r        DOUBLE PRECISION,
+    lag_s         DOUBLE PRECISION,
+    speed_m_per_s DOUBLE PRECISION,
+    note          TEXT NOT NULL DEFAULT ''
+);
+CREATE INDEX IF NOT EXISTS events_by_session ON events (session_id, analysis, start_s);
+
+CREATE TABLE IF NOT EXISTS readings (
+    id             BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY,
+    session_id     BIGINT NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    analysis       TEXT NOT NULL DEFAULT 'live',
+    kind           TEXT NOT NULL CHECK (kind IN ('compliance', 'capacitive')),
+    start_s        DOUBLE PRECISION NOT NULL,
+    end_s          DOUBLE PRECISION NOT NULL CHECK (end_s >= start_s),
+    quantity       TEXT NOT NULL,
+    value          DOUBLE PRECISION NOT NULL,
+    unit           TEXT NOT NULL,
+    standard_error DOUBLE PRECISION,
+    site           TEXT NOT NULL DEFAULT '',
+    details_json   TEXT NOT NULL DEFAULT ''
+);
+CREATE INDEX IF NOT EXISTS readings_by_session ON readings (session_id, analysis, start_s);
+
+CREATE TABLE IF NOT EXISTS annotations (
+    id           BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY,
+    session_id   BIGINT NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    time_s       DOUBLE PRECISION NOT NULL,
+    author       TEXT NOT NULL DEFAULT '',
+    text         TEXT NOT NULL,
+    created_utc  TEXT NOT NULL,
+    modified_utc TEXT NOT NULL,
+    added_by     TEXT NOT NULL DEFAULT current_user
+);
+CREATE INDEX IF NOT EXISTS annotations_by_session ON annotations (session_id, time_s);
+
+CREATE TABLE IF NOT EXISTS verdicts (
+    id          BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY,
+    session_id  BIGINT NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    role        TEXT NOT NULL CHECK (role IN ('automatic', 'operator', 'reviewer')),
+    verdict     TEXT NOT NULL CHECK (verdict IN ('pass', 'defects found')),
+    decided_by  TEXT NOT NULL DEFAULT '',
+    decided_utc TEXT NOT NULL,
+    note        TEXT NOT NULL DEFAULT '',
+    basis_json  TEXT NOT NULL DEFAULT '',
+    added_by    TEXT NOT NULL DEFAULT current_user
+);
+CREATE INDEX IF NOT EXISTS verdicts_by_session ON verdicts (session_id, id);
+
+CREATE TABLE IF NOT EXISTS zeros (
+    session_id  BIGINT NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    first_index BIGINT NOT NULL,
+    values_json TEXT NOT NULL,
+    PRIMARY KEY (session_id, first_index)
+);
+
+CREATE TABLE IF NOT EXISTS calibrations (
+    id          BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY,
+    station     TEXT NOT NULL DEFAULT current_user,
+    kind        TEXT NOT NULL,
+    sensor      TEXT NOT NULL,
+    operator    TEXT NOT NULL DEFAULT '',
+    created_utc TEXT NOT NULL,
+    r_squared   DOUBLE PRECISION NOT NULL,
+    points      INTEGER NOT NULL,
+    record_json TEXT NOT NULL,
+    UNIQUE (station, sensor, created_utc, kind)
+);
+CREATE INDEX IF NOT EXISTS calibrations_by_sensor ON calibrations (sensor, created_utc);
+
+CREATE TABLE IF NOT EXISTS session_calibrations (
+    session_id     BIGINT NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    calibration_id BIGINT NOT NULL REFERENCES calibrations (id) ON DELETE RESTRICT,
+    PRIMARY KEY (session_id, calibration_id)
+);
+)sql";
+
+// Rights and row-level security. A station reads and adds its own rows; a
+// reviewer reads every finished session and adds notes and verdicts; only
+// the owner (who bypasses RLS) changes or deletes. Policies are dropped and
+// made again, so an upgrade can change them.
+constexpr const char* kRights = R"sql(
+GRANT USAGE ON SCHEMA public TO tactiscope_station, tactiscope_reviewer;
+GRANT SELECT, INSERT ON sessions, channels, chunks, gaps, lod, events, readings, annotations, verdicts, zeros,
+    calibrations, session_calibrations TO tactiscope_station;
+-- The sync's last step: its own unfinished session becomes complete.
+GRANT UPDATE (complete, checksum) ON sessions TO tactiscope_station;
+GRANT SELECT ON ALL TABLES IN SCHEMA public TO tactiscope_reviewer;
+GRANT INSERT ON annotations, verdicts TO tactiscope_reviewer;
+GRANT UPDATE (verdict) ON sessions TO tactiscope_reviewer;
+GRANT SELECT ON schema_version TO tactiscope_station, tactiscope_reviewer;
+
+ALTER TABLE sessions ENABLE ROW LEVEL SECURITY;
+DROP POLICY IF EXISTS station_own ON sessions;
+CREATE POLICY station_own ON sessions TO tactiscope_station
+    USING (station = current_user) WITH CHECK (station = current_user);
+DROP POLICY IF EXISTS reviewer_reads ON sessions;
+CREATE POLICY reviewer_reads ON sessions FOR SELECT TO tactiscope_reviewer USING (complete);
+DROP POLICY IF EXISTS reviewer_verdict ON sessions;
+CREATE POLICY reviewer_verdict ON sessions FOR UPDATE TO tactiscope_reviewer USING (complete) WITH CHECK (complete);
+
+ALTER TABLE calibrations ENABLE ROW LEVEL SECURITY;
+DROP POLICY IF EXISTS station_own ON calibrations;
+CREATE POLICY station_own ON calibrations TO tactiscope_station
+    USING (station = current_user) WITH CHECK (station = current_user);
+DROP POLICY IF EXISTS reviewer_reads ON calibrations;
+CREATE POLICY reviewer_reads ON calibrations FOR SELECT TO tactiscope_reviewer USING (true);
+)sql";
+
+// The tables whose rows belong to a session: a station's rows are those of
+// its own sessions; a reviewer reads those of finished sessions.
+constexpr const char* kSessionTables[] = {"channels",    "chunks",   "gaps",  "lod",
+                                          "events",      "readings", "zeros", "session_calibrations",
+                                          "annotations", "verdicts"};
+
+std::string sessionTablePolicies(const std::string& table)
+{
+    const std::string own = "EXISTS (SELECT 1 FROM sessions s WHERE s.id = session_id AND s.station = current_user)";
+    const std::string finished = "EXISTS (SELECT 1 FROM sessions s WHERE s.id = session_id AND s.complete)";
+    std::string sql = "ALTER TABLE " + table + " ENABLE ROW LEVEL SECURITY;\n";
+    sql += "DROP POLICY IF EXISTS station_own ON " + table + ";\n";
+    sql += "CREATE POLICY station_own ON " + table + " TO tactiscope_station USING (" + own + ") WITH CHECK (" + own +
+           ");\n";
+    sql += "DROP POLICY IF EXISTS reviewer_reads ON " + table + ";\n";
+    sql +=
+        "CREATE POLICY reviewer_reads ON " + table + " FOR SELECT TO tactiscope_reviewer USING (" + finished + ");\n";
+    if (table == "annotations" || table == "verdicts") {
+        sql += "DROP POLICY IF EXISTS reviewer_adds ON " + table + ";\n";
+        sql += "CREATE POLICY reviewer_adds ON " + table + " FOR INSERT TO tactiscope_reviewer WITH CHECK (" +
+               finished + " AND added_by = current_user);\n";
+    }
+    return sql;
+}
+
+}  // namespace
+
+void initCentralStore(PgConnection& connection)
+{
+    // One transaction: a store half made is never left behind; two stations
+    // running it at once wait for each other on the lock.
+    std::string script = "BEGIN;\nSELECT pg_advisory_xact_lock(7426);\n";
+    script += kSchema;
+    script += kRights;
+    for (const char* table : kSessionTables) script += sessionTablePolicies(table);
+    script += "DELETE FROM schema_version;\nINSERT INTO schema_version VALUES (" +
+              std::to_string(kCentralSchemaVersion) + ");\nCOMMIT;\n";
+    connection.run(script);
+}
+
+}  // namespace tactiscope::core::storage::central

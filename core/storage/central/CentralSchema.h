@@ -1,0 +1,26 @@
+// The central store's schema on PostgreSQL, and its two roles: the same
+// content as a local store (sessions by uuid with the station they came
+// from, channels, sample chunks as bytea in the local encoding, the min/max
+// pyramid, gaps, events, readings, annotations, verdict trail, zeros,
+// calibrations), with row-level security so that
+//   tactiscope_station  adds sessions and their records as its own station
+//                       (sessions.station = its login) and reads them, and
+//                       never changes or deletes another station's rows;
+//   tactiscope_reviewer reads everything and adds notes and verdicts;
+//   the owner (who ran `server init`) alone deletes.
+// A session is visible to reviewers only once all of it has arrived
+// (sessions.complete, set by the sync's last step with its checksum).
+#pragma once
+
+#include "core/storage/central/PgConnection.h"
+
+namespace tactiscope::core::storage::central {
+
+inline constexpr int kCentralSchemaVersion = 1;
+
+// Creates or upgrades the schema and the two roles; running it again
+// changes nothing. Throws StorageError (e.g. without the right to create
+// roles).
+void initCentralStore(PgConnection& connection);
+
+}  // namespace tactiscope::core::storage::central

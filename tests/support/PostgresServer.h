@@ -1,0 +1,33 @@
+// A throwaway PostgreSQL server for one test suite: initdb into a fresh
+// temporary folder, started with pg_ctl on a unix socket only (no TCP), as
+// the `postgres` system user when the suite runs as root (PostgreSQL
+// refuses to run as root); stopped and removed at the end. Local
+// connections are trusted, so roles need no passwords. Never a mock.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace tactiscope::testing {
+
+class PostgresServer {
+public:
+    // Throws std::runtime_error with the server's log when it cannot start.
+    PostgresServer();
+    ~PostgresServer();
+    PostgresServer(const PostgresServer&) = delete;
+    PostgresServer& operator=(const PostgresServer&) = delete;
+
+    // A libpq connection string to database `dbname` as `user` (the
+    // superuser, who owns the cluster, by default).
+    std::string conninfo(const std::string& user = kOwner, const std::string& dbname = "postgres") const;
+
+    static constexpr const char* kOwner = "tactiscope_owner";
+
+private:
+    std::filesystem::path m_folder;
+    std::filesystem::path m_bin;  // initdb, pg_ctl
+    std::string m_asPostgres;     // "runuser -u postgres -- " when root
+};
+
+}  // namespace tactiscope::testing
