@@ -18,14 +18,6 @@ std::string oneLine(const char* message)
 
 }  // namespace
 
-bool isConnectionString(const std::string& text)
-{
-    if (text.starts_with("postgresql://") || text.starts_with("postgres://")) return true;
-    for (const char* key : {"host=", "dbname=", "service="})
-        if (text.starts_with(key) || text.find(std::string(" ") + key) != std::string::npos) return true;
-    return false;
-}
-
 PgResult::PgResult(pg_result* result)
     : m_result(result)
 {

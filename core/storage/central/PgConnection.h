@@ -17,11 +17,6 @@ struct pg_result;
 
 namespace tactiscope::core::storage::central {
 
-// True for a connection string rather than a file name: a postgresql:// or
-// postgres:// URI, or key=value pairs naming host= or dbname= (what --db
-// accepts beside a store file).
-bool isConnectionString(const std::string& text);
-
 // One statement's rows; values as text (NULL as nothing).
 class PgResult {
 public:
