@@ -53,8 +53,8 @@ int runAnalyze(const QStringList& arguments)
                        "prototype's 15 mm gives each event its scan speed, as in a live recording."));
     parser.addOptions({
         {QStringLiteral("db"), QStringLiteral("The session store (required)."), QStringLiteral("FILE")},
-        {QStringLiteral("session"), QStringLiteral("The session: its id, or 'last' (required)."),
-         QStringLiteral("ID|last")},
+        {QStringLiteral("session"), QStringLiteral("The session: its id, its uuid, or 'last' (required)."),
+         QStringLiteral("ID|UUID|last")},
         {QStringLiteral("channels"), QStringLiteral("Cantilever channels in probe order (default: the strain ones)."),
          QStringLiteral("A,B")},
         {QStringLiteral("save"), QStringLiteral("Store the events as a re-analysis named NAME."),
@@ -67,7 +67,7 @@ int runAnalyze(const QStringList& arguments)
         return usageError(QStringLiteral("unexpected '%1'").arg(parser.positionalArguments().front()), usage);
     if (!parser.isSet(QStringLiteral("db"))) return usageError(QStringLiteral("--db FILE is required"), usage);
     if (!parser.isSet(QStringLiteral("session")))
-        return usageError(QStringLiteral("--session ID|last is required"), usage);
+        return usageError(QStringLiteral("--session ID|UUID|last is required"), usage);
     DetectorOptions options;
     options.spacing_m = core::detector::kPrototypeSpacing_m;
     if (const auto error = readDetectorOptions(parser, options)) return usageError(*error, usage);

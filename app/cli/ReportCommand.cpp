@@ -42,8 +42,8 @@ int runReport(const QStringList& arguments)
                        "readings and notes."));
     parser.addOptions({
         {QStringLiteral("db"), QStringLiteral("The session store (required)."), QStringLiteral("FILE")},
-        {QStringLiteral("session"), QStringLiteral("The session: its id, or 'last' (required)."),
-         QStringLiteral("ID|last")},
+        {QStringLiteral("session"), QStringLiteral("The session: its id, its uuid, or 'last' (required)."),
+         QStringLiteral("ID|UUID|last")},
         {QStringLiteral("output"), QStringLiteral("The PDF to write (required)."), QStringLiteral("REPORT.pdf")},
         {QStringLiteral("from"), QStringLiteral("Start of the part reported, in session seconds."),
          QStringLiteral("S")},

@@ -1,4 +1,4 @@
-// "ID" or "last" → a session id of the store.
+// "ID", "UUID" or "last" → a session id of the store.
 #include "SessionArgument.h"
 
 namespace tactiscope::cli {
@@ -10,6 +10,8 @@ std::optional<std::int64_t> resolveSession(core::storage::SessionStore& store, c
         if (sessions.empty()) return std::nullopt;
         return sessions.front().id;
     }
+    // A uuid: 8-4-4-4-12 hexadecimal digits.
+    if (text.size() == 36 && text.count(QLatin1Char('-')) == 4) return store.sessionWithUuid(text.toStdString());
     bool ok = false;
     const qlonglong id = text.toLongLong(&ok);
     if (!ok || !store.session(id)) return std::nullopt;

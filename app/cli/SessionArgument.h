@@ -1,4 +1,6 @@
-// A session named on the command line: its id, or "last" for the newest.
+// A session named on the command line: its id, its uuid (ids differ from
+// store to store, a uuid names the same session in all), or "last" for the
+// newest.
 #pragma once
 
 #include "core/storage/SessionStore.h"

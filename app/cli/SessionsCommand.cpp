@@ -180,15 +180,16 @@ int runSessions(const QStringList& arguments)
         "Inspect a session store.\n"
         "  list                     the sessions, newest first (filters: --mode, --subject, --operator,\n"
         "                           --verdict, --from, --before, --search)\n"
-        "  show ID|last             one session's metadata, channels and losses\n"
-        "  export ID|last --format csv|json --output PATH [--derived]\n"
+        "  show ID|UUID|last        one session's metadata, channels and losses\n"
+        "  export ID|UUID|last --format csv|json --output PATH [--derived]\n"
         "                           CSV: t then the channels (metadata in PATH's .meta.json); JSON: all;\n"
         "                           --derived (CSV): the mode's physical quantities too (palpation:\n"
         "                           force_high [N], force_low [N], Q, stiffness [N/m]; capacitive:\n"
         "                           delta_c [F], relative_change, force [N], deflection [m])\n"
-        "  verdict ID|last pass|defects-found --by NAME [--note TEXT]\n"
+        "  verdict ID|UUID|last pass|defects-found --by NAME [--note TEXT]\n"
         "                           a reviewer's verdict, added to the session's verdict trail\n"
-        "  delete ID                remove a session and its samples"));
+        "  delete ID|UUID           remove a session and its samples\n"
+        "A session is named by its id in this store, its uuid (the same in every store) or 'last'."));
     parser.addPositionalArgument(QStringLiteral("action"), QStringLiteral("list, show, export, verdict or delete."));
     parser.addOptions({
         {QStringLiteral("db"), QStringLiteral("The session store (required)."), QStringLiteral("FILE")},
@@ -222,10 +223,10 @@ int runSessions(const QStringList& arguments)
     if (action != QLatin1String("list") && !takesId)
         return usageError(QStringLiteral("unknown action '%1'").arg(action), usage);
     if (decides && positional.size() != 3)
-        return usageError(QStringLiteral("verdict needs a session and a verdict: verdict ID|last pass|defects-found"),
-                          usage);
+        return usageError(
+            QStringLiteral("verdict needs a session and a verdict: verdict ID|UUID|last pass|defects-found"), usage);
     if (!decides && positional.size() != (takesId ? 2 : 1))
-        return usageError(takesId ? QStringLiteral("%1 needs one session: ID or last").arg(action)
+        return usageError(takesId ? QStringLiteral("%1 needs one session: ID, UUID or last").arg(action)
                                   : QStringLiteral("list takes no session"),
                           usage);
     if (decides && parser.value(QStringLiteral("by")).trimmed().isEmpty())

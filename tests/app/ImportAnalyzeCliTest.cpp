@@ -298,7 +298,7 @@ TEST(AnalyzeCli, BadInputIsExitCodeTwo)
         QStringList arguments;
         const char* message;
     } cases[] = {
-        {{"analyze", "--db", db}, "--session ID|last is required"},
+        {{"analyze", "--db", db}, "--session ID|UUID|last is required"},
         {{"analyze", "--session", "last"}, "--db FILE is required"},
         {{"analyze", "--db", db, "--session", "7"}, "no session '7'"},
         {{"analyze", "--db", db, "--session", "last"}, "is a palpation session"},

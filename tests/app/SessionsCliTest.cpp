@@ -151,6 +151,29 @@ TEST(SessionsCli, CsvExportHasOneRowPerStoredSampleExactToTheBit)
     EXPECT_EQ(channels[0].sampleRate_hz, 200.0);
 }
 
+TEST(SessionsCli, ASessionIsNamedByItsUuidAsByItsId)
+{
+    // Ids differ from store to store; a uuid names the same session in all.
+    QTemporaryDir dir;
+    const QString db = makeStore(dir);
+    std::string uuid;
+    {
+        core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+        uuid = store.session(1)->uuid;
+    }
+    const QString byId = dir.filePath("by-id.csv"), byUuid = dir.filePath("by-uuid.csv");
+    ASSERT_EQ(runCli({"sessions", "--db", db, "export", "1", "--format", "csv", "--output", byId}).exitCode, 0);
+    const auto result =
+        runCli({"sessions", "--db", db, "export", QString::fromStdString(uuid), "--format", "csv", "--output", byUuid});
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    EXPECT_EQ(tactiscope::testing::readBytes(byUuid), tactiscope::testing::readBytes(byId));
+    const auto shown = runCli({"sessions", "--db", db, "show", QString::fromStdString(uuid), "--json"});
+    ASSERT_EQ(shown.exitCode, 0);
+    EXPECT_EQ(parse(shown.out).object()["session"].toObject()["subject"].toString(), QStringLiteral("phantom-2"));
+    // A well-formed uuid the store does not hold is refused like an unknown id.
+    EXPECT_EQ(runCli({"sessions", "--db", db, "show", "00000000-0000-4000-8000-000000000000"}).exitCode, 2);
+}
+
 TEST(SessionsCli, JsonExportHoldsMetadataAndColumns)
 {
     QTemporaryDir dir;
