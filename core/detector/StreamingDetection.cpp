@@ -8,8 +8,10 @@
 #include <barrier>
 #include <cmath>
 #include <cstring>
+#include <exception>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 namespace tactiscope::core::detector {
 namespace {
@@ -73,6 +75,7 @@ struct StreamingDetection::Pool {
     std::barrier<> start;
     std::barrier<> done;
     std::atomic<bool> stopping{false};
+    std::exception_ptr failure;  // a worker thread's, rethrown by the caller
     std::vector<std::jthread> threads;
 
     explicit Pool(std::size_t workers)
@@ -130,7 +133,11 @@ StreamingDetection::StreamingDetection(std::size_t cantilevers, const StretchSet
                 while (true) {
                     m_pool->start.arrive_and_wait();
                     if (m_pool->stopping) return;
-                    m_job(w);
+                    try {
+                        m_job(w);
+                    } catch (...) {
+                        m_pool->failure = std::current_exception();
+                    }
                     m_pool->done.arrive_and_wait();
                 }
             });
@@ -150,8 +157,17 @@ void StreamingDetection::runWorkers(const std::function<void(std::size_t)>& job)
 {
     m_job = job;
     if (m_pool) m_pool->start.arrive_and_wait();
-    job(0);
-    if (m_pool) m_pool->done.arrive_and_wait();
+    try {
+        job(0);
+    } catch (...) {
+        // The others still meet at the barrier, or they and the destructor
+        // would wait for each other for ever.
+        if (m_pool) m_pool->done.arrive_and_wait();
+        throw;
+    }
+    if (!m_pool) return;
+    m_pool->done.arrive_and_wait();
+    if (m_pool->failure) std::rethrow_exception(std::exchange(m_pool->failure, nullptr));
 }
 
 void StreamingDetection::push(std::span<const std::span<const double>> cantilevers, std::span<const double> times)
