@@ -9,6 +9,8 @@
 #include "core/detector/PairDetector.h"
 #include "devices/simulator/PanelScanScenario.h"
 
+#include "Fastest.h"
+
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -81,22 +83,20 @@ void BM_PairDetector_1h(benchmark::State& state)
     run<core::detector::PairDetector>(state, 3600.0);
 }
 
-// Interference on a shared machine only ever adds time, so the fastest
-// repetition is the best estimate of what the code costs; the median shows
-// what a busy machine gives.
-double fastest(const std::vector<double>& v)
-{
-    return *std::min_element(v.begin(), v.end());
-}
-
 }  // namespace
 
-BENCHMARK(BM_DirectEigenInverse_60s)->Unit(benchmark::kMillisecond)->MinTime(1.0)->ComputeStatistics("min", fastest);
+BENCHMARK(BM_DirectEigenInverse_60s)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(1.0)
+    ->ComputeStatistics("min", tactiscope::bench::fastest);
 BENCHMARK(BM_PairDetector_60s)
     ->Unit(benchmark::kMillisecond)
     ->MinTime(1.0)
     ->DenseRange(0, 2)
-    ->ComputeStatistics("min", fastest);
-BENCHMARK(BM_PairDetector_1h)->Unit(benchmark::kMillisecond)->Iterations(1)->ComputeStatistics("min", fastest);
+    ->ComputeStatistics("min", tactiscope::bench::fastest);
+BENCHMARK(BM_PairDetector_1h)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->ComputeStatistics("min", tactiscope::bench::fastest);
 
 BENCHMARK_MAIN();

@@ -15,6 +15,8 @@
 #include "core/text/NumberFormat.h"
 #include "devices/simulator/PanelScanScenario.h"
 
+#include "Fastest.h"
+
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -166,27 +168,28 @@ void BM_CsvToSampleCsv_1h(benchmark::State& state)
     countSamples(state);
 }
 
-double fastest(const std::vector<double>& v)
-{
-    return *std::min_element(v.begin(), v.end());
-}
-
 }  // namespace
 
-BENCHMARK(BM_Kernel_1h)->Unit(benchmark::kMillisecond)->Iterations(1)->ComputeStatistics("min", fastest);
+BENCHMARK(BM_Kernel_1h)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->ComputeStatistics("min", tactiscope::bench::fastest);
 BENCHMARK(BM_StoreToEvents_1h)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
     ->Arg(1)
     ->Arg(2)
-    ->ComputeStatistics("min", fastest);
+    ->ComputeStatistics("min", tactiscope::bench::fastest);
 BENCHMARK(BM_CsvToEvents_1h)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
     ->Arg(1)
     ->Arg(2)
-    ->ComputeStatistics("min", fastest);
-BENCHMARK(BM_CsvToSampleCsv_1h)->Unit(benchmark::kMillisecond)->Iterations(1)->ComputeStatistics("min", fastest);
+    ->ComputeStatistics("min", tactiscope::bench::fastest);
+BENCHMARK(BM_CsvToSampleCsv_1h)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->ComputeStatistics("min", tactiscope::bench::fastest);
 BENCHMARK(BM_Direct_1h)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 BENCHMARK_MAIN();

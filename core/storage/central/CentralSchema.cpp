@@ -178,21 +178,8 @@ GRANT INSERT ON annotations, verdicts TO tactiscope_reviewer;
 GRANT UPDATE (verdict) ON sessions TO tactiscope_reviewer;
 GRANT SELECT ON schema_version TO tactiscope_station, tactiscope_reviewer;
 
-ALTER TABLE sessions ENABLE ROW LEVEL SECURITY;
-DROP POLICY IF EXISTS station_own ON sessions;
-CREATE POLICY station_own ON sessions TO tactiscope_station
-    USING (station = current_user) WITH CHECK (station = current_user);
-DROP POLICY IF EXISTS reviewer_reads ON sessions;
-CREATE POLICY reviewer_reads ON sessions FOR SELECT TO tactiscope_reviewer USING (complete);
 DROP POLICY IF EXISTS reviewer_verdict ON sessions;
 CREATE POLICY reviewer_verdict ON sessions FOR UPDATE TO tactiscope_reviewer USING (complete) WITH CHECK (complete);
-
-ALTER TABLE calibrations ENABLE ROW LEVEL SECURITY;
-DROP POLICY IF EXISTS station_own ON calibrations;
-CREATE POLICY station_own ON calibrations TO tactiscope_station
-    USING (station = current_user) WITH CHECK (station = current_user);
-DROP POLICY IF EXISTS reviewer_reads ON calibrations;
-CREATE POLICY reviewer_reads ON calibrations FOR SELECT TO tactiscope_reviewer USING (true);
 )sql";
 
 // The tables whose rows belong to a session: a station's rows are those of
@@ -201,17 +188,25 @@ constexpr const char* kSessionTables[] = {"channels",    "chunks",   "gaps",  "l
                                           "events",      "readings", "zeros", "session_calibrations",
                                           "annotations", "verdicts"};
 
-std::string sessionTablePolicies(const std::string& table)
+// Row-level security on `table`: a station's rows are those where `own`
+// holds, a reviewer reads those where `readable` holds.
+std::string policies(const std::string& table, const std::string& own, const std::string& readable)
 {
-    const std::string own = "EXISTS (SELECT 1 FROM sessions s WHERE s.id = session_id AND s.station = current_user)";
-    const std::string finished = "EXISTS (SELECT 1 FROM sessions s WHERE s.id = session_id AND s.complete)";
     std::string sql = "ALTER TABLE " + table + " ENABLE ROW LEVEL SECURITY;\n";
     sql += "DROP POLICY IF EXISTS station_own ON " + table + ";\n";
     sql += "CREATE POLICY station_own ON " + table + " TO tactiscope_station USING (" + own + ") WITH CHECK (" + own +
            ");\n";
     sql += "DROP POLICY IF EXISTS reviewer_reads ON " + table + ";\n";
     sql +=
-        "CREATE POLICY reviewer_reads ON " + table + " FOR SELECT TO tactiscope_reviewer USING (" + finished + ");\n";
+        "CREATE POLICY reviewer_reads ON " + table + " FOR SELECT TO tactiscope_reviewer USING (" + readable + ");\n";
+    return sql;
+}
+
+std::string sessionTablePolicies(const std::string& table)
+{
+    const std::string own = "EXISTS (SELECT 1 FROM sessions s WHERE s.id = session_id AND s.station = current_user)";
+    const std::string finished = "EXISTS (SELECT 1 FROM sessions s WHERE s.id = session_id AND s.complete)";
+    std::string sql = policies(table, own, finished);
     if (table == "annotations" || table == "verdicts") {
         sql += "DROP POLICY IF EXISTS reviewer_adds ON " + table + ";\n";
         sql += "CREATE POLICY reviewer_adds ON " + table + " FOR INSERT TO tactiscope_reviewer WITH CHECK (" +
@@ -229,6 +224,8 @@ void initCentralStore(PgConnection& connection)
     std::string script = "BEGIN;\nSELECT pg_advisory_xact_lock(7426);\n";
     script += kSchema;
     script += kRights;
+    script += policies("sessions", "station = current_user", "complete");
+    script += policies("calibrations", "station = current_user", "true");
     for (const char* table : kSessionTables) script += sessionTablePolicies(table);
     script += "DELETE FROM schema_version;\nINSERT INTO schema_version VALUES (" +
               std::to_string(kCentralSchemaVersion) + ");\nCOMMIT;\n";
