@@ -31,7 +31,7 @@ QString describe(const core::storage::SessionSummary& s)
 }
 
 // Each session as session-N.csv with session-N.meta.json beside it.
-void exportSessions(core::storage::SessionStore& store, const std::vector<std::int64_t>& sessions,
+void exportSessions(core::storage::SessionSource& store, const std::vector<std::int64_t>& sessions,
                     const QString& folder)
 {
     for (const std::int64_t id : sessions) {
@@ -42,7 +42,7 @@ void exportSessions(core::storage::SessionStore& store, const std::vector<std::i
 
 }  // namespace
 
-std::vector<core::storage::SessionSummary> interruptedSessionsAfter(core::storage::SessionStore& store,
+std::vector<core::storage::SessionSummary> interruptedSessionsAfter(core::storage::SessionSource& store,
                                                                     std::int64_t afterId)
 {
     std::vector<core::storage::SessionSummary> found;
@@ -83,7 +83,7 @@ void showInterruptedSessionsReport(QWidget* parent, std::shared_ptr<core::storag
             QFileDialog::getExistingDirectory(parent, QObject::tr("Export the interrupted sessions to"));
         if (folder.isEmpty()) return;
         runOnStore(
-            *store, parent, [ids, folder](core::storage::SessionStore& s) { exportSessions(s, ids, folder); }, [] {},
+            *store, parent, [ids, folder](core::storage::SessionSource& s) { exportSessions(s, ids, folder); }, [] {},
             [parent](const QString& error) {
                 reportProblem(parent, {QObject::tr("Export failed"),
                                        QObject::tr("Not every interrupted session was exported."), error,

@@ -24,7 +24,7 @@ namespace tactiscope::ui {
 // The interrupted sessions newer than `afterId`, oldest first: a job for the
 // store's worker, whose read-write open has marked crashed recordings
 // interrupted.
-std::vector<core::storage::SessionSummary> interruptedSessionsAfter(core::storage::SessionStore& store,
+std::vector<core::storage::SessionSummary> interruptedSessionsAfter(core::storage::SessionSource& store,
                                                                     std::int64_t afterId);
 
 // Shows the report for `sessions`, non-modal, owned by `parent`; its Review

@@ -1,6 +1,8 @@
 // MainWindow: wiring of the live session, the plots, menus and status bar.
 #include "ui/MainWindow.h"
 
+#include "ui/central/CentralStoreLink.h"
+
 #include "core/storage/SessionStore.h"
 #include "core/storage/StoreWorker.h"
 #include "devices/session/LiveSession.h"
@@ -133,6 +135,8 @@ MainWindow::MainWindow(QWidget* parent)
     connect(capacitiveView(), &CapacitiveView::tareRequested, this, &MainWindow::tare);
     connect(capacitiveView(), &CapacitiveView::profilesRequested, this, &MainWindow::showProfiles);
     m_status = new StatusLine(statusBar());
+    m_central = new CentralStoreLink(statusBar(), this);
+    connect(m_central, &CentralStoreLink::browseRequested, m_review, &ReviewWindows::showCentralBrowser);
     m_connector = new DeviceConnector(
         {[this] { disconnectSource(); },
          [this](const QString& label) {
@@ -281,6 +285,7 @@ void MainWindow::createMenus()
     session->addSeparator();
     session->addAction(tr("Sensor &profiles…"), QKeySequence(tr("Ctrl+Shift+P")), this, &MainWindow::showProfiles);
     session->addAction(tr("Session &store…"), this, &MainWindow::chooseStore);
+    session->addAction(tr("&Central store…"), this, [this] { m_central->showDialog(); });
     session->addAction(tr("&Browse and review sessions…"), QKeySequence::Open, this, &MainWindow::showSessionBrowser);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
@@ -348,6 +353,7 @@ void MainWindow::setStorePath(const QString& path)
     m_store = std::make_shared<core::storage::StoreWorker>(path.toStdString());
     m_review->setStore(m_store);
     m_sessionBar->setStorePath(path);
+    m_central->setStorePath(path);
 }
 
 void MainWindow::chooseStore()
@@ -471,6 +477,7 @@ void MainWindow::recordingEnded(const devices::session::RecordingSummary& summar
 {
     m_sessionBar->setRecording(false);
     m_review->sessionRecorded();
+    m_central->sessionRecorded();
     lockProfiles();
     m_sessionBar->setRecordEnabled(m_session != nullptr);
     m_status->showSaved(summary.session, summary.stats);
@@ -619,7 +626,7 @@ void MainWindow::markEventWithNote()
                                              "", ""};
         runOnStore(
             *store, this,
-            [session, annotation](core::storage::SessionStore& s) { s.addAnnotation(session, annotation); },
+            [session, annotation](core::storage::SessionSource& s) { s.addAnnotation(session, annotation); },
             [this, session] { statusBar()->showMessage(tr("Note stored in session %1").arg(session), 5000); },
             [this, note](const QString& error) {
                 reportProblem(this, {tr("Note not stored"), tr("The marker's note could not be stored."), error,

@@ -50,6 +50,7 @@ class LivePlotWidget;
 class ModeViews;
 class PalpationView;
 class RawConsole;
+class CentralStoreLink;
 class ReviewWindows;
 class PanelScanView;
 class SensorProfileDialog;
@@ -153,7 +154,8 @@ private:
     SessionBar* m_sessionBar = nullptr;
     ModeViews* m_modeViews = nullptr;  // the mode's view under the traces
     DevicePanel* m_devicePanel = nullptr;
-    ReviewWindows* m_review = nullptr;  // the browser and review windows of the store
+    ReviewWindows* m_review = nullptr;      // the browser and review windows of the store
+    CentralStoreLink* m_central = nullptr;  // sends the sessions on to the site's central store
     QDockWidget* m_deviceDock = nullptr;
     XYPlotWidget* m_xyPlot = nullptr;
     QDockWidget* m_xyDock = nullptr;

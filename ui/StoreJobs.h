@@ -6,6 +6,7 @@
 // only looked at on the GUI thread, where it is deleted.
 #pragma once
 
+#include "core/storage/SessionSource.h"
 #include "core/storage/StoreWorker.h"
 
 #include <QCoreApplication>
@@ -38,10 +39,10 @@ template <typename Work, typename Done>
 void runOnStore(core::storage::StoreWorker& worker, QObject* context, Work work, Done done,
                 std::function<void(const QString&)> failed)
 {
-    using Result = std::invoke_result_t<Work&, core::storage::SessionStore&>;
+    using Result = std::invoke_result_t<Work&, core::storage::SessionSource&>;
     const QPointer<QObject> guard(context);
     worker.post(
-        [guard, work = std::move(work), done = std::move(done)](core::storage::SessionStore& store) mutable {
+        [guard, work = std::move(work), done = std::move(done)](core::storage::SessionSource& store) mutable {
             if constexpr (std::is_void_v<Result>) {
                 work(store);
                 detail::onGuiThread(guard, std::move(done));

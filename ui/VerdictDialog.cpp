@@ -96,7 +96,7 @@ void askVerdict(QWidget* parent, std::shared_ptr<core::storage::StoreWorker> sto
             decision.note = note.toStdString();
             runOnStore(
                 *store, parent,
-                [session, decision](core::storage::SessionStore& s) { s.decideVerdict(session, decision); },
+                [session, decision](core::storage::SessionSource& s) { s.decideVerdict(session, decision); },
                 [saved, session, chosen] {
                     saved(VerdictDialog::tr("Session %1: verdict \"%2\"").arg(session).arg(wordText(chosen)));
                 },

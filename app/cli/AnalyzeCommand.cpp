@@ -7,15 +7,12 @@
 #include "SessionArgument.h"
 #include "core/derived/StoredDetection.h"
 #include "core/storage/DefectRecords.h"
-#include "core/storage/SessionStore.h"
 
 #include <chrono>
 #include <iostream>
 
 namespace tactiscope::cli {
 namespace {
-
-using core::storage::SessionStore;
 
 // The cantilever channels: named with --channels, else every strain channel.
 std::optional<QString> pickChannels(const std::vector<core::storage::StoredChannel>& channels, const QString& names,
@@ -52,7 +49,10 @@ int runAnalyze(const QStringList& arguments)
                        "--save stores the new ones beside them under a name. Without --spacing-mm the paper's "
                        "prototype's 15 mm gives each event its scan speed, as in a live recording."));
     parser.addOptions({
-        {QStringLiteral("db"), QStringLiteral("The session store (required)."), QStringLiteral("FILE")},
+        {QStringLiteral("db"),
+         QStringLiteral("The session store (required): a station's file, or a central store's connection string "
+                        "(postgresql://… or key=value with host= or dbname=)."),
+         QStringLiteral("FILE|CONNINFO")},
         {QStringLiteral("session"), QStringLiteral("The session: its id, its uuid, or 'last' (required)."),
          QStringLiteral("ID|UUID|last")},
         {QStringLiteral("channels"), QStringLiteral("Cantilever channels in probe order (default: the strain ones)."),
@@ -76,9 +76,10 @@ int runAnalyze(const QStringList& arguments)
         return usageError(QStringLiteral("--save needs a name other than 'live'"), usage);
 
     try {
-        SessionStore store(parser.value(QStringLiteral("db")).toStdString(),
-                           save.isEmpty() ? core::storage::Database::Access::ReadOnly
-                                          : core::storage::Database::Access::ReadWrite);
+        const auto opened = openStoreArgument(parser.value(QStringLiteral("db")),
+                                              save.isEmpty() ? core::storage::Database::Access::ReadOnly
+                                                             : core::storage::Database::Access::ReadWrite);
+        core::storage::SessionSource& store = *opened;
         const auto id = resolveSession(store, parser.value(QStringLiteral("session")));
         if (!id)
             return usageError(

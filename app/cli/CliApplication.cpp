@@ -15,6 +15,7 @@
 #include "ServerCommand.h"
 #include "SessionsCommand.h"
 #include "SimulateCommand.h"
+#include "SyncCommand.h"
 #include "core/Version.h"
 
 #include <QTextStream>
@@ -42,6 +43,7 @@ constexpr std::array kCommands{
     Command{"record", "Record a probe on a serial port into a session store.", runRecord},
     Command{"report", "Write a session's inspection report as a PDF.", runReport},
     Command{"server", "Set up a site's central store on PostgreSQL.", runServer},
+    Command{"sync", "Send this station's sessions to a site's central store.", runSync},
     Command{"sessions", "List, show, export or delete the sessions of a store.", runSessions},
     Command{"simulate", "Write a simulated recording as CSV.", runSimulate},
 };

@@ -41,7 +41,10 @@ int runReport(const QStringList& arguments)
                        "calibration, the verdict and who decided it, the key plot, and the defect sites, events, "
                        "readings and notes."));
     parser.addOptions({
-        {QStringLiteral("db"), QStringLiteral("The session store (required)."), QStringLiteral("FILE")},
+        {QStringLiteral("db"),
+         QStringLiteral("The session store (required): a station's file, or a central store's connection string "
+                        "(postgresql://… or key=value with host= or dbname=)."),
+         QStringLiteral("FILE|CONNINFO")},
         {QStringLiteral("session"), QStringLiteral("The session: its id, its uuid, or 'last' (required)."),
          QStringLiteral("ID|UUID|last")},
         {QStringLiteral("output"), QStringLiteral("The PDF to write (required)."), QStringLiteral("REPORT.pdf")},
@@ -72,7 +75,7 @@ int runReport(const QStringList& arguments)
     }
     const QString db = parser.value(QStringLiteral("db"));
     const QString output = parser.value(QStringLiteral("output"));
-    if (!QFileInfo::exists(db)) return badInput(QStringLiteral("report: no session store at %1").arg(db));
+    if (!storeArgumentExists(db)) return badInput(QStringLiteral("report: no session store at %1").arg(db));
     try {
         core::storage::refuseOverwriting(output.toStdString(), core::storage::storeFiles(db.toStdString()));
     } catch (const core::storage::StorageError& e) {
@@ -81,12 +84,12 @@ int runReport(const QStringList& arguments)
 
     core::report::ReportData data;
     try {
-        core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
-        const auto id = resolveSession(store, parser.value(QStringLiteral("session")));
+        const auto store = openStoreArgument(db, core::storage::Database::Access::ReadOnly);
+        const auto id = resolveSession(*store, parser.value(QStringLiteral("session")));
         if (!id)
-            return badInput(
-                QStringLiteral("report: no session '%1' in %2").arg(parser.value(QStringLiteral("session")), db));
-        data = core::report::gatherReport(store, *id, request);
+            return badInput(QStringLiteral("report: no session '%1' in %2")
+                                .arg(parser.value(QStringLiteral("session")), toQString(store->location())));
+        data = core::report::gatherReport(*store, *id, request);
     } catch (const core::storage::StorageError& e) {
         return badInput(QStringLiteral("report: %1").arg(toQString(e.what())));
     } catch (const std::invalid_argument& e) {

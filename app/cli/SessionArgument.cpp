@@ -1,9 +1,24 @@
-// "ID", "UUID" or "last" → a session id of the store.
+// --db → a store; "ID", "UUID" or "last" → a session id of the store.
 #include "SessionArgument.h"
+
+#include "core/storage/OpenSessionSource.h"
+
+#include <QFileInfo>
 
 namespace tactiscope::cli {
 
-std::optional<std::int64_t> resolveSession(core::storage::SessionStore& store, const QString& text)
+bool storeArgumentExists(const QString& db)
+{
+    return core::storage::isCentralStoreAddress(db.toStdString()) || QFileInfo::exists(db);
+}
+
+std::unique_ptr<core::storage::SessionSource> openStoreArgument(const QString& db,
+                                                                core::storage::Database::Access access)
+{
+    return core::storage::openSessionSource(db.toStdString(), access);
+}
+
+std::optional<std::int64_t> resolveSession(core::storage::SessionSource& store, const QString& text)
 {
     if (text == QLatin1String("last")) {
         const auto sessions = store.sessions();

@@ -1,17 +1,25 @@
-// A session named on the command line: its id, its uuid (ids differ from
-// store to store, a uuid names the same session in all), or "last" for the
-// newest.
+// The store and session named on the command line. --db is a station's
+// store file or a central store's libpq connection string; a session is
+// its id, its uuid (ids differ from store to store, a uuid names the same
+// session in all), or "last" for the newest.
 #pragma once
 
-#include "core/storage/SessionStore.h"
+#include "core/storage/SessionSource.h"
 
 #include <QString>
 
+#include <memory>
 #include <optional>
 
 namespace tactiscope::cli {
 
+// Whether --db names something to open: a connection string, or a file
+// that exists (a reader never creates a store).
+bool storeArgumentExists(const QString& db);
+std::unique_ptr<core::storage::SessionSource> openStoreArgument(const QString& db,
+                                                                core::storage::Database::Access access);
+
 // Nothing when `text` names no session of the store.
-std::optional<std::int64_t> resolveSession(core::storage::SessionStore& store, const QString& text);
+std::optional<std::int64_t> resolveSession(core::storage::SessionSource& store, const QString& text);
 
 }  // namespace tactiscope::cli

@@ -6,7 +6,7 @@
 #include "core/derived/SessionLanes.h"
 #include "core/report/VerdictTrail.h"
 #include "core/storage/SessionExport.h"
-#include "core/storage/SessionStore.h"
+#include "core/storage/SessionSource.h"
 #include "core/text/JsonWriter.h"
 
 #include <QTextStream>
@@ -18,11 +18,11 @@
 namespace tactiscope::cli {
 namespace {
 
-using core::storage::SessionStore;
+using core::storage::SessionSource;
 using core::storage::SessionSummary;
 using core::storage::StorageError;
 
-int list(SessionStore& store, const core::storage::SessionFilter& filter, bool json)
+int list(SessionSource& store, const core::storage::SessionFilter& filter, bool json)
 {
     const auto sessions = store.sessions(filter);
     if (json) {
@@ -39,6 +39,7 @@ int list(SessionStore& store, const core::storage::SessionFilter& filter, bool j
             out.key("status").value(core::toString(s.status));
             out.key("verdict").value(core::verdictText(s.verdict));
             out.key("duration_s").value(s.duration_s());
+            if (!s.station.empty()) out.key("station").value(s.station);  // a central store's
             out.endObject();
         }
         out.endArray();
@@ -63,7 +64,7 @@ int list(SessionStore& store, const core::storage::SessionFilter& filter, bool j
     return kExitOk;
 }
 
-int show(SessionStore& store, std::int64_t id, bool json)
+int show(SessionSource& store, std::int64_t id, bool json)
 {
     if (json) {
         core::storage::writeSessionMetadataJson(store, id, std::cout);
@@ -118,7 +119,7 @@ std::optional<core::Verdict> verdictArgument(const QString& word)
 }
 
 // A reviewer's verdict, added to the session's trail.
-int decideVerdict(SessionStore& store, std::int64_t id, const QString& word, const QString& by, const QString& note)
+int decideVerdict(SessionSource& store, std::int64_t id, const QString& word, const QString& by, const QString& note)
 {
     const auto verdict = verdictArgument(word);
     if (!verdict) {
@@ -147,7 +148,7 @@ int decideVerdict(SessionStore& store, std::int64_t id, const QString& word, con
     return kExitOk;
 }
 
-int exportSession(SessionStore& store, std::int64_t id, const QString& format, const QString& output, bool derived)
+int exportSession(SessionSource& store, std::int64_t id, const QString& format, const QString& output, bool derived)
 {
     std::unique_ptr<core::storage::ComputedColumns> computed;
     if (derived) {
@@ -192,7 +193,10 @@ int runSessions(const QStringList& arguments)
         "A session is named by its id in this store, its uuid (the same in every store) or 'last'."));
     parser.addPositionalArgument(QStringLiteral("action"), QStringLiteral("list, show, export, verdict or delete."));
     parser.addOptions({
-        {QStringLiteral("db"), QStringLiteral("The session store (required)."), QStringLiteral("FILE")},
+        {QStringLiteral("db"),
+         QStringLiteral("The session store (required): a station's file, or a central store's connection string "
+                        "(postgresql://… or key=value with host= or dbname=)."),
+         QStringLiteral("FILE|CONNINFO")},
         {QStringLiteral("json"), QStringLiteral("list, show: print JSON.")},
         {QStringLiteral("format"), QStringLiteral("export: csv or json."), QStringLiteral("csv|json")},
         {QStringLiteral("output"), QStringLiteral("export: the file to write."), QStringLiteral("PATH")},
@@ -240,14 +244,16 @@ int runSessions(const QStringList& arguments)
         if (parser.isSet(QStringLiteral("derived")) && format != QLatin1String("csv"))
             return usageError(QStringLiteral("--derived goes with --format csv"), usage);
     }
-    const std::string db = parser.value(QStringLiteral("db")).toStdString();
-    if (!std::filesystem::exists(db)) return usageError(QStringLiteral("%1 does not exist").arg(toQString(db)), usage);
+    const QString dbArgument = parser.value(QStringLiteral("db"));
+    if (!storeArgumentExists(dbArgument)) return usageError(QStringLiteral("%1 does not exist").arg(dbArgument), usage);
 
     try {
         // Only delete and verdict write; the others read, and work beside a recording.
-        SessionStore store(db, action == QLatin1String("delete") || decides
-                                   ? core::storage::Database::Access::ReadWrite
-                                   : core::storage::Database::Access::ReadOnly);
+        const auto opened = openStoreArgument(dbArgument, action == QLatin1String("delete") || decides
+                                                              ? core::storage::Database::Access::ReadWrite
+                                                              : core::storage::Database::Access::ReadOnly);
+        SessionSource& store = *opened;
+        const std::string db = store.location();
         if (action == QLatin1String("list")) {
             core::storage::SessionFilter filter;
             const auto value = [&](const char* option) {

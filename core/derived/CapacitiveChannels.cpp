@@ -20,7 +20,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 }  // namespace
 
-CapacitiveChannels::CapacitiveChannels(storage::SessionStore& store, std::int64_t session,
+CapacitiveChannels::CapacitiveChannels(storage::SessionSource& store, std::int64_t session,
                                        const std::optional<calibration::CalibrationRecord>& calibration)
     : m_store(store),
       m_session(session)

@@ -30,7 +30,7 @@ public:
     // one, lacks a usable profile, or a `calibration` that is not this
     // beam's or cannot be used (the message says which);
     // storage::StorageError when the store cannot be read.
-    CapacitiveChannels(storage::SessionStore& store, std::int64_t session,
+    CapacitiveChannels(storage::SessionSource& store, std::int64_t session,
                        const std::optional<calibration::CalibrationRecord>& calibration = std::nullopt);
 
     // delta_c [F], relative_change, force [N], deflection [m].
@@ -56,7 +56,7 @@ private:
     const Span* spanAt(std::uint64_t index) const;
     double value(std::size_t channel, double capacitance_f, double c0_f) const;
 
-    storage::SessionStore& m_store;
+    storage::SessionSource& m_store;
     std::int64_t m_session;
     std::uint64_t m_sampleCount = 0;
     std::size_t m_channel = 0;

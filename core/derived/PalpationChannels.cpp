@@ -17,7 +17,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 }  // namespace
 
-PalpationChannels::PalpationChannels(storage::SessionStore& store, std::int64_t session)
+PalpationChannels::PalpationChannels(storage::SessionSource& store, std::int64_t session)
     : m_store(store),
       m_session(session)
 {

@@ -33,7 +33,7 @@ public:
     // Throws std::invalid_argument for a session that is not a palpation
     // one, or whose profile or channels cannot give forces (the message
     // says which); storage::StorageError when the store cannot be read.
-    PalpationChannels(storage::SessionStore& store, std::int64_t session);
+    PalpationChannels(storage::SessionSource& store, std::int64_t session);
 
     // force_high [N], force_low [N], Q, stiffness [N/m].
     std::vector<ChannelDescriptor> channels() const override;
@@ -63,7 +63,7 @@ private:
     // The forces object set to the zero that reads sample `index`, if any.
     const compliance::PalpationForces* forcesAt(std::uint64_t index);
 
-    storage::SessionStore& m_store;
+    storage::SessionSource& m_store;
     std::int64_t m_session;
     std::uint64_t m_sampleCount = 0;
     std::unique_ptr<compliance::PalpationForces> m_forces;

@@ -32,7 +32,7 @@ namespace {
 // The zeros a session's samples are read on: the recording's, else the
 // first one taken as the live view takes it — the mean of the first
 // kTare_s with its standard error, applying from the sample after.
-std::vector<storage::SessionZero> zerosOf(storage::SessionStore& store, std::int64_t session,
+std::vector<storage::SessionZero> zerosOf(storage::SessionSource& store, std::int64_t session,
                                           const storage::SessionSummary& summary,
                                           const compliance::PalpationForces& forces, bool& recorded)
 {
@@ -60,7 +60,7 @@ std::vector<storage::SessionZero> zerosOf(storage::SessionStore& store, std::int
 // Every sample with its forces, zero span by zero span: `restart` at each
 // new zero (with its uncertainty) and at each lost sample, `sample` for the
 // others.
-void forEachForceSample(storage::SessionStore& store, std::int64_t session, const storage::SessionSummary& summary,
+void forEachForceSample(storage::SessionSource& store, std::int64_t session, const storage::SessionSummary& summary,
                         compliance::PalpationForces& forces, const std::vector<storage::SessionZero>& zeros,
                         const std::function<void(std::optional<compliance::ZeroUncertainty>)>& restart,
                         const std::function<void(const ForceSample&)>& sample)
@@ -101,7 +101,7 @@ struct SessionForces {
     std::string basis;
 };
 
-SessionForces sessionForces(storage::SessionStore& store, std::int64_t session,
+SessionForces sessionForces(storage::SessionSource& store, std::int64_t session,
                             const sensors::CompliancePairProfile& probe,
                             const std::vector<calibration::CalibrationRecord>& calibrations)
 {
@@ -120,7 +120,7 @@ SessionForces sessionForces(storage::SessionStore& store, std::int64_t session,
 
 }  // namespace
 
-PalpationPresses readPalpationPresses(storage::SessionStore& store, std::int64_t session,
+PalpationPresses readPalpationPresses(storage::SessionSource& store, std::int64_t session,
                                       const sensors::CompliancePairProfile& probe,
                                       const std::vector<calibration::CalibrationRecord>& calibrations)
 {
@@ -144,7 +144,7 @@ PalpationPresses readPalpationPresses(storage::SessionStore& store, std::int64_t
     return result;
 }
 
-PalpationForceSamples readPalpationForces(storage::SessionStore& store, std::int64_t session,
+PalpationForceSamples readPalpationForces(storage::SessionSource& store, std::int64_t session,
                                           const sensors::CompliancePairProfile& probe,
                                           const std::vector<calibration::CalibrationRecord>& calibrations)
 {
@@ -159,7 +159,7 @@ PalpationForceSamples readPalpationForces(storage::SessionStore& store, std::int
     return result;
 }
 
-PalpationReanalysis reanalysePalpation(storage::SessionStore& store, std::int64_t session,
+PalpationReanalysis reanalysePalpation(storage::SessionSource& store, std::int64_t session,
                                        const sensors::CompliancePairProfile& probe,
                                        const std::vector<calibration::CalibrationRecord>& calibrations)
 {

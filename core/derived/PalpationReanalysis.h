@@ -33,7 +33,7 @@ struct PalpationPresses {
 // Throws std::invalid_argument for channels the probe cannot read, a
 // session shorter than the first zero or with samples lost in it;
 // storage::StorageError.
-PalpationPresses readPalpationPresses(storage::SessionStore& store, std::int64_t session,
+PalpationPresses readPalpationPresses(storage::SessionSource& store, std::int64_t session,
                                       const sensors::CompliancePairProfile& probe,
                                       const std::vector<calibration::CalibrationRecord>& calibrations);
 
@@ -51,7 +51,7 @@ struct PalpationForceSamples {
     bool recordedZeros = false;
     double contactThreshold_n = 0.0;
 };
-PalpationForceSamples readPalpationForces(storage::SessionStore& store, std::int64_t session,
+PalpationForceSamples readPalpationForces(storage::SessionSource& store, std::int64_t session,
                                           const sensors::CompliancePairProfile& probe,
                                           const std::vector<calibration::CalibrationRecord>& calibrations);
 
@@ -64,7 +64,7 @@ struct PalpationReanalysis {
 // Each reading takes the site of the recorded reading it overlaps, else the
 // session's. Throws std::invalid_argument for a session that is not a
 // palpation one or channels the probe cannot read; storage::StorageError.
-PalpationReanalysis reanalysePalpation(storage::SessionStore& store, std::int64_t session,
+PalpationReanalysis reanalysePalpation(storage::SessionSource& store, std::int64_t session,
                                        const sensors::CompliancePairProfile& probe,
                                        const std::vector<calibration::CalibrationRecord>& calibrations);
 

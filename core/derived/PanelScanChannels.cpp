@@ -47,7 +47,7 @@ detector::DetectorParameters recordedDetectorParameters(const std::vector<storag
     return parameters;
 }
 
-PanelScanChannels::PanelScanChannels(storage::SessionStore& store, std::int64_t session)
+PanelScanChannels::PanelScanChannels(storage::SessionSource& store, std::int64_t session)
     : m_store(store),
       m_session(session)
 {

@@ -37,7 +37,7 @@ public:
     // Throws std::invalid_argument for a session that is not a panel scan
     // or whose channels or rate the detector cannot run on (the message says
     // which); storage::StorageError when the store cannot be read.
-    PanelScanChannels(storage::SessionStore& store, std::int64_t session);
+    PanelScanChannels(storage::SessionSource& store, std::int64_t session);
 
     // best_r, decision.
     std::vector<ChannelDescriptor> channels() const override;
@@ -53,7 +53,7 @@ public:
                                                  std::size_t points);
 
 private:
-    storage::SessionStore& m_store;
+    storage::SessionSource& m_store;
     std::int64_t m_session;
     std::uint64_t m_sampleCount = 0;
     std::vector<std::size_t> m_cantilevers;  // the strain channels, in probe order

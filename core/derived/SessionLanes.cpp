@@ -40,7 +40,7 @@ private:
 
 }  // namespace
 
-SessionLanes sessionLanes(storage::SessionStore& store, const storage::SessionSummary& session,
+SessionLanes sessionLanes(storage::SessionSource& store, const storage::SessionSummary& session,
                           const LaneOptions& options)
 {
     const bool raw = options.raw;
@@ -94,7 +94,7 @@ SessionLanes sessionLanes(storage::SessionStore& store, const storage::SessionSu
     return result;
 }
 
-std::unique_ptr<storage::ComputedColumns> computedColumns(storage::SessionStore& store,
+std::unique_ptr<storage::ComputedColumns> computedColumns(storage::SessionSource& store,
                                                           const storage::SessionSummary& session)
 {
     switch (session.metadata.mode) {

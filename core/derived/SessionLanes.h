@@ -35,13 +35,13 @@ struct LaneOptions {
 };
 
 // Throws storage::StorageError when the store cannot be read.
-SessionLanes sessionLanes(storage::SessionStore& store, const storage::SessionSummary& session,
+SessionLanes sessionLanes(storage::SessionSource& store, const storage::SessionSummary& session,
                           const LaneOptions& options = {});
 
 // The mode's physical quantities as export columns. Throws
 // std::invalid_argument saying why a session has none (e.g. a palpation
 // session without a profile).
-std::unique_ptr<storage::ComputedColumns> computedColumns(storage::SessionStore& store,
+std::unique_ptr<storage::ComputedColumns> computedColumns(storage::SessionSource& store,
                                                           const storage::SessionSummary& session);
 
 }  // namespace tactiscope::core::derived

@@ -5,7 +5,7 @@
 
 namespace tactiscope::core::derived {
 
-std::optional<detector::StretchDetection> detectStoredSession(storage::SessionStore& store, std::int64_t session,
+std::optional<detector::StretchDetection> detectStoredSession(storage::SessionSource& store, std::int64_t session,
                                                               std::span<const std::size_t> cantilevers,
                                                               const detector::StretchSettings& settings,
                                                               const DetectionProgress& progress)

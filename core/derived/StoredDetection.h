@@ -22,7 +22,7 @@ using DetectionProgress = std::function<bool(std::uint64_t done, std::uint64_t t
 // The events of `cantilevers` (channel indices, probe order) of `session`:
 // the same as detector::detectStretches over the whole channels. Nothing
 // when cancelled. Throws storage::StorageError, std::invalid_argument.
-std::optional<detector::StretchDetection> detectStoredSession(storage::SessionStore& store, std::int64_t session,
+std::optional<detector::StretchDetection> detectStoredSession(storage::SessionSource& store, std::int64_t session,
                                                               std::span<const std::size_t> cantilevers,
                                                               const detector::StretchSettings& settings,
                                                               const DetectionProgress& progress = {});

@@ -44,7 +44,7 @@ bool ReportData::wholeSession() const
     return from_s <= 0.0 && to_s >= session.duration_s();
 }
 
-std::optional<CapacitiveBasis> capacitiveBasis(storage::SessionStore& store, const storage::SessionSummary& session,
+std::optional<CapacitiveBasis> capacitiveBasis(storage::SessionSource& store, const storage::SessionSummary& session,
                                                std::uint64_t first, std::uint64_t end,
                                                const std::optional<calibration::CalibrationRecord>& calibration)
 {
@@ -63,7 +63,7 @@ std::optional<CapacitiveBasis> capacitiveBasis(storage::SessionStore& store, con
     }
 }
 
-ReportData gatherReport(storage::SessionStore& store, std::int64_t session, const ReportRequest& request,
+ReportData gatherReport(storage::SessionSource& store, std::int64_t session, const ReportRequest& request,
                         std::size_t overviewPoints)
 {
     const ReportRange& range = request.range;

@@ -67,14 +67,14 @@ struct ReportData {
 // The basis of a capacitive session's samples [first, end); none when the
 // session has no usable profile. Throws storage::StorageError.
 // `calibration`: another record than the recorded one (see CapacitiveChannels).
-std::optional<CapacitiveBasis> capacitiveBasis(storage::SessionStore& store, const storage::SessionSummary& session,
+std::optional<CapacitiveBasis> capacitiveBasis(storage::SessionSource& store, const storage::SessionSummary& session,
                                                std::uint64_t first, std::uint64_t end,
                                                const std::optional<calibration::CalibrationRecord>& calibration = {});
 
 // Throws storage::StorageError for an unknown session and
 // std::invalid_argument for a range outside the session or backwards, or an
 // analysis the session does not have (the message lists the ones it has).
-ReportData gatherReport(storage::SessionStore& store, std::int64_t session, const ReportRequest& request = {},
+ReportData gatherReport(storage::SessionSource& store, std::int64_t session, const ReportRequest& request = {},
                         std::size_t overviewPoints = 1000);
 
 }  // namespace tactiscope::core::report

@@ -24,12 +24,61 @@ double toDouble(float value)
     return static_cast<double>(value);
 }
 
+// The rows of table `lod` in a station's store.
+class StoreLodRows : public LodRows {
+public:
+    StoreLodRows(Database& db, std::int64_t session, std::int64_t channel)
+        : m_db(db),
+          m_session(session),
+          m_channel(channel)
+    {
+    }
+
+    std::uint64_t storedBuckets(int level) override
+    {
+        auto query = m_db.prepare("SELECT first_bucket + count FROM lod WHERE session_id = ? AND channel = ? AND "
+                                  "level = ? ORDER BY first_bucket DESC LIMIT 1");
+        query.bind(1, m_session).bind(2, m_channel).bind(3, std::int64_t{level});
+        return query.step() ? static_cast<std::uint64_t>(query.int64(0)) : 0;
+    }
+
+    void read(int level, std::uint64_t firstBucket, std::uint64_t endBucket, LodRowMap& rows) override
+    {
+        auto query = m_db.prepare("SELECT first_bucket, count, buckets FROM lod WHERE session_id = ? AND channel = ? "
+                                  "AND level = ? AND first_bucket >= ? AND first_bucket < ?");
+        query.bind(1, m_session)
+            .bind(2, m_channel)
+            .bind(3, std::int64_t{level})
+            .bind(4, static_cast<std::int64_t>(firstBucket))
+            .bind(5, static_cast<std::int64_t>(endBucket));
+        while (query.step()) {
+            const auto first = static_cast<std::uint64_t>(query.int64(0));
+            rows[{level, first}] = decodeBuckets(query.blob(2), static_cast<std::size_t>(query.int64(1)));
+        }
+    }
+
+private:
+    Database& m_db;
+    std::int64_t m_session;
+    std::int64_t m_channel;
+};
+
 }  // namespace
 
 LodTable::LodTable(Database& db, std::int64_t session, std::size_t channel, SampleReader samples)
-    : m_db(db),
+    : m_db(&db),
+      m_source(std::make_unique<StoreLodRows>(db, session, static_cast<std::int64_t>(channel))),
       m_session(session),
       m_channel(static_cast<std::int64_t>(channel)),
+      m_samples(std::move(samples))
+{
+}
+
+LodTable::LodTable(std::unique_ptr<LodRows> rows, std::int64_t session, SampleReader samples)
+    : m_db(nullptr),
+      m_source(std::move(rows)),
+      m_session(session),
+      m_channel(0),
       m_samples(std::move(samples))
 {
 }
@@ -37,28 +86,13 @@ LodTable::LodTable(Database& db, std::int64_t session, std::size_t channel, Samp
 std::uint64_t LodTable::storedBuckets(int level)
 {
     auto& stored = m_stored[static_cast<std::size_t>(level)];
-    if (!stored) {
-        auto query = m_db.prepare("SELECT first_bucket + count FROM lod WHERE session_id = ? AND channel = ? AND "
-                                  "level = ? ORDER BY first_bucket DESC LIMIT 1");
-        query.bind(1, m_session).bind(2, m_channel).bind(3, std::int64_t{level});
-        stored = query.step() ? static_cast<std::uint64_t>(query.int64(0)) : 0;
-    }
+    if (!stored) stored = m_source->storedBuckets(level);
     return *stored;
 }
 
 void LodTable::prefetch(int level, std::uint64_t firstBucket, std::uint64_t endBucket)
 {
-    auto query = m_db.prepare("SELECT first_bucket, count, buckets FROM lod WHERE session_id = ? AND channel = ? AND "
-                              "level = ? AND first_bucket >= ? AND first_bucket < ?");
-    query.bind(1, m_session)
-        .bind(2, m_channel)
-        .bind(3, std::int64_t{level})
-        .bind(4, static_cast<std::int64_t>(firstBucket / kBucketsPerRow * kBucketsPerRow))
-        .bind(5, static_cast<std::int64_t>(endBucket));
-    while (query.step()) {
-        const auto first = static_cast<std::uint64_t>(query.int64(0));
-        m_rows[{level, first}] = decodeBuckets(query.blob(2), static_cast<std::size_t>(query.int64(1)));
-    }
+    m_source->read(level, firstBucket / kBucketsPerRow * kBucketsPerRow, endBucket, m_rows);
 }
 
 const std::vector<MinMax>& LodTable::row(int level, std::uint64_t rowFirstBucket)
@@ -163,7 +197,8 @@ LodBuilder LodTable::builderAt(std::uint64_t sampleEnd)
 
 void LodTable::write(const std::vector<LodRow>& rows)
 {
-    auto insert = m_db.prepare("INSERT OR REPLACE INTO lod VALUES (?, ?, ?, ?, ?, ?)");
+    if (!m_db) throw StorageError("the min/max pyramid of session " + std::to_string(m_session) + " is read-only here");
+    auto insert = m_db->prepare("INSERT OR REPLACE INTO lod VALUES (?, ?, ?, ?, ?, ?)");
     for (const LodRow& r : rows) {
         insert.bind(1, m_session)
             .bind(2, m_channel)

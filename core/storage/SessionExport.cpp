@@ -26,7 +26,7 @@ std::string_view formatSample(double value, char (&buffer)[32])
     return {buffer, static_cast<std::size_t>(result.ptr - buffer)};
 }
 
-SessionSummary requireSession(SessionStore& store, std::int64_t session)
+SessionSummary requireSession(SessionSource& store, std::int64_t session)
 {
     auto summary = store.session(session);
     if (!summary) throw StorageError("there is no session " + std::to_string(session));
@@ -44,10 +44,10 @@ std::uint64_t endOf(const ExportRange& range, std::uint64_t total)
 // Calls row(index, window, s) for every stored sample (not in a gap) of the
 // range, in order; window[k][s] is the value of channel wanted[k], then of
 // each computed column.
-void forEachSample(SessionStore& store, std::int64_t session, const std::vector<std::size_t>& wanted,
+void forEachSample(SessionSource& store, std::int64_t session, const std::vector<std::size_t>& wanted,
                    const RowFunction& row, const ExportRange& range = {}, ComputedColumns* computed = nullptr)
 {
-    const ReadSnapshot snapshot(store.database());  // one consistent state, even while recording
+    const auto snapshot = store.snapshot();  // one consistent state, even while recording
     const std::uint64_t end = endOf(range, store.sampleCount(session));
     const auto gaps = store.gaps(session);
     auto gap = gaps.begin();
@@ -80,7 +80,7 @@ void optional(text::JsonWriter& json, const char* key, std::optional<double> val
 }
 
 // Events of every analysis, readings, annotations, the zeros and the verdict's trail.
-void writeRecords(text::JsonWriter& json, SessionStore& store, std::int64_t session)
+void writeRecords(text::JsonWriter& json, SessionSource& store, std::int64_t session)
 {
     json.key("events").beginArray();
     for (const auto& analysis : store.analyses(session)) {
@@ -150,12 +150,14 @@ void writeRecords(text::JsonWriter& json, SessionStore& store, std::int64_t sess
     json.endArray();
 }
 
-void writeMetadata(text::JsonWriter& json, SessionStore& store, std::int64_t session, const ExportRange& range)
+void writeMetadata(text::JsonWriter& json, SessionSource& store, std::int64_t session, const ExportRange& range)
 {
     const auto s = requireSession(store, session);
     const std::uint64_t total = store.sampleCount(session);
     json.key("session").beginObject();
-    json.key("id").value(static_cast<long long>(s.id));
+    // The id at the station that recorded it, wherever it is exported from,
+    // so a central store's export is the station's to the byte.
+    json.key("id").value(static_cast<long long>(s.stationId != 0 ? s.stationId : s.id));
     json.key("uuid").value(s.uuid);
     json.key("mode").value(toString(s.metadata.mode));
     json.key("subject").value(s.metadata.subject);
@@ -213,7 +215,7 @@ std::string csvHeader(const ChannelDescriptor& channel)
     return channel.name;
 }
 
-void writeSessionCsv(SessionStore& store, std::int64_t session, std::ostream& out, const ExportRange& range,
+void writeSessionCsv(SessionSource& store, std::int64_t session, std::ostream& out, const ExportRange& range,
                      ComputedColumns* computed)
 {
     requireSession(store, session);
@@ -240,7 +242,7 @@ void writeSessionCsv(SessionStore& store, std::int64_t session, std::ostream& ou
         range, computed);
 }
 
-void writeSessionMetadataJson(SessionStore& store, std::int64_t session, std::ostream& out, const ExportRange& range,
+void writeSessionMetadataJson(SessionSource& store, std::int64_t session, std::ostream& out, const ExportRange& range,
                               ComputedColumns* computed)
 {
     text::JsonWriter json;
@@ -263,7 +265,7 @@ void writeSessionMetadataJson(SessionStore& store, std::int64_t session, std::os
     out << json.str() << '\n';
 }
 
-void writeSessionJson(SessionStore& store, std::int64_t session, std::ostream& out)
+void writeSessionJson(SessionSource& store, std::int64_t session, std::ostream& out)
 {
     text::JsonWriter head;
     head.beginObject();
@@ -298,11 +300,12 @@ std::string metadataSidePath(const std::string& csvPath)
     return std::filesystem::path(csvPath).replace_extension(".meta.json").string();
 }
 
-void exportSession(SessionStore& store, std::int64_t session, ExportFormat format, const std::string& path,
+void exportSession(SessionSource& store, std::int64_t session, ExportFormat format, const std::string& path,
                    const ExportRange& range, ComputedColumns* computed)
 {
-    // The store is the one file an export must never replace.
-    const auto protectedFiles = storeFiles(store.database().path());
+    // The store is the one file an export must never replace (a central
+    // store's location names no file).
+    const auto protectedFiles = storeFiles(store.location());
     refuseOverwriting(path, protectedFiles);
     if (format == ExportFormat::Csv) refuseOverwriting(metadataSidePath(path), protectedFiles);
     if (format == ExportFormat::Json) {

@@ -47,11 +47,11 @@ public:
 // dimensionless channel is its name alone.
 std::string csvHeader(const ChannelDescriptor& channel);
 
-void writeSessionCsv(SessionStore& store, std::int64_t session, std::ostream& out, const ExportRange& range = {},
+void writeSessionCsv(SessionSource& store, std::int64_t session, std::ostream& out, const ExportRange& range = {},
                      ComputedColumns* computed = nullptr);
-void writeSessionMetadataJson(SessionStore& store, std::int64_t session, std::ostream& out,
+void writeSessionMetadataJson(SessionSource& store, std::int64_t session, std::ostream& out,
                               const ExportRange& range = {}, ComputedColumns* computed = nullptr);
-void writeSessionJson(SessionStore& store, std::int64_t session, std::ostream& out);
+void writeSessionJson(SessionSource& store, std::int64_t session, std::ostream& out);
 
 // The side file a CSV export's metadata goes to (and an import reads it
 // from): X.csv → X.meta.json.
@@ -65,7 +65,7 @@ enum class ExportFormat { Csv, Json };
 // StorageError ("cannot write P", "writing P failed (disk full?)").
 // The range and computed columns apply to CSV only; JSON is always the
 // whole session as stored.
-void exportSession(SessionStore& store, std::int64_t session, ExportFormat format, const std::string& path,
+void exportSession(SessionSource& store, std::int64_t session, ExportFormat format, const std::string& path,
                    const ExportRange& range = {}, ComputedColumns* computed = nullptr);
 
 }  // namespace tactiscope::core::storage

@@ -118,6 +118,26 @@ SessionStore::SessionStore(const std::string& path, Database::Access access)
     if (const auto lock = RecorderLock::tryAcquire(path)) markCrashedSessionsInterrupted();
 }
 
+namespace {
+
+class StoreSnapshot : public SessionSource::Snapshot {
+public:
+    explicit StoreSnapshot(Database& db)
+        : m_snapshot(db)
+    {
+    }
+
+private:
+    ReadSnapshot m_snapshot;
+};
+
+}  // namespace
+
+std::unique_ptr<SessionSource::Snapshot> SessionStore::snapshot()
+{
+    return std::make_unique<StoreSnapshot>(m_db);
+}
+
 void SessionStore::deleteSession(std::int64_t session)
 {
     const auto summary = this->session(session);
@@ -438,14 +458,6 @@ void SessionStore::checkSampleEnd(std::int64_t session, std::size_t channelCount
                            " samples read at once, more than a computer holds; the store is damaged");
 }
 
-std::vector<double> SessionStore::readChannel(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,
-                                              std::uint64_t count)
-{
-    std::vector<std::vector<double>> out(1);
-    readChannels(session, std::span(&channel, 1), firstIndex, count, out);
-    return std::move(out.front());
-}
-
 std::size_t SessionStore::readChannels(std::int64_t session, std::span<const std::size_t> channels,
                                        std::uint64_t firstIndex, std::uint64_t count,
                                        std::vector<std::vector<double>>& out)
@@ -483,6 +495,26 @@ std::size_t SessionStore::readChannels(std::int64_t session, std::span<const std
         ++m_chunksRead;
     }
     return n;
+}
+
+void SessionStore::forEachChunk(std::int64_t session, const std::function<void(const RawChunk&)>& visit)
+{
+    auto query = m_db.prepare(
+        "SELECT first_index, first_time_s, count, samples FROM chunks WHERE session_id = ? ORDER BY first_index");
+    query.bind(1, session);
+    while (query.step())
+        visit({static_cast<std::uint64_t>(query.int64(0)), query.real(1), static_cast<std::uint64_t>(query.int64(2)),
+               query.blob(3)});
+}
+
+void SessionStore::forEachLodRow(std::int64_t session, const std::function<void(const RawLodRow&)>& visit)
+{
+    auto query = m_db.prepare("SELECT channel, level, first_bucket, count, buckets FROM lod WHERE session_id = ? "
+                              "ORDER BY channel, level, first_bucket");
+    query.bind(1, session);
+    while (query.step())
+        visit({query.int64(0), query.int64(1), static_cast<std::uint64_t>(query.int64(2)),
+               static_cast<std::uint64_t>(query.int64(3)), query.blob(4)});
 }
 
 std::vector<OverviewPoint> SessionStore::overview(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,

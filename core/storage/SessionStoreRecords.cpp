@@ -248,14 +248,6 @@ std::vector<StoredCalibration> SessionStore::calibrations(const std::string& sen
     return result;
 }
 
-std::optional<StoredCalibration> SessionStore::newestCalibration(std::string_view kind, const std::string& sensor)
-{
-    auto all = calibrations(sensor);
-    for (auto it = all.rbegin(); it != all.rend(); ++it)
-        if (it->record.kind == kind) return std::move(*it);
-    return std::nullopt;
-}
-
 std::optional<StoredCalibration> newestCalibrationIn(const std::string& path, std::string_view kind,
                                                      const std::string& sensor)
 {

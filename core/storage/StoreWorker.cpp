@@ -1,7 +1,7 @@
 // StoreWorker: a job queue drained by one thread that owns the connection.
 #include "core/storage/StoreWorker.h"
 
-#include "core/storage/SessionStore.h"
+#include "core/storage/OpenSessionSource.h"
 
 #include <exception>
 #include <filesystem>
@@ -46,10 +46,12 @@ void StoreWorker::run(const std::stop_token& stop)
         try {
             if (!m_store) {
                 // A first write may come before any session: the folder too.
-                const auto folder = std::filesystem::absolute(m_path).parent_path();
-                std::error_code ignored;
-                std::filesystem::create_directories(folder, ignored);
-                m_store = std::make_unique<SessionStore>(m_path);
+                if (!isCentralStoreAddress(m_path)) {
+                    const auto folder = std::filesystem::absolute(m_path).parent_path();
+                    std::error_code ignored;
+                    std::filesystem::create_directories(folder, ignored);
+                }
+                m_store = openSessionSource(m_path);
             }
             next.first(*m_store);
         } catch (const std::exception& e) {

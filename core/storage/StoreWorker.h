@@ -1,5 +1,6 @@
-// One long-lived connection to a session store on a thread of its own, for
-// a window that must never wait on SQLite: jobs are queued, run in order on
+// One long-lived connection to a session store (a station's file or a
+// central store, see openSessionSource) on a thread of its own, for a
+// window that must never wait on it: jobs are queued, run in order on
 // the worker with the same connection, and report back through callbacks
 // the caller posts to its own thread. The connection is opened read-write
 // on the first job (migrating the file once, not per action) and opened
@@ -16,11 +17,11 @@
 
 namespace tactiscope::core::storage {
 
-class SessionStore;
+class SessionSource;
 
 class StoreWorker {
 public:
-    using Job = std::function<void(SessionStore&)>;
+    using Job = std::function<void(SessionSource&)>;
     using Failure = std::function<void(const std::string& error)>;
 
     explicit StoreWorker(std::string path);
@@ -38,7 +39,7 @@ private:
     void run(const std::stop_token& stop);
 
     const std::string m_path;
-    std::unique_ptr<SessionStore> m_store;  // the worker's only
+    std::unique_ptr<SessionSource> m_store;  // the worker's only
     std::mutex m_mutex;
     std::condition_variable_any m_wake;
     std::deque<std::pair<Job, Failure>> m_jobs;

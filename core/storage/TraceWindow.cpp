@@ -17,7 +17,7 @@ long long TraceWindow::nearest(double time_s) const
     return (time_s - *before <= *after - time_s) ? before - t_s.begin() : after - t_s.begin();
 }
 
-TraceWindow readTraceWindow(SessionStore& store, std::int64_t session, std::size_t channel, double sampleRate_hz,
+TraceWindow readTraceWindow(SessionSource& store, std::int64_t session, std::size_t channel, double sampleRate_hz,
                             std::uint64_t sampleCount, double from_s, double to_s, std::size_t pixels)
 {
     StoredLane lane(store, session, channel, {});

@@ -5,7 +5,7 @@
 // the whole of an hour-long session costs about one read per pixel.
 #pragma once
 
-#include "core/storage/SessionStore.h"
+#include "core/storage/SessionSource.h"
 
 #include <cstdint>
 #include <optional>
@@ -47,7 +47,7 @@ public:
 // A stored channel as a lane.
 class StoredLane final : public LaneSource {
 public:
-    StoredLane(SessionStore& store, std::int64_t session, std::size_t channel, ChannelDescriptor descriptor)
+    StoredLane(SessionSource& store, std::int64_t session, std::size_t channel, ChannelDescriptor descriptor)
         : m_store(store),
           m_session(session),
           m_channel(channel),
@@ -65,7 +65,7 @@ public:
     }
 
 private:
-    SessionStore& m_store;
+    SessionSource& m_store;
     std::int64_t m_session;
     std::size_t m_channel;
     ChannelDescriptor m_descriptor;
@@ -77,7 +77,7 @@ private:
 TraceWindow readTraceWindow(LaneSource& lane, double sampleRate_hz, std::uint64_t sampleCount, double from_s,
                             double to_s, std::size_t pixels);
 // The same for stored channel `channel`.
-TraceWindow readTraceWindow(SessionStore& store, std::int64_t session, std::size_t channel, double sampleRate_hz,
+TraceWindow readTraceWindow(SessionSource& store, std::int64_t session, std::size_t channel, double sampleRate_hz,
                             std::uint64_t sampleCount, double from_s, double to_s, std::size_t pixels);
 
 }  // namespace tactiscope::core::storage

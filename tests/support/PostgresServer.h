@@ -22,6 +22,9 @@ public:
     // superuser, who owns the cluster, by default).
     std::string conninfo(const std::string& user = kOwner, const std::string& dbname = "postgres") const;
 
+    // The folder of its unix socket (a connection's host).
+    std::string folder() const { return m_folder.string(); }
+
     static constexpr const char* kOwner = "tactiscope_owner";
 
 private:

@@ -376,7 +376,7 @@ void CalibrationWizard::accept()
     recheck(ResultPage);
     const QString sensor = QString::fromStdString(made.sensorName);
     runOnStore(
-        *m_context.store, this, [made](core::storage::SessionStore& store) { return store.addCalibration(made); },
+        *m_context.store, this, [made](core::storage::SessionSource& store) { return store.addCalibration(made); },
         [this, sensor](std::int64_t id) { stored(id, sensor); },
         [this](const QString& error) {
             m_storing = false;

@@ -9,7 +9,7 @@
 
 namespace tactiscope::ui {
 
-QString analysisNameProblem(core::storage::SessionStore& store, std::int64_t session, const QString& name)
+QString analysisNameProblem(core::storage::SessionSource& store, std::int64_t session, const QString& name)
 {
     const QString trimmed = name.trimmed();
     if (trimmed.isEmpty() || trimmed == QLatin1String(core::storage::kLiveAnalysis))

@@ -16,7 +16,7 @@ namespace tactiscope::ui {
 
 // Why `name` cannot name a new analysis of `session`, or empty when it can.
 // Throws core::storage::StorageError when the store cannot be read.
-QString analysisNameProblem(core::storage::SessionStore& store, std::int64_t session, const QString& name);
+QString analysisNameProblem(core::storage::SessionSource& store, std::int64_t session, const QString& name);
 
 // Asks for a name without blocking; `save` is called with it when given.
 // `kept` says what stays as it is ("the recorded events").

@@ -26,7 +26,7 @@ void addProfile(std::vector<core::sensors::CompliancePairProfile>& profiles,
 
 }  // namespace
 
-PalpationReanalysisBox::PalpationReanalysisBox(core::storage::SessionStore& store,
+PalpationReanalysisBox::PalpationReanalysisBox(core::storage::SessionSource& store,
                                                const core::storage::SessionSummary& session, QWidget* parent)
     : QWidget(parent),
       m_store(store),

@@ -28,7 +28,7 @@ class PalpationReanalysisBox : public QWidget {
 public:
     enum class GaugeFactors { AsRecorded, NewestInStore, Nominal };
 
-    PalpationReanalysisBox(core::storage::SessionStore& store, const core::storage::SessionSummary& session,
+    PalpationReanalysisBox(core::storage::SessionSource& store, const core::storage::SessionSummary& session,
                            QWidget* parent);
 
     QComboBox* profileBox() const { return m_profile; }
@@ -49,7 +49,7 @@ private:
                                                                       GaugeFactors choice);
     void askNameAndSave();
 
-    core::storage::SessionStore& m_store;
+    core::storage::SessionSource& m_store;
     core::storage::SessionSummary m_session;
     std::vector<core::sensors::CompliancePairProfile> m_profiles;  // in the box's order, the session's first
     QComboBox* m_profile;

@@ -32,7 +32,7 @@ QTreeWidget* list(const QStringList& headers, const QString& name, QWidget* pare
 
 }  // namespace
 
-PressesPanel::PressesPanel(core::storage::SessionStore& store, const core::storage::SessionSummary& session,
+PressesPanel::PressesPanel(core::storage::SessionSource& store, const core::storage::SessionSummary& session,
                            QWidget* parent)
     : QGroupBox(tr("Presses"), parent),
       m_presses(list({tr("Time (s)"), tr("Source"), tr("Site"), tr("kₒ ± u (N/m)"), tr("Depth (mm)")},

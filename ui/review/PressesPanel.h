@@ -26,7 +26,7 @@ class PressesPanel : public QGroupBox {
 
 public:
     // The store and session are the review window's; the re-analysis reads them.
-    PressesPanel(core::storage::SessionStore& store, const core::storage::SessionSummary& session, QWidget* parent);
+    PressesPanel(core::storage::SessionSource& store, const core::storage::SessionSummary& session, QWidget* parent);
 
     // Presses read by something else than the recording, listed beside its own.
     struct Source {

@@ -1,6 +1,8 @@
 // ReanalysisPanel: detector parameters, the worker run, saving the result.
 #include "ui/review/ReanalysisPanel.h"
 
+#include "core/storage/OpenSessionSource.h"
+
 #include "ui/review/AnalysisName.h"
 
 #include "core/derived/StoredDetection.h"
@@ -52,7 +54,7 @@ QString samplesText(std::size_t samples)
 
 }  // namespace
 
-ReanalysisPanel::ReanalysisPanel(const QString& storePath, core::storage::SessionStore& store,
+ReanalysisPanel::ReanalysisPanel(const QString& storePath, core::storage::SessionSource& store,
                                  const core::storage::SessionSummary& session, QWidget* parent)
     : QGroupBox(tr("Re-analysis: surface-deflection detector (seed 000)"), parent),
       m_storePath(storePath),
@@ -192,9 +194,9 @@ bool ReanalysisPanel::run()
         Outcome outcome;
         const auto started = std::chrono::steady_clock::now();
         try {
-            core::storage::SessionStore store(path, core::storage::Database::Access::ReadOnly);
+            const auto store = core::storage::openSessionSource(path, core::storage::Database::Access::ReadOnly);
             outcome.detection = core::derived::detectStoredSession(
-                store, id, cantilevers, settings, [this, &stop](std::uint64_t done, std::uint64_t total) {
+                *store, id, cantilevers, settings, [this, &stop](std::uint64_t done, std::uint64_t total) {
                     QMetaObject::invokeMethod(
                         this, [this, done, total] { showProgress(done, total); }, Qt::QueuedConnection);
                     return !stop.stop_requested();

@@ -33,7 +33,7 @@ class ReanalysisPanel : public QGroupBox {
 
 public:
     // The store is the review window's (for saving); the worker opens its own.
-    ReanalysisPanel(const QString& storePath, core::storage::SessionStore& store,
+    ReanalysisPanel(const QString& storePath, core::storage::SessionSource& store,
                     const core::storage::SessionSummary& session, QWidget* parent);
     ~ReanalysisPanel() override;
 
@@ -72,7 +72,7 @@ private:
     void parametersChanged();
 
     QString m_storePath;
-    core::storage::SessionStore& m_store;
+    core::storage::SessionSource& m_store;
     core::storage::SessionSummary m_session;
     std::vector<std::size_t> m_cantilevers;  // the strain channels, in probe order
     QDoubleSpinBox* m_lagStart;

@@ -40,7 +40,7 @@ QString valueText(double value, const DisplayUnit& unit, double magnitude)
 
 }  // namespace
 
-ReviewPlot::ReviewPlot(core::storage::SessionStore& store, const core::storage::SessionSummary& session,
+ReviewPlot::ReviewPlot(core::storage::SessionSource& store, const core::storage::SessionSummary& session,
                        const core::derived::LaneOptions& options, QWidget* parent)
     : QWidget(parent),
       m_store(store),

@@ -51,7 +51,7 @@ public:
     // The store must outlive the plot. `options`: the stored channels as
     // they are instead of the mode's physical quantities, or another
     // calibration to compute them through.
-    ReviewPlot(core::storage::SessionStore& store, const core::storage::SessionSummary& session,
+    ReviewPlot(core::storage::SessionSource& store, const core::storage::SessionSummary& session,
                const core::derived::LaneOptions& options, QWidget* parent);
     // What the derived lanes were computed with, or why there are none
     // (empty for a mode without them).
@@ -100,7 +100,7 @@ private:
     std::vector<QCPItemStraightLine*> makeLines(const QPen& pen);
     DisplayUnit unitOf(std::size_t lane) const;
 
-    core::storage::SessionStore& m_store;
+    core::storage::SessionSource& m_store;
     core::storage::SessionSummary m_session;
     core::derived::SessionLanes m_lanes;
     double m_duration_s = 0.0;

@@ -1,6 +1,8 @@
 // ReviewWindow: header, plot, record list, notes, replay, re-analysis and exports.
 #include "ui/review/ReviewWindow.h"
 
+#include "core/storage/OpenSessionSource.h"
+
 #include "ui/NumberText.h"
 #include "ui/ProblemReport.h"
 #include "ui/VerdictDialog.h"
@@ -70,7 +72,7 @@ public:
     }
 };
 
-using core::storage::SessionStore;
+using core::storage::SessionSource;
 
 const QColor kAThenB(217, 95, 2, 170);
 const QColor kBThenA(117, 112, 179, 170);
@@ -146,12 +148,13 @@ struct Entry {
 ReviewWindow* ReviewWindow::open(const QString& storePath, std::int64_t session, QWidget* parent, QString& error)
 {
     try {
-        std::unique_ptr<SessionStore> store;
+        std::unique_ptr<SessionSource> store;
         try {
-            store = std::make_unique<SessionStore>(storePath.toStdString());
+            store = core::storage::openSessionSource(storePath.toStdString());
         } catch (const core::storage::StorageError&) {
             // A store on read-only media can still be reviewed; saving notes then says why it cannot.
-            store = std::make_unique<SessionStore>(storePath.toStdString(), core::storage::Database::Access::ReadOnly);
+            store =
+                core::storage::openSessionSource(storePath.toStdString(), core::storage::Database::Access::ReadOnly);
         }
         auto summary = store->session(session);
         if (!summary) {
@@ -169,9 +172,10 @@ ReviewWindow* ReviewWindow::open(const QString& storePath, std::int64_t session,
     }
 }
 
-ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionStore> store,
+ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionSource> store,
                            core::storage::SessionSummary session, QWidget* parent)
     : QMainWindow(parent),
+      m_storePath(storePath),
       m_store(std::move(store)),
       m_session(std::move(session))
 {
@@ -254,7 +258,12 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionStor
     }
     createActions();
     refreshRecords();
-    statusBar()->showMessage(tr("Session %1 of %2").arg(m_session.id).arg(QFileInfo(storePath).fileName()));
+    if (m_session.station.empty())
+        statusBar()->showMessage(tr("Session %1 of %2").arg(m_session.id).arg(QFileInfo(storePath).fileName()));
+    else
+        statusBar()->showMessage(tr("Session %1 of station %2, from the central store (%3)")
+                                     .arg(m_session.stationId)
+                                     .arg(text(m_session.station), text(m_store->location())));
 }
 
 ReviewWindow::~ReviewWindow() = default;
@@ -773,7 +782,7 @@ void ReviewWindow::advanceReplay()
 QString ReviewWindow::exportReport(const QString& pdfPath)
 {
     try {
-        core::storage::refuseOverwriting(pdfPath.toStdString(), core::storage::storeFiles(m_store->database().path()));
+        core::storage::refuseOverwriting(pdfPath.toStdString(), core::storage::storeFiles(m_store->location()));
         const auto report = core::report::gatherReport(*m_store, m_session.id);
         const int pages = writeReportPdf(report, pdfPath);
         statusBar()->showMessage(tr("Report saved to %1 (%2 pages).").arg(pdfPath).arg(pages));

@@ -47,11 +47,12 @@ public:
     ~ReviewWindow() override;
 
     std::int64_t sessionId() const { return m_session.id; }
+    const QString& storePath() const { return m_storePath; }  // a file or a central store's connection string
     ReviewPlot* plot() const { return m_plot; }
     ReanalysisPanel* reanalysis() const { return m_reanalysis; }  // null unless panel-scan
     PressesPanel* presses() const { return m_presses; }           // null unless palpation
     QTreeWidget* recordList() const { return m_list; }
-    core::storage::SessionStore& store() { return *m_store; }
+    core::storage::SessionSource& store() { return *m_store; }
 
     // Notes: at the pinned cursor (else the middle of the view), asked
     // for without blocking; edited and deleted from the list.
@@ -85,7 +86,7 @@ public:
     QString savePlot(const QString& imagePath);
 
 private:
-    ReviewWindow(const QString& storePath, std::unique_ptr<core::storage::SessionStore> store,
+    ReviewWindow(const QString& storePath, std::unique_ptr<core::storage::SessionSource> store,
                  core::storage::SessionSummary session, QWidget* parent);
     void createActions();
     void refreshRecords();
@@ -104,7 +105,8 @@ private:
     // reason shown) when none was typed.
     QString author();
 
-    std::unique_ptr<core::storage::SessionStore> m_store;
+    QString m_storePath;
+    std::unique_ptr<core::storage::SessionSource> m_store;
     core::storage::SessionSummary m_session;
     ReviewPlot* m_plot = nullptr;
     QTreeWidget* m_list = nullptr;

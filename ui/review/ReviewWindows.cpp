@@ -1,6 +1,7 @@
 // ReviewWindows: the browser, the review windows and the interrupted report.
 #include "ui/review/ReviewWindows.h"
 
+#include "core/storage/StoreWorker.h"
 #include "ui/InterruptedSessionsReport.h"
 #include "ui/ProblemReport.h"
 #include "ui/StoreJobs.h"
@@ -37,10 +38,8 @@ SessionBrowser* ReviewWindows::showBrowser()
         connect(m_browser, &SessionBrowser::openSessions, this, &ReviewWindows::review);
         // A deleted session's review window would have nothing left to show:
         // it closes before its samples go.
-        connect(m_browser, &SessionBrowser::deletingSessions, this, [this](const std::vector<std::int64_t>& ids) {
-            for (ReviewWindow* window : m_owner->findChildren<ReviewWindow*>())
-                if (std::ranges::find(ids, window->sessionId()) != ids.end()) window->close();
-        });
+        connect(m_browser, &SessionBrowser::deletingSessions, this,
+                [this](const std::vector<std::int64_t>& ids) { closeReviews(m_storePath, ids); });
     }
     m_browser->show();
     m_browser->raise();
@@ -48,15 +47,50 @@ SessionBrowser* ReviewWindows::showBrowser()
     return m_browser;
 }
 
+SessionBrowser* ReviewWindows::showCentralBrowser(const QString& conninfo)
+{
+    // Another server's browser goes: one central browser at a time.
+    if (SessionBrowser* open = m_centralBrowser.data(); open != nullptr && open->storePath() != conninfo) {
+        open->close();
+        m_centralBrowser = nullptr;
+    }
+    if (!m_centralBrowser) {
+        m_centralBrowser =
+            new SessionBrowser(std::make_shared<core::storage::StoreWorker>(conninfo.toStdString()), m_owner);
+        m_centralBrowser->setAttribute(Qt::WA_DeleteOnClose);
+        connect(m_centralBrowser, &SessionBrowser::openSessions, this,
+                [this, conninfo](const std::vector<std::int64_t>& ids) { reviewIn(conninfo, ids); });
+        connect(m_centralBrowser, &SessionBrowser::deletingSessions, this,
+                [this, conninfo](const std::vector<std::int64_t>& ids) { closeReviews(conninfo, ids); });
+    }
+    m_centralBrowser->show();
+    m_centralBrowser->raise();
+    m_centralBrowser->activateWindow();
+    return m_centralBrowser;
+}
+
+void ReviewWindows::closeReviews(const QString& storePath, const std::vector<std::int64_t>& sessions)
+{
+    for (ReviewWindow* window : m_owner->findChildren<ReviewWindow*>())
+        if (window->storePath() == storePath && std::ranges::find(sessions, window->sessionId()) != sessions.end())
+            window->close();
+}
+
 void ReviewWindows::review(const std::vector<std::int64_t>& sessions)
+{
+    reviewIn(m_storePath, sessions);
+}
+
+void ReviewWindows::reviewIn(const QString& storePath, const std::vector<std::int64_t>& sessions)
 {
     QStringList problems;
     for (const std::int64_t id : sessions) {
         const auto windows = m_owner->findChildren<ReviewWindow*>();
-        const auto open = std::ranges::find(windows, id, &ReviewWindow::sessionId);
+        const auto open = std::ranges::find_if(
+            windows, [&](const ReviewWindow* w) { return w->storePath() == storePath && w->sessionId() == id; });
         ReviewWindow* window = open != windows.end() ? *open : nullptr;
         QString error;
-        if (!window) window = ReviewWindow::open(m_storePath, id, m_owner, error);
+        if (!window) window = ReviewWindow::open(storePath, id, m_owner, error);
         if (!window) {
             problems << error;
             continue;
@@ -80,7 +114,7 @@ void ReviewWindows::checkStore()
     const std::int64_t reported = QSettings().value(key, 0).toLongLong();
     runOnStore(
         *m_store, this,
-        [reported](core::storage::SessionStore& store) {
+        [reported](core::storage::SessionSource& store) {
             store.refuseIfDamaged();
             return interruptedSessionsAfter(store, reported);
         },

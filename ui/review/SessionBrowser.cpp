@@ -1,5 +1,6 @@
 // SessionBrowser: filters, table, open and delete.
 #include "ui/review/SessionBrowser.h"
+#include "core/storage/OpenSessionSource.h"
 #include "ui/ProblemReport.h"
 #include "ui/StoreJobs.h"
 #include "ui/VocabularyText.h"
@@ -29,7 +30,7 @@
 namespace tactiscope::ui {
 namespace {
 
-using core::storage::SessionStore;
+using core::storage::SessionSource;
 
 const QDate kAnyDate(2000, 1, 1);  // the date edits' "any" value
 
@@ -69,6 +70,7 @@ SessionBrowser::SessionBrowser(std::shared_ptr<core::storage::StoreWorker> store
     : QDialog(parent),
       m_store(std::move(store)),
       m_storePath(QString::fromStdString(m_store->path())),
+      m_central(core::storage::isCentralStoreAddress(m_store->path())),
       m_model(new SessionTableModel(this)),
       m_sorted(new QSortFilterProxyModel(this)),
       m_table(new QTableView(this)),
@@ -83,7 +85,8 @@ SessionBrowser::SessionBrowser(std::shared_ptr<core::storage::StoreWorker> store
       m_open(new QPushButton(tr("&Open for review"), this)),
       m_delete(new QPushButton(tr("&Delete…"), this))
 {
-    setWindowTitle(tr("Sessions — %1").arg(QFileInfo(m_storePath).fileName()));
+    setWindowTitle(m_central ? tr("Sessions — central store")
+                             : tr("Sessions — %1").arg(QFileInfo(m_storePath).fileName()));
     setObjectName(QStringLiteral("sessionBrowser"));
     m_table->setObjectName(QStringLiteral("sessionTable"));
     m_search->setObjectName(QStringLiteral("searchEdit"));
@@ -120,6 +123,9 @@ SessionBrowser::SessionBrowser(std::shared_ptr<core::storage::StoreWorker> store
     m_table->horizontalHeader()->setStretchLastSection(false);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setSectionResizeMode(SessionTableModel::Subject, QHeaderView::Stretch);
+    // Where each session was recorded: only a central store holds several stations.
+    m_table->setColumnHidden(SessionTableModel::Station, !m_central);
+    m_table->horizontalHeader()->moveSection(SessionTableModel::Station, 1);
 
     auto* filters = new QHBoxLayout;
     filters->addWidget(m_search, 3);
@@ -174,7 +180,7 @@ void SessionBrowser::reload()
     m_problem->hide();
     std::vector<core::storage::SessionSummary> shown;
     std::size_t total = 0;
-    if (!QFileInfo::exists(m_storePath)) {
+    if (!m_central && !QFileInfo::exists(m_storePath)) {
         m_problem->setText(tr("No session has been recorded into %1 yet.").arg(m_storePath));
         m_problem->show();
     } else {
@@ -186,14 +192,15 @@ void SessionBrowser::reload()
         if (m_from->date() != kAnyDate) filter.startedFrom = utcStartOf(m_from->date());
         if (m_to->date() != kAnyDate) filter.startedBefore = utcStartOf(m_to->date().addDays(1));
         try {
-            SessionStore store(m_storePath.toStdString(), core::storage::Database::Access::ReadOnly);
-            const auto all = store.sessions();
+            const auto store =
+                core::storage::openSessionSource(m_storePath.toStdString(), core::storage::Database::Access::ReadOnly);
+            const auto all = store->sessions();
             total = all.size();
             QStringList verdicts;
             for (const auto& s : all)
                 if (s.verdict) verdicts << wordText(s.verdict);
             fillChoices(m_verdict, verdicts);
-            shown = store.sessions(filter);
+            shown = store->sessions(filter);
         } catch (const core::storage::StorageError& e) {
             showProblem(tr("The store cannot be read: %1").arg(QString::fromStdString(e.what())));
         }
@@ -281,7 +288,7 @@ void SessionBrowser::deleteSessions(const std::vector<std::int64_t>& sessions)
     };
     runOnStore(
         *m_store, this,
-        [sessions](SessionStore& store) {
+        [sessions](SessionSource& store) {
             Outcome outcome;
             for (const std::int64_t id : sessions) {
                 try {

@@ -47,6 +47,7 @@ public:
     // are deleted, sessionsDeleted is emitted and the list reloaded.
     void deleteSelected();
     QTableView* table() const { return m_table; }
+    const QString& storePath() const { return m_storePath; }
 
 signals:
     void openSessions(const std::vector<std::int64_t>& sessions);
@@ -62,6 +63,7 @@ private:
 
     std::shared_ptr<core::storage::StoreWorker> m_store;
     QString m_storePath;
+    bool m_central;  // a site's central store, not this station's file
     bool m_deleting = false;
     SessionTableModel* m_model;
     QSortFilterProxyModel* m_sorted;

@@ -97,6 +97,8 @@ QVariant SessionTableModel::data(const QModelIndex& index, int role) const
         return wordText(s->verdict);
     case Events:
         return QVariant::fromValue<qulonglong>(s->eventCount);
+    case Station:
+        return text(s->station);
     default:
         return {};
     }
@@ -122,6 +124,8 @@ QVariant SessionTableModel::headerData(int section, Qt::Orientation orientation,
         return tr("Verdict");
     case Events:
         return tr("Events");
+    case Station:
+        return tr("Station");
     default:
         return {};
     }

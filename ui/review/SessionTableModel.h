@@ -1,10 +1,10 @@
 // The sessions of a store as a table: date, mode, subject, operator,
-// duration, status, verdict and event count. Each cell also gives a sort
+// duration, status, verdict, event count and (on a central store) station. Each cell also gives a sort
 // key (Qt::UserRole) so a proxy sorts dates and durations as numbers, not
 // as text; interrupted sessions are marked with an icon and a colour.
 #pragma once
 
-#include "core/storage/SessionStore.h"
+#include "core/storage/SessionSource.h"
 
 #include <QAbstractTableModel>
 
@@ -17,7 +17,7 @@ class SessionTableModel : public QAbstractTableModel {
     Q_OBJECT
 
 public:
-    enum Column { Started, Mode, Subject, Operator, Duration, Status, Verdict, Events, ColumnCount };
+    enum Column { Started, Mode, Subject, Operator, Duration, Status, Verdict, Events, Station, ColumnCount };
     static constexpr int kSortRole = Qt::UserRole;
     static constexpr int kIdRole = Qt::UserRole + 1;
 

@@ -22,6 +22,7 @@ CREATE TABLE IF NOT EXISTS sessions (
     id                BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY,
     uuid              TEXT NOT NULL UNIQUE,
     station           TEXT NOT NULL DEFAULT current_user,
+    station_id        BIGINT NOT NULL DEFAULT 0,
     complete          BOOLEAN NOT NULL DEFAULT false,
     checksum          TEXT NOT NULL DEFAULT '',
     mode              TEXT NOT NULL CHECK (mode IN ('panel-scan', 'palpation', 'capacitive')),
@@ -40,6 +41,8 @@ CREATE TABLE IF NOT EXISTS sessions (
     calibrations_json TEXT NOT NULL DEFAULT '',
     app_version       TEXT NOT NULL
 );
+-- Schema 2: the session's id in its station's store.
+ALTER TABLE sessions ADD COLUMN IF NOT EXISTS station_id BIGINT NOT NULL DEFAULT 0;
 CREATE INDEX IF NOT EXISTS sessions_started ON sessions (started_utc);
 CREATE INDEX IF NOT EXISTS sessions_by_station ON sessions (station, started_utc);
 

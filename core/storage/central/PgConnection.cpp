@@ -3,20 +3,92 @@
 
 #include <libpq-fe.h>
 
+#include <bit>
+#include <charconv>
+
 namespace tactiscope::core::storage::central {
 namespace {
 
-// libpq's messages end in a newline; a user reads one line.
+// libpq's messages span lines (and indent their hints); a user reads one
+// line, with single spaces.
 std::string oneLine(const char* message)
 {
-    std::string text = message ? message : "";
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-    for (char& c : text)
-        if (c == '\n') c = ' ';
+    std::string text;
+    for (const char* c = message ? message : ""; *c; ++c) {
+        const bool space = *c == ' ' || *c == '\n' || *c == '\t';
+        if (!space)
+            text += *c;
+        else if (!text.empty() && text.back() != ' ')
+            text += ' ';
+    }
+    if (!text.empty() && text.back() == ' ') text.pop_back();
     return text;
 }
 
+// Binary results are in network order (big-endian).
+std::uint64_t bigEndian(const char* bytes, int length)
+{
+    std::uint64_t value = 0;
+    for (int i = 0; i < length; ++i) value = value << 8 | static_cast<std::uint8_t>(bytes[i]);
+    return value;
+}
+
+std::string exactText(double value)
+{
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+    return std::string(text, end);
+}
+
 }  // namespace
+
+PgParams::PgParams(std::initializer_list<std::optional<std::string>> texts)
+    : PgParams(std::vector<std::optional<std::string>>(texts))
+{
+}
+
+PgParams::PgParams(const std::vector<std::optional<std::string>>& texts)
+{
+    for (const auto& t : texts) t ? text(*t) : null();
+}
+
+PgParams& PgParams::text(std::string value)
+{
+    m_bytesHeld += value.size();
+    m_values.emplace_back(std::move(value));
+    m_formats.push_back(0);
+    return *this;
+}
+
+PgParams& PgParams::int64(std::int64_t value)
+{
+    return text(std::to_string(value));
+}
+
+PgParams& PgParams::real(double value)
+{
+    return text(exactText(value));
+}
+
+PgParams& PgParams::optionalReal(std::optional<double> value)
+{
+    return value ? real(*value) : null();
+}
+
+PgParams& PgParams::bytes(std::span<const std::uint8_t> value)
+{
+    m_bytesHeld += value.size();
+    m_values.emplace_back(std::string(reinterpret_cast<const char*>(value.data()), value.size()));
+    m_formats.push_back(1);
+    return *this;
+}
+
+PgParams& PgParams::null()
+{
+    m_values.emplace_back(std::nullopt);
+    m_formats.push_back(0);
+    return *this;
+}
 
 PgResult::PgResult(pg_result* result)
     : m_result(result)
@@ -46,7 +118,49 @@ bool PgResult::isNull(int row, int column) const
 
 std::string PgResult::text(int row, int column) const
 {
-    return PQgetvalue(m_result, row, column);
+    return std::string(PQgetvalue(m_result, row, column), static_cast<std::size_t>(PQgetlength(m_result, row, column)));
+}
+
+std::int64_t PgResult::int64(int row, int column) const
+{
+    const char* value = PQgetvalue(m_result, row, column);
+    const int length = PQgetlength(m_result, row, column);
+    if (PQfformat(m_result, column) == 1) {
+        // int2, int4 or int8: sign-extend from the length given.
+        const std::uint64_t raw = bigEndian(value, length);
+        const int unused = 64 - 8 * length;
+        return unused > 0 ? static_cast<std::int64_t>(raw << unused) >> unused : static_cast<std::int64_t>(raw);
+    }
+    std::int64_t result = 0;
+    std::from_chars(value, value + length, result);
+    return result;
+}
+
+double PgResult::real(int row, int column) const
+{
+    const char* value = PQgetvalue(m_result, row, column);
+    const int length = PQgetlength(m_result, row, column);
+    if (PQfformat(m_result, column) == 1) {
+        if (length == 4)
+            return static_cast<double>(std::bit_cast<float>(static_cast<std::uint32_t>(bigEndian(value, 4))));
+        return std::bit_cast<double>(bigEndian(value, 8));
+    }
+    double result = 0.0;
+    std::from_chars(value, value + length, result);
+    return result;
+}
+
+std::optional<double> PgResult::optionalReal(int row, int column) const
+{
+    if (isNull(row, column)) return std::nullopt;
+    return real(row, column);
+}
+
+std::span<const std::uint8_t> PgResult::bytes(int row, int column) const
+{
+    // Only a binary result gives a bytea's bytes as they are.
+    return {reinterpret_cast<const std::uint8_t*>(PQgetvalue(m_result, row, column)),
+            static_cast<std::size_t>(PQgetlength(m_result, row, column))};
 }
 
 PgConnection::PgConnection(const std::string& conninfo)
@@ -82,13 +196,19 @@ void PgConnection::run(const std::string& sql)
     check(PgResult(PQexec(m_connection, sql.c_str())));
 }
 
-PgResult PgConnection::query(const std::string& sql, const std::vector<std::optional<std::string>>& parameters)
+PgResult PgConnection::query(const std::string& sql, const PgParams& parameters, PgFormat results)
 {
-    std::vector<const char*> values;
-    values.reserve(parameters.size());
-    for (const auto& p : parameters) values.push_back(p ? p->c_str() : nullptr);
-    PgResult result(PQexecParams(m_connection, sql.c_str(), static_cast<int>(values.size()), nullptr, values.data(),
-                                 nullptr, nullptr, 0));
+    const std::size_t n = parameters.m_values.size();
+    std::vector<const char*> values(n);
+    std::vector<int> lengths(n);  // read for binary ones only
+    for (std::size_t i = 0; i < n; ++i) {
+        if (const auto& value = parameters.m_values[i]) {
+            values[i] = value->c_str();
+            lengths[i] = static_cast<int>(value->size());
+        }
+    }
+    PgResult result(PQexecParams(m_connection, sql.c_str(), static_cast<int>(n), nullptr, values.data(), lengths.data(),
+                                 parameters.m_formats.data(), results == PgFormat::Binary ? 1 : 0));
     check(result);
     return result;
 }
@@ -96,6 +216,64 @@ PgResult PgConnection::query(const std::string& sql, const std::vector<std::opti
 std::string PgConnection::user() const
 {
     return PQuser(m_connection);
+}
+
+std::string PgConnection::location() const
+{
+    const std::string host = PQhost(m_connection) ? PQhost(m_connection) : "";
+    return "database " + std::string(PQdb(m_connection)) + " on " + host + ":" + PQport(m_connection);
+}
+
+bool PgConnection::isOpen() const
+{
+    return PQstatus(m_connection) == CONNECTION_OK;
+}
+
+bool PgConnection::inTransaction() const
+{
+    return PQtransactionStatus(m_connection) != PQTRANS_IDLE;
+}
+
+std::optional<std::string> connectionStringProblem(const std::string& conninfo)
+{
+    char* error = nullptr;
+    PQconninfoOption* options = PQconninfoParse(conninfo.c_str(), &error);
+    if (!options) {
+        const std::string reason = error ? oneLine(error) : "out of memory";
+        PQfreemem(error);
+        return "not a connection string: " + reason;
+    }
+    bool password = false;
+    for (const PQconninfoOption* o = options; o->keyword; ++o)
+        if (std::string_view(o->keyword) == "password" && o->val && *o->val) password = true;
+    PQconninfoFree(options);
+    if (password)
+        return std::string("it holds a password; keep passwords in ~/.pgpass (or PGPASSFILE, a service file)");
+    return std::nullopt;
+}
+
+PgTransaction::PgTransaction(PgConnection& connection)
+    : m_connection(connection),
+      m_open(!connection.inTransaction())
+{
+    if (m_open) m_connection.run("BEGIN");
+}
+
+PgTransaction::~PgTransaction()
+{
+    if (!m_open) return;
+    try {
+        m_connection.run("ROLLBACK");
+    } catch (const StorageError&) {
+        // The connection is gone; the server rolls back by itself.
+    }
+}
+
+void PgTransaction::commit()
+{
+    if (!m_open) return;
+    m_connection.run("COMMIT");
+    m_open = false;
 }
 
 }  // namespace tactiscope::core::storage::central

@@ -7,8 +7,10 @@
 
 #include "core/storage/Database.h"
 
-#include <memory>
+#include <cstdint>
+#include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -17,7 +19,37 @@ struct pg_result;
 
 namespace tactiscope::core::storage::central {
 
-// One statement's rows; values as text (NULL as nothing).
+// A statement's parameters $1, $2, …: numbers as exact text (a double as
+// the shortest text that reads back to it), bytes copied and bound as
+// binary (no hex on the wire).
+class PgParams {
+public:
+    PgParams() = default;
+    PgParams(std::initializer_list<std::optional<std::string>> texts);
+    PgParams(const std::vector<std::optional<std::string>>& texts);
+
+    PgParams& text(std::string value);
+    PgParams& int64(std::int64_t value);
+    PgParams& real(double value);
+    PgParams& optionalReal(std::optional<double> value);
+    PgParams& bytes(std::span<const std::uint8_t> value);
+    PgParams& null();
+    std::size_t size() const { return m_values.size(); }
+    std::size_t bytesHeld() const { return m_bytesHeld; }
+
+private:
+    friend class PgConnection;
+    std::vector<std::optional<std::string>> m_values;  // text, or bytes where m_formats says binary
+    std::vector<int> m_formats;
+    std::size_t m_bytesHeld = 0;
+};
+
+// How a statement's values come back: as text, or binary (raw bytea, no
+// hex to decode; integers and doubles in network order).
+enum class PgFormat { Text, Binary };
+
+// One statement's rows. text() reads any column of a text result and text
+// columns of a binary one; int64(), real() and bytes() read either.
 class PgResult {
 public:
     explicit PgResult(pg_result* result);
@@ -30,6 +62,10 @@ public:
     int rows() const;
     bool isNull(int row, int column) const;
     std::string text(int row, int column) const;
+    std::int64_t int64(int row, int column) const;
+    double real(int row, int column) const;
+    std::optional<double> optionalReal(int row, int column) const;
+    std::span<const std::uint8_t> bytes(int row, int column) const;  // valid while the result lives
 
 private:
     friend class PgConnection;
@@ -47,15 +83,39 @@ public:
     // A script of statements without parameters (schema, roles). Throws
     // StorageError naming the server's message.
     void run(const std::string& sql);
-    // One statement with text parameters $1, $2, … (nothing binds NULL).
-    PgResult query(const std::string& sql, const std::vector<std::optional<std::string>>& parameters = {});
+    // One statement with parameters $1, $2, ….
+    PgResult query(const std::string& sql, const PgParams& parameters = {}, PgFormat results = PgFormat::Text);
 
     std::string user() const;
+    bool isOpen() const;  // false once the server is lost
+    bool inTransaction() const;
+    // The server and database, for messages (never the password).
+    std::string location() const;
 
 private:
     void check(const PgResult& result) const;
 
     pg_conn* m_connection;
+};
+
+// Why `conninfo` cannot be kept as typed: libpq cannot read it, or it holds
+// a password (which belongs in ~/.pgpass, PGPASSFILE or a service file,
+// never in a program's settings). Nothing when it can.
+std::optional<std::string> connectionStringProblem(const std::string& conninfo);
+
+// A transaction that rolls back unless committed, so a failure half way
+// leaves nothing on the server. Inside another one it is part of it.
+class PgTransaction {
+public:
+    explicit PgTransaction(PgConnection& connection);
+    ~PgTransaction();
+    PgTransaction(const PgTransaction&) = delete;
+    PgTransaction& operator=(const PgTransaction&) = delete;
+    void commit();
+
+private:
+    PgConnection& m_connection;
+    bool m_open;
 };
 
 }  // namespace tactiscope::core::storage::central

@@ -15,6 +15,7 @@
 #include <thread>
 
 using namespace tactiscope::core;
+using storage::SessionSource;
 using storage::SessionStore;
 using storage::StoreWorker;
 
@@ -43,7 +44,8 @@ TEST(StoreWorker, RunsJobsInOrderOnOneConnectionOffTheCallersThread)
         bool sameConnection = true;
         for (const std::string name : {"door-1", "door-2", "door-3"}) {
             worker.post(
-                [&, name](SessionStore& store) {
+                [&, name](SessionSource& source) {
+                    auto& store = dynamic_cast<SessionStore&>(source);  // a file opens a station's store
                     if (!first) first = &store;
                     sameConnection = sameConnection && first == &store;
                     threads.push_back(std::this_thread::get_id());
@@ -54,7 +56,7 @@ TEST(StoreWorker, RunsJobsInOrderOnOneConnectionOffTheCallersThread)
                 [](const std::string& error) { ADD_FAILURE() << error; });
         }
         std::promise<void> done;
-        worker.post([&](SessionStore&) { done.set_value(); }, {});
+        worker.post([&](SessionSource&) { done.set_value(); }, {});
         done.get_future().wait();
         EXPECT_TRUE(sameConnection);
     }
@@ -78,7 +80,7 @@ TEST(StoreWorker, AFileThatIsNotAStoreFailsEachJobWithTheStoresMessage)
     {
         StoreWorker worker(path);
         for (int i = 0; i < 2; ++i)
-            worker.post([&](SessionStore&) { ran = true; }, [&](const std::string& e) { errors.push_back(e); });
+            worker.post([&](SessionSource&) { ran = true; }, [&](const std::string& e) { errors.push_back(e); });
     }
     EXPECT_FALSE(ran);
     ASSERT_EQ(errors.size(), 2u);  // opened again for the second job, and refused again
@@ -101,7 +103,11 @@ TEST(StoreWorker, AJobPostedJustBeforeTheWorkerGoesIsStillDone)
     }
     {
         StoreWorker worker(path);
-        worker.post([session](SessionStore& store) { store.setVerdict(session, Verdict::DefectsFound); }, {});
+        worker.post(
+            [session](SessionSource& store) {
+                dynamic_cast<SessionStore&>(store).setVerdict(session, Verdict::DefectsFound);
+            },
+            {});
     }
     SessionStore store(path, storage::Database::Access::ReadOnly);
     EXPECT_EQ(store.session(session)->verdict, Verdict::DefectsFound);

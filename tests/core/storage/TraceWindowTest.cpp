@@ -5,6 +5,7 @@
 #include "core/storage/TraceWindow.h"
 
 #include "core/SampleBlock.h"
+#include "core/storage/SessionStore.h"
 
 #include "support/TempDirectory.h"
 

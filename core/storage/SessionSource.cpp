@@ -1,0 +1,22 @@
+// SessionSource: what every store does the same way.
+#include "core/storage/SessionSource.h"
+
+namespace tactiscope::core::storage {
+
+std::vector<double> SessionSource::readChannel(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,
+                                               std::uint64_t count)
+{
+    std::vector<std::vector<double>> out(1);
+    readChannels(session, std::span(&channel, 1), firstIndex, count, out);
+    return std::move(out.front());
+}
+
+std::optional<StoredCalibration> SessionSource::newestCalibration(std::string_view kind, const std::string& sensor)
+{
+    auto all = calibrations(sensor);
+    for (auto it = all.rbegin(); it != all.rend(); ++it)
+        if (it->record.kind == kind) return std::move(*it);
+    return std::nullopt;
+}
+
+}  // namespace tactiscope::core::storage

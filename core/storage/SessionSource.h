@@ -1,0 +1,168 @@
+// Where sessions are read from: a station's own SQLite store
+// (SessionStore) or a site's central PostgreSQL store (CentralStore). The
+// browser, the review window, export, report and analyze read through this
+// interface, so they work on either; recording and import write to a
+// station's store only. One object is one connection; use one per thread.
+#pragma once
+
+#include "core/ChannelDescriptor.h"
+#include "core/Vocabulary.h"
+#include "core/storage/Database.h"
+#include "core/storage/LodTable.h"
+#include "core/storage/SessionRecords.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace tactiscope::core::storage {
+
+// What the user and the device tell about a session before it starts.
+struct SessionMetadata {
+    Mode mode = Mode::PanelScan;
+    std::string subject;
+    std::string operatorName;
+    std::string site;
+    std::string notes;
+    std::string deviceModel;
+    std::string deviceSerial;
+    std::string deviceFirmware;
+    std::string profileJson;       // the sensor profile used, copied in
+    std::string calibrationsJson;  // the calibration records used, copied in (a JSON array)
+};
+
+// Who a session is when it was recorded elsewhere (an import of an export):
+// its identity and when and by which version it was recorded. Empty fields
+// are this store's: a new uuid, now, this version.
+struct SessionOrigin {
+    std::string uuid;
+    std::string startedUtc;
+    std::string appVersion;
+};
+
+struct SessionSummary {
+    std::int64_t id = 0;
+    std::string uuid;
+    SessionMetadata metadata;
+    std::string startedUtc;  // ISO 8601, e.g. 2026-11-21T14:20:28.123Z
+    std::string endedUtc;    // empty while recording or when interrupted
+    SessionStatus status = SessionStatus::Recording;
+    std::optional<Verdict> verdict;  // none until one is given (another word in the file reads as none)
+    std::string appVersion;
+    double sampleRate_hz = 0.0;
+    std::uint64_t sampleCount = 0;  // per channel, including lost samples
+    std::uint64_t eventCount = 0;   // live events of any kind
+    std::string station;            // the station it came from, on a central store; empty on a station's own
+    std::int64_t stationId = 0;     // its id in that station's store (0 on a station's own: `id`)
+    double duration_s() const { return sampleRate_hz > 0.0 ? static_cast<double>(sampleCount) / sampleRate_hz : 0.0; }
+};
+
+// Which sessions to list; empty fields match everything.
+struct SessionFilter {
+    std::string startedFrom;    // UTC, ISO 8601 or a prefix such as "2026-11-21"; inclusive
+    std::string startedBefore;  // exclusive
+    std::optional<Mode> mode;
+    std::string subject;       // exact
+    std::string operatorName;  // exact
+    std::optional<Verdict> verdict;
+    std::string text;  // found in subject, operator, site, notes, verdict or device serial (any case)
+};
+
+using lod::OverviewPoint;
+
+struct StoredChannel {
+    ChannelDescriptor descriptor;
+    double sampleRate_hz = 0.0;
+};
+
+struct SampleGap {
+    std::uint64_t firstIndex = 0;
+    std::uint64_t count = 0;
+};
+
+class SessionSource {
+public:
+    virtual ~SessionSource() = default;
+
+    // What to call it in a message: the store file, or the server and
+    // database (never a password).
+    virtual std::string location() const = 0;
+    // Throws StorageError saying the store is damaged and what to do,
+    // before a store is written or first shown.
+    virtual void refuseIfDamaged() = 0;
+
+    // One consistent state of the store for as long as it lives, for a
+    // reader going through a session while another connection writes.
+    class Snapshot {
+    public:
+        virtual ~Snapshot() = default;
+    };
+    virtual std::unique_ptr<Snapshot> snapshot() = 0;
+
+    virtual std::vector<SessionSummary> sessions(const SessionFilter& filter = {}) = 0;  // newest first
+    virtual std::optional<SessionSummary> session(std::int64_t id) = 0;
+    virtual std::optional<std::int64_t> sessionWithUuid(const std::string& uuid) = 0;
+    virtual std::vector<StoredChannel> channels(std::int64_t session) = 0;
+    // Per channel, including gaps and lost ones at the end.
+    virtual std::uint64_t sampleCount(std::int64_t session) = 0;
+    virtual std::vector<SampleGap> gaps(std::int64_t session) = 0;
+    // Samples [firstIndex, firstIndex + count) of one channel, clipped to the
+    // recording; samples inside a gap read as NaN.
+    std::vector<double> readChannel(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,
+                                    std::uint64_t count);
+    // The same for several channels at once, each chunk read and decoded
+    // once, into `out` (one vector per channel, resized to the samples
+    // read): a reader going through a recording in windows reuses its
+    // buffers and allocates nothing after the first. Returns the count.
+    virtual std::size_t readChannels(std::int64_t session, std::span<const std::size_t> channels,
+                                     std::uint64_t firstIndex, std::uint64_t count,
+                                     std::vector<std::vector<double>>& out) = 0;
+    // The min and max of about `points` stretches of samples
+    // [firstIndex, firstIndex + count) of one channel, exact, read from the
+    // pyramid (see LodTable::overview) without touching most samples.
+    virtual std::vector<OverviewPoint> overview(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,
+                                                std::uint64_t count, std::size_t points) = 0;
+    // Sample chunks decoded by this connection so far: how much reading cost.
+    std::uint64_t chunksRead() const { return m_chunksRead; }
+
+    virtual std::vector<SessionEvent> events(std::int64_t session, const std::string& analysis = kLiveAnalysis) = 0;
+    // "live" and the saved re-analyses, of events or readings.
+    virtual std::vector<std::string> analyses(std::int64_t session) = 0;
+    virtual std::vector<SessionReading> readings(std::int64_t session, const std::string& analysis = kLiveAnalysis) = 0;
+    virtual std::vector<Annotation> annotations(std::int64_t session) = 0;
+    virtual std::vector<VerdictDecision> verdicts(std::int64_t session) = 0;  // the trail, oldest first
+    // The zeros, by first sample.
+    virtual std::vector<SessionZero> zeros(std::int64_t session) = 0;
+    virtual std::optional<StoredCalibration> calibration(std::int64_t id) = 0;
+    // Oldest first; all sensors when empty.
+    virtual std::vector<StoredCalibration> calibrations(const std::string& sensor = {}) = 0;
+    // The newest record of `kind` for `sensor`: the one in use.
+    std::optional<StoredCalibration> newestCalibration(std::string_view kind, const std::string& sensor);
+    // Adds to the calibration history; returns its id.
+    virtual std::int64_t addCalibration(const calibration::CalibrationRecord& record) = 0;
+    virtual std::vector<std::int64_t> calibrationsOfSession(std::int64_t session) = 0;
+    virtual std::vector<std::int64_t> sessionsUsingCalibration(std::int64_t calibration) = 0;
+
+    // What a reviewer adds (each refused with StorageError where the
+    // store's rights do not allow it).
+    // Adds a decision to the session's verdict trail, which makes it the
+    // session's verdict (one transaction). Returns its id.
+    virtual std::int64_t decideVerdict(std::int64_t session, const VerdictDecision& decision) = 0;
+    virtual std::int64_t addAnnotation(std::int64_t session, const Annotation& annotation) = 0;
+    virtual void updateAnnotation(std::int64_t annotation, const std::string& text) = 0;
+    virtual void deleteAnnotation(std::int64_t annotation) = 0;
+    // A saved re-analysis (one transaction each).
+    virtual void addEvents(std::int64_t session, std::span<const SessionEvent> events) = 0;
+    virtual void addReadings(std::int64_t session, std::span<const SessionReading> readings) = 0;
+    // Deletes a session with everything it holds. Throws StorageError for an
+    // unknown id or a session still being recorded.
+    virtual void deleteSession(std::int64_t session) = 0;
+
+protected:
+    std::uint64_t m_chunksRead = 0;
+};
+
+}  // namespace tactiscope::core::storage

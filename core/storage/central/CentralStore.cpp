@@ -1,0 +1,516 @@
+// CentralStore: the SQL that reads a central store as a SessionSource.
+#include "core/storage/central/CentralStore.h"
+
+#include "core/storage/ChunkCodec.h"
+#include "core/storage/central/CentralSchema.h"
+#include "core/text/UtcTime.h"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+namespace tactiscope::core::storage::central {
+namespace {
+
+// A session's sample count: the end of its last chunk or last gap,
+// whichever ends later (index lookups on both primary keys).
+const std::string kSampleEnd =
+    "greatest(coalesce((SELECT first_index + count FROM chunks WHERE session_id = s.id ORDER BY first_index DESC "
+    "LIMIT 1), 0), coalesce((SELECT first_index + count FROM gaps WHERE session_id = s.id ORDER BY first_index DESC "
+    "LIMIT 1), 0))";
+
+// Only complete uploads: a session a sync is still sending is not there.
+const std::string kSummaryQuery =
+    "SELECT id, uuid, mode, subject, operator, site, notes, device_model, device_serial, device_firmware, "
+    "profile_json, calibrations_json, started_utc, coalesce(ended_utc, ''), status, verdict, app_version, "
+    "coalesce((SELECT sample_rate_hz FROM channels WHERE session_id = s.id AND position = 0), 0), " +
+    kSampleEnd + ", (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live'), station, station_id " +
+    "FROM sessions s WHERE complete ";
+
+SessionSummary summaryFrom(const PgResult& r, int row)
+{
+    SessionSummary s;
+    s.id = r.int64(row, 0);
+    s.uuid = r.text(row, 1);
+    // The schema's CHECKs admit only the vocabulary's modes and statuses.
+    s.metadata = {modeFromString(r.text(row, 2)).value_or(Mode::PanelScan),
+                  r.text(row, 3),
+                  r.text(row, 4),
+                  r.text(row, 5),
+                  r.text(row, 6),
+                  r.text(row, 7),
+                  r.text(row, 8),
+                  r.text(row, 9),
+                  r.text(row, 10),
+                  r.text(row, 11)};
+    s.startedUtc = r.text(row, 12);
+    s.endedUtc = r.text(row, 13);
+    s.status = sessionStatusFromString(r.text(row, 14)).value_or(SessionStatus::Interrupted);
+    s.verdict = verdictFromString(r.text(row, 15));
+    s.appVersion = r.text(row, 16);
+    s.sampleRate_hz = r.real(row, 17);
+    s.sampleCount = static_cast<std::uint64_t>(r.int64(row, 18));
+    s.eventCount = static_cast<std::uint64_t>(r.int64(row, 19));
+    s.station = r.text(row, 20);
+    s.stationId = r.int64(row, 21);
+    return s;
+}
+
+// Escapes LIKE's wildcards so a search for "10%" finds "10%".
+std::string likePattern(const std::string& text)
+{
+    std::string pattern = "%";
+    for (const char c : text) {
+        if (c == '%' || c == '_' || c == '\\') pattern += '\\';
+        pattern += c;
+    }
+    return pattern + "%";
+}
+
+std::string noChannel(std::int64_t session, std::size_t channel)
+{
+    return "session " + std::to_string(session) + " has no channel " + std::to_string(channel);
+}
+
+// The pyramid's rows in the central store's table `lod`.
+class CentralLodRows : public lod::LodRows {
+public:
+    CentralLodRows(PgConnection& connection, std::int64_t session, std::size_t channel)
+        : m_connection(connection),
+          m_session(session),
+          m_channel(static_cast<std::int64_t>(channel))
+    {
+    }
+
+    std::uint64_t storedBuckets(int level) override
+    {
+        const PgResult r = m_connection.query(
+            "SELECT first_bucket + count FROM lod WHERE session_id = $1 AND channel = $2 AND level = $3 "
+            "ORDER BY first_bucket DESC LIMIT 1",
+            PgParams().int64(m_session).int64(m_channel).int64(level), PgFormat::Binary);
+        return r.rows() > 0 ? static_cast<std::uint64_t>(r.int64(0, 0)) : 0;
+    }
+
+    void read(int level, std::uint64_t firstBucket, std::uint64_t endBucket, lod::LodRowMap& rows) override
+    {
+        const PgResult r = m_connection.query(
+            "SELECT first_bucket, count, buckets FROM lod WHERE session_id = $1 AND channel = $2 AND level = $3 "
+            "AND first_bucket >= $4 AND first_bucket < $5",
+            PgParams()
+                .int64(m_session)
+                .int64(m_channel)
+                .int64(level)
+                .int64(static_cast<std::int64_t>(firstBucket))
+                .int64(static_cast<std::int64_t>(endBucket)),
+            PgFormat::Binary);
+        for (int i = 0; i < r.rows(); ++i)
+            rows[{level, static_cast<std::uint64_t>(r.int64(i, 0))}] =
+                lod::decodeBuckets(r.bytes(i, 2), static_cast<std::size_t>(r.int64(i, 1)));
+    }
+
+private:
+    PgConnection& m_connection;
+    std::int64_t m_session;
+    std::int64_t m_channel;
+};
+
+}  // namespace
+
+CentralStore::CentralStore(const std::string& conninfo, Database::Access access)
+    : m_connection(conninfo)
+{
+    const PgResult schema = m_connection.query("SELECT to_regclass('schema_version') IS NOT NULL");
+    if (schema.text(0, 0) != "t")
+        throw StorageError(m_connection.location() +
+                           " holds no Tactiscope store; its owner makes one with `tactiscope-cli server init`");
+    const PgResult version = m_connection.query("SELECT max(version) FROM schema_version");
+    if (version.isNull(0, 0) || version.int64(0, 0) > kCentralSchemaVersion)
+        throw StorageError(m_connection.location() + " holds a central store of a newer Tactiscope (schema " +
+                           version.text(0, 0) + "); update this program");
+    if (access == Database::Access::ReadOnly) m_connection.run("SET default_transaction_read_only = on");
+}
+
+std::vector<SessionSummary> CentralStore::sessions(const SessionFilter& filter)
+{
+    std::string where;
+    PgParams values;
+    int n = 0;
+    const auto condition = [&](const std::string& value, const std::string& sql) {
+        if (value.empty()) return;
+        where += " AND " + sql + " $" + std::to_string(++n);
+        values.text(value);
+    };
+    condition(filter.startedFrom, "started_utc >=");
+    condition(filter.startedBefore, "started_utc <");
+    if (filter.mode) condition(std::string(toString(*filter.mode)), "mode =");
+    condition(filter.subject, "subject =");
+    condition(filter.operatorName, "operator =");
+    if (filter.verdict) condition(std::string(toString(*filter.verdict)), "verdict =");
+    if (!filter.text.empty()) {
+        // One parameter for every searched column; ILIKE as SQLite's LIKE ignores case.
+        const std::string like = " ILIKE $" + std::to_string(++n) + " ESCAPE '\\'";
+        where += " AND (subject" + like + " OR operator" + like + " OR site" + like + " OR notes" + like +
+                 " OR verdict" + like + " OR device_serial" + like + ")";
+        values.text(likePattern(filter.text));
+    }
+    const PgResult r =
+        m_connection.query(kSummaryQuery + where + " ORDER BY started_utc DESC, id DESC", values, PgFormat::Binary);
+    std::vector<SessionSummary> result;
+    result.reserve(static_cast<std::size_t>(r.rows()));
+    for (int i = 0; i < r.rows(); ++i) result.push_back(summaryFrom(r, i));
+    return result;
+}
+
+std::optional<SessionSummary> CentralStore::session(std::int64_t id)
+{
+    const PgResult r = m_connection.query(kSummaryQuery + "AND id = $1", PgParams().int64(id), PgFormat::Binary);
+    if (r.rows() == 0) return std::nullopt;
+    return summaryFrom(r, 0);
+}
+
+std::optional<std::int64_t> CentralStore::sessionWithUuid(const std::string& uuid)
+{
+    const PgResult r = m_connection.query("SELECT id FROM sessions WHERE complete AND uuid = $1", {uuid});
+    if (r.rows() == 0) return std::nullopt;
+    return r.int64(0, 0);
+}
+
+std::vector<StoredChannel> CentralStore::channels(std::int64_t session)
+{
+    const PgResult r = m_connection.query(
+        "SELECT name, unit, kind, sample_rate_hz FROM channels WHERE session_id = $1 ORDER BY position",
+        PgParams().int64(session), PgFormat::Binary);
+    std::vector<StoredChannel> result;
+    for (int i = 0; i < r.rows(); ++i) {
+        const auto kind = channelKindFromString(r.text(i, 2)).value_or(ChannelKind::Other);
+        result.push_back({{r.text(i, 0), r.text(i, 1), kind}, r.real(i, 3)});
+    }
+    return result;
+}
+
+std::uint64_t CentralStore::sampleCount(std::int64_t session)
+{
+    const PgResult r = m_connection.query("SELECT " + kSampleEnd + " FROM (SELECT $1::bigint AS id) s",
+                                          PgParams().int64(session), PgFormat::Binary);
+    return static_cast<std::uint64_t>(r.int64(0, 0));
+}
+
+std::vector<SampleGap> CentralStore::gaps(std::int64_t session)
+{
+    const PgResult r =
+        m_connection.query("SELECT first_index, count FROM gaps WHERE session_id = $1 ORDER BY first_index",
+                           PgParams().int64(session), PgFormat::Binary);
+    std::vector<SampleGap> result;
+    for (int i = 0; i < r.rows(); ++i)
+        result.push_back({static_cast<std::uint64_t>(r.int64(i, 0)), static_cast<std::uint64_t>(r.int64(i, 1))});
+    return result;
+}
+
+std::size_t CentralStore::readChannels(std::int64_t session, std::span<const std::size_t> channels,
+                                       std::uint64_t firstIndex, std::uint64_t count,
+                                       std::vector<std::vector<double>>& out)
+{
+    constexpr std::uint64_t kMostSamplesPerRead = std::uint64_t{1} << 30;  // as a station's store
+    const std::size_t channelCount = this->channels(session).size();
+    for (const std::size_t channel : channels)
+        if (channel >= channelCount) throw StorageError(noChannel(session, channel));
+    const std::uint64_t end = std::min(sampleCount(session), firstIndex + count);
+    const std::size_t n = firstIndex < end ? static_cast<std::size_t>(end - firstIndex) : 0;
+    if (n > kMostSamplesPerRead)
+        throw StorageError("session " + std::to_string(session) + " would need " + std::to_string(n) +
+                           " samples read at once, more than a computer holds");
+    out.resize(channels.size());
+    // NaN first: whatever no chunk covers is a gap.
+    for (auto& samples : out) samples.assign(n, std::numeric_limits<double>::quiet_NaN());
+    if (n == 0) return 0;
+    // From the chunk holding firstIndex (it starts at or before it).
+    const PgResult r = m_connection.query(
+        "SELECT first_index, count, samples FROM chunks WHERE session_id = $1 AND first_index >= coalesce("
+        "(SELECT max(first_index) FROM chunks WHERE session_id = $1 AND first_index <= $2), 0) "
+        "AND first_index < $3 ORDER BY first_index",
+        PgParams().int64(session).int64(static_cast<std::int64_t>(firstIndex)).int64(static_cast<std::int64_t>(end)),
+        PgFormat::Binary);
+    for (int i = 0; i < r.rows(); ++i) {
+        const auto chunkFirst = static_cast<std::uint64_t>(r.int64(i, 0));
+        const auto chunkCount = static_cast<std::uint64_t>(r.int64(i, 1));
+        const auto blob = r.bytes(i, 2);
+        if (blob.size() != chunkCount * channelCount * 4)
+            throw StorageError("a sample chunk of session " + std::to_string(session) + " says it holds " +
+                               std::to_string(chunkCount) + " samples but has " + std::to_string(blob.size()) +
+                               " bytes; the central store is damaged");
+        const std::uint64_t begin = std::max(chunkFirst, firstIndex);
+        const std::uint64_t stop = std::min(chunkFirst + chunkCount, end);
+        if (stop <= begin) continue;
+        for (std::size_t k = 0; k < channels.size(); ++k)
+            decodeChunkChannel(blob, channelCount, chunkCount, channels[k], begin - chunkFirst,
+                               std::span(out[k]).subspan(begin - firstIndex, stop - begin));
+        ++m_chunksRead;
+    }
+    return n;
+}
+
+std::vector<OverviewPoint> CentralStore::overview(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,
+                                                  std::uint64_t count, std::size_t points)
+{
+    if (channel >= channels(session).size()) throw StorageError(noChannel(session, channel));
+    const std::uint64_t end = std::min(sampleCount(session), firstIndex + count);
+    if (firstIndex >= end) return {};
+    lod::LodTable pyramid(std::make_unique<CentralLodRows>(m_connection, session, channel), session,
+                          [this, session, channel](std::uint64_t first, std::uint64_t n) {
+                              return readChannel(session, channel, first, n);
+                          });
+    return pyramid.overview(firstIndex, end, points);
+}
+
+std::vector<SessionEvent> CentralStore::events(std::int64_t session, const std::string& analysis)
+{
+    const PgResult r = m_connection.query(
+        "SELECT id, analysis, kind, start_s, end_s, direction, peak_r, lag_s, speed_m_per_s, note FROM events "
+        "WHERE session_id = $1 AND analysis = $2 ORDER BY start_s, id",
+        PgParams().int64(session).text(analysis), PgFormat::Binary);
+    std::vector<SessionEvent> result;
+    for (int i = 0; i < r.rows(); ++i)
+        result.push_back({r.int64(i, 0), r.text(i, 1), eventKindFromString(r.text(i, 2)).value_or(EventKind::Marker),
+                          r.real(i, 3), r.real(i, 4), static_cast<int>(r.int64(i, 5)), r.optionalReal(i, 6),
+                          r.optionalReal(i, 7), r.optionalReal(i, 8), r.text(i, 9)});
+    return result;
+}
+
+std::vector<std::string> CentralStore::analyses(std::int64_t session)
+{
+    const PgResult r = m_connection.query(
+        "SELECT analysis COLLATE \"C\" AS name FROM events WHERE session_id = $1 AND analysis <> $2 UNION "
+        "SELECT analysis COLLATE \"C\" FROM readings WHERE session_id = $1 AND analysis <> $2 ORDER BY name",
+        PgParams().int64(session).text(kLiveAnalysis));
+    std::vector<std::string> result{kLiveAnalysis};
+    for (int i = 0; i < r.rows(); ++i) result.push_back(r.text(i, 0));
+    return result;
+}
+
+std::vector<SessionReading> CentralStore::readings(std::int64_t session, const std::string& analysis)
+{
+    const PgResult r = m_connection.query(
+        "SELECT id, kind, start_s, end_s, quantity, value, unit, standard_error, site, details_json, analysis "
+        "FROM readings WHERE session_id = $1 AND analysis = $2 ORDER BY start_s, id",
+        PgParams().int64(session).text(analysis), PgFormat::Binary);
+    std::vector<SessionReading> result;
+    for (int i = 0; i < r.rows(); ++i)
+        result.push_back({r.int64(i, 0), readingKindFromString(r.text(i, 1)).value_or(ReadingKind::Compliance),
+                          r.real(i, 2), r.real(i, 3), r.text(i, 4), r.real(i, 5), r.text(i, 6), r.optionalReal(i, 7),
+                          r.text(i, 8), r.text(i, 9), r.text(i, 10)});
+    return result;
+}
+
+std::vector<Annotation> CentralStore::annotations(std::int64_t session)
+{
+    const PgResult r = m_connection.query(
+        "SELECT id, time_s, author, text, created_utc, modified_utc FROM annotations WHERE session_id = $1 "
+        "ORDER BY time_s, id",
+        PgParams().int64(session), PgFormat::Binary);
+    std::vector<Annotation> result;
+    for (int i = 0; i < r.rows(); ++i)
+        result.push_back({r.int64(i, 0), r.real(i, 1), r.text(i, 2), r.text(i, 3), r.text(i, 4), r.text(i, 5)});
+    return result;
+}
+
+std::vector<VerdictDecision> CentralStore::verdicts(std::int64_t session)
+{
+    const PgResult r = m_connection.query(
+        "SELECT id, role, verdict, decided_by, decided_utc, note, basis_json FROM verdicts WHERE session_id = $1 "
+        "ORDER BY id",
+        PgParams().int64(session), PgFormat::Binary);
+    std::vector<VerdictDecision> result;
+    for (int i = 0; i < r.rows(); ++i)
+        result.push_back({r.int64(i, 0), verdictRoleFromString(r.text(i, 1)).value_or(VerdictRole::Reviewer),
+                          verdictFromString(r.text(i, 2)).value_or(Verdict::DefectsFound), r.text(i, 3), r.text(i, 4),
+                          r.text(i, 5), r.text(i, 6)});
+    return result;
+}
+
+std::vector<SessionZero> CentralStore::zeros(std::int64_t session)
+{
+    const PgResult r =
+        m_connection.query("SELECT first_index, values_json FROM zeros WHERE session_id = $1 ORDER BY first_index",
+                           PgParams().int64(session), PgFormat::Binary);
+    std::vector<SessionZero> result;
+    for (int i = 0; i < r.rows(); ++i) result.push_back({static_cast<std::uint64_t>(r.int64(i, 0)), r.text(i, 1)});
+    return result;
+}
+
+namespace {
+
+std::vector<StoredCalibration> calibrationsFrom(const PgResult& r)
+{
+    std::vector<StoredCalibration> result;
+    for (int i = 0; i < r.rows(); ++i) {
+        try {
+            result.push_back({r.int64(i, 0), calibration::CalibrationRecord::fromJson(r.text(i, 1))});
+        } catch (const std::invalid_argument& e) {
+            throw StorageError("calibration " + r.text(i, 0) + " cannot be read (" + e.what() +
+                               "); the central store is damaged");
+        }
+    }
+    return result;
+}
+
+}  // namespace
+
+std::optional<StoredCalibration> CentralStore::calibration(std::int64_t id)
+{
+    auto found = calibrationsFrom(
+        m_connection.query("SELECT id, record_json FROM calibrations WHERE id = $1", PgParams().int64(id)));
+    if (found.empty()) return std::nullopt;
+    return std::move(found.front());
+}
+
+std::vector<StoredCalibration> CentralStore::calibrations(const std::string& sensor)
+{
+    return calibrationsFrom(m_connection.query(
+        "SELECT id, record_json FROM calibrations WHERE $1 = '' OR sensor = $1 ORDER BY created_utc, id", {sensor}));
+}
+
+std::int64_t CentralStore::addCalibration(const calibration::CalibrationRecord& r)
+{
+    return m_connection
+        .query("INSERT INTO calibrations (kind, sensor, operator, created_utc, r_squared, points, record_json) "
+               "VALUES ($1, $2, $3, $4, $5, $6, $7) RETURNING id",
+               PgParams()
+                   .text(r.kind)
+                   .text(r.sensorName)
+                   .text(r.operatorName)
+                   .text(r.timestampUtc)
+                   .real(r.fit.rSquared)
+                   .int64(static_cast<std::int64_t>(r.fit.points))
+                   .text(r.toJson()))
+        .int64(0, 0);
+}
+
+std::vector<std::int64_t> CentralStore::ids(const std::string& sql, std::int64_t parameter)
+{
+    const PgResult r = m_connection.query(sql, PgParams().int64(parameter));
+    std::vector<std::int64_t> result;
+    for (int i = 0; i < r.rows(); ++i) result.push_back(r.int64(i, 0));
+    return result;
+}
+
+std::vector<std::int64_t> CentralStore::calibrationsOfSession(std::int64_t session)
+{
+    return ids("SELECT calibration_id FROM session_calibrations WHERE session_id = $1 ORDER BY calibration_id",
+               session);
+}
+
+std::vector<std::int64_t> CentralStore::sessionsUsingCalibration(std::int64_t calibration)
+{
+    return ids("SELECT session_id FROM session_calibrations WHERE calibration_id = $1 ORDER BY session_id",
+               calibration);
+}
+
+std::int64_t CentralStore::decideVerdict(std::int64_t session, const VerdictDecision& d)
+{
+    PgTransaction transaction(m_connection);
+    const PgResult updated =
+        m_connection.query("UPDATE sessions SET verdict = $1 WHERE id = $2 AND complete RETURNING id",
+                           PgParams().text(std::string(toString(d.verdict))).int64(session));
+    if (updated.rows() == 0)
+        throw StorageError("session " + std::to_string(session) + " is not in the central store, or this role (" +
+                           m_connection.user() + ") may not decide its verdict");
+    const PgResult id = m_connection.query(
+        "INSERT INTO verdicts (session_id, role, verdict, decided_by, decided_utc, note, basis_json) "
+        "VALUES ($1, $2, $3, $4, $5, $6, $7) RETURNING id",
+        PgParams()
+            .int64(session)
+            .text(std::string(toString(d.role)))
+            .text(std::string(toString(d.verdict)))
+            .text(d.decidedBy)
+            .text(d.decidedUtc.empty() ? text::utcNow() : d.decidedUtc)
+            .text(d.note)
+            .text(d.basisJson));
+    transaction.commit();
+    return id.int64(0, 0);
+}
+
+std::int64_t CentralStore::addAnnotation(std::int64_t session, const Annotation& a)
+{
+    const std::string now = text::utcNow();
+    return m_connection
+        .query("INSERT INTO annotations (session_id, time_s, author, text, created_utc, modified_utc) "
+               "VALUES ($1, $2, $3, $4, $5, $6) RETURNING id",
+               PgParams()
+                   .int64(session)
+                   .real(a.time_s)
+                   .text(a.author)
+                   .text(a.text)
+                   .text(a.createdUtc.empty() ? now : a.createdUtc)
+                   .text(a.modifiedUtc.empty() ? now : a.modifiedUtc))
+        .int64(0, 0);
+}
+
+void CentralStore::updateAnnotation(std::int64_t annotation, const std::string& text)
+{
+    const PgResult r =
+        m_connection.query("UPDATE annotations SET text = $1, modified_utc = $2 WHERE id = $3 RETURNING id",
+                           PgParams().text(text).text(text::utcNow()).int64(annotation));
+    if (r.rows() == 0)
+        throw StorageError("there is no annotation " + std::to_string(annotation) + " this role may change");
+}
+
+void CentralStore::deleteAnnotation(std::int64_t annotation)
+{
+    const PgResult r =
+        m_connection.query("DELETE FROM annotations WHERE id = $1 RETURNING id", PgParams().int64(annotation));
+    if (r.rows() == 0)
+        throw StorageError("there is no annotation " + std::to_string(annotation) + " this role may delete");
+}
+
+void CentralStore::addEvents(std::int64_t session, std::span<const SessionEvent> events)
+{
+    PgTransaction transaction(m_connection);
+    for (const SessionEvent& e : events)
+        m_connection.query("INSERT INTO events (session_id, analysis, kind, start_s, end_s, direction, peak_r, lag_s, "
+                           "speed_m_per_s, note) VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10)",
+                           PgParams()
+                               .int64(session)
+                               .text(e.analysis)
+                               .text(std::string(toString(e.kind)))
+                               .real(e.start_s)
+                               .real(e.end_s)
+                               .int64(e.direction)
+                               .optionalReal(e.peakR)
+                               .optionalReal(e.lag_s)
+                               .optionalReal(e.speed_m_per_s)
+                               .text(e.note));
+    transaction.commit();
+}
+
+void CentralStore::addReadings(std::int64_t session, std::span<const SessionReading> readings)
+{
+    PgTransaction transaction(m_connection);
+    for (const SessionReading& r : readings)
+        m_connection.query("INSERT INTO readings (session_id, kind, start_s, end_s, quantity, value, unit, "
+                           "standard_error, site, details_json, analysis) "
+                           "VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11)",
+                           PgParams()
+                               .int64(session)
+                               .text(std::string(toString(r.kind)))
+                               .real(r.start_s)
+                               .real(r.end_s)
+                               .text(r.quantity)
+                               .real(r.value)
+                               .text(r.unit)
+                               .optionalReal(r.standardError)
+                               .text(r.site)
+                               .text(r.detailsJson)
+                               .text(r.analysis));
+    transaction.commit();
+}
+
+void CentralStore::deleteSession(std::int64_t session)
+{
+    if (!this->session(session)) throw StorageError("there is no session " + std::to_string(session));
+    // Only the owner has DELETE; the server refuses anyone else.
+    const PgResult r = m_connection.query("DELETE FROM sessions WHERE id = $1 RETURNING id", PgParams().int64(session));
+    if (r.rows() == 0)
+        throw StorageError("session " + std::to_string(session) + " may not be deleted by " + m_connection.user());
+}
+
+}  // namespace tactiscope::core::storage::central

@@ -1,0 +1,67 @@
+// A site's central store on PostgreSQL, read as a station's store is: the
+// sessions the stations synced (CentralSync), each with the station it came
+// from. What a connection may see and add is the server's to decide (roles
+// and row-level security, see CentralSchema): a station sees its own
+// sessions, a reviewer all finished ones. Only finished uploads are listed:
+// a session a sync is still sending is not there yet.
+#pragma once
+
+#include "core/storage/SessionSource.h"
+#include "core/storage/central/PgConnection.h"
+
+namespace tactiscope::core::storage::central {
+
+class CentralStore : public SessionSource {
+public:
+    // Connects with a libpq connection string. Read-only makes every
+    // transaction of the connection read-only on the server too. Throws
+    // StorageError when the server cannot be reached or has no Tactiscope
+    // schema ("run server init").
+    CentralStore(const std::string& conninfo, Database::Access access = Database::Access::ReadWrite);
+
+    std::string location() const override { return m_connection.location(); }
+    // A session on the central store is whole and its samples never change
+    // (it is listed only once complete): each read is consistent alone.
+    std::unique_ptr<Snapshot> snapshot() override { return std::make_unique<Snapshot>(); }
+    PgConnection& connection() { return m_connection; }
+    // The server keeps its own pages whole (checksums, WAL): nothing to check here.
+    void refuseIfDamaged() override {}
+
+    std::vector<SessionSummary> sessions(const SessionFilter& filter = {}) override;
+    std::optional<SessionSummary> session(std::int64_t id) override;
+    std::optional<std::int64_t> sessionWithUuid(const std::string& uuid) override;
+    std::vector<StoredChannel> channels(std::int64_t session) override;
+    std::uint64_t sampleCount(std::int64_t session) override;
+    std::vector<SampleGap> gaps(std::int64_t session) override;
+    std::size_t readChannels(std::int64_t session, std::span<const std::size_t> channels, std::uint64_t firstIndex,
+                             std::uint64_t count, std::vector<std::vector<double>>& out) override;
+    std::vector<OverviewPoint> overview(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,
+                                        std::uint64_t count, std::size_t points) override;
+
+    std::vector<SessionEvent> events(std::int64_t session, const std::string& analysis = kLiveAnalysis) override;
+    std::vector<std::string> analyses(std::int64_t session) override;
+    std::vector<SessionReading> readings(std::int64_t session, const std::string& analysis = kLiveAnalysis) override;
+    std::vector<Annotation> annotations(std::int64_t session) override;
+    std::vector<VerdictDecision> verdicts(std::int64_t session) override;
+    std::vector<SessionZero> zeros(std::int64_t session) override;
+    std::optional<StoredCalibration> calibration(std::int64_t id) override;
+    std::vector<StoredCalibration> calibrations(const std::string& sensor = {}) override;
+    std::int64_t addCalibration(const calibration::CalibrationRecord& record) override;
+    std::vector<std::int64_t> calibrationsOfSession(std::int64_t session) override;
+    std::vector<std::int64_t> sessionsUsingCalibration(std::int64_t calibration) override;
+
+    std::int64_t decideVerdict(std::int64_t session, const VerdictDecision& decision) override;
+    std::int64_t addAnnotation(std::int64_t session, const Annotation& annotation) override;
+    void updateAnnotation(std::int64_t annotation, const std::string& text) override;
+    void deleteAnnotation(std::int64_t annotation) override;
+    void addEvents(std::int64_t session, std::span<const SessionEvent> events) override;
+    void addReadings(std::int64_t session, std::span<const SessionReading> readings) override;
+    void deleteSession(std::int64_t session) override;
+
+private:
+    std::vector<std::int64_t> ids(const std::string& sql, std::int64_t parameter);
+
+    PgConnection m_connection;
+};
+
+}  // namespace tactiscope::core::storage::central

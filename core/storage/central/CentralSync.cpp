@@ -1,0 +1,322 @@
+// CentralSync: one station session copied to the central store per
+// transaction; chunks and pyramid rows as stored, bound as binary in
+// multi-row INSERTs (COPY is not allowed under row-level security).
+#include "core/storage/central/CentralSync.h"
+
+#include "core/text/Md5.h"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+namespace tactiscope::core::storage::central {
+namespace {
+
+// One checksum line per chunk; the server's SQL below builds the same.
+std::string chunkLine(std::uint64_t firstIndex, std::uint64_t count, std::span<const std::uint8_t> samples)
+{
+    return std::to_string(firstIndex) + ":" + std::to_string(count) + ":" + text::md5Hex(samples);
+}
+
+constexpr const char* kServerChecksum =
+    "SELECT md5(coalesce(string_agg(first_index || ':' || count || ':' || md5(samples), E'\\n' "
+    "ORDER BY first_index), '')) FROM chunks WHERE session_id = $1";
+
+// Rows of one table sent a few hundred (or ~16 MB) at a time: one round
+// trip per batch rather than per row.
+class RowBatch {
+public:
+    RowBatch(PgConnection& db, std::string insert, int columns)
+        : m_db(db),
+          m_insert(std::move(insert)),
+          m_columns(columns)
+    {
+    }
+
+    // The parameters to add the next row's `columns` values to.
+    PgParams& row()
+    {
+        constexpr int kRows = 256;
+        constexpr std::size_t kBytes = std::size_t{16} << 20;
+        if (m_rows >= kRows || m_params.bytesHeld() >= kBytes) flush();
+        ++m_rows;
+        return m_params;
+    }
+
+    void flush()
+    {
+        if (m_rows == 0) return;
+        std::string sql = m_insert + " VALUES ";
+        for (int r = 0, p = 0; r < m_rows; ++r) {
+            sql += r ? ", (" : "(";
+            for (int c = 0; c < m_columns; ++c) sql += (c ? ", $" : "$") + std::to_string(++p);
+            sql += ")";
+        }
+        m_db.query(sql, m_params);
+        m_params = PgParams();
+        m_rows = 0;
+    }
+
+private:
+    PgConnection& m_db;
+    std::string m_insert;
+    int m_columns;
+    PgParams m_params;
+    int m_rows = 0;
+};
+
+class SessionUpload {
+public:
+    SessionUpload(SessionStore& local, CentralStore& central, std::string station)
+        : m_local(local),
+          m_central(central),
+          m_db(central.connection()),
+          m_station(std::move(station))
+    {
+    }
+
+    // Sends one session; returns the values sent.
+    std::uint64_t send(const SessionSummary& s, const std::string& checksum)
+    {
+        PgTransaction transaction(m_db);
+        const std::int64_t id = insertSession(s);
+        const std::uint64_t values = copyChunks(s.id, id);
+        insertChannelsAndGaps(s.id, id);
+        copyPyramid(s.id, id);
+        insertRecords(s.id, id);
+        insertCalibrations(s.id, id);
+        // The last step: what arrived is what the station holds.
+        const std::string arrived = m_db.query(kServerChecksum, PgParams().int64(id)).text(0, 0);
+        if (arrived != checksum)
+            throw StorageError("its samples arrived damaged (checksum " + arrived + ", sent " + checksum +
+                               "); nothing of it was kept");
+        m_db.query("UPDATE sessions SET complete = true, checksum = $1 WHERE id = $2",
+                   PgParams().text(checksum).int64(id));
+        transaction.commit();
+        return values;
+    }
+
+private:
+    std::int64_t insertSession(const SessionSummary& s)
+    {
+        const SessionMetadata& m = s.metadata;
+        PgParams p;
+        p.text(s.uuid).text(m_station).text(std::string(toString(m.mode))).text(m.subject).text(m.operatorName);
+        p.text(m.site).text(m.notes).text(s.startedUtc);
+        s.endedUtc.empty() ? p.null() : p.text(s.endedUtc);
+        p.text(std::string(toString(s.status))).text(s.verdict ? std::string(toString(*s.verdict)) : std::string());
+        p.text(m.deviceModel).text(m.deviceSerial).text(m.deviceFirmware).text(m.profileJson);
+        p.text(m.calibrationsJson).text(s.appVersion).int64(s.id);
+        return m_db
+            .query("INSERT INTO sessions (uuid, station, mode, subject, operator, site, notes, started_utc, ended_utc, "
+                   "status, verdict, device_model, device_serial, device_firmware, profile_json, calibrations_json, "
+                   "app_version, station_id) VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14, $15, "
+                   "$16, $17, $18) "
+                   "RETURNING id",
+                   p)
+            .int64(0, 0);
+    }
+
+    std::uint64_t copyChunks(std::int64_t local, std::int64_t id)
+    {
+        RowBatch rows(m_db, "INSERT INTO chunks (session_id, first_index, first_time_s, count, samples)", 5);
+        std::uint64_t values = 0;
+        m_local.forEachChunk(local, [&](const SessionStore::RawChunk& c) {
+            rows.row()
+                .int64(id)
+                .int64(static_cast<std::int64_t>(c.firstIndex))
+                .real(c.firstTime_s)
+                .int64(static_cast<std::int64_t>(c.count))
+                .bytes(c.samples);
+            values += c.samples.size() / 4;
+        });
+        rows.flush();
+        return values;
+    }
+
+    void insertChannelsAndGaps(std::int64_t local, std::int64_t id)
+    {
+        int position = 0;
+        for (const StoredChannel& c : m_local.channels(local))
+            m_db.query("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz) "
+                       "VALUES ($1, $2, $3, $4, $5, $6)",
+                       PgParams()
+                           .int64(id)
+                           .int64(position++)
+                           .text(c.descriptor.name)
+                           .text(c.descriptor.unit)
+                           .text(std::string(toString(c.descriptor.kind)))
+                           .real(c.sampleRate_hz));
+        for (const SampleGap& g : m_local.gaps(local))
+            m_db.query("INSERT INTO gaps (session_id, first_index, count) VALUES ($1, $2, $3)",
+                       PgParams()
+                           .int64(id)
+                           .int64(static_cast<std::int64_t>(g.firstIndex))
+                           .int64(static_cast<std::int64_t>(g.count)));
+    }
+
+    void copyPyramid(std::int64_t local, std::int64_t id)
+    {
+        RowBatch rows(m_db, "INSERT INTO lod (session_id, channel, level, first_bucket, count, buckets)", 6);
+        m_local.forEachLodRow(local, [&](const SessionStore::RawLodRow& r) {
+            rows.row()
+                .int64(id)
+                .int64(r.channel)
+                .int64(r.level)
+                .int64(static_cast<std::int64_t>(r.firstBucket))
+                .int64(static_cast<std::int64_t>(r.count))
+                .bytes(r.buckets);
+        });
+        rows.flush();
+    }
+
+    void insertRecords(std::int64_t local, std::int64_t id)
+    {
+        for (const std::string& analysis : m_local.analyses(local)) {
+            m_central.addEvents(id, m_local.events(local, analysis));
+            m_central.addReadings(id, m_local.readings(local, analysis));
+        }
+        for (const Annotation& a : m_local.annotations(local)) m_central.addAnnotation(id, a);
+        for (const SessionZero& z : m_local.zeros(local))
+            m_db.query("INSERT INTO zeros (session_id, first_index, values_json) VALUES ($1, $2, $3)",
+                       PgParams().int64(id).int64(static_cast<std::int64_t>(z.firstIndex)).text(z.valuesJson));
+        // The trail as it was decided (the session row holds its verdict).
+        for (const VerdictDecision& d : m_local.verdicts(local))
+            m_db.query("INSERT INTO verdicts (session_id, role, verdict, decided_by, decided_utc, note, basis_json) "
+                       "VALUES ($1, $2, $3, $4, $5, $6, $7)",
+                       PgParams()
+                           .int64(id)
+                           .text(std::string(toString(d.role)))
+                           .text(std::string(toString(d.verdict)))
+                           .text(d.decidedBy)
+                           .text(d.decidedUtc)
+                           .text(d.note)
+                           .text(d.basisJson));
+    }
+
+    // The calibrations the session used, shared with the station's other
+    // sessions: each sent once, found again by its identity.
+    void insertCalibrations(std::int64_t local, std::int64_t id)
+    {
+        for (const std::int64_t c : m_local.calibrationsOfSession(local)) {
+            const auto stored = m_local.calibration(c);
+            if (!stored) continue;
+            const calibration::CalibrationRecord& r = stored->record;
+            const PgParams identity = PgParams().text(m_station).text(r.sensorName).text(r.timestampUtc).text(r.kind);
+            PgParams insert = identity;
+            insert.text(r.operatorName).real(r.fit.rSquared).int64(static_cast<std::int64_t>(r.fit.points));
+            insert.text(r.toJson());
+            m_db.query("INSERT INTO calibrations (station, sensor, created_utc, kind, operator, r_squared, points, "
+                       "record_json) VALUES ($1, $2, $3, $4, $5, $6, $7, $8) ON CONFLICT DO NOTHING",
+                       insert);
+            const std::int64_t central =
+                m_db.query("SELECT id FROM calibrations WHERE station = $1 AND sensor = $2 AND created_utc = $3 "
+                           "AND kind = $4",
+                           identity)
+                    .int64(0, 0);
+            m_db.query("INSERT INTO session_calibrations VALUES ($1, $2) ON CONFLICT DO NOTHING",
+                       PgParams().int64(id).int64(central));
+        }
+    }
+
+    SessionStore& m_local;
+    CentralStore& m_central;
+    PgConnection& m_db;
+    std::string m_station;
+};
+
+// The checksums the server holds for these uuids (those it lets this role see).
+std::map<std::string, std::string> centralChecksums(PgConnection& db, const std::vector<SessionSummary>& sessions)
+{
+    std::string array = "{";
+    for (const SessionSummary& s : sessions) array += (array.size() > 1 ? ",\"" : "\"") + s.uuid + "\"";
+    array += "}";
+    const PgResult r =
+        db.query("SELECT uuid, checksum FROM sessions WHERE complete AND uuid = ANY($1::text[])", {array});
+    std::map<std::string, std::string> result;
+    for (int i = 0; i < r.rows(); ++i) result[r.text(i, 0)] = r.text(i, 1);
+    return result;
+}
+
+std::vector<SessionSummary> finishedSessions(SessionStore& local)
+{
+    std::vector<SessionSummary> result;
+    for (SessionSummary& s : local.sessions())
+        if (s.status != SessionStatus::Recording) result.push_back(std::move(s));
+    return result;
+}
+
+}  // namespace
+
+std::string syncSummary(const SyncOutcome& outcome)
+{
+    const double m = static_cast<double>(outcome.samplesSent) / 1e6;
+    int decimals = 0;
+    if (m >= 1.0)
+        decimals = 1;
+    else if (outcome.samplesSent > 0)
+        decimals = 1 - static_cast<int>(std::floor(std::log10(m)));
+    char millions[32];
+    std::snprintf(millions, sizeof millions, "%.*f", decimals, m);
+    return "synced " + std::to_string(outcome.sent) + " sessions (" + millions + " M samples), " +
+           std::to_string(outcome.alreadyThere) + " already there";
+}
+
+std::string sessionChecksum(SessionStore& local, std::int64_t session)
+{
+    std::string lines;
+    local.forEachChunk(session, [&lines](const SessionStore::RawChunk& c) {
+        if (!lines.empty()) lines += '\n';
+        lines += chunkLine(c.firstIndex, c.count, c.samples);
+    });
+    text::Md5 md5;
+    md5.add(lines);
+    return md5.hex();
+}
+
+SyncOutcome syncToCentral(SessionStore& local, CentralStore& central, const std::string& station, std::stop_token stop,
+                          const std::function<void(const SyncProgress&)>& progress)
+{
+    SyncOutcome outcome;
+    const std::vector<SessionSummary> all = local.sessions();
+    const std::vector<SessionSummary> finished = finishedSessions(local);
+    outcome.waiting = static_cast<int>(all.size() - finished.size());
+    const auto there = centralChecksums(central.connection(), finished);
+    SessionUpload upload(local, central, station.empty() ? central.connection().user() : station);
+    SyncProgress done{0, static_cast<int>(finished.size())};
+    // Oldest first, as they were recorded.
+    for (auto s = finished.rbegin(); s != finished.rend(); ++s, ++done.done) {
+        if (progress) progress(done);
+        if (stop.stop_requested()) {
+            outcome.cancelled = true;
+            break;
+        }
+        const std::string checksum = sessionChecksum(local, s->id);
+        if (const auto found = there.find(s->uuid); found != there.end()) {
+            if (found->second == checksum)
+                ++outcome.alreadyThere;
+            else
+                outcome.refused.push_back("session " + s->uuid +
+                                          " is on the central store with other samples; it was not overwritten");
+            continue;
+        }
+        try {
+            outcome.samplesSent += upload.send(*s, checksum);
+            ++outcome.sent;
+        } catch (const StorageError& e) {
+            // The server refusing this session; a lost server ends the sync.
+            if (!central.connection().isOpen()) throw;
+            outcome.refused.push_back("session " + s->uuid + " was refused: " + e.what());
+        }
+    }
+    if (progress) progress(done);
+    return outcome;
+}
+
+int sessionsToSync(SessionStore& local, CentralStore& central)
+{
+    const std::vector<SessionSummary> finished = finishedSessions(local);
+    return static_cast<int>(finished.size() - centralChecksums(central.connection(), finished).size());
+}
+
+}  // namespace tactiscope::core::storage::central

@@ -1,0 +1,288 @@
+// A site's central store on a real PostgreSQL server started for the suite,
+// fed by `tactiscope-cli sync` from two stations' stores written through
+// the store API: listed together with their station names, exported from
+// the server to the same bytes as from the station, a second sync sending
+// nothing, a sync killed mid-transaction leaving nothing and the next one
+// an exact copy, an unreachable server exiting 1 with the station's store
+// untouched, a uuid with other samples refused, and a station unable to
+// delete or change another's session.
+#include "core/storage/central/PgConnection.h"
+#include "support/CliRunner.h"
+#include "support/FileBytes.h"
+#include "support/PostgresServer.h"
+#include "support/StationStore.h"
+#include "support/WaitFor.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <memory>
+
+using namespace tactiscope;
+using core::storage::StorageError;
+using core::storage::central::PgConnection;
+using tactiscope::testing::CliResult;
+using tactiscope::testing::fileBytes;
+using tactiscope::testing::PostgresServer;
+using tactiscope::testing::runCli;
+
+namespace {
+
+class CentralStoreCli : public ::testing::Test {
+protected:
+    static void SetUpTestSuite()
+    {
+        s_server = std::make_unique<PostgresServer>();
+        PgConnection owner(s_server->conninfo());
+        // Roles are the cluster's; each test has a database of its own.
+        ASSERT_EQ(runCli({"server", "init", QString::fromStdString(s_server->conninfo())}).exitCode, 0);
+        owner.run("CREATE ROLE press_a LOGIN IN ROLE tactiscope_station; "
+                  "CREATE ROLE press_b LOGIN IN ROLE tactiscope_station; "
+                  "CREATE ROLE quality LOGIN IN ROLE tactiscope_reviewer;");
+    }
+    static void TearDownTestSuite() { s_server.reset(); }
+
+    void SetUp() override
+    {
+        static int count = 0;
+        m_database = "site" + std::to_string(++count);
+        PgConnection(s_server->conninfo()).run("CREATE DATABASE " + m_database);
+        const CliResult init = runCli({"server", "init", server()});
+        ASSERT_EQ(init.exitCode, 0) << init.err.toStdString();
+        tactiscope::testing::StationStoreOptions a, b;
+        a.subjectPrefix = "door";
+        b.subjectPrefix = "hood";
+        b.seed = 7;
+        tactiscope::testing::writeStationStore(m_stationA.toStdString(), a);
+        tactiscope::testing::writeStationStore(m_stationB.toStdString(), b);
+    }
+
+    QString server(const std::string& user = PostgresServer::kOwner) const
+    {
+        return QString::fromStdString(s_server->conninfo(user, m_database));
+    }
+    PgConnection connect(const std::string& user = PostgresServer::kOwner) const
+    {
+        return PgConnection(s_server->conninfo(user, m_database));
+    }
+    static CliResult sync(const QString& db, const QString& server, const QStringList& extra = {})
+    {
+        return runCli(QStringList{"sync", "--db", db, "--server", server} + extra);
+    }
+    // uuid → station of what `db` lists.
+    static std::map<QString, QString> listed(const QString& db)
+    {
+        const CliResult list = runCli({"sessions", "--db", db, "list", "--json"});
+        EXPECT_EQ(list.exitCode, 0) << list.err.toStdString();
+        std::map<QString, QString> result;
+        for (const auto& s : QJsonDocument::fromJson(list.out.toUtf8()).array())
+            result[s.toObject()["uuid"].toString()] = s.toObject()["station"].toString();
+        return result;
+    }
+    QString exported(const QString& db, const QString& uuid, const QString& format, const QString& name) const
+    {
+        const QString path = m_dir.filePath(name);
+        const CliResult r = runCli({"sessions", "--db", db, "export", uuid, "--format", format, "--output", path});
+        EXPECT_EQ(r.exitCode, 0) << r.err.toStdString();
+        return path;
+    }
+    // The station's sessions export to the same bytes from the server.
+    void expectSameExports(const QString& station, const QString& central) const
+    {
+        for (const auto& [uuid, name] : listed(station)) {
+            for (const QString format : {"json", "csv"}) {
+                const QString local = exported(station, uuid, format, uuid + "-local." + format);
+                const QString server = exported(central, uuid, format, uuid + "-central." + format);
+                const std::string fromStation = fileBytes(local.toStdString());
+                EXPECT_TRUE(fromStation == fileBytes(server.toStdString()))
+                    << uuid.toStdString() << " " << format.toStdString();
+                EXPECT_GT(fromStation.size(), 100U);
+            }
+            const QString localMeta = m_dir.filePath(uuid + "-local.meta.json");
+            EXPECT_TRUE(fileBytes(localMeta.toStdString()) ==
+                        fileBytes(m_dir.filePath(uuid + "-central.meta.json").toStdString()))
+                << uuid.toStdString();
+        }
+    }
+
+    static inline std::unique_ptr<PostgresServer> s_server;
+    QTemporaryDir m_dir;
+    QString m_stationA = m_dir.filePath("press-a.tactiscope");
+    QString m_stationB = m_dir.filePath("press-b.tactiscope");
+    std::string m_database;
+};
+
+bool refused(PgConnection& as, const std::string& statement, const std::vector<std::optional<std::string>>& values)
+{
+    try {
+        return as.query(statement, values).rows() == 0;  // RLS hides the row: nothing changed
+    } catch (const StorageError&) {
+        return true;
+    }
+}
+
+}  // namespace
+
+TEST_F(CentralStoreCli, TwoStationsListTogetherWithTheirNamesAndExportTheSameBytes)
+{
+    const CliResult a = sync(m_stationA, server("press_a"));
+    ASSERT_EQ(a.exitCode, 0) << a.err.toStdString();
+    // 5 500 + 1 500 + 700 samples per channel, over 2, 2 and 1 channels.
+    EXPECT_EQ(a.out, "synced 3 sessions (0.015 M samples), 0 already there\n");
+    const CliResult b = sync(m_stationB, server("press_b"));
+    ASSERT_EQ(b.exitCode, 0) << b.err.toStdString();
+
+    // The reviewer sees both stations; a station sees its own.
+    const auto all = listed(server("quality"));
+    ASSERT_EQ(all.size(), 6U);
+    for (const auto& [uuid, station] : listed(m_stationA)) EXPECT_EQ(all.at(uuid), "press_a");
+    for (const auto& [uuid, station] : listed(m_stationB)) EXPECT_EQ(all.at(uuid), "press_b");
+    EXPECT_EQ(listed(server("press_b")).size(), 3U);
+    EXPECT_EQ(listed(m_stationA).begin()->second, "");  // a station's own store names no station
+
+    expectSameExports(m_stationA, server("quality"));
+    expectSameExports(m_stationB, server("quality"));
+}
+
+TEST_F(CentralStoreCli, TheConnectionStringMayBeAUri)
+{
+    ASSERT_EQ(sync(m_stationA, server("press_a")).exitCode, 0);
+    const QString uri = QStringLiteral("postgresql:///%1?host=%2&user=quality")
+                            .arg(QString::fromStdString(m_database), QString::fromStdString(s_server->folder()));
+    EXPECT_EQ(listed(uri).size(), 3U);
+    const QString reportPath = m_dir.filePath("r.pdf");
+    const CliResult report =
+        runCli({"report", "--db", uri, "--session", listed(m_stationA).begin()->first, "--output", reportPath});
+    EXPECT_EQ(report.exitCode, 0) << report.err.toStdString();
+}
+
+TEST_F(CentralStoreCli, AReviewerAnalysesAndDecidesOnTheServer)
+{
+    ASSERT_EQ(sync(m_stationA, server("press_a")).exitCode, 0);
+    QString panel;
+    for (const auto& [uuid, station] : listed(m_stationA))
+        if (runCli({"sessions", "--db", m_stationA, "show", uuid}).out.contains("panel-scan")) panel = uuid;
+    const CliResult analyze = runCli({"analyze", "--db", server("quality"), "--session", panel, "--json"});
+    EXPECT_EQ(analyze.exitCode, 0) << analyze.err.toStdString();
+    const CliResult verdict = runCli(
+        {"sessions", "--db", server("quality"), "verdict", panel, "pass", "--by", "Grace", "--note", "a smudge"});
+    ASSERT_EQ(verdict.exitCode, 0) << verdict.err.toStdString();
+    const CliResult show = runCli({"sessions", "--db", server("quality"), "show", panel});
+    EXPECT_TRUE(show.out.contains("Grace") && show.out.contains("a smudge")) << show.out.toStdString();
+    // The station's own store keeps its trail; the reviewer's is the server's.
+    EXPECT_FALSE(runCli({"sessions", "--db", m_stationA, "show", panel}).out.contains("Grace"));
+    EXPECT_EQ(connect().query("SELECT added_by FROM verdicts ORDER BY id DESC LIMIT 1").text(0, 0), "quality");
+}
+
+TEST_F(CentralStoreCli, ASecondSyncSendsNothing)
+{
+    ASSERT_EQ(sync(m_stationA, server("press_a")).exitCode, 0);
+    const CliResult again = sync(m_stationA, server("press_a"));
+    EXPECT_EQ(again.exitCode, 0) << again.err.toStdString();
+    EXPECT_EQ(again.out, "synced 0 sessions (0 M samples), 3 already there\n");
+    EXPECT_EQ(connect().query("SELECT count(*) FROM sessions").text(0, 0), "3");
+}
+
+TEST_F(CentralStoreCli, ASyncKilledMidTransactionLeavesNothingAndTheNextMakesAnExactCopy)
+{
+    // The owner holds the pyramid table, so the sync stops inside its first
+    // session's transaction, after the samples went in.
+    PgConnection owner = connect();
+    owner.run("BEGIN; LOCK TABLE lod IN ACCESS EXCLUSIVE MODE;");
+    QProcess process;
+    process.start(QStringLiteral(TACTISCOPE_CLI), {"sync", "--db", m_stationA, "--server", server("press_a")});
+    PgConnection observer = connect();
+    const auto waitingOnTheLock = [&] {
+        return observer
+                   .query("SELECT count(*) FROM pg_stat_activity WHERE usename = 'press_a' AND wait_event_type = "
+                          "'Lock'")
+                   .text(0, 0) == "1";
+    };
+    ASSERT_TRUE(tactiscope::testing::waitFor(waitingOnTheLock, 30000));
+    EXPECT_EQ(listed(server("quality")).size(), 0U);  // nothing is visible half sent
+    process.kill();                                   // SIGKILL
+    process.waitForFinished();
+    owner.run("ROLLBACK");
+    const auto gone = [&] {
+        return observer.query("SELECT count(*) FROM pg_stat_activity WHERE usename = 'press_a'").text(0, 0) == "0";
+    };
+    ASSERT_TRUE(tactiscope::testing::waitFor(gone, 30000));
+    for (const char* table : {"sessions", "chunks", "lod", "channels", "events"})
+        EXPECT_EQ(owner.query(std::string("SELECT count(*) FROM ") + table).text(0, 0), "0") << table;
+
+    const CliResult again = sync(m_stationA, server("press_a"));
+    ASSERT_EQ(again.exitCode, 0) << again.err.toStdString();
+    EXPECT_TRUE(again.out.startsWith("synced 3 sessions")) << again.out.toStdString();
+    expectSameExports(m_stationA, server("quality"));
+}
+
+TEST_F(CentralStoreCli, AnUnreachableServerExits1AndLeavesTheStationsStoreAsItWas)
+{
+    const std::string before = fileBytes(m_stationA.toStdString());
+    const CliResult r =
+        sync(m_stationA, QStringLiteral("host=%1 dbname=site user=press_a").arg(m_dir.filePath("none")));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_TRUE(r.err.contains("cannot reach the central store")) << r.err.toStdString();
+    EXPECT_TRUE(r.out.isEmpty());
+    EXPECT_EQ(fileBytes(m_stationA.toStdString()), before);
+    EXPECT_EQ(listed(m_stationA).size(), 3U);
+}
+
+TEST_F(CentralStoreCli, AUuidOnTheServerWithOtherSamplesIsRefusedNotOverwritten)
+{
+    ASSERT_EQ(sync(m_stationA, server("press_a")).exitCode, 0);
+    // Another store holding the palpation session's uuid with other samples.
+    const QString uuid = [&] {
+        for (const auto& [u, station] : listed(m_stationA))
+            if (runCli({"sessions", "--db", m_stationA, "show", u}).out.contains("palpation")) return u;
+        return QString();
+    }();
+    ASSERT_FALSE(uuid.isEmpty());
+    const QString forged = m_dir.filePath("forged.tactiscope");
+    {
+        core::storage::SessionStore store(forged.toStdString());
+        const std::vector<core::ChannelDescriptor> channels{{"high", "N", core::ChannelKind::Force}};
+        const auto id = store.beginSession({}, channels, 500.0, {uuid.toStdString(), "2026-11-24T09:00:00.000Z", "x"});
+        tactiscope::testing::writeSamples(store, id, 1, 1000, 500.0, 99);
+        store.endSession(id, core::SessionStatus::Complete);
+    }
+    const QString before = exported(server("quality"), uuid, "json", "before.json");
+    const CliResult r = sync(forged, server("press_a"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_TRUE(r.err.contains(uuid) && r.err.contains("not overwritten")) << r.err.toStdString();
+    EXPECT_EQ(r.out, "synced 0 sessions (0 M samples), 0 already there\n");
+    EXPECT_EQ(fileBytes(exported(server("quality"), uuid, "json", "after.json").toStdString()),
+              fileBytes(before.toStdString()));
+}
+
+TEST_F(CentralStoreCli, AStationCanNeitherDeleteNorChangeAnothersSession)
+{
+    ASSERT_EQ(sync(m_stationA, server("press_a")).exitCode, 0);
+    const QString uuid = listed(m_stationA).begin()->first;
+    // press_b does not even see it; press_a may not delete its own either.
+    const CliResult b = runCli({"sessions", "--db", server("press_b"), "delete", uuid});
+    EXPECT_NE(b.exitCode, 0);
+    EXPECT_TRUE(b.err.contains("no session")) << b.err.toStdString();
+    const CliResult a = runCli({"sessions", "--db", server("press_a"), "delete", uuid});
+    EXPECT_NE(a.exitCode, 0);
+    EXPECT_TRUE(a.err.contains("permission denied")) << a.err.toStdString();
+    PgConnection pressB = connect("press_b");
+    EXPECT_TRUE(
+        refused(pressB, "UPDATE sessions SET subject = 'x' WHERE uuid = $1 RETURNING id", {uuid.toStdString()}));
+    EXPECT_TRUE(refused(pressB, "DELETE FROM sessions WHERE uuid = $1 RETURNING id", {uuid.toStdString()}));
+    // Nor send sessions in its name.
+    const CliResult impersonated = sync(m_stationB, server("press_b"), {"--station", "press_a"});
+    EXPECT_EQ(impersonated.exitCode, 1);
+    EXPECT_TRUE(impersonated.err.contains("row-level security")) << impersonated.err.toStdString();
+    EXPECT_EQ(listed(server("quality")).size(), 3U);
+    // The owner deletes.
+    const CliResult owner = runCli({"sessions", "--db", server(), "delete", uuid});
+    EXPECT_EQ(owner.exitCode, 0) << owner.err.toStdString();
+    EXPECT_EQ(listed(server("quality")).size(), 2U);
+}

@@ -1,0 +1,163 @@
+// The GUI on a site's central store, on a real PostgreSQL server started
+// for the suite: the session browser lists two stations' synced sessions
+// with their station names, and one opens for review from the server; the
+// background push of Session ▸ Central store… sends a station's sessions,
+// says none wait afterwards, and says why when the server cannot be
+// reached.
+#include "core/storage/StoreWorker.h"
+#include "core/storage/central/CentralSchema.h"
+#include "core/storage/central/CentralSync.h"
+#include "ui/MainWindow.h"
+#include "ui/central/CentralStoreDialog.h"
+#include "ui/central/CentralStoreLink.h"
+#include "ui/central/CentralSyncController.h"
+#include "ui/review/ReviewWindow.h"
+#include "ui/review/ReviewWindows.h"
+#include "ui/review/SessionBrowser.h"
+#include "ui/review/SessionTableModel.h"
+
+#include "support/MainWindowHelpers.h"
+#include "support/PostgresServer.h"
+#include "support/Screenshot.h"
+#include "support/StationStore.h"
+#include "support/TempDirectory.h"
+#include "support/WaitFor.h"
+
+#include <QHeaderView>
+#include <QLabel>
+#include <QSettings>
+#include <QTableView>
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+using namespace tactiscope;
+using core::storage::central::PgConnection;
+using tactiscope::testing::child;
+using tactiscope::testing::PostgresServer;
+using tactiscope::testing::waitFor;
+
+namespace {
+
+class CentralStoreUi : public tactiscope::testing::TempDirectoryTest {
+protected:
+    static void SetUpTestSuite()
+    {
+        s_server = std::make_unique<PostgresServer>();
+        PgConnection owner(s_server->conninfo());
+        core::storage::central::initCentralStore(owner);
+        owner.run("CREATE ROLE press_a LOGIN IN ROLE tactiscope_station; "
+                  "CREATE ROLE press_b LOGIN IN ROLE tactiscope_station; "
+                  "CREATE ROLE quality LOGIN IN ROLE tactiscope_reviewer;");
+    }
+    static void TearDownTestSuite() { s_server.reset(); }
+
+    void TearDown() override
+    {
+        // Each test starts with nothing sent and no server set.
+        PgConnection(s_server->conninfo()).run("DELETE FROM sessions; DELETE FROM calibrations;");
+        QSettings().remove(QStringLiteral("central"));
+        TempDirectoryTest::TearDown();
+    }
+
+    // A station's store with its three sessions, sent as `station`.
+    std::string stationStore(const std::string& station, int seed)
+    {
+        const std::string path = file(station + ".tactiscope");
+        tactiscope::testing::StationStoreOptions options;
+        options.seed = seed;
+        options.subjectPrefix = station;
+        tactiscope::testing::writeStationStore(path, options);
+        return path;
+    }
+    static void sync(const std::string& path, const std::string& station)
+    {
+        core::storage::SessionStore local(path, core::storage::Database::Access::ReadOnly);
+        core::storage::central::CentralStore central(s_server->conninfo(station));
+        ASSERT_EQ(core::storage::central::syncToCentral(local, central).sent, 3);
+    }
+
+    static inline std::unique_ptr<PostgresServer> s_server;
+};
+
+}  // namespace
+
+TEST_F(CentralStoreUi, TheBrowserListsBothStationsAndASessionOpensFromTheServer)
+{
+    sync(stationStore("press_a", 1), "press_a");
+    sync(stationStore("press_b", 2), "press_b");
+    QWidget owner;
+    ui::ReviewWindows reviews(&owner);
+    const QString conninfo = QString::fromStdString(s_server->conninfo("quality"));
+    ui::SessionBrowser* browser = reviews.showCentralBrowser(conninfo);
+    ASSERT_NE(browser, nullptr);
+    QTableView* table = browser->table();
+    ASSERT_EQ(table->model()->rowCount(), 6);
+    EXPECT_FALSE(table->isColumnHidden(ui::SessionTableModel::Station));
+    std::multiset<QString> stations;
+    for (int row = 0; row < 6; ++row)
+        stations.insert(table->model()->index(row, ui::SessionTableModel::Station).data().toString());
+    EXPECT_EQ(stations.count("press_a"), 3U);
+    EXPECT_EQ(stations.count("press_b"), 3U);
+    EXPECT_EQ(child<QLabel>(*browser, "countText")->text(), "6 of 6 sessions");
+    EXPECT_TRUE(browser->windowTitle().contains("central store"));
+    tactiscope::testing::saveScreenshot(*browser, "central-store-browser");
+
+    // Review straight from the server: the panel scan, with its samples.
+    for (int row = 0; row < 6; ++row)
+        if (table->model()->index(row, ui::SessionTableModel::Subject).data().toString() == "press_a-17")
+            table->selectRow(row);
+    browser->openSelected();
+    ui::ReviewWindow* review = nullptr;
+    ASSERT_TRUE(waitFor([&] { return (review = owner.findChild<ui::ReviewWindow*>()) != nullptr; }, 10000));
+    EXPECT_EQ(review->storePath(), conninfo);
+    EXPECT_EQ(review->store().sampleCount(review->sessionId()), 6000U);
+    EXPECT_EQ(review->store().events(review->sessionId()).size(), 1U);
+    review->resize(1200, 700);
+    tactiscope::testing::saveScreenshot(*review, "central-store-review");
+}
+
+TEST_F(CentralStoreUi, TheBackgroundPushSendsTheStationsSessionsAndSaysNoneWait)
+{
+    const std::string path = stationStore("press_a", 3);
+    ui::CentralSyncController controller;
+    controller.setStorePath(QString::fromStdString(path));
+    EXPECT_FALSE(controller.state().running);  // nothing set: nothing sent
+    ui::CentralStoreDialog dialog(&controller);
+    dialog.show();
+    EXPECT_EQ(child<QLabel>(dialog, "waitingText")->text(), "nothing is sent: no server is set");
+
+    controller.setServer(QString::fromStdString(s_server->conninfo("press_a")), {});
+    ASSERT_TRUE(
+        waitFor([&] { return !controller.state().running && controller.state().lastAttempt.isValid(); }, 30000));
+    EXPECT_EQ(controller.state().lastError, "");
+    EXPECT_EQ(controller.state().lastOutcome, "synced 3 sessions (0.015 M samples), 0 already there");
+    ASSERT_TRUE(controller.state().waiting);
+    EXPECT_EQ(*controller.state().waiting, 0);
+    EXPECT_EQ(child<QLabel>(dialog, "waitingText")->text(), "none");
+    EXPECT_EQ(PgConnection(s_server->conninfo()).query("SELECT count(*) FROM sessions").text(0, 0), "3");
+    tactiscope::testing::saveScreenshot(dialog, "central-store-dialog");
+}
+
+TEST_F(CentralStoreUi, AnUnreachableServerIsShownWithItsReasonAndTheSessionsWait)
+{
+    const std::string path = stationStore("press_a", 4);
+    ui::MainWindow window;
+    window.show();
+    auto* link = window.findChild<ui::CentralStoreLink*>();
+    ASSERT_NE(link, nullptr);
+    ui::CentralStoreDialog* dialog = link->showDialog();
+    link->controller()->setStorePath(QString::fromStdString(path));
+    link->controller()->setServer(
+        QStringLiteral("host=%1 dbname=site user=press_a").arg(QString::fromStdString(file("none"))), {});
+    ASSERT_TRUE(waitFor([&] { return link->controller()->state().lastAttempt.isValid(); }, 30000));
+    const QString error = child<QLabel>(*dialog, "lastErrorText")->text();
+    EXPECT_TRUE(error.contains("cannot reach the central store")) << error.toStdString();
+    EXPECT_EQ(child<QLabel>(*dialog, "waitingText")->text(), "not counted yet (the server has not been reached)");
+    auto* field = child<QLabel>(window, "centralStoreLabel");
+    EXPECT_TRUE(field->isVisible());
+    EXPECT_TRUE(field->text().contains("cannot send")) << field->text().toStdString();
+    EXPECT_TRUE(field->toolTip().contains("cannot reach")) << field->toolTip().toStdString();
+    tactiscope::testing::saveScreenshot(*dialog, "central-store-dialog-offline");
+}
