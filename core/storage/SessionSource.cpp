@@ -3,6 +3,16 @@
 
 namespace tactiscope::core::storage {
 
+std::string textSearchPattern(const std::string& text)
+{
+    std::string pattern = "%";
+    for (const char c : text) {
+        if (c == '%' || c == '_' || c == '\\') pattern += '\\';
+        pattern += c;
+    }
+    return pattern + "%";
+}
+
 std::vector<double> SessionSource::readChannel(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,
                                                std::uint64_t count)
 {

@@ -71,6 +71,10 @@ struct SessionFilter {
     std::string text;  // found in subject, operator, site, notes, verdict or device serial (any case)
 };
 
+// The LIKE pattern (escaped by a backslash) that finds SessionFilter::text
+// anywhere in a column: its own '%' and '_' are literal, so "10%" finds "10%".
+std::string textSearchPattern(const std::string& text);
+
 using lod::OverviewPoint;
 
 struct StoredChannel {

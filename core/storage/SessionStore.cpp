@@ -85,17 +85,6 @@ const std::string& summaryQuery()
     return sql;
 }
 
-// Escapes LIKE's wildcards so a search for "10%" finds "10%".
-std::string likePattern(const std::string& text)
-{
-    std::string pattern = "%";
-    for (const char c : text) {
-        if (c == '%' || c == '_' || c == '\\') pattern += '\\';
-        pattern += c;
-    }
-    return pattern + "%";
-}
-
 // A chunk holds at most this many samples per channel (unless one block is
 // larger): blocks of a commit are merged up to it, so an hour is a few
 // thousand rows rather than one per device frame.
@@ -369,7 +358,7 @@ std::vector<SessionSummary> SessionStore::sessions(const SessionFilter& filter)
         const std::string like = " LIKE ?" + std::to_string(values.size() + 1) + " ESCAPE '\\'";
         where += " AND (subject" + like + " OR operator" + like + " OR site" + like + " OR notes" + like +
                  " OR verdict" + like + " OR device_serial" + like + ")";
-        values.push_back(likePattern(filter.text));
+        values.push_back(textSearchPattern(filter.text));
     }
     auto query = m_db.prepare(summaryQuery() + where + " ORDER BY started_utc DESC, id DESC");
     for (std::size_t i = 0; i < values.size(); ++i) query.bind(static_cast<int>(i + 1), values[i]);

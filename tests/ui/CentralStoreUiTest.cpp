@@ -93,7 +93,8 @@ TEST_F(CentralStoreUi, TheBrowserListsBothStationsAndASessionOpensFromTheServer)
     ui::SessionBrowser* browser = reviews.showCentralBrowser(conninfo);
     ASSERT_NE(browser, nullptr);
     QTableView* table = browser->table();
-    ASSERT_EQ(table->model()->rowCount(), 6);
+    // Read off the window's thread: the rows come when the server answers.
+    ASSERT_TRUE(waitFor([&] { return table->model()->rowCount() == 6; }, 10000));
     EXPECT_FALSE(table->isColumnHidden(ui::SessionTableModel::Station));
     std::multiset<QString> stations;
     for (int row = 0; row < 6; ++row)

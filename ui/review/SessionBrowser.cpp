@@ -66,6 +66,17 @@ QString describe(const core::storage::SessionSummary& s)
 
 }  // namespace
 
+SessionBrowser::Listing SessionBrowser::listSessions(SessionSource& store, const core::storage::SessionFilter& filter)
+{
+    Listing listing;
+    const auto all = store.sessions();
+    listing.total = all.size();
+    for (const auto& s : all)
+        if (s.verdict) listing.verdicts << wordText(s.verdict);
+    listing.shown = store.sessions(filter);
+    return listing;
+}
+
 SessionBrowser::SessionBrowser(std::shared_ptr<core::storage::StoreWorker> store, QWidget* parent)
     : QDialog(parent),
       m_store(std::move(store)),
@@ -178,37 +189,46 @@ SessionBrowser::SessionBrowser(std::shared_ptr<core::storage::StoreWorker> store
 void SessionBrowser::reload()
 {
     m_problem->hide();
-    std::vector<core::storage::SessionSummary> shown;
-    std::size_t total = 0;
     if (!m_central && !QFileInfo::exists(m_storePath)) {
         m_problem->setText(tr("No session has been recorded into %1 yet.").arg(m_storePath));
         m_problem->show();
-    } else {
-        core::storage::SessionFilter filter;
-        filter.text = m_search->text().trimmed().toStdString();
-        if (m_mode->currentIndex() > 0) filter.mode = core::modeFromString(m_mode->currentText().toStdString());
-        if (m_verdict->currentIndex() > 0)
-            filter.verdict = core::verdictFromString(m_verdict->currentText().toStdString());
-        if (m_from->date() != kAnyDate) filter.startedFrom = utcStartOf(m_from->date());
-        if (m_to->date() != kAnyDate) filter.startedBefore = utcStartOf(m_to->date().addDays(1));
-        try {
-            const auto store =
-                core::storage::openSessionSource(m_storePath.toStdString(), core::storage::Database::Access::ReadOnly);
-            const auto all = store->sessions();
-            total = all.size();
-            QStringList verdicts;
-            for (const auto& s : all)
-                if (s.verdict) verdicts << wordText(s.verdict);
-            fillChoices(m_verdict, verdicts);
-            shown = store->sessions(filter);
-        } catch (const core::storage::StorageError& e) {
-            showProblem(tr("The store cannot be read: %1").arg(QString::fromStdString(e.what())));
-        }
-        if (m_status->currentIndex() > 0)
-            std::erase_if(shown, [&](const auto& s) { return wordText(s.status) != m_status->currentText(); });
+        showListing({});
+        return;
     }
-    m_model->setSessions(std::move(shown));
-    m_count->setText(tr("%1 of %2 sessions").arg(m_model->rowCount()).arg(total));
+    core::storage::SessionFilter filter;
+    filter.text = m_search->text().trimmed().toStdString();
+    if (m_mode->currentIndex() > 0) filter.mode = core::modeFromString(m_mode->currentText().toStdString());
+    if (m_verdict->currentIndex() > 0) filter.verdict = core::verdictFromString(m_verdict->currentText().toStdString());
+    if (m_from->date() != kAnyDate) filter.startedFrom = utcStartOf(m_from->date());
+    if (m_to->date() != kAnyDate) filter.startedBefore = utcStartOf(m_to->date().addDays(1));
+    const auto failed = [this](const QString& error) {
+        showProblem(tr("The store cannot be read: %1").arg(error));
+        showListing({});
+    };
+    if (m_central) {
+        // A server may be slow or away: the window never waits on it.
+        m_count->setText(tr("Reading the central store…"));
+        runOnStore(
+            *m_store, this, [filter](SessionSource& store) { return listSessions(store, filter); },
+            [this](Listing listing) { showListing(std::move(listing)); }, failed);
+        return;
+    }
+    try {
+        const auto store =
+            core::storage::openSessionSource(m_storePath.toStdString(), core::storage::Database::Access::ReadOnly);
+        showListing(listSessions(*store, filter));
+    } catch (const core::storage::StorageError& e) {
+        failed(QString::fromStdString(e.what()));
+    }
+}
+
+void SessionBrowser::showListing(Listing listing)
+{
+    fillChoices(m_verdict, listing.verdicts);
+    if (m_status->currentIndex() > 0)
+        std::erase_if(listing.shown, [&](const auto& s) { return wordText(s.status) != m_status->currentText(); });
+    m_model->setSessions(std::move(listing.shown));
+    m_count->setText(tr("%1 of %2 sessions").arg(m_model->rowCount()).arg(listing.total));
     updateButtons();
 }
 

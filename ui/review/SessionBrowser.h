@@ -8,7 +8,10 @@
 // samples) runs on the window's store worker, off the GUI thread.
 #pragma once
 
+#include "core/storage/SessionSource.h"
+
 #include <QDialog>
+#include <QStringList>
 #include <QTimer>
 
 #include <cstdint>
@@ -56,6 +59,15 @@ signals:
     void sessionsDeleted(const std::vector<std::int64_t>& sessions);
 
 private:
+    // What a reload found: the sessions the filter keeps, how many the
+    // store holds, and the verdicts it uses (for the verdict filter).
+    struct Listing {
+        std::vector<core::storage::SessionSummary> shown;
+        std::size_t total = 0;
+        QStringList verdicts;
+    };
+    static Listing listSessions(core::storage::SessionSource& store, const core::storage::SessionFilter& filter);
+    void showListing(Listing listing);
     void deleteSessions(const std::vector<std::int64_t>& sessions);
     void updateButtons();
     void showProblem(const QString& message);

@@ -65,6 +65,10 @@ CREATE TABLE IF NOT EXISTS chunks (
     PRIMARY KEY (session_id, first_index)
 );
 
+-- Samples and pyramid rows are binary32s, which pglz does not shrink:
+-- stored out of line uncompressed, nothing is spent trying.
+ALTER TABLE chunks ALTER COLUMN samples SET STORAGE EXTERNAL;
+
 CREATE TABLE IF NOT EXISTS gaps (
     session_id  BIGINT NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
     first_index BIGINT NOT NULL,
@@ -81,6 +85,8 @@ CREATE TABLE IF NOT EXISTS lod (
     buckets      BYTEA NOT NULL,
     PRIMARY KEY (session_id, channel, level, first_bucket)
 );
+
+ALTER TABLE lod ALTER COLUMN buckets SET STORAGE EXTERNAL;
 
 CREATE TABLE IF NOT EXISTS events (
     id            BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY,

@@ -56,17 +56,6 @@ SessionSummary summaryFrom(const PgResult& r, int row)
     return s;
 }
 
-// Escapes LIKE's wildcards so a search for "10%" finds "10%".
-std::string likePattern(const std::string& text)
-{
-    std::string pattern = "%";
-    for (const char c : text) {
-        if (c == '%' || c == '_' || c == '\\') pattern += '\\';
-        pattern += c;
-    }
-    return pattern + "%";
-}
-
 std::string noChannel(std::int64_t session, std::size_t channel)
 {
     return "session " + std::to_string(session) + " has no channel " + std::to_string(channel);
@@ -151,7 +140,7 @@ std::vector<SessionSummary> CentralStore::sessions(const SessionFilter& filter)
         const std::string like = " ILIKE $" + std::to_string(++n) + " ESCAPE '\\'";
         where += " AND (subject" + like + " OR operator" + like + " OR site" + like + " OR notes" + like +
                  " OR verdict" + like + " OR device_serial" + like + ")";
-        values.text(likePattern(filter.text));
+        values.text(textSearchPattern(filter.text));
     }
     const PgResult r =
         m_connection.query(kSummaryQuery + where + " ORDER BY started_utc DESC, id DESC", values, PgFormat::Binary);
@@ -414,19 +403,32 @@ std::int64_t CentralStore::decideVerdict(std::int64_t session, const VerdictDeci
     if (updated.rows() == 0)
         throw StorageError("session " + std::to_string(session) + " is not in the central store, or this role (" +
                            m_connection.user() + ") may not decide its verdict");
-    const PgResult id = m_connection.query(
-        "INSERT INTO verdicts (session_id, role, verdict, decided_by, decided_utc, note, basis_json) "
-        "VALUES ($1, $2, $3, $4, $5, $6, $7) RETURNING id",
-        PgParams()
-            .int64(session)
-            .text(std::string(toString(d.role)))
-            .text(std::string(toString(d.verdict)))
-            .text(d.decidedBy)
-            .text(d.decidedUtc.empty() ? text::utcNow() : d.decidedUtc)
-            .text(d.note)
-            .text(d.basisJson));
+    const std::int64_t id = addToVerdictTrail(session, d);
     transaction.commit();
-    return id.int64(0, 0);
+    return id;
+}
+
+std::int64_t CentralStore::addToVerdictTrail(std::int64_t session, const VerdictDecision& d)
+{
+    return m_connection
+        .query("INSERT INTO verdicts (session_id, role, verdict, decided_by, decided_utc, note, basis_json) "
+               "VALUES ($1, $2, $3, $4, $5, $6, $7) RETURNING id",
+               PgParams()
+                   .int64(session)
+                   .text(std::string(toString(d.role)))
+                   .text(std::string(toString(d.verdict)))
+                   .text(d.decidedBy)
+                   .text(d.decidedUtc.empty() ? text::utcNow() : d.decidedUtc)
+                   .text(d.note)
+                   .text(d.basisJson))
+        .int64(0, 0);
+}
+
+void CentralStore::addZero(std::int64_t session, const SessionZero& zero)
+{
+    m_connection.query(
+        "INSERT INTO zeros (session_id, first_index, values_json) VALUES ($1, $2, $3)",
+        PgParams().int64(session).int64(static_cast<std::int64_t>(zero.firstIndex)).text(zero.valuesJson));
 }
 
 std::int64_t CentralStore::addAnnotation(std::int64_t session, const Annotation& a)

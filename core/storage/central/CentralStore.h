@@ -58,6 +58,12 @@ public:
     void addReadings(std::int64_t session, std::span<const SessionReading> readings) override;
     void deleteSession(std::int64_t session) override;
 
+    // For a copy of a station's session (CentralSync): a decision added to
+    // the trail as it was decided, without making it the session's verdict
+    // (the copied session row holds that); and a zero.
+    std::int64_t addToVerdictTrail(std::int64_t session, const VerdictDecision& decision);
+    void addZero(std::int64_t session, const SessionZero& zero);
+
 private:
     std::vector<std::int64_t> ids(const std::string& sql, std::int64_t parameter);
 

@@ -177,21 +177,8 @@ private:
             m_central.addReadings(id, m_local.readings(local, analysis));
         }
         for (const Annotation& a : m_local.annotations(local)) m_central.addAnnotation(id, a);
-        for (const SessionZero& z : m_local.zeros(local))
-            m_db.query("INSERT INTO zeros (session_id, first_index, values_json) VALUES ($1, $2, $3)",
-                       PgParams().int64(id).int64(static_cast<std::int64_t>(z.firstIndex)).text(z.valuesJson));
-        // The trail as it was decided (the session row holds its verdict).
-        for (const VerdictDecision& d : m_local.verdicts(local))
-            m_db.query("INSERT INTO verdicts (session_id, role, verdict, decided_by, decided_utc, note, basis_json) "
-                       "VALUES ($1, $2, $3, $4, $5, $6, $7)",
-                       PgParams()
-                           .int64(id)
-                           .text(std::string(toString(d.role)))
-                           .text(std::string(toString(d.verdict)))
-                           .text(d.decidedBy)
-                           .text(d.decidedUtc)
-                           .text(d.note)
-                           .text(d.basisJson));
+        for (const SessionZero& z : m_local.zeros(local)) m_central.addZero(id, z);
+        for (const VerdictDecision& d : m_local.verdicts(local)) m_central.addToVerdictTrail(id, d);
     }
 
     // The calibrations the session used, shared with the station's other
