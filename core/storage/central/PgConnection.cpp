@@ -40,6 +40,16 @@ std::string exactText(double value)
     return std::string(text, end);
 }
 
+// The connection string's own settings win over these defaults: a server
+// that does not answer is given up after 10 s (libpq would wait as long as
+// the system's TCP timeout), and the server's activity view names us.
+pg_conn* openConnection(const std::string& conninfo)
+{
+    const char* const keywords[] = {"connect_timeout", "fallback_application_name", "dbname", nullptr};
+    const char* const values[] = {"10", "tactiscope", conninfo.c_str(), nullptr};
+    return PQconnectdbParams(keywords, values, 1);  // 1: dbname holds the whole connection string
+}
+
 }  // namespace
 
 PgParams::PgParams(std::initializer_list<std::optional<std::string>> texts)
@@ -164,7 +174,7 @@ std::span<const std::uint8_t> PgResult::bytes(int row, int column) const
 }
 
 PgConnection::PgConnection(const std::string& conninfo)
-    : m_connection(PQconnectdb(conninfo.c_str()))
+    : m_connection(openConnection(conninfo))
 {
     if (!m_connection) throw StorageError("cannot reach the central store: out of memory");
     if (PQstatus(m_connection) != CONNECTION_OK) {
