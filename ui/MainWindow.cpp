@@ -500,7 +500,10 @@ void MainWindow::recordingEnded(const devices::session::RecordingSummary& summar
         askVerdict(this, m_store,
                    {summary.session, static_cast<int>(summary.defects), static_cast<int>(summary.sites),
                     *summary.verdict, m_sessionBar->metadata().operatorName},
-                   [this](const QString& message) { statusBar()->showMessage(message, 5000); });
+                   [this](const QString& message) {
+                       statusBar()->showMessage(message, 5000);
+                       m_central->syncNow();  // the operator's verdict follows the session
+                   });
 }
 
 SensorProfileDialog* MainWindow::showProfiles()

@@ -189,6 +189,33 @@ TEST_F(CentralStoreCli, ASecondSyncSendsNothing)
     EXPECT_EQ(connect().query("SELECT count(*) FROM sessions").text(0, 0), "3");
 }
 
+TEST_F(CentralStoreCli, AVerdictAndANoteGivenAfterTheSyncFollowOnTheNext)
+{
+    ASSERT_EQ(sync(m_stationA, server("press_a")).exitCode, 0);
+    // The operator decides after the session went (the GUI sends at the stop).
+    QString panel;
+    for (const auto& [uuid, station] : listed(m_stationA))
+        if (runCli({"sessions", "--db", m_stationA, "show", uuid}).out.contains("panel-scan")) panel = uuid;
+    ASSERT_EQ(runCli({"sessions", "--db", m_stationA, "verdict", panel, "pass", "--by", "Ada", "--note", "a smudge"})
+                  .exitCode,
+              0);
+    {
+        core::storage::SessionStore store(m_stationA.toStdString());
+        const auto id = *store.sessionWithUuid(panel.toStdString());
+        store.addAnnotation(id, {0, 1.5, "Ada", "wiped", "2026-11-24T12:00:00.000Z", "2026-11-24T12:00:00.000Z"});
+    }
+    const CliResult again = sync(m_stationA, server("press_a"));
+    ASSERT_EQ(again.exitCode, 0) << again.err.toStdString();
+    EXPECT_EQ(again.out, "synced 0 sessions (0 M samples), 3 already there\n");
+    EXPECT_EQ(connect().query("SELECT verdict FROM sessions WHERE uuid = $1", {panel.toStdString()}).text(0, 0),
+              "pass");
+    expectSameExports(m_stationA, server("quality"));  // trail and notes as the station's
+    // Once is enough: a third sync adds nothing twice.
+    ASSERT_EQ(sync(m_stationA, server("press_a")).exitCode, 0);
+    EXPECT_EQ(connect().query("SELECT count(*) FROM verdicts").text(0, 0), "3");
+    EXPECT_EQ(connect().query("SELECT count(*) FROM annotations").text(0, 0), "2");
+}
+
 TEST_F(CentralStoreCli, ASyncKilledMidTransactionLeavesNothingAndTheNextMakesAnExactCopy)
 {
     // The owner holds the pyramid table, so the sync stops inside its first

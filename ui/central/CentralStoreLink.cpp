@@ -34,6 +34,11 @@ void CentralStoreLink::sessionRecorded() const
     m_controller->sessionRecorded();
 }
 
+void CentralStoreLink::syncNow() const
+{
+    m_controller->syncNow();
+}
+
 CentralStoreDialog* CentralStoreLink::showDialog()
 {
     if (!m_dialog) {

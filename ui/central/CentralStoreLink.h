@@ -24,6 +24,7 @@ public:
 
     void setStorePath(const QString& path) const;
     void sessionRecorded() const;
+    void syncNow() const;  // e.g. an operator's verdict was just stored
     CentralStoreDialog* showDialog();
     CentralSyncController* controller() const { return m_controller; }
 

@@ -8,6 +8,8 @@
 #include <QMetaObject>
 #include <QSettings>
 
+#include <utility>
+
 namespace tactiscope::ui {
 
 namespace {
@@ -67,7 +69,11 @@ void CentralSyncController::sessionRecorded()
 
 void CentralSyncController::syncNow()
 {
-    if (!configured() || m_state.running || m_storePath.isEmpty()) return;
+    if (m_state.running) {
+        m_again = true;
+        return;
+    }
+    if (!configured() || m_storePath.isEmpty()) return;
     if (!QFileInfo::exists(m_storePath)) {
         m_state.waiting = 0;  // nothing recorded yet
         emit stateChanged();
@@ -125,6 +131,7 @@ void CentralSyncController::finished(const Result& result)
     // Offline or refused: try again later, so the station catches up alone.
     if (!result.error.isEmpty() || (m_state.waiting && *m_state.waiting > 0)) m_retry.start();
     emit stateChanged();
+    if (std::exchange(m_again, false)) syncNow();
 }
 
 }  // namespace tactiscope::ui

@@ -61,6 +61,7 @@ private:
     QString m_station;
     CentralSyncState m_state;
     int m_recordedSince = 0;  // sessions recorded since `waiting` was counted
+    bool m_again = false;     // asked for while one was running
     QTimer m_retry;
     std::jthread m_worker;
 };

@@ -180,8 +180,9 @@ constexpr const char* kRights = R"sql(
 GRANT USAGE ON SCHEMA public TO tactiscope_station, tactiscope_reviewer;
 GRANT SELECT, INSERT ON sessions, channels, chunks, gaps, lod, events, readings, annotations, verdicts, zeros,
     calibrations, session_calibrations TO tactiscope_station;
--- The sync's last step: its own unfinished session becomes complete.
-GRANT UPDATE (complete, checksum) ON sessions TO tactiscope_station;
+-- The sync's last step: its own unfinished session becomes complete; and
+-- an operator's verdict given after the session was sent becomes its verdict.
+GRANT UPDATE (complete, checksum, verdict) ON sessions TO tactiscope_station;
 GRANT SELECT ON ALL TABLES IN SCHEMA public TO tactiscope_reviewer;
 GRANT INSERT ON annotations, verdicts TO tactiscope_reviewer;
 GRANT UPDATE (verdict) ON sessions TO tactiscope_reviewer;

@@ -5,6 +5,7 @@
 
 #include "core/text/Md5.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -94,6 +95,41 @@ public:
                    PgParams().text(checksum).int64(id));
         transaction.commit();
         return values;
+    }
+
+    // Decisions and notes made at the station after the session was sent
+    // (an operator's verdict comes once the recording has ended) join the
+    // server's, which may hold a reviewer's too; the session's verdict is
+    // then the latest decision's. Returns whether anything was added.
+    bool addLaterRecords(std::int64_t local, std::int64_t id)
+    {
+        PgTransaction transaction(m_db);
+        bool added = false;
+        const auto trail = m_central.verdicts(id);
+        for (const VerdictDecision& d : m_local.verdicts(local)) {
+            const auto same = [&d](const VerdictDecision& t) {
+                return t.role == d.role && t.verdict == d.verdict && t.decidedBy == d.decidedBy &&
+                       t.decidedUtc == d.decidedUtc;
+            };
+            if (std::ranges::any_of(trail, same)) continue;
+            m_central.addToVerdictTrail(id, d);
+            added = true;
+        }
+        if (added)
+            m_db.query("UPDATE sessions SET verdict = (SELECT verdict FROM verdicts WHERE session_id = $1 "
+                       "ORDER BY decided_utc DESC, id DESC LIMIT 1) WHERE id = $1",
+                       PgParams().int64(id));
+        const auto notes = m_central.annotations(id);
+        for (const Annotation& a : m_local.annotations(local)) {
+            const auto same = [&a](const Annotation& n) {
+                return n.createdUtc == a.createdUtc && n.author == a.author && n.time_s == a.time_s;
+            };
+            if (std::ranges::any_of(notes, same)) continue;
+            m_central.addAnnotation(id, a);
+            added = true;
+        }
+        transaction.commit();
+        return added;
     }
 
 private:
@@ -212,24 +248,30 @@ private:
     std::string m_station;
 };
 
-// The checksums the server holds for these uuids (those it lets this role see).
-std::map<std::string, std::string> centralChecksums(PgConnection& db, const std::vector<SessionSummary>& sessions)
+// What the server holds of a session this role may see.
+struct OnServer {
+    std::int64_t id = 0;
+    std::string checksum;
+};
+
+std::map<std::string, OnServer> sessionsOnServer(PgConnection& db, const std::vector<SessionSummary>& sessions)
 {
     std::string array = "{";
     for (const SessionSummary& s : sessions) array += (array.size() > 1 ? ",\"" : "\"") + s.uuid + "\"";
     array += "}";
     const PgResult r =
-        db.query("SELECT uuid, checksum FROM sessions WHERE complete AND uuid = ANY($1::text[])", {array});
-    std::map<std::string, std::string> result;
-    for (int i = 0; i < r.rows(); ++i) result[r.text(i, 0)] = r.text(i, 1);
+        db.query("SELECT uuid, id, checksum FROM sessions WHERE complete AND uuid = ANY($1::text[])", {array});
+    std::map<std::string, OnServer> result;
+    for (int i = 0; i < r.rows(); ++i) result[r.text(i, 0)] = {r.int64(i, 1), r.text(i, 2)};
     return result;
 }
 
-std::vector<SessionSummary> finishedSessions(SessionStore& local)
+// What a sync sends: all but the sessions still being recorded.
+std::vector<SessionSummary> finishedSessions(const std::vector<SessionSummary>& all)
 {
     std::vector<SessionSummary> result;
-    for (SessionSummary& s : local.sessions())
-        if (s.status != SessionStatus::Recording) result.push_back(std::move(s));
+    for (const SessionSummary& s : all)
+        if (s.status != SessionStatus::Recording) result.push_back(s);
     return result;
 }
 
@@ -266,9 +308,9 @@ SyncOutcome syncToCentral(SessionStore& local, CentralStore& central, const std:
 {
     SyncOutcome outcome;
     const std::vector<SessionSummary> all = local.sessions();
-    const std::vector<SessionSummary> finished = finishedSessions(local);
+    const std::vector<SessionSummary> finished = finishedSessions(all);
     outcome.waiting = static_cast<int>(all.size() - finished.size());
-    const auto there = centralChecksums(central.connection(), finished);
+    const auto there = sessionsOnServer(central.connection(), finished);
     SessionUpload upload(local, central, station.empty() ? central.connection().user() : station);
     SyncProgress done{0, static_cast<int>(finished.size())};
     // Oldest first, as they were recorded.
@@ -280,11 +322,19 @@ SyncOutcome syncToCentral(SessionStore& local, CentralStore& central, const std:
         }
         const std::string checksum = sessionChecksum(local, s->id);
         if (const auto found = there.find(s->uuid); found != there.end()) {
-            if (found->second == checksum)
-                ++outcome.alreadyThere;
-            else
+            if (found->second.checksum != checksum) {
                 outcome.refused.push_back("session " + s->uuid +
                                           " is on the central store with other samples; it was not overwritten");
+                continue;
+            }
+            ++outcome.alreadyThere;
+            try {
+                if (upload.addLaterRecords(s->id, found->second.id)) ++outcome.updated;
+            } catch (const StorageError& e) {
+                if (!central.connection().isOpen()) throw;
+                outcome.refused.push_back("the later verdicts and notes of session " + s->uuid +
+                                          " were refused: " + e.what());
+            }
             continue;
         }
         try {
@@ -302,8 +352,8 @@ SyncOutcome syncToCentral(SessionStore& local, CentralStore& central, const std:
 
 int sessionsToSync(SessionStore& local, CentralStore& central)
 {
-    const std::vector<SessionSummary> finished = finishedSessions(local);
-    return static_cast<int>(finished.size() - centralChecksums(central.connection(), finished).size());
+    const std::vector<SessionSummary> finished = finishedSessions(local.sessions());
+    return static_cast<int>(finished.size() - sessionsOnServer(central.connection(), finished).size());
 }
 
 }  // namespace tactiscope::core::storage::central

@@ -4,8 +4,9 @@
 // session complete. So a sync killed, cut off or refused half way leaves
 // nothing behind (the server rolls the transaction back), and the next one
 // sends the session again; a session already there with the same checksum
-// is skipped, one with another is refused and never overwritten. The
-// station's store is only read.
+// is skipped (but verdicts and notes decided at the station since are
+// added), one with another is refused and never overwritten. The station's
+// store is only read.
 #pragma once
 
 #include "core/storage/SessionStore.h"
@@ -21,6 +22,7 @@ namespace tactiscope::core::storage::central {
 struct SyncOutcome {
     int sent = 0;
     int alreadyThere = 0;
+    int updated = 0;                   // of those already there: verdicts or notes decided since added
     std::uint64_t samplesSent = 0;     // values, over all channels
     int waiting = 0;                   // still being recorded: sent once they end
     std::vector<std::string> refused;  // one sentence per session the server would not take
