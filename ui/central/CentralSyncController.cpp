@@ -102,6 +102,8 @@ void CentralSyncController::syncNow()
                         Qt::QueuedConnection);
                 });
             result.outcome = QString::fromStdString(core::storage::central::syncSummary(outcome));
+            if (outcome.updated > 0)
+                result.outcome += tr("; later verdicts or notes added to %n of them", nullptr, outcome.updated);
             if (!outcome.refused.empty())
                 result.error =
                     QString::fromStdString(outcome.refused.front()) +

@@ -307,19 +307,14 @@ SyncOutcome syncToCentral(SessionStore& local, CentralStore& central, const std:
                           const std::function<void(const SyncProgress&)>& progress)
 {
     SyncOutcome outcome;
-    const std::vector<SessionSummary> all = local.sessions();
-    const std::vector<SessionSummary> finished = finishedSessions(all);
-    outcome.waiting = static_cast<int>(all.size() - finished.size());
+    const std::vector<SessionSummary> finished = finishedSessions(local.sessions());
     const auto there = sessionsOnServer(central.connection(), finished);
     SessionUpload upload(local, central, station.empty() ? central.connection().user() : station);
     SyncProgress done{0, static_cast<int>(finished.size())};
     // Oldest first, as they were recorded.
     for (auto s = finished.rbegin(); s != finished.rend(); ++s, ++done.done) {
         if (progress) progress(done);
-        if (stop.stop_requested()) {
-            outcome.cancelled = true;
-            break;
-        }
+        if (stop.stop_requested()) break;  // between sessions: each is whole or not sent
         const std::string checksum = sessionChecksum(local, s->id);
         if (const auto found = there.find(s->uuid); found != there.end()) {
             if (found->second.checksum != checksum) {

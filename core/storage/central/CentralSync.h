@@ -24,9 +24,7 @@ struct SyncOutcome {
     int alreadyThere = 0;
     int updated = 0;                   // of those already there: verdicts or notes decided since added
     std::uint64_t samplesSent = 0;     // values, over all channels
-    int waiting = 0;                   // still being recorded: sent once they end
     std::vector<std::string> refused;  // one sentence per session the server would not take
-    bool cancelled = false;
 };
 
 // "synced 2 sessions (1.2 M samples), 1 already there": millions with one

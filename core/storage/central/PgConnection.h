@@ -34,7 +34,6 @@ public:
     PgParams& optionalReal(std::optional<double> value);
     PgParams& bytes(std::span<const std::uint8_t> value);
     PgParams& null();
-    std::size_t size() const { return m_values.size(); }
     std::size_t bytesHeld() const { return m_bytesHeld; }
 
 private:
