@@ -360,8 +360,12 @@ std::vector<SessionSummary> SessionStore::sessions(const SessionFilter& filter)
                  " OR verdict" + like + " OR device_serial" + like + ")";
         values.push_back(textSearchPattern(filter.text));
     }
-    auto query = m_db.prepare(summaryQuery() + where + " ORDER BY started_utc DESC, id DESC");
+    // LIMIT -1: all of them.
+    const int limit = static_cast<int>(values.size() + 1);
+    auto query =
+        m_db.prepare(summaryQuery() + where + " ORDER BY started_utc DESC, id DESC LIMIT ?" + std::to_string(limit));
     for (std::size_t i = 0; i < values.size(); ++i) query.bind(static_cast<int>(i + 1), values[i]);
+    query.bind(limit, filter.limit > 0 ? static_cast<std::int64_t>(filter.limit) : std::int64_t{-1});
     while (query.step()) result.push_back(summaryFrom(query));
     showCrashedRecordingsInterrupted(result);
     return result;

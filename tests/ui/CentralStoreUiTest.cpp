@@ -102,6 +102,14 @@ TEST_F(CentralStoreUi, TheBrowserListsBothStationsAndASessionOpensFromTheServer)
     EXPECT_EQ(stations.count("press_a"), 3U);
     EXPECT_EQ(stations.count("press_b"), 3U);
     EXPECT_EQ(child<QLabel>(*browser, "countText")->text(), "6 of 6 sessions");
+    // The server keeps the newest first and stops at a limit, as a station's store does.
+    core::storage::central::CentralStore central(s_server->conninfo("quality"));
+    core::storage::SessionFilter newest;
+    newest.limit = 2;
+    const auto two = central.sessions(newest);
+    ASSERT_EQ(two.size(), 2U);
+    EXPECT_EQ(two[0].station, "press_b");
+    EXPECT_EQ(two[0].metadata.subject, "beam-2");
     EXPECT_TRUE(browser->windowTitle().contains("central store"));
     tactiscope::testing::saveScreenshot(*browser, "central-store-browser");
 

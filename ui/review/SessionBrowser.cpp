@@ -66,13 +66,18 @@ QString describe(const core::storage::SessionSummary& s)
 
 }  // namespace
 
-SessionBrowser::Listing SessionBrowser::listSessions(SessionSource& store, const core::storage::SessionFilter& filter)
+SessionBrowser::Listing SessionBrowser::listSessions(SessionSource& store, core::storage::SessionFilter filter,
+                                                     std::size_t limit)
 {
     Listing listing;
-    const auto all = store.sessions();
+    core::storage::SessionFilter everything;
+    everything.limit = limit;
+    const auto all = store.sessions(everything);
     listing.total = all.size();
+    listing.capped = limit > 0 && all.size() == limit;
     for (const auto& s : all)
         if (s.verdict) listing.verdicts << wordText(s.verdict);
+    filter.limit = limit;
     listing.shown = store.sessions(filter);
     return listing;
 }
@@ -209,14 +214,14 @@ void SessionBrowser::reload()
         // A server may be slow or away: the window never waits on it.
         m_count->setText(tr("Reading the central store…"));
         runOnStore(
-            *m_store, this, [filter](SessionSource& store) { return listSessions(store, filter); },
+            *m_store, this, [filter](SessionSource& store) { return listSessions(store, filter, kCentralRows); },
             [this](Listing listing) { showListing(std::move(listing)); }, failed);
         return;
     }
     try {
         const auto store =
             core::storage::openSessionSource(m_storePath.toStdString(), core::storage::Database::Access::ReadOnly);
-        showListing(listSessions(*store, filter));
+        showListing(listSessions(*store, filter, 0));
     } catch (const core::storage::StorageError& e) {
         failed(QString::fromStdString(e.what()));
     }
@@ -228,7 +233,10 @@ void SessionBrowser::showListing(Listing listing)
     if (m_status->currentIndex() > 0)
         std::erase_if(listing.shown, [&](const auto& s) { return wordText(s.status) != m_status->currentText(); });
     m_model->setSessions(std::move(listing.shown));
-    m_count->setText(tr("%1 of %2 sessions").arg(m_model->rowCount()).arg(listing.total));
+    m_count->setText(listing.capped ? tr("%1 of the newest %2 sessions (narrow the search or the dates for older ones)")
+                                          .arg(m_model->rowCount())
+                                          .arg(listing.total)
+                                    : tr("%1 of %2 sessions").arg(m_model->rowCount()).arg(listing.total));
     updateButtons();
 }
 

@@ -64,9 +64,14 @@ private:
     struct Listing {
         std::vector<core::storage::SessionSummary> shown;
         std::size_t total = 0;
+        bool capped = false;  // the store holds more than `total`
         QStringList verdicts;
     };
-    static Listing listSessions(core::storage::SessionSource& store, const core::storage::SessionFilter& filter);
+    // At most `limit` newest sessions (0: all): a central store may hold
+    // millions, which no table should load at once.
+    static Listing listSessions(core::storage::SessionSource& store, core::storage::SessionFilter filter,
+                                std::size_t limit);
+    static constexpr std::size_t kCentralRows = 5000;
     void showListing(Listing listing);
     void deleteSessions(const std::vector<std::int64_t>& sessions);
     void updateButtons();

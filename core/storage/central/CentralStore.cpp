@@ -142,8 +142,11 @@ std::vector<SessionSummary> CentralStore::sessions(const SessionFilter& filter)
                  " OR verdict" + like + " OR device_serial" + like + ")";
         values.text(textSearchPattern(filter.text));
     }
-    const PgResult r =
-        m_connection.query(kSummaryQuery + where + " ORDER BY started_utc DESC, id DESC", values, PgFormat::Binary);
+    // LIMIT NULL: all of them.
+    filter.limit > 0 ? values.int64(static_cast<std::int64_t>(filter.limit)) : values.null();
+    const PgResult r = m_connection.query(kSummaryQuery + where + " ORDER BY started_utc DESC, id DESC LIMIT $" +
+                                              std::to_string(++n) + "::bigint",
+                                          values, PgFormat::Binary);
     std::vector<SessionSummary> result;
     result.reserve(static_cast<std::size_t>(r.rows()));
     for (int i = 0; i < r.rows(); ++i) result.push_back(summaryFrom(r, i));

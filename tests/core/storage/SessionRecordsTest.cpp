@@ -224,4 +224,9 @@ TEST_F(SessionRecordsTest, SessionsAreFilteredByEveryField)
     all.operatorName = "Ada";
     all.text = "fender";
     EXPECT_EQ(query(all), (std::vector<std::int64_t>{a}));
+    // A limit keeps the newest, after the other conditions.
+    EXPECT_EQ(query(by(&SessionFilter::limit, std::size_t{2})), (std::vector<std::int64_t>{d, c}));
+    SessionFilter newestDoor = by(&SessionFilter::text, std::string("door"));
+    newestDoor.limit = 1;
+    EXPECT_EQ(query(newestDoor), (std::vector<std::int64_t>{d}));
 }
