@@ -229,7 +229,7 @@ void SessionBrowser::reload()
 
 void SessionBrowser::showListing(Listing listing)
 {
-    fillChoices(m_verdict, listing.verdicts);
+    if (listing.total > 0) fillChoices(m_verdict, listing.verdicts);  // an unread store keeps the choices
     if (m_status->currentIndex() > 0)
         std::erase_if(listing.shown, [&](const auto& s) { return wordText(s.status) != m_status->currentText(); });
     m_model->setSessions(std::move(listing.shown));
