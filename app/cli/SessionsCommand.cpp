@@ -77,6 +77,8 @@ int show(SessionSource& store, std::int64_t id, bool json)
     };
     line("id", std::to_string(s.id));
     line("uuid", s.uuid);
+    // On a central store: where it was recorded, and its id there.
+    if (!s.station.empty()) line("station", s.station + " (id " + std::to_string(s.stationId) + " there)");
     line("mode", std::string(core::toString(s.metadata.mode)));
     line("subject", s.metadata.subject);
     line("operator", s.metadata.operatorName);

@@ -175,6 +175,7 @@ TEST_F(CentralStoreCli, AReviewerAnalysesAndDecidesOnTheServer)
     ASSERT_EQ(verdict.exitCode, 0) << verdict.err.toStdString();
     const CliResult show = runCli({"sessions", "--db", server("quality"), "show", panel});
     EXPECT_TRUE(show.out.contains("Grace") && show.out.contains("a smudge")) << show.out.toStdString();
+    EXPECT_TRUE(show.out.contains("press_a (id 1 there)")) << show.out.toStdString();
     // The station's own store keeps its trail; the reviewer's is the server's.
     EXPECT_FALSE(runCli({"sessions", "--db", m_stationA, "show", panel}).out.contains("Grace"));
     EXPECT_EQ(connect().query("SELECT added_by FROM verdicts ORDER BY id DESC LIMIT 1").text(0, 0), "quality");
