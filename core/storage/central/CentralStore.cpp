@@ -56,6 +56,16 @@ SessionSummary summaryFrom(const PgResult& r, int row)
     return s;
 }
 
+// Every row of a result, each read by `read(result, row)`.
+template <typename Read>
+auto rowsOf(const PgResult& result, Read read)
+{
+    std::vector<decltype(read(result, 0))> rows;
+    rows.reserve(static_cast<std::size_t>(result.rows()));
+    for (int i = 0; i < result.rows(); ++i) rows.push_back(read(result, i));
+    return rows;
+}
+
 std::string noChannel(std::int64_t session, std::size_t channel)
 {
     return "session " + std::to_string(session) + " has no channel " + std::to_string(channel);
@@ -147,10 +157,7 @@ std::vector<SessionSummary> CentralStore::sessions(const SessionFilter& filter)
     const PgResult r = m_connection.query(kSummaryQuery + where + " ORDER BY started_utc DESC, id DESC LIMIT $" +
                                               std::to_string(++n) + "::bigint",
                                           values, PgFormat::Binary);
-    std::vector<SessionSummary> result;
-    result.reserve(static_cast<std::size_t>(r.rows()));
-    for (int i = 0; i < r.rows(); ++i) result.push_back(summaryFrom(r, i));
-    return result;
+    return rowsOf(r, [](const PgResult& q, int i) { return summaryFrom(q, i); });
 }
 
 std::optional<SessionSummary> CentralStore::session(std::int64_t id)
@@ -192,10 +199,9 @@ std::vector<SampleGap> CentralStore::gaps(std::int64_t session)
     const PgResult r =
         m_connection.query("SELECT first_index, count FROM gaps WHERE session_id = $1 ORDER BY first_index",
                            PgParams().int64(session), PgFormat::Binary);
-    std::vector<SampleGap> result;
-    for (int i = 0; i < r.rows(); ++i)
-        result.push_back({static_cast<std::uint64_t>(r.int64(i, 0)), static_cast<std::uint64_t>(r.int64(i, 1))});
-    return result;
+    return rowsOf(r, [](const PgResult& q, int i) {
+        return SampleGap{static_cast<std::uint64_t>(q.int64(i, 0)), static_cast<std::uint64_t>(q.int64(i, 1))};
+    });
 }
 
 std::size_t CentralStore::readChannels(std::int64_t session, std::span<const std::size_t> channels,
@@ -260,12 +266,13 @@ std::vector<SessionEvent> CentralStore::events(std::int64_t session, const std::
         "SELECT id, analysis, kind, start_s, end_s, direction, peak_r, lag_s, speed_m_per_s, note FROM events "
         "WHERE session_id = $1 AND analysis = $2 ORDER BY start_s, id",
         PgParams().int64(session).text(analysis), PgFormat::Binary);
-    std::vector<SessionEvent> result;
-    for (int i = 0; i < r.rows(); ++i)
-        result.push_back({r.int64(i, 0), r.text(i, 1), eventKindFromString(r.text(i, 2)).value_or(EventKind::Marker),
-                          r.real(i, 3), r.real(i, 4), static_cast<int>(r.int64(i, 5)), r.optionalReal(i, 6),
-                          r.optionalReal(i, 7), r.optionalReal(i, 8), r.text(i, 9)});
-    return result;
+    return rowsOf(r, [](const PgResult& q, int i) {
+        return SessionEvent{
+            q.int64(i, 0),        q.text(i, 1),         eventKindFromString(q.text(i, 2)).value_or(EventKind::Marker),
+            q.real(i, 3),         q.real(i, 4),         static_cast<int>(q.int64(i, 5)),
+            q.optionalReal(i, 6), q.optionalReal(i, 7), q.optionalReal(i, 8),
+            q.text(i, 9)};
+    });
 }
 
 std::vector<std::string> CentralStore::analyses(std::int64_t session)
@@ -285,12 +292,14 @@ std::vector<SessionReading> CentralStore::readings(std::int64_t session, const s
         "SELECT id, kind, start_s, end_s, quantity, value, unit, standard_error, site, details_json, analysis "
         "FROM readings WHERE session_id = $1 AND analysis = $2 ORDER BY start_s, id",
         PgParams().int64(session).text(analysis), PgFormat::Binary);
-    std::vector<SessionReading> result;
-    for (int i = 0; i < r.rows(); ++i)
-        result.push_back({r.int64(i, 0), readingKindFromString(r.text(i, 1)).value_or(ReadingKind::Compliance),
-                          r.real(i, 2), r.real(i, 3), r.text(i, 4), r.real(i, 5), r.text(i, 6), r.optionalReal(i, 7),
-                          r.text(i, 8), r.text(i, 9), r.text(i, 10)});
-    return result;
+    return rowsOf(r, [](const PgResult& q, int i) {
+        return SessionReading{q.int64(i, 0), readingKindFromString(q.text(i, 1)).value_or(ReadingKind::Compliance),
+                              q.real(i, 2),  q.real(i, 3),
+                              q.text(i, 4),  q.real(i, 5),
+                              q.text(i, 6),  q.optionalReal(i, 7),
+                              q.text(i, 8),  q.text(i, 9),
+                              q.text(i, 10)};
+    });
 }
 
 std::vector<Annotation> CentralStore::annotations(std::int64_t session)
@@ -299,10 +308,9 @@ std::vector<Annotation> CentralStore::annotations(std::int64_t session)
         "SELECT id, time_s, author, text, created_utc, modified_utc FROM annotations WHERE session_id = $1 "
         "ORDER BY time_s, id",
         PgParams().int64(session), PgFormat::Binary);
-    std::vector<Annotation> result;
-    for (int i = 0; i < r.rows(); ++i)
-        result.push_back({r.int64(i, 0), r.real(i, 1), r.text(i, 2), r.text(i, 3), r.text(i, 4), r.text(i, 5)});
-    return result;
+    return rowsOf(r, [](const PgResult& q, int i) {
+        return Annotation{q.int64(i, 0), q.real(i, 1), q.text(i, 2), q.text(i, 3), q.text(i, 4), q.text(i, 5)};
+    });
 }
 
 std::vector<VerdictDecision> CentralStore::verdicts(std::int64_t session)
@@ -311,12 +319,15 @@ std::vector<VerdictDecision> CentralStore::verdicts(std::int64_t session)
         "SELECT id, role, verdict, decided_by, decided_utc, note, basis_json FROM verdicts WHERE session_id = $1 "
         "ORDER BY id",
         PgParams().int64(session), PgFormat::Binary);
-    std::vector<VerdictDecision> result;
-    for (int i = 0; i < r.rows(); ++i)
-        result.push_back({r.int64(i, 0), verdictRoleFromString(r.text(i, 1)).value_or(VerdictRole::Reviewer),
-                          verdictFromString(r.text(i, 2)).value_or(Verdict::DefectsFound), r.text(i, 3), r.text(i, 4),
-                          r.text(i, 5), r.text(i, 6)});
-    return result;
+    return rowsOf(r, [](const PgResult& q, int i) {
+        return VerdictDecision{q.int64(i, 0),
+                               verdictRoleFromString(q.text(i, 1)).value_or(VerdictRole::Reviewer),
+                               verdictFromString(q.text(i, 2)).value_or(Verdict::DefectsFound),
+                               q.text(i, 3),
+                               q.text(i, 4),
+                               q.text(i, 5),
+                               q.text(i, 6)};
+    });
 }
 
 std::vector<SessionZero> CentralStore::zeros(std::int64_t session)
@@ -324,9 +335,9 @@ std::vector<SessionZero> CentralStore::zeros(std::int64_t session)
     const PgResult r =
         m_connection.query("SELECT first_index, values_json FROM zeros WHERE session_id = $1 ORDER BY first_index",
                            PgParams().int64(session), PgFormat::Binary);
-    std::vector<SessionZero> result;
-    for (int i = 0; i < r.rows(); ++i) result.push_back({static_cast<std::uint64_t>(r.int64(i, 0)), r.text(i, 1)});
-    return result;
+    return rowsOf(r, [](const PgResult& q, int i) {
+        return SessionZero{static_cast<std::uint64_t>(q.int64(i, 0)), q.text(i, 1)};
+    });
 }
 
 namespace {
@@ -380,9 +391,7 @@ std::int64_t CentralStore::addCalibration(const calibration::CalibrationRecord& 
 std::vector<std::int64_t> CentralStore::ids(const std::string& sql, std::int64_t parameter)
 {
     const PgResult r = m_connection.query(sql, PgParams().int64(parameter));
-    std::vector<std::int64_t> result;
-    for (int i = 0; i < r.rows(); ++i) result.push_back(r.int64(i, 0));
-    return result;
+    return rowsOf(r, [](const PgResult& q, int i) { return q.int64(i, 0); });
 }
 
 std::vector<std::int64_t> CentralStore::calibrationsOfSession(std::int64_t session)
