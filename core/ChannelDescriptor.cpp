@@ -1,7 +1,8 @@
-// Name table for ChannelKind.
+// Name tables for ChannelKind and ChannelRole.
 #include "core/ChannelDescriptor.h"
 
 #include <array>
+#include <string>
 #include <utility>
 
 namespace tactiscope::core {
@@ -13,6 +14,15 @@ constexpr std::array<std::pair<ChannelKind, std::string_view>, 5> kKindNames{{
     {ChannelKind::Force, "force"},
     {ChannelKind::Position, "position"},
     {ChannelKind::Other, "other"},
+}};
+
+constexpr std::array<std::pair<ChannelRole, std::string_view>, 6> kRoleNames{{
+    {ChannelRole::CantileverA, "cantilever-a"},
+    {ChannelRole::CantileverB, "cantilever-b"},
+    {ChannelRole::StiffBeam, "stiff-beam"},
+    {ChannelRole::SoftBeam, "soft-beam"},
+    {ChannelRole::Displacement, "displacement"},
+    {ChannelRole::Capacitance, "capacitance"},
 }};
 
 }  // namespace
@@ -31,6 +41,35 @@ std::optional<ChannelKind> channelKindFromString(std::string_view name)
         if (n == name) return k;
     }
     return std::nullopt;
+}
+
+std::string_view toString(ChannelRole role)
+{
+    for (const auto& [r, name] : kRoleNames)
+        if (r == role) return name;
+    return {};
+}
+
+std::optional<ChannelRole> channelRoleFromString(std::string_view name)
+{
+    for (const auto& [r, n] : kRoleNames)
+        if (n == name) return r;
+    return std::nullopt;
+}
+
+std::string_view roleWord(const std::optional<ChannelRole>& role)
+{
+    return role ? toString(*role) : std::string_view();
+}
+
+std::string channelRoleChoices()
+{
+    std::string text;
+    for (std::size_t i = 0; i < kRoleNames.size(); ++i) {
+        if (i > 0) text += i + 1 == kRoleNames.size() ? " or " : ", ";
+        text += kRoleNames[i].second;
+    }
+    return text;
 }
 
 }  // namespace tactiscope::core

@@ -1,6 +1,8 @@
-// What one acquisition channel measures: its name, unit and physical kind.
-// Shared by devices (which announce channels), processors (which pick the
-// channels they need by kind) and the UI (which labels axes).
+// What one acquisition channel measures: its name, unit, physical kind and,
+// when known, its role in a mode (which cantilever or beam it is). Shared
+// by devices (which announce channels), processors (which pick the channels
+// they need by role, core/modes/ModeDefinition.h) and the UI (which labels
+// axes).
 #pragma once
 
 #include <optional>
@@ -15,12 +17,24 @@ enum class ChannelKind { Strain, Capacitance, Force, Position, Other };
 std::string_view toString(ChannelKind kind);
 std::optional<ChannelKind> channelKindFromString(std::string_view name);
 
+// What a channel is to a mode. A device may declare it (the text
+// protocol's NAME@ROLE labels), a sensor profile or the user may give it
+// (the device panel, `record --roles`); a channel without one is matched
+// by its kind. The texts are the command line's and the store's words.
+enum class ChannelRole { CantileverA, CantileverB, StiffBeam, SoftBeam, Displacement, Capacitance };
+std::string_view toString(ChannelRole role);  // "cantilever-a", "cantilever-b", "stiff-beam", …
+std::optional<ChannelRole> channelRoleFromString(std::string_view name);  // none for "" or an unknown word
+std::string_view roleWord(const std::optional<ChannelRole>& role);        // "" for none, as stored
+// "cantilever-a, cantilever-b, stiff-beam, soft-beam, displacement or capacitance"
+std::string channelRoleChoices();
+
 struct ChannelDescriptor {
     std::string name;
     // SI unit symbol of the stored values; empty for dimensionless quantities
     // such as strain.
     std::string unit;
     ChannelKind kind = ChannelKind::Other;
+    std::optional<ChannelRole> role = std::nullopt;  // none: the modes match the channel by its kind
 
     friend bool operator==(const ChannelDescriptor&, const ChannelDescriptor&) = default;
 };

@@ -1,28 +1,33 @@
-// ModeCapability: each mode's channel needs and the sentence that names them.
+// ModeCapability: matching a mode's roles to a device's channels, and the
+// sentence that names what is missing.
 #include "core/ModeCapability.h"
+
+#include "core/modes/ModeDefinition.h"
+
+#include <algorithm>
 
 namespace tactiscope::core {
 namespace {
 
-std::vector<std::size_t> channelsOfKind(std::span<const ChannelDescriptor> channels, ChannelKind kind, bool wanted)
+constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+
+std::size_t channelFor(ChannelRole role, std::span<const ChannelDescriptor> channels,
+                       std::span<const std::size_t> taken)
 {
-    std::vector<std::size_t> found;
     for (std::size_t c = 0; c < channels.size(); ++c)
-        if ((channels[c].kind == kind) == wanted) found.push_back(c);
-    return found;
+        if (channels[c].role == role) return c;
+    for (std::size_t c = 0; c < channels.size(); ++c)
+        if (!channels[c].role && kindCanPlay(channels[c].kind, role) && std::ranges::find(taken, c) == taken.end())
+            return c;
+    return kNone;
 }
 
-std::string needs(Mode mode)
+// The channel each role of `mode` goes to (kNone where none can).
+std::vector<std::size_t> roleChannels(Mode mode, std::span<const ChannelDescriptor> channels)
 {
-    switch (mode) {
-    case Mode::PanelScan:
-        return "two strain channels (cantilevers A and B)";
-    case Mode::Palpation:
-        return "two beam channels and a displacement (position) channel";
-    case Mode::Capacitive:
-        return "a capacitance channel";
-    }
-    return {};
+    std::vector<std::size_t> picked;
+    for (const ChannelRole role : definitionOf(mode).roles) picked.push_back(channelFor(role, channels, picked));
+    return picked;
 }
 
 std::string described(std::span<const ChannelDescriptor> channels)
@@ -31,7 +36,8 @@ std::string described(std::span<const ChannelDescriptor> channels)
     std::string text;
     for (const auto& channel : channels) {
         if (!text.empty()) text += ", ";
-        text += channel.name + " (" + std::string(toString(channel.kind)) + ")";
+        text +=
+            channel.name + " (" + std::string(channel.role ? toString(*channel.role) : toString(channel.kind)) + ")";
     }
     return text;
 }
@@ -40,34 +46,28 @@ std::string described(std::span<const ChannelDescriptor> channels)
 
 std::optional<std::vector<std::size_t>> modeChannels(Mode mode, std::span<const ChannelDescriptor> channels)
 {
-    switch (mode) {
-    case Mode::PanelScan: {
-        auto strain = channelsOfKind(channels, ChannelKind::Strain, true);
-        if (strain.size() < 2) return std::nullopt;
-        strain.resize(2);
-        return strain;
-    }
-    case Mode::Palpation: {
-        const auto positions = channelsOfKind(channels, ChannelKind::Position, true);
-        auto beams = channelsOfKind(channels, ChannelKind::Position, false);
-        if (positions.empty() || beams.size() < 2) return std::nullopt;
-        beams.resize(2);
-        beams.push_back(positions.front());
-        return beams;
-    }
-    case Mode::Capacitive: {
-        const auto capacitance = channelsOfKind(channels, ChannelKind::Capacitance, true);
-        if (capacitance.empty()) return std::nullopt;
-        return std::vector<std::size_t>{capacitance.front()};
-    }
-    }
-    return std::nullopt;
+    auto picked = roleChannels(mode, channels);
+    if (std::ranges::find(picked, kNone) != picked.end()) return std::nullopt;
+    return picked;
 }
 
 std::optional<std::string> modeRefusal(Mode mode, std::span<const ChannelDescriptor> channels)
 {
-    if (modeChannels(mode, channels)) return std::nullopt;
-    return std::string(toString(mode)) + " needs " + needs(mode) + "; this device has " + described(channels) + ".";
+    const auto& definition = definitionOf(mode);
+    const auto picked = roleChannels(mode, channels);
+    std::string missing, example;
+    for (std::size_t r = 0; r < picked.size(); ++r) {
+        const std::string role(toString(definition.roles[r]));
+        if (!example.empty()) example += ",";
+        example += (r < channels.size() ? channels[r].name : "NAME") + "=" + role;
+        if (picked[r] != kNone) continue;
+        if (!missing.empty()) missing += ", ";
+        missing += role;
+    }
+    if (missing.empty()) return std::nullopt;
+    return std::string(definition.name) + " needs " + std::string(definition.needs) + ": no channel plays " + missing +
+           "; this device has " + described(channels) + ". Give its channels roles (--roles " + example +
+           ", or the device panel's channel roles), or record in general mode.";
 }
 
 std::vector<Mode> runnableModes(std::span<const ChannelDescriptor> channels)

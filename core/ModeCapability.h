@@ -1,8 +1,9 @@
-// Which modes a device's channels can feed, and if not why: the one place
-// each mode's channel needs are written. The live-session controller asks
-// before it builds a processor or starts a recording, and the processors
-// pick their channels through modeChannels(), so the answer and the
-// processor cannot disagree.
+// Which modes a device's channels can feed, and if not why. Each mode
+// declares the roles it reads (core/modes/ModeDefinition.h); a channel
+// plays a role when it was given that role, or, given none, when its kind
+// can play it. The live-session controller asks before it builds a
+// processor or starts a recording, and the processors pick their channels
+// through modeChannels(), so the answer and the processor cannot disagree.
 #pragma once
 
 #include "core/ChannelDescriptor.h"
@@ -16,20 +17,20 @@
 
 namespace tactiscope::core {
 
-// The channels `mode` reads, in the order its processor wants them, or
-// nothing when the device lacks one:
-//   panel-scan: the first two strain channels (cantilevers A and B);
-//   palpation:  the first two channels that are not a position (the stiff
-//               and the soft beam, in the device's order), then the first
-//               position channel (the displacement);
-//   capacitive: the first capacitance channel.
+// The channels `mode` reads, one per role of its definition in that order,
+// or nothing when a role has no channel. A role goes to the channel given
+// it; when none was, to the first channel with no role whose kind can play
+// it and that no earlier role took (panel scan: the first two strain
+// channels are A and B; palpation: the first two non-position channels are
+// the stiff and the soft beam, the first position the displacement).
 std::optional<std::vector<std::size_t>> modeChannels(Mode mode, std::span<const ChannelDescriptor> channels);
 
 // Nothing when `mode` can run on `channels`; else one sentence naming the
-// channels it needs and those the device has.
+// roles missing, the channels the device has, and how to give roles.
 std::optional<std::string> modeRefusal(Mode mode, std::span<const ChannelDescriptor> channels);
 
-// The modes that can run on `channels`, in kModes order.
+// The modes that can run on `channels`, in kModes order (general last: it
+// runs on any device).
 std::vector<Mode> runnableModes(std::span<const ChannelDescriptor> channels);
 
 }  // namespace tactiscope::core

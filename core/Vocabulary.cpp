@@ -1,6 +1,8 @@
 // Vocabulary: the one table of each word's text.
 #include "core/Vocabulary.h"
 
+#include "core/modes/ModeDefinition.h"
+
 #include <algorithm>
 #include <utility>
 
@@ -10,11 +12,6 @@ namespace {
 template <typename Enum, std::size_t N>
 using Words = std::array<std::pair<Enum, std::string_view>, N>;
 
-constexpr Words<Mode, 3> kModeWords{{
-    {Mode::PanelScan, "panel-scan"},
-    {Mode::Palpation, "palpation"},
-    {Mode::Capacitive, "capacitive"},
-}};
 constexpr Words<SessionStatus, 3> kStatusWords{{
     {SessionStatus::Recording, "recording"},
     {SessionStatus::Complete, "complete"},
@@ -59,20 +56,23 @@ std::optional<Enum> valueOf(const Words<Enum, N>& words, std::string_view text)
 
 std::string_view toString(Mode mode)
 {
-    return wordOf(kModeWords, mode);
+    return definitionOf(mode).name;
 }
 
 std::optional<Mode> modeFromString(std::string_view text)
 {
-    return valueOf(kModeWords, text);
+    for (const auto& definition : modeDefinitions())
+        if (definition.name == text) return definition.mode;
+    return std::nullopt;
 }
 
 std::string modeChoices()
 {
+    const auto definitions = modeDefinitions();
     std::string text;
-    for (std::size_t i = 0; i < kModeWords.size(); ++i) {
-        if (i > 0) text += i + 1 == kModeWords.size() ? " or " : ", ";
-        text += kModeWords[i].second;
+    for (std::size_t i = 0; i < definitions.size(); ++i) {
+        if (i > 0) text += i + 1 == definitions.size() ? " or " : ", ";
+        text += definitions[i].name;
     }
     return text;
 }

@@ -5,8 +5,9 @@
 // CHECK lists (core/storage/Schema.cpp, frozen migrations) hold the same
 // texts, and VocabularyTest checks the schema accepts each and refuses others.
 //
-// Adding a mode means: a value here, its processor in core, its capability
-// in ModeCapability.cpp, and its view in ui/.
+// A mode's word and everything else about it is its definition's
+// (core/modes/ModeDefinition.h); docs/conventions.md says where a new
+// mode's parts go.
 #pragma once
 
 #include <array>
@@ -22,11 +23,12 @@ enum class Mode {
     PanelScan,   // seed 000: surface-deflection detector on two strain cantilevers
     Palpation,   // seed 001: object stiffness from two beams of different stiffness
     Capacitive,  // seed 002: force and deflection of the capacitive beam
+    General,     // any device, any channels: recorded and reviewed as they come
 };
-inline constexpr std::array kModes{Mode::PanelScan, Mode::Palpation, Mode::Capacitive};
-std::string_view toString(Mode mode);  // "panel-scan", "palpation", "capacitive"
+inline constexpr std::array kModes{Mode::PanelScan, Mode::Palpation, Mode::Capacitive, Mode::General};
+std::string_view toString(Mode mode);  // "panel-scan", "palpation", "capacitive", "general"
 std::optional<Mode> modeFromString(std::string_view text);
-// "panel-scan, palpation or capacitive", for usage lines.
+// "panel-scan, palpation, capacitive or general", for usage lines.
 std::string modeChoices();
 
 enum class SessionStatus { Recording, Complete, Interrupted };

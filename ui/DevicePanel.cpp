@@ -1,6 +1,8 @@
 // DevicePanel: the source list, link settings, connect buttons and counters.
 #include "ui/DevicePanel.h"
 
+#include "ui/ChannelRolesBox.h"
+
 #include "devices/simulator/ScenarioCatalog.h"
 #include "ui/NumberText.h"
 
@@ -128,7 +130,9 @@ DevicePanel::DevicePanel(QWidget* parent)
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(6, 6, 6, 6);
+    m_roles = new ChannelRolesBox(this);
     layout->addWidget(sourcesBox, 1);
+    layout->addWidget(m_roles);
     layout->addWidget(countersBox);
 
     connect(refreshButton, &QPushButton::clicked, this, &DevicePanel::refresh);

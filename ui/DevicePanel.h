@@ -4,7 +4,8 @@
 // hardware), and the serial ports and HID devices found — the link settings
 // for a port, connect / disconnect, and the live counters of the connected
 // device: state, measured rate, samples, samples lost, CRC errors, resyncs,
-// reconnections. The panel only asks; the main window connects.
+// reconnections; and the connected device's channel roles
+// (ChannelRolesBox). The panel only asks; the main window connects.
 #pragma once
 
 #include "devices/DeviceDiscovery.h"
@@ -25,6 +26,8 @@ class QPushButton;
 class QTreeWidget;
 
 namespace tactiscope::ui {
+
+class ChannelRolesBox;
 
 enum class SourceKind { Simulator, Emulator, Port };
 
@@ -66,6 +69,7 @@ public:
     void setConnecting(const QString& label);
     void showCounters(const LinkCounters& counters);
     void clearCounters(const QString& state = {});
+    ChannelRolesBox* rolesBox() const { return m_roles; }
 
 public slots:
     void refresh();
@@ -84,6 +88,7 @@ private:
     std::vector<devices::DiscoveredDevice> m_discovered;
     QTreeWidget* m_sources = nullptr;
     QLabel* m_hint = nullptr;
+    ChannelRolesBox* m_roles = nullptr;
     QLineEdit* m_path = nullptr;
     QComboBox* m_protocol = nullptr;
     QComboBox* m_baud = nullptr;

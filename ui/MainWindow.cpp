@@ -10,6 +10,7 @@
 #include "ui/AboutText.h"
 #include "ui/ActiveProfiles.h"
 #include "ui/CapacitiveView.h"
+#include "ui/ChannelRolesBox.h"
 #include "ui/DesignTool.h"
 #include "ui/DeviceConnector.h"
 #include "ui/DevicePanel.h"
@@ -55,6 +56,8 @@
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QToolBar>
+
+#include <algorithm>
 
 namespace tactiscope::ui {
 namespace {
@@ -157,6 +160,7 @@ MainWindow::MainWindow(QWidget* parent)
         this);
     connect(m_devicePanel, &DevicePanel::connectRequested, m_connector, &DeviceConnector::request);
     connect(m_devicePanel, &DevicePanel::disconnectRequested, this, &MainWindow::disconnectSource);
+    connect(m_devicePanel->rolesBox(), &ChannelRolesBox::rolesChosen, this, &MainWindow::setRoles);
     createMenus();
     linkPlots();
     restoreSettings();
@@ -238,7 +242,8 @@ void MainWindow::modeChosen()
             const QString device = QString::fromStdString(m_session->source().name());
             reportProblem(this, {tr("Mode not available"), tr("%1 cannot run on %2.").arg(modeTitle(chosen), device),
                                  QString::fromStdString(*refusal),
-                                 tr("The session stays in %1. Connect the probe made for %2 to record in it.")
+                                 tr("The session stays in %1. Give the device's channels roles in the device "
+                                    "panel (Channel roles), or connect the probe made for %2.")
                                      .arg(modeTitle(m_session->mode()), modeTitle(chosen)),
                                  QStringLiteral("modeRefusedBox")});
         }
@@ -476,6 +481,11 @@ void MainWindow::stopRecording()
 void MainWindow::recordingEnded(const devices::session::RecordingSummary& summary)
 {
     m_sessionBar->setRecording(false);
+    if (m_session) {
+        // The lists now hold exactly what the session stored: shown at once.
+        m_modeViews->update(*m_session);
+        showDefectsOnTraces();
+    }
     m_review->sessionRecorded();
     m_central->sessionRecorded();
     lockProfiles();
@@ -526,6 +536,7 @@ void MainWindow::lockProfiles()
 {
     if (m_profileDialog)
         m_profileDialog->setLocked(isRecording(), tr("fixed while recording: a session keeps one sensor"));
+    m_devicePanel->rolesBox()->setLocked(isRecording());
 }
 
 void MainWindow::applyProfile(const QString& modeName)
@@ -541,9 +552,38 @@ void MainWindow::applyProfile(const QString& modeName)
     }
     showMode(*mode);
     if (*mode == core::Mode::Palpation && m_session->palpation())
-        statusBar()->showMessage(tr("New probe profile: keep the probe lifted while it tares"), 5000);
+        statusBar()->showMessage(tr("New probe profile: its factors apply to the zero in use"), 5000);
     if (*mode == core::Mode::Capacitive && m_session->capacitive())
-        statusBar()->showMessage(tr("New beam profile: the baseline C0 is re-taken"), 5000);
+        statusBar()->showMessage(tr("New beam profile: it reads on the baseline C0 in use"), 5000);
+}
+
+// Roles chosen in the device panel: the processors are rebuilt on them and
+// the bar's mode runs when it now can; the choice is kept for the device.
+void MainWindow::setRoles(const core::RoleAssignment& roles)
+{
+    if (!m_session) return;
+    if (const auto refusal = m_session->setRoles(roles)) {
+        reportProblem(
+            this,
+            {tr("Roles not changed"), tr("The channels keep their roles."), QString::fromStdString(*refusal), {}});
+        m_devicePanel->rolesBox()->setChannels(m_session->source().channels(), m_session->roles(),
+                                               m_devicePanel->rolesBox()->isOpen());
+        return;
+    }
+    rememberRoles(m_session->source().identity(), roles);
+    reportSessionProblems();
+    const core::Mode wanted = m_sessionBar->metadata().mode;
+    if (!m_session->refusalOf(wanted)) m_session->setMode(wanted);
+    {
+        const QSignalBlocker quiet(m_sessionBar);
+        m_sessionBar->setMode(m_session->mode());
+    }
+    m_modeViews->bindAll(m_session.get());
+    m_plot->setSource(m_session->buffer(), m_session->channels(), m_session->source().nominalSampleRate_hz());
+    showModeView();
+    statusBar()->showMessage(tr("Channel roles set: %1 runs on %2")
+                                 .arg(modeTitle(m_session->mode()), QString::fromStdString(m_session->source().name())),
+                             5000);
 }
 
 void MainWindow::showMode(core::Mode mode)
@@ -566,7 +606,7 @@ void MainWindow::calibrate(core::Mode mode)
         return;
     }
     CalibrationContext context{m_session->buffer(),
-                               m_session->source().channels(),
+                               m_session->channels(),
                                m_session->source().nominalSampleRate_hz(),
                                m_loadRig,
                                m_store,
@@ -675,12 +715,20 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
         if (!active.error.isEmpty()) reportProblem(this, badProfile(mode, active.error));
         options.profiles.emplace(*core::modeFromString(mode.toStdString()), std::move(active.profile));
     }
+    // The roles remembered for this device, for the channels it still has.
+    for (const auto& [channel, role] : rememberedRoles(source->identity()))
+        if (std::ranges::find(source->channels(), channel, &core::ChannelDescriptor::name) != source->channels().end())
+            options.roles.emplace(channel, role);
     m_session = std::make_unique<devices::session::LiveSession>(std::move(source), std::move(options));
+    // Open for a device that feeds no mode by itself, or was given roles.
+    m_devicePanel->rolesBox()->setChannels(m_session->source().channels(), m_session->roles(),
+                                           m_session->declaredMode() == core::Mode::General ||
+                                               !m_session->roles().empty());
     reportSessionProblems();
     // The source's own mode wins; a source that declares none keeps the
     // bar's mode if its channels can feed it.
     const core::Mode chosen = m_sessionBar->metadata().mode;
-    if (!m_session->declaredMode() && !m_session->refusalOf(chosen)) m_session->setMode(chosen);
+    if (!m_session->source().declaredMode() && !m_session->refusalOf(chosen)) m_session->setMode(chosen);
     if (m_session->mode() != chosen) {
         const QSignalBlocker quiet(m_sessionBar);
         m_sessionBar->setMode(m_session->mode());
@@ -693,7 +741,7 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
     m_modeViews->bindAll(m_session.get());
     showModeView();
     const auto& device = m_session->source();
-    m_plot->setSource(m_session->buffer(), device.channels(), device.nominalSampleRate_hz());
+    m_plot->setSource(m_session->buffer(), m_session->channels(), device.nominalSampleRate_hz());
     m_session->start();
 
     const QString name = QString::fromStdString(device.name());
@@ -722,6 +770,7 @@ void MainWindow::disconnectSource()
     m_status->setDevice({});
     m_status->setLink({});
     m_devicePanel->setConnected(false);
+    m_devicePanel->rolesBox()->setChannels({}, {});
     m_sessionBar->setRecordEnabled(false);
 }
 
@@ -757,17 +806,20 @@ void MainWindow::updateStatus()
     updateRecording();
 }
 
-// The panel's defects where they happened on the traces; a shorter list
-// is a new panel (a recording started).
+// The panel's defects where they happened on the traces (which count
+// stream time); another generation of the lists is a new panel.
 void MainWindow::showDefectsOnTraces()
 {
+    const auto& lists = m_session->lists();
     const auto& defects = m_session->panelDefects();
-    if (defects.size() < m_defectsOnTraces) {
+    if (lists.generation != m_defectsGeneration) {
+        m_defectsGeneration = lists.generation;
         m_plot->clearEvents();
         m_defectsOnTraces = 0;
     }
     for (; m_defectsOnTraces < defects.size(); ++m_defectsOnTraces)
-        m_plot->addEvent(defects[m_defectsOnTraces].start_s, orderText(defects[m_defectsOnTraces].direction));
+        m_plot->addEvent(lists.origin_s + defects[m_defectsOnTraces].start_s,
+                         orderText(defects[m_defectsOnTraces].direction));
 }
 
 // One clock on every plot: the recording's while recording (as the

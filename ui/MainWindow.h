@@ -15,6 +15,7 @@
 #pragma once
 
 #include "core/Vocabulary.h"
+#include "core/modes/ChannelRoles.h"
 #include "core/storage/SessionStore.h"
 #include "devices/BlockSource.h"
 #include "devices/ReconnectingSource.h"
@@ -143,7 +144,8 @@ private:
     // The mode's processor reads the newly chosen profile.
     void applyProfile(const QString& mode);
     void showMode(core::Mode mode);  // the views of a mode, with its probe and calibrations
-    void lockProfiles();             // while recording
+    void setRoles(const core::RoleAssignment& roles);
+    void lockProfiles();  // while recording
     // The mode's calibration wizard on the connected device.
     void calibrate(core::Mode mode);
     void tare();  // the mode's zero, when its rule allows
@@ -164,6 +166,7 @@ private:
     SensorProfileDialog* m_profileDialog = nullptr;  // created when first asked for
     StatusLine* m_status = nullptr;
     QTimer m_statusTimer;
+    std::uint64_t m_defectsGeneration = 0;                     // of the session's lists drawn on m_plot
     std::size_t m_defectsOnTraces = 0;                         // of the session's panel defects, drawn on m_plot
     std::unique_ptr<devices::session::LiveSession> m_session;  // of the connected device
     std::shared_ptr<devices::simulator::LoadRig> m_loadRig;    // when the simulator is a calibration rig

@@ -45,6 +45,8 @@ void ModeViews::bind(const devices::session::LiveSession* session, core::Mode mo
             session ? session->capacitive() : nullptr, rate_hz, probe,
             calibrations.isEmpty() ? tr("none — the beam model (uncalibrated); drift tracking off") : calibrations);
         break;
+    case core::Mode::General:
+        break;  // the device's traces are its view
     }
 }
 
@@ -68,10 +70,13 @@ std::optional<core::Mode> ModeViews::show(const devices::session::LiveSession* s
 
 void ModeViews::update(devices::session::LiveSession& session)
 {
-    // The site first: a press completed in this poll was taken there.
-    session.setSite(m_palpation->siteGrid()->currentSite().toStdString());
-    m_panelScan->showDefects(session.panelDefects(), session.recordingOrigin_s());
-    m_palpation->showPresses(session.presses());
+    // The clinician's grid and choice of site first: a press completed in
+    // this poll was taken there.
+    SiteGridMap* grid = m_palpation->siteGrid();
+    session.setSiteGrid(grid->grid());
+    if (const auto chosen = grid->takeChosenSite()) session.selectSite(*chosen);
+    m_panelScan->showDefects(session.panelDefects(), session.lists());
+    m_palpation->showPresses(session.presses(), session.lists(), session.siteGrid());
     m_palpation->updateReadout();
     m_capacitive->updateReadouts();
 }

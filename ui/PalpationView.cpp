@@ -83,7 +83,7 @@ PalpationView::PalpationView(QWidget* parent)
     m_scale->setTissues(builtInTissues());
 
     m_presses->setHorizontalHeaderLabels(
-        {tr("Time (s)"), tr("kₒ (N/m)"), tr("± u"), tr("Depth (mm)"), tr("Slope"), tr("Site")});
+        {tr("Since connect (s)"), tr("kₒ (N/m)"), tr("± u"), tr("Depth (mm)"), tr("Slope"), tr("Site")});
     m_presses->horizontalHeaderItem(4)->setToolTip(
         tr("Change of kₒ per mm pressed, in N/m per mm: near zero when the reading does not depend on the depth"));
     m_presses->verticalHeader()->hide();
@@ -191,9 +191,24 @@ void PalpationView::fitPressColumns()
     m_presses->setMinimumWidth(width_px);
 }
 
-void PalpationView::showPresses(const std::vector<devices::session::PressRecord>& presses)
+void PalpationView::showPresses(const std::vector<devices::session::PressRecord>& presses,
+                                const devices::session::LiveLists& lists,
+                                const std::optional<core::compliance::SiteGrid>& grid)
 {
-    if (presses.size() < static_cast<std::size_t>(m_presses->rowCount())) startSubject();
+    if (grid) m_grid->showCurrent(grid->current());
+    if (lists.generation != m_generation) {
+        m_generation = lists.generation;
+        startSubject();
+    }
+    if (lists.clock != m_clock) {
+        m_clock = lists.clock;
+        m_presses->horizontalHeaderItem(0)->setText(
+            lists.clock == devices::session::LiveClock::SinceConnect ? tr("Since connect (s)") : tr("Recording (s)"));
+        m_presses->horizontalHeaderItem(0)->setToolTip(
+            lists.clock == devices::session::LiveClock::SinceConnect
+                ? tr("Seconds since the device connected: these presses are not recorded")
+                : tr("Seconds of the recording, as stored in session %1").arg(lists.session));
+    }
     if (presses.size() == static_cast<std::size_t>(m_presses->rowCount())) return;
     const QLocale locale;
     for (auto record = presses.begin() + m_presses->rowCount(); record != presses.end(); ++record) {
@@ -217,7 +232,9 @@ void PalpationView::showPresses(const std::vector<devices::session::PressRecord>
         if (inRange) {
             m_stiffness->setText(stiffnessText(k, press.uncertainty_n_per_m()));
             m_scale->setReading(k);
-            if (m_grid->isActive()) m_grid->place(k, press.uncertainty_n_per_m());
+            // The map holds the recording's readings, where they were taken.
+            if (const auto cell = core::compliance::SiteGrid::cellOf(record->site); cell && record->stored)
+                m_grid->showReading(*cell, k, press.uncertainty_n_per_m());
         } else {
             m_stiffness->setText(outOfRange);
             m_scale->setReading(std::nullopt);
@@ -230,6 +247,7 @@ void PalpationView::showPresses(const std::vector<devices::session::PressRecord>
 void PalpationView::startSubject()
 {
     m_presses->setRowCount(0);
+    m_grid->clearReadings();
     m_stiffness->setText(tr("— N/m"));
     m_scale->setReading(std::nullopt);
 }

@@ -12,7 +12,9 @@
 #include <QString>
 #include <QWidget>
 
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QLabel;
@@ -38,10 +40,12 @@ public:
                       const QString& probeName, const QString& calibration = {});
     // Refreshes the large readout; called by the main window's timer.
     void updateReadout();
-    // Shows the session's presses: rows, the scale and the grid for those
-    // not listed yet; a shorter list is a new subject (the grid map stays:
-    // same phantom). The grid then selects the next site.
-    void showPresses(const std::vector<devices::session::PressRecord>& presses);
+    // Shows the session's presses (devices::session::LiveSession::presses())
+    // on the lists' clock: rows, the scale and, for those stored, the grid's
+    // cells; another generation starts afresh. The grid's selection is the
+    // session's next site.
+    void showPresses(const std::vector<devices::session::PressRecord>& presses,
+                     const devices::session::LiveLists& lists, const std::optional<core::compliance::SiteGrid>& grid);
     int readingCount() const;
 
     LivePlotWidget* lanes() const { return m_lanes; }
@@ -67,6 +71,8 @@ private:
     StiffnessScale* m_scale = nullptr;
     QTableWidget* m_presses = nullptr;
     SiteGridMap* m_grid = nullptr;
+    std::uint64_t m_generation = 0;
+    devices::session::LiveClock m_clock = devices::session::LiveClock::SinceConnect;
 };
 
 }  // namespace tactiscope::ui

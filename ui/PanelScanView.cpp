@@ -202,27 +202,26 @@ void PanelScanView::applySettings()
 }
 
 void PanelScanView::showDefects(const std::vector<core::detector::DefectEvent>& defects,
-                                std::optional<double> recordingOrigin_s)
+                                const devices::session::LiveLists& lists)
 {
-    const auto listed = static_cast<std::size_t>(m_events->rowCount());
-    const bool recordingChanged = recordingOrigin_s.has_value() != m_recording;
-    m_recording = recordingOrigin_s.has_value();
-    if (defects.size() < listed) startPanel();
-    if (defects.size() == static_cast<std::size_t>(m_events->rowCount())) {
-        if (recordingChanged) showCount();
-        return;
+    const bool clockChanged = lists.clock != m_clock;
+    m_clock = lists.clock;
+    if (lists.generation != m_generation) {
+        m_generation = lists.generation;
+        startPanel();
+    } else if (clockChanged) {
+        showCount();
     }
-    const QLocale locale;
-    const double origin_s = recordingOrigin_s.value_or(0.0);
+    if (defects.size() == static_cast<std::size_t>(m_events->rowCount())) return;
     for (auto it = defects.begin() + m_events->rowCount(); it != defects.end(); ++it) {
         const auto& e = *it;
         const int row = m_events->rowCount();
         m_events->insertRow(row);
-        const QStringList cells{fixedText(e.start_s - origin_s, 2), orderText(e.direction), fixedText(e.peakR, 3),
+        const QStringList cells{fixedText(e.start_s, 2), orderText(e.direction), fixedText(e.peakR, 3),
                                 fixedText(e.peakLag_s * 1e3, 0),
                                 e.speed_m_per_s ? fixedText(*e.speed_m_per_s * 1e3, 0) : tr("—")};
         for (int c = 0; c < cells.size(); ++c) m_events->setItem(row, c, new QTableWidgetItem(cells[c]));
-        raiseAlarm(e, e.start_s - origin_s);
+        raiseAlarm(e, e.start_s);
     }
     m_events->scrollToBottom();
     showCount();
@@ -230,10 +229,21 @@ void PanelScanView::showDefects(const std::vector<core::detector::DefectEvent>& 
 
 void PanelScanView::showCount()
 {
-    if (m_recording)
-        m_countLabel->setText(tr("%1 on this panel — %2").arg(defectCountText(defectCount()), verdictText()));
-    else
+    const bool recorded = m_clock != devices::session::LiveClock::SinceConnect;
+    m_events->horizontalHeaderItem(0)->setText(recorded ? tr("Recording (s)") : tr("Since connect (s)"));
+    switch (m_clock) {
+    case devices::session::LiveClock::Recording:
+        m_countLabel->setText(defectCount() == 0
+                                  ? tr("No defect on this panel yet — %1").arg(verdictText())
+                                  : tr("%1 on this panel — %2").arg(defectCountText(defectCount()), verdictText()));
+        break;
+    case devices::session::LiveClock::Recorded:
+        m_countLabel->setText(tr("%1 recorded on this panel — %2").arg(defectCountText(defectCount()), verdictText()));
+        break;
+    case devices::session::LiveClock::SinceConnect:
         m_countLabel->setText(tr("%1 since connect — not recorded").arg(defectCountText(defectCount())));
+        break;
+    }
 }
 
 void PanelScanView::raiseAlarm(const core::detector::DefectEvent& event, double shownTime_s)
@@ -253,10 +263,7 @@ void PanelScanView::calmAlarm()
 void PanelScanView::startPanel()
 {
     m_events->setRowCount(0);
-    if (m_recording)
-        m_countLabel->setText(tr("No defect on this panel yet — %1").arg(verdictText()));
-    else
-        showCount();
+    showCount();
 }
 
 int PanelScanView::defectCount() const

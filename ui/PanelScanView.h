@@ -7,10 +7,12 @@
 #pragma once
 
 #include "core/detector/LiveDetection.h"
+#include "devices/session/LiveSession.h"
 
 #include <QTimer>
 #include <QWidget>
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -33,12 +35,11 @@ public:
 
     // Shows `detection`'s output and edits its settings; null detaches.
     void setDetection(std::shared_ptr<core::detector::LiveDetection> detection, double sampleRate_hz);
-    // Shows the panel's defects (the live session's list): rows for those
-    // not listed yet, with the alarm; a shorter list is a new panel. While
-    // recording, times are on the recording's clock (from its origin, a
-    // stream time) and the list is the panel's; else since connect, and
-    // nothing of it is recorded.
-    void showDefects(const std::vector<core::detector::DefectEvent>& defects, std::optional<double> recordingOrigin_s);
+    // Shows the panel's defects (the live session's list, on its clock):
+    // rows for those not listed yet, with the alarm; another generation is
+    // a new list. The count says whether they are the recording's, the
+    // stopped recording's as stored, or since connect and not recorded.
+    void showDefects(const std::vector<core::detector::DefectEvent>& defects, const devices::session::LiveLists& lists);
     int defectCount() const;
     LivePlotWidget* lanes() const { return m_lanes; }
 
@@ -53,7 +54,8 @@ private:
 
     std::shared_ptr<core::detector::LiveDetection> m_detection;
     LivePlotWidget* m_lanes = nullptr;
-    bool m_recording = false;
+    std::uint64_t m_generation = 0;
+    devices::session::LiveClock m_clock = devices::session::LiveClock::SinceConnect;
     QDoubleSpinBox* m_threshold = nullptr;
     QDoubleSpinBox* m_lagFrom = nullptr;
     QDoubleSpinBox* m_lagTo = nullptr;

@@ -8,12 +8,12 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QLocale>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
 #include <cmath>
+#include <utility>
 
 namespace tactiscope::ui {
 namespace {
@@ -24,7 +24,7 @@ constexpr int kValueRole = Qt::UserRole;
 
 QString siteName(int row, int column)
 {
-    return QStringLiteral("%1%2").arg(QChar(u'A' + row)).arg(column + 1);
+    return QString::fromStdString(core::compliance::SiteGrid::name({row, column}));
 }
 
 SiteGridMap::SiteGridMap(QWidget* parent)
@@ -36,8 +36,8 @@ SiteGridMap::SiteGridMap(QWidget* parent)
 {
     m_active->setObjectName(QStringLiteral("gridMapBox"));
     m_grid->setObjectName(QStringLiteral("siteGrid"));
-    m_rows->setRange(1, 26);  // rows are letters
-    m_columns->setRange(1, 40);
+    m_rows->setRange(1, core::compliance::SiteGrid::kMaxRows);
+    m_columns->setRange(1, core::compliance::SiteGrid::kMaxColumns);
     m_rows->setValue(3);
     m_columns->setValue(4);
     m_rows->setSuffix(tr(" rows"));
@@ -54,7 +54,6 @@ SiteGridMap::SiteGridMap(QWidget* parent)
     bar->setFixedHeight(12);
     bar->setStyleSheet(stiffnessGradientStyle());
     auto* ends = new QHBoxLayout;
-    const QLocale locale;
     const double middle = std::sqrt(StiffnessScale::kLow_n_per_m * StiffnessScale::kHigh_n_per_m);
     ends->addWidget(new QLabel(fixedText(StiffnessScale::kLow_n_per_m, 0), m_legend));
     ends->addStretch(1);
@@ -79,6 +78,9 @@ SiteGridMap::SiteGridMap(QWidget* parent)
     layout->addWidget(m_legend);
 
     connect(m_active, &QCheckBox::toggled, this, &SiteGridMap::setActive);
+    connect(m_grid, &QTableWidget::currentCellChanged, this, [this](int row, int column) {
+        if (!m_showing && row >= 0 && column >= 0) m_chosen = core::compliance::SiteCell{row, column};
+    });
     connect(m_rows, &QSpinBox::valueChanged, this, &SiteGridMap::resizeGrid);
     connect(m_columns, &QSpinBox::valueChanged, this, &SiteGridMap::resizeGrid);
     resizeGrid();
@@ -108,7 +110,13 @@ void SiteGridMap::resizeGrid()
     for (int c = 0; c < m_columns->value(); ++c) columns << QString::number(c + 1);
     m_grid->setVerticalHeaderLabels(rows);
     m_grid->setHorizontalHeaderLabels(columns);
-    if (!m_grid->currentIndex().isValid()) selectSite(0, 0);
+    if (!m_grid->currentIndex().isValid()) showCurrent({0, 0});
+}
+
+std::optional<core::compliance::SiteGrid> SiteGridMap::grid() const
+{
+    if (!isActive()) return std::nullopt;
+    return core::compliance::SiteGrid(m_rows->value(), m_columns->value());
 }
 
 QString SiteGridMap::currentSite() const
@@ -120,26 +128,36 @@ QString SiteGridMap::currentSite() const
 void SiteGridMap::selectSite(int row, int column)
 {
     m_grid->setCurrentCell(row, column);
+    m_chosen = core::compliance::SiteCell{row, column};
 }
 
-void SiteGridMap::place(double stiffness_n_per_m, double standardError_n_per_m)
+void SiteGridMap::showCurrent(core::compliance::SiteCell cell)
 {
-    const int row = m_grid->currentRow(), column = m_grid->currentColumn();
-    if (row < 0 || column < 0) return;
-    const QLocale locale;
-    auto* cell = new QTableWidgetItem(fixedText(stiffness_n_per_m, 0));
-    cell->setData(kValueRole, stiffness_n_per_m);
-    cell->setTextAlignment(Qt::AlignCenter);
+    if (m_grid->currentRow() == cell.row && m_grid->currentColumn() == cell.column) return;
+    m_showing = true;
+    m_grid->setCurrentCell(cell.row, cell.column);
+    m_showing = false;
+}
+
+void SiteGridMap::clearReadings()
+{
+    for (int row = 0; row < m_grid->rowCount(); ++row)
+        for (int column = 0; column < m_grid->columnCount(); ++column) delete m_grid->takeItem(row, column);
+}
+
+void SiteGridMap::showReading(core::compliance::SiteCell cell, double stiffness_n_per_m, double standardError_n_per_m)
+{
+    if (cell.row >= m_grid->rowCount() || cell.column >= m_grid->columnCount()) return;
+    auto* item = new QTableWidgetItem(fixedText(stiffness_n_per_m, 0));
+    item->setData(kValueRole, stiffness_n_per_m);
+    item->setTextAlignment(Qt::AlignCenter);
     const QColor colour = stiffnessColour(stiffness_n_per_m);
-    cell->setBackground(colour);
-    cell->setForeground(colour.lightnessF() > 0.55F ? Qt::black : Qt::white);
-    cell->setToolTip(
-        tr("%1: %2 ± %3 N/m")
-            .arg(siteName(row, column), fixedText(stiffness_n_per_m, 1), fixedText(standardError_n_per_m, 1)));
-    m_grid->setItem(row, column, cell);
-    // Row by row, as one works across a phantom; wraps at the end.
-    const int next = (row * m_grid->columnCount() + column + 1) % (m_grid->rowCount() * m_grid->columnCount());
-    selectSite(next / m_grid->columnCount(), next % m_grid->columnCount());
+    item->setBackground(colour);
+    item->setForeground(colour.lightnessF() > 0.55F ? Qt::black : Qt::white);
+    item->setToolTip(tr("%1: %2 ± %3 N/m")
+                         .arg(siteName(cell.row, cell.column), fixedText(stiffness_n_per_m, 1),
+                              fixedText(standardError_n_per_m, 1)));
+    m_grid->setItem(cell.row, cell.column, item);
 }
 
 std::optional<double> SiteGridMap::valueAt(int row, int column) const

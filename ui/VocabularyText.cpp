@@ -14,6 +14,8 @@ QString modeTitle(core::Mode mode)
         return QCoreApplication::translate("Mode", "Palpation");
     case core::Mode::Capacitive:
         return QCoreApplication::translate("Mode", "Capacitive");
+    case core::Mode::General:
+        return QCoreApplication::translate("Mode", "General recording");
     }
     return {};
 }

@@ -108,6 +108,26 @@ QString modeUsageError()
     return QStringLiteral("--mode must be %1").arg(toQString(core::modeChoices()));
 }
 
+QCommandLineOption rolesOption()
+{
+    return {QStringLiteral("roles"),
+            QStringLiteral("What each channel is to the mode, by channel name: NAME=ROLE,… with the roles %1 "
+                           "(e.g. a=cantilever-a,b=cantilever-b); a channel not named keeps the device's role.")
+                .arg(toQString(core::channelRoleChoices())),
+            QStringLiteral("LIST")};
+}
+
+std::optional<core::RoleAssignment> parseRolesOption(const QCommandLineParser& parser, QString& error)
+{
+    if (!parser.isSet(QStringLiteral("roles"))) return core::RoleAssignment{};
+    try {
+        return core::parseRoleAssignment(parser.value(QStringLiteral("roles")).toStdString());
+    } catch (const std::invalid_argument& e) {
+        error = QStringLiteral("--roles: %1").arg(QString::fromStdString(e.what()));
+        return std::nullopt;
+    }
+}
+
 int exitForReadError(const QString& path)
 {
     try {

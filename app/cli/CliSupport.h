@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/Vocabulary.h"
+#include "core/modes/ChannelRoles.h"
 #include "devices/PortSource.h"
 
 #include <QCommandLineParser>
@@ -47,7 +48,12 @@ std::optional<devices::WireProtocol> parseWireProtocol(const QString& text);
 // with `more` after it) and its value; nothing for an unknown mode.
 QString modeOptionText(const QString& more);
 std::optional<core::Mode> parseMode(const QString& text);
-QString modeUsageError();  // "--mode must be panel-scan, palpation or capacitive"
+QString modeUsageError();  // "--mode must be panel-scan, palpation, capacitive or general"
+
+// --roles NAME=ROLE,…: the option (record and import share it) and its
+// value; a bad list is the usage error's text in `error`.
+QCommandLineOption rolesOption();
+std::optional<core::RoleAssignment> parseRolesOption(const QCommandLineParser& parser, QString& error);
 
 // Inside a catch block of a command that read the file `path`: prints the
 // error and returns the exit code. A file the importer refuses (io::CsvError,

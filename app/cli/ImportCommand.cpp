@@ -29,8 +29,11 @@ int runImport(const QStringList& arguments)
         {QStringLiteral("time-column"), QStringLiteral("The time column (seconds)."), QStringLiteral("NAME")},
         {QStringLiteral("columns"), QStringLiteral("Data columns to import, in order (default: all but time)."),
          QStringLiteral("A,B,…")},
-        {QStringLiteral("mode"), modeOptionText(QStringLiteral("(default: the metadata file's, else panel-scan).")),
+        {QStringLiteral("mode"),
+         modeOptionText(QStringLiteral("(default: the metadata file's, else panel-scan when the columns can feed it, "
+                                       "else general).")),
          QStringLiteral("MODE")},
+        rolesOption(),
         {QStringLiteral("subject"), QStringLiteral("Panel or phantom id."), QStringLiteral("ID")},
         {QStringLiteral("operator"), QStringLiteral("Who recorded it."), QStringLiteral("NAME")},
         {QStringLiteral("notes"), QStringLiteral("Free text, e.g. the program it came from."), QStringLiteral("TEXT")},
@@ -58,6 +61,10 @@ int runImport(const QStringList& arguments)
         options.mode = parseMode(parser.value(QStringLiteral("mode")));
         if (!options.mode) return usageError(modeUsageError(), usage);
     }
+    QString rolesError;
+    const auto roles = parseRolesOption(parser, rolesError);
+    if (!roles) return usageError(rolesError, usage);
+    options.roles = *roles;
     metadata.subject = parser.value(QStringLiteral("subject")).toStdString();
     metadata.operatorName = parser.value(QStringLiteral("operator")).toStdString();
     metadata.notes = parser.value(QStringLiteral("notes")).toStdString();

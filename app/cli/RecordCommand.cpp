@@ -62,6 +62,9 @@ QString analysisSummary(const devices::session::LiveSession& session, const devi
                      ? QStringLiteral("none (the beam model)")
                      : toQString(used.front().record.timestampUtc + " by " + used.front().record.operatorName));
     }
+    case core::Mode::General:
+        return QStringLiteral("general: %1 as they came, no analysis")
+            .arg(count(session.channels().size(), "channel", "channels"));
     }
     return {};
 }
@@ -97,6 +100,7 @@ int runRecord(const QStringList& arguments)
         {QStringLiteral("profile"),
          QStringLiteral("Sensor profile (JSON) for palpation or capacitive (default: the paper's, built in)."),
          QStringLiteral("FILE")},
+        rolesOption(),
     });
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
@@ -133,6 +137,9 @@ int runRecord(const QStringList& arguments)
         mode = parseMode(parser.value(QStringLiteral("mode")));
         if (!mode) return usageError(modeUsageError(), usage);
     }
+    QString rolesError;
+    const auto roles = parseRolesOption(parser, rolesError);
+    if (!roles) return usageError(rolesError, usage);
     std::optional<core::sensors::SensorProfile> profile;
     if (parser.isSet(QStringLiteral("profile"))) {
         try {
@@ -181,14 +188,18 @@ int runRecord(const QStringList& arguments)
 
     devices::session::LiveSessionOptions sessionOptions;
     sessionOptions.storePath = db;
-    devices::session::LiveSession session(std::move(source), sessionOptions);
-    // The mode asked for must run on the device; without one, the device's own.
-    if (!mode) mode = session.declaredMode();
-    if (!mode) {
-        printError(QStringLiteral("the device's channels feed no mode: %1")
-                       .arg(QString::fromStdString(*session.refusalOf(core::Mode::PanelScan))));
+    sessionOptions.roles = *roles;
+    std::unique_ptr<devices::session::LiveSession> live;
+    try {
+        live = std::make_unique<devices::session::LiveSession>(std::move(source), sessionOptions);
+    } catch (const std::invalid_argument& e) {  // a role for a channel the device lacks
+        printError(QStringLiteral("--roles: %1").arg(QString::fromStdString(e.what())));
         return kExitUsage;
     }
+    auto& session = *live;
+    // The mode asked for must run on the device; without one, the device's
+    // own (general for a device that declares none its channels feed).
+    if (!mode) mode = session.declaredMode();
     if (const auto refusal = session.setMode(*mode)) {
         printError(QStringLiteral("cannot record in this mode: %1").arg(QString::fromStdString(*refusal)));
         return kExitUsage;

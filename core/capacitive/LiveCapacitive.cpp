@@ -108,6 +108,21 @@ std::optional<std::string> LiveCapacitive::tare()
     return std::nullopt;
 }
 
+void LiveCapacitive::inheritBaseline(const LiveCapacitive& previous)
+{
+    const BaselineChange baseline = previous.currentBaseline();
+    {
+        const std::lock_guard lock(previous.m_mutex);
+        if (!previous.m_startTaredSeen) return;  // it had not taken one yet: this one will
+    }
+    m_readout.setBaseline(baseline.c0_f);
+    m_changesSeen = m_readout.baselineChanges();
+    m_startTared = true;
+    const std::lock_guard lock(m_mutex);
+    m_baseline = baseline;
+    m_startTaredSeen = true;
+}
+
 std::vector<ChannelDescriptor> LiveCapacitive::outputChannels()
 {
     return {{"F", "N", ChannelKind::Force}, {"w", "m", ChannelKind::Position}};
@@ -142,6 +157,7 @@ void LiveCapacitive::consume(const SampleBlock& block)
     m_output->consume(display);
     const std::lock_guard lock(m_mutex);
     if (!changes.empty()) m_baseline = changes.back();
+    m_startTaredSeen = m_startTared;
     m_baselineChanges.insert(m_baselineChanges.end(), changes.begin(), changes.end());
     m_latest = reading;
     for (std::size_t s = 0; s < block.sampleCount(); ++s) m_window.push(block.value(m_channel, s));

@@ -9,7 +9,9 @@
 // another day; the baseline drifts). tare() is a rule: the mean of the last
 // kTare_s becomes C0 only when that stretch is steady (its two halves agree
 // within their noise, or within 3σ of the calibrated baseline noise), so a
-// weight being placed or lifted is never zeroed; otherwise it says why.
+// weight being placed or lifted is never zeroed; otherwise it says why. A
+// readout rebuilt for another profile or calibration re-takes nothing: it
+// goes on from its predecessor's C0 (inheritBaseline).
 #pragma once
 
 #include "core/BlockSink.h"
@@ -86,6 +88,9 @@ public:
     // Any thread: the last kTare_s's mean becomes C0 (see above); nothing
     // when taken, else the reason, in words for the operator.
     std::optional<std::string> tare();
+    // Before it is fed: go on from `previous`'s C0 once that one has taken
+    // its start baseline, instead of taking one of its own.
+    void inheritBaseline(const LiveCapacitive& previous);
 
     // Acquisition thread.
     void consume(const SampleBlock& block) override;
@@ -109,6 +114,7 @@ private:
     std::optional<double> m_pendingC0_f;
     BaselineChange m_baseline;
     std::vector<BaselineChange> m_baselineChanges;
+    bool m_startTaredSeen = false;  // m_startTared, for another thread
 
     // Acquisition thread only.
     CapacitiveReadout m_readout;

@@ -41,6 +41,18 @@ void LivePalpation::setZero(std::uint64_t firstIndex, const RawZero& zero)
     m_zeroChanges.push_back(*m_zero);
 }
 
+void LivePalpation::inheritZero(const LivePalpation& previous)
+{
+    const auto zero = previous.currentZero();
+    if (!zero) return;  // it was still taking its first: so does this one
+    m_forces.setZero(zero->zero);
+    m_reader.setZeroUncertainty(m_forces.zeroUncertainty());
+    m_tareCount = m_tareSamples;
+    const std::lock_guard lock(m_mutex);
+    m_zero = zero;
+    m_state.taring = false;
+}
+
 std::optional<ZeroChange> LivePalpation::currentZero() const
 {
     const std::lock_guard lock(m_mutex);

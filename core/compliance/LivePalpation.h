@@ -70,6 +70,10 @@ public:
     // Any thread: the last kTare_s become the zero (see above); nothing when
     // taken, else the reason, in words for the operator.
     std::optional<std::string> tare();
+    // Before it is fed: go on from `previous`'s zero (if it had one yet)
+    // instead of taking a first one. The raw zero is the beams' counts, so
+    // it holds for any profile of the same device.
+    void inheritZero(const LivePalpation& previous);
 
     // Acquisition thread.
     void consume(const SampleBlock& block) override;

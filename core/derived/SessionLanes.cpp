@@ -104,8 +104,12 @@ std::unique_ptr<storage::ComputedColumns> computedColumns(storage::SessionSource
         return std::make_unique<CapacitiveChannels>(store, session.id);
     case Mode::PanelScan:
         return std::make_unique<PanelScanChannels>(store, session.id);
+    case Mode::General:
+        break;
     }
-    throw std::invalid_argument("session " + std::to_string(session.id) + " has no mode with derived channels");
+    throw std::invalid_argument("session " + std::to_string(session.id) + " is a " +
+                                std::string(toString(session.metadata.mode)) +
+                                " recording: its channels are stored as they came, with no derived quantities");
 }
 
 }  // namespace tactiscope::core::derived

@@ -2,6 +2,8 @@
 // be measured), then one streaming pass that stores blocks as they fill.
 #include "core/storage/CsvImport.h"
 
+#include "core/ModeCapability.h"
+
 #include "core/SampleBlock.h"
 #include "core/io/CsvReader.h"
 #include "core/storage/Database.h"
@@ -312,7 +314,7 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
             if (!mode) throw CsvError("the metadata file names an unknown mode '" + sideMode + "'");
         }
     }
-    metadata.mode = mode.value_or(Mode::PanelScan);  // as when recording
+    metadata.mode = mode.value_or(Mode::PanelScan);  // settled below, once the channels are known
 
     CsvImportResult result;
     result.usedSideFile = side.has_value();
@@ -344,10 +346,22 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
                     stored.contains("column") ? textOf(stored, "column") : textOf(stored, "name");
                 if (column != header[c]) continue;
                 channel = {textOf(stored, "name"), textOf(stored, "unit"),
-                           channelKindFromString(textOf(stored, "kind")).value_or(ChannelKind::Other)};
+                           channelKindFromString(textOf(stored, "kind")).value_or(ChannelKind::Other),
+                           channelRoleFromString(textOf(stored, "role"))};
             }
         }
         result.channels.push_back(channel);
+    }
+    try {
+        result.channels = applyRoles(result.channels, options.roles);
+    } catch (const std::invalid_argument& e) {
+        throw CsvError("'" + path + "': " + e.what());
+    }
+    if (!mode && modeRefusal(Mode::PanelScan, result.channels)) {
+        // Not a scan: a general recording, whose unitless columns are no strains.
+        metadata.mode = Mode::General;
+        for (auto& channel : result.channels)
+            if (channel.kind == ChannelKind::Strain && channel.unit.empty() && !side) channel.kind = ChannelKind::Other;
     }
 
     if (options.rate_hz) {

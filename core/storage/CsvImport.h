@@ -22,6 +22,7 @@
 #pragma once
 
 #include "core/io/CsvColumns.h"
+#include "core/modes/ChannelRoles.h"
 #include "core/storage/SessionStore.h"
 
 #include <functional>
@@ -34,7 +35,12 @@ struct CsvImportOptions {
     std::string timeColumn;            // empty: a column named t, time, time_s or timestamp, if any
     std::vector<std::string> columns;  // data columns, in order; empty: every column but the time column
     SessionMetadata metadata;          // its non-empty text fields win over the side file's
-    std::optional<Mode> mode;          // none: the side file's, else panel-scan (as when recording)
+    // None: the side file's, else panel scan when the columns can feed it
+    // (unitless columns are strains), else general. A mode given is kept
+    // even where the columns cannot feed it: the samples are stored, and the
+    // review says why the mode's quantities cannot be derived.
+    std::optional<Mode> mode;
+    RoleAssignment roles;  // by column name (after the unit is split off), over the side file's
 };
 
 struct CsvImportResult {

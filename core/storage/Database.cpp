@@ -102,7 +102,10 @@ Statement& Statement::bind(int index, double value)
 
 Statement& Statement::bind(int index, std::string_view text)
 {
-    check(sqlite3_bind_text(m_statement, index, text.data(), static_cast<int>(text.size()), SQLITE_TRANSIENT));
+    // An empty view may have no data at all, which SQLite would bind as NULL:
+    // text is text, however short.
+    const char* data = text.data() ? text.data() : "";
+    check(sqlite3_bind_text(m_statement, index, data, static_cast<int>(text.size()), SQLITE_TRANSIENT));
     return *this;
 }
 

@@ -193,7 +193,45 @@ DROP INDEX readings_by_session;
 CREATE INDEX readings_by_session ON readings (session_id, analysis, start_s);
 )sql";
 
-constexpr std::array kMigrations{kVersion1, kVersion2, kVersion3, kVersion4};
+// Version 4 → 5: the general mode (any device, channels stored as they
+// come) and the role each channel played (core/ChannelDescriptor.h), which
+// the review needs to derive a mode's quantities from a device that did not
+// declare its channels' kinds. A CHECK cannot be altered in SQLite: the
+// sessions table is rebuilt (new, copy, drop, rename; prepareSchema() runs
+// migrations with foreign keys off, so the drop cascades nowhere).
+constexpr const char* kVersion5 = R"sql(
+CREATE TABLE sessions_v5 (
+    id                INTEGER PRIMARY KEY,
+    uuid              TEXT NOT NULL UNIQUE,
+    mode              TEXT NOT NULL CHECK (mode IN ('panel-scan', 'palpation', 'capacitive', 'general')),
+    subject           TEXT NOT NULL DEFAULT '',
+    operator          TEXT NOT NULL DEFAULT '',
+    site              TEXT NOT NULL DEFAULT '',
+    notes             TEXT NOT NULL DEFAULT '',
+    started_utc       TEXT NOT NULL,
+    ended_utc         TEXT,
+    status            TEXT NOT NULL CHECK (status IN ('recording', 'complete', 'interrupted')),
+    verdict           TEXT NOT NULL DEFAULT '',
+    device_model      TEXT NOT NULL DEFAULT '',
+    device_serial     TEXT NOT NULL DEFAULT '',
+    device_firmware   TEXT NOT NULL DEFAULT '',
+    profile_json      TEXT NOT NULL DEFAULT '',
+    app_version       TEXT NOT NULL,
+    calibrations_json TEXT NOT NULL DEFAULT ''
+);
+INSERT INTO sessions_v5 (id, uuid, mode, subject, operator, site, notes, started_utc, ended_utc, status, verdict,
+                         device_model, device_serial, device_firmware, profile_json, app_version, calibrations_json)
+    SELECT id, uuid, mode, subject, operator, site, notes, started_utc, ended_utc, status, verdict,
+           device_model, device_serial, device_firmware, profile_json, app_version, calibrations_json FROM sessions;
+DROP TABLE sessions;
+ALTER TABLE sessions_v5 RENAME TO sessions;
+CREATE INDEX sessions_started ON sessions (started_utc);
+
+ALTER TABLE channels ADD COLUMN role TEXT NOT NULL DEFAULT ''
+    CHECK (role IN ('', 'cantilever-a', 'cantilever-b', 'stiff-beam', 'soft-beam', 'displacement', 'capacitance'));
+)sql";
+
+constexpr std::array kMigrations{kVersion1, kVersion2, kVersion3, kVersion4, kVersion5};
 static_assert(kMigrations.size() == kSchemaVersion);
 
 std::int64_t pragma(Database& db, const char* name)
@@ -236,13 +274,26 @@ int prepareSchema(Database& db, int targetVersion)
     }
     // WAL: readers (the review window) work while the recorder writes.
     db.exec("PRAGMA journal_mode = WAL");
-    for (auto step = version; step < targetVersion; ++step) {
-        Transaction transaction(db);
-        db.exec(kMigrations[static_cast<std::size_t>(step)]);
-        db.exec("PRAGMA user_version = " + std::to_string(step + 1));
-        db.exec("PRAGMA application_id = " + std::to_string(kApplicationId));
-        transaction.commit();
+    // Foreign keys off while tables are rebuilt (SQLite ignores the pragma
+    // inside a transaction); each step checks them before it commits.
+    db.exec("PRAGMA foreign_keys = OFF");
+    try {
+        for (auto step = version; step < targetVersion; ++step) {
+            Transaction transaction(db);
+            db.exec(kMigrations[static_cast<std::size_t>(step)]);
+            if (db.prepare("PRAGMA foreign_key_check").step())
+                throw StorageError(db.path() + ": updating the store to version " + std::to_string(step + 1) +
+                                   " would leave rows without their session; it was left at version " +
+                                   std::to_string(step));
+            db.exec("PRAGMA user_version = " + std::to_string(step + 1));
+            db.exec("PRAGMA application_id = " + std::to_string(kApplicationId));
+            transaction.commit();
+        }
+    } catch (...) {
+        db.exec("PRAGMA foreign_keys = ON");
+        throw;
     }
+    db.exec("PRAGMA foreign_keys = ON");
     return static_cast<int>(version);
 }
 

@@ -191,6 +191,7 @@ void writeMetadata(text::JsonWriter& json, SessionSource& store, std::int64_t se
         json.key("column").value(csvHeader(channel.descriptor));
         json.key("unit").value(channel.descriptor.unit);
         json.key("kind").value(toString(channel.descriptor.kind));
+        if (channel.descriptor.role) json.key("role").value(toString(*channel.descriptor.role));
         json.key("sample_rate_hz").value(channel.sampleRate_hz);
         json.endObject();
     }

@@ -173,7 +173,8 @@ std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<cons
         .bind(14, origin.appVersion.empty() ? std::string(versionString()) : origin.appVersion)
         .run();
     const std::int64_t id = m_db.lastInsertId();
-    auto insert = m_db.prepare("INSERT INTO channels VALUES (?, ?, ?, ?, ?, ?)");
+    auto insert = m_db.prepare("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz, role) "
+                               "VALUES (?, ?, ?, ?, ?, ?, ?)");
     for (std::size_t c = 0; c < channels.size(); ++c) {
         insert.bind(1, id)
             .bind(2, static_cast<std::int64_t>(c))
@@ -181,6 +182,7 @@ std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<cons
             .bind(4, channels[c].unit)
             .bind(5, toString(channels[c].kind))
             .bind(6, sampleRate_hz)
+            .bind(7, roleWord(channels[c].role))
             .run();
     }
     transaction.commit();
@@ -404,12 +406,12 @@ std::optional<std::int64_t> SessionStore::sessionWithUuid(const std::string& uui
 std::vector<StoredChannel> SessionStore::channels(std::int64_t session)
 {
     std::vector<StoredChannel> result;
-    auto query =
-        m_db.prepare("SELECT name, unit, kind, sample_rate_hz FROM channels WHERE session_id = ? ORDER BY position");
+    auto query = m_db.prepare(
+        "SELECT name, unit, kind, sample_rate_hz, role FROM channels WHERE session_id = ? ORDER BY position");
     query.bind(1, session);
     while (query.step()) {
         const auto kind = channelKindFromString(query.text(2)).value_or(ChannelKind::Other);
-        result.push_back({{query.text(0), query.text(1), kind}, query.real(3)});
+        result.push_back({{query.text(0), query.text(1), kind, channelRoleFromString(query.text(4))}, query.real(3)});
     }
     return result;
 }

@@ -12,10 +12,25 @@ TextStream::TextStream(std::optional<double> sampleRate_hz)
     if (sampleRate_hz && !(*sampleRate_hz > 0.0)) throw std::invalid_argument("text stream rate must be positive");
 }
 
+// A label may say the channel's role (docs/protocol.md, "Channel roles"):
+// "a@cantilever-a" is channel a as cantilever A, and a label that is a
+// role's name ("stiff-beam") plays that role. Anything else is only a name.
 std::vector<core::ChannelDescriptor> TextStream::channels() const
 {
     std::vector<core::ChannelDescriptor> result;
-    for (const auto& name : m_decoder.channelNames()) result.push_back({name, "", core::ChannelKind::Other});
+    for (const auto& label : m_decoder.channelNames()) {
+        core::ChannelDescriptor channel{label, "", core::ChannelKind::Other};
+        const auto at = label.rfind('@');
+        if (const auto role = core::channelRoleFromString(label)) {
+            channel.role = role;
+        } else if (at != std::string::npos && at > 0) {
+            if (const auto named = core::channelRoleFromString(std::string_view(label).substr(at + 1))) {
+                channel.name = label.substr(0, at);
+                channel.role = named;
+            }
+        }
+        result.push_back(std::move(channel));
+    }
     return result;
 }
 

@@ -8,6 +8,7 @@
 #include "core/capacitive/LiveCapacitive.h"
 #include "core/compliance/LivePalpation.h"
 #include "core/detector/LiveDetection.h"
+#include "core/modes/ModeDefinition.h"
 #include "core/storage/AutomaticVerdict.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/RecordingTap.h"
@@ -39,26 +40,52 @@ LiveSession::LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions
     : m_options(std::move(options))
 {
     if (!source) throw std::invalid_argument("a live session needs a source");
-    const auto channels = source->channels();
+    m_channels = core::applyRoles(source->channels(), m_options.roles);
     const double rate_hz = source->nominalSampleRate_hz();
     m_acquisition = std::make_unique<Acquisition>(std::move(source));
     // Two seconds of headroom: the display reads 40 times a second, so only
     // an owner stalled that long loses display samples (never recorded ones).
     m_buffer =
-        std::make_shared<core::LiveBuffer>(channels.size(), static_cast<std::size_t>(std::ceil(2.0 * rate_hz)) + 1);
+        std::make_shared<core::LiveBuffer>(m_channels.size(), static_cast<std::size_t>(std::ceil(2.0 * rate_hz)) + 1);
     m_acquisition->addSink(m_buffer);
     m_tap = std::make_shared<core::storage::RecordingTap>();
     m_acquisition->addSink(m_tap);
-    // Processors rebuilt for another profile go into their slot while the
-    // device streams; the detector is built once.
+    // Processors rebuilt (another profile, calibration or roles) go into
+    // their slot while the device streams.
+    m_detectionSlot = std::make_shared<core::SinkSlot>();
     m_palpationSlot = std::make_shared<core::SinkSlot>();
     m_capacitiveSlot = std::make_shared<core::SinkSlot>();
+    m_acquisition->addSink(m_detectionSlot);
     m_acquisition->addSink(m_palpationSlot);
     m_acquisition->addSink(m_capacitiveSlot);
-    for (const core::Mode mode : core::runnableModes(channels))
-        if (const auto problem = build(mode)) m_problems.push_back(*problem);
-    if (m_detection) m_acquisition->addSink(m_detection);
-    m_mode = declaredMode().value_or(core::Mode::PanelScan);
+    buildAll();
+    m_mode = declaredMode();
+}
+
+// The processors of every mode the channels feed, and none of the others.
+void LiveSession::buildAll()
+{
+    m_detection.reset();
+    m_palpation.reset();
+    m_capacitive.reset();
+    for (const auto& slot : {m_detectionSlot, m_palpationSlot, m_capacitiveSlot}) slot->set(nullptr);
+    for (const core::Mode mode : core::runnableModes(m_channels))
+        if (const auto problem = build(mode, false)) m_problems.push_back(*problem);
+}
+
+std::optional<std::string> LiveSession::setRoles(core::RoleAssignment roles)
+{
+    if (isRecording()) return "a recording keeps its channels' roles; stop it first";
+    try {
+        m_channels = core::applyRoles(source().channels(), roles);
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    m_options.roles = std::move(roles);
+    buildAll();
+    if (refusalOf(m_mode)) m_mode = declaredMode();
+    startLists(LiveClock::SinceConnect);  // what the old roles found is not this setup's
+    return std::nullopt;
 }
 
 LiveSession::~LiveSession()
@@ -72,17 +99,16 @@ void LiveSession::start()
     m_acquisition->start();
 }
 
-std::optional<core::Mode> LiveSession::declaredMode() const
+core::Mode LiveSession::declaredMode() const
 {
-    if (const auto declared = source().declaredMode()) return declared;
-    const auto runnable = core::runnableModes(source().channels());
-    if (runnable.empty()) return std::nullopt;
-    return runnable.front();
+    const auto declared = source().declaredMode();
+    if (declared && !refusalOf(*declared)) return *declared;
+    return core::runnableModes(m_channels).front();  // general runs on any channels
 }
 
 std::optional<std::string> LiveSession::refusalOf(core::Mode mode) const
 {
-    return core::modeRefusal(mode, source().channels());
+    return core::modeRefusal(mode, m_channels);
 }
 
 std::optional<std::string> LiveSession::setMode(core::Mode mode)
@@ -96,16 +122,10 @@ std::optional<std::string> LiveSession::setMode(core::Mode mode)
 
 std::optional<std::string> LiveSession::tare()
 {
-    switch (m_mode) {
-    case core::Mode::Palpation:
-        if (!m_palpation) break;
-        return m_palpation->tare();
-    case core::Mode::Capacitive:
-        if (!m_capacitive) break;
-        return m_capacitive->tare();
-    case core::Mode::PanelScan:
-        return "panel scan has no zero to take: the detector works on the signals' changes";
-    }
+    const auto& definition = core::definitionOf(m_mode);
+    if (!definition.noZero.empty()) return std::string(definition.noZero);
+    if (m_mode == core::Mode::Palpation && m_palpation) return m_palpation->tare();
+    if (m_mode == core::Mode::Capacitive && m_capacitive) return m_capacitive->tare();
     return refusalOf(m_mode).value_or("this mode's processor is not running");
 }
 
@@ -138,15 +158,13 @@ std::optional<std::string> LiveSession::startRecording(const core::storage::Sess
     try {
         const auto directory = std::filesystem::path(m_options.storePath).parent_path();
         if (!directory.empty()) std::filesystem::create_directories(directory);
-        m_recorder =
-            std::make_shared<core::storage::Recorder>(m_options.storePath, metadata, source().channels(), rate_hz,
-                                                      recorderQueueBound(rate_hz, source().channels().size()), used);
+        m_recorder = std::make_shared<core::storage::Recorder>(m_options.storePath, metadata, m_channels, rate_hz,
+                                                               recorderQueueBound(rate_hz, m_channels.size()), used);
     } catch (const std::exception& e) {  // StorageError, or the folder cannot be made
         return e.what();
     }
     m_metadata = std::move(metadata);
-    m_defects.clear();
-    m_presses.clear();
+    startLists(LiveClock::Recording);
     // The zero in use reads the session's first samples (it applies from
     // index 0); those taken before were dropped above.
     if (m_palpation && m_metadata.mode == core::Mode::Palpation) {
@@ -221,6 +239,7 @@ std::optional<RecordingSummary> LiveSession::stopRecording()
 RecordingSummary LiveSession::finishRecording()
 {
     m_tap->detach();
+    if (const auto origin = recordingOrigin_s()) m_lists.origin_s = *origin;
     takeDefects();  // what completed up to the last recorded block
     takePresses();
     takeZeros();
@@ -234,8 +253,9 @@ RecordingSummary LiveSession::finishRecording()
     // automatic verdict says it passed.
     const bool whole = !summary.lostAt_s && summary.stoppedBecause.empty();
     std::optional<core::storage::VerdictDecision> decision;
-    if (m_metadata.mode == core::Mode::PanelScan) summary.sites = panelSites().sites.size();
-    if (m_metadata.mode == core::Mode::PanelScan && whole) {
+    const bool detects = core::definitionOf(m_metadata.mode).detectsDefects;
+    if (detects) summary.sites = panelSites().sites.size();
+    if (detects && whole) {
         decision = core::storage::automaticDecision(core::storage::kLiveAnalysis, m_defects.size(), summary.sites,
                                                     detectorParameters());
         summary.verdict = decision->verdict;
@@ -243,6 +263,7 @@ RecordingSummary LiveSession::finishRecording()
     summary.stats = m_recorder->finish(core::SessionStatus::Complete, decision);
     if (!summary.stats.error.empty()) summary.verdict.reset();  // the session ended interrupted
     m_recorder.reset();
+    m_lists.clock = LiveClock::Recorded;  // the lists hold what was stored, until the next event
     return summary;
 }
 
@@ -289,6 +310,7 @@ bool LiveSession::addMarker(double time_s, const std::string& note)
 
 std::optional<RecordingSummary> LiveSession::poll()
 {
+    if (const auto origin = recordingOrigin_s()) m_lists.origin_s = *origin;
     takeDefects();
     takePresses();
     takeZeros();
@@ -323,50 +345,94 @@ void LiveSession::takeNotices()
     if (!stored.empty()) m_recorder->addEvents(std::move(stored));
 }
 
+// The lists start again: at a record press, at the first event after a
+// stop, for other roles.
+void LiveSession::startLists(LiveClock clock)
+{
+    m_defects.clear();
+    m_presses.clear();
+    ++m_lists.generation;
+    m_lists.clock = clock;
+    m_lists.session = clock == LiveClock::SinceConnect ? 0 : sessionId();
+    m_lists.origin_s = 0.0;
+}
+
+// A stream time on the lists' clock: the recording's, as stored, while
+// recording; since connect otherwise.
+double LiveSession::listTime_s(double streamTime_s) const
+{
+    return m_recorder ? m_recorder->sessionTimeOf(streamTime_s) : streamTime_s;
+}
+
+// While recording, only the recording's mode fills the lists (another
+// mode's processor runs on, unseen and unstored); after a stop, the first
+// event starts the since-connect lists.
 void LiveSession::takeDefects()
 {
     if (!m_detection) return;
-    const auto found = m_detection->takeEvents();
+    auto found = m_detection->takeEvents();
     if (found.empty()) return;
+    const bool storing = m_recorder && core::definitionOf(m_metadata.mode).detectsDefects;
+    if (m_recorder && !storing) return;
+    if (m_lists.clock == LiveClock::Recorded) startLists(LiveClock::SinceConnect);
+    for (auto& e : found) {
+        e.start_s = listTime_s(e.start_s);
+        e.end_s = listTime_s(e.end_s);
+    }
     m_defects.insert(m_defects.end(), found.begin(), found.end());
-    if (!m_recorder || m_metadata.mode != core::Mode::PanelScan) return;
+    if (!storing) return;
     std::vector<core::storage::SessionEvent> stored;
     stored.reserve(found.size());
-    for (const auto& e : found) {
-        auto event = core::storage::defectRecord(e);
-        // The detector counts the stream's time; the session starts at its record press.
-        event.start_s = m_recorder->sessionTimeOf(e.start_s);
-        event.end_s = m_recorder->sessionTimeOf(e.end_s);
-        stored.push_back(event);
-    }
+    for (const auto& e : found) stored.push_back(core::storage::defectRecord(e));
     m_recorder->addEvents(std::move(stored));
 }
 
 void LiveSession::takePresses()
 {
     if (!m_palpation) return;
+    auto found = m_palpation->takeReadings();
+    if (found.empty()) return;
     const bool storing = m_recorder && m_metadata.mode == core::Mode::Palpation;
+    if (m_recorder && !storing) return;
+    if (m_lists.clock == LiveClock::Recorded) startLists(LiveClock::SinceConnect);
     std::vector<core::storage::SessionReading> stored;
-    for (auto& press : m_palpation->takeReadings()) {
-        PressRecord record{std::move(press), m_site, false};
+    for (auto& press : found) {
+        press.start_s = listTime_s(press.start_s);
+        press.end_s = listTime_s(press.end_s);
+        PressRecord record{std::move(press), m_siteGrid ? m_siteGrid->currentName() : m_site, false};
         // Out of range is a state, not a stiffness: shown, not stored as a number.
         if (storing && record.press.stiffness.range == core::sensors::ComplianceRange::InRange) {
             core::storage::SessionReading reading;
             reading.kind = core::ReadingKind::Compliance;
             reading.quantity = "stiffness";
             reading.unit = "N/m";
-            reading.start_s = m_recorder->sessionTimeOf(record.press.start_s);
-            reading.end_s = m_recorder->sessionTimeOf(record.press.end_s);
+            reading.start_s = record.press.start_s;
+            reading.end_s = record.press.end_s;
             reading.value = record.press.stiffness.objectStiffness_n_per_m;
             reading.standardError = record.press.uncertainty_n_per_m();
             reading.site = record.site;
             reading.detailsJson = core::compliance::pressDetailsJson(record.press);
             stored.push_back(std::move(reading));
             record.stored = true;
+            // The site has its reading: the next press is the next site's.
+            if (m_siteGrid) m_siteGrid->advance();
         }
         m_presses.push_back(std::move(record));
     }
     if (!stored.empty()) m_recorder->addReadings(std::move(stored));
+}
+
+void LiveSession::setSiteGrid(std::optional<core::compliance::SiteGrid> grid)
+{
+    // The same grid keeps its selection (the owner sets it on every poll).
+    if (grid && m_siteGrid && grid->rows() == m_siteGrid->rows() && grid->columns() == m_siteGrid->columns()) return;
+    if (grid && m_siteGrid) grid->select(m_siteGrid->current());
+    m_siteGrid = std::move(grid);
+}
+
+void LiveSession::selectSite(core::compliance::SiteCell cell)
+{
+    if (m_siteGrid) m_siteGrid->select(cell);
 }
 
 // The zeros the mode's processor reads the samples on, into the recording

@@ -8,14 +8,23 @@
 // observe it and call poll() now and then.
 //
 // Rules it keeps, so no owner can break them:
-// - a mode runs only on channels that can feed it (core/ModeCapability.h),
-//   and a source that declares a mode starts in it;
+// - a mode runs only on channels that can play its roles
+//   (core/ModeCapability.h; roles from the device or given in the options
+//   or by setRoles()), a source that declares a mode starts in it, and any
+//   other device starts in the first mode its channels feed: the general
+//   mode, which records any device, at the latest;
 // - a recording keeps its mode, profile and calibrations from start to end;
 // - a panel-scan recording stores its defects and the automatic verdict, a
 //   palpation recording its in-range stiffness readings (with the site),
 //   and every recording its profile and the calibrations used;
 // - a tare is refused with the reason while the probe is loaded or its
-//   signal is not steady (the processors' tare rules).
+//   signal is not steady (the processors' tare rules), and a processor
+//   rebuilt for another profile or calibration goes on from its
+//   predecessor's zero: no zero is ever taken under load;
+// - what the views show of the session (defects, presses, the site the
+//   next press is taken at) is the lists below, on one clock: the
+//   recording's while recording, exactly what was stored after the stop,
+//   the device's since-connect clock otherwise (listClock()).
 //
 // Threading: every call from one owner thread (the GUI thread, the CLI's
 // main loop). The processors run on the acquisition thread; poll() takes
@@ -24,10 +33,12 @@
 
 #include "core/LiveBuffer.h"
 #include "core/Vocabulary.h"
+#include "core/compliance/SiteGrid.h"
 #include "core/compliance/StiffnessReadings.h"
 #include "core/detector/DefectEvent.h"
 #include "core/detector/DefectSites.h"
 #include "core/detector/DetectorParameters.h"
+#include "core/modes/ChannelRoles.h"
 #include "core/sensors/SensorProfile.h"
 #include "core/storage/Recorder.h"
 #include "devices/Acquisition.h"
@@ -72,11 +83,28 @@ struct LiveSessionOptions {
     // into a scan speed and so places defects along the stroke (sites). A
     // panel-scan probe has no profile yet: the paper's prototype's.
     double panelSpacing_m = core::detector::kPrototypeSpacing_m;
+    // Roles given to the device's channels by name (core/modes/ChannelRoles.h).
+    core::RoleAssignment roles;
 };
 
-// A completed press as the session saw it (stream times), the site it was
-// taken at (empty without a site map), and whether it went into the
-// recording.
+// The clock of the live lists (defects, presses) and what they are.
+enum class LiveClock {
+    SinceConnect,  // no recording: seconds since the device connected; nothing of it stored
+    Recording,     // the recording's seconds, as stored
+    Recorded,      // the stopped recording's, exactly as stored, until the next event
+};
+
+struct LiveLists {
+    // Changes whenever the lists start again (a recording starts, the
+    // first event after a stop, other roles): a view clears and refills.
+    std::uint64_t generation = 0;
+    LiveClock clock = LiveClock::SinceConnect;
+    std::int64_t session = 0;  // the recording's (Recording, Recorded)
+    double origin_s = 0.0;     // the stream time of the clock's 0 (since connect: 0)
+};
+
+// A completed press on the lists' clock (LiveLists), the site it was taken
+// at (empty without a site grid), and whether it went into the recording.
 struct PressRecord {
     core::compliance::PressReading press;
     std::string site;
@@ -102,8 +130,9 @@ class LiveSession {
 public:
     // Takes the source and builds the processors of every mode its channels
     // can feed; starts in the source's declared mode, else the first mode
-    // its channels can feed, else panel scan (with no processor).
-    // Throws std::invalid_argument for a null source.
+    // its channels can feed (general at the latest). Throws
+    // std::invalid_argument for a null source or roles naming a channel the
+    // device does not have.
     LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions options);
     ~LiveSession();  // ends a recording as complete, then stops the device
 
@@ -115,11 +144,21 @@ public:
     AcquisitionStats stats() const { return m_acquisition->stats(); }
     // Every channel of the device, for the traces and the wizards.
     std::shared_ptr<const core::LiveBuffer> buffer() const { return m_buffer; }
+    // The device's channels with the roles they play, as a recording stores them.
+    const std::vector<core::ChannelDescriptor>& channels() const { return m_channels; }
+    // Gives the channels roles (replacing those given before; the device's
+    // own stay where not overridden) and rebuilds the processors; the mode
+    // stays when it can still run, else the default. Refused while
+    // recording or for a channel the device lacks: the reason.
+    std::optional<std::string> setRoles(core::RoleAssignment roles);
+    const core::RoleAssignment& roles() const { return m_options.roles; }
 
     // Mode. setMode() returns why it refuses: the mode's channels are
     // missing (one sentence naming them) or a recording is running.
     core::Mode mode() const { return m_mode; }
-    std::optional<core::Mode> declaredMode() const;
+    // The source's declared mode when its channels feed it, else the first
+    // mode they feed (general at the latest).
+    core::Mode declaredMode() const;
     std::optional<std::string> refusalOf(core::Mode mode) const;
     std::optional<std::string> setMode(core::Mode mode);
 
@@ -167,14 +206,20 @@ public:
     // A recording the disk stopped ends here; its summary is returned.
     std::optional<RecordingSummary> poll();
 
-    // The current panel's defects (since the recording began, or since the
-    // device connected), stream times; the presses likewise.
+    // The lists the views show, on the clock listClock() says: the panel's
+    // defects and the presses (see LiveLists).
+    const LiveLists& lists() const { return m_lists; }
     const std::vector<core::detector::DefectEvent>& panelDefects() const { return m_defects; }
     const std::vector<PressRecord>& presses() const { return m_presses; }
     // The panel's defects grouped into sites (core/detector/DefectSites.h),
     // which the automatic verdict counts.
     core::detector::SiteGrouping panelSites() const;
-    // The site the next presses are taken at (a phantom's grid cell).
+    // The phantom's grid of sites (none: presses have no site) and the cell
+    // the next press is taken at; a press stored moves it on.
+    void setSiteGrid(std::optional<core::compliance::SiteGrid> grid);
+    const std::optional<core::compliance::SiteGrid>& siteGrid() const { return m_siteGrid; }
+    void selectSite(core::compliance::SiteCell cell);
+    // Without a grid: the site every press is taken at (`record --site`).
     void setSite(std::string site) { m_site = std::move(site); }
 
     // Problems met building the processors (a bad calibration, a probe the
@@ -186,11 +231,14 @@ public:
     std::vector<LinkNotice> takeLinkNotices() { return std::exchange(m_linkNotices, {}); }
 
 private:
-    std::optional<std::string> build(core::Mode mode);
+    std::optional<std::string> build(core::Mode mode, bool inheritZero = true);
+    void buildAll();
+    void startLists(LiveClock clock);
+    double listTime_s(double streamTime_s) const;
     core::detector::DetectorParameters detectorParameters() const;
     std::optional<core::storage::StoredCalibration> newestCalibration(std::string_view kind, const std::string& sensor);
-    std::optional<std::string> buildPalpation();
-    std::optional<std::string> buildCapacitive();
+    std::optional<std::string> buildPalpation(bool inheritZero);
+    std::optional<std::string> buildCapacitive(bool inheritZero);
     void buildDetection();
     void takeDefects();
     void takePresses();
@@ -205,7 +253,8 @@ private:
     std::unique_ptr<Acquisition> m_acquisition;
     std::shared_ptr<core::LiveBuffer> m_buffer;
     std::shared_ptr<core::storage::RecordingTap> m_tap;
-    std::shared_ptr<core::SinkSlot> m_palpationSlot, m_capacitiveSlot;
+    std::vector<core::ChannelDescriptor> m_channels;  // the source's, with the roles given
+    std::shared_ptr<core::SinkSlot> m_detectionSlot, m_palpationSlot, m_capacitiveSlot;
     std::shared_ptr<core::detector::LiveDetection> m_detection;
     std::shared_ptr<core::compliance::LivePalpation> m_palpation;
     std::shared_ptr<core::capacitive::LiveCapacitive> m_capacitive;
@@ -215,6 +264,8 @@ private:
     core::storage::SessionMetadata m_metadata;  // of the recording
     std::vector<core::detector::DefectEvent> m_defects;
     std::vector<PressRecord> m_presses;
+    LiveLists m_lists;
+    std::optional<core::compliance::SiteGrid> m_siteGrid;
     std::string m_site;
     std::vector<std::string> m_problems;
     std::vector<LinkNotice> m_linkNotices;

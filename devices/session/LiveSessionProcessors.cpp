@@ -9,6 +9,7 @@
 #include "core/capacitive/LiveCapacitive.h"
 #include "core/compliance/LivePalpation.h"
 #include "core/detector/LiveDetection.h"
+#include "core/modes/ModeDefinition.h"
 #include "core/sensors/BuiltInProfiles.h"
 #include "core/storage/SessionStore.h"
 
@@ -56,17 +57,19 @@ std::optional<std::string> LiveSession::setStorePath(const std::string& path)
 {
     if (isRecording()) return "a recording keeps its session store to its end";
     m_options.storePath = path;
-    for (const core::Mode mode : {core::Mode::Palpation, core::Mode::Capacitive})
-        if (!refusalOf(mode))
+    for (const core::Mode mode : core::kModes)
+        if (!core::definitionOf(mode).profileKind.empty() && !refusalOf(mode))
             if (auto problem = build(mode)) m_problems.push_back(std::move(*problem));
     return std::nullopt;
 }
 
 // Builds `mode`'s processor; returns the problem when it cannot (a bad
 // profile, a bad calibration), in which case the mode runs without one.
-std::optional<std::string> LiveSession::build(core::Mode mode)
+// `inheritZero`: the new processor goes on from the old one's zero (the
+// same channels, another profile or calibration).
+std::optional<std::string> LiveSession::build(core::Mode mode, bool inheritZero)
 {
-    if (mode != core::Mode::PanelScan && !profile(mode)) {
+    if (!core::definitionOf(mode).profileKind.empty() && !profile(mode)) {
         auto builtIn = core::sensors::builtInProfile(mode);
         m_options.profiles.emplace(mode, std::move(*builtIn));
     }
@@ -75,16 +78,18 @@ std::optional<std::string> LiveSession::build(core::Mode mode)
         buildDetection();
         return std::nullopt;
     case core::Mode::Palpation:
-        return buildPalpation();
+        return buildPalpation(inheritZero);
     case core::Mode::Capacitive:
-        return buildCapacitive();
+        return buildCapacitive(inheritZero);
+    case core::Mode::General:
+        return std::nullopt;  // the channels are recorded as they come
     }
     return std::nullopt;
 }
 
 void LiveSession::buildDetection()
 {
-    const auto& channels = source().channels();
+    const auto& channels = m_channels;
     const double rate_hz = source().nominalSampleRate_hz();
     core::detector::LiveDetectionSettings settings;
     try {
@@ -92,6 +97,7 @@ void LiveSession::buildDetection()
         settings.spacing_m = m_options.panelSpacing_m;
         m_detection = std::make_shared<core::detector::LiveDetection>(
             *core::modeChannels(core::Mode::PanelScan, channels), rate_hz, settings, m_options.displaySeconds);
+        m_detectionSlot->set(m_detection);
     } catch (const std::invalid_argument& e) {
         m_problems.push_back(std::string("the surface-deflection detector cannot run on this stream: ") + e.what());
     }
@@ -111,7 +117,7 @@ std::optional<core::storage::StoredCalibration> LiveSession::newestCalibration(s
     }
 }
 
-std::optional<std::string> LiveSession::buildPalpation()
+std::optional<std::string> LiveSession::buildPalpation(bool inheritZero)
 {
     const auto& probe = std::get<core::sensors::CompliancePairProfile>(m_options.profiles.at(core::Mode::Palpation));
     const double rate_hz = source().nominalSampleRate_hz();
@@ -130,8 +136,10 @@ std::optional<std::string> LiveSession::buildPalpation()
     used.clear();
     for (const std::size_t i : usable) used.push_back(newest[i]);
     try {
-        m_palpation = std::make_shared<core::compliance::LivePalpation>(source().channels(), rate_hz, settings,
-                                                                        m_options.displaySeconds);
+        auto built =
+            std::make_shared<core::compliance::LivePalpation>(m_channels, rate_hz, settings, m_options.displaySeconds);
+        if (inheritZero && m_palpation) built->inheritZero(*m_palpation);
+        m_palpation = std::move(built);
     } catch (const std::invalid_argument& e) {
         m_palpation.reset();
         used.clear();
@@ -142,7 +150,7 @@ std::optional<std::string> LiveSession::buildPalpation()
     return std::nullopt;
 }
 
-std::optional<std::string> LiveSession::buildCapacitive()
+std::optional<std::string> LiveSession::buildCapacitive(bool inheritZero)
 {
     const auto& probe = std::get<core::sensors::CapacitiveBeamProfile>(m_options.profiles.at(core::Mode::Capacitive));
     std::optional<std::string> problem;
@@ -159,8 +167,10 @@ std::optional<std::string> LiveSession::buildCapacitive()
         const auto [sensitivity, drift] = core::capacitive::readoutSettings(probe, records, &usable, &refused);
         if (usable) used.push_back(newest[*usable]);
         if (!refused.empty()) problem = refused;
-        m_capacitive = std::make_shared<core::capacitive::LiveCapacitive>(
-            source().channels(), source().nominalSampleRate_hz(), sensitivity, drift, m_options.displaySeconds);
+        auto built = std::make_shared<core::capacitive::LiveCapacitive>(m_channels, source().nominalSampleRate_hz(),
+                                                                        sensitivity, drift, m_options.displaySeconds);
+        if (inheritZero && m_capacitive) built->inheritBaseline(*m_capacitive);
+        m_capacitive = std::move(built);
     } catch (const std::invalid_argument& e) {
         m_capacitive.reset();
         used.clear();

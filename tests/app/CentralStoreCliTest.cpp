@@ -129,6 +129,31 @@ bool refused(PgConnection& as, const std::string& statement, const std::vector<s
 
 }  // namespace
 
+// A maker's board recorded in the general mode, its channels given roles:
+// the server keeps the mode and the roles, and exports the same bytes.
+TEST_F(CentralStoreCli, AGeneralSessionAndItsChannelsRolesGoToTheServerAsTheyAre)
+{
+    const QString maker = m_dir.filePath("maker.tactiscope");
+    {
+        core::storage::SessionStore store(maker.toStdString());
+        core::storage::SessionMetadata metadata;
+        metadata.mode = core::Mode::General;
+        metadata.subject = "board-1";
+        const std::vector<core::ChannelDescriptor> channels{
+            {"a", "", core::ChannelKind::Other, core::ChannelRole::StiffBeam},
+            {"temp", "degC", core::ChannelKind::Other}};
+        const auto id = store.beginSession(metadata, channels, 100.0);
+        tactiscope::testing::writeSamples(store, id, 2, 900, 100.0, 3);
+        store.endSession(id, core::SessionStatus::Complete);
+    }
+    const CliResult sent = sync(maker, server("press_a"));
+    ASSERT_EQ(sent.exitCode, 0) << sent.err.toStdString();
+    EXPECT_EQ(connect().query("SELECT mode FROM sessions").text(0, 0), "general");
+    EXPECT_EQ(connect().query("SELECT string_agg(role, ',' ORDER BY position) FROM channels").text(0, 0),
+              "stiff-beam,");
+    expectSameExports(maker, server("quality"));
+}
+
 TEST_F(CentralStoreCli, TwoStationsListTogetherWithTheirNamesAndExportTheSameBytes)
 {
     const CliResult a = sync(m_stationA, server("press_a"));

@@ -1,6 +1,8 @@
 // Which modes a device's channels can feed: the channels each mode reads,
 // in its processor's order, and the sentence that names what is missing.
 #include "core/ModeCapability.h"
+#include "core/modes/ChannelRoles.h"
+#include "core/modes/ModeDefinition.h"
 
 #include <gtest/gtest.h>
 
@@ -34,24 +36,98 @@ TEST(ModeCapability, PalpationReadsTwoBeamsThenTheDisplacementWhateverTheOrder)
     EXPECT_FALSE(modeChannels(Mode::Palpation, std::vector{kHigh, kLow}));
 }
 
-TEST(ModeCapability, ARefusalNamesWhatTheModeNeedsAndWhatTheDeviceHas)
+TEST(ModeCapability, ARefusalNamesTheRolesMissingWhatTheDeviceHasAndHowToGiveRoles)
 {
     const auto refusal = modeRefusal(Mode::Palpation, std::vector{kStrainA, kStrainB});
     ASSERT_TRUE(refusal);
-    EXPECT_EQ(*refusal, "palpation needs two beam channels and a displacement (position) channel; this device has "
-                        "A (strain), B (strain).");
+    // The strains can be the beams; no channel can be the displacement.
+    EXPECT_EQ(*refusal, "palpation needs a stiff and a soft beam and a displacement: no channel plays displacement; "
+                        "this device has A (strain), B (strain). Give its channels roles (--roles "
+                        "A=stiff-beam,B=soft-beam,NAME=displacement, or the device panel's channel roles), or "
+                        "record in general mode.");
     const auto none = modeRefusal(Mode::Capacitive, std::vector<ChannelDescriptor>{});
     ASSERT_TRUE(none);
-    EXPECT_EQ(*none, "capacitive needs a capacitance channel; this device has none.");
+    EXPECT_EQ(*none, "capacitive needs a capacitance: no channel plays capacitance; this device has none. Give its "
+                     "channels roles (--roles NAME=capacitance, or the device panel's channel roles), or record in "
+                     "general mode.");
 }
 
-TEST(ModeCapability, TheRunnableModesOfEachProbe)
+TEST(ModeCapability, TheRunnableModesOfEachProbeEndWithGeneralWhichRunsOnAnyDevice)
 {
-    EXPECT_EQ(runnableModes(std::vector{kStrainA, kStrainB}), std::vector{Mode::PanelScan});
-    EXPECT_EQ(runnableModes(std::vector{kHigh, kLow, kDisplacement}), std::vector{Mode::Palpation});
-    EXPECT_EQ(runnableModes(std::vector{kCapacitance}), std::vector{Mode::Capacitive});
+    EXPECT_EQ(runnableModes(std::vector{kStrainA, kStrainB}), (std::vector{Mode::PanelScan, Mode::General}));
+    EXPECT_EQ(runnableModes(std::vector{kHigh, kLow, kDisplacement}), (std::vector{Mode::Palpation, Mode::General}));
+    EXPECT_EQ(runnableModes(std::vector{kCapacitance}), (std::vector{Mode::Capacitive, Mode::General}));
     // Two strain gauges and a displacement gauge could be either probe.
     EXPECT_EQ(runnableModes(std::vector{kStrainA, kStrainB, kDisplacement}),
-              (std::vector{Mode::PanelScan, Mode::Palpation}));
-    EXPECT_TRUE(runnableModes(std::vector{kDisplacement}).empty());
+              (std::vector{Mode::PanelScan, Mode::Palpation, Mode::General}));
+    EXPECT_EQ(runnableModes(std::vector{kDisplacement}), std::vector{Mode::General});
+    EXPECT_EQ(runnableModes(std::vector<ChannelDescriptor>{}), std::vector{Mode::General});
+    EXPECT_EQ(modeChannels(Mode::General, std::vector{kHigh}), std::vector<std::size_t>{});
+}
+
+TEST(ModeCapability, ChannelsGivenRolesFeedAModeWhateverTheirKind)
+{
+    // An Arduino's two unlabelled columns: no kind, so no mode but general…
+    const std::vector<ChannelDescriptor> board{{"a", "", ChannelKind::Other}, {"b", "", ChannelKind::Other}};
+    EXPECT_FALSE(modeChannels(Mode::PanelScan, board));
+    const auto refusal = modeRefusal(Mode::PanelScan, board);
+    ASSERT_TRUE(refusal);
+    EXPECT_NE(refusal->find("no channel plays cantilever-a, cantilever-b"), std::string::npos) << *refusal;
+    EXPECT_NE(refusal->find("--roles a=cantilever-a,b=cantilever-b"), std::string::npos) << *refusal;
+    // …until they are given roles: B first on the wire, A second.
+    const auto given = applyRoles(board, parseRoleAssignment("b=cantilever-a, a=cantilever-b"));
+    EXPECT_EQ(modeChannels(Mode::PanelScan, given), (std::vector<std::size_t>{1, 0}));
+    // One role given, the other still missing: named alone.
+    const auto half = applyRoles(board, parseRoleAssignment("a=cantilever-a"));
+    EXPECT_NE(modeRefusal(Mode::PanelScan, half)->find("no channel plays cantilever-b;"), std::string::npos);
+}
+
+TEST(ModeCapability, AGivenRoleWinsOverTheKindsAndAChannelWithARoleIsNotTakenForAnother)
+{
+    // Three strain channels; the user says the third is A.
+    const ChannelDescriptor kStrainC{"C", "", ChannelKind::Strain};
+    auto channels = applyRoles(std::vector{kStrainA, kStrainB, kStrainC}, {{"C", ChannelRole::CantileverA}});
+    // A is C; B is the first strain channel without a role.
+    EXPECT_EQ(modeChannels(Mode::PanelScan, channels), (std::vector<std::size_t>{2, 0}));
+    // A channel the device declared capacitance and the user made the soft
+    // beam is no longer a capacitance.
+    channels = applyRoles(std::vector{kHigh, kCapacitance, kDisplacement}, {{"C", ChannelRole::SoftBeam}});
+    EXPECT_EQ(modeChannels(Mode::Palpation, channels), (std::vector<std::size_t>{0, 1, 2}));
+    EXPECT_FALSE(modeChannels(Mode::Capacitive, channels));
+}
+
+TEST(ChannelRoles, ARoleListIsParsedAndWrittenBackAndBadOnesAreNamed)
+{
+    const auto roles = parseRoleAssignment(" a = cantilever-a ,b=cantilever-b,");
+    EXPECT_EQ(roles, (RoleAssignment{{"a", ChannelRole::CantileverA}, {"b", ChannelRole::CantileverB}}));
+    EXPECT_EQ(roleAssignmentText(roles), "a=cantilever-a,b=cantilever-b");
+    EXPECT_TRUE(parseRoleAssignment("").empty());
+    const auto message = [](const char* text) {
+        try {
+            parseRoleAssignment(text);
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_EQ(message("a"), "'a' is not NAME=ROLE (e.g. a=cantilever-a)");
+    EXPECT_EQ(message("=stiff-beam"), "'=stiff-beam' names no channel");
+    EXPECT_EQ(message("a=cantilever-c"), "'cantilever-c' is not a channel role; the roles are cantilever-a, "
+                                         "cantilever-b, stiff-beam, soft-beam, displacement or capacitance");
+    EXPECT_EQ(message("a=stiff-beam,a=soft-beam"), "channel 'a' is given two roles");
+    EXPECT_EQ(message("a=stiff-beam,b=stiff-beam"), "the role stiff-beam is given to both 'a' and 'b'");
+}
+
+TEST(ChannelRoles, ARoleForAChannelTheDeviceLacksIsRefusedAndAGivenRoleMovesOffAnother)
+{
+    ChannelDescriptor declaredA = kStrainA;
+    declaredA.role = ChannelRole::CantileverA;
+    EXPECT_THROW(applyRoles(std::vector{declaredA, kStrainB}, {{"Z", ChannelRole::CantileverA}}),
+                 std::invalid_argument);
+    // B is made A: the device's A loses the role, so no role is played twice.
+    const auto moved = applyRoles(std::vector{declaredA, kStrainB}, {{"B", ChannelRole::CantileverA}});
+    EXPECT_FALSE(moved[0].role);
+    EXPECT_EQ(moved[1].role, ChannelRole::CantileverA);
+    for (const auto& definition : modeDefinitions())
+        for (const ChannelRole role : definition.roles) EXPECT_EQ(channelRoleFromString(toString(role)), role);
 }

@@ -100,7 +100,8 @@ TEST(Vocabulary, EachWordReadsBackAsItsValueAndNothingElseParses)
     EXPECT_EQ(toString(Mode::PanelScan), "panel-scan");
     EXPECT_EQ(toString(Verdict::DefectsFound), "defects found");
     EXPECT_EQ(verdictText(std::nullopt), "");
-    EXPECT_EQ(modeChoices(), "panel-scan, palpation or capacitive");
+    EXPECT_EQ(toString(Mode::General), "general");
+    EXPECT_EQ(modeChoices(), "panel-scan, palpation, capacitive or general");
 }
 
 TEST(Vocabulary, APanelPassesOnlyWithoutDefects)

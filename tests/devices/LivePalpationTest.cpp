@@ -229,3 +229,48 @@ TEST(LivePalpation, RefusesAProbeWithoutADisplacementChannel)
     const auto settings = settingsOf(devices::simulator::PalpationScenario());
     EXPECT_THROW(LivePalpation(channels, kRate_hz, settings, 10.0), std::invalid_argument);
 }
+
+// Another profile chosen while the probe presses rebuilds the processor:
+// it goes on from the zero taken lifted and reads every later press as
+// the first processor does; one that took its own first zero there would
+// have zeroed the load (the fault this rule removes).
+TEST(LivePalpation, AProcessorRebuiltWhilePressingKeepsTheZeroTakenLifted)
+{
+    const Recording r = palpate(18.0);
+    const auto expected = wholeRecordReadings(r);
+    ASSERT_GE(expected.size(), 3u);
+    const auto middle = static_cast<std::size_t>((expected[1].start_s + expected[1].end_s) / 2.0 * kRate_hz);
+
+    LivePalpation first(r.scenario.channels(), kRate_hz, settingsOf(r.scenario), 20.0);
+    feed(first, r.samples, 0, middle, 0);
+    ASSERT_TRUE(first.state().pressing);
+    const auto before = first.takeReadings();
+    ASSERT_EQ(before.size(), 1u);
+
+    LivePalpation rebuilt(r.scenario.channels(), kRate_hz, settingsOf(r.scenario), 20.0);
+    rebuilt.inheritZero(first);
+    EXPECT_FALSE(rebuilt.state().taring);
+    ASSERT_TRUE(rebuilt.currentZero());
+    EXPECT_EQ(rebuilt.currentZero()->firstIndex, first.currentZero()->firstIndex);
+    EXPECT_TRUE(rebuilt.takeZeroChanges().empty());  // no new zero to record
+    feed(rebuilt, r.samples, middle, r.samples.sampleCount(), middle);
+    const auto after = rebuilt.takeReadings();
+    // The press cut by the rebuild is read from the rebuild on; the ones
+    // after it exactly as the whole record reads them.
+    ASSERT_EQ(after.size(), expected.size() - 1);
+    for (std::size_t i = 1; i < after.size(); ++i) {
+        EXPECT_DOUBLE_EQ(after[i].start_s, expected[i + 1].start_s) << i;
+        EXPECT_NEAR(after[i].stiffness.objectStiffness_n_per_m, expected[i + 1].stiffness.objectStiffness_n_per_m,
+                    1e-9 * kTruth_n_per_m)
+            << i;
+    }
+
+    // Without the rule: a fresh processor's first zero is the pressed beams,
+    // far from the lifted zero; the forces at rest then read below zero and
+    // the later presses are not even all seen.
+    LivePalpation fresh(r.scenario.channels(), kRate_hz, settingsOf(r.scenario), 20.0);
+    feed(fresh, r.samples, middle, r.samples.sampleCount(), middle);
+    // (here 1708 counts against the lifted 120: the stiff beam's load)
+    EXPECT_GT(fresh.currentZero()->zero.high - first.currentZero()->zero.high, 1000.0);
+    EXPECT_LT(fresh.takeReadings().size(), after.size());
+}

@@ -1,7 +1,7 @@
 // A station's store written through the store API with everything a
 // session can hold, for tests that copy sessions between stores: a panel
-// scan with a gap, live and saved events, an annotation and a verdict
-// trail; a palpation session with readings, a zero and a calibration it
+// scan with a gap, live and saved events, an annotation, a verdict trail
+// and its channels' roles; a palpation session with readings, a zero and a calibration it
 // used; and an interrupted capacitive session. Sample values are irrational-looking binary32s (see valueAt).
 #pragma once
 
@@ -55,7 +55,8 @@ inline int writeStationStore(const std::string& path, const StationStoreOptions&
     using namespace core::storage;
     SessionStore store(path);
 
-    const std::vector<ChannelDescriptor> panelChannels{{"a", "", ChannelKind::Strain}, {"b", "", ChannelKind::Strain}};
+    const std::vector<ChannelDescriptor> panelChannels{{"a", "", ChannelKind::Strain, ChannelRole::CantileverA},
+                                                       {"b", "", ChannelKind::Strain, ChannelRole::CantileverB}};
     SessionMetadata panel;
     panel.mode = Mode::PanelScan;
     panel.subject = o.subjectPrefix + "-17";

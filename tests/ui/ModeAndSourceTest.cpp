@@ -75,9 +75,9 @@ TEST(ModeAndSource, AModeTheDeviceCannotFeedIsRefusedAndNothingIsRecordedInIt)
     ASSERT_NE(box, nullptr);
     EXPECT_TRUE(box->isVisible());
     EXPECT_FALSE(box->isModal());  // the live view goes on behind it
-    EXPECT_TRUE(box->informativeText().contains(QStringLiteral("two strain channels")))
+    EXPECT_TRUE(box->informativeText().contains(QStringLiteral("no channel plays cantilever-a, cantilever-b")))
         << box->informativeText().toStdString();
-    EXPECT_TRUE(box->informativeText().contains(QStringLiteral("displacement (position)")))
+    EXPECT_TRUE(box->informativeText().contains(QStringLiteral("Channel roles")))
         << box->informativeText().toStdString();
     tactiscope::testing::saveScreenshot(*box, QStringLiteral("mode-refused"));
 

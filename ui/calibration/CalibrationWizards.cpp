@@ -12,6 +12,7 @@ QWizard* openCalibrationWizard(core::Mode mode, CalibrationContext context, QWid
     CalibrationWizard* wizard = nullptr;
     switch (mode) {
     case core::Mode::PanelScan:
+    case core::Mode::General:
         return nullptr;
     case core::Mode::Palpation:
         wizard = new GaugeFactorWizard(std::move(context), parent);

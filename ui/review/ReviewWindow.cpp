@@ -223,6 +223,8 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionSour
     case core::Mode::Capacitive:
         bottom->addWidget(capacitiveBasisBox());
         break;
+    case core::Mode::General:
+        break;  // the channels as they came: the list of events and notes is the account
     }
     // A palpation's presses, sites and scale need the room; a panel's list of crossings does.
     const bool accountFirst = meta.mode == core::Mode::Palpation;

@@ -43,6 +43,10 @@ CREATE TABLE IF NOT EXISTS sessions (
 );
 -- Schema 2: the session's id in its station's store.
 ALTER TABLE sessions ADD COLUMN IF NOT EXISTS station_id BIGINT NOT NULL DEFAULT 0;
+-- Schema 3: the general mode, and the role each channel played.
+ALTER TABLE sessions DROP CONSTRAINT IF EXISTS sessions_mode_check;
+ALTER TABLE sessions ADD CONSTRAINT sessions_mode_check
+    CHECK (mode IN ('panel-scan', 'palpation', 'capacitive', 'general'));
 CREATE INDEX IF NOT EXISTS sessions_started ON sessions (started_utc);
 CREATE INDEX IF NOT EXISTS sessions_by_station ON sessions (station, started_utc);
 
@@ -55,6 +59,7 @@ CREATE TABLE IF NOT EXISTS channels (
     sample_rate_hz DOUBLE PRECISION NOT NULL CHECK (sample_rate_hz > 0),
     PRIMARY KEY (session_id, position)
 );
+ALTER TABLE channels ADD COLUMN IF NOT EXISTS role TEXT NOT NULL DEFAULT '';
 
 CREATE TABLE IF NOT EXISTS chunks (
     session_id   BIGINT NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,

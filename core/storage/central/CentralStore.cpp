@@ -126,6 +126,10 @@ CentralStore::CentralStore(const std::string& conninfo, Database::Access access)
     if (version.isNull(0, 0) || version.int64(0, 0) > kCentralSchemaVersion)
         throw StorageError(m_connection.location() + " holds a central store of a newer Tactiscope (schema " +
                            version.text(0, 0) + "); update this program");
+    if (version.int64(0, 0) < kCentralSchemaVersion)
+        throw StorageError(m_connection.location() + " holds a central store of an older Tactiscope (schema " +
+                           version.text(0, 0) + ", this program writes " + std::to_string(kCentralSchemaVersion) +
+                           "); its owner updates it with `tactiscope-cli server init`");
     if (access == Database::Access::ReadOnly) m_connection.run("SET default_transaction_read_only = on");
 }
 
@@ -177,12 +181,12 @@ std::optional<std::int64_t> CentralStore::sessionWithUuid(const std::string& uui
 std::vector<StoredChannel> CentralStore::channels(std::int64_t session)
 {
     const PgResult r = m_connection.query(
-        "SELECT name, unit, kind, sample_rate_hz FROM channels WHERE session_id = $1 ORDER BY position",
+        "SELECT name, unit, kind, sample_rate_hz, role FROM channels WHERE session_id = $1 ORDER BY position",
         PgParams().int64(session), PgFormat::Binary);
     std::vector<StoredChannel> result;
     for (int i = 0; i < r.rows(); ++i) {
         const auto kind = channelKindFromString(r.text(i, 2)).value_or(ChannelKind::Other);
-        result.push_back({{r.text(i, 0), r.text(i, 1), kind}, r.real(i, 3)});
+        result.push_back({{r.text(i, 0), r.text(i, 1), kind, channelRoleFromString(r.text(i, 4))}, r.real(i, 3)});
     }
     return result;
 }

@@ -174,15 +174,16 @@ private:
     {
         int position = 0;
         for (const StoredChannel& c : m_local.channels(local))
-            m_db.query("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz) "
-                       "VALUES ($1, $2, $3, $4, $5, $6)",
+            m_db.query("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz, role) "
+                       "VALUES ($1, $2, $3, $4, $5, $6, $7)",
                        PgParams()
                            .int64(id)
                            .int64(position++)
                            .text(c.descriptor.name)
                            .text(c.descriptor.unit)
                            .text(std::string(toString(c.descriptor.kind)))
-                           .real(c.sampleRate_hz));
+                           .real(c.sampleRate_hz)
+                           .text(std::string(roleWord(c.descriptor.role))));
         for (const SampleGap& g : m_local.gaps(local))
             m_db.query("INSERT INTO gaps (session_id, first_index, count) VALUES ($1, $2, $3)",
                        PgParams()

@@ -1,0 +1,261 @@
+// What the live views show is the live session's lists, on one clock, and
+// they agree with the record: each of the faults an operator met is
+// reproduced on the simulator (sped up) and checked against the store —
+// the defect list after a stop, the press times while recording, the grid
+// map's site at the record press, a profile chosen while pressing; and a
+// device that declares nothing records in the general mode, or, given
+// roles, as a panel scan.
+#include "core/ModeCapability.h"
+#include "core/compliance/LivePalpation.h"
+#include "core/sensors/BuiltInProfiles.h"
+#include "core/storage/SessionStore.h"
+#include "devices/session/LiveSession.h"
+#include "devices/simulator/PalpationScenario.h"
+#include "devices/simulator/ScenarioCatalog.h"
+#include "devices/simulator/SimulatorSource.h"
+
+#include "support/TempDirectory.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <functional>
+#include <thread>
+
+using namespace tactiscope;
+using devices::session::LiveClock;
+using devices::session::LiveSession;
+
+namespace {
+
+using LiveListsTest = tactiscope::testing::TempDirectoryTest;
+
+// Simulated seconds per wall-clock second: a minute of scanning in six.
+constexpr double kSpeed = 10.0;
+
+std::unique_ptr<devices::BlockSource> simulator(const char* scenario)
+{
+    devices::simulator::SimulatorOptions options;
+    options.speed = kSpeed;
+    return std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario(scenario), options);
+}
+
+// A maker's board: the panel probe's two columns, named a and b, with no
+// kinds and no mode (as the text protocol announces them).
+class UndeclaredSource final : public devices::BlockSource {
+public:
+    UndeclaredSource()
+        : m_inner(simulator("panel-scan")),
+          m_channels{{"a", "", core::ChannelKind::Other}, {"b", "", core::ChannelKind::Other}}
+    {
+    }
+    std::string name() const override { return "maker board"; }
+    const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
+    double nominalSampleRate_hz() const override { return m_inner->nominalSampleRate_hz(); }
+    devices::ReadStatus readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout) override
+    {
+        return m_inner->readBlock(out, timeout);
+    }
+
+private:
+    std::unique_ptr<devices::BlockSource> m_inner;
+    std::vector<core::ChannelDescriptor> m_channels;
+};
+
+// Polls the session until `done` or 20 wall-clock seconds.
+bool pollUntil(LiveSession& session, const std::function<bool()>& done)
+{
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (std::chrono::steady_clock::now() < deadline) {
+        session.poll();
+        if (done()) return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return false;
+}
+
+devices::session::LiveSessionOptions optionsFor(const std::string& store)
+{
+    devices::session::LiveSessionOptions options;
+    options.storePath = store;
+    return options;
+}
+
+std::size_t storedCount(const std::vector<devices::session::PressRecord>& presses)
+{
+    std::size_t n = 0;
+    for (const auto& press : presses) n += press.stored ? 1 : 0;
+    return n;
+}
+
+}  // namespace
+
+TEST_F(LiveListsTest, AfterTheStopTheDefectListIsExactlyWhatWasStoredThenANewListStarts)
+{
+    LiveSession session(simulator("panel-scan"), optionsFor(file("s.tactiscope")));
+    session.start();
+    // Defects before the record press: since connect, not recorded.
+    ASSERT_TRUE(pollUntil(session, [&] { return session.panelDefects().size() >= 2; }));
+    EXPECT_EQ(session.lists().clock, LiveClock::SinceConnect);
+    const auto unrecorded = session.lists().generation;
+
+    ASSERT_FALSE(session.startRecording({}));
+    EXPECT_NE(session.lists().generation, unrecorded);
+    EXPECT_TRUE(session.panelDefects().empty());  // the panel starts empty
+    ASSERT_TRUE(pollUntil(session, [&] { return session.panelDefects().size() >= 3; }));
+    EXPECT_EQ(session.lists().clock, LiveClock::Recording);
+    const auto summary = session.stopRecording();
+    ASSERT_TRUE(summary);
+
+    // The list holds the recording's defects, on its clock, as stored.
+    EXPECT_EQ(session.lists().clock, LiveClock::Recorded);
+    EXPECT_EQ(session.lists().session, summary->session);
+    core::storage::SessionStore store(file("s.tactiscope"), core::storage::Database::Access::ReadOnly);
+    auto stored = store.events(summary->session);
+    std::erase_if(stored, [](const auto& e) { return e.kind != core::EventKind::Defect; });
+    const auto shown = session.panelDefects();
+    ASSERT_EQ(shown.size(), stored.size());
+    EXPECT_EQ(shown.size(), summary->defects);
+    for (std::size_t i = 0; i < shown.size(); ++i) {
+        EXPECT_DOUBLE_EQ(shown[i].start_s, stored[i].start_s) << i;
+        EXPECT_DOUBLE_EQ(shown[i].end_s, stored[i].end_s) << i;
+        EXPECT_LE(shown[i].end_s, summary->end_s) << i;
+    }
+
+    // The next defect starts a list of its own, since connect: nothing of
+    // the recorded panel is counted with it, and its times are the stream's.
+    const auto recorded = session.lists().generation;
+    const double recordingOrigin_s = session.lists().origin_s;
+    EXPECT_GT(recordingOrigin_s, 1.0);
+    ASSERT_TRUE(pollUntil(session, [&] { return session.lists().generation != recorded; }));
+    EXPECT_EQ(session.lists().clock, LiveClock::SinceConnect);
+    EXPECT_EQ(session.lists().origin_s, 0.0);
+    ASSERT_FALSE(session.panelDefects().empty());
+    for (const auto& e : session.panelDefects()) EXPECT_GT(e.end_s, recordingOrigin_s + summary->end_s - 0.5);
+}
+
+TEST_F(LiveListsTest, WhileRecordingPressTimesAreTheRecordingsAsStored)
+{
+    LiveSession session(simulator("palpation"), optionsFor(file("p.tactiscope")));
+    ASSERT_EQ(session.mode(), core::Mode::Palpation);
+    session.start();
+    // Some presses first, so the stream's clock is well ahead of the recording's.
+    ASSERT_TRUE(pollUntil(session, [&] { return session.presses().size() >= 2; }));
+    const double streamBefore_s = session.presses().back().press.end_s;
+    ASSERT_FALSE(session.startRecording({}));
+    ASSERT_TRUE(pollUntil(session, [&] { return storedCount(session.presses()) >= 2; }));
+    const auto summary = session.stopRecording();
+    ASSERT_TRUE(summary);
+
+    core::storage::SessionStore store(file("p.tactiscope"), core::storage::Database::Access::ReadOnly);
+    const auto readings = store.readings(summary->session);
+    std::vector<devices::session::PressRecord> shown;
+    for (const auto& press : session.presses())
+        if (press.stored) shown.push_back(press);
+    ASSERT_EQ(shown.size(), readings.size());
+    for (std::size_t i = 0; i < shown.size(); ++i) {
+        EXPECT_DOUBLE_EQ(shown[i].press.start_s, readings[i].start_s) << i;
+        EXPECT_DOUBLE_EQ(shown[i].press.end_s, readings[i].end_s) << i;
+        EXPECT_LT(shown[i].press.start_s, summary->end_s) << i;
+    }
+    // On the stream's clock they would all come after the presses before.
+    EXPECT_LT(shown.front().press.start_s, streamBefore_s);
+}
+
+TEST_F(LiveListsTest, TheFirstRecordedPressIsTakenAtTheSiteSelectedBeforeRecordAndOnlyStoredPressesMoveOn)
+{
+    LiveSession session(simulator("palpation"), optionsFor(file("g.tactiscope")));
+    session.setSiteGrid(core::compliance::SiteGrid(3, 4));
+    session.selectSite({0, 0});
+    session.start();
+    // Presses while not recording read at A1, and leave the selection there.
+    ASSERT_TRUE(pollUntil(session, [&] { return session.presses().size() >= 2; }));
+    EXPECT_EQ(session.siteGrid()->currentName(), "A1");
+    for (const auto& press : session.presses()) EXPECT_FALSE(press.stored);
+
+    ASSERT_FALSE(session.startRecording({}));
+    EXPECT_TRUE(session.presses().empty());
+    ASSERT_TRUE(pollUntil(session, [&] { return storedCount(session.presses()) >= 2; }));
+    const auto summary = session.stopRecording();
+    core::storage::SessionStore store(file("g.tactiscope"), core::storage::Database::Access::ReadOnly);
+    const auto readings = store.readings(summary->session);
+    ASSERT_GE(readings.size(), 2u);
+    EXPECT_EQ(readings[0].site, "A1");
+    EXPECT_EQ(readings[1].site, "A2");
+    EXPECT_EQ(session.siteGrid()->currentName(), core::compliance::SiteGrid::name({0, int(readings.size()) % 4}));
+}
+
+TEST_F(LiveListsTest, AProfileChosenWhilePressingTakesNoZeroUnderLoad)
+{
+    LiveSession session(simulator("palpation"), optionsFor(file("z.tactiscope")));
+    session.start();
+    ASSERT_TRUE(pollUntil(session, [&] { return !session.presses().empty(); }));
+    // The deepest presses load the beams most: wait for one in progress.
+    ASSERT_TRUE(pollUntil(session, [&] { return session.palpation()->state().pressing; }));
+    const auto zero = session.palpation()->currentZero();
+    ASSERT_TRUE(zero);
+    const auto previous = session.palpation();
+    ASSERT_FALSE(session.setProfile(core::Mode::Palpation, *core::sensors::builtInProfile(core::Mode::Palpation)));
+    ASSERT_NE(session.palpation(), previous);  // rebuilt
+    ASSERT_TRUE(session.palpation()->currentZero());
+    EXPECT_EQ(session.palpation()->currentZero()->firstIndex, zero->firstIndex);
+    EXPECT_FALSE(session.palpation()->state().taring);
+
+    // The next presses read the specimen, not the load it was pressed with.
+    const std::size_t before = session.presses().size();
+    ASSERT_TRUE(pollUntil(session, [&] { return session.presses().size() >= before + 3; }));
+    const double truth = devices::simulator::PalpationParameters{}.objectStiffness_n_per_m;
+    for (std::size_t i = before + 1; i < session.presses().size(); ++i) {
+        const auto& press = session.presses()[i].press;
+        EXPECT_EQ(press.stiffness.range, core::sensors::ComplianceRange::InRange) << i;
+        EXPECT_NEAR(press.stiffness.objectStiffness_n_per_m, truth, 0.05 * truth) << i;
+    }
+}
+
+TEST_F(LiveListsTest, ADeviceThatDeclaresNothingRecordsInGeneralModeAndGivenRolesAsAPanelScan)
+{
+    {
+        LiveSession general(std::make_unique<UndeclaredSource>(), optionsFor(file("m.tactiscope")));
+        EXPECT_EQ(general.mode(), core::Mode::General);
+        const auto refusal = general.refusalOf(core::Mode::PanelScan);
+        ASSERT_TRUE(refusal);
+        EXPECT_NE(refusal->find("--roles a=cantilever-a,b=cantilever-b"), std::string::npos) << *refusal;
+        EXPECT_EQ(general.tare().value_or(""),
+                  "general recording has no zero to take: it stores the channels as they come");
+        ASSERT_FALSE(general.startRecording({}));
+        general.start();
+        ASSERT_TRUE(pollUntil(general, [&] { return general.sessionTime_s() > 3.0; }));
+        const auto summary = general.stopRecording();
+        ASSERT_TRUE(summary);
+        EXPECT_FALSE(summary->verdict);
+        core::storage::SessionStore store(file("m.tactiscope"), core::storage::Database::Access::ReadOnly);
+        const auto session = store.session(summary->session);
+        EXPECT_EQ(session->metadata.mode, core::Mode::General);
+        EXPECT_GT(session->sampleCount, 1000u);
+        const auto channels = store.channels(summary->session);
+        ASSERT_EQ(channels.size(), 2u);
+        EXPECT_EQ(channels[0].descriptor.name, "a");
+        EXPECT_FALSE(channels[0].descriptor.role);
+    }
+    auto options = optionsFor(file("m.tactiscope"));
+    options.roles = core::parseRoleAssignment("a=cantilever-a,b=cantilever-b");
+    LiveSession scan(std::make_unique<UndeclaredSource>(), options);
+    EXPECT_EQ(scan.mode(), core::Mode::PanelScan);
+    ASSERT_TRUE(scan.detection());
+    ASSERT_FALSE(scan.startRecording({}));
+    scan.start();
+    ASSERT_TRUE(pollUntil(scan, [&] { return scan.panelDefects().size() >= 2; }));
+    const auto summary = scan.stopRecording();
+    ASSERT_TRUE(summary);
+    EXPECT_EQ(summary->verdict, core::Verdict::DefectsFound);
+    core::storage::SessionStore store(file("m.tactiscope"), core::storage::Database::Access::ReadOnly);
+    EXPECT_EQ(store.session(summary->session)->metadata.mode, core::Mode::PanelScan);
+    const auto channels = store.channels(summary->session);
+    EXPECT_EQ(channels[0].descriptor.role, core::ChannelRole::CantileverA);
+    EXPECT_EQ(channels[1].descriptor.role, core::ChannelRole::CantileverB);
+    // The roles cannot change under a recording, and name only real channels.
+    EXPECT_FALSE(scan.setRoles({}));  // not recording: taken
+    EXPECT_EQ(scan.mode(), core::Mode::General);
+    EXPECT_TRUE(scan.setRoles({{"z", core::ChannelRole::CantileverA}}).has_value());
+}
