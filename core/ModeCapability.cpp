@@ -73,8 +73,8 @@ std::optional<std::string> modeRefusal(Mode mode, std::span<const ChannelDescrip
 std::vector<Mode> runnableModes(std::span<const ChannelDescriptor> channels)
 {
     std::vector<Mode> modes;
-    for (const Mode mode : kModes)
-        if (modeChannels(mode, channels)) modes.push_back(mode);
+    for (const auto& definition : modeDefinitions())
+        if (modeChannels(definition.mode, channels)) modes.push_back(definition.mode);
     return modes;
 }
 

@@ -29,8 +29,8 @@ std::optional<std::vector<std::size_t>> modeChannels(Mode mode, std::span<const 
 // roles missing, the channels the device has, and how to give roles.
 std::optional<std::string> modeRefusal(Mode mode, std::span<const ChannelDescriptor> channels);
 
-// The modes that can run on `channels`, in kModes order (general last: it
-// runs on any device).
+// The modes that can run on `channels`, in the registry's order (general
+// is the last built-in one: it runs on any device).
 std::vector<Mode> runnableModes(std::span<const ChannelDescriptor> channels);
 
 }  // namespace tactiscope::core

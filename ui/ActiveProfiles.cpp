@@ -1,6 +1,7 @@
 // ActiveProfiles: settings key, built-in fallback and the kind check.
 #include "ui/ActiveProfiles.h"
 
+#include "core/modes/ModeDefinition.h"
 #include "core/sensors/BuiltInProfiles.h"
 #include "ui/VocabularyText.h"
 
@@ -31,8 +32,8 @@ const QStringList& profileModes()
 {
     static const QStringList modes = [] {
         QStringList names;
-        for (const core::Mode mode : core::kModes)
-            if (!core::sensors::builtInProfileJson(mode).empty()) names << wordText(mode);
+        for (const auto& definition : core::modeDefinitions())
+            if (!core::sensors::builtInProfileJson(definition.mode).empty()) names << wordText(definition.mode);
         return names;
     }();
     return modes;

@@ -1,6 +1,7 @@
 // ModeViews: binding each mode's view to the live session's processor.
 #include "ui/ModeViews.h"
 
+#include "core/modes/ModeDefinition.h"
 #include "devices/session/LiveSession.h"
 #include "ui/CapacitiveView.h"
 #include "ui/PalpationView.h"
@@ -52,7 +53,7 @@ void ModeViews::bind(const devices::session::LiveSession* session, core::Mode mo
 
 void ModeViews::bindAll(const devices::session::LiveSession* session)
 {
-    for (const core::Mode mode : core::kModes) bind(session, mode);
+    for (const auto& definition : core::modeDefinitions()) bind(session, definition.mode);
 }
 
 std::optional<core::Mode> ModeViews::show(const devices::session::LiveSession* session, core::Mode mode)

@@ -137,6 +137,7 @@ void CompliancePairForm::setProfile(const SensorProfile& profile)
 {
     const auto& pair = std::get<core::sensors::CompliancePairProfile>(profile);
     nameEdit()->setText(QString::fromStdString(pair.name));
+    m_roles = pair.roles;
     for (const auto& [fields, geometry] : {std::pair{&m_high, &pair.high}, std::pair{&m_low, &pair.low}}) {
         fields->length->setValue(geometry->length_m);
         fields->width->setValue(geometry->width_m);
@@ -149,6 +150,7 @@ FormResult CompliancePairForm::fields() const
 {
     core::sensors::CompliancePairProfile pair;
     pair.name = nameEdit()->text().trimmed().toStdString();
+    pair.roles = m_roles;
     QString problem;
     for (const auto& [fields, geometry, beam] :
          {std::tuple{&m_high, &pair.high, tr("Stiff beam")}, std::tuple{&m_low, &pair.low, tr("Soft beam")}}) {
@@ -232,6 +234,7 @@ void CapacitiveBeamForm::setProfile(const SensorProfile& profile)
     const auto& capacitive = std::get<core::sensors::CapacitiveBeamProfile>(profile);
     const auto& g = capacitive.geometry;
     nameEdit()->setText(QString::fromStdString(capacitive.name));
+    m_roles = capacitive.roles;
     m_length->setValue(g.beam.length_m);
     m_rootWidth->setValue(g.beam.rootWidth_m);
     m_thickness->setValue(g.beam.thickness_m);
@@ -308,6 +311,7 @@ FormResult CapacitiveBeamForm::fields() const
 {
     core::sensors::CapacitiveBeamProfile capacitive;
     capacitive.name = nameEdit()->text().trimmed().toStdString();
+    capacitive.roles = m_roles;
     auto& g = capacitive.geometry;
     QString problem;
     if (!take(m_length, tr("Beam length"), g.beam.length_m, problem) ||

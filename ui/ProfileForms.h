@@ -49,6 +49,10 @@ protected:
     QLineEdit* createNameEdit();
     QuantityEdit* createField(const DisplayUnit& unit, double minimum_si, double maximum_si, const QString& objectName);
 
+    // The channel roles the profile gave, kept as read: the form edits the
+    // probe's mechanics, the device panel its wiring.
+    core::RoleAssignment m_roles;
+
 private:
     QLineEdit* m_name = nullptr;
 };

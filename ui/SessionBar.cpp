@@ -1,6 +1,7 @@
 // SessionBar: layout, the record button's two faces, elapsed time.
 #include "ui/SessionBar.h"
 
+#include "core/modes/ModeDefinition.h"
 #include "ui/VocabularyText.h"
 
 #include <QComboBox>
@@ -40,7 +41,8 @@ SessionBar::SessionBar(QWidget* parent)
     m_elapsed->setObjectName(QStringLiteral("elapsedLabel"));
     m_store->setObjectName(QStringLiteral("storeLabel"));
 
-    for (const core::Mode mode : core::kModes) m_mode->addItem(modeTitle(mode), static_cast<int>(mode));
+    for (const auto& definition : core::modeDefinitions())
+        m_mode->addItem(modeTitle(definition.mode), static_cast<int>(definition.mode));
     m_subject->setPlaceholderText(tr("panel or phantom id"));
     m_operator->setPlaceholderText(tr("your name"));
     m_subject->setMinimumWidth(160);

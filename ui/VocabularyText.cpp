@@ -1,23 +1,19 @@
 // VocabularyText: the modes' titles.
 #include "ui/VocabularyText.h"
 
+#include "core/modes/ModeDefinition.h"
+
 #include <QCoreApplication>
+
+#include <string>
 
 namespace tactiscope::ui {
 
 QString modeTitle(core::Mode mode)
 {
-    switch (mode) {
-    case core::Mode::PanelScan:
-        return QCoreApplication::translate("Mode", "Panel scan");
-    case core::Mode::Palpation:
-        return QCoreApplication::translate("Mode", "Palpation");
-    case core::Mode::Capacitive:
-        return QCoreApplication::translate("Mode", "Capacitive");
-    case core::Mode::General:
-        return QCoreApplication::translate("Mode", "General recording");
-    }
-    return {};
+    // The titles are the definitions' (core/modes), translated in context "Mode".
+    const std::string title(core::definitionOf(mode).title);
+    return QCoreApplication::translate("Mode", title.c_str());
 }
 
 QString orderText(int direction)

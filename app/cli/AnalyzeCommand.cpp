@@ -6,6 +6,7 @@
 #include "DetectorOptions.h"
 #include "SessionArgument.h"
 #include "core/derived/StoredDetection.h"
+#include "core/modes/ModeDefinition.h"
 #include "core/storage/DefectRecords.h"
 
 #include <chrono>
@@ -85,7 +86,8 @@ int runAnalyze(const QStringList& arguments)
             return usageError(
                 QStringLiteral("no session '%1' in the store").arg(parser.value(QStringLiteral("session"))), usage);
         const auto summary = *store.session(*id);
-        if (summary.metadata.mode != core::Mode::PanelScan)
+        // The detector's defects are the analysis of a mode that detects them.
+        if (!core::definitionOf(summary.metadata.mode).detectsDefects)
             return usageError(QStringLiteral("session %1 is a %2 session; analyze runs the panel-scan detector")
                                   .arg(*id)
                                   .arg(toQString(core::toString(summary.metadata.mode))),

@@ -4,6 +4,7 @@
 #include "CliSupport.h"
 #include "SessionArgument.h"
 #include "core/derived/SessionLanes.h"
+#include "core/modes/ModeDefinition.h"
 #include "core/report/VerdictTrail.h"
 #include "core/storage/SessionExport.h"
 #include "core/storage/SessionSource.h"
@@ -129,7 +130,7 @@ int decideVerdict(SessionSource& store, std::int64_t id, const QString& word, co
         return kExitUsage;
     }
     const auto session = store.session(id);
-    if (session->metadata.mode != core::Mode::PanelScan) {
+    if (!core::definitionOf(session->metadata.mode).detectsDefects) {
         printError(QStringLiteral("session %1 is a %2 session: only a panel scan has a verdict")
                        .arg(id)
                        .arg(toQString(core::toString(session->metadata.mode))));

@@ -1,14 +1,13 @@
 // Which lanes a session is plotted in, for the review window and the
-// report alike: a mode's physical quantities by default (palpation: F_H,
-// F_L, Q and k_o from core/derived/PalpationChannels, then the stored
-// channels the forces did not come from; capacitive: the capacitance, then
-// ΔC, the force and the deflection from core/derived/CapacitiveChannels;
-// panel scan: the strains, then the best R against the threshold and the
-// decision from core/derived/PanelScanChannels), or every stored channel
-// as it is (`raw`).
+// report alike: a mode's physical quantities by default, as its definition
+// makes them (core/modes: e.g. palpation's F_H, F_L, Q and k_o before the
+// stored channels the forces did not come from; a panel scan's best R and
+// decision after the strains), or every stored channel as it is (`raw`,
+// and the general mode).
 #pragma once
 
 #include "core/calibration/CalibrationRecord.h"
+#include "core/derived/ModeLanes.h"
 #include "core/storage/SessionExport.h"
 #include "core/storage/SessionStore.h"
 #include "core/storage/TraceWindow.h"

@@ -129,6 +129,31 @@ CapacitiveBeamGeometry readCapacitiveBeam(ObjectReader& reader)
     return g;
 }
 
+// "roles": {"channel": "role", …}, checked as the command line's list is.
+RoleAssignment readRoles(ObjectReader& reader)
+{
+    if (!reader.has("roles")) return {};
+    const Json& roles = reader.require("roles");
+    if (!roles.is_object()) reader.fail("roles", "must be an object of channel names and roles");
+    std::string text;
+    for (const auto& [channel, role] : roles.items()) {
+        if (!role.is_string()) reader.fail("roles." + channel, "must be a role's name");
+        text += (text.empty() ? "" : ",") + channel + "=" + role.get<std::string>();
+    }
+    try {
+        return parseRoleAssignment(text);
+    } catch (const std::invalid_argument& e) {
+        reader.fail("roles", e.what());
+    }
+}
+
+Json rolesJson(const RoleAssignment& roles)
+{
+    Json json = Json::object();
+    for (const auto& [channel, role] : roles) json[channel] = std::string(toString(role));
+    return json;
+}
+
 Json geometryJson(const CantileverGeometry& g)
 {
     return Json{{"length_m", g.length_m},
@@ -156,8 +181,8 @@ SensorProfile parseSensorProfile(std::string_view text, const std::string& sourc
         return profile;
     }
     if (kind == "compliance_pair") {
-        CompliancePairProfile profile{name, readNestedBeam(reader.object("high")),
-                                      readNestedBeam(reader.object("low"))};
+        CompliancePairProfile profile{name, readNestedBeam(reader.object("high")), readNestedBeam(reader.object("low")),
+                                      readRoles(reader)};
         reader.rejectUnknownKeys();
         const double kh = CantileverBeam(profile.high).stiffness_n_per_m();
         const double kl = CantileverBeam(profile.low).stiffness_n_per_m();
@@ -168,7 +193,7 @@ SensorProfile parseSensorProfile(std::string_view text, const std::string& sourc
         return profile;
     }
     if (kind == "capacitive_beam") {
-        CapacitiveBeamProfile profile{name, readCapacitiveBeam(reader)};
+        CapacitiveBeamProfile profile{name, readCapacitiveBeam(reader), readRoles(reader)};
         reader.rejectUnknownKeys();
         return profile;
     }
@@ -196,6 +221,7 @@ std::string toJson(const SensorProfile& profile)
                     {"name", pair->name},
                     {"high", geometryJson(pair->high)},
                     {"low", geometryJson(pair->low)}};
+        if (!pair->roles.empty()) json["roles"] = rolesJson(pair->roles);
     } else if (const auto* capacitive = std::get_if<CapacitiveBeamProfile>(&profile)) {
         const auto& g = capacitive->geometry;
         Json layers = Json::array();
@@ -214,6 +240,7 @@ std::string toJson(const SensorProfile& profile)
                     {"sheet_layers", layers},
                     {"c0_pf", g.c0_f * 1e12}};
         if (g.doubleLayer_f) json["c_edl_pf"] = *g.doubleLayer_f * 1e12;
+        if (!capacitive->roles.empty()) json["roles"] = rolesJson(capacitive->roles);
     }
     return json.dump(2);
 }
@@ -221,6 +248,13 @@ std::string toJson(const SensorProfile& profile)
 const std::string& profileName(const SensorProfile& profile)
 {
     return std::visit([](const auto& p) -> const std::string& { return p.name; }, profile);
+}
+
+RoleAssignment profileRoles(const SensorProfile& profile)
+{
+    if (const auto* pair = std::get_if<CompliancePairProfile>(&profile)) return pair->roles;
+    if (const auto* capacitive = std::get_if<CapacitiveBeamProfile>(&profile)) return capacitive->roles;
+    return {};
 }
 
 }  // namespace tactiscope::core::sensors

@@ -10,11 +10,15 @@
 //    "sheet_layers": [{"name", "thickness_m", "youngs_modulus_pa"}, …],
 //    "c0_pf": 51.44, optional "c_edl_pf"}
 //   (sheet layers from the beam surface outward)
+// A compliance pair and a capacitive beam may say which channels of their
+// device play which role: optional "roles": {"ch1": "stiff-beam", …}
+// (core/modes/ChannelRoles.h).
 // Loading validates everything and reports the first problem with the key
 // that has it ("high.thickness_m: must be a positive number"); unknown keys
 // are errors too, so a misspelt key is not silently ignored.
 #pragma once
 
+#include "core/modes/ChannelRoles.h"
 #include "core/sensors/CantileverBeam.h"
 #include "core/sensors/CapacitiveBeam.h"
 
@@ -34,11 +38,13 @@ struct CompliancePairProfile {
     std::string name;
     CantileverGeometry high;
     CantileverGeometry low;
+    RoleAssignment roles{};  // by channel name; empty: the device's own
 };
 
 struct CapacitiveBeamProfile {
     std::string name;
     CapacitiveBeamGeometry geometry;
+    RoleAssignment roles{};
 };
 
 using SensorProfile = std::variant<CantileverProfile, CompliancePairProfile, CapacitiveBeamProfile>;
@@ -57,5 +63,7 @@ SensorProfile loadSensorProfile(const std::string& path);
 // session).
 std::string toJson(const SensorProfile& profile);
 const std::string& profileName(const SensorProfile& profile);
+// The channel roles the profile gives (none for a single cantilever).
+RoleAssignment profileRoles(const SensorProfile& profile);
 
 }  // namespace tactiscope::core::sensors

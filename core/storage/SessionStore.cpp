@@ -42,7 +42,7 @@ SessionSummary summaryFrom(const Statement& row)
     s.id = row.int64(0);
     s.uuid = row.text(1);
     // The schema's CHECK admits only the vocabulary's modes and statuses.
-    s.metadata = {modeFromString(row.text(2)).value_or(Mode::PanelScan),
+    s.metadata = {modeFromString(row.text(2)).value_or(Mode::General),  // a newer program's mode: as it came
                   row.text(3),
                   row.text(4),
                   row.text(5),

@@ -40,7 +40,7 @@ LiveSession::LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions
     : m_options(std::move(options))
 {
     if (!source) throw std::invalid_argument("a live session needs a source");
-    m_channels = core::applyRoles(source->channels(), m_options.roles);
+    m_channels = core::applyRoles(source->channels(), effectiveRoles(source->channels()));
     const double rate_hz = source->nominalSampleRate_hz();
     m_acquisition = std::make_unique<Acquisition>(std::move(source));
     // Two seconds of headroom: the display reads 40 times a second, so only
@@ -73,15 +73,43 @@ void LiveSession::buildAll()
         if (const auto problem = build(mode, false)) m_problems.push_back(*problem);
 }
 
+// The roles the channels play: those the profiles give (to channels the
+// device has), under those the owner gave.
+core::RoleAssignment LiveSession::effectiveRoles(const std::vector<core::ChannelDescriptor>& device) const
+{
+    core::RoleAssignment roles;
+    const auto give = [&roles](const std::string& channel, core::ChannelRole role) {
+        std::erase_if(roles, [role](const auto& given) { return given.second == role; });
+        roles[channel] = role;
+    };
+    for (const auto& [mode, profile] : m_options.profiles)
+        for (const auto& [channel, role] : core::sensors::profileRoles(profile))
+            if (std::ranges::find(device, channel, &core::ChannelDescriptor::name) != device.end()) give(channel, role);
+    for (const auto& [channel, role] : m_options.roles) give(channel, role);
+    return roles;
+}
+
 std::optional<std::string> LiveSession::setRoles(core::RoleAssignment roles)
 {
     if (isRecording()) return "a recording keeps its channels' roles; stop it first";
+    auto previous = std::exchange(m_options.roles, std::move(roles));
+    if (auto problem = rebuildChannels()) {
+        m_options.roles = std::move(previous);
+        return problem;
+    }
+    return std::nullopt;
+}
+
+// The channels again on the roles now given, and every processor on them;
+// the mode stays when it can still run. A role for a channel the device
+// lacks changes nothing: the reason.
+std::optional<std::string> LiveSession::rebuildChannels()
+{
     try {
-        m_channels = core::applyRoles(source().channels(), roles);
+        m_channels = core::applyRoles(source().channels(), effectiveRoles(source().channels()));
     } catch (const std::invalid_argument& e) {
         return e.what();
     }
-    m_options.roles = std::move(roles);
     buildAll();
     if (refusalOf(m_mode)) m_mode = declaredMode();
     startLists(LiveClock::SinceConnect);  // what the old roles found is not this setup's

@@ -147,9 +147,9 @@ public:
     // The device's channels with the roles they play, as a recording stores them.
     const std::vector<core::ChannelDescriptor>& channels() const { return m_channels; }
     // Gives the channels roles (replacing those given before; the device's
-    // own stay where not overridden) and rebuilds the processors; the mode
-    // stays when it can still run, else the default. Refused while
-    // recording or for a channel the device lacks: the reason.
+    // own and the profiles' stay where not overridden) and rebuilds the
+    // processors; the mode stays when it can still run, else the default.
+    // Refused while recording or for a channel the device lacks: the reason.
     std::optional<std::string> setRoles(core::RoleAssignment roles);
     const core::RoleAssignment& roles() const { return m_options.roles; }
 
@@ -163,7 +163,8 @@ public:
     std::optional<std::string> setMode(core::Mode mode);
 
     // Profiles and calibrations. setProfile() refuses a profile of the
-    // wrong kind, a probe the model rejects, or any change while recording;
+    // wrong kind, a probe the model rejects, or any change while recording
+    // (of the recording's mode, or of the channels' roles a profile gives);
     // reloadCalibrations() rebuilds a mode's processor on the store's newest
     // calibrations (after a wizard stored one).
     std::optional<std::string> setProfile(core::Mode mode, core::sensors::SensorProfile profile);
@@ -232,6 +233,8 @@ public:
 
 private:
     std::optional<std::string> build(core::Mode mode, bool inheritZero = true);
+    core::RoleAssignment effectiveRoles(const std::vector<core::ChannelDescriptor>& device) const;
+    std::optional<std::string> rebuildChannels();
     void buildAll();
     void startLists(LiveClock clock);
     double listTime_s(double streamTime_s) const;

@@ -36,6 +36,19 @@ std::optional<std::string> LiveSession::setProfile(core::Mode mode, core::sensor
         return "'" + core::sensors::profileName(profile) + "' is not a probe for " + std::string(core::toString(mode)) +
                ": that mode takes " + std::string(core::sensors::profileKindFor(mode));
     if (isRecording() && mode == m_mode) return "a recording keeps its sensor from start to end; stop it first";
+    const auto* current = this->profile(mode);
+    if (core::sensors::profileRoles(profile) !=
+        (current ? core::sensors::profileRoles(*current) : core::RoleAssignment{})) {
+        // Other roles: the channels and every processor are built again.
+        if (isRecording()) return "a recording keeps its channels' roles; stop it first";
+        auto previous = std::exchange(m_options.profiles[mode], std::move(profile));
+        if (auto problem = rebuildChannels()) {
+            m_options.profiles[mode] = std::move(previous);
+            rebuildChannels();
+            return problem;
+        }
+        return std::nullopt;
+    }
     auto previous = std::exchange(m_options.profiles[mode], std::move(profile));
     if (refusalOf(mode)) return std::nullopt;  // kept for a device that can feed the mode
     if (auto problem = build(mode)) {
@@ -57,9 +70,9 @@ std::optional<std::string> LiveSession::setStorePath(const std::string& path)
 {
     if (isRecording()) return "a recording keeps its session store to its end";
     m_options.storePath = path;
-    for (const core::Mode mode : core::kModes)
-        if (!core::definitionOf(mode).profileKind.empty() && !refusalOf(mode))
-            if (auto problem = build(mode)) m_problems.push_back(std::move(*problem));
+    for (const auto& definition : core::modeDefinitions())
+        if (definition.profile != core::ProfileType::None && !refusalOf(definition.mode))
+            if (auto problem = build(definition.mode)) m_problems.push_back(std::move(*problem));
     return std::nullopt;
 }
 
@@ -69,7 +82,7 @@ std::optional<std::string> LiveSession::setStorePath(const std::string& path)
 // same channels, another profile or calibration).
 std::optional<std::string> LiveSession::build(core::Mode mode, bool inheritZero)
 {
-    if (!core::definitionOf(mode).profileKind.empty() && !profile(mode)) {
+    if (core::definitionOf(mode).profile != core::ProfileType::None && !profile(mode)) {
         auto builtIn = core::sensors::builtInProfile(mode);
         m_options.profiles.emplace(mode, std::move(*builtIn));
     }

@@ -5,6 +5,7 @@
 // the chosen probe reads the live presses and goes into the session.
 #include "ui/SensorProfileDialog.h"
 
+#include "core/sensors/BuiltInProfiles.h"
 #include "core/storage/SessionStore.h"
 #include "devices/simulator/PalpationScenario.h"
 #include "support/MainWindowHelpers.h"
@@ -14,6 +15,7 @@
 #include "ui/ActiveProfiles.h"
 #include "ui/MainWindow.h"
 #include "ui/PalpationView.h"
+#include "ui/ProfileForms.h"
 #include "ui/QuantityEdit.h"
 
 #include <QAbstractButton>
@@ -400,4 +402,26 @@ TEST_F(SensorProfileDialogTest, AProbeChosenWhileStreamingReadsTheNextPressesAnd
         core::sensors::parseSensorProfile(sessions.sessions().front().metadata.profileJson, "session");
     EXPECT_EQ(std::get<core::sensors::CompliancePairProfile>(recorded).high.youngsModulus_pa, 6e9);
     QDir(ui::ProfileLibrary::defaultDirectory()).removeRecursively();
+}
+
+// The forms edit a probe's mechanics; the channel roles its file gave pass
+// through an edit unchanged (they are the device panel's to change).
+TEST_F(SensorProfileDialogTest, AnEditKeepsTheChannelRolesTheProfileGave)
+{
+    auto pair = std::get<core::sensors::CompliancePairProfile>(*core::sensors::builtInProfile(core::Mode::Palpation));
+    pair.roles = core::parseRoleAssignment("ch1=stiff-beam,ch2=soft-beam,ch3=displacement");
+    ui::CompliancePairForm pairForm;
+    pairForm.setProfile(pair);
+    pairForm.nameEdit()->setText(QStringLiteral("renamed"));
+    const auto edited = pairForm.result();
+    ASSERT_TRUE(edited.profile) << edited.problem.toStdString();
+    EXPECT_EQ(core::sensors::profileRoles(*edited.profile), pair.roles);
+
+    auto beam = std::get<core::sensors::CapacitiveBeamProfile>(*core::sensors::builtInProfile(core::Mode::Capacitive));
+    beam.roles = core::parseRoleAssignment("C=capacitance");
+    ui::CapacitiveBeamForm beamForm;
+    beamForm.setProfile(beam);
+    const auto kept = beamForm.result();
+    ASSERT_TRUE(kept.profile) << kept.problem.toStdString();
+    EXPECT_EQ(core::sensors::profileRoles(*kept.profile), beam.roles);
 }

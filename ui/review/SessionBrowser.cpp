@@ -1,5 +1,7 @@
 // SessionBrowser: filters, table, open and delete.
 #include "ui/review/SessionBrowser.h"
+
+#include "core/modes/ModeDefinition.h"
 #include "core/storage/OpenSessionSource.h"
 #include "ui/ProblemReport.h"
 #include "ui/StoreJobs.h"
@@ -119,7 +121,7 @@ SessionBrowser::SessionBrowser(std::shared_ptr<core::storage::StoreWorker> store
     m_search->setPlaceholderText(tr("Search subject, operator, site, notes, verdict, serial…"));
     m_search->setClearButtonEnabled(true);
     m_mode->addItem(tr("Any mode"));
-    for (const core::Mode mode : core::kModes) m_mode->addItem(wordText(mode));
+    for (const auto& definition : core::modeDefinitions()) m_mode->addItem(wordText(definition.mode));
     m_status->addItem(tr("Any status"));
     for (const auto status :
          {core::SessionStatus::Complete, core::SessionStatus::Interrupted, core::SessionStatus::Recording})

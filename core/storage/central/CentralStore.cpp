@@ -33,7 +33,7 @@ SessionSummary summaryFrom(const PgResult& r, int row)
     s.id = r.int64(row, 0);
     s.uuid = r.text(row, 1);
     // The schema's CHECKs admit only the vocabulary's modes and statuses.
-    s.metadata = {modeFromString(r.text(row, 2)).value_or(Mode::PanelScan),
+    s.metadata = {modeFromString(r.text(row, 2)).value_or(Mode::General),  // a newer program's mode: as it came
                   r.text(row, 3),
                   r.text(row, 4),
                   r.text(row, 5),

@@ -105,3 +105,31 @@ TEST(SensorProfile, CapacitiveBeamErrorsNameTheKey)
               "probe.json: sheet_layers[0].thickness_m: must be a positive number, got 0");
     EXPECT_EQ(errorOf(head + R"(0.6}, "sheet_layers": []})"), "probe.json: sheet_layers: must be a non-empty list");
 }
+
+TEST(SensorProfile, AProfileMaySayWhichChannelsPlayWhichRoleAndWritesThemBack)
+{
+    std::string json(kPair);
+    json.insert(json.rfind('}'), R"(, "roles": {"ch1": "stiff-beam", "ch2": "soft-beam", "ch3": "displacement"})");
+    const auto profile = parseSensorProfile(json, "probe.json");
+    const tactiscope::core::RoleAssignment expected{{"ch1", tactiscope::core::ChannelRole::StiffBeam},
+                                                    {"ch2", tactiscope::core::ChannelRole::SoftBeam},
+                                                    {"ch3", tactiscope::core::ChannelRole::Displacement}};
+    EXPECT_EQ(profileRoles(profile), expected);
+    EXPECT_EQ(profileRoles(parseSensorProfile(toJson(profile), "again.json")), expected);
+    EXPECT_TRUE(profileRoles(parseSensorProfile(kPair, "probe.json")).empty());
+    EXPECT_EQ(toJson(parseSensorProfile(kPair, "probe.json")).find("roles"), std::string::npos);
+
+    const auto withRoles = [](const char* roles) {
+        std::string text(kPair);
+        text.insert(text.rfind('}'), std::string(", \"roles\": ") + roles);
+        return text;
+    };
+    EXPECT_EQ(errorOf(withRoles(R"(["stiff-beam"])")),
+              "probe.json: roles: must be an object of channel names and roles");
+    EXPECT_EQ(errorOf(withRoles(R"({"ch1": 3})")), "probe.json: roles.ch1: must be a role's name");
+    EXPECT_EQ(errorOf(withRoles(R"({"ch1": "stiff"})")),
+              "probe.json: roles: 'stiff' is not a channel role; the roles are cantilever-a, cantilever-b, "
+              "stiff-beam, soft-beam, displacement or capacitance");
+    EXPECT_EQ(errorOf(withRoles(R"({"ch1": "stiff-beam", "ch2": "stiff-beam"})")),
+              "probe.json: roles: the role stiff-beam is given to both 'ch1' and 'ch2'");
+}

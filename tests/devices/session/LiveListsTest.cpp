@@ -259,3 +259,53 @@ TEST_F(LiveListsTest, ADeviceThatDeclaresNothingRecordsInGeneralModeAndGivenRole
     EXPECT_EQ(scan.mode(), core::Mode::General);
     EXPECT_TRUE(scan.setRoles({{"z", core::ChannelRole::CantileverA}}).has_value());
 }
+
+// A palpation profile that names its channels' roles makes an undeclared
+// three-column board a palpation probe; the roles given by hand win.
+TEST_F(LiveListsTest, AProfilesRolesMakeABoardAPalpationProbe)
+{
+    class Board final : public devices::BlockSource {
+    public:
+        Board()
+            : m_inner(simulator("palpation")),
+              m_channels{{"ch1", "", core::ChannelKind::Other},
+                         {"ch2", "", core::ChannelKind::Other},
+                         {"ch3", "", core::ChannelKind::Other}}
+        {
+        }
+        std::string name() const override { return "board"; }
+        const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
+        double nominalSampleRate_hz() const override { return m_inner->nominalSampleRate_hz(); }
+        devices::ReadStatus readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout) override
+        {
+            return m_inner->readBlock(out, timeout);
+        }
+
+    private:
+        std::unique_ptr<devices::BlockSource> m_inner;
+        std::vector<core::ChannelDescriptor> m_channels;
+    };
+    LiveSession plain(std::make_unique<Board>(), optionsFor(file("b.tactiscope")));
+    EXPECT_EQ(plain.mode(), core::Mode::General);
+
+    auto probe = std::get<core::sensors::CompliancePairProfile>(*core::sensors::builtInProfile(core::Mode::Palpation));
+    probe.roles = core::parseRoleAssignment("ch1=stiff-beam,ch2=soft-beam,ch3=displacement,ch9=capacitance");
+    // Given to a running session: the channels are built again on its roles.
+    ASSERT_FALSE(plain.setProfile(core::Mode::Palpation, probe));
+    EXPECT_FALSE(plain.refusalOf(core::Mode::Palpation));
+    ASSERT_TRUE(plain.palpation());
+    EXPECT_EQ(plain.channels()[2].role, core::ChannelRole::Displacement);
+
+    auto options = optionsFor(file("b.tactiscope"));
+    options.profiles.emplace(core::Mode::Palpation, probe);
+    LiveSession session(std::make_unique<Board>(), options);
+    EXPECT_EQ(session.mode(), core::Mode::Palpation);  // ch9 is not on this board: left out
+    session.start();
+    ASSERT_TRUE(pollUntil(session, [&] { return session.presses().size() >= 2; }));
+    const double truth = devices::simulator::PalpationParameters{}.objectStiffness_n_per_m;
+    EXPECT_NEAR(session.presses().back().press.stiffness.objectStiffness_n_per_m, truth, 0.05 * truth);
+    // Roles by hand win over the profile's: the beams swapped, no palpation.
+    EXPECT_FALSE(session.setRoles(core::parseRoleAssignment("ch1=soft-beam,ch2=stiff-beam")));
+    EXPECT_EQ(session.channels()[0].role, core::ChannelRole::SoftBeam);
+    EXPECT_EQ(session.channels()[1].role, core::ChannelRole::StiffBeam);
+}

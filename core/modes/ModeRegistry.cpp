@@ -1,0 +1,68 @@
+// ModeRegistry: the list of modes every layer asks. A new sensor type adds
+// its definition here (or registers it) and its file beside this one.
+#include "core/modes/ModeDefinition.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace tactiscope::core {
+namespace {
+
+std::vector<ModeDefinition>& registry()
+{
+    static std::vector<ModeDefinition> modes{panelScanMode(), palpationMode(), capacitiveMode(), generalMode()};
+    return modes;
+}
+
+// The built-in modes, first in the registry, never taken out.
+constexpr std::size_t kBuiltIn = 4;
+
+}  // namespace
+
+std::span<const ModeDefinition> modeDefinitions()
+{
+    return registry();
+}
+
+const ModeDefinition& definitionOf(Mode mode)
+{
+    for (const auto& definition : registry())
+        if (definition.mode == mode) return definition;
+    throw std::out_of_range("no definition for mode " + std::to_string(static_cast<int>(mode)));
+}
+
+void registerMode(const ModeDefinition& definition)
+{
+    for (const auto& known : registry())
+        if (known.mode == definition.mode || known.name == definition.name)
+            throw std::invalid_argument("the mode '" + std::string(definition.name) + "' is already defined");
+    registry().push_back(definition);
+}
+
+void unregisterMode(Mode mode)
+{
+    auto& modes = registry();
+    const auto found = std::ranges::find(modes.begin() + kBuiltIn, modes.end(), mode, &ModeDefinition::mode);
+    if (found != modes.end()) modes.erase(found);
+}
+
+bool kindCanPlay(ChannelKind kind, ChannelRole role)
+{
+    switch (role) {
+    case ChannelRole::CantileverA:
+    case ChannelRole::CantileverB:
+        return kind == ChannelKind::Strain;
+    case ChannelRole::StiffBeam:
+    case ChannelRole::SoftBeam:
+        return kind != ChannelKind::Position;
+    case ChannelRole::Displacement:
+        return kind == ChannelKind::Position;
+    case ChannelRole::Capacitance:
+        return kind == ChannelKind::Capacitance;
+    }
+    return false;
+}
+
+}  // namespace tactiscope::core
