@@ -41,7 +41,8 @@ const QStringList& profileModes()
 
 QString builtInProfilePath(const QString& mode)
 {
-    if (core::modeFromString(mode.toStdString()) == core::Mode::Capacitive)
+    const auto known = core::modeFromString(mode.toStdString());
+    if (known && core::definitionOf(*known).profile == core::ProfileType::CapacitiveBeam)
         return QStringLiteral(":/tactiscope/profiles/capacitive-beam-paper-no1.json");
     return QStringLiteral(":/tactiscope/profiles/compliance-probe-paper.json");
 }

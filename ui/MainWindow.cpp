@@ -551,10 +551,9 @@ void MainWindow::applyProfile(const QString& modeName)
         return;
     }
     showMode(*mode);
-    if (*mode == core::Mode::Palpation && m_session->palpation())
-        statusBar()->showMessage(tr("New probe profile: its factors apply to the zero in use"), 5000);
-    if (*mode == core::Mode::Capacitive && m_session->capacitive())
-        statusBar()->showMessage(tr("New beam profile: it reads on the baseline C0 in use"), 5000);
+    if (m_session->unit(*mode))
+        statusBar()->showMessage(tr("New %1 profile: its factors apply to the zero in use").arg(modeTitle(*mode)),
+                                 5000);
 }
 
 // Roles chosen in the device panel: the processors are rebuilt on them and

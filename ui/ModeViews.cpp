@@ -34,21 +34,14 @@ void ModeViews::bind(const devices::session::LiveSession* session, core::Mode mo
     const auto* profile = session ? session->profile(mode) : nullptr;
     const QString probe = profile ? QString::fromStdString(core::sensors::profileName(*profile)) : QString();
     const QString calibrations = session ? calibrationsText(session->calibrations(mode)) : QString();
-    switch (mode) {
-    case core::Mode::PanelScan:
-        m_panelScan->setDetection(session ? session->detection() : nullptr, rate_hz);
-        break;
-    case core::Mode::Palpation:
+    // A mode without a view of its own (general) shows the device's traces.
+    if (mode == core::Mode::PanelScan) m_panelScan->setDetection(session ? session->detection() : nullptr, rate_hz);
+    if (mode == core::Mode::Palpation)
         m_palpation->setPalpation(session ? session->palpation() : nullptr, rate_hz, probe, calibrations);
-        break;
-    case core::Mode::Capacitive:
+    if (mode == core::Mode::Capacitive)
         m_capacitive->setCapacitive(
             session ? session->capacitive() : nullptr, rate_hz, probe,
             calibrations.isEmpty() ? tr("none — the beam model (uncalibrated); drift tracking off") : calibrations);
-        break;
-    case core::Mode::General:
-        break;  // the device's traces are its view
-    }
 }
 
 void ModeViews::bindAll(const devices::session::LiveSession* session)

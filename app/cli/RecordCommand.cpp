@@ -44,29 +44,27 @@ QString analysisSummary(const devices::session::LiveSession& session, const devi
     const auto count = [](std::size_t n, const char* one, const char* many) {
         return QStringLiteral("%1 %2").arg(n).arg(QLatin1String(n == 1 ? one : many));
     };
-    switch (session.recordingMetadata().mode) {
-    case core::Mode::PanelScan:
+    const core::Mode mode = session.recordingMetadata().mode;
+    if (mode == core::Mode::PanelScan)
         return QStringLiteral("panel-scan: %1 stored%2, verdict %3")
             .arg(count(summary.defects, "defect", "defects"),
                  summary.defects == 0 ? QString() : QStringLiteral(" at ") + count(summary.sites, "site", "sites"),
                  summary.verdict ? toQString(core::verdictText(summary.verdict)) : QStringLiteral("none"));
-    case core::Mode::Palpation: {
+    if (mode == core::Mode::Palpation) {
         std::size_t stored = 0;
         for (const auto& press : session.presses()) stored += press.stored ? 1 : 0;
         return QStringLiteral("palpation: %1 stored").arg(count(stored, "stiffness reading", "stiffness readings"));
     }
-    case core::Mode::Capacitive: {
-        const auto& used = session.calibrations(core::Mode::Capacitive);
+    if (mode == core::Mode::Capacitive) {
+        const auto& used = session.calibrations(mode);
         return QStringLiteral("capacitive: calibration %1")
             .arg(used.empty()
                      ? QStringLiteral("none (the beam model)")
                      : toQString(used.front().record.timestampUtc + " by " + used.front().record.operatorName));
     }
-    case core::Mode::General:
-        return QStringLiteral("general: %1 as they came, no analysis")
-            .arg(count(session.channels().size(), "channel", "channels"));
-    }
-    return {};
+    // A mode with no analysis of its own (general): the channels as they came.
+    return QStringLiteral("%1: %2 as they came, no analysis")
+        .arg(toQString(core::toString(mode)), count(session.channels().size(), "channel", "channels"));
 }
 
 }  // namespace

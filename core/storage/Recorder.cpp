@@ -42,6 +42,7 @@ void Recorder::consume(const SampleBlock& block)
         m_firstTime_s = block.t0_s();
     }
     m_consumedEnd = block.endSampleIndex() - *m_firstIndex;
+    if (!block.empty()) m_consumedUntil_s = block.timeAt_s(block.sampleCount() - 1);
     if (m_finished || !m_stats.error.empty() || m_queuedSamples + block.sampleCount() > m_maxQueued) {
         m_stats.samplesDropped += block.sampleCount();
         return;
@@ -87,6 +88,12 @@ void Recorder::markLostUntil(double sessionTime_s)
     const std::lock_guard lock(m_mutex);
     const double end = std::ceil(sessionTime_s * m_sampleRate_hz);
     if (end > static_cast<double>(m_consumedEnd)) m_consumedEnd = static_cast<std::uint64_t>(end);
+}
+
+std::optional<double> Recorder::consumedUntil_s() const
+{
+    const std::lock_guard lock(m_mutex);
+    return m_consumedUntil_s;
 }
 
 double Recorder::sessionTimeOf(double acquisitionTime_s) const

@@ -67,6 +67,9 @@ public:
     void markLostUntil(double sessionTime_s);
     // The session time of the newest sample consumed (0 before the first).
     double sessionTime_s() const;
+    // The acquisition time (a block's clock) of the newest sample consumed;
+    // none before the first.
+    std::optional<double> consumedUntil_s() const;
     // An acquisition time (a block's clock) on the session's clock.
     double sessionTimeOf(double acquisitionTime_s) const;
     // The acquisition time of the session's t = 0: its first sample's; none
@@ -96,7 +99,8 @@ private:
     std::uint64_t m_queuedSamples = 0;
     std::optional<std::uint64_t> m_firstIndex;  // of the first block consumed
     double m_firstTime_s = 0.0;
-    std::uint64_t m_consumedEnd = 0;  // one past the last sample consumed, session-relative
+    std::optional<double> m_consumedUntil_s;  // acquisition time of the newest sample consumed
+    std::uint64_t m_consumedEnd = 0;          // one past the last sample consumed, session-relative
     RecorderStats m_stats;
     bool m_finished = false;
     std::jthread m_writer;  // last: stopped before the members it uses go

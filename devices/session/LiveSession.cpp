@@ -50,25 +50,22 @@ LiveSession::LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions
     m_acquisition->addSink(m_buffer);
     m_tap = std::make_shared<core::storage::RecordingTap>();
     m_acquisition->addSink(m_tap);
-    // Processors rebuilt (another profile, calibration or roles) go into
-    // their slot while the device streams.
-    m_detectionSlot = std::make_shared<core::SinkSlot>();
-    m_palpationSlot = std::make_shared<core::SinkSlot>();
-    m_capacitiveSlot = std::make_shared<core::SinkSlot>();
-    m_acquisition->addSink(m_detectionSlot);
-    m_acquisition->addSink(m_palpationSlot);
-    m_acquisition->addSink(m_capacitiveSlot);
+    // Units rebuilt (another profile, calibration or roles) go into their
+    // mode's slot while the device streams.
+    for (const auto& definition : core::modeDefinitions()) {
+        auto slot = std::make_shared<core::SinkSlot>();
+        m_acquisition->addSink(slot);
+        m_slots.emplace(definition.mode, std::move(slot));
+    }
     buildAll();
     m_mode = declaredMode();
 }
 
-// The processors of every mode the channels feed, and none of the others.
+// The units of every mode the channels feed, and none of the others.
 void LiveSession::buildAll()
 {
-    m_detection.reset();
-    m_palpation.reset();
-    m_capacitive.reset();
-    for (const auto& slot : {m_detectionSlot, m_palpationSlot, m_capacitiveSlot}) slot->set(nullptr);
+    m_units.clear();
+    for (const auto& [mode, slot] : m_slots) slot->set(nullptr);
     for (const core::Mode mode : core::runnableModes(m_channels))
         if (const auto problem = build(mode, false)) m_problems.push_back(*problem);
 }
@@ -152,8 +149,7 @@ std::optional<std::string> LiveSession::tare()
 {
     const auto& definition = core::definitionOf(m_mode);
     if (!definition.noZero.empty()) return std::string(definition.noZero);
-    if (m_mode == core::Mode::Palpation && m_palpation) return m_palpation->tare();
-    if (m_mode == core::Mode::Capacitive && m_capacitive) return m_capacitive->tare();
+    if (auto* unit = unitOf(m_mode)) return unit->tare();
     return refusalOf(m_mode).value_or("this mode's processor is not running");
 }
 
@@ -180,9 +176,7 @@ std::optional<std::string> LiveSession::startRecording(const core::storage::Sess
     takeNotices();  // what the link noticed before belongs to no session
     // Nor do the defects and presses found before the record press: taken
     // now, while no recorder would store them.
-    takeDefects();
-    takePresses();
-    takeZeros();
+    takeResults();
     try {
         const auto directory = std::filesystem::path(m_options.storePath).parent_path();
         if (!directory.empty()) std::filesystem::create_directories(directory);
@@ -193,16 +187,9 @@ std::optional<std::string> LiveSession::startRecording(const core::storage::Sess
     }
     m_metadata = std::move(metadata);
     startLists(LiveClock::Recording);
-    // The zero in use reads the session's first samples (it applies from
-    // index 0); those taken before were dropped above.
-    if (m_palpation && m_metadata.mode == core::Mode::Palpation) {
-        if (const auto zero = m_palpation->currentZero())
-            m_recorder->addZero(zero->firstIndex, core::compliance::zeroJson(zero->zero));
-    }
-    if (m_capacitive && m_metadata.mode == core::Mode::Capacitive) {
-        const auto baseline = m_capacitive->currentBaseline();
-        m_recorder->addZero(baseline.firstIndex, core::capacitive::baselineJson(baseline.c0_f));
-    }
+    // The zero in use reads the session's first samples; those taken before
+    // were dropped above.
+    if (auto* unit = unitOf(m_mode)) unit->startRecording(*m_recorder);
     m_recordingStartHost_s = steadySeconds();
     recordStandingFaults();
     m_tap->attach(m_recorder);
@@ -268,26 +255,15 @@ RecordingSummary LiveSession::finishRecording()
 {
     m_tap->detach();
     if (const auto origin = recordingOrigin_s()) m_lists.origin_s = *origin;
-    takeDefects();  // what completed up to the last recorded block
-    takePresses();
-    takeZeros();
+    takeResults();  // what completed up to the last recorded block
     takeNotices();
     RecordingSummary summary;
     recordUnstoppedEnd(summary);
     summary.session = m_recorder->sessionId();
     summary.end_s = m_recorder->sessionTime_s();
-    summary.defects = m_defects.size();
-    // A panel the probe left before the stop was not wholly inspected: no
-    // automatic verdict says it passed.
     const bool whole = !summary.lostAt_s && summary.stoppedBecause.empty();
     std::optional<core::storage::VerdictDecision> decision;
-    const bool detects = core::definitionOf(m_metadata.mode).detectsDefects;
-    if (detects) summary.sites = panelSites().sites.size();
-    if (detects && whole) {
-        decision = core::storage::automaticDecision(core::storage::kLiveAnalysis, m_defects.size(), summary.sites,
-                                                    detectorParameters());
-        summary.verdict = decision->verdict;
-    }
+    if (auto* unit = unitOf(m_metadata.mode)) decision = unit->finishRecording(summary, whole);
     summary.stats = m_recorder->finish(core::SessionStatus::Complete, decision);
     if (!summary.stats.error.empty()) summary.verdict.reset();  // the session ended interrupted
     m_recorder.reset();
@@ -297,12 +273,7 @@ RecordingSummary LiveSession::finishRecording()
 
 core::detector::SiteGrouping LiveSession::panelSites() const
 {
-    return core::detector::scanSites(m_defects);
-}
-
-core::detector::DetectorParameters LiveSession::detectorParameters() const
-{
-    return m_detection ? m_detection->settings().parameters : core::detector::DetectorParameters{};
+    return core::detector::scanSites(panelDefects());
 }
 
 std::int64_t LiveSession::sessionId() const
@@ -339,9 +310,7 @@ bool LiveSession::addMarker(double time_s, const std::string& note)
 std::optional<RecordingSummary> LiveSession::poll()
 {
     if (const auto origin = recordingOrigin_s()) m_lists.origin_s = *origin;
-    takeDefects();
-    takePresses();
-    takeZeros();
+    takeResults();
     takeNotices();
     if (m_recorder && !m_recorder->stats().error.empty()) return finishRecording();
     return std::nullopt;
@@ -377,8 +346,7 @@ void LiveSession::takeNotices()
 // stop, for other roles.
 void LiveSession::startLists(LiveClock clock)
 {
-    m_defects.clear();
-    m_presses.clear();
+    for (const auto& [mode, unit] : m_units) unit->clearLists();
     ++m_lists.generation;
     m_lists.clock = clock;
     m_lists.session = clock == LiveClock::SinceConnect ? 0 : sessionId();
@@ -392,62 +360,28 @@ double LiveSession::listTime_s(double streamTime_s) const
     return m_recorder ? m_recorder->sessionTimeOf(streamTime_s) : streamTime_s;
 }
 
-// While recording, only the recording's mode fills the lists (another
-// mode's processor runs on, unseen and unstored); after a stop, the first
-// event starts the since-connect lists.
-void LiveSession::takeDefects()
+// Each unit's completed results: into the lists, and into the store while
+// its mode records; while another mode records, a unit's processor runs on,
+// unseen and unstored. After a stop the first new entry starts the lists.
+void LiveSession::takeResults()
 {
-    if (!m_detection) return;
-    auto found = m_detection->takeEvents();
-    if (found.empty()) return;
-    const bool storing = m_recorder && core::definitionOf(m_metadata.mode).detectsDefects;
-    if (m_recorder && !storing) return;
-    if (m_lists.clock == LiveClock::Recorded) startLists(LiveClock::SinceConnect);
-    for (auto& e : found) {
-        e.start_s = listTime_s(e.start_s);
-        e.end_s = listTime_s(e.end_s);
+    LiveTake take;
+    take.listTime_s = [this](double t_s) { return listTime_s(t_s); };
+    take.adding = [this] {
+        if (m_lists.clock == LiveClock::Recorded) startLists(LiveClock::SinceConnect);
+    };
+    take.site = [this] { return m_siteGrid ? m_siteGrid->currentName() : m_site; };
+    take.siteStored = [this] {
+        if (m_siteGrid) m_siteGrid->advance();
+    };
+    if (m_recorder) take.recordedUntil_s = m_recorder->consumedUntil_s().value_or(-1.0);
+    for (const auto& [mode, unit] : m_units) {
+        const bool own = m_recorder && m_metadata.mode == mode;
+        take.recorder = own ? m_recorder.get() : nullptr;
+        take.recordingOtherMode = m_recorder && !own;
+        unit->take(take);
+        unit->takeZeros(take.recorder);
     }
-    m_defects.insert(m_defects.end(), found.begin(), found.end());
-    if (!storing) return;
-    std::vector<core::storage::SessionEvent> stored;
-    stored.reserve(found.size());
-    for (const auto& e : found) stored.push_back(core::storage::defectRecord(e));
-    m_recorder->addEvents(std::move(stored));
-}
-
-void LiveSession::takePresses()
-{
-    if (!m_palpation) return;
-    auto found = m_palpation->takeReadings();
-    if (found.empty()) return;
-    const bool storing = m_recorder && m_metadata.mode == core::Mode::Palpation;
-    if (m_recorder && !storing) return;
-    if (m_lists.clock == LiveClock::Recorded) startLists(LiveClock::SinceConnect);
-    std::vector<core::storage::SessionReading> stored;
-    for (auto& press : found) {
-        press.start_s = listTime_s(press.start_s);
-        press.end_s = listTime_s(press.end_s);
-        PressRecord record{std::move(press), m_siteGrid ? m_siteGrid->currentName() : m_site, false};
-        // Out of range is a state, not a stiffness: shown, not stored as a number.
-        if (storing && record.press.stiffness.range == core::sensors::ComplianceRange::InRange) {
-            core::storage::SessionReading reading;
-            reading.kind = core::ReadingKind::Compliance;
-            reading.quantity = "stiffness";
-            reading.unit = "N/m";
-            reading.start_s = record.press.start_s;
-            reading.end_s = record.press.end_s;
-            reading.value = record.press.stiffness.objectStiffness_n_per_m;
-            reading.standardError = record.press.uncertainty_n_per_m();
-            reading.site = record.site;
-            reading.detailsJson = core::compliance::pressDetailsJson(record.press);
-            stored.push_back(std::move(reading));
-            record.stored = true;
-            // The site has its reading: the next press is the next site's.
-            if (m_siteGrid) m_siteGrid->advance();
-        }
-        m_presses.push_back(std::move(record));
-    }
-    if (!stored.empty()) m_recorder->addReadings(std::move(stored));
 }
 
 void LiveSession::setSiteGrid(std::optional<core::compliance::SiteGrid> grid)
@@ -461,23 +395,6 @@ void LiveSession::setSiteGrid(std::optional<core::compliance::SiteGrid> grid)
 void LiveSession::selectSite(core::compliance::SiteCell cell)
 {
     if (m_siteGrid) m_siteGrid->select(cell);
-}
-
-// The zeros the mode's processor reads the samples on, into the recording
-// (those before it are dropped): the review derives the same quantities.
-void LiveSession::takeZeros()
-{
-    const auto recording = [this](core::Mode mode) { return m_recorder && m_metadata.mode == mode; };
-    if (m_palpation) {
-        for (const auto& zero : m_palpation->takeZeroChanges())
-            if (recording(core::Mode::Palpation))
-                m_recorder->addZero(zero.firstIndex, core::compliance::zeroJson(zero.zero));
-    }
-    if (m_capacitive) {
-        for (const auto& baseline : m_capacitive->takeBaselineChanges())
-            if (recording(core::Mode::Capacitive))
-                m_recorder->addZero(baseline.firstIndex, core::capacitive::baselineJson(baseline.c0_f));
-    }
 }
 
 }  // namespace tactiscope::devices::session

@@ -2,10 +2,11 @@
 // happens to its stream, for the GUI's main window and `tactiscope-cli
 // record` alike (as PulseView's pv::Session carries acquisition for its
 // window). It owns the acquisition, the live buffer the display and the
-// wizards read, the mode processors (detector, palpation, capacitive
-// readout), the recorder and the recording's metadata, and it moves the
-// processors' events and readings into the store itself. Owners only
-// observe it and call poll() now and then.
+// wizards read, a unit for each mode the channels feed (LiveModeUnit.h:
+// the mode's processor, its zero, its lists), the recorder and the
+// recording's metadata, and it has the units move their events and
+// readings into the store. Owners only observe it and call poll() now and
+// then.
 //
 // Rules it keeps, so no owner can break them:
 // - a mode runs only on channels that can play its roles
@@ -43,6 +44,8 @@
 #include "core/storage/Recorder.h"
 #include "devices/Acquisition.h"
 #include "devices/BlockSource.h"
+#include "devices/session/LiveModeUnit.h"
+#include "devices/session/LiveRecords.h"
 
 #include <cstdint>
 #include <map>
@@ -85,45 +88,6 @@ struct LiveSessionOptions {
     double panelSpacing_m = core::detector::kPrototypeSpacing_m;
     // Roles given to the device's channels by name (core/modes/ChannelRoles.h).
     core::RoleAssignment roles;
-};
-
-// The clock of the live lists (defects, presses) and what they are.
-enum class LiveClock {
-    SinceConnect,  // no recording: seconds since the device connected; nothing of it stored
-    Recording,     // the recording's seconds, as stored
-    Recorded,      // the stopped recording's, exactly as stored, until the next event
-};
-
-struct LiveLists {
-    // Changes whenever the lists start again (a recording starts, the
-    // first event after a stop, other roles): a view clears and refills.
-    std::uint64_t generation = 0;
-    LiveClock clock = LiveClock::SinceConnect;
-    std::int64_t session = 0;  // the recording's (Recording, Recorded)
-    double origin_s = 0.0;     // the stream time of the clock's 0 (since connect: 0)
-};
-
-// A completed press on the lists' clock (LiveLists), the site it was taken
-// at (empty without a site grid), and whether it went into the recording.
-struct PressRecord {
-    core::compliance::PressReading press;
-    std::string site;
-    bool stored = false;  // went into the recording
-};
-
-struct RecordingSummary {
-    std::int64_t session = 0;
-    core::storage::RecorderStats stats;
-    std::optional<core::Verdict> verdict;  // the automatic one, stored with the session (panel scan)
-    std::size_t defects = 0;               // of this recording's panel: crossings
-    std::size_t sites = 0;                 // where they are: a defect crossed N times is one site
-    double end_s = 0.0;                    // session time of the last sample
-    // An end that was not a stop: the probe went silent (lost, and not back
-    // by the stop) at lostAt_s, and the samples to the stop are a gap;
-    // or the link failed for good (why, in stoppedBecause).
-    std::optional<double> lostAt_s;
-    std::uint64_t samplesLostAtEnd = 0;
-    std::string stoppedBecause;
 };
 
 class LiveSession {
@@ -176,10 +140,14 @@ public:
     const core::sensors::SensorProfile* profile(core::Mode mode) const;
     const std::vector<core::storage::StoredCalibration>& calibrations(core::Mode mode) const;
 
-    // The processors, for the views; null when the channels cannot feed them.
-    std::shared_ptr<core::detector::LiveDetection> detection() const { return m_detection; }
-    std::shared_ptr<core::compliance::LivePalpation> palpation() const { return m_palpation; }
-    std::shared_ptr<core::capacitive::LiveCapacitive> capacitive() const { return m_capacitive; }
+    // A mode's unit; null when the channels cannot feed the mode or it has
+    // none (general).
+    const LiveModeUnit* unit(core::Mode mode) const;
+    // The built-in modes' processors, for their views; null when the
+    // channels cannot feed them.
+    std::shared_ptr<core::detector::LiveDetection> detection() const;
+    std::shared_ptr<core::compliance::LivePalpation> palpation() const;
+    std::shared_ptr<core::capacitive::LiveCapacitive> capacitive() const;
 
     // The current mode's zero; nothing when taken, else why not.
     std::optional<std::string> tare();
@@ -210,8 +178,8 @@ public:
     // The lists the views show, on the clock listClock() says: the panel's
     // defects and the presses (see LiveLists).
     const LiveLists& lists() const { return m_lists; }
-    const std::vector<core::detector::DefectEvent>& panelDefects() const { return m_defects; }
-    const std::vector<PressRecord>& presses() const { return m_presses; }
+    const std::vector<core::detector::DefectEvent>& panelDefects() const;
+    const std::vector<PressRecord>& presses() const;
     // The panel's defects grouped into sites (core/detector/DefectSites.h),
     // which the automatic verdict counts.
     core::detector::SiteGrouping panelSites() const;
@@ -238,14 +206,10 @@ private:
     void buildAll();
     void startLists(LiveClock clock);
     double listTime_s(double streamTime_s) const;
-    core::detector::DetectorParameters detectorParameters() const;
-    std::optional<core::storage::StoredCalibration> newestCalibration(std::string_view kind, const std::string& sensor);
-    std::optional<std::string> buildPalpation(bool inheritZero);
-    std::optional<std::string> buildCapacitive(bool inheritZero);
-    void buildDetection();
-    void takeDefects();
-    void takePresses();
-    void takeZeros();
+    LiveModeUnit* unitOf(core::Mode mode) const;
+    template <typename Unit>
+    const Unit* unitOfType() const;
+    void takeResults();  // each unit's completed results and zeros
     void takeNotices();
     void recordStandingFaults();
     void recordUnstoppedEnd(RecordingSummary& summary);
@@ -257,16 +221,13 @@ private:
     std::shared_ptr<core::LiveBuffer> m_buffer;
     std::shared_ptr<core::storage::RecordingTap> m_tap;
     std::vector<core::ChannelDescriptor> m_channels;  // the source's, with the roles given
-    std::shared_ptr<core::SinkSlot> m_detectionSlot, m_palpationSlot, m_capacitiveSlot;
-    std::shared_ptr<core::detector::LiveDetection> m_detection;
-    std::shared_ptr<core::compliance::LivePalpation> m_palpation;
-    std::shared_ptr<core::capacitive::LiveCapacitive> m_capacitive;
-    std::map<core::Mode, std::vector<core::storage::StoredCalibration>> m_calibrations;
-    core::Mode m_mode = core::Mode::PanelScan;
+    // A slot per mode in the acquisition, made before it streams; a unit
+    // rebuilt goes into its mode's slot while the device streams.
+    std::map<core::Mode, std::shared_ptr<core::SinkSlot>> m_slots;
+    std::map<core::Mode, std::unique_ptr<LiveModeUnit>> m_units;
+    core::Mode m_mode = core::Mode::General;
     std::shared_ptr<core::storage::Recorder> m_recorder;
     core::storage::SessionMetadata m_metadata;  // of the recording
-    std::vector<core::detector::DefectEvent> m_defects;
-    std::vector<PressRecord> m_presses;
     LiveLists m_lists;
     std::optional<core::compliance::SiteGrid> m_siteGrid;
     std::string m_site;

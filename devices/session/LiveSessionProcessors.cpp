@@ -1,17 +1,16 @@
-// LiveSession: building each mode's processor from the device's channels,
-// the mode's profile and the newest calibrations in the store, and
-// rebuilding it when the profile or the calibrations change.
+// LiveSession: building each mode's unit (devices/session/LiveModeUnits)
+// on the device's channels, the mode's profile and the store's newest
+// calibrations, rebuilding it when they change, and the built-in units'
+// parts the views read.
 #include "devices/session/LiveSession.h"
 
 #include "core/ModeCapability.h"
 #include "core/SinkSlot.h"
-#include "core/calibration/CalibrationRecord.h"
-#include "core/capacitive/LiveCapacitive.h"
-#include "core/compliance/LivePalpation.h"
-#include "core/detector/LiveDetection.h"
 #include "core/modes/ModeDefinition.h"
 #include "core/sensors/BuiltInProfiles.h"
-#include "core/storage/SessionStore.h"
+#include "devices/session/modes/CapacitiveUnit.h"
+#include "devices/session/modes/PalpationUnit.h"
+#include "devices/session/modes/PanelScanUnit.h"
 
 #include <stdexcept>
 
@@ -26,8 +25,8 @@ const core::sensors::SensorProfile* LiveSession::profile(core::Mode mode) const
 const std::vector<core::storage::StoredCalibration>& LiveSession::calibrations(core::Mode mode) const
 {
     static const std::vector<core::storage::StoredCalibration> none;
-    const auto found = m_calibrations.find(mode);
-    return found == m_calibrations.end() ? none : found->second;
+    const auto* unit = this->unit(mode);
+    return unit ? unit->calibrations() : none;
 }
 
 std::optional<std::string> LiveSession::setProfile(core::Mode mode, core::sensors::SensorProfile profile)
@@ -76,122 +75,92 @@ std::optional<std::string> LiveSession::setStorePath(const std::string& path)
     return std::nullopt;
 }
 
-// Builds `mode`'s processor; returns the problem when it cannot (a bad
-// profile, a bad calibration), in which case the mode runs without one.
-// `inheritZero`: the new processor goes on from the old one's zero (the
-// same channels, another profile or calibration).
+// Builds `mode`'s unit (none for a mode without one); returns the problem
+// when it cannot (a bad profile: the unit it would replace, if any, runs
+// on) or reads through less than asked (a calibration it refused).
+// `inheritZero`: the new unit goes on from the old one's zero (the same
+// channels, another profile or calibration).
 std::optional<std::string> LiveSession::build(core::Mode mode, bool inheritZero)
 {
     if (core::definitionOf(mode).profile != core::ProfileType::None && !profile(mode)) {
         auto builtIn = core::sensors::builtInProfile(mode);
         m_options.profiles.emplace(mode, std::move(*builtIn));
     }
-    switch (mode) {
-    case core::Mode::PanelScan:
-        buildDetection();
-        return std::nullopt;
-    case core::Mode::Palpation:
-        return buildPalpation(inheritZero);
-    case core::Mode::Capacitive:
-        return buildCapacitive(inheritZero);
-    case core::Mode::General:
-        return std::nullopt;  // the channels are recorded as they come
+    std::string refused;
+    const LiveUnitSetup setup{m_channels,
+                              source().nominalSampleRate_hz(),
+                              m_options.displaySeconds,
+                              m_options.storePath,
+                              profile(mode),
+                              m_options.panelSpacing_m,
+                              inheritZero ? unitOf(mode) : nullptr,
+                              &m_problems,
+                              &refused};
+    std::unique_ptr<LiveModeUnit> built;
+    try {
+        built = makeLiveUnit(mode, setup);
+    } catch (const std::invalid_argument& e) {
+        return e.what();
     }
+    m_slots.at(mode)->set(built ? built->sink() : nullptr);
+    if (built)
+        m_units[mode] = std::move(built);
+    else
+        m_units.erase(mode);
+    if (!refused.empty()) return refused;
     return std::nullopt;
 }
 
-void LiveSession::buildDetection()
+LiveModeUnit* LiveSession::unitOf(core::Mode mode) const
 {
-    const auto& channels = m_channels;
-    const double rate_hz = source().nominalSampleRate_hz();
-    core::detector::LiveDetectionSettings settings;
-    try {
-        settings.parameters.lags_s = core::detector::liveLags_s(rate_hz);
-        settings.spacing_m = m_options.panelSpacing_m;
-        m_detection = std::make_shared<core::detector::LiveDetection>(
-            *core::modeChannels(core::Mode::PanelScan, channels), rate_hz, settings, m_options.displaySeconds);
-        m_detectionSlot->set(m_detection);
-    } catch (const std::invalid_argument& e) {
-        m_problems.push_back(std::string("the surface-deflection detector cannot run on this stream: ") + e.what());
-    }
+    const auto found = m_units.find(mode);
+    return found == m_units.end() ? nullptr : found->second.get();
 }
 
-// A store that exists but cannot be read is a problem to tell: the
-// processor then reads through the nominal values, and says so.
-std::optional<core::storage::StoredCalibration> LiveSession::newestCalibration(std::string_view kind,
-                                                                               const std::string& sensor)
+const LiveModeUnit* LiveSession::unit(core::Mode mode) const
 {
-    try {
-        return core::storage::newestCalibrationIn(m_options.storePath, kind, sensor);
-    } catch (const core::storage::StorageError& e) {
-        m_problems.push_back("the calibrations of '" + sensor + "' could not be read from " + m_options.storePath +
-                             " (its nominal values are used): " + e.what());
-        return std::nullopt;
-    }
+    return unitOf(mode);
 }
 
-std::optional<std::string> LiveSession::buildPalpation(bool inheritZero)
+// The built-in modes' parts the views read, from the unit of that type.
+template <typename Unit>
+const Unit* LiveSession::unitOfType() const
 {
-    const auto& probe = std::get<core::sensors::CompliancePairProfile>(m_options.profiles.at(core::Mode::Palpation));
-    const double rate_hz = source().nominalSampleRate_hz();
-    // Each beam reads through its newest gauge-factor calibration, if any.
-    std::vector<core::storage::StoredCalibration> newest;
-    for (const bool stiff : {true, false}) {
-        if (auto record = newestCalibration(core::calibration::kGaugeFactorKind,
-                                            core::calibration::beamSensorName(probe.name, stiff)))
-            newest.push_back(std::move(*record));
-    }
-    std::vector<core::calibration::CalibrationRecord> records;
-    for (const auto& stored : newest) records.push_back(stored.record);
-    std::vector<std::size_t> usable;
-    const auto settings = core::compliance::palpationSettings(probe, rate_hz, records, &usable);
-    auto& used = m_calibrations[core::Mode::Palpation];
-    used.clear();
-    for (const std::size_t i : usable) used.push_back(newest[i]);
-    try {
-        auto built =
-            std::make_shared<core::compliance::LivePalpation>(m_channels, rate_hz, settings, m_options.displaySeconds);
-        if (inheritZero && m_palpation) built->inheritZero(*m_palpation);
-        m_palpation = std::move(built);
-    } catch (const std::invalid_argument& e) {
-        m_palpation.reset();
-        used.clear();
-        m_palpationSlot->set(nullptr);
-        return "the profile '" + probe.name + "' cannot be used: " + e.what();
-    }
-    m_palpationSlot->set(m_palpation);
-    return std::nullopt;
+    for (const auto& [mode, unit] : m_units)
+        if (const auto* typed = dynamic_cast<const Unit*>(unit.get())) return typed;
+    return nullptr;
 }
 
-std::optional<std::string> LiveSession::buildCapacitive(bool inheritZero)
+std::shared_ptr<core::detector::LiveDetection> LiveSession::detection() const
 {
-    const auto& probe = std::get<core::sensors::CapacitiveBeamProfile>(m_options.profiles.at(core::Mode::Capacitive));
-    std::optional<std::string> problem;
-    auto& used = m_calibrations[core::Mode::Capacitive];
-    used.clear();
-    try {
-        std::vector<core::storage::StoredCalibration> newest;
-        if (auto record = newestCalibration(core::calibration::kCapacitiveKind, probe.name))
-            newest.push_back(std::move(*record));
-        std::vector<core::calibration::CalibrationRecord> records;
-        for (const auto& stored : newest) records.push_back(stored.record);
-        std::optional<std::size_t> usable;
-        std::string refused;
-        const auto [sensitivity, drift] = core::capacitive::readoutSettings(probe, records, &usable, &refused);
-        if (usable) used.push_back(newest[*usable]);
-        if (!refused.empty()) problem = refused;
-        auto built = std::make_shared<core::capacitive::LiveCapacitive>(m_channels, source().nominalSampleRate_hz(),
-                                                                        sensitivity, drift, m_options.displaySeconds);
-        if (inheritZero && m_capacitive) built->inheritBaseline(*m_capacitive);
-        m_capacitive = std::move(built);
-    } catch (const std::invalid_argument& e) {
-        m_capacitive.reset();
-        used.clear();
-        m_capacitiveSlot->set(nullptr);
-        return "the profile '" + probe.name + "' cannot be used: " + e.what();
-    }
-    m_capacitiveSlot->set(m_capacitive);
-    return problem;
+    const auto* scan = unitOfType<PanelScanUnit>();
+    return scan ? scan->detection() : nullptr;
+}
+
+std::shared_ptr<core::compliance::LivePalpation> LiveSession::palpation() const
+{
+    const auto* palpation = unitOfType<PalpationUnit>();
+    return palpation ? palpation->palpation() : nullptr;
+}
+
+std::shared_ptr<core::capacitive::LiveCapacitive> LiveSession::capacitive() const
+{
+    const auto* capacitive = unitOfType<CapacitiveUnit>();
+    return capacitive ? capacitive->capacitive() : nullptr;
+}
+
+const std::vector<core::detector::DefectEvent>& LiveSession::panelDefects() const
+{
+    static const std::vector<core::detector::DefectEvent> none;
+    const auto* scan = unitOfType<PanelScanUnit>();
+    return scan ? scan->defects() : none;
+}
+
+const std::vector<PressRecord>& LiveSession::presses() const
+{
+    static const std::vector<PressRecord> none;
+    const auto* palpation = unitOfType<PalpationUnit>();
+    return palpation ? palpation->presses() : none;
 }
 
 }  // namespace tactiscope::devices::session

@@ -9,18 +9,11 @@ namespace tactiscope::ui {
 QWizard* openCalibrationWizard(core::Mode mode, CalibrationContext context, QWidget* parent,
                                std::function<void(const QString& sensor)> stored)
 {
+    // The modes that read a stored calibration, and their wizards.
     CalibrationWizard* wizard = nullptr;
-    switch (mode) {
-    case core::Mode::PanelScan:
-    case core::Mode::General:
-        return nullptr;
-    case core::Mode::Palpation:
-        wizard = new GaugeFactorWizard(std::move(context), parent);
-        break;
-    case core::Mode::Capacitive:
-        wizard = new CapacitiveWizard(std::move(context), parent);
-        break;
-    }
+    if (mode == core::Mode::Palpation) wizard = new GaugeFactorWizard(std::move(context), parent);
+    if (mode == core::Mode::Capacitive) wizard = new CapacitiveWizard(std::move(context), parent);
+    if (!wizard) return nullptr;
     QObject::connect(wizard, &CalibrationWizard::calibrationStored, parent,
                      [stored](std::int64_t, const QString& sensor) { stored(sensor); });
     wizard->setAttribute(Qt::WA_DeleteOnClose);

@@ -1,5 +1,7 @@
 // ReportDocument: the report's HTML, its plot resource, and the PDF.
 #include "ui/report/ReportDocument.h"
+
+#include "core/modes/ModeDefinition.h"
 #include "ui/NumberText.h"
 #include "ui/VocabularyText.h"
 
@@ -94,9 +96,10 @@ QString header(const core::report::ReportData& data)
     html += row(QObject::tr("Device"), device);
     html += row(QObject::tr("Sensor"), orDash(data.sensorName));
     if (!data.derivedBasis.empty())
-        html += row(QObject::tr("Computed from"),
-                    text(data.derivedBasis) +
-                        (m.mode == core::Mode::PanelScan ? QString() : QObject::tr(" and the zeros recorded")));
+        html +=
+            row(QObject::tr("Computed from"),
+                text(data.derivedBasis) +
+                    (core::definitionOf(m.mode).noZero.empty() ? QObject::tr(" and the zeros recorded") : QString()));
     else if (!data.derivedProblem.empty())
         html += row(QObject::tr("Physical quantities"),
                     QObject::tr("not computed: %1; the plot shows the raw channels").arg(text(data.derivedProblem)));
@@ -277,7 +280,7 @@ QString eventTables(const core::report::ReportData& data, QTextDocument& documen
         if (e.kind != core::EventKind::Defect)
             others.push_back({number(e.start_s, 3), wordText(e.kind), orDash(e.note)});
     }
-    if (data.session.metadata.mode == core::Mode::PanelScan || anyDefect) html += defectTables(data);
+    if (core::definitionOf(data.session.metadata.mode).detectsDefects || anyDefect) html += defectTables(data);
     if (data.session.metadata.mode == core::Mode::Palpation) {
         html += palpationSection(data, document);
     } else if (!data.readings.empty()) {
@@ -334,7 +337,7 @@ std::unique_ptr<QTextDocument> buildReportDocument(const core::report::ReportDat
                 .arg(plotUrl.toString())
                 .arg(kTextWidth_px)
                 .arg(plotHeight);
-    const QString shaded = data.session.metadata.mode == core::Mode::PanelScan
+    const QString shaded = core::definitionOf(data.session.metadata.mode).detectsDefects
                                ? QObject::tr("Shaded: defects (orange A then B, purple B then A), lost samples "
                                              "(grey); dashed: markers; teal dashed: the detector's threshold.")
                                : QObject::tr("Shaded: readings (green), lost samples (grey); dashed: markers.");

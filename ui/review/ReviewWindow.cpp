@@ -1,6 +1,7 @@
 // ReviewWindow: header, plot, record list, notes, replay, re-analysis and exports.
 #include "ui/review/ReviewWindow.h"
 
+#include "core/modes/ModeDefinition.h"
 #include "core/storage/OpenSessionSource.h"
 
 #include "ui/NumberText.h"
@@ -205,12 +206,11 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionSour
     bottom->addWidget(m_list);
     // The mode's own account beside the list: a panel's re-analysis, a
     // palpation's presses and sites, a capacitive beam's calibration.
-    switch (meta.mode) {
-    case core::Mode::PanelScan:
+    // A mode without an account of its own (general) has the list alone.
+    if (meta.mode == core::Mode::PanelScan) {
         m_reanalysis = new ReanalysisPanel(storePath, *m_store, m_session, this);
         bottom->addWidget(m_reanalysis);
-        break;
-    case core::Mode::Palpation:
+    } else if (meta.mode == core::Mode::Palpation) {
         m_presses = new PressesPanel(*m_store, m_session, this);
         connect(m_presses->reanalysis(), &PalpationReanalysisBox::analysed, this, &ReviewWindow::refreshRecords);
         connect(m_presses->reanalysis(), &PalpationReanalysisBox::saved, this, &ReviewWindow::refreshRecords);
@@ -219,12 +219,8 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionSour
             m_plot->setCursorTime(start_s);
         });
         bottom->addWidget(m_presses);
-        break;
-    case core::Mode::Capacitive:
+    } else if (meta.mode == core::Mode::Capacitive) {
         bottom->addWidget(capacitiveBasisBox());
-        break;
-    case core::Mode::General:
-        break;  // the channels as they came: the list of events and notes is the account
     }
     // A palpation's presses, sites and scale need the room; a panel's list of crossings does.
     const bool accountFirst = meta.mode == core::Mode::Palpation;
@@ -484,7 +480,7 @@ void ReviewWindow::createActions()
     });
     undo->setShortcut(QKeySequence::Undo);
     undo->setToolTip(tr("Bring back the last deleted note (Ctrl+Z)"));
-    if (m_session.metadata.mode == core::Mode::PanelScan) {
+    if (core::definitionOf(m_session.metadata.mode).detectsDefects) {  // the modes with a verdict
         QAction* verdict = bar->addAction(tr("Verdict…"), this, &ReviewWindow::askVerdict);
         verdict->setObjectName(QStringLiteral("verdictAction"));
         verdict->setToolTip(tr("Keep or change the panel's verdict, with a note; the report shows who decided what"));

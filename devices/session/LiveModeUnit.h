@@ -1,0 +1,116 @@
+// One mode's live part, as the live session builds it for each mode the
+// device's channels feed (Scopy's plugins and sigrok's decoders are the
+// model: the host asks, the unit knows its mode): its processor on the
+// acquisition thread, the zero it reads on, and what it moves from the
+// processor into the session's lists and, while recording in its mode,
+// into the store. LiveSession asks its units instead of switching on the
+// mode. Each mode's unit is a file of devices/session/modes/, and
+// LiveModeUnits.cpp is the one list of them, as core/modes/ModeRegistry is
+// core's; a mode without a unit (general) records its channels as they come.
+//
+// Threading: every call from the session's owner thread; sink() is fed on
+// the acquisition thread.
+#pragma once
+
+#include "core/BlockSink.h"
+#include "core/ChannelDescriptor.h"
+#include "core/Vocabulary.h"
+#include "core/sensors/SensorProfile.h"
+#include "core/storage/SessionStore.h"
+#include "devices/session/LiveRecords.h"
+
+#include <functional>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tactiscope::core::storage {
+class Recorder;
+}
+
+namespace tactiscope::devices::session {
+
+class LiveModeUnit;
+
+// What a unit is built from.
+struct LiveUnitSetup {
+    std::vector<core::ChannelDescriptor> channels;  // with their roles
+    double rate_hz = 0.0;
+    double displaySeconds = 0.0;
+    std::string storePath;                                  // its calibrations
+    const core::sensors::SensorProfile* profile = nullptr;  // the mode's, if it takes one
+    double panelSpacing_m = 0.0;
+    // The unit it replaces on the same channels (another profile or
+    // calibration): its zero goes on. Null on new channels.
+    const LiveModeUnit* previous = nullptr;
+    // Problems met building (a calibration that cannot be read): one
+    // sentence each, for the session to tell.
+    std::vector<std::string>* problems = nullptr;
+    // Why a unit that was built does not read through what it was asked to
+    // (a calibration it refused), for the caller that asked.
+    std::string* refused = nullptr;
+};
+
+// What a unit's take() may do with the session's state.
+struct LiveTake {
+    // A recording in the unit's mode; null when not recording, and while
+    // another mode records (the unit then shows and stores nothing).
+    core::storage::Recorder* recorder = nullptr;
+    bool recordingOtherMode = false;
+    // A stream time on the lists' clock (the recording's as stored, else
+    // since connect).
+    std::function<double(double)> listTime_s;
+    // While recording, the stream time of the last sample recorded (before
+    // the first: before everything): a result that ends after it was
+    // completed from samples the recording does not have (the processors
+    // run on past a stop) and waits for the lists after it.
+    double recordedUntil_s = std::numeric_limits<double>::infinity();
+    // Called before anything is added to a list: after a stop, the first
+    // new entry starts the lists again.
+    std::function<void()> adding;
+    // Where on the subject the next reading is taken (a phantom's grid
+    // cell, `record --site`), and the call that moves the grid on once a
+    // reading there was stored.
+    std::function<std::string()> site;
+    std::function<void()> siteStored;
+};
+
+class LiveModeUnit {
+public:
+    virtual ~LiveModeUnit() = default;
+
+    virtual core::Mode mode() const = 0;
+    // What the acquisition feeds; set once.
+    virtual std::shared_ptr<core::BlockSink> sink() const = 0;
+    // The calibrations it reads through (stored with a recording).
+    virtual const std::vector<core::storage::StoredCalibration>& calibrations() const;
+
+    // The zero: nothing when taken, else why not (the processor's rule).
+    virtual std::optional<std::string> tare() = 0;
+    // At the record press: the zero in use, into the recording of its mode.
+    virtual void startRecording(core::storage::Recorder& recorder);
+    // Each poll: completed results into the lists and the store; the zeros
+    // taken since into `recorder` (a recording of its mode) or dropped.
+    virtual void take(const LiveTake& take) = 0;
+    virtual void takeZeros(core::storage::Recorder* recorder);
+    // The lists start again (a record press, other roles).
+    virtual void clearLists() {}
+    // At the end of a recording of its mode, after the last take():
+    // its count in the summary and, for a whole recording (`whole`: not
+    // cut by a lost probe), the automatic verdict decided.
+    virtual std::optional<core::storage::VerdictDecision> finishRecording(RecordingSummary& summary, bool whole);
+};
+
+// The unit of `mode` on the setup's channels; none for a mode without one
+// (general). Throws std::invalid_argument when the probe or the channels
+// cannot be used (a bad profile), saying why.
+std::unique_ptr<LiveModeUnit> makeLiveUnit(core::Mode mode, const LiveUnitSetup& setup);
+
+// A unit factory for a mode defined elsewhere (a test's, a plugin's).
+using LiveUnitFactory = std::function<std::unique_ptr<LiveModeUnit>(const LiveUnitSetup&)>;
+void registerLiveUnit(core::Mode mode, LiveUnitFactory factory);
+void unregisterLiveUnit(core::Mode mode);
+
+}  // namespace tactiscope::devices::session

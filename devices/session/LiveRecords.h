@@ -1,0 +1,55 @@
+// What the live session says of itself to its owners and its mode units:
+// the lists' clock, a press as the views list it, and a recording's
+// summary at its end.
+#pragma once
+
+#include "core/Vocabulary.h"
+#include "core/compliance/StiffnessReadings.h"
+#include "core/storage/Recorder.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace tactiscope::devices::session {
+
+// The clock of the live lists (defects, presses) and what they are.
+enum class LiveClock {
+    SinceConnect,  // no recording: seconds since the device connected; nothing of it stored
+    Recording,     // the recording's seconds, as stored
+    Recorded,      // the stopped recording's, exactly as stored, until the next event
+};
+
+struct LiveLists {
+    // Changes whenever the lists start again (a recording starts, the
+    // first event after a stop, other roles): a view clears and refills.
+    std::uint64_t generation = 0;
+    LiveClock clock = LiveClock::SinceConnect;
+    std::int64_t session = 0;  // the recording's (Recording, Recorded)
+    double origin_s = 0.0;     // the stream time of the clock's 0 (since connect: 0)
+};
+
+// A completed press on the lists' clock (LiveLists), the site it was taken
+// at (empty without a site grid), and whether it went into the recording.
+struct PressRecord {
+    core::compliance::PressReading press;
+    std::string site;
+    bool stored = false;  // went into the recording
+};
+
+struct RecordingSummary {
+    std::int64_t session = 0;
+    core::storage::RecorderStats stats;
+    std::optional<core::Verdict> verdict;  // the automatic one, stored with the session (panel scan)
+    std::size_t defects = 0;               // of this recording's panel: crossings
+    std::size_t sites = 0;                 // where they are: a defect crossed N times is one site
+    double end_s = 0.0;                    // session time of the last sample
+    // An end that was not a stop: the probe went silent (lost, and not back
+    // by the stop) at lostAt_s, and the samples to the stop are a gap;
+    // or the link failed for good (why, in stoppedBecause).
+    std::optional<double> lostAt_s;
+    std::uint64_t samplesLostAtEnd = 0;
+    std::string stoppedBecause;
+};
+
+}  // namespace tactiscope::devices::session

@@ -1,0 +1,90 @@
+// PalpationUnit: the probe's forces, its presses and zeros.
+#include "devices/session/modes/PalpationUnit.h"
+
+#include "core/calibration/CalibrationRecord.h"
+#include "core/storage/Recorder.h"
+#include "devices/session/modes/StoredCalibrationLookup.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+#include <variant>
+
+namespace tactiscope::devices::session {
+
+PalpationUnit::PalpationUnit(const LiveUnitSetup& setup)
+{
+    const auto& probe = std::get<core::sensors::CompliancePairProfile>(*setup.profile);
+    // Each beam reads through its newest gauge-factor calibration, if any.
+    std::vector<core::storage::StoredCalibration> newest;
+    for (const bool stiff : {true, false}) {
+        if (auto record = newestCalibration(setup, core::calibration::kGaugeFactorKind,
+                                            core::calibration::beamSensorName(probe.name, stiff)))
+            newest.push_back(std::move(*record));
+    }
+    std::vector<core::calibration::CalibrationRecord> records;
+    for (const auto& stored : newest) records.push_back(stored.record);
+    std::vector<std::size_t> usable;
+    const auto settings = core::compliance::palpationSettings(probe, setup.rate_hz, records, &usable);
+    try {
+        m_palpation = std::make_shared<core::compliance::LivePalpation>(setup.channels, setup.rate_hz, settings,
+                                                                        setup.displaySeconds);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("the profile '" + probe.name + "' cannot be used: " + e.what());
+    }
+    for (const std::size_t i : usable) m_calibrations.push_back(newest[i]);
+    if (const auto* previous = dynamic_cast<const PalpationUnit*>(setup.previous))
+        m_palpation->inheritZero(*previous->m_palpation);
+}
+
+// The zero in use reads the session's first samples (it applies from
+// index 0); those taken before were dropped.
+void PalpationUnit::startRecording(core::storage::Recorder& recorder)
+{
+    if (const auto zero = m_palpation->currentZero())
+        recorder.addZero(zero->firstIndex, core::compliance::zeroJson(zero->zero));
+}
+
+void PalpationUnit::take(const LiveTake& take)
+{
+    auto found = std::exchange(m_later, {});
+    for (auto& press : m_palpation->takeReadings()) found.push_back(std::move(press));
+    if (take.recordingOtherMode) return;
+    const auto after = std::ranges::find_if(found, [&](const auto& p) { return p.end_s > take.recordedUntil_s; });
+    m_later.assign(after, found.end());
+    found.erase(after, found.end());
+    if (found.empty()) return;
+    take.adding();
+    std::vector<core::storage::SessionReading> stored;
+    for (auto& press : found) {
+        press.start_s = take.listTime_s(press.start_s);
+        press.end_s = take.listTime_s(press.end_s);
+        PressRecord record{std::move(press), take.site(), false};
+        // Out of range is a state, not a stiffness: shown, not stored as a number.
+        if (take.recorder && record.press.stiffness.range == core::sensors::ComplianceRange::InRange) {
+            core::storage::SessionReading reading;
+            reading.kind = core::ReadingKind::Compliance;
+            reading.quantity = "stiffness";
+            reading.unit = "N/m";
+            reading.start_s = record.press.start_s;
+            reading.end_s = record.press.end_s;
+            reading.value = record.press.stiffness.objectStiffness_n_per_m;
+            reading.standardError = record.press.uncertainty_n_per_m();
+            reading.site = record.site;
+            reading.detailsJson = core::compliance::pressDetailsJson(record.press);
+            stored.push_back(std::move(reading));
+            record.stored = true;
+            take.siteStored();  // the site has its reading: the next press is the next site's
+        }
+        m_presses.push_back(std::move(record));
+    }
+    if (!stored.empty()) take.recorder->addReadings(std::move(stored));
+}
+
+void PalpationUnit::takeZeros(core::storage::Recorder* recorder)
+{
+    for (const auto& zero : m_palpation->takeZeroChanges())
+        if (recorder) recorder->addZero(zero.firstIndex, core::compliance::zeroJson(zero.zero));
+}
+
+}  // namespace tactiscope::devices::session

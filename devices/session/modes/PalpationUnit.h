@@ -1,0 +1,37 @@
+// The palpation mode's live part: the compliance probe's forces through
+// its profile and each beam's newest gauge-factor calibration, the presses
+// on the lists' clock with the site each was taken at, stored as stiffness
+// readings (in range only) while a palpation records, and the zeros the
+// forces read on.
+#pragma once
+
+#include "core/compliance/LivePalpation.h"
+#include "devices/session/LiveModeUnit.h"
+
+namespace tactiscope::devices::session {
+
+class PalpationUnit final : public LiveModeUnit {
+public:
+    // Throws std::invalid_argument for a probe or channels it cannot use.
+    explicit PalpationUnit(const LiveUnitSetup& setup);
+
+    core::Mode mode() const override { return core::Mode::Palpation; }
+    std::shared_ptr<core::BlockSink> sink() const override { return m_palpation; }
+    const std::vector<core::storage::StoredCalibration>& calibrations() const override { return m_calibrations; }
+    std::optional<std::string> tare() override { return m_palpation->tare(); }
+    void startRecording(core::storage::Recorder& recorder) override;
+    void take(const LiveTake& take) override;
+    void takeZeros(core::storage::Recorder* recorder) override;
+    void clearLists() override { m_presses.clear(); }
+
+    const std::shared_ptr<core::compliance::LivePalpation>& palpation() const { return m_palpation; }
+    const std::vector<PressRecord>& presses() const { return m_presses; }
+
+private:
+    std::vector<core::storage::StoredCalibration> m_calibrations;
+    std::shared_ptr<core::compliance::LivePalpation> m_palpation;
+    std::vector<PressRecord> m_presses;
+    std::vector<core::compliance::PressReading> m_later;  // stream times, after the samples recorded
+};
+
+}  // namespace tactiscope::devices::session

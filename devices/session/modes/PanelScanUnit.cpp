@@ -1,0 +1,78 @@
+// PanelScanUnit: the detector, the panel's defects and its verdict.
+#include "devices/session/modes/PanelScanUnit.h"
+
+#include "core/ModeCapability.h"
+#include "core/modes/ModeDefinition.h"
+#include "core/storage/AutomaticVerdict.h"
+#include "core/storage/DefectRecords.h"
+#include "core/storage/Recorder.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+namespace tactiscope::devices::session {
+namespace {
+
+std::shared_ptr<core::detector::LiveDetection> detectorFor(const LiveUnitSetup& setup)
+{
+    core::detector::LiveDetectionSettings settings;
+    try {
+        settings.parameters.lags_s = core::detector::liveLags_s(setup.rate_hz);
+        settings.spacing_m = setup.panelSpacing_m;
+        return std::make_shared<core::detector::LiveDetection>(
+            *core::modeChannels(core::Mode::PanelScan, setup.channels), setup.rate_hz, settings, setup.displaySeconds);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("the surface-deflection detector cannot run on this stream: ") +
+                                    e.what());
+    }
+}
+
+}  // namespace
+
+PanelScanUnit::PanelScanUnit(const LiveUnitSetup& setup)
+    : m_detection(detectorFor(setup))
+{
+}
+
+std::optional<std::string> PanelScanUnit::tare()
+{
+    return std::string(core::panelScanMode().noZero);
+}
+
+void PanelScanUnit::take(const LiveTake& take)
+{
+    auto found = std::exchange(m_later, {});
+    for (auto& e : m_detection->takeEvents()) found.push_back(e);
+    if (take.recordingOtherMode) return;
+    const auto after = std::ranges::find_if(found, [&](const auto& e) { return e.end_s > take.recordedUntil_s; });
+    m_later.assign(after, found.end());
+    found.erase(after, found.end());
+    if (found.empty()) return;
+    take.adding();
+    for (auto& e : found) {
+        e.start_s = take.listTime_s(e.start_s);
+        e.end_s = take.listTime_s(e.end_s);
+    }
+    m_defects.insert(m_defects.end(), found.begin(), found.end());
+    if (!take.recorder) return;
+    std::vector<core::storage::SessionEvent> stored;
+    stored.reserve(found.size());
+    for (const auto& e : found) stored.push_back(core::storage::defectRecord(e));
+    take.recorder->addEvents(std::move(stored));
+}
+
+// A panel the probe left before the stop was not wholly inspected: no
+// automatic verdict says it passed.
+std::optional<core::storage::VerdictDecision> PanelScanUnit::finishRecording(RecordingSummary& summary, bool whole)
+{
+    summary.defects = m_defects.size();
+    summary.sites = sites().sites.size();
+    if (!whole) return std::nullopt;
+    auto decision = core::storage::automaticDecision(core::storage::kLiveAnalysis, m_defects.size(), summary.sites,
+                                                     m_detection->settings().parameters);
+    summary.verdict = decision.verdict;
+    return decision;
+}
+
+}  // namespace tactiscope::devices::session

@@ -1,0 +1,35 @@
+// The panel-scan mode's live part: the surface-deflection detector on
+// cantilevers A and B, the panel's defects on the lists' clock, stored as
+// defect events while a panel scan records, and the automatic verdict on
+// the panel's sites at its end.
+#pragma once
+
+#include "core/detector/DefectSites.h"
+#include "core/detector/LiveDetection.h"
+#include "devices/session/LiveModeUnit.h"
+
+namespace tactiscope::devices::session {
+
+class PanelScanUnit final : public LiveModeUnit {
+public:
+    // Throws std::invalid_argument when the detector cannot run on the stream.
+    explicit PanelScanUnit(const LiveUnitSetup& setup);
+
+    core::Mode mode() const override { return core::Mode::PanelScan; }
+    std::shared_ptr<core::BlockSink> sink() const override { return m_detection; }
+    std::optional<std::string> tare() override;
+    void take(const LiveTake& take) override;
+    void clearLists() override { m_defects.clear(); }
+    std::optional<core::storage::VerdictDecision> finishRecording(RecordingSummary& summary, bool whole) override;
+
+    const std::shared_ptr<core::detector::LiveDetection>& detection() const { return m_detection; }
+    const std::vector<core::detector::DefectEvent>& defects() const { return m_defects; }
+    core::detector::SiteGrouping sites() const { return core::detector::scanSites(m_defects); }
+
+private:
+    std::shared_ptr<core::detector::LiveDetection> m_detection;
+    std::vector<core::detector::DefectEvent> m_defects;
+    std::vector<core::detector::DefectEvent> m_later;  // stream times, after the samples recorded
+};
+
+}  // namespace tactiscope::devices::session
