@@ -55,19 +55,26 @@ std::optional<std::string> modeRefusal(Mode mode, std::span<const ChannelDescrip
 {
     const auto& definition = definitionOf(mode);
     const auto picked = roleChannels(mode, channels);
-    std::string missing, example;
+    std::string missing;
     for (std::size_t r = 0; r < picked.size(); ++r) {
-        const std::string role(toString(definition.roles[r]));
-        if (!example.empty()) example += ",";
-        example += (r < channels.size() ? channels[r].name : "NAME") + "=" + role;
         if (picked[r] != kNone) continue;
         if (!missing.empty()) missing += ", ";
-        missing += role;
+        missing += toString(definition.roles[r]);
     }
     if (missing.empty()) return std::nullopt;
     return std::string(definition.name) + " needs " + std::string(definition.needs) + ": no channel plays " + missing +
-           "; this device has " + described(channels) + ". Give its channels roles (--roles " + example +
-           ", or the device panel's channel roles), or record in general mode.";
+           "; this device has " + described(channels) + ".";
+}
+
+std::string roleExample(Mode mode, std::span<const ChannelDescriptor> channels)
+{
+    const auto roles = definitionOf(mode).roles;
+    std::string example;
+    for (std::size_t r = 0; r < roles.size(); ++r) {
+        if (!example.empty()) example += ",";
+        example += (r < channels.size() ? channels[r].name : "NAME") + "=" + std::string(toString(roles[r]));
+    }
+    return example;
 }
 
 std::vector<Mode> runnableModes(std::span<const ChannelDescriptor> channels)

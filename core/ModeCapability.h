@@ -26,8 +26,13 @@ namespace tactiscope::core {
 std::optional<std::vector<std::size_t>> modeChannels(Mode mode, std::span<const ChannelDescriptor> channels);
 
 // Nothing when `mode` can run on `channels`; else one sentence naming the
-// roles missing, the channels the device has, and how to give roles.
+// roles missing and the channels the device has. Each front end adds how
+// roles are given there (the command line's --roles, the device panel).
 std::optional<std::string> modeRefusal(Mode mode, std::span<const ChannelDescriptor> channels);
+// The roles `mode` reads given to the device's channels in order, as the
+// front ends show how to give them: "a=cantilever-a,b=cantilever-b"
+// ("NAME=…" where the device has fewer channels).
+std::string roleExample(Mode mode, std::span<const ChannelDescriptor> channels);
 
 // The modes that can run on `channels`, in the registry's order (general
 // is the last built-in one: it runs on any device).

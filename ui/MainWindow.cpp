@@ -3,6 +3,7 @@
 
 #include "ui/central/CentralStoreLink.h"
 
+#include "core/ModeCapability.h"
 #include "core/storage/SessionStore.h"
 #include "core/storage/StoreWorker.h"
 #include "devices/session/LiveSession.h"
@@ -243,8 +244,11 @@ void MainWindow::modeChosen()
             reportProblem(this, {tr("Mode not available"), tr("%1 cannot run on %2.").arg(modeTitle(chosen), device),
                                  QString::fromStdString(*refusal),
                                  tr("The session stays in %1. Give the device's channels roles in the device "
-                                    "panel (Channel roles), or connect the probe made for %2.")
-                                     .arg(modeTitle(m_session->mode()), modeTitle(chosen)),
+                                    "panel (Channel roles: %2), or connect the probe made for %3.")
+                                     .arg(modeTitle(m_session->mode()),
+                                          QString::fromStdString(core::roleExample(chosen, m_session->channels()))
+                                              .replace(QLatin1Char(','), QStringLiteral(", ")),
+                                          modeTitle(chosen)),
                                  QStringLiteral("modeRefusedBox")});
         }
     }

@@ -108,10 +108,12 @@ PanelScanView::PanelScanView(QWidget* parent)
 
     m_events = new QTableWidget(0, 5, this);
     m_events->setObjectName(QStringLiteral("defectTable"));
-    m_events->setHorizontalHeaderLabels({tr("Time (s)"), tr("Order"), tr("Peak R"), tr("Lag (ms)"), tr("mm/s")});
+    m_events->setHorizontalHeaderLabels(
+        {tr("Since connect (s)"), tr("Order"), tr("Peak R"), tr("Lag (ms)"), tr("mm/s")});
     m_events->verticalHeader()->hide();
     m_events->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);              // fits without scrolling
     m_events->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);  // "A then B" on one line
+    m_events->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);  // the clock's name
     m_events->horizontalHeaderItem(4)->setToolTip(tr("Scan speed implied by the lag and the cantilever spacing"));
     m_events->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_events->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -231,6 +233,8 @@ void PanelScanView::showCount()
 {
     const bool recorded = m_clock != devices::session::LiveClock::SinceConnect;
     m_events->horizontalHeaderItem(0)->setText(recorded ? tr("Recording (s)") : tr("Since connect (s)"));
+    m_events->horizontalHeaderItem(0)->setToolTip(recorded ? tr("Seconds of the recording, as stored")
+                                                           : tr("Seconds since the device connected: not recorded"));
     switch (m_clock) {
     case devices::session::LiveClock::Recording:
         m_countLabel->setText(defectCount() == 0

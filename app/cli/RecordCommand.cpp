@@ -4,6 +4,7 @@
 #include "RecordCommand.h"
 
 #include "CliSupport.h"
+#include "core/ModeCapability.h"
 #include "core/sensors/SensorProfile.h"
 #include "core/storage/RecorderLock.h"
 #include "devices/ReconnectingSource.h"
@@ -199,7 +200,13 @@ int runRecord(const QStringList& arguments)
     // own (general for a device that declares none its channels feed).
     if (!mode) mode = session.declaredMode();
     if (const auto refusal = session.setMode(*mode)) {
-        printError(QStringLiteral("cannot record in this mode: %1").arg(QString::fromStdString(*refusal)));
+        // Roles missing: how to give them here.
+        const QString how = session.refusalOf(*mode)
+                                ? QStringLiteral(" Give its channels roles with --roles %1, or record without --mode "
+                                                 "(the general mode records any channels).")
+                                      .arg(toQString(core::roleExample(*mode, session.channels())))
+                                : QString();
+        printError(QStringLiteral("cannot record in this mode: %1%2").arg(QString::fromStdString(*refusal), how));
         return kExitUsage;
     }
     if (profile) {

@@ -103,6 +103,7 @@ int show(SessionSource& store, std::int64_t id, bool json)
         const auto& d = channels[c].descriptor;
         out << (c ? ", " : "") << toQString(d.name) << " ["
             << (d.unit.empty() ? toQString(core::toString(d.kind)) : toQString(d.unit)) << "]";
+        if (d.role) out << " as " << toQString(core::toString(*d.role));
     }
     out << " at " << channels.front().sampleRate_hz << " Hz\n";
     QStringList analyses;

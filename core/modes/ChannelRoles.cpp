@@ -62,9 +62,9 @@ std::vector<ChannelDescriptor> applyRoles(std::span<const ChannelDescriptor> cha
         if (named == result.end()) {
             std::string names;
             for (const auto& channel : channels) names += (names.empty() ? "" : ", ") + channel.name;
-            throw std::invalid_argument("the device has no channel '" + name + "' to give the role " +
+            throw std::invalid_argument("no channel is named '" + name + "' to give the role " +
                                         std::string(toString(role)) +
-                                        " (its channels: " + (names.empty() ? "none" : names) + ")");
+                                        " (the channels: " + (names.empty() ? "none" : names) + ")");
         }
         for (auto& channel : result)
             if (channel.role == role) channel.role.reset();

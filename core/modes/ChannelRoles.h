@@ -27,7 +27,7 @@ std::string roleAssignmentText(const RoleAssignment& roles);
 
 // `channels` with the assigned roles; a role assigned here is taken from any
 // other channel that declared it, so no role is played twice. Throws
-// std::invalid_argument naming a channel the device does not have.
+// std::invalid_argument naming a channel there is not.
 std::vector<ChannelDescriptor> applyRoles(std::span<const ChannelDescriptor> channels, const RoleAssignment& roles);
 
 }  // namespace tactiscope::core

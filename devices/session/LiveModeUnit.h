@@ -19,11 +19,14 @@
 #include "core/storage/SessionStore.h"
 #include "devices/session/LiveRecords.h"
 
+#include <algorithm>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tactiscope::core::storage {
@@ -67,6 +70,10 @@ struct LiveTake {
     // completed from samples the recording does not have (the processors
     // run on past a stop) and waits for the lists after it.
     double recordedUntil_s = std::numeric_limits<double>::infinity();
+    // While recording, the stream time of its first sample: a result that
+    // ended before it (completed late, from samples before the record
+    // press) belongs to no list and is not stored.
+    double recordedFrom_s = -std::numeric_limits<double>::infinity();
     // Called before anything is added to a list: after a stop, the first
     // new entry starts the lists again.
     std::function<void()> adding;
@@ -81,7 +88,6 @@ class LiveModeUnit {
 public:
     virtual ~LiveModeUnit() = default;
 
-    virtual core::Mode mode() const = 0;
     // What the acquisition feeds; set once.
     virtual std::shared_ptr<core::BlockSink> sink() const = 0;
     // The calibrations it reads through (stored with a recording).
@@ -102,6 +108,23 @@ public:
     // cut by a lost probe), the automatic verdict decided.
     virtual std::optional<core::storage::VerdictDecision> finishRecording(RecordingSummary& summary, bool whole);
 };
+
+// For a unit's take(): the results held back before (`later`) and the new
+// ones, in order (they carry stream times in end_s), less those that ended
+// before the recording's first sample (dropped) and those that end after
+// its last, which go back into `later`.
+template <typename Result>
+std::vector<Result> resultsRecorded(std::vector<Result>& later, std::vector<Result> fresh, const LiveTake& take)
+{
+    std::vector<Result> found = std::exchange(later, {});
+    found.insert(found.end(), std::make_move_iterator(fresh.begin()), std::make_move_iterator(fresh.end()));
+    std::erase_if(found, [&](const Result& r) { return r.end_s < take.recordedFrom_s; });
+    const auto after =
+        std::find_if(found.begin(), found.end(), [&](const Result& r) { return r.end_s > take.recordedUntil_s; });
+    later.assign(std::make_move_iterator(after), std::make_move_iterator(found.end()));
+    found.erase(after, found.end());
+    return found;
+}
 
 // The unit of `mode` on the setup's channels; none for a mode without one
 // (general). Throws std::invalid_argument when the probe or the channels

@@ -64,8 +64,8 @@ LiveSession::LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions
 // The units of every mode the channels feed, and none of the others.
 void LiveSession::buildAll()
 {
-    m_units.clear();
     for (const auto& [mode, slot] : m_slots) slot->set(nullptr);
+    m_units.clear();
     for (const core::Mode mode : core::runnableModes(m_channels))
         if (const auto problem = build(mode, false)) m_problems.push_back(*problem);
 }
@@ -374,7 +374,10 @@ void LiveSession::takeResults()
     take.siteStored = [this] {
         if (m_siteGrid) m_siteGrid->advance();
     };
-    if (m_recorder) take.recordedUntil_s = m_recorder->consumedUntil_s().value_or(-1.0);
+    if (m_recorder) {
+        take.recordedUntil_s = m_recorder->consumedUntil_s().value_or(-1.0);
+        take.recordedFrom_s = m_recorder->acquisitionOrigin_s().value_or(take.recordedFrom_s);
+    }
     for (const auto& [mode, unit] : m_units) {
         const bool own = m_recorder && m_metadata.mode == mode;
         take.recorder = own ? m_recorder.get() : nullptr;

@@ -102,7 +102,10 @@ std::optional<std::string> LiveSession::build(core::Mode mode, bool inheritZero)
     } catch (const std::invalid_argument& e) {
         return e.what();
     }
-    m_slots.at(mode)->set(built ? built->sink() : nullptr);
+    const auto slot = m_slots.find(mode);
+    if (slot == m_slots.end())  // registered after this session began: it has no place in the stream
+        return "the " + std::string(core::toString(mode)) + " mode was added after this device connected";
+    slot->second->set(built ? built->sink() : nullptr);
     if (built)
         m_units[mode] = std::move(built);
     else

@@ -95,6 +95,10 @@ TEST(GeneralModeCli, GivenRolesTheSameTextDeviceRecordsAPanelScan)
     EXPECT_GE(events.size(), 7) << show.out.toStdString();
     EXPECT_LE(events.size(), 9);
     for (const auto& event : events) EXPECT_EQ(event.toObject()["kind"].toString(), "defect");
+    // The roles are part of the record.
+    const auto text = runCli({"sessions", "--db", db, "show", "last"});
+    EXPECT_TRUE(text.out.contains(QStringLiteral("a [other] as cantilever-a, b [other] as cantilever-b")))
+        << text.out.toStdString();
 }
 
 TEST(GeneralModeCli, WrongRolesAndAModeWithoutThemAreRefusedWithWhatToDo)
@@ -108,7 +112,7 @@ TEST(GeneralModeCli, WrongRolesAndAModeWithoutThemAreRefusedWithWhatToDo)
 
     const auto noSuchChannel = recordText(dir.path(), db, {"--roles", "q=cantilever-a"});
     EXPECT_EQ(noSuchChannel.exitCode, 2);
-    EXPECT_TRUE(noSuchChannel.err.contains(QStringLiteral("the device has no channel 'q'")))
+    EXPECT_TRUE(noSuchChannel.err.contains(QStringLiteral("no channel is named 'q'")))
         << noSuchChannel.err.toStdString();
 
     const auto noRoles = recordText(dir.path(), db, {"--mode", "panel-scan"});

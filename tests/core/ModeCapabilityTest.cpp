@@ -42,14 +42,13 @@ TEST(ModeCapability, ARefusalNamesTheRolesMissingWhatTheDeviceHasAndHowToGiveRol
     ASSERT_TRUE(refusal);
     // The strains can be the beams; no channel can be the displacement.
     EXPECT_EQ(*refusal, "palpation needs a stiff and a soft beam and a displacement: no channel plays displacement; "
-                        "this device has A (strain), B (strain). Give its channels roles (--roles "
-                        "A=stiff-beam,B=soft-beam,NAME=displacement, or the device panel's channel roles), or "
-                        "record in general mode.");
+                        "this device has A (strain), B (strain).");
+    EXPECT_EQ(roleExample(Mode::Palpation, std::vector{kStrainA, kStrainB}),
+              "A=stiff-beam,B=soft-beam,NAME=displacement");
     const auto none = modeRefusal(Mode::Capacitive, std::vector<ChannelDescriptor>{});
     ASSERT_TRUE(none);
-    EXPECT_EQ(*none, "capacitive needs a capacitance: no channel plays capacitance; this device has none. Give its "
-                     "channels roles (--roles NAME=capacitance, or the device panel's channel roles), or record in "
-                     "general mode.");
+    EXPECT_EQ(*none, "capacitive needs a capacitance: no channel plays capacitance; this device has none.");
+    EXPECT_EQ(roleExample(Mode::Capacitive, std::vector<ChannelDescriptor>{}), "NAME=capacitance");
 }
 
 TEST(ModeCapability, TheRunnableModesOfEachProbeEndWithGeneralWhichRunsOnAnyDevice)
@@ -73,7 +72,7 @@ TEST(ModeCapability, ChannelsGivenRolesFeedAModeWhateverTheirKind)
     const auto refusal = modeRefusal(Mode::PanelScan, board);
     ASSERT_TRUE(refusal);
     EXPECT_NE(refusal->find("no channel plays cantilever-a, cantilever-b"), std::string::npos) << *refusal;
-    EXPECT_NE(refusal->find("--roles a=cantilever-a,b=cantilever-b"), std::string::npos) << *refusal;
+    EXPECT_EQ(roleExample(Mode::PanelScan, board), "a=cantilever-a,b=cantilever-b");
     // …until they are given roles: B first on the wire, A second.
     const auto given = applyRoles(board, parseRoleAssignment("b=cantilever-a, a=cantilever-b"));
     EXPECT_EQ(modeChannels(Mode::PanelScan, given), (std::vector<std::size_t>{1, 0}));

@@ -7,6 +7,7 @@
 // are remembered for the device.
 #include "core/storage/SessionStore.h"
 #include "support/MainWindowHelpers.h"
+#include "support/RelabelledSource.h"
 #include "support/Screenshot.h"
 #include "support/WaitFor.h"
 #include "ui/ChannelRolesBox.h"
@@ -42,26 +43,11 @@ std::unique_ptr<devices::BlockSource> spedUp(const char* scenario)
 
 // A maker's board streaming the panel probe's signals as "a" and "b",
 // without kinds or a mode, identified by its serial number.
-class MakerBoard final : public devices::BlockSource {
-public:
-    MakerBoard()
-        : m_inner(spedUp("panel-scan")),
-          m_channels{{"a", "", core::ChannelKind::Other}, {"b", "", core::ChannelKind::Other}}
-    {
-    }
-    std::string name() const override { return "maker board"; }
-    devices::DeviceIdentity identity() const override { return {"Nano 33", "MK-0042", "1.0"}; }
-    const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
-    double nominalSampleRate_hz() const override { return m_inner->nominalSampleRate_hz(); }
-    devices::ReadStatus readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout) override
-    {
-        return m_inner->readBlock(out, timeout);
-    }
-
-private:
-    std::unique_ptr<devices::BlockSource> m_inner;
-    std::vector<core::ChannelDescriptor> m_channels;
-};
+std::unique_ptr<devices::BlockSource> makerBoard()
+{
+    return std::make_unique<tactiscope::testing::RelabelledSource>(
+        "panel-scan", std::vector<std::string>{"a", "b"}, 10.0, devices::DeviceIdentity{"Nano 33", "MK-0042", "1.0"});
+}
 
 QString headerOf(const QTableWidget& table)
 {
@@ -161,7 +147,7 @@ TEST(LiveListsView, ABoardThatSaysNothingRecordsInGeneralModeUntilItsChannelsGet
     ui::MainWindow window;
     window.setStorePath(store);
     window.resize(1366, 768);
-    window.connectSource(std::make_unique<MakerBoard>());
+    window.connectSource(makerBoard());
     window.show();
     EXPECT_EQ(window.mode(), core::Mode::General);
     EXPECT_FALSE(window.panelScanView()->isVisible());
@@ -205,7 +191,7 @@ TEST(LiveListsView, ABoardThatSaysNothingRecordsInGeneralModeUntilItsChannelsGet
     // The same board again: its roles come back, and the panel scan runs.
     window.disconnectSource();
     EXPECT_FALSE(roles->isVisible());
-    window.connectSource(std::make_unique<MakerBoard>());
+    window.connectSource(makerBoard());
     EXPECT_EQ(roles->roles(),
               (core::RoleAssignment{{"a", core::ChannelRole::CantileverA}, {"b", core::ChannelRole::CantileverB}}));
     EXPECT_EQ(window.mode(), core::Mode::PanelScan);

@@ -13,7 +13,6 @@ public:
     // Throws std::invalid_argument for a beam or channels it cannot use.
     explicit CapacitiveUnit(const LiveUnitSetup& setup);
 
-    core::Mode mode() const override { return core::Mode::Capacitive; }
     std::shared_ptr<core::BlockSink> sink() const override { return m_capacitive; }
     const std::vector<core::storage::StoredCalibration>& calibrations() const override { return m_calibrations; }
     std::optional<std::string> tare() override { return m_capacitive->tare(); }

@@ -5,9 +5,7 @@
 #include "core/storage/Recorder.h"
 #include "devices/session/modes/StoredCalibrationLookup.h"
 
-#include <algorithm>
 #include <stdexcept>
-#include <utility>
 #include <variant>
 
 namespace tactiscope::devices::session {
@@ -47,12 +45,12 @@ void PalpationUnit::startRecording(core::storage::Recorder& recorder)
 
 void PalpationUnit::take(const LiveTake& take)
 {
-    auto found = std::exchange(m_later, {});
-    for (auto& press : m_palpation->takeReadings()) found.push_back(std::move(press));
-    if (take.recordingOtherMode) return;
-    const auto after = std::ranges::find_if(found, [&](const auto& p) { return p.end_s > take.recordedUntil_s; });
-    m_later.assign(after, found.end());
-    found.erase(after, found.end());
+    auto fresh = m_palpation->takeReadings();
+    if (take.recordingOtherMode) {
+        m_later.clear();  // another mode's recording: neither shown nor stored
+        return;
+    }
+    auto found = resultsRecorded(m_later, std::move(fresh), take);
     if (found.empty()) return;
     take.adding();
     std::vector<core::storage::SessionReading> stored;

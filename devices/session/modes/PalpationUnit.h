@@ -15,7 +15,6 @@ public:
     // Throws std::invalid_argument for a probe or channels it cannot use.
     explicit PalpationUnit(const LiveUnitSetup& setup);
 
-    core::Mode mode() const override { return core::Mode::Palpation; }
     std::shared_ptr<core::BlockSink> sink() const override { return m_palpation; }
     const std::vector<core::storage::StoredCalibration>& calibrations() const override { return m_calibrations; }
     std::optional<std::string> tare() override { return m_palpation->tare(); }

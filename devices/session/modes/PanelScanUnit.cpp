@@ -7,9 +7,7 @@
 #include "core/storage/DefectRecords.h"
 #include "core/storage/Recorder.h"
 
-#include <algorithm>
 #include <stdexcept>
-#include <utility>
 
 namespace tactiscope::devices::session {
 namespace {
@@ -42,12 +40,12 @@ std::optional<std::string> PanelScanUnit::tare()
 
 void PanelScanUnit::take(const LiveTake& take)
 {
-    auto found = std::exchange(m_later, {});
-    for (auto& e : m_detection->takeEvents()) found.push_back(e);
-    if (take.recordingOtherMode) return;
-    const auto after = std::ranges::find_if(found, [&](const auto& e) { return e.end_s > take.recordedUntil_s; });
-    m_later.assign(after, found.end());
-    found.erase(after, found.end());
+    auto fresh = m_detection->takeEvents();
+    if (take.recordingOtherMode) {
+        m_later.clear();  // another mode's recording: neither shown nor stored
+        return;
+    }
+    auto found = resultsRecorded(m_later, std::move(fresh), take);
     if (found.empty()) return;
     take.adding();
     for (auto& e : found) {

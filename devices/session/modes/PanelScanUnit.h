@@ -15,7 +15,6 @@ public:
     // Throws std::invalid_argument when the detector cannot run on the stream.
     explicit PanelScanUnit(const LiveUnitSetup& setup);
 
-    core::Mode mode() const override { return core::Mode::PanelScan; }
     std::shared_ptr<core::BlockSink> sink() const override { return m_detection; }
     std::optional<std::string> tare() override;
     void take(const LiveTake& take) override;

@@ -125,8 +125,7 @@ TEST_F(ModeRegistryTest, AModeRegisteredAloneIsParsedOfferedAndRunsOnTheChannels
     EXPECT_EQ(runnableModes(board), std::vector{Mode::General});
     EXPECT_EQ(*modeRefusal(kDifferenceMode, board),
               "strain-difference needs two strain cantilevers: no channel plays cantilever-a, cantilever-b; this "
-              "device has x (other), y (other). Give its channels roles (--roles x=cantilever-a,y=cantilever-b, or "
-              "the device panel's channel roles), or record in general mode.");
+              "device has x (other), y (other).");
     EXPECT_EQ(modeChannels(kDifferenceMode, applyRoles(board, parseRoleAssignment("y=cantilever-a,x=cantilever-b"))),
               (std::vector<std::size_t>{1, 0}));
     // A word or value taken is refused.

@@ -14,6 +14,7 @@
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
 
+#include "support/RelabelledSource.h"
 #include "support/TempDirectory.h"
 
 #include <gtest/gtest.h>
@@ -26,6 +27,7 @@
 using namespace tactiscope;
 using devices::session::LiveClock;
 using devices::session::LiveSession;
+using tactiscope::testing::RelabelledSource;
 
 namespace {
 
@@ -40,28 +42,6 @@ std::unique_ptr<devices::BlockSource> simulator(const char* scenario)
     options.speed = kSpeed;
     return std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario(scenario), options);
 }
-
-// A maker's board: the panel probe's two columns, named a and b, with no
-// kinds and no mode (as the text protocol announces them).
-class UndeclaredSource final : public devices::BlockSource {
-public:
-    UndeclaredSource()
-        : m_inner(simulator("panel-scan")),
-          m_channels{{"a", "", core::ChannelKind::Other}, {"b", "", core::ChannelKind::Other}}
-    {
-    }
-    std::string name() const override { return "maker board"; }
-    const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
-    double nominalSampleRate_hz() const override { return m_inner->nominalSampleRate_hz(); }
-    devices::ReadStatus readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout) override
-    {
-        return m_inner->readBlock(out, timeout);
-    }
-
-private:
-    std::unique_ptr<devices::BlockSource> m_inner;
-    std::vector<core::ChannelDescriptor> m_channels;
-};
 
 // Polls the session until `done` or 20 wall-clock seconds.
 bool pollUntil(LiveSession& session, const std::function<bool()>& done)
@@ -216,11 +196,12 @@ TEST_F(LiveListsTest, AProfileChosenWhilePressingTakesNoZeroUnderLoad)
 TEST_F(LiveListsTest, ADeviceThatDeclaresNothingRecordsInGeneralModeAndGivenRolesAsAPanelScan)
 {
     {
-        LiveSession general(std::make_unique<UndeclaredSource>(), optionsFor(file("m.tactiscope")));
+        LiveSession general(std::make_unique<RelabelledSource>("panel-scan", std::vector<std::string>{"a", "b"}),
+                            optionsFor(file("m.tactiscope")));
         EXPECT_EQ(general.mode(), core::Mode::General);
         const auto refusal = general.refusalOf(core::Mode::PanelScan);
         ASSERT_TRUE(refusal);
-        EXPECT_NE(refusal->find("--roles a=cantilever-a,b=cantilever-b"), std::string::npos) << *refusal;
+        EXPECT_NE(refusal->find("no channel plays cantilever-a, cantilever-b"), std::string::npos) << *refusal;
         EXPECT_EQ(general.tare().value_or(""),
                   "general recording has no zero to take: it stores the channels as they come");
         ASSERT_FALSE(general.startRecording({}));
@@ -240,7 +221,7 @@ TEST_F(LiveListsTest, ADeviceThatDeclaresNothingRecordsInGeneralModeAndGivenRole
     }
     auto options = optionsFor(file("m.tactiscope"));
     options.roles = core::parseRoleAssignment("a=cantilever-a,b=cantilever-b");
-    LiveSession scan(std::make_unique<UndeclaredSource>(), options);
+    LiveSession scan(std::make_unique<RelabelledSource>("panel-scan", std::vector<std::string>{"a", "b"}), options);
     EXPECT_EQ(scan.mode(), core::Mode::PanelScan);
     ASSERT_TRUE(scan.detection());
     ASSERT_FALSE(scan.startRecording({}));
@@ -264,28 +245,8 @@ TEST_F(LiveListsTest, ADeviceThatDeclaresNothingRecordsInGeneralModeAndGivenRole
 // three-column board a palpation probe; the roles given by hand win.
 TEST_F(LiveListsTest, AProfilesRolesMakeABoardAPalpationProbe)
 {
-    class Board final : public devices::BlockSource {
-    public:
-        Board()
-            : m_inner(simulator("palpation")),
-              m_channels{{"ch1", "", core::ChannelKind::Other},
-                         {"ch2", "", core::ChannelKind::Other},
-                         {"ch3", "", core::ChannelKind::Other}}
-        {
-        }
-        std::string name() const override { return "board"; }
-        const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
-        double nominalSampleRate_hz() const override { return m_inner->nominalSampleRate_hz(); }
-        devices::ReadStatus readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout) override
-        {
-            return m_inner->readBlock(out, timeout);
-        }
-
-    private:
-        std::unique_ptr<devices::BlockSource> m_inner;
-        std::vector<core::ChannelDescriptor> m_channels;
-    };
-    LiveSession plain(std::make_unique<Board>(), optionsFor(file("b.tactiscope")));
+    LiveSession plain(std::make_unique<RelabelledSource>("palpation", std::vector<std::string>{"ch1", "ch2", "ch3"}),
+                      optionsFor(file("b.tactiscope")));
     EXPECT_EQ(plain.mode(), core::Mode::General);
 
     auto probe = std::get<core::sensors::CompliancePairProfile>(*core::sensors::builtInProfile(core::Mode::Palpation));
@@ -298,7 +259,8 @@ TEST_F(LiveListsTest, AProfilesRolesMakeABoardAPalpationProbe)
 
     auto options = optionsFor(file("b.tactiscope"));
     options.profiles.emplace(core::Mode::Palpation, probe);
-    LiveSession session(std::make_unique<Board>(), options);
+    LiveSession session(std::make_unique<RelabelledSource>("palpation", std::vector<std::string>{"ch1", "ch2", "ch3"}),
+                        options);
     EXPECT_EQ(session.mode(), core::Mode::Palpation);  // ch9 is not on this board: left out
     session.start();
     ASSERT_TRUE(pollUntil(session, [&] { return session.presses().size() >= 2; }));

@@ -64,7 +64,6 @@ public:
         : m_sink(std::make_shared<PeakSink>(core::modeChannels(kPeakMode, setup.channels)->front()))
     {
     }
-    core::Mode mode() const override { return kPeakMode; }
     std::shared_ptr<core::BlockSink> sink() const override { return m_sink; }
     std::optional<std::string> tare() override { return "the peak starts again only with a new connection"; }
     void take(const devices::session::LiveTake&) override { ++takes; }
