@@ -109,20 +109,28 @@ public:
     virtual std::optional<core::storage::VerdictDecision> finishRecording(RecordingSummary& summary, bool whole);
 };
 
-// For a unit's take(): the results held back before (`later`) and the new
-// ones, in order (they carry stream times in end_s), less those that ended
-// before the recording's first sample (dropped) and those that end after
-// its last, which go back into `later`.
+// For a unit's take(): what goes into its list now, on the lists' clock,
+// from the results held back before (`later`) and the new ones, in order
+// (results carry stream times in start_s and end_s). None while another
+// mode records; those that ended before the recording's first sample are
+// dropped, those that end after its last go back into `later`; when any
+// are left, the lists are told (take.adding).
 template <typename Result>
-std::vector<Result> resultsRecorded(std::vector<Result>& later, std::vector<Result> fresh, const LiveTake& take)
+std::vector<Result> resultsForLists(std::vector<Result>& later, std::vector<Result> fresh, const LiveTake& take)
 {
     std::vector<Result> found = std::exchange(later, {});
+    if (take.recordingOtherMode) return {};
     found.insert(found.end(), std::make_move_iterator(fresh.begin()), std::make_move_iterator(fresh.end()));
     std::erase_if(found, [&](const Result& r) { return r.end_s < take.recordedFrom_s; });
     const auto after =
         std::find_if(found.begin(), found.end(), [&](const Result& r) { return r.end_s > take.recordedUntil_s; });
     later.assign(std::make_move_iterator(after), std::make_move_iterator(found.end()));
     found.erase(after, found.end());
+    if (!found.empty()) take.adding();
+    for (auto& result : found) {
+        result.start_s = take.listTime_s(result.start_s);
+        result.end_s = take.listTime_s(result.end_s);
+    }
     return found;
 }
 

@@ -1,16 +1,11 @@
-// LiveSession: the acquisition's sinks, the mode, recording and what poll()
-// moves from the processors into the store. The processors are built in
-// LiveSessionProcessors.cpp.
+// LiveSession: the acquisition's sinks, the channels' roles, the mode,
+// recording, and the lists and store each poll() fills from the mode
+// units. The units are built in LiveSessionProcessors.cpp.
 #include "devices/session/LiveSession.h"
 
 #include "core/ModeCapability.h"
 #include "core/SinkSlot.h"
-#include "core/capacitive/LiveCapacitive.h"
-#include "core/compliance/LivePalpation.h"
-#include "core/detector/LiveDetection.h"
 #include "core/modes/ModeDefinition.h"
-#include "core/storage/AutomaticVerdict.h"
-#include "core/storage/DefectRecords.h"
 #include "core/storage/RecordingTap.h"
 #include "devices/SteadyClock.h"
 

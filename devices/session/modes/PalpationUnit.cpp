@@ -45,18 +45,8 @@ void PalpationUnit::startRecording(core::storage::Recorder& recorder)
 
 void PalpationUnit::take(const LiveTake& take)
 {
-    auto fresh = m_palpation->takeReadings();
-    if (take.recordingOtherMode) {
-        m_later.clear();  // another mode's recording: neither shown nor stored
-        return;
-    }
-    auto found = resultsRecorded(m_later, std::move(fresh), take);
-    if (found.empty()) return;
-    take.adding();
     std::vector<core::storage::SessionReading> stored;
-    for (auto& press : found) {
-        press.start_s = take.listTime_s(press.start_s);
-        press.end_s = take.listTime_s(press.end_s);
+    for (auto& press : resultsForLists(m_later, m_palpation->takeReadings(), take)) {
         PressRecord record{std::move(press), take.site(), false};
         // Out of range is a state, not a stiffness: shown, not stored as a number.
         if (take.recorder && record.press.stiffness.range == core::sensors::ComplianceRange::InRange) {

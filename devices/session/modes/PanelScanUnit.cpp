@@ -40,18 +40,8 @@ std::optional<std::string> PanelScanUnit::tare()
 
 void PanelScanUnit::take(const LiveTake& take)
 {
-    auto fresh = m_detection->takeEvents();
-    if (take.recordingOtherMode) {
-        m_later.clear();  // another mode's recording: neither shown nor stored
-        return;
-    }
-    auto found = resultsRecorded(m_later, std::move(fresh), take);
+    const auto found = resultsForLists(m_later, m_detection->takeEvents(), take);
     if (found.empty()) return;
-    take.adding();
-    for (auto& e : found) {
-        e.start_s = take.listTime_s(e.start_s);
-        e.end_s = take.listTime_s(e.end_s);
-    }
     m_defects.insert(m_defects.end(), found.begin(), found.end());
     if (!take.recorder) return;
     std::vector<core::storage::SessionEvent> stored;
