@@ -201,6 +201,28 @@ TEST(TextStream, UsesTheGivenRate)
     EXPECT_EQ(stream.channels()[1].name, "b");
 }
 
+// A label may say the channel's role (docs/protocol.md, "Channel roles"):
+// NAME@ROLE, or a role's name; anything else is only a name.
+TEST(TextStream, LabelsMayGiveTheChannelsRoles)
+{
+    TextStream stream(100.0);
+    std::vector<tactiscope::core::SampleBlock> out;
+    const std::string text = "a@cantilever-a:1 stiff-beam:2 t@kelvin:3 @soft-beam:4\n"
+                             "a@cantilever-a:1 stiff-beam:2 t@kelvin:3 @soft-beam:4\n";
+    stream.push(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()), 0.0, out);
+    const auto channels = stream.channels();
+    ASSERT_EQ(channels.size(), 4u);
+    EXPECT_EQ(channels[0].name, "a");
+    EXPECT_EQ(channels[0].role, tactiscope::core::ChannelRole::CantileverA);
+    EXPECT_EQ(channels[1].name, "stiff-beam");
+    EXPECT_EQ(channels[1].role, tactiscope::core::ChannelRole::StiffBeam);
+    EXPECT_EQ(channels[2].name, "t@kelvin");  // not a role: the label is the name
+    EXPECT_FALSE(channels[2].role);
+    EXPECT_EQ(channels[3].name, "@soft-beam");  // no name before the @: the label is the name
+    EXPECT_FALSE(channels[3].role);
+    for (const auto& channel : channels) EXPECT_EQ(channel.kind, ChannelKind::Other);
+}
+
 TEST(TextStream, EstimatesTheRateFromTwoSecondsOfArrivals)
 {
     TextStream stream;
