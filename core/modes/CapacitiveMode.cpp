@@ -47,7 +47,6 @@ const ModeDefinition& capacitiveMode()
         .needs = "a capacitance",
         .roles = kRoles,
         .profile = ProfileType::CapacitiveBeam,
-        .profileKind = "a capacitive beam",
         .detectsDefects = false,
         .readings = std::nullopt,
         .noZero = {},

@@ -13,7 +13,6 @@ const ModeDefinition& generalMode()
         .needs = "any channels",
         .roles = {},
         .profile = ProfileType::None,
-        .profileKind = {},
         .detectsDefects = false,
         .readings = std::nullopt,
         .noZero = "general recording has no zero to take: it stores the channels as they come",

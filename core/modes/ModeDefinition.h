@@ -43,7 +43,6 @@ struct ModeDefinition {
     std::string_view needs{};
     std::span<const ChannelRole> roles{};  // in the order its processor reads them
     ProfileType profile = ProfileType::None;
-    std::string_view profileKind{};  // for messages: "a compliance pair (two beams)"; empty without a profile
     // Stores the detector's defects and decides the automatic verdict.
     bool detectsDefects = false;
     // What its analysis stores as readings, if anything.

@@ -43,7 +43,6 @@ const ModeDefinition& palpationMode()
         .needs = "a stiff and a soft beam and a displacement",
         .roles = kRoles,
         .profile = ProfileType::CompliancePair,
-        .profileKind = "a compliance pair (two beams)",
         .detectsDefects = false,
         .readings = ReadingKind::Compliance,
         .noZero = {},

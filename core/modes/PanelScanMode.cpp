@@ -42,7 +42,6 @@ const ModeDefinition& panelScanMode()
         .needs = "two strain cantilevers (A and B)",
         .roles = kRoles,
         .profile = ProfileType::None,
-        .profileKind = {},
         .detectsDefects = true,
         .readings = std::nullopt,
         .noZero = "panel scan has no zero to take: the detector works on the signals' changes",
