@@ -105,3 +105,23 @@ TEST_F(GeneralModeStoreTest, AGeneralSessionKeepsTheRolesItsChannelsPlayed)
     EXPECT_EQ(store.sessions(general).size(), 1u);
     EXPECT_THROW(store.database().exec("UPDATE channels SET role = 'cantilever-c' WHERE position = 2"), StorageError);
 }
+
+// A newer program's store may hold a mode this build does not know: it is
+// read as a general recording (its channels as they came), never as a
+// panel scan whose detector would run on channels of another kind.
+TEST_F(GeneralModeStoreTest, AModeWordThisBuildDoesNotKnowIsReadAsGeneral)
+{
+    const std::string path = file("newer.tactiscope");
+    {
+        SessionStore store(path);
+        SessionMetadata metadata;
+        metadata.mode = Mode::PanelScan;
+        const auto id =
+            store.beginSession(metadata, std::vector<ChannelDescriptor>{{"t", "K", ChannelKind::Other}}, 10.0);
+        store.endSession(id, SessionStatus::Complete);
+        store.database().exec("PRAGMA ignore_check_constraints = ON");
+        store.database().exec("UPDATE sessions SET mode = 'thermal-map' WHERE id = " + std::to_string(id));
+    }
+    SessionStore store(path, Database::Access::ReadOnly);
+    EXPECT_EQ(store.sessions().front().metadata.mode, Mode::General);
+}
