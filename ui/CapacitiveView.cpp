@@ -1,9 +1,11 @@
 // CapacitiveView: lanes, large readouts, baseline and calibration lines.
 #include "ui/CapacitiveView.h"
 
+#include "devices/session/LiveSession.h"
 #include "ui/ActiveProfiles.h"
 #include "ui/LivePlotWidget.h"
 #include "ui/NumberText.h"
+#include "ui/calibration/StoredCalibrations.h"
 
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -15,7 +17,7 @@
 namespace tactiscope::ui {
 
 CapacitiveView::CapacitiveView(QWidget* parent)
-    : QWidget(parent),
+    : LiveModeView(parent),
       m_lanes(new LivePlotWidget(this)),
       m_readoutPanel(new QWidget(this)),
       m_baseline(new QLabel(this)),
@@ -76,10 +78,13 @@ QLabel* CapacitiveView::addReadout(const QString& caption, const char* objectNam
     return value;
 }
 
-void CapacitiveView::setCapacitive(std::shared_ptr<core::capacitive::LiveCapacitive> capacitive, double sampleRate_hz,
-                                   const QString& probe, const QString& calibration)
+void CapacitiveView::bind(const devices::session::LiveSession* session)
 {
-    m_capacitive = std::move(capacitive);
+    m_capacitive = session ? session->capacitive() : nullptr;
+    const auto* profile = session ? session->profile(core::Mode::Capacitive) : nullptr;
+    const QString probe = profile ? QString::fromStdString(core::sensors::profileName(*profile)) : QString();
+    QString calibration = session ? calibrationsText(session->calibrations(core::Mode::Capacitive)) : QString();
+    if (calibration.isEmpty()) calibration = tr("none — the beam model (uncalibrated); drift tracking off");
     m_tare->setEnabled(m_capacitive != nullptr);
     m_calibration->setText(
         probe.isEmpty() ? QString() : tr("%1<br>Calibration: %2").arg(probeLine(probe), calibration.toHtmlEscaped()));
@@ -88,8 +93,14 @@ void CapacitiveView::setCapacitive(std::shared_ptr<core::capacitive::LiveCapacit
         return;
     }
     // µN and mm: the scale of this beam (seed 002).
-    m_lanes->setSource(m_capacitive->output(), core::capacitive::LiveCapacitive::outputChannels(), sampleRate_hz,
+    m_lanes->setSource(m_capacitive->output(), core::capacitive::LiveCapacitive::outputChannels(),
+                       session->source().nominalSampleRate_hz(),
                        {{1e6, tr("µN"), tr("Force")}, {1e3, tr("mm"), tr("Deflection")}});
+    updateReadouts();
+}
+
+void CapacitiveView::update(devices::session::LiveSession&)
+{
     updateReadouts();
 }
 

@@ -5,9 +5,9 @@
 #pragma once
 
 #include "core/capacitive/LiveCapacitive.h"
+#include "ui/modes/LiveModeView.h"
 
 #include <QString>
-#include <QWidget>
 
 #include <memory>
 
@@ -18,23 +18,19 @@ namespace tactiscope::ui {
 
 class LivePlotWidget;
 
-class CapacitiveView : public QWidget {
+class CapacitiveView : public LiveModeView {
     Q_OBJECT
 
 public:
     explicit CapacitiveView(QWidget* parent = nullptr);
 
-    // Shows `capacitive`'s output; null detaches. `probe` names the profile,
-    // `calibration` what the sensitivities come from.
-    void setCapacitive(std::shared_ptr<core::capacitive::LiveCapacitive> capacitive, double sampleRate_hz,
-                       const QString& probe, const QString& calibration);
+    // Shows the session's capacitive output, with the profile and what
+    // the sensitivities come from (a calibration, or the beam model).
+    void bind(const devices::session::LiveSession* session) override;
+    void update(devices::session::LiveSession& session) override;
     // Refreshes the readouts; called by the main window's timer.
     void updateReadouts();
-    LivePlotWidget* lanes() const { return m_lanes; }
-
-signals:
-    void profilesRequested();  // the probe line's "Change…" link
-    void tareRequested();      // the tare button
+    LivePlotWidget* lanes() const override { return m_lanes; }
 
 private:
     QLabel* addReadout(const QString& caption, const char* objectName);

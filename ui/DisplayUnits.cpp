@@ -1,7 +1,7 @@
 // Display scaling per channel kind.
 #include "ui/DisplayUnits.h"
 
-#include <QObject>
+#include "ui/modes/ModeUi.h"
 
 namespace tactiscope::ui {
 
@@ -30,31 +30,9 @@ DisplayUnit displayUnitFor(const core::ChannelDescriptor& channel)
 
 DisplayUnit laneUnit(const core::ChannelDescriptor& lane, core::Mode mode)
 {
-    struct Derived {
-        core::Mode mode;
-        const char* name;
-        DisplayUnit unit;
-    };
-    using core::Mode;
-    static const Derived derived[] = {
-        {Mode::Palpation, "force_high", {1e3, QStringLiteral("mN"), QObject::tr("F stiff")}},
-        {Mode::Palpation, "force_low", {1e3, QStringLiteral("mN"), QObject::tr("F soft")}},
-        {Mode::Palpation, "Q", {1.0, {}, QObject::tr("Q")}},
-        {Mode::Palpation, "stiffness", {1.0, QStringLiteral("N/m"), QObject::tr("kₒ")}},
-        {Mode::Capacitive, "delta_c", {1e12, QStringLiteral("pF"), QObject::tr("ΔC")}},
-        {Mode::Capacitive, "relative_change", {1e2, QStringLiteral("%"), QObject::tr("ΔC/C₀")}},
-        {Mode::Capacitive, "force", {1e6, QStringLiteral("µN"), QObject::tr("Force")}},
-        {Mode::Capacitive, "deflection", {1e3, QStringLiteral("mm"), QObject::tr("Deflection")}},
-        {Mode::PanelScan, "best_r", {1.0, {}, QObject::tr("Best R")}},
-        {Mode::PanelScan,
-         "decision",
-         {1.0,
-          {},
-          QObject::tr("Decision"),
-          {{-1.0, QObject::tr("B→A")}, {0.0, QObject::tr("none")}, {1.0, QObject::tr("A→B")}}}},
-    };
-    for (const Derived& d : derived)
-        if (d.mode == mode && lane.name == d.name) return d.unit;
+    // The mode's derived quantities in its users' units (ui/modes/ModeUi.h).
+    if (const auto derived = modeUi(mode).laneUnit)
+        if (auto unit = derived(lane.name)) return *unit;
     DisplayUnit unit = displayUnitFor(lane);
     unit.quantity = QString::fromStdString(lane.name);
     return unit;

@@ -4,13 +4,13 @@
 #include "ui/central/CentralStoreLink.h"
 
 #include "core/ModeCapability.h"
+#include "core/modes/ModeDefinition.h"
 #include "core/storage/SessionStore.h"
 #include "core/storage/StoreWorker.h"
 #include "devices/session/LiveSession.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "ui/AboutText.h"
 #include "ui/ActiveProfiles.h"
-#include "ui/CapacitiveView.h"
 #include "ui/ChannelRolesBox.h"
 #include "ui/DesignTool.h"
 #include "ui/DeviceConnector.h"
@@ -23,7 +23,6 @@
 #include "ui/ModeViews.h"
 #include "ui/ModeXY.h"
 #include "ui/NumberText.h"
-#include "ui/PalpationView.h"
 #include "ui/PlotControls.h"
 #include "ui/ProblemReport.h"
 #include "ui/RawConsole.h"
@@ -37,6 +36,8 @@
 #include "ui/XYPlotWidget.h"
 #include "ui/calibration/CalibrationHistory.h"
 #include "ui/calibration/CalibrationWizards.h"
+#include "ui/modes/LiveModeView.h"
+#include "ui/modes/ModeUi.h"
 #include "ui/review/ReviewWindows.h"
 
 #include <QApplication>
@@ -134,10 +135,10 @@ MainWindow::MainWindow(QWidget* parent)
     m_consoleDock =
         addDock(this, tr("Raw data"), QStringLiteral("consoleDock"), m_rawConsole, Qt::BottomDockWidgetArea);
     m_consoleDock->hide();  // for troubleshooting a probe
-    connect(palpationView(), &PalpationView::profilesRequested, this, &MainWindow::showProfiles);
-    connect(palpationView(), &PalpationView::tareRequested, this, &MainWindow::tare);
-    connect(capacitiveView(), &CapacitiveView::tareRequested, this, &MainWindow::tare);
-    connect(capacitiveView(), &CapacitiveView::profilesRequested, this, &MainWindow::showProfiles);
+    for (LiveModeView* view : m_modeViews->views()) {
+        connect(view, &LiveModeView::profilesRequested, this, &MainWindow::showProfiles);
+        connect(view, &LiveModeView::tareRequested, this, &MainWindow::tare);
+    }
     m_status = new StatusLine(statusBar());
     m_central = new CentralStoreLink(statusBar(), this);
     connect(m_central, &CentralStoreLink::browseRequested, m_review, &ReviewWindows::showCentralBrowser);
@@ -217,7 +218,7 @@ void MainWindow::restoreSettings()
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     core::storage::SessionMetadata metadata;
     metadata.mode = core::modeFromString(settings.value(QStringLiteral("session/mode")).toString().toStdString())
-                        .value_or(core::Mode::PanelScan);
+                        .value_or(core::modeDefinitions().front().mode);
     metadata.operatorName = settings.value(QStringLiteral("session/operator")).toString().toStdString();
     metadata.subject = settings.value(QStringLiteral("session/subject")).toString().toStdString();
     m_sessionBar->setMetadata(metadata);
@@ -310,9 +311,10 @@ void MainWindow::createMenus()
                     {[this] { return allPlots(); }, [this](double seconds) { m_xyPlot->setWindowLength(seconds); }});
 
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
-    tools->addAction(tr("Calibrate the &gauge factor…"), this, [this] { calibrate(core::Mode::Palpation); });
-    tools->addAction(tr("Calibrate the &capacitive beam (C0, sensitivity)…"), this,
-                     [this] { calibrate(core::Mode::Capacitive); });
+    // Each mode that reads a stored calibration, by its wizard (ui/modes/ModeUi.h).
+    for (const auto& definition : core::modeDefinitions())
+        if (const auto action = modeUi(definition.mode).calibrateAction)
+            tools->addAction(action(), this, [this, mode = definition.mode] { calibrate(mode); });
     tools->addAction(tr("Calibration &history…"), this, [this] {
         auto* history = new CalibrationHistory(m_storePath, this);
         history->setAttribute(Qt::WA_DeleteOnClose);
@@ -341,19 +343,9 @@ std::vector<LivePlotWidget*> MainWindow::allPlots() const
     return plots;
 }
 
-PanelScanView* MainWindow::panelScanView() const
+LiveModeView* MainWindow::modeView(core::Mode mode) const
 {
-    return m_modeViews->panelScan();
-}
-
-PalpationView* MainWindow::palpationView() const
-{
-    return m_modeViews->palpation();
-}
-
-CapacitiveView* MainWindow::capacitiveView() const
-{
-    return m_modeViews->capacitive();
+    return m_modeViews->view(mode);
 }
 
 void MainWindow::setStorePath(const QString& path)
@@ -723,9 +715,10 @@ void MainWindow::connectSource(std::unique_ptr<devices::BlockSource> source)
         if (std::ranges::find(source->channels(), channel, &core::ChannelDescriptor::name) != source->channels().end())
             options.roles.emplace(channel, role);
     m_session = std::make_unique<devices::session::LiveSession>(std::move(source), std::move(options));
-    // Open for a device that feeds no mode by itself, or was given roles.
+    // Open for a device that feeds no mode by itself (it starts in one that
+    // needs no roles), or was given roles.
     m_devicePanel->rolesBox()->setChannels(m_session->source().channels(), m_session->roles(),
-                                           m_session->declaredMode() == core::Mode::General ||
+                                           core::definitionOf(m_session->declaredMode()).roles.empty() ||
                                                !m_session->roles().empty());
     reportSessionProblems();
     // The source's own mode wins; a source that declares none keeps the

@@ -44,16 +44,14 @@ struct RecordingSummary;
 
 namespace tactiscope::ui {
 
-class CapacitiveView;
 class DeviceConnector;
 class DevicePanel;
 class LivePlotWidget;
 class ModeViews;
-class PalpationView;
 class RawConsole;
 class CentralStoreLink;
 class ReviewWindows;
-class PanelScanView;
+class LiveModeView;
 class SensorProfileDialog;
 class SessionBar;
 class SessionBrowser;
@@ -78,9 +76,8 @@ public:
     bool isConnecting() const;
 
     LivePlotWidget* livePlot() const { return m_plot; }
-    PanelScanView* panelScanView() const;
-    PalpationView* palpationView() const;
-    CapacitiveView* capacitiveView() const;
+    // The live view of `mode` (ui/modes/ModeUi.h); null for a mode without one.
+    LiveModeView* modeView(core::Mode mode) const;
     DevicePanel* devicePanel() const { return m_devicePanel; }
 
     // Recording: into the session store at storePath() (remembered across

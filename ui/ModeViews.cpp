@@ -1,78 +1,66 @@
-// ModeViews: binding each mode's view to the live session's processor.
+// ModeViews: each mode's view, made from its ui entry and bound to the live session.
 #include "ui/ModeViews.h"
 
 #include "core/modes/ModeDefinition.h"
 #include "devices/session/LiveSession.h"
-#include "ui/CapacitiveView.h"
-#include "ui/PalpationView.h"
-#include "ui/PanelScanView.h"
-#include "ui/SiteGridMap.h"
-#include "ui/calibration/StoredCalibrations.h"
+#include "ui/modes/LiveModeView.h"
+#include "ui/modes/ModeUi.h"
 
 namespace tactiscope::ui {
 
 ModeViews::ModeViews(QWidget* parent)
-    : QStackedWidget(parent),
-      m_panelScan(new PanelScanView(this)),
-      m_palpation(new PalpationView(this)),
-      m_capacitive(new CapacitiveView(this))
+    : QStackedWidget(parent)
 {
     setObjectName(QStringLiteral("modeViews"));
-    addWidget(m_panelScan);
-    addWidget(m_palpation);
-    addWidget(m_capacitive);
+    for (const auto& definition : core::modeDefinitions())
+        if (const auto make = modeUi(definition.mode).liveView) {
+            LiveModeView* view = make(this);
+            addWidget(view);
+            m_views.emplace(definition.mode, view);
+        }
+}
+
+LiveModeView* ModeViews::view(core::Mode mode) const
+{
+    const auto found = m_views.find(mode);
+    return found == m_views.end() ? nullptr : found->second;
+}
+
+std::vector<LiveModeView*> ModeViews::views() const
+{
+    std::vector<LiveModeView*> all;
+    for (const auto& [mode, view] : m_views) all.push_back(view);
+    return all;
 }
 
 std::vector<LivePlotWidget*> ModeViews::lanes() const
 {
-    return {m_panelScan->lanes(), m_palpation->lanes(), m_capacitive->lanes()};
+    std::vector<LivePlotWidget*> all;
+    for (const auto& [mode, view] : m_views) all.push_back(view->lanes());
+    return all;
 }
 
 void ModeViews::bind(const devices::session::LiveSession* session, core::Mode mode)
 {
-    const double rate_hz = session ? session->source().nominalSampleRate_hz() : 0.0;
-    const auto* profile = session ? session->profile(mode) : nullptr;
-    const QString probe = profile ? QString::fromStdString(core::sensors::profileName(*profile)) : QString();
-    const QString calibrations = session ? calibrationsText(session->calibrations(mode)) : QString();
-    // A mode without a view of its own (general) shows the device's traces.
-    if (mode == core::Mode::PanelScan) m_panelScan->setDetection(session ? session->detection() : nullptr, rate_hz);
-    if (mode == core::Mode::Palpation)
-        m_palpation->setPalpation(session ? session->palpation() : nullptr, rate_hz, probe, calibrations);
-    if (mode == core::Mode::Capacitive)
-        m_capacitive->setCapacitive(
-            session ? session->capacitive() : nullptr, rate_hz, probe,
-            calibrations.isEmpty() ? tr("none — the beam model (uncalibrated); drift tracking off") : calibrations);
+    if (LiveModeView* shown = view(mode)) shown->bind(session);
 }
 
 void ModeViews::bindAll(const devices::session::LiveSession* session)
 {
-    for (const auto& definition : core::modeDefinitions()) bind(session, definition.mode);
+    for (const auto& [mode, view] : m_views) view->bind(session);
 }
 
 std::optional<core::Mode> ModeViews::show(const devices::session::LiveSession* session, core::Mode mode)
 {
-    QWidget* view = nullptr;
-    if (session) {
-        if (session->detection() && mode == core::Mode::PanelScan) view = m_panelScan;
-        if (session->palpation() && mode == core::Mode::Palpation) view = m_palpation;
-        if (session->capacitive() && mode == core::Mode::Capacitive) view = m_capacitive;
-    }
-    if (view) setCurrentWidget(view);
-    setVisible(view != nullptr);
-    return view ? std::optional(mode) : std::nullopt;
+    LiveModeView* shown = session && session->unit(mode) ? view(mode) : nullptr;
+    if (shown) setCurrentWidget(shown);
+    setVisible(shown != nullptr);
+    return shown ? std::optional(mode) : std::nullopt;
 }
 
 void ModeViews::update(devices::session::LiveSession& session)
 {
-    // The clinician's grid and choice of site first: a press completed in
-    // this poll was taken there.
-    SiteGridMap* grid = m_palpation->siteGrid();
-    session.setSiteGrid(grid->grid());
-    if (const auto chosen = grid->takeChosenSite()) session.selectSite(*chosen);
-    m_panelScan->showDefects(session.panelDefects(), session.lists());
-    m_palpation->showPresses(session.presses(), session.lists(), session.siteGrid());
-    m_palpation->updateReadout();
-    m_capacitive->updateReadouts();
+    for (const auto& [mode, view] : m_views) view->update(session);
 }
 
 }  // namespace tactiscope::ui

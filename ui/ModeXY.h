@@ -1,6 +1,5 @@
-// The XY plot each mode calls for: F_H against F_L in palpation (its slope
-// is Q), force against tip deflection for the capacitive beam (its slope is
-// k_s); panel scan has none.
+// The XY plot a mode calls for, from its ui entry (palpation: F stiff
+// against F soft, whose slope is Q); the other modes have none.
 #pragma once
 
 #include "core/Vocabulary.h"

@@ -8,6 +8,7 @@
 #include "ui/NumberText.h"
 #include "ui/SiteGridMap.h"
 #include "ui/StiffnessScale.h"
+#include "ui/calibration/StoredCalibrations.h"
 
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -49,7 +50,7 @@ QString calibrationLine(const core::compliance::LivePalpation& palpation, const 
 }  // namespace
 
 PalpationView::PalpationView(QWidget* parent)
-    : QWidget(parent),
+    : LiveModeView(parent),
       m_lanes(new LivePlotWidget(this)),
       m_probe(new QLabel(this)),
       m_stiffness(new QLabel(this)),
@@ -117,10 +118,12 @@ PalpationView::PalpationView(QWidget* parent)
     startSubject();
 }
 
-void PalpationView::setPalpation(std::shared_ptr<core::compliance::LivePalpation> palpation, double sampleRate_hz,
-                                 const QString& probeName, const QString& calibration)
+void PalpationView::bind(const devices::session::LiveSession* session)
 {
-    m_palpation = std::move(palpation);
+    m_palpation = session ? session->palpation() : nullptr;
+    const auto* profile = session ? session->profile(core::Mode::Palpation) : nullptr;
+    const QString probeName = profile ? QString::fromStdString(core::sensors::profileName(*profile)) : QString();
+    const QString calibration = session ? calibrationsText(session->calibrations(core::Mode::Palpation)) : QString();
     m_probe->setText(probeName.isEmpty() || !m_palpation
                          ? QString()
                          : probeLine(probeName) + QStringLiteral("<br>") + calibrationLine(*m_palpation, calibration));
@@ -131,8 +134,16 @@ void PalpationView::setPalpation(std::shared_ptr<core::compliance::LivePalpation
     }
     const DisplayUnit force{1e3, tr("mN"), tr("Force")};
     const DisplayUnit ratio{1.0, QString(), tr("Q")};
-    m_lanes->setSource(m_palpation->output(), core::compliance::LivePalpation::outputChannels(), sampleRate_hz,
-                       {force, force, ratio});
+    m_lanes->setSource(m_palpation->output(), core::compliance::LivePalpation::outputChannels(),
+                       session->source().nominalSampleRate_hz(), {force, force, ratio});
+    updateReadout();
+}
+
+void PalpationView::update(devices::session::LiveSession& session)
+{
+    session.setSiteGrid(m_grid->grid());
+    if (const auto chosen = m_grid->takeChosenSite()) session.selectSite(*chosen);
+    showPresses(session.presses(), session.lists(), session.siteGrid());
     updateReadout();
 }
 

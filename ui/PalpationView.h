@@ -8,9 +8,9 @@
 
 #include "core/compliance/LivePalpation.h"
 #include "devices/session/LiveSession.h"
+#include "ui/modes/LiveModeView.h"
 
 #include <QString>
-#include <QWidget>
 
 #include <cstdint>
 #include <memory>
@@ -27,17 +27,19 @@ class LivePlotWidget;
 class SiteGridMap;
 class StiffnessScale;
 
-class PalpationView : public QWidget {
+class PalpationView : public LiveModeView {
     Q_OBJECT
 
 public:
     explicit PalpationView(QWidget* parent = nullptr);
 
-    // Shows `palpation`'s output; null detaches. `probeName` says which
-    // profile turns the beams' signals into forces, `calibration` which
-    // gauge-factor calibrations ("" when none).
-    void setPalpation(std::shared_ptr<core::compliance::LivePalpation> palpation, double sampleRate_hz,
-                      const QString& probeName, const QString& calibration = {});
+    // Shows the session's palpation output, with the profile that turns the
+    // beams' signals into forces and the gauge-factor calibrations it reads.
+    void bind(const devices::session::LiveSession* session) override;
+    // The clinician's grid and choice of site go to the session first (a
+    // press completed in this poll was taken there); then its presses and
+    // the readout.
+    void update(devices::session::LiveSession& session) override;
     // Refreshes the large readout; called by the main window's timer.
     void updateReadout();
     // Shows the session's presses (devices::session::LiveSession::presses())
@@ -48,12 +50,8 @@ public:
                      const devices::session::LiveLists& lists, const std::optional<core::compliance::SiteGrid>& grid);
     int readingCount() const;
 
-    LivePlotWidget* lanes() const { return m_lanes; }
+    LivePlotWidget* lanes() const override { return m_lanes; }
     SiteGridMap* siteGrid() const { return m_grid; }
-
-signals:
-    void profilesRequested();  // the probe line's "Change…" link
-    void tareRequested();      // the tare button
 
 protected:
     void resizeEvent(QResizeEvent* event) override;

@@ -46,7 +46,7 @@ const QString kDefectAlarm = QStringLiteral("QLabel { background: #c62828; color
 }  // namespace
 
 PanelScanView::PanelScanView(QWidget* parent)
-    : QWidget(parent),
+    : LiveModeView(parent),
       m_lanes(new LivePlotWidget(this))
 {
     m_threshold = spinBox(0.50, 0.999, 0.01, 3, QString(), this);
@@ -144,9 +144,9 @@ PanelScanView::PanelScanView(QWidget* parent)
     startPanel();
 }
 
-void PanelScanView::setDetection(std::shared_ptr<core::detector::LiveDetection> detection, double sampleRate_hz)
+void PanelScanView::bind(const devices::session::LiveSession* session)
 {
-    m_detection = std::move(detection);
+    m_detection = session ? session->detection() : nullptr;
     if (!m_detection) {
         m_lanes->clearSource();
         return;
@@ -154,10 +154,15 @@ void PanelScanView::setDetection(std::shared_ptr<core::detector::LiveDetection> 
     // Short titles: the lanes are low, beside the defect list.
     const DisplayUnit decision{1.0, QString(), tr("Output")};
     const DisplayUnit correlation{1.0, QString(), tr("Best R")};
-    m_lanes->setSource(m_detection->output(), core::detector::LiveDetection::outputChannels(), sampleRate_hz,
-                       {decision, correlation, correlation});
+    m_lanes->setSource(m_detection->output(), core::detector::LiveDetection::outputChannels(),
+                       session->source().nominalSampleRate_hz(), {decision, correlation, correlation});
     showSettings(m_detection->settings());
     m_lanes->setThreshold(kBestRLane, m_detection->settings().parameters.threshold);
+}
+
+void PanelScanView::update(devices::session::LiveSession& session)
+{
+    showDefects(session.panelDefects(), session.lists());
 }
 
 void PanelScanView::showSettings(const core::detector::LiveDetectionSettings& settings)

@@ -8,9 +8,9 @@
 
 #include "core/detector/LiveDetection.h"
 #include "devices/session/LiveSession.h"
+#include "ui/modes/LiveModeView.h"
 
 #include <QTimer>
-#include <QWidget>
 
 #include <cstdint>
 #include <memory>
@@ -27,21 +27,23 @@ namespace tactiscope::ui {
 
 class LivePlotWidget;
 
-class PanelScanView : public QWidget {
+class PanelScanView : public LiveModeView {
     Q_OBJECT
 
 public:
     explicit PanelScanView(QWidget* parent = nullptr);
 
-    // Shows `detection`'s output and edits its settings; null detaches.
-    void setDetection(std::shared_ptr<core::detector::LiveDetection> detection, double sampleRate_hz);
+    // Shows the session's detector's output and edits its settings.
+    void bind(const devices::session::LiveSession* session) override;
+    // The session's defects.
+    void update(devices::session::LiveSession& session) override;
     // Shows the panel's defects (the live session's list, on its clock):
     // rows for those not listed yet, with the alarm; another generation is
     // a new list. The count says whether they are the recording's, the
     // stopped recording's as stored, or since connect and not recorded.
     void showDefects(const std::vector<core::detector::DefectEvent>& defects, const devices::session::LiveLists& lists);
     int defectCount() const;
-    LivePlotWidget* lanes() const { return m_lanes; }
+    LivePlotWidget* lanes() const override { return m_lanes; }
 
 private:
     void startPanel();

@@ -38,36 +38,6 @@ std::string usbSerialOf(const std::string& path)
     return {};
 }
 
-// What the mode's analysis stored, after the samples: "20 defects stored at
-// 1 site, verdict defects found", "5 stiffness readings stored", "calibration: …".
-QString analysisSummary(const devices::session::LiveSession& session, const devices::session::RecordingSummary& summary)
-{
-    const auto count = [](std::size_t n, const char* one, const char* many) {
-        return QStringLiteral("%1 %2").arg(n).arg(QLatin1String(n == 1 ? one : many));
-    };
-    const core::Mode mode = session.recordingMetadata().mode;
-    if (mode == core::Mode::PanelScan)
-        return QStringLiteral("panel-scan: %1 stored%2, verdict %3")
-            .arg(count(summary.defects, "defect", "defects"),
-                 summary.defects == 0 ? QString() : QStringLiteral(" at ") + count(summary.sites, "site", "sites"),
-                 summary.verdict ? toQString(core::verdictText(summary.verdict)) : QStringLiteral("none"));
-    if (mode == core::Mode::Palpation) {
-        std::size_t stored = 0;
-        for (const auto& press : session.presses()) stored += press.stored ? 1 : 0;
-        return QStringLiteral("palpation: %1 stored").arg(count(stored, "stiffness reading", "stiffness readings"));
-    }
-    if (mode == core::Mode::Capacitive) {
-        const auto& used = session.calibrations(mode);
-        return QStringLiteral("capacitive: calibration %1")
-            .arg(used.empty()
-                     ? QStringLiteral("none (the beam model)")
-                     : toQString(used.front().record.timestampUtc + " by " + used.front().record.operatorName));
-    }
-    // A mode with no analysis of its own (general): the channels as they came.
-    return QStringLiteral("%1: %2 as they came, no analysis")
-        .arg(toQString(core::toString(mode)), count(session.channels().size(), "channel", "channels"));
-}
-
 }  // namespace
 
 int runRecord(const QStringList& arguments)
@@ -265,7 +235,8 @@ int runRecord(const QStringList& arguments)
                         << acquired.samplesLost + stored.samplesDropped + summary->samplesLostAtEnd << " lost, "
                         << counters.crcErrors << " CRC errors (" << channels.size() << " channels at "
                         << QLocale::c().toString(rate_hz) << " Hz, into " << QString::fromStdString(db) << "); "
-                        << analysisSummary(session, *summary) << "\n";
+                        << toQString(core::toString(session.recordingMetadata().mode)) << ": "
+                        << QString::fromStdString(summary->analysis) << "\n";
     if (!stored.error.empty()) {
         printError(QString::fromStdString(stored.error));
         return kExitFailure;

@@ -107,6 +107,9 @@ public:
     // its count in the summary and, for a whole recording (`whole`: not
     // cut by a lost probe), the automatic verdict decided.
     virtual std::optional<core::storage::VerdictDecision> finishRecording(RecordingSummary& summary, bool whole);
+    // Then, the recording ended: what its analysis stored, in a line
+    // (RecordingSummary::analysis).
+    virtual std::string storedText(const RecordingSummary& summary) const = 0;
 };
 
 // For a unit's take(): what goes into its list now, on the lists' clock,

@@ -44,6 +44,9 @@ struct RecordingSummary {
     std::size_t defects = 0;               // of this recording's panel: crossings
     std::size_t sites = 0;                 // where they are: a defect crossed N times is one site
     double end_s = 0.0;                    // session time of the last sample
+    // What the mode's analysis stored, in a line: "20 defects stored at 1
+    // site, verdict defects found", "5 stiffness readings stored".
+    std::string analysis;
     // An end that was not a stop: the probe went silent (lost, and not back
     // by the stop) at lostAt_s, and the samples to the stop are a gap;
     // or the link failed for good (why, in stoppedBecause).

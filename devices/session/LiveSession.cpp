@@ -7,6 +7,7 @@
 #include "core/SinkSlot.h"
 #include "core/modes/ModeDefinition.h"
 #include "core/storage/RecordingTap.h"
+#include "core/text/CountText.h"
 #include "devices/SteadyClock.h"
 
 #include <algorithm>
@@ -261,6 +262,11 @@ RecordingSummary LiveSession::finishRecording()
     if (auto* unit = unitOf(m_metadata.mode)) decision = unit->finishRecording(summary, whole);
     summary.stats = m_recorder->finish(core::SessionStatus::Complete, decision);
     if (!summary.stats.error.empty()) summary.verdict.reset();  // the session ended interrupted
+    if (const auto* unit = unitOf(m_metadata.mode))
+        summary.analysis = unit->storedText(summary);
+    else  // a mode with no analysis of its own (general)
+        summary.analysis =
+            core::text::countText(m_channels.size(), "channel", "channels") + " as they came, no analysis";
     m_recorder.reset();
     m_lists.clock = LiveClock::Recorded;  // the lists hold what was stored, until the next event
     return summary;

@@ -70,7 +70,7 @@ TEST(CapacitiveView, ReadoutsFollowTheStoredCalibrationWhichTheSessionRecords)
     mode->setCurrentIndex(mode->findData(QStringLiteral("capacitive")));
     window.connectSource(quickWeights());
     window.show();
-    ui::CapacitiveView* view = window.capacitiveView();
+    ui::CapacitiveView* view = window.findChild<ui::CapacitiveView*>();
     ASSERT_TRUE(view->isVisible());
     EXPECT_TRUE(child<QLabel>(*view, "calibrationLabel")->text().contains(QStringLiteral("Dr Calibrator")));
     ASSERT_TRUE(window.startRecording());
@@ -114,11 +114,12 @@ TEST(CapacitiveView, WithoutACalibrationTheBeamModelIsUsedAndSaid)
     mode->setCurrentIndex(mode->findData(QStringLiteral("capacitive")));
     window.connectSource(quickWeights());
     window.show();
-    EXPECT_TRUE(child<QLabel>(*window.capacitiveView(), "calibrationLabel")->text().contains("uncalibrated"));
+    EXPECT_TRUE(
+        child<QLabel>(*window.findChild<ui::CapacitiveView*>(), "calibrationLabel")->text().contains("uncalibrated"));
     // Tare while unloaded: ΔC goes to the noise (σ = 4 fF).
-    auto* deltaC = child<QLabel>(*window.capacitiveView(), "deltaCReadout");
+    auto* deltaC = child<QLabel>(*window.findChild<ui::CapacitiveView*>(), "deltaCReadout");
     ASSERT_TRUE(waitFor([&] { return deltaC->text() != QStringLiteral("—"); }, 3000));
-    QTest::mouseClick(child<QPushButton>(*window.capacitiveView(), "tareButton"), Qt::LeftButton);
+    QTest::mouseClick(child<QPushButton>(*window.findChild<ui::CapacitiveView*>(), "tareButton"), Qt::LeftButton);
     runEventLoopFor(600);
     EXPECT_LT(std::abs(number(deltaC)), 0.02) << deltaC->text().toStdString();
 }

@@ -69,7 +69,7 @@ TEST_F(GaugeCalibrationInUseTest, TheNewestCalibrationOfEachBeamIsReadAndRecorde
     window.setStorePath(store());
     window.setMode(tactiscope::core::Mode::Palpation);
     window.connectSource(tactiscope::testing::liveSimulator("palpation"));
-    const QString probe = child<QLabel>(*window.palpationView(), "probeLabel")->text();
+    const QString probe = child<QLabel>(*window.findChild<ui::PalpationView*>(), "probeLabel")->text();
     EXPECT_TRUE(probe.contains(QStringLiteral("stiff beam on 2026-11-20T08:00:00Z by Ada"))) << probe.toStdString();
     EXPECT_TRUE(probe.contains(QStringLiteral("gauge factors 2.14 (stiff) and 2 (soft)"))) << probe.toStdString();
 

@@ -65,8 +65,8 @@ TEST(LiveListsView, AfterStopTheDefectTableIsWhatWasStoredThenANewListStartsSinc
     window.resize(1366, 768);
     window.connectSource(spedUp("panel-scan"));
     window.show();
-    auto* table = child<QTableWidget>(*window.panelScanView(), "defectTable");
-    auto* count = child<QLabel>(*window.panelScanView(), "defectCountLabel");
+    auto* table = child<QTableWidget>(*window.findChild<ui::PanelScanView*>(), "defectTable");
+    auto* count = child<QLabel>(*window.findChild<ui::PanelScanView*>(), "defectCountLabel");
     ASSERT_TRUE(waitFor([&] { return table->rowCount() >= 2; }, 20000));
     EXPECT_EQ(headerOf(*table), QStringLiteral("Since connect (s)"));
     EXPECT_TRUE(count->text().contains(QStringLiteral("since connect — not recorded"))) << count->text().toStdString();
@@ -107,7 +107,7 @@ TEST(LiveListsView, PressesAreListedOnTheRecordingsClockAndTheGridStartsAtTheSit
     window.resize(1366, 768);
     window.connectSource(spedUp("palpation"));
     window.show();
-    ui::PalpationView* view = window.palpationView();
+    ui::PalpationView* view = window.findChild<ui::PalpationView*>();
     ui::SiteGridMap* grid = view->siteGrid();
     grid->setActive(true);
     grid->selectSite(0, 0);  // A1, before anything is recorded
@@ -150,7 +150,7 @@ TEST(LiveListsView, ABoardThatSaysNothingRecordsInGeneralModeUntilItsChannelsGet
     window.connectSource(makerBoard());
     window.show();
     EXPECT_EQ(window.mode(), core::Mode::General);
-    EXPECT_FALSE(window.panelScanView()->isVisible());
+    EXPECT_FALSE(window.findChild<ui::PanelScanView*>()->isVisible());
     EXPECT_FALSE(window.setMode(core::Mode::PanelScan));  // refused: no roles yet
     auto* roles = window.devicePanel()->rolesBox();
     ASSERT_TRUE(roles->isVisible());
@@ -168,9 +168,9 @@ TEST(LiveListsView, ABoardThatSaysNothingRecordsInGeneralModeUntilItsChannelsGet
     roles->chooseRole(QStringLiteral("b"), core::ChannelRole::CantileverB);
     tactiscope::testing::saveScreenshot(*window.devicePanel(), QStringLiteral("device-panel-roles"));
     ASSERT_TRUE(window.setMode(core::Mode::PanelScan));
-    ASSERT_TRUE(window.panelScanView()->isVisible());
+    ASSERT_TRUE(window.findChild<ui::PanelScanView*>()->isVisible());
     ASSERT_TRUE(window.startRecording());
-    auto* table = child<QTableWidget>(*window.panelScanView(), "defectTable");
+    auto* table = child<QTableWidget>(*window.findChild<ui::PanelScanView*>(), "defectTable");
     ASSERT_TRUE(waitFor([&] { return table->rowCount() >= 2; }, 20000));
     window.stopRecording();
     if (auto* verdict = window.findChild<QDialog*>(QStringLiteral("verdictBox"))) verdict->close();

@@ -63,15 +63,19 @@ TEST(LiveTruth, ThePlotsReadTheRecordingsClockAndShowItsMarkers)
     // The panel's defects are drawn on the traces where they happened.
     auto* traces = qobject_cast<ui::LivePlotWidget*>(child<QSplitter>(window, "centreSplitter")->widget(0));
     ASSERT_NE(traces, nullptr);
-    ASSERT_TRUE(waitFor([&] { return window.panelScanView()->defectCount() >= 1; }, 5000));
+    ASSERT_TRUE(waitFor([&] { return window.findChild<ui::PanelScanView*>()->defectCount() >= 1; }, 5000));
     EXPECT_TRUE(waitFor(
-        [&] { return traces->eventCount() == static_cast<std::size_t>(window.panelScanView()->defectCount()); }, 1000));
+        [&] {
+            return traces->eventCount() ==
+                   static_cast<std::size_t>(window.findChild<ui::PanelScanView*>()->defectCount());
+        },
+        1000));
     EXPECT_EQ(traces->markerCount(), 1u) << "events are not the operator's markers";
 
     // The detector's best R is drawn against its threshold.
-    ASSERT_TRUE(window.panelScanView()->lanes()->threshold(1).has_value());
-    EXPECT_EQ(*window.panelScanView()->lanes()->threshold(1), 0.85);
-    EXPECT_FALSE(window.panelScanView()->lanes()->threshold(0).has_value());
+    ASSERT_TRUE(window.findChild<ui::PanelScanView*>()->lanes()->threshold(1).has_value());
+    EXPECT_EQ(*window.findChild<ui::PanelScanView*>()->lanes()->threshold(1), 0.85);
+    EXPECT_FALSE(window.findChild<ui::PanelScanView*>()->lanes()->threshold(0).has_value());
 
     // Paused: one banner, and the detector's lanes follow the main plot back.
     child<QAction>(window, "pauseAction")->trigger();

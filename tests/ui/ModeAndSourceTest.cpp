@@ -54,7 +54,7 @@ TEST(ModeAndSource, ChoosingTheSimulatorOfAnotherModeSwitchesToIt)
     EXPECT_EQ(child<QComboBox>(window, "modeBox")->currentText(), QStringLiteral("Palpation"));
     const auto* views = child<QStackedWidget>(window, "modeViews");
     EXPECT_TRUE(views->isVisible());
-    EXPECT_EQ(views->currentWidget(), window.palpationView());
+    EXPECT_EQ(views->currentWidget(), window.findChild<ui::PalpationView*>());
 }
 
 TEST(ModeAndSource, AModeTheDeviceCannotFeedIsRefusedAndNothingIsRecordedInIt)

@@ -59,9 +59,9 @@ TEST(PalpationView, PressesAreListedMappedStoredAndMatchTheCoreReading)
     window.connectSource(liveSimulator("palpation"));
     ASSERT_TRUE(window.startRecording());
     window.show();
-    ui::PalpationView* view = window.palpationView();
+    ui::PalpationView* view = window.findChild<ui::PalpationView*>();
     ASSERT_TRUE(view->isVisible());
-    EXPECT_FALSE(window.panelScanView()->isVisible());
+    EXPECT_FALSE(window.findChild<ui::PanelScanView*>()->isVisible());
     ui::SiteGridMap* grid = view->siteGrid();
     grid->setActive(true);
     grid->selectSite(1, 1);  // B2
@@ -166,11 +166,11 @@ TEST(PalpationView, TareTakesANewZeroFromTheButtonOrCtrlTAndTheXYPlotShowsTheFor
     choosePalpationMode(window);
     window.connectSource(liveSimulator("palpation"));
     window.show();
-    auto* status = child<QLabel>(*window.palpationView(), "palpationStatus");
+    auto* status = child<QLabel>(*window.findChild<ui::PalpationView*>(), "palpationStatus");
     ASSERT_TRUE(waitFor([&] { return status->text().startsWith(QStringLiteral("Ready")); }, 3000));
     // Lifted and still for half a second: taken at once from that stretch
     // (the simulator presses every few seconds, so the button is tried until then).
-    auto* tareButton = child<QPushButton>(*window.palpationView(), "tareButton");
+    auto* tareButton = child<QPushButton>(*window.findChild<ui::PalpationView*>(), "tareButton");
     EXPECT_TRUE(waitFor(
         [&] {
             QTest::mouseClick(tareButton, Qt::LeftButton);
@@ -204,5 +204,5 @@ TEST(PalpationView, APanelScanProbeHasNoPalpationView)
     choosePalpationMode(window);
     window.connectSource(liveSimulator("panel-scan"));
     window.show();
-    EXPECT_FALSE(window.palpationView()->isVisible());
+    EXPECT_FALSE(window.findChild<ui::PalpationView*>()->isVisible());
 }

@@ -39,18 +39,19 @@ TEST(PanelScanView, DefectsAreListedStoredAndMatchTheCoreDetector)
     window.resize(1366, 768);  // the smallest screen the workstation is made for
     window.connectSource(liveSimulator());
     window.show();
-    ASSERT_TRUE(window.panelScanView()->isVisible());
+    ASSERT_TRUE(window.findChild<ui::PanelScanView*>()->isVisible());
     QTest::keyClicks(child<QLineEdit>(window, "operatorEdit"), QStringLiteral("Ada"));
     ASSERT_TRUE(window.startRecording());
-    auto* table = child<QTableWidget>(*window.panelScanView(), "defectTable");
+    auto* table = child<QTableWidget>(*window.findChild<ui::PanelScanView*>(), "defectTable");
     // The simulated hand passes the dent about once a second, in both directions.
     ASSERT_TRUE(waitFor([&] { return table->rowCount() >= 5; }, 10000));
     runEventLoopFor(300);
     tactiscope::testing::saveScreenshot(window, QStringLiteral("panel-scan"));
     tactiscope::testing::saveScreenshotAtSize(window, QStringLiteral("panel-scan"), {1920, 1080});
     const int listed = table->rowCount();
-    EXPECT_EQ(window.panelScanView()->defectCount(), listed);
-    EXPECT_TRUE(child<QLabel>(*window.panelScanView(), "defectCountLabel")->text().contains("defects found"));
+    EXPECT_EQ(window.findChild<ui::PanelScanView*>()->defectCount(), listed);
+    EXPECT_TRUE(
+        child<QLabel>(*window.findChild<ui::PanelScanView*>(), "defectCountLabel")->text().contains("defects found"));
     window.stopRecording();
     auto* verdict = window.findChild<QDialog*>(QStringLiteral("verdictBox"));
     ASSERT_NE(verdict, nullptr);
@@ -109,7 +110,7 @@ TEST(PanelScanView, EditedParametersReachTheLiveDetectorAndBadOnesAreRefused)
     ui::MainWindow window;
     window.connectSource(liveSimulator());
     window.show();
-    auto* view = window.panelScanView();
+    auto* view = window.findChild<ui::PanelScanView*>();
     auto* threshold = child<QDoubleSpinBox>(*view, "thresholdBox");
     threshold->setValue(0.999);
     runEventLoopFor(300);

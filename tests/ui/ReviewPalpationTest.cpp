@@ -71,8 +71,8 @@ TEST(ReviewPalpation, OpensOnTheForcesAndTheCountsAreOneClickAway)
 
     // The presses in the clinician's terms: each stored reading, at its
     // site, with its depth; the site summed up and on the grid map.
-    ASSERT_NE(window->presses(), nullptr);
-    QTreeWidget* presses = window->presses()->pressList();
+    ASSERT_NE(qobject_cast<ui::PressesPanel*>(window->account()), nullptr);
+    QTreeWidget* presses = qobject_cast<ui::PressesPanel*>(window->account())->pressList();
     ASSERT_EQ(presses->topLevelItemCount(), static_cast<int>(readings.size()));
     double sum = 0.0;
     for (int i = 0; i < presses->topLevelItemCount(); ++i) {
@@ -88,7 +88,7 @@ TEST(ReviewPalpation, OpensOnTheForcesAndTheCountsAreOneClickAway)
                                     QLocale().toString(*r.standardError, 'f', decimals));
         EXPECT_TRUE(row->text(4).contains(" – ")) << "a press has a depth range";
     }
-    QTreeWidget* sites = window->presses()->siteList();
+    QTreeWidget* sites = qobject_cast<ui::PressesPanel*>(window->account())->siteList();
     ASSERT_EQ(sites->topLevelItemCount(), 1);
     EXPECT_EQ(sites->topLevelItem(0)->text(0), "B2");
     EXPECT_EQ(sites->topLevelItem(0)->text(1), QString::number(readings.size()));
@@ -101,7 +101,7 @@ TEST(ReviewPalpation, OpensOnTheForcesAndTheCountsAreOneClickAway)
     // Read again with the profile's nominal gauge factors — the ones this
     // session used — the re-analysis lists each press beside its recorded
     // twin, with the same k_o; saved, it is an analysis of its own.
-    auto* again = window->presses()->reanalysis();
+    auto* again = qobject_cast<ui::PressesPanel*>(window->account())->reanalysis();
     again->gaugeFactorBox()->setCurrentIndex(
         again->gaugeFactorBox()->findData(static_cast<int>(ui::PalpationReanalysisBox::GaugeFactors::Nominal)));
     ASSERT_TRUE(again->run().isEmpty());

@@ -221,7 +221,7 @@ TEST_F(ReviewWindowTest, AReviewersVerdictJoinsTheTrailWithTheNameAndTheNote)
 
 TEST_F(ReviewWindowTest, ReanalysisFindsWhatTheCliFindsAndSavesBesideTheRecordedEvents)
 {
-    ui::ReanalysisPanel* panel = m_window->reanalysis();
+    ui::ReanalysisPanel* panel = qobject_cast<ui::ReanalysisPanel*>(m_window->account());
     ASSERT_NE(panel, nullptr);
     child<QDoubleSpinBox>(*panel, "thresholdSpin")->setValue(0.7);
     child<QDoubleSpinBox>(*panel, "lagStopSpin")->setValue(100.0);
@@ -263,7 +263,7 @@ TEST_F(ReviewWindowTest, ReanalysisFindsWhatTheCliFindsAndSavesBesideTheRecorded
 
 TEST_F(ReviewWindowTest, AReanalysisShowsItsProgressAndCanBeCancelled)
 {
-    ui::ReanalysisPanel* panel = m_window->reanalysis();
+    ui::ReanalysisPanel* panel = qobject_cast<ui::ReanalysisPanel*>(m_window->account());
     auto* progress = child<QProgressBar>(*panel, "analysisProgress");
     auto* cancel = child<QPushButton>(*panel, "cancelAnalysisButton");
     EXPECT_TRUE(progress->isHidden());

@@ -382,14 +382,14 @@ TEST_F(SensorProfileDialogTest, AProbeChosenWhileStreamingReadsTheNextPressesAnd
     EXPECT_EQ(dialog->mode(), QStringLiteral("palpation"));
     ASSERT_TRUE(dialog->importProfile(stiffer));
     ASSERT_TRUE(dialog->useSelected());
-    auto* probe = child<QLabel>(*window.palpationView(), "probeLabel");
+    auto* probe = child<QLabel>(*window.findChild<ui::PalpationView*>(), "probeLabel");
     EXPECT_TRUE(probe->text().contains(QStringLiteral("Perspex at 6 GPa")));
 
     ASSERT_TRUE(window.startRecording());
     // A session keeps its sensor: the dialog will not change it now.
     dialog->selectPath(ui::builtInProfilePath(QStringLiteral("palpation")));
     EXPECT_FALSE(enabled(*dialog, "useButton"));
-    auto* table = child<QTableWidget>(*window.palpationView(), "pressTable");
+    auto* table = child<QTableWidget>(*window.findChild<ui::PalpationView*>(), "pressTable");
     ASSERT_TRUE(tactiscope::testing::waitFor([&] { return table->rowCount() >= 2; }, 12000));
     window.stopRecording();
     EXPECT_TRUE(enabled(*dialog, "useButton"));

@@ -64,8 +64,8 @@ public:
         int signalDecimals = 1;
         QString channelLabel;
         std::function<bool(const core::ChannelDescriptor&)> channelFits;
-        QString noChannel;                        // why the device cannot be calibrated here
-        core::Mode mode = core::Mode::PanelScan;  // whose profiles are offered
+        QString noChannel;  // why the device cannot be calibrated here
+        core::Mode mode{};  // whose profiles are offered (each wizard its own)
         std::function<bool(const core::sensors::SensorProfile&)> profileFits;
         QString zeroSubTitle;
         QString loadsSubTitle;

@@ -1,6 +1,6 @@
-// The calibration wizard of each mode whose processor reads a stored
-// calibration: palpation reads each beam's gauge factor, the capacitive
-// beam its C0 and sensitivity. Panel scan has none.
+// Opening the calibration wizard of a mode whose processor reads a stored
+// calibration (its ui entry names the wizard: palpation's gauge factor, the
+// capacitive beam's C0 and sensitivity).
 #pragma once
 
 #include "core/Vocabulary.h"

@@ -58,4 +58,10 @@ QString capacitiveBasisHtml(const core::report::CapacitiveBasis& c)
     return html + QStringLiteral("</table>");
 }
 
+QString capacitiveReportSection(const core::report::ReportData& data)
+{
+    if (!data.capacitive) return {};
+    return QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Capacitive beam")) + capacitiveBasisHtml(*data.capacitive);
+}
+
 }  // namespace tactiscope::ui

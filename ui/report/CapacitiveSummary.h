@@ -12,5 +12,8 @@
 namespace tactiscope::ui {
 
 QString capacitiveBasisHtml(const core::report::CapacitiveBasis& basis);
+// The report's section of a capacitive session: the basis under a heading;
+// empty when the report has none.
+QString capacitiveReportSection(const core::report::ReportData& data);
 
 }  // namespace tactiscope::ui

@@ -6,13 +6,11 @@
 #include "ui/VocabularyText.h"
 
 #include "core/Version.h"
-#include "core/report/PressTable.h"
 #include "core/report/VerdictTrail.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/SafeOutput.h"
 #include "core/text/UtcTime.h"
-#include "ui/report/CapacitiveSummary.h"
-#include "ui/report/PalpationFigures.h"
+#include "ui/modes/ModeUi.h"
 #include "ui/report/ReportHtml.h"
 #include "ui/report/ReportPlot.h"
 
@@ -40,9 +38,6 @@ using namespace reporthtml;
 // the document's 96 dpi.
 constexpr int kTextWidth_px = 640;
 constexpr int kLaneHeight_px = 130;  // four lanes and the header fit on the first page
-constexpr double kPlotScale = 3.0;   // ≈ 290 dpi on paper
-constexpr int kScaleWidth_px = 300;
-constexpr int kScaleHeight_px = 260;
 
 // The page count of a PDF as written: its page tree's root says
 // "/Count N" after "/Type /Pages" (Qt's writer makes one root, no subtrees).
@@ -212,67 +207,11 @@ QString defectTables(const core::report::ReportData& data)
                         crossings);
 }
 
-// The presses (site, k_o ± u, depth), each site's presses summed up
-// (n, mean, SD, range), the grid map and the tissue scale with the sites'
-// means; the scale image is added to the document.
-QString palpationSection(const core::report::ReportData& data, QTextDocument& document)
-{
-    const auto presses = core::report::pressRows(data.readings);
-    if (presses.empty()) return {};
-    std::vector<QStringList> rows;
-    const auto escaped = [](QStringList cells) {
-        for (QString& cell : cells) cell = cell.toHtmlEscaped();
-        return cells;
-    };
-    for (const auto& p : presses) rows.push_back(escaped(pressCells(p)));
-    QString html = QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Presses (%1)").arg(presses.size()));
-    if (data.analysis != core::storage::kLiveAnalysis)
-        html += QStringLiteral("<p>%1</p>")
-                    .arg(QObject::tr("From the saved re-analysis \"%1\" (the recorded readings are in the session).")
-                             .arg(text(data.analysis)));
-    html += table({QObject::tr("Time (s)"), QObject::tr("Site"), QObject::tr("k<sub>o</sub> ± u (N/m)"),
-                   QObject::tr("Depth (mm)")},
-                  rows);
-    html += QStringLiteral("<p>%1</p>")
-                .arg(QObject::tr("u: standard uncertainty from the force noise and the zero's uncertainty; the "
-                                 "beam model's systematic terms (E, t³, L³) are not in it."));
-    const auto sites = core::report::siteSummaries(presses);
-    if (!sites.empty()) {
-        std::vector<QStringList> siteRows;
-        for (const auto& site : sites) siteRows.push_back(escaped(siteCells(site)));
-        html += QStringLiteral("<h2>%1</h2>").arg(QObject::tr("By site"));
-        html += table({QObject::tr("Site"), QObject::tr("n"), QObject::tr("Mean (N/m)"), QObject::tr("SD (N/m)"),
-                       QObject::tr("Range (N/m)")},
-                      siteRows);
-    }
-    const QUrl scaleUrl(QStringLiteral("tactiscope://tissue-scale.png"));
-    document.addResource(QTextDocument::ImageResource, scaleUrl,
-                         renderTissueScale(core::report::scaleMarks(presses, QObject::tr("all").toStdString()),
-                                           QSize(kScaleWidth_px, kScaleHeight_px), kPlotScale));
-    const QString grid = siteGridHtml(sites);
-    html += QStringLiteral("<h2>%1</h2>")
-                .arg(grid.isEmpty() ? QObject::tr("Tissue scale") : QObject::tr("Site map and tissue scale"));
-    html += QStringLiteral("<table cellspacing=0 cellpadding=6><tr><td valign=top>%1</td>"
-                           "<td valign=top><img src='%2' width=%3 height=%4></td></tr></table>")
-                .arg(grid)
-                .arg(scaleUrl.toString())
-                .arg(kScaleWidth_px)
-                .arg(kScaleHeight_px);
-    return html + QStringLiteral("<p><small>%1</small></p>")
-                      .arg(QObject::tr("Each cell and red arrow: the mean object stiffness of a site's presses, "
-                                       "against the reference tissues of seed 001."));
-}
-
-// The baselines and the calibration a capacitive session's readings went through.
-QString capacitiveSection(const core::report::ReportData& data)
-{
-    if (!data.capacitive) return {};
-    return QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Capacitive beam")) + capacitiveBasisHtml(*data.capacitive);
-}
-
 QString eventTables(const core::report::ReportData& data, QTextDocument& document)
 {
-    QString html = capacitiveSection(data);
+    // The mode's own section (ui/modes/ModeUi.h) first; without one, its readings as a table.
+    const auto section = modeUi(data.session.metadata.mode).reportSection;
+    QString html = section ? section(data, document) : QString();
     std::vector<QStringList> others;
     bool anyDefect = false;
     for (const auto& e : data.events) {
@@ -281,9 +220,7 @@ QString eventTables(const core::report::ReportData& data, QTextDocument& documen
             others.push_back({number(e.start_s, 3), wordText(e.kind), orDash(e.note)});
     }
     if (core::definitionOf(data.session.metadata.mode).detectsDefects || anyDefect) html += defectTables(data);
-    if (data.session.metadata.mode == core::Mode::Palpation) {
-        html += palpationSection(data, document);
-    } else if (!data.readings.empty()) {
+    if (!section && !data.readings.empty()) {
         std::vector<QStringList> rows;
         for (const auto& r : data.readings) {
             QString value = number(r.value, 2);
@@ -328,7 +265,7 @@ std::unique_ptr<QTextDocument> buildReportDocument(const core::report::ReportDat
     const int plotHeight = kLaneHeight_px * static_cast<int>(std::max<std::size_t>(1, data.traces.size())) + 40;
     const QUrl plotUrl(QStringLiteral("tactiscope://plot.png"));
     document->addResource(QTextDocument::ImageResource, plotUrl,
-                          renderReportPlot(data, QSize(kTextWidth_px, plotHeight), kPlotScale));
+                          renderReportPlot(data, QSize(kTextWidth_px, plotHeight), kReportImageScale));
     QString html = QStringLiteral("<h1>%1</h1>")
                        .arg(QObject::tr("Inspection report — %1").arg(orDash(data.session.metadata.subject)));
     html += header(data);

@@ -11,6 +11,9 @@
 
 namespace tactiscope::ui::reporthtml {
 
+// The report's images are drawn at this many pixels per logical pixel: ≈ 290 dpi on paper.
+inline constexpr double kReportImageScale = 3.0;
+
 QString text(const std::string& value);    // HTML-escaped
 QString orDash(const std::string& value);  // "—" when empty
 QString number(double value, int decimals);

@@ -1,6 +1,7 @@
 // PressesPanel: two lists, the grid map's table and the scale.
 #include "ui/review/PressesPanel.h"
 
+#include "core/report/PressTable.h"
 #include "ui/StiffnessScale.h"
 #include "ui/report/PalpationFigures.h"
 #include "ui/review/PalpationReanalysisBox.h"
@@ -32,12 +33,11 @@ QTreeWidget* list(const QStringList& headers, const QString& name, QWidget* pare
 
 }  // namespace
 
-PressesPanel::PressesPanel(core::storage::SessionSource& store, const core::storage::SessionSummary& session,
-                           QWidget* parent)
-    : QGroupBox(tr("Presses"), parent),
+PressesPanel::PressesPanel(const ReviewAccountContext& context, QWidget* parent)
+    : ReviewAccount(tr("Presses"), parent),
       m_presses(list({tr("Time (s)"), tr("Source"), tr("Site"), tr("kₒ ± u (N/m)"), tr("Depth (mm)")},
                      QStringLiteral("pressList"), this)),
-      m_reanalysis(new PalpationReanalysisBox(store, session, this)),
+      m_reanalysis(new PalpationReanalysisBox(context.store, context.session, this)),
       m_sites(list({tr("Site"), tr("n"), tr("Mean (N/m)"), tr("SD (N/m)"), tr("Range (N/m)")},
                    QStringLiteral("siteList"), this)),
       m_grid(new QLabel(this)),
@@ -60,24 +60,37 @@ PressesPanel::PressesPanel(core::storage::SessionSource& store, const core::stor
     tabs->addTab(m_reanalysis, tr("Read again"));
     // What was read again shows beside the recorded presses.
     connect(m_reanalysis, &PalpationReanalysisBox::analysed, tabs, [tabs, this] { tabs->setCurrentWidget(m_presses); });
+    connect(m_reanalysis, &PalpationReanalysisBox::analysed, this, &ReviewAccount::recordsChanged);
+    connect(m_reanalysis, &PalpationReanalysisBox::saved, this, &ReviewAccount::recordsChanged);
     auto* layout = new QHBoxLayout(this);
     layout->addWidget(tabs, 3);
     layout->addWidget(m_scale, 2);
 
     connect(m_presses, &QTreeWidget::itemClicked, this, [this](QTreeWidgetItem* item) {
-        emit pressChosen(item->data(0, StartRole).toDouble(), item->data(0, EndRole).toDouble());
+        emit spanChosen(item->data(0, StartRole).toDouble(), item->data(0, EndRole).toDouble());
     });
 }
 
-void PressesPanel::setPresses(std::vector<core::report::PressRow> recorded, const std::vector<Source>& others)
+std::optional<ReviewAccount::Unsaved> PressesPanel::unsaved() const
 {
+    const auto* result = m_reanalysis->unsaved();
+    if (!result) return std::nullopt;
+    return Unsaved{{}, result->readings};
+}
+
+void PressesPanel::showReadings(const std::vector<core::storage::SessionReading>& recordedReadings,
+                                const std::vector<Readings>& others)
+{
+    const auto recorded = core::report::pressRows(recordedReadings);
+    std::vector<std::pair<QString, std::vector<core::report::PressRow>>> read;
+    for (const auto& source : others) read.emplace_back(source.source, core::report::pressRows(source.readings));
     m_presses->clear();
     m_sites->clear();
     // Every source's presses in time order, so a re-read press sits by its recorded one.
     std::vector<std::pair<const core::report::PressRow*, QString>> rows;
     for (const auto& p : recorded) rows.emplace_back(&p, tr("recorded"));
-    for (const auto& source : others)
-        for (const auto& p : source.presses) rows.emplace_back(&p, source.name);
+    for (const auto& [source, presses] : read)
+        for (const auto& p : presses) rows.emplace_back(&p, source);
     std::ranges::stable_sort(rows, {}, [](const auto& row) { return row.first->start_s; });
     for (const auto& [press, source] : rows) {
         QStringList cells = pressCells(*press);

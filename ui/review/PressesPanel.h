@@ -6,11 +6,9 @@
 // press shows it on the plot.
 #pragma once
 
-#include "core/report/PressTable.h"
-#include "core/storage/SessionStore.h"
+#include "ui/review/ReviewAccount.h"
 
-#include <QGroupBox>
-
+#include <optional>
 #include <vector>
 
 class QLabel;
@@ -21,26 +19,22 @@ namespace tactiscope::ui {
 class PalpationReanalysisBox;
 class StiffnessScale;
 
-class PressesPanel : public QGroupBox {
+class PressesPanel : public ReviewAccount {
     Q_OBJECT
 
 public:
     // The store and session are the review window's; the re-analysis reads them.
-    PressesPanel(core::storage::SessionSource& store, const core::storage::SessionSummary& session, QWidget* parent);
+    PressesPanel(const ReviewAccountContext& context, QWidget* parent);
 
-    // Presses read by something else than the recording, listed beside its own.
-    struct Source {
-        QString name;  // "re-analysis", "saved \"…\""
-        std::vector<core::report::PressRow> presses;
-    };
+    // The re-read presses until they are saved.
+    std::optional<Unsaved> unsaved() const override;
     // The recorded presses fill every view; the others join the press list.
-    void setPresses(std::vector<core::report::PressRow> recorded, const std::vector<Source>& others = {});
+    void showReadings(const std::vector<core::storage::SessionReading>& recorded,
+                      const std::vector<Readings>& others) override;
+    bool wantsRoom() const override { return true; }
     PalpationReanalysisBox* reanalysis() const { return m_reanalysis; }
     QTreeWidget* pressList() const { return m_presses; }
     QTreeWidget* siteList() const { return m_sites; }
-
-signals:
-    void pressChosen(double start_s, double end_s);
 
 private:
     QTreeWidget* m_presses;

@@ -5,6 +5,7 @@
 
 #include "ui/review/AnalysisName.h"
 
+#include "core/ModeCapability.h"
 #include "core/derived/StoredDetection.h"
 #include "core/storage/DefectRecords.h"
 
@@ -54,12 +55,11 @@ QString samplesText(std::size_t samples)
 
 }  // namespace
 
-ReanalysisPanel::ReanalysisPanel(const QString& storePath, core::storage::SessionSource& store,
-                                 const core::storage::SessionSummary& session, QWidget* parent)
-    : QGroupBox(tr("Re-analysis: surface-deflection detector (seed 000)"), parent),
-      m_storePath(storePath),
-      m_store(store),
-      m_session(session),
+ReanalysisPanel::ReanalysisPanel(const ReviewAccountContext& context, QWidget* parent)
+    : ReviewAccount(tr("Re-analysis: surface-deflection detector (seed 000)"), parent),
+      m_storePath(context.storePath),
+      m_store(context.store),
+      m_session(context.session),
       m_lagStart(spin(this, "lagStartSpin", 0.1, 10000.0, 2.0, 1, tr(" ms"))),
       m_lagStop(spin(this, "lagStopSpin", 0.1, 10000.0, 150.0, 1, tr(" ms"))),
       m_lagStep(spin(this, "lagStepSpin", 0.1, 1000.0, 2.0, 1, tr(" ms"))),
@@ -106,7 +106,7 @@ ReanalysisPanel::ReanalysisPanel(const QString& storePath, core::storage::Sessio
 
     // The live detector's lags: the paper's 2 ms steps, or the sample
     // interval when the probe streams slower.
-    const double step_ms = std::max(2.0, 1e3 / std::max(session.sampleRate_hz, 1e-9));
+    const double step_ms = std::max(2.0, 1e3 / std::max(m_session.sampleRate_hz, 1e-9));
     m_lagStart->setValue(step_ms);
     m_lagStep->setValue(step_ms);
 
@@ -128,11 +128,13 @@ ReanalysisPanel::ReanalysisPanel(const QString& storePath, core::storage::Sessio
     form->addRow(m_status);
     setLayout(form);
 
-    const auto channels = store.channels(session.id);
-    for (std::size_t c = 0; c < channels.size(); ++c)
-        if (channels[c].descriptor.kind == core::ChannelKind::Strain) m_cantilevers.push_back(c);
+    // The cantilevers by the roles they were recorded with, as the live detector read them.
+    std::vector<core::ChannelDescriptor> descriptors;
+    for (const auto& channel : m_store.channels(m_session.id)) descriptors.push_back(channel.descriptor);
+    if (const auto cantilevers = core::modeChannels(m_session.metadata.mode, descriptors)) m_cantilevers = *cantilevers;
     if (m_cantilevers.size() < 2) {
-        m_status->setText(tr("This session has fewer than two strain channels: the detector needs both cantilevers."));
+        m_status->setText(tr("This session has no two cantilevers (A and B) among its channels: the detector needs "
+                             "both."));
         m_run->setEnabled(false);
     } else {
         m_status->setText(tr("Change the parameters and run: the new events appear beside the recorded ones."));
@@ -151,6 +153,11 @@ ReanalysisPanel::ReanalysisPanel(const QString& storePath, core::storage::Sessio
 }
 
 ReanalysisPanel::~ReanalysisPanel() = default;
+
+std::optional<ReviewAccount::Unsaved> ReanalysisPanel::unsaved() const
+{
+    return Unsaved{core::storage::defectRecords(unsavedEvents(), core::storage::kLiveAnalysis), {}};
+}
 
 std::optional<core::detector::StretchSettings> ReanalysisPanel::settings()
 {
@@ -251,6 +258,7 @@ void ReanalysisPanel::finish(Outcome outcome)
                           .arg(samplesText(outcome.detection->analysedSamples))
                           .arg(outcome.elapsed_s, 0, 'f', 2));
     emit analysed();
+    emit recordsChanged();
 }
 
 void ReanalysisPanel::parametersChanged()
@@ -275,6 +283,7 @@ QString ReanalysisPanel::saveAs(const QString& name)
     m_save->setEnabled(false);
     m_status->setText(tr("Saved as the analysis \"%1\" (%2 events).").arg(trimmed).arg(m_events.size()));
     emit saved(trimmed);
+    emit recordsChanged();
     return {};
 }
 

@@ -11,8 +11,7 @@
 #include "core/detector/DefectEvent.h"
 #include "core/detector/StreamingDetection.h"
 #include "core/storage/SessionStore.h"
-
-#include <QGroupBox>
+#include "ui/review/ReviewAccount.h"
 
 #include <cstdint>
 #include <optional>
@@ -28,13 +27,12 @@ class QPushButton;
 
 namespace tactiscope::ui {
 
-class ReanalysisPanel : public QGroupBox {
+class ReanalysisPanel : public ReviewAccount {
     Q_OBJECT
 
 public:
     // The store is the review window's (for saving); the worker opens its own.
-    ReanalysisPanel(const QString& storePath, core::storage::SessionSource& store,
-                    const core::storage::SessionSummary& session, QWidget* parent);
+    explicit ReanalysisPanel(const ReviewAccountContext& context, QWidget* parent);
     ~ReanalysisPanel() override;
 
     // The parameters as set in the panel; nullopt (and the reason shown) when
@@ -51,6 +49,8 @@ public:
     {
         return m_saved ? std::vector<core::detector::DefectEvent>{} : m_events;
     }
+    // Its row of markers is always there: empty until a run finds defects.
+    std::optional<Unsaved> unsaved() const override;
     bool hasResult() const { return m_hasResult; }
     // Stores the last result as an analysis; returns an error, or empty.
     QString saveAs(const QString& name);

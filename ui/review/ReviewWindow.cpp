@@ -13,26 +13,21 @@
 #include "core/report/PressTable.h"
 #include "core/report/ReportData.h"
 #include "core/report/VerdictTrail.h"
-#include "core/sensors/SensorProfile.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/SafeOutput.h"
 #include "core/storage/SessionExport.h"
 #include "ui/calibration/WizardText.h"
-#include "ui/report/CapacitiveSummary.h"
+#include "ui/modes/ModeUi.h"
 #include "ui/report/ReportDocument.h"
-#include "ui/review/PalpationReanalysisBox.h"
-#include "ui/review/PressesPanel.h"
-#include "ui/review/ReanalysisPanel.h"
+#include "ui/review/ReviewAccount.h"
 #include "ui/review/ReviewPlot.h"
 #include "ui/review/SessionTableModel.h"
 
 #include <QAction>
-#include <QComboBox>
 #include <QDateTime>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFontMetrics>
-#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QInputDialog>
@@ -204,26 +199,25 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionSour
     m_list->header()->setStretchLastSection(true);
     auto* bottom = new QSplitter(Qt::Horizontal, this);
     bottom->addWidget(m_list);
-    // The mode's own account beside the list: a panel's re-analysis, a
-    // palpation's presses and sites, a capacitive beam's calibration.
-    // A mode without an account of its own (general) has the list alone.
-    if (meta.mode == core::Mode::PanelScan) {
-        m_reanalysis = new ReanalysisPanel(storePath, *m_store, m_session, this);
-        bottom->addWidget(m_reanalysis);
-    } else if (meta.mode == core::Mode::Palpation) {
-        m_presses = new PressesPanel(*m_store, m_session, this);
-        connect(m_presses->reanalysis(), &PalpationReanalysisBox::analysed, this, &ReviewWindow::refreshRecords);
-        connect(m_presses->reanalysis(), &PalpationReanalysisBox::saved, this, &ReviewWindow::refreshRecords);
-        connect(m_presses, &PressesPanel::pressChosen, this, [this](double start_s, double end_s) {
+    // The mode's own account beside the list (ui/modes/ModeUi.h); a mode
+    // without one (general) has the list alone.
+    if (const auto account = modeUi(meta.mode).reviewAccount) {
+        const ReviewAccountContext context{
+            storePath, *m_store, m_session,
+            [this](const std::function<void(core::derived::LaneOptions&)>& change) { return changeLanes(change); },
+            m_plot->derivedProblem()};
+        m_account = account(context, this);
+        connect(m_account, &ReviewAccount::recordsChanged, this, &ReviewWindow::refreshRecords);
+        connect(m_account, &ReviewAccount::spanChosen, this, [this](double start_s, double end_s) {
             m_plot->centreOn(0.5 * (start_s + end_s), std::max(2.0, 2.0 * (end_s - start_s)));
             m_plot->setCursorTime(start_s);
         });
-        bottom->addWidget(m_presses);
-    } else if (meta.mode == core::Mode::Capacitive) {
-        bottom->addWidget(capacitiveBasisBox());
+        connect(m_account, &ReviewAccount::problem, this, &ReviewWindow::showProblem);
+        connect(m_account, &ReviewAccount::status, this,
+                [this](const QString& text) { statusBar()->showMessage(text); });
+        bottom->addWidget(m_account);
     }
-    // A palpation's presses, sites and scale need the room; a panel's list of crossings does.
-    const bool accountFirst = meta.mode == core::Mode::Palpation;
+    const bool accountFirst = m_account && m_account->wantsRoom();
     bottom->setStretchFactor(0, accountFirst ? 2 : 3);
     bottom->setStretchFactor(1, accountFirst ? 3 : 2);
     bottom->setSizes(accountFirst ? QList<int>{460, 740} : QList<int>{720, 480});
@@ -250,10 +244,6 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionSour
     connect(m_list, &QTreeWidget::itemClicked, this, &ReviewWindow::jumpTo);
     connect(m_list, &QTreeWidget::itemActivated, this, &ReviewWindow::jumpTo);
     connect(m_list, &QTreeWidget::itemDoubleClicked, this, &ReviewWindow::editSelectedNote);
-    if (m_reanalysis) {
-        connect(m_reanalysis, &ReanalysisPanel::analysed, this, &ReviewWindow::refreshRecords);
-        connect(m_reanalysis, &ReanalysisPanel::saved, this, &ReviewWindow::refreshRecords);
-    }
     createActions();
     refreshRecords();
     if (m_session.station.empty())
@@ -268,8 +258,7 @@ ReviewWindow::~ReviewWindow() = default;
 
 void ReviewWindow::setRawChannels(bool raw)
 {
-    m_laneOptions.raw = raw;
-    rebuildPlot();
+    changeLanes([raw](core::derived::LaneOptions& options) { options.raw = raw; });
 }
 
 bool ReviewWindow::rebuildPlot()
@@ -293,74 +282,16 @@ bool ReviewWindow::rebuildPlot()
     return true;
 }
 
-QString ReviewWindow::setCapacitiveCalibration(const std::optional<core::calibration::CalibrationRecord>& record)
+QString ReviewWindow::changeLanes(const std::function<void(core::derived::LaneOptions&)>& change)
 {
-    std::optional<core::report::CapacitiveBasis> basis;
-    try {
-        basis = core::report::capacitiveBasis(*m_store, m_session, 0, m_session.sampleCount, record);
-    } catch (const core::storage::StorageError& e) {
-        return tr("The calibration cannot be read: %1").arg(text(e.what()));
+    const core::derived::LaneOptions before = m_laneOptions;
+    change(m_laneOptions);
+    if (!rebuildPlot()) {
+        m_laneOptions = before;
+        return tr("The plot could not be redrawn through these options.");
     }
-    if (!basis) return tr("This calibration cannot be used for session %1.").arg(m_session.id);
-    m_laneOptions.capacitiveCalibration = record;
-    if (!rebuildPlot()) return tr("The plot could not be redrawn through this calibration.");
     if (!m_plot->derivedProblem().empty()) return text(m_plot->derivedProblem());
-    m_capacitiveBasis->setText(capacitiveBasisHtml(*basis));
-    statusBar()->showMessage(record ? tr("Force and deflection through the calibration of %1 (the recording's "
-                                         "stays as it was).")
-                                          .arg(text(record->timestampUtc))
-                                    : tr("Force and deflection through the calibration recorded with the session."));
     return {};
-}
-
-QWidget* ReviewWindow::capacitiveBasisBox()
-{
-    auto* box = new QGroupBox(tr("Calibration used"), this);
-    box->setObjectName(QStringLiteral("capacitiveBasis"));
-    // Another record of this beam, to read the session through (a re-analysis; nothing stored changes).
-    auto* choice = new QComboBox(box);
-    choice->setObjectName(QStringLiteral("capacitiveCalibrationChoice"));
-    choice->addItem(tr("as recorded with the session"));
-    try {
-        const auto profile = core::sensors::parseSensorProfile(m_session.metadata.profileJson, "the session's");
-        if (const auto* beam = std::get_if<core::sensors::CapacitiveBeamProfile>(&profile))
-            for (const auto& stored : m_store->calibrations(beam->name))
-                if (stored.record.kind == core::calibration::kCapacitiveKind) {
-                    m_capacitiveRecords.push_back(stored.record);
-                    choice->addItem(tr("%1 by %2")
-                                        .arg(text(stored.record.timestampUtc), stored.record.operatorName.empty()
-                                                                                   ? tr("(no name)")
-                                                                                   : text(stored.record.operatorName)));
-                }
-    } catch (const std::exception&) {
-        // No profile or store records: the recorded basis is all there is.
-    }
-    choice->setEnabled(choice->count() > 1);
-    choice->setToolTip(tr("Read the force and deflection through another calibration of this beam in the store"));
-    m_capacitiveBasis = wrappedLabel({}, box);
-    m_capacitiveBasis->setObjectName(QStringLiteral("capacitiveBasisText"));
-    m_capacitiveBasis->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-    try {
-        const auto basis = core::report::capacitiveBasis(*m_store, m_session, 0, m_session.sampleCount);
-        m_capacitiveBasis->setText(basis ? capacitiveBasisHtml(*basis)
-                                         : tr("Not known: %1").arg(text(m_plot->derivedProblem()).toHtmlEscaped()));
-    } catch (const core::storage::StorageError& e) {
-        m_capacitiveBasis->setText(tr("The calibration cannot be read: %1").arg(text(e.what()).toHtmlEscaped()));
-    }
-    connect(choice, &QComboBox::currentIndexChanged, this, [this](int index) {
-        const auto record =
-            index > 0 ? std::optional(m_capacitiveRecords[static_cast<std::size_t>(index - 1)]) : std::nullopt;
-        const QString error = setCapacitiveCalibration(record);
-        if (!error.isEmpty()) showProblem(error);
-    });
-    auto* layout = new QVBoxLayout(box);
-    auto* row = new QHBoxLayout;
-    row->addWidget(new QLabel(tr("Read through"), box));
-    row->addWidget(choice, 1);
-    layout->addLayout(row);
-    layout->addWidget(m_capacitiveBasis);
-    layout->addStretch(1);
-    return box;
 }
 
 void ReviewWindow::refreshHeader()
@@ -493,69 +424,49 @@ void ReviewWindow::refreshRecords()
     std::vector<MarkerSpan> spans;
     std::vector<Entry> entries;
     try {
-        const auto recorded = m_store->events(m_session.id);
-        const auto sites = siteTexts(core::storage::defectEventsOf(recorded));
-        std::size_t defect = 0;
-        for (const auto& e : recorded) {
-            spans.push_back({e.start_s, e.end_s, 0, eventColour(e)});
-            QString details = eventDetails(e);
-            if (e.kind == core::EventKind::Defect) details = sites[defect++] + QStringLiteral(": ") + details;
-            entries.push_back({e.start_s, e.end_s, wordText(e.kind), tr("recorded"), details});
-        }
-        if (m_reanalysis) {
-            rows << tr("Re-analysis");
-            const int row = static_cast<int>(rows.size()) - 1;
-            const auto unsaved = m_reanalysis->unsavedEvents();
-            const auto unsavedSites = siteTexts(unsaved);
-            for (std::size_t i = 0; i < unsaved.size(); ++i) {
-                const auto e = core::storage::defectRecord(unsaved[i]);
-                spans.push_back({e.start_s, e.end_s, row, eventColour(e)});
-                entries.push_back({e.start_s, e.end_s, tr("defect"), tr("re-analysis"),
-                                   unsavedSites[i] + QStringLiteral(": ") + eventDetails(e)});
-            }
-        }
-        std::vector<PressesPanel::Source> pressSources;
-        if (const auto* unsaved = m_presses ? m_presses->reanalysis()->unsaved() : nullptr) {
-            rows << tr("Re-analysis");
-            const int row = static_cast<int>(rows.size()) - 1;
-            const auto& readings = unsaved->readings;
-            for (const auto& r : readings) spans.push_back({r.start_s, r.end_s, row, kReading});
-            pressSources.push_back({tr("re-analysis"), core::report::pressRows(readings)});
-        }
-        for (const auto& analysis : m_store->analyses(m_session.id)) {
-            if (analysis == core::storage::kLiveAnalysis) continue;
-            rows << text(analysis);
-            const int row = static_cast<int>(rows.size()) - 1;
-            const QString source = tr("saved \"%1\"").arg(text(analysis));
-            const auto events = m_store->events(m_session.id, analysis);
-            const auto eventSites = siteTexts(core::storage::defectEventsOf(events));
+        // A source's events and readings on its row of markers and in the list.
+        const auto add = [&](const std::vector<core::storage::SessionEvent>& events,
+                             const std::vector<core::storage::SessionReading>& readings, int row, const QString& source,
+                             const QString& readingSource) {
+            const auto sites = siteTexts(core::storage::defectEventsOf(events));
             std::size_t crossing = 0;
             for (const auto& e : events) {
                 spans.push_back({e.start_s, e.end_s, row, eventColour(e)});
                 QString details = eventDetails(e);
-                if (e.kind == core::EventKind::Defect)
-                    details = eventSites[crossing++] + QStringLiteral(": ") + details;
+                if (e.kind == core::EventKind::Defect) details = sites[crossing++] + QStringLiteral(": ") + details;
                 entries.push_back({e.start_s, e.end_s, wordText(e.kind), source, details});
             }
-            const auto readings = m_store->readings(m_session.id, analysis);
             for (const auto& r : readings) {
                 spans.push_back({r.start_s, r.end_s, row, kReading});
-                entries.push_back({r.start_s, r.end_s, wordText(r.kind), source, readingDetails(r)});
+                entries.push_back({r.start_s, r.end_s, wordText(r.kind), readingSource, readingDetails(r)});
             }
-            if (!readings.empty()) pressSources.push_back({source, core::report::pressRows(readings)});
+        };
+        const auto newRow = [&rows](const QString& name) {
+            rows << name;
+            return static_cast<int>(rows.size()) - 1;
+        };
+        add(m_store->events(m_session.id), {}, 0, tr("recorded"), {});
+        std::vector<ReviewAccount::Readings> otherReadings;
+        if (const auto unsaved = m_account ? m_account->unsaved() : std::nullopt) {
+            add(unsaved->events, unsaved->readings, newRow(tr("Re-analysis")), tr("re-analysis"), tr("re-analysis"));
+            if (!unsaved->readings.empty()) otherReadings.push_back({tr("re-analysis"), unsaved->readings});
         }
-        rows << tr("Readings");
-        for (const auto& r : m_store->readings(m_session.id)) {
-            spans.push_back({r.start_s, r.end_s, static_cast<int>(rows.size()) - 1, kReading});
-            entries.push_back({r.start_s, r.end_s, wordText(r.kind), tr("reading"), readingDetails(r)});
+        for (const auto& analysis : m_store->analyses(m_session.id)) {
+            if (analysis == core::storage::kLiveAnalysis) continue;
+            const QString source = tr("saved \"%1\"").arg(text(analysis));
+            const auto readings = m_store->readings(m_session.id, analysis);
+            add(m_store->events(m_session.id, analysis), readings, newRow(text(analysis)), source, source);
+            if (!readings.empty()) otherReadings.push_back({source, readings});
         }
+        const auto recordedReadings = m_store->readings(m_session.id);
+        add({}, recordedReadings, newRow(tr("Readings")), {}, tr("reading"));
         rows << tr("Notes");
         for (const auto& a : m_store->annotations(m_session.id)) {
             spans.push_back({a.time_s, a.time_s, static_cast<int>(rows.size()) - 1, kNote});
             entries.push_back({a.time_s, a.time_s, tr("note"), text(a.author),
                                text(a.text) + (a.modifiedUtc != a.createdUtc ? tr(" (edited)") : QString()), a.id});
         }
-        if (m_presses) m_presses->setPresses(core::report::pressRows(m_store->readings(m_session.id)), pressSources);
+        if (m_account) m_account->showReadings(recordedReadings, otherReadings);
     } catch (const core::storage::StorageError& e) {
         showProblem(tr("The session's records cannot be read: %1").arg(text(e.what())));
     }

@@ -34,8 +34,7 @@ class QTreeWidgetItem;
 
 namespace tactiscope::ui {
 
-class PressesPanel;
-class ReanalysisPanel;
+class ReviewAccount;
 class ReviewPlot;
 
 class ReviewWindow : public QMainWindow {
@@ -49,8 +48,8 @@ public:
     std::int64_t sessionId() const { return m_session.id; }
     const QString& storePath() const { return m_storePath; }  // a file or a central store's connection string
     ReviewPlot* plot() const { return m_plot; }
-    ReanalysisPanel* reanalysis() const { return m_reanalysis; }  // null unless panel-scan
-    PressesPanel* presses() const { return m_presses; }           // null unless palpation
+    // The mode's account beside the list (ui/modes/ModeUi.h); null for a mode without one.
+    ReviewAccount* account() const { return m_account; }
     QTreeWidget* recordList() const { return m_list; }
     core::storage::SessionSource& store() { return *m_store; }
 
@@ -70,9 +69,9 @@ public:
 
     // The stored channels as they are (raw), or the mode's physical quantities.
     void setRawChannels(bool raw);
-    // A capacitive session's force and deflection through another
-    // calibration record, or (none) the recorded one; returns an error, or empty.
-    QString setCapacitiveCalibration(const std::optional<core::calibration::CalibrationRecord>& record);
+    // Changes the lane options (raw channels, the calibration read through)
+    // and redraws the plot; returns an error, or empty.
+    QString changeLanes(const std::function<void(core::derived::LaneOptions&)>& change);
 
     // Replay from the left of the view at `speed`× real time.
     void setReplaySpeed(int speed);
@@ -99,7 +98,6 @@ private:
                           const std::function<QString(const QString&)>& write);
     void showProblem(const QString& text);
     void refreshHeader();
-    QWidget* capacitiveBasisBox();
     bool rebuildPlot();  // with m_laneOptions, keeping the view; false (and said) when it cannot
     // The reviewer's name; empty (and the name box focused, with the
     // reason shown) when none was typed.
@@ -112,11 +110,8 @@ private:
     QTreeWidget* m_list = nullptr;
     QLabel* m_header = nullptr;
     QLineEdit* m_reviewer = nullptr;
-    ReanalysisPanel* m_reanalysis = nullptr;
-    PressesPanel* m_presses = nullptr;
+    ReviewAccount* m_account = nullptr;
     core::derived::LaneOptions m_laneOptions;
-    QLabel* m_capacitiveBasis = nullptr;
-    std::vector<core::calibration::CalibrationRecord> m_capacitiveRecords;  // the choices after "as recorded"
     QLabel* m_problem = nullptr;
     QSpinBox* m_speed = nullptr;
     QAction* m_playAction = nullptr;

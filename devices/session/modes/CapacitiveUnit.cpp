@@ -45,4 +45,11 @@ void CapacitiveUnit::takeZeros(core::storage::Recorder* recorder)
         if (recorder) recorder->addZero(baseline.firstIndex, core::capacitive::baselineJson(baseline.c0_f));
 }
 
+std::string CapacitiveUnit::storedText(const RecordingSummary&) const
+{
+    if (m_calibrations.empty()) return "calibration none (the beam model)";
+    const auto& record = m_calibrations.front().record;
+    return "calibration " + record.timestampUtc + " by " + record.operatorName;
+}
+
 }  // namespace tactiscope::devices::session

@@ -19,6 +19,7 @@ public:
     void startRecording(core::storage::Recorder& recorder) override;
     void take(const LiveTake&) override {}
     void takeZeros(core::storage::Recorder* recorder) override;
+    std::string storedText(const RecordingSummary& summary) const override;
 
     const std::shared_ptr<core::capacitive::LiveCapacitive>& capacitive() const { return m_capacitive; }
 

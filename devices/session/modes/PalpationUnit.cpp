@@ -3,8 +3,10 @@
 
 #include "core/calibration/CalibrationRecord.h"
 #include "core/storage/Recorder.h"
+#include "core/text/CountText.h"
 #include "devices/session/modes/StoredCalibrationLookup.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <variant>
 
@@ -73,6 +75,13 @@ void PalpationUnit::takeZeros(core::storage::Recorder* recorder)
 {
     for (const auto& zero : m_palpation->takeZeroChanges())
         if (recorder) recorder->addZero(zero.firstIndex, core::compliance::zeroJson(zero.zero));
+}
+
+std::string PalpationUnit::storedText(const RecordingSummary&) const
+{
+    const auto stored = std::ranges::count_if(m_presses, &PressRecord::stored);
+    return core::text::countText(static_cast<std::size_t>(stored), "stiffness reading", "stiffness readings") +
+           " stored";
 }
 
 }  // namespace tactiscope::devices::session

@@ -22,6 +22,7 @@ public:
     void take(const LiveTake& take) override;
     void takeZeros(core::storage::Recorder* recorder) override;
     void clearLists() override { m_presses.clear(); }
+    std::string storedText(const RecordingSummary& summary) const override;
 
     const std::shared_ptr<core::compliance::LivePalpation>& palpation() const { return m_palpation; }
     const std::vector<PressRecord>& presses() const { return m_presses; }

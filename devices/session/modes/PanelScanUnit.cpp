@@ -6,6 +6,7 @@
 #include "core/storage/AutomaticVerdict.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/Recorder.h"
+#include "core/text/CountText.h"
 
 #include <stdexcept>
 
@@ -61,6 +62,14 @@ std::optional<core::storage::VerdictDecision> PanelScanUnit::finishRecording(Rec
                                                      m_detection->settings().parameters);
     summary.verdict = decision.verdict;
     return decision;
+}
+
+std::string PanelScanUnit::storedText(const RecordingSummary& summary) const
+{
+    using core::text::countText;
+    return countText(summary.defects, "defect", "defects") + " stored" +
+           (summary.defects == 0 ? std::string() : " at " + countText(summary.sites, "site", "sites")) + ", verdict " +
+           (summary.verdict ? std::string(core::verdictText(summary.verdict)) : std::string("none"));
 }
 
 }  // namespace tactiscope::devices::session

@@ -20,6 +20,7 @@ public:
     void take(const LiveTake& take) override;
     void clearLists() override { m_defects.clear(); }
     std::optional<core::storage::VerdictDecision> finishRecording(RecordingSummary& summary, bool whole) override;
+    std::string storedText(const RecordingSummary& summary) const override;
 
     const std::shared_ptr<core::detector::LiveDetection>& detection() const { return m_detection; }
     const std::vector<core::detector::DefectEvent>& defects() const { return m_defects; }

@@ -67,6 +67,7 @@ public:
     std::shared_ptr<core::BlockSink> sink() const override { return m_sink; }
     std::optional<std::string> tare() override { return "the peak starts again only with a new connection"; }
     void take(const devices::session::LiveTake&) override { ++takes; }
+    std::string storedText(const devices::session::RecordingSummary&) const override { return "nothing stored"; }
 
     std::shared_ptr<PeakSink> m_sink;
     int takes = 0;
