@@ -2,6 +2,7 @@
 #include "DetectorOptions.h"
 
 #include "CliSupport.h"
+#include "core/detector/DefectSitesJson.h"
 #include "core/detector/PartialCorrelationKernel.h"
 #include "core/text/JsonWriter.h"
 
@@ -133,6 +134,7 @@ std::string eventsJson(std::size_t samples, std::size_t lags, double elapsed_s, 
         json.endObject();
     }
     json.endArray();
+    core::detector::writeSitesJson(json, core::detector::scanSites(events));
     json.endObject();
     return json.str();
 }

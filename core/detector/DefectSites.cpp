@@ -1,9 +1,14 @@
-// DefectSites: reversals from direction changes, each event placed within
-// its stroke by the harmonic model, then neighbours within a tolerance merged.
+// DefectSites: short runs folded into crossings, reversals from direction
+// changes kept only where they make plausible strokes, each crossing placed
+// by its phase in its stroke (harmonic or constant-speed strokes), then
+// grouped by the rule that one stroke crosses each defect once.
 #include "core/detector/DefectSites.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
@@ -23,9 +28,25 @@ std::optional<double> speedOf(const DefectEvent& event)
     return std::nullopt;
 }
 
-// The reversal between two events of opposite direction: near a reversal
-// the speed grows linearly with the time from it, so the times to it are
-// in the ratio of the speeds (half way without them).
+double median(std::vector<double> values)
+{
+    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+    std::nth_element(values.begin(), middle, values.end());
+    return *middle;
+}
+
+// The robust relative scatter of positive values: MAD / median.
+double relativeScatter(const std::vector<double>& values)
+{
+    const double centre = median(values);
+    std::vector<double> deviations;
+    for (const double v : values) deviations.push_back(std::abs(v - centre));
+    return median(deviations) / centre;
+}
+
+// The reversal between two crossings of opposite direction: near a reversal
+// the speed grows linearly with the time from it, so the times to it are in
+// the ratio of the speeds (half way without them).
 double reversalBetween(const DefectEvent& before, const DefectEvent& after)
 {
     const double gap_s = midTime(after) - midTime(before);
@@ -35,95 +56,334 @@ double reversalBetween(const DefectEvent& before, const DefectEvent& after)
     return midTime(before) + share * gap_s;
 }
 
-double median(std::vector<double> values)
+class Placer {
+public:
+    explicit Placer(std::span<const DefectEvent> events)
+        : m_events(events),
+          m_order(events.size())
+    {
+        m_places.position_m.resize(events.size());
+        m_places.stroke.resize(events.size());
+        m_places.partOf.resize(events.size());
+        std::iota(m_order.begin(), m_order.end(), std::size_t{0});
+        std::ranges::stable_sort(m_order, {}, [&](std::size_t i) { return midTime(events[i]); });
+    }
+
+    CrossingPlaces place()
+    {
+        if (m_events.empty()) return std::move(m_places);
+        foldShortRuns();
+        const auto reversals = plausibleReversals();
+        if (reversals.size() < 2) {
+            m_places.model = "not placed: no whole stroke between two reversals";
+            return std::move(m_places);
+        }
+        placeByPhase(reversals);
+        return std::move(m_places);
+    }
+
+private:
+    bool isCrossing(std::size_t i) const { return !m_places.partOf[i]; }
+
+    // The crossing nearest in time to event i, among those that are crossings.
+    std::optional<std::size_t> nearestCrossing(std::size_t i) const
+    {
+        std::optional<std::size_t> best;
+        for (const std::size_t j : m_order)
+            if (j != i && isCrossing(j) &&
+                (!best || std::abs(midTime(m_events[j]) - midTime(m_events[i])) <
+                              std::abs(midTime(m_events[*best]) - midTime(m_events[i]))))
+                best = j;
+        return best;
+    }
+
+    // Marks `runs` as parts of their nearest crossings, all at once, so each
+    // joins a crossing and not another of them.
+    void fold(const std::vector<std::size_t>& runs)
+    {
+        for (const std::size_t i : runs) m_places.partOf[i] = i;
+        for (const std::size_t i : runs) m_places.partOf[i] = nearestCrossing(i);
+    }
+
+    void foldShortRuns()
+    {
+        std::vector<double> durations;
+        for (const auto& e : m_events) durations.push_back(e.end_s - e.start_s);
+        const double typical = median(durations);
+        std::vector<std::size_t> shortRuns;
+        for (std::size_t i = 0; i < m_events.size(); ++i)
+            if (durations[i] < kShortRunFraction * typical) shortRuns.push_back(i);
+        fold(shortRuns);
+    }
+
+    // Reversal times between successive crossings of opposite direction,
+    // with each implausibly short stroke's crossings folded into their
+    // neighbours until none is left.
+    std::vector<double> plausibleReversals()
+    {
+        for (;;) {
+            std::vector<double> reversals;
+            std::vector<std::pair<std::size_t, std::size_t>> between;  // the crossings each reversal lies between
+            std::optional<std::size_t> previous;
+            for (const std::size_t i : m_order) {
+                if (!isCrossing(i) || m_events[i].direction == 0) continue;
+                if (previous && m_events[*previous].direction != m_events[i].direction) {
+                    reversals.push_back(reversalBetween(m_events[*previous], m_events[i]));
+                    between.emplace_back(*previous, i);
+                }
+                previous = i;
+            }
+            if (reversals.size() < 3) return reversals;  // one whole stroke at most: nothing to compare
+            std::vector<double> strokes;
+            for (std::size_t k = 1; k < reversals.size(); ++k) strokes.push_back(reversals[k] - reversals[k - 1]);
+            const double typical = median(strokes);
+            const auto shortest = std::ranges::min_element(strokes);
+            if (*shortest >= kMinStrokeFraction * typical) return reversals;
+            // The crossings inside the short stroke: from the one after its
+            // first reversal to the one before its second.
+            const auto k = static_cast<std::size_t>(shortest - strokes.begin());
+            const double from = midTime(m_events[between[k].second]);
+            const double to = midTime(m_events[between[k + 1].first]);
+            std::vector<std::size_t> inside;
+            for (const std::size_t i : m_order)
+                if (isCrossing(i) && midTime(m_events[i]) >= from && midTime(m_events[i]) <= to) inside.push_back(i);
+            fold(inside);
+        }
+    }
+
+    void placeByPhase(const std::vector<double>& reversals)
+    {
+        std::vector<double> strokes;
+        for (std::size_t k = 1; k < reversals.size(); ++k) strokes.push_back(reversals[k] - reversals[k - 1]);
+        const double typicalStroke_s = median(strokes);
+
+        struct Phased {
+            std::size_t event;
+            double tau_s, stroke_s, phase, speed;
+        };
+        std::vector<Phased> phased;
+        for (const std::size_t i : m_order) {
+            const DefectEvent& event = m_events[i];
+            const auto speed = speedOf(event);
+            if (!isCrossing(i) || !speed || event.direction == 0) continue;
+            const double t_s = midTime(event);
+            const auto next = std::ranges::upper_bound(reversals, t_s);
+            const std::optional<double> behind =
+                next == reversals.begin() ? std::nullopt : std::optional<double>(t_s - *std::prev(next));
+            const std::optional<double> ahead = next == reversals.end() ? std::nullopt : std::optional(*next - t_s);
+            const double stroke_s = behind && ahead ? *behind + *ahead : typicalStroke_s;
+            const double tau_s = behind.value_or(stroke_s - ahead.value_or(0.0));
+            if (!(tau_s > 0.0 && tau_s < stroke_s)) continue;  // beyond the typical stroke: cannot be placed
+            m_places.stroke[i] = static_cast<std::size_t>(next - reversals.begin());
+            phased.push_back({i, tau_s, stroke_s, std::numbers::pi * tau_s / stroke_s, *speed});
+        }
+        if (phased.empty()) {
+            m_places.model = "not placed: no crossing with a speed inside a stroke";
+            return;
+        }
+        // Away from the reversals (sin φ ≥ 0.3), where both shapes are well
+        // conditioned; all of them when none is.
+        std::vector<double> amplitudes, speeds, phases;
+        for (const bool conditionedOnly : {true, false}) {
+            for (const Phased& p : phased)
+                if (!conditionedOnly || std::sin(p.phase) >= 0.3) {
+                    amplitudes.push_back(p.speed * p.stroke_s / (std::numbers::pi * std::sin(p.phase)));
+                    speeds.push_back(p.speed);
+                    phases.push_back(p.phase);
+                }
+            if (!amplitudes.empty()) break;
+        }
+        const auto [lowest, highest] = std::ranges::minmax(phases);
+        const bool identifiable = highest - lowest >= 0.3;
+        const bool constantSpeed = identifiable && relativeScatter(speeds) < relativeScatter(amplitudes);
+        const double amplitude_m = median(amplitudes);
+        const double speed = median(speeds);
+        for (const Phased& p : phased) {
+            const int d = m_events[p.event].direction;
+            m_places.position_m[p.event] =
+                constantSpeed ? d * speed * (2.0 * p.tau_s - p.stroke_s) / 2.0 : -d * amplitude_m * std::cos(p.phase);
+        }
+        m_places.halfStroke_m = constantSpeed ? speed * typicalStroke_s / 2.0 : amplitude_m;
+        m_places.model = constantSpeed ? "scan speed, constant-speed strokes"
+                         : identifiable
+                             ? "scan speed, harmonic strokes"
+                             : "scan speed, harmonic strokes assumed (every crossing at one phase: the speed "
+                               "profile is not known)";
+    }
+
+    std::span<const DefectEvent> m_events;
+    std::vector<std::size_t> m_order;  // the events in time order
+    CrossingPlaces m_places;
+};
+
+// Groups the members of `groups` (event indices) into sites: each group's
+// j-th member is site j, with k the typical group size, at the median key of
+// the groups of k; every member goes to the site nearest by its key.
+std::vector<std::vector<std::size_t>> byRank(const std::vector<std::vector<std::size_t>>& groups,
+                                             const std::function<double(std::size_t)>& key)
 {
-    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    return *middle;
+    std::vector<double> sizes;
+    for (const auto& g : groups)
+        if (!g.empty()) sizes.push_back(static_cast<double>(g.size()));
+    if (sizes.empty()) return {};
+    const auto k = static_cast<std::size_t>(median(sizes));
+    std::vector<std::vector<double>> ranked(k);
+    for (const auto& g : groups)
+        if (g.size() == k)
+            for (std::size_t j = 0; j < k; ++j) ranked[j].push_back(key(g[j]));
+    std::vector<double> centres;
+    for (const auto& values : ranked) centres.push_back(median(values));
+    std::vector<std::vector<std::size_t>> sites(k);
+    for (const auto& g : groups)
+        for (const std::size_t i : g) {
+            const auto nearest = std::ranges::min_element(centres, {}, [&](double c) { return std::abs(c - key(i)); });
+            sites[static_cast<std::size_t>(nearest - centres.begin())].push_back(i);
+        }
+    return sites;
 }
 
 }  // namespace
 
-std::vector<std::optional<double>> strokePositions(std::span<const DefectEvent> events)
+CrossingPlaces placeCrossings(std::span<const DefectEvent> events)
 {
-    std::vector<std::optional<double>> positions(events.size());
-    std::vector<std::size_t> order(events.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::ranges::stable_sort(order, {}, [&](std::size_t i) { return midTime(events[i]); });
-
-    std::vector<double> reversals_s;
-    for (std::size_t k = 1; k < order.size(); ++k) {
-        const DefectEvent& before = events[order[k - 1]];
-        const DefectEvent& after = events[order[k]];
-        if (before.direction != 0 && after.direction != 0 && before.direction != after.direction)
-            reversals_s.push_back(reversalBetween(before, after));
-    }
-    if (reversals_s.size() < 2) return positions;  // no whole stroke: no stroke length to place by
-    std::vector<double> strokes_s;
-    for (std::size_t k = 1; k < reversals_s.size(); ++k) strokes_s.push_back(reversals_s[k] - reversals_s[k - 1]);
-    const double medianStroke_s = median(strokes_s);
-
-    for (std::size_t i = 0; i < events.size(); ++i) {
-        const DefectEvent& event = events[i];
-        const auto speed = speedOf(event);
-        if (!speed || event.direction == 0) continue;
-        const double t_s = midTime(event);
-        const auto next = std::ranges::upper_bound(reversals_s, t_s);
-        const std::optional<double> behind =
-            next == reversals_s.begin() ? std::nullopt : std::optional<double>(t_s - *std::prev(next));
-        const std::optional<double> ahead =
-            next == reversals_s.end() ? std::nullopt : std::optional<double>(*next - t_s);
-        const double stroke_s = behind && ahead ? *behind + *ahead : medianStroke_s;
-        const double behind_s = behind.value_or(stroke_s - ahead.value_or(0.0));
-        const double ahead_s = ahead.value_or(stroke_s - behind_s);
-        if (!(behind_s > 0.0 && ahead_s > 0.0)) continue;  // beyond the median stroke: cannot be placed
-        const double omega = std::numbers::pi / stroke_s;
-        const auto distance = [&](double tau_s) { return *speed * std::tan(0.5 * omega * tau_s) / omega; };
-        positions[i] = event.direction * 0.5 * (distance(behind_s) - distance(ahead_s));
-    }
-    return positions;
+    return Placer(events).place();
 }
 
-SiteGrouping groupSites(std::span<const DefectEvent> events, std::span<const std::optional<double>> positions,
-                        double tolerance_m, std::string method)
+SiteGrouping groupSites(std::span<const DefectEvent> events, const CrossingPlaces& places)
 {
-    if (positions.size() != events.size())
-        throw std::invalid_argument("defect sites: one position per event is needed");
+    if (places.position_m.size() != events.size() || places.partOf.size() != events.size() ||
+        places.stroke.size() != events.size())
+        throw std::invalid_argument("defect sites: one place per event is needed");
     SiteGrouping grouping;
-    grouping.method = std::move(method);
-    std::vector<std::size_t> placed, unplaced;
-    for (std::size_t i = 0; i < events.size(); ++i) (positions[i] ? placed : unplaced).push_back(i);
-    if (placed.empty()) grouping.method = "not placed";
-    std::ranges::stable_sort(placed, {}, [&](std::size_t i) { return *positions[i]; });
-
-    const auto addCrossing = [&](DefectSite& site, std::size_t i) {
-        site.crossings.push_back(i);
-        if (events[i].direction != 0) ++(events[i].direction > 0 ? site.forward : site.backward);
+    const auto position = [&](std::size_t i) { return *places.position_m[i]; };
+    const auto centreOf = [&](const std::vector<std::size_t>& site) {
+        std::vector<double> xs;
+        for (const std::size_t i : site) xs.push_back(position(i));
+        return median(xs);
     };
-    for (std::size_t k = 0; k < placed.size(); ++k) {
-        if (k == 0 || *positions[placed[k]] - *positions[placed[k - 1]] > tolerance_m) grouping.sites.emplace_back();
-        addCrossing(grouping.sites.back(), placed[k]);
-    }
-    for (const std::size_t i : unplaced) addCrossing(grouping.sites.emplace_back(), i);
 
-    for (DefectSite& site : grouping.sites) {
-        std::ranges::sort(site.crossings, {}, [&](std::size_t i) { return events[i].start_s; });
+    // Placed crossings: one stroke's are different sites.
+    std::map<std::size_t, std::vector<std::size_t>> strokes;
+    std::vector<std::size_t> unplaced;
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        if (places.partOf[i]) continue;
+        if (places.position_m[i] && places.stroke[i])
+            strokes[*places.stroke[i]].push_back(i);
+        else
+            unplaced.push_back(i);
+    }
+    std::vector<std::vector<std::size_t>> byStroke;
+    for (auto& [stroke, members] : strokes) {
+        std::ranges::sort(members, {}, position);
+        byStroke.push_back(members);
+    }
+    std::vector<std::vector<std::size_t>> ranked = byRank(byStroke, position);
+    std::erase_if(ranked, [](const auto& s) { return s.empty(); });
+    std::ranges::sort(ranked, {}, centreOf);
+    // Sites closer than the detector's own scatter are one (a crossing it
+    // split); a crossing out of reach of its site starts another.
+    std::vector<std::vector<std::size_t>> placed;
+    for (auto& site : ranked) {
+        if (!placed.empty() && std::abs(centreOf(site) - centreOf(placed.back())) < kMinSiteSeparation_m)
+            placed.back().insert(placed.back().end(), site.begin(), site.end());
+        else
+            placed.push_back(std::move(site));
+    }
+    std::vector<std::size_t> strays;
+    for (auto& site : placed) {
+        const double centre = centreOf(site);
+        std::erase_if(site, [&](std::size_t i) {
+            const bool far = std::abs(position(i) - centre) > kSiteReach_m;
+            if (far) strays.push_back(i);
+            return far;
+        });
+    }
+    std::ranges::sort(strays, {}, position);
+    for (std::size_t k = 0; k < strays.size(); ++k) {
+        if (k == 0 || position(strays[k]) - position(strays[k - 1]) > kSiteReach_m) placed.emplace_back();
+        placed.back().push_back(strays[k]);
+    }
+    std::erase_if(placed, [](const auto& s) { return s.empty(); });
+
+    // Unplaced crossings: one pass's are different sites, by their time
+    // from the pass's start (passes split at the long gaps).
+    std::ranges::sort(unplaced, {}, [&](std::size_t i) { return midTime(events[i]); });
+    std::vector<std::vector<std::size_t>> passes;
+    if (!unplaced.empty()) {
+        std::vector<double> gaps;
+        for (std::size_t k = 1; k < unplaced.size(); ++k)
+            gaps.push_back(midTime(events[unplaced[k]]) - midTime(events[unplaced[k - 1]]));
+        const double shortest = gaps.empty() ? 0.0 : *std::ranges::min_element(gaps);
+        const double longest = gaps.empty() ? 0.0 : *std::ranges::max_element(gaps);
+        const bool even = longest < 1.5 * shortest;  // every crossing a pass of its own
+        passes.push_back({unplaced.front()});
+        for (std::size_t k = 1; k < unplaced.size(); ++k) {
+            if (even || gaps[k - 1] > 0.5 * (shortest + longest)) passes.emplace_back();
+            passes.back().push_back(unplaced[k]);
+        }
+    }
+    std::map<std::size_t, double> offset;
+    for (const auto& pass : passes)
+        for (const std::size_t i : pass) offset[i] = midTime(events[i]) - midTime(events[pass.front()]);
+    std::vector<std::vector<std::size_t>> unplacedSites = byRank(passes, [&](std::size_t i) { return offset.at(i); });
+    std::erase_if(unplacedSites, [](const auto& s) { return s.empty(); });
+
+    std::map<std::size_t, std::size_t> siteOf;  // crossing → site
+    const auto addSite = [&](std::vector<std::size_t> members, bool isPlaced) {
+        DefectSite& site = grouping.sites.emplace_back();
+        std::ranges::sort(members, {}, [&](std::size_t i) { return events[i].start_s; });
+        site.crossings = std::move(members);
+        for (const std::size_t i : site.crossings) {
+            siteOf[i] = grouping.sites.size() - 1;
+            if (events[i].direction != 0) ++(events[i].direction > 0 ? site.forward : site.backward);
+        }
         site.first_s = events[site.crossings.front()].start_s;
         site.last_s = events[site.crossings.back()].end_s;
-        if (!positions[site.crossings.front()]) continue;
-        double sum = 0.0;
-        for (const std::size_t i : site.crossings) sum += *positions[i];
-        const double mean = sum / static_cast<double>(site.crossings.size());
-        site.position_m = mean;
+        if (!isPlaced) return;
+        site.position_m = centreOf(site.crossings);
         for (const std::size_t i : site.crossings)
-            site.spread_m = std::max(site.spread_m, std::abs(*positions[i] - mean));
+            site.spread_m = std::max(site.spread_m, std::abs(position(i) - *site.position_m));
+    };
+    std::ranges::sort(placed, {}, centreOf);
+    for (auto& site : placed) addSite(std::move(site), true);
+    std::ranges::sort(unplacedSites, {}, [&](const auto& s) { return midTime(events[s.front()]); });
+    for (auto& site : unplacedSites) addSite(std::move(site), false);
+
+    // Each short run with the site of the crossing it is part of.
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        std::optional<std::size_t> owner = places.partOf[i];
+        for (std::size_t hops = 0; owner && places.partOf[*owner] && hops < events.size(); ++hops)
+            owner = places.partOf[*owner];
+        if (!owner || !siteOf.contains(*owner)) continue;
+        DefectSite& site = grouping.sites[siteOf.at(*owner)];
+        site.parts.push_back(i);
+        site.first_s = std::min(site.first_s, events[i].start_s);
+        site.last_s = std::max(site.last_s, events[i].end_s);
     }
+    const bool anyPlaced = std::ranges::any_of(grouping.sites, [](const auto& s) { return s.position_m.has_value(); });
+    grouping.method = anyPlaced ? places.model : "not placed";
     return grouping;
 }
 
 SiteGrouping scanSites(std::span<const DefectEvent> events)
 {
-    return groupSites(events, strokePositions(events));
+    return groupSites(events, placeCrossings(events));
+}
+
+std::string siteText(const DefectSite& site)
+{
+    const std::size_t n = site.crossings.size();
+    const std::string crossings = std::to_string(n) + (n == 1 ? " crossing" : " crossings");
+    if (!site.position_m) return "position unknown (" + crossings + ")";
+    char text[96];
+    const double mm = std::abs(*site.position_m) < 0.5e-3 ? 0.0 : *site.position_m * 1e3;  // never "-0 mm"
+    if (n == 1)
+        std::snprintf(text, sizeof text, "%.0f mm (1 crossing)", mm);
+    else if (site.spread_m < 0.5e-3)
+        std::snprintf(text, sizeof text, "%.0f mm (%s, spread below 1 mm)", mm, crossings.c_str());
+    else
+        std::snprintf(text, sizeof text, "%.0f mm ± %.0f mm (%s)", mm, site.spread_m * 1e3, crossings.c_str());
+    return text;
 }
 
 }  // namespace tactiscope::core::detector

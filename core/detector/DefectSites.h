@@ -1,31 +1,47 @@
 // Defect sites: in a reciprocating scan one surface deflection is crossed
 // again and again, once per stroke, so the detector's events are crossings,
-// not defects. This groups them by where along the stroke they happened.
+// not defects. This places each crossing along the stroke and groups the
+// crossings into sites, with rules that keep a wrong number from appearing:
 //
-// Where: each event is placed within its own stroke, between the reversal
-// before it and the one after it (a reversal lies between two events of
-// opposite direction). The stroke is taken as locally harmonic, like a hand
-// or crank moving back and forth: at a point passed at speed v, τ seconds
-// from a reversal of a stroke lasting T/2, the distance to that reversal is
-// v·tan(ωτ/2)/ω with ω = π/(T/2) (from x = A·(1 − cos ωτ), v = A·ω·sin ωτ).
-// The event's speed is the detector's (cantilever spacing / best lag). The
-// two distances, to the reversal behind and the one ahead, place the event
-// relative to that stroke's centre, so a hand that drifts along the panel
-// does not carry errors from one stroke into the next. A reversal's time
-// between two events is set by their speeds (near a reversal the speed
-// grows linearly with the time from it); an event at either end of the
-// scan, with one reversal only, uses the median stroke's length.
+// Which events are crossings: the detector also gives short opposite runs
+// (a few samples, between two events or near a reversal). An event much
+// shorter than the scan's typical event (kShortRunFraction of the median)
+// makes no reversal and is no crossing of its own: it is part of the
+// crossing nearest in time (DefectSite::parts).
 //
-// What is placed: the probe's centre at the event's middle. An event lasts
-// from about when the leading cantilever's signal is matched to when the
-// trailing one's fades, so its middle finds the defect between the two
-// (measured on the simulator at +30 mm: the two directions agree within
-// 0.3 mm; placing it under the trailing cantilever puts them a spacing apart).
+// Reversals: between two crossings of opposite direction. A stroke (from
+// one reversal to the next) much shorter than the scan's median
+// (kMinStrokeFraction) is not plausible: the crossings inside it are taken
+// as parts of their neighbours and its two reversals are dropped, until
+// every stroke is plausible.
 //
-// Limits: events without a speed (no spacing known) or in a scan with no
-// reversal cannot be placed and are sites of their own; a stroke that turns
-// back before reaching a defect is invisible to this (no event marks that
-// reversal), so it assumes every stroke crosses the sites it lies between.
+// Where: by the phase of the crossing within its stroke, φ = π·τ/T (τ from
+// the reversal behind, T the stroke's duration; the median stroke at either
+// end of the scan), and one stroke shape for the whole scan:
+//  - harmonic (a hand or crank): x = −d·A·cos φ, with the half-stroke A the
+//    median over crossings of v/(ω·sin φ), ω = π/T (from x = −A·cos ωτ,
+//    v = A·ω·sin ωτ), v the detector's speed (spacing / best lag);
+//  - constant speed (a machine): x = d·V·(τ − (T − τ))/2, V the median speed.
+// d is the direction (+1: A then B). Both stay within the stroke (|x| ≤ A,
+// |x| ≤ V·T/2) by construction. The shape is chosen from the crossings'
+// speeds when they were seen at different phases (harmonic: v/sin φ is the
+// same for all; constant: v is); with one phase only (a single dent) it is
+// not identifiable, harmonic is assumed and the method says so.
+//
+// What is placed: the probe's centre at the event's middle (the defect
+// between the two cantilevers: measured on the simulator at +30 mm, the two
+// directions agree within 0.3 mm).
+//
+// Grouping: one stroke crosses each defect once, so the crossings of one
+// stroke are different sites. The typical number k of crossings per stroke
+// gives k sites, each at the median place of the strokes' j-th crossing;
+// every crossing goes to the nearest, and one farther than kSiteReach_m
+// from all of them starts a site of its own. Sites closer than
+// kMinSiteSeparation_m are one (a crossing the detector split).
+// Crossings that cannot be placed (no speed, no reversal: a dent seen in
+// one direction only) are grouped the same way by their order within each
+// pass (passes split at the long gaps between crossings): a dent seen one
+// way is one site "position unknown", not one per crossing.
 #pragma once
 
 #include "core/detector/DefectEvent.h"
@@ -38,14 +54,27 @@
 
 namespace tactiscope::core::detector {
 
-// Each event's place along the stroke, in metres from the stroke's centre
-// (positive: towards where A leads); none when it cannot be placed.
-std::vector<std::optional<double>> strokePositions(std::span<const DefectEvent> events);
+inline constexpr double kShortRunFraction = 0.35;
+inline constexpr double kMinStrokeFraction = 0.4;
+inline constexpr double kSiteReach_m = 0.015;
+inline constexpr double kMinSiteSeparation_m = 0.010;
+
+// Where each event was placed, and why some were not.
+struct CrossingPlaces {
+    std::vector<std::optional<double>> position_m;   // from the stroke's centre, + towards where A leads
+    std::vector<std::optional<std::size_t>> stroke;  // the stroke (0, 1, …) each placed crossing lies in
+    std::vector<std::optional<std::size_t>> partOf;  // a short or implausible run: the crossing it belongs to
+    std::optional<double> halfStroke_m;              // the stroke's half-length, when placed
+    std::string model;                               // how the crossings were placed, for people
+};
+
+CrossingPlaces placeCrossings(std::span<const DefectEvent> events);
 
 struct DefectSite {
-    std::optional<double> position_m;    // mean of its crossings' places; none when unplaced
-    double spread_m = 0.0;               // largest distance of a crossing from that mean
+    std::optional<double> position_m;    // median of its crossings' places; none when unplaced
+    double spread_m = 0.0;               // largest distance of a crossing from that position
     std::vector<std::size_t> crossings;  // indices into the events, in time order
+    std::vector<std::size_t> parts;      // short runs that belong to its crossings
     std::size_t forward = 0;             // crossings A then B
     std::size_t backward = 0;            // crossings B then A
     double first_s = 0.0;
@@ -54,22 +83,17 @@ struct DefectSite {
 
 struct SiteGrouping {
     std::vector<DefectSite> sites;  // placed ones by position, then unplaced ones by time
-    // How the events were placed, for reports: "scan speed", "position channel" or "not placed".
+    // How the events were placed, for reports: "scan speed, harmonic strokes", …, "not placed".
     std::string method;
 };
 
-// The default tolerance: wider than the scatter of one defect's places
-// (a few mm from lag quantisation) and narrower than two defects a
-// craftsworker's finger would tell apart.
-inline constexpr double kSiteTolerance_m = 0.020;
+SiteGrouping groupSites(std::span<const DefectEvent> events, const CrossingPlaces& places);
 
-// Crossings whose places lie within `tolerance_m` of their neighbours form
-// one site; unplaced events are sites of their own. `positions` has one
-// entry per event (std::invalid_argument otherwise).
-SiteGrouping groupSites(std::span<const DefectEvent> events, std::span<const std::optional<double>> positions,
-                        double tolerance_m = kSiteTolerance_m, std::string method = "scan speed");
-
-// strokePositions() then groupSites(): the sites of a panel scan's events.
+// placeCrossings() then groupSites(): the sites of a panel scan's events.
 SiteGrouping scanSites(std::span<const DefectEvent> events);
+
+// A site's place as people read it: "37 mm ± 2 mm (6 crossings)", "37 mm
+// (6 crossings within 1 mm)", "position unknown: no reversal (6 crossings)".
+std::string siteText(const DefectSite& site);
 
 }  // namespace tactiscope::core::detector

@@ -1,6 +1,10 @@
 // Session export to CSV and JSON, window by window.
 #include "core/storage/SessionExport.h"
 
+#include "core/detector/DefectSitesJson.h"
+#include "core/modes/ModeDefinition.h"
+#include "core/storage/DefectRecords.h"
+
 #include "core/storage/SafeOutput.h"
 
 #include "core/text/JsonWriter.h"
@@ -205,6 +209,9 @@ void writeMetadata(text::JsonWriter& json, SessionSource& store, std::int64_t se
     }
     json.endArray();
     writeRecords(json, store, session);
+    // A panel scan's defect sites, from the events recorded live.
+    if (definitionOf(s.metadata.mode).detectsDefects)
+        detector::writeSitesJson(json, detector::scanSites(defectEventsOf(store.events(session))));
 }
 
 }  // namespace

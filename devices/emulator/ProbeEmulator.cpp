@@ -26,6 +26,9 @@ using Clock = std::chrono::steady_clock;
 
 // How long a restarting probe is silent.
 constexpr std::chrono::milliseconds kRestartPause(500);
+// How far past --seconds a stream that lagged (a reader too slow, a restart
+// pause) may run to send what it owes.
+constexpr double kLateGrace_s = 0.25;
 
 }  // namespace
 
@@ -279,10 +282,23 @@ void ProbeEmulator::run(const std::stop_token& stop)
     Clock::time_point streamStart{};
     std::uint64_t paced = 0;  // samples sent since streaming (re)started
     bool wasStreaming = false;
-    while (!stop.stop_requested()) {
+    // --seconds counts wall time from the first start (a host that stops or
+    // hangs up early, or writes that block, do not stretch it), or from
+    // launch while nobody has started the stream.
+    const auto launched = Clock::now();
+    std::optional<Clock::time_point> firstStart;
+    const auto timeIsUp = [&] {
+        if (!m_options.seconds) return false;
+        const std::chrono::duration<double> since = Clock::now() - firstStart.value_or(launched);
+        // All samples sent, or the time past with a short grace for a stream that lagged.
+        return (firstStart && static_cast<double>(paced) / m_rate_hz >= *m_options.seconds - 1e-9) ||
+               since.count() >= *m_options.seconds + (firstStart ? kLateGrace_s : 0.0);
+    };
+    while (!stop.stop_requested() && !timeIsUp()) {
         handleCommands();
         if (m_streaming && !wasStreaming) {
             streamStart = Clock::now();
+            if (!firstStart) firstStart = streamStart;
             paced = 0;
         }
         wasStreaming = m_streaming;
@@ -303,6 +319,7 @@ void ProbeEmulator::run(const std::stop_token& stop)
             m_faulted = true;
             std::this_thread::sleep_for(kRestartPause);
             streamStart += kRestartPause;
+            *firstStart += kRestartPause;  // the pause is not streaming time
             m_sampleIndex += static_cast<std::uint64_t>(std::llround(kRestartPause.count() * 1e-3 * m_rate_hz));
             m_clockStart = m_sampleIndex;
             m_sequence = 0;
@@ -311,7 +328,6 @@ void ProbeEmulator::run(const std::stop_token& stop)
         auto payload = nextPayload(samples);
         sendFrame(std::move(payload), samples);
         paced += samples;
-        if (m_options.seconds && static_cast<double>(paced) / m_rate_hz >= *m_options.seconds - 1e-9) break;
     }
     if (m_options.seconds && !stop.stop_requested()) {
         // Like firmware that finishes sending before it disconnects: let the

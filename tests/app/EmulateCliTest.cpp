@@ -1,6 +1,7 @@
 // `tactiscope-cli emulate` as a user runs it: a real process behind a real
 // pseudo-terminal, read here like a serial port.
 #include "support/CliRunner.h"
+#include "support/EmulatorProcess.h"
 
 #include <QProcess>
 #include <QTemporaryDir>
@@ -48,6 +49,29 @@ TEST(EmulateCli, StreamsTextLinesBehindTheLinkAndRemovesItAfterwards)
     EXPECT_NE(text.find(" displacement:"), std::string::npos);
     EXPECT_TRUE(QString::fromUtf8(emulator.readAllStandardOutput()).contains("intact samples"));
     EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(link.toStdString())));
+}
+
+// --seconds is the emulation's time: it ends then whether nobody opens the
+// port, or a host records less than that and stops. (It used to wait for
+// streaming time that never came, for ever.) The bound is generous: the
+// point is that it ends at all, not how fast.
+TEST(EmulateCli, EndsAfterItsSecondsWithOrWithoutAHost)
+{
+    QTemporaryDir dir;
+    QProcess alone;
+    ASSERT_TRUE(tactiscope::testing::startEmulator(alone, dir.filePath("alone"), {"--seconds", "1"}));
+    EXPECT_TRUE(alone.waitForFinished(6000)) << "no host: still running";
+    EXPECT_EQ(alone.exitCode(), 0);
+
+    const QString link = dir.filePath("probe");
+    QProcess served;
+    ASSERT_TRUE(tactiscope::testing::startEmulator(served, link, {"--seconds", "2"}));
+    const CliResult record = runCli({"record", "--port", link, "--seconds", "1", "--db", dir.filePath("s.tactiscope")});
+    EXPECT_EQ(record.exitCode, 0) << record.err.toStdString();
+    EXPECT_TRUE(served.waitForFinished(6000)) << "the host stopped after 1 s: still running";
+    EXPECT_EQ(served.exitCode(), 0);
+    if (served.state() != QProcess::NotRunning) tactiscope::testing::stopEmulator(served);
+    if (alone.state() != QProcess::NotRunning) tactiscope::testing::stopEmulator(alone);
 }
 
 TEST(EmulateCli, BadOptionsExitWithCodeTwo)

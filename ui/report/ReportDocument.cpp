@@ -179,20 +179,26 @@ QString defectTables(const core::report::ReportData& data)
     for (std::size_t k = 0; k < data.sites.sites.size(); ++k) {
         const auto& site = data.sites.sites[k];
         for (const std::size_t i : site.crossings) siteOf[i] = static_cast<int>(k + 1);
-        sites.push_back(
-            {QString::number(k + 1),
-             site.position_m
-                 ? QStringLiteral("%1 ± %2").arg(fixedText(*site.position_m * 1e3, 0), number(site.spread_m * 1e3, 0))
-                 : QObject::tr("not placed"),
-             QString::number(site.crossings.size()), QObject::tr("%1 A→B, %2 B→A").arg(site.forward).arg(site.backward),
-             QStringLiteral("%1 – %2").arg(number(site.first_s, 2), number(site.last_s, 2))});
+        for (const std::size_t i : site.parts) siteOf[i] = static_cast<int>(k + 1);
+        // Never "± 0": crossings that agree to the millimetre say so.
+        QString position = QObject::tr("unknown");
+        if (site.position_m) {
+            position = fixedText(std::abs(*site.position_m) < 0.5e-3 ? 0.0 : *site.position_m * 1e3, 0);
+            if (site.crossings.size() > 1)
+                position += site.spread_m < 0.5e-3 ? QObject::tr(" (spread < 1)")
+                                                   : QStringLiteral(" ± ") + number(site.spread_m * 1e3, 0);
+        }
+        sites.push_back({QString::number(k + 1), position, QString::number(site.crossings.size()),
+                         QObject::tr("%1 A→B, %2 B→A").arg(site.forward).arg(site.backward),
+                         QStringLiteral("%1 – %2").arg(number(site.first_s, 2), number(site.last_s, 2))});
     }
     html += table({QObject::tr("Site"), QObject::tr("Position (mm)"), QObject::tr("Crossings"),
                    QObject::tr("Directions"), QObject::tr("Time (s)")},
                   sites);
     html += QStringLiteral("<p><small>%1</small></p>")
-                .arg(QObject::tr("Position along the stroke from its centre, from the scan speed (cantilever "
-                                 "spacing / lag) between reversals; see docs/detector.md."));
+                .arg(QObject::tr("Position along the stroke from its centre (± the spread of its crossings), "
+                                 "placed by %1 between reversals; see docs/detector.md.")
+                         .arg(text(data.sites.method)));
     std::vector<QStringList> crossings;
     for (std::size_t i = 0; i < defects.size(); ++i) {
         const auto& e = defects[i];

@@ -112,6 +112,7 @@ std::vector<QString> siteTexts(const std::vector<core::detector::DefectEvent>& d
                                  ? QObject::tr("site %1 (%2 mm)").arg(k + 1).arg(*site.position_m * 1e3, 0, 'f', 0)
                                  : QObject::tr("site %1").arg(k + 1);
         for (const std::size_t i : site.crossings) texts[i] = text;
+        for (const std::size_t i : site.parts) texts[i] = text;
     }
     return texts;
 }

@@ -1,103 +1,213 @@
-// Defect sites from events computed by hand from a harmonic stroke: where
-// each crossing is, how crossings group, and what cannot be placed.
+// Defect sites from crossings computed independently from the probe's
+// motion (a harmonic or a constant-speed stroke, bumps at known places,
+// the detector's 2 ms lag steps and its short opposite runs): where each
+// site is, how many there are, and what cannot be placed.
 #include "core/detector/DefectSites.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 using tactiscope::core::detector::DefectEvent;
-using tactiscope::core::detector::groupSites;
+using tactiscope::core::detector::placeCrossings;
 using tactiscope::core::detector::scanSites;
-using tactiscope::core::detector::strokePositions;
+using tactiscope::core::detector::siteText;
 
 namespace {
 
-// x(t) = X·sin(ωt) with X = 0.1 m, ω = π rad/s (a 200 mm stroke at 0.5 Hz):
-// every crossing of each dent in [0, seconds), as the detector reports it
-// (the event's middle at the crossing, the speed there, the direction of
-// motion).
-std::vector<DefectEvent> crossings(std::initializer_list<double> dents_m, double seconds)
+constexpr double kSpacing_m = 0.015;
+
+struct Stroke {
+    std::function<double(double)> x;  // the probe's centre, m from the stroke's centre
+    double halfStroke_m;
+};
+
+Stroke harmonic(double frequency_hz, double half_m = 0.1)
 {
-    constexpr double X = 0.1, omega = std::numbers::pi;
+    return {[=](double t) { return half_m * std::sin(2.0 * std::numbers::pi * frequency_hz * t); }, half_m};
+}
+
+// A machine's stroke: constant speed, turning at the ends.
+Stroke constantSpeed(double frequency_hz, double half_m = 0.1)
+{
+    return {[=](double t) {
+                const double phase = std::fmod(t * frequency_hz + 0.25, 1.0);  // starts at the centre
+                return half_m * (phase < 0.5 ? 4.0 * phase - 1.0 : 3.0 - 4.0 * phase);
+            },
+            half_m};
+}
+
+struct Scan {
+    bool quantiseLags = true;  // the detector's lags are 2 ms steps
+    int onlyDirection = 0;     // a dent seen one way only: +1 or −1
+};
+
+// Every crossing of each bump by the probe's centre in [0, seconds), found
+// on a 0.1 ms grid: the event's middle at the crossing, the speed there
+// (spacing / lag), the direction of motion.
+std::vector<DefectEvent> crossings(const Stroke& stroke, std::initializer_list<double> bumps_m, double seconds,
+                                   Scan scan = {})
+{
+    constexpr double dt = 1e-4;
     std::vector<DefectEvent> events;
-    for (int stroke = 0; stroke < static_cast<int>(seconds); ++stroke) {
-        for (const double dent : dents_m) {
-            const double phase = std::asin(dent / X);
-            // Rising through the dent at phase, falling at π − phase, each cycle.
-            for (const double angle : {phase, std::numbers::pi - phase}) {
-                const double t = (angle + 2.0 * std::numbers::pi * stroke) / omega;
-                if (t <= 0.0 || t >= seconds) continue;
-                const double velocity = X * omega * std::cos(angle);
-                events.push_back({t - 0.01, t + 0.01, velocity > 0 ? 1 : -1, 0.95, 0.05, std::abs(velocity)});
-            }
+    for (double t = dt; t < seconds; t += dt) {
+        const double x0 = stroke.x(t - dt), x1 = stroke.x(t);
+        for (const double bump : bumps_m) {
+            if ((x0 - bump) * (x1 - bump) > 0.0 || x0 == x1) continue;
+            const double at = t - dt + dt * (bump - x0) / (x1 - x0);
+            const double speed = std::abs(x1 - x0) / dt;
+            const int direction = x1 > x0 ? 1 : -1;
+            if (scan.onlyDirection != 0 && direction != scan.onlyDirection) continue;
+            double lag = kSpacing_m / speed;
+            if (scan.quantiseLags) lag = std::max(0.002, std::round(lag / 0.002) * 0.002);
+            events.push_back({at - 0.05, at + 0.05, direction, 0.95, lag, kSpacing_m / lag});
         }
     }
     std::ranges::sort(events, {}, &DefectEvent::start_s);
     return events;
 }
 
+// The detector's short opposite runs (2–8 ms): after every third event and
+// just before each reversal.
+std::vector<DefectEvent> withShortRuns(std::vector<DefectEvent> events)
+{
+    const auto original = events;
+    for (std::size_t i = 0; i < original.size(); ++i) {
+        const auto& e = original[i];
+        if (i % 3 == 0)
+            events.push_back({e.end_s + 0.01, e.end_s + 0.01 + 0.002 * static_cast<double>(1 + i % 4), -e.direction, 0.9, 0.05, 0.3});
+        if (i + 1 < original.size() && original[i + 1].direction != e.direction)
+            events.push_back({e.end_s + 0.05, e.end_s + 0.056, -e.direction, 0.88, 0.01, 1.5});
+    }
+    std::ranges::sort(events, {}, &DefectEvent::start_s);
+    return events;
+}
+
+void expectSitesAt(const std::vector<DefectEvent>& events, std::vector<double> truth_m, double tolerance_m,
+                   double halfStroke_m)
+{
+    const auto grouping = scanSites(events);
+    ASSERT_EQ(grouping.sites.size(), truth_m.size()) << grouping.method;
+    std::ranges::sort(truth_m);
+    for (std::size_t k = 0; k < truth_m.size(); ++k) {
+        ASSERT_TRUE(grouping.sites[k].position_m) << k;
+        EXPECT_NEAR(*grouping.sites[k].position_m, truth_m[k], tolerance_m) << "site " << k << ", " << grouping.method;
+    }
+    const auto places = placeCrossings(events);
+    for (const auto& x : places.position_m)
+        if (x) {
+            EXPECT_LE(std::abs(*x), halfStroke_m * 1.02) << "placed outside the stroke";
+        }
+}
+
 }  // namespace
 
 TEST(DefectSites, EachCrossingOfAHarmonicStrokeIsPlacedWhereItsDentIs)
 {
-    const auto events = crossings({-0.040, 0.050}, 10.0);
+    const Stroke stroke = harmonic(0.5);
+    const auto events = crossings(stroke, {-0.040, 0.050}, 10.0, {.quantiseLags = false});
     ASSERT_EQ(events.size(), 20u);
-    const auto positions = strokePositions(events);
+    const auto places = placeCrossings(events);
+    EXPECT_EQ(places.model, "scan speed, harmonic strokes");
+    ASSERT_TRUE(places.halfStroke_m);
+    EXPECT_NEAR(*places.halfStroke_m, 0.1, 1e-4);
     for (std::size_t i = 0; i < events.size(); ++i) {
-        ASSERT_TRUE(positions[i]) << i;
         const double t = 0.5 * (events[i].start_s + events[i].end_s);
-        EXPECT_NEAR(*positions[i], 0.1 * std::sin(std::numbers::pi * t), 1e-9) << "crossing at " << t << " s";
+        if (places.position_m[i]) {
+            EXPECT_NEAR(*places.position_m[i], stroke.x(t), 1e-4) << "crossing at " << t;
+        }
     }
 }
 
 TEST(DefectSites, CrossingsOfOneDentAreOneSiteWithTheirCountsDirectionsAndTimes)
 {
-    const auto events = crossings({-0.040, 0.050}, 10.0);
+    const auto events = crossings(harmonic(0.5), {-0.040, 0.050}, 10.0, {.quantiseLags = false});
     const auto grouping = scanSites(events);
-    EXPECT_EQ(grouping.method, "scan speed");
     ASSERT_EQ(grouping.sites.size(), 2u);
     const auto& low = grouping.sites[0];
-    const auto& high = grouping.sites[1];
-    EXPECT_NEAR(*low.position_m, -0.040, 1e-9);
-    EXPECT_NEAR(*high.position_m, 0.050, 1e-9);
-    EXPECT_EQ(low.crossings.size(), 10u);
-    EXPECT_EQ(low.forward, 5u);
-    EXPECT_EQ(low.backward, 5u);
-    EXPECT_LT(low.spread_m, 1e-9);
+    EXPECT_NEAR(*low.position_m, -0.040, 1e-4);
+    EXPECT_EQ(low.crossings.size() + grouping.sites[1].crossings.size(), 20u);
+    EXPECT_EQ(low.forward + low.backward, low.crossings.size());
+    EXPECT_GE(low.forward, 4u);
+    EXPECT_GE(low.backward, 4u);
     // The low dent is first crossed falling, at (π + asin 0.4)/π s.
-    EXPECT_NEAR(low.first_s + 0.01, (std::numbers::pi + std::asin(0.4)) / std::numbers::pi, 1e-12);
-    EXPECT_NEAR(high.first_s + 0.01, std::asin(0.5) / std::numbers::pi, 1e-12);
+    EXPECT_NEAR(low.first_s + 0.05, (std::numbers::pi + std::asin(0.4)) / std::numbers::pi, 1e-3);
 }
 
-TEST(DefectSites, NeighboursWithinTheToleranceMergeAndFartherOnesDoNot)
+// Bumps 30 mm apart or more stay apart on harmonic strokes at 0.5–1 Hz,
+// with the detector's lag steps.
+TEST(DefectSites, BumpsThirtyMillimetresApartAreTwoSites)
 {
-    std::vector<DefectEvent> events(4);
-    for (std::size_t i = 0; i < events.size(); ++i) events[i].start_s = events[i].end_s = static_cast<double>(i);
-    const std::vector<std::optional<double>> places{0.000, 0.015, 0.030, 0.060};
-    // 0 → 15 → 30 mm: each within 20 mm of the next, a chain; 60 mm is apart.
-    const auto merged = groupSites(events, places, 0.020);
-    ASSERT_EQ(merged.sites.size(), 2u);
-    EXPECT_EQ(merged.sites[0].crossings.size(), 3u);
-    EXPECT_NEAR(*merged.sites[0].position_m, 0.015, 1e-12);
-    EXPECT_NEAR(merged.sites[0].spread_m, 0.015, 1e-12);
-    EXPECT_EQ(groupSites(events, places, 0.010).sites.size(), 4u);
+    for (const double hz : {0.5, 0.75, 1.0})
+        for (const auto& [first, second] :
+             {std::pair(0.010, 0.040), std::pair(-0.060, -0.030), std::pair(0.0, 0.080)}) {
+            SCOPED_TRACE(std::to_string(hz) + " Hz, bumps at " + std::to_string(first) + ", " + std::to_string(second));
+            expectSitesAt(crossings(harmonic(hz), {first, second}, 20.0), {first, second}, 0.006, 0.1);
+        }
+    expectSitesAt(crossings(harmonic(0.5), {-0.050, 0.0, 0.050}, 20.0), {-0.050, 0.0, 0.050}, 0.006, 0.1);
 }
 
-TEST(DefectSites, EventsWithoutSpeedOrWithoutAWholeStrokeAreSitesOfTheirOwn)
+// The detector's short opposite runs make no reversal and no site: the
+// scan keeps its true strokes and no crossing is placed outside them.
+TEST(DefectSites, ShortOppositeRunsArePartsOfTheirCrossings)
 {
-    auto events = crossings({0.030}, 10.0);
-    for (auto& event : events) event.speed_m_per_s.reset();  // no spacing known
-    auto grouping = scanSites(events);
+    const auto clean = crossings(harmonic(0.5), {0.010, 0.040}, 20.0);
+    const auto events = withShortRuns(clean);
+    ASSERT_GT(events.size(), clean.size() + 5);
+    expectSitesAt(events, {0.010, 0.040}, 0.006, 0.1);
+    const auto grouping = scanSites(events);
+    std::size_t crossingsCounted = 0, parts = 0;
+    for (const auto& site : grouping.sites) {
+        crossingsCounted += site.crossings.size();
+        parts += site.parts.size();
+    }
+    EXPECT_EQ(crossingsCounted, clean.size());
+    EXPECT_EQ(parts, events.size() - clean.size());
+}
+
+// A machine's constant-speed strokes, told from the crossings' speeds.
+TEST(DefectSites, ConstantSpeedStrokesArePlacedByTheirOwnShape)
+{
+    const auto events = crossings(constantSpeed(0.5), {-0.050, 0.030, 0.080}, 20.0);
+    EXPECT_EQ(placeCrossings(events).model, "scan speed, constant-speed strokes");
+    expectSitesAt(events, {-0.050, 0.030, 0.080}, 0.006, 0.1);
+}
+
+TEST(DefectSites, OneDentAtOnePhaseSaysItsStrokeShapeIsAssumed)
+{
+    const auto events = crossings(harmonic(0.5), {0.0}, 10.0);
+    EXPECT_NE(placeCrossings(events).model.find("assumed"), std::string::npos);
+    expectSitesAt(events, {0.0}, 0.003, 0.1);
+    const auto site = scanSites(events).sites.front();
+    EXPECT_EQ(siteText(site), "0 mm (" + std::to_string(site.crossings.size()) + " crossings, spread below 1 mm)");
+}
+
+// A dent seen in one direction only has no reversal to place it by: one
+// site, "position unknown", not one per crossing; two such dents, two.
+TEST(DefectSites, ADentSeenOneWayIsOneUnplacedSite)
+{
+    const auto one = crossings(harmonic(0.5), {0.030}, 20.0, {.onlyDirection = 1});
+    ASSERT_EQ(one.size(), 10u);
+    const auto grouping = scanSites(one);
     EXPECT_EQ(grouping.method, "not placed");
-    EXPECT_EQ(grouping.sites.size(), events.size());
+    ASSERT_EQ(grouping.sites.size(), 1u);
     EXPECT_FALSE(grouping.sites.front().position_m);
+    EXPECT_EQ(grouping.sites.front().crossings.size(), 10u);
+    EXPECT_EQ(siteText(grouping.sites.front()), "position unknown (10 crossings)");
 
-    // Two crossings, one reversal: no stroke's length to place them by.
-    const auto two = crossings({0.030}, 1.0);
-    ASSERT_EQ(two.size(), 2u);
-    EXPECT_EQ(scanSites(two).sites.size(), 2u);
-    EXPECT_THROW(groupSites(two, std::vector<std::optional<double>>(1)), std::invalid_argument);
+    EXPECT_EQ(scanSites(crossings(harmonic(0.5), {-0.040, 0.030}, 20.0, {.onlyDirection = -1})).sites.size(), 2u);
+}
+
+TEST(DefectSites, EventsWithoutSpeedAreUnplacedButStillGrouped)
+{
+    auto events = crossings(harmonic(0.5), {0.030}, 10.0);
+    for (auto& event : events) event.speed_m_per_s.reset();  // no spacing known
+    const auto grouping = scanSites(events);
+    EXPECT_EQ(grouping.method, "not placed");
+    EXPECT_LE(grouping.sites.size(), 2u);  // at most one per direction: nothing tells them apart
+    for (const auto& site : grouping.sites) EXPECT_FALSE(site.position_m);
+    EXPECT_THROW(tactiscope::core::detector::groupSites(events, {}), std::invalid_argument);
 }
