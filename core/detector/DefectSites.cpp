@@ -35,15 +35,6 @@ double median(std::vector<double> values)
     return *middle;
 }
 
-// The robust relative scatter of positive values: MAD / median.
-double relativeScatter(const std::vector<double>& values)
-{
-    const double centre = median(values);
-    std::vector<double> deviations;
-    for (const double v : values) deviations.push_back(std::abs(v - centre));
-    return median(deviations) / centre;
-}
-
 // The reversal between two crossings of opposite direction: near a reversal
 // the speed grows linearly with the time from it, so the times to it are in
 // the ratio of the speeds (half way without them).
@@ -105,15 +96,27 @@ private:
         for (const std::size_t i : runs) m_places.partOf[i] = nearestCrossing(i);
     }
 
+    // A short run against the direction of the crossing nearest to it is
+    // the detector's flicker, not a crossing; a short one along it is (a
+    // fast crossing is short).
     void foldShortRuns()
     {
         std::vector<double> durations;
         for (const auto& e : m_events) durations.push_back(e.end_s - e.start_s);
         const double typical = median(durations);
-        std::vector<std::size_t> shortRuns;
+        std::vector<std::size_t> longRuns, shortRuns;
         for (std::size_t i = 0; i < m_events.size(); ++i)
-            if (durations[i] < kShortRunFraction * typical) shortRuns.push_back(i);
-        fold(shortRuns);
+            (durations[i] < kShortRunFraction * typical ? shortRuns : longRuns).push_back(i);
+        std::vector<std::size_t> flicker;
+        for (const std::size_t i : shortRuns) {
+            std::optional<std::size_t> nearest;
+            for (const std::size_t j : longRuns)
+                if (!nearest || std::abs(midTime(m_events[j]) - midTime(m_events[i])) <
+                                    std::abs(midTime(m_events[*nearest]) - midTime(m_events[i])))
+                    nearest = j;
+            if (nearest && m_events[*nearest].direction != m_events[i].direction) flicker.push_back(i);
+        }
+        fold(flicker);
     }
 
     // Reversal times between successive crossings of opposite direction,
@@ -183,19 +186,35 @@ private:
         }
         // Away from the reversals (sin φ ≥ 0.3), where both shapes are well
         // conditioned; all of them when none is.
-        std::vector<double> amplitudes, speeds, phases;
+        std::vector<const Phased*> used;
         for (const bool conditionedOnly : {true, false}) {
             for (const Phased& p : phased)
-                if (!conditionedOnly || std::sin(p.phase) >= 0.3) {
-                    amplitudes.push_back(p.speed * p.stroke_s / (std::numbers::pi * std::sin(p.phase)));
-                    speeds.push_back(p.speed);
-                    phases.push_back(p.phase);
-                }
-            if (!amplitudes.empty()) break;
+                if (!conditionedOnly || std::sin(p.phase) >= 0.3) used.push_back(&p);
+            if (!used.empty()) break;
         }
-        const auto [lowest, highest] = std::ranges::minmax(phases);
-        const bool identifiable = highest - lowest >= 0.3;
-        const bool constantSpeed = identifiable && relativeScatter(speeds) < relativeScatter(amplitudes);
+        // The shapes differ in how the speed goes with sin φ (harmonic:
+        // v = A·ω·sin φ; constant: v = V). Crossings at one |x| (one dent,
+        // both directions) share sin φ and cannot tell them apart.
+        double sumVS = 0.0, sumSS = 0.0, sumV = 0.0, lowest = 1.0, highest = 0.0;
+        std::vector<double> amplitudes, speeds;
+        for (const Phased* p : used) {
+            const double sine = std::sin(p->phase);
+            sumVS += p->speed * sine;
+            sumSS += sine * sine;
+            sumV += p->speed;
+            lowest = std::min(lowest, sine);
+            highest = std::max(highest, sine);
+            amplitudes.push_back(p->speed * p->stroke_s / (std::numbers::pi * sine));
+            speeds.push_back(p->speed);
+        }
+        const double harmonicScale = sumVS / sumSS, meanSpeed = sumV / static_cast<double>(used.size());
+        double harmonicMisfit = 0.0, constantMisfit = 0.0;
+        for (const Phased* p : used) {
+            harmonicMisfit += std::pow(p->speed - harmonicScale * std::sin(p->phase), 2);
+            constantMisfit += std::pow(p->speed - meanSpeed, 2);
+        }
+        const bool identifiable = highest - lowest >= kMinSineSpread;
+        const bool constantSpeed = identifiable && constantMisfit < harmonicMisfit;
         const double amplitude_m = median(amplitudes);
         const double speed = median(speeds);
         for (const Phased& p : phased) {

@@ -6,8 +6,10 @@
 // Which events are crossings: the detector also gives short opposite runs
 // (a few samples, between two events or near a reversal). An event much
 // shorter than the scan's typical event (kShortRunFraction of the median)
-// makes no reversal and is no crossing of its own: it is part of the
-// crossing nearest in time (DefectSite::parts).
+// whose direction is against the nearest full event's makes no reversal
+// and is no crossing of its own: it is part of the crossing nearest in time
+// (DefectSite::parts). A short event along its neighbour's direction is a
+// crossing (a fast one is short).
 //
 // Reversals: between two crossings of opposite direction. A stroke (from
 // one reversal to the next) much shorter than the scan's median
@@ -24,8 +26,8 @@
 //  - constant speed (a machine): x = d·V·(τ − (T − τ))/2, V the median speed.
 // d is the direction (+1: A then B). Both stay within the stroke (|x| ≤ A,
 // |x| ≤ V·T/2) by construction. The shape is chosen from the crossings'
-// speeds when they were seen at different phases (harmonic: v/sin φ is the
-// same for all; constant: v is); with one phase only (a single dent) it is
+// speeds when they were seen at different sin φ (the one whose speeds fit
+// better: v ∝ sin φ, or v the same); with one sin φ only (a single dent) it is
 // not identifiable, harmonic is assumed and the method says so.
 //
 // What is placed: the probe's centre at the event's middle (the defect
@@ -56,6 +58,8 @@ namespace tactiscope::core::detector {
 
 inline constexpr double kShortRunFraction = 0.35;
 inline constexpr double kMinStrokeFraction = 0.4;
+// How far apart the crossings' sin φ must lie for the stroke shape to be told.
+inline constexpr double kMinSineSpread = 0.04;
 inline constexpr double kSiteReach_m = 0.015;
 inline constexpr double kMinSiteSeparation_m = 0.010;
 

@@ -48,8 +48,13 @@ double PanelScanScenario::inclination_rad(double x_m) const
 {
     if (!m_p.hasDefect) return 0.0;
     // Surface height h(x) = −D·exp(−u²/2) with u = (x − x_d)/σ; slope dh/dx.
-    const double u = (x_m - m_p.defectPosition_m) / m_p.defectWidth_m;
-    return m_p.defectDepth_m / m_p.defectWidth_m * u * std::exp(-0.5 * u * u);
+    const auto slope = [&](double dent_m) {
+        const double u = (x_m - dent_m) / m_p.defectWidth_m;
+        return m_p.defectDepth_m / m_p.defectWidth_m * u * std::exp(-0.5 * u * u);
+    };
+    double inclination = slope(m_p.defectPosition_m);
+    for (const double dent_m : m_p.moreDefects_m) inclination += slope(dent_m);
+    return inclination;
 }
 
 void PanelScanScenario::generate(core::SampleBlock& block)

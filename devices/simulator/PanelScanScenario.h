@@ -20,6 +20,7 @@
 #include "devices/simulator/SimulatedScenario.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace tactiscope::devices::simulator {
 
@@ -29,7 +30,8 @@ struct PanelScanParameters {
     double strokeFrequency_hz = 0.5;     // "slow movement"
     double cantileverSpacing_m = 0.015;  // the prototype's 15 mm
     bool hasDefect = true;
-    double defectPosition_m = 0.030;  // from the stroke centre
+    double defectPosition_m = 0.030;    // from the stroke centre
+    std::vector<double> moreDefects_m;  // further dents like the first, at these places
     double defectDepth_m = 50e-6;
     double defectWidth_m = 0.004;    // Gaussian σ of the dent profile
     double strainPerRadian = 4e-3;   // inclination change → gauge strain
