@@ -32,7 +32,8 @@ QString scenarioTitle(const std::string& id)
     if (id == devices::simulator::kPanelScanScenario) return DevicePanel::tr("Panel scan — two strain cantilevers");
     if (id == devices::simulator::kPalpationScenario) return DevicePanel::tr("Palpation — compliance probe");
     if (id == "capacitive-weights") return DevicePanel::tr("Capacitive beam — weights");
-    if (id == "gauge-calibration") return DevicePanel::tr("Gauge-factor calibration rig");
+    if (id == "gauge-calibration") return DevicePanel::tr("Gauge-factor rig — stiff beam");
+    if (id == "gauge-calibration-soft") return DevicePanel::tr("Gauge-factor rig — soft beam");
     if (id == "capacitive-calibration") return DevicePanel::tr("Capacitive beam — calibration rig");
     return QString::fromStdString(id);
 }

@@ -37,14 +37,40 @@ QString stiffnessText(double k_n_per_m, double standardError_n_per_m)
 // when the beam has a gauge-factor calibration, else the nominal one. The
 // line says which, and why k_o hardly cares: k_o needs only F_H/F_L, so
 // only the ratio of the two gauge factors enters it.
+// A press without a number: why, in the table's words.
+QString pressStateText(const core::compliance::PressReading& press)
+{
+    using core::compliance::PressStatus;
+    const QString bound =
+        press.bound_n_per_m ? QStringLiteral(" %1").arg(compactText(*press.bound_n_per_m, 3)) : QString();
+    switch (press.status) {
+    case PressStatus::Clipped:
+        return PalpationView::tr("clipped (%1 beam)")
+            .arg(press.atLimit.high > 0 ? PalpationView::tr("stiff") : PalpationView::tr("soft"));
+    case PressStatus::BelowRange:
+        return bound.isEmpty() ? PalpationView::tr("below range") : PalpationView::tr("<%1").arg(bound);
+    case PressStatus::AboveRange:
+        return bound.isEmpty() ? PalpationView::tr("above range") : PalpationView::tr(">%1").arg(bound);
+    case PressStatus::Ok:
+        break;
+    }
+    return {};
+}
+
 QString calibrationLine(const core::compliance::LivePalpation& palpation, const QString& calibration)
 {
     const auto high = palpation.gaugeFactor(true), low = palpation.gaugeFactor(false);
     if (!high || !low) return PalpationView::tr("Calibration: strain or force as the device sends it");
     const auto factorText = [](double factor) { return compactText(factor, 4); };
-    return PalpationView::tr("Calibration: %1 — gauge factors %2 (stiff) and %3 (soft); kₒ needs only their ratio")
-        .arg(calibration.isEmpty() ? PalpationView::tr("none, nominal") : calibration, factorText(*high),
-             factorText(*low));
+    QString line =
+        PalpationView::tr("Calibration: %1 — gauge factors %2 (stiff) and %3 (soft); kₒ needs only their ratio")
+            .arg(calibration.isEmpty() ? PalpationView::tr("none, nominal") : calibration, factorText(*high),
+                 factorText(*low))
+            .toHtmlEscaped();
+    if (const auto& mixed = palpation.mixedCalibrationWarning())
+        line += QStringLiteral("<br><span style='color:#b00020'><b>%1</b></span>")
+                    .arg(QString::fromStdString(*mixed).toHtmlEscaped());
+    return line;
 }
 
 }  // namespace
@@ -168,7 +194,16 @@ void PalpationView::updateReadout()
 {
     if (!m_palpation) return;
     const auto state = m_palpation->state();
-    if (state.taring) {
+    const bool stiffAtLimit = state.atLimit.high > 0, softAtLimit = state.atLimit.low > 0;
+    m_status->setStyleSheet(state.pressing && (stiffAtLimit || softAtLimit) ? QStringLiteral("color: #b00020;")
+                                                                            : QString());
+    if (state.pressing && (stiffAtLimit || softAtLimit)) {
+        // The press will read no number: say so while the hand can still ease off.
+        m_status->setText(tr("%1 at its limit: press less deep")
+                              .arg(stiffAtLimit && softAtLimit ? tr("Both beams")
+                                   : stiffAtLimit              ? tr("Stiff beam")
+                                                               : tr("Soft beam")));
+    } else if (state.taring) {
         m_status->setText(tr("Taking the zero: keep the probe lifted"));
     } else if (state.pressing && state.current) {
         m_stiffness->setText(stiffnessText(state.current->first, state.current->second));
@@ -225,12 +260,11 @@ void PalpationView::showPresses(const std::vector<devices::session::PressRecord>
     for (auto record = presses.begin() + m_presses->rowCount(); record != presses.end(); ++record) {
         const auto& press = record->press;
         const QString site = QString::fromStdString(record->site);
-        const bool inRange = press.stiffness.range == core::sensors::ComplianceRange::InRange;
+        const bool inRange = press.status == core::compliance::PressStatus::Ok;
         const double k = press.stiffness.objectStiffness_n_per_m;
         const int row = m_presses->rowCount();
         m_presses->insertRow(row);
-        const QString outOfRange =
-            press.stiffness.range == core::sensors::ComplianceRange::Below ? tr("below range") : tr("above range");
+        const QString outOfRange = pressStateText(press);
         const auto [kText, seText] = valueAndErrorTexts(k, press.uncertainty_n_per_m());
         const QStringList cells{
             fixedText(press.start_s, 1),

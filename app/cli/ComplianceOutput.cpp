@@ -36,12 +36,50 @@ QString millimetres(double metres)
     return QString::number(metres * 1e3, 'f', 2);
 }
 
-// Most presses out of range one way: the recording's state.
-sensors::ComplianceRange majorityRange(const std::vector<compliance::PressReading>& presses)
+// No press read: the recording's state is its presses' most common one
+// (clipped first: it says what to do), with the tightest bound of that way.
+struct SessionState {
+    compliance::PressStatus status = compliance::PressStatus::BelowRange;
+    sensors::ComplianceRange range = sensors::ComplianceRange::Below;
+    std::optional<double> bound_n_per_m;
+};
+SessionState sessionOutOfRange(const std::vector<compliance::PressReading>& presses)
 {
-    const auto above = std::ranges::count_if(
-        presses, [](const auto& p) { return p.stiffness.range == sensors::ComplianceRange::Above; });
-    return 2 * above >= std::ssize(presses) ? sensors::ComplianceRange::Above : sensors::ComplianceRange::Below;
+    const auto count = [&](compliance::PressStatus status) {
+        return std::ranges::count_if(presses, [status](const auto& p) { return p.status == status; });
+    };
+    const auto clipped = count(compliance::PressStatus::Clipped);
+    const auto above = count(compliance::PressStatus::AboveRange);
+    const auto below = count(compliance::PressStatus::BelowRange);
+    SessionState state;
+    if (clipped >= above && clipped >= below) {
+        state.status = compliance::PressStatus::Clipped;
+        return state;
+    }
+    if (above >= below) {
+        state.status = compliance::PressStatus::AboveRange;
+        state.range = sensors::ComplianceRange::Above;
+    }
+    for (const auto& p : presses)
+        if (p.status == state.status && p.bound_n_per_m)
+            state.bound_n_per_m = state.bound_n_per_m ? (state.range == sensors::ComplianceRange::Above
+                                                             ? std::max(*state.bound_n_per_m, *p.bound_n_per_m)
+                                                             : std::min(*state.bound_n_per_m, *p.bound_n_per_m))
+                                                      : *p.bound_n_per_m;
+    return state;
+}
+
+QString pressStateText(const compliance::PressReading& p)
+{
+    if (p.status == compliance::PressStatus::Clipped)
+        return QStringLiteral("clipped: the %1 beam's ADC at its limit (press less deep)")
+            .arg(QLatin1String(p.atLimit.high > 0 ? "stiff" : "soft"));
+    const QString bound =
+        p.bound_n_per_m ? QStringLiteral(", %1 %2 N/m")
+                              .arg(QLatin1String(p.status == compliance::PressStatus::BelowRange ? "below" : "above"))
+                              .arg(QString::number(*p.bound_n_per_m, 'g', 3))
+                        : QString();
+    return QStringLiteral("%1 the probe's range%2").arg(QLatin1String(rangeName(p.stiffness.range)), bound);
 }
 
 void writePress(text::JsonWriter& json, const compliance::PressReading& p, bool withTimes)
@@ -50,8 +88,18 @@ void writePress(text::JsonWriter& json, const compliance::PressReading& p, bool 
         json.key("start_s").value(p.start_s);
         json.key("end_s").value(p.end_s);
     }
-    if (p.stiffness.range != sensors::ComplianceRange::InRange) {
+    json.key("status").value(compliance::statusName(p.status));
+    if (p.status == compliance::PressStatus::Clipped) {
+        json.key("samples_at_limit").beginObject();
+        json.key("high").value(static_cast<long long>(p.atLimit.high));
+        json.key("low").value(static_cast<long long>(p.atLimit.low));
+        json.endObject();
+        return;
+    }
+    if (p.status != compliance::PressStatus::Ok) {
         json.key("range").value(rangeName(p.stiffness.range));
+        if (p.bound_n_per_m) json.key("bound_n_per_m").value(*p.bound_n_per_m);
+        json.key("q").value(p.q);
         json.key("samples_out_of_range").value(static_cast<long long>(p.samplesOutOfRange));
         return;
     }
@@ -153,7 +201,7 @@ int ComplianceOutput::print(bool asJson) const
     } else if (rows) {
         // The forces form: one press of every contact row.
         const auto& p = presses.front();
-        const bool inRange = p.stiffness.range == sensors::ComplianceRange::InRange;
+        const bool inRange = p.status == compliance::PressStatus::Ok;
         if (inRange) value = p.stiffness.objectStiffness_n_per_m;
         writePress(json, p, false);
         json.key("rows_used").value(static_cast<long long>(p.samplesUsed));
@@ -181,16 +229,30 @@ int ComplianceOutput::print(bool asJson) const
         }
         const auto combined = compliance::combinePresses(presses);
         const auto outOfRange = presses.size() - (combined ? combined->presses : 0);
+        const auto clipped =
+            std::ranges::count_if(presses, [](const auto& p) { return p.status == compliance::PressStatus::Clipped; });
+        const auto [usableLow, usableHigh] = compliance::usableRange(pair(), presses);
         if (combined) {
             value = combined->stiffness_n_per_m;
+            json.key("status").value("ok");
             json.key("object_stiffness_n_per_m").value(*value);
             json.key("standard_error_n_per_m").value(combined->standardError_n_per_m);
             if (combined->zeroUncertainty_n_per_m)
                 json.key("zero_uncertainty_n_per_m").value(*combined->zeroUncertainty_n_per_m);
             json.key("uncertainty_n_per_m").value(combined->uncertainty_n_per_m());
         } else {
-            json.key("range").value(rangeName(majorityRange(presses)));
+            const auto state = sessionOutOfRange(presses);
+            json.key("status").value(compliance::statusName(state.status));
+            if (state.status != compliance::PressStatus::Clipped) json.key("range").value(rangeName(state.range));
+            if (state.bound_n_per_m) json.key("bound_n_per_m").value(*state.bound_n_per_m);
         }
+        json.key("usable_range_n_per_m").beginArray().value(usableLow).value(usableHigh).endArray();
+        json.key("consistency");
+        if (combined && combined->birgeRatio)
+            json.value(*combined->birgeRatio);
+        else
+            json.null();
+        json.key("presses_clipped").value(static_cast<long long>(clipped));
         json.key("presses_read").value(static_cast<long long>(combined ? combined->presses : 0));
         json.key("presses_out_of_range").value(static_cast<long long>(outOfRange));
         json.key("presses").beginArray();
@@ -208,14 +270,30 @@ int ComplianceOutput::print(bool asJson) const
                     << uncertaintyOnly(*combined->zeroUncertainty_n_per_m) << " N/m)";
             out << '\n';
         } else {
-            out << "object stiffness out of range: " << rangeName(majorityRange(presses)) << " the probe's range\n";
+            const auto state = sessionOutOfRange(presses);
+            if (state.status == compliance::PressStatus::Clipped)
+                out << "no object stiffness: every press clipped at a beam's ADC limit (press less deep)\n";
+            else
+                out << "object stiffness out of range: " << rangeName(state.range) << " the probe's range"
+                    << (state.bound_n_per_m
+                            ? QStringLiteral(" (%1 %2 N/m)")
+                                  .arg(QLatin1String(state.range == sensors::ComplianceRange::Above ? ">" : "<"))
+                                  .arg(QString::number(*state.bound_n_per_m, 'g', 3))
+                            : QString())
+                    << '\n';
         }
-        if (outOfRange > 0) out << outOfRange << " presses out of the probe's range\n";
+        if (combined && combined->birgeRatio)
+            out << "presses " << (combined->consistent ? "agree" : "DISAGREE") << ": Birge ratio "
+                << QString::number(*combined->birgeRatio, 'f', 2)
+                << (combined->consistent ? QString() : QStringLiteral(" (noise uncertainty scaled by it)")) << '\n';
+        out << "usable range of this probe for presses like these: " << QString::number(usableLow, 'g', 3) << "–"
+            << QString::number(usableHigh, 'g', 3) << " N/m\n";
+        if (outOfRange > 0) out << outOfRange << " presses not read (out of the probe's range or clipped)\n";
         for (const auto& p : presses) {
             out << "  press " << QString::number(p.start_s, 'f', 2) << "–" << QString::number(p.end_s, 'f', 2)
                 << " s: ";
-            if (p.stiffness.range != sensors::ComplianceRange::InRange)
-                out << rangeName(p.stiffness.range) << " range\n";
+            if (p.status != compliance::PressStatus::Ok)
+                out << pressStateText(p) << '\n';
             else
                 out << withUncertainty(p.stiffness.objectStiffness_n_per_m, p.uncertainty_n_per_m()) << ", depth "
                     << millimetres(p.displacementMin_m) << "–" << millimetres(p.displacementMax_m) << " mm\n";

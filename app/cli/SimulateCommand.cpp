@@ -5,6 +5,7 @@
 #include "core/SampleBlock.h"
 #include "core/storage/SessionExport.h"
 #include "core/text/NumberFormat.h"
+#include "devices/simulator/PalpationScenario.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
 
@@ -80,7 +81,13 @@ int runSimulate(const QStringList& arguments)
                                         QStringLiteral("N"), QStringLiteral("1"));
     const QCommandLineOption outputOption(
         QStringLiteral("output"), QStringLiteral("Write to FILE instead of standard output."), QStringLiteral("FILE"));
-    parser.addOptions({scenarioOption, secondsOption, seedOption, outputOption});
+    const QCommandLineOption stiffnessOption(
+        QStringLiteral("object-stiffness"),
+        QStringLiteral("palpation: the phantom's stiffness in N/m (default 117, the paper's)."), QStringLiteral("K"));
+    const QCommandLineOption depthsOption(
+        QStringLiteral("depths-mm"), QStringLiteral("palpation: the press depths in mm, cycled (default 2,4,6,8)."),
+        QStringLiteral("LIST"));
+    parser.addOptions({scenarioOption, secondsOption, seedOption, outputOption, stiffnessOption, depthsOption});
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
     if (!parser.positionalArguments().isEmpty())
@@ -100,6 +107,30 @@ int runSimulate(const QStringList& arguments)
     auto scenario = devices::simulator::makeScenario(scenarioId.toStdString(), seed);
     if (!scenario)
         return usageError(QStringLiteral("unknown scenario '%1' (known: %2)").arg(scenarioId, scenarioList()), usage);
+    if (parser.isSet(stiffnessOption) || parser.isSet(depthsOption)) {
+        if (scenarioId.toStdString() != devices::simulator::kPalpationScenario)
+            return usageError(QStringLiteral("--object-stiffness and --depths-mm are for --scenario palpation"), usage);
+        devices::simulator::PalpationParameters phantom;
+        phantom.seed = seed;
+        if (parser.isSet(stiffnessOption)) {
+            phantom.objectStiffness_n_per_m = parser.value(stiffnessOption).toDouble(&ok);
+            if (!ok || !std::isfinite(phantom.objectStiffness_n_per_m) || phantom.objectStiffness_n_per_m <= 0.0)
+                return usageError(QStringLiteral("--object-stiffness must be a positive number of N/m, got '%1'")
+                                      .arg(parser.value(stiffnessOption)),
+                                  usage);
+        }
+        if (parser.isSet(depthsOption)) {
+            phantom.pressDepths_m.clear();
+            for (const QString& depth : parser.value(depthsOption).split(QLatin1Char(','))) {
+                const double mm = depth.trimmed().toDouble(&ok);
+                if (!ok || !std::isfinite(mm) || mm <= 0.0 || mm > 50.0)
+                    return usageError(QStringLiteral("--depths-mm must list depths in (0, 50] mm, got '%1'").arg(depth),
+                                      usage);
+                phantom.pressDepths_m.push_back(mm * 1e-3);
+            }
+        }
+        scenario = std::make_unique<devices::simulator::PalpationScenario>(phantom);
+    }
 
     const devices::simulator::SimulatedScenario& simulated = *scenario;  // owned by the source from here
     devices::simulator::SimulatorSource source(std::move(scenario),

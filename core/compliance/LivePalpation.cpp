@@ -21,6 +21,7 @@ LivePalpation::LivePalpation(const std::vector<ChannelDescriptor>& channels, dou
                              const LivePalpationSettings& settings, double displaySeconds)
     : m_forces(channels, settings),
       m_pressSettings(settings.press),
+      m_mixedCalibration(mixedCalibration(settings)),
       m_tareSamples(std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(kTare_s * sampleRate_hz)))),
       m_output(std::make_shared<LiveBuffer>(outputChannels().size(),
                                             static_cast<std::size_t>(std::ceil(displaySeconds * sampleRate_hz)) + 1)),
@@ -134,8 +135,8 @@ void LivePalpation::consume(const SampleBlock& block)
         display.channel(0)[s] = fHigh;
         display.channel(1)[s] = fLow;
         display.channel(2)[s] = m_forces.q(fHigh, fLow);
-        if (auto reading =
-                m_reader.push(block.timeAt_s(s), block.value(m_forces.displacementChannel(), s), fHigh, fLow))
+        if (auto reading = m_reader.push(block.timeAt_s(s), block.value(m_forces.displacementChannel(), s), fHigh, fLow,
+                                         m_forces.limitsOf(high, low)))
             m_completed.push_back(*reading);
     }
     m_output->consume(display);
@@ -151,6 +152,7 @@ void LivePalpation::consume(const SampleBlock& block)
     m_state.taring = m_tareCount < m_tareSamples;
     m_state.pressing = m_reader.pressing();
     m_state.current = m_reader.current();
+    m_state.atLimit = m_reader.pressAtLimit();
     m_readings.insert(m_readings.end(), m_completed.begin(), m_completed.end());
     m_completed.clear();
 }

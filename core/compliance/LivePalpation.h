@@ -47,6 +47,9 @@ struct PalpationState {
     bool pressing = false;
     // While pressing: the mean k_o so far and its standard error, N/m.
     std::optional<std::pair<double, double>> current;
+    // While pressing: the samples so far at each beam's ADC limit (a
+    // clipped press reads no number: "press less deep").
+    BeamLimits atLimit;
 };
 
 class LivePalpation final : public BlockSink {
@@ -66,6 +69,8 @@ public:
     // The gauge factor that turns a beam's counts into strain; none when
     // the device sends strain or force itself.
     std::optional<double> gaugeFactor(bool highBeam) const { return m_forces.gaugeFactor(highBeam); }
+    // One beam calibrated and the other not (mixedCalibration()): what to say.
+    const std::optional<std::string>& mixedCalibrationWarning() const { return m_mixedCalibration; }
 
     // Any thread: the last kTare_s become the zero (see above); nothing when
     // taken, else the reason, in words for the operator.
@@ -93,6 +98,7 @@ private:
 
     PalpationForces m_forces;  // acquisition thread, but for the constant parts
     PressSettings m_pressSettings;
+    std::optional<std::string> m_mixedCalibration;
     std::size_t m_tareSamples;
     std::shared_ptr<LiveBuffer> m_output;
 

@@ -60,6 +60,16 @@ std::string basisText(const sensors::CompliancePairProfile& probe, const LivePal
     return "profile " + probe.name + "; stiff beam " + beam(true) + ", soft beam " + beam(false);
 }
 
+std::optional<std::string> mixedCalibration(const LivePalpationSettings& settings)
+{
+    if (settings.highGaugeFactor.has_value() == settings.lowGaugeFactor.has_value()) return std::nullopt;
+    const bool stiff = settings.highGaugeFactor.has_value();
+    return std::string("only the ") + (stiff ? "stiff" : "soft") +
+           " beam has a gauge-factor calibration: kₒ reads through its calibrated and the " +
+           (stiff ? "soft" : "stiff") + " beam's nominal factor, so the nominal one's error is in every reading — " +
+           "calibrate the " + (stiff ? "soft" : "stiff") + " beam too";
+}
+
 std::string zeroJson(const RawZero& zero)
 {
     text::JsonWriter json;
@@ -119,6 +129,13 @@ PalpationForces::PalpationForces(const std::vector<ChannelDescriptor>& channels,
     };
     m_high = input(beams[0], settings.highGaugeFactor);
     m_low = input(beams[1], settings.lowGaugeFactor);
+}
+
+bool PalpationForces::atLimit(bool highBeam, double raw) const
+{
+    const Input& beam = highBeam ? m_high : m_low;
+    if (!beam.chain) return false;
+    return std::abs(raw) >= (1.0 - kNearLimit) * beam.chain->fullScaleCounts();
 }
 
 std::optional<double> PalpationForces::gaugeFactor(bool highBeam) const

@@ -51,6 +51,12 @@ LivePalpationSettings palpationSettings(const sensors::CompliancePairProfile& pr
 // gauge factor, calibrated or nominal.
 std::string basisText(const sensors::CompliancePairProfile& probe, const LivePalpationSettings& settings);
 
+// kₒ needs only the ratio of the forces, so nominal factors on both beams
+// cancel; one beam calibrated and the other nominal does not: the ratio
+// then carries the nominal beam's whole gauge-factor error. What to say
+// then ("only the stiff beam is calibrated: …"); none otherwise.
+std::optional<std::string> mixedCalibration(const LivePalpationSettings& settings);
+
 // A zero: each beam's raw value with nothing pressed (the mean of a
 // window), and the standard uncertainty of that mean, σ/√n of the window
 // (white noise), in the same units; none when not known (older sessions).
@@ -86,6 +92,16 @@ public:
     const std::optional<RawZero>& zero() const { return m_zero; }
     // The zero's uncertainty in each beam's force; none when not known.
     std::optional<ZeroUncertainty> zeroUncertainty() const;
+
+    // Whether a beam's raw value is at its ADC's limit (within
+    // kNearLimit of full scale): its force is then clipped. Always false
+    // for channels not in counts (no ADC range known).
+    bool atLimit(bool highBeam, double raw) const;
+    compliance::BeamLimits limitsOf(double rawHigh, double rawLow) const
+    {
+        return {atLimit(true, rawHigh) ? 1u : 0u, atLimit(false, rawLow) ? 1u : 0u};
+    }
+    static constexpr double kNearLimit = 0.01;
 
     // In N on the zero; NaN before there is one.
     double forceHigh(double raw) const { return m_zero ? m_high.force(m_pair.high(), raw) : kNaN; }

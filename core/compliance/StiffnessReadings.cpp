@@ -104,30 +104,61 @@ double PressReading::uncertainty_n_per_m() const
     return std::hypot(standardError_n_per_m, zeroUncertainty_n_per_m.value_or(0.0));
 }
 
+const char* statusName(PressStatus status)
+{
+    switch (status) {
+    case PressStatus::Ok:
+        return "ok";
+    case PressStatus::Clipped:
+        return "clipped";
+    case PressStatus::BelowRange:
+        return "below-range";
+    case PressStatus::AboveRange:
+        return "above-range";
+    }
+    return "ok";
+}
+
+namespace {
+
+// A ratio within 2u of a limit of the probe is out of its range: the
+// bound is k_o at 2u from the ratio, towards the inside (none when that is
+// outside too).
+void classifyRange(const sensors::CompliancePair& pair, double q, double uQ, PressReading& r)
+{
+    const double qMax = pair.qMax();
+    const auto inside = [&](double ratio) -> std::optional<double> {
+        const auto k = pair.objectStiffness(ratio);
+        if (k.range != sensors::ComplianceRange::InRange) return std::nullopt;
+        return k.objectStiffness_n_per_m;
+    };
+    if (q - 2.0 * uQ <= 1.0) {
+        r.status = PressStatus::BelowRange;
+        r.bound_n_per_m = inside(q + 2.0 * uQ);
+        r.stiffness.range = sensors::ComplianceRange::Below;
+    } else if (q + 2.0 * uQ >= qMax) {
+        r.status = PressStatus::AboveRange;
+        r.bound_n_per_m = inside(q - 2.0 * uQ);
+        r.stiffness.range = sensors::ComplianceRange::Above;
+    }
+}
+
+}  // namespace
+
 PressReading readPress(const sensors::CompliancePair& pair, std::span<const double> displacement,
                        std::span<const double> forceHigh, std::span<const double> forceLow,
-                       std::optional<ZeroUncertainty> zero)
+                       std::optional<ZeroUncertainty> zero, BeamLimits atLimit)
 {
     if (displacement.empty() || displacement.size() != forceHigh.size() || forceHigh.size() != forceLow.size())
         throw std::invalid_argument("a press needs equal, non-empty series of displacement and forces");
-    std::vector<bool> use(displacement.size(), false);
-    std::size_t below = 0, above = 0, inRange = 0;
-    for (std::size_t i = 0; i < displacement.size(); ++i) {
-        const sensors::StiffnessReading k = pair.objectStiffness(forceHigh[i] / forceLow[i]);
-        if (k.range == sensors::ComplianceRange::InRange) {
-            use[i] = true;
-            ++inRange;
-        } else {
-            ++(k.range == sensors::ComplianceRange::Below ? below : above);
-        }
-    }
     PressReading r;
-    r.samplesOutOfRange = below + above;
-    if (inRange * 2 < displacement.size()) {
-        // Mostly out of range: no number, but which way it is out.
-        r.stiffness.range = above > below ? sensors::ComplianceRange::Above : sensors::ComplianceRange::Below;
-        return r;
-    }
+    r.atLimit = atLimit;
+    // Every sample in contact: a cut by each sample's own Q would keep the
+    // noise on one side only and bias the ratio (soft objects high).
+    std::vector<bool> use(displacement.size(), true);
+    for (std::size_t i = 0; i < displacement.size(); ++i)
+        if (pair.objectStiffness(forceHigh[i] / forceLow[i]).range != sensors::ComplianceRange::InRange)
+            ++r.samplesOutOfRange;
     // One 3σ rejection on the residuals, then the ratio of the kept pairs.
     const ForceRatio first = forceRatio(forceHigh, forceLow, use);
     const double sigma = first.residualSigma_n;
@@ -140,7 +171,13 @@ PressReading readPress(const sensors::CompliancePair& pair, std::span<const doub
     const ForceRatio kept = forceRatio(forceHigh, forceLow, use);
     r.samplesUsed = kept.count;
     readRatio(pair, kept, zero, r);
-    if (r.stiffness.range != sensors::ComplianceRange::InRange) return r;
+    // The ratio's own uncertainty (noise and zero) decides whether it is in range.
+    double uQ = kept.standardError;
+    if (r.stiffness.range == sensors::ComplianceRange::InRange)
+        uQ = r.uncertainty_n_per_m() * pair.sensitivity_m_per_n(r.stiffness.objectStiffness_n_per_m);
+    classifyRange(pair, kept.q, uQ, r);
+    if (atLimit.high + atLimit.low > 0) r.status = PressStatus::Clipped;  // whatever the ratio says
+    if (r.status != PressStatus::Ok) return r;
 
     // Range and slope over the kept samples only: a rejected spike must not
     // tilt the displacement check either.
@@ -169,7 +206,8 @@ PressReader::PressReader(const sensors::CompliancePair& pair, PressSettings sett
     if (!(settings.contactThreshold_n > 0.0)) throw std::invalid_argument("contact threshold must be positive");
 }
 
-std::optional<PressReading> PressReader::push(double t_s, double displacement_m, double forceHigh_n, double forceLow_n)
+std::optional<PressReading> PressReader::push(double t_s, double displacement_m, double forceHigh_n, double forceLow_n,
+                                              BeamLimits atLimit)
 {
     const double threshold = m_settings.contactThreshold_n;
     std::optional<PressReading> ended;
@@ -180,6 +218,8 @@ std::optional<PressReading> PressReader::push(double t_s, double displacement_m,
     }
     if (m_pressing) {
         m_last_s = t_s;
+        m_atLimit.high += atLimit.high;
+        m_atLimit.low += atLimit.low;
         m_displacement.push_back(displacement_m);
         m_forceHigh.push_back(forceHigh_n);
         m_forceLow.push_back(forceLow_n);
@@ -215,7 +255,7 @@ std::optional<PressReading> PressReader::close()
     m_pressing = false;
     std::optional<PressReading> result;
     if (m_displacement.size() >= m_settings.minimumSamples) {
-        result = readPress(m_pair, m_displacement, m_forceHigh, m_forceLow, m_zero);
+        result = readPress(m_pair, m_displacement, m_forceHigh, m_forceLow, m_zero, m_atLimit);
         result->start_s = m_start_s;
         result->end_s = m_last_s;
     }
@@ -229,6 +269,7 @@ void PressReader::dropPress()
     m_displacement.clear();
     m_forceHigh.clear();
     m_forceLow.clear();
+    m_atLimit = {};
     m_count = 0;
     m_sumHigh = m_sumLow = m_sumHighHigh = m_sumHighLow = m_sumLowLow = 0.0;
 }
@@ -249,6 +290,22 @@ std::string pressDetailsJson(const PressReading& reading)
     json.key("samples_out_of_range").value(static_cast<long long>(reading.samplesOutOfRange));
     json.endObject();
     return json.str();
+}
+
+std::pair<double, double> usableRange(const sensors::CompliancePair& pair, std::span<const PressReading> presses)
+{
+    std::vector<double> relative;  // u_Q / Q of the presses read
+    for (const auto& p : presses)
+        if (p.status == PressStatus::Ok && p.q > 0.0)
+            relative.push_back(p.uncertainty_n_per_m() * pair.sensitivity_m_per_n(p.stiffness.objectStiffness_n_per_m) /
+                               p.q);
+    double typical = 0.005;
+    if (!relative.empty()) {
+        std::ranges::nth_element(relative, relative.begin() + static_cast<std::ptrdiff_t>(relative.size() / 2));
+        typical = relative[relative.size() / 2];
+    }
+    const double low = 1.0 + 2.0 * typical, high = pair.qMax() * (1.0 - 2.0 * typical);
+    return {pair.objectStiffness(low).objectStiffness_n_per_m, pair.objectStiffness(high).objectStiffness_n_per_m};
 }
 
 PressSettings pressSettingsAt(double sampleRate_hz)

@@ -62,6 +62,22 @@ private:
     std::vector<double> m_high, m_low;
 };
 
+// What a press's reading is. Ok: a stiffness with its uncertainty.
+// Clipped: a beam's ADC was at (or within 1 % of) its limit during the
+// press, so its force — and the ratio — is not what the beam felt: no
+// number. Below/above range: the ratio lies within 2u of the probe's limit
+// (Q = 1, or Q = k_h/k_l), where k_o runs off to 0 or infinity and a number
+// would be a bias, not a reading: the bound it is below or above instead.
+enum class PressStatus { Ok, Clipped, BelowRange, AboveRange };
+// "ok", "clipped", "below-range", "above-range" (the JSON's words).
+const char* statusName(PressStatus status);
+
+// Samples of a press at the ADC's limit, per beam.
+struct BeamLimits {
+    std::size_t high = 0;
+    std::size_t low = 0;
+};
+
 // The standard uncertainty of a zero in each beam's force, N.
 struct ZeroUncertainty {
     double high_n = 0.0;
@@ -71,7 +87,12 @@ struct ZeroUncertainty {
 struct PressReading {
     double start_s = 0.0;
     double end_s = 0.0;
-    // In range: k_o of the press's force ratio ΣF_H/ΣF_L.
+    PressStatus status = PressStatus::Ok;
+    // Out of range: the k_o the object is below (BelowRange) or above
+    // (AboveRange), at 2u from the ratio; none when that is the limit itself.
+    std::optional<double> bound_n_per_m;
+    BeamLimits atLimit;  // samples at the ADC's limit
+    // k_o of the press's force ratio ΣF_H/ΣF_L (a number only when status is Ok).
     sensors::StiffnessReading stiffness;
     double q = 0.0;
     double standardError_n_per_m = 0.0;             // from the noise of the forces
@@ -80,8 +101,7 @@ struct PressReading {
     double offsetSensitivityLow_per_m = 0.0;        // the same for F_L
     std::size_t samplesUsed = 0;
     std::size_t samplesRejected = 0;    // residual beyond 3σ
-    std::size_t samplesOutOfRange = 0;  // Q ≤ 1 or Q ≥ k_h/k_l at that sample
-    // When most samples were out of range, stiffness.range says which way.
+    std::size_t samplesOutOfRange = 0;  // Q ≤ 1 or Q ≥ k_h/k_l at that sample (kept: they are noise, not a cut)
     double displacementMin_m = 0.0;
     double displacementMax_m = 0.0;
     // d(k_o)/d(displacement) over the press and its standard error.
@@ -98,7 +118,12 @@ struct PressReading {
 // differ or are empty.
 PressReading readPress(const sensors::CompliancePair& pair, std::span<const double> displacement_m,
                        std::span<const double> forceHigh_n, std::span<const double> forceLow_n,
-                       std::optional<ZeroUncertainty> zero = std::nullopt);
+                       std::optional<ZeroUncertainty> zero = std::nullopt, BeamLimits atLimit = {});
+
+// The k_o range a probe reads presses in: from 2u above Q = 1 to 2u below
+// Q = k_h/k_l, with u the typical ratio uncertainty of `presses` (the
+// median over those read Ok; 0.5 % of Q when none is).
+std::pair<double, double> usableRange(const sensors::CompliancePair& pair, std::span<const PressReading> presses);
 
 // A press's details beyond its value, as one JSON object for the session
 // store: q, noise_standard_error_n_per_m, zero_uncertainty_n_per_m (when
@@ -120,8 +145,10 @@ class PressReader {
 public:
     explicit PressReader(const sensors::CompliancePair& pair, PressSettings settings = {});
 
-    // One sample; returns a reading when a press has just ended.
-    std::optional<PressReading> push(double t_s, double displacement_m, double forceHigh_n, double forceLow_n);
+    // One sample (with whether each beam's ADC is at its limit); returns a
+    // reading when a press has just ended.
+    std::optional<PressReading> push(double t_s, double displacement_m, double forceHigh_n, double forceLow_n,
+                                     BeamLimits atLimit = {});
     // Ends the stream: returns the reading of a press still in progress.
     std::optional<PressReading> finish();
     // Drops a press in progress unread (a lost sample, a new zero).
@@ -131,6 +158,8 @@ public:
     void setZeroUncertainty(std::optional<ZeroUncertainty> zero) { m_zero = zero; }
 
     bool pressing() const { return m_pressing; }
+    // The samples of the press in progress at the ADC's limit, per beam.
+    const BeamLimits& pressAtLimit() const { return m_atLimit; }
     // While pressing: k_o of the force ratio so far and its standard error
     // (for display); none before two samples or out of range.
     std::optional<std::pair<double, double>> current() const;
@@ -145,6 +174,7 @@ private:
     double m_start_s = 0.0;
     double m_last_s = 0.0;
     std::vector<double> m_displacement, m_forceHigh, m_forceLow;
+    BeamLimits m_atLimit;
     // Running sums of the press's forces, for current().
     std::size_t m_count = 0;
     double m_sumHigh = 0.0, m_sumLow = 0.0, m_sumHighHigh = 0.0, m_sumHighLow = 0.0, m_sumLowLow = 0.0;

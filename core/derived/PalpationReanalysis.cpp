@@ -84,7 +84,7 @@ void forEachForceSample(storage::SessionSource& store, std::int64_t session, con
                     continue;
                 }
                 sample({static_cast<double>(first + s) / summary.sampleRate_hz, displacement[s],
-                        forces.forceHigh(high[s]), forces.forceLow(low[s])});
+                        forces.forceHigh(high[s]), forces.forceLow(low[s]), forces.limitsOf(high[s], low[s])});
             }
         }
     }
@@ -138,7 +138,7 @@ PalpationPresses readPalpationPresses(storage::SessionSource& store, std::int64_
             reader.setZeroUncertainty(zero);
         },
         [&](const ForceSample& s) {
-            if (auto reading = reader.push(s.t_s, s.displacement_m, s.forceHigh_n, s.forceLow_n))
+            if (auto reading = reader.push(s.t_s, s.displacement_m, s.forceHigh_n, s.forceLow_n, s.atLimit))
                 result.presses.push_back(std::move(*reading));
         });
     return result;
@@ -172,7 +172,7 @@ PalpationReanalysis reanalysePalpation(storage::SessionSource& store, std::int64
     result.basis = std::move(read.basis);
     const auto recorded = store.readings(session);
     for (const auto& press : read.presses) {
-        if (press.stiffness.range != sensors::ComplianceRange::InRange) {
+        if (press.status != compliance::PressStatus::Ok) {
             ++result.outOfRange;
             continue;
         }

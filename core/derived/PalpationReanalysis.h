@@ -44,6 +44,7 @@ struct ForceSample {
     double displacement_m = 0.0;
     double forceHigh_n = 0.0;
     double forceLow_n = 0.0;
+    compliance::BeamLimits atLimit;  // each beam's ADC at its limit
 };
 struct PalpationForceSamples {
     std::vector<ForceSample> samples;  // in time order, lost ones left out

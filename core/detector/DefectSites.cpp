@@ -327,13 +327,16 @@ SiteGrouping groupSites(std::span<const DefectEvent> events, const CrossingPlace
     // Unplaced crossings: one pass's are different sites, by their time
     // from the pass's start (passes split at the long gaps).
     std::ranges::sort(unplaced, {}, [&](std::size_t i) { return midTime(events[i]); });
-    std::vector<std::vector<std::size_t>> passes;
-    if (!unplaced.empty()) {
+    // Passes are told from a rhythm: fewer than kMinPasses crossings show
+    // none, and each is a site of its own (never fewer sites than there may be).
+    std::vector<std::vector<std::size_t>> passes, unplacedSites;
+    if (unplaced.size() < kMinPasses) {
+        for (const std::size_t i : unplaced) unplacedSites.push_back({i});
+    } else {
         std::vector<double> gaps;
         for (std::size_t k = 1; k < unplaced.size(); ++k)
             gaps.push_back(midTime(events[unplaced[k]]) - midTime(events[unplaced[k - 1]]));
-        const double shortest = gaps.empty() ? 0.0 : *std::ranges::min_element(gaps);
-        const double longest = gaps.empty() ? 0.0 : *std::ranges::max_element(gaps);
+        const auto [shortest, longest] = std::ranges::minmax(gaps);
         const bool even = longest < 1.5 * shortest;  // every crossing a pass of its own
         passes.push_back({unplaced.front()});
         for (std::size_t k = 1; k < unplaced.size(); ++k) {
@@ -344,7 +347,7 @@ SiteGrouping groupSites(std::span<const DefectEvent> events, const CrossingPlace
     std::map<std::size_t, double> offset;
     for (const auto& pass : passes)
         for (const std::size_t i : pass) offset[i] = midTime(events[i]) - midTime(events[pass.front()]);
-    std::vector<std::vector<std::size_t>> unplacedSites = byRank(passes, [&](std::size_t i) { return offset.at(i); });
+    for (auto& site : byRank(passes, [&](std::size_t i) { return offset.at(i); })) unplacedSites.push_back(site);
     std::erase_if(unplacedSites, [](const auto& s) { return s.empty(); });
 
     std::map<std::size_t, std::size_t> siteOf;  // crossing → site

@@ -43,7 +43,8 @@
 // Crossings that cannot be placed (no speed, no reversal: a dent seen in
 // one direction only) are grouped the same way by their order within each
 // pass (passes split at the long gaps between crossings): a dent seen one
-// way is one site "position unknown", not one per crossing.
+// way is one site "position unknown", not one per crossing. Fewer than
+// kMinPasses unplaced crossings show no rhythm: each is a site of its own.
 #pragma once
 
 #include "core/detector/DefectEvent.h"
@@ -62,6 +63,8 @@ inline constexpr double kMinStrokeFraction = 0.4;
 inline constexpr double kMinSineSpread = 0.04;
 inline constexpr double kSiteReach_m = 0.015;
 inline constexpr double kMinSiteSeparation_m = 0.010;
+// Unplaced crossings are grouped by passes only from this many on.
+inline constexpr std::size_t kMinPasses = 3;
 
 // Where each event was placed, and why some were not.
 struct CrossingPlaces {

@@ -22,8 +22,9 @@ core::straingauge::StrainGaugeChain trueChain(const GaugeCalibrationParameters& 
 
 GaugeCalibrationScenario::GaugeCalibrationScenario(const GaugeCalibrationParameters& parameters)
     : m_p(parameters),
-      m_channels{{"beam", "count", core::ChannelKind::Other}},
-      m_beam(parameters.beam),
+      m_channels{{parameters.softBeam ? "low" : "high", "count", core::ChannelKind::Other,
+                  parameters.softBeam ? core::ChannelRole::SoftBeam : core::ChannelRole::StiffBeam}},
+      m_beam(parameters.softBeam ? kProbeSoftBeam : parameters.beam),
       m_trueChain(trueChain(parameters)),
       m_noise(parameters.seed, parameters.electricalNoise_v)
 {

@@ -1,6 +1,7 @@
-// Simulated gauge-factor calibration rig: one strain-gauged cantilever (the
-// paper's stiff Perspex beam, seed 001) clamped at its root, with masses
-// hung on its tip through a LoadRig. One channel, the bridge ADC in counts.
+// Simulated gauge-factor calibration rig: one beam of the simulated
+// compliance probe (SimulatedProbe.h: the stiff one, or the soft one)
+// clamped at its root, with masses hung on its tip through a LoadRig. One
+// channel, the bridge ADC in counts, named as the probe names that beam's.
 //
 // The gauge on the beam is not the datasheet's: its true gauge factor
 // (bonding, lead resistance, the gauge's own tolerance) differs from the
@@ -15,6 +16,7 @@
 #include "core/sensors/CantileverBeam.h"
 #include "core/straingauge/StrainGaugeChain.h"
 #include "devices/simulator/GaussianNoise.h"
+#include "devices/simulator/SimulatedProbe.h"
 #include "devices/simulator/SimulatedScenario.h"
 
 #include <cstdint>
@@ -23,10 +25,11 @@ namespace tactiscope::devices::simulator {
 
 struct GaugeCalibrationParameters {
     double sampleRate_hz = 500.0;
-    core::sensors::CantileverGeometry beam{0.05, 0.01, 0.003, 3e9};
-    core::straingauge::AdcSettings adc;        // as the device is configured
-    core::straingauge::BridgeSettings bridge;  // its gaugeFactor is the nominal one
-    double trueGaugeFactor = 2.14;             // 7 % above the nominal 2.0
+    bool softBeam = false;  // which of the probe's beams is clamped
+    core::sensors::CantileverGeometry beam = kProbeStiffBeam;
+    core::straingauge::AdcSettings adc;              // as the device is configured
+    core::straingauge::BridgeSettings bridge;        // its gaugeFactor is the nominal one
+    double trueGaugeFactor = kProbeTrueGaugeFactor;  // 7 % above the nominal 2.0
     double zeroOffset_counts = 120.0;
     double settleTime_s = 0.15;
     double electricalNoise_v = 1e-3;  // at the ADC input
@@ -38,7 +41,10 @@ public:
     // Throws std::invalid_argument for non-physical parameters.
     explicit GaugeCalibrationScenario(const GaugeCalibrationParameters& parameters = {});
 
-    std::string name() const override { return "gauge-factor calibration rig"; }
+    std::string name() const override
+    {
+        return m_p.softBeam ? "gauge-factor calibration rig (soft beam)" : "gauge-factor calibration rig";
+    }
     std::optional<core::Mode> mode() const override { return std::nullopt; }
     const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
     double sampleRate_hz() const override { return m_p.sampleRate_hz; }

@@ -25,6 +25,14 @@ double handRamp(double u, double wobble)
     return 0.5 * (1.0 - std::cos(std::numbers::pi * warped));
 }
 
+// The bridge as it is: the gauges' true factor, not the configured one.
+core::straingauge::BridgeSettings withGaugeFactor(core::straingauge::BridgeSettings bridge, double gaugeFactor)
+{
+    if (!(gaugeFactor > 0.0)) throw std::invalid_argument("palpation: gauge factor must be positive");
+    bridge.gaugeFactor = gaugeFactor;
+    return bridge;
+}
+
 }  // namespace
 
 PalpationScenario::PalpationScenario(const PalpationParameters& parameters)
@@ -34,7 +42,7 @@ PalpationScenario::PalpationScenario(const PalpationParameters& parameters)
                  {"displacement", "m", core::ChannelKind::Position}},
       m_high(parameters.high),
       m_low(parameters.low),
-      m_chain(parameters.adc, parameters.bridge),
+      m_chain(parameters.adc, withGaugeFactor(parameters.bridge, parameters.trueGaugeFactor)),
       m_random(parameters.seed),
       m_noiseHigh(parameters.seed * 3 + 0, parameters.electricalNoise_v),
       m_noiseLow(parameters.seed * 3 + 1, parameters.electricalNoise_v),

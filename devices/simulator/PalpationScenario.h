@@ -15,6 +15,7 @@
 #include "core/sensors/CantileverBeam.h"
 #include "core/straingauge/StrainGaugeChain.h"
 #include "devices/simulator/GaussianNoise.h"
+#include "devices/simulator/SimulatedProbe.h"
 #include "devices/simulator/SimulatedScenario.h"
 
 #include <cstdint>
@@ -25,9 +26,10 @@ namespace tactiscope::devices::simulator {
 
 struct PalpationParameters {
     double sampleRate_hz = 1000.0;
-    // The paper's probe: Perspex, 10 mm wide, 50 mm long, 3 mm and 1 mm thick.
-    core::sensors::CantileverGeometry high{0.05, 0.01, 0.003, 3e9};
-    core::sensors::CantileverGeometry low{0.05, 0.01, 0.001, 3e9};
+    // The paper's probe: Perspex, 10 mm wide, 50 mm long, 3 mm and 1 mm
+    // thick, the one the gauge rig calibrates (SimulatedProbe.h).
+    core::sensors::CantileverGeometry high = kProbeStiffBeam;
+    core::sensors::CantileverGeometry low = kProbeSoftBeam;
     double objectStiffness_n_per_m = 117.0;
     std::vector<double> pressDepths_m{0.002, 0.004, 0.006, 0.008};  // cycled
     double pause_s = 1.0;                                           // probe lifted between presses
@@ -35,8 +37,9 @@ struct PalpationParameters {
     double displacementNoise_m = 5e-6;  // displacement gauge
     double electricalNoise_v = 1e-3;    // at the ADC input
     core::straingauge::AdcSettings adc;
-    core::straingauge::BridgeSettings bridge;
-    double zeroOffsetHigh_counts = 120.0;  // unbalanced bridges
+    core::straingauge::BridgeSettings bridge;        // as the device is configured: the nominal gauge factor
+    double trueGaugeFactor = kProbeTrueGaugeFactor;  // of both beams' gauges
+    double zeroOffsetHigh_counts = 120.0;            // unbalanced bridges
     double zeroOffsetLow_counts = -85.0;
     std::uint64_t seed = 1;
 };
@@ -53,7 +56,8 @@ public:
     void generate(core::SampleBlock& block) override;
 
     const PalpationParameters& parameters() const { return m_p; }
-    // The chain the probe's channels go through (without tare).
+    // The chain as the device is configured (nominal gauge factor, without
+    // tare): what an uncalibrated reader converts the counts with.
     core::straingauge::StrainGaugeChain chain() const { return {m_p.adc, m_p.bridge}; }
 
 private:

@@ -10,8 +10,8 @@ namespace tactiscope::devices::simulator {
 
 std::vector<std::string> scenarioIds()
 {
-    return {kPanelScanScenario, kPalpationScenario, "capacitive-weights", "gauge-calibration",
-            "capacitive-calibration"};
+    return {kPanelScanScenario,  kPalpationScenario,       "capacitive-weights",
+            "gauge-calibration", "gauge-calibration-soft", "capacitive-calibration"};
 }
 
 std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64_t seed, std::optional<double> rate_hz)
@@ -35,9 +35,10 @@ std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64
         if (id == "capacitive-calibration") parameters.protocol = WeightProtocol::Manual;
         return std::make_unique<CapacitiveWeightsScenario>(parameters);
     }
-    if (id == "gauge-calibration") {
+    if (id == "gauge-calibration" || id == "gauge-calibration-soft") {
         GaugeCalibrationParameters parameters;
         parameters.seed = seed;
+        parameters.softBeam = id == "gauge-calibration-soft";
         if (rate_hz) parameters.sampleRate_hz = *rate_hz;
         return std::make_unique<GaugeCalibrationScenario>(parameters);
     }

@@ -2,6 +2,7 @@
 // known defects in, events and per-sample output out; every bad input gives
 // exit code 2 and one line on stderr.
 #include "support/CliRunner.h"
+#include "support/EmulatorProcess.h"
 #include "support/TextFiles.h"
 
 #include <QFile>
@@ -198,4 +199,40 @@ TEST_F(DetectCli, AFaultLateInALongFileLeavesNoOutputBehind)
         << run.err.toStdString();
     EXPECT_FALSE(QFile::exists(path("out.csv")));
     EXPECT_FALSE(QFile::exists(path("out.csv.partial")));
+}
+
+// The sites contract (other tools read it): `detect --json` lists the
+// simulator's one dent (at +30 mm along cantilever A's stroke, +37.5 mm for
+// the probe's centre) as one site of every crossing, and `sessions show
+// --json` of the same scan imported as a panel scan lists the same site.
+TEST(DetectSitesCli, JsonListsTheDefectSitesAndSessionsShowTheSame)
+{
+    QTemporaryDir dir;
+    const QString csv = dir.filePath("scan.csv");
+    ASSERT_EQ(runCli({"simulate", "--seconds", "20", "--seed", "3", "--output", csv}).exitCode, 0);
+    const CliResult detect = runCli({"detect", csv, "--json", "--spacing-mm", "15"});
+    ASSERT_EQ(detect.exitCode, 0) << detect.err.toStdString();
+    const QJsonObject o = QJsonDocument::fromJson(detect.out.toUtf8()).object();
+    const QJsonArray sites = o["sites"].toArray();
+    ASSERT_EQ(sites.size(), 1) << detect.out.toStdString();
+    const QJsonObject site = sites[0].toObject();
+    EXPECT_NEAR(site["position_mm"].toDouble(), 37.5, 10.0);
+    EXPECT_GE(site["spread_mm"].toDouble(), 0.0);
+    EXPECT_EQ(site["crossings"].toInt(), o["events"].toArray().size());
+    EXPECT_EQ(site["a_then_b"].toInt() + site["b_then_a"].toInt(), site["crossings"].toInt());
+    EXPECT_LT(site["first_s"].toDouble(), site["last_s"].toDouble());
+    EXPECT_TRUE(o["sites_method"].toString().startsWith(QStringLiteral("scan speed")))
+        << o["sites_method"].toString().toStdString();
+
+    // A panel scan recorded live: its stored defects' sites.
+    const QString db = dir.filePath("s.tactiscope");
+    const CliResult record = tactiscope::testing::recordEmulated(dir.path(), db, QStringLiteral("panel-scan"), 8);
+    ASSERT_EQ(record.exitCode, 0) << record.err.toStdString();
+    const CliResult show = runCli({"sessions", "--db", db, "show", "last", "--json"});
+    ASSERT_EQ(show.exitCode, 0) << show.err.toStdString();
+    const QJsonObject shown = QJsonDocument::fromJson(show.out.toUtf8()).object();
+    ASSERT_TRUE(shown.contains("sites")) << show.out.toStdString();
+    int crossings = 0;
+    for (const auto stored : shown["sites"].toArray()) crossings += stored.toObject()["crossings"].toInt();
+    EXPECT_GE(crossings, 1) << show.out.toStdString();
 }

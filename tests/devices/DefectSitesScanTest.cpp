@@ -98,4 +98,3 @@ TEST(DefectSitesScan, DentsThirtyMillimetresApartAreSitesOfTheirOwn)
             }
     }
 }
-

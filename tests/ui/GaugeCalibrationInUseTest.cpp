@@ -98,10 +98,25 @@ TEST_F(GaugeCalibrationInUseTest, TheToolsMenuOpensTheWizardOnTheConnectedRig)
     calibrate->trigger();
     auto* wizard = window.findChild<ui::GaugeFactorWizard*>();
     ASSERT_NE(wizard, nullptr);
-    EXPECT_EQ(child<QComboBox>(*wizard, "channelBox")->currentText(), QStringLiteral("beam"));
+    // The rig holds the palpation probe's stiff beam, and says so.
+    EXPECT_EQ(child<QComboBox>(*wizard, "channelBox")->currentText(), QStringLiteral("high"));
+    EXPECT_EQ(child<QComboBox>(*wizard, "beamBox")->currentIndex(), 0);
     wizard->next();
     wizard->next();
     ASSERT_EQ(wizard->currentId(), ui::GaugeFactorWizard::ZeroPage);
     EXPECT_TRUE(tactiscope::testing::waitFor([&] { return wizard->currentPage()->isComplete(); }, 10000));
     wizard->reject();
+
+    // The soft beam's rig: the wizard calibrates the soft beam.
+    window.disconnectSource();
+    QAction* softRig = menuAction(window.menuBar()->actions(), QStringLiteral("gauge-calibration-soft"));
+    ASSERT_NE(softRig, nullptr);
+    softRig->trigger();
+    calibrate->trigger();
+    ui::GaugeFactorWizard* soft = nullptr;  // the first one may wait for its deletion
+    for (auto* open : window.findChildren<ui::GaugeFactorWizard*>())
+        if (child<QComboBox>(*open, "channelBox")->currentText() == QStringLiteral("low")) soft = open;
+    ASSERT_NE(soft, nullptr);
+    EXPECT_EQ(child<QComboBox>(*soft, "beamBox")->currentIndex(), 1);
+    soft->reject();
 }

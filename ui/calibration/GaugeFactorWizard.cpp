@@ -8,6 +8,8 @@
 #include "ui/calibration/CheckedPage.h"
 #include "ui/calibration/WizardText.h"
 
+#include <algorithm>
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -79,6 +81,11 @@ GaugeFactorWizard::GaugeFactorWizard(CalibrationContext context, QWidget* parent
     setObjectName(QStringLiteral("gaugeFactorWizard"));
     m_beam->setObjectName(QStringLiteral("beamBox"));
     m_beam->addItems({tr("stiff beam"), tr("soft beam")});
+    // A rig that says which beam it holds (its channel's role) chooses it.
+    const auto& channels = this->context().channels;
+    if (std::ranges::any_of(channels, [](const auto& c) { return c.role == core::ChannelRole::SoftBeam; }) &&
+        std::ranges::none_of(channels, [](const auto& c) { return c.role == core::ChannelRole::StiffBeam; }))
+        m_beam->setCurrentIndex(1);
     addPages({{tr("Bea&m"), m_beam}}, createChainPage());
     addDeviationWarning();
     connect(profileBox(), &QComboBox::currentIndexChanged, this, &GaugeFactorWizard::showBeam);

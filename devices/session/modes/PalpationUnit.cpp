@@ -50,8 +50,8 @@ void PalpationUnit::take(const LiveTake& take)
     std::vector<core::storage::SessionReading> stored;
     for (auto& press : resultsForLists(m_later, m_palpation->takeReadings(), take)) {
         PressRecord record{std::move(press), take.site(), false};
-        // Out of range is a state, not a stiffness: shown, not stored as a number.
-        if (take.recorder && record.press.stiffness.range == core::sensors::ComplianceRange::InRange) {
+        // Out of range or clipped is a state, not a stiffness: shown, not stored as a number.
+        if (take.recorder && record.press.status == core::compliance::PressStatus::Ok) {
             core::storage::SessionReading reading;
             reading.kind = core::ReadingKind::Compliance;
             reading.quantity = "stiffness";

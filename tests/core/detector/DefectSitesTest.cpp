@@ -78,7 +78,8 @@ std::vector<DefectEvent> withShortRuns(std::vector<DefectEvent> events)
     for (std::size_t i = 0; i < original.size(); ++i) {
         const auto& e = original[i];
         if (i % 3 == 0)
-            events.push_back({e.end_s + 0.01, e.end_s + 0.01 + 0.002 * static_cast<double>(1 + i % 4), -e.direction, 0.9, 0.05, 0.3});
+            events.push_back({e.end_s + 0.01, e.end_s + 0.01 + 0.002 * static_cast<double>(1 + i % 4), -e.direction,
+                              0.9, 0.05, 0.3});
         if (i + 1 < original.size() && original[i + 1].direction != e.direction)
             events.push_back({e.end_s + 0.05, e.end_s + 0.056, -e.direction, 0.88, 0.01, 1.5});
     }
