@@ -1,7 +1,6 @@
 // Step and press readings of the compliance probe.
 #include "core/compliance/StiffnessReadings.h"
 
-#include "core/calibration/LinearFit.h"
 #include "core/text/JsonWriter.h"
 
 #include <algorithm>
@@ -97,6 +96,65 @@ void readRatio(const sensors::CompliancePair& pair, const ForceRatio& ratio, std
             std::hypot(r.offsetSensitivityHigh_per_m * zero->high_n, r.offsetSensitivityLow_per_m * zero->low_n);
 }
 
+// How Q changes with depth over a press, from the residuals of the ratio:
+// if Q_i = Q + q'·(d_i − d̄), then F_H,i − Q·F_L,i = a·F_L,i + q'·(d_i − d̄)·F_L,i
+// plus the force noise, which is the same at every depth — so an ordinary
+// least-squares fit of the residuals on F_L and (d − d̄)·F_L gives q' with
+// an honest standard error, where a fit of per-sample k_o (noise ∝ 1/F_L)
+// weighs the shallow samples' noise like the deep ones' signal. The
+// residuals of neighbouring samples are correlated (tremor, the gauges'
+// bandwidth): the standard error is widened by √((1 + ρ)/(1 − ρ)), ρ their
+// lag-one correlation. An offset δ in F_H adds δ to every residual; its
+// effect on q' (per newton) is returned so the zero's uncertainty can be
+// carried (one of F_L acts as −Q·δ).
+struct DepthSlope {
+    double dqDx = 0.0;               // q', per metre
+    double standardError = 0.0;      // of q', from the noise
+    double dqDxPerHighOffset = 0.0;  // dq'/dδ_H, per metre per newton
+};
+
+DepthSlope depthSlope(std::span<const double> high, std::span<const double> low, std::span<const double> depth,
+                      const std::vector<std::size_t>& kept, double q)
+{
+    double meanDepth = 0.0;
+    for (const std::size_t i : kept) meanDepth += depth[i];
+    meanDepth /= static_cast<double>(kept.size());
+    // Normal equations of y = a·u + b·v, u = F_L, v = (d − d̄)·F_L.
+    double uu = 0.0, uv = 0.0, vv = 0.0, uy = 0.0, vy = 0.0, u1 = 0.0, v1 = 0.0;
+    for (const std::size_t i : kept) {
+        const double u = low[i], v = (depth[i] - meanDepth) * low[i], y = high[i] - q * low[i];
+        uu += u * u;
+        uv += u * v;
+        vv += v * v;
+        uy += u * y;
+        vy += v * y;
+        u1 += u;
+        v1 += v;
+    }
+    DepthSlope slope;
+    const double det = uu * vv - uv * uv;
+    if (!(det > 0.0)) return slope;
+    const double a = (vv * uy - uv * vy) / det;
+    slope.dqDx = (uu * vy - uv * uy) / det;
+    slope.dqDxPerHighOffset = (uu * v1 - uv * u1) / det;  // the same fit of y = 1
+    std::vector<double> residuals;
+    for (const std::size_t i : kept) {
+        const double u = low[i], v = (depth[i] - meanDepth) * low[i];
+        residuals.push_back(high[i] - q * low[i] - a * u - slope.dqDx * v);
+    }
+    double squares = 0.0, lagged = 0.0;
+    for (std::size_t k = 0; k < residuals.size(); ++k) {
+        squares += residuals[k] * residuals[k];
+        if (k > 0) lagged += residuals[k] * residuals[k - 1];
+    }
+    const double n = static_cast<double>(residuals.size());
+    if (n <= 2.0 || !(squares > 0.0)) return slope;
+    const double rho = std::clamp(lagged / squares, 0.0, 0.95);
+    const double sigma2 = squares / (n - 2.0);
+    slope.standardError = std::sqrt(sigma2 * uu / det) * std::sqrt((1.0 + rho) / (1.0 - rho));
+    return slope;
+}
+
 }  // namespace
 
 double PressReading::uncertainty_n_per_m() const
@@ -181,20 +239,23 @@ PressReading readPress(const sensors::CompliancePair& pair, std::span<const doub
 
     // Range and slope over the kept samples only: a rejected spike must not
     // tilt the displacement check either.
-    std::vector<double> keptStiffness, keptWhere;
-    for (std::size_t i = 0; i < use.size(); ++i) {
-        if (!use[i]) continue;
-        const sensors::StiffnessReading k = pair.objectStiffness(forceHigh[i] / forceLow[i]);
-        keptStiffness.push_back(k.objectStiffness_n_per_m);
-        keptWhere.push_back(displacement[i]);
+    std::vector<std::size_t> used;
+    for (std::size_t i = 0; i < use.size(); ++i)
+        if (use[i]) used.push_back(i);
+    if (used.empty()) return r;
+    r.displacementMin_m = r.displacementMax_m = displacement[used.front()];
+    for (const std::size_t i : used) {
+        r.displacementMin_m = std::min(r.displacementMin_m, displacement[i]);
+        r.displacementMax_m = std::max(r.displacementMax_m, displacement[i]);
     }
-    const auto [lo, hi] = std::minmax_element(keptWhere.begin(), keptWhere.end());
-    r.displacementMin_m = *lo;
-    r.displacementMax_m = *hi;
-    if (*hi > *lo && keptStiffness.size() >= 3) {
-        const calibration::LinearFit slope = calibration::fitLine(keptWhere, keptStiffness);
-        r.displacementSlope_n_per_m_per_m = slope.slope;
-        r.displacementSlopeStandardError = slope.slopeStandardError;
+    if (r.displacementMax_m > r.displacementMin_m && used.size() >= 3) {
+        const auto slope = depthSlope(forceHigh, forceLow, displacement, used, r.q);
+        const double dkDq = 1.0 / pair.sensitivity_m_per_n(r.stiffness.objectStiffness_n_per_m);
+        r.displacementSlope_n_per_m_per_m = dkDq * slope.dqDx;
+        // The zero's offsets tilt the ratio against depth too (k_o error ∝ 1/force).
+        const double zeroPart =
+            zero ? std::abs(slope.dqDxPerHighOffset) * std::hypot(zero->high_n, r.q * zero->low_n) : 0.0;
+        r.displacementSlopeStandardError = dkDq * std::hypot(slope.standardError, zeroPart);
     }
     return r;
 }

@@ -15,9 +15,12 @@
 // reject the shallow end of every press). Pairs whose residual
 // F_H − Q·F_L lies beyond 3σ are rejected once, as the paper rejects its
 // readings. The reading carries the displacement range covered and the
-// slope of per-sample k_o against displacement — near zero if, as the
-// method promises, the reading does not depend on how far the probe was
-// pressed.
+// slope of k_o against displacement — near zero if, as the method
+// promises, the reading does not depend on how far the probe was pressed —
+// fitted on the residuals F_H − Q·F_L (whose noise is the same at every
+// depth), its standard error widened for correlated neighbours and with the
+// zero's part, since a zero offset tilts k_o against depth (its error goes
+// as 1/force).
 //
 // Uncertainty: the standard error from the residuals' scatter (white force
 // noise), and, when the zero's own uncertainty is known, the part a zero
