@@ -155,30 +155,6 @@ DepthSlope depthSlope(std::span<const double> high, std::span<const double> low,
     return slope;
 }
 
-}  // namespace
-
-double PressReading::uncertainty_n_per_m() const
-{
-    return std::hypot(standardError_n_per_m, zeroUncertainty_n_per_m.value_or(0.0));
-}
-
-const char* statusName(PressStatus status)
-{
-    switch (status) {
-    case PressStatus::Ok:
-        return "ok";
-    case PressStatus::Clipped:
-        return "clipped";
-    case PressStatus::BelowRange:
-        return "below-range";
-    case PressStatus::AboveRange:
-        return "above-range";
-    }
-    return "ok";
-}
-
-namespace {
-
 // A ratio within 2u of a limit of the probe is out of its range: the
 // bound is k_o at 2u from the ratio, towards the inside (none when that is
 // outside too).
@@ -202,6 +178,26 @@ void classifyRange(const sensors::CompliancePair& pair, double q, double uQ, Pre
 }
 
 }  // namespace
+
+double PressReading::uncertainty_n_per_m() const
+{
+    return std::hypot(standardError_n_per_m, zeroUncertainty_n_per_m.value_or(0.0));
+}
+
+const char* statusName(PressStatus status)
+{
+    switch (status) {
+    case PressStatus::Ok:
+        return "ok";
+    case PressStatus::Clipped:
+        return "clipped";
+    case PressStatus::BelowRange:
+        return "below-range";
+    case PressStatus::AboveRange:
+        return "above-range";
+    }
+    return "ok";
+}
 
 PressReading readPress(const sensors::CompliancePair& pair, std::span<const double> displacement,
                        std::span<const double> forceHigh, std::span<const double> forceLow,
