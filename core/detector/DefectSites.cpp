@@ -51,13 +51,15 @@ class Placer {
 public:
     explicit Placer(std::span<const DefectEvent> events)
         : m_events(events),
-          m_order(events.size())
+          m_order(events.size()),
+          m_rank(events.size())
     {
         m_places.position_m.resize(events.size());
         m_places.stroke.resize(events.size());
         m_places.partOf.resize(events.size());
         std::iota(m_order.begin(), m_order.end(), std::size_t{0});
         std::ranges::stable_sort(m_order, {}, [&](std::size_t i) { return midTime(events[i]); });
+        for (std::size_t k = 0; k < m_order.size(); ++k) m_rank[m_order[k]] = k;
     }
 
     CrossingPlaces place()
@@ -79,13 +81,28 @@ private:
     // The crossing nearest in time to event i, among those that are crossings.
     std::optional<std::size_t> nearestCrossing(std::size_t i) const
     {
-        std::optional<std::size_t> best;
-        for (const std::size_t j : m_order)
-            if (j != i && isCrossing(j) &&
-                (!best || std::abs(midTime(m_events[j]) - midTime(m_events[i])) <
-                              std::abs(midTime(m_events[*best]) - midTime(m_events[i]))))
-                best = j;
-        return best;
+        return nearest(i, [this](std::size_t j) { return isCrossing(j); });
+    }
+
+    // The event nearest in time to event i among those `eligible` takes,
+    // walking out from i in time order (the earlier one on a tie).
+    template <typename Eligible>
+    std::optional<std::size_t> nearest(std::size_t i, const Eligible& eligible) const
+    {
+        std::optional<std::size_t> before, after;
+        for (std::size_t k = m_rank[i]; k-- > 0;)
+            if (eligible(m_order[k])) {
+                before = m_order[k];
+                break;
+            }
+        for (std::size_t k = m_rank[i] + 1; k < m_order.size(); ++k)
+            if (eligible(m_order[k])) {
+                after = m_order[k];
+                break;
+            }
+        if (!before || !after) return before ? before : after;
+        const double t = midTime(m_events[i]);
+        return t - midTime(m_events[*before]) <= midTime(m_events[*after]) - t ? before : after;
     }
 
     // Marks `runs` as parts of their nearest crossings, all at once, so each
@@ -104,17 +121,12 @@ private:
         std::vector<double> durations;
         for (const auto& e : m_events) durations.push_back(e.end_s - e.start_s);
         const double typical = median(durations);
-        std::vector<std::size_t> longRuns, shortRuns;
-        for (std::size_t i = 0; i < m_events.size(); ++i)
-            (durations[i] < kShortRunFraction * typical ? shortRuns : longRuns).push_back(i);
+        const auto isShort = [&](std::size_t i) { return durations[i] < kShortRunFraction * typical; };
         std::vector<std::size_t> flicker;
-        for (const std::size_t i : shortRuns) {
-            std::optional<std::size_t> nearest;
-            for (const std::size_t j : longRuns)
-                if (!nearest || std::abs(midTime(m_events[j]) - midTime(m_events[i])) <
-                                    std::abs(midTime(m_events[*nearest]) - midTime(m_events[i])))
-                    nearest = j;
-            if (nearest && m_events[*nearest].direction != m_events[i].direction) flicker.push_back(i);
+        for (std::size_t i = 0; i < m_events.size(); ++i) {
+            if (!isShort(i)) continue;
+            const auto full = nearest(i, [&](std::size_t j) { return !isShort(j); });
+            if (full && m_events[*full].direction != m_events[i].direction) flicker.push_back(i);
         }
         fold(flicker);
     }
@@ -232,6 +244,7 @@ private:
 
     std::span<const DefectEvent> m_events;
     std::vector<std::size_t> m_order;  // the events in time order
+    std::vector<std::size_t> m_rank;   // each event's place in m_order
     CrossingPlaces m_places;
 };
 

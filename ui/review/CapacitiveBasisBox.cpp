@@ -12,14 +12,6 @@
 #include <QVBoxLayout>
 
 namespace tactiscope::ui {
-namespace {
-
-QString text(const std::string& s)
-{
-    return QString::fromStdString(s);
-}
-
-}  // namespace
 
 CapacitiveBasisBox::CapacitiveBasisBox(const ReviewAccountContext& context, QWidget* parent)
     : ReviewAccount(tr("Calibration used"), parent),
@@ -39,9 +31,10 @@ CapacitiveBasisBox::CapacitiveBasisBox(const ReviewAccountContext& context, QWid
                 if (stored.record.kind == core::calibration::kCapacitiveKind) {
                     m_records.push_back(stored.record);
                     choice->addItem(tr("%1 by %2")
-                                        .arg(text(stored.record.timestampUtc), stored.record.operatorName.empty()
-                                                                                   ? tr("(no name)")
-                                                                                   : text(stored.record.operatorName)));
+                                        .arg(QString::fromStdString(stored.record.timestampUtc),
+                                             stored.record.operatorName.empty()
+                                                 ? tr("(no name)")
+                                                 : QString::fromStdString(stored.record.operatorName)));
                 }
     } catch (const std::exception&) {
         // No profile or store records: the recorded basis is all there is.
@@ -53,10 +46,11 @@ CapacitiveBasisBox::CapacitiveBasisBox(const ReviewAccountContext& context, QWid
     m_basis->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     try {
         const auto basis = core::report::capacitiveBasis(m_store, m_session, 0, m_session.sampleCount);
-        m_basis->setText(basis ? capacitiveBasisHtml(*basis)
-                               : tr("Not known: %1").arg(text(context.derivedProblem).toHtmlEscaped()));
+        m_basis->setText(basis
+                             ? capacitiveBasisHtml(*basis)
+                             : tr("Not known: %1").arg(QString::fromStdString(context.derivedProblem).toHtmlEscaped()));
     } catch (const core::storage::StorageError& e) {
-        m_basis->setText(tr("The calibration cannot be read: %1").arg(text(e.what()).toHtmlEscaped()));
+        m_basis->setText(tr("The calibration cannot be read: %1").arg(QString::fromUtf8(e.what()).toHtmlEscaped()));
     }
     connect(choice, &QComboBox::currentIndexChanged, this, [this](int index) {
         const auto record = index > 0 ? std::optional(m_records[static_cast<std::size_t>(index - 1)]) : std::nullopt;
@@ -78,7 +72,7 @@ QString CapacitiveBasisBox::readThrough(const std::optional<core::calibration::C
     try {
         basis = core::report::capacitiveBasis(m_store, m_session, 0, m_session.sampleCount, record);
     } catch (const core::storage::StorageError& e) {
-        return tr("The calibration cannot be read: %1").arg(text(e.what()));
+        return tr("The calibration cannot be read: %1").arg(QString::fromUtf8(e.what()));
     }
     if (!basis) return tr("This calibration cannot be used for session %1.").arg(m_session.id);
     const QString error =
@@ -86,7 +80,7 @@ QString CapacitiveBasisBox::readThrough(const std::optional<core::calibration::C
     if (!error.isEmpty()) return error;
     m_basis->setText(capacitiveBasisHtml(*basis));
     emit status(record ? tr("Force and deflection through the calibration of %1 (the recording's stays as it was).")
-                             .arg(text(record->timestampUtc))
+                             .arg(QString::fromStdString(record->timestampUtc))
                        : tr("Force and deflection through the calibration recorded with the session."));
     return {};
 }
