@@ -23,7 +23,15 @@ struct CalibrationLoad {
     // a tip deflection that the beam's stiffness turns into a force.
     double force_n = 0.0;
     double tipDeflection_m = 0.0;
-    double meanCounts = 0.0;  // mean reading of the stable window at this load
+    double meanCounts = 0.0;                // mean reading of the stable window at this load
+    double meanStandardError_counts = 0.0;  // its standard uncertainty; 0: not known
+};
+
+// The unloaded reading: the mean of its stable window and that mean's
+// standard uncertainty (0: not known).
+struct ZeroReading {
+    double meanCounts = 0.0;
+    double meanStandardError_counts = 0.0;
 };
 
 // Force from a reading through a fitted counts-per-newton slope: the direct
@@ -37,6 +45,13 @@ struct ForceCalibration {
 
 struct GaugeFactorResult {
     double gaugeFactor = 0.0;  // effective, from the fit
+    // Its standard uncertainty (k = 1): propagated from each point's
+    // standard error (the readings' noise, correlated samples included) and
+    // scaled up by the fit's Birge ratio when the points scatter more than
+    // that (settling, a swinging weight, a wrong mass). From the scatter
+    // about the line alone when the points' errors are not known. The
+    // beam's dimensions and modulus and the masses are taken as exact.
+    double gaugeFactorUncertainty = 0.0;
     double nominalGaugeFactor = 0.0;
     double deviationFromNominal = 0.0;  // (effective − nominal) / nominal
     double countsPerNewton = 0.0;
@@ -44,18 +59,19 @@ struct GaugeFactorResult {
     // The fitted points, the zero first and then the loads in their order:
     // root strain and the bridge's relative change x = ΔR/R.
     std::vector<double> strain, relativeChange;
-    LinearFit strainFit;  // x = GF·ε: slope is the gauge factor
-    LinearFit forceFit;   // counts − zero against force
+    LinearFit strainFit;  // x = GF·ε: slope is the gauge factor (weighted when the errors are known)
+    LinearFit forceFit;   // counts − zero against force (likewise)
     CalibrationRecord record;
 
     ForceCalibration forceCalibration() const { return {zeroCounts, countsPerNewton}; }
 };
 
-// zeroCounts: mean reading with no load. Throws std::invalid_argument for
-// fewer than two loads, a load with both or neither of force and
-// deflection, or loads that are all equal.
+// The points are weighted by their standard errors only when the zero's
+// and every load's are known. Throws std::invalid_argument for fewer than
+// two loads, a load with both or neither of force and deflection, or loads
+// that are all equal.
 GaugeFactorResult calibrateGaugeFactor(const sensors::CantileverBeam& beam, const straingauge::StrainGaugeChain& chain,
-                                       double zeroCounts, const std::vector<CalibrationLoad>& loads,
+                                       const ZeroReading& zero, const std::vector<CalibrationLoad>& loads,
                                        const std::string& sensorName, const std::string& operatorName);
 
 // What "stable" means for a bridge reading, scaled to the ADC: over 1 s a

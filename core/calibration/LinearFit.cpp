@@ -1,6 +1,7 @@
 // Least-squares line fits with centred sums (stable for offset data).
 #include "core/calibration/LinearFit.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -57,6 +58,40 @@ LinearFit fitLine(std::span<const double> x, std::span<const double> y)
     fit.slope = sxy / sxx;
     fit.intercept = meanY - fit.slope * meanX;
     finish(fit, x, y, sxx, 2);
+    return fit;
+}
+
+LinearFit fitLineWithUncertainties(std::span<const double> x, std::span<const double> y, std::span<const double> u)
+{
+    check(x, y);
+    if (u.size() != x.size()) throw std::invalid_argument("fit: every point needs its uncertainty");
+    double sw = 0.0, swx = 0.0, swy = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        if (!(u[i] > 0.0) || !std::isfinite(u[i])) throw std::invalid_argument("fit: uncertainties must be positive");
+        const double w = 1.0 / (u[i] * u[i]);
+        sw += w;
+        swx += w * x[i];
+        swy += w * y[i];
+    }
+    const double meanX = swx / sw, meanY = swy / sw;
+    double sxx = 0.0, sxy = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        const double w = 1.0 / (u[i] * u[i]);
+        sxx += w * (x[i] - meanX) * (x[i] - meanX);
+        sxy += w * (x[i] - meanX) * (y[i] - meanY);
+    }
+    if (!(sxx > 0.0)) throw std::invalid_argument("fit: all x values are equal");
+    LinearFit fit;
+    fit.slope = sxy / sxx;
+    fit.intercept = meanY - fit.slope * meanX;
+    finish(fit, x, y, sxx, 2);  // the unweighted residual σ and R², for display
+    double chiSquare = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) chiSquare += fit.residuals[i] * fit.residuals[i] / (u[i] * u[i]);
+    const double dof = static_cast<double>(x.size()) - 2.0;
+    fit.birgeRatio = dof > 0.0 ? std::sqrt(chiSquare / dof) : 1.0;
+    const double scale = std::max(1.0, fit.birgeRatio);
+    fit.slopeStandardError = scale * std::sqrt(1.0 / sxx);
+    fit.interceptStandardError = scale * std::sqrt(1.0 / sw + meanX * meanX / sxx);
     return fit;
 }
 

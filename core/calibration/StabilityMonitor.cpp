@@ -3,6 +3,8 @@
 
 #include "core/calibration/LinearFit.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -44,12 +46,28 @@ std::optional<WindowStatistics> StabilityMonitor::statistics() const
     for (double x : v) sum += x;
     w.mean = sum / static_cast<double>(v.size());
     w.sigma = line.residualStandardDeviation;
+    w.meanStandardError = meanStandardError(line.residuals);
     w.drift_per_s = line.slope;
     w.start_s = t.front();
     w.end_s = t.back();
     w.count = v.size();
     w.stable = std::abs(w.drift_per_s) <= m_settings.maxDrift_per_s && w.sigma <= m_settings.maxNoise;
     return w;
+}
+
+double meanStandardError(std::span<const double> residuals)
+{
+    const std::size_t n = residuals.size();
+    if (n < 3) return 0.0;
+    double squares = 0.0, neighbours = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        squares += residuals[i] * residuals[i];
+        if (i + 1 < n) neighbours += residuals[i] * residuals[i + 1];
+    }
+    if (!(squares > 0.0)) return 0.0;
+    const double rho = std::clamp(neighbours / squares, 0.0, 0.95);
+    const double sigma = std::sqrt(squares / static_cast<double>(n - 2));  // a line's two parameters fitted
+    return sigma / std::sqrt(static_cast<double>(n)) * std::sqrt((1.0 + rho) / (1.0 - rho));
 }
 
 std::optional<WindowStatistics> firstStableWindow(std::span<const double> t, std::span<const double> values,

@@ -24,6 +24,9 @@ struct StabilitySettings {
 struct WindowStatistics {
     double mean = 0.0;
     double sigma = 0.0;  // scatter about the fitted line (n − 2)
+    // Standard uncertainty of `mean` (k = 1): σ/√n widened for correlated
+    // neighbouring samples (meanStandardError); 0 where not known.
+    double meanStandardError = 0.0;
     double drift_per_s = 0.0;
     double start_s = 0.0;
     double end_s = 0.0;
@@ -52,6 +55,13 @@ private:
     StabilitySettings m_settings;
     std::deque<std::pair<double, double>> m_samples;
 };
+
+// Standard error of the mean of samples whose scatter about their trend is
+// `residuals`: σ/√n for independent samples, widened by √((1+ρ)/(1−ρ)) for
+// a lag-1 autocorrelation ρ > 0 (an AR(1) model of a filtered or wandering
+// signal; ρ is capped at 0.95). Never narrowed for ρ < 0: a negative ρ from
+// a few hundred samples is chance more often than physics.
+double meanStandardError(std::span<const double> residuals);
 
 // The first stable window of a recorded series at or after `from` (an
 // index), or nothing.

@@ -59,7 +59,7 @@ core::calibration::CalibrationRecord calibrateOnTheRig(bool softBeam)
     }
     const core::sensors::CantileverBeam beam(softBeam ? profile.low : profile.high);
     auto result = core::calibration::calibrateGaugeFactor(
-        beam, nominal, zero, loads, core::calibration::beamSensorName(profile.name, !softBeam), "tester");
+        beam, nominal, {zero}, loads, core::calibration::beamSensorName(profile.name, !softBeam), "tester");
     EXPECT_NEAR(result.gaugeFactor, devices::simulator::kProbeTrueGaugeFactor, 0.005) << (softBeam ? "soft" : "stiff");
     result.record.timestampUtc = "2026-11-25T08:00:00Z";
     return result.record;

@@ -291,12 +291,13 @@ CalibrationWizard::Fit GaugeFactorWizard::fitLoads()
         else
             point.force_n = forceOf(load);
         point.meanCounts = load.window.mean;
+        point.meanStandardError_counts = load.window.meanStandardError;
         points.push_back(point);
     }
-    m_result = core::calibration::calibrateGaugeFactor(beam(), *chain(), zero()->mean, points, sensorName(),
-                                                       operatorName().toStdString());
+    m_result = core::calibration::calibrateGaugeFactor(beam(), *chain(), {zero()->mean, zero()->meanStandardError},
+                                                       points, sensorName(), operatorName().toStdString());
     const auto& fit = m_result->strainFit;
-    const auto [factor, error] = valueAndErrorTexts(fit.slope, fit.slopeStandardError);
+    const auto [factor, error] = valueAndErrorTexts(m_result->gaugeFactor, m_result->gaugeFactorUncertainty);
     return {m_result->strain, m_result->relativeChange, fit,
             tr("Gauge factor %1 ± %2 (nominal %3), R² = %4, %5 points with the zero.")
                 .arg(factor, error, compactText(m_result->nominalGaugeFactor, 4), fixedText(fit.rSquared, 6))
@@ -307,15 +308,25 @@ QString GaugeFactorWizard::resultHtml() const
 {
     const auto& r = *m_result;
     const auto& fit = r.strainFit;
-    const auto [factor, error] = valueAndErrorTexts(r.gaugeFactor, fit.slopeStandardError);
-    return tr("<b>%1</b><br>Effective gauge factor <b>%2 ± %3</b> (standard error); nominal %4, a difference of "
-              "%5 %.<br>Direct force calibration: %6 counts per newton over a zero of %7 counts (σ %8).<br>R² = %9, "
-              "residual σ %10 × 10⁻⁶ ΔR/R, %11 points with the zero.")
+    const auto [factor, error] = valueAndErrorTexts(r.gaugeFactor, r.gaugeFactorUncertainty);
+    // The ± is widened by the Birge ratio when the points scatter more than
+    // their noise: say so, since it points at the loads, not the gauge.
+    const QString scatter =
+        fit.birgeRatio > 1.5
+            ? tr("<br>The points scatter %1× as much as their noise allows (a load not settled, a swinging weight or "
+                 "a wrong mass?): the ± is widened by that factor; retake the point farthest off the line.")
+                  .arg(fixedText(fit.birgeRatio, 1))
+            : QString();
+    return tr("<b>%1</b><br>Effective gauge factor <b>%2 ± %3</b> (standard uncertainty, k = 1, from the readings' "
+              "noise and the points' scatter); nominal %4, a difference of %5 %.<br>Direct force calibration: %6 "
+              "counts per newton over a zero of %7 counts (σ %8).<br>R² = %9, residual σ %10 × 10⁻⁶ ΔR/R, %11 points "
+              "with the zero.%12")
         .arg(QString::fromStdString(sensorName()).toHtmlEscaped(), factor, error, compactText(r.nominalGaugeFactor, 4),
              fixedText(100.0 * r.deviationFromNominal, 2), significant(r.countsPerNewton, 6),
              significant(r.zeroCounts, 6), significant(zero()->sigma, 3), fixedText(fit.rSquared, 6))
         .arg(significant(fit.residualStandardDeviation * 1e6, 3))
-        .arg(fit.points);
+        .arg(fit.points)
+        .arg(scatter);
 }
 
 void GaugeFactorWizard::resultShown()
@@ -333,15 +344,13 @@ core::calibration::CalibrationRecord GaugeFactorWizard::record() const
 {
     core::calibration::CalibrationRecord record = m_result->record;
     const core::straingauge::StrainGaugeChain c = *chain();
-    const std::vector<std::pair<std::string, double>> setup{
-        {"gauge_factor_standard_error", m_result->strainFit.slopeStandardError},
-        {"zero_sigma_counts", zero()->sigma},
-        {"bridge_active_gauges", activeGauges(c.bridge().type)},
-        {"excitation_v", c.bridge().excitation_v},
-        {"amplifier_gain", c.adc().gain},
-        {"adc_bits", static_cast<double>(c.adc().bits)},
-        {"adc_reference_v", c.adc().reference_v},
-        {"adc_bipolar", c.adc().bipolar ? 1.0 : 0.0}};
+    const std::vector<std::pair<std::string, double>> setup{{"zero_sigma_counts", zero()->sigma},
+                                                            {"bridge_active_gauges", activeGauges(c.bridge().type)},
+                                                            {"excitation_v", c.bridge().excitation_v},
+                                                            {"amplifier_gain", c.adc().gain},
+                                                            {"adc_bits", static_cast<double>(c.adc().bits)},
+                                                            {"adc_reference_v", c.adc().reference_v},
+                                                            {"adc_bipolar", c.adc().bipolar ? 1.0 : 0.0}};
     record.values.insert(record.values.end(), setup.begin(), setup.end());
     return record;
 }

@@ -44,6 +44,13 @@ void StabilityIndicator::refresh()
         return;
     }
     const auto& w = m_watch->latest();
+    if (m_watch->isAveraging()) {
+        // The first stable window still held the swing's tail: the reading
+        // is the fresh window after it.
+        setText(dot("#2e9e44") +
+                tr("Stable; averaging a fresh %1 s window for the reading…").arg(typedText(settings.window_s)));
+        return;
+    }
     if (!w) {
         setText(dot("#9e9e9e") + tr("Collecting a %1 s window…").arg(typedText(settings.window_s)));
         return;

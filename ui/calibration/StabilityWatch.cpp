@@ -27,18 +27,20 @@ void StabilityWatch::setInput(std::shared_ptr<const core::LiveBuffer> buffer, st
 
 void StabilityWatch::setSettings(const core::calibration::StabilitySettings& settings)
 {
-    m_monitor = core::calibration::StabilityMonitor(settings);
+    const bool armed = isArmed();
+    m_capture = core::calibration::SettledCapture(settings);
     m_settings = settings;
+    if (armed) m_capture.arm();  // new limits, the same wait: judged on fresh samples
     restart();
 }
 
 void StabilityWatch::arm()
 {
-    restart();
+    m_capture.arm();
+    emit updated();
     // Samples still waiting in the buffer were measured before the load was
     // placed: a window of them would be the old load's.
     if (m_buffer) m_cursor.next = std::max(m_cursor.next, m_buffer->samplesWritten());
-    m_armed = true;
 }
 
 bool StabilityWatch::receiving() const
@@ -48,8 +50,7 @@ bool StabilityWatch::receiving() const
 
 void StabilityWatch::restart()
 {
-    m_monitor.reset();
-    m_latest.reset();
+    m_capture.restart();
     emit updated();
 }
 
@@ -62,16 +63,12 @@ void StabilityWatch::poll()
     }
     m_lastSample.start();
     // A window must be contiguous: samples the reader lost break it.
-    if (m_cursor.overrun != overrun) m_monitor.reset();
+    if (m_cursor.overrun != overrun) m_capture.restart();
     const auto& values = m_chunk.values.at(m_channel);
-    for (std::size_t i = 0; i < m_chunk.sampleCount(); ++i) m_monitor.add(m_chunk.time_s[i], values[i]);
+    for (std::size_t i = 0; i < m_chunk.sampleCount(); ++i) m_capture.add(m_chunk.time_s[i], values[i]);
     // Judged once per poll (20 times a second), not per sample: a window
     // of a fast channel holds hundreds of samples, each judgement fits them all.
-    m_latest = m_monitor.statistics();
-    if (m_armed && m_latest && m_latest->stable) {
-        m_armed = false;
-        emit captured(*m_latest);
-    }
+    if (const auto kept = m_capture.judge()) emit captured(*kept);
     emit updated();
 }
 

@@ -1,13 +1,14 @@
 // Watches one live channel for a calibration step: new samples go into a
-// core StabilityMonitor, whose window is judged each time samples arrive
+// core SettledCapture, whose window is judged each time samples arrive
 // (20 times a second), so the wizard can show whether the signal has
-// settled and, once armed, take the first window found stable that lies
-// wholly after the moment it was armed (after the load was placed), never
-// one that still holds the swing of the previous load.
+// settled and, once armed, take a reading by the capture's rule: of
+// samples wholly after the moment it was armed (after the load was
+// placed), a stable window, then a fresh stable window after it, which is
+// the one kept (the first still holds the tail of the swing).
 #pragma once
 
 #include "core/LiveBuffer.h"
-#include "core/calibration/StabilityMonitor.h"
+#include "core/calibration/SettledCapture.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -33,11 +34,13 @@ public:
     // The next stable window of samples that arrive after this call is
     // captured (once); samples not yet read are skipped.
     void arm();
-    void disarm() { m_armed = false; }
-    bool isArmed() const { return m_armed; }
+    void disarm() { m_capture.disarm(); }
+    bool isArmed() const { return m_capture.phase() != core::calibration::SettledCapture::Phase::Watching; }
+    // Armed and stable once: the window being filled is the one kept.
+    bool isAveraging() const { return m_capture.phase() == core::calibration::SettledCapture::Phase::Averaging; }
 
     // The statistics of the newest full window; none while one fills.
-    const std::optional<core::calibration::WindowStatistics>& latest() const { return m_latest; }
+    const std::optional<core::calibration::WindowStatistics>& latest() const { return m_capture.latest(); }
     // Whether samples arrived within the last second.
     bool receiving() const;
 
@@ -54,9 +57,7 @@ private:
     core::LiveCursor m_cursor;
     core::LiveChunk m_chunk;
     core::calibration::StabilitySettings m_settings{1.0, 0.0, 0.0};
-    core::calibration::StabilityMonitor m_monitor{m_settings};
-    std::optional<core::calibration::WindowStatistics> m_latest;
-    bool m_armed = false;
+    core::calibration::SettledCapture m_capture{m_settings};
     QTimer m_timer;
     QElapsedTimer m_lastSample;
 };

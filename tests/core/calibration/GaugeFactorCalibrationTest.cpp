@@ -33,7 +33,7 @@ TEST(GaugeFactorCalibration, RecoversTheTrueFactorFromNoisyLoads)
     // One step by tip deflection: 5 mm on a 60 N/m beam is 0.3 N.
     loads.push_back({0.0, 0.005, truth.countsForStrain(0.3 * 0.01, zero) + noise(random)});
 
-    const auto result = calibrateGaugeFactor(beam, nominal, zero, loads, "low beam", "tester");
+    const auto result = calibrateGaugeFactor(beam, nominal, {zero}, loads, "low beam", "tester");
     EXPECT_NEAR(result.gaugeFactor, 2.13, 0.005 * 2.13);
     EXPECT_NEAR(result.deviationFromNominal, 0.065, 0.006);
     EXPECT_GT(result.strainFit.rSquared, 0.9999);
@@ -55,8 +55,8 @@ TEST(GaugeFactorCalibration, RefusesTooFewOrAmbiguousLoads)
 {
     const sensors::CantileverBeam beam({0.05, 0.01, 0.001, 3e9});
     const straingauge::StrainGaugeChain chain({}, {});
-    EXPECT_THROW(calibrateGaugeFactor(beam, chain, 0.0, {{0.1, 0.0, 100.0}}, "b", "o"), std::invalid_argument);
-    EXPECT_THROW(calibrateGaugeFactor(beam, chain, 0.0, {{0.1, 0.001, 100.0}, {0.2, 0.0, 200.0}}, "b", "o"),
+    EXPECT_THROW(calibrateGaugeFactor(beam, chain, {}, {{0.1, 0.0, 100.0}}, "b", "o"), std::invalid_argument);
+    EXPECT_THROW(calibrateGaugeFactor(beam, chain, {}, {{0.1, 0.001, 100.0}, {0.2, 0.0, 200.0}}, "b", "o"),
                  std::invalid_argument);
 }
 

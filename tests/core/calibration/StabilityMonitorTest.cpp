@@ -78,3 +78,21 @@ TEST(StabilityMonitor, AddingInABatchThenJudgingEqualsPushingEachSample)
     EXPECT_EQ(judged->count, last->count);
     EXPECT_FALSE(StabilityMonitor(kSettings).statistics());
 }
+
+TEST(StabilityMonitor, TheMeansStandardErrorIsSigmaOverRootNWidenedForCorrelatedSamples)
+{
+    // Independent samples: σ/√n, 0.005/√100 = 0.0005, within its own scatter.
+    std::mt19937 random(3);
+    std::normal_distribution<double> noise(0.0, 0.005);
+    std::vector<double> white(4000);
+    for (double& x : white) x = noise(random);
+    EXPECT_NEAR(meanStandardError(white), 0.005 / std::sqrt(4000.0), 0.05 * 0.005 / std::sqrt(4000.0));
+    // AR(1) with ρ = 0.8: the mean's variance is σ²/n·(1+ρ)/(1−ρ), 9 times
+    // that of as many independent samples.
+    std::vector<double> filtered(white.size());
+    double state = 0.0;
+    for (std::size_t i = 0; i < white.size(); ++i) filtered[i] = state = 0.8 * state + white[i];
+    const double sigma = 0.005 / std::sqrt(1.0 - 0.64);
+    EXPECT_NEAR(meanStandardError(filtered), 3.0 * sigma / std::sqrt(4000.0), 0.15 * 3.0 * sigma / std::sqrt(4000.0));
+    EXPECT_EQ(meanStandardError(std::vector<double>{1.0, 2.0}), 0.0);
+}
