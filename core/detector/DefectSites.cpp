@@ -113,20 +113,31 @@ private:
         for (const std::size_t i : runs) m_places.partOf[i] = nearestCrossing(i);
     }
 
-    // A short run against the direction of the crossing nearest to it is
-    // the detector's flicker, not a crossing; a short one along it is (a
-    // fast crossing is short).
+    // A short run against the direction of the crossing nearest to it, and
+    // within that crossing's echo (kEchoReach of its lag, the detector's
+    // memory there), is the detector's flicker, not a crossing. A short one
+    // along it is a crossing (a fast crossing is short), and so is one beyond
+    // the echo: a weak crossing of the other direction (a dent near another,
+    // or near the stroke's end) is short too, and folding it would merge
+    // strokes.
     void foldShortRuns()
     {
         std::vector<double> durations;
         for (const auto& e : m_events) durations.push_back(e.end_s - e.start_s);
         const double typical = median(durations);
         const auto isShort = [&](std::size_t i) { return durations[i] < kShortRunFraction * typical; };
+        const auto withinEcho = [&](std::size_t run, std::size_t crossing) {
+            const DefectEvent& r = m_events[run];
+            const DefectEvent& c = m_events[crossing];
+            const double gap_s = std::max({0.0, r.start_s - c.end_s, c.start_s - r.end_s});
+            return gap_s <= kEchoReach * c.peakLag_s;
+        };
         std::vector<std::size_t> flicker;
         for (std::size_t i = 0; i < m_events.size(); ++i) {
             if (!isShort(i)) continue;
             const auto full = nearest(i, [&](std::size_t j) { return !isShort(j); });
-            if (full && m_events[*full].direction != m_events[i].direction) flicker.push_back(i);
+            if (full && m_events[*full].direction != m_events[i].direction && withinEcho(i, *full))
+                flicker.push_back(i);
         }
         fold(flicker);
     }
@@ -171,6 +182,20 @@ private:
         std::vector<double> strokes;
         for (std::size_t k = 1; k < reversals.size(); ++k) strokes.push_back(reversals[k] - reversals[k - 1]);
         const double typicalStroke_s = median(strokes);
+        // A stroke much longer than the typical one hides strokes in which
+        // no crossing was seen (a reversal is only told from a change of
+        // direction): it spans about L/T of them. firstStroke[k] numbers the
+        // strokes as the probe made them, for the stroke between reversals
+        // k − 1 and k (k = 0 before the first).
+        const auto hiddenSpan = [&](std::size_t k) -> std::size_t {
+            if (k == 0 || k >= reversals.size()) return 1;
+            const double ratio = strokes[k - 1] / typicalStroke_s;
+            // An odd number: it starts and ends going the same way.
+            return ratio > kLongStrokeFactor ? 2 * static_cast<std::size_t>(std::lround((ratio - 1.0) / 2.0)) + 1 : 1;
+        };
+        std::vector<std::size_t> firstStroke{0};
+        for (std::size_t k = 1; k <= reversals.size(); ++k)
+            firstStroke.push_back(firstStroke.back() + hiddenSpan(k - 1));
 
         struct Phased {
             std::size_t event;
@@ -186,10 +211,24 @@ private:
             const std::optional<double> behind =
                 next == reversals.begin() ? std::nullopt : std::optional<double>(t_s - *std::prev(next));
             const std::optional<double> ahead = next == reversals.end() ? std::nullopt : std::optional(*next - t_s);
-            const double stroke_s = behind && ahead ? *behind + *ahead : typicalStroke_s;
-            const double tau_s = behind.value_or(stroke_s - ahead.value_or(0.0));
+            const auto k = static_cast<std::size_t>(next - reversals.begin());
+            double stroke_s = behind && ahead ? *behind + *ahead : typicalStroke_s;
+            double tau_s = behind.value_or(stroke_s - ahead.value_or(0.0));
+            std::size_t made = firstStroke[k];
+            if (const std::size_t span = hiddenSpan(k); span > 1) {
+                // The strokes it spans alternate in direction, starting with
+                // its crossings' (the first after a reversal): a crossing lies
+                // in one of its own direction, or cannot be placed. (Such a
+                // stroke lies between two reversals: both are known.)
+                const double fromStart_s = behind.value_or(0.0);
+                stroke_s = strokes[k - 1] / static_cast<double>(span);
+                const auto j = std::min(span - 1, static_cast<std::size_t>(fromStart_s / stroke_s));
+                if (j % 2 != 0) continue;
+                tau_s = fromStart_s - static_cast<double>(j) * stroke_s;
+                made = firstStroke[k] + j;
+            }
             if (!(tau_s > 0.0 && tau_s < stroke_s)) continue;  // beyond the typical stroke: cannot be placed
-            m_places.stroke[i] = static_cast<std::size_t>(next - reversals.begin());
+            m_places.stroke[i] = made;
             phased.push_back({i, tau_s, stroke_s, std::numbers::pi * tau_s / stroke_s, *speed});
         }
         if (phased.empty()) {
@@ -240,6 +279,30 @@ private:
                              ? "scan speed, harmonic strokes"
                              : "scan speed, harmonic strokes assumed (every crossing at one phase: the speed "
                                "profile is not known)";
+        if (crossingsDifferByDirection(phased.size()))
+            m_places.model += "; fewer crossings seen one way than the other (the detector missed some): a "
+                              "reversal between crossings of different defects is placed by their speeds "
+                              "alone, and places may be off by up to 20 mm";
+    }
+
+    // Whether strokes one way typically hold a different number of
+    // crossings than strokes the other way: the detector missed a defect in
+    // one direction, so some reversal lies between crossings of two
+    // different defects (measured on the simulator: their places then
+    // scatter by 10–20 mm and can make a site of their own).
+    bool crossingsDifferByDirection(std::size_t placed) const
+    {
+        std::map<std::size_t, std::pair<int, std::size_t>> strokes;  // stroke → (direction, crossings)
+        for (std::size_t i = 0; i < m_events.size() && placed > 0; ++i)
+            if (m_places.stroke[i]) {
+                auto& [direction, count] = strokes[*m_places.stroke[i]];
+                direction = m_events[i].direction;
+                ++count;
+            }
+        std::vector<double> forward, backward;
+        for (const auto& [stroke, entry] : strokes)
+            (entry.first > 0 ? forward : backward).push_back(static_cast<double>(entry.second));
+        return !forward.empty() && !backward.empty() && median(forward) != median(backward);
     }
 
     std::span<const DefectEvent> m_events;

@@ -6,10 +6,13 @@
 // Which events are crossings: the detector also gives short opposite runs
 // (a few samples, between two events or near a reversal). An event much
 // shorter than the scan's typical event (kShortRunFraction of the median)
-// whose direction is against the nearest full event's makes no reversal
-// and is no crossing of its own: it is part of the crossing nearest in time
+// whose direction is against the nearest full event's, and which lies
+// within that event's echo (kEchoReach of its lag), makes no reversal and
+// is no crossing of its own: it is part of the crossing nearest in time
 // (DefectSite::parts). A short event along its neighbour's direction is a
-// crossing (a fast one is short).
+// crossing (a fast one is short), and so is one beyond the echo: a weak
+// crossing (on the simulator every short run is one, in the direction the
+// probe moves).
 //
 // Reversals: between two crossings of opposite direction. A stroke (from
 // one reversal to the next) much shorter than the scan's median
@@ -19,7 +22,10 @@
 //
 // Where: by the phase of the crossing within its stroke, φ = π·τ/T (τ from
 // the reversal behind, T the stroke's duration; the median stroke at either
-// end of the scan), and one stroke shape for the whole scan:
+// end of the scan; a stroke longer than kLongStrokeFactor typical ones
+// hides strokes where nothing was detected, and is split into the odd
+// number of strokes nearest its length), and one stroke shape for the
+// whole scan:
 //  - harmonic (a hand or crank): x = −d·A·cos φ, with the half-stroke A the
 //    median over crossings of v/(ω·sin φ), ω = π/T (from x = −A·cos ωτ,
 //    v = A·ω·sin ωτ), v the detector's speed (spacing / best lag);
@@ -58,7 +64,13 @@
 namespace tactiscope::core::detector {
 
 inline constexpr double kShortRunFraction = 0.35;
+// How far after (or before) a crossing, in its own lags, the detector's
+// memory (λ = c) can still give a run: e⁻³ of its weight is left there.
+inline constexpr double kEchoReach = 3.0;
 inline constexpr double kMinStrokeFraction = 0.4;
+// A stroke longer than this many typical ones hides strokes without a
+// crossing seen (next: 3, a stroke each way with nothing detected).
+inline constexpr double kLongStrokeFactor = 1.75;
 // How far apart the crossings' sin φ must lie for the stroke shape to be told.
 inline constexpr double kMinSineSpread = 0.04;
 inline constexpr double kSiteReach_m = 0.015;
@@ -68,8 +80,9 @@ inline constexpr std::size_t kMinPasses = 3;
 
 // Where each event was placed, and why some were not.
 struct CrossingPlaces {
-    std::vector<std::optional<double>> position_m;   // from the stroke's centre, + towards where A leads
-    std::vector<std::optional<std::size_t>> stroke;  // the stroke (0, 1, …) each placed crossing lies in
+    std::vector<std::optional<double>> position_m;  // from the stroke's centre, + towards where A leads
+    std::vector<std::optional<std::size_t>>
+        stroke;  // the stroke (0, 1, …, hidden ones counted) of each placed crossing
     std::vector<std::optional<std::size_t>> partOf;  // a short or implausible run: the crossing it belongs to
     std::optional<double> halfStroke_m;              // the stroke's half-length, when placed
     std::string model;                               // how the crossings were placed, for people

@@ -212,3 +212,61 @@ TEST(DefectSites, EventsWithoutSpeedAreUnplacedButStillGrouped)
     for (const auto& site : grouping.sites) EXPECT_FALSE(site.position_m);
     EXPECT_THROW(tactiscope::core::detector::groupSites(events, {}), std::invalid_argument);
 }
+
+// A dent near the stroke's end at 1 Hz, whose backward crossings the
+// detector sees only as short runs (4 ms where the forward ones last
+// 100 ms): they are crossings, a third of a second from the forward ones,
+// far beyond any echo of them. Folding them into the forward crossings
+// merged strokes and placed that dent half a metre away.
+TEST(DefectSites, AWeakCrossingBeyondTheDetectorsEchoIsACrossing)
+{
+    auto events = crossings(harmonic(1.0), {-0.060}, 20.0);
+    for (auto& event : events)
+        if (event.direction < 0) {
+            const double middle = 0.5 * (event.start_s + event.end_s);
+            event.start_s = middle - 0.002;
+            event.end_s = middle + 0.002;
+        }
+    expectSitesAt(events, {-0.060}, 0.006, 0.1);
+    const auto site = scanSites(events).sites.front();
+    EXPECT_EQ(site.crossings.size(), events.size());
+    EXPECT_TRUE(site.parts.empty());
+}
+
+// The detector misses a dent in a stroke now and then: with nothing seen
+// in a backward stroke, two forward crossings lie in one "stroke" three
+// strokes long. It is split into three, each crossing placed in its own,
+// so the site keeps its place and every crossing.
+TEST(DefectSites, AStrokeWithNothingSeenHidesItsReversals)
+{
+    auto events = crossings(harmonic(0.5), {0.030}, 30.0);
+    ASSERT_EQ(events.size(), 30u);
+    for (const std::size_t missed : {21u, 13u, 5u}) {
+        ASSERT_LT(events[missed].direction, 0);
+        events.erase(events.begin() + static_cast<std::ptrdiff_t>(missed));
+    }
+    expectSitesAt(events, {0.030}, 0.006, 0.1);
+    const auto places = placeCrossings(events);
+    for (std::size_t i = 0; i < events.size(); ++i) EXPECT_TRUE(places.position_m[i]) << "crossing " << i;
+    EXPECT_EQ(places.model.find("fewer crossings"), std::string::npos) << places.model;
+}
+
+// A dent the detector never sees backwards, beside one it sees both ways:
+// the reversal at that end lies between crossings of the two dents and is
+// placed by their speeds alone. The method says so: places may be off.
+TEST(DefectSites, CrossingsMissedOneWaySaySoInTheMethod)
+{
+    auto events = crossings(harmonic(0.5), {-0.070, 0.0}, 20.0);
+    EXPECT_EQ(placeCrossings(events).model, "scan speed, harmonic strokes");
+    std::erase_if(events, [](const DefectEvent& e) {
+        const double middle = 0.5 * (e.start_s + e.end_s);
+        return e.direction < 0 && std::sin(std::numbers::pi * middle) < -0.5;  // the −70 mm dent, falling
+    });
+    const auto grouping = scanSites(events);
+    EXPECT_NE(grouping.method.find("fewer crossings seen one way than the other"), std::string::npos)
+        << grouping.method;
+    for (const auto& x : placeCrossings(events).position_m)
+        if (x) {
+            EXPECT_LE(std::abs(*x), 0.1 * 1.02);
+        }
+}
