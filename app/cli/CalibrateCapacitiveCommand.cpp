@@ -123,6 +123,9 @@ void writeJson(const calibration::CapacitiveCalibrationResult& result, const cal
     if (steps.finalShift_f) json.key("final_baseline_shift_pf").value(*steps.finalShift_f * 1e12);
     json.key("points").value(static_cast<long long>(result.forceFit->points));
     json.key("steps_unsettled").value(static_cast<long long>(steps.unsettled));
+    json.key("cautions").beginArray();
+    for (const std::string& caution : result.cautions) json.value(caution);
+    json.endArray();
     json.key("steps").beginArray();
     for (const auto& step : steps.steps) {
         json.beginObject();
@@ -173,6 +176,7 @@ void writeText(const calibration::CapacitiveCalibrationResult& result, const cal
         << " unloading";
     if (steps.unsettled > 0) out << ", " << steps.unsettled << " never settled (left out)";
     out << '\n';
+    for (const std::string& caution : result.cautions) out << "caution: " << QString::fromStdString(caution) << '\n';
 }
 
 }  // namespace

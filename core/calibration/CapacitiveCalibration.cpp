@@ -99,6 +99,16 @@ CapacitiveCalibrationResult calibrateCapacitive(const CapacitiveCalibrationInput
         if (r.pressureSensitivity_per_pa)
             record.values.emplace_back("pressure_sensitivity_per_kpa", *r.pressureSensitivity_per_pa * 1e3);
         record.fit = *r.forceFit;
+        // The silicone still creeps when a step's window is taken: under a
+        // load placed it has not yet bent as far as it will, and after one
+        // removed not yet come back, so loading reads the slope low and
+        // unloading high. Only with both do they cancel.
+        if (std::ranges::none_of(forceDirection, [](const auto& step) { return !step.second; }))
+            r.cautions.push_back(
+                "loads only placed, never removed: the silicone's creep, unfinished at each step, reads the "
+                "sensitivity low by the part of the creep still to come (a bias the ±, the points' scatter, "
+                "does not include); take the weights off again one at a time for a creep-balanced slope and "
+                "the hysteresis");
     }
     if (displacement.size() >= 2) {
         r.displacementFit = fitLine(withZero(displacement), withZero(displacementDelta));

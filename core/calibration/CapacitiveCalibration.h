@@ -51,6 +51,9 @@ struct CapacitiveCalibrationResult {
     std::optional<double> detectionLimit_m;
     std::optional<double> relativeSensitivity_per_n;   // (ΔC/C0) per newton
     std::optional<double> pressureSensitivity_per_pa;  // (ΔC/C0) per pascal
+    // What the numbers above do not say, for people: e.g. loads only ever
+    // placed, so the silicone's unfinished creep biases the sensitivity.
+    std::vector<std::string> cautions;
     CalibrationRecord record;
 };
 
