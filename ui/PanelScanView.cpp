@@ -1,6 +1,8 @@
 // PanelScanView: parameter form → LiveDetectionSettings, events → table and alarm.
 #include "ui/PanelScanView.h"
 
+#include "core/detector/DefectSites.h"
+
 #include "ui/DisplayUnits.h"
 #include "ui/LivePlotWidget.h"
 #include "ui/NumberText.h"
@@ -111,9 +113,11 @@ PanelScanView::PanelScanView(QWidget* parent)
     m_events->setHorizontalHeaderLabels(
         {tr("Since connect (s)"), tr("Order"), tr("Peak R"), tr("Lag (ms)"), tr("mm/s")});
     m_events->verticalHeader()->hide();
-    m_events->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);              // fits without scrolling
-    m_events->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);  // "A then B" on one line
-    m_events->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);  // the clock's name
+    // Every cell on one line, whole: on a narrow screen the table scrolls
+    // sideways rather than break "0.864" over two lines or cut a header.
+    m_events->setWordWrap(false);
+    m_events->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_events->horizontalHeader()->setStretchLastSection(true);
     m_events->horizontalHeaderItem(4)->setToolTip(tr("Scan speed implied by the lag and the cantilever spacing"));
     m_events->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_events->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -228,6 +232,7 @@ void PanelScanView::showDefects(const std::vector<core::detector::DefectEvent>& 
                                 fixedText(e.peakLag_s * 1e3, 0),
                                 e.speed_m_per_s ? fixedText(*e.speed_m_per_s * 1e3, 0) : tr("—")};
         for (int c = 0; c < cells.size(); ++c) m_events->setItem(row, c, new QTableWidgetItem(cells[c]));
+        m_listed.push_back(e);
         raiseAlarm(e, e.start_s);
     }
     m_events->scrollToBottom();
@@ -242,15 +247,14 @@ void PanelScanView::showCount()
                                                            : tr("Seconds since the device connected: not recorded"));
     switch (m_clock) {
     case devices::session::LiveClock::Recording:
-        m_countLabel->setText(defectCount() == 0
-                                  ? tr("No defect on this panel yet — %1").arg(verdictText())
-                                  : tr("%1 on this panel — %2").arg(defectCountText(defectCount()), verdictText()));
+        m_countLabel->setText(defectCount() == 0 ? tr("No defect on this panel yet — %1").arg(verdictText())
+                                                 : tr("%1 on this panel — %2").arg(countText(), verdictText()));
         break;
     case devices::session::LiveClock::Recorded:
-        m_countLabel->setText(tr("%1 recorded on this panel — %2").arg(defectCountText(defectCount()), verdictText()));
+        m_countLabel->setText(tr("%1 recorded on this panel — %2").arg(countText(), verdictText()));
         break;
     case devices::session::LiveClock::SinceConnect:
-        m_countLabel->setText(tr("%1 since connect — not recorded").arg(defectCountText(defectCount())));
+        m_countLabel->setText(tr("%1 since connect — not recorded").arg(countText()));
         break;
     }
 }
@@ -272,6 +276,7 @@ void PanelScanView::calmAlarm()
 void PanelScanView::startPanel()
 {
     m_events->setRowCount(0);
+    m_listed.clear();
     showCount();
 }
 
@@ -280,9 +285,22 @@ int PanelScanView::defectCount() const
     return m_events->rowCount();  // one row per defect of this panel
 }
 
+std::size_t PanelScanView::siteCount() const
+{
+    return core::detector::scanSites(m_listed).sites.size();
+}
+
+QString PanelScanView::countText() const
+{
+    // Each crossing of a dent is an event; the sites are the dents.
+    return defectCount() == 0
+               ? defectCountText(0)
+               : tr("%1 at %2").arg(defectCountText(defectCount()), siteCountText(static_cast<int>(siteCount())));
+}
+
 QString PanelScanView::verdictText() const
 {
-    return wordText(core::automaticVerdict(static_cast<std::size_t>(defectCount())));
+    return wordText(core::automaticVerdict(siteCount()));  // as the stored verdict counts
 }
 
 }  // namespace tactiscope::ui

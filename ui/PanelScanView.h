@@ -47,7 +47,10 @@ public:
 
 private:
     void startPanel();
-    QString verdictText() const;  // the automatic verdict of the rows listed
+    // The rows listed are crossings; the verdict counts the sites they make.
+    std::size_t siteCount() const;
+    QString countText() const;  // "5 defects at 1 site"
+    QString verdictText() const;
     void showCount();
     void applySettings();
     void showSettings(const core::detector::LiveDetectionSettings& settings);
@@ -72,6 +75,7 @@ private:
     QLabel* m_alarm = nullptr;
     QLabel* m_countLabel = nullptr;
     QTableWidget* m_events = nullptr;
+    std::vector<core::detector::DefectEvent> m_listed;  // the table's rows
     QTimer m_alarmTimer;
     bool m_showing = false;  // showSettings() is filling the fields
 };

@@ -50,8 +50,10 @@ TEST(PanelScanView, DefectsAreListedStoredAndMatchTheCoreDetector)
     tactiscope::testing::saveScreenshotAtSize(window, QStringLiteral("panel-scan"), {1920, 1080});
     const int listed = table->rowCount();
     EXPECT_EQ(window.findChild<ui::PanelScanView*>()->defectCount(), listed);
-    EXPECT_TRUE(
-        child<QLabel>(*window.findChild<ui::PanelScanView*>(), "defectCountLabel")->text().contains("defects found"));
+    // Every row is a crossing; the simulator's one dent is one site.
+    const QString count = child<QLabel>(*window.findChild<ui::PanelScanView*>(), "defectCountLabel")->text();
+    EXPECT_TRUE(count.contains("defects found")) << count.toStdString();
+    EXPECT_TRUE(count.contains(QStringLiteral("defects at 1 site on this panel"))) << count.toStdString();
     window.stopRecording();
     auto* verdict = window.findChild<QDialog*>(QStringLiteral("verdictBox"));
     ASSERT_NE(verdict, nullptr);

@@ -34,8 +34,8 @@ CalibrationWizard::Words capacitiveWords()
                                         "capacitance is stable."),
             .loadsSubTitle =
                 QObject::tr("Place weights one at a time, then take them off again. Enter the total now on "
-                            "the beam and press Capture: the load is read from the first stable window "
-                            "after that."),
+                            "the beam and press Capture: once the capacitance is stable, the load is read "
+                            "from a fresh stable window after that."),
             .loadUnits = {{QObject::tr("mgf on the beam"), 0}, {QObject::tr("g on the beam"), 1}},
             .firstLoad = {30.0, 0},
             .plotX = {1e3, QObject::tr("mN"), QObject::tr("Force")},

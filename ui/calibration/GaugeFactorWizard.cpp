@@ -56,9 +56,9 @@ CalibrationWizard::Words gaugeWords()
                 },
             .zeroSubTitle = QObject::tr("Take every load off the beam and leave it still. The zero is taken as soon as "
                                         "the signal is stable."),
-            .loadsSubTitle = QObject::tr("Hang a known load on the tip, enter it and press Capture: the reading is the "
-                                         "mean of the first stable window after that. Several loads up to the working "
-                                         "range."),
+            .loadsSubTitle = QObject::tr("Hang a known load on the tip, enter it and press Capture: once the signal is "
+                                         "stable, the reading is the mean of a fresh stable window after that. Several "
+                                         "loads up to the working range."),
             .loadUnits = {{QObject::tr("g (mass on the tip)"), 0},
                           {QObject::tr("mgf (mass on the tip)"), 1},
                           {QObject::tr("mm (tip deflection)"), 2}},
