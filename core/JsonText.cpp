@@ -81,6 +81,10 @@ Json parse(std::string_view text, const std::string& source)
         const std::string where = finder.path();
         std::string why = e.what();
         if (const auto bracket = why.find("] "); bracket != std::string::npos) why.erase(0, bracket + 2);
+        // The parser quotes the bad token whole: a 9000-digit number, once.
+        constexpr std::size_t kMostQuoted = 120;
+        if (why.size() > kMostQuoted)
+            why = why.substr(0, kMostQuoted) + "… (" + std::to_string(why.size()) + " characters)";
         if (dynamic_cast<const nlohmann::json::parse_error*>(&e))
             throw JsonTextError(source + ": not valid JSON (" + (where.empty() ? "" : "at " + where + ": ") + why +
                                 ")");

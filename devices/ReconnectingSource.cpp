@@ -39,15 +39,29 @@ ReconnectingSource::ReconnectingSource(Opener opener, std::chrono::milliseconds 
 {
 }
 
+std::optional<std::string> ReconnectingSource::differenceFrom(const BlockSource& back) const
+{
+    // A device that names itself (INFO) must come back as the same model and
+    // serial number: another probe of the same kind on the port is not it.
+    const DeviceIdentity identity = back.identity();
+    if (!m_identity.serial.empty() && (identity.model != m_identity.model || identity.serial != m_identity.serial))
+        return "another device came back on the port (" + identity.model + " " + identity.serial + ", where " +
+               m_identity.model + " " + m_identity.serial +
+               " was): what came before is kept, nothing of it is mixed in; connect it as a new session";
+    if (back.channels() != m_channels || back.nominalSampleRate_hz() != m_rate_hz)
+        return "the device came back with other channels or another rate; reconnect it by hand";
+    return std::nullopt;
+}
+
 bool ReconnectingSource::tryReconnect()
 {
     m_state = DeviceState::Reconnecting;
     try {
         auto source = m_opener();
-        if (source->channels() != m_channels || source->nominalSampleRate_hz() != m_rate_hz) {
+        if (const auto other = differenceFrom(*source)) {
             // Another device, for the record: what came before is kept, and
             // nothing after is mixed into it.
-            m_error = "the device came back with other channels or another rate; reconnect it by hand";
+            m_error = *other;
             m_failedForGood = true;
             m_state = DeviceState::Lost;
             return false;

@@ -8,7 +8,9 @@
 // after a reconnection continue the stream: their time is the host's time
 // since the first connection, and their sample index jumps by the samples
 // the outage cost (time away × rate), so Acquisition counts them as lost and
-// a recording marks the gap.
+// a recording marks the gap. A device that comes back as another (another
+// model or serial number in its INFO, other channels or another rate) ends
+// the source for good, with the reason: nothing of it joins the session.
 #pragma once
 
 #include "devices/BlockSource.h"
@@ -58,6 +60,9 @@ public:
 
 private:
     bool tryReconnect();
+    // Why a device that came back is not this one (another model or serial
+    // number, other channels or rate); none when it is.
+    std::optional<std::string> differenceFrom(const BlockSource& back) const;
 
     void replaceSource(std::unique_ptr<BlockSource> source);
     std::vector<LinkNotice> takeCurrentNotices();

@@ -53,6 +53,7 @@ core::sensors::SensorProfile readProfile(const QString& path)
     const std::string source = QFileInfo(path).fileName().toStdString();
     if (!file.open(QIODevice::ReadOnly))
         throw core::sensors::ProfileError(source + ": " + file.errorString().toStdString());
+    core::sensors::refuseOversizedProfile(static_cast<std::uintmax_t>(file.size()), source);  // before reading it
     return core::sensors::parseSensorProfile(file.readAll().toStdString(), source);
 }
 

@@ -115,8 +115,7 @@ int runAnalyze(const QStringList& arguments)
         else
             printDetection(QStringLiteral("session %1").arg(*id), analysed, dt_s, lags, elapsed_s, events, options);
     } catch (const core::storage::StorageError& e) {
-        printError(toQString(e.what()));
-        return kExitUsage;  // the store named by --db cannot be read
+        return storageFailure(e);
     }
     return kExitOk;
 }

@@ -3,6 +3,7 @@
 
 #include "core/io/CsvColumns.h"
 #include "core/storage/Database.h"
+#include "core/storage/central/PgConnection.h"
 
 #include <QTextStream>
 
@@ -43,7 +44,16 @@ bool stopRequested()
 
 void printError(const QString& message)
 {
-    QTextStream(stderr) << "tactiscope-cli: " << message << '\n';
+    // A message may quote what was typed: never a connection's password.
+    QTextStream(stderr) << "tactiscope-cli: "
+                        << QString::fromStdString(core::storage::central::withoutPasswords(message.toStdString()))
+                        << '\n';
+}
+
+int storageFailure(const core::storage::StorageError& error, const QString& prefix)
+{
+    printError(prefix + QString::fromStdString(error.what()));
+    return dynamic_cast<const core::storage::StoreInputError*>(&error) ? kExitUsage : kExitFailure;
 }
 
 int usageError(const QString& message, const QString& usage)

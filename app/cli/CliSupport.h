@@ -4,6 +4,7 @@
 
 #include "core/Vocabulary.h"
 #include "core/modes/ChannelRoles.h"
+#include "core/storage/Database.h"
 #include "devices/PortSource.h"
 
 #include <QCommandLineParser>
@@ -23,6 +24,10 @@ constexpr int kExitUsage = 2;    // bad arguments or bad input data
 void printError(const QString& message);
 // Prints the error line, a blank line and `usage` on stderr; returns kExitUsage.
 int usageError(const QString& message, const QString& usage);
+
+// Prints a store's error and gives its exit code: kExitUsage when the store
+// is damaged (bad input), kExitFailure when it could not be reached or read.
+int storageFailure(const core::storage::StorageError& error, const QString& prefix = {});
 
 // Parses `arguments` (the subcommand's own, without the command name) with
 // `parser`, which gets a --help option added. Returns the exit code when the

@@ -84,12 +84,12 @@ int runImport(const QStringList& arguments)
             << result.channels.size() << (result.channels.size() == 1 ? " channel" : " channels") << " at "
             << QString::number(result.rate_hz, 'g', 12) << " Hz, " << result.lostSamples << " missing"
             << (result.usedSideFile ? ", metadata from the side file" : "") << '\n';
+        for (const std::string& note : result.notes) out << "note: " << QString::fromStdString(note) << '\n';
     } catch (const core::io::CsvError& e) {
         printError(toQString(e.what()));
         return kExitUsage;
     } catch (const core::storage::StorageError& e) {
-        printError(toQString(e.what()));
-        return kExitFailure;  // busy, disk full: nothing of the import was kept
+        return storageFailure(e);  // busy, disk full (1) or what cannot be stored (2): nothing of the import was kept
     }
     return kExitOk;
 }

@@ -91,7 +91,7 @@ int runReport(const QStringList& arguments)
                                 .arg(parser.value(QStringLiteral("session")), toQString(store->location())));
         data = core::report::gatherReport(*store, *id, request);
     } catch (const core::storage::StorageError& e) {
-        return badInput(QStringLiteral("report: %1").arg(toQString(e.what())));
+        return storageFailure(e, QStringLiteral("report: "));
     } catch (const std::invalid_argument& e) {
         return badInput(QStringLiteral("report: %1").arg(toQString(e.what())));
     }

@@ -5,6 +5,8 @@
 
 #include <QFileInfo>
 
+#include <iostream>
+
 namespace tactiscope::cli {
 
 bool storeArgumentExists(const QString& db)
@@ -15,21 +17,26 @@ bool storeArgumentExists(const QString& db)
 std::unique_ptr<core::storage::SessionSource> openStoreArgument(const QString& db,
                                                                 core::storage::Database::Access access)
 {
-    return core::storage::openSessionSource(db.toStdString(), access);
+    auto store = core::storage::openSessionSource(db.toStdString(), access);
+    if (const auto note = store->readNote()) std::cerr << "note: " << *note << '\n';
+    return store;
 }
 
 std::optional<std::int64_t> resolveSession(core::storage::SessionSource& store, const QString& text)
 {
+    std::optional<std::int64_t> id;
     if (text == QLatin1String("last")) {
         const auto sessions = store.sessions();
-        if (sessions.empty()) return std::nullopt;
-        return sessions.front().id;
+        if (!sessions.empty()) id = sessions.front().id;
+    } else if (text.size() == 36 && text.count(QLatin1Char('-')) == 4) {  // a uuid: 8-4-4-4-12 hex digits
+        id = store.sessionWithUuid(text.toStdString());
+    } else {
+        bool ok = false;
+        const qlonglong number = text.toLongLong(&ok);
+        if (ok && store.session(number)) id = number;
     }
-    // A uuid: 8-4-4-4-12 hexadecimal digits.
-    if (text.size() == 36 && text.count(QLatin1Char('-')) == 4) return store.sessionWithUuid(text.toStdString());
-    bool ok = false;
-    const qlonglong id = text.toLongLong(&ok);
-    if (!ok || !store.session(id)) return std::nullopt;
+    // A damaged session says so here, before a command sizes anything by it.
+    if (id) store.channels(*id);
     return id;
 }
 

@@ -169,8 +169,7 @@ int exportSession(SessionSource& store, std::int64_t id, const QString& format, 
                                                                     : core::storage::ExportFormat::Json,
                                      output.toStdString(), {}, computed.get());
     } catch (const core::storage::StorageError& e) {
-        printError(toQString(e.what()));
-        return kExitFailure;
+        return storageFailure(e);
     }
     return kExitOk;
 }
@@ -297,8 +296,7 @@ int runSessions(const QStringList& arguments)
         QTextStream(stdout) << "Deleted session " << *id << ".\n";
         return kExitOk;
     } catch (const StorageError& e) {
-        printError(QString::fromStdString(e.what()));
-        return kExitUsage;
+        return storageFailure(e);  // an unreachable server: 1, like every command; a damaged store: 2
     }
 }
 

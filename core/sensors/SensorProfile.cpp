@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -18,6 +19,14 @@ using Json = nlohmann::json;
 
 // Reads keys of one JSON object, remembering which were used so leftovers
 // can be reported as unknown.
+// A value as a message quotes it: at most 40 characters of it.
+std::string shortQuote(std::string_view value)
+{
+    constexpr std::size_t kMost = 40;
+    if (value.size() <= kMost) return std::string(value);
+    return std::string(value.substr(0, kMost)) + "… (" + std::to_string(value.size()) + " characters)";
+}
+
 class ObjectReader {
 public:
     ObjectReader(const Json& object, std::string source, std::string prefix)
@@ -53,7 +62,7 @@ public:
     {
         const Json& value = require(key);
         if (!value.is_number() || !(value.get<double>() > 0.0) || !std::isfinite(value.get<double>()))
-            fail(key, "must be a positive number, got " + value.dump());
+            fail(key, "must be a positive number, got " + shortQuote(value.dump()));
         return value.get<double>();
     }
 
@@ -77,7 +86,7 @@ public:
     void rejectUnknownKeys() const
     {
         for (const auto& [key, value] : m_object.items()) {
-            if (!m_used.count(key)) fail(key, "unknown key");
+            if (!m_used.count(key)) fail(shortQuote(key), "unknown key");
         }
     }
 
@@ -164,8 +173,16 @@ Json geometryJson(const CantileverGeometry& g)
 
 }  // namespace
 
+void refuseOversizedProfile(std::uintmax_t bytes, const std::string& source)
+{
+    if (bytes > kMostProfileBytes)
+        throw ProfileError(source + ": " + std::to_string(bytes) +
+                           " bytes, not a sensor profile (one holds a few dozen numbers and names, at most 1 MB)");
+}
+
 SensorProfile parseSensorProfile(std::string_view text, const std::string& source)
 {
+    refuseOversizedProfile(text.size(), source);
     Json json;
     try {
         json = parseJsonText(text, source);
@@ -175,6 +192,9 @@ SensorProfile parseSensorProfile(std::string_view text, const std::string& sourc
     ObjectReader reader(json, source, "");
     const std::string kind = reader.string("kind");
     const std::string name = reader.string("name");
+    if (name.size() > kMostProfileNameCharacters)
+        reader.fail("name", shortQuote(name) + " is longer than a name (at most " +
+                                std::to_string(kMostProfileNameCharacters) + " characters)");
     if (kind == "cantilever") {
         CantileverProfile profile{name, readGeometry(reader)};
         reader.rejectUnknownKeys();
@@ -197,11 +217,14 @@ SensorProfile parseSensorProfile(std::string_view text, const std::string& sourc
         reader.rejectUnknownKeys();
         return profile;
     }
-    reader.fail("kind", "'" + kind + "' is not a known sensor kind (cantilever, compliance_pair, capacitive_beam)");
+    reader.fail("kind",
+                "'" + shortQuote(kind) + "' is not a known sensor kind (cantilever, compliance_pair, capacitive_beam)");
 }
 
 SensorProfile loadSensorProfile(const std::string& path)
 {
+    std::error_code error;
+    if (const auto bytes = std::filesystem::file_size(path, error); !error) refuseOversizedProfile(bytes, path);
     std::ifstream file(path, std::ios::binary);
     if (!file) throw ProfileError(path + ": cannot open the file");
     std::ostringstream text;

@@ -22,6 +22,8 @@
 #include "core/sensors/CantileverBeam.h"
 #include "core/sensors/CapacitiveBeam.h"
 
+#include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -55,9 +57,20 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// `source` names the text in messages (usually the file name).
+// A profile holds a few dozen numbers and names: a larger text is refused
+// before it is parsed (a 32 MB array once kept the window from appearing).
+inline constexpr std::size_t kMostProfileBytes = 1 << 20;
+// A profile's name, as lists and reports show it.
+inline constexpr std::size_t kMostProfileNameCharacters = 200;
+
+// `source` names the text in messages (usually the file name). Throws
+// ProfileError; its message quotes at most a few dozen characters of a bad
+// value.
 SensorProfile parseSensorProfile(std::string_view json, const std::string& source);
+// Refuses a file larger than kMostProfileBytes without reading it.
 SensorProfile loadSensorProfile(const std::string& path);
+// The refusal of a profile text of `bytes` bytes, when it is too large.
+void refuseOversizedProfile(std::uintmax_t bytes, const std::string& source);
 
 // The profile as JSON with the keys above (for export and for storing with a
 // session).

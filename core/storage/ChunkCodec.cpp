@@ -51,8 +51,8 @@ void decodeChunkChannel(std::span<const std::uint8_t> blob, std::size_t channels
 {
     const std::size_t count = out.size();
     if (blob.size() != channels * samples * 4 || channel >= channels || first + count > samples)
-        throw StorageError("a sample chunk has " + std::to_string(blob.size()) + " bytes, not the " +
-                           std::to_string(channels * samples * 4) + " its header promises; the store is damaged");
+        throw StoreInputError("a sample chunk has " + std::to_string(blob.size()) + " bytes, not the " +
+                              std::to_string(channels * samples * 4) + " its header promises; the store is damaged");
     const std::uint8_t* in = blob.data() + (channel * samples + first) * 4;
     for (std::size_t s = 0; s < count; ++s, in += 4) out[s] = static_cast<double>(getBinary32(in));
 }

@@ -9,6 +9,7 @@
 #include "core/storage/Database.h"
 #include "core/storage/RecorderLock.h"
 #include "core/storage/SessionExport.h"
+#include "core/text/TextChecks.h"
 
 #include <nlohmann/json.hpp>
 
@@ -332,8 +333,15 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
         for (const auto& name : options.columns) dataColumns.push_back(reader.column(name));
     }
     if (dataColumns.empty()) throw CsvError("'" + path + "' has no data column besides the time");
+    // A header written by a program in Latin-1 ("µε" as 0xB5 …): read as
+    // Latin-1, since a store's text must be UTF-8 (it goes to the server).
+    bool latin1 = false;
+    for (const std::size_t c : dataColumns) latin1 = latin1 || text::textProblem(header[c]).has_value();
+    if (latin1)
+        result.notes.push_back("the header is not UTF-8: its names and units were read as Latin-1 (" +
+                               text::latin1ToUtf8(header[dataColumns.front()]) + ", …)");
     for (const std::size_t c : dataColumns) {
-        auto [name, unit] = io::splitColumnHeader(header[c]);
+        auto [name, unit] = io::splitColumnHeader(latin1 ? text::latin1ToUtf8(header[c]) : header[c]);
         // "[strain]" (as exported) and the unitless columns of a panel scan
         // are the cantilevers' strains, which are dimensionless.
         const bool strain = unit == "strain" || (unit.empty() && metadata.mode == Mode::PanelScan);

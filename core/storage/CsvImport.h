@@ -50,6 +50,8 @@ struct CsvImportResult {
     double rate_hz = 0.0;
     std::vector<ChannelDescriptor> channels;
     bool usedSideFile = false;
+    // What was read other than as written, for people: a Latin-1 header.
+    std::vector<std::string> notes;
 };
 
 // Imports `path` into `store` as a session, complete unless the side file

@@ -37,6 +37,34 @@ std::string immutableUri(const std::string& path)
     return uri + "?immutable=1";
 }
 
+// Whether the store has a write-ahead log with something in it: a station
+// that crashed, or was copied while recording, left its newest commits there.
+bool hasPendingLog(const std::string& path)
+{
+    std::error_code error;
+    const auto size = std::filesystem::file_size(path + "-wal", error);
+    return !error && size > 0;
+}
+
+// A private folder holding a copy of the store and its log, where SQLite
+// can make the shared memory a log needs. Throws StorageError.
+std::string copyWithLog(const std::string& path)
+{
+    std::string folder = (std::filesystem::temp_directory_path() / "tactiscope-store-XXXXXX").string();
+    if (::mkdtemp(folder.data()) == nullptr)
+        throw StorageError(path + ": cannot make a private copy to read its write-ahead log: " + std::strerror(errno));
+    const std::string copy = folder + "/store";
+    std::error_code error;
+    std::filesystem::copy_file(path, copy, error);
+    if (!error) std::filesystem::copy_file(path + "-wal", copy + "-wal", error);
+    if (error) {
+        std::filesystem::remove_all(folder, error);
+        throw StorageError(path + ": cannot make a private copy to read its write-ahead log (" + error.message() +
+                           "); copy the store with its -wal file to a writable disk");
+    }
+    return folder;
+}
+
 // SQLite's message for the last error, with what a user can do about the
 // ones recording meets: a full disk, a read-only file, an I/O error (with
 // the system's reason, e.g. "Read-only file system").
@@ -176,7 +204,8 @@ Database::Database(const std::string& path, Access access)
 {
     std::error_code error;
     if (std::filesystem::is_directory(path, error))  // else SQLite says "disk I/O error"
-        throw StorageError(path + " is a folder, not a session store; choose a store file (or a new file name) in it");
+        throw StoreInputError(path +
+                              " is a folder, not a session store; choose a store file (or a new file name) in it");
     const int flags = access == Access::ReadOnly ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
     // On read-only media SQLite cannot make the WAL's shared-memory file a
     // reader needs: nobody can be writing there, so the file is read as
@@ -185,15 +214,28 @@ Database::Database(const std::string& path, Access access)
     if (access == Access::ReadWrite && readOnlyMedia)
         throw StorageError(path + ": the store is on a read-only disk; it can be reviewed (opened read-only), not "
                                   "written; copy it to a writable disk to record into it");
-    const bool immutable = access == Access::ReadOnly && readOnlyMedia;
-    const std::string name = immutable ? immutableUri(path) : path;
-    const int code =
-        sqlite3_open_v2(name.c_str(), &m_db, flags | SQLITE_OPEN_NOMUTEX | (immutable ? SQLITE_OPEN_URI : 0), nullptr);
+    // Immutable ignores the write-ahead log, so a store with one (its newest
+    // sessions there) is read whole from a private copy instead: never a
+    // silent subset.
+    const bool logPending = access == Access::ReadOnly && readOnlyMedia && hasPendingLog(path);
+    if (logPending) {
+        m_copyFolder = copyWithLog(path);
+        m_note = path + " is on a read-only disk with sessions still in its write-ahead log (" + path +
+                 "-wal): read whole from a private copy";
+    }
+    const bool immutable = access == Access::ReadOnly && readOnlyMedia && !logPending;
+    const std::string name = logPending ? m_copyFolder + "/store" : immutable ? immutableUri(path) : path;
+    const int code = sqlite3_open_v2(name.c_str(), &m_db,
+                                     (logPending ? SQLITE_OPEN_READWRITE : flags) | SQLITE_OPEN_NOMUTEX |
+                                         (immutable ? SQLITE_OPEN_URI : 0),
+                                     nullptr);
     if (code != SQLITE_OK) {
         const std::string message = m_db ? sqlite3_errmsg(m_db) : sqlite3_errstr(code);
         sqlite3_close(m_db);
+        removeCopy();
         throw StorageError(path + ": " + message);
     }
+    if (logPending) exec("PRAGMA query_only = 1");  // a copy, but opened to be read
     sqlite3_extended_result_codes(m_db, 1);
     // Another connection (the recorder, a second reader) may hold the write
     // lock briefly; wait for it rather than failing.
@@ -206,6 +248,14 @@ Database::Database(const std::string& path, Access access)
 Database::~Database()
 {
     sqlite3_close(m_db);
+    removeCopy();
+}
+
+void Database::removeCopy()
+{
+    if (m_copyFolder.empty()) return;
+    std::error_code ignored;
+    std::filesystem::remove_all(m_copyFolder, ignored);
 }
 
 void Database::exec(std::string_view sql)

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -17,6 +18,15 @@ namespace tactiscope::core::storage {
 class StorageError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
+};
+
+// Bad input, where a plain StorageError is a failure to reach, read or
+// write: the file given is not a store, the store's own content contradicts
+// itself (a count, an index, a page), or what was given to store cannot be
+// (text that is not UTF-8, a uuid that is not one).
+class StoreInputError : public StorageError {
+public:
+    using StorageError::StorageError;
 };
 
 class Statement {
@@ -72,11 +82,19 @@ public:
     bool inTransaction() const;
     const std::string& path() const { return m_path; }
     Access access() const { return m_access; }
+    // What a reader should be told about how the store was read (e.g. from
+    // a private copy, a read-only disk's write-ahead log applied); none
+    // when it was read as it is.
+    const std::optional<std::string>& note() const { return m_note; }
 
 private:
+    void removeCopy();
+
     sqlite3* m_db = nullptr;
     std::string m_path;
     Access m_access;
+    std::string m_copyFolder;  // a private copy read instead of the store, removed on close
+    std::optional<std::string> m_note;
 };
 
 // Runs a scope in one transaction: committed by commit(), rolled back when

@@ -24,8 +24,8 @@ std::vector<std::uint8_t> encodeBuckets(std::span<const MinMax> buckets)
 std::vector<MinMax> decodeBuckets(std::span<const std::uint8_t> bytes, std::size_t count)
 {
     if (bytes.size() != count * 8)
-        throw StorageError("a min/max row has " + std::to_string(bytes.size()) + " bytes, not the " +
-                           std::to_string(count * 8) + " its header promises; the store is damaged");
+        throw StoreInputError("a min/max row has " + std::to_string(bytes.size()) + " bytes, not the " +
+                              std::to_string(count * 8) + " its header promises; the store is damaged");
     std::vector<MinMax> buckets(count);
     const std::uint8_t* in = bytes.data();
     for (MinMax& bucket : buckets) {

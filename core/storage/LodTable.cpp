@@ -101,9 +101,9 @@ const std::vector<MinMax>& LodTable::row(int level, std::uint64_t rowFirstBucket
     if (!m_rows.contains(key)) {
         prefetch(level, rowFirstBucket, rowFirstBucket + 1);
         if (!m_rows.contains(key))
-            throw StorageError("the min/max row at level " + std::to_string(level) + ", bucket " +
-                               std::to_string(rowFirstBucket) + " of session " + std::to_string(m_session) +
-                               " is missing; the store is damaged");
+            throw StoreInputError("the min/max row at level " + std::to_string(level) + ", bucket " +
+                                  std::to_string(rowFirstBucket) + " of session " + std::to_string(m_session) +
+                                  " is missing; the store is damaged");
     }
     return m_rows[key];
 }
@@ -116,8 +116,8 @@ MinMax LodTable::buckets(int level, std::uint64_t first, std::uint64_t end)
         const auto& buckets = row(level, rowFirst);
         const std::uint64_t rowEnd = std::min(end, rowFirst + buckets.size());
         if (rowEnd <= b)
-            throw StorageError("a min/max row of session " + std::to_string(m_session) +
-                               " is shorter than the pyramid says; the store is damaged");
+            throw StoreInputError("a min/max row of session " + std::to_string(m_session) +
+                                  " is shorter than the pyramid says; the store is damaged");
         for (; b < rowEnd; ++b) result.add(buckets[static_cast<std::size_t>(b - rowFirst)]);
     }
     return result;
@@ -187,8 +187,8 @@ LodBuilder LodTable::builderAt(std::uint64_t sampleEnd)
         const std::uint64_t covered = stored * bucketSize(level);
         const std::uint64_t below = level == 0 ? sampleEnd : storedBuckets(level - 1) * bucketSize(level - 1);
         if (below < covered || below - covered >= bucketSize(level))
-            throw StorageError("the min/max pyramid of session " + std::to_string(m_session) +
-                               " does not match its samples; the store is damaged");
+            throw StoreInputError("the min/max pyramid of session " + std::to_string(m_session) +
+                                  " does not match its samples; the store is damaged");
         s.partial = range(covered, below, level - 1);
         s.partialSamples = below - covered;
     }

@@ -4,6 +4,8 @@
 // (compared by device and inode, not by name, so links and "./x" are
 // caught), written to a temporary beside it with every write and the close
 // checked, then renamed over the target. A full disk leaves no partial file.
+// The temporary is a new file of an unguessable name (mkstemp: O_EXCL, so
+// no existing file or link is ever opened through it).
 #pragma once
 
 #include <functional>
@@ -19,7 +21,8 @@ std::vector<std::string> storeFiles(const std::string& storePath);
 // Throws StorageError naming both when `output` is one of `inputs`.
 void refuseOverwriting(const std::string& output, const std::vector<std::string>& inputs);
 
-// Writes through `write` to PATH.partial, then renames it to `path`.
+// Writes through `write` to a new hidden temporary beside `path`
+// (".NAME.XXXXXX"), synced to the disk, then renames it to `path`.
 // Throws StorageError (the temporary removed) when any of it fails; an
 // exception from `write` itself removes the temporary and goes on.
 void writeAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);

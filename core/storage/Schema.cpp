@@ -251,13 +251,14 @@ int prepareSchema(Database& db, int targetVersion)
         count.step();
         tables = count.int64(0);
     } catch (const StorageError& e) {
-        throw StorageError(db.path() + " is not a Tactiscope session store (" + e.what() + "); it was left untouched");
+        throw StoreInputError(db.path() + " is not a Tactiscope session store (" + e.what() +
+                              "); it was left untouched");
     }
     const std::int64_t application = pragma(db, "application_id");
     const std::int64_t version = pragma(db, "user_version");
     if (tables > 0 && application != kApplicationId)
-        throw StorageError(db.path() + " is an SQLite file of another program, not a Tactiscope session store; " +
-                           "it was left untouched");
+        throw StoreInputError(db.path() + " is an SQLite file of another program, not a Tactiscope session store; " +
+                              "it was left untouched");
     if (version > kSchemaVersion && db.access() == Database::Access::ReadWrite)
         throw StorageError(db.path() + " was written by a newer Tactiscope (store version " + std::to_string(version) +
                            ", this build knows " + std::to_string(kSchemaVersion) +

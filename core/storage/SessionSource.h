@@ -98,6 +98,9 @@ public:
     // Throws StorageError saying the store is damaged and what to do,
     // before a store is written or first shown.
     virtual void refuseIfDamaged() = 0;
+    // What a reader should be told about how the store was read (see
+    // Database::note()); none when it was read as it is.
+    virtual std::optional<std::string> readNote() const { return std::nullopt; }
 
     // One consistent state of the store for as long as it lives, for a
     // reader going through a session while another connection writes.

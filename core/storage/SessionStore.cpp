@@ -6,6 +6,7 @@
 #include "core/storage/ChunkCodec.h"
 #include "core/storage/RecorderLock.h"
 #include "core/storage/Schema.h"
+#include "core/text/TextChecks.h"
 #include "core/text/UtcTime.h"
 
 #include <algorithm>
@@ -147,12 +148,48 @@ int SessionStore::markCrashedSessionsInterrupted()
     return m_db.changes();
 }
 
+namespace {
+
+// What a store holds is sent to the central store and read everywhere: its
+// text must be UTF-8 without NUL (a server refuses the one and cuts the
+// other), its uuid a uuid (one holding '"' once stopped every later sync).
+void refuseUnstorableText(const SessionMetadata& m, std::span<const ChannelDescriptor> channels,
+                          const SessionOrigin& origin)
+{
+    const auto check = [](std::string_view text, const std::string& what) {
+        if (const auto problem = text::textProblem(text))
+            throw StoreInputError("the session's " + what + " cannot be stored: " + *problem +
+                                  " (text must be UTF-8 without NUL); nothing was stored");
+    };
+    check(m.subject, "subject");
+    check(m.operatorName, "operator");
+    check(m.site, "site");
+    check(m.notes, "notes");
+    check(m.deviceModel, "device model");
+    check(m.deviceSerial, "device serial number");
+    check(m.deviceFirmware, "device firmware");
+    check(m.profileJson, "sensor profile");
+    check(m.calibrationsJson, "calibrations");
+    check(origin.startedUtc, "start time");
+    check(origin.appVersion, "app version");
+    for (const ChannelDescriptor& c : channels) {
+        check(c.name, "channel name");
+        check(c.unit, "channel unit '" + c.name + "'");
+    }
+    if (!origin.uuid.empty() && !text::isUuid(origin.uuid))
+        throw StoreInputError("the session's uuid '" + origin.uuid.substr(0, 40) +
+                              "' is not a uuid (8-4-4-4-12 hexadecimal digits); nothing was stored");
+}
+
+}  // namespace
+
 std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<const ChannelDescriptor> channels,
                                         double sampleRate_hz, const SessionOrigin& origin)
 {
     if (channels.empty()) throw StorageError("a session needs at least one channel");
     if (!(sampleRate_hz > 0.0) || !std::isfinite(sampleRate_hz))
         throw StorageError("a session needs a positive sample rate");
+    refuseUnstorableText(m, channels, origin);
     Transaction transaction(m_db);
     m_db.prepare("INSERT INTO sessions (uuid, mode, subject, operator, site, notes, device_model, device_serial, "
                  "device_firmware, profile_json, calibrations_json, started_utc, status, app_version) "
@@ -334,9 +371,9 @@ void SessionStore::refuseIfDamaged()
     if (const auto at = finding.find(kHeading); at != std::string::npos) finding.erase(at, kHeading.size());
     std::ranges::replace(finding, '\n', ' ');
     while (!finding.empty() && finding.front() == ' ') finding.erase(0, 1);
-    throw StorageError(m_db.path() + " is damaged (" + finding +
-                       "); nothing was written to it. Record into another store, and export what can still be read "
-                       "from this one");
+    throw StoreInputError(m_db.path() + " is damaged (" + finding +
+                          "); nothing was written to it. Record into another store, and export what can still be read "
+                          "from this one");
 }
 
 std::vector<SessionSummary> SessionStore::sessions(const SessionFilter& filter)
@@ -405,6 +442,7 @@ std::optional<std::int64_t> SessionStore::sessionWithUuid(const std::string& uui
 
 std::vector<StoredChannel> SessionStore::channels(std::int64_t session)
 {
+    m_layout.check(session);
     std::vector<StoredChannel> result;
     auto query = m_db.prepare(
         "SELECT name, unit, kind, sample_rate_hz, role FROM channels WHERE session_id = ? ORDER BY position");
@@ -418,6 +456,7 @@ std::vector<StoredChannel> SessionStore::channels(std::int64_t session)
 
 std::uint64_t SessionStore::sampleCount(std::int64_t session)
 {
+    m_layout.check(session);
     auto query = m_db.prepare("SELECT " + sampleEndSql("?1"));
     query.bind(1, session);
     return query.step() ? static_cast<std::uint64_t>(query.int64(0)) : 0;
@@ -425,6 +464,7 @@ std::uint64_t SessionStore::sampleCount(std::int64_t session)
 
 std::vector<SampleGap> SessionStore::gaps(std::int64_t session)
 {
+    m_layout.check(session);
     std::vector<SampleGap> result;
     auto query = m_db.prepare("SELECT first_index, count FROM gaps WHERE session_id = ? ORDER BY first_index");
     query.bind(1, session);
@@ -445,12 +485,12 @@ void SessionStore::checkSampleEnd(std::int64_t session, std::size_t channelCount
     last.bind(1, session);
     if (last.step() &&
         static_cast<std::uint64_t>(last.int64(1)) != static_cast<std::uint64_t>(last.int64(0)) * channelCount * 4)
-        throw StorageError("the last sample chunk of session " + std::to_string(session) + " says it holds " +
-                           std::to_string(last.int64(0)) + " samples but has " + std::to_string(last.int64(1)) +
-                           " bytes; the store is damaged");
+        throw StoreInputError("the last sample chunk of session " + std::to_string(session) + " says it holds " +
+                              std::to_string(last.int64(0)) + " samples but has " + std::to_string(last.int64(1)) +
+                              " bytes; the store is damaged");
     if (samples > kMostSamplesPerRead)
-        throw StorageError("session " + std::to_string(session) + " would need " + std::to_string(samples) +
-                           " samples read at once, more than a computer holds; the store is damaged");
+        throw StoreInputError("session " + std::to_string(session) + " would need " + std::to_string(samples) +
+                              " samples read at once, more than a computer holds; the store is damaged");
 }
 
 std::size_t SessionStore::readChannels(std::int64_t session, std::span<const std::size_t> channels,
@@ -494,6 +534,7 @@ std::size_t SessionStore::readChannels(std::int64_t session, std::span<const std
 
 void SessionStore::forEachChunk(std::int64_t session, const std::function<void(const RawChunk&)>& visit)
 {
+    m_layout.check(session);
     auto query = m_db.prepare(
         "SELECT first_index, first_time_s, count, samples FROM chunks WHERE session_id = ? ORDER BY first_index");
     query.bind(1, session);

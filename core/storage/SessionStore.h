@@ -4,6 +4,7 @@
 // thread. Writers and readers may share the file at the same time (WAL).
 #pragma once
 
+#include "core/storage/SessionLayout.h"
 #include "core/storage/SessionSource.h"
 
 #include <functional>
@@ -113,6 +114,7 @@ public:
     // the indexes' content), before a store is written or first shown:
     // throws StorageError saying the store is damaged and what to do.
     void refuseIfDamaged() override;
+    std::optional<std::string> readNote() const override { return m_db.note(); }
 
     Database& database() { return m_db; }
 
@@ -124,6 +126,7 @@ private:
     void showCrashedRecordingsInterrupted(std::span<SessionSummary> summaries);
 
     Database m_db;
+    SessionLayout m_layout{m_db};  // checked before any count read sizes anything
 };
 
 // The newest record of `kind` for `sensor` in the store at `path`, opened

@@ -25,8 +25,8 @@ StoredCalibration calibrationFrom(const Statement& row)
     try {
         return {row.int64(0), calibration::CalibrationRecord::fromJson(row.text(1))};
     } catch (const std::invalid_argument& e) {
-        throw StorageError("calibration " + std::to_string(row.int64(0)) + " cannot be read (" + e.what() +
-                           "); the store is damaged");
+        throw StoreInputError("calibration " + std::to_string(row.int64(0)) + " cannot be read (" + e.what() +
+                              "); the store is damaged");
     }
 }
 

@@ -6,6 +6,7 @@
 // an exact copy, an unreachable server exiting 1 with the station's store
 // untouched, a uuid with other samples refused, and a station unable to
 // delete or change another's session.
+#include "core/storage/SessionStore.h"
 #include "core/storage/central/PgConnection.h"
 #include "support/CliRunner.h"
 #include "support/FileBytes.h"
@@ -21,6 +22,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <map>
 #include <memory>
 
@@ -285,6 +287,63 @@ TEST_F(CentralStoreCli, AnUnreachableServerExits1AndLeavesTheStationsStoreAsItWa
     EXPECT_TRUE(r.out.isEmpty());
     EXPECT_EQ(fileBytes(m_stationA.toStdString()), before);
     EXPECT_EQ(listed(m_stationA).size(), 3U);
+}
+
+// A station's store that already holds a uuid with '"' and '\\' (stored
+// before imports checked uuids): before, the array literal it was spliced
+// into was malformed and every later sync of the whole station failed.
+// Now each uuid is a parameter: that session is refused and reported, the
+// others go.
+TEST_F(CentralStoreCli, AHostileUuidInAStationsStoreBlocksNothingElse)
+{
+    {
+        core::storage::SessionStore store(m_stationA.toStdString());
+        store.database().exec("UPDATE sessions SET uuid = 'x\"y\\z' WHERE id = 1");
+    }
+    const CliResult r = sync(m_stationA, server("press_a"));
+    EXPECT_EQ(r.exitCode, 1) << r.out.toStdString() << r.err.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("x\"y\\z"))) << r.err.toStdString();
+    EXPECT_EQ(listed(server()).size(), 2U);  // the station's two other sessions
+}
+
+// `sessions list` on an unreachable server exited 2 (bad input), unlike
+// every other command; a password typed into the address was echoed.
+TEST_F(CentralStoreCli, AnUnreachableServerListsNothingExits1AndNeverEchoesAPassword)
+{
+    const QString address = QStringLiteral("postgresql://press_a:s3cret@%1/site").arg(QStringLiteral("localhost:1"));
+    const CliResult r = runCli({"sessions", "--db", address, "list"});
+    EXPECT_EQ(r.exitCode, 1) << r.err.toStdString();
+    EXPECT_FALSE(r.err.contains(QStringLiteral("s3cret"))) << r.err.toStdString();
+    const CliResult keyed =
+        runCli({"sessions", "--db", QStringLiteral("host=%1 dbname=site password=s3cret").arg(m_dir.filePath("none")),
+                "list"});
+    EXPECT_GT(keyed.exitCode, 0);
+    EXPECT_FALSE(keyed.err.contains(QStringLiteral("s3cret"))) << keyed.err.toStdString();
+}
+
+// A server that stops answering once connected (frozen, its connections
+// still open): before, `sync` waited indefinitely (45 s and more); only the
+// connect had a timeout. Now a statement's answer is awaited at most
+// TACTISCOPE_CENTRAL_ANSWER_S seconds (90 by default), then the connection
+// is closed with the reason. (No wall clock is asserted: without the
+// deadline this test would not end.)
+TEST_F(CentralStoreCli, AServerThatStopsAnsweringIsGivenUpAtTheDeadline)
+{
+    ::setenv("TACTISCOPE_CENTRAL_ANSWER_S", "2", 1);
+    PgConnection connection(s_server->conninfo());
+    ::unsetenv("TACTISCOPE_CENTRAL_ANSWER_S");
+    s_server->pause();
+    std::string message;
+    try {
+        connection.query("SELECT 1");
+    } catch (const StorageError& e) {
+        message = e.what();
+    }
+    s_server->resume();
+    EXPECT_NE(message.find("no answer within 2 s after the connection was made"), std::string::npos) << message;
+    EXPECT_FALSE(connection.isOpen());
+    EXPECT_THROW(connection.query("SELECT 1"), StorageError);  // closed, and says so
+    PgConnection(s_server->conninfo()).query("SELECT 1");      // the thawed server answers again
 }
 
 TEST_F(CentralStoreCli, AUuidOnTheServerWithOtherSamplesIsRefusedNotOverwritten)

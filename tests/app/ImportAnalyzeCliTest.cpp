@@ -312,3 +312,52 @@ TEST(AnalyzeCli, BadInputIsExitCodeTwo)
         EXPECT_TRUE(result.err.contains(QString::fromUtf8(c.message))) << result.err.toStdString();
     }
 }
+
+// What `import` stores goes to the central store: before, a Latin-1 header
+// (µ as the byte 0xB5) imported and then blocked every sync ("invalid byte
+// sequence for encoding UTF8"), any text was accepted as a uuid, and a NUL
+// in a subject was cut off on the server. Now the header is read as
+// Latin-1 with a note; a uuid that is not one and a NUL are refused (exit
+// 2) and nothing is stored.
+TEST(ImportCli, WhatItStoresIsValidTextEverywhere)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath("s.tactiscope");
+    const QString latin1 = dir.filePath("latin1.csv");
+    {
+        QFile file(latin1);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        file.write("t [s],a [\xB5strain],b [\xB5strain]\n0,1,2\n0.01,3,4\n0.02,5,6\n");
+    }
+    const auto imported = runCli({"import", latin1, "--db", db});
+    ASSERT_EQ(imported.exitCode, 0) << imported.err.toStdString();
+    EXPECT_TRUE(imported.out.contains(QStringLiteral("note: the header is not UTF-8"))) << imported.out.toStdString();
+    {
+        core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+        const auto channels = store.channels(store.sessions().front().id);
+        ASSERT_EQ(channels.size(), 2u);
+        EXPECT_EQ(channels[0].descriptor.unit, "µstrain");
+    }
+
+    // An export's side file naming a uuid that is not one, or a subject
+    // with a NUL in it.
+    const QString csv = dir.filePath("x.csv");
+    writeText(csv, "t [s],a [N]\n0,1\n0.01,2\n");
+    const QString other = dir.filePath("other.tactiscope");
+    for (const char* session :
+         {R"({"uuid": "x\"y\\z", "subject": "door"})", R"({"uuid": "", "subject": "door\u0000 17"})"}) {
+        writeText(dir.filePath("x.meta.json"),
+                  QStringLiteral(R"({"session": %1, "channels": [{"column": "a [N]", "name": "a", "unit": "N",
+                                   "kind": "force"}]})")
+                      .arg(QString::fromUtf8(session)));
+        const auto refused = runCli({"import", csv, "--db", other});
+        EXPECT_EQ(refused.exitCode, 2) << session << ": " << refused.err.toStdString();
+        EXPECT_TRUE(refused.err.contains(QStringLiteral("is not a uuid")) ||
+                    refused.err.contains(QStringLiteral("a NUL character")))
+            << refused.err.toStdString();
+    }
+    if (QFile::exists(other)) {
+        core::storage::SessionStore store(other.toStdString(), core::storage::Database::Access::ReadOnly);
+        EXPECT_TRUE(store.sessions().empty());
+    }
+}

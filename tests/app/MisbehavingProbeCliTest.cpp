@@ -216,3 +216,41 @@ TEST(MisbehavingProbe, AProbeThatComesBackChangedEndsTheRecordingWithWhatCameBef
     ASSERT_FALSE(told.empty());
     EXPECT_NE(told.front().note.find("another rate"), std::string::npos) << told.front().note;
 }
+
+// Another probe of the same kind (same channels and rate, another serial
+// number) on the port a second after the first leaves: before, "the probe
+// was away 2.0 s and came back", both probes' samples in one session
+// labelled with the first, exit 0. Now the recording ends with what the
+// first one gave, an alarm names both, exit 1.
+TEST(MisbehavingProbe, AnotherProbeOnThePortIsNotTakenForTheFirst)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("probe");
+    QProcess first;
+    ASSERT_TRUE(
+        startEmulator(first, link, {"--scenario", "panel-scan", "--rate", "1000", "--seconds", "1", "--seed", "1"}));
+    QProcess record;
+    record.start(QStringLiteral(TACTISCOPE_CLI),
+                 {"record", "--port", link, "--seconds", "6", "--db", dir.filePath("s.tactiscope")});
+    ASSERT_TRUE(record.waitForStarted());
+    ASSERT_TRUE(first.waitForFinished(10000));
+    QProcess second;  // the emulator's serial number is EMU-<seed>
+    ASSERT_TRUE(startEmulator(second, link, {"--scenario", "panel-scan", "--rate", "1000", "--seed", "2"}));
+    ASSERT_TRUE(record.waitForFinished(20000));
+    stopEmulator(second);
+    const QString out = QString::fromUtf8(record.readAllStandardOutput());
+    const QString err = QString::fromUtf8(record.readAllStandardError());
+    EXPECT_EQ(record.exitCode(), 1) << out.toStdString();
+    EXPECT_TRUE(err.contains(QStringLiteral("another device came back on the port"))) << err.toStdString();
+    EXPECT_TRUE(err.contains(QStringLiteral("EMU-2, where"))) << err.toStdString();
+    const std::int64_t id = sessionIdIn(out);
+    ASSERT_GT(id, 0) << out.toStdString();
+    auto store = storeIn(dir);
+    std::uint64_t kept = 0;
+    for (const auto& gap : store.gaps(id)) kept += gap.count;
+    kept = store.sampleCount(id) - kept;
+    EXPECT_NEAR(static_cast<double>(kept), 1000.0, 150.0);  // the first probe's second only
+    const auto told = alarms(store, id);
+    ASSERT_FALSE(told.empty());
+    EXPECT_NE(told.front().note.find("EMU-1"), std::string::npos) << told.front().note;
+}

@@ -8,6 +8,7 @@
 #include "support/CliRunner.h"
 #include "support/TextFiles.h"
 
+#include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
 
@@ -80,8 +81,51 @@ TEST_F(UntrustedFiles, AnOrdinaryOutputIsWrittenWhole)
 {
     const QString out = m_dir.filePath("out.csv");
     ASSERT_EQ(runCli({"detect", m_csv, "--output", out}).exitCode, 0);
-    EXPECT_FALSE(QFile::exists(out + ".partial"));
     EXPECT_TRUE(readBytes(out).startsWith("t,out,rab,rba"));
+    // No temporary is left in the folder (they are hidden: ".out.csv.XXXXXX").
+    EXPECT_TRUE(QDir(m_dir.path()).entryList({QStringLiteral(".*")}, QDir::Files | QDir::Hidden).isEmpty());
+    // Written with the permissions any new file gets, not a temporary's 0600.
+    EXPECT_TRUE(QFile::permissions(out) & QFileDevice::ReadGroup);
+}
+
+// Before, the temporary beside an output was OUT.partial, opened by name:
+// a link of that name to the store let `sessions export` truncate the
+// store (exit 1) and `report` replace it with the PDF (exit 0), and
+// `detect --output OUT` emptied its own input when that was OUT.partial.
+// The temporary is now a new file nobody can name in advance.
+TEST_F(UntrustedFiles, AFileOrLinkWhereTheTemporaryUsedToBeIsNeverTouched)
+{
+    const QString out = m_dir.filePath("out.csv");
+    ASSERT_TRUE(QFile::link(m_db, out + ".partial"));
+    EXPECT_EQ(runCli({"sessions", "--db", m_db, "export", "1", "--format", "csv", "--output", out}).exitCode, 0);
+    expectStoreIntact();
+    EXPECT_TRUE(readBytes(out).startsWith("t [s]"));
+
+    const QString pdf = m_dir.filePath("r.pdf");
+    ASSERT_TRUE(QFile::link(m_db, pdf + ".partial"));
+    const auto report = runCli({"report", "--db", m_db, "--session", "1", "--output", pdf});
+    EXPECT_EQ(report.exitCode, 0) << report.err.toStdString();
+    expectStoreIntact();
+    EXPECT_TRUE(readBytes(pdf).startsWith("%PDF"));
+
+    // The input itself is called what the temporary used to be.
+    const QString input = m_dir.filePath("d.csv.partial");
+    ASSERT_TRUE(QFile::copy(m_csv, input));
+    const QByteArray before = readBytes(input);
+    EXPECT_EQ(runCli({"detect", input, "--output", m_dir.filePath("d.csv")}).exitCode, 0);
+    EXPECT_EQ(readBytes(input), before);
+    EXPECT_TRUE(readBytes(m_dir.filePath("d.csv")).startsWith("t,out,rab,rba"));
+}
+
+// The store itself called what a report's temporary used to be.
+TEST_F(UntrustedFiles, AStoreNamedLikeAnOldTemporarySurvivesAReport)
+{
+    const QString renamed = m_dir.filePath("r.pdf.partial");
+    ASSERT_TRUE(QFile::rename(m_db, renamed));
+    m_db = renamed;
+    const auto report = runCli({"report", "--db", m_db, "--session", "1", "--output", m_dir.filePath("r.pdf")});
+    EXPECT_EQ(report.exitCode, 0) << report.err.toStdString();
+    expectStoreIntact();
 }
 
 TEST_F(UntrustedFiles, ADamagedChunkCountIsADamagedStoreEverywhere)
@@ -103,4 +147,52 @@ TEST_F(UntrustedFiles, ADamagedChunkCountIsADamagedStoreEverywhere)
         runCli({"sessions", "--db", m_db, "export", "1", "--format", "csv", "--output", m_dir.filePath("e.csv")});
     EXPECT_GT(exported.exitCode, 0);
     EXPECT_TRUE(exported.err.contains(QStringLiteral("the store is damaged"))) << exported.err.toStdString();
+}
+
+// Every number a reader sizes something by, damaged one at a time (found
+// by an attack on the product): before, a first index of 4·10¹⁸ or a gap
+// of 2⁶² samples aborted `report` and had `export` write NaN rows until the
+// disk was full; the channel rows deleted made `sessions show` and
+// `export` crash; a negative chunk count was silent (NaN rows, "0 lost",
+// exit 0). Each is now "the store is damaged", naming the session, from
+// every reader, at once.
+TEST_F(UntrustedFiles, EveryDamagedNumberIsADamagedStoreForEveryReader)
+{
+    const std::vector<std::pair<const char*, const char*>> damages{
+        {"a chunk's first index of 4e18", "UPDATE chunks SET first_index = 4000000000000000000 WHERE first_index = "
+                                          "(SELECT max(first_index) FROM chunks WHERE session_id = 1)"},
+        {"a gap of 2^62 samples", "INSERT INTO gaps (session_id, first_index, count) VALUES (1, 1000000, "
+                                  "4611686018427387904)"},
+        {"the channel rows deleted", "DELETE FROM channels WHERE session_id = 1"},
+        {"a negative chunk count",
+         "PRAGMA ignore_check_constraints = 1; UPDATE chunks SET count = -130 WHERE first_index = "
+         "(SELECT max(first_index) FROM chunks WHERE session_id = 1)"},
+        {"a chunk count of 2^40", "UPDATE chunks SET count = 1099511627776 WHERE first_index = 0"},
+    };
+    const QByteArray intact = readBytes(m_db);
+    for (const auto& [what, sql] : damages) {
+        SCOPED_TRACE(what);
+        {
+            QFile file(m_db);
+            ASSERT_TRUE(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            file.write(intact);
+        }
+        {
+            core::storage::SessionStore store(m_db.toStdString());
+            store.database().exec(sql);
+        }
+        const std::vector<QStringList> readers{
+            {"sessions", "--db", m_db, "show", "1"},
+            {"sessions", "--db", m_db, "export", "1", "--format", "csv", "--output", m_dir.filePath("e.csv")},
+            {"analyze", "--db", m_db, "--session", "1"},
+            {"report", "--db", m_db, "--session", "1", "--output", m_dir.filePath("r.pdf")},
+        };
+        for (const QStringList& reader : readers) {
+            const auto run = runCli(reader);
+            EXPECT_GT(run.exitCode, 0) << reader.join(' ').toStdString();
+            EXPECT_TRUE(run.err.contains(QStringLiteral("the store is damaged: in session 1")))
+                << reader.join(' ').toStdString() << ": " << run.err.toStdString();
+        }
+        EXPECT_FALSE(QFile::exists(m_dir.filePath("e.csv")));
+    }
 }

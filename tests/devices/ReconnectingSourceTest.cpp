@@ -49,7 +49,7 @@ TEST(ReconnectingSource, ContinuesAfterUnplugAndReplugWithTheGapMarked)
     // Plugged back in (a new pty at the same link) 0.4 s later.
     first.reset();
     std::this_thread::sleep_for(std::chrono::milliseconds(400));
-    emulator::ProbeEmulator second(probeAt(link, std::nullopt, 2));
+    emulator::ProbeEmulator second(probeAt(link, std::nullopt, 1));  // the same probe: its serial is its seed's
     second.start();
     ASSERT_TRUE(tactiscope::testing::eventually([&] {
         return reconnecting->state() == DeviceState::Streaming && acquisition.stats().samples > before.samples + 200;

@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <pwd.h>
+#include <signal.h>
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
@@ -77,6 +78,29 @@ PostgresServer::~PostgresServer()
     [[maybe_unused]] const int ignored = std::system(stop.c_str());
     std::error_code error;
     std::filesystem::remove_all(m_folder, error);
+}
+
+// The postmaster (first line of postmaster.pid) and its children, found in
+// /proc by their parent.
+void PostgresServer::signalAll(int signal) const
+{
+    std::ifstream pidFile(m_folder / "data" / "postmaster.pid");
+    pid_t postmaster = 0;
+    if (!(pidFile >> postmaster) || postmaster <= 0) return;
+    ::kill(postmaster, signal);
+    for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
+        std::ifstream stat(entry.path() / "stat");
+        std::string line;
+        if (!std::getline(stat, line)) continue;
+        // pid (comm) state ppid …: the name may hold spaces, so read after ')'.
+        const auto close = line.rfind(')');
+        if (close == std::string::npos) continue;
+        std::istringstream rest(line.substr(close + 1));
+        char state = 0;
+        pid_t parent = 0;
+        if (rest >> state >> parent && parent == postmaster)
+            ::kill(std::stoi(entry.path().filename().string()), signal);
+    }
 }
 
 std::string PostgresServer::conninfo(const std::string& user, const std::string& dbname) const

@@ -5,6 +5,7 @@
 // connections are trusted, so roles need no passwords. Never a mock.
 #pragma once
 
+#include <csignal>
 #include <filesystem>
 #include <string>
 
@@ -25,9 +26,17 @@ public:
     // The folder of its unix socket (a connection's host).
     std::string folder() const { return m_folder.string(); }
 
+    // Freezes every process of the server (SIGSTOP), as a server or host
+    // that stops answering with its connections still open; resume()
+    // thaws them (SIGCONT).
+    void pause() const { signalAll(SIGSTOP); }
+    void resume() const { signalAll(SIGCONT); }
+
     static constexpr const char* kOwner = "tactiscope_owner";
 
 private:
+    void signalAll(int signal) const;
+
     std::filesystem::path m_folder;
     std::filesystem::path m_bin;  // initdb, pg_ctl
     std::string m_asPostgres;     // "runuser -u postgres -- " when root

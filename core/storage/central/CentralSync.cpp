@@ -4,6 +4,7 @@
 #include "core/storage/central/CentralSync.h"
 
 #include "core/text/Md5.h"
+#include "core/text/TextChecks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -255,15 +256,25 @@ struct OnServer {
     std::string checksum;
 };
 
+// Each uuid is a parameter of its own, never spliced into a literal: a
+// stored uuid holding '"' or '\\' once made the array literal malformed and
+// stopped every later sync of the station.
 std::map<std::string, OnServer> sessionsOnServer(PgConnection& db, const std::vector<SessionSummary>& sessions)
 {
-    std::string array = "{";
-    for (const SessionSummary& s : sessions) array += (array.size() > 1 ? ",\"" : "\"") + s.uuid + "\"";
-    array += "}";
-    const PgResult r =
-        db.query("SELECT uuid, id, checksum FROM sessions WHERE complete AND uuid = ANY($1::text[])", {array});
+    constexpr std::size_t kBatch = 1000;  // far below the protocol's 65 535 parameters
     std::map<std::string, OnServer> result;
-    for (int i = 0; i < r.rows(); ++i) result[r.text(i, 0)] = {r.int64(i, 1), r.text(i, 2)};
+    for (std::size_t from = 0; from < sessions.size(); from += kBatch) {
+        const std::size_t to = std::min(sessions.size(), from + kBatch);
+        std::string placeholders;
+        PgParams uuids;
+        for (std::size_t i = from; i < to; ++i) {
+            placeholders += (i > from ? ",$" : "$") + std::to_string(i - from + 1);
+            uuids.text(sessions[i].uuid);
+        }
+        const PgResult r = db.query(
+            "SELECT uuid, id, checksum FROM sessions WHERE complete AND uuid IN (" + placeholders + ")", uuids);
+        for (int i = 0; i < r.rows(); ++i) result[r.text(i, 0)] = {r.int64(i, 1), r.text(i, 2)};
+    }
     return result;
 }
 
@@ -316,6 +327,11 @@ SyncOutcome syncToCentral(SessionStore& local, CentralStore& central, const std:
     for (auto s = finished.rbegin(); s != finished.rend(); ++s, ++done.done) {
         if (progress) progress(done);
         if (stop.stop_requested()) break;  // between sessions: each is whole or not sent
+        if (!text::isUuid(s->uuid)) {      // stored before imports checked them: reported, and the others go
+            outcome.refused.push_back("session " + std::to_string(s->id) + " ('" + s->uuid.substr(0, 40) +
+                                      "') has no valid uuid; it was not sent");
+            continue;
+        }
         const std::string checksum = sessionChecksum(local, s->id);
         if (const auto found = there.find(s->uuid); found != there.end()) {
             if (found->second.checksum != checksum) {

@@ -2,9 +2,14 @@
 #include "core/storage/central/PgConnection.h"
 
 #include <libpq-fe.h>
+#include <poll.h>
 
+#include <algorithm>
 #include <bit>
+#include <cctype>
 #include <charconv>
+#include <cmath>
+#include <cstdlib>
 
 namespace tactiscope::core::storage::central {
 namespace {
@@ -42,12 +47,31 @@ std::string exactText(double value)
 
 // The connection string's own settings win over these defaults: a server
 // that does not answer is given up after 10 s (libpq would wait as long as
-// the system's TCP timeout), and the server's activity view names us.
+// the system's TCP timeout); TCP keepalives find a host that went away
+// within a minute; a statement may run a minute on the server; and the
+// server's activity view names us.
 pg_conn* openConnection(const std::string& conninfo)
 {
-    const char* const keywords[] = {"connect_timeout", "fallback_application_name", "dbname", nullptr};
-    const char* const values[] = {"10", "tactiscope", conninfo.c_str(), nullptr};
+    const char* const keywords[] = {"connect_timeout",           "keepalives",       "keepalives_idle",
+                                    "keepalives_interval",       "keepalives_count", "options",
+                                    "fallback_application_name", "dbname",           nullptr};
+    const char* const values[] = {
+        "10", "1", "30", "10", "3", "-c statement_timeout=60000", "tactiscope", conninfo.c_str(), nullptr};
     return PQconnectdbParams(keywords, values, 1);  // 1: dbname holds the whole connection string
+}
+
+// How long a statement's answer is awaited: TACTISCOPE_CENTRAL_ANSWER_S
+// seconds when set to a positive number, else 90 s (the server's own
+// statement_timeout, 60 s, ends any statement it is still running first).
+std::chrono::milliseconds answerTimeout()
+{
+    if (const char* text = std::getenv("TACTISCOPE_CENTRAL_ANSWER_S")) {
+        char* end = nullptr;
+        const double seconds = std::strtod(text, &end);
+        if (end != text && std::isfinite(seconds) && seconds > 0.0 && seconds < 86400.0)
+            return std::chrono::milliseconds(static_cast<std::int64_t>(seconds * 1000.0));
+    }
+    return std::chrono::seconds(90);
 }
 
 }  // namespace
@@ -174,7 +198,8 @@ std::span<const std::uint8_t> PgResult::bytes(int row, int column) const
 }
 
 PgConnection::PgConnection(const std::string& conninfo)
-    : m_connection(openConnection(conninfo))
+    : m_connection(openConnection(conninfo)),
+      m_answerTimeout(answerTimeout())
 {
     if (!m_connection) throw StorageError("cannot reach the central store: out of memory");
     if (PQstatus(m_connection) != CONNECTION_OK) {
@@ -203,7 +228,43 @@ void PgConnection::check(const PgResult& result) const
 
 void PgConnection::run(const std::string& sql)
 {
-    check(PgResult(PQexec(m_connection, sql.c_str())));
+    requireOpen();
+    if (!PQsendQuery(m_connection, sql.c_str()))
+        throw StorageError("the central store: " + oneLine(PQerrorMessage(m_connection)));
+    check(awaitResult());
+}
+
+// The last result of what was sent, waiting at most m_answerTimeout: a
+// server that stops answering once connected (stopped, or its host frozen
+// with the link up) would keep libpq waiting for ever. After the deadline
+// the connection is closed: it cannot be used again.
+PgResult PgConnection::awaitResult()
+{
+    const auto deadline = std::chrono::steady_clock::now() + m_answerTimeout;
+    pg_result* last = nullptr;
+    const auto giveUp = [&](const std::string& why) {
+        if (last) PQclear(last);
+        throw StorageError("the central store: " + why);
+    };
+    for (;;) {
+        if (!PQconsumeInput(m_connection)) giveUp(oneLine(PQerrorMessage(m_connection)));
+        while (!PQisBusy(m_connection)) {
+            pg_result* result = PQgetResult(m_connection);
+            if (!result) return PgResult(last);
+            if (last) PQclear(last);
+            last = result;
+        }
+        const auto left =
+            std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        if (left.count() <= 0) {
+            PQfinish(m_connection);
+            m_connection = nullptr;  // closed: isOpen() is false, and any further statement says so
+            giveUp("no answer within " + std::to_string(m_answerTimeout.count() / 1000) +
+                   " s after the connection was made; the server or its host has stopped answering");
+        }
+        pollfd socket{PQsocket(m_connection), POLLIN, 0};
+        ::poll(&socket, 1, static_cast<int>(std::min<std::int64_t>(left.count(), 1000)));
+    }
 }
 
 PgResult PgConnection::query(const std::string& sql, const PgParams& parameters, PgFormat results)
@@ -217,19 +278,29 @@ PgResult PgConnection::query(const std::string& sql, const PgParams& parameters,
             lengths[i] = static_cast<int>(value->size());
         }
     }
-    PgResult result(PQexecParams(m_connection, sql.c_str(), static_cast<int>(n), nullptr, values.data(), lengths.data(),
-                                 parameters.m_formats.data(), results == PgFormat::Binary ? 1 : 0));
+    requireOpen();
+    if (!PQsendQueryParams(m_connection, sql.c_str(), static_cast<int>(n), nullptr, values.data(), lengths.data(),
+                           parameters.m_formats.data(), results == PgFormat::Binary ? 1 : 0))
+        throw StorageError("the central store: " + oneLine(PQerrorMessage(m_connection)));
+    PgResult result = awaitResult();
     check(result);
     return result;
 }
 
+void PgConnection::requireOpen() const
+{
+    if (!m_connection)
+        throw StorageError("the central store: the connection was closed when the server stopped answering");
+}
+
 std::string PgConnection::user() const
 {
-    return PQuser(m_connection);
+    return m_connection ? PQuser(m_connection) : "";
 }
 
 std::string PgConnection::location() const
 {
+    if (!m_connection) return "the central store (connection closed)";
     const std::string host = PQhost(m_connection) ? PQhost(m_connection) : "";
     return "database " + std::string(PQdb(m_connection)) + " on " + host + ":" + PQport(m_connection);
 }
@@ -241,7 +312,7 @@ bool PgConnection::isOpen() const
 
 bool PgConnection::inTransaction() const
 {
-    return PQtransactionStatus(m_connection) != PQTRANS_IDLE;
+    return m_connection && PQtransactionStatus(m_connection) != PQTRANS_IDLE;
 }
 
 std::optional<std::string> connectionStringProblem(const std::string& conninfo)
@@ -260,6 +331,47 @@ std::optional<std::string> connectionStringProblem(const std::string& conninfo)
     if (password)
         return std::string("it holds a password; keep passwords in ~/.pgpass (or PGPASSFILE, a service file)");
     return std::nullopt;
+}
+
+std::string withoutPasswords(std::string_view text)
+{
+    std::string out(text);
+    // password=secret, password = 'se cret', PASSWORD=…
+    for (std::size_t at = 0;;) {
+        std::string lower = out;
+        for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        at = lower.find("password", at);
+        if (at == std::string::npos) break;
+        std::size_t i = at + 8;
+        while (i < out.size() && out[i] == ' ') ++i;
+        if (i >= out.size() || out[i] != '=') {
+            at = i;
+            continue;
+        }
+        ++i;
+        while (i < out.size() && out[i] == ' ') ++i;
+        std::size_t end = i;
+        if (end < out.size() && out[end] == '\'') {
+            for (++end; end < out.size() && out[end] != '\''; ++end)
+                if (out[end] == '\\') ++end;
+            end = std::min(out.size(), end + 1);
+        } else {
+            while (end < out.size() && out[end] != ' ' && out[end] != '&' && out[end] != '\n') ++end;
+        }
+        out.replace(i, end - i, "***");
+        at = i + 3;
+    }
+    // scheme://user:secret@host
+    for (std::size_t scheme = out.find("://"); scheme != std::string::npos; scheme = out.find("://", scheme + 3)) {
+        const std::size_t start = scheme + 3;
+        const std::size_t stop = out.find_first_of("/? \n", start);
+        const std::size_t at = out.rfind('@', stop == std::string::npos ? out.size() : stop);
+        if (at == std::string::npos || at < start) continue;
+        const std::size_t colon = out.find(':', start);
+        if (colon == std::string::npos || colon > at) continue;
+        out.replace(colon + 1, at - colon - 1, "***");
+    }
+    return out;
 }
 
 PgTransaction::PgTransaction(PgConnection& connection)

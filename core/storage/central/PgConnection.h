@@ -7,11 +7,13 @@
 
 #include "core/storage/Database.h"
 
+#include <chrono>
 #include <cstdint>
 #include <initializer_list>
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 struct pg_conn;
@@ -93,14 +95,23 @@ public:
 
 private:
     void check(const PgResult& result) const;
+    void requireOpen() const;
+    PgResult awaitResult();
 
-    pg_conn* m_connection;
+    pg_conn* m_connection;  // null once closed for not answering
+    // How long a statement's answer is awaited (see openConnection()).
+    std::chrono::milliseconds m_answerTimeout;
 };
 
 // Why `conninfo` cannot be kept as typed: libpq cannot read it, or it holds
 // a password (which belongs in ~/.pgpass, PGPASSFILE or a service file,
 // never in a program's settings). Nothing when it can.
 std::optional<std::string> connectionStringProblem(const std::string& conninfo);
+
+// `text` with every password a connection string may hold hidden: the
+// value of password=… (quoted or not) and a URI's user:password@. For
+// messages, which may quote what a user typed.
+std::string withoutPasswords(std::string_view text);
 
 // A transaction that rolls back unless committed, so a failure half way
 // leaves nothing on the server. Inside another one it is part of it.

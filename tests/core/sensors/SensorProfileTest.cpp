@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
+
 using namespace tactiscope::core::sensors;
 
 namespace {
@@ -132,4 +135,45 @@ TEST(SensorProfile, AProfileMaySayWhichChannelsPlayWhichRoleAndWritesThemBack)
               "stiff-beam, soft-beam, displacement or capacitance");
     EXPECT_EQ(errorOf(withRoles(R"({"ch1": "stiff-beam", "ch2": "stiff-beam"})")),
               "probe.json: roles: the role stiff-beam is given to both 'ch1' and 'ch2'");
+}
+
+// A profile holding a 32 MB array kept the window from appearing and froze
+// the profile list; the CLI's error quoted the whole value. A text over
+// 1 MB is refused before it is parsed, a file before it is read, and a
+// message quotes at most 40 characters of a bad value.
+TEST(SensorProfile, AHugeProfileIsRefusedUnreadAndBadValuesAreQuotedShort)
+{
+    const std::string huge = R"({"kind": "cantilever", "name": "x", "junk": [)" + std::string(2'000'000, '1') + "]}";
+    try {
+        tactiscope::core::sensors::parseSensorProfile(huge, "huge.json");
+        FAIL() << "a 2 MB profile was read";
+    } catch (const tactiscope::core::sensors::ProfileError& e) {
+        EXPECT_NE(
+            std::string(e.what()).find("huge.json: " + std::to_string(huge.size()) + " bytes, not a sensor profile"),
+            std::string::npos)
+            << e.what();
+    }
+    const std::string path = ::testing::TempDir() + "/huge-profile.json";
+    {
+        std::ofstream file(path, std::ios::binary);
+        file << huge;
+    }
+    EXPECT_THROW(tactiscope::core::sensors::loadSensorProfile(path), tactiscope::core::sensors::ProfileError);
+    std::remove(path.c_str());
+
+    const std::string longKind = R"({"kind": ")" + std::string(10'000, 'k') + R"(", "name": "x"})";
+    const std::string longValue =
+        R"({"kind": "cantilever", "name": "x", "length_m": [)" + std::string(9'000, '7') + R"(], "width_m": 1,
+            "thickness_m": 1, "youngs_modulus_pa": 1})";
+    const std::string longName = R"({"kind": "cantilever", "name": ")" + std::string(1'000, 'n') + R"(",
+            "length_m": 1, "width_m": 1, "thickness_m": 1, "youngs_modulus_pa": 1})";
+    for (const std::string& text : {longKind, longValue, longName}) {
+        try {
+            tactiscope::core::sensors::parseSensorProfile(text, "p.json");
+            FAIL() << "accepted";
+        } catch (const tactiscope::core::sensors::ProfileError& e) {
+            EXPECT_LT(std::string(e.what()).size(), 200u) << e.what();
+            EXPECT_NE(std::string(e.what()).find("characters)"), std::string::npos) << e.what();
+        }
+    }
 }
