@@ -7,6 +7,7 @@
 #include "core/ModeCapability.h"
 #include "core/sensors/SensorProfile.h"
 #include "core/storage/RecorderLock.h"
+#include "core/storage/SessionStore.h"
 #include "devices/ReconnectingSource.h"
 #include "devices/session/LiveSession.h"
 #include "devices/transport/SerialPorts.h"
@@ -230,11 +231,20 @@ int runRecord(const QStringList& arguments)
     if (progress) err << '\n';
 
     const auto& stored = summary->stats;
+    // The samples lost are what the store marks as lost (its gaps), so the
+    // line and the store agree to the sample; what was counted while
+    // recording if the store cannot be read back.
+    std::uint64_t lost = acquired.samplesLost + stored.samplesDropped + summary->samplesLostAtEnd;
+    try {
+        core::storage::SessionStore written(db, core::storage::Database::Access::ReadOnly);
+        lost = 0;
+        for (const auto& gap : written.gaps(summary->session)) lost += gap.count;
+    } catch (const core::storage::StorageError&) {
+    }
     QTextStream(stdout) << "Recorded session " << summary->session << ": " << stored.samplesWritten
-                        << " samples per channel, "
-                        << acquired.samplesLost + stored.samplesDropped + summary->samplesLostAtEnd << " lost, "
-                        << counters.crcErrors << " CRC errors (" << channels.size() << " channels at "
-                        << QLocale::c().toString(rate_hz) << " Hz, into " << QString::fromStdString(db) << "); "
+                        << " samples per channel, " << lost << " lost, " << counters.crcErrors << " CRC errors ("
+                        << channels.size() << " channels at " << QLocale::c().toString(rate_hz) << " Hz, into "
+                        << QString::fromStdString(db) << "); "
                         << toQString(core::toString(session.recordingMetadata().mode)) << ": "
                         << QString::fromStdString(summary->analysis) << "\n";
     if (!stored.error.empty()) {

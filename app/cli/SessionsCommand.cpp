@@ -23,6 +23,24 @@ using core::storage::SessionSource;
 using core::storage::SessionSummary;
 using core::storage::StorageError;
 
+// A stored text on one line of a table: a newline or another control
+// character in a subject would otherwise start a row of its own.
+QString oneCell(const std::string& text)
+{
+    QString cell;
+    for (const QChar c : toQString(text)) {
+        if (c == QLatin1Char('\n'))
+            cell += QStringLiteral("\\n");
+        else if (c == QLatin1Char('\t'))
+            cell += QStringLiteral("\\t");
+        else if (c.category() == QChar::Other_Control)
+            cell += QStringLiteral("\\x%1").arg(c.unicode(), 2, 16, QLatin1Char('0'));
+        else
+            cell += c;
+    }
+    return cell;
+}
+
 int list(SessionSource& store, const core::storage::SessionFilter& filter, bool json)
 {
     const auto sessions = store.sessions(filter);
@@ -60,7 +78,7 @@ int list(SessionSource& store, const core::storage::SessionFilter& filter, bool 
             << toQString(s.startedUtc).leftJustified(26) << toQString(core::toString(s.metadata.mode)).leftJustified(11)
             << toQString(core::toString(s.status)).leftJustified(12)
             << (QString::number(s.duration_s(), 'f', 1) + QStringLiteral(" s")).rightJustified(10) << "  "
-            << toQString(s.metadata.subject) << " / " << toQString(s.metadata.operatorName) << '\n';
+            << oneCell(s.metadata.subject) << " / " << oneCell(s.metadata.operatorName) << '\n';
     }
     return kExitOk;
 }
@@ -74,7 +92,7 @@ int show(SessionSource& store, std::int64_t id, bool json)
     const auto s = *store.session(id);
     QTextStream out(stdout);
     const auto line = [&](const char* name, const std::string& value) {
-        out << QString(name).leftJustified(18) << toQString(value.empty() ? std::string("—") : value) << '\n';
+        out << QString(name).leftJustified(18) << (value.empty() ? QStringLiteral("—") : oneCell(value)) << '\n';
     };
     line("id", std::to_string(s.id));
     line("uuid", s.uuid);

@@ -181,6 +181,12 @@ TEST(MisbehavingProbe, AProbeLostForGoodIsAGapToTheStopAnAlarmAndExitOne)
     ASSERT_EQ(lost.size(), 1u);
     EXPECT_NE(lost[0].note.find("did not come back"), std::string::npos) << lost[0].note;
     EXPECT_NEAR(lost[0].start_s, static_cast<double>(tail.firstIndex) / 1000.0, 0.01);
+    // The line's count is the store's, to the sample (it said 2035 where
+    // the store held 2034).
+    std::uint64_t storedLost = 0;
+    for (const auto& gap : gaps) storedLost += gap.count;
+    EXPECT_TRUE(result.out.contains(QStringLiteral(" samples per channel, %1 lost, ").arg(storedLost)))
+        << result.out.toStdString() << " (the store holds " << storedLost << " lost)";
 }
 
 TEST(MisbehavingProbe, AProbeThatComesBackChangedEndsTheRecordingWithWhatCameBefore)

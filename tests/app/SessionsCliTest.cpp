@@ -235,3 +235,27 @@ TEST(SessionsCli, BadInputExitsWithCodeTwo)
             << arguments.join(' ').toStdString() << ": " << result.err.toStdString();
     }
 }
+
+// A newline in a subject faked a row of its own in the plain list (and a
+// line of its own in show); stored text now stays on its line, escaped.
+TEST(SessionsCli, ANewlineInASubjectFakesNoRow)
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath("s.tactiscope");
+    {
+        core::storage::SessionStore store(path.toStdString());
+        const std::vector<core::ChannelDescriptor> channels{{"a", "", core::ChannelKind::Strain},
+                                                            {"force", "N", core::ChannelKind::Force}};
+        core::storage::SessionMetadata m;
+        m.subject = "door-17\n    99  2026-01-01T00:00:00Z  panel-scan complete 1.0 s  forged / Eve";
+        const auto id = store.beginSession(m, channels, 200.0);
+        store.appendBlocks(id, std::vector{block(0, 20)});
+        store.endSession(id, tactiscope::core::SessionStatus::Complete);
+    }
+    const auto list = runCli({"sessions", "--db", path, "list"});
+    ASSERT_EQ(list.exitCode, 0) << list.err.toStdString();
+    EXPECT_EQ(list.out.split('\n', Qt::SkipEmptyParts).size(), 2) << list.out.toStdString();  // the header, one row
+    EXPECT_TRUE(list.out.contains(QStringLiteral("door-17\\n    99"))) << list.out.toStdString();
+    const auto show = runCli({"sessions", "--db", path, "show", "1"});
+    EXPECT_FALSE(show.out.contains(QStringLiteral("\n    99"))) << show.out.toStdString();
+}
