@@ -26,6 +26,8 @@ public:
     double hostTime_s(double device_s) const;
     // Relative drift (host − device rate), e.g. −1e-4 for a device 100 ppm fast.
     double drift() const { return m_drift; }
+    // Windows the drift is fitted over (at most kWindows).
+    std::size_t windows() const { return m_minima.size(); }
     void reset();
 
 private:

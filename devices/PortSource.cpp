@@ -123,6 +123,7 @@ void PortSource::pump(std::chrono::milliseconds timeout)
     const auto enqueue = [&](std::vector<core::SampleBlock>& blocks) {
         for (auto& b : blocks) {
             m_clock.observe(b.endTime_s(), arrival_s);
+            if (auto drift = m_drift.check(m_clock, b.endTime_s())) m_notices.push_back({b.endTime_s(), *drift});
             m_queue.push_back(std::move(b));
         }
     };

@@ -9,6 +9,7 @@
 
 #include "devices/BlockSource.h"
 #include "devices/ClockSync.h"
+#include "devices/DriftWatch.h"
 #include "devices/protocol/BinaryStream.h"
 #include "devices/protocol/TextStream.h"
 #include "devices/transport/Transport.h"
@@ -84,6 +85,7 @@ private:
     std::deque<std::uint8_t> m_recent;  // the last kRecentBytes received
     std::optional<protocol::DeviceInfo> m_info;
     ClockSync m_clock;
+    DriftWatch m_drift;
 };
 
 }  // namespace tactiscope::devices

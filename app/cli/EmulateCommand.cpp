@@ -37,6 +37,10 @@ int runEmulate(const QStringList& arguments)
         {QStringLiteral("info-rate"),
          QStringLiteral("The rate its INFO frame claims, in Hz (default: the true rate; another is a lie)."),
          QStringLiteral("HZ")},
+        {QStringLiteral("clock-rate"),
+         QStringLiteral("The rate its clock stamps frames at, in Hz (default: the true rate; another is a clock "
+                        "that lies with --info-rate)."),
+         QStringLiteral("HZ")},
         {QStringLiteral("fault"),
          QStringLiteral("Misbehave as broken firmware (TSP/1): restart@S (silent 0.5 s, then sequence and clock "
                         "from 0), sequence-jump@S (one frame's sequence +30000) or frozen-sequence."),
@@ -63,6 +67,11 @@ int runEmulate(const QStringList& arguments)
     if (parser.isSet(QStringLiteral("rate"))) {
         options.rate_hz = positive("rate", false);
         if (!options.rate_hz) return usageError(QStringLiteral("--rate must be a positive number of Hz"), usage);
+    }
+    if (parser.isSet(QStringLiteral("clock-rate"))) {
+        options.clockRate_hz = positive("clock-rate", false);
+        if (!options.clockRate_hz)
+            return usageError(QStringLiteral("--clock-rate must be a positive number of Hz"), usage);
     }
     if (parser.isSet(QStringLiteral("info-rate"))) {
         options.infoRate_hz = positive("info-rate", false);

@@ -212,8 +212,9 @@ std::vector<std::uint8_t> ProbeEmulator::nextPayload(std::size_t& samples)
         return {text.begin(), text.end()};
     }
     protocol::DataPayload data;
-    data.timestamp_us = static_cast<std::uint32_t>(
-        std::llround(static_cast<double>(m_sampleIndex - m_clockStart) * 1e6 / m_rate_hz) & 0xFFFFFFFF);
+    data.timestamp_us = static_cast<std::uint32_t>(std::llround(static_cast<double>(m_sampleIndex - m_clockStart) *
+                                                                1e6 / m_options.clockRate_hz.value_or(m_rate_hz)) &
+                                                   0xFFFFFFFF);
     data.format = protocol::SampleFormat::Float32;
     data.channelCount = static_cast<std::uint8_t>(m_channels.size());
     data.samplesPerChannel = static_cast<std::uint16_t>(n);

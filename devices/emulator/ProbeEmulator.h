@@ -46,6 +46,9 @@ struct EmulatorOptions {
     std::optional<double> infoRate_hz = std::nullopt;  // the rate its INFO claims (a lie when not the true rate)
     EmulatorFault fault = EmulatorFault::None;
     double faultAt_s = 3.0;  // stream time of a restart or a jump
+    // The rate its clock stamps frames at (default: the true rate; another
+    // is a clock that lies with its INFO).
+    std::optional<double> clockRate_hz = std::nullopt;
 };
 
 // "restart@3", "sequence-jump@2.5", "frozen-sequence": the command line's

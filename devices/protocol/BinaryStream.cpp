@@ -19,20 +19,28 @@ double agreementSamples(std::uint16_t frameSamples)
 }
 
 // The host may have seen the device for up to this much less than the
-// stream spans (bytes buffered before the first read), and the device's
-// crystal may run this much fast, before a loss is cut to what the host saw.
-constexpr double kHostSlack_s = 1.0;
-constexpr double kHostRateMargin = 1.1;
+// stream spans, and the device's crystal may run this much fast, before a
+// loss is cut to what the host saw. The slack is the bytes that waited in
+// the port (PortSource reads them away for 50 ms at open) and the host's
+// delivery latency (a USB serial adapter's 16 ms timer, a busy host); the
+// margin is 1 % (10 000 ppm, fifty times a cheap crystal's error): a
+// device whose sequence and clock jump forward together can invent at
+// most that much lost time (was 10 % plus 1 s: six minutes an hour).
+constexpr double kHostSlack_s = 0.25;
+constexpr double kHostRateMargin = 1.01;
 // A misbehaving device's contradictions are noticed at most this often.
 constexpr double kNoticeInterval_s = 10.0;
 // An INFO rate this far off the device's own clock is wrong.
 constexpr double kClockRateTolerance = 0.02;
-// The host's arrivals are judged over this long, from this long after the
-// first frame (what was buffered before the first read arrives at once),
-// and only a factor this large is believed over the host's scheduling.
-constexpr double kArrivalWindow_s = 3.0;
+// The host's arrivals are judged in consecutive windows this long, from
+// this long after the first frame (what was buffered before the first read
+// arrives at once). Over 5 s the host's delivery jitter is well under 1 %;
+// two windows in a row off by more than this fraction of the rate the
+// device states end the stream (its times would all be wrong by as much).
+// Smaller drifts are PortSource's (ClockSync), over a minute.
+constexpr double kArrivalWindow_s = 5.0;
 constexpr double kArrivalSettle_s = 0.5;
-constexpr double kArrivalFactor = 2.0;
+constexpr double kArrivalMismatch = 0.10;
 
 std::string hertz(double rate)
 {
@@ -214,10 +222,15 @@ void BinaryStream::checkRate(double hostTime_s)
     const double window_s = hostTime_s - m_arrivalStart->first;
     if (window_s < kArrivalWindow_s) return;
     const double arriving = static_cast<double>(m_nextSampleIndex - m_arrivalStart->second) / window_s;
-    if (arriving > kArrivalFactor * rate || arriving * kArrivalFactor < rate)
-        m_rateProblem = "the device's samples arrive at about " + hertz(arriving) + ", not at the " + hertz(rate) +
-                        (m_info ? " it says" : " its first timestamps gave") +
-                        ": the rate is wrong, and so would every time in the recording be";
+    m_arrivalStart.emplace(hostTime_s, m_nextSampleIndex);  // the next window
+    if (std::abs(arriving / rate - 1.0) <= kArrivalMismatch) {
+        m_arrivalOff = 0;
+        return;
+    }
+    if (++m_arrivalOff < 2) return;  // one window may hold a stall of the host
+    m_rateProblem = "the device's samples arrive at about " + hertz(arriving) + ", not at the " + hertz(rate) +
+                    (m_info ? " it says" : " its first timestamps gave") +
+                    " (over two 5 s windows): the rate is wrong, and so would every time in the recording be";
 }
 
 std::uint64_t BinaryStream::believedLoss(std::uint16_t sequence, std::uint64_t timestamp_us, double hostTime_s,

@@ -98,6 +98,7 @@ private:
     std::optional<double> m_clockRate_hz;
     std::uint64_t m_dataFrames = 0;
     std::optional<std::pair<double, std::uint64_t>> m_arrivalStart;  // host time, sample index
+    int m_arrivalOff = 0;                                            // consecutive arrival windows off the rate
     std::optional<std::string> m_rateProblem;
     std::uint32_t m_blockSequence = 0;
     std::size_t m_dataChannels = 0;

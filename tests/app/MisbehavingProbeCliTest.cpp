@@ -260,3 +260,21 @@ TEST(MisbehavingProbe, AnotherProbeOnThePortIsNotTakenForTheFirst)
     ASSERT_FALSE(told.empty());
     EXPECT_NE(told.front().note.find("EMU-1"), std::string::npos) << told.front().note;
 }
+
+// A device sampling at 1200 Hz whose INFO and clock both say 1000 Hz: the
+// arrival check only caught a factor of 2, so it was accepted and 6.11 s
+// were stored as 7.23 s. Two 5 s windows 20 % off now end the recording
+// with the reason, exit 1, what came before kept.
+TEST(MisbehavingProbe, ADeviceWhoseRateAndClockBothLieByTwentyPercentIsStopped)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("probe");
+    QProcess emulator;
+    ASSERT_TRUE(startEmulator(
+        emulator, link, {"--scenario", "panel-scan", "--rate", "1200", "--info-rate", "1000", "--clock-rate", "1000"}));
+    const auto result = runCli({"record", "--port", link, "--seconds", "20", "--db", dir.filePath("s.tactiscope")});
+    stopEmulator(emulator);
+    EXPECT_EQ(result.exitCode, 1) << result.out.toStdString();
+    EXPECT_TRUE(result.err.contains(QStringLiteral("arrive at about 1"))) << result.err.toStdString();
+    EXPECT_TRUE(result.err.contains(QStringLiteral("not at the 1000 Hz it says"))) << result.err.toStdString();
+}

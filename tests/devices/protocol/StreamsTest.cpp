@@ -140,12 +140,13 @@ TEST(BinaryStream, ALossNeverExceedsWhatTheHostSawTimeFor)
     StreamOutput out;
     tenFrames(stream, out);
     // Sequence and clock agree on 1000 lost frames (4 s), but the host saw
-    // 4 ms pass: since the first frame (host 4 ms) at most (0.040 s + 1 s of
-    // slack) × 1 kHz × 1.1 = 1144 samples may have gone by.
+    // 4 ms pass: since the first frame (host 4 ms) at most (0.040 s + 0.25 s
+    // of slack) × 1 kHz × 1.01 = 292 samples may have gone by (the bound
+    // was 10 % and 1 s looser: 1144).
     stream.push(data(1010, 4000u * 1010, 0), 0.044, out);
     ASSERT_EQ(out.blocks.size(), 11u);
-    EXPECT_EQ(out.blocks[10].firstSampleIndex(), 1144u);
-    EXPECT_EQ(stream.counters().samplesLost, 1104u);
+    EXPECT_EQ(out.blocks[10].firstSampleIndex(), 292u);
+    EXPECT_EQ(stream.counters().samplesLost, 252u);
     EXPECT_EQ(stream.counters().sequenceFaults, 1u);
 }
 
@@ -263,9 +264,15 @@ TEST(BinaryStream, AnEstimatedRateTheArrivalsContradictIsAProblem)
     StreamOutput out;
     // No INFO; the first two frames are stamped 40 ms apart for 4 samples
     // (an estimate of 100 Hz), but frames of 4 samples arrive every 4 ms,
-    // as a 1 kHz device's do, for 4 s.
+    // as a 1 kHz device's do, for 12 s (two 5 s windows after the first
+    // half second).
     stream.push(data(0, 0, 0), 0.004, out);
-    for (std::uint16_t k = 1; k < 1000; ++k) stream.push(data(k, 40000u * k, 0), 0.004 * (k + 1), out);
+    for (std::uint16_t k = 1; k < 3000; ++k) {
+        stream.push(data(k, 40000u * k, 0), 0.004 * (k + 1), out);
+        if (k == 1400) {
+            EXPECT_FALSE(stream.rateProblem());  // one window off may be a stall of the host
+        }
+    }
     EXPECT_DOUBLE_EQ(*stream.sampleRate_hz(), 100.0);
     ASSERT_TRUE(stream.rateProblem());
     EXPECT_NE(stream.rateProblem()->find("arrive at about"), std::string::npos) << *stream.rateProblem();
