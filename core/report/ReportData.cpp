@@ -113,6 +113,10 @@ ReportData gatherReport(storage::SessionSource& store, std::int64_t session, con
     data.derivedBasis = lanes.basis;
     data.derivedProblem = lanes.problem;
     for (const auto& lane : lanes.lanes) {
+        if (data.traces.size() == kMostReportTraces) {  // the rest are summarised, not read
+            ++data.tracesLeftOut;
+            continue;
+        }
         auto points = lane->overview(first, end - first, overviewPoints);
         // k_o is in the readings table, per press; a lane with nothing to
         // draw (Q over a range too long to read exactly) is left out.

@@ -42,6 +42,10 @@ struct CapacitiveBasis {
     double perMetre_f = 0.0;
 };
 
+// A report's plot is a page of lanes at most: a session of 2 500 channels
+// once took 7.4 GB and minutes for one image nobody could read.
+inline constexpr std::size_t kMostReportTraces = 24;
+
 struct ReportData {
     storage::SessionSummary session;
     std::string sensorName;  // the profile's name; empty when none was stored
@@ -57,6 +61,9 @@ struct ReportData {
     std::vector<storage::SampleGap> gaps;
     // The key plot's lanes, as the review shows them (core/derived/SessionLanes.h).
     std::vector<ReportTrace> traces;
+    // Lanes not plotted: a report plots at most kMostReportTraces (a page
+    // of lanes); the export holds every channel.
+    std::size_t tracesLeftOut = 0;
     std::string derivedBasis;    // what the derived lanes were computed with; empty without them
     std::string derivedProblem;  // why the mode's quantities could not be computed, if so
     std::optional<CapacitiveBasis> capacitive;

@@ -110,6 +110,12 @@ QString header(const core::report::ReportData& data)
                                             .arg(QLocale().toString(static_cast<qulonglong>(s.sampleCount)))
                                             .arg(losses));
     html += row(QObject::tr("Session"), QObject::tr("%1 (%2), %3").arg(s.id).arg(text(s.uuid), wordText(s.status)));
+    if (data.tracesLeftOut > 0)
+        html += row(QObject::tr("Plotted"),
+                    QObject::tr("the first %1 lanes; %2 more are not plotted (every channel is in the session's "
+                                "export: tactiscope-cli sessions export)")
+                        .arg(data.traces.size())
+                        .arg(QLocale().toString(static_cast<qulonglong>(data.tracesLeftOut))));
     if (!m.notes.empty()) html += row(QObject::tr("Notes"), text(m.notes));
     return html + QStringLiteral("</table>");
 }
