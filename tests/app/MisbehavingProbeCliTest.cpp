@@ -189,74 +189,80 @@ TEST(MisbehavingProbe, AProbeLostForGoodIsAGapToTheStopAnAlarmAndExitOne)
         << result.out.toStdString() << " (the store holds " << storedLost << " lost)";
 }
 
-TEST(MisbehavingProbe, AProbeThatComesBackChangedEndsTheRecordingWithWhatCameBefore)
+namespace {
+
+// A 6 s recording of a 1 kHz panel-scan probe (seed 1) that hangs up after
+// a second, replaced on the port by an emulator started with `second`.
+struct Replugged {
+    int exitCode = -1;
+    QString out, err;
+    std::int64_t session = 0;
+};
+
+Replugged recordAcrossAReplug(const QTemporaryDir& dir, const QStringList& second)
 {
-    QTemporaryDir dir;
     const QString link = dir.filePath("probe");
+    Replugged result;
     QProcess first;
-    ASSERT_TRUE(startEmulator(first, link, {"--scenario", "panel-scan", "--rate", "1000", "--seconds", "1"}));
+    if (!startEmulator(first, link, {"--scenario", "panel-scan", "--rate", "1000", "--seconds", "1", "--seed", "1"}))
+        return result;
     QProcess record;
     record.start(QStringLiteral(TACTISCOPE_CLI),
                  {"record", "--port", link, "--seconds", "6", "--db", dir.filePath("s.tactiscope")});
-    ASSERT_TRUE(record.waitForStarted());
-    ASSERT_TRUE(first.waitForFinished(10000));  // hung up after its second
-    // Back on the same port at another rate: another device, for the record.
-    QProcess second;
-    ASSERT_TRUE(startEmulator(second, link, {"--scenario", "panel-scan", "--rate", "500"}));
-    ASSERT_TRUE(record.waitForFinished(20000));
-    stopEmulator(second);
-    const QString out = QString::fromUtf8(record.readAllStandardOutput());
-    const QString err = QString::fromUtf8(record.readAllStandardError());
-    EXPECT_EQ(record.exitCode(), 1) << out.toStdString();
-    EXPECT_TRUE(err.contains(QStringLiteral("came back with other channels or another rate"))) << err.toStdString();
-    const std::int64_t id = sessionIdIn(out);
-    ASSERT_GT(id, 0) << out.toStdString();
+    if (!record.waitForStarted() || !first.waitForFinished(10000)) return result;  // hung up after its second
+    QProcess other;
+    if (!startEmulator(other, link, second)) return result;
+    record.waitForFinished(20000);
+    stopEmulator(other);
+    result.exitCode = record.exitCode();
+    result.out = QString::fromUtf8(record.readAllStandardOutput());
+    result.err = QString::fromUtf8(record.readAllStandardError());
+    result.session = sessionIdIn(result.out);
+    return result;
+}
 
+// Samples stored, not in a gap.
+std::uint64_t keptSamples(core::storage::SessionStore& store, std::int64_t session)
+{
+    std::uint64_t lost = 0;
+    for (const auto& gap : store.gaps(session)) lost += gap.count;
+    return store.sampleCount(session) - lost;
+}
+
+}  // namespace
+
+// Back on the same port at another rate: another device, for the record.
+TEST(MisbehavingProbe, AProbeThatComesBackChangedEndsTheRecordingWithWhatCameBefore)
+{
+    QTemporaryDir dir;
+    const auto r = recordAcrossAReplug(dir, {"--scenario", "panel-scan", "--rate", "500"});
+    EXPECT_EQ(r.exitCode, 1) << r.out.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("came back with other channels or another rate"))) << r.err.toStdString();
+    ASSERT_GT(r.session, 0) << r.out.toStdString();
     auto store = storeIn(dir);
-    EXPECT_DOUBLE_EQ(store.channels(id)[0].sampleRate_hz, 1000.0);  // nothing of the 500 Hz device mixed in
-    std::uint64_t kept = 0;
-    for (const auto& gap : store.gaps(id)) kept += gap.count;
-    kept = store.sampleCount(id) - kept;
-    EXPECT_NEAR(static_cast<double>(kept), 1000.0, 150.0);  // the first device's second
-    const auto told = alarms(store, id);
+    EXPECT_DOUBLE_EQ(store.channels(r.session)[0].sampleRate_hz, 1000.0);  // nothing of the 500 Hz device mixed in
+    EXPECT_NEAR(static_cast<double>(keptSamples(store, r.session)), 1000.0, 150.0);  // the first device's second
+    const auto told = alarms(store, r.session);
     ASSERT_FALSE(told.empty());
     EXPECT_NE(told.front().note.find("another rate"), std::string::npos) << told.front().note;
 }
 
 // Another probe of the same kind (same channels and rate, another serial
-// number) on the port a second after the first leaves: before, "the probe
-// was away 2.0 s and came back", both probes' samples in one session
-// labelled with the first, exit 0. Now the recording ends with what the
-// first one gave, an alarm names both, exit 1.
+// number: the emulator's is EMU-<seed>) on the port a second after the
+// first leaves: before, "the probe was away 2.0 s and came back", both
+// probes' samples in one session labelled with the first, exit 0. Now the
+// recording ends with what the first one gave, an alarm names both, exit 1.
 TEST(MisbehavingProbe, AnotherProbeOnThePortIsNotTakenForTheFirst)
 {
     QTemporaryDir dir;
-    const QString link = dir.filePath("probe");
-    QProcess first;
-    ASSERT_TRUE(
-        startEmulator(first, link, {"--scenario", "panel-scan", "--rate", "1000", "--seconds", "1", "--seed", "1"}));
-    QProcess record;
-    record.start(QStringLiteral(TACTISCOPE_CLI),
-                 {"record", "--port", link, "--seconds", "6", "--db", dir.filePath("s.tactiscope")});
-    ASSERT_TRUE(record.waitForStarted());
-    ASSERT_TRUE(first.waitForFinished(10000));
-    QProcess second;  // the emulator's serial number is EMU-<seed>
-    ASSERT_TRUE(startEmulator(second, link, {"--scenario", "panel-scan", "--rate", "1000", "--seed", "2"}));
-    ASSERT_TRUE(record.waitForFinished(20000));
-    stopEmulator(second);
-    const QString out = QString::fromUtf8(record.readAllStandardOutput());
-    const QString err = QString::fromUtf8(record.readAllStandardError());
-    EXPECT_EQ(record.exitCode(), 1) << out.toStdString();
-    EXPECT_TRUE(err.contains(QStringLiteral("another device came back on the port"))) << err.toStdString();
-    EXPECT_TRUE(err.contains(QStringLiteral("EMU-2, where"))) << err.toStdString();
-    const std::int64_t id = sessionIdIn(out);
-    ASSERT_GT(id, 0) << out.toStdString();
+    const auto r = recordAcrossAReplug(dir, {"--scenario", "panel-scan", "--rate", "1000", "--seed", "2"});
+    EXPECT_EQ(r.exitCode, 1) << r.out.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("another device came back on the port"))) << r.err.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("EMU-2, where"))) << r.err.toStdString();
+    ASSERT_GT(r.session, 0) << r.out.toStdString();
     auto store = storeIn(dir);
-    std::uint64_t kept = 0;
-    for (const auto& gap : store.gaps(id)) kept += gap.count;
-    kept = store.sampleCount(id) - kept;
-    EXPECT_NEAR(static_cast<double>(kept), 1000.0, 150.0);  // the first probe's second only
-    const auto told = alarms(store, id);
+    EXPECT_NEAR(static_cast<double>(keptSamples(store, r.session)), 1000.0, 150.0);  // the first probe's second only
+    const auto told = alarms(store, r.session);
     ASSERT_FALSE(told.empty());
     EXPECT_NE(told.front().note.find("EMU-1"), std::string::npos) << told.front().note;
 }
