@@ -493,14 +493,19 @@ void MainWindow::recordingEnded(const devices::session::RecordingSummary& summar
                              tr("The samples up to the stop are kept in session %1. Free space or choose another "
                                 "store, then record again.")
                                  .arg(summary.session)});
-    else if (summary.lostAt_s || !summary.stoppedBecause.empty())
+    else if (summary.lostAt_s)
         reportProblem(this, {tr("Probe lost"),
-                             summary.lostAt_s ? tr("The probe was lost at %1 s and did not come back before the stop.")
-                                                    .arg(fixedText(*summary.lostAt_s, 1))
-                                              : tr("The link to the probe failed during the recording."),
+                             tr("The probe was lost at %1 s and did not come back before the stop.")
+                                 .arg(fixedText(*summary.lostAt_s, 1)),
                              QString::fromStdString(summary.stoppedBecause),
                              tr("Session %1 keeps every sample up to the loss; the time after it is a gap with an "
                                 "alarm. Check the cable and the probe, then record again.")
+                                 .arg(summary.session)});
+    else if (!summary.stoppedBecause.empty())
+        reportProblem(this, {tr("Recording stopped"), tr("The link to the probe failed, so the recording stopped."),
+                             QString::fromStdString(summary.stoppedBecause),
+                             tr("Session %1 keeps every sample up to then, with an alarm; nothing after it was "
+                                "recorded. Connect the probe again and record to start a new session.")
                                  .arg(summary.session)});
     else if (summary.verdict)
         askVerdict(this, m_store,
@@ -792,6 +797,11 @@ void MainWindow::updateStatus()
     updateTimeBase();
     showDefectsOnTraces();
     if (const auto stopped = m_session->poll()) recordingEnded(*stopped);  // the disk stopped it
+    // A link that failed for good (another probe came back on the port, a
+    // rate that is not the device's) records nothing more: the recording
+    // ends with what came before, the operator is told why, and a new
+    // session starts only when they connect and record again.
+    if (isRecording() && m_session->stats().state == devices::AcquisitionState::Failed) stopRecording();
     // What the link noticed is in the record (an alarm) and told here.
     for (const auto& notice : m_session->takeLinkNotices()) {
         const QString text =

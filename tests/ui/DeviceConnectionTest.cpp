@@ -243,3 +243,48 @@ TEST(DevicePanel, TheEmulatorChosenInThePanelStreamsThroughAPtyWithItsCounters)
     EXPECT_FALSE(window.isConnected());
     EXPECT_EQ(stateText(window), QStringLiteral("—"));
 }
+
+// Another probe of the same kind on the port after an unplug (the
+// emulator's serial number is EMU-<seed>): the recording ends with the
+// first probe's samples, the operator is told why in a problem box, and
+// nothing of the second probe joins the session.
+TEST_F(DeviceConnectionStore, AnotherProbeOnThePortEndsTheRecordingAndSaysWhy)
+{
+    const std::string link = uniqueTempPath("other");
+    devices::emulator::EmulatorOptions options{
+        link, WireProtocol::Binary, "panel-scan", 500.0, std::nullopt, std::nullopt, 0.0, 10, 3};
+    auto emulator = std::make_unique<ProbeEmulator>(options);
+    emulator->start();
+    ui::MainWindow window;
+    window.setStorePath(QString::fromStdString(file("sessions.tactiscope")));
+    window.show();
+    window.connectDevice(QString::fromStdString(link), serialOpener(link));
+    ASSERT_TRUE(waitFor([&] { return stateText(window) == QStringLiteral("Streaming"); }, 6000));
+    ASSERT_TRUE(window.startRecording());
+    tactiscope::testing::runEventLoopFor(1000);
+
+    emulator.reset();  // the cable is pulled, and another probe plugged in
+    options.seed = 4;
+    emulator = std::make_unique<ProbeEmulator>(options);
+    emulator->start();
+    ASSERT_TRUE(waitFor([&] { return !window.isRecording(); }, 8000));
+    QMessageBox* box = nullptr;
+    ASSERT_TRUE(waitFor(
+        [&] {
+            for (auto* candidate : window.findChildren<QMessageBox*>())
+                if (candidate->detailedText().contains(QStringLiteral("another device came back on the port")) ||
+                    candidate->informativeText().contains(QStringLiteral("another device came back on the port")) ||
+                    candidate->text().contains(QStringLiteral("another device came back on the port")))
+                    box = candidate;
+            return box != nullptr;
+        },
+        3000));
+    EXPECT_FALSE(saveScreenshot(*box, QStringLiteral("another-probe")).isEmpty());
+
+    core::storage::SessionStore store(file("sessions.tactiscope"), core::storage::Database::Access::ReadOnly);
+    const auto sessions = store.sessions();
+    ASSERT_EQ(sessions.size(), 1u);
+    std::uint64_t lost = 0;
+    for (const auto& gap : store.gaps(sessions[0].id)) lost += gap.count;
+    EXPECT_LT(store.sampleCount(sessions[0].id) - lost, 1000u);  // about the first probe's second at 500 Hz
+}
