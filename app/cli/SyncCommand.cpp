@@ -51,6 +51,8 @@ int runSync(const QStringList& arguments)
         return kExitFailure;
     }
     for (const std::string& refusal : outcome.refused) printError(QString::fromStdString(refusal));
+    for (const std::string& kept : outcome.keptAtStation)
+        QTextStream(stderr) << "note: " << QString::fromStdString(kept) << '\n';
     QTextStream(stdout) << QString::fromStdString(core::storage::central::syncSummary(outcome)) << '\n';
     return outcome.refused.empty() ? kExitOk : kExitFailure;
 }

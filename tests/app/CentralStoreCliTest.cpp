@@ -224,12 +224,15 @@ TEST_F(CentralStoreCli, AVerdictAndANoteGivenAfterTheSyncFollowOnTheNext)
     QString panel;
     for (const auto& [uuid, station] : listed(m_stationA))
         if (runCli({"sessions", "--db", m_stationA, "show", uuid}).out.contains("panel-scan")) panel = uuid;
-    ASSERT_EQ(runCli({"sessions", "--db", m_stationA, "verdict", panel, "pass", "--by", "Ada", "--note", "a smudge"})
-                  .exitCode,
-              0);
     {
         core::storage::SessionStore store(m_stationA.toStdString());
         const auto id = *store.sessionWithUuid(panel.toStdString());
+        core::storage::VerdictDecision operatorSays;
+        operatorSays.role = core::VerdictRole::Operator;
+        operatorSays.verdict = core::Verdict::Pass;
+        operatorSays.decidedBy = "Ada";
+        operatorSays.note = "a smudge";
+        store.decideVerdict(id, operatorSays);
         store.addAnnotation(id, {0, 1.5, "Ada", "wiped", "2026-11-24T12:00:00.000Z", "2026-11-24T12:00:00.000Z"});
     }
     const CliResult again = sync(m_stationA, server("press_a"));
@@ -242,6 +245,14 @@ TEST_F(CentralStoreCli, AVerdictAndANoteGivenAfterTheSyncFollowOnTheNext)
     ASSERT_EQ(sync(m_stationA, server("press_a")).exitCode, 0);
     EXPECT_EQ(connect().query("SELECT count(*) FROM verdicts").text(0, 0), "3");
     EXPECT_EQ(connect().query("SELECT count(*) FROM annotations").text(0, 0), "2");
+    // A reviewer's decision made at the station stays there: a station's
+    // rows are its own facts (the sync says so and goes on).
+    ASSERT_EQ(runCli({"sessions", "--db", m_stationA, "verdict", panel, "defects-found", "--by", "Grace"}).exitCode, 0);
+    const CliResult fourth = sync(m_stationA, server("press_a"));
+    EXPECT_EQ(fourth.exitCode, 0) << fourth.err.toStdString();
+    EXPECT_TRUE(fourth.err.contains(QStringLiteral("its reviewer decisions stay at the station")))
+        << fourth.err.toStdString();
+    EXPECT_EQ(connect().query("SELECT count(*) FROM verdicts").text(0, 0), "3");
 }
 
 TEST_F(CentralStoreCli, ASyncKilledMidTransactionLeavesNothingAndTheNextMakesAnExactCopy)
@@ -371,6 +382,70 @@ TEST_F(CentralStoreCli, AUuidOnTheServerWithOtherSamplesIsRefusedNotOverwritten)
     EXPECT_EQ(r.out, "synced 0 sessions (0 M samples), 0 already there\n");
     EXPECT_EQ(fileBytes(exported(server("quality"), uuid, "json", "after.json").toStdString()),
               fileBytes(before.toStdString()));
+}
+
+// Each forbidden act, done directly through libpq with the product's own
+// roles (as psql would), found by an attack on the product: before, a
+// station could add a "reviewer" verdict under another person's name, set
+// a verdict with no trail row, un-complete a reviewed session to hide it
+// from every reviewer, and take future identity values (after which other
+// stations' syncs failed on a duplicate key); a reviewer could add an
+// "operator" decision. Each is refused now, and what is allowed still
+// works: a reviewer's own verdict, which the server makes the session's.
+TEST_F(CentralStoreCli, EveryForbiddenActIsRefusedToEachRole)
+{
+    ASSERT_EQ(sync(m_stationA, server("press_a")).exitCode, 0);
+    PgConnection owner = connect();
+    const std::string id = owner.query("SELECT min(id) FROM sessions").text(0, 0);
+    PgConnection station = connect("press_a");
+    PgConnection reviewer = connect("quality");
+    const std::string trail =
+        "INSERT INTO verdicts (session_id, role, verdict, decided_by, decided_utc) VALUES ($1, $2, 'pass', $3, "
+        "'2026-11-25T12:00:00Z') RETURNING id";
+    EXPECT_TRUE(refused(station, trail, {id, "reviewer", "quality"}));
+    EXPECT_TRUE(refused(station, "UPDATE sessions SET verdict = 'pass' WHERE id = $1 RETURNING id", {id}));
+    EXPECT_TRUE(refused(station, "UPDATE sessions SET complete = false WHERE id = $1 RETURNING id", {id}));
+    EXPECT_TRUE(refused(station,
+                        "INSERT INTO verdicts (session_id, role, verdict, decided_utc, added_by) VALUES ($1, "
+                        "'operator', 'pass', '2026-11-25T12:00:00Z', 'quality') RETURNING id",
+                        {id}));
+    EXPECT_TRUE(refused(station,
+                        "INSERT INTO verdicts (id, session_id, role, verdict, decided_utc) OVERRIDING SYSTEM VALUE "
+                        "VALUES (1000000, $1, 'operator', 'pass', '2026-11-25T12:00:00Z') RETURNING id",
+                        {id}));
+    EXPECT_TRUE(refused(station,
+                        "INSERT INTO sessions (id, uuid, station, mode, started_utc, status) OVERRIDING SYSTEM VALUE "
+                        "VALUES (1000000, '00000000-0000-4000-8000-000000000000', 'press_a', 'panel-scan', "
+                        "'2026-11-25T12:00:00Z', 'complete') RETURNING id",
+                        {}));
+    EXPECT_TRUE(refused(reviewer, trail, {id, "operator", "press_a"}));
+    EXPECT_TRUE(refused(reviewer, "UPDATE sessions SET verdict = 'pass' WHERE id = $1 RETURNING id", {id}));
+
+    // Allowed: a reviewer's own decision, which becomes the session's verdict.
+    const std::string before = owner.query("SELECT verdict FROM sessions WHERE id = $1", {id}).text(0, 0);
+    const std::string decided = before == "pass" ? "defects found" : "pass";
+    reviewer.query("INSERT INTO verdicts (session_id, role, verdict, decided_by, decided_utc) VALUES ($1, "
+                   "'reviewer', $2, 'Grace', '2099-01-01T00:00:00Z')",
+                   {id, decided});
+    EXPECT_EQ(owner.query("SELECT verdict FROM sessions WHERE id = $1", {id}).text(0, 0), decided);
+    // The station's next sync still goes (no squatted ids, nothing changed by hand).
+    EXPECT_EQ(sync(m_stationA, server("press_a")).exitCode, 0);
+}
+
+// Two syncs of one store at once: before, both copied exactly but exited 1
+// with dozens of false "duplicate key" lines. The second now waits for the
+// first (an advisory lock per station) and finds everything there.
+TEST_F(CentralStoreCli, TwoSyncsOfOneStoreAtOnceBothSucceed)
+{
+    QProcess first, second;
+    for (QProcess* sync : {&first, &second})
+        sync->start(QStringLiteral(TACTISCOPE_CLI), {"sync", "--db", m_stationA, "--server", server("press_a")});
+    for (QProcess* sync : {&first, &second}) {
+        ASSERT_TRUE(sync->waitForFinished(60000));
+        EXPECT_EQ(sync->exitCode(), 0) << sync->readAllStandardError().toStdString();
+    }
+    EXPECT_EQ(connect().query("SELECT count(*) FROM sessions").text(0, 0), "3");
+    expectSameExports(m_stationA, server("quality"));
 }
 
 TEST_F(CentralStoreCli, AStationCanNeitherDeleteNorChangeAnothersSession)

@@ -177,24 +177,61 @@ CREATE TABLE IF NOT EXISTS session_calibrations (
 );
 )sql";
 
-// Rights and row-level security. A station reads and adds its own rows; a
-// reviewer reads every finished session and adds notes and verdicts; only
-// the owner (who bypasses RLS) changes or deletes. Policies are dropped and
-// made again, so an upgrade can change them.
+// Rights and row-level security (docs/fleet.md, "Roles and rights"). A
+// station reads and adds its own rows, in its own name; a reviewer reads
+// every finished session and adds notes and reviewer verdicts in their own
+// name; only the owner (who bypasses RLS) changes or deletes. Nobody sets
+// an identity value (INSERT is granted on every column but the id, so
+// OVERRIDING SYSTEM VALUE is refused), an added_by (its default is the
+// login; a station's rows must name it as their station anyway), or a
+// session's verdict: the
+// server derives it from the verdict trail. A station's only update is the
+// sync's last step, its own unfinished session made complete. Rights are
+// revoked and given again, policies dropped and made again, so an upgrade
+// (`server init`) changes them.
 constexpr const char* kRights = R"sql(
+REVOKE ALL ON ALL TABLES IN SCHEMA public FROM tactiscope_station, tactiscope_reviewer;
 GRANT USAGE ON SCHEMA public TO tactiscope_station, tactiscope_reviewer;
-GRANT SELECT, INSERT ON sessions, channels, chunks, gaps, lod, events, readings, annotations, verdicts, zeros,
-    calibrations, session_calibrations TO tactiscope_station;
--- The sync's last step: its own unfinished session becomes complete; and
--- an operator's verdict given after the session was sent becomes its verdict.
-GRANT UPDATE (complete, checksum, verdict) ON sessions TO tactiscope_station;
-GRANT SELECT ON ALL TABLES IN SCHEMA public TO tactiscope_reviewer;
-GRANT INSERT ON annotations, verdicts TO tactiscope_reviewer;
-GRANT UPDATE (verdict) ON sessions TO tactiscope_reviewer;
-GRANT SELECT ON schema_version TO tactiscope_station, tactiscope_reviewer;
+GRANT SELECT ON ALL TABLES IN SCHEMA public TO tactiscope_station, tactiscope_reviewer;
+DO $rights$
+DECLARE
+    t text;
+    columns text;
+BEGIN
+    FOREACH t IN ARRAY ARRAY['sessions', 'channels', 'chunks', 'gaps', 'lod', 'events', 'readings', 'annotations',
+                             'verdicts', 'zeros', 'calibrations', 'session_calibrations'] LOOP
+        SELECT string_agg(quote_ident(column_name), ', ') INTO columns FROM information_schema.columns
+         WHERE table_schema = 'public' AND table_name = t
+           AND column_name NOT IN ('id', 'added_by')
+           AND NOT (t = 'sessions' AND column_name = 'verdict');
+        EXECUTE format('GRANT INSERT (%s) ON %I TO tactiscope_station', columns, t);
+        IF t IN ('annotations', 'verdicts') THEN
+            EXECUTE format('GRANT INSERT (%s) ON %I TO tactiscope_reviewer', columns, t);
+        END IF;
+    END LOOP;
+END
+$rights$;
+GRANT UPDATE (complete, checksum) ON sessions TO tactiscope_station;
 
 DROP POLICY IF EXISTS reviewer_verdict ON sessions;
-CREATE POLICY reviewer_verdict ON sessions FOR UPDATE TO tactiscope_reviewer USING (complete) WITH CHECK (complete);
+DROP POLICY IF EXISTS station_completes ON sessions;
+CREATE POLICY station_completes ON sessions AS RESTRICTIVE FOR UPDATE TO tactiscope_station
+    USING (NOT complete) WITH CHECK (complete);
+
+-- The session's verdict is the latest decision of its trail, set by the
+-- server as each decision arrives (the function runs as the owner).
+CREATE OR REPLACE FUNCTION verdict_from_trail() RETURNS trigger LANGUAGE plpgsql SECURITY DEFINER
+    SET search_path = public AS $trail$
+BEGIN
+    UPDATE sessions SET verdict = (SELECT v.verdict FROM verdicts v WHERE v.session_id = NEW.session_id
+                                   ORDER BY v.decided_utc DESC, v.id DESC LIMIT 1)
+     WHERE id = NEW.session_id;
+    RETURN NULL;
+END
+$trail$;
+REVOKE ALL ON FUNCTION verdict_from_trail() FROM PUBLIC;
+DROP TRIGGER IF EXISTS verdict_from_trail ON verdicts;
+CREATE TRIGGER verdict_from_trail AFTER INSERT ON verdicts FOR EACH ROW EXECUTE FUNCTION verdict_from_trail();
 )sql";
 
 // The tables whose rows belong to a session: a station's rows are those of
@@ -223,9 +260,18 @@ std::string sessionTablePolicies(const std::string& table)
     const std::string finished = "EXISTS (SELECT 1 FROM sessions s WHERE s.id = session_id AND s.complete)";
     std::string sql = policies(table, own, finished);
     if (table == "annotations" || table == "verdicts") {
+        // A station's verdicts are the automatic one and its operators'; a
+        // reviewer's are reviewer verdicts (decided_by names the person;
+        // added_by, the login, cannot be set).
+        const std::string reviewerRole = table == "verdicts" ? " AND role = 'reviewer'" : "";
         sql += "DROP POLICY IF EXISTS reviewer_adds ON " + table + ";\n";
         sql += "CREATE POLICY reviewer_adds ON " + table + " FOR INSERT TO tactiscope_reviewer WITH CHECK (" +
-               finished + " AND added_by = current_user);\n";
+               finished + " AND added_by = current_user" + reviewerRole + ");\n";
+        if (table == "verdicts") {
+            sql += "DROP POLICY IF EXISTS station_decides ON verdicts;\n";
+            sql += "CREATE POLICY station_decides ON verdicts AS RESTRICTIVE FOR INSERT TO tactiscope_station "
+                   "WITH CHECK (role IN ('automatic', 'operator') AND added_by = current_user);\n";
+        }
     }
     return sql;
 }

@@ -412,11 +412,12 @@ std::vector<std::int64_t> CentralStore::sessionsUsingCalibration(std::int64_t ca
 
 std::int64_t CentralStore::decideVerdict(std::int64_t session, const VerdictDecision& d)
 {
+    // The server sets the session's verdict from its trail: a decision is
+    // one row of it, on a finished session this role may see.
     PgTransaction transaction(m_connection);
-    const PgResult updated =
-        m_connection.query("UPDATE sessions SET verdict = $1 WHERE id = $2 AND complete RETURNING id",
-                           PgParams().text(std::string(toString(d.verdict))).int64(session));
-    if (updated.rows() == 0)
+    const PgResult visible =
+        m_connection.query("SELECT id FROM sessions WHERE id = $1 AND complete", PgParams().int64(session));
+    if (visible.rows() == 0)
         throw StorageError("session " + std::to_string(session) + " is not in the central store, or this role (" +
                            m_connection.user() + ") may not decide its verdict");
     const std::int64_t id = addToVerdictTrail(session, d);

@@ -7,9 +7,11 @@
 #include "core/text/TextChecks.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <thread>
 
 namespace tactiscope::core::storage::central {
 namespace {
@@ -101,13 +103,15 @@ public:
     // Decisions and notes made at the station after the session was sent
     // (an operator's verdict comes once the recording has ended) join the
     // server's, which may hold a reviewer's too; the session's verdict is
-    // then the latest decision's. Returns whether anything was added.
+    // then the latest decision's (the server derives it). Returns whether
+    // anything was added.
     bool addLaterRecords(std::int64_t local, std::int64_t id)
     {
         PgTransaction transaction(m_db);
         bool added = false;
         const auto trail = m_central.verdicts(id);
         for (const VerdictDecision& d : m_local.verdicts(local)) {
+            if (d.role == VerdictRole::Reviewer) continue;  // a station sends no reviewer decision
             const auto same = [&d](const VerdictDecision& t) {
                 return t.role == d.role && t.verdict == d.verdict && t.decidedBy == d.decidedBy &&
                        t.decidedUtc == d.decidedUtc;
@@ -116,10 +120,6 @@ public:
             m_central.addToVerdictTrail(id, d);
             added = true;
         }
-        if (added)
-            m_db.query("UPDATE sessions SET verdict = (SELECT verdict FROM verdicts WHERE session_id = $1 "
-                       "ORDER BY decided_utc DESC, id DESC LIMIT 1) WHERE id = $1",
-                       PgParams().int64(id));
         const auto notes = m_central.annotations(id);
         for (const Annotation& a : m_local.annotations(local)) {
             const auto same = [&a](const Annotation& n) {
@@ -141,14 +141,15 @@ private:
         p.text(s.uuid).text(m_station).text(std::string(toString(m.mode))).text(m.subject).text(m.operatorName);
         p.text(m.site).text(m.notes).text(s.startedUtc);
         s.endedUtc.empty() ? p.null() : p.text(s.endedUtc);
-        p.text(std::string(toString(s.status))).text(s.verdict ? std::string(toString(*s.verdict)) : std::string());
+        // No verdict: the server derives it from the trail sent with it.
+        p.text(std::string(toString(s.status)));
         p.text(m.deviceModel).text(m.deviceSerial).text(m.deviceFirmware).text(m.profileJson);
         p.text(m.calibrationsJson).text(s.appVersion).int64(s.id);
         return m_db
             .query("INSERT INTO sessions (uuid, station, mode, subject, operator, site, notes, started_utc, ended_utc, "
-                   "status, verdict, device_model, device_serial, device_firmware, profile_json, calibrations_json, "
+                   "status, device_model, device_serial, device_firmware, profile_json, calibrations_json, "
                    "app_version, station_id) VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14, $15, "
-                   "$16, $17, $18) "
+                   "$16, $17) "
                    "RETURNING id",
                    p)
             .int64(0, 0);
@@ -216,7 +217,8 @@ private:
         }
         for (const Annotation& a : m_local.annotations(local)) m_central.addAnnotation(id, a);
         for (const SessionZero& z : m_local.zeros(local)) m_central.addZero(id, z);
-        for (const VerdictDecision& d : m_local.verdicts(local)) m_central.addToVerdictTrail(id, d);
+        for (const VerdictDecision& d : m_local.verdicts(local))
+            if (d.role != VerdictRole::Reviewer) m_central.addToVerdictTrail(id, d);  // a station sends none
     }
 
     // The calibrations the session used, shared with the station's other
@@ -278,6 +280,40 @@ std::map<std::string, OnServer> sessionsOnServer(PgConnection& db, const std::ve
     return result;
 }
 
+// One station's sync at a time, by a session-level advisory lock on the
+// station's name: tried once a second (a blocking wait would outlast the
+// connection's answer deadline), released when the sync ends.
+class StationLock {
+public:
+    StationLock(PgConnection& db, const std::string& station, std::stop_token stop)
+        : m_db(db),
+          m_key(station)
+    {
+        for (;;) {
+            m_held = m_db.query("SELECT pg_try_advisory_lock(7427, hashtext($1))", {m_key}).text(0, 0) == "t";
+            if (m_held || stop.stop_requested()) return;
+            std::this_thread::sleep_for(std::chrono::seconds(1));
+        }
+    }
+    ~StationLock()
+    {
+        if (!m_held || !m_db.isOpen()) return;
+        try {
+            m_db.query("SELECT pg_advisory_unlock(7427, hashtext($1))", {m_key});
+        } catch (const StorageError&) {
+            // The connection is gone: the server released the lock with it.
+        }
+    }
+    StationLock(const StationLock&) = delete;
+    StationLock& operator=(const StationLock&) = delete;
+    bool held() const { return m_held; }
+
+private:
+    PgConnection& m_db;
+    std::string m_key;
+    bool m_held = false;
+};
+
 // What a sync sends: all but the sessions still being recorded.
 std::vector<SessionSummary> finishedSessions(const std::vector<SessionSummary>& all)
 {
@@ -319,15 +355,26 @@ SyncOutcome syncToCentral(SessionStore& local, CentralStore& central, const std:
                           const std::function<void(const SyncProgress&)>& progress)
 {
     SyncOutcome outcome;
+    const std::string name = station.empty() ? central.connection().user() : station;
+    // Two syncs of one station at once would both send what is missing and
+    // collide on its keys: the second waits for the first, then finds
+    // everything there.
+    const StationLock lock(central.connection(), name, stop);
+    if (!lock.held()) return outcome;  // stopped while waiting
     const std::vector<SessionSummary> finished = finishedSessions(local.sessions());
     const auto there = sessionsOnServer(central.connection(), finished);
-    SessionUpload upload(local, central, station.empty() ? central.connection().user() : station);
+    SessionUpload upload(local, central, name);
     SyncProgress done{0, static_cast<int>(finished.size())};
     // Oldest first, as they were recorded.
     for (auto s = finished.rbegin(); s != finished.rend(); ++s, ++done.done) {
         if (progress) progress(done);
         if (stop.stop_requested()) break;  // between sessions: each is whole or not sent
-        if (!text::isUuid(s->uuid)) {      // stored before imports checked them: reported, and the others go
+        const auto decisions = local.verdicts(s->id);
+        if (std::ranges::any_of(decisions, [](const auto& d) { return d.role == VerdictRole::Reviewer; }))
+            outcome.keptAtStation.push_back("session " + s->uuid +
+                                            ": its reviewer decisions stay at the station (a reviewer decides on "
+                                            "the central store: sessions --db SERVER verdict)");
+        if (!text::isUuid(s->uuid)) {  // stored before imports checked them: reported, and the others go
             outcome.refused.push_back("session " + std::to_string(s->id) + " ('" + s->uuid.substr(0, 40) +
                                       "') has no valid uuid; it was not sent");
             continue;

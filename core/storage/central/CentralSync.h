@@ -25,6 +25,10 @@ struct SyncOutcome {
     int updated = 0;                   // of those already there: verdicts or notes decided since added
     std::uint64_t samplesSent = 0;     // values, over all channels
     std::vector<std::string> refused;  // one sentence per session the server would not take
+    // Reviewer decisions made at the station: a station's rows are its
+    // own facts, so these are not sent (a reviewer decides on the central
+    // store); one sentence per session holding any.
+    std::vector<std::string> keptAtStation;
 };
 
 // "synced 2 sessions (1.2 M samples), 1 already there": millions with one
