@@ -13,5 +13,6 @@ namespace tactiscope::fuzz {
 void binaryStream(const std::uint8_t* data, std::size_t size);
 void textStream(const std::uint8_t* data, std::size_t size);
 void csvReader(const std::uint8_t* data, std::size_t size);  // CsvFuzzEntryPoint.cpp
+void storeFile(const std::uint8_t* data, std::size_t size);  // StoreFuzzEntryPoint.cpp
 
 }  // namespace tactiscope::fuzz

@@ -39,3 +39,13 @@ TEST(FuzzCorpusReplay, CsvReaderSurvivesEveryKeptInput)
 {
     EXPECT_GE(replay(TACTISCOPE_SOURCE_DIR "/fuzz/corpus/csv", tactiscope::fuzz::csvReader), 100u);
 }
+
+// Store files: two valid ones (a panel scan and a palpation) and the
+// five damages an attack found (a first index of 4e18, a gap of 2^62, the
+// channel rows deleted, a negative and a 2^40 chunk count), each read
+// whole as a reviewer's store: refused with a StorageError, never a crash,
+// an allocation of gigabytes or NaN rows without end.
+TEST(FuzzCorpusReplay, StoreFilesSurviveEveryKeptInput)
+{
+    EXPECT_GE(replay(TACTISCOPE_SOURCE_DIR "/fuzz/corpus/store", tactiscope::fuzz::storeFile), 7u);
+}
