@@ -92,44 +92,56 @@ TEST(DeviceConnection, AFailedConnectionIsShownNotThrown)
     EXPECT_FALSE(saveScreenshot(*box, QStringLiteral("connect-error")).isEmpty());
 }
 
-class DeviceConnectionStore : public tactiscope::testing::TempDirectoryTest {};
+class DeviceConnectionStore : public tactiscope::testing::TempDirectoryTest {
+protected:
+    // A 500 Hz panel-scan emulator (seed 3) at a new link `name`, the window
+    // connected to it, recording for a second.
+    void recordFromAnEmulator(const char* name)
+    {
+        m_link = uniqueTempPath(name);
+        m_options = {m_link, WireProtocol::Binary, "panel-scan", 500.0, std::nullopt, std::nullopt, 0.0, 10, 3};
+        m_emulator = std::make_unique<ProbeEmulator>(m_options);
+        m_emulator->start();
+        m_window.setStorePath(QString::fromStdString(file("sessions.tactiscope")));
+        m_window.show();
+        m_window.connectDevice(QString::fromStdString(m_link), serialOpener(m_link));
+        ASSERT_TRUE(waitFor([&] { return stateText(m_window) == QStringLiteral("Streaming"); }, 6000));
+        ASSERT_TRUE(m_window.startRecording());
+        tactiscope::testing::runEventLoopFor(1000);
+    }
+
+    std::string m_link;
+    devices::emulator::EmulatorOptions m_options;
+    std::unique_ptr<ProbeEmulator> m_emulator;
+    ui::MainWindow m_window;  // closed before the emulator goes
+};
 
 TEST_F(DeviceConnectionStore, AnUnplugWhileRecordingIsShownAsLostAndTheSessionKeepsBothParts)
 {
-    const std::string link = uniqueTempPath("unplug");
-    const devices::emulator::EmulatorOptions options{
-        link, WireProtocol::Binary, "panel-scan", 500.0, std::nullopt, std::nullopt, 0.0, 10, 3};
-    auto emulator = std::make_unique<ProbeEmulator>(options);
-    emulator->start();
-    ui::MainWindow window;
-    window.setStorePath(QString::fromStdString(file("sessions.tactiscope")));
-    window.show();
-    window.connectDevice(QString::fromStdString(link), serialOpener(link));
-    ASSERT_TRUE(waitFor([&] { return stateText(window) == QStringLiteral("Streaming"); }, 6000));
-    ASSERT_TRUE(window.startRecording());
-    tactiscope::testing::runEventLoopFor(1000);
-    EXPECT_EQ(counter(window, "lostLabel"), 0u);
+    recordFromAnEmulator("unplug");
+    if (HasFatalFailure()) return;
+    EXPECT_EQ(counter(m_window, "lostLabel"), 0u);
 
-    emulator.reset();  // the cable is pulled
+    m_emulator.reset();  // the cable is pulled
     EXPECT_TRUE(waitFor(
         [&] {
-            const QString state = stateText(window);
+            const QString state = stateText(m_window);
             return state == QStringLiteral("Device lost") || state == QStringLiteral("Reconnecting…");
         },
         3000));
-    EXPECT_TRUE(child<QLabel>(window, "linkLabel")->text().startsWith(stateText(window)));
-    EXPECT_TRUE(window.isConnected());  // the session goes on through the outage
-    EXPECT_TRUE(window.isRecording());
+    EXPECT_TRUE(child<QLabel>(m_window, "linkLabel")->text().startsWith(stateText(m_window)));
+    EXPECT_TRUE(m_window.isConnected());  // the session goes on through the outage
+    EXPECT_TRUE(m_window.isRecording());
     tactiscope::testing::runEventLoopFor(1000);
 
-    emulator = std::make_unique<ProbeEmulator>(options);  // plugged back in
-    emulator->start();
-    ASSERT_TRUE(waitFor([&] { return stateText(window) == QStringLiteral("Streaming"); }, 8000));
+    m_emulator = std::make_unique<ProbeEmulator>(m_options);  // plugged back in
+    m_emulator->start();
+    ASSERT_TRUE(waitFor([&] { return stateText(m_window) == QStringLiteral("Streaming"); }, 8000));
     // The outage is counted as lost samples, about a second's worth or more.
-    EXPECT_TRUE(waitFor([&] { return counter(window, "lostLabel") >= 400; }, 3000)) << counter(window, "lostLabel");
-    EXPECT_GE(counter(window, "reconnectLabel"), 1u);
+    EXPECT_TRUE(waitFor([&] { return counter(m_window, "lostLabel") >= 400; }, 3000)) << counter(m_window, "lostLabel");
+    EXPECT_GE(counter(m_window, "reconnectLabel"), 1u);
     tactiscope::testing::runEventLoopFor(1000);
-    window.stopRecording();
+    m_window.stopRecording();
 
     core::storage::SessionStore store(file("sessions.tactiscope"), core::storage::Database::Access::ReadOnly);
     const auto sessions = store.sessions();
@@ -250,28 +262,18 @@ TEST(DevicePanel, TheEmulatorChosenInThePanelStreamsThroughAPtyWithItsCounters)
 // nothing of the second probe joins the session.
 TEST_F(DeviceConnectionStore, AnotherProbeOnThePortEndsTheRecordingAndSaysWhy)
 {
-    const std::string link = uniqueTempPath("other");
-    devices::emulator::EmulatorOptions options{
-        link, WireProtocol::Binary, "panel-scan", 500.0, std::nullopt, std::nullopt, 0.0, 10, 3};
-    auto emulator = std::make_unique<ProbeEmulator>(options);
-    emulator->start();
-    ui::MainWindow window;
-    window.setStorePath(QString::fromStdString(file("sessions.tactiscope")));
-    window.show();
-    window.connectDevice(QString::fromStdString(link), serialOpener(link));
-    ASSERT_TRUE(waitFor([&] { return stateText(window) == QStringLiteral("Streaming"); }, 6000));
-    ASSERT_TRUE(window.startRecording());
-    tactiscope::testing::runEventLoopFor(1000);
+    recordFromAnEmulator("other");
+    if (HasFatalFailure()) return;
 
-    emulator.reset();  // the cable is pulled, and another probe plugged in
-    options.seed = 4;
-    emulator = std::make_unique<ProbeEmulator>(options);
-    emulator->start();
-    ASSERT_TRUE(waitFor([&] { return !window.isRecording(); }, 8000));
+    m_emulator.reset();  // the cable is pulled, and another probe plugged in
+    m_options.seed = 4;
+    m_emulator = std::make_unique<ProbeEmulator>(m_options);
+    m_emulator->start();
+    ASSERT_TRUE(waitFor([&] { return !m_window.isRecording(); }, 8000));
     QMessageBox* box = nullptr;
     ASSERT_TRUE(waitFor(
         [&] {
-            for (auto* candidate : window.findChildren<QMessageBox*>())
+            for (auto* candidate : m_window.findChildren<QMessageBox*>())
                 if (candidate->detailedText().contains(QStringLiteral("another device came back on the port")) ||
                     candidate->informativeText().contains(QStringLiteral("another device came back on the port")) ||
                     candidate->text().contains(QStringLiteral("another device came back on the port")))
