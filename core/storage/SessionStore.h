@@ -122,7 +122,6 @@ private:
     void appendChunk(std::int64_t session, std::span<const SampleBlock> run);
     void rebuildPyramids(std::int64_t session);
     lod::LodTable pyramid(std::int64_t session, std::size_t channel);
-    void checkSampleEnd(std::int64_t session, std::size_t channelCount, std::uint64_t samples);
     void showCrashedRecordingsInterrupted(std::span<SessionSummary> summaries);
 
     Database m_db;

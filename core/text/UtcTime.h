@@ -3,7 +3,9 @@
 #pragma once
 
 #include <chrono>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace tactiscope::core::text {
 
@@ -12,5 +14,10 @@ inline std::string utcNow()
 {
     return utcIso8601(std::chrono::system_clock::now());
 }
+
+// Seconds since 1970 of a time in that form (fractional seconds of any
+// length, or none), or nothing for any other text: stored times come from
+// files and servers this program does not trust.
+std::optional<double> utcSeconds(std::string_view iso8601);
 
 }  // namespace tactiscope::core::text

@@ -4,8 +4,9 @@
 // the server to the same bytes as from the station, a second sync sending
 // nothing, a sync killed mid-transaction leaving nothing and the next one
 // an exact copy, an unreachable server exiting 1 with the station's store
-// untouched, a uuid with other samples refused, and a station unable to
-// delete or change another's session.
+// untouched, a uuid with other samples refused, a station unable to
+// delete or change another's session or to add rows readers cannot bound,
+// and a reviewer meeting older unbounded rows as damage.
 #include "core/storage/SessionStore.h"
 #include "core/storage/central/PgConnection.h"
 #include "support/CliRunner.h"
@@ -472,4 +473,89 @@ TEST_F(CentralStoreCli, AStationCanNeitherDeleteNorChangeAnothersSession)
     const CliResult owner = runCli({"sessions", "--db", server(), "delete", uuid});
     EXPECT_EQ(owner.exitCode, 0) << owner.err.toStdString();
     EXPECT_EQ(listed(server("quality")).size(), 2U);
+}
+
+// Schema 5: no station can add a row a reviewer's reader could not bound
+// (before, a gap of 2⁶² samples hung reviewers' export and analyze), nor add
+// anything to a session once it is finished. What is allowed is tried too,
+// so each refusal is the bound's and not some other error's.
+TEST_F(CentralStoreCli, AStationCannotAddRowsThatReadersCannotBound)
+{
+    ASSERT_EQ(sync(m_stationA, server("press_a")).exitCode, 0);
+    PgConnection station = connect("press_a");
+    const std::string finished = station.query("SELECT min(id) FROM sessions").text(0, 0);
+    EXPECT_TRUE(refused(station, "INSERT INTO gaps (session_id, first_index, count) VALUES ($1, 0, 5) RETURNING 1",
+                        {finished}));
+    EXPECT_TRUE(refused(station,
+                        "INSERT INTO events (session_id, kind, start_s, end_s) VALUES ($1, 'marker', 1, 1) "
+                        "RETURNING 1",
+                        {finished}));
+
+    // A session being sent, as the sync makes one.
+    const std::string sending =
+        station
+            .query("INSERT INTO sessions (uuid, station, mode, started_utc, status, app_version) VALUES "
+                   "('00000000-0000-4000-8000-00000000000a', 'press_a', 'panel-scan', '2026-11-25T12:00:00.000Z', "
+                   "'complete', 'test') RETURNING id")
+            .text(0, 0);
+    const auto allowed = [&](const std::string& sql) { EXPECT_NO_THROW(station.query(sql, {sending})) << sql; };
+    const auto refusedHere = [&](const std::string& sql) { EXPECT_TRUE(refused(station, sql, {sending})) << sql; };
+    refusedHere("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz) VALUES "
+                "($1, 0, 'A', 'V', 'raw', 'NaN') RETURNING 1");
+    refusedHere("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz) VALUES "
+                "($1, 0, 'A', 'V', 'raw', 'Infinity') RETURNING 1");
+    allowed("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz) VALUES "
+            "($1, 0, 'A', 'V', 'raw', 1000)");
+    const std::string chunk = "INSERT INTO chunks (session_id, first_index, first_time_s, count, samples) VALUES ";
+    refusedHere(chunk + "($1, 0, 0, 3, decode('0000000000000000', 'hex')) RETURNING 1");  // 8 bytes, not 12
+    refusedHere(chunk + "($1, 0, 0, 1099511627776, decode('00000000', 'hex')) RETURNING 1");
+    refusedHere(chunk + "($1, -1, 0, 1, decode('00000000', 'hex')) RETURNING 1");
+    refusedHere(chunk + "($1, 4000000000000000000, 0, 1, decode('00000000', 'hex')) RETURNING 1");
+    refusedHere(chunk + "($1, 0, 'NaN', 1, decode('00000000', 'hex')) RETURNING 1");
+    allowed(chunk + "($1, 0, 0, 2, decode('0000000000000000', 'hex'))");
+    const std::string gap = "INSERT INTO gaps (session_id, first_index, count) VALUES ";
+    refusedHere(gap + "($1, 2, 4611686018427387904) RETURNING 1");
+    refusedHere(gap + "($1, -5, 5) RETURNING 1");
+    allowed(gap + "($1, 2, 1000)");
+    refusedHere("INSERT INTO lod (session_id, channel, level, first_bucket, count, buckets) VALUES "
+                "($1, 0, 0, 0, 1099511627776, decode('00', 'hex')) RETURNING 1");
+    refusedHere("INSERT INTO events (session_id, kind, start_s, end_s) VALUES ($1, 'marker', 'NaN', 'NaN') "
+                "RETURNING 1");
+    refusedHere("INSERT INTO annotations (session_id, time_s, text, created_utc, modified_utc) VALUES "
+                "($1, '-Infinity', 'x', '2026-11-25T12:00:00Z', '2026-11-25T12:00:00Z') RETURNING 1");
+}
+
+// Rows older than schema 5's bounds, or the owner's, are the readers' to
+// judge: a reviewer meets a gap of 2⁶² samples, or one running past the
+// session's end, as damage named with its session (exit 2 at once), not as
+// an export writing NaN rows until the disk is full; the other sessions
+// still read.
+TEST_F(CentralStoreCli, AReviewerMeetsRowsPastTheSessionsBoundsAsDamage)
+{
+    ASSERT_EQ(sync(m_stationA, server("press_a")).exitCode, 0);
+    PgConnection owner = connect();
+    const auto sessionIds = owner.query("SELECT id, uuid FROM sessions ORDER BY id");
+    ASSERT_EQ(sessionIds.rows(), 3);
+    owner.run("ALTER TABLE gaps DROP CONSTRAINT gaps_bounds");  // as a store from before schema 5
+    owner.query("INSERT INTO gaps (session_id, first_index, count) VALUES ($1, 4000000, 4611686018427387904)",
+                {sessionIds.text(0, 0)});
+    // Inside the server's bounds, past this session's end by hours.
+    owner.query("INSERT INTO gaps (session_id, first_index, count) VALUES ($1, 4000000, 100000000000)",
+                {sessionIds.text(1, 0)});
+    for (int row : {0, 1}) {
+        const QString uuid = QString::fromStdString(sessionIds.text(row, 1));
+        for (const QStringList& command :
+             {QStringList{"export", uuid, "--format", "csv", "--output", m_dir.filePath("x.csv")},
+              QStringList{"show", uuid}}) {
+            const CliResult r = runCli(QStringList{"sessions", "--db", server("quality")} + command);
+            EXPECT_EQ(r.exitCode, 2) << command.join(' ').toStdString() << r.out.left(300).toStdString();
+            EXPECT_TRUE(r.err.contains("damaged") && r.err.contains("runs past the session's end") &&
+                        r.err.contains("session " + QString::fromStdString(sessionIds.text(row, 0))))
+                << r.err.toStdString();
+        }
+        const CliResult analyze = runCli({"analyze", "--db", server("quality"), "--session", uuid});
+        EXPECT_EQ(analyze.exitCode, 2) << analyze.err.toStdString();
+    }
+    const QString intact = QString::fromStdString(sessionIds.text(2, 1));
+    EXPECT_EQ(runCli({"sessions", "--db", server("quality"), "show", intact}).exitCode, 0);
 }

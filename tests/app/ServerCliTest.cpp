@@ -27,12 +27,13 @@ protected:
     static QString owner() { return QString::fromStdString(s_server->conninfo()); }
 
     // A row of a session as `station` adds it; its id.
-    static std::string addSession(PgConnection& as, const std::string& uuid, bool complete)
+    // A session still arriving, as the sync begins one.
+    static std::string addSession(PgConnection& as, const std::string& uuid)
     {
         return as
-            .query("INSERT INTO sessions (uuid, mode, started_utc, status, app_version, complete) "
-                   "VALUES ($1, 'panel-scan', '2026-11-24T10:00:00.000Z', 'complete', 'test', $2) RETURNING id",
-                   {uuid, complete ? "true" : "false"})
+            .query("INSERT INTO sessions (uuid, mode, started_utc, status, app_version) "
+                   "VALUES ($1, 'panel-scan', '2026-11-24T10:00:00.000Z', 'complete', 'test') RETURNING id",
+                   {uuid})
             .text(0, 0);
     }
 
@@ -63,7 +64,7 @@ TEST_F(ServerCli, InitMakesTheSchemaAndRolesAndASecondRunChangesNothing)
     EXPECT_EQ(db.query("SELECT count(*) FROM pg_roles WHERE rolname IN ('tactiscope_station', 'tactiscope_reviewer')")
                   .text(0, 0),
               "2");
-    EXPECT_EQ(db.query("SELECT version FROM schema_version").text(0, 0), "4");
+    EXPECT_EQ(db.query("SELECT version FROM schema_version").text(0, 0), "5");
     for (const char* table : {"sessions", "channels", "chunks", "gaps", "lod", "events", "readings", "annotations",
                               "verdicts", "zeros", "calibrations", "session_calibrations"})
         EXPECT_EQ(db.query("SELECT count(*) FROM pg_tables WHERE tablename = $1", {std::string(table)}).text(0, 0), "1")
@@ -92,11 +93,21 @@ TEST_F(ServerCli, AStationKeepsToItsOwnRowsAndAReviewerOnlyReadsAndDecides)
     PgConnection a(s_server->conninfo("press_a")), b(s_server->conninfo("press_b")),
         reviewer(s_server->conninfo("quality"));
 
-    const std::string finished = addSession(a, "11111111-1111-4111-8111-111111111111", true);
-    addSession(a, "22222222-2222-4222-8222-222222222222", false);  // still arriving
+    // One sent whole (its channel, a chunk, then marked complete as the
+    // sync's last step), one still arriving.
+    const std::string finished = addSession(a, "11111111-1111-4111-8111-111111111111");
+    a.query("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz) VALUES ($1, 0, 'a', '', "
+            "'strain', 1000)",
+            {finished});
     a.query("INSERT INTO chunks (session_id, first_index, first_time_s, count, samples) VALUES ($1, 0, 0, 1, "
             "'\\x0000803f')",
             {finished});
+    a.query("UPDATE sessions SET complete = true WHERE id = $1", {finished});
+    addSession(a, "22222222-2222-4222-8222-222222222222");
+    EXPECT_TRUE(refused(a, "INSERT INTO sessions (uuid, mode, started_utc, status, app_version, complete) VALUES "
+                           "('44444444-4444-4444-8444-444444444444', 'panel-scan', '2026-11-24T10:00:00.000Z', "
+                           "'complete', 'test', true)"))
+        << "a session is complete only by the sync's last step, after its rows";
     EXPECT_EQ(a.query("SELECT station FROM sessions WHERE id = $1", {finished}).text(0, 0), "press_a");
     EXPECT_EQ(a.query("SELECT count(*) FROM sessions").text(0, 0), "2");
 

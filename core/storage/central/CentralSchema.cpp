@@ -177,6 +177,61 @@ CREATE TABLE IF NOT EXISTS session_calibrations (
 );
 )sql";
 
+// Schema 5: bounds on every number a reader sizes something by, so no
+// station can add a row that hangs or exhausts a reviewer's reader (the
+// readers check each session's layout too: SessionBounds). NOT VALID: they
+// hold for every row added from now on; rows already there are the
+// readers' to judge. Times must be finite: PostgreSQL orders NaN above
+// Infinity, so "< 'Infinity'" refuses both. 2⁵⁰ samples is 3 500 years at
+// 10 kHz; a chunk holds at most kMostChunkSamples (2²⁶) samples.
+constexpr const char* kBounds = R"sql(
+ALTER TABLE channels DROP CONSTRAINT IF EXISTS channels_bounds;
+ALTER TABLE channels ADD CONSTRAINT channels_bounds
+    CHECK (position >= 0 AND position < 100000 AND sample_rate_hz > 0 AND sample_rate_hz <= 1e9) NOT VALID;
+ALTER TABLE chunks DROP CONSTRAINT IF EXISTS chunks_bounds;
+ALTER TABLE chunks ADD CONSTRAINT chunks_bounds
+    CHECK (first_index >= 0 AND first_index <= 1125899906842624 AND count <= 67108864
+           AND first_time_s > '-Infinity' AND first_time_s < 'Infinity') NOT VALID;
+ALTER TABLE gaps DROP CONSTRAINT IF EXISTS gaps_bounds;
+ALTER TABLE gaps ADD CONSTRAINT gaps_bounds
+    CHECK (first_index >= 0 AND count <= 1125899906842624 AND first_index + count <= 1125899906842624) NOT VALID;
+ALTER TABLE lod DROP CONSTRAINT IF EXISTS lod_bounds;
+ALTER TABLE lod ADD CONSTRAINT lod_bounds
+    CHECK (channel >= 0 AND level >= 0 AND level < 64 AND first_bucket >= 0
+           AND first_bucket <= 1125899906842624 AND octet_length(buckets) = 8 * count::bigint) NOT VALID;
+ALTER TABLE zeros DROP CONSTRAINT IF EXISTS zeros_bounds;
+ALTER TABLE zeros ADD CONSTRAINT zeros_bounds CHECK (first_index >= 0) NOT VALID;
+ALTER TABLE events DROP CONSTRAINT IF EXISTS events_bounds;
+ALTER TABLE events ADD CONSTRAINT events_bounds
+    CHECK (start_s > '-Infinity' AND start_s < 'Infinity' AND end_s < 'Infinity') NOT VALID;
+ALTER TABLE readings DROP CONSTRAINT IF EXISTS readings_bounds;
+ALTER TABLE readings ADD CONSTRAINT readings_bounds
+    CHECK (start_s > '-Infinity' AND start_s < 'Infinity' AND end_s < 'Infinity') NOT VALID;
+ALTER TABLE annotations DROP CONSTRAINT IF EXISTS annotations_bounds;
+ALTER TABLE annotations ADD CONSTRAINT annotations_bounds
+    CHECK (time_s > '-Infinity' AND time_s < 'Infinity') NOT VALID;
+
+-- A chunk holds count samples of each of its session's channels, 4 bytes
+-- each (the sync sends the channel rows first). As the owner: it counts the
+-- channels whatever the inserting role may see.
+CREATE OR REPLACE FUNCTION chunk_fits_channels() RETURNS trigger LANGUAGE plpgsql SECURITY DEFINER
+    SET search_path = public AS $fits$
+DECLARE
+    channel_count bigint;
+BEGIN
+    SELECT count(*) INTO channel_count FROM channels WHERE session_id = NEW.session_id;
+    IF octet_length(NEW.samples) <> NEW.count::bigint * channel_count * 4 THEN
+        RAISE EXCEPTION 'a chunk of % samples of % channels holds % bytes, not %', NEW.count, channel_count,
+            NEW.count::bigint * channel_count * 4, octet_length(NEW.samples) USING ERRCODE = 'check_violation';
+    END IF;
+    RETURN NEW;
+END
+$fits$;
+REVOKE ALL ON FUNCTION chunk_fits_channels() FROM PUBLIC;
+DROP TRIGGER IF EXISTS chunk_fits_channels ON chunks;
+CREATE TRIGGER chunk_fits_channels BEFORE INSERT ON chunks FOR EACH ROW EXECUTE FUNCTION chunk_fits_channels();
+)sql";
+
 // Rights and row-level security (docs/fleet.md, "Roles and rights"). A
 // station reads and adds its own rows, in its own name; a reviewer reads
 // every finished session and adds notes and reviewer verdicts in their own
@@ -184,11 +239,12 @@ CREATE TABLE IF NOT EXISTS session_calibrations (
 // an identity value (INSERT is granted on every column but the id, so
 // OVERRIDING SYSTEM VALUE is refused), an added_by (its default is the
 // login; a station's rows must name it as their station anyway), or a
-// session's verdict: the
-// server derives it from the verdict trail. A station's only update is the
-// sync's last step, its own unfinished session made complete. Rights are
-// revoked and given again, policies dropped and made again, so an upgrade
-// (`server init`) changes them.
+// session's verdict: the server derives it from the verdict trail. A
+// session is added unfinished; a station's only update is the sync's last
+// step, its own unfinished session made complete (with its checksum), after
+// which nothing more of it may be added but notes and decisions. Rights
+// are revoked and given again, policies dropped and made again, so an
+// upgrade (`server init`) changes them.
 constexpr const char* kRights = R"sql(
 REVOKE ALL ON ALL TABLES IN SCHEMA public FROM tactiscope_station, tactiscope_reviewer;
 GRANT USAGE ON SCHEMA public TO tactiscope_station, tactiscope_reviewer;
@@ -203,7 +259,7 @@ BEGIN
         SELECT string_agg(quote_ident(column_name), ', ') INTO columns FROM information_schema.columns
          WHERE table_schema = 'public' AND table_name = t
            AND column_name NOT IN ('id', 'added_by')
-           AND NOT (t = 'sessions' AND column_name = 'verdict');
+           AND NOT (t = 'sessions' AND column_name IN ('verdict', 'complete', 'checksum'));
         EXECUTE format('GRANT INSERT (%s) ON %I TO tactiscope_station', columns, t);
         IF t IN ('annotations', 'verdicts') THEN
             EXECUTE format('GRANT INSERT (%s) ON %I TO tactiscope_reviewer', columns, t);
@@ -259,6 +315,14 @@ std::string sessionTablePolicies(const std::string& table)
     const std::string own = "EXISTS (SELECT 1 FROM sessions s WHERE s.id = session_id AND s.station = current_user)";
     const std::string finished = "EXISTS (SELECT 1 FROM sessions s WHERE s.id = session_id AND s.complete)";
     std::string sql = policies(table, own, finished);
+    if (table != "annotations" && table != "verdicts") {
+        // What a session holds is added while it is sent, never after: a
+        // finished session's samples, gaps and records stay as reviewed.
+        const std::string sending = "EXISTS (SELECT 1 FROM sessions s WHERE s.id = session_id AND NOT s.complete)";
+        sql += "DROP POLICY IF EXISTS station_adds_while_sending ON " + table + ";\n";
+        sql += "CREATE POLICY station_adds_while_sending ON " + table +
+               " AS RESTRICTIVE FOR INSERT TO tactiscope_station WITH CHECK (" + sending + ");\n";
+    }
     if (table == "annotations" || table == "verdicts") {
         // A station's verdicts are the automatic one and its operators'; a
         // reviewer's are reviewer verdicts (decided_by names the person;
@@ -284,6 +348,7 @@ void initCentralStore(PgConnection& connection)
     // running it at once wait for each other on the lock.
     std::string script = "BEGIN;\nSELECT pg_advisory_xact_lock(7426);\n";
     script += kSchema;
+    script += kBounds;
     script += kRights;
     script += policies("sessions", "station = current_user", "complete");
     script += policies("calibrations", "station = current_user", "true");

@@ -2,6 +2,7 @@
 #include "core/storage/central/CentralStore.h"
 
 #include "core/storage/ChunkCodec.h"
+#include "core/storage/SessionBounds.h"
 #include "core/storage/central/CentralSchema.h"
 #include "core/text/UtcTime.h"
 
@@ -178,8 +179,35 @@ std::optional<std::int64_t> CentralStore::sessionWithUuid(const std::string& uui
     return r.int64(0, 0);
 }
 
+void CentralStore::checkLayout(std::int64_t session)
+{
+    if (m_checked.contains(session)) return;
+    const PgResult s = m_connection.query(
+        "SELECT started_utc, coalesce(ended_utc, ''), (SELECT count(*) FROM channels WHERE session_id = s.id), "
+        "(SELECT min(sample_rate_hz) FROM channels WHERE session_id = s.id), "
+        "(SELECT max(sample_rate_hz) FROM channels WHERE session_id = s.id) FROM sessions s WHERE complete AND id = $1",
+        PgParams().int64(session), PgFormat::Binary);
+    if (s.rows() == 0) return;  // not listed: nothing of it is read
+    const auto started = text::utcSeconds(s.text(0, 0)), ended = text::utcSeconds(s.text(0, 1));
+    SessionBounds bounds(location(), session);
+    bounds.session(started && ended ? *ended - *started : 0.0, s.int64(0, 2), s.isNull(0, 3) ? 0.0 : s.real(0, 3),
+                   s.isNull(0, 4) ? 0.0 : s.real(0, 4));
+    const PgResult chunks = m_connection.query(
+        "SELECT first_index, count, octet_length(samples), first_time_s FROM chunks WHERE session_id = $1 "
+        "ORDER BY first_index",
+        PgParams().int64(session), PgFormat::Binary);
+    for (int i = 0; i < chunks.rows(); ++i)
+        bounds.chunk(chunks.int64(i, 0), chunks.int64(i, 1), chunks.int64(i, 2), chunks.real(i, 3));
+    const PgResult gaps =
+        m_connection.query("SELECT first_index, count FROM gaps WHERE session_id = $1 ORDER BY first_index",
+                           PgParams().int64(session), PgFormat::Binary);
+    for (int i = 0; i < gaps.rows(); ++i) bounds.gap(gaps.int64(i, 0), gaps.int64(i, 1));
+    m_checked.insert(session);
+}
+
 std::vector<StoredChannel> CentralStore::channels(std::int64_t session)
 {
+    checkLayout(session);
     const PgResult r = m_connection.query(
         "SELECT name, unit, kind, sample_rate_hz, role FROM channels WHERE session_id = $1 ORDER BY position",
         PgParams().int64(session), PgFormat::Binary);
@@ -193,6 +221,7 @@ std::vector<StoredChannel> CentralStore::channels(std::int64_t session)
 
 std::uint64_t CentralStore::sampleCount(std::int64_t session)
 {
+    checkLayout(session);
     const PgResult r = m_connection.query("SELECT " + kSampleEnd + " FROM (SELECT $1::bigint AS id) s",
                                           PgParams().int64(session), PgFormat::Binary);
     return static_cast<std::uint64_t>(r.int64(0, 0));
@@ -200,6 +229,7 @@ std::uint64_t CentralStore::sampleCount(std::int64_t session)
 
 std::vector<SampleGap> CentralStore::gaps(std::int64_t session)
 {
+    checkLayout(session);
     const PgResult r =
         m_connection.query("SELECT first_index, count FROM gaps WHERE session_id = $1 ORDER BY first_index",
                            PgParams().int64(session), PgFormat::Binary);
@@ -212,7 +242,6 @@ std::size_t CentralStore::readChannels(std::int64_t session, std::span<const std
                                        std::uint64_t firstIndex, std::uint64_t count,
                                        std::vector<std::vector<double>>& out)
 {
-    constexpr std::uint64_t kMostSamplesPerRead = std::uint64_t{1} << 30;  // as a station's store
     const std::size_t channelCount = this->channels(session).size();
     for (const std::size_t channel : channels)
         if (channel >= channelCount) throw StorageError(noChannel(session, channel));
@@ -235,11 +264,7 @@ std::size_t CentralStore::readChannels(std::int64_t session, std::span<const std
     for (int i = 0; i < r.rows(); ++i) {
         const auto chunkFirst = static_cast<std::uint64_t>(r.int64(i, 0));
         const auto chunkCount = static_cast<std::uint64_t>(r.int64(i, 1));
-        const auto blob = r.bytes(i, 2);
-        if (blob.size() != chunkCount * channelCount * 4)
-            throw StorageError("a sample chunk of session " + std::to_string(session) + " says it holds " +
-                               std::to_string(chunkCount) + " samples but has " + std::to_string(blob.size()) +
-                               " bytes; the central store is damaged");
+        const auto blob = r.bytes(i, 2);  // its size checked with the layout
         const std::uint64_t begin = std::max(chunkFirst, firstIndex);
         const std::uint64_t stop = std::min(chunkFirst + chunkCount, end);
         if (stop <= begin) continue;

@@ -9,6 +9,8 @@
 #include "core/storage/SessionSource.h"
 #include "core/storage/central/PgConnection.h"
 
+#include <set>
+
 namespace tactiscope::core::storage::central {
 
 class CentralStore : public SessionSource {
@@ -66,8 +68,14 @@ public:
 
 private:
     std::vector<std::int64_t> ids(const std::string& sql, std::int64_t parameter);
+    // A listed session's rows checked against its own bounds (SessionBounds)
+    // before any count read from the server sizes anything: the server's
+    // constraints hold for rows added since schema 5, not for older ones or
+    // the owner's. Once per session: a listed session never changes.
+    void checkLayout(std::int64_t session);
 
     PgConnection m_connection;
+    std::set<std::int64_t> m_checked;
 };
 
 }  // namespace tactiscope::core::storage::central

@@ -84,8 +84,8 @@ public:
     {
         PgTransaction transaction(m_db);
         const std::int64_t id = insertSession(s);
+        insertChannelsAndGaps(s.id, id);  // first: the server checks each chunk against the channels
         const std::uint64_t values = copyChunks(s.id, id);
-        insertChannelsAndGaps(s.id, id);
         copyPyramid(s.id, id);
         insertRecords(s.id, id);
         insertCalibrations(s.id, id);
