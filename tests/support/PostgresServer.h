@@ -8,6 +8,7 @@
 #include <csignal>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace tactiscope::testing {
 
@@ -32,9 +33,23 @@ public:
     void pause() const { signalAll(SIGSTOP); }
     void resume() const { signalAll(SIGCONT); }
 
+    // Kills every process of the server at once (SIGKILL), as an out-of-
+    // memory kill or a power cut of its host would, and waits until they are
+    // gone; start() brings it up again on the same data (crash recovery from
+    // its write-ahead log). Throws std::runtime_error when it cannot start.
+    void crash() const;
+    void start() const;
+
+    // CPU seconds the server has used (user and system): the postmaster,
+    // the backends it has reaped and those still running.
+    double cpuSeconds() const;
+
     static constexpr const char* kOwner = "tactiscope_owner";
 
 private:
+    // The postmaster, or 0 when it is not running, and its children.
+    int postmaster() const;
+    std::vector<int> children(int postmaster) const;
     void signalAll(int signal) const;
 
     std::filesystem::path m_folder;
