@@ -3,7 +3,8 @@
 // with their station names, and one opens for review from the server; the
 // background push of Session ▸ Central store… sends a station's sessions,
 // says none wait afterwards, and says why when the server cannot be
-// reached.
+// reached; a browser, a review and the status bar live through the server
+// being killed and started again.
 #include "core/storage/StoreWorker.h"
 #include "core/storage/central/CentralSchema.h"
 #include "core/storage/central/CentralSync.h"
@@ -11,6 +12,7 @@
 #include "ui/central/CentralStoreDialog.h"
 #include "ui/central/CentralStoreLink.h"
 #include "ui/central/CentralSyncController.h"
+#include "ui/review/ReviewPlot.h"
 #include "ui/review/ReviewWindow.h"
 #include "ui/review/ReviewWindows.h"
 #include "ui/review/SessionBrowser.h"
@@ -166,7 +168,63 @@ TEST_F(CentralStoreUi, AnUnreachableServerIsShownWithItsReasonAndTheSessionsWait
     EXPECT_EQ(child<QLabel>(*dialog, "waitingText")->text(), "not counted yet (the server has not been reached)");
     auto* field = child<QLabel>(window, "centralStoreLabel");
     EXPECT_TRUE(field->isVisible());
-    EXPECT_TRUE(field->text().contains("cannot send")) << field->text().toStdString();
+    EXPECT_TRUE(field->text().contains("server unreachable")) << field->text().toStdString();
     EXPECT_TRUE(field->toolTip().contains("cannot reach")) << field->toolTip().toStdString();
     tactiscope::testing::saveScreenshot(*dialog, "central-store-dialog-offline");
+}
+
+// PostgreSQL killed and started again under an open browser, a review and
+// the main window's status bar (issue 37). Before: both windows kept saying
+// "no connection to the server" until reopened, Refresh emptied the list,
+// and the status bar said "up to date" throughout.
+TEST_F(CentralStoreUi, ABrowserAReviewAndTheStatusBarLiveThroughAServerRestart)
+{
+    const std::string station = stationStore("press_a", 5);
+    sync(station, "press_a");
+    ui::MainWindow window;
+    window.show();
+    auto* link = window.findChild<ui::CentralStoreLink*>();
+    ASSERT_NE(link, nullptr);
+    link->controller()->setStorePath(QString::fromStdString(station));
+    link->controller()->setServer(QString::fromStdString(s_server->conninfo("press_a")), {});
+    auto* field = child<QLabel>(window, "centralStoreLabel");
+    ASSERT_TRUE(waitFor([&] { return field->text().contains("up to date"); }, 30000)) << field->text().toStdString();
+
+    ui::ReviewWindows reviews(&window);
+    ui::SessionBrowser* browser = reviews.showCentralBrowser(QString::fromStdString(s_server->conninfo("quality")));
+    QTableView* table = browser->table();
+    ASSERT_TRUE(waitFor([&] { return table->model()->rowCount() == 3; }, 10000));
+    for (int row = 0; row < 3; ++row)
+        if (table->model()->index(row, ui::SessionTableModel::Subject).data().toString() == "press_a-17")
+            table->selectRow(row);
+    browser->openSelected();
+    ui::ReviewWindow* review = nullptr;
+    ASSERT_TRUE(waitFor([&] { return (review = window.findChild<ui::ReviewWindow*>()) != nullptr; }, 10000));
+    auto* reviewProblem = child<QLabel>(*review, "problemText");
+    auto* browserProblem = child<QLabel>(*browser, "problemText");
+    auto* count = child<QLabel>(*browser, "countText");
+
+    s_server->crash();
+    browser->reload();
+    ASSERT_TRUE(waitFor([&] { return browserProblem->isVisible(); }, 20000));
+    EXPECT_EQ(table->model()->rowCount(), 3) << "the rows as last read stay";
+    EXPECT_TRUE(count->text().contains("as last read")) << count->text().toStdString();
+    review->plot()->reload();
+    EXPECT_TRUE(reviewProblem->isVisible());
+    EXPECT_TRUE(reviewProblem->text().contains("read again when you move or zoom"))
+        << reviewProblem->text().toStdString();
+    link->controller()->syncNow();
+    ASSERT_TRUE(waitFor([&] { return field->text().contains("server unreachable"); }, 20000))
+        << field->text().toStdString();
+
+    s_server->start();
+    browser->reload();
+    ASSERT_TRUE(waitFor([&] { return count->text() == "3 of 3 sessions"; }, 20000)) << count->text().toStdString();
+    EXPECT_FALSE(browserProblem->isVisible());
+    review->plot()->reload();
+    EXPECT_FALSE(reviewProblem->isVisible()) << reviewProblem->text().toStdString();
+    EXPECT_EQ(review->store().sampleCount(review->sessionId()), 6000U);
+    link->controller()->syncNow();
+    ASSERT_TRUE(waitFor([&] { return field->text().contains("up to date"); }, 20000)) << field->text().toStdString();
+    EXPECT_TRUE(field->toolTip().contains("last answered")) << field->toolTip().toStdString();
 }

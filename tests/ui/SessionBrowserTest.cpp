@@ -15,6 +15,7 @@
 #include "support/TempDirectory.h"
 #include "support/WaitFor.h"
 
+#include <QCalendarWidget>
 #include <QComboBox>
 #include <QDateEdit>
 #include <QHeaderView>
@@ -206,4 +207,35 @@ TEST_F(SessionBrowserTest, DeleteAsksFirstAndRemovesExactlyTheSelected)
     EXPECT_FALSE(store.session(m_ids[59]).has_value());
     EXPECT_FALSE(store.session(m_ids[58]).has_value());
     EXPECT_EQ(store.sessions().size(), static_cast<std::size_t>(kSessions - 2));
+}
+
+// Issue 37: the browser opens ready to use. Before, the first row had a
+// focus frame but no selection (Enter did nothing), and the date filter's
+// calendar opened on January 2000.
+TEST_F(SessionBrowserTest, OpensWithTheNewestSelectedAndTheCalendarOnToday)
+{
+    ui::SessionBrowser browser(std::make_shared<core::storage::StoreWorker>(m_path.toStdString()));
+    browser.show();
+    std::vector<std::vector<std::int64_t>> opened;
+    QObject::connect(&browser, &ui::SessionBrowser::openSessions,
+                     [&](const std::vector<std::int64_t>& ids) { opened.push_back(ids); });
+    ASSERT_EQ(browser.selectedSessions(), std::vector<std::int64_t>{m_ids.back()});  // newest first
+    QTest::keyClick(browser.table(), Qt::Key_Return);
+    ASSERT_EQ(opened.size(), 1U);
+    EXPECT_EQ(opened.front(), std::vector<std::int64_t>{m_ids.back()});
+
+    // A reload (as after a verdict changed in a review) keeps the selection.
+    browser.table()->selectRow(5);
+    const auto chosen = browser.selectedSessions();
+    browser.reload();
+    EXPECT_EQ(browser.selectedSessions(), chosen);
+
+    auto* from = child<QDateEdit>(browser, "fromDate");
+    QCalendarWidget* calendar = from->calendarWidget();
+    QTest::mouseClick(from, Qt::LeftButton, {}, QPoint(from->width() - 6, from->height() / 2));  // its arrow
+    ASSERT_TRUE(calendar->isVisible());
+    EXPECT_EQ(calendar->yearShown(), QDate::currentDate().year());
+    EXPECT_EQ(calendar->monthShown(), QDate::currentDate().month());
+    calendar->window()->hide();
+    EXPECT_EQ(from->date(), from->minimumDate()) << "showing the calendar chose no date";
 }

@@ -5,6 +5,7 @@
 #include "ui/central/CentralSyncController.h"
 
 #include <QLabel>
+#include <QLocale>
 #include <QStatusBar>
 
 namespace tactiscope::ui {
@@ -56,9 +57,14 @@ void CentralStoreLink::showState()
 {
     m_field->setVisible(m_controller->configured());
     const CentralSyncState& s = m_controller->state();
+    // While the minute's look runs, the last word stands.
+    if (s.running && s.checking) return;
     QString state;
     if (s.running)
         state = tr("sending…");
+    else if (s.unreachable)
+        state = s.waiting && *s.waiting > 0 ? tr("server unreachable, %1 waiting").arg(*s.waiting)
+                                            : tr("server unreachable");
     else if (!s.lastError.isEmpty())
         state = s.waiting ? tr("cannot send, %1 waiting").arg(*s.waiting) : tr("cannot send");
     else if (s.waiting)
@@ -66,8 +72,13 @@ void CentralStoreLink::showState()
     else
         state = tr("not reached yet");
     m_field->setText(tr("Central store: <a href=\"central\">%1</a>").arg(state.toHtmlEscaped()));
-    m_field->setToolTip(s.lastError.isEmpty() ? tr("Where this station's sessions are sent (Session ▸ Central store…)")
-                                              : s.lastError);
+    const QString reached =
+        s.lastReached.isValid()
+            ? tr("The server last answered at %1.").arg(QLocale().toString(s.lastReached.time(), QLocale::ShortFormat))
+            : tr("The server has not answered yet.");
+    m_field->setToolTip(s.lastError.isEmpty()
+                            ? tr("Where this station's sessions are sent (Session ▸ Central store…). %1").arg(reached)
+                            : s.lastError + QLatin1Char('\n') + reached);
     m_field->setStyleSheet(s.lastError.isEmpty() ? QString() : QStringLiteral("color: #b00020"));
 }
 

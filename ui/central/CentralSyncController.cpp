@@ -20,6 +20,7 @@ const QString kStationKey = QStringLiteral("central/station");
 struct CentralSyncController::Result {
     QString outcome;
     QString error;
+    bool unreachable = false;
     std::optional<int> waiting;
 };
 
@@ -29,8 +30,12 @@ CentralSyncController::CentralSyncController(QObject* parent)
       m_station(QSettings().value(kStationKey).toString())
 {
     m_retry.setSingleShot(true);
-    m_retry.setInterval(kRetryMinutes * 60 * 1000);
-    connect(&m_retry, &QTimer::timeout, this, &CentralSyncController::syncNow);
+    connect(&m_retry, &QTimer::timeout, this, &CentralSyncController::check);
+}
+
+void CentralSyncController::check()
+{
+    start(true);
 }
 
 CentralSyncController::~CentralSyncController()
@@ -69,8 +74,13 @@ void CentralSyncController::sessionRecorded()
 
 void CentralSyncController::syncNow()
 {
+    start(false);
+}
+
+void CentralSyncController::start(bool look)
+{
     if (m_state.running) {
-        m_again = true;
+        m_again = m_again || !look;
         return;
     }
     if (!configured() || m_storePath.isEmpty()) return;
@@ -81,6 +91,7 @@ void CentralSyncController::syncNow()
     }
     m_retry.stop();
     m_state.running = true;
+    m_state.checking = look;
     m_state.done = m_state.total = 0;
     emit stateChanged();
     if (m_worker.joinable()) m_worker.join();  // the last one is over: it said so
@@ -109,6 +120,9 @@ void CentralSyncController::syncNow()
                     QString::fromStdString(outcome.refused.front()) +
                     (outcome.refused.size() > 1 ? tr(" (and %1 more)").arg(outcome.refused.size() - 1) : QString());
             result.waiting = core::storage::central::sessionsToSync(local, central);
+        } catch (const core::storage::central::CentralUnreachable& e) {
+            result.error = QString::fromStdString(e.what());
+            result.unreachable = true;
         } catch (const std::exception& e) {
             result.error = QString::fromStdString(e.what());
         }
@@ -120,8 +134,11 @@ void CentralSyncController::syncNow()
 void CentralSyncController::finished(const Result& result)
 {
     m_state.running = false;
+    m_state.checking = false;
     m_state.lastAttempt = QDateTime::currentDateTime();
     m_state.lastError = result.error;
+    m_state.unreachable = result.unreachable;
+    if (!result.unreachable) m_state.lastReached = m_state.lastAttempt;
     if (!result.outcome.isEmpty()) m_state.lastOutcome = result.outcome;
     if (result.waiting) {
         m_state.waiting = result.waiting;
@@ -130,8 +147,10 @@ void CentralSyncController::finished(const Result& result)
         *m_state.waiting += m_recordedSince;  // still waiting, with those recorded since
         m_recordedSince = 0;
     }
-    // Offline or refused: try again later, so the station catches up alone.
-    if (!result.error.isEmpty() || (m_state.waiting && *m_state.waiting > 0)) m_retry.start();
+    // Offline or refused: try again in a few minutes, so the station catches
+    // up alone. All sent: look again in a minute, so "up to date" stays true.
+    const bool behind = !result.error.isEmpty() || (m_state.waiting && *m_state.waiting > 0);
+    m_retry.start(behind ? kRetryMinutes * 60 * 1000 : kCheckSeconds * 1000);
     emit stateChanged();
     if (std::exchange(m_again, false)) syncNow();
 }

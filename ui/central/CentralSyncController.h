@@ -2,9 +2,10 @@
 // (Session ▸ Central store…), this station's finished and interrupted
 // sessions are pushed to it in the background (CentralSync) at start, after
 // each recording, on demand, and every few minutes while the server cannot
-// be reached, so a station offline for days catches up by itself. It keeps
-// what the user sees: how many sessions wait, the last outcome and the last
-// error. The server's address is kept in the settings without a password
+// be reached, so a station offline for days catches up by itself; while all
+// is sent it looks again every minute, so what the status bar says about
+// the server stays true. It keeps what the user sees: how many sessions
+// wait, the last outcome and the last error. The server's address is kept in the settings without a password
 // (libpq takes that from ~/.pgpass).
 #pragma once
 
@@ -20,11 +21,14 @@ namespace tactiscope::ui {
 
 struct CentralSyncState {
     bool running = false;
+    bool checking = false;       // the running one is the minute's look, not a send asked for
     int done = 0, total = 0;     // sessions looked at, while running
     std::optional<int> waiting;  // sessions not yet on the server; none until first counted
     QDateTime lastAttempt;       // local time
     QString lastOutcome;         // "synced 2 sessions (1.2 M samples), 1 already there"
     QString lastError;           // empty when the last attempt went through
+    bool unreachable = false;    // the last attempt did not reach the server (lastError says why)
+    QDateTime lastReached;       // local time the server last answered
 };
 
 class CentralSyncController : public QObject {
@@ -48,6 +52,7 @@ public:
     const CentralSyncState& state() const { return m_state; }
 
     static constexpr int kRetryMinutes = 5;
+    static constexpr int kCheckSeconds = 60;
 
 signals:
     void stateChanged();
@@ -55,6 +60,8 @@ signals:
 private:
     struct Result;
     void finished(const Result& result);
+    void check();  // the timer's: a sync that shows as a look, not a send
+    void start(bool look);
 
     QString m_storePath;
     QString m_server;

@@ -255,9 +255,11 @@ void ReviewPlot::reload()
                                                           from_s(), to_s(), pixels));
     } catch (const core::storage::StorageError& e) {
         // Called from a timer: an exception must not reach the event loop.
-        emit readFailed(tr("The samples cannot be read: %1").arg(QString::fromStdString(e.what())));
+        emit readFailed(tr("The samples cannot be read: %1. They are read again when you move or zoom.")
+                            .arg(QString::fromStdString(e.what())));
         return;
     }
+    emit samplesRead();
     m_windows = std::move(read);
     for (std::size_t c = 0; c < m_lanes.lanes.size(); ++c) {
         const auto& window = m_windows[c];

@@ -83,7 +83,7 @@ public:
     const core::storage::TraceWindow& shown(std::size_t channel) const { return m_windows.at(channel); }
     // Reads the shown span again now instead of at the next event-loop turn;
     // a store that can no longer be read leaves the lanes as they were and
-    // says so through readFailed.
+    // says so through readFailed; the next read that works says samplesRead.
     void reload();
     void saveImage(const QString& path) const;  // PNG or SVG by suffix
 
@@ -91,6 +91,7 @@ signals:
     void rangeChanged(double from_s, double to_s);
     void cursorPinned(double time_s);
     void readFailed(const QString& error);
+    void samplesRead();
 
 private:
     void syncRange(QCPAxisRect* source);

@@ -208,7 +208,7 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionSour
             [this](const std::function<void(core::derived::LaneOptions&)>& change) { return changeLanes(change); },
             m_plot->derivedProblem()};
         m_account = account(context, this);
-        connect(m_account, &ReviewAccount::recordsChanged, this, &ReviewWindow::refreshRecords);
+        connect(m_account, &ReviewAccount::recordsChanged, this, &ReviewWindow::recordsChanged);
         connect(m_account, &ReviewAccount::spanChosen, this, [this](double start_s, double end_s) {
             m_plot->centreOn(0.5 * (start_s + end_s), std::max(2.0, 2.0 * (end_s - start_s)));
             m_plot->setCursorTime(start_s);
@@ -238,7 +238,7 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionSour
 
     m_replay.setInterval(40);
     connect(&m_replay, &QTimer::timeout, this, &ReviewWindow::advanceReplay);
-    connect(m_plot, &ReviewPlot::readFailed, this, &ReviewWindow::showProblem);
+    watchPlot();
     if (!m_plot->derivedProblem().empty())
         showProblem(tr("The physical quantities cannot be computed (%1): the stored channels are shown.")
                         .arg(text(m_plot->derivedProblem())));
@@ -276,7 +276,7 @@ bool ReviewWindow::rebuildPlot()
     delete m_plot->parentWidget()->layout()->replaceWidget(m_plot, plot);  // the old item is ours to delete
     delete m_plot;
     m_plot = plot;
-    connect(m_plot, &ReviewPlot::readFailed, this, &ReviewWindow::showProblem);
+    watchPlot();
     refreshRecords();  // the markers
     m_plot->setRange(from_s, to_s);
     if (cursor) m_plot->setCursorTime(*cursor);
@@ -547,6 +547,7 @@ QString ReviewWindow::decideVerdict(core::Verdict verdict, const QString& note)
         return tr("The verdict was not saved: %1").arg(text(e.what()));
     }
     refreshHeader();
+    emit sessionChanged();
     statusBar()->showMessage(tr("Verdict \"%1\" saved by %2.").arg(wordText(verdict), name));
     return {};
 }
@@ -588,7 +589,7 @@ QString ReviewWindow::addNoteAt(double time_s, const QString& value)
     } catch (const core::storage::StorageError& e) {
         return tr("The note was not saved: %1").arg(text(e.what()));
     }
-    refreshRecords();
+    recordsChanged();
     return {};
 }
 
@@ -600,7 +601,7 @@ QString ReviewWindow::editNote(std::int64_t annotation, const QString& value)
     } catch (const core::storage::StorageError& e) {
         return tr("The note was not saved: %1").arg(text(e.what()));
     }
-    refreshRecords();
+    recordsChanged();
     return {};
 }
 
@@ -615,7 +616,7 @@ QString ReviewWindow::deleteNote(std::int64_t annotation)
     } catch (const core::storage::StorageError& e) {
         return tr("The note was not deleted: %1").arg(text(e.what()));
     }
-    refreshRecords();
+    recordsChanged();
     statusBar()->showMessage(tr("Note deleted; Ctrl+Z brings it back."));
     return {};
 }
@@ -629,7 +630,7 @@ QString ReviewWindow::undoDelete()
         return tr("The note was not brought back: %1").arg(text(e.what()));
     }
     m_deleted.reset();
-    refreshRecords();
+    recordsChanged();
     return {};
 }
 
@@ -759,6 +760,24 @@ void ReviewWindow::exportWithDialog(const QString& title, const QString& filter,
     if (QFileInfo(path).suffix().isEmpty()) path += QLatin1Char('.') + suffix;
     const QString error = write(path);
     if (!error.isEmpty()) showProblem(error);
+}
+
+void ReviewWindow::recordsChanged()
+{
+    refreshRecords();
+    emit sessionChanged();
+}
+
+void ReviewWindow::watchPlot()
+{
+    connect(m_plot, &ReviewPlot::readFailed, this, [this](const QString& message) {
+        showProblem(message);
+        m_readProblem = message;
+    });
+    connect(m_plot, &ReviewPlot::samplesRead, this, [this] {
+        if (!m_readProblem.isEmpty() && m_problem->text() == m_readProblem) m_problem->hide();
+        m_readProblem.clear();
+    });
 }
 
 void ReviewWindow::showProblem(const QString& message)

@@ -84,11 +84,16 @@ public:
     QString exportCsv(const QString& csvPath, bool visibleRangeOnly);
     QString savePlot(const QString& imagePath);
 
+signals:
+    // Its verdict or notes were changed here: a browser listing it reads again.
+    void sessionChanged();
+
 private:
     ReviewWindow(const QString& storePath, std::unique_ptr<core::storage::SessionSource> store,
                  core::storage::SessionSummary session, QWidget* parent);
     void createActions();
     void refreshRecords();
+    void recordsChanged();  // this window changed them: shown, and said (sessionChanged)
     void advanceReplay();
     void askNoteText(const QString& title, const QString& text, std::function<QString(const QString&)> apply);
     void editSelectedNote();
@@ -97,6 +102,8 @@ private:
     void exportWithDialog(const QString& title, const QString& filter, const QString& suffix,
                           const std::function<QString(const QString&)>& write);
     void showProblem(const QString& text);
+    // The plot's read problems are shown, and hidden again once it reads.
+    void watchPlot();
     void refreshHeader();
     bool rebuildPlot();  // with m_laneOptions, keeping the view; false (and said) when it cannot
     // The reviewer's name; empty (and the name box focused, with the
@@ -113,6 +120,7 @@ private:
     ReviewAccount* m_account = nullptr;
     core::derived::LaneOptions m_laneOptions;
     QLabel* m_problem = nullptr;
+    QString m_readProblem;  // the plot's, while shown
     QSpinBox* m_speed = nullptr;
     QAction* m_playAction = nullptr;
     QTimer m_replay;

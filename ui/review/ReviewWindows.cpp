@@ -90,10 +90,17 @@ void ReviewWindows::reviewIn(const QString& storePath, const std::vector<std::in
             windows, [&](const ReviewWindow* w) { return w->storePath() == storePath && w->sessionId() == id; });
         ReviewWindow* window = open != windows.end() ? *open : nullptr;
         QString error;
-        if (!window) window = ReviewWindow::open(storePath, id, m_owner, error);
         if (!window) {
-            problems << error;
-            continue;
+            window = ReviewWindow::open(storePath, id, m_owner, error);
+            if (!window) {
+                problems << error;
+                continue;
+            }
+            // A verdict or note changed in the review shows in the browser at once.
+            connect(window, &ReviewWindow::sessionChanged, this, [this, storePath] {
+                SessionBrowser* browser = storePath == m_storePath ? m_browser.data() : m_centralBrowser.data();
+                if (browser && browser->storePath() == storePath) browser->reload();
+            });
         }
         window->show();
         window->raise();

@@ -10,6 +10,7 @@
 #include "ui/calibration/WizardText.h"
 #include "ui/review/SessionTableModel.h"
 
+#include <QCalendarWidget>
 #include <QComboBox>
 #include <QDateEdit>
 #include <QDialogButtonBox>
@@ -36,6 +37,29 @@ using core::storage::SessionSource;
 
 const QDate kAnyDate(2000, 1, 1);  // the date edits' "any" value
 
+// A date edit at "any" (its minimum, 2000-01-01) opens its calendar on
+// this month, not on January 2000.
+class CalendarOnToday : public QObject {
+public:
+    explicit CalendarOnToday(QDateEdit* edit)
+        : QObject(edit),
+          m_edit(edit)
+    {
+        edit->calendarWidget()->installEventFilter(this);
+    }
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (event->type() == QEvent::Show && m_edit->date() == kAnyDate) {
+            const QDate today = QDate::currentDate();
+            m_edit->calendarWidget()->setCurrentPage(today.year(), today.month());
+        }
+        return QObject::eventFilter(watched, event);
+    }
+
+private:
+    QDateEdit* m_edit;
+};
+
 QDateEdit* dateEdit(QWidget* parent, const QString& name)
 {
     auto* edit = new QDateEdit(kAnyDate, parent);
@@ -44,6 +68,7 @@ QDateEdit* dateEdit(QWidget* parent, const QString& name)
     edit->setSpecialValueText(QObject::tr("any"));
     edit->setCalendarPopup(true);
     edit->setDisplayFormat(QStringLiteral("yyyy-MM-dd"));
+    new CalendarOnToday(edit);
     return edit;
 }
 
@@ -210,6 +235,13 @@ void SessionBrowser::reload()
     if (m_to->date() != kAnyDate) filter.startedBefore = utcStartOf(m_to->date().addDays(1));
     const auto failed = [this](const QString& error) {
         showProblem(tr("The store cannot be read: %1").arg(error));
+        if (m_central) {
+            // A server away for a while: the rows stay as last read, and
+            // the next Refresh connects again.
+            m_count->setText(tr("The list is as last read; Refresh (F5) tries again"));
+            updateButtons();
+            return;
+        }
         showListing({});
     };
     if (m_central) {
@@ -234,7 +266,16 @@ void SessionBrowser::showListing(Listing listing)
     if (listing.total > 0) fillChoices(m_verdict, listing.verdicts);  // an unread store keeps the choices
     if (m_status->currentIndex() > 0)
         std::erase_if(listing.shown, [&](const auto& s) { return wordText(s.status) != m_status->currentText(); });
+    // The selection survives a reload (a verdict changed in a review); the
+    // first row is selected when nothing was, so Enter opens it.
+    const auto selected = selectedSessions();
     m_model->setSessions(std::move(listing.shown));
+    for (int row = 0; row < m_sorted->rowCount(); ++row) {
+        const QModelIndex index = m_sorted->index(row, 0);
+        if (std::ranges::find(selected, index.data(SessionTableModel::kIdRole).toLongLong()) != selected.end())
+            m_table->selectionModel()->select(index, QItemSelectionModel::Select | QItemSelectionModel::Rows);
+    }
+    if (!m_table->selectionModel()->hasSelection() && m_sorted->rowCount() > 0) m_table->selectRow(0);
     m_count->setText(listing.capped ? tr("%1 of the newest %2 sessions (narrow the search or the dates for older ones)")
                                           .arg(m_model->rowCount())
                                           .arg(listing.total)

@@ -131,7 +131,8 @@ CentralStore::CentralStore(const std::string& conninfo, Database::Access access)
         throw StorageError(m_connection.location() + " holds a central store of an older Tactiscope (schema " +
                            version.text(0, 0) + ", this program writes " + std::to_string(kCentralSchemaVersion) +
                            "); its owner updates it with `tactiscope-cli server init`");
-    if (access == Database::Access::ReadOnly) m_connection.run("SET default_transaction_read_only = on");
+    if (access == Database::Access::ReadOnly)
+        m_connection.runOnEveryConnection("SET default_transaction_read_only = on");
 }
 
 std::vector<SessionSummary> CentralStore::sessions(const SessionFilter& filter)

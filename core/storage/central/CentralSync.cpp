@@ -282,7 +282,8 @@ std::map<std::string, OnServer> sessionsOnServer(PgConnection& db, const std::ve
 
 // One station's sync at a time, by a session-level advisory lock on the
 // station's name: tried once a second (a blocking wait would outlast the
-// connection's answer deadline), released when the sync ends.
+// connection's answer deadline), released when the sync ends. The lock is
+// the connection's: while it is held a lost connection ends the sync.
 class StationLock {
 public:
     StationLock(PgConnection& db, const std::string& station, std::stop_token stop)
@@ -291,18 +292,20 @@ public:
     {
         for (;;) {
             m_held = m_db.query("SELECT pg_try_advisory_lock(7427, hashtext($1))", {m_key}).text(0, 0) == "t";
+            if (m_held) m_db.holdServerState();
             if (m_held || stop.stop_requested()) return;
             std::this_thread::sleep_for(std::chrono::seconds(1));
         }
     }
     ~StationLock()
     {
-        if (!m_held || !m_db.isOpen()) return;
+        if (!m_held) return;
         try {
-            m_db.query("SELECT pg_advisory_unlock(7427, hashtext($1))", {m_key});
+            if (m_db.isOpen()) m_db.query("SELECT pg_advisory_unlock(7427, hashtext($1))", {m_key});
         } catch (const StorageError&) {
             // The connection is gone: the server released the lock with it.
         }
+        m_db.releaseServerState();
     }
     StationLock(const StationLock&) = delete;
     StationLock& operator=(const StationLock&) = delete;

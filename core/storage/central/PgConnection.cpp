@@ -10,6 +10,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <thread>
 
 namespace tactiscope::core::storage::central {
 namespace {
@@ -197,19 +198,75 @@ std::span<const std::uint8_t> PgResult::bytes(int row, int column) const
             static_cast<std::size_t>(PQgetlength(m_result, row, column))};
 }
 
-PgConnection::PgConnection(const std::string& conninfo)
-    : m_connection(openConnection(conninfo)),
-      m_answerTimeout(answerTimeout())
+// A connection made, or nothing with the reason.
+pg_conn* PgConnection::connect(const std::string& conninfo, std::string& reason)
 {
-    if (!m_connection) throw StorageError("cannot reach the central store: out of memory");
-    if (PQstatus(m_connection) != CONNECTION_OK) {
-        const std::string reason = oneLine(PQerrorMessage(m_connection));
-        PQfinish(m_connection);
-        throw StorageError("cannot reach the central store: " + reason);
+    pg_conn* connection = openConnection(conninfo);
+    if (!connection) {
+        reason = "out of memory";
+        return nullptr;
+    }
+    if (PQstatus(connection) != CONNECTION_OK) {
+        reason = oneLine(PQerrorMessage(connection));
+        PQfinish(connection);
+        return nullptr;
     }
     // Server notices ("relation already exists, skipping") are not for the user.
     PQsetNoticeProcessor(
-        m_connection, [](void*, const char*) {}, nullptr);
+        connection, [](void*, const char*) {}, nullptr);
+    return connection;
+}
+
+PgConnection::PgConnection(const std::string& conninfo)
+    : m_conninfo(conninfo),
+      m_connection(nullptr),
+      m_answerTimeout(answerTimeout())
+{
+    std::string reason;
+    m_connection = connect(conninfo, reason);
+    if (!m_connection) throw CentralUnreachable("cannot reach the central store: " + reason);
+}
+
+void PgConnection::runOnEveryConnection(const std::string& sql)
+{
+    run(sql);
+    m_onEveryConnection.push_back(sql);
+}
+
+// Before a statement. A server that closed the connection (a restart
+// closes every socket) has left its socket readable at its end: read, the
+// connection shows as bad before anything is sent on it, and is made again.
+void PgConnection::ensureConnected()
+{
+    if (m_connection && PQstatus(m_connection) == CONNECTION_OK && !PQisBusy(m_connection)) {
+        pollfd socket{PQsocket(m_connection), POLLIN, 0};
+        if (::poll(&socket, 1, 0) > 0) PQconsumeInput(m_connection);
+    }
+    if (m_connection && PQstatus(m_connection) == CONNECTION_OK) return;
+    if (m_serverState > 0)
+        throw CentralUnreachable("the central store: the connection was lost; the transaction under way was not kept");
+    reconnect();
+}
+
+void PgConnection::reconnect()
+{
+    // A server starting again refuses for a moment ("the database system is
+    // starting up"): three quick tries, half a second apart. A try that
+    // took its time (a host that does not answer: up to connect_timeout) is
+    // not repeated, so a reader waits for one timeout at most.
+    constexpr int kTries = 3;
+    PQfinish(m_connection);
+    m_connection = nullptr;
+    std::string reason;
+    for (int attempt = 0; attempt < kTries && !m_connection; ++attempt) {
+        if (attempt > 0) std::this_thread::sleep_for(std::chrono::milliseconds(500));
+        const auto started = std::chrono::steady_clock::now();
+        m_connection = connect(m_conninfo, reason);
+        if (std::chrono::steady_clock::now() - started > std::chrono::seconds(1)) break;
+    }
+    if (!m_connection) throw CentralUnreachable("cannot reach the central store: " + reason);
+    ++m_reconnects;
+    for (const std::string& sql : m_onEveryConnection) run(sql);
 }
 
 PgConnection::~PgConnection()
@@ -218,9 +275,18 @@ PgConnection::~PgConnection()
 }
 
 // A statement that failed throws, with the server's reason.
+// A connection that went bad on the way (the server closed it) is the
+// server gone, whatever the statement was.
+void PgConnection::failed() const
+{
+    const std::string reason = "the central store: " + oneLine(PQerrorMessage(m_connection));
+    if (PQstatus(m_connection) != CONNECTION_OK) throw CentralUnreachable(reason);
+    throw StorageError(reason);
+}
+
 void PgConnection::check(const PgResult& result) const
 {
-    if (result.m_result == nullptr) throw StorageError("the central store: " + oneLine(PQerrorMessage(m_connection)));
+    if (result.m_result == nullptr) failed();
     const ExecStatusType status = PQresultStatus(result.m_result);
     if (status != PGRES_COMMAND_OK && status != PGRES_TUPLES_OK)
         throw StorageError("the central store refused: " + oneLine(PQresultErrorMessage(result.m_result)));
@@ -228,9 +294,8 @@ void PgConnection::check(const PgResult& result) const
 
 void PgConnection::run(const std::string& sql)
 {
-    requireOpen();
-    if (!PQsendQuery(m_connection, sql.c_str()))
-        throw StorageError("the central store: " + oneLine(PQerrorMessage(m_connection)));
+    ensureConnected();
+    if (!PQsendQuery(m_connection, sql.c_str())) failed();
     check(awaitResult());
 }
 
@@ -244,7 +309,7 @@ PgResult PgConnection::awaitResult()
     pg_result* last = nullptr;
     const auto giveUp = [&](const std::string& why) {
         if (last) PQclear(last);
-        throw StorageError("the central store: " + why);
+        throw CentralUnreachable("the central store: " + why);
     };
     for (;;) {
         if (!PQconsumeInput(m_connection)) giveUp(oneLine(PQerrorMessage(m_connection)));
@@ -258,7 +323,7 @@ PgResult PgConnection::awaitResult()
             std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
         if (left.count() <= 0) {
             PQfinish(m_connection);
-            m_connection = nullptr;  // closed: isOpen() is false, and any further statement says so
+            m_connection = nullptr;  // closed: the next statement connects again
             giveUp("no answer within " + std::to_string(m_answerTimeout.count() / 1000) +
                    " s after the connection was made; the server or its host has stopped answering");
         }
@@ -278,19 +343,13 @@ PgResult PgConnection::query(const std::string& sql, const PgParams& parameters,
             lengths[i] = static_cast<int>(value->size());
         }
     }
-    requireOpen();
+    ensureConnected();
     if (!PQsendQueryParams(m_connection, sql.c_str(), static_cast<int>(n), nullptr, values.data(), lengths.data(),
                            parameters.m_formats.data(), results == PgFormat::Binary ? 1 : 0))
-        throw StorageError("the central store: " + oneLine(PQerrorMessage(m_connection)));
+        failed();
     PgResult result = awaitResult();
     check(result);
     return result;
-}
-
-void PgConnection::requireOpen() const
-{
-    if (!m_connection)
-        throw StorageError("the central store: the connection was closed when the server stopped answering");
 }
 
 std::string PgConnection::user() const
@@ -308,11 +367,6 @@ std::string PgConnection::location() const
 bool PgConnection::isOpen() const
 {
     return PQstatus(m_connection) == CONNECTION_OK;
-}
-
-bool PgConnection::inTransaction() const
-{
-    return m_connection && PQtransactionStatus(m_connection) != PQTRANS_IDLE;
 }
 
 std::optional<std::string> connectionStringProblem(const std::string& conninfo)
@@ -376,26 +430,44 @@ std::string withoutPasswords(std::string_view text)
 
 PgTransaction::PgTransaction(PgConnection& connection)
     : m_connection(connection),
-      m_open(!connection.inTransaction())
+      m_open(!connection.m_transactionOpen)
 {
-    if (m_open) m_connection.run("BEGIN");
+    if (!m_open) return;
+    m_connection.run("BEGIN");
+    m_connection.m_transactionOpen = true;
+    m_connection.holdServerState();
 }
 
 PgTransaction::~PgTransaction()
 {
     if (!m_open) return;
     try {
-        m_connection.run("ROLLBACK");
+        if (m_connection.isOpen()) m_connection.run("ROLLBACK");
     } catch (const StorageError&) {
         // The connection is gone; the server rolls back by itself.
     }
+    end();
 }
 
 void PgTransaction::commit()
 {
     if (!m_open) return;
-    m_connection.run("COMMIT");
     m_open = false;
+    // Still held while COMMIT is sent: on a lost connection it must fail,
+    // not connect again and "commit" nothing on a new one.
+    try {
+        m_connection.run("COMMIT");
+    } catch (const StorageError&) {
+        end();
+        throw;
+    }
+    end();
+}
+
+void PgTransaction::end()
+{
+    m_connection.m_transactionOpen = false;
+    m_connection.releaseServerState();
 }
 
 }  // namespace tactiscope::core::storage::central

@@ -21,6 +21,14 @@ struct pg_result;
 
 namespace tactiscope::core::storage::central {
 
+// The server could not be reached, stopped answering, or the connection
+// was lost: a fact about the network and the server, not about what was
+// asked (which a plain StorageError from the server's refusal is).
+class CentralUnreachable : public StorageError {
+public:
+    using StorageError::StorageError;
+};
+
 // A statement's parameters $1, $2, …: numbers as exact text (a double as
 // the shortest text that reads back to it), bytes copied and bound as
 // binary (no hex on the wire).
@@ -73,6 +81,12 @@ private:
     pg_result* m_result;
 };
 
+// A connection heals: when the server has closed it since the last
+// statement (a restart, a network outage that ended it), the next
+// statement connects again first (three quick tries: a server starting up
+// refuses for a moment), with the settings given to
+// runOnEveryConnection(). A transaction's work, or a lock, cannot be carried
+// over: a connection lost under one throws until it has been released.
 class PgConnection {
 public:
     // Throws StorageError with libpq's reason when it cannot connect.
@@ -86,21 +100,38 @@ public:
     void run(const std::string& sql);
     // One statement with parameters $1, $2, ….
     PgResult query(const std::string& sql, const PgParams& parameters = {}, PgFormat results = PgFormat::Text);
+    // A session setting (SET …), run now and again on every new connection.
+    void runOnEveryConnection(const std::string& sql);
+    // How many times the connection was made again.
+    int reconnects() const { return m_reconnects; }
+    // Server state tied to this connection (a transaction, a session-level
+    // lock): while any is held, a lost connection is an error for the
+    // holder, never made again behind its back.
+    void holdServerState() { ++m_serverState; }
+    void releaseServerState() { --m_serverState; }
 
     std::string user() const;
-    bool isOpen() const;  // false once the server is lost
-    bool inTransaction() const;
+    bool isOpen() const;  // false once the server is lost (until the next statement connects again)
     // The server and database, for messages (never the password).
     std::string location() const;
 
 private:
+    friend class PgTransaction;
+    [[noreturn]] void failed() const;
     void check(const PgResult& result) const;
-    void requireOpen() const;
+    static pg_conn* connect(const std::string& conninfo, std::string& reason);
+    void ensureConnected();
+    void reconnect();
     PgResult awaitResult();
 
+    std::string m_conninfo;
     pg_conn* m_connection;  // null once closed for not answering
     // How long a statement's answer is awaited (see openConnection()).
     std::chrono::milliseconds m_answerTimeout;
+    std::vector<std::string> m_onEveryConnection;
+    bool m_transactionOpen = false;  // a PgTransaction began one on this connection
+    int m_serverState = 0;           // transactions and locks held (holdServerState)
+    int m_reconnects = 0;
 };
 
 // Why `conninfo` cannot be kept as typed: libpq cannot read it, or it holds
@@ -114,7 +145,8 @@ std::optional<std::string> connectionStringProblem(const std::string& conninfo);
 std::string withoutPasswords(std::string_view text);
 
 // A transaction that rolls back unless committed, so a failure half way
-// leaves nothing on the server. Inside another one it is part of it.
+// leaves nothing on the server. Inside another one it is part of it. While
+// it is open the connection is never made again behind its back.
 class PgTransaction {
 public:
     explicit PgTransaction(PgConnection& connection);
@@ -124,6 +156,8 @@ public:
     void commit();
 
 private:
+    void end();
+
     PgConnection& m_connection;
     bool m_open;
 };
