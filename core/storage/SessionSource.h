@@ -102,6 +102,18 @@ public:
     // Database::note()); none when it was read as it is.
     virtual std::optional<std::string> readNote() const { return std::nullopt; }
 
+    // What this connection may change, each with the reason it may not
+    // (empty: it may), so a window disables an action, and says why, before
+    // the store would refuse it. A central store's role decides; a station's
+    // file allows everything unless it is open read-only.
+    struct Rights {
+        std::string noDelete;           // deleting sessions
+        std::string noReviewerVerdict;  // adding a reviewer's decision
+        std::string noNotes;            // adding, changing and deleting notes
+        std::string noAnalyses;         // saving a re-analysis
+    };
+    virtual Rights rights() const { return {}; }
+
     // One consistent state of the store for as long as it lives, for a
     // reader going through a session while another connection writes.
     class Snapshot {

@@ -432,6 +432,13 @@ std::optional<SessionSummary> SessionStore::session(std::int64_t id)
     return summary;
 }
 
+SessionSource::Rights SessionStore::rights() const
+{
+    if (m_db.access() == Database::Access::ReadWrite) return {};
+    const std::string why = "the store is open read-only";
+    return {why, why, why, why};
+}
+
 std::optional<std::int64_t> SessionStore::sessionWithUuid(const std::string& uuid)
 {
     auto query = m_db.prepare("SELECT id FROM sessions WHERE uuid = ?");

@@ -115,6 +115,7 @@ public:
     // throws StorageError saying the store is damaged and what to do.
     void refuseIfDamaged() override;
     std::optional<std::string> readNote() const override { return m_db.note(); }
+    Rights rights() const override;
 
     Database& database() { return m_db; }
 

@@ -25,8 +25,10 @@
 #include "support/TempDirectory.h"
 #include "support/WaitFor.h"
 
+#include <QAction>
 #include <QHeaderView>
 #include <QLabel>
+#include <QPushButton>
 #include <QSettings>
 #include <QTableView>
 
@@ -140,6 +142,12 @@ TEST_F(CentralStoreUi, TheBackgroundPushSendsTheStationsSessionsAndSaysNoneWait)
     EXPECT_EQ(child<QLabel>(dialog, "waitingText")->text(), "nothing is sent: no server is set");
 
     controller.setServer(QString::fromStdString(s_server->conninfo("press_a")), {});
+    // Save and send now, pressed while setting the server started a send:
+    // that one sends all three, the press's finds them there. Before, the
+    // dialog then said "synced 0 sessions, 3 already there" to the press.
+    ASSERT_TRUE(controller.state().running);
+    controller.syncNow();
+    // (The press's send starts as the first ends: running until both are done.)
     ASSERT_TRUE(
         waitFor([&] { return !controller.state().running && controller.state().lastAttempt.isValid(); }, 30000));
     EXPECT_EQ(controller.state().lastError, "");
@@ -227,4 +235,42 @@ TEST_F(CentralStoreUi, ABrowserAReviewAndTheStatusBarLiveThroughAServerRestart)
     link->controller()->syncNow();
     ASSERT_TRUE(waitFor([&] { return field->text().contains("up to date"); }, 20000)) << field->text().toStdString();
     EXPECT_TRUE(field->toolTip().contains("last answered")) << field->toolTip().toStdString();
+}
+
+// What a login may not do is disabled, with the reason, before the server
+// refuses it (issue 37). Before, Delete… was enabled for a station's login,
+// said "removed for good" and then failed with "permission denied".
+TEST_F(CentralStoreUi, ActionsTheLoginMayNotTakeAreDisabledWithTheReason)
+{
+    sync(stationStore("press_a", 6), "press_a");
+    QWidget owner;
+    ui::ReviewWindows reviews(&owner);
+    for (const char* login : {"press_a", "quality"}) {
+        ui::SessionBrowser* browser = reviews.showCentralBrowser(QString::fromStdString(s_server->conninfo(login)));
+        ASSERT_TRUE(waitFor([&] { return browser->table()->model()->rowCount() == 3; }, 10000)) << login;
+        auto* remove = child<QPushButton>(*browser, "deleteButton");
+        EXPECT_FALSE(remove->isEnabled()) << login;
+        EXPECT_TRUE(remove->toolTip().contains("may not delete sessions")) << remove->toolTip().toStdString();
+
+        for (int row = 0; row < 3; ++row)
+            if (browser->table()->model()->index(row, ui::SessionTableModel::Subject).data().toString() == "press_a-17")
+                browser->table()->selectRow(row);
+        browser->openSelected();
+        ui::ReviewWindow* review = nullptr;
+        ASSERT_TRUE(waitFor([&] { return (review = owner.findChild<ui::ReviewWindow*>()) != nullptr; }, 10000));
+        auto* verdict = review->findChild<QAction*>(QStringLiteral("verdictAction"));
+        ASSERT_NE(verdict, nullptr);
+        const bool reviewer = std::string(login) == "quality";
+        EXPECT_EQ(verdict->isEnabled(), reviewer) << login;
+        if (!reviewer) {
+            EXPECT_TRUE(verdict->toolTip().contains("not a reviewer's")) << verdict->toolTip().toStdString();
+        }
+        EXPECT_TRUE(review->findChild<QAction*>(QStringLiteral("addNoteAction"))->isEnabled()) << login;
+        auto* save = review->findChild<QPushButton*>(QStringLiteral("saveAnalysisButton"));
+        ASSERT_NE(save, nullptr);
+        EXPECT_TRUE(save->toolTip().contains("may not save analyses")) << save->toolTip().toStdString();
+        delete review;
+        browser->close();
+        QCoreApplication::processEvents();
+    }
 }

@@ -21,6 +21,7 @@ struct CentralSyncController::Result {
     QString outcome;
     QString error;
     bool unreachable = false;
+    int sent = 0;
     std::optional<int> waiting;
 };
 
@@ -113,6 +114,7 @@ void CentralSyncController::start(bool look)
                         Qt::QueuedConnection);
                 });
             result.outcome = QString::fromStdString(core::storage::central::syncSummary(outcome));
+            result.sent = outcome.sent;
             if (outcome.updated > 0)
                 result.outcome += tr("; later verdicts or notes added to %n of them", nullptr, outcome.updated);
             if (!outcome.refused.empty())
@@ -133,13 +135,17 @@ void CentralSyncController::start(bool look)
 
 void CentralSyncController::finished(const Result& result)
 {
+    // A look, or a send asked for while another ran, that sent nothing
+    // keeps the outcome that did: "synced 3 sessions" stays the answer to
+    // the press that sent them, not "synced 0 sessions, 3 already there".
+    const bool quiet = (m_state.checking || std::exchange(m_followUp, false)) && result.sent == 0;
     m_state.running = false;
     m_state.checking = false;
     m_state.lastAttempt = QDateTime::currentDateTime();
     m_state.lastError = result.error;
     m_state.unreachable = result.unreachable;
     if (!result.unreachable) m_state.lastReached = m_state.lastAttempt;
-    if (!result.outcome.isEmpty()) m_state.lastOutcome = result.outcome;
+    if (!result.outcome.isEmpty() && !(quiet && !m_state.lastOutcome.isEmpty())) m_state.lastOutcome = result.outcome;
     if (result.waiting) {
         m_state.waiting = result.waiting;
         m_recordedSince = 0;
@@ -152,7 +158,10 @@ void CentralSyncController::finished(const Result& result)
     const bool behind = !result.error.isEmpty() || (m_state.waiting && *m_state.waiting > 0);
     m_retry.start(behind ? kRetryMinutes * 60 * 1000 : kCheckSeconds * 1000);
     emit stateChanged();
-    if (std::exchange(m_again, false)) syncNow();
+    if (std::exchange(m_again, false)) {
+        syncNow();
+        m_followUp = m_state.running;
+    }
 }
 
 }  // namespace tactiscope::ui

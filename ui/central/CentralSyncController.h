@@ -69,6 +69,7 @@ private:
     CentralSyncState m_state;
     int m_recordedSince = 0;  // sessions recorded since `waiting` was counted
     bool m_again = false;     // asked for while one was running
+    bool m_followUp = false;  // the running one is that
     QTimer m_retry;
     std::jthread m_worker;
 };

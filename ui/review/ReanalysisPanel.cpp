@@ -101,7 +101,11 @@ ReanalysisPanel::ReanalysisPanel(const ReviewAccountContext& context, QWidget* p
     m_spacing->setToolTip(tr("Cantilever spacing, to give each event's scan speed and so its place along the "
                              "stroke (the paper's prototype: 15 mm)"));
     m_run->setToolTip(tr("Run the detector on the stored samples (Ctrl+Return)"));
-    m_save->setToolTip(tr("Store these events under a name, beside the recorded ones"));
+    // A login that may not save analyses is told so before it tries.
+    const QString cannotSave = QString::fromStdString(m_store.rights().noAnalyses);
+    m_save->setToolTip(cannotSave.isEmpty() ? tr("Store these events under a name, beside the recorded ones")
+                                            : tr("Not here: %1").arg(cannotSave));
+    m_saveAllowed = cannotSave.isEmpty();
     m_save->setEnabled(false);
 
     // The live detector's lags: the paper's 2 ms steps, or the sample
@@ -251,7 +255,7 @@ void ReanalysisPanel::finish(Outcome outcome)
     m_events = std::move(outcome.detection->events);
     m_hasResult = true;
     m_saved = false;
-    m_save->setEnabled(true);
+    m_save->setEnabled(m_saveAllowed);
     m_status->setText(tr("%1 events in %2 samples, %3 s. Recorded events are unchanged until you save these as an "
                          "analysis.")
                           .arg(m_events.size())

@@ -73,6 +73,7 @@ private:
 
     QString m_storePath;
     core::storage::SessionSource& m_store;
+    bool m_saveAllowed = true;  // the store's rights
     core::storage::SessionSummary m_session;
     std::vector<std::size_t> m_cantilevers;  // the strain channels, in probe order
     QDoubleSpinBox* m_lagStart;

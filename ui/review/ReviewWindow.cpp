@@ -398,9 +398,19 @@ void ReviewWindow::createActions()
     connect(m_reviewer, &QLineEdit::editingFinished, this,
             [this] { QSettings().setValue(QStringLiteral("review/reviewer"), m_reviewer->text().trimmed()); });
     bar->addWidget(m_reviewer);
+    // What the store's rights forbid is disabled, with the reason, before
+    // it would be refused.
+    const core::storage::SessionSource::Rights rights = m_store->rights();
+    const auto allowOnly = [](QAction* action, const std::string& refusal) {
+        if (refusal.empty()) return;
+        action->setEnabled(false);
+        action->setToolTip(tr("Not here: %1").arg(QString::fromStdString(refusal)));
+    };
     QAction* note = bar->addAction(tr("Add note…"), this, &ReviewWindow::addNote);
+    note->setObjectName(QStringLiteral("addNoteAction"));
     note->setShortcut(QKeySequence(tr("Ctrl+N")));
     note->setToolTip(tr("A note at the pinned cursor (click the plot to pin it), Ctrl+N"));
+    allowOnly(note, rights.noNotes);
     QAction* remove = new QAction(tr("Delete note"), m_list);
     remove->setShortcut(QKeySequence::Delete);
     remove->setShortcutContext(Qt::WidgetShortcut);
@@ -412,10 +422,13 @@ void ReviewWindow::createActions()
     });
     undo->setShortcut(QKeySequence::Undo);
     undo->setToolTip(tr("Bring back the last deleted note (Ctrl+Z)"));
+    allowOnly(remove, rights.noNotes);
+    allowOnly(undo, rights.noNotes);
     if (core::definitionOf(m_session.metadata.mode).detectsDefects) {  // the modes with a verdict
         QAction* verdict = bar->addAction(tr("Verdict…"), this, &ReviewWindow::askVerdict);
         verdict->setObjectName(QStringLiteral("verdictAction"));
         verdict->setToolTip(tr("Keep or change the panel's verdict, with a note; the report shows who decided what"));
+        allowOnly(verdict, rights.noReviewerVerdict);
     }
 }
 

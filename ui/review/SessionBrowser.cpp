@@ -187,7 +187,6 @@ SessionBrowser::SessionBrowser(std::shared_ptr<core::storage::StoreWorker> store
     buttons->addButton(QDialogButtonBox::Close);
     m_open->setDefault(true);
     m_open->setToolTip(tr("Open each selected session in its own review window (Enter)"));
-    m_delete->setToolTip(tr("Delete the selected sessions with their samples, events and annotations (Del)"));
     refresh->setToolTip(tr("Read the store again (F5)"));
 
     auto* bottom = new QHBoxLayout;
@@ -248,7 +247,12 @@ void SessionBrowser::reload()
         // A server may be slow or away: the window never waits on it.
         m_count->setText(tr("Reading the central store…"));
         runOnStore(
-            *m_store, this, [filter](SessionSource& store) { return listSessions(store, filter, kCentralRows); },
+            *m_store, this,
+            [filter](SessionSource& store) {
+                Listing listing = listSessions(store, filter, kCentralRows);
+                listing.rights = store.rights();
+                return listing;
+            },
             [this](Listing listing) { showListing(std::move(listing)); }, failed);
         return;
     }
@@ -263,6 +267,7 @@ void SessionBrowser::reload()
 
 void SessionBrowser::showListing(Listing listing)
 {
+    if (listing.rights) m_noDelete = listing.rights->noDelete;
     if (listing.total > 0) fillChoices(m_verdict, listing.verdicts);  // an unread store keeps the choices
     if (m_status->currentIndex() > 0)
         std::erase_if(listing.shown, [&](const auto& s) { return wordText(s.status) != m_status->currentText(); });
@@ -318,6 +323,10 @@ void SessionBrowser::deleteSelected()
 {
     const auto ids = selectedSessions();
     if (ids.empty()) return;
+    if (!m_noDelete.empty()) {  // Del, with the button disabled
+        showProblem(tr("Not deleted: %1").arg(QString::fromStdString(m_noDelete)));
+        return;
+    }
     QStringList names;
     for (int row = 0; row < m_model->rowCount(); ++row) {
         const auto* s = m_model->summaryAt(row);
@@ -389,7 +398,10 @@ void SessionBrowser::updateButtons()
 {
     const bool any = m_table->selectionModel()->hasSelection();
     m_open->setEnabled(any);
-    m_delete->setEnabled(any && !m_deleting);
+    m_delete->setEnabled(any && !m_deleting && m_noDelete.empty());
+    m_delete->setToolTip(m_noDelete.empty()
+                             ? tr("Delete the selected sessions with their samples, events and annotations (Del)")
+                             : tr("Not here: %1").arg(QString::fromStdString(m_noDelete)));
 }
 
 }  // namespace tactiscope::ui

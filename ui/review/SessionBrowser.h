@@ -66,6 +66,7 @@ private:
         std::size_t total = 0;
         bool capped = false;  // the store holds more than `total`
         QStringList verdicts;
+        std::optional<core::storage::SessionSource::Rights> rights;  // read with a central store's listing
     };
     // At most `limit` newest sessions (0: all): a central store may hold
     // millions, which no table should load at once.
@@ -82,6 +83,7 @@ private:
     QString m_storePath;
     bool m_central;  // a site's central store, not this station's file
     bool m_deleting = false;
+    std::string m_noDelete;  // why this store's login may not delete, if it may not
     SessionTableModel* m_model;
     QSortFilterProxyModel* m_sorted;
     QTableView* m_table;

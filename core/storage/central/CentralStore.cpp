@@ -114,6 +114,33 @@ private:
     std::int64_t m_channel;
 };
 
+// What the login may do, from the server's grants and role memberships
+// (docs/fleet.md, "Roles and rights"); the owner and superusers may all.
+// Column grants (which the roles have) do not count as a table's.
+SessionSource::Rights rightsOf(PgConnection& connection, Database::Access access)
+{
+    if (access == Database::Access::ReadOnly) {
+        const std::string why = "the central store is open read-only";
+        return {why, why, why, why};
+    }
+    const PgResult r = connection.query(
+        "SELECT has_table_privilege('sessions', 'DELETE'), pg_has_role('tactiscope_reviewer', 'MEMBER'), "
+        "has_any_column_privilege('annotations', 'INSERT'), has_table_privilege('events', 'INSERT')");
+    const auto yes = [&r](int column) { return r.text(0, column) == "t"; };
+    const std::string login = connection.user();
+    SessionSource::Rights rights;
+    if (!yes(0)) rights.noDelete = "the login " + login + " may not delete sessions: only the store's owner does";
+    if (!yes(1))
+        rights.noReviewerVerdict =
+            "the login " + login + " is not a reviewer's: a station adds only automatic and operator decisions";
+    if (!yes(2)) rights.noNotes = "the login " + login + " may not add notes";
+    if (!yes(3))
+        rights.noAnalyses = "the login " + login +
+                            " may not save analyses on the central store; export the session "
+                            "or save it at a station";
+    return rights;
+}
+
 }  // namespace
 
 CentralStore::CentralStore(const std::string& conninfo, Database::Access access)
@@ -133,6 +160,7 @@ CentralStore::CentralStore(const std::string& conninfo, Database::Access access)
                            "); its owner updates it with `tactiscope-cli server init`");
     if (access == Database::Access::ReadOnly)
         m_connection.runOnEveryConnection("SET default_transaction_read_only = on");
+    m_rights = rightsOf(m_connection, access);
 }
 
 std::vector<SessionSummary> CentralStore::sessions(const SessionFilter& filter)

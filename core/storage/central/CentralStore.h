@@ -28,6 +28,8 @@ public:
     PgConnection& connection() { return m_connection; }
     // The server keeps its own pages whole (checksums, WAL): nothing to check here.
     void refuseIfDamaged() override {}
+    // What the login's role may do (read once, at connecting).
+    Rights rights() const override { return m_rights; }
 
     std::vector<SessionSummary> sessions(const SessionFilter& filter = {}) override;
     std::optional<SessionSummary> session(std::int64_t id) override;
@@ -75,6 +77,7 @@ private:
     void checkLayout(std::int64_t session);
 
     PgConnection m_connection;
+    Rights m_rights;
     std::set<std::int64_t> m_checked;
 };
 
