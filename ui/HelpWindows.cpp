@@ -6,6 +6,7 @@
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QFileInfo>
+#include <QFont>
 #include <QHeaderView>
 #include <QMenu>
 #include <QMenuBar>
@@ -32,7 +33,7 @@ QDialog* helpDialog(QWidget* parent, const QString& name, const QString& title)
 }
 
 // The menu's entries with shortcuts, "Session › Start / stop recording".
-void collect(const QMenu& menu, const QString& path, QList<QPair<QString, QString>>& rows)
+void collect(const QMenu& menu, const QString& path, QList<ShortcutRow>& rows)
 {
     for (const QAction* action : menu.actions()) {
         const QString text = QString(action->text()).remove(QLatin1Char('&'));
@@ -40,8 +41,8 @@ void collect(const QMenu& menu, const QString& path, QList<QPair<QString, QStrin
             collect(*action->menu(), path + QStringLiteral(" › ") + text, rows);
             continue;
         }
-        if (!action->shortcut().isEmpty())
-            rows.append({path + QStringLiteral(" › ") + text, action->shortcut().toString(QKeySequence::NativeText)});
+        if (!action->shortcuts().isEmpty())
+            rows.append({path + QStringLiteral(" › ") + text, keysText(action->shortcuts())});
     }
 }
 
@@ -82,25 +83,52 @@ void showUserGuide(QWidget* parent, const QString& executableDirectory)
     dialog->show();
 }
 
-void showKeyboardShortcuts(const QMenuBar& menus, QWidget* parent)
+QString keysText(const QList<QKeySequence>& keys)
 {
-    QList<QPair<QString, QString>> rows;
+    QStringList texts;
+    for (const QKeySequence& key : keys) texts << key.toString(QKeySequence::NativeText);
+    return texts.join(QObject::tr(" or "));
+}
+
+QList<ShortcutRow> menuShortcuts(const QMenuBar& menus)
+{
+    QList<ShortcutRow> rows;
     for (const QAction* action : menus.actions())
         if (action->menu()) collect(*action->menu(), QString(action->text()).remove(QLatin1Char('&')), rows);
+    return rows;
+}
+
+void showKeyboardShortcuts(const QList<ShortcutGroup>& groups, QWidget* parent)
+{
     QDialog* dialog = helpDialog(parent, QStringLiteral("keyboardShortcuts"), QObject::tr("Keyboard shortcuts"));
-    auto* table = new QTableWidget(static_cast<int>(rows.size()), 2, dialog);
+    auto* table = new QTableWidget(0, 2, dialog);
     table->setObjectName(QStringLiteral("shortcutTable"));
     table->setHorizontalHeaderLabels({QObject::tr("Command"), QObject::tr("Keys")});
     table->verticalHeader()->hide();
     table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    for (int r = 0; r < rows.size(); ++r) {
-        table->setItem(r, 0, new QTableWidgetItem(rows[r].first));
-        table->setItem(r, 1, new QTableWidgetItem(rows[r].second));
+    table->setWordWrap(false);
+    for (const ShortcutGroup& group : groups) {
+        // A heading row per window, across both columns.
+        const int heading = table->rowCount();
+        table->insertRow(heading);
+        auto* title = new QTableWidgetItem(group.window);
+        QFont bold = title->font();
+        bold.setBold(true);
+        title->setFont(bold);
+        title->setData(Qt::UserRole, QStringLiteral("window"));
+        table->setItem(heading, 0, title);
+        table->setSpan(heading, 0, 1, 2);
+        for (const ShortcutRow& row : group.rows) {
+            const int r = table->rowCount();
+            table->insertRow(r);
+            table->setItem(r, 0, new QTableWidgetItem(QStringLiteral("    ") + row.command));
+            table->setItem(r, 1, new QTableWidgetItem(row.keys));
+        }
     }
     table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
     table->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
     qobject_cast<QVBoxLayout*>(dialog->layout())->insertWidget(0, table, 1);
-    dialog->resize(520, 480);
+    dialog->resize(600, 640);
     dialog->show();
 }
 

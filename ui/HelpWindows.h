@@ -1,9 +1,13 @@
 // The Help menu's windows: the user guide (docs/user-guide.md, rendered
-// with its screenshots) and the keyboard shortcuts of the window's menus.
+// with its screenshots) and the keyboard shortcuts of every window, each
+// listed from that window's own actions.
 #pragma once
 
+#include <QKeySequence>
+#include <QList>
 #include <QString>
 
+class QAction;
 class QMenuBar;
 class QWidget;
 
@@ -17,7 +21,21 @@ QString userGuidePath(const QString& executableDirectory);
 // or says where it is missing.
 void showUserGuide(QWidget* parent, const QString& executableDirectory);
 
-// Lists every action of `menus` that has a shortcut, menu by menu.
-void showKeyboardShortcuts(const QMenuBar& menus, QWidget* parent);
+// One command's keys, where it is found ("Session › Record").
+struct ShortcutRow {
+    QString command;
+    QString keys;  // every sequence that triggers it, as the platform writes them
+};
+struct ShortcutGroup {
+    QString window;
+    QList<ShortcutRow> rows;
+};
+
+QString keysText(const QList<QKeySequence>& keys);
+// Every action of `menus` with a shortcut, by its menu path.
+QList<ShortcutRow> menuShortcuts(const QMenuBar& menus);
+
+// The table of every group's shortcuts, window by window.
+void showKeyboardShortcuts(const QList<ShortcutGroup>& groups, QWidget* parent);
 
 }  // namespace tactiscope::ui

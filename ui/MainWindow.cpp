@@ -38,7 +38,9 @@
 #include "ui/calibration/CalibrationWizards.h"
 #include "ui/modes/LiveModeView.h"
 #include "ui/modes/ModeUi.h"
+#include "ui/review/ReviewActions.h"
 #include "ui/review/ReviewWindows.h"
+#include "ui/review/SessionBrowser.h"
 
 #include <QApplication>
 #include <QCloseEvent>
@@ -180,8 +182,9 @@ MainWindow::~MainWindow()
     disconnectSource();  // ends a recording, with everything kept
 }
 
-// Quitting while recording asks first: stopping ends the session with its
-// verdict step (the operator's to answer), so the window stays for it.
+// Quitting while recording asks first: stopping ends the session (with its
+// verdict step in a mode that has one, the operator's to answer), so the
+// window stays for it.
 void MainWindow::closeEvent(QCloseEvent* event)
 {
     if (isRecording()) {
@@ -200,7 +203,10 @@ void MainWindow::askToStopBeforeQuitting()
                                 tr("Session %1 is recording. Stop it before quitting?").arg(m_session->sessionId()),
                                 QMessageBox::NoButton, this);
     box->setObjectName(QStringLiteral("quitWhileRecordingBox"));
-    box->setInformativeText(tr("Stopping ends the session and asks for its verdict; quit once that is done."));
+    // Only the modes with a verdict ask for one at the stop.
+    box->setInformativeText(core::definitionOf(mode()).detectsDefects
+                                ? tr("Stopping ends the session and asks for its verdict; quit once that is done.")
+                                : tr("Stopping ends the session and keeps every sample; then quit."));
     QPushButton* stop = box->addButton(tr("Stop recording"), QMessageBox::AcceptRole);
     stop->setObjectName(QStringLiteral("stopForQuitButton"));
     QPushButton* keep = box->addButton(tr("Keep recording"), QMessageBox::RejectRole);
@@ -331,7 +337,12 @@ void MainWindow::createMenus()
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&User guide"), QKeySequence::HelpContents, this,
                     [this] { showUserGuide(this, QCoreApplication::applicationDirPath()); });
-    help->addAction(tr("&Keyboard shortcuts"), this, [this] { showKeyboardShortcuts(*menuBar(), this); });
+    help->addAction(tr("&Keyboard shortcuts"), this, [this] {
+        showKeyboardShortcuts({{tr("Main window"), menuShortcuts(*menuBar())},
+                               {tr("Session browser"), SessionBrowser::helpRows()},
+                               {tr("Review window"), ReviewActions::helpRows()}},
+                              this);
+    });
     help->addSeparator();
     help->addAction(tr("&About Tactiscope"), this, &MainWindow::showAbout);
 }

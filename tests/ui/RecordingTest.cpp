@@ -243,6 +243,7 @@ TEST(Recording, QuittingWhileRecordingAsksFirstAndStoppingGoesThroughTheVerdict)
     EXPECT_TRUE(window.isRecording());
     auto* box = window.findChild<QMessageBox*>(QStringLiteral("quitWhileRecordingBox"));
     ASSERT_NE(box, nullptr);
+    EXPECT_TRUE(box->informativeText().contains(QStringLiteral("asks for its verdict")));
     QTest::mouseClick(child<QPushButton>(*box, "keepRecordingButton"), Qt::LeftButton);
     runEventLoopFor(100);
     EXPECT_TRUE(window.isRecording());
@@ -257,6 +258,29 @@ TEST(Recording, QuittingWhileRecordingAsksFirstAndStoppingGoesThroughTheVerdict)
     EXPECT_TRUE(window.isVisible()) << "the verdict step is the operator's, in the open window";
     EXPECT_NE(window.findChild<QDialog*>(QStringLiteral("verdictBox")), nullptr);
     EXPECT_TRUE(window.close());  // nothing recording: it closes
+}
+
+// A palpation has no verdict: the question does not promise one (issue 37).
+TEST(Recording, QuittingWhileRecordingAPalpationPromisesNoVerdict)
+{
+    QTemporaryDir dir;
+    ui::MainWindow window;
+    window.setStorePath(dir.filePath("s.tactiscope"));
+    window.setMode(core::Mode::Palpation);
+    window.connectSource(liveSimulator("palpation"));
+    window.show();
+    QTest::keyClicks(child<QLineEdit>(window, "operatorEdit"), QStringLiteral("Ada"));
+    ASSERT_TRUE(window.startRecording());
+    runEventLoopFor(300);
+    EXPECT_FALSE(window.close());
+    auto* box = window.findChild<QMessageBox*>(QStringLiteral("quitWhileRecordingBox"));
+    ASSERT_NE(box, nullptr);
+    EXPECT_FALSE(box->informativeText().contains(QStringLiteral("verdict"))) << box->informativeText().toStdString();
+    QTest::mouseClick(child<QPushButton>(*box, "stopForQuitButton"), Qt::LeftButton);
+    runEventLoopFor(100);
+    EXPECT_FALSE(window.isRecording());
+    EXPECT_EQ(window.findChild<QDialog*>(QStringLiteral("verdictBox")), nullptr);
+    EXPECT_TRUE(window.close());
 }
 
 TEST(Recording, AFileThatIsNotAStoreIsRefusedWhenChosen)

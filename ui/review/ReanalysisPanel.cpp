@@ -153,10 +153,15 @@ ReanalysisPanel::ReanalysisPanel(const ReviewAccountContext& context, QWidget* p
     connect(m_run, &QPushButton::clicked, this, &ReanalysisPanel::run);
     connect(m_save, &QPushButton::clicked, this, &ReanalysisPanel::askNameAndSave);
     connect(m_cancel, &QPushButton::clicked, this, &ReanalysisPanel::cancel);
-    connect(new QShortcut(QKeySequence(tr("Ctrl+Return")), this), &QShortcut::activated, this, &ReanalysisPanel::run);
+    connect(new QShortcut(runKeys(), this), &QShortcut::activated, this, &ReanalysisPanel::run);
 }
 
 ReanalysisPanel::~ReanalysisPanel() = default;
+
+QKeySequence ReanalysisPanel::runKeys()
+{
+    return QKeySequence(tr("Ctrl+Return"));
+}
 
 std::optional<ReviewAccount::Unsaved> ReanalysisPanel::unsaved() const
 {

@@ -8,6 +8,8 @@
 // analysis" stores them under a name of their own.
 #pragma once
 
+#include <QKeySequence>
+
 #include "core/detector/DefectEvent.h"
 #include "core/detector/StreamingDetection.h"
 #include "core/storage/SessionStore.h"
@@ -33,6 +35,7 @@ class ReanalysisPanel : public ReviewAccount {
 public:
     // The store is the review window's (for saving); the worker opens its own.
     explicit ReanalysisPanel(const ReviewAccountContext& context, QWidget* parent);
+    static QKeySequence runKeys();  // Ctrl+Return
     ~ReanalysisPanel() override;
 
     // The parameters as set in the panel; nullopt (and the reason shown) when

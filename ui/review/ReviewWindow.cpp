@@ -20,6 +20,7 @@
 #include "ui/modes/ModeUi.h"
 #include "ui/report/ReportDocument.h"
 #include "ui/review/ReviewAccount.h"
+#include "ui/review/ReviewActions.h"
 #include "ui/review/ReviewPlot.h"
 #include "ui/review/SessionTableModel.h"
 
@@ -328,39 +329,45 @@ void ReviewWindow::refreshHeader()
 
 void ReviewWindow::createActions()
 {
+    ReviewActions* a = new ReviewActions(this);
     QMenu* file = menuBar()->addMenu(tr("&Export"));
-    file->addAction(tr("Inspection &report (PDF)…"), QKeySequence(tr("Ctrl+E")), this, [this] {
+    file->addAction(a->report);
+    connect(a->report, &QAction::triggered, this, [this] {
         exportWithDialog(tr("Save the inspection report"), tr("PDF (*.pdf)"), QStringLiteral("pdf"),
                          [this](const QString& path) { return exportReport(path); });
     });
-    file->addAction(tr("&Print the report…"), QKeySequence::Print, this, &ReviewWindow::printReport);
+    file->addAction(a->print);
+    connect(a->print, &QAction::triggered, this, &ReviewWindow::printReport);
     file->addSeparator();
-    file->addAction(tr("The &plot as PNG or SVG…"), this, [this] {
+    file->addAction(a->plotImage);
+    connect(a->plotImage, &QAction::triggered, this, [this] {
         exportWithDialog(tr("Save the plot"), tr("PNG image (*.png);;SVG drawing (*.svg)"), QStringLiteral("png"),
                          [this](const QString& path) { return savePlot(path); });
     });
-    file->addAction(tr("The whole session as &CSV…"), this, [this] {
+    file->addAction(a->csvWhole);
+    connect(a->csvWhole, &QAction::triggered, this, [this] {
         exportWithDialog(tr("Export the session"), tr("CSV (*.csv)"), QStringLiteral("csv"),
                          [this](const QString& path) { return exportCsv(path, false); });
     });
-    file->addAction(tr("The range &shown as CSV…"), this, [this] {
+    file->addAction(a->csvShown);
+    connect(a->csvShown, &QAction::triggered, this, [this] {
         exportWithDialog(tr("Export the range shown"), tr("CSV (*.csv)"), QStringLiteral("csv"),
                          [this](const QString& path) { return exportCsv(path, true); });
     });
     file->addSeparator();
-    file->addAction(tr("&Close"), QKeySequence::Close, this, &QWidget::close);
+    file->addAction(a->close);
+    connect(a->close, &QAction::triggered, this, &QWidget::close);
 
     QToolBar* bar = addToolBar(tr("Review"));
     bar->setObjectName(QStringLiteral("reviewToolBar"));
     bar->setMovable(false);
     bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    QAction* whole = bar->addAction(tr("Whole session"), this, [this] { m_plot->showWholeSession(); });
-    whole->setShortcut(QKeySequence(Qt::Key_Home));
-    whole->setToolTip(tr("Show the whole session (Home)"));
-    QAction* in = bar->addAction(tr("Zoom in"), this, [this] { m_plot->zoom(0.5); });
-    in->setShortcuts({QKeySequence::ZoomIn, QKeySequence(Qt::Key_Plus)});
-    QAction* out = bar->addAction(tr("Zoom out"), this, [this] { m_plot->zoom(2.0); });
-    out->setShortcuts({QKeySequence::ZoomOut, QKeySequence(Qt::Key_Minus)});
+    bar->addAction(a->wholeSession);
+    connect(a->wholeSession, &QAction::triggered, this, [this] { m_plot->showWholeSession(); });
+    bar->addAction(a->zoomIn);
+    connect(a->zoomIn, &QAction::triggered, this, [this] { m_plot->zoom(0.5); });
+    bar->addAction(a->zoomOut);
+    connect(a->zoomOut, &QAction::triggered, this, [this] { m_plot->zoom(2.0); });
     if (m_plot->showsDerived()) {
         QAction* raw = bar->addAction(tr("Raw channels"), this, &ReviewWindow::setRawChannels);
         raw->setObjectName(QStringLiteral("rawChannelsAction"));
@@ -370,10 +377,9 @@ void ReviewWindow::createActions()
                             .arg(text(m_plot->derivedBasis())));
     }
     bar->addSeparator();
-    m_playAction = bar->addAction(tr("Play"), this, [this] { isPlaying() ? pause() : play(); });
-    m_playAction->setObjectName(QStringLiteral("playAction"));
-    m_playAction->setShortcut(QKeySequence(Qt::Key_Space));
-    m_playAction->setToolTip(tr("Replay from the left of the view (Space)"));
+    m_playAction = a->play;
+    bar->addAction(m_playAction);
+    connect(m_playAction, &QAction::triggered, this, [this] { isPlaying() ? pause() : play(); });
     m_speed = new QSpinBox(this);
     m_speed->setObjectName(QStringLiteral("replaySpeed"));
     m_speed->setRange(1, 10);
@@ -398,6 +404,20 @@ void ReviewWindow::createActions()
     connect(m_reviewer, &QLineEdit::editingFinished, this,
             [this] { QSettings().setValue(QStringLiteral("review/reviewer"), m_reviewer->text().trimmed()); });
     bar->addWidget(m_reviewer);
+    bar->addAction(a->addNote);
+    connect(a->addNote, &QAction::triggered, this, &ReviewWindow::addNote);
+    a->deleteNote->setParent(m_list);  // Del in the list only
+    m_list->addAction(a->deleteNote);
+    connect(a->deleteNote, &QAction::triggered, this, &ReviewWindow::deleteSelectedNote);
+    bar->addAction(a->undoDelete);
+    connect(a->undoDelete, &QAction::triggered, this, [this] {
+        const QString error = undoDelete();
+        if (!error.isEmpty()) showProblem(error);
+    });
+    if (core::definitionOf(m_session.metadata.mode).detectsDefects) {  // the modes with a verdict
+        bar->addAction(a->verdict);
+        connect(a->verdict, &QAction::triggered, this, &ReviewWindow::askVerdict);
+    }
     // What the store's rights forbid is disabled, with the reason, before
     // it would be refused.
     const core::storage::SessionSource::Rights rights = m_store->rights();
@@ -406,30 +426,8 @@ void ReviewWindow::createActions()
         action->setEnabled(false);
         action->setToolTip(tr("Not here: %1").arg(QString::fromStdString(refusal)));
     };
-    QAction* note = bar->addAction(tr("Add note…"), this, &ReviewWindow::addNote);
-    note->setObjectName(QStringLiteral("addNoteAction"));
-    note->setShortcut(QKeySequence(tr("Ctrl+N")));
-    note->setToolTip(tr("A note at the pinned cursor (click the plot to pin it), Ctrl+N"));
-    allowOnly(note, rights.noNotes);
-    QAction* remove = new QAction(tr("Delete note"), m_list);
-    remove->setShortcut(QKeySequence::Delete);
-    remove->setShortcutContext(Qt::WidgetShortcut);
-    connect(remove, &QAction::triggered, this, &ReviewWindow::deleteSelectedNote);
-    m_list->addAction(remove);
-    QAction* undo = bar->addAction(tr("Undo delete"), this, [this] {
-        const QString error = undoDelete();
-        if (!error.isEmpty()) showProblem(error);
-    });
-    undo->setShortcut(QKeySequence::Undo);
-    undo->setToolTip(tr("Bring back the last deleted note (Ctrl+Z)"));
-    allowOnly(remove, rights.noNotes);
-    allowOnly(undo, rights.noNotes);
-    if (core::definitionOf(m_session.metadata.mode).detectsDefects) {  // the modes with a verdict
-        QAction* verdict = bar->addAction(tr("Verdict…"), this, &ReviewWindow::askVerdict);
-        verdict->setObjectName(QStringLiteral("verdictAction"));
-        verdict->setToolTip(tr("Keep or change the panel's verdict, with a note; the report shows who decided what"));
-        allowOnly(verdict, rights.noReviewerVerdict);
-    }
+    for (QAction* notes : {a->addNote, a->deleteNote, a->undoDelete}) allowOnly(notes, rights.noNotes);
+    allowOnly(a->verdict, rights.noReviewerVerdict);
 }
 
 void ReviewWindow::refreshRecords()

@@ -37,6 +37,12 @@ using core::storage::SessionSource;
 
 const QDate kAnyDate(2000, 1, 1);  // the date edits' "any" value
 
+// Its keys, here once for the window and its entry in Help. (Enter opens:
+// Open is the default button.)
+const QKeySequence kOpenKeys(Qt::Key_Return);
+const QKeySequence kDeleteKeys(QKeySequence::Delete);
+const QKeySequence kRefreshKeys(QKeySequence::Refresh);
+
 // A date edit at "any" (its minimum, 2000-01-01) opens its calendar on
 // this month, not on January 2000.
 class CalendarOnToday : public QObject {
@@ -212,9 +218,16 @@ SessionBrowser::SessionBrowser(std::shared_ptr<core::storage::StoreWorker> store
     connect(m_delete, &QPushButton::clicked, this, &SessionBrowser::deleteSelected);
     connect(refresh, &QPushButton::clicked, this, &SessionBrowser::reload);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::close);
-    connect(new QShortcut(QKeySequence::Delete, m_table), &QShortcut::activated, this, &SessionBrowser::deleteSelected);
-    connect(new QShortcut(QKeySequence::Refresh, this), &QShortcut::activated, this, &SessionBrowser::reload);
+    connect(new QShortcut(kDeleteKeys, m_table), &QShortcut::activated, this, &SessionBrowser::deleteSelected);
+    connect(new QShortcut(kRefreshKeys, this), &QShortcut::activated, this, &SessionBrowser::reload);
     reload();
+}
+
+QList<ShortcutRow> SessionBrowser::helpRows()
+{
+    return {{tr("Open the selected sessions for review"), keysText({kOpenKeys})},
+            {tr("Delete the selected sessions"), keysText({kDeleteKeys})},
+            {tr("Refresh"), keysText({kRefreshKeys})}};
 }
 
 void SessionBrowser::reload()

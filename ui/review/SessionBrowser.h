@@ -8,6 +8,8 @@
 // samples) runs on the window's store worker, off the GUI thread.
 #pragma once
 
+#include "ui/HelpWindows.h"
+
 #include "core/storage/SessionSource.h"
 
 #include <QDialog>
@@ -50,6 +52,8 @@ public:
     // are deleted, sessionsDeleted is emitted and the list reloaded.
     void deleteSelected();
     QTableView* table() const { return m_table; }
+    // Its shortcuts for Help, from the keys it uses.
+    static QList<ShortcutRow> helpRows();
     const QString& storePath() const { return m_storePath; }
 
 signals:
