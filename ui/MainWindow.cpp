@@ -277,7 +277,8 @@ void MainWindow::saveSettings() const
 void MainWindow::createMenus()
 {
     QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(tr("&Quit"), QKeySequence::Quit, qApp, &QApplication::closeAllWindows);
+    // Ctrl+Q, as the guide says, whatever the platform's default for Quit.
+    file->addAction(tr("&Quit"), QKeySequence(tr("Ctrl+Q")), qApp, &QApplication::closeAllWindows);
 
     QMenu* device = menuBar()->addMenu(tr("&Device"));
     device->addAction(tr("&Choose a device…"), QKeySequence(tr("Ctrl+K")), this, [this] {

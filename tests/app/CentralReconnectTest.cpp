@@ -6,7 +6,6 @@
 // outage fails for its holder instead of going on, unnoticed, on a new
 // connection that holds neither.
 #include "core/storage/SessionStore.h"
-#include "core/storage/central/CentralSchema.h"
 #include "core/storage/central/CentralStore.h"
 #include "core/storage/central/CentralSync.h"
 #include "support/PostgresServer.h"
@@ -30,11 +29,8 @@ class CentralReconnect : public ::testing::Test {
 protected:
     static void SetUpTestSuite()
     {
-        s_server = std::make_unique<PostgresServer>();
-        PgConnection owner(s_server->conninfo());
-        core::storage::central::initCentralStore(owner);
-        owner.run("CREATE ROLE press_a LOGIN IN ROLE tactiscope_station; "
-                  "CREATE ROLE quality LOGIN IN ROLE tactiscope_reviewer;");
+        s_server = tactiscope::testing::centralStoreServer(
+            {{"press_a", "tactiscope_station"}, {"quality", "tactiscope_reviewer"}});
         tactiscope::testing::writeStationStore(s_station.string());
         core::storage::SessionStore local(s_station.string());
         CentralStore central(s_server->conninfo("press_a"));

@@ -3,6 +3,9 @@
 
 #include "support/TempPath.h"
 
+#include "core/storage/central/CentralSchema.h"
+#include "core/storage/central/PgConnection.h"
+
 #include <fstream>
 #include <pwd.h>
 #include <signal.h>
@@ -173,6 +176,17 @@ double PostgresServer::cpuSeconds() const
 std::string PostgresServer::conninfo(const std::string& user, const std::string& dbname) const
 {
     return "host=" + m_folder.string() + " dbname=" + dbname + " user=" + user;
+}
+
+std::unique_ptr<PostgresServer> centralStoreServer(const std::vector<std::pair<std::string, std::string>>& logins)
+{
+    auto server = std::make_unique<PostgresServer>();
+    core::storage::central::PgConnection owner(server->conninfo());
+    core::storage::central::initCentralStore(owner);
+    std::string roles;
+    for (const auto& [login, role] : logins) roles += "CREATE ROLE " + login + " LOGIN IN ROLE " + role + ";\n";
+    owner.run(roles);
+    return server;
 }
 
 }  // namespace tactiscope::testing

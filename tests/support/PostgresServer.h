@@ -7,7 +7,9 @@
 
 #include <csignal>
 #include <filesystem>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tactiscope::testing {
@@ -56,5 +58,10 @@ private:
     std::filesystem::path m_bin;  // initdb, pg_ctl
     std::string m_asPostgres;     // "runuser -u postgres -- " when root
 };
+
+// A server holding a central store (`server init`'s schema and roles) in
+// its default database, with `logins` made in their roles, e.g.
+// {{"press_a", "tactiscope_station"}, {"quality", "tactiscope_reviewer"}}.
+std::unique_ptr<PostgresServer> centralStoreServer(const std::vector<std::pair<std::string, std::string>>& logins);
 
 }  // namespace tactiscope::testing

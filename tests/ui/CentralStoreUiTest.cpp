@@ -6,7 +6,6 @@
 // reached; a browser, a review and the status bar live through the server
 // being killed and started again.
 #include "core/storage/StoreWorker.h"
-#include "core/storage/central/CentralSchema.h"
 #include "core/storage/central/CentralSync.h"
 #include "ui/MainWindow.h"
 #include "ui/central/CentralStoreDialog.h"
@@ -48,12 +47,8 @@ class CentralStoreUi : public tactiscope::testing::TempDirectoryTest {
 protected:
     static void SetUpTestSuite()
     {
-        s_server = std::make_unique<PostgresServer>();
-        PgConnection owner(s_server->conninfo());
-        core::storage::central::initCentralStore(owner);
-        owner.run("CREATE ROLE press_a LOGIN IN ROLE tactiscope_station; "
-                  "CREATE ROLE press_b LOGIN IN ROLE tactiscope_station; "
-                  "CREATE ROLE quality LOGIN IN ROLE tactiscope_reviewer;");
+        s_server = tactiscope::testing::centralStoreServer(
+            {{"press_a", "tactiscope_station"}, {"press_b", "tactiscope_station"}, {"quality", "tactiscope_reviewer"}});
     }
     static void TearDownTestSuite() { s_server.reset(); }
 

@@ -61,7 +61,7 @@ QList<QPair<QString, QAction*>> ReviewActions::withShortcuts() const
                                                  {{}, verdict},           {tr("List of events and notes"), deleteNote}};
     QList<QPair<QString, QAction*>> rows;
     for (const auto& [where, a] : placed) {
-        if (a->shortcuts().isEmpty()) continue;
+        if (!a || a->shortcuts().isEmpty()) continue;
         const QString text = QString(a->text()).remove(QLatin1Char('&'));
         rows.append({where.isEmpty() ? text : where + QStringLiteral(" › ") + text, a});
     }

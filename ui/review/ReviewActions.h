@@ -35,7 +35,7 @@ public:
     QAction* play;
     QAction* addNote;
     QAction* undoDelete;
-    QAction* verdict;
+    QAction* verdict;  // null in a window whose mode has no verdict
     // The list of events and notes (its own shortcut: Del there only).
     QAction* deleteNote;
 

@@ -49,6 +49,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 
 namespace tactiscope::ui {
@@ -417,6 +418,8 @@ void ReviewWindow::createActions()
     if (core::definitionOf(m_session.metadata.mode).detectsDefects) {  // the modes with a verdict
         bar->addAction(a->verdict);
         connect(a->verdict, &QAction::triggered, this, &ReviewWindow::askVerdict);
+    } else {
+        delete std::exchange(a->verdict, nullptr);
     }
     // What the store's rights forbid is disabled, with the reason, before
     // it would be refused.
@@ -427,7 +430,7 @@ void ReviewWindow::createActions()
         action->setToolTip(tr("Not here: %1").arg(QString::fromStdString(refusal)));
     };
     for (QAction* notes : {a->addNote, a->deleteNote, a->undoDelete}) allowOnly(notes, rights.noNotes);
-    allowOnly(a->verdict, rights.noReviewerVerdict);
+    if (a->verdict) allowOnly(a->verdict, rights.noReviewerVerdict);
 }
 
 void ReviewWindow::refreshRecords()

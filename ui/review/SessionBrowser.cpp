@@ -38,10 +38,20 @@ using core::storage::SessionSource;
 const QDate kAnyDate(2000, 1, 1);  // the date edits' "any" value
 
 // Its keys, here once for the window and its entry in Help. (Enter opens:
-// Open is the default button.)
-const QKeySequence kOpenKeys(Qt::Key_Return);
-const QKeySequence kDeleteKeys(QKeySequence::Delete);
-const QKeySequence kRefreshKeys(QKeySequence::Refresh);
+// Open is the default button.) Functions: a standard key is the platform's,
+// known only once the application runs.
+QKeySequence openKeys()
+{
+    return QKeySequence(Qt::Key_Return);
+}
+QKeySequence deleteKeys()
+{
+    return QKeySequence(QKeySequence::Delete);
+}
+QKeySequence refreshKeys()
+{
+    return QKeySequence(QKeySequence::Refresh);
+}
 
 // A date edit at "any" (its minimum, 2000-01-01) opens its calendar on
 // this month, not on January 2000.
@@ -218,16 +228,16 @@ SessionBrowser::SessionBrowser(std::shared_ptr<core::storage::StoreWorker> store
     connect(m_delete, &QPushButton::clicked, this, &SessionBrowser::deleteSelected);
     connect(refresh, &QPushButton::clicked, this, &SessionBrowser::reload);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::close);
-    connect(new QShortcut(kDeleteKeys, m_table), &QShortcut::activated, this, &SessionBrowser::deleteSelected);
-    connect(new QShortcut(kRefreshKeys, this), &QShortcut::activated, this, &SessionBrowser::reload);
+    connect(new QShortcut(deleteKeys(), m_table), &QShortcut::activated, this, &SessionBrowser::deleteSelected);
+    connect(new QShortcut(refreshKeys(), this), &QShortcut::activated, this, &SessionBrowser::reload);
     reload();
 }
 
 QList<ShortcutRow> SessionBrowser::helpRows()
 {
-    return {{tr("Open the selected sessions for review"), keysText({kOpenKeys})},
-            {tr("Delete the selected sessions"), keysText({kDeleteKeys})},
-            {tr("Refresh"), keysText({kRefreshKeys})}};
+    return {{tr("Open the selected sessions for review"), keysText({openKeys()})},
+            {tr("Delete the selected sessions"), keysText({deleteKeys()})},
+            {tr("Refresh"), keysText({refreshKeys()})}};
 }
 
 void SessionBrowser::reload()

@@ -233,14 +233,18 @@ void PgConnection::runOnEveryConnection(const std::string& sql)
     m_onEveryConnection.push_back(sql);
 }
 
-// Before a statement. A server that closed the connection (a restart
-// closes every socket) has left its socket readable at its end: read, the
-// connection shows as bad before anything is sent on it, and is made again.
+// Before a statement. Between statements nothing is owed to us, so anything
+// to read on an idle connection is the server ending it (a restart: its
+// FATAL message, or the end of the stream): the connection is dropped
+// before anything is sent on it, and made again.
 void PgConnection::ensureConnected()
 {
     if (m_connection && PQstatus(m_connection) == CONNECTION_OK && !PQisBusy(m_connection)) {
         pollfd socket{PQsocket(m_connection), POLLIN, 0};
-        if (::poll(&socket, 1, 0) > 0) PQconsumeInput(m_connection);
+        if (::poll(&socket, 1, 0) > 0) {
+            PQfinish(m_connection);
+            m_connection = nullptr;
+        }
     }
     if (m_connection && PQstatus(m_connection) == CONNECTION_OK) return;
     if (m_serverState > 0)
