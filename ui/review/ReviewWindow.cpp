@@ -49,8 +49,8 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
-#include <utility>
 #include <cmath>
+#include <utility>
 
 namespace tactiscope::ui {
 namespace {
