@@ -7,7 +7,10 @@
 #include "ui/report/LaneAxis.h"
 #include "ui/report/PlotImage.h"
 
+#include <QFontMetrics>
 #include <QLabel>
+#include <QLocale>
+#include <QScrollArea>
 #include <QVBoxLayout>
 #include <qcustomplot.h>
 
@@ -20,6 +23,10 @@ namespace {
 const QColor kTrace(31, 119, 180);
 const QColor kGap(160, 160, 160, 90);
 constexpr int kMarkerRowHeight_px = 20;
+// A value lane keeps this many text lines of height: its name (written
+// along the axis) and three ticks a label apart. Below that the labels
+// would overlap, so the lanes scroll instead.
+constexpr int kLaneLines = 5;
 constexpr double kMinimumSamplesShown = 10.0;
 
 // x in seconds on the lane's time axis, y as a fraction of the lane's height.
@@ -56,7 +63,6 @@ ReviewPlot::ReviewPlot(core::storage::SessionSource& store, const core::storage:
     m_readout->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_readout->setText(tr("Point at the plot for a readout; click to pin the cursor; drag or wheel to move in "
                           "time; Home shows the whole session."));
-    m_plot->setMinimumHeight(260);
     m_plot->plotLayout()->clear();
     m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     m_plot->setNoAntialiasingOnDrag(true);
@@ -80,6 +86,8 @@ ReviewPlot::ReviewPlot(core::storage::SessionSource& store, const core::storage:
         }
         time->setTickLabels(false);
         setUpLaneAxis(*rect, unitOf(c), m_lanes.lanes[c]->threshold());
+        rect->setSizeConstraintRect(QCPLayoutElement::scrInnerRect);  // the lane itself, not its margins
+        rect->setMinimumSize(0, kLaneLines * laneLine());
         QCPGraph* graph = m_plot->addGraph(time, rect->axis(QCPAxis::atLeft));
         graph->setPen(QPen(kTrace, 1.0));
         m_graphs.push_back(graph);
@@ -107,9 +115,17 @@ ReviewPlot::ReviewPlot(core::storage::SessionSource& store, const core::storage:
     m_playheadLines = makeLines(QPen(QColor(200, 30, 60), 1.5));
     setMarkers({}, {});
 
+    // The lanes scroll when the window is too short for all of them at a
+    // readable height, rather than squeezing their labels over each other.
+    auto* lanes = new QScrollArea(this);
+    lanes->setObjectName(QStringLiteral("laneScroll"));
+    lanes->setWidget(m_plot);
+    lanes->setWidgetResizable(true);
+    lanes->setFrameShape(QFrame::NoFrame);
+    lanes->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_plot, 1);
+    layout->addWidget(lanes, 1);
     layout->addWidget(m_readout);
 
     m_reloadTimer.setSingleShot(true);
@@ -122,8 +138,57 @@ ReviewPlot::ReviewPlot(core::storage::SessionSource& store, const core::storage:
     // Every replot lays out; only a new width calls for other stretches.
     connect(m_plot, &QCustomPlot::afterLayout, this, [this] {
         if (m_markerLane->width() != m_loadedWidth_px) m_reloadTimer.start();
+        fitTickCounts();
     });
     showWholeSession();
+}
+
+// Ticks dropped rather than overlapped: each lane gets the most ticks (at
+// most the three asked for) whose labels, as the ticker would place them
+// for the lane's range and height, stand at least a label's height apart,
+// with at least two inside the range when any count gives two. (A lane of
+// named levels keeps its names: its least height has room for them.)
+// Takes effect at the next replot, queued when something changed.
+void ReviewPlot::fitTickCounts()
+{
+    const double line = laneLine();
+    bool changed = false;
+    for (QCPAxisRect* rect : m_plot->axisRects()) {
+        if (rect == m_markerLane) continue;
+        QCPAxis* axis = rect->axis(QCPAxis::atLeft);
+        QCPAxisTicker& ticker = *axis->ticker();
+        if (dynamic_cast<QCPAxisTickerText*>(&ticker) || axis->range().size() <= 0.0) continue;
+        const int was = ticker.tickCount();
+        int best = 1;
+        for (int count = 3; count >= 1; --count) {
+            ticker.setTickCount(count);
+            QVector<double> ticks;
+            ticker.generate(axis->range(), QLocale(), QLatin1Char('g'), 6, ticks, nullptr, nullptr);
+            const auto inside =
+                std::count_if(ticks.begin(), ticks.end(), [&](double t) { return axis->range().contains(t); });
+            const double apart_px =
+                ticks.size() > 1 ? (ticks[1] - ticks[0]) / axis->range().size() * rect->height() : 0.0;
+            if (inside >= 2 && apart_px >= line) {
+                best = count;
+                break;
+            }
+        }
+        ticker.setTickCount(best);
+        changed = changed || best != was;
+    }
+    // The plot is never shorter than its lanes at their least heights with
+    // the margins the layout found: below that, the lanes scroll.
+    const int least = m_plot->plotLayout()->minimumOuterSizeHint().height();
+    if (least > m_plot->minimumHeight()) {
+        m_plot->setMinimumHeight(least);
+        changed = true;
+    }
+    if (changed) m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+int ReviewPlot::laneLine() const
+{
+    return QFontMetrics(m_plot->font()).height();  // the axes' tick labels use the plot's font
 }
 
 DisplayUnit ReviewPlot::unitOf(std::size_t lane) const
@@ -176,6 +241,11 @@ void ReviewPlot::setMarkers(const QStringList& rows, const std::vector<MarkerSpa
     rowAxis->setRange(-0.5, count - 0.5);
     m_markerLane->setMinimumSize(0, count * kMarkerRowHeight_px);
     m_markerLane->setMaximumSize(QWIDGETSIZE_MAX, count * kMarkerRowHeight_px);
+    // The plot's least height: every lane at its own, with room for the
+    // margins between them and the time axis's labels below.
+    const int line = laneLine();
+    m_plot->setMinimumHeight(static_cast<int>(m_lanes.lanes.size()) * (kLaneLines + 1) * line +
+                             count * kMarkerRowHeight_px + 4 * line);
     QCPAxis* time = m_markerLane->axis(QCPAxis::atBottom);
     for (const MarkerSpan& span : spans) {
         auto* item = new QCPItemRect(m_plot);

@@ -100,6 +100,8 @@ private:
     void placeLines(std::vector<QCPItemStraightLine*>& lines, std::optional<double> time_s);
     std::vector<QCPItemStraightLine*> makeLines(const QPen& pen);
     DisplayUnit unitOf(std::size_t lane) const;
+    int laneLine() const;  // a tick label's height
+    void fitTickCounts();
 
     core::storage::SessionSource& m_store;
     core::storage::SessionSummary m_session;

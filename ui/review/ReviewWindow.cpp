@@ -29,6 +29,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFontMetrics>
+#include <QGuiApplication>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QInputDialog>
@@ -39,6 +40,8 @@
 #include <QPrintDialog>
 #include <QPrinter>
 #include <QRegularExpression>
+#include <QScreen>
+#include <QScrollArea>
 #include <QSettings>
 #include <QSpinBox>
 #include <QSplitter>
@@ -218,7 +221,13 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionSour
         connect(m_account, &ReviewAccount::problem, this, &ReviewWindow::showProblem);
         connect(m_account, &ReviewAccount::status, this,
                 [this](const QString& text) { statusBar()->showMessage(text); });
-        bottom->addWidget(m_account);
+        // Its controls stay reachable however low the panel is: it scrolls.
+        auto* room = new QScrollArea(this);
+        room->setObjectName(QStringLiteral("accountScroll"));
+        room->setWidget(m_account);
+        room->setWidgetResizable(true);
+        room->setFrameShape(QFrame::NoFrame);
+        bottom->addWidget(room);
     }
     const bool accountFirst = m_account && m_account->wantsRoom();
     bottom->setStretchFactor(0, accountFirst ? 2 : 3);
@@ -235,8 +244,18 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionSour
     split->addWidget(bottom);
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 2);
+    // Neither side collapses at a drag: the lanes and the panel scroll.
+    split->setChildrenCollapsible(false);
+    bottom->setChildrenCollapsible(false);
+    const int line = fontMetrics().height();
+    top->setMinimumHeight(8 * line);
+    bottom->setMinimumHeight(8 * line);
     setCentralWidget(split);
-    resize(1200, 860);
+    // 1200 × 860 where the screen has room; on a laptop's 1366 × 768, what
+    // it has (the frame and a task bar left to it).
+    const QScreen* screen = parent ? parent->screen() : QGuiApplication::primaryScreen();
+    const QSize room = screen ? screen->availableGeometry().size() - QSize(16, 48) : QSize(1200, 860);
+    resize(QSize(1200, 860).boundedTo(room));
 
     m_replay.setInterval(40);
     connect(&m_replay, &QTimer::timeout, this, &ReviewWindow::advanceReplay);
