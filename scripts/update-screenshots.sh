@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh dev tactiscope_ui_tests tactiscope_cli_tests
 mkdir -p docs/screenshots
-views='PanelScanView.Defects*:PalpationView.Presses*:CapacitiveView.Readouts*:DevicePanel.TheEmulator*:Recording.Sessions*:SensorProfileDialogTest.Lists*:DesignTool.Curves*:GaugeFactorWizardTest.Completed*:GaugeFactorWizardTest.AMislabelled*:CapacitiveWizardTest.LoadAndUnload*:CalibrationHistoryTest.Shows*:SessionBrowserTest.ListsEvery*:SessionBrowserTest.DeleteAsks*:ReviewWindowTest.Reanalysis*:ReviewWindowTest.AReviewersVerdict*:ReviewPalpation.*:ReviewCapacitive.*:ModeAndSource.AMode*:CentralStoreUi.*:LiveListsView.*:ReviewGeneral.*:HelpWindows.TheShortcuts*'
+views='PanelScanView.Defects*:PalpationView.Presses*:CapacitiveView.Readouts*:DevicePanel.TheEmulator*:Recording.Sessions*:SensorProfileDialogTest.Lists*:DesignTool.Curves*:GaugeFactorWizardTest.Completed*:GaugeFactorWizardTest.AMislabelled*:CapacitiveWizardTest.LoadAndUnload*:CalibrationHistoryTest.Shows*:SessionBrowserTest.ListsEvery*:SessionBrowserTest.DeleteAsks*:ReviewWindowTest.Reanalysis*:ReviewWindowTest.AReviewersVerdict*:ReviewPalpation.*:ReviewCapacitive.*:ModeAndSource.AMode*:CentralStoreUi.*:LiveListsView.*:ReviewGeneral.*:HelpWindows.TheShortcuts*:ReviewGeometry.*'
 TACTISCOPE_SCREENSHOT_DIR="$PWD/docs/screenshots" QT_QPA_PLATFORM=offscreen \
   build/dev/tests/tactiscope_ui_tests --gtest_filter="$views"
 # The same views at 200 % scaling (a 4K screen, or a 2732×1536 laptop):
