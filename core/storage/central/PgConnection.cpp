@@ -278,9 +278,9 @@ PgConnection::~PgConnection()
     PQfinish(m_connection);
 }
 
-// A statement that failed throws, with the server's reason.
-// A connection that went bad on the way (the server closed it) is the
-// server gone, whatever the statement was.
+// A statement that could not be sent or answered throws with libpq's
+// reason; a connection that went bad on the way (the server closed it) is
+// the server gone, whatever the statement was.
 void PgConnection::failed() const
 {
     const std::string reason = "the central store: " + oneLine(PQerrorMessage(m_connection));
@@ -288,6 +288,7 @@ void PgConnection::failed() const
     throw StorageError(reason);
 }
 
+// A statement the server refused throws with its reason.
 void PgConnection::check(const PgResult& result) const
 {
     if (result.m_result == nullptr) failed();
