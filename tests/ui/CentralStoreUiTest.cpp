@@ -77,6 +77,20 @@ protected:
         ASSERT_EQ(core::storage::central::syncToCentral(local, central).sent, 3);
     }
 
+    // Opens the panel scan "press_a-17" listed in `browser` for review, and
+    // returns its window (null when none opened).
+    static ui::ReviewWindow* reviewThePanelScan(ui::SessionBrowser& browser, const QWidget& owner)
+    {
+        const QAbstractItemModel* model = browser.table()->model();
+        for (int row = 0; row < model->rowCount(); ++row)
+            if (model->index(row, ui::SessionTableModel::Subject).data().toString() == "press_a-17")
+                browser.table()->selectRow(row);
+        browser.openSelected();
+        ui::ReviewWindow* review = nullptr;
+        waitFor([&] { return (review = owner.findChild<ui::ReviewWindow*>()) != nullptr; }, 10000);
+        return review;
+    }
+
     static inline std::unique_ptr<PostgresServer> s_server;
 };
 
@@ -113,12 +127,8 @@ TEST_F(CentralStoreUi, TheBrowserListsBothStationsAndASessionOpensFromTheServer)
     tactiscope::testing::saveScreenshot(*browser, "central-store-browser");
 
     // Review straight from the server: the panel scan, with its samples.
-    for (int row = 0; row < 6; ++row)
-        if (table->model()->index(row, ui::SessionTableModel::Subject).data().toString() == "press_a-17")
-            table->selectRow(row);
-    browser->openSelected();
-    ui::ReviewWindow* review = nullptr;
-    ASSERT_TRUE(waitFor([&] { return (review = owner.findChild<ui::ReviewWindow*>()) != nullptr; }, 10000));
+    ui::ReviewWindow* review = reviewThePanelScan(*browser, owner);
+    ASSERT_NE(review, nullptr);
     EXPECT_EQ(review->storePath(), conninfo);
     EXPECT_EQ(review->store().sampleCount(review->sessionId()), 6000U);
     EXPECT_EQ(review->store().events(review->sessionId()).size(), 1U);
@@ -197,12 +207,8 @@ TEST_F(CentralStoreUi, ABrowserAReviewAndTheStatusBarLiveThroughAServerRestart)
     ui::SessionBrowser* browser = reviews.showCentralBrowser(QString::fromStdString(s_server->conninfo("quality")));
     QTableView* table = browser->table();
     ASSERT_TRUE(waitFor([&] { return table->model()->rowCount() == 3; }, 10000));
-    for (int row = 0; row < 3; ++row)
-        if (table->model()->index(row, ui::SessionTableModel::Subject).data().toString() == "press_a-17")
-            table->selectRow(row);
-    browser->openSelected();
-    ui::ReviewWindow* review = nullptr;
-    ASSERT_TRUE(waitFor([&] { return (review = window.findChild<ui::ReviewWindow*>()) != nullptr; }, 10000));
+    ui::ReviewWindow* review = reviewThePanelScan(*browser, window);
+    ASSERT_NE(review, nullptr);
     auto* reviewProblem = child<QLabel>(*review, "problemText");
     auto* browserProblem = child<QLabel>(*browser, "problemText");
     auto* count = child<QLabel>(*browser, "countText");
@@ -247,12 +253,8 @@ TEST_F(CentralStoreUi, ActionsTheLoginMayNotTakeAreDisabledWithTheReason)
         EXPECT_FALSE(remove->isEnabled()) << login;
         EXPECT_TRUE(remove->toolTip().contains("may not delete sessions")) << remove->toolTip().toStdString();
 
-        for (int row = 0; row < 3; ++row)
-            if (browser->table()->model()->index(row, ui::SessionTableModel::Subject).data().toString() == "press_a-17")
-                browser->table()->selectRow(row);
-        browser->openSelected();
-        ui::ReviewWindow* review = nullptr;
-        ASSERT_TRUE(waitFor([&] { return (review = owner.findChild<ui::ReviewWindow*>()) != nullptr; }, 10000));
+        ui::ReviewWindow* review = reviewThePanelScan(*browser, owner);
+        ASSERT_NE(review, nullptr) << login;
         auto* verdict = review->findChild<QAction*>(QStringLiteral("verdictAction"));
         ASSERT_NE(verdict, nullptr);
         const bool reviewer = std::string(login) == "quality";
