@@ -1,6 +1,8 @@
 // ReportDocument: the report's HTML, its plot resource, and the PDF.
 #include "ui/report/ReportDocument.h"
 
+#include "core/calibration/CalibrationFields.h"
+
 #include "core/modes/ModeDefinition.h"
 #include "ui/NumberText.h"
 #include "ui/VocabularyText.h"
@@ -55,15 +57,19 @@ int pageCountOf(const QByteArray& pdf)
 
 QString calibrationText(const core::calibration::CalibrationRecord& record)
 {
+    // Its values in words with units, a row each, never the record's key
+    // names; R² is said with the fit's points below.
     QStringList values;
-    for (const auto& [name, value] : record.values)
-        values << QStringLiteral("%1 = %2").arg(text(name), significantText(value, 5));
+    for (const auto& row : core::calibration::calibrationRows(record.values))
+        if (!(row.label == "R²" && record.fit.points > 0))
+            values << QStringLiteral("%1 %2").arg(text(row.label), text(row.value)) +
+                          (row.unit.empty() ? QString() : QStringLiteral(" ") + text(row.unit));
     QString line =
         QObject::tr("%1 of %2, %3 by %4")
             .arg(text(record.kind), text(record.sensorName), text(record.timestampUtc), orDash(record.operatorName));
     if (record.fit.points > 0)
         line += QObject::tr(" (R² = %1, %2 points)").arg(number(record.fit.rSquared, 5)).arg(record.fit.points);
-    return line + QStringLiteral("<br><small>") + values.join(QStringLiteral(", ")) + QStringLiteral("</small>");
+    return line + QStringLiteral("<br><small>") + values.join(QStringLiteral("<br>")) + QStringLiteral("</small>");
 }
 
 QString header(const core::report::ReportData& data)
