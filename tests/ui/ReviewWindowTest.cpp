@@ -31,6 +31,7 @@
 #include <QProcess>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSpinBox>
 #include <QTemporaryDir>
@@ -130,6 +131,12 @@ TEST_F(ReviewWindowTest, TheOverviewReadsAFewChunksAndAZoomShowsTheExactSamples)
         EXPECT_EQ(static_cast<float>(zoomed.low[i]), row[2].toFloat()) << i;
     }
     EXPECT_TRUE(m_window->plot()->readoutAt(100.1).contains(QStringLiteral("b: "))) << "readout names the channel";
+    // The decision reads as its names (issue 37: before, "0.0000 … 0.0000" for "none").
+    const QString readout = m_window->plot()->readoutAt(100.1);
+    EXPECT_TRUE(QRegularExpression(QStringLiteral("Decision: (none|A→B|B→A)( … (none|A→B|B→A))?($| )"))
+                    .match(readout)
+                    .hasMatch())
+        << readout.toStdString();
     // The detector's lanes follow the strains: too long a span to compute
     // over the whole session, exact when zoomed in (values in
     // DerivedPanelScanTest).

@@ -45,6 +45,15 @@ QString valueText(double value, const DisplayUnit& unit, double magnitude)
     return fixedText(value * unit.scale, decimalsForMagnitude(magnitude, 5));
 }
 
+// A lane of named levels (the detector's decision) reads as its names,
+// never as the numbers they are drawn at ("0.0000 … 0.0000" for "none").
+QString levelName(double value, const DisplayUnit& unit)
+{
+    const auto nearest = std::ranges::min_element(
+        unit.levels, {}, [&](const auto& level) { return std::abs(level.first - value * unit.scale); });
+    return nearest->second;
+}
+
 }  // namespace
 
 ReviewPlot::ReviewPlot(core::storage::SessionSource& store, const core::storage::SessionSummary& session,
@@ -370,7 +379,11 @@ QString ReviewPlot::readoutAt(double time_s) const
         const auto k = static_cast<std::size_t>(i);
         if (std::isnan(window.low[k]))
             parts << tr("%1: lost").arg(name);
-        else if (window.exact)
+        else if (!unit.levels.empty()) {
+            const QString low = levelName(window.low[k], unit), high = levelName(window.high[k], unit);
+            parts << (window.exact || low == high ? tr("%1: %2").arg(name, low)
+                                                  : tr("%1: %2 … %3").arg(name, low, high));
+        } else if (window.exact)
             parts << tr("%1: %2 %3").arg(name, valueText(window.low[k], unit, window.low[k] * unit.scale), unit.symbol);
         else {
             const double magnitude = std::max(std::abs(window.low[k]), std::abs(window.high[k])) * unit.scale;
