@@ -210,26 +210,6 @@ ALTER TABLE readings ADD CONSTRAINT readings_bounds
 ALTER TABLE annotations DROP CONSTRAINT IF EXISTS annotations_bounds;
 ALTER TABLE annotations ADD CONSTRAINT annotations_bounds
     CHECK (time_s > '-Infinity' AND time_s < 'Infinity') NOT VALID;
-
--- A chunk holds count samples of each of its session's channels, 4 bytes
--- each (the sync sends the channel rows first). As the owner: it counts the
--- channels whatever the inserting role may see.
-CREATE OR REPLACE FUNCTION chunk_fits_channels() RETURNS trigger LANGUAGE plpgsql SECURITY DEFINER
-    SET search_path = public AS $fits$
-DECLARE
-    channel_count bigint;
-BEGIN
-    SELECT count(*) INTO channel_count FROM channels WHERE session_id = NEW.session_id;
-    IF octet_length(NEW.samples) <> NEW.count::bigint * channel_count * 4 THEN
-        RAISE EXCEPTION 'a chunk of % samples of % channels holds % bytes, not %', NEW.count, channel_count,
-            NEW.count::bigint * channel_count * 4, octet_length(NEW.samples) USING ERRCODE = 'check_violation';
-    END IF;
-    RETURN NEW;
-END
-$fits$;
-REVOKE ALL ON FUNCTION chunk_fits_channels() FROM PUBLIC;
-DROP TRIGGER IF EXISTS chunk_fits_channels ON chunks;
-CREATE TRIGGER chunk_fits_channels BEFORE INSERT ON chunks FOR EACH ROW EXECUTE FUNCTION chunk_fits_channels();
 )sql";
 
 // Rights and row-level security (docs/fleet.md, "Roles and rights"). A
@@ -273,22 +253,44 @@ DROP POLICY IF EXISTS reviewer_verdict ON sessions;
 DROP POLICY IF EXISTS station_completes ON sessions;
 CREATE POLICY station_completes ON sessions AS RESTRICTIVE FOR UPDATE TO tactiscope_station
     USING (NOT complete) WITH CHECK (complete);
+)sql";
 
--- The session's verdict is the latest decision of its trail, set by the
--- server as each decision arrives (the function runs as the owner).
-CREATE OR REPLACE FUNCTION verdict_from_trail() RETURNS trigger LANGUAGE plpgsql SECURITY DEFINER
-    SET search_path = public AS $trail$
+// A row trigger `name` on `table`, its PL/pgSQL `body` run as the owner
+// (whatever the inserting role may see or do) and callable by no client.
+std::string serverTrigger(const std::string& name, const std::string& when, const std::string& table,
+                          const std::string& body)
+{
+    return "CREATE OR REPLACE FUNCTION " + name +
+           "() RETURNS trigger LANGUAGE plpgsql SECURITY DEFINER SET search_path = public AS $body$\n" + body +
+           "\n$body$;\nREVOKE ALL ON FUNCTION " + name + "() FROM PUBLIC;\nDROP TRIGGER IF EXISTS " + name + " ON " +
+           table + ";\nCREATE TRIGGER " + name + " " + when + " ON " + table + " FOR EACH ROW EXECUTE FUNCTION " +
+           name + "();\n";
+}
+
+// A chunk holds count samples of each of its session's channels, 4 bytes
+// each (the sync sends the channel rows first): counted as the owner, the
+// channels whatever the inserting role may see.
+constexpr const char* kChunkFitsChannels = R"sql(
+DECLARE
+    channel_count bigint;
+BEGIN
+    SELECT count(*) INTO channel_count FROM channels WHERE session_id = NEW.session_id;
+    IF octet_length(NEW.samples) <> NEW.count::bigint * channel_count * 4 THEN
+        RAISE EXCEPTION 'a chunk of % samples of % channels holds % bytes, not %', NEW.count, channel_count,
+            NEW.count::bigint * channel_count * 4, octet_length(NEW.samples) USING ERRCODE = 'check_violation';
+    END IF;
+    RETURN NEW;
+END)sql";
+
+// The session's verdict is the latest decision of its trail, set by the
+// server as each decision arrives.
+constexpr const char* kVerdictFromTrail = R"sql(
 BEGIN
     UPDATE sessions SET verdict = (SELECT v.verdict FROM verdicts v WHERE v.session_id = NEW.session_id
                                    ORDER BY v.decided_utc DESC, v.id DESC LIMIT 1)
      WHERE id = NEW.session_id;
     RETURN NULL;
-END
-$trail$;
-REVOKE ALL ON FUNCTION verdict_from_trail() FROM PUBLIC;
-DROP TRIGGER IF EXISTS verdict_from_trail ON verdicts;
-CREATE TRIGGER verdict_from_trail AFTER INSERT ON verdicts FOR EACH ROW EXECUTE FUNCTION verdict_from_trail();
-)sql";
+END)sql";
 
 // The tables whose rows belong to a session: a station's rows are those of
 // its own sessions; a reviewer reads those of finished sessions.
@@ -349,7 +351,9 @@ void initCentralStore(PgConnection& connection)
     std::string script = "BEGIN;\nSELECT pg_advisory_xact_lock(7426);\n";
     script += kSchema;
     script += kBounds;
+    script += serverTrigger("chunk_fits_channels", "BEFORE INSERT", "chunks", kChunkFitsChannels);
     script += kRights;
+    script += serverTrigger("verdict_from_trail", "AFTER INSERT", "verdicts", kVerdictFromTrail);
     script += policies("sessions", "station = current_user", "complete");
     script += policies("calibrations", "station = current_user", "true");
     for (const char* table : kSessionTables) script += sessionTablePolicies(table);
