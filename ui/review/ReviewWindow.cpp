@@ -42,6 +42,7 @@
 #include <QRegularExpression>
 #include <QScreen>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSpinBox>
 #include <QSplitter>
@@ -227,6 +228,10 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionSour
         room->setWidget(m_account);
         room->setWidgetResizable(true);
         room->setFrameShape(QFrame::NoFrame);
+        // Up and down only: across, it keeps the width its contents need
+        // (a palpation's scale and its labels), as it did unscrolled.
+        room->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+        room->setMinimumWidth(m_account->minimumSizeHint().width() + room->verticalScrollBar()->sizeHint().width());
         bottom->addWidget(room);
     }
     const bool accountFirst = m_account && m_account->wantsRoom();
