@@ -5,7 +5,7 @@
 #include "ui/ActiveProfiles.h"
 #include "ui/LivePlotWidget.h"
 #include "ui/NumberText.h"
-#include "ui/calibration/StoredCalibrations.h"
+#include "ui/calibration/CalibrationText.h"
 
 #include <QGridLayout>
 #include <QHBoxLayout>

@@ -309,13 +309,12 @@ void DevicePanel::clearCounters(const QString& state)
 
 void DevicePanel::showCounters(const LinkCounters& counters)
 {
-    const QLocale locale;
     m_state->setText(counters.state);
     m_state->setStyleSheet(counters.healthy ? QStringLiteral("color: #2e7d32;") : QStringLiteral("color: #c62828;"));
     m_rate->setText(
         counters.rate_hz
-            ? tr("%1 Hz (nominal %2 Hz)").arg(fixedText(*counters.rate_hz, 1), locale.toString(counters.nominalRate_hz))
-            : tr("measuring… (nominal %1 Hz)").arg(locale.toString(counters.nominalRate_hz)));
+            ? tr("%1 Hz (nominal %2 Hz)").arg(fixedText(*counters.rate_hz, 1), compactText(counters.nominalRate_hz, 6))
+            : tr("measuring… (nominal %1 Hz)").arg(compactText(counters.nominalRate_hz, 6)));
     m_samples->setText(count(counters.samples));
     m_lost->setText(count(counters.samplesLost));
     // Any loss is worth a glance: red, not hidden among the other numbers.

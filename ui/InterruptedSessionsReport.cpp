@@ -1,5 +1,6 @@
 // InterruptedSessionsReport: finding the sessions, the message and the export.
 #include "ui/InterruptedSessionsReport.h"
+#include "ui/DateText.h"
 
 #include "ui/NumberText.h"
 #include "ui/ProblemReport.h"
@@ -26,7 +27,7 @@ QString describe(const core::storage::SessionSummary& s)
         s.metadata.subject.empty() ? QObject::tr("no subject") : QString::fromStdString(s.metadata.subject);
     return QObject::tr("Session %1 (%2, %3), started %4: %5 s kept")
         .arg(s.id)
-        .arg(wordText(s.metadata.mode), subject, QString::fromStdString(s.startedUtc))
+        .arg(wordText(s.metadata.mode), subject, screenDateTime(s.startedUtc))
         .arg(fixedText(s.duration_s(), 1));
 }
 

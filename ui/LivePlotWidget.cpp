@@ -3,11 +3,14 @@
 
 #include "core/signal/MinMaxDecimation.h"
 #include "core/signal/ScrollingMinMax.h"
+#include "ui/AxisTicks.h"
 #include "ui/DisplayUnits.h"
 
 #include <qcustomplot.h>
 
+#include <QHelpEvent>
 #include <QLabel>
+#include <QToolTip>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -65,6 +68,7 @@ LivePlotWidget::LivePlotWidget(QWidget* parent)
     : QWidget(parent),
       m_plot(new QCustomPlot(this))
 {
+    m_plot->installEventFilter(this);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(6, 6, 6, 0);
     layout->setSpacing(2);
@@ -460,14 +464,36 @@ void LivePlotWidget::drawMarkers()
             // Markers' notes at the top, events' at the bottom: apart, and
             // clear of the legend in the top left.
             label->position->setCoords(marker.t_s, marker.event ? 1.0 : 0.0);
-            label->setPositionAlignment(Qt::AlignLeft | (marker.event ? Qt::AlignBottom : Qt::AlignTop));
+            // Right of its line in the left half of the lane, left of it in
+            // the right half: a note placed at "now" ran off the lane's edge.
+            const QCPRange shown = rect->axis(QCPAxis::atBottom)->range();
+            const bool rightHalf = marker.t_s > shown.center();
+            label->setPositionAlignment((rightHalf ? Qt::AlignRight : Qt::AlignLeft) |
+                                        (marker.event ? Qt::AlignBottom : Qt::AlignTop));
             label->setPadding(QMargins(3, 1, 3, 1));
             label->setBrush(QColor(255, 255, 255, 210));
             label->setColor(QColor(pen.color().rgb()));  // the text opaque
             label->setText(QFontMetrics(font()).elidedText(marker.note, Qt::ElideRight, 160));
+            label->setProperty("note", marker.note);
             m_markerItems.push_back(label);
         }
     }
+}
+
+bool LivePlotWidget::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched != m_plot || event->type() != QEvent::ToolTip) return QWidget::eventFilter(watched, event);
+    const auto* help = static_cast<QHelpEvent*>(event);
+    for (QCPAbstractItem* item : m_markerItems) {
+        auto* label = qobject_cast<QCPItemText*>(item);
+        if (!label) continue;
+        const QRectF box(label->topLeft->pixelPosition(), label->bottomRight->pixelPosition());
+        if (!box.contains(help->pos())) continue;
+        QToolTip::showText(help->globalPos(), label->property("note").toString(), m_plot, box.toAlignedRect());
+        return true;
+    }
+    QToolTip::hideText();
+    return true;
 }
 
 // One lane's time axis moved (a drag, a zoom): every lane follows, and a
@@ -591,8 +617,6 @@ void LivePlotWidget::draw(double start_s, double end_s)
     for (std::size_t lane = 0; lane < m_lanes.size(); ++lane) {
         Lane& l = m_lanes[lane];
         l.rect->axis(QCPAxis::atBottom)->setRange(start_s, end_s);
-        // About one tick label per 40 px, so low lanes stay legible.
-        l.rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(std::clamp(l.rect->height() / 40, 2, 6));
         if (l.threshold_si) {  // the line it is read against stays in view
             laneMin[lane] = std::min(laneMin[lane], *l.threshold_si * l.scale);
             laneMax[lane] = std::max(laneMax[lane], *l.threshold_si * l.scale);
@@ -602,6 +626,10 @@ void LivePlotWidget::draw(double start_s, double end_s)
         const double headroom = legendHeadroom(l.rect);
         l.rect->axis(QCPAxis::atLeft)->setRange(l.range.lower, l.range.upper + headroom * l.range.size());
     }
+    // About one tick label per 40 px, so low lanes stay legible, and two at least.
+    for (Lane& l : m_lanes)
+        fitTickCount(*l.rect->axis(QCPAxis::atLeft), l.rect->height(), QFontMetrics(font()).height(),
+                     std::clamp(l.rect->height() / 40, 2, 6));
     m_drawing = false;
     drawGapBands();
     m_plot->replot();

@@ -132,6 +132,9 @@ private slots:
     // the frame timer (and invoked by name from the display benchmark).
     void refresh();
 
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;  // a cut marker note's whole text as a tooltip
+
 private:
     struct Lane {
         QCPAxisRect* rect = nullptr;

@@ -15,6 +15,7 @@
 #include "ui/DesignTool.h"
 #include "ui/DeviceConnector.h"
 #include "ui/DevicePanel.h"
+#include "ui/ElidedTextTips.h"
 #include "ui/HelpWindows.h"
 #include "ui/InterruptedSessionsReport.h"
 #include "ui/LinkStatus.h"
@@ -100,6 +101,7 @@ MainWindow::MainWindow(QWidget* parent)
       m_devicePanel(new DevicePanel(this)),
       m_review(new ReviewWindows(this))
 {
+    ElidedTextTips::install();  // every cut cell and combo of every window says its whole text
     setWindowTitle(tr("Tactiscope"));
     setWindowIcon(QIcon(QStringLiteral(":/tactiscope/icons/tactiscope.svg")));
     // The traces on top, the mode's view (its lanes, readings and controls) below.

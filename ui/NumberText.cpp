@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 namespace tactiscope::ui {
 
@@ -117,6 +118,32 @@ std::pair<QString, QString> valueAndErrorTexts(double value, double standardErro
 {
     const int decimals = decimalsFor(standardError);
     return {fixedText(value, decimals), fixedText(standardError, decimals)};
+}
+
+QString valueWithErrorText(double value, double standardError)
+{
+    const auto [v, e] = valueAndErrorTexts(value, standardError);
+    return v + QStringLiteral(" ± ") + e;
+}
+
+int sharedDecimals(const std::vector<double>& standardErrors, int fallback)
+{
+    std::optional<int> coarsest;
+    for (const double error : standardErrors)
+        if (std::isfinite(error) && error > 0.0) coarsest = std::min(coarsest.value_or(9), decimalsFor(error));
+    return coarsest.value_or(fallback);
+}
+
+QString rangeText(double low, double high, int decimals)
+{
+    const QString from = fixedText(low, decimals);
+    const QString to = fixedText(high, decimals);
+    return from == to ? from : from + QStringLiteral(" – ") + to;
+}
+
+QString countText(long long n, const QString& one, const QString& many)
+{
+    return QLocale().toString(n) + u' ' + (n == 1 ? one : many);
 }
 
 }  // namespace tactiscope::ui

@@ -7,6 +7,7 @@
 #include <QString>
 
 #include <utility>
+#include <vector>
 
 namespace tactiscope::ui {
 
@@ -43,6 +44,22 @@ QString compactText(double value, int significant);
 // significant digits (core::text::uncertaintyDecimals, at most six
 // decimals), the value to the same decimal place; no error, no decimals.
 std::pair<QString, QString> valueAndErrorTexts(double value, double standardError);
-int decimalsFor(double standardError);  // the decimals of both
+int decimalsFor(double standardError);                           // the decimals of both
+QString valueWithErrorText(double value, double standardError);  // "2.13930 ± 0.00029"
+
+// The decimals a column shares: those of its coarsest uncertainty, so no
+// row claims digits the others lack and the decimal points line up
+// ("117.0 / 116.9 / 117.0", never "117.0 / 116.9760 / 116.99282");
+// `fallback` when no row has one.
+int sharedDecimals(const std::vector<double>& standardErrors, int fallback);
+
+// A range at `decimals`: "116.9 – 117.2", or the one value when both ends
+// read the same ("117.0", never "117.0 – 117.0").
+QString rangeText(double low, double high, int decimals);
+
+// A count and its noun, in the locale's digits: "1 session", "3 sessions",
+// "8,000 samples". The noun is given in both forms, so English reads right
+// without a translation file.
+QString countText(long long n, const QString& one, const QString& many);
 
 }  // namespace tactiscope::ui

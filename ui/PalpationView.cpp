@@ -8,7 +8,7 @@
 #include "ui/NumberText.h"
 #include "ui/SiteGridMap.h"
 #include "ui/StiffnessScale.h"
-#include "ui/calibration/StoredCalibrations.h"
+#include "ui/calibration/CalibrationText.h"
 
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -62,11 +62,13 @@ QString calibrationLine(const core::compliance::LivePalpation& palpation, const 
     const auto high = palpation.gaugeFactor(true), low = palpation.gaugeFactor(false);
     if (!high || !low) return PalpationView::tr("Calibration: strain or force as the device sends it");
     const auto factorText = [](double factor) { return compactText(factor, 4); };
-    QString line =
-        PalpationView::tr("Calibration: %1 — gauge factors %2 (stiff) and %3 (soft); kₒ needs only their ratio")
-            .arg(calibration.isEmpty() ? PalpationView::tr("none, nominal") : calibration, factorText(*high),
-                 factorText(*low))
-            .toHtmlEscaped();
+    // One line whatever the records: which they are, with their dates and
+    // operators, is in the label's tooltip (five lines of it squeezed the
+    // tissue scale).
+    QString line = PalpationView::tr("Calibration: %1 — gauge factors %2 (stiff) and %3 (soft)")
+                       .arg(calibration.isEmpty() ? PalpationView::tr("none, nominal") : PalpationView::tr("stored"),
+                            factorText(*high), factorText(*low))
+                       .toHtmlEscaped();
     if (const auto& mixed = palpation.mixedCalibrationWarning())
         line += QStringLiteral("<br><span style='color:#b00020'><b>%1</b></span>")
                     .arg(QString::fromStdString(*mixed).toHtmlEscaped());
@@ -153,6 +155,10 @@ void PalpationView::bind(const devices::session::LiveSession* session)
     m_probe->setText(probeName.isEmpty() || !m_palpation
                          ? QString()
                          : probeLine(probeName) + QStringLiteral("<br>") + calibrationLine(*m_palpation, calibration));
+    m_probe->setToolTip(m_palpation ? tr("%1. kₒ needs only the ratio of the gauge factors.")
+                                          .arg(calibration.isEmpty() ? tr("No calibration stored: nominal factors")
+                                                                     : tr("Calibrated: %1").arg(calibration))
+                                    : QString());
     m_tare->setEnabled(m_palpation != nullptr);
     if (!m_palpation) {
         m_lanes->clearSource();

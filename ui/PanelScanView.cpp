@@ -4,6 +4,7 @@
 #include "core/detector/DefectSites.h"
 
 #include "ui/DisplayUnits.h"
+#include "ui/FixedColumns.h"
 #include "ui/LivePlotWidget.h"
 #include "ui/NumberText.h"
 #include "ui/VerdictDialog.h"
@@ -107,6 +108,13 @@ PanelScanView::PanelScanView(QWidget* parent)
     QFont countFont = m_countLabel->font();
     countFont.setPointSizeF(countFont.pointSizeF() * 1.2);
     m_countLabel->setFont(countFont);
+    // The banner and the count change their text with every defect: their
+    // widths must not move the column (and the lanes beside it), so they
+    // take the width they are given and wrap within it.
+    for (QLabel* label : {m_alarm, m_countLabel}) {
+        label->setWordWrap(true);
+        label->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    }
 
     m_events = new QTableWidget(0, 5, this);
     m_events->setObjectName(QStringLiteral("defectTable"));
@@ -116,8 +124,8 @@ PanelScanView::PanelScanView(QWidget* parent)
     // Every cell on one line, whole: on a narrow screen the table scrolls
     // sideways rather than break "0.864" over two lines or cut a header.
     m_events->setWordWrap(false);
-    m_events->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_events->horizontalHeader()->setStretchLastSection(true);
+    fitColumns(*m_events, {QStringLiteral("0000.00"), tr("B then A"), QStringLiteral("0.000"), QStringLiteral("000"),
+                           QStringLiteral("0000")});
     m_events->horizontalHeaderItem(4)->setToolTip(tr("Scan speed implied by the lag and the cantilever spacing"));
     m_events->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_events->setSelectionBehavior(QAbstractItemView::SelectRows);

@@ -4,9 +4,11 @@
 #include "ui/NumberText.h"
 
 #include <QFile>
+#include <QHelpEvent>
 #include <QLocale>
 #include <QPainter>
 #include <QPainterPath>
+#include <QToolTip>
 
 #include <algorithm>
 #include <array>
@@ -90,7 +92,24 @@ void StiffnessScale::setMarks(std::vector<Mark> marks)
 
 QSize StiffnessScale::minimumSizeHint() const
 {
-    return {260, 8 * fontMetrics().height()};
+    // Every tissue's name on a line of its own, with the margins: shorter,
+    // and the stack of names ran off the top ("Muscle" cut).
+    const int lines = std::max<int>(8, static_cast<int>(m_tissues.size()) + 1);
+    return {260, lines * fontMetrics().height() + 2 * kMargin};
+}
+
+bool StiffnessScale::event(QEvent* event)
+{
+    if (event->type() == QEvent::ToolTip) {
+        const auto* help = static_cast<QHelpEvent*>(event);
+        const auto tip = std::ranges::find_if(m_tips, [&](const Tip& t) { return t.area.contains(help->pos()); });
+        if (tip != m_tips.end())
+            QToolTip::showText(help->globalPos(), tip->text, this, tip->area.toAlignedRect());
+        else
+            QToolTip::hideText();
+        return true;
+    }
+    return QWidget::event(event);
 }
 
 double StiffnessScale::yOf(double stiffness_n_per_m) const
@@ -145,6 +164,7 @@ void StiffnessScale::paintEvent(QPaintEvent*)
     for (std::size_t i = labelY.size(); overflow > 0 && i-- > 0;)
         labelY[i] = std::min(labelY[i], height() - line / 2 - static_cast<double>(labelY.size() - 1 - i) * line);
     const int labelX = kLabelX;
+    m_tips.clear();
     for (std::size_t i = 0; i < tissues.size(); ++i) {
         const auto* t = tissues[i];
         const double top = yOf(t->max_n_per_m), bottom = yOf(t->min_n_per_m);
@@ -162,6 +182,14 @@ void StiffnessScale::paintEvent(QPaintEvent*)
             name = name.left(name.indexOf(QStringLiteral(" (")));
         name = metrics.elidedText(name, Qt::ElideRight, room);
         p.drawText(QPointF(labelX, labelY[i] + metrics.ascent() / 2.0 - 1), name);
+        // The whole name, its range and its source where the pointer rests on it.
+        const QString range = t->min_n_per_m == t->max_n_per_m
+                                  ? fixedText(t->min_n_per_m, 0)
+                                  : fixedText(t->min_n_per_m, 0) + QStringLiteral("–") + fixedText(t->max_n_per_m, 0);
+        m_tips.push_back(
+            {QRectF(labelX, labelY[i] - line / 2, room, line),
+             tr("%1: %2 N/m").arg(QString::fromStdString(t->name), range) +
+                 (t->source.empty() ? QString() : QStringLiteral("\n") + QString::fromStdString(t->source))});
     }
 
     // The reading: a red arrow at the bar, its line reaching the tissues' marks.

@@ -37,9 +37,15 @@ public:
 
 protected:
     void paintEvent(QPaintEvent* event) override;
+    bool event(QEvent* event) override;  // a cut tissue name's whole text as a tooltip
 
 private:
     double yOf(double stiffness_n_per_m) const;
+    struct Tip {
+        QRectF area;
+        QString text;
+    };
+    std::vector<Tip> m_tips;  // each tissue's label as last drawn
 
     std::vector<core::compliance::ReferenceTissue> m_tissues;
     std::optional<double> m_reading;

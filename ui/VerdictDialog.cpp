@@ -1,5 +1,6 @@
 // VerdictDialog: three answers and a note, and storing what was decided.
 #include "ui/VerdictDialog.h"
+#include "ui/NumberText.h"
 
 #include "core/storage/SessionStore.h"
 #include "ui/ProblemReport.h"
@@ -61,12 +62,12 @@ VerdictDialog::VerdictDialog(const QString& summaryText, const QStringList& trai
 
 QString defectCountText(int defects)
 {
-    return defects == 1 ? VerdictDialog::tr("1 defect") : VerdictDialog::tr("%1 defects").arg(defects);
+    return countText(defects, VerdictDialog::tr("defect"), VerdictDialog::tr("defects"));
 }
 
 QString siteCountText(int sites)
 {
-    return sites == 1 ? VerdictDialog::tr("1 site") : VerdictDialog::tr("%1 sites").arg(sites);
+    return countText(sites, VerdictDialog::tr("site"), VerdictDialog::tr("sites"));
 }
 
 void VerdictDialog::decide(core::Verdict verdict)

@@ -1,12 +1,9 @@
 // CalibrationFields: the record keys' words and units.
 #include "core/calibration/CalibrationFields.h"
 
-#include "core/text/UncertaintyFormat.h"
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <string_view>
 
 namespace tactiscope::core::calibration {
@@ -58,14 +55,6 @@ const Field* ownerOf(std::string_view key)
     return key.empty() || found == std::end(kFields) ? nullptr : &*found;
 }
 
-// Five significant digits, as the records were shown before.
-std::string significant(double value)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%.5g", value);
-    return text;
-}
-
 std::string words(std::string_view key)
 {
     std::string text(key);
@@ -88,13 +77,12 @@ std::vector<CalibrationRow> calibrationRows(const std::vector<std::pair<std::str
         if (!field) {
             // An uncertainty goes beside its value; alone, it is a row of its own.
             const Field* owner = ownerOf(key);
-            if (!(owner && valueOf(owner->key))) rows.push_back({words(key), significant(value), {}});
+            if (!(owner && valueOf(owner->key))) rows.push_back({words(key), value, std::nullopt, {}});
             continue;
         }
         const double* uncertainty = field->uncertaintyKey.empty() ? nullptr : valueOf(field->uncertaintyKey);
-        rows.push_back({std::string(field->label),
-                        uncertainty && std::isfinite(*uncertainty) ? text::valueWithUncertainty(value, *uncertainty)
-                                                                   : significant(value),
+        rows.push_back({std::string(field->label), value,
+                        uncertainty && std::isfinite(*uncertainty) ? std::optional(*uncertainty) : std::nullopt,
                         std::string(field->unit)});
     }
     return rows;

@@ -72,7 +72,7 @@ PanelScanChannels::PanelScanChannels(storage::SessionSource& store, std::int64_t
     std::ostringstream basis;
     basis << "the detector of seed 000 on " << m_cantilevers.size() << " cantilevers, lags "
           << m_parameters.lags_s.front() * 1e3 << "–" << m_parameters.lags_s.back() * 1e3 << " ms, threshold "
-          << m_parameters.threshold << ", ε " << m_parameters.epsilon;
+          << m_parameters.threshold << ", ε " << m_parameters.epsilon * 1e6 << " µε";
     m_basis = basis.str();
 }
 

@@ -40,7 +40,7 @@ std::string basisText(const std::string& basisJson)
     return text.str();
 }
 
-std::vector<std::string> verdictTrailLines(std::span<const storage::VerdictDecision> trail)
+std::vector<std::string> verdictTrailLines(std::span<const storage::VerdictDecision> trail, const DecisionTime& time)
 {
     std::vector<std::string> lines;
     std::optional<Verdict> previous;
@@ -56,7 +56,8 @@ std::vector<std::string> verdictTrailLines(std::span<const storage::VerdictDecis
             line += *previous == d.verdict ? " kept it" : " changed it to " + verdict;
         if (const std::string basis = basisText(d.basisJson); !basis.empty()) line += " (" + basis + ")";
         const UtcParts when = partsOf(d.decidedUtc);
-        line += ", " + (when.day == previousDay ? std::string() : when.day + " ") + when.minute + " UTC";
+        line += ", " + (time ? time(d.decidedUtc)
+                             : (when.day == previousDay ? std::string() : when.day + " ") + when.minute + " UTC");
         if (!d.note.empty()) line += ": \"" + d.note + "\"";
         lines.push_back(std::move(line));
         previous = d.verdict;

@@ -7,15 +7,22 @@
 
 #include "core/storage/SessionRecords.h"
 
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace tactiscope::core::report {
 
-// One line per decision, oldest first. A time on the day of the decision
-// before it shows the time only.
-std::vector<std::string> verdictTrailLines(std::span<const storage::VerdictDecision> trail);
+// How a decision's stored UTC time is written by whoever shows the trail:
+// the windows in the user's locale, the report in ISO 8601 with its zone.
+using DecisionTime = std::function<std::string(const std::string& decidedUtc)>;
+
+// One line per decision, oldest first. Without `time`, as the CLI writes
+// it: "2026-11-23 14:12 UTC", and a time on the day of the decision before
+// it as the time only.
+std::vector<std::string> verdictTrailLines(std::span<const storage::VerdictDecision> trail,
+                                           const DecisionTime& time = {});
 
 // "live detector: 21 defects at 3 sites, threshold 0.85": the automatic
 // verdict's grounds; empty when the basis cannot be read.

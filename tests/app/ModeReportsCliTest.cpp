@@ -110,11 +110,13 @@ TEST(ModeReportsCli, ACapacitiveReportStatesItsBaselineAndTheCalibrationsFit)
           QStringLiteral("2026-11-20T10:00:00Z by Grace"),
           locale.toString(0.5678, 'f', 4) + " ± " + locale.toString(0.0042, 'f', 4) + " pF/mN",
           QStringLiteral("R² = ") + locale.toString(0.99931, 'f', 5) + ", 6 points",
-          // 0.02008 mN is 20.08 µN, and 20.08 µN / 9.80665 µN per mgf is 2.05 mgf.
-          locale.toString(20.08, 'f', 2) + " µN (" + locale.toString(2.05, 'f', 2) + " mgf)"})
+          // 0.02008 mN is 20.08 µN, and 20.08 µN / 9.80665 µN per mgf is 2.05 mgf: three digits
+          // each, as the wizard says it.
+          locale.toString(20.1, 'f', 1) + " µN (" + locale.toString(2.05, 'f', 2) + " mgf)"})
         EXPECT_TRUE(text.contains(expected)) << expected.toStdString() << "\n" << text.toStdString();
     // The calibration record in words (issue 37): before, "baseline_sigma_pf = 0.0038, c0_pf = …".
-    for (const char* label : {"Baseline noise σ 0.0038 pF", "Baseline drift 0.00012 pF/s", "Detection limit (3σ)"})
+    for (const char* label :
+         {"Baseline noise σ 0.0038 pF", "Baseline drift 0.00012 pF/s", "Detection limit (3σ) 20.1 µN"})
         EXPECT_TRUE(text.contains(QString::fromUtf8(label))) << label << "\n" << text.toStdString();
     for (const char* key : {"c0_pf", "baseline_sigma_pf", "drift_pf_per_s", "detection_limit_mn", "r_squared"})
         EXPECT_FALSE(text.contains(QString::fromLatin1(key))) << key;

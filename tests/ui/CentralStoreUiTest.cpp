@@ -27,6 +27,7 @@
 #include <QAction>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
 #include <QPushButton>
 #include <QSettings>
 #include <QTableView>
@@ -145,6 +146,7 @@ TEST_F(CentralStoreUi, TheBackgroundPushSendsTheStationsSessionsAndSaysNoneWait)
     ui::CentralStoreDialog dialog(&controller);
     dialog.show();
     EXPECT_EQ(child<QLabel>(dialog, "waitingText")->text(), "nothing is sent: no server is set");
+    const int width = dialog.width();  // as wide whatever it says (it went from 640 to 515 px)
 
     controller.setServer(QString::fromStdString(s_server->conninfo("press_a")), {});
     // Save and send now, pressed while setting the server started a send:
@@ -156,10 +158,14 @@ TEST_F(CentralStoreUi, TheBackgroundPushSendsTheStationsSessionsAndSaysNoneWait)
     ASSERT_TRUE(
         waitFor([&] { return !controller.state().running && controller.state().lastAttempt.isValid(); }, 30000));
     EXPECT_EQ(controller.state().lastError, "");
-    EXPECT_EQ(controller.state().lastOutcome, "synced 3 sessions (0.015 M samples), 0 already there");
+    // Values sent, counted from the station store: the panel scan's 2 × (6000 − 500 lost), the
+    // palpation's 2 × 1500 and the capacitive session's 700.
+    EXPECT_EQ(controller.state().lastOutcome,
+              QStringLiteral("synced 3 sessions (%1 samples), 0 already there").arg(QLocale().toString(14700)));
     ASSERT_TRUE(controller.state().waiting);
     EXPECT_EQ(*controller.state().waiting, 0);
     EXPECT_EQ(child<QLabel>(dialog, "waitingText")->text(), "none");
+    EXPECT_EQ(dialog.width(), width);
     EXPECT_EQ(PgConnection(s_server->conninfo()).query("SELECT count(*) FROM sessions").text(0, 0), "3");
     tactiscope::testing::saveScreenshot(dialog, "central-store-dialog");
 }

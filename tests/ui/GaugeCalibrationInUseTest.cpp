@@ -15,7 +15,9 @@
 
 #include <QAction>
 #include <QComboBox>
+#include <QDateTime>
 #include <QLabel>
+#include <QLocale>
 #include <QMenu>
 #include <QMenuBar>
 
@@ -70,7 +72,15 @@ TEST_F(GaugeCalibrationInUseTest, TheNewestCalibrationOfEachBeamIsReadAndRecorde
     window.setMode(tactiscope::core::Mode::Palpation);
     window.connectSource(tactiscope::testing::liveSimulator("palpation"));
     const QString probe = child<QLabel>(*window.findChild<ui::PalpationView*>(), "probeLabel")->text();
-    EXPECT_TRUE(probe.contains(QStringLiteral("stiff beam on 2026-11-20T08:00:00Z by Ada"))) << probe.toStdString();
+    // The calibration's date on screen in the locale's words, never the stored ISO text.
+    const QString day = QLocale().toString(QDateTime(QDate(2026, 11, 20), QTime(8, 0), Qt::UTC).toLocalTime().date(),
+                                           QLocale::ShortFormat);
+    // The label says "stored"; its tooltip which, when and by whom.
+    const QString which = child<QLabel>(*window.findChild<ui::PalpationView*>(), "probeLabel")->toolTip();
+    EXPECT_TRUE(probe.contains(QStringLiteral("Calibration: stored"))) << probe.toStdString();
+    EXPECT_TRUE(which.contains(QStringLiteral("stiff beam, calibrated %1 ").arg(day))) << which.toStdString();
+    EXPECT_TRUE(which.contains(QStringLiteral(" by Ada"))) << which.toStdString();
+    EXPECT_FALSE(which.contains(QStringLiteral("08:00:00Z"))) << which.toStdString();
     EXPECT_TRUE(probe.contains(QStringLiteral("gauge factors 2.14 (stiff) and 2 (soft)"))) << probe.toStdString();
 
     ASSERT_TRUE(window.startRecording());

@@ -91,3 +91,31 @@ TEST_F(NumberText, ATypedValueReadsBackAsTyped)
     EXPECT_EQ(QLocale().toDouble(typedText(0.001234), &ok), 0.001234);
     EXPECT_TRUE(ok);
 }
+
+TEST_F(NumberText, AColumnSharesTheDecimalsOfItsCoarsestUncertainty)
+{
+    // Issue 37's By-site column: SDs of 0.034, 0.0021 and none (one press)
+    // gave 117.0 / 116.9760 / 116.99282; they share 0.034's three decimals.
+    EXPECT_EQ(sharedDecimals({0.034, 0.0021}, 1), 3);
+    EXPECT_EQ(sharedDecimals({}, 1), 1);                        // no uncertainty anywhere: the fallback
+    EXPECT_EQ(sharedDecimals({0.0, std::nan(""), 1.2}, 4), 1);  // zeros and NaN say nothing
+    EXPECT_EQ(valueWithErrorText(2.139301, 0.00029), QStringLiteral("2.13930 ± 0.00029"));
+}
+
+TEST_F(NumberText, ARangeWhoseEndsReadTheSameIsOneValue)
+{
+    EXPECT_EQ(rangeText(117.0, 117.0, 1), QStringLiteral("117.0"));
+    EXPECT_EQ(rangeText(116.98, 117.01, 1), QStringLiteral("117.0"));  // equal as written
+    EXPECT_EQ(rangeText(116.9, 117.2, 1), QStringLiteral("116.9 – 117.2"));
+}
+
+TEST_F(NumberText, OneIsSingularAndCountsAreInTheLocalesDigits)
+{
+    EXPECT_EQ(countText(1, QStringLiteral("session"), QStringLiteral("sessions")), QStringLiteral("1 session"));
+    EXPECT_EQ(countText(0, QStringLiteral("session"), QStringLiteral("sessions")), QStringLiteral("0 sessions"));
+    QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+    EXPECT_EQ(countText(8000, QStringLiteral("sample"), QStringLiteral("samples")), QStringLiteral("8,000 samples"));
+    QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+    EXPECT_EQ(countText(12345678, QStringLiteral("sample"), QStringLiteral("samples")),
+              QStringLiteral("12.345.678 samples"));
+}

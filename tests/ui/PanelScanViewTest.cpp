@@ -18,6 +18,7 @@
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
@@ -39,13 +40,22 @@ TEST(PanelScanView, DefectsAreListedStoredAndMatchTheCoreDetector)
     window.resize(1366, 768);  // the smallest screen the workstation is made for
     window.connectSource(liveSimulator());
     window.show();
+    EXPECT_LE(window.minimumSizeHint().width(), 1366);  // every mode's view fits it
     ASSERT_TRUE(window.findChild<ui::PanelScanView*>()->isVisible());
     QTest::keyClicks(child<QLineEdit>(window, "operatorEdit"), QStringLiteral("Ada"));
     ASSERT_TRUE(window.startRecording());
     auto* table = child<QTableWidget>(*window.findChild<ui::PanelScanView*>(), "defectTable");
+    runEventLoopFor(100);
+    // Where the list stands before any defect: the count's and the banner's
+    // texts change with every defect and must not move it (issue 37).
+    const QRect before = table->geometry();
     // The simulated hand passes the dent about once a second, in both directions.
     ASSERT_TRUE(waitFor([&] { return table->rowCount() >= 5; }, 10000));
     runEventLoopFor(300);
+    EXPECT_EQ(table->geometry().x(), before.x());
+    EXPECT_EQ(table->geometry().width(), before.width());
+    // Every column whole, with the scroll bar there from the start.
+    EXPECT_EQ(table->horizontalScrollBar()->maximum(), 0);
     tactiscope::testing::saveScreenshot(window, QStringLiteral("panel-scan"));
     tactiscope::testing::saveScreenshotAtSize(window, QStringLiteral("panel-scan"), {1920, 1080});
     const int listed = table->rowCount();

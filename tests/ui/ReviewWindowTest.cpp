@@ -28,6 +28,7 @@
 #include <QJsonObject>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QProcess>
 #include <QProgressBar>
 #include <QPushButton>
@@ -174,6 +175,8 @@ TEST_F(ReviewWindowTest, TheListJumpsAndNotesAreAddedEditedDeletedAndBroughtBack
     m_window->addNote();
     auto* dialog = m_window->findChild<QInputDialog*>(QStringLiteral("noteDialog"));
     ASSERT_NE(dialog, nullptr);
+    // The time in the dialog's own text, which no title bar cuts.
+    EXPECT_EQ(dialog->labelText(), QStringLiteral("Note at %1 s:").arg(QLocale().toString(300.5, 'f', 3)));
     dialog->setTextValue(QStringLiteral("dent confirmed by eye"));
     dialog->accept();
     ASSERT_EQ(list->topLevelItemCount(), 4);

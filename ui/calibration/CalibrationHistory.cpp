@@ -1,5 +1,6 @@
 // CalibrationHistory: sensors, records, drift plot, sessions per record.
 #include "ui/calibration/CalibrationHistory.h"
+#include "ui/DateText.h"
 #include "ui/NumberText.h"
 #include "ui/VocabularyText.h"
 
@@ -26,18 +27,17 @@
 namespace tactiscope::ui {
 namespace {
 
-// Date ticks at whole UTC days, a few of them, each date once: a date-time
-// ticker's sub-day steps wrote the same date under several ticks.
+// Date ticks at local midnights, a few of them, each date once and in the
+// locale's form: a date-time ticker's sub-day steps wrote the same date
+// under several ticks.
 QSharedPointer<QCPAxisTickerText> dayTicks(const QCPRange& range)
 {
-    constexpr double kDay_s = 86400.0;
     QSharedPointer<QCPAxisTickerText> ticker(new QCPAxisTickerText);
-    const double firstDay = std::ceil(range.lower / kDay_s) * kDay_s;
-    const double days = std::max(1.0, std::floor((range.upper - firstDay) / kDay_s) + 1.0);
-    const double step = std::ceil(days / 6.0) * kDay_s;
-    for (double t = firstDay; t <= range.upper; t += step)
-        ticker->addTick(
-            t, QDateTime::fromSecsSinceEpoch(static_cast<qint64>(t), Qt::UTC).toString(QStringLiteral("yyyy-MM-dd")));
+    const QDate first = QDateTime::fromSecsSinceEpoch(static_cast<qint64>(std::ceil(range.lower))).date().addDays(1);
+    const QDate last = QDateTime::fromSecsSinceEpoch(static_cast<qint64>(std::floor(range.upper))).date();
+    const qint64 step = std::max<qint64>(1, (first.daysTo(last) + 6) / 6);
+    for (QDate day = first; day <= last; day = day.addDays(step))
+        ticker->addTick(static_cast<double>(QDateTime(day, QTime(0, 0)).toSecsSinceEpoch()), screenDate(day));
     return ticker;
 }
 
@@ -47,20 +47,18 @@ struct MainValue {
     const char* key;
     const char* standardErrorKey;
     const char* title;
-    int decimals;
 };
 
 MainValue mainValueOf(const std::string& kind)
 {
     if (kind == core::calibration::kCapacitiveKind)
-        return {"sensitivity_pf_per_mn", "sensitivity_standard_error_pf_per_mn", "Sensitivity (pF/mN)", 4};
-    return {"gauge_factor", "gauge_factor_standard_error", "Gauge factor", 4};
+        return {"sensitivity_pf_per_mn", "sensitivity_standard_error_pf_per_mn", "Sensitivity (pF/mN)"};
+    return {"gauge_factor", "gauge_factor_standard_error", "Gauge factor"};
 }
 
 double secondsOf(const std::string& timestampUtc)
 {
-    return static_cast<double>(
-        QDateTime::fromString(QString::fromStdString(timestampUtc), Qt::ISODate).toSecsSinceEpoch());
+    return static_cast<double>(storedTime(timestampUtc).toSecsSinceEpoch());
 }
 
 }  // namespace
@@ -85,12 +83,16 @@ CalibrationHistory::CalibrationHistory(const QString& storePath, QWidget* parent
     m_sessions->setObjectName(QStringLiteral("sessionList"));
     m_problem->setObjectName(QStringLiteral("problemText"));
     m_records->setHorizontalHeaderLabels(
-        {tr("Date (UTC)"), tr("Operator"), tr("Value"), tr("± SE"), tr("R²"), tr("Points"), tr("Sessions")});
+        {tr("Date"), tr("Operator"), tr("Value"), tr("± SE"), tr("R²"), tr("Points"), tr("Sessions")});
     m_records->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_records->setSelectionMode(QAbstractItemView::SingleSelection);
     m_records->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_records->verticalHeader()->setVisible(false);
     m_records->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // The summary's two lines are kept whether it says one or two: the plot
+    // below stayed put no more when the sensor changed.
+    m_drift->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    m_drift->setFixedHeight(2 * m_drift->fontMetrics().lineSpacing() + 4);
     m_plot->setMinimumHeight(200);
     m_plot->xAxis->setLabel(tr("Date of calibration"));
     QCPGraph* graph = m_plot->addGraph();
@@ -188,8 +190,13 @@ void CalibrationHistory::showSensor()
         }
     }
 
-    const QLocale locale;
     m_records->setRowCount(static_cast<int>(m_shown.size()));
+    // The values' column shares its decimals, those of the coarsest standard error.
+    std::vector<double> standardErrors;
+    for (const auto* stored : m_shown)
+        if (const auto e = stored->record.value(mainValueOf(stored->record.kind).standardErrorKey))
+            standardErrors.push_back(*e);
+    const int decimals = sharedDecimals(standardErrors, 4);
     std::vector<double> t, v;
     QVector<double> keys, values, errors;
     QString title;
@@ -200,9 +207,9 @@ void CalibrationHistory::showSensor()
         const auto value = r.value(main.key);
         const auto error = r.value(main.standardErrorKey);
         const bool active = i + 1 == m_shown.size();
-        const QStringList cells{QString::fromStdString(r.timestampUtc) + (active ? tr("  ✓ active") : QString()),
+        const QStringList cells{screenDateTime(r.timestampUtc) + (active ? tr("  ✓ active") : QString()),
                                 QString::fromStdString(r.operatorName),
-                                value ? fixedText(*value, main.decimals) : QStringLiteral("–"),
+                                value ? fixedText(*value, decimals) : QStringLiteral("–"),
                                 error ? significant(*error, 2) : QStringLiteral("–"),
                                 fixedText(r.fit.rSquared, 6),
                                 QString::number(r.fit.points),
@@ -238,15 +245,19 @@ void CalibrationHistory::showSensor()
     if (v.empty()) {
         m_drift->clear();
     } else {
+        // One calibration has no spread and no drift: say what it is.
         const auto d = core::calibration::summarizeDrift(t, v);
         QString text =
-            tr("%1 over %2 calibrations: mean %3, SD %4; newest %5 % against the first")
-                .arg(title)
-                .arg(d.count)
-                .arg(fixedText(d.mean, 4), significant(d.standardDeviation, 2), fixedText(100.0 * d.firstToLast, 2));
+            d.count == 1
+                ? tr("%1: one calibration, %2").arg(title, fixedText(d.mean, decimals))
+                : tr("%1 over %2: mean %3, SD %4; newest %5 % against the first")
+                      .arg(title, countText(static_cast<long long>(d.count), tr("calibration"), tr("calibrations")))
+                      .arg(fixedText(d.mean, decimals), significant(d.standardDeviation, 2),
+                           fixedText(100.0 * d.firstToLast, 2));
         // The trend in the mean's decimals: both are values of the same quantity.
-        if (d.trendPerYear) text += tr("; trend %1 per year").arg(fixedText(*d.trendPerYear, 4));
+        if (d.count > 1 && d.trendPerYear) text += tr("; trend %1 per year").arg(fixedText(*d.trendPerYear, decimals));
         m_drift->setText(text + QLatin1Char('.'));
+        m_drift->setToolTip(m_drift->text());  // whole, should a narrow window cut the second line
     }
     if (!m_shown.empty()) m_records->selectRow(static_cast<int>(m_shown.size()) - 1);
     showSessions();
@@ -265,7 +276,7 @@ void CalibrationHistory::showSessions()
             if (!session) continue;
             m_sessions->addItem(tr("Session %1 — %2, %3, %4")
                                     .arg(id)
-                                    .arg(QString::fromStdString(session->startedUtc),
+                                    .arg(screenDateTime(session->startedUtc),
                                          QString::fromStdString(session->metadata.subject),
                                          wordText(session->metadata.mode)));
         }

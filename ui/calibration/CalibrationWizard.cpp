@@ -24,6 +24,8 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace tactiscope::ui {
 
 CalibrationWizard::CalibrationWizard(CalibrationContext context, Words words, QWidget* parent)
@@ -222,6 +224,12 @@ void CalibrationWizard::waitForWindow(const QString& status,
     recheck(LoadsPage);
 }
 
+int CalibrationWizard::meanDecimals(const core::calibration::WindowStatistics& window) const
+{
+    const double error = window.meanStandardError * m_words.signal.scale;
+    return error > 0.0 ? decimalsFor(error) : m_words.signalDecimals;
+}
+
 void CalibrationWizard::takeZero()
 {
     if (m_context.rig) m_context.rig->place(0.0);
@@ -232,8 +240,8 @@ void CalibrationWizard::takeZero()
         m_zero = window;
         const DisplayUnit& u = m_words.signal;
         m_zeroText->setText(tr("%1: %2 %3, σ %4 %3 (mean of %5 samples)")
-                                .arg(m_words.zeroName, fixedText(window.mean * u.scale, m_words.signalDecimals),
-                                     u.symbol, significant(window.sigma * u.scale, 3))
+                                .arg(m_words.zeroName, fixedText(window.mean * u.scale, meanDecimals(window)), u.symbol,
+                                     significant(window.sigma * u.scale, 3))
                                 .arg(window.count));
         refit();
         recheck(ZeroPage);
@@ -275,7 +283,7 @@ void CalibrationWizard::captured(Load load)
         else
             m_loads.push_back(load);
         m_panel->setStatus(tr("Captured %1: %2 %3 (σ %4).")
-                               .arg(loadText(load), fixedText(load.window.mean * u.scale, m_words.signalDecimals),
+                               .arg(loadText(load), fixedText(load.window.mean * u.scale, meanDecimals(load.window)),
                                     u.symbol, significant(load.window.sigma * u.scale, 3)));
     }
     m_retakeIndex.reset();
@@ -324,13 +332,16 @@ void CalibrationWizard::refit()
     const DisplayUnit& u = m_words.signal;
     const std::vector<double> residuals =
         m_fit ? core::calibration::residualsOfSpan(m_fit->line.residuals, m_fit->y) : std::vector<double>{};
+    // The means' column shares the decimals of its coarsest standard error.
+    int decimals = 9;
+    for (const Load& load : m_loads) decimals = std::min(decimals, meanDecimals(load.window));
     std::vector<QStringList> rows;
     for (std::size_t i = 0; i < m_loads.size(); ++i) {
         const Load& load = m_loads[i];
-        rows.push_back(
-            {loadText(load), load.loading ? tr("loading") : tr("unloading"), significant(forceOf(load) * 1e3, 5),
-             fixedText(load.window.mean * u.scale, m_words.signalDecimals), significant(load.window.sigma * u.scale, 3),
-             i + 1 < residuals.size() ? fixedText(100.0 * residuals[i + 1], 3) : QStringLiteral("–")});
+        rows.push_back({loadText(load), load.loading ? tr("loading") : tr("unloading"),
+                        significant(forceOf(load) * 1e3, 5), fixedText(load.window.mean * u.scale, decimals),
+                        significant(load.window.sigma * u.scale, 3),
+                        i + 1 < residuals.size() ? fixedText(100.0 * residuals[i + 1], 3) : QStringLiteral("–")});
     }
     m_panel->setRows(rows, 2);
 

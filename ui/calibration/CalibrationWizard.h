@@ -61,7 +61,7 @@ public:
     struct Words {
         QString zeroName;  // what the zero reading is called: "Zero", "C0"
         DisplayUnit signal;
-        int signalDecimals = 1;
+        int signalDecimals = 1;  // a mean's decimals where its standard error is not known
         QString channelLabel;
         std::function<bool(const core::ChannelDescriptor&)> channelFits;
         QString noChannel;  // why the device cannot be calibrated here
@@ -127,6 +127,9 @@ protected:
     void setSensorSummary(const QString& text);
     QString operatorName() const;
     const std::optional<core::calibration::WindowStatistics>& zero() const { return m_zero; }
+    // The decimals of a window's mean in the signal's display unit: its
+    // standard error's, so the zero reads alike on every page ("120.056").
+    int meanDecimals(const core::calibration::WindowStatistics& window) const;
     const std::vector<Load>& loads() const { return m_loads; }
     CapturePanel* panel() const { return m_panel; }
     QVBoxLayout* resultLayout() const { return m_resultLayout; }

@@ -4,6 +4,7 @@
 #include "ui/NumberText.h"
 
 #include "core/sensors/CapacitiveBeam.h"
+#include "ui/calibration/CalibrationText.h"
 #include "ui/calibration/CapturePanel.h"
 #include "ui/calibration/WizardText.h"
 
@@ -151,14 +152,13 @@ QString CapacitiveWizard::resultHtml() const
                         .arg(tr("Caution: %1.").arg(QString::fromStdString(caution)).toHtmlEscaped());
     return tr("<b>%1</b><br>C0 = <b>%2 pF</b>, noise σ %3 pF; %4.<br>Sensitivity <b>%5 ± %6 pF/mN</b> (standard "
               "uncertainty, k = 1, from the points' scatter), intercept %7 pF, R² = %8; relative sensitivity %9 "
-              "per mN.<br>Hysteresis %10.<br>Detection limit (3σ): %11 (%12 mgf), a tip displacement of %13 "
-              "through k = %14 N/m.")
+              "per mN.<br>Hysteresis %10.<br>Detection limit (3σ): %11, a tip displacement of %12 through k = %13 "
+              "N/m.")
                .arg(QString::fromStdString(profile()->name).toHtmlEscaped(), fixedText(r.c0_f * 1e12, 4),
                     fixedText(r.baselineSigma_f * 1e12, 4), drift, sensitivity, error,
                     fixedText(fit.intercept * 1e12, 4), fixedText(fit.rSquared, 6),
                     significant(*r.relativeSensitivity_per_n * 1e-3, 3))
-               .arg(hysteresis, siText(*r.detectionLimit_n, QStringLiteral("N"), 3),
-                    significant(*r.detectionLimit_n / kMilligramForce_n, 3),
+               .arg(hysteresis, detectionLimitText(*r.detectionLimit_n),
                     siText(r.detectionLimit_m.value_or(0), QStringLiteral("m"), 3),
                     significant(core::sensors::CapacitiveBeam(profile()->geometry).stiffness_n_per_m(), 3)) +
            cautions;

@@ -1,6 +1,7 @@
 // GaugeFactorWizard: the beam and its chain around
 // core::calibration::calibrateGaugeFactor.
 #include "ui/calibration/GaugeFactorWizard.h"
+#include "ui/DateText.h"
 #include "ui/NumberText.h"
 
 #include "core/storage/SessionStore.h"
@@ -224,7 +225,7 @@ void GaugeFactorWizard::prefillChain()
         adc.reference_v = r.value("adc_reference_v").value_or(adc.reference_v);
         adc.bipolar = r.value("adc_bipolar").value_or(1.0) != 0.0;
         m_prefill->setText(tr("Prefilled from this beam's calibration of %1 by %2.")
-                               .arg(QString::fromStdString(r.timestampUtc), QString::fromStdString(r.operatorName)));
+                               .arg(screenDateTime(r.timestampUtc), QString::fromStdString(r.operatorName)));
     } else if (!unread.isEmpty()) {
         m_prefill->setText(tr("Prefilled with the palpation view's settings: the store's calibrations could not be "
                               "read (%1). Check them against the amplifier.")
@@ -322,8 +323,9 @@ QString GaugeFactorWizard::resultHtml() const
               "counts per newton over a zero of %7 counts (σ %8).<br>R² = %9, residual σ %10 × 10⁻⁶ ΔR/R, %11 points "
               "with the zero.%12")
         .arg(QString::fromStdString(sensorName()).toHtmlEscaped(), factor, error, compactText(r.nominalGaugeFactor, 4),
-             fixedText(100.0 * r.deviationFromNominal, 2), significant(r.countsPerNewton, 6),
-             significant(r.zeroCounts, 6), significant(zero()->sigma, 3), fixedText(fit.rSquared, 6))
+             fixedText(100.0 * r.deviationFromNominal, 2),
+             valueWithErrorText(r.countsPerNewton, r.forceFit.slopeStandardError),
+             fixedText(r.zeroCounts, meanDecimals(*zero())), significant(zero()->sigma, 3), fixedText(fit.rSquared, 6))
         .arg(significant(fit.residualStandardDeviation * 1e6, 3))
         .arg(fit.points)
         .arg(scatter);

@@ -1,5 +1,7 @@
 // CentralStoreDialog: the address form and the live sending state.
 #include "ui/central/CentralStoreDialog.h"
+#include "ui/DateText.h"
+#include "ui/NumberText.h"
 
 #include "core/storage/central/PgConnection.h"
 #include "ui/calibration/WizardText.h"
@@ -63,8 +65,12 @@ CentralStoreDialog::CentralStoreDialog(CentralSyncController* controller, QWidge
     buttons->addButton(m_send, QDialogButtonBox::ActionRole);
     buttons->addButton(m_browse, QDialogButtonBox::ActionRole);
 
+    // As wide as the server's address and as tall as its texts: a long
+    // error or outcome wraps and is never clipped, and the dialog keeps its
+    // width whatever it says (it went from 640 to 515 px with its text).
+    for (QLabel* label : findChildren<QLabel*>())
+        if (label->wordWrap()) label->setSizePolicy(QSizePolicy::Ignored, label->sizePolicy().verticalPolicy());
     auto* layout = new QVBoxLayout(this);
-    // As tall as its texts: a long error or outcome is never clipped.
     layout->setSizeConstraint(QLayout::SetFixedSize);
     layout->addWidget(intro);
     layout->addLayout(form);
@@ -114,12 +120,12 @@ void CentralStoreDialog::showState()
     else if (!s.waiting)
         m_waiting->setText(tr("not counted yet (the server has not been reached)"));
     else
-        m_waiting->setText(*s.waiting == 0 ? tr("none") : tr("%n session(s)", nullptr, *s.waiting));
+        m_waiting->setText(*s.waiting == 0 ? tr("none") : countText(*s.waiting, tr("session"), tr("sessions")));
     if (s.running)
         m_last->setText(s.total > 0 ? tr("sending… %1 of %2 sessions looked at").arg(s.done).arg(s.total)
                                     : tr("connecting…"));
     else if (s.lastAttempt.isValid())
-        m_last->setText(tr("%1 — %2").arg(s.lastAttempt.toString(QStringLiteral("yyyy-MM-dd HH:mm")),
+        m_last->setText(tr("%1 — %2").arg(screenDateTime(s.lastAttempt),
                                           s.lastOutcome.isEmpty() ? tr("nothing sent") : s.lastOutcome));
     else
         m_last->setText(tr("not yet"));

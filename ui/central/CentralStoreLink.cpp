@@ -1,11 +1,11 @@
 // CentralStoreLink: the controller, its status-bar field and its dialog.
 #include "ui/central/CentralStoreLink.h"
+#include "ui/DateText.h"
 
 #include "ui/central/CentralStoreDialog.h"
 #include "ui/central/CentralSyncController.h"
 
 #include <QLabel>
-#include <QLocale>
 #include <QStatusBar>
 
 namespace tactiscope::ui {
@@ -72,10 +72,9 @@ void CentralStoreLink::showState()
     else
         state = tr("not reached yet");
     m_field->setText(tr("Central store: <a href=\"central\">%1</a>").arg(state.toHtmlEscaped()));
-    const QString reached =
-        s.lastReached.isValid()
-            ? tr("The server last answered at %1.").arg(QLocale().toString(s.lastReached.time(), QLocale::ShortFormat))
-            : tr("The server has not answered yet.");
+    const QString reached = s.lastReached.isValid()
+                                ? tr("The server last answered at %1.").arg(screenTime(s.lastReached.time()))
+                                : tr("The server has not answered yet.");
     m_field->setToolTip(s.lastError.isEmpty()
                             ? tr("Where this station's sessions are sent (Session ▸ Central store…). %1").arg(reached)
                             : s.lastError + QLatin1Char('\n') + reached);

@@ -3,6 +3,7 @@
 #include "ui/central/CentralSyncController.h"
 
 #include "core/storage/central/CentralSync.h"
+#include "ui/NumberText.h"
 
 #include <QFileInfo>
 #include <QMetaObject>
@@ -13,6 +14,17 @@
 namespace tactiscope::ui {
 
 namespace {
+
+// The CLI's line in the window's words: counts in full and in the locale,
+// one session singular ("synced 1 session (8,000 samples), 3 already
+// there", not "1 sessions (0.0080 M samples)").
+QString syncText(const core::storage::central::SyncOutcome& outcome)
+{
+    return QObject::tr("synced %1 (%2), %3 already there")
+        .arg(countText(outcome.sent, QObject::tr("session"), QObject::tr("sessions")),
+             countText(static_cast<long long>(outcome.samplesSent), QObject::tr("sample"), QObject::tr("samples")))
+        .arg(outcome.alreadyThere);
+}
 const QString kServerKey = QStringLiteral("central/server");
 const QString kStationKey = QStringLiteral("central/station");
 }  // namespace
@@ -113,10 +125,10 @@ void CentralSyncController::start(bool look)
                         },
                         Qt::QueuedConnection);
                 });
-            result.outcome = QString::fromStdString(core::storage::central::syncSummary(outcome));
+            result.outcome = syncText(outcome);
             result.sent = outcome.sent;
             if (outcome.updated > 0)
-                result.outcome += tr("; later verdicts or notes added to %n of them", nullptr, outcome.updated);
+                result.outcome += tr("; later verdicts or notes added to %1 of them").arg(outcome.updated);
             if (!outcome.refused.empty())
                 result.error =
                     QString::fromStdString(outcome.refused.front()) +

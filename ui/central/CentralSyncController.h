@@ -25,7 +25,7 @@ struct CentralSyncState {
     int done = 0, total = 0;     // sessions looked at, while running
     std::optional<int> waiting;  // sessions not yet on the server; none until first counted
     QDateTime lastAttempt;       // local time
-    QString lastOutcome;         // "synced 2 sessions (1.2 M samples), 1 already there"
+    QString lastOutcome;         // "synced 2 sessions (1,200,000 samples), 1 already there"
     QString lastError;           // empty when the last attempt went through
     bool unreachable = false;    // the last attempt did not reach the server (lastError says why)
     QDateTime lastReached;       // local time the server last answered

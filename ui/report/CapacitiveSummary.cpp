@@ -1,11 +1,15 @@
 // CapacitiveSummary: the basis as rows of a header-style table.
 #include "ui/report/CapacitiveSummary.h"
 
+#include "ui/DateText.h"
+#include "ui/NumberText.h"
+#include "ui/calibration/CalibrationText.h"
 #include "ui/report/ReportHtml.h"
 
 #include <QObject>
 
 #include <algorithm>
+#include <optional>
 
 namespace tactiscope::ui {
 
@@ -24,9 +28,18 @@ QString capacitiveBasisHtml(const core::report::CapacitiveBasis& c)
                          QObject::tr(", %1 – %2 pF").arg(number(low * 1e12, 4), number(high * 1e12, 4));
         html += row(QObject::tr("Baseline C<sub>0</sub>"), baselines);
     }
-    html +=
-        row(QObject::tr("Sensitivity used"), QObject::tr("%1 pF/mN (force), %2 pF/mm (deflection)")
-                                                 .arg(number(c.perNewton_f * 1e9, 4), number(c.perMetre_f * 1e9, 4)));
+    // The sensitivity in use to the decimals its calibration's uncertainty
+    // gives, as the calibration row below writes it.
+    const auto slopeError = [&c]() -> std::optional<double> {
+        if (!c.calibration) return std::nullopt;
+        if (const auto e = c.calibration->value("sensitivity_standard_error_pf_per_mn")) return e;
+        if (c.calibration->fit.points > 2) return c.calibration->fit.slopeStandardError * 1e9;
+        return std::nullopt;
+    }();
+    const int slopeDecimals = slopeError ? decimalsFor(*slopeError) : 4;
+    html += row(QObject::tr("Sensitivity used"),
+                QObject::tr("%1 pF/mN (force), %2 pF/mm (deflection)")
+                    .arg(number(c.perNewton_f * 1e9, slopeDecimals), number(c.perMetre_f * 1e9, slopeDecimals)));
     if (!c.calibration) {
         html += row(QObject::tr("Calibration"),
                     QObject::tr("none recorded with the session: the beam model of the profile"));
@@ -38,9 +51,11 @@ QString capacitiveBasisHtml(const core::report::CapacitiveBasis& c)
         return v ? number(*v, decimals) + unit : QStringLiteral("—");
     };
     html += row(QObject::tr("Calibrated"),
-                QObject::tr("%1 by %2").arg(text(record.timestampUtc), orDash(record.operatorName)));
-    QString slope = value("sensitivity_pf_per_mn", 4, QString());
-    if (record.fit.points > 2) slope += QStringLiteral(" ± ") + number(record.fit.slopeStandardError * 1e9, 4);
+                QObject::tr("%1 by %2").arg(fileDateTime(record.timestampUtc), orDash(record.operatorName)));
+    const auto sensitivity = record.value("sensitivity_pf_per_mn");
+    const QString slope = !sensitivity ? QStringLiteral("—")
+                          : slopeError ? valueWithErrorText(*sensitivity, *slopeError)
+                                       : number(*sensitivity, slopeDecimals);
     html += row(QObject::tr("Force fit"), record.fit.points > 0
                                               ? QObject::tr("%1 pF/mN, R² = %2, %3 points")
                                                     .arg(slope, number(record.fit.rSquared, 5))
@@ -48,10 +63,12 @@ QString capacitiveBasisHtml(const core::report::CapacitiveBasis& c)
                                               : QObject::tr("%1 pF/mN (the record keeps no fit)").arg(slope));
     const auto limit = record.value("detection_limit_mn");
     html += row(QObject::tr("Detection limit (3σ)"),
-                limit ? QObject::tr("%1 µN (%2 mgf), %3 mm")
-                            .arg(number(*limit * 1e3, 2), number(*limit * 1e3 / 9.80665, 2),
-                                 value("detection_limit_mm", 4, QString()))
-                      : QStringLiteral("—"));
+                !limit ? QStringLiteral("—")
+                : record.value("detection_limit_mm")
+                    ? QObject::tr("%1, a tip displacement of %2")
+                          .arg(detectionLimitText(*limit * 1e-3),
+                               siText(*record.value("detection_limit_mm") * 1e-3, QStringLiteral("m"), 3))
+                    : detectionLimitText(*limit * 1e-3));
     html += row(QObject::tr("Baseline σ, drift"),
                 QObject::tr("%1 pF, %2 pF/s")
                     .arg(value("baseline_sigma_pf", 4, QString()), value("drift_pf_per_s", 5, QString())));

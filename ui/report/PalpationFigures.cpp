@@ -24,14 +24,20 @@ QStringList pressCells(const core::report::PressRow& press)
             press.standardError_n_per_m ? k + QStringLiteral(" ± ") + se : k, depth};
 }
 
-QStringList siteCells(const core::report::SiteSummary& site)
+std::vector<QStringList> siteRows(const std::vector<core::report::SiteSummary>& sites)
 {
-    const QLocale locale;
-    const int decimals = site.standardDeviation_n_per_m ? decimalsFor(*site.standardDeviation_n_per_m) : 1;
-    const auto value = [&](double v) { return fixedText(v, decimals); };
-    return {QString::fromStdString(site.site), QString::number(site.presses), value(site.mean_n_per_m),
-            site.standardDeviation_n_per_m ? value(*site.standardDeviation_n_per_m) : QStringLiteral("—"),
-            QStringLiteral("%1 – %2").arg(value(site.min_n_per_m), value(site.max_n_per_m))};
+    std::vector<double> deviations;
+    for (const auto& site : sites)
+        if (site.standardDeviation_n_per_m) deviations.push_back(*site.standardDeviation_n_per_m);
+    const int decimals = sharedDecimals(deviations, 1);
+    std::vector<QStringList> rows;
+    for (const auto& site : sites)
+        rows.push_back({QString::fromStdString(site.site), QLocale().toString(static_cast<qulonglong>(site.presses)),
+                        fixedText(site.mean_n_per_m, decimals),
+                        site.standardDeviation_n_per_m ? fixedText(*site.standardDeviation_n_per_m, decimals)
+                                                       : QStringLiteral("—"),
+                        rangeText(site.min_n_per_m, site.max_n_per_m, decimals)});
+    return rows;
 }
 
 QString siteGridHtml(const std::vector<core::report::SiteSummary>& sites)

@@ -19,9 +19,10 @@ class StiffnessScale;
 
 // A press's row as plain text: time (s), site, k_o ± SE (N/m), depth range (mm).
 QStringList pressCells(const core::report::PressRow& press);
-// A site's row as plain text: site, n, mean, SD, range (N/m), the mean to
-// the SD's two significant digits.
-QStringList siteCells(const core::report::SiteSummary& site);
+// The sites' rows as plain text: site, n, mean, SD, range (N/m). The
+// columns share their decimals, those of the coarsest SD; a range whose
+// ends read the same is the one value.
+std::vector<QStringList> siteRows(const std::vector<core::report::SiteSummary>& sites);
 
 // An HTML table of the grid's cells; empty when no site is a grid cell.
 QString siteGridHtml(const std::vector<core::report::SiteSummary>& sites);

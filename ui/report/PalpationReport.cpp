@@ -44,12 +44,12 @@ QString palpationReportSection(const core::report::ReportData& data, QTextDocume
                                  "beam model's systematic terms (E, t³, L³) are not in it."));
     const auto sites = core::report::siteSummaries(presses);
     if (!sites.empty()) {
-        std::vector<QStringList> siteRows;
-        for (const auto& site : sites) siteRows.push_back(escaped(siteCells(site)));
+        std::vector<QStringList> sitesTable;
+        for (const auto& cells : siteRows(sites)) sitesTable.push_back(escaped(cells));
         html += QStringLiteral("<h2>%1</h2>").arg(QObject::tr("By site"));
         html += table({QObject::tr("Site"), QObject::tr("n"), QObject::tr("Mean (N/m)"), QObject::tr("SD (N/m)"),
                        QObject::tr("Range (N/m)")},
-                      siteRows);
+                      sitesTable);
     }
     const QUrl scaleUrl(QStringLiteral("tactiscope://tissue-scale.png"));
     document.addResource(QTextDocument::ImageResource, scaleUrl,

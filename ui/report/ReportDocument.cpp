@@ -1,19 +1,19 @@
 // ReportDocument: the report's HTML, its plot resource, and the PDF.
 #include "ui/report/ReportDocument.h"
 
-#include "core/calibration/CalibrationFields.h"
-
 #include "core/modes/ModeDefinition.h"
+#include "ui/DateText.h"
 #include "ui/NumberText.h"
 #include "ui/VocabularyText.h"
+#include "ui/calibration/CalibrationText.h"
 
 #include "core/Version.h"
 #include "core/report/VerdictTrail.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/SafeOutput.h"
-#include "core/text/UtcTime.h"
 #include "ui/modes/ModeUi.h"
 #include "ui/report/ReportHtml.h"
+#include "ui/report/ReportPages.h"
 #include "ui/report/ReportPlot.h"
 
 #include <QBuffer>
@@ -35,9 +35,8 @@ namespace {
 
 using namespace reporthtml;
 
-// QTextDocument::print() sets 2 cm margins of its own (and puts the page
-// number in the bottom one): an A4 page has 170 mm of text width, 642 px of
-// the document's 96 dpi.
+// The pages have 2 cm margins (ReportPages): an A4 page has 170 mm of text
+// width, 642 px of the document's 96 dpi.
 constexpr int kTextWidth_px = 640;
 constexpr int kLaneHeight_px = 130;  // four lanes and the header fit on the first page
 
@@ -57,16 +56,14 @@ int pageCountOf(const QByteArray& pdf)
 
 QString calibrationText(const core::calibration::CalibrationRecord& record)
 {
-    // Its values in words with units, a row each, never the record's key
-    // names; R² is said with the fit's points below.
+    // Its values in words with units, a row each; R² is said with the
+    // fit's points below.
     QStringList values;
-    for (const auto& row : core::calibration::calibrationRows(record.values))
-        if (!(row.label == "R²" && record.fit.points > 0))
-            values << QStringLiteral("%1 %2").arg(text(row.label), text(row.value)) +
-                          (row.unit.empty() ? QString() : QStringLiteral(" ") + text(row.unit));
-    QString line =
-        QObject::tr("%1 of %2, %3 by %4")
-            .arg(text(record.kind), text(record.sensorName), text(record.timestampUtc), orDash(record.operatorName));
+    for (const QString& value : calibrationValueTexts(record))
+        if (!(record.fit.points > 0 && value.startsWith(QStringLiteral("R² ")))) values << value.toHtmlEscaped();
+    QString line = QObject::tr("%1 of %2, %3 by %4")
+                       .arg(text(record.kind), text(record.sensorName), fileDateTime(record.timestampUtc),
+                            orDash(record.operatorName));
     if (record.fit.points > 0)
         line += QObject::tr(" (R² = %1, %2 points)").arg(number(record.fit.rSquared, 5)).arg(record.fit.points);
     return line + QStringLiteral("<br><small>") + values.join(QStringLiteral("<br>")) + QStringLiteral("</small>");
@@ -92,7 +89,7 @@ QString header(const core::report::ReportData& data)
     html += row(QObject::tr("Operator"), orDash(m.operatorName));
     html += row(QObject::tr("Mode"), wordText(m.mode));
     if (!m.site.empty()) html += row(QObject::tr("Site"), text(m.site));
-    html += row(QObject::tr("Started"), QObject::tr("%1 (UTC)").arg(text(s.startedUtc)));
+    html += row(QObject::tr("Started"), fileDateTime(s.startedUtc).toHtmlEscaped());
     html += row(QObject::tr("Covered"), range);
     html += row(QObject::tr("Device"), device);
     html += row(QObject::tr("Sensor"), orDash(data.sensorName));
@@ -106,11 +103,11 @@ QString header(const core::report::ReportData& data)
                     QObject::tr("not computed: %1; the plot shows the raw channels").arg(text(data.derivedProblem)));
     html += row(QObject::tr("Calibration"), calibrations.isEmpty() ? QObject::tr("none recorded with the session")
                                                                    : calibrations.join(QStringLiteral("<br>")));
-    const QString losses = lost == 0 ? QObject::tr("none lost")
-                                     : QObject::tr("%1 lost in %2")
-                                           .arg(QLocale().toString(lost),
-                                                data.gaps.size() == 1 ? QObject::tr("1 gap")
-                                                                      : QObject::tr("%1 gaps").arg(data.gaps.size()));
+    const QString losses = lost == 0
+                               ? QObject::tr("none lost")
+                               : QObject::tr("%1 lost in %2")
+                                     .arg(QLocale().toString(lost), countText(static_cast<long long>(data.gaps.size()),
+                                                                              QObject::tr("gap"), QObject::tr("gaps")));
     html += row(QObject::tr("Samples"), QObject::tr("%1 Hz, %2 per channel; %3")
                                             .arg(number(s.sampleRate_hz, 1))
                                             .arg(QLocale().toString(static_cast<qulonglong>(s.sampleCount)))
@@ -156,7 +153,9 @@ QString verdict(const core::report::ReportData& data)
                            .arg(pass ? QStringLiteral("#2e7d32") : QStringLiteral("#c62828"), QObject::tr("Verdict:"),
                                 wordText(*verdict).toUpper());
         QStringList trail;
-        for (const auto& line : core::report::verdictTrailLines(data.verdicts)) trail << text(line);
+        for (const auto& line : core::report::verdictTrailLines(
+                 data.verdicts, [](const std::string& utc) { return fileDateTime(utc).toStdString(); }))
+            trail << text(line);
         if (trail.isEmpty())
             trail << QObject::tr("Recorded before verdicts kept a trail: who decided it is not known.");
         return html + QStringLiteral("<p class=trail>%1</p>").arg(trail.join(QStringLiteral("<br>")));
@@ -165,7 +164,8 @@ QString verdict(const core::report::ReportData& data)
         double sum = 0.0;
         for (const auto& r : data.readings) sum += r.value;
         const auto count = data.readings.size();
-        const QString readings = count == 1 ? QObject::tr("1 reading") : QObject::tr("%1 readings").arg(count);
+        const QString readings =
+            countText(static_cast<long long>(count), QObject::tr("reading"), QObject::tr("readings"));
         return QStringLiteral("<p class=verdict>%1</p>")
             .arg(QObject::tr("%1, mean %2 %3")
                      .arg(readings, number(sum / static_cast<double>(count), 1), text(data.readings[0].unit)));
@@ -300,9 +300,9 @@ std::unique_ptr<QTextDocument> buildReportDocument(const core::report::ReportDat
                 .arg(shaded, QObject::tr("Bands show each stretch's minimum and maximum."));
     html += eventTables(data, *document);
     html += QStringLiteral("<p class=footer>%1</p>")
-                .arg(QObject::tr("Tactiscope %1 (recorded with %2), %3 UTC")
+                .arg(QObject::tr("Tactiscope %1 (recorded with %2), %3")
                          .arg(QString::fromUtf8(core::versionString()), orDash(data.session.appVersion),
-                              QString::fromStdString(core::text::utcNow())));
+                              fileDateTime(QDateTime::currentDateTime())));
     document->setHtml(html);
     return document;
 }
@@ -319,10 +319,9 @@ int writeReportPdf(const core::report::ReportData& data, const QString& path)
         buffer.open(QIODevice::WriteOnly);
         QPdfWriter writer(&buffer);
         writer.setPageSize(QPageSize(QPageSize::A4));
-        writer.setPageMargins(QMarginsF(0, 0, 0, 0), QPageLayout::Millimeter);  // print() adds 2 cm
         writer.setTitle(QObject::tr("Inspection report, session %1").arg(data.session.id));
         writer.setCreator(QStringLiteral("Tactiscope %1").arg(QString::fromUtf8(core::versionString())));
-        buildReportDocument(data)->print(&writer);
+        printPages(*buildReportDocument(data), writer);
     }
     const int pages = pageCountOf(pdf);
     core::storage::writeAtomically(path.toStdString(), [&pdf](std::ostream& out) {  // throws StorageError

@@ -16,8 +16,8 @@ class QTextDocument;
 
 namespace tactiscope::ui {
 
-// The document with its plot image; print() lays it out on the pages of a
-// printer or PDF writer.
+// The document with its plot image; printPages (ReportPages) lays it out
+// on the pages of a printer or PDF writer.
 std::unique_ptr<QTextDocument> buildReportDocument(const core::report::ReportData& data);
 
 // Writes the PDF (A4) atomically: a temporary file, every write checked,

@@ -1,5 +1,6 @@
 // ReportPlot: lanes, bands and the session's records on QCustomPlot.
 #include "ui/report/ReportPlot.h"
+#include "ui/AxisTicks.h"
 
 #include "ui/DisplayUnits.h"
 #include "ui/report/LaneAxis.h"
@@ -124,6 +125,12 @@ std::unique_ptr<QCustomPlot> buildPlot(const core::report::ReportData& data, int
 QImage renderReportPlot(const core::report::ReportData& data, QSize size, double scale)
 {
     const auto plot = buildPlot(data, size.width());
+    // Laid out at the image's size first, so each lane knows its height
+    // and gets ticks with two labels at least, none overlapping.
+    plot->setGeometry(QRect(QPoint(), size));
+    plot->replot();
+    const double line = QFontMetrics(plot->font()).height();
+    for (QCPAxisRect* rect : plot->axisRects()) fitTickCount(*rect->axis(QCPAxis::atLeft), rect->height(), line, 3);
     return plot->toPixmap(size.width(), size.height(), scale).toImage();
 }
 

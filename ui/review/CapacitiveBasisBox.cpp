@@ -1,5 +1,6 @@
 // CapacitiveBasisBox: the calibration a capacitive session is read through.
 #include "ui/review/CapacitiveBasisBox.h"
+#include "ui/DateText.h"
 
 #include "core/report/ReportData.h"
 #include "core/sensors/SensorProfile.h"
@@ -31,7 +32,7 @@ CapacitiveBasisBox::CapacitiveBasisBox(const ReviewAccountContext& context, QWid
                 if (stored.record.kind == core::calibration::kCapacitiveKind) {
                     m_records.push_back(stored.record);
                     choice->addItem(tr("%1 by %2")
-                                        .arg(QString::fromStdString(stored.record.timestampUtc),
+                                        .arg(screenDateTime(stored.record.timestampUtc),
                                              stored.record.operatorName.empty()
                                                  ? tr("(no name)")
                                                  : QString::fromStdString(stored.record.operatorName)));
@@ -80,7 +81,7 @@ QString CapacitiveBasisBox::readThrough(const std::optional<core::calibration::C
     if (!error.isEmpty()) return error;
     m_basis->setText(capacitiveBasisHtml(*basis));
     emit status(record ? tr("Force and deflection through the calibration of %1 (the recording's stays as it was).")
-                             .arg(QString::fromStdString(record->timestampUtc))
+                             .arg(screenDateTime(record->timestampUtc))
                        : tr("Force and deflection through the calibration recorded with the session."));
     return {};
 }

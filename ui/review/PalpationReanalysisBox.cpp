@@ -1,5 +1,6 @@
 // PalpationReanalysisBox: the choices, the run and the save.
 #include "ui/review/PalpationReanalysisBox.h"
+#include "ui/NumberText.h"
 
 #include "ui/ProfileLibrary.h"
 #include "ui/review/AnalysisName.h"
@@ -122,7 +123,7 @@ QString PalpationReanalysisBox::run()
     m_saved = false;
     m_save->setEnabled(!m_result->readings.empty());
     const auto count = m_result->readings.size();
-    QString text = (count == 1 ? tr("1 press read") : tr("%1 presses read").arg(count)) +
+    QString text = tr("%1 read").arg(countText(static_cast<long long>(count), tr("press"), tr("presses"))) +
                    tr(" with %1.").arg(QString::fromStdString(m_result->basis));
     if (m_result->outOfRange > 0) text += tr(" %1 more out of the probe's range.").arg(m_result->outOfRange);
     m_status->setText(text + QLatin1Char(' ') + tr("The recorded readings are unchanged until you save these."));

@@ -101,8 +101,8 @@ void PressesPanel::showReadings(const std::vector<core::storage::SessionReading>
         for (const int column : {0, 3, 4}) item->setTextAlignment(column, Qt::AlignRight | Qt::AlignVCenter);
     }
     const auto sites = core::report::siteSummaries(recorded);
-    for (const auto& site : sites) {
-        auto* item = new QTreeWidgetItem(m_sites, siteCells(site));
+    for (const auto& cells : siteRows(sites)) {
+        auto* item = new QTreeWidgetItem(m_sites, cells);
         for (const int column : {1, 2, 3, 4}) item->setTextAlignment(column, Qt::AlignRight | Qt::AlignVCenter);
     }
     const QString grid = siteGridHtml(sites);

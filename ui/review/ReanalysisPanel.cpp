@@ -3,6 +3,7 @@
 
 #include "core/storage/OpenSessionSource.h"
 
+#include "ui/NumberText.h"
 #include "ui/review/AnalysisName.h"
 
 #include "core/ModeCapability.h"
@@ -49,8 +50,7 @@ QHBoxLayout* row(std::initializer_list<QWidget*> widgets)
 
 QString samplesText(std::size_t samples)
 {
-    return samples >= 1000000 ? QObject::tr("%1 M").arg(static_cast<double>(samples) / 1e6, 0, 'f', 2)
-                              : QString::number(samples);
+    return countText(static_cast<long long>(samples), QObject::tr("sample"), QObject::tr("samples"));
 }
 
 }  // namespace
@@ -204,7 +204,7 @@ bool ReanalysisPanel::run()
     m_progress->setValue(0);
     m_progress->show();
     m_cancel->show();
-    m_status->setText(tr("Analysing %1 samples per channel…").arg(samplesText(m_session.sampleCount)));
+    m_status->setText(tr("Analysing %1 per channel…").arg(samplesText(m_session.sampleCount)));
     m_worker = std::jthread([this, path = m_storePath.toStdString(), id = m_session.id, cantilevers = m_cantilevers,
                              settings = *chosen](std::stop_token stop) {
         Outcome outcome;
@@ -261,11 +261,9 @@ void ReanalysisPanel::finish(Outcome outcome)
     m_hasResult = true;
     m_saved = false;
     m_save->setEnabled(m_saveAllowed);
-    m_status->setText(tr("%1 events in %2 samples, %3 s. Recorded events are unchanged until you save these as an "
-                         "analysis.")
-                          .arg(m_events.size())
-                          .arg(samplesText(outcome.detection->analysedSamples))
-                          .arg(outcome.elapsed_s, 0, 'f', 2));
+    m_status->setText(tr("%1 in %2, %3 s. Recorded events are unchanged until you save these as an analysis.")
+                          .arg(countText(static_cast<long long>(m_events.size()), tr("event"), tr("events")),
+                               samplesText(outcome.detection->analysedSamples), fixedText(outcome.elapsed_s, 2)));
     emit analysed();
     emit recordsChanged();
 }

@@ -2,6 +2,7 @@
 // the hover readout, the pinned cursor and the replay playhead.
 #include "ui/review/ReviewPlot.h"
 
+#include "ui/AxisTicks.h"
 #include "ui/DisplayUnits.h"
 #include "ui/NumberText.h"
 #include "ui/report/LaneAxis.h"
@@ -162,29 +163,9 @@ void ReviewPlot::fitTickCounts()
 {
     const double line = laneLine();
     bool changed = false;
-    for (QCPAxisRect* rect : m_plot->axisRects()) {
-        if (rect == m_markerLane) continue;
-        QCPAxis* axis = rect->axis(QCPAxis::atLeft);
-        QCPAxisTicker& ticker = *axis->ticker();
-        if (dynamic_cast<QCPAxisTickerText*>(&ticker) || axis->range().size() <= 0.0) continue;
-        const int was = ticker.tickCount();
-        int best = 1;
-        for (int count = 3; count >= 1; --count) {
-            ticker.setTickCount(count);
-            QVector<double> ticks;
-            ticker.generate(axis->range(), QLocale(), QLatin1Char('g'), 6, ticks, nullptr, nullptr);
-            const auto inside =
-                std::count_if(ticks.begin(), ticks.end(), [&](double t) { return axis->range().contains(t); });
-            const double apart_px =
-                ticks.size() > 1 ? (ticks[1] - ticks[0]) / axis->range().size() * rect->height() : 0.0;
-            if (inside >= 2 && apart_px >= line) {
-                best = count;
-                break;
-            }
-        }
-        ticker.setTickCount(best);
-        changed = changed || best != was;
-    }
+    for (QCPAxisRect* rect : m_plot->axisRects())
+        if (rect != m_markerLane)
+            changed = fitTickCount(*rect->axis(QCPAxis::atLeft), rect->height(), line, 3) || changed;
     // The plot is never shorter than its lanes at their least heights with
     // the margins the layout found: below that, the lanes scroll.
     const int least = m_plot->plotLayout()->minimumOuterSizeHint().height();
@@ -369,7 +350,7 @@ void ReviewPlot::reload()
 
 QString ReviewPlot::readoutAt(double time_s) const
 {
-    QStringList parts{tr("t = %1 s").arg(time_s, 0, 'f', 4)};
+    QStringList parts{tr("t = %1 s").arg(fixedText(time_s, 4))};
     for (std::size_t c = 0; c < m_lanes.lanes.size(); ++c) {
         const auto& window = m_windows[c];
         const auto i = window.nearest(time_s);

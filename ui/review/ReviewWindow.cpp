@@ -1,5 +1,6 @@
 // ReviewWindow: header, plot, record list, notes, replay, re-analysis and exports.
 #include "ui/review/ReviewWindow.h"
+#include "ui/DateText.h"
 
 #include "core/modes/ModeDefinition.h"
 #include "core/storage/OpenSessionSource.h"
@@ -19,13 +20,13 @@
 #include "ui/calibration/WizardText.h"
 #include "ui/modes/ModeUi.h"
 #include "ui/report/ReportDocument.h"
+#include "ui/report/ReportPages.h"
 #include "ui/review/ReviewAccount.h"
 #include "ui/review/ReviewActions.h"
 #include "ui/review/ReviewPlot.h"
 #include "ui/review/SessionTableModel.h"
 
 #include <QAction>
-#include <QDateTime>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFontMetrics>
@@ -58,6 +59,12 @@
 
 namespace tactiscope::ui {
 namespace {
+
+// A verdict's time in the trail, as the window writes every date.
+std::string screenTimeOf(const std::string& utc)
+{
+    return screenDateTime(utc).toStdString();
+}
 
 // A spin box takes Space as text (and refuses it): the window's Space
 // shortcut (play, pause) is let through instead.
@@ -99,10 +106,10 @@ QString eventDetails(const core::storage::SessionEvent& e)
 {
     if (e.kind != core::EventKind::Defect) return text(e.note);
     QStringList parts{e.direction > 0 ? QObject::tr("A then B") : QObject::tr("B then A")};
-    if (e.peakR) parts << QObject::tr("R = %1").arg(*e.peakR, 0, 'f', 3);
-    if (e.lag_s) parts << QObject::tr("lag %1 ms").arg(*e.lag_s * 1e3, 0, 'f', 0);
-    if (e.speed_m_per_s) parts << QObject::tr("%1 mm/s").arg(*e.speed_m_per_s * 1e3, 0, 'f', 0);
-    parts << QObject::tr("%1 s long").arg(e.end_s - e.start_s, 0, 'f', 3);
+    if (e.peakR) parts << QObject::tr("R = %1").arg(fixedText(*e.peakR, 3));
+    if (e.lag_s) parts << QObject::tr("lag %1 ms").arg(fixedText(*e.lag_s * 1e3, 0));
+    if (e.speed_m_per_s) parts << QObject::tr("%1 mm/s").arg(fixedText(*e.speed_m_per_s * 1e3, 0));
+    parts << QObject::tr("%1 s long").arg(fixedText(e.end_s - e.start_s, 3));
     return parts.join(QStringLiteral(", "));
 }
 
@@ -115,7 +122,7 @@ std::vector<QString> siteTexts(const std::vector<core::detector::DefectEvent>& d
     for (std::size_t k = 0; k < grouping.sites.size(); ++k) {
         const auto& site = grouping.sites[k];
         const QString text = site.position_m
-                                 ? QObject::tr("site %1 (%2 mm)").arg(k + 1).arg(*site.position_m * 1e3, 0, 'f', 0)
+                                 ? QObject::tr("site %1 (%2 mm)").arg(k + 1).arg(fixedText(*site.position_m * 1e3, 0))
                                  : QObject::tr("site %1").arg(k + 1);
         for (const std::size_t i : site.crossings) texts[i] = text;
         for (const std::size_t i : site.parts) texts[i] = text;
@@ -325,7 +332,6 @@ void ReviewWindow::refreshHeader()
 {
     const auto& meta = m_session.metadata;
     const bool interrupted = m_session.status == core::SessionStatus::Interrupted;
-    const QDateTime started = QDateTime::fromString(text(m_session.startedUtc), Qt::ISODateWithMs).toLocalTime();
     // Only what the session holds: an empty field says nothing.
     QStringList header{tr("<b>%1</b>").arg(wordText(meta.mode).toHtmlEscaped())};
     const auto add = [&header](const QString& format, const std::string& value) {
@@ -334,7 +340,7 @@ void ReviewWindow::refreshHeader()
     add(tr("subject <b>%1</b>"), meta.subject);
     add(tr("operator %1"), meta.operatorName);
     add(tr("site %1"), meta.site);
-    header << tr("started %1").arg(started.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")))
+    header << tr("started %1").arg(screenDateTime(m_session.startedUtc))
            << tr("%1 at %2 Hz").arg(durationText(m_session.duration_s())).arg(typedText(m_session.sampleRate_hz));
     add(tr("device %1"), (meta.deviceModel + " " + meta.deviceSerial).substr(meta.deviceModel.empty() ? 1 : 0));
     header << (interrupted ? tr("<span style='color:#a05000'><b>interrupted</b> (kept up to the cut)</span>")
@@ -342,7 +348,8 @@ void ReviewWindow::refreshHeader()
     add(tr("verdict <b>%1</b>"), std::string(core::verdictText(m_session.verdict)));
     QStringList trail;
     try {
-        for (const auto& line : core::report::verdictTrailLines(m_store->verdicts(m_session.id))) trail << text(line);
+        for (const auto& line : core::report::verdictTrailLines(m_store->verdicts(m_session.id), screenTimeOf))
+            trail << text(line);
     } catch (const core::storage::StorageError& e) {
         trail << tr("the verdict's trail cannot be read: %1").arg(text(e.what()));
     }
@@ -513,8 +520,7 @@ void ReviewWindow::refreshRecords()
     std::ranges::stable_sort(entries, {}, &Entry::time_s);
     m_list->clear();
     for (const Entry& entry : entries) {
-        auto* item = new QTreeWidgetItem(
-            m_list, {QString::number(entry.time_s, 'f', 3), entry.what, entry.source, entry.details});
+        auto* item = new QTreeWidgetItem(m_list, {fixedText(entry.time_s, 3), entry.what, entry.source, entry.details});
         item->setData(0, TimeRole, entry.time_s);
         item->setData(0, EndRole, entry.end_s);
         item->setData(0, NoteRole, QVariant::fromValue<qint64>(entry.note));
@@ -553,7 +559,8 @@ void ReviewWindow::askVerdict()
     try {
         // As it is now: another station or the CLI may have decided since the window opened.
         if (const auto now = m_store->session(m_session.id)) m_session.verdict = now->verdict;
-        for (const auto& line : core::report::verdictTrailLines(m_store->verdicts(m_session.id))) trail << text(line);
+        for (const auto& line : core::report::verdictTrailLines(m_store->verdicts(m_session.id), screenTimeOf))
+            trail << text(line);
     } catch (const core::storage::StorageError& e) {
         showProblem(tr("The verdict's trail cannot be read: %1").arg(text(e.what())));
         return;
@@ -595,8 +602,10 @@ void ReviewWindow::askNoteText(const QString& title, const QString& initial,
 {
     auto* dialog = new QInputDialog(this);
     dialog->setObjectName(QStringLiteral("noteDialog"));
-    dialog->setWindowTitle(title);
-    dialog->setLabelText(tr("Note:"));
+    // The time in the dialog's text, not only its title: a title bar cut it to "Note a….710 s".
+    dialog->setWindowTitle(tr("Note"));
+    dialog->setLabelText(title + QLatin1Char(':'));
+    dialog->setMinimumWidth(dialog->fontMetrics().horizontalAdvance(QLatin1Char('M')) * 36);
     dialog->setTextValue(initial);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &QInputDialog::textValueSelected, this, [this, apply](const QString& value) {
@@ -609,7 +618,7 @@ void ReviewWindow::askNoteText(const QString& title, const QString& initial,
 void ReviewWindow::addNote()
 {
     const double time_s = m_plot->cursorTime().value_or(0.5 * (m_plot->from_s() + m_plot->to_s()));
-    askNoteText(tr("Note at %1 s").arg(time_s, 0, 'f', 3), {},
+    askNoteText(tr("Note at %1 s").arg(fixedText(time_s, 3)), {},
                 [this, time_s](const QString& value) { return addNoteAt(time_s, value); });
 }
 
@@ -749,7 +758,7 @@ void ReviewWindow::printReport()
         printer.setDocName(tr("Inspection report, session %1").arg(m_session.id));
         QPrintDialog dialog(&printer, this);
         if (dialog.exec() != QDialog::Accepted) return;
-        buildReportDocument(report)->print(&printer);
+        printPages(*buildReportDocument(report), printer);
     } catch (const std::exception& e) {
         showProblem(tr("The report was not printed: %1").arg(text(e.what())));
     }

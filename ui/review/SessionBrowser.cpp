@@ -1,5 +1,7 @@
 // SessionBrowser: filters, table, open and delete.
 #include "ui/review/SessionBrowser.h"
+#include "ui/DateText.h"
+#include "ui/NumberText.h"
 
 #include "core/modes/ModeDefinition.h"
 #include "core/storage/OpenSessionSource.h"
@@ -101,9 +103,7 @@ QString describe(const core::storage::SessionSummary& s)
 {
     return QObject::tr("#%1 %2 %3 (%4, %5)")
         .arg(s.id)
-        .arg(wordText(s.metadata.mode), QString::fromStdString(s.metadata.subject),
-             QString::fromStdString(s.startedUtc.substr(0, 16)).replace(QLatin1Char('T'), QLatin1Char(' ')) +
-                 QObject::tr(" UTC"),
+        .arg(wordText(s.metadata.mode), QString::fromStdString(s.metadata.subject), screenDateTime(s.startedUtc),
              durationText(s.duration_s()));
 }
 
@@ -304,10 +304,13 @@ void SessionBrowser::showListing(Listing listing)
             m_table->selectionModel()->select(index, QItemSelectionModel::Select | QItemSelectionModel::Rows);
     }
     if (!m_table->selectionModel()->hasSelection() && m_sorted->rowCount() > 0) m_table->selectRow(0);
-    m_count->setText(listing.capped ? tr("%1 of the newest %2 sessions (narrow the search or the dates for older ones)")
-                                          .arg(m_model->rowCount())
-                                          .arg(listing.total)
-                                    : tr("%1 of %2 sessions").arg(m_model->rowCount()).arg(listing.total));
+    m_count->setText(listing.capped
+                         ? tr("%1 of the newest %2 sessions (narrow the search or the dates for older ones)")
+                               .arg(m_model->rowCount())
+                               .arg(listing.total)
+                         : tr("%1 of %2")
+                               .arg(m_model->rowCount())
+                               .arg(countText(static_cast<long long>(listing.total), tr("session"), tr("sessions"))));
     updateButtons();
 }
 
@@ -380,7 +383,8 @@ void SessionBrowser::deleteSessions(const std::vector<std::int64_t>& sessions)
     emit deletingSessions(sessions);
     m_deleting = true;
     updateButtons();
-    m_count->setText(tr("Deleting %n session(s)…", nullptr, static_cast<int>(sessions.size())));
+    m_count->setText(
+        tr("Deleting %1…").arg(countText(static_cast<long long>(sessions.size()), tr("session"), tr("sessions"))));
     const auto finish = [this](const Outcome& outcome) {
         m_deleting = false;
         reload();

@@ -1,10 +1,11 @@
 // SessionTableModel: one row per stored session.
 #include "ui/review/SessionTableModel.h"
+#include "ui/DateText.h"
+#include "ui/NumberText.h"
 #include "ui/VocabularyText.h"
 
 #include <QApplication>
 #include <QColor>
-#include <QDateTime>
 #include <QStyle>
 
 #include <cmath>
@@ -22,17 +23,11 @@ bool isInterrupted(const core::storage::SessionSummary& s)
     return s.status == core::SessionStatus::Interrupted;
 }
 
-// The start as local time, which is what the operator saw on the wall clock.
-QDateTime startOf(const core::storage::SessionSummary& s)
-{
-    return QDateTime::fromString(text(s.startedUtc), Qt::ISODateWithMs);
-}
-
 }  // namespace
 
 QString durationText(double seconds)
 {
-    if (seconds < 60.0) return QObject::tr("%1 s").arg(seconds, 0, 'f', 1);
+    if (seconds < 60.0) return QObject::tr("%1 s").arg(fixedText(seconds, 1));
     const auto whole = static_cast<long long>(std::llround(seconds));
     if (whole < 3600) return QObject::tr("%1 min %2 s").arg(whole / 60).arg(whole % 60, 2, 10, QLatin1Char('0'));
     return QObject::tr("%1 h %2 min").arg(whole / 3600).arg((whole % 3600) / 60, 2, 10, QLatin1Char('0'));
@@ -82,7 +77,7 @@ QVariant SessionTableModel::data(const QModelIndex& index, int role) const
     case Started:
         // Sessions started in the same millisecond keep the order they were written in.
         return sortKey ? QVariant(QStringLiteral("%1#%2").arg(text(s->startedUtc)).arg(s->id, 12, 10, QLatin1Char('0')))
-                       : QVariant(startOf(*s).toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")));
+                       : QVariant(screenDateTime(s->startedUtc));
     case Mode:
         return wordText(s->metadata.mode);
     case Subject:

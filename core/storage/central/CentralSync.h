@@ -33,7 +33,8 @@ struct SyncOutcome {
 
 // "synced 2 sessions (1.2 M samples), 1 already there": millions with one
 // decimal, or two significant digits below a million, so a small sync
-// never reads "0.0 M". The sync command's contract; the GUI says the same.
+// never reads "0.0 M". The sync command's contract; the GUI says it in
+// full counts (CentralSyncController).
 std::string syncSummary(const SyncOutcome& outcome);
 
 struct SyncProgress {

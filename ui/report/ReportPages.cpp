@@ -1,0 +1,107 @@
+// ReportPages: pagination that keeps headings with their content, and the printing.
+#include "ui/report/ReportPages.h"
+
+#include <QAbstractTextDocumentLayout>
+#include <QObject>
+#include <QPagedPaintDevice>
+#include <QPainter>
+#include <QTextBlock>
+#include <QTextDocument>
+#include <QTextFrame>
+#include <QTextTable>
+
+#include <cmath>
+#include <optional>
+
+namespace tactiscope::ui {
+namespace {
+
+constexpr double kPx_per_mm = 96.0 / 25.4;
+constexpr double kMargin_mm = 20.0;
+
+// The document position where what follows the root-frame item `it`
+// begins: a table's first body row (its header rows repeat on every page,
+// so they are no content), another frame's first position, or the next
+// block's.
+std::optional<int> contentAfter(QTextFrame::iterator it)
+{
+    for (++it; !it.atEnd(); ++it) {
+        if (QTextFrame* frame = it.currentFrame()) {
+            if (auto* table = qobject_cast<QTextTable*>(frame)) {
+                const int first = std::min(table->format().headerRowCount(), table->rows() - 1);
+                return table->cellAt(first, 0).firstPosition();
+            }
+            return frame->firstPosition();
+        }
+        if (it.currentBlock().isValid() && !it.currentBlock().text().trimmed().isEmpty())
+            return it.currentBlock().position();
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+QSizeF a4Paper_px()
+{
+    return {210.0 * kPx_per_mm, 297.0 * kPx_per_mm};
+}
+
+int pageAt(const QTextDocument& document, int position)
+{
+    const QTextBlock block = document.findBlock(position);
+    const QRectF box = document.documentLayout()->blockBoundingRect(block);
+    return static_cast<int>(std::floor(box.top() / document.pageSize().height()));
+}
+
+void layOutPages(QTextDocument& document, const QSizeF& paper_px)
+{
+    QTextFrameFormat margins = document.rootFrame()->frameFormat();
+    margins.setMargin(kMargin_mm * kPx_per_mm);
+    document.rootFrame()->setFrameFormat(margins);
+    document.setPageSize(paper_px);
+    // Each move pushes what follows down: look again from the top until
+    // no heading is stranded (a heading moves once, so this ends).
+    for (bool moved = true; moved;) {
+        moved = false;
+        for (auto it = document.rootFrame()->begin(); !it.atEnd() && !moved; ++it) {
+            QTextBlock heading = it.currentBlock();
+            if (!heading.isValid() || heading.blockFormat().headingLevel() == 0) continue;
+            if (heading.blockFormat().pageBreakPolicy() & QTextFormat::PageBreak_AlwaysBefore) continue;
+            const auto next = contentAfter(it);
+            if (!next || pageAt(document, heading.position()) == pageAt(document, *next)) continue;
+            QTextCursor cursor(heading);
+            QTextBlockFormat format = heading.blockFormat();
+            format.setPageBreakPolicy(QTextFormat::PageBreak_AlwaysBefore);
+            cursor.setBlockFormat(format);
+            moved = true;
+        }
+    }
+}
+
+int printPages(QTextDocument& document, QPagedPaintDevice& device)
+{
+    device.setPageMargins(QMarginsF(0, 0, 0, 0), QPageLayout::Millimeter);
+    const QSizeF paper_mm = device.pageLayout().fullRect(QPageLayout::Millimeter).size();
+    const QSizeF page(paper_mm.width() * kPx_per_mm, paper_mm.height() * kPx_per_mm);
+    layOutPages(document, page);
+    const int pages = document.pageCount();
+    QPainter painter(&device);
+    const double margin = kMargin_mm * kPx_per_mm;
+    painter.scale(device.logicalDpiX() / 96.0, device.logicalDpiY() / 96.0);
+    QFont footer = document.defaultFont();
+    footer.setPixelSize(9);  // in the document's pixels, which the painter scales to the device
+    for (int p = 0; p < pages; ++p) {
+        if (p > 0) device.newPage();
+        painter.save();
+        painter.translate(0, -p * page.height());
+        document.drawContents(&painter, QRectF(0, p * page.height(), page.width(), page.height()));
+        painter.restore();
+        painter.setFont(footer);
+        painter.setPen(QColor(0x77, 0x77, 0x77));
+        painter.drawText(QRectF(margin, page.height() - margin, page.width() - 2 * margin, margin / 2),
+                         Qt::AlignRight | Qt::AlignVCenter, QObject::tr("page %1 of %2").arg(p + 1).arg(pages));
+    }
+    return pages;
+}
+
+}  // namespace tactiscope::ui
