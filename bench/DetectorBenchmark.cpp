@@ -1,11 +1,14 @@
 // Detector speed: the vectorised PairDetector against the direct Eigen
-// implementation, both single-threaded on the same simulated panel scan with
-// the paper's settings (75 lags, 500 Hz). Reported per sample·lag so the two
+// implementation and the probe's own single-precision kernel
+// (FirmwarePairDetector, firmware/probe-detector, scalar C as a probe runs
+// it), all single-threaded on the same simulated panel scan with the
+// paper's settings (75 lags, 500 Hz). Reported per sample·lag so the two
 // compare directly; the fast one also over a whole hour, the target.
 // Run with repetitions for the min/median statistics, e.g.
 //   tactiscope_detector_bench --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
 #include "DirectDetector.h"
 #include "core/SampleBlock.h"
+#include "core/detector/FirmwarePairDetector.h"
 #include "core/detector/PairDetector.h"
 #include "devices/simulator/PanelScanScenario.h"
 
@@ -83,6 +86,13 @@ void BM_PairDetector_1h(benchmark::State& state)
     run<core::detector::PairDetector>(state, 3600.0);
 }
 
+// The probe's kernel compiled for the workstation: what `detect --engine
+// probe` runs, and a scalar single-precision loop like the probe's own.
+void BM_FirmwarePairDetector_60s(benchmark::State& state)
+{
+    run<core::detector::FirmwarePairDetector>(state, 60.0);
+}
+
 }  // namespace
 
 BENCHMARK(BM_DirectEigenInverse_60s)
@@ -93,6 +103,10 @@ BENCHMARK(BM_PairDetector_60s)
     ->Unit(benchmark::kMillisecond)
     ->MinTime(1.0)
     ->DenseRange(0, 2)
+    ->ComputeStatistics("min", tactiscope::bench::fastest);
+BENCHMARK(BM_FirmwarePairDetector_60s)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(1.0)
     ->ComputeStatistics("min", tactiscope::bench::fastest);
 BENCHMARK(BM_PairDetector_1h)
     ->Unit(benchmark::kMillisecond)

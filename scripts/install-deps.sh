@@ -14,6 +14,7 @@ packages=(
   xvfb xauth file fonts-dejavu-core clang-format poppler-utils
   desktop-file-utils appstream
   clang libclang-rt-14-dev
+  gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
 )
 
 missing=()

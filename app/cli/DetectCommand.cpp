@@ -41,7 +41,15 @@ std::optional<QString> readOptions(const QCommandLineParser& parser, DetectOptio
         if (options.columns.size() < 3)
             return QStringLiteral("--columns needs a time column and at least two cantilevers, e.g. T,A,B");
     }
-    return readDetectorOptions(parser, options.detector);
+    const QString engine = parser.value(QStringLiteral("engine"));
+    if (engine == QStringLiteral("probe"))
+        options.detector.engine = core::detector::DetectorEngine::Probe;
+    else if (engine != QStringLiteral("workstation"))
+        return QStringLiteral("--engine is workstation or probe, not '%1'").arg(engine);
+    if (const auto error = readDetectorOptions(parser, options.detector)) return error;
+    if (options.detector.engine == core::detector::DetectorEngine::Probe && options.detector.threads > 1)
+        return QStringLiteral("--threads is the workstation's: the probe's kernel runs on one");
+    return std::nullopt;
 }
 
 }  // namespace
@@ -59,6 +67,10 @@ int runDetect(const QStringList& arguments)
          QStringLiteral("T,A,B")},
         {QStringLiteral("output"), QStringLiteral("Write t,out,rab,rba,lag_ab_ms,lag_ba_ms per sample to OUT.csv."),
          QStringLiteral("OUT.csv")},
+        {QStringLiteral("engine"),
+         QStringLiteral("workstation (default: double precision) or probe (the probe's own single-precision "
+                        "kernel, firmware/probe-detector, exponential form, one thread)."),
+         QStringLiteral("ENGINE"), QStringLiteral("workstation")},
     });
     addDetectorOptions(parser);
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
@@ -75,7 +87,8 @@ int runDetect(const QStringList& arguments)
 
     core::detector::CsvDetection result;
     const core::detector::StretchSettings settings{options.detector.parameters, options.detector.hold_s,
-                                                   options.detector.spacing_m, options.detector.threads};
+                                                   options.detector.spacing_m, options.detector.threads,
+                                                   options.detector.engine};
     const std::string input = options.input.toStdString();
     try {
         if (options.output.isEmpty()) {

@@ -13,6 +13,19 @@
 namespace tactiscope::cli {
 namespace {
 
+// What ran: the probe's kernel, or the workstation's in the instruction set it chose.
+const char* kernelName(const DetectorOptions& options)
+{
+    return options.engine == core::detector::DetectorEngine::Probe
+               ? "probe (single precision)"
+               : core::detector::toString(core::detector::bestKernelVariant());
+}
+
+unsigned threadsUsed(const DetectorOptions& options)
+{
+    return options.engine == core::detector::DetectorEngine::Probe ? 1U : options.threads;
+}
+
 using core::detector::DefectEvent;
 
 const char* order(int direction)
@@ -119,8 +132,8 @@ std::string eventsJson(std::size_t samples, std::size_t lags, double elapsed_s, 
     json.key("lags").value(static_cast<long long>(lags));
     json.key("elapsed_s").value(elapsed_s);
     json.key("samples_per_s").value(elapsed_s > 0.0 ? static_cast<double>(samples) / elapsed_s : 0.0);
-    json.key("kernel").value(core::detector::toString(core::detector::bestKernelVariant()));
-    json.key("threads").value(static_cast<long long>(options.threads));
+    json.key("kernel").value(kernelName(options));
+    json.key("threads").value(static_cast<long long>(threadsUsed(options)));
     json.key("events").beginArray();
     for (const DefectEvent& e : events) {
         json.beginObject();
@@ -151,8 +164,8 @@ void printDetection(const QString& source, std::size_t samples, double dt_s, std
         << '\n';
     out << "detection: " << QString::number(elapsed_s * 1e3, 'f', 1) << " ms ("
         << QString::number(static_cast<double>(samples) / elapsed_s / 1e6, 'f', 2) << " M samples/s) on "
-        << core::detector::toString(core::detector::bestKernelVariant()) << ", " << options.threads
-        << (options.threads == 1 ? " thread\n" : " threads\n");
+        << kernelName(options) << ", " << threadsUsed(options)
+        << (threadsUsed(options) == 1 ? " thread\n" : " threads\n");
     out << events.size() << (events.size() == 1 ? " event" : " events") << (events.empty() ? "\n" : ":\n");
     if (events.empty()) return;
     out << qSetFieldWidth(12) << "start_s"

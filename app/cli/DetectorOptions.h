@@ -5,6 +5,7 @@
 
 #include "core/detector/DetectorParameters.h"
 #include "core/detector/EventSegmenter.h"
+#include "core/detector/StreamingDetection.h"
 
 #include <QCommandLineParser>
 #include <QString>
@@ -21,6 +22,7 @@ struct DetectorOptions {
     std::optional<double> spacing_m;
     unsigned threads = 1;
     bool json = false;
+    core::detector::DetectorEngine engine = core::detector::DetectorEngine::Workstation;
 };
 
 // --lags-ms, --lambda-ms, --epsilon, --threshold, --face-to-face,

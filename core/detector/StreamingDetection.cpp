@@ -56,9 +56,11 @@ std::size_t warmUpOf(const ResolvedParameters& parameters)
 
 }  // namespace
 
-// One worker: its lags for every pair, each pair's outputs of one run.
+// One worker: its lags for every pair (the workstation's detectors, or
+// the probe's), each pair's outputs of one run.
 struct StreamingDetection::Worker {
     std::vector<PairDetector> pairs;
+    std::vector<FirmwarePairDetector> firmwarePairs;
     std::vector<std::vector<DetectorOutput>> outputs;
 
     // Samples [from, from + count) into the outputs from index `at` on.
@@ -68,6 +70,14 @@ struct StreamingDetection::Worker {
         for (std::size_t p = 0; p < pairs.size(); ++p)
             pairs[p].process(cantilevers[p].subspan(from, count), cantilevers[p + 1].subspan(from, count),
                              std::span(outputs[p]).subspan(at, count));
+        for (std::size_t p = 0; p < firmwarePairs.size(); ++p)
+            firmwarePairs[p].process(cantilevers[p].subspan(from, count), cantilevers[p + 1].subspan(from, count),
+                                     std::span(outputs[p]).subspan(at, count));
+    }
+    void reset()
+    {
+        for (PairDetector& pair : pairs) pair.reset();
+        for (FirmwarePairDetector& pair : firmwarePairs) pair.reset();
     }
 };
 
@@ -99,10 +109,16 @@ StreamingDetection::StreamingDetection(std::size_t cantilevers, const StretchSet
     m_lagCount = resolved.lags.size();
     m_warmUp = warmUpOf(resolved);
     // A split in time pays while the warm-up is a small part of a half run.
-    m_splitInTime = settings.threads >= 2 && m_warmUp > 0 && m_warmUp <= kChunk / 16;
+    m_splitInTime = settings.engine == DetectorEngine::Workstation && settings.threads >= 2 && m_warmUp > 0 &&
+                    m_warmUp <= kChunk / 16;
 
     std::size_t workerCount = 1;
-    if (m_splitInTime) {
+    if (settings.engine == DetectorEngine::Probe) {
+        m_runLength = kRun;
+        m_workers.resize(1);
+        for (std::size_t p = 0; p + 1 < cantilevers; ++p)
+            m_workers.front().firmwarePairs.emplace_back(settings.parameters);
+    } else if (m_splitInTime) {
         workerCount = 2;
         m_runLength = kChunk;
         m_workers.resize(2);
@@ -287,8 +303,7 @@ void StreamingDetection::restart()
 {
     m_segmenter.finish(m_result.events);
     m_segmenter.reset();
-    for (Worker& worker : m_workers)
-        for (PairDetector& pair : worker.pairs) pair.reset();
+    for (Worker& worker : m_workers) worker.reset();
     m_lead = 0;
     m_stretchStart.reset();
 }

@@ -23,6 +23,7 @@
 #include "core/detector/DefectEvent.h"
 #include "core/detector/DetectorParameters.h"
 #include "core/detector/EventSegmenter.h"
+#include "core/detector/FirmwarePairDetector.h"
 #include "core/detector/PairDetector.h"
 #include "core/detector/ProbeDetector.h"
 
@@ -35,12 +36,19 @@
 
 namespace tactiscope::core::detector {
 
+// Which detector runs: the workstation's (double precision, vectorised,
+// on threads) or the probe's own (firmware/probe-detector: single
+// precision, exponential form, one thread), to compare what a probe
+// decides with what the workstation decides on the same samples.
+enum class DetectorEngine { Workstation, Probe };
+
 // How a recording is re-analysed (the CLI's analyze, the review view).
 struct StretchSettings {
     DetectorParameters parameters;  // sampleInterval_s is the series'
     double hold_s = 0.020;
     std::optional<double> spacing_m;
-    unsigned threads = 1;
+    unsigned threads = 1;  // the workstation's engine only
+    DetectorEngine engine = DetectorEngine::Workstation;
 };
 
 struct StretchDetection {
