@@ -8,12 +8,13 @@
 namespace tactiscope::core {
 namespace {
 
-constexpr std::array<std::pair<ChannelKind, std::string_view>, 5> kKindNames{{
+constexpr std::array<std::pair<ChannelKind, std::string_view>, 6> kKindNames{{
     {ChannelKind::Strain, "strain"},
     {ChannelKind::Capacitance, "capacitance"},
     {ChannelKind::Force, "force"},
     {ChannelKind::Position, "position"},
     {ChannelKind::Other, "other"},
+    {ChannelKind::Decision, "decision"},
 }};
 
 constexpr std::array<std::pair<ChannelRole, std::string_view>, 6> kRoleNames{{

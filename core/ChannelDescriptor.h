@@ -11,7 +11,10 @@
 
 namespace tactiscope::core {
 
-enum class ChannelKind { Strain, Capacitance, Force, Position, Other };
+// Decision: what a probe's own detector decided, sample by sample (its
+// decision −1/0/+1 and its best R each way: docs/protocol.md), recorded as
+// channels and checked against the workstation's.
+enum class ChannelKind { Strain, Capacitance, Force, Position, Other, Decision };
 
 // Stable lower-case names, used in files and on the command line.
 std::string_view toString(ChannelKind kind);

@@ -23,6 +23,7 @@ DisplayUnit displayUnitFor(const core::ChannelDescriptor& channel)
     case ChannelKind::Position:
         return {1e3, QStringLiteral("mm"), QStringLiteral("Position")};
     case ChannelKind::Other:
+    case ChannelKind::Decision:
         break;
     }
     return {1.0, QString::fromStdString(channel.unit), QStringLiteral("Value")};

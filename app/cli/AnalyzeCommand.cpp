@@ -104,16 +104,25 @@ int runAnalyze(const QStringList& arguments)
         } catch (const std::invalid_argument& e) {
             return usageError(toQString(e.what()), usage);
         }
+        // A probe that sent its own decisions: they are compared with this analysis's.
+        std::vector<core::ChannelDescriptor> descriptors;
+        for (const auto& c : channels) descriptors.push_back(c.descriptor);
+        const auto probe = core::detector::probeDecisionChannels(descriptors);
         // Read and detection together: the store streams into the detector.
         const auto started = std::chrono::steady_clock::now();
-        const auto [events, analysed] = *core::derived::detectStoredSession(
-            store, *id, picked, {options.parameters, options.hold_s, options.spacing_m, options.threads});
+        const auto [events, analysed, agreement] = *core::derived::detectStoredSession(
+            store, *id, picked, {options.parameters, options.hold_s, options.spacing_m, options.threads}, {},
+            probe ? std::optional(probe->out) : std::nullopt);
         const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         if (!save.isEmpty()) store.addEvents(*id, core::storage::defectRecords(events, save.toStdString()));
-        if (options.json)
-            std::cout << eventsJson(analysed, lags, elapsed_s, events, options) << '\n';
-        else
+        if (options.json) {
+            std::cout << eventsJson(analysed, lags, elapsed_s, events, options, agreement) << '\n';
+        } else {
             printDetection(QStringLiteral("session %1").arg(*id), analysed, dt_s, lags, elapsed_s, events, options);
+            if (agreement)
+                std::cout << core::detector::agreementText(*agreement)
+                          << " (the probe's recorded decisions against this analysis)\n";
+        }
     } catch (const core::storage::StorageError& e) {
         return storageFailure(e);
     }

@@ -124,7 +124,7 @@ std::optional<QString> readDetectorOptions(const QCommandLineParser& parser, Det
 }
 
 std::string eventsJson(std::size_t samples, std::size_t lags, double elapsed_s, const std::vector<DefectEvent>& events,
-                       const DetectorOptions& options)
+                       const DetectorOptions& options, const std::optional<core::detector::ProbeAgreement>& probe)
 {
     core::text::JsonWriter json;
     json.beginObject();
@@ -148,6 +148,12 @@ std::string eventsJson(std::size_t samples, std::size_t lags, double elapsed_s, 
     }
     json.endArray();
     core::detector::writeSitesJson(json, core::detector::scanSites(events));
+    if (probe) {
+        json.key("probe_agreement").beginObject();
+        json.key("agreeing").value(static_cast<long long>(probe->agreeing));
+        json.key("compared").value(static_cast<long long>(probe->compared));
+        json.endObject();
+    }
     json.endObject();
     return json.str();
 }

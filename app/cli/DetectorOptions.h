@@ -31,9 +31,12 @@ void addDetectorOptions(QCommandLineParser& parser);
 // Fills `options`; returns an error message for a bad value.
 std::optional<QString> readDetectorOptions(const QCommandLineParser& parser, DetectorOptions& options);
 
-// One JSON object: samples, lags, elapsed_s, samples_per_s, kernel, threads, events.
+// One JSON object: samples, lags, elapsed_s, samples_per_s, kernel, threads,
+// events, sites, and probe_agreement {agreeing, compared} when a probe's
+// own decisions were compared.
 std::string eventsJson(std::size_t samples, std::size_t lags, double elapsed_s,
-                       const std::vector<core::detector::DefectEvent>& events, const DetectorOptions& options);
+                       const std::vector<core::detector::DefectEvent>& events, const DetectorOptions& options,
+                       const std::optional<core::detector::ProbeAgreement>& probe = std::nullopt);
 // The human summary: what ran, how fast, and a table of the events.
 void printDetection(const QString& source, std::size_t samples, double dt_s, std::size_t lags, double elapsed_s,
                     const std::vector<core::detector::DefectEvent>& events, const DetectorOptions& options);

@@ -43,8 +43,13 @@ int runEmulate(const QStringList& arguments)
          QStringLiteral("HZ")},
         {QStringLiteral("fault"),
          QStringLiteral("Misbehave as broken firmware (TSP/1): restart@S (silent 0.5 s, then sequence and clock "
-                        "from 0), sequence-jump@S (one frame's sequence +30000) or frozen-sequence."),
+                        "from 0), sequence-jump@S (one frame's sequence +30000), frozen-sequence, or "
+                        "wrong-decisions (with --probe-detector: a detector that names every direction the wrong "
+                        "way round)."),
          QStringLiteral("FAULT")},
+        {QStringLiteral("probe-detector"),
+         QStringLiteral("The probe runs the surface-deflection detector itself (firmware/probe-detector) and sends "
+                        "its decisions as channels out, rab and rba of kind decision (panel-scan, TSP/1).")},
     });
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
@@ -103,9 +108,12 @@ int runEmulate(const QStringList& arguments)
     if (parser.isSet(QStringLiteral("fault"))) {
         const auto fault = devices::emulator::parseFault(parser.value(QStringLiteral("fault")).toStdString());
         if (!fault)
-            return usageError(QStringLiteral("--fault must be restart@S, sequence-jump@S or frozen-sequence"), usage);
+            return usageError(
+                QStringLiteral("--fault must be restart@S, sequence-jump@S, frozen-sequence or wrong-decisions"),
+                usage);
         std::tie(options.fault, options.faultAt_s) = *fault;
     }
+    options.probeDetector = parser.isSet(QStringLiteral("probe-detector"));
 
     std::unique_ptr<devices::emulator::ProbeEmulator> emulator;
     try {

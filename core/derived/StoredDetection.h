@@ -22,9 +22,13 @@ using DetectionProgress = std::function<bool(std::uint64_t done, std::uint64_t t
 // The events of `cantilevers` (channel indices, probe order) of `session`:
 // the same as detector::detectStretches over the whole channels. Nothing
 // when cancelled. Throws storage::StorageError, std::invalid_argument.
+// `probeOut`: the channel of a probe's own recorded decisions
+// (ProbeDecisionCheck), compared sample by sample with these after each
+// stretch's warm-up; the result's probeAgreement says how far they agree.
 std::optional<detector::StretchDetection> detectStoredSession(storage::SessionSource& store, std::int64_t session,
                                                               std::span<const std::size_t> cantilevers,
                                                               const detector::StretchSettings& settings,
-                                                              const DetectionProgress& progress = {});
+                                                              const DetectionProgress& progress = {},
+                                                              std::optional<std::size_t> probeOut = std::nullopt);
 
 }  // namespace tactiscope::core::derived

@@ -10,13 +10,18 @@
 namespace tactiscope::core::detector {
 
 LiveDetection::LiveDetection(std::vector<std::size_t> cantileverChannels, double sampleRate_hz,
-                             LiveDetectionSettings settings, double displaySeconds)
+                             LiveDetectionSettings settings, double displaySeconds,
+                             std::optional<ProbeDecisionChannels> probe)
     : m_channels(std::move(cantileverChannels)),
       m_sampleInterval_s(1.0 / sampleRate_hz),
       m_output(std::make_shared<LiveBuffer>(3, static_cast<std::size_t>(std::ceil(displaySeconds * sampleRate_hz)) + 1))
 {
     settings.parameters.sampleInterval_s = m_sampleInterval_s;
     m_engine = makeEngine(settings);
+    if (probe) {
+        m_probe.emplace(*probe, m_sampleInterval_s, settings.hold_s, settings.spacing_m);
+        m_agreement = ProbeAgreement{};
+    }
     m_settings = std::move(settings);
 }
 
@@ -60,6 +65,7 @@ void LiveDetection::consume(const SampleBlock& block)
         m_engine->segmenter.finish(m_completed);
         m_engine->detector.reset();
         m_engine->segmenter.reset();
+        if (m_probe) m_probe->restart(m_probeCompleted);
     }
     m_nextIndex = block.endSampleIndex();
     const auto outputs = m_engine->detector.push(block);
@@ -70,18 +76,42 @@ void LiveDetection::consume(const SampleBlock& block)
         display.channel(1)[s] = o.rab;
         display.channel(2)[s] = o.rba;
         m_engine->segmenter.push(block.timeAt_s(s), o, m_sampleInterval_s, m_completed);
+        if (m_probe) m_probe->push(block, s, o, m_probeCompleted, m_disagreed);
     }
     m_output->consume(display);
-    if (m_completed.empty()) return;
     const std::lock_guard lock(m_mutex);
     m_events.insert(m_events.end(), m_completed.begin(), m_completed.end());
     m_completed.clear();
+    if (!m_probe) return;
+    m_probeEvents.insert(m_probeEvents.end(), m_probeCompleted.begin(), m_probeCompleted.end());
+    m_probeCompleted.clear();
+    m_disagreements.insert(m_disagreements.end(), m_disagreed.begin(), m_disagreed.end());
+    m_disagreed.clear();
+    m_agreement = m_probe->agreement();
 }
 
 std::vector<DefectEvent> LiveDetection::takeEvents()
 {
     const std::lock_guard lock(m_mutex);
     return std::exchange(m_events, {});
+}
+
+std::vector<DefectEvent> LiveDetection::takeProbeEvents()
+{
+    const std::lock_guard lock(m_mutex);
+    return std::exchange(m_probeEvents, {});
+}
+
+std::vector<ProbeDisagreement> LiveDetection::takeDisagreements()
+{
+    const std::lock_guard lock(m_mutex);
+    return std::exchange(m_disagreements, {});
+}
+
+std::optional<ProbeAgreement> LiveDetection::probeAgreement() const
+{
+    const std::lock_guard lock(m_mutex);
+    return m_agreement;
 }
 
 }  // namespace tactiscope::core::detector

@@ -16,6 +16,7 @@
 #include "core/LiveBuffer.h"
 #include "core/detector/DefectEvent.h"
 #include "core/detector/EventSegmenter.h"
+#include "core/detector/ProbeDecisionCheck.h"
 #include "core/detector/ProbeDetector.h"
 
 #include <memory>
@@ -33,9 +34,11 @@ struct LiveDetectionSettings {
 
 class LiveDetection final : public BlockSink {
 public:
-    // Throws std::invalid_argument for bad settings or fewer than two cantilevers.
+    // Throws std::invalid_argument for bad settings or fewer than two
+    // cantilevers. `probe`: where the stream carries the probe's own
+    // decisions, checked against these (ProbeDecisionCheck).
     LiveDetection(std::vector<std::size_t> cantileverChannels, double sampleRate_hz, LiveDetectionSettings settings,
-                  double displaySeconds);
+                  double displaySeconds, std::optional<ProbeDecisionChannels> probe = std::nullopt);
 
     // The channels of output(): decision (−1, 0, +1), R_ab, R_ba.
     static std::vector<ChannelDescriptor> outputChannels();
@@ -50,6 +53,12 @@ public:
     std::shared_ptr<const LiveBuffer> output() const { return m_output; }
     // Events completed since the last call, in time order.
     std::vector<DefectEvent> takeEvents();
+    // The probe's own: its defect events and the disagreements that
+    // lasted, since the last call; how far they agreed so far. Empty
+    // and none for a stream without the probe's decisions.
+    std::vector<DefectEvent> takeProbeEvents();
+    std::vector<ProbeDisagreement> takeDisagreements();
+    std::optional<ProbeAgreement> probeAgreement() const;
 
 private:
     struct Engine {
@@ -66,8 +75,14 @@ private:
     LiveDetectionSettings m_settings;
     std::unique_ptr<Engine> m_pending;  // new settings, waiting for the next block
     std::vector<DefectEvent> m_events;
+    std::vector<DefectEvent> m_probeEvents;
+    std::vector<ProbeDisagreement> m_disagreements;
+    std::optional<ProbeAgreement> m_agreement;
 
     // Acquisition thread only.
+    std::optional<ProbeDecisionCheck> m_probe;
+    std::vector<DefectEvent> m_probeCompleted;
+    std::vector<ProbeDisagreement> m_disagreed;
     std::unique_ptr<Engine> m_engine;
     std::optional<std::uint64_t> m_nextIndex;
     std::vector<DefectEvent> m_completed;

@@ -25,6 +25,7 @@
 #include "core/detector/EventSegmenter.h"
 #include "core/detector/FirmwarePairDetector.h"
 #include "core/detector/PairDetector.h"
+#include "core/detector/ProbeDecisionCheck.h"
 #include "core/detector/ProbeDetector.h"
 
 #include <cstdint>
@@ -54,6 +55,8 @@ struct StretchSettings {
 struct StretchDetection {
     std::vector<DefectEvent> events;  // in time order
     std::size_t analysedSamples = 0;  // samples where every cantilever had a value
+    // A stored probe's own decisions against these (core/derived/StoredDetection).
+    std::optional<ProbeAgreement> probeAgreement;
 };
 
 class StreamingDetection {

@@ -1,6 +1,8 @@
 // VerdictTrail: each decision compared with the one before it.
 #include "core/report/VerdictTrail.h"
 
+#include "core/detector/ProbeDecisionCheck.h"
+
 #include <nlohmann/json.hpp>
 
 #include <optional>
@@ -37,6 +39,15 @@ std::string basisText(const std::string& basisJson)
     if (defects > 0) text << " at " << sites << (sites == 1 ? " site" : " sites");
     if (basis.contains("threshold") && basis["threshold"].is_number())
         text << ", threshold " << basis["threshold"].get<double>();
+    // A probe's own decisions beside the workstation's: how far they agreed.
+    if (const auto probe = basis.find("probe"); probe != basis.end() && probe->is_object()) {
+        const auto probeCount = [&](const char* key) -> std::optional<std::uint64_t> {
+            const auto v = probe->find(key);
+            return v != probe->end() && v->is_number_unsigned() ? std::optional(v->get<std::uint64_t>()) : std::nullopt;
+        };
+        if (const auto agreeing = probeCount("agreeing"), compared = probeCount("compared"); agreeing && compared)
+            text << "; " << detector::agreementText({*compared, *agreeing});
+    }
     return text.str();
 }
 

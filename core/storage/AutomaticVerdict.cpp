@@ -6,7 +6,8 @@
 namespace tactiscope::core::storage {
 
 VerdictDecision automaticDecision(const std::string& analysis, std::size_t defects, std::size_t sites,
-                                  const detector::DetectorParameters& parameters)
+                                  const detector::DetectorParameters& parameters,
+                                  const std::optional<detector::ProbeAgreement>& probe)
 {
     nlohmann::ordered_json basis;
     basis["analysis"] = analysis;
@@ -22,6 +23,7 @@ VerdictDecision automaticDecision(const std::string& analysis, std::size_t defec
     if (parameters.lambdaRule == detector::LambdaRule::Fixed) basis["lambda_s"] = parameters.fixedLambda_s;
     if (parameters.window_s) basis["window_s"] = *parameters.window_s;
     basis["face_to_face"] = parameters.faceToFace;
+    if (probe) basis["probe"] = {{"agreeing", probe->agreeing}, {"compared", probe->compared}};
 
     VerdictDecision decision;
     decision.role = VerdictRole::Automatic;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/detector/DetectorParameters.h"
+#include "core/detector/ProbeDecisionCheck.h"
 #include "core/storage/SessionRecords.h"
 
 #include <cstddef>
@@ -12,8 +13,10 @@
 namespace tactiscope::core::storage {
 
 // The verdict counts defect sites (a site crossed many times is one
-// defect); `defects` is how many events the analysis found.
+// defect); `defects` is how many events the analysis found. `probe`: how
+// far a probe's own decisions agreed with the analysis's, when it sent any.
 VerdictDecision automaticDecision(const std::string& analysis, std::size_t defects, std::size_t sites,
-                                  const detector::DetectorParameters& parameters);
+                                  const detector::DetectorParameters& parameters,
+                                  const std::optional<detector::ProbeAgreement>& probe = std::nullopt);
 
 }  // namespace tactiscope::core::storage

@@ -12,6 +12,17 @@
 
 namespace tactiscope::core::storage {
 
+// An alarm of the record at one instant, with what it says.
+inline SessionEvent alarmRecord(double time_s, std::string note)
+{
+    SessionEvent event;
+    event.kind = EventKind::Alarm;
+    event.start_s = time_s;
+    event.end_s = time_s;
+    event.note = std::move(note);
+    return event;
+}
+
 inline SessionEvent defectRecord(const detector::DefectEvent& e, const std::string& analysis = kLiveAnalysis)
 {
     SessionEvent event;

@@ -17,6 +17,8 @@ namespace tactiscope::core::storage {
 // The analysis that recorded events live; a re-analysis saved by a
 // reviewer gets its own name, so the live events are never overwritten.
 inline constexpr const char* kLiveAnalysis = "live";
+// The decisions a probe's own detector sent (firmware/probe-detector).
+inline constexpr const char* kProbeAnalysis = "probe";
 
 struct SessionEvent {
     std::int64_t id = 0;  // given by the store

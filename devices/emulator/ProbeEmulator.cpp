@@ -35,6 +35,7 @@ constexpr double kLateGrace_s = 0.25;
 std::optional<std::pair<EmulatorFault, double>> parseFault(const std::string& text)
 {
     if (text == "frozen-sequence") return std::pair(EmulatorFault::FrozenSequence, 0.0);
+    if (text == "wrong-decisions") return std::pair(EmulatorFault::WrongDecisions, 0.0);
     const auto at = text.find('@');
     if (at == std::string::npos) return std::nullopt;
     const std::string kind = text.substr(0, at), when = text.substr(at + 1);
@@ -66,6 +67,19 @@ ProbeEmulator::ProbeEmulator(const EmulatorOptions& options)
         core::ChannelDescriptor c = base[i % base.size()];
         if (i >= base.size()) c.name += std::to_string(i / base.size() + 1);
         m_channels.push_back(c);
+    }
+    if (options.fault == EmulatorFault::WrongDecisions && !options.probeDetector)
+        throw std::invalid_argument("wrong decisions need the probe's detector on");
+    if (options.probeDetector) {
+        if (options.scenario != simulator::kPanelScanScenario || options.protocol != WireProtocol::Binary)
+            throw std::invalid_argument("the probe's detector runs on a panel scan over TSP/1 (binary)");
+        // The paper's settings at this rate, as the workstation's live detector takes them.
+        core::detector::DetectorParameters parameters;
+        parameters.sampleInterval_s = 1.0 / m_rate_hz;
+        parameters.lags_s = core::detector::liveLags_s(m_rate_hz);
+        parameters.faceToFace = options.fault == EmulatorFault::WrongDecisions;
+        m_detector.emplace(parameters);  // throws std::invalid_argument for a rate it cannot run at
+        for (const char* name : {"out", "rab", "rba"}) m_channels.push_back({name, "", core::ChannelKind::Decision});
     }
 
     if (::openpty(&m_master, &m_slave, nullptr, nullptr, nullptr) != 0)
@@ -218,8 +232,18 @@ std::vector<std::uint8_t> ProbeEmulator::nextPayload(std::size_t& samples)
     data.format = protocol::SampleFormat::Float32;
     data.channelCount = static_cast<std::uint8_t>(m_channels.size());
     data.samplesPerChannel = static_cast<std::uint16_t>(n);
+    // The probe's detector on the very values it sends (float32, as a and b go out).
+    if (m_detector) {
+        m_decisions.resize(n);
+        m_detector->process(block.channel(0), block.channel(1), m_decisions);
+    }
+    const std::size_t measured = m_channels.size() - (m_detector ? 3 : 0);
     for (std::size_t s = 0; s < n; ++s) {
-        for (std::size_t c = 0; c < m_channels.size(); ++c) data.raw.push_back(block.value(c % baseChannels, s));
+        for (std::size_t c = 0; c < measured; ++c) data.raw.push_back(block.value(c % baseChannels, s));
+        if (!m_detector) continue;
+        data.raw.push_back(m_decisions[s].decision);
+        data.raw.push_back(m_decisions[s].rab);
+        data.raw.push_back(m_decisions[s].rba);
     }
     std::uint16_t sequence = m_sequence++;
     if (m_options.fault == EmulatorFault::FrozenSequence) sequence = 0;
@@ -324,6 +348,7 @@ void ProbeEmulator::run(const std::stop_token& stop)
             m_sampleIndex += static_cast<std::uint64_t>(std::llround(kRestartPause.count() * 1e-3 * m_rate_hz));
             m_clockStart = m_sampleIndex;
             m_sequence = 0;
+            if (m_detector) m_detector->reset();  // and its detector starts from silence
         }
         std::size_t samples = 0;
         auto payload = nextPayload(samples);

@@ -11,6 +11,7 @@
 // that cannot be written within 50 ms are dropped (and counted).
 #pragma once
 
+#include "core/detector/FirmwarePairDetector.h"
 #include "devices/PortSource.h"
 #include "devices/protocol/BinaryDecoder.h"
 #include "devices/simulator/ScenarioCatalog.h"
@@ -30,8 +31,10 @@ namespace tactiscope::devices::emulator {
 
 // Firmware faults, for TSP/1: a restart (the probe stops for half a second,
 // then its sequence and clock begin again at 0), one frame whose sequence
-// jumps by 30 000, or a sequence that never moves from 0.
-enum class EmulatorFault { None, Restart, SequenceJump, FrozenSequence };
+// jumps by 30 000, a sequence that never moves from 0, or (with the probe's
+// detector on) a detector built wrong: it takes its gauges for face to
+// face, so it names every defect's direction the wrong way round.
+enum class EmulatorFault { None, Restart, SequenceJump, FrozenSequence, WrongDecisions };
 
 struct EmulatorOptions {
     std::string linkPath;
@@ -49,9 +52,13 @@ struct EmulatorOptions {
     // The rate its clock stamps frames at (default: the true rate; another
     // is a clock that lies with its INFO).
     std::optional<double> clockRate_hz = std::nullopt;
+    // The probe runs the detector itself (firmware/probe-detector) on its
+    // cantilevers and sends its decision and best R each way as channels
+    // of kind "decision" named out, rab and rba (panel scan, TSP/1).
+    bool probeDetector = false;
 };
 
-// "restart@3", "sequence-jump@2.5", "frozen-sequence": the command line's
+// "restart@3", "sequence-jump@2.5", "frozen-sequence", "wrong-decisions": the command line's
 // words for a fault; none for anything else.
 std::optional<std::pair<EmulatorFault, double>> parseFault(const std::string& text);
 
@@ -102,9 +109,11 @@ private:
     std::atomic<bool> m_finished = false;
     std::uint16_t m_sequence = 0;
     std::uint64_t m_sampleIndex = 0;
-    std::uint64_t m_clockStart = 0;            // the sample index the device clock counts from
-    bool m_faulted = false;                    // a one-off fault has happened
-    protocol::BinaryDecoder m_commandDecoder;  // host → device commands
+    std::uint64_t m_clockStart = 0;                                  // the sample index the device clock counts from
+    bool m_faulted = false;                                          // a one-off fault has happened
+    std::optional<core::detector::FirmwarePairDetector> m_detector;  // the probe's own, when it runs one
+    std::vector<core::detector::DetectorOutput> m_decisions;         // one frame's
+    protocol::BinaryDecoder m_commandDecoder;                        // host → device commands
     mutable std::mutex m_statsMutex;
     EmulatorStats m_stats;
     std::jthread m_thread;

@@ -186,7 +186,8 @@ std::optional<DeviceInfo> parseInfo(const std::vector<std::uint8_t>& payload)
         c.descriptor.name = r.str();
         c.descriptor.unit = r.str();
         const std::uint8_t kind = r.u8();
-        c.descriptor.kind = kind <= static_cast<std::uint8_t>(core::ChannelKind::Other)
+        // A kind this host does not know (a newer probe's) is "other": recorded as it comes.
+        c.descriptor.kind = kind <= static_cast<std::uint8_t>(core::ChannelKind::Decision)
                                 ? static_cast<core::ChannelKind>(kind)
                                 : core::ChannelKind::Other;
         c.scale = r.f32();

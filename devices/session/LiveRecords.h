@@ -5,6 +5,7 @@
 
 #include "core/Vocabulary.h"
 #include "core/compliance/StiffnessReadings.h"
+#include "core/detector/ProbeDecisionCheck.h"
 #include "core/storage/Recorder.h"
 
 #include <cstdint>
@@ -43,7 +44,10 @@ struct RecordingSummary {
     std::optional<core::Verdict> verdict;  // the automatic one, stored with the session (panel scan)
     std::size_t defects = 0;               // of this recording's panel: crossings
     std::size_t sites = 0;                 // where they are: a defect crossed N times is one site
-    double end_s = 0.0;                    // session time of the last sample
+    // A probe that sends its own decisions: how far they agreed with the
+    // workstation's over the recording (after the warm-up).
+    std::optional<core::detector::ProbeAgreement> probeAgreement;
+    double end_s = 0.0;  // session time of the last sample
     // What the mode's analysis stored, in a line: "20 defects stored at 1
     // site, verdict defects found", "5 stiffness readings stored".
     std::string analysis;

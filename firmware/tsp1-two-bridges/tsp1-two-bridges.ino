@@ -5,16 +5,26 @@
 //
 // Board: PJRC Teensy 4.0 (any Arduino-compatible board with SPI and native
 // USB works; pins below). Build with the Arduino IDE or arduino-cli and
-// Teensyduino. Not built by Tactiscope's test suite; docs/firmware.md says
-// how to test a board against `tactiscope-cli record`.
+// Teensyduino. The test suite compiles it on a PC with the detector
+// (host-check/); docs/firmware.md says how to test a board against
+// `tactiscope-cli record`.
+//
+// It also runs the surface-deflection detector of seed 000 itself
+// (firmware/probe-detector, single precision: src/ links to it), lights an
+// LED and sounds a buzzer on a defect, and sends its decisions as three
+// channels of kind "decision" (out, rab, rba) beside the two strains, so
+// the workstation can check them against its own (docs/firmware.md).
 //
 // Wiring (both ADS1220 on the same SPI bus, each with its own chip select):
-//   SCLK 13, DOUT/MISO 12, DIN/MOSI 11; bridge A: CS 10; bridge B: CS 8.
+//   SCLK 13, DOUT/MISO 12, DIN/MOSI 11; bridge A: CS 10; bridge B: CS 8;
+//   defect LED on pin 2 (through 330 Ω to ground), a piezo buzzer on pin 3.
 //   Each bridge: excitation from the board's 3.3 V
 //   (AVDD), signal on AIN0/AIN1, the excitation also on REFP0/REFN0 so the
 //   reading is ratiometric (supply drift cancels).
 
 #include <SPI.h>
+
+#include "src/probe_detector.h"
 
 namespace {
 
@@ -37,6 +47,12 @@ constexpr float kStrainPerCount = 2.0f / (kGaugeFactor * kGain * 8388608.0f);
 // ---- Pins and timing -------------------------------------------------------
 
 constexpr int kChipSelect[2] = {10, 8};
+constexpr int kDefectLed = 2;
+constexpr int kBuzzer = 3;
+constexpr uint32_t kDefectShow_ms = 200;  // how long the LED and the buzzer tell a defect
+constexpr unsigned kBuzzer_hz = 2700;     // a piezo's loudest
+constexpr uint8_t kChannels = 5;          // a, b, then the detector's out, rab, rba
+constexpr float kRPerCount = 1.0f / 1073741824.0f;  // R sent as int32 in steps of 2^-30
 constexpr uint32_t kDefaultRate_mHz = 500000;  // 500 Hz
 constexpr uint16_t kSamplesPerFrame = 10;      // 50 frames/s at 500 Hz
 
@@ -106,12 +122,24 @@ void sendInfo()
     p.str(serial);
     p.str(kFirmware);
     p.u32(rate_mHz);
-    p.u8(2);
+    p.u8(kChannels);
     for (const char* name : kChannelNames) {
         p.str(name);
         p.str("");  // strain has no unit
         p.u8(0);    // kind: strain
         p.f32(kStrainPerCount);
+        p.f32(0.0f);
+    }
+    // The detector's decisions: kind 5, "decision" (protocol.md § 1).
+    const struct {
+        const char* name;
+        float scale;
+    } decisions[3] = {{"out", 1.0f}, {"rab", kRPerCount}, {"rba", kRPerCount}};
+    for (const auto& d : decisions) {
+        p.str(d.name);
+        p.str("");
+        p.u8(5);
+        p.f32(d.scale);
         p.f32(0.0f);
     }
     sendFrame(kInfo, p);
@@ -175,6 +203,51 @@ uint8_t rateBitsFor(uint32_t millihertz)
     return 6;
 }
 
+// ---- The detector on the probe ----------------------------------------------
+
+// The workstation's live lag set at this rate: one sample to 150 ms in
+// steps of one sample, λ = c (the paper's at 500 Hz). Above 500 Hz that is
+// more lags than this build holds: the detector is off and says so.
+pd_detector detector;
+bool detecting = false;
+uint32_t defectShownAt_ms = 0;
+bool defectShown = false;
+
+void setUpDetector()
+{
+    const double dt = 1000.0 / static_cast<double>(rate_mHz);
+    const unsigned lags = static_cast<unsigned>(0.150 / dt + 1e-9);
+    static unsigned short lag[PD_MAX_LAGS];
+    static double lambda[PD_MAX_LAGS];
+    detecting = lags >= 1 && lags <= PD_MAX_LAGS;
+    if (!detecting) return;
+    for (unsigned i = 0; i < lags; ++i) {
+        lag[i] = static_cast<unsigned short>(i + 1);
+        lambda[i] = static_cast<double>(i + 1) * dt;
+    }
+    const pd_config config = {dt, lags, lag, lambda, 7e-6, 0.85, 0};
+    detecting = pd_init(&detector, &config) == PD_OK;
+}
+
+// The LED and the buzzer on a defect, for kDefectShow_ms after the last
+// sample that decided one.
+void showDecision(signed char decision)
+{
+    const uint32_t now = millis();
+    if (decision != 0) {
+        if (!defectShown) {
+            digitalWrite(kDefectLed, HIGH);
+            tone(kBuzzer, kBuzzer_hz);
+        }
+        defectShown = true;
+        defectShownAt_ms = now;
+    } else if (defectShown && now - defectShownAt_ms >= kDefectShow_ms) {
+        digitalWrite(kDefectLed, LOW);
+        noTone(kBuzzer);
+        defectShown = false;
+    }
+}
+
 // ---- Sampling --------------------------------------------------------------
 
 bool streaming = false;
@@ -198,11 +271,20 @@ void addSample(const int32_t (&values)[2])
 {
     if (samplesInFrame == 0) {
         dataFrame.u32(micros());
-        dataFrame.u8(2);  // channels
+        dataFrame.u8(kChannels);
         dataFrame.u8(2);  // format: int32
         dataFrame.u16(kSamplesPerFrame);
     }
     for (int32_t v : values) dataFrame.i32(v);
+    // The detector on the strains the host receives (code × the INFO scale).
+    pd_output o = {0, 0.0f, 0.0f, 0, 0};
+    if (detecting)
+        pd_step(&detector, static_cast<float>(values[0]) * kStrainPerCount,
+                static_cast<float>(values[1]) * kStrainPerCount, &o);
+    showDecision(o.decision);
+    dataFrame.i32(o.decision);
+    dataFrame.i32(static_cast<int32_t>(o.rab / kRPerCount));
+    dataFrame.i32(static_cast<int32_t>(o.rba / kRPerCount));
     if (++samplesInFrame == kSamplesPerFrame) {
         sendFrame(kData, dataFrame);
         startFrame();
@@ -216,6 +298,8 @@ void applyRate(uint32_t millihertz)
         return;
     }
     rate_mHz = millihertz;
+    setUpDetector();
+    if (!detecting) sendStatus(1, "the detector runs at up to 500 Hz: off at this rate");
     for (int adc = 0; adc < 2; ++adc) adcConfigure(adc, rateBitsFor(rate_mHz));
     sampleTimer.begin(onSampleTimer, 1e9f / static_cast<float>(rate_mHz));  // period in µs
     startFrame();
@@ -232,6 +316,7 @@ void handleCommand(const uint8_t* payload, uint16_t size)
     switch (payload[0]) {
     case 1:  // start
         startFrame();
+        if (detecting) pd_reset(&detector);  // from silence, as the host's detector starts
         streaming = true;
         break;
     case 2:  // stop
@@ -289,6 +374,8 @@ void setup()
 {
     Serial.begin(921600);  // USB serial ignores the baud rate; a UART would not
     SPI.begin();
+    pinMode(kDefectLed, OUTPUT);
+    pinMode(kBuzzer, OUTPUT);
     for (int adc = 0; adc < 2; ++adc) {
         pinMode(kChipSelect[adc], OUTPUT);
         digitalWrite(kChipSelect[adc], HIGH);

@@ -36,12 +36,13 @@ inline void stopEmulator(QProcess& emulator)
 
 // `record` from an emulated probe of `scenario` into `db` for `seconds`,
 // with extra record arguments; the emulator's link goes in `folder`.
+// `extra`: the record command's further options; `emulatorExtra` the emulator's.
 inline CliResult recordEmulated(const QString& folder, const QString& db, const QString& scenario, int seconds,
-                                const QStringList& extra = {})
+                                const QStringList& extra = {}, const QStringList& emulatorExtra = {})
 {
     const QString link = folder + QStringLiteral("/probe");
     QProcess emulator;
-    if (!startEmulator(emulator, link, {"--scenario", scenario, "--seed", "3"}))
+    if (!startEmulator(emulator, link, QStringList{"--scenario", scenario, "--seed", "3"} + emulatorExtra))
         return {-1, {}, QStringLiteral("the emulator did not start")};
     auto result =
         runCli(QStringList{"record", "--port", link, "--seconds", QString::number(seconds), "--db", db} + extra);

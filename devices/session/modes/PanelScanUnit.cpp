@@ -20,7 +20,8 @@ std::shared_ptr<core::detector::LiveDetection> detectorFor(const LiveUnitSetup& 
         settings.parameters.lags_s = core::detector::liveLags_s(setup.rate_hz);
         settings.spacing_m = setup.panelSpacing_m;
         return std::make_shared<core::detector::LiveDetection>(
-            *core::modeChannels(core::Mode::PanelScan, setup.channels), setup.rate_hz, settings, setup.displaySeconds);
+            *core::modeChannels(core::Mode::PanelScan, setup.channels), setup.rate_hz, settings, setup.displaySeconds,
+            core::detector::probeDecisionChannels(setup.channels));
     } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(std::string("the surface-deflection detector cannot run on this stream: ") +
                                     e.what());
@@ -39,8 +40,15 @@ std::optional<std::string> PanelScanUnit::tare()
     return std::string(core::panelScanMode().noZero);
 }
 
+void PanelScanUnit::startRecording(core::storage::Recorder& recorder)
+{
+    LiveModeUnit::startRecording(recorder);
+    m_agreementAtStart = m_detection->probeAgreement();
+}
+
 void PanelScanUnit::take(const LiveTake& take)
 {
+    takeProbeDecisions(take);
     const auto found = resultsForLists(m_later, m_detection->takeEvents(), take);
     if (found.empty()) return;
     m_defects.insert(m_defects.end(), found.begin(), found.end());
@@ -51,25 +59,55 @@ void PanelScanUnit::take(const LiveTake& take)
     take.recorder->addEvents(std::move(stored));
 }
 
+// The probe's events and alarms go into the recording (the lists show the
+// workstation's), on its clock, held back like the defects past its end.
+void PanelScanUnit::takeProbeDecisions(const LiveTake& take)
+{
+    std::vector<core::storage::SessionEvent> alarms;
+    for (const auto& d : m_detection->takeDisagreements())
+        alarms.push_back(core::storage::alarmRecord(d.start_s, d.text()));
+    LiveTake recordOnly = take;
+    recordOnly.adding = [] {};
+    const auto probe = resultsForLists(m_laterProbe, m_detection->takeProbeEvents(), recordOnly);
+    auto told = resultsForLists(m_laterAlarms, std::move(alarms), recordOnly);
+    if (!take.recorder) return;
+    auto stored = core::storage::defectRecords(probe, core::storage::kProbeAnalysis);
+    stored.insert(stored.end(), std::make_move_iterator(told.begin()), std::make_move_iterator(told.end()));
+    if (!stored.empty()) take.recorder->addEvents(std::move(stored));
+}
+
 // A panel the probe left before the stop was not wholly inspected: no
 // automatic verdict says it passed.
 std::optional<core::storage::VerdictDecision> PanelScanUnit::finishRecording(RecordingSummary& summary, bool whole)
 {
     summary.defects = m_defects.size();
     summary.sites = sites().sites.size();
+    summary.probeAgreement = agreementSinceStart();
     if (!whole) return std::nullopt;
     auto decision = core::storage::automaticDecision(core::storage::kLiveAnalysis, m_defects.size(), summary.sites,
-                                                     m_detection->settings().parameters);
+                                                     m_detection->settings().parameters, summary.probeAgreement);
     summary.verdict = decision.verdict;
     return decision;
+}
+
+std::optional<core::detector::ProbeAgreement> PanelScanUnit::agreementSinceStart() const
+{
+    auto now = m_detection->probeAgreement();
+    if (!now || !m_agreementAtStart) return now;
+    now->compared -= m_agreementAtStart->compared;
+    now->agreeing -= m_agreementAtStart->agreeing;
+    return now;
 }
 
 std::string PanelScanUnit::storedText(const RecordingSummary& summary) const
 {
     using core::text::countText;
-    return countText(summary.defects, "defect", "defects") + " stored" +
-           (summary.defects == 0 ? std::string() : " at " + countText(summary.sites, "site", "sites")) + ", verdict " +
-           (summary.verdict ? std::string(core::verdictText(summary.verdict)) : std::string("none"));
+    std::string text = countText(summary.defects, "defect", "defects") + " stored" +
+                       (summary.defects == 0 ? std::string() : " at " + countText(summary.sites, "site", "sites")) +
+                       ", verdict " +
+                       (summary.verdict ? std::string(core::verdictText(summary.verdict)) : std::string("none"));
+    if (summary.probeAgreement) text += "; " + core::detector::agreementText(*summary.probeAgreement);
+    return text;
 }
 
 }  // namespace tactiscope::devices::session

@@ -1,7 +1,9 @@
 // The panel-scan mode's live part: the surface-deflection detector on
 // cantilevers A and B, the panel's defects on the lists' clock, stored as
 // defect events while a panel scan records, and the automatic verdict on
-// the panel's sites at its end.
+// the panel's sites at its end. A probe that sends its own decisions has
+// them recorded as the analysis "probe", a lasting disagreement as an
+// alarm, and their agreement in the verdict's grounds.
 #pragma once
 
 #include "core/detector/DefectSites.h"
@@ -17,6 +19,7 @@ public:
 
     std::shared_ptr<core::BlockSink> sink() const override { return m_detection; }
     std::optional<std::string> tare() override;
+    void startRecording(core::storage::Recorder& recorder) override;
     void take(const LiveTake& take) override;
     void clearLists() override { m_defects.clear(); }
     std::optional<core::storage::VerdictDecision> finishRecording(RecordingSummary& summary, bool whole) override;
@@ -27,9 +30,16 @@ public:
     core::detector::SiteGrouping sites() const { return core::detector::scanSites(m_defects); }
 
 private:
+    void takeProbeDecisions(const LiveTake& take);
+    std::optional<core::detector::ProbeAgreement> agreementSinceStart() const;
+
     std::shared_ptr<core::detector::LiveDetection> m_detection;
     std::vector<core::detector::DefectEvent> m_defects;
     std::vector<core::detector::DefectEvent> m_later;  // stream times, after the samples recorded
+    // The probe's own decisions, when it sends them: into the recording only.
+    std::vector<core::detector::DefectEvent> m_laterProbe;
+    std::vector<core::storage::SessionEvent> m_laterAlarms;
+    std::optional<core::detector::ProbeAgreement> m_agreementAtStart;
 };
 
 }  // namespace tactiscope::devices::session

@@ -1,6 +1,7 @@
 // Just enough of the Arduino/Teensy API, on a PC, to compile the sketch's
-// framing and command handling: Serial records what is written and plays
-// back what the host sends; SPI, pins and the timer do nothing.
+// framing, command handling and detector: Serial records what is written
+// and plays back what the host sends; pins and the buzzer record their
+// state; SPI plays back the ADC codes a test queues; the timer does nothing.
 #pragma once
 
 #include <cstdint>
@@ -20,9 +21,26 @@ inline uint32_t micros()
 {
     return fakeMicros;
 }
+inline uint32_t millis()
+{
+    return fakeMicros / 1000;
+}
 inline void delay(int) {}
 inline void pinMode(int, int) {}
-inline void digitalWrite(int, int) {}
+inline int pinLevel[64] = {};
+inline void digitalWrite(int pin, int level)
+{
+    pinLevel[pin] = level;
+}
+inline unsigned toneHz[64] = {};
+inline void tone(int pin, unsigned hz)
+{
+    toneHz[pin] = hz;
+}
+inline void noTone(int pin)
+{
+    toneHz[pin] = 0;
+}
 
 struct SPISettings {
     SPISettings(uint32_t, int, int) {}
@@ -31,7 +49,15 @@ struct SPIClass {
     void begin() {}
     void beginTransaction(const SPISettings&) {}
     void endTransaction() {}
-    uint8_t transfer(uint8_t) { return 0; }
+    // The bytes the ADCs answer with, in order; 0 when none are queued.
+    std::vector<uint8_t> answers;
+    uint8_t transfer(uint8_t)
+    {
+        if (answers.empty()) return 0;
+        const uint8_t b = answers.front();
+        answers.erase(answers.begin());
+        return b;
+    }
 } SPI;
 
 struct SerialClass {

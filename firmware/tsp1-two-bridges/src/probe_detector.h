@@ -1,0 +1,1 @@
+../../probe-detector/probe_detector.h
