@@ -82,6 +82,10 @@ struct LiveTake {
     // reading there was stored.
     std::function<std::string()> site;
     std::function<void()> siteStored;
+    // Tells the operator what the unit saw about the device (a probe whose
+    // own detector disagrees), at a time on the lists' clock, as the link's
+    // notices are told; the unit stores its own alarm while recording.
+    std::function<void(double, std::string)> tell;
 };
 
 class LiveModeUnit {

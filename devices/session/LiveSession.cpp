@@ -375,6 +375,7 @@ void LiveSession::takeResults()
     take.siteStored = [this] {
         if (m_siteGrid) m_siteGrid->advance();
     };
+    take.tell = [this](double time_s, std::string text) { m_linkNotices.push_back({time_s, std::move(text)}); };
     if (m_recorder) {
         take.recordedUntil_s = m_recorder->consumedUntil_s().value_or(-1.0);
         take.recordedFrom_s = m_recorder->acquisitionOrigin_s().value_or(take.recordedFrom_s);

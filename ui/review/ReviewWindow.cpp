@@ -499,7 +499,9 @@ void ReviewWindow::refreshRecords()
         }
         for (const auto& analysis : m_store->analyses(m_session.id)) {
             if (analysis == core::storage::kLiveAnalysis) continue;
-            const QString source = tr("saved \"%1\"").arg(text(analysis));
+            // A probe's own decisions, recorded beside the workstation's: named as what they are.
+            const QString source = analysis == core::storage::kProbeAnalysis ? tr("the probe's own")
+                                                                             : tr("saved \"%1\"").arg(text(analysis));
             const auto readings = m_store->readings(m_session.id, analysis);
             add(m_store->events(m_session.id, analysis), readings, newRow(text(analysis)), source, source);
             if (!readings.empty()) otherReadings.push_back({source, readings});

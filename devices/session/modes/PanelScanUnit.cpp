@@ -64,14 +64,21 @@ void PanelScanUnit::take(const LiveTake& take)
 void PanelScanUnit::takeProbeDecisions(const LiveTake& take)
 {
     std::vector<core::storage::SessionEvent> alarms;
-    for (const auto& d : m_detection->takeDisagreements())
+    for (const auto& d : m_detection->takeDisagreements()) {
+        if (take.tell) take.tell(take.listTime_s(d.start_s), d.text());  // the operator hears it at once
         alarms.push_back(core::storage::alarmRecord(d.start_s, d.text()));
+    }
     LiveTake recordOnly = take;
     recordOnly.adding = [] {};
     const auto probe = resultsForLists(m_laterProbe, m_detection->takeProbeEvents(), recordOnly);
     auto told = resultsForLists(m_laterAlarms, std::move(alarms), recordOnly);
     if (!take.recorder) return;
     auto stored = core::storage::defectRecords(probe, core::storage::kProbeAnalysis);
+    // The probe sends no lag: its events have none, and so no speed (not a lag of 0 ms).
+    for (auto& e : stored) {
+        e.lag_s.reset();
+        e.speed_m_per_s.reset();
+    }
     stored.insert(stored.end(), std::make_move_iterator(told.begin()), std::make_move_iterator(told.end()));
     if (!stored.empty()) take.recorder->addEvents(std::move(stored));
 }
