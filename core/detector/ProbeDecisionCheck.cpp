@@ -18,15 +18,17 @@ const char* directionWord(int decision)
 
 std::optional<ProbeDecisionChannels> probeDecisionChannels(const std::vector<ChannelDescriptor>& channels)
 {
-    std::optional<std::size_t> out, rab, rba;
+    std::optional<std::size_t> out, rab, rba, lagAb, lagBa;
     for (std::size_t i = 0; i < channels.size(); ++i) {
         if (channels[i].kind != ChannelKind::Decision) continue;
         if (channels[i].name == "out") out = i;
         if (channels[i].name == "rab") rab = i;
         if (channels[i].name == "rba") rba = i;
+        if (channels[i].name == "lag_ab") lagAb = i;
+        if (channels[i].name == "lag_ba") lagBa = i;
     }
     if (!out || !rab || !rba) return std::nullopt;
-    return ProbeDecisionChannels{*out, *rab, *rba};
+    return ProbeDecisionChannels{*out, *rab, *rba, lagAb, lagBa};
 }
 
 std::string agreementText(const ProbeAgreement& agreement)
@@ -67,6 +69,15 @@ void ProbeDecisionCheck::push(const SampleBlock& block, std::size_t s, const Det
     probeOutput.decision = static_cast<std::int8_t>(probe);
     probeOutput.rab = block.value(m_channels.rab, s);
     probeOutput.rba = block.value(m_channels.rba, s);
+    // Its lags in samples, from seconds; a value that is no lag (negative,
+    // NaN, beyond a minute) is none.
+    const auto lagOf = [&](const std::optional<std::size_t>& channel) -> std::uint32_t {
+        if (!channel) return 0;
+        const double samples = std::round(block.value(*channel, s) / m_sampleInterval_s);
+        return samples >= 1.0 && samples * m_sampleInterval_s <= 60.0 ? static_cast<std::uint32_t>(samples) : 0;
+    };
+    probeOutput.lagAb = lagOf(m_channels.lagAb);
+    probeOutput.lagBa = lagOf(m_channels.lagBa);
     m_segmenter.push(block.timeAt_s(s), probeOutput, m_sampleInterval_s, probeEvents);
     if (++m_sinceStart <= m_warmUp) return;
     ++m_agreement.compared;

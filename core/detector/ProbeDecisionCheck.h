@@ -1,7 +1,8 @@
 // What a probe's own detector decided, checked against the workstation's
 // on the same samples (issue 38). A probe that runs the detector
 // (firmware/probe-detector) sends its decision and its best R each way as
-// channels of kind "decision" named out, rab and rba (docs/protocol.md).
+// channels of kind "decision" named out, rab and rba, and may send the
+// lags of those R as lag_ab and lag_ba, in seconds (docs/protocol.md).
 // Per sample this compares the probe's decision with the workstation's,
 // segments the probe's decisions into defect events (recorded as the
 // analysis "probe"), and names a disagreement that lasts: a probe with
@@ -27,9 +28,12 @@ class SampleBlock;
 
 namespace tactiscope::core::detector {
 
-// Where a stream carries a probe's decisions; none unless all three are there.
+// Where a stream carries a probe's decisions; none unless out, rab and rba
+// are all there. Without its lags a probe's events have no lag, speed or
+// place along the stroke.
 struct ProbeDecisionChannels {
     std::size_t out = 0, rab = 0, rba = 0;
+    std::optional<std::size_t> lagAb, lagBa;
 };
 std::optional<ProbeDecisionChannels> probeDecisionChannels(const std::vector<ChannelDescriptor>& channels);
 

@@ -22,6 +22,9 @@
 namespace tactiscope::devices::emulator {
 namespace {
 
+// The probe detector's channels: out, rab, rba, lag_ab, lag_ba.
+constexpr std::size_t kDecisionChannels = 5;
+
 using Clock = std::chrono::steady_clock;
 
 // How long a restarting probe is silent.
@@ -80,6 +83,7 @@ ProbeEmulator::ProbeEmulator(const EmulatorOptions& options)
         parameters.faceToFace = options.fault == EmulatorFault::WrongDecisions;
         m_detector.emplace(parameters);  // throws std::invalid_argument for a rate it cannot run at
         for (const char* name : {"out", "rab", "rba"}) m_channels.push_back({name, "", core::ChannelKind::Decision});
+        for (const char* name : {"lag_ab", "lag_ba"}) m_channels.push_back({name, "s", core::ChannelKind::Decision});
     }
 
     if (::openpty(&m_master, &m_slave, nullptr, nullptr, nullptr) != 0)
@@ -237,13 +241,15 @@ std::vector<std::uint8_t> ProbeEmulator::nextPayload(std::size_t& samples)
         m_decisions.resize(n);
         m_detector->process(block.channel(0), block.channel(1), m_decisions);
     }
-    const std::size_t measured = m_channels.size() - (m_detector ? 3 : 0);
+    const std::size_t measured = m_channels.size() - (m_detector ? kDecisionChannels : 0);
     for (std::size_t s = 0; s < n; ++s) {
         for (std::size_t c = 0; c < measured; ++c) data.raw.push_back(block.value(c % baseChannels, s));
         if (!m_detector) continue;
         data.raw.push_back(m_decisions[s].decision);
         data.raw.push_back(m_decisions[s].rab);
         data.raw.push_back(m_decisions[s].rba);
+        data.raw.push_back(static_cast<double>(m_decisions[s].lagAb) / m_rate_hz);
+        data.raw.push_back(static_cast<double>(m_decisions[s].lagBa) / m_rate_hz);
     }
     std::uint16_t sequence = m_sequence++;
     if (m_options.fault == EmulatorFault::FrozenSequence) sequence = 0;

@@ -13,7 +13,8 @@
 // (firmware/probe-detector, single precision: src/ links to it), lights an
 // LED and sounds a buzzer on a defect, and sends its decisions as three
 // channels of kind "decision" (out, rab, rba) beside the two strains, so
-// the workstation can check them against its own (docs/firmware.md).
+// the workstation can check them against its own (docs/firmware.md), with
+// the lags of those R (lag_ab, lag_ba).
 //
 // Wiring (both ADS1220 on the same SPI bus, each with its own chip select):
 //   SCLK 13, DOUT/MISO 12, DIN/MOSI 11; bridge A: CS 10; bridge B: CS 8;
@@ -51,7 +52,7 @@ constexpr int kDefectLed = 2;
 constexpr int kBuzzer = 3;
 constexpr uint32_t kDefectShow_ms = 200;  // how long the LED and the buzzer tell a defect
 constexpr unsigned kBuzzer_hz = 2700;     // a piezo's loudest
-constexpr uint8_t kChannels = 5;          // a, b, then the detector's out, rab, rba
+constexpr uint8_t kChannels = 7;          // a, b, then the detector's out, rab, rba, lag_ab, lag_ba
 constexpr float kRPerCount = 1.0f / 1073741824.0f;  // R sent as int32 in steps of 2^-30
 constexpr uint32_t kDefaultRate_mHz = 500000;  // 500 Hz
 constexpr uint16_t kSamplesPerFrame = 10;      // 50 frames/s at 500 Hz
@@ -133,11 +134,13 @@ void sendInfo()
     // The detector's decisions: kind 5, "decision" (protocol.md § 1).
     const struct {
         const char* name;
+        const char* unit;
         float scale;
-    } decisions[3] = {{"out", 1.0f}, {"rab", kRPerCount}, {"rba", kRPerCount}};
+    } decisions[5] = {
+        {"out", "", 1.0f}, {"rab", "", kRPerCount}, {"rba", "", kRPerCount}, {"lag_ab", "s", 1e-6f}, {"lag_ba", "s", 1e-6f}};
     for (const auto& d : decisions) {
         p.str(d.name);
-        p.str("");
+        p.str(d.unit);
         p.u8(5);
         p.f32(d.scale);
         p.f32(0.0f);
@@ -285,6 +288,10 @@ void addSample(const int32_t (&values)[2])
     dataFrame.i32(o.decision);
     dataFrame.i32(static_cast<int32_t>(o.rab / kRPerCount));
     dataFrame.i32(static_cast<int32_t>(o.rba / kRPerCount));
+    // The lags of those R in microseconds (the INFO scales them to seconds).
+    const uint32_t period_us = 1000000000u / rate_mHz;
+    dataFrame.i32(static_cast<int32_t>(o.lag_ab * period_us));
+    dataFrame.i32(static_cast<int32_t>(o.lag_ba * period_us));
     if (++samplesInFrame == kSamplesPerFrame) {
         sendFrame(kData, dataFrame);
         startFrame();

@@ -38,8 +38,8 @@ TEST(ReviewProbe, TheProbesOwnDecisionsAreShownBesideTheRecordedOnesWithTheirAgr
         recordedDefects += item->text(2) == QStringLiteral("recorded");
         if (item->text(2) != QStringLiteral("the probe's own")) continue;
         ++probeDefects;
-        // The probe sends no lag: none is shown (not "lag 0 ms").
-        EXPECT_FALSE(item->text(3).contains(QStringLiteral("lag"))) << item->text(3).toStdString();
+        // The probe sends its lags: its events have them, as the workstation's do (52 ms here).
+        EXPECT_TRUE(item->text(3).contains(QStringLiteral("lag 52 ms"))) << item->text(3).toStdString();
     }
     EXPECT_GT(recordedDefects, 3);
     EXPECT_EQ(probeDefects, recordedDefects);

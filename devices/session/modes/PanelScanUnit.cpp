@@ -74,8 +74,9 @@ void PanelScanUnit::takeProbeDecisions(const LiveTake& take)
     auto told = resultsForLists(m_laterAlarms, std::move(alarms), recordOnly);
     if (!take.recorder) return;
     auto stored = core::storage::defectRecords(probe, core::storage::kProbeAnalysis);
-    // The probe sends no lag: its events have none, and so no speed (not a lag of 0 ms).
+    // A probe that sends no lags: its events have none, and so no speed (not a lag of 0 ms).
     for (auto& e : stored) {
+        if (e.lag_s && *e.lag_s > 0.0) continue;
         e.lag_s.reset();
         e.speed_m_per_s.reset();
     }

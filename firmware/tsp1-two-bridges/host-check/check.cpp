@@ -75,11 +75,11 @@ int main()
         loop();
     }
     const auto& f = Serial.out;
-    // Five channels a sample: a, b, and the detector's out, rab, rba.
-    assert(f.size() == 8 + 8 + 10 * 5 * 4 + 2);
-    assert(f[3] == kData && (f[4] | f[5] << 8) == 208);
-    assert((f[8] | f[9] << 8) == 5000 && f[12] == 5 && f[13] == 2 && (f[14] | f[15] << 8) == 10);
-    assert(crc16Ccitt(f.data() + 2, 6 + 208) == (f[216] | f[217] << 8));
+    // Seven channels a sample: a, b, and the detector's out, rab, rba, lag_ab, lag_ba.
+    assert(f.size() == 8 + 8 + 10 * 7 * 4 + 2);
+    assert(f[3] == kData && (f[4] | f[5] << 8) == 288);
+    assert((f[8] | f[9] << 8) == 5000 && f[12] == 7 && f[13] == 2 && (f[14] | f[15] << 8) == 10);
+    assert(crc16Ccitt(f.data() + 2, 6 + 288) == (f[296] | f[297] << 8));
 
     // The INFO declares the decisions as kind 5.
     Serial.out.clear();
@@ -129,7 +129,12 @@ int main()
     for (size_t at = 0; at + 8 < Serial.out.size();) {
         const size_t size = Serial.out[at + 4] | Serial.out[at + 5] << 8;
         if (Serial.out[at + 3] == kData)
-            for (size_t s = 0; s < 10; ++s) sent += i32At(Serial.out, at + 8 + 8 + (s * 5 + 2) * 4) == 1;
+            for (size_t s = 0; s < 10; ++s) {
+                const size_t sample = at + 8 + 8 + s * 7 * 4;
+                if (i32At(Serial.out, sample + 2 * 4) != 1) continue;
+                ++sent;
+                assert(i32At(Serial.out, sample + 5 * 4) == 50000);  // lag_ab: 25 samples at 2 ms, in µs
+            }
         at += 10 + size;
     }
     assert(sent == decided);

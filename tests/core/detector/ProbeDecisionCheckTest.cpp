@@ -64,7 +64,7 @@ TEST(ProbeDecisionCheck, FindsTheProbesChannelsByKindAndName)
 
 TEST(ProbeDecisionCheck, CountsAfterTheWarmUpAndNamesOnlyLastingDisagreements)
 {
-    ProbeDecisionCheck check({2, 3, 4}, kDt, 0.02, std::nullopt);
+    ProbeDecisionCheck check({2, 3, 4, std::nullopt, std::nullopt}, kDt, 0.02, std::nullopt);
     Results run;
     // 2000 samples of warm-up in which the two disagree throughout: nothing counted, nothing named.
     feed(check, std::vector<int>(2000, 1), std::vector<int>(2000, 0), 0, run);
@@ -88,7 +88,7 @@ TEST(ProbeDecisionCheck, CountsAfterTheWarmUpAndNamesOnlyLastingDisagreements)
 
 TEST(ProbeDecisionCheck, ARestartWarmsUpAgainAndAGarbledDecisionIsNone)
 {
-    ProbeDecisionCheck check({2, 3, 4}, kDt, 0.02, std::nullopt);
+    ProbeDecisionCheck check({2, 3, 4, std::nullopt, std::nullopt}, kDt, 0.02, std::nullopt);
     Results run;
     feed(check, std::vector<int>(2100, 0), std::vector<int>(2100, 0), 0, run);
     EXPECT_EQ(check.agreement().compared, 100U);
@@ -102,9 +102,33 @@ TEST(ProbeDecisionCheck, ARestartWarmsUpAgainAndAGarbledDecisionIsNone)
     EXPECT_TRUE(run.disagreements.empty());
 }
 
+TEST(ProbeDecisionCheck, TheProbesLagsGiveItsEventsTheirLag)
+{
+    // out, rab, rba, lag_ab, lag_ba after the strains: lag_ab 0.05 s is 25 samples.
+    std::vector<ChannelDescriptor> channels{{"a", "", ChannelKind::Strain}, {"b", "", ChannelKind::Strain}};
+    for (const char* name : {"out", "rab", "rba"}) channels.push_back({name, "", ChannelKind::Decision});
+    for (const char* name : {"lag_ab", "lag_ba"}) channels.push_back({name, "s", ChannelKind::Decision});
+    const auto found = probeDecisionChannels(channels);
+    ASSERT_TRUE(found && found->lagAb && found->lagBa);
+    ProbeDecisionCheck check(*found, kDt, 0.02, 0.015);
+    SampleBlock block(7, 200, 0.0, kDt, 0);
+    for (std::size_t s = 100; s < 106; ++s) {
+        block.channel(2)[s] = 1;
+        block.channel(3)[s] = 0.9;
+        block.channel(5)[s] = 0.05;
+    }
+    Results run;
+    for (std::size_t s = 0; s < 200; ++s) check.push(block, s, DetectorOutput{}, run.probeEvents, run.disagreements);
+    check.finish(run.probeEvents);
+    ASSERT_EQ(run.probeEvents.size(), 1U);
+    EXPECT_NEAR(run.probeEvents[0].peakLag_s, 0.05, 1e-12);
+    ASSERT_TRUE(run.probeEvents[0].speed_m_per_s);
+    EXPECT_NEAR(*run.probeEvents[0].speed_m_per_s, 0.3, 1e-12);  // 15 mm in 50 ms
+}
+
 TEST(ProbeDecisionCheck, SegmentsTheProbesDecisionsIntoEvents)
 {
-    ProbeDecisionCheck check({2, 3, 4}, kDt, 0.02, std::nullopt);
+    ProbeDecisionCheck check({2, 3, 4, std::nullopt, std::nullopt}, kDt, 0.02, std::nullopt);
     Results run;
     std::vector<int> probe(200, 0);
     for (int s = 100; s < 106; ++s) probe[static_cast<std::size_t>(s)] = 1;
