@@ -178,8 +178,8 @@ static void shortest(char* text, double x)
         f += sprintf(f, "%s", mantissa + exponent + 1);
     }
     *f = '\0';
-    snprintf(scientific, sizeof scientific, "%s%c%s%s%se%c%02d", negative ? "-" : "", mantissa[0], m > 1 ? "." : "",
-             mantissa + 1, "", exponent < 0 ? '-' : '+', abs(exponent));
+    snprintf(scientific, sizeof scientific, "%s%c%s%se%c%02d", negative ? "-" : "", mantissa[0], m > 1 ? "." : "",
+             mantissa + 1, exponent < 0 ? '-' : '+', abs(exponent));
     strcpy(text, strlen(scientific) < strlen(fixed) ? scientific : fixed);
 }
 
