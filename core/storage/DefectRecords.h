@@ -12,13 +12,14 @@
 
 namespace tactiscope::core::storage {
 
-// An alarm of the record at one instant, with what it says.
-inline SessionEvent alarmRecord(double time_s, std::string note)
+// An alarm of the record, from start_s to end_s (an instant: the same),
+// with what it says: the live session's and its units' alike.
+inline SessionEvent alarmRecord(double start_s, double end_s, std::string note)
 {
     SessionEvent event;
     event.kind = EventKind::Alarm;
-    event.start_s = time_s;
-    event.end_s = time_s;
+    event.start_s = start_s;
+    event.end_s = end_s;
     event.note = std::move(note);
     return event;
 }

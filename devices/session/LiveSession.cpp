@@ -6,6 +6,7 @@
 #include "core/ModeCapability.h"
 #include "core/SinkSlot.h"
 #include "core/modes/ModeDefinition.h"
+#include "core/storage/DefectRecords.h"
 #include "core/storage/RecordingTap.h"
 #include "core/text/CountText.h"
 #include "devices/SteadyClock.h"
@@ -17,20 +18,6 @@
 #include <stdexcept>
 
 namespace tactiscope::devices::session {
-namespace {
-
-// An alarm of the record: what the link or the session noticed, when.
-core::storage::SessionEvent alarmAt(double start_s, double end_s, std::string note)
-{
-    core::storage::SessionEvent alarm;
-    alarm.kind = core::EventKind::Alarm;
-    alarm.start_s = start_s;
-    alarm.end_s = end_s;
-    alarm.note = std::move(note);
-    return alarm;
-}
-
-}  // namespace
 
 LiveSession::LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions options)
     : m_options(std::move(options))
@@ -210,7 +197,7 @@ void LiveSession::recordUnstoppedEnd(RecordingSummary& summary)
     if (acquired.state == AcquisitionState::Failed) {
         summary.stoppedBecause = acquired.error;
         const double end_s = m_recorder->sessionTime_s();
-        alarms.push_back(alarmAt(end_s, end_s, "the link failed: " + acquired.error));
+        alarms.push_back(core::storage::alarmRecord(end_s, end_s, "the link failed: " + acquired.error));
     }
     if (silence_s > std::max(1.0, 3.0 * blockDuration_s)) {
         const double lostAt_s = m_recorder->sessionTime_s();
@@ -220,7 +207,7 @@ void LiveSession::recordUnstoppedEnd(RecordingSummary& summary)
         char text[128];
         std::snprintf(text, sizeof text, "the probe was lost at %.1f s and did not come back: %.1f s without samples",
                       lostAt_s, silence_s);
-        alarms.push_back(alarmAt(lostAt_s, lostAt_s + silence_s, text));
+        alarms.push_back(core::storage::alarmRecord(lostAt_s, lostAt_s + silence_s, text));
     }
     if (!alarms.empty()) m_recorder->addEvents(std::move(alarms));
 }
@@ -233,11 +220,12 @@ void LiveSession::recordStandingFaults()
     std::vector<core::storage::SessionEvent> alarms;
     const auto counters = source().decoderCounters();
     if (counters.sequenceFaults > 0)
-        alarms.push_back(alarmAt(0.0, 0.0,
-                                 "before this recording the device's sequence numbers contradicted its clock " +
-                                     std::to_string(counters.sequenceFaults) +
-                                     " times: they are not believed, losses are counted only where its clock agrees"));
-    if (const auto rate = source().rateNote()) alarms.push_back(alarmAt(0.0, 0.0, *rate));
+        alarms.push_back(core::storage::alarmRecord(
+            0.0, 0.0,
+            "before this recording the device's sequence numbers contradicted its clock " +
+                std::to_string(counters.sequenceFaults) +
+                " times: they are not believed, losses are counted only where its clock agrees"));
+    if (const auto rate = source().rateNote()) alarms.push_back(core::storage::alarmRecord(0.0, 0.0, *rate));
     if (!alarms.empty()) m_recorder->addEvents(std::move(alarms));
 }
 
@@ -336,7 +324,7 @@ void LiveSession::takeNotices()
     for (auto& notice : m_acquisition->takeNotices()) {
         if (m_recorder && m_recorder->sessionTimeOf(notice.time_s) >= 0.0) {
             notice.time_s = m_recorder->sessionTimeOf(notice.time_s);
-            stored.push_back(alarmAt(notice.time_s, notice.time_s, notice.text));
+            stored.push_back(core::storage::alarmRecord(notice.time_s, notice.time_s, notice.text));
         }
         m_linkNotices.push_back(std::move(notice));
     }
