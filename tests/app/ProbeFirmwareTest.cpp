@@ -8,6 +8,7 @@
 #include "support/CliRunner.h"
 #include "support/GeneratedScans.h"
 
+#include <QDir>
 #include <QFile>
 #include <QProcess>
 #include <QTemporaryDir>
@@ -87,3 +88,37 @@ TEST_P(ProbeFirmware, DecidesAsTheWorkstationAndWritesTheHostBuildsBytes)
 }
 
 INSTANTIATE_TEST_SUITE_P(Cores, ProbeFirmware, ::testing::Values("m4", "m7", "m33"));
+
+// What the script says instead of a result: a scan it cannot use (exit 2)
+// and, on a machine without the ARM toolchain or QEMU, what to install (exit 3).
+TEST(ProbeFirmwareScript, SaysWhatIsWrongInsteadOfWritingRows)
+{
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString script = QStringLiteral(TACTISCOPE_SOURCE_DIR "/firmware/probe-detector/qemu-detect.sh");
+    const QString bad = dir.filePath("bad.csv");
+    QFile file(bad);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write("time,x,y\n0,1,2\n0.002,1,2\n");
+    file.close();
+    QProcess run;
+    run.start(script, {bad, dir.filePath("out.csv")});
+    ASSERT_TRUE(run.waitForFinished(120000));
+    EXPECT_EQ(run.exitCode(), 2);
+    EXPECT_TRUE(run.readAllStandardError().contains("has no columns t, a and b"));
+    EXPECT_FALSE(QFile::exists(dir.filePath("out.csv")));
+
+    // A PATH with only what the script needs before it looks for its tools.
+    const QString bin = dir.filePath("bin");
+    ASSERT_TRUE(QDir().mkpath(bin));
+    ASSERT_TRUE(QFile::link(QStringLiteral("/usr/bin/dirname"), bin + QStringLiteral("/dirname")));
+    QProcess bare;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("PATH"), bin);
+    bare.setProcessEnvironment(environment);
+    bare.start(QStringLiteral("/bin/bash"), {script, bad, dir.filePath("out.csv")});
+    ASSERT_TRUE(bare.waitForFinished(60000));
+    EXPECT_EQ(bare.exitCode(), 3);
+    const QByteArray said = bare.readAllStandardError();
+    EXPECT_TRUE(said.contains("gcc-arm-none-eabi") && said.contains("qemu-system-arm")) << said.toStdString();
+}
