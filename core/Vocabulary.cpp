@@ -26,12 +26,13 @@ constexpr Words<VerdictRole, 3> kVerdictRoleWords{{
     {VerdictRole::Operator, "operator"},
     {VerdictRole::Reviewer, "reviewer"},
 }};
-constexpr Words<EventKind, 5> kEventWords{{
+constexpr Words<EventKind, 6> kEventWords{{
     {EventKind::Defect, "defect"},
     {EventKind::Contact, "contact"},
     {EventKind::Press, "press"},
     {EventKind::Alarm, "alarm"},
     {EventKind::Marker, "marker"},
+    {EventKind::Trigger, "trigger"},
 }};
 constexpr Words<ReadingKind, 2> kReadingWords{{
     {ReadingKind::Compliance, "compliance"},

@@ -52,10 +52,12 @@ inline constexpr std::array kVerdictRoles{VerdictRole::Automatic, VerdictRole::O
 std::string_view toString(VerdictRole role);  // "automatic", "operator", "reviewer"
 std::optional<VerdictRole> verdictRoleFromString(std::string_view text);
 
-enum class EventKind { Defect, Contact, Press, Alarm, Marker };
-inline constexpr std::array kEventKinds{EventKind::Defect, EventKind::Contact, EventKind::Press, EventKind::Alarm,
-                                        EventKind::Marker};
-std::string_view toString(EventKind kind);  // "defect", "contact", "press", "alarm", "marker"
+// Trigger: the instant a triggered recording's start condition began (its
+// note, the condition).
+enum class EventKind { Defect, Contact, Press, Alarm, Marker, Trigger };
+inline constexpr std::array kEventKinds{EventKind::Defect, EventKind::Contact, EventKind::Press,
+                                        EventKind::Alarm,  EventKind::Marker,  EventKind::Trigger};
+std::string_view toString(EventKind kind);  // "defect", "contact", "press", "alarm", "marker", "trigger"
 std::optional<EventKind> eventKindFromString(std::string_view text);
 
 enum class ReadingKind { Compliance, Capacitive };

@@ -4,6 +4,7 @@
 #include "RecordCommand.h"
 
 #include "CliSupport.h"
+#include "WatchOptions.h"
 #include "core/ModeCapability.h"
 #include "core/sensors/SensorProfile.h"
 #include "core/storage/RecorderLock.h"
@@ -72,6 +73,7 @@ int runRecord(const QStringList& arguments)
          QStringLiteral("FILE")},
         rolesOption(),
     });
+    parser.addOptions(watchOptions());
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
     if (!parser.positionalArguments().isEmpty())
@@ -110,6 +112,9 @@ int runRecord(const QStringList& arguments)
     QString rolesError;
     const auto roles = parseRolesOption(parser, rolesError);
     if (!roles) return usageError(rolesError, usage);
+    QString watchError;
+    const auto watch = parseWatchOptions(parser, watchError);
+    if (!watch) return usageError(watchError, usage);
     std::optional<core::sensors::SensorProfile> profile;
     if (parser.isSet(QStringLiteral("profile"))) {
         try {
@@ -188,9 +193,17 @@ int runRecord(const QStringList& arguments)
     }
     for (const auto& problem : session.takeProblems()) printError(QString::fromStdString(problem));
     session.setSite(metadata.site);
-    // Recording from the first block: attached before the device streams.
-    if (const auto error = session.startRecording(metadata)) {
-        printError(QString::fromStdString(*error));
+    if (const auto refusal = session.setLimits(watch->limits)) {
+        printError(QStringLiteral("--limit: %1").arg(QString::fromStdString(*refusal)));
+        return kExitUsage;
+    }
+    // Recording from the first block (attached before the device streams),
+    // or from each trigger.
+    const auto refused =
+        watch->trigger ? session.armTrigger(*watch->trigger, metadata) : session.startRecording(metadata);
+    if (refused) {
+        printError(QStringLiteral("%1%2").arg(watch->trigger ? QStringLiteral("--trigger: ") : QString(),
+                                              QString::fromStdString(*refused)));
         return kExitUsage;
     }
     installStopSignals();
@@ -200,23 +213,107 @@ int runRecord(const QStringList& arguments)
     const auto start = std::chrono::steady_clock::now();
     auto nextProgress = start + std::chrono::seconds(5);
     QTextStream err(stderr);
-    std::optional<devices::session::RecordingSummary> summary;
+    const auto at = [](double time_s) { return QLocale::c().toString(time_s, 'f', 1); };
     // What the link noticed is stored as an alarm and told here, as it comes.
     const auto tellNotices = [&] {
         for (const auto& notice : session.takeLinkNotices())
-            printError(QStringLiteral("at %1 s: %2")
-                           .arg(QLocale::c().toString(notice.time_s, 'f', 1), QString::fromStdString(notice.text)));
+            printError(QStringLiteral("at %1 s: %2").arg(at(notice.time_s), QString::fromStdString(notice.text)));
     };
+    // Limit alarms likewise; a critical one ends the recording when asked.
+    std::optional<QString> criticalStop;
+    const auto tellAlarms = [&] {
+        for (const auto& alarm : session.takeAlarms()) {
+            const QString severity = QString::fromLatin1(core::trigger::toString(alarm.change.severity));
+            const QString text = QString::fromStdString(alarm.text());
+            printError(alarm.change.raised ? QStringLiteral("at %1 s: %2: %3").arg(at(alarm.time_s), severity, text)
+                                           : QStringLiteral("at %1 s: cleared: %2").arg(at(alarm.time_s), text));
+            if (watch->stopOnCritical && alarm.change.raised && !criticalStop &&
+                alarm.change.severity == core::trigger::LimitSeverity::Critical)
+                criticalStop = QStringLiteral("stopped on a critical alarm at %1 s: %2").arg(at(alarm.time_s), text);
+        }
+    };
+    // The trigger's state as it changes.
+    std::optional<devices::session::TriggerStatus> toldState;
+    const auto tellTrigger = [&] {
+        if (!watch->trigger) return;
+        const auto status = session.triggerStatus();
+        if (toldState && toldState->state == status.state && toldState->sessionsCut == status.sessionsCut) return;
+        toldState = status;
+        using core::trigger::TriggerState;
+        switch (status.state) {
+        case TriggerState::Waiting:
+            printError(QStringLiteral("trigger waiting: %1 must first not hold")
+                           .arg(toQString(watch->trigger->condition.text())));
+            break;
+        case TriggerState::Armed:
+            printError(QStringLiteral("trigger armed: %1").arg(toQString(watch->trigger->condition.text())));
+            break;
+        case TriggerState::Triggered:
+            printError(QStringLiteral("triggered: session %1%2")
+                           .arg(status.sessionsCut + 1)
+                           .arg(watch->trigger->sessions ? QStringLiteral(" of %1").arg(*watch->trigger->sessions)
+                                                         : QString()));
+            break;
+        case TriggerState::Finished:
+            break;
+        }
+    };
+
+    // One line per session stored (the contract line), and whether it ended well.
+    int exit = kExitOk;
+    unsigned stored = 0;
+    const auto report = [&](const devices::session::RecordingSummary& summary,
+                            const devices::AcquisitionStats& acquired) {
+        ++stored;
+        const auto& written = summary.stats;
+        // The samples lost are what the store marks as lost (its gaps), so
+        // the line and the store agree to the sample; what was counted while
+        // recording if the store cannot be read back.
+        std::uint64_t lost = acquired.samplesLost + written.samplesDropped + summary.samplesLostAtEnd;
+        try {
+            core::storage::SessionStore readBack(db, core::storage::Database::Access::ReadOnly);
+            lost = 0;
+            for (const auto& gap : readBack.gaps(summary.session)) lost += gap.count;
+        } catch (const core::storage::StorageError&) {
+        }
+        QTextStream(stdout) << "Recorded session " << summary.session << ": " << written.samplesWritten
+                            << " samples per channel, " << lost << " lost, " << device->decoderCounters().crcErrors
+                            << " CRC errors (" << channels.size() << " channels at " << QLocale::c().toString(rate_hz)
+                            << " Hz, into " << QString::fromStdString(db) << "); "
+                            << toQString(core::toString(session.recordingMetadata().mode)) << ": "
+                            << QString::fromStdString(summary.analysis) << Qt::endl;
+        if (!written.error.empty()) {
+            printError(QString::fromStdString(written.error));
+            exit = kExitFailure;
+        } else if (summary.lostAt_s) {
+            printError(QStringLiteral("the probe was lost at %1 s and did not come back; %2 samples kept")
+                           .arg(at(*summary.lostAt_s))
+                           .arg(written.samplesWritten));
+            exit = kExitFailure;
+        }
+    };
+    const auto reportTriggered = [&] {
+        for (const auto& summary : session.takeTriggeredSummaries()) report(summary, {});
+    };
+
+    std::optional<devices::session::RecordingSummary> summary;
     for (;;) {
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
         summary = session.poll();
         tellNotices();
+        tellAlarms();
+        tellTrigger();
+        reportTriggered();
         if (summary) break;  // the disk stopped it
         const auto now = std::chrono::steady_clock::now();
         const auto state = session.stats().state;
-        if (stopRequested() || state == devices::AcquisitionState::Finished ||
+        if (stopRequested() || criticalStop || state == devices::AcquisitionState::Finished ||
             state == devices::AcquisitionState::Failed ||
             (seconds && std::chrono::duration<double>(now - start).count() >= *seconds))
+            break;
+        // Every session the trigger was asked for is stored.
+        if (watch->trigger && session.triggerStatus().state == core::trigger::TriggerState::Finished &&
+            !session.isRecording())
             break;
         if (progress && now >= nextProgress) {
             nextProgress += std::chrono::seconds(5);
@@ -225,43 +322,25 @@ int runRecord(const QStringList& arguments)
         }
     }
     const auto acquired = session.stats();
-    if (!summary) summary = session.stopRecording();
+    if (!summary) summary = watch->trigger ? session.disarmTrigger() : session.stopRecording();
     tellNotices();
-    const auto counters = device->decoderCounters();
+    tellAlarms();
     if (progress) err << '\n';
-
-    const auto& stored = summary->stats;
-    // The samples lost are what the store marks as lost (its gaps), so the
-    // line and the store agree to the sample; what was counted while
-    // recording if the store cannot be read back.
-    std::uint64_t lost = acquired.samplesLost + stored.samplesDropped + summary->samplesLostAtEnd;
-    try {
-        core::storage::SessionStore written(db, core::storage::Database::Access::ReadOnly);
-        lost = 0;
-        for (const auto& gap : written.gaps(summary->session)) lost += gap.count;
-    } catch (const core::storage::StorageError&) {
-    }
-    QTextStream(stdout) << "Recorded session " << summary->session << ": " << stored.samplesWritten
-                        << " samples per channel, " << lost << " lost, " << counters.crcErrors << " CRC errors ("
-                        << channels.size() << " channels at " << QLocale::c().toString(rate_hz) << " Hz, into "
-                        << QString::fromStdString(db) << "); "
-                        << toQString(core::toString(session.recordingMetadata().mode)) << ": "
-                        << QString::fromStdString(summary->analysis) << "\n";
-    if (!stored.error.empty()) {
-        printError(QString::fromStdString(stored.error));
-        return kExitFailure;
-    }
+    reportTriggered();
+    if (summary) report(*summary, acquired);
+    if (watch->trigger && watch->trigger->sessions && stored < *watch->trigger->sessions)
+        printError(QStringLiteral("%1 of %2 triggered sessions recorded before the stop")
+                       .arg(stored)
+                       .arg(*watch->trigger->sessions));
     if (acquired.state == devices::AcquisitionState::Failed) {
         printError(QString::fromStdString(acquired.error));
         return kExitFailure;
     }
-    if (summary->lostAt_s) {
-        printError(QStringLiteral("the probe was lost at %1 s and did not come back; %2 samples kept")
-                       .arg(QLocale::c().toString(*summary->lostAt_s, 'f', 1))
-                       .arg(stored.samplesWritten));
+    if (criticalStop) {
+        printError(*criticalStop + QStringLiteral("; the recording was kept"));
         return kExitFailure;
     }
-    return kExitOk;
+    return exit;
 }
 
 }  // namespace tactiscope::cli

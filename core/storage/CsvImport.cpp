@@ -116,6 +116,7 @@ void completeMetadata(SessionMetadata& m, const nlohmann::json& session)
     fill(m.deviceFirmware, "device_firmware");
     fill(m.profileJson, "profile_json");
     fill(m.calibrationsJson, "calibrations_json");
+    fill(m.trigger, "trigger");
 }
 
 // Whether the side file's export holds the whole session (an export of a

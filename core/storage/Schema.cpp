@@ -231,7 +231,34 @@ ALTER TABLE channels ADD COLUMN role TEXT NOT NULL DEFAULT ''
     CHECK (role IN ('', 'cantilever-a', 'cantilever-b', 'stiff-beam', 'soft-beam', 'displacement', 'capacitance'));
 )sql";
 
-constexpr std::array kMigrations{kVersion1, kVersion2, kVersion3, kVersion4, kVersion5};
+// Version 5 → 6: triggered recordings (core/trigger). A session cut by a
+// trigger says which (sessions.trigger_setup), and a `trigger` event marks
+// the instant its condition began; the events table is rebuilt for the
+// CHECK, its rows and ids kept.
+constexpr const char* kVersion6 = R"sql(
+ALTER TABLE sessions ADD COLUMN trigger_setup TEXT NOT NULL DEFAULT '';
+
+CREATE TABLE events_v6 (
+    id            INTEGER PRIMARY KEY,
+    session_id    INTEGER NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    analysis      TEXT NOT NULL DEFAULT 'live',
+    kind          TEXT NOT NULL CHECK (kind IN ('defect', 'contact', 'press', 'alarm', 'marker', 'trigger')),
+    start_s       REAL NOT NULL,
+    end_s         REAL NOT NULL CHECK (end_s >= start_s),
+    direction     INTEGER NOT NULL DEFAULT 0 CHECK (direction IN (-1, 0, 1)),
+    peak_r        REAL,
+    lag_s         REAL,
+    speed_m_per_s REAL,
+    note          TEXT NOT NULL DEFAULT ''
+);
+INSERT INTO events_v6 (id, session_id, analysis, kind, start_s, end_s, direction, peak_r, lag_s, speed_m_per_s, note)
+    SELECT id, session_id, analysis, kind, start_s, end_s, direction, peak_r, lag_s, speed_m_per_s, note FROM events;
+DROP TABLE events;
+ALTER TABLE events_v6 RENAME TO events;
+CREATE INDEX events_by_session ON events (session_id, analysis, start_s);
+)sql";
+
+constexpr std::array kMigrations{kVersion1, kVersion2, kVersion3, kVersion4, kVersion5, kVersion6};
 static_assert(kMigrations.size() == kSchemaVersion);
 
 std::int64_t pragma(Database& db, const char* name)

@@ -189,6 +189,7 @@ void writeMetadata(text::JsonWriter& json, SessionSource& store, std::int64_t se
     json.key("app_version").value(s.appVersion);
     json.key("profile_json").value(s.metadata.profileJson);
     json.key("calibrations_json").value(s.metadata.calibrationsJson);
+    json.key("trigger").value(s.metadata.trigger);
     json.key("samples_per_channel").value(static_cast<long long>(total));
     json.endObject();
     // Which samples the export holds, as indices and as session seconds.

@@ -32,6 +32,9 @@ struct SessionMetadata {
     std::string deviceFirmware;
     std::string profileJson;       // the sensor profile used, copied in
     std::string calibrationsJson;  // the calibration records used, copied in (a JSON array)
+    // What cut a triggered recording (core/trigger): "a>2e-05, pre 0.5 s,
+    // post 1 s, hold-off 0 s"; empty for a recording started by hand.
+    std::string trigger;
 };
 
 // Who a session is when it was recorded elsewhere (an import of an export):

@@ -52,7 +52,8 @@ SessionSummary summaryFrom(const Statement& row)
                   row.text(8),
                   row.text(9),
                   row.text(10),
-                  row.text(11)};
+                  row.text(11),
+                  row.text(20)};
     s.startedUtc = row.text(12);
     s.endedUtc = row.text(13);
     s.status = sessionStatusFromString(row.text(14)).value_or(SessionStatus::Interrupted);
@@ -82,7 +83,7 @@ const std::string& summaryQuery()
         "profile_json, calibrations_json, started_utc, ended_utc, status, verdict, app_version, "
         "(SELECT sample_rate_hz FROM channels WHERE session_id = s.id AND position = 0), " +
         sampleEndSql("s.id") +
-        ", (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live') FROM sessions s ";
+        ", (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live'), trigger_setup FROM sessions s ";
     return sql;
 }
 
@@ -170,6 +171,7 @@ void refuseUnstorableText(const SessionMetadata& m, std::span<const ChannelDescr
     check(m.deviceFirmware, "device firmware");
     check(m.profileJson, "sensor profile");
     check(m.calibrationsJson, "calibrations");
+    check(m.trigger, "trigger");
     check(origin.startedUtc, "start time");
     check(origin.appVersion, "app version");
     for (const ChannelDescriptor& c : channels) {
@@ -192,8 +194,8 @@ std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<cons
     refuseUnstorableText(m, channels, origin);
     Transaction transaction(m_db);
     m_db.prepare("INSERT INTO sessions (uuid, mode, subject, operator, site, notes, device_model, device_serial, "
-                 "device_firmware, profile_json, calibrations_json, started_utc, status, app_version) "
-                 "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
+                 "device_firmware, profile_json, calibrations_json, started_utc, status, app_version, trigger_setup) "
+                 "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
         .bind(1, origin.uuid.empty() ? newUuid() : origin.uuid)
         .bind(2, toString(m.mode))
         .bind(3, m.subject)
@@ -208,6 +210,7 @@ std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<cons
         .bind(12, origin.startedUtc.empty() ? utcNow() : origin.startedUtc)
         .bind(13, toString(SessionStatus::Recording))
         .bind(14, origin.appVersion.empty() ? std::string(versionString()) : origin.appVersion)
+        .bind(15, m.trigger)
         .run();
     const std::int64_t id = m_db.lastInsertId();
     auto insert = m_db.prepare("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz, role) "

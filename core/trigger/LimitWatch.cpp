@@ -67,14 +67,14 @@ ParsedLimit parseLimit(std::string_view text)
     return {spec, {}};
 }
 
-std::string LimitChange::text(const LimitSpec& spec) const
+std::string LimitChange::text(const LimitSpec& spec, const std::string& unit) const
 {
-    const std::string side = spec.above ? "above" : "below";
+    const auto withUnit = [&unit](double v) { return text::formatShortest(v) + (unit.empty() ? "" : " " + unit); };
     if (!raised)
         return spec.quantity + " back " + (spec.above ? "below" : "above") + " its " + toString(severity) + " limit " +
-               text::formatShortest(level);
-    return spec.quantity + " " + side + " its " + toString(severity) + " limit " + text::formatShortest(level) + " (" +
-           text::formatShortest(value) + ")";
+               withUnit(level);
+    return spec.quantity + " " + (spec.above ? "above" : "below") + " its " + toString(severity) + " limit " +
+           withUnit(level) + " (" + withUnit(value) + ")";
 }
 
 LimitWatch::LimitWatch(LimitSpec spec, double sampleRate_hz)

@@ -45,7 +45,8 @@ struct LimitChange {
     std::uint64_t index = 0;
     double value = 0.0;
     double level = 0.0;
-    std::string text(const LimitSpec& spec) const;  // "force above its critical limit 0.003 (0.0031)"
+    // "force above its critical limit 0.003 N (0.0031 N)", in the quantity's SI unit.
+    std::string text(const LimitSpec& spec, const std::string& unit = {}) const;
 };
 
 class LimitWatch {

@@ -1,6 +1,8 @@
 // TriggerMachine: arming, trigger, post time, hold-off, count.
 #include "core/trigger/TriggerMachine.h"
 
+#include "core/text/NumberFormat.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -16,6 +18,40 @@ std::uint64_t samplesOf(double seconds, double rate_hz, const char* what)
 }
 
 }  // namespace
+
+std::string settingsText(const TriggerSettings& settings)
+{
+    const auto seconds = [](double s) { return text::formatShortest(s) + " s"; };
+    return settings.condition.text() + ", pre " + seconds(settings.pre_s) + ", post " + seconds(settings.post_s) +
+           ", hold-off " + seconds(settings.holdOff_s);
+}
+
+std::string numberedSubject(const std::string& first, unsigned n)
+{
+    if (n == 0 || first.empty()) return first;
+    const auto digits = first.find_last_not_of("0123456789") + 1;  // npos + 1 == 0: all digits
+    if (digits == first.size()) return first + "-" + std::to_string(n + 1);
+    const std::string number = first.substr(digits);
+    if (number.size() > 18) return first + "-" + std::to_string(n + 1);  // beyond a counter: a name
+    std::string next = std::to_string(std::stoull(number) + n);
+    if (next.size() < number.size()) next.insert(0, number.size() - next.size(), '0');
+    return first.substr(0, digits) + next;
+}
+
+const char* toString(TriggerState state)
+{
+    switch (state) {
+    case TriggerState::Waiting:
+        return "waiting";
+    case TriggerState::Armed:
+        return "armed";
+    case TriggerState::Triggered:
+        return "triggered";
+    case TriggerState::Finished:
+        return "finished";
+    }
+    return "";
+}
 
 TriggerMachine::TriggerMachine(TriggerSettings settings, double sampleRate_hz)
     : m_settings(std::move(settings))

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 
 namespace tactiscope::core::trigger {
 
@@ -26,7 +27,18 @@ struct TriggerSettings {
     std::optional<unsigned> sessions;  // how many, then Finished; none: re-arm for ever
 };
 
+// The settings as a session's record keeps them: "a>2e-05, pre 0.5 s,
+// post 1 s, hold-off 0 s".
+std::string settingsText(const TriggerSettings& settings);
+
+// The subject of the `n`th session (from 0) a trigger cuts, numbered on
+// from the first's: door-17, door-18, …; panel-009, panel-010 (the digits'
+// width kept); a subject without a number: panel, panel-2, panel-3; none
+// stays none.
+std::string numberedSubject(const std::string& first, unsigned n);
+
 enum class TriggerState { Waiting, Armed, Triggered, Finished };
+const char* toString(TriggerState state);  // "waiting", "armed", "triggered", "finished"
 
 // One session cut by the trigger: samples [first, end) of the stream, with
 // the trigger instant at `trigger`.

@@ -17,6 +17,7 @@
 #include "core/Vocabulary.h"
 #include "core/sensors/SensorProfile.h"
 #include "core/storage/SessionStore.h"
+#include "devices/session/LiveQuantity.h"
 #include "devices/session/LiveRecords.h"
 
 #include <algorithm>
@@ -96,6 +97,9 @@ public:
     virtual std::shared_ptr<core::BlockSink> sink() const = 0;
     // The calibrations it reads through (stored with a recording).
     virtual const std::vector<core::storage::StoredCalibration>& calibrations() const;
+    // What its processor derives, sample for sample, by the names a trigger
+    // or a limit gives them ("force"), in SI units.
+    virtual std::vector<LiveQuantity> quantities() const { return {}; }
 
     // The zero: nothing when taken, else why not (the processor's rule).
     virtual std::optional<std::string> tare() = 0;

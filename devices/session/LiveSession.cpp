@@ -40,6 +40,11 @@ LiveSession::LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions
         m_acquisition->addSink(slot);
         m_slots.emplace(definition.mode, std::move(slot));
     }
+    // After the processors: a derived quantity is there for the block just read.
+    m_limits = std::make_shared<LimitAlarms>();
+    m_acquisition->addSink(m_limits);
+    m_gate = std::make_shared<TriggerGate>();
+    m_acquisition->addSink(m_gate);
     buildAll();
     m_mode = declaredMode();
 }
@@ -123,8 +128,10 @@ std::optional<std::string> LiveSession::setMode(core::Mode mode)
 {
     if (mode == m_mode) return std::nullopt;
     if (isRecording()) return "the recording keeps its mode; stop it first";
+    if (m_trigger) return "the armed trigger records in this mode; disarm it first";
     if (auto refusal = refusalOf(mode)) return refusal;
     m_mode = mode;
+    refreshReaders();
     return std::nullopt;
 }
 
@@ -139,6 +146,16 @@ std::optional<std::string> LiveSession::tare()
 std::optional<std::string> LiveSession::startRecording(const core::storage::SessionMetadata& request)
 {
     if (isRecording()) return std::nullopt;
+    if (m_trigger) return "the armed trigger starts the recordings; disarm it first";
+    if (auto error = beginRecording(request)) return error;
+    m_tap->attach(m_recorder);
+    return std::nullopt;
+}
+
+// A recording's recorder, metadata, lists and the zero in use, ready for
+// its first block (from the tap, or from the trigger's gate).
+std::optional<std::string> LiveSession::beginRecording(const core::storage::SessionMetadata& request)
+{
     if (auto refusal = refusalOf(m_mode)) return refusal;
     core::storage::SessionMetadata metadata = request;
     metadata.mode = m_mode;
@@ -175,7 +192,6 @@ std::optional<std::string> LiveSession::startRecording(const core::storage::Sess
     if (auto* unit = unitOf(m_mode)) unit->startRecording(*m_recorder);
     m_recordingStartHost_s = steadySeconds();
     recordStandingFaults();
-    m_tap->attach(m_recorder);
     return std::nullopt;
 }
 
@@ -238,9 +254,12 @@ std::optional<RecordingSummary> LiveSession::stopRecording()
 RecordingSummary LiveSession::finishRecording()
 {
     m_tap->detach();
+    m_gate->detach();
     if (const auto origin = recordingOrigin_s()) m_lists.origin_s = *origin;
     takeResults();  // what completed up to the last recorded block
     takeNotices();
+    takeLimitAlarms();
+    for (const auto& raised : m_raisedAlarms) storeAlarm(raised, m_recorder->sessionTime_s());
     RecordingSummary summary;
     recordUnstoppedEnd(summary);
     summary.session = m_recorder->sessionId();
@@ -301,7 +320,14 @@ std::optional<RecordingSummary> LiveSession::poll()
     if (const auto origin = recordingOrigin_s()) m_lists.origin_s = *origin;
     takeResults();
     takeNotices();
-    if (m_recorder && !m_recorder->stats().error.empty()) return finishRecording();
+    takeLimitAlarms();
+    if (m_recorder && !m_recorder->stats().error.empty()) {
+        // The disk stopped it: a trigger would only start the next into the same failure.
+        m_gate->disarm();
+        m_trigger.reset();
+        return finishRecording();
+    }
+    takeTriggered();
     return std::nullopt;
 }
 
@@ -388,6 +414,157 @@ void LiveSession::setSiteGrid(std::optional<core::compliance::SiteGrid> grid)
 void LiveSession::selectSite(core::compliance::SiteCell cell)
 {
     if (m_siteGrid) m_siteGrid->select(cell);
+}
+
+}  // namespace tactiscope::devices::session
+
+namespace tactiscope::devices::session {
+
+std::vector<std::pair<std::string, std::string>> LiveSession::watchableQuantities() const
+{
+    std::vector<std::pair<std::string, std::string>> names;
+    for (const auto& channel : m_channels) names.emplace_back(channel.name, channel.unit);
+    if (const auto* unit = unitOf(m_mode))
+        for (const auto& quantity : unit->quantities()) names.emplace_back(quantity.name, quantity.unit);
+    return names;
+}
+
+// A device channel by its name, else a quantity of the current mode's
+// processor; none, with the names there are, for anything else.
+std::optional<QuantityReader> LiveSession::readerFor(const std::string& quantity, std::string& refusal) const
+{
+    for (std::size_t c = 0; c < m_channels.size(); ++c)
+        if (m_channels[c].name == quantity) return QuantityReader::deviceChannel(c, m_channels[c].unit);
+    if (const auto* unit = unitOf(m_mode))
+        for (const auto& offered : unit->quantities())
+            if (offered.name == quantity) return QuantityReader::derived(offered);
+    std::string names;
+    for (const auto& [name, unit] : watchableQuantities()) names += (names.empty() ? "" : ", ") + name;
+    refusal = "nothing called '" + quantity + "' to watch: the " + std::string(core::toString(m_mode)) +
+              " mode on this device has " + names;
+    return std::nullopt;
+}
+
+// The trigger and the limits read the processors now running: after a
+// processor was rebuilt (another profile, calibration, roles) or the mode
+// changed. A quantity gone reads as no value.
+void LiveSession::refreshReaders()
+{
+    if (!m_gate) return;  // building the first processors
+    std::string ignored;
+    if (m_trigger) m_gate->replaceReader(readerFor(m_trigger->condition.quantity, ignored).value_or(QuantityReader()));
+    std::vector<QuantityReader> readers;
+    for (const auto& limit : m_limits->limits())
+        readers.push_back(readerFor(limit.quantity, ignored).value_or(QuantityReader()));
+    m_limits->replaceReaders(std::move(readers));
+}
+
+std::optional<std::string> LiveSession::armTrigger(const core::trigger::TriggerSettings& settings,
+                                                   const core::storage::SessionMetadata& request)
+{
+    if (isRecording()) return "a recording is running; stop it before arming the trigger";
+    if (auto refusal = refusalOf(m_mode)) return refusal;
+    std::string refusal;
+    auto reader = readerFor(settings.condition.quantity, refusal);
+    if (!reader) return refusal;
+    try {
+        m_gate->arm(settings, std::move(*reader), source().nominalSampleRate_hz(), m_options.recorderQueue_s);
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    m_trigger = settings;
+    m_triggerRequest = request;
+    m_triggerRequest.trigger = core::trigger::settingsText(settings);
+    m_triggeredStarted = 0;
+    return std::nullopt;
+}
+
+std::optional<RecordingSummary> LiveSession::disarmTrigger()
+{
+    std::optional<RecordingSummary> open;
+    if (m_trigger && m_recorder) open = finishRecording();
+    m_gate->disarm();
+    m_trigger.reset();
+    return open;
+}
+
+// The gate's sessions: one that has had its last sample is finished; one
+// that was triggered gets its recorder, its held samples and its trigger
+// event.
+void LiveSession::takeTriggered()
+{
+    if (!m_trigger) return;
+    if (m_gate->takeFinished()) m_triggeredSummaries.push_back(finishRecording());
+    if (m_recorder) return;
+    const auto pending = m_gate->pendingStart();
+    if (!pending) return;
+    auto request = m_triggerRequest;
+    request.subject = core::trigger::numberedSubject(m_triggerRequest.subject, m_triggeredStarted);
+    if (auto error = beginRecording(request)) {
+        // The store refuses: every trigger would meet the same refusal.
+        m_gate->disarm();
+        m_trigger.reset();
+        m_linkNotices.push_back({pending->triggerTime_s, "the trigger could not start a recording: " + *error});
+        return;
+    }
+    ++m_triggeredStarted;
+    m_gate->attach(m_recorder);
+    core::storage::SessionEvent trigger;
+    trigger.kind = core::EventKind::Trigger;
+    trigger.start_s = trigger.end_s = m_recorder->sessionTimeOf(pending->triggerTime_s);
+    trigger.note = m_trigger->condition.text();
+    m_recorder->addEvents({trigger});
+}
+
+std::optional<std::string> LiveSession::setLimits(std::vector<core::trigger::LimitSpec> limits)
+{
+    std::vector<LimitAlarms::Watched> watched;
+    for (auto& limit : limits) {
+        std::string refusal;
+        auto reader = readerFor(limit.quantity, refusal);
+        if (!reader) return refusal;
+        watched.push_back({std::move(limit), std::move(*reader)});
+    }
+    try {
+        m_limits->set(std::move(watched), source().nominalSampleRate_hz());
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    // Those raised under the old limits end here.
+    if (m_recorder)
+        for (const auto& raised : m_raisedAlarms) storeAlarm(raised, m_recorder->sessionTime_s());
+    m_raisedAlarms.clear();
+    return std::nullopt;
+}
+
+// Each alarm raised or cleared: told on the lists' clock; a clear stores
+// the alarm, from its raise, into the recording.
+void LiveSession::takeLimitAlarms()
+{
+    for (auto alarm : m_limits->take()) {
+        const auto same = [&alarm](const LimitAlarm& raised) {
+            return raised.change.severity == alarm.change.severity && raised.limit.text() == alarm.limit.text();
+        };
+        if (alarm.change.raised) {
+            m_raisedAlarms.push_back(alarm);
+        } else if (const auto raised = std::ranges::find_if(m_raisedAlarms, same); raised != m_raisedAlarms.end()) {
+            if (m_recorder) storeAlarm(*raised, m_recorder->sessionTimeOf(alarm.time_s));
+            m_raisedAlarms.erase(raised);
+        }
+        alarm.time_s = listTime_s(alarm.time_s);
+        m_alarmsTold.push_back(std::move(alarm));
+    }
+}
+
+// An alarm as the recording keeps it: from its raise (or the recording's
+// start) to `end_s`, naming its limit.
+void LiveSession::storeAlarm(const LimitAlarm& raised, double end_s)
+{
+    if (!m_recorder->acquisitionOrigin_s()) return;  // before the first sample there is nothing to mark
+    const double start_s = std::max(0.0, m_recorder->sessionTimeOf(raised.time_s));
+    if (start_s > end_s) return;  // raised after the recording's last sample
+    m_recorder->addEvents(
+        {core::storage::alarmRecord(start_s, end_s, raised.text() + "; limit " + raised.limit.text())});
 }
 
 }  // namespace tactiscope::devices::session

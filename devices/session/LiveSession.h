@@ -42,10 +42,14 @@
 #include "core/modes/ChannelRoles.h"
 #include "core/sensors/SensorProfile.h"
 #include "core/storage/Recorder.h"
+#include "core/trigger/LimitWatch.h"
+#include "core/trigger/TriggerMachine.h"
 #include "devices/Acquisition.h"
 #include "devices/BlockSource.h"
+#include "devices/session/LimitAlarms.h"
 #include "devices/session/LiveModeUnit.h"
 #include "devices/session/LiveRecords.h"
+#include "devices/session/TriggerGate.h"
 
 #include <cstdint>
 #include <map>
@@ -170,6 +174,37 @@ public:
     // An operator's marker at a session time; false when not recording.
     bool addMarker(double time_s, const std::string& note);
 
+    // Hands-free recording: armed, the trigger (core/trigger) starts a
+    // recording at each start of its condition on a device channel or a
+    // quantity of the mode (quantities()), with `pre_s` of the stream
+    // before the trigger instant, and ends it `post_s` after; each carries
+    // its trigger and a `trigger` event at its instant, and `request`'s
+    // metadata with the subject numbered on (door-17, door-18, …). Refused
+    // while recording by hand, for a quantity nobody has, or for settings
+    // the rules refuse: the reason. Disarming ends an open session as complete.
+    std::optional<std::string> armTrigger(const core::trigger::TriggerSettings& settings,
+                                          const core::storage::SessionMetadata& request);
+    std::optional<RecordingSummary> disarmTrigger();
+    bool triggerArmed() const { return m_gate->armed(); }
+    TriggerStatus triggerStatus() const { return m_gate->status(); }
+    // The triggered sessions ended since the last call, in order.
+    std::vector<RecordingSummary> takeTriggeredSummaries() { return std::exchange(m_triggeredSummaries, {}); }
+
+    // Limit alarms on device channels or quantities of the mode (replacing
+    // those set before; none: no alarms). Each alarm raised or cleared is
+    // told (takeAlarms()), and while recording stored as an `alarm` event
+    // from its raise to its clear (or the recording's end) naming its
+    // limit. Refused for a quantity nobody has: the reason.
+    std::optional<std::string> setLimits(std::vector<core::trigger::LimitSpec> limits);
+    std::vector<core::trigger::LimitSpec> limits() const { return m_limits->limits(); }
+    // The alarms raised or cleared since the last call, times on the
+    // lists' clock; and those raised now.
+    std::vector<LimitAlarm> takeAlarms() { return std::exchange(m_alarmsTold, {}); }
+    const std::vector<LimitAlarm>& raisedAlarms() const { return m_raisedAlarms; }
+    // The names a trigger or limit may watch: the device's channels, then
+    // the current mode's quantities, each with its unit.
+    std::vector<std::pair<std::string, std::string>> watchableQuantities() const;
+
     // The owner's periodic call: takes the processors' completed defects and
     // presses into the lists below and, while recording, into the store.
     // A recording the disk stopped ends here; its summary is returned.
@@ -201,6 +236,12 @@ public:
 
 private:
     std::optional<std::string> build(core::Mode mode, bool inheritZero = true);
+    std::optional<std::string> beginRecording(const core::storage::SessionMetadata& request);
+    std::optional<QuantityReader> readerFor(const std::string& quantity, std::string& refusal) const;
+    void refreshReaders();
+    void takeTriggered();
+    void takeLimitAlarms();
+    void storeAlarm(const LimitAlarm& raised, double end_s);
     core::RoleAssignment effectiveRoles(const std::vector<core::ChannelDescriptor>& device) const;
     std::optional<std::string> rebuildChannels();
     void buildAll();
@@ -220,6 +261,8 @@ private:
     std::unique_ptr<Acquisition> m_acquisition;
     std::shared_ptr<core::LiveBuffer> m_buffer;
     std::shared_ptr<core::storage::RecordingTap> m_tap;
+    std::shared_ptr<TriggerGate> m_gate;
+    std::shared_ptr<LimitAlarms> m_limits;
     std::vector<core::ChannelDescriptor> m_channels;  // the source's, with the roles given
     // A slot per mode in the acquisition, made before it streams; a unit
     // rebuilt goes into its mode's slot while the device streams.
@@ -234,6 +277,13 @@ private:
     std::vector<std::string> m_problems;
     std::vector<LinkNotice> m_linkNotices;
     double m_recordingStartHost_s = 0.0;  // steady clock
+    // The trigger armed: its settings and the metadata its sessions take.
+    std::optional<core::trigger::TriggerSettings> m_trigger;
+    core::storage::SessionMetadata m_triggerRequest;
+    unsigned m_triggeredStarted = 0;
+    std::vector<RecordingSummary> m_triggeredSummaries;
+    std::vector<LimitAlarm> m_alarmsTold;
+    std::vector<LimitAlarm> m_raisedAlarms;  // as raised: stream times
 };
 
 }  // namespace tactiscope::devices::session

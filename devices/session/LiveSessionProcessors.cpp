@@ -110,6 +110,7 @@ std::optional<std::string> LiveSession::build(core::Mode mode, bool inheritZero)
         m_units[mode] = std::move(built);
     else
         m_units.erase(mode);
+    if (mode == m_mode) refreshReaders();  // a trigger or limit on its quantities reads the new processor
     if (!refused.empty()) return refused;
     return std::nullopt;
 }

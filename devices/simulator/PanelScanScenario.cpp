@@ -41,7 +41,21 @@ PanelScanScenario::PanelScanScenario(const PanelScanParameters& parameters)
 
 double PanelScanScenario::probePosition_m(double t_s) const
 {
-    return m_p.strokeAmplitude_m * std::sin(2.0 * std::numbers::pi * m_p.strokeFrequency_hz * t_s);
+    const double omega = 2.0 * std::numbers::pi * m_p.strokeFrequency_hz;
+    if (m_p.restBetweenPanels_s <= 0.0) return m_p.strokeAmplitude_m * std::sin(omega * t_s);
+    const double stroke_s = 1.0 / m_p.strokeFrequency_hz;
+    const double phase_s = std::fmod(t_s, stroke_s + m_p.restBetweenPanels_s);
+    return -m_p.strokeAmplitude_m * (phase_s < stroke_s ? std::cos(omega * phase_s) : 1.0);
+}
+
+double PanelScanScenario::probeAcceleration_m_s2(double t_s) const
+{
+    const double omega = 2.0 * std::numbers::pi * m_p.strokeFrequency_hz;
+    // Both motions are harmonic, x'' = −ω²x, while the probe moves; at rest it has none.
+    if (m_p.restBetweenPanels_s > 0.0 &&
+        std::fmod(t_s, 1.0 / m_p.strokeFrequency_hz + m_p.restBetweenPanels_s) >= 1.0 / m_p.strokeFrequency_hz)
+        return 0.0;
+    return -omega * omega * probePosition_m(t_s);
 }
 
 double PanelScanScenario::inclination_rad(double x_m) const
@@ -59,7 +73,6 @@ double PanelScanScenario::inclination_rad(double x_m) const
 
 void PanelScanScenario::generate(core::SampleBlock& block)
 {
-    const double omega = 2.0 * std::numbers::pi * m_p.strokeFrequency_hz;
     const double bSign = m_p.faceToFace ? -1.0 : 1.0;
     auto a = block.channel(0);
     auto b = block.channel(1);
@@ -67,7 +80,7 @@ void PanelScanScenario::generate(core::SampleBlock& block)
         const double t_s = static_cast<double>(m_nextSample) / m_p.sampleRate_hz;
         const double xA = probePosition_m(t_s);
         const double xB = xA - m_p.cantileverSpacing_m;
-        const double acceleration = -omega * omega * xA;  // of x(t) = X·sin(ωt)
+        const double acceleration = probeAcceleration_m_s2(t_s);
 
         const double inclinationA = inclination_rad(xA);
         const double inclinationB = inclination_rad(xB);

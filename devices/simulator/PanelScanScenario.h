@@ -12,6 +12,9 @@
 //   adaptation time constant (the paper's "responds only to temporal change");
 // - the fluid's inertia adds a strain proportional to the probe acceleration,
 //   common to both cantilevers (the paper's Fig. 6 shows it at reversals);
+// - on a panel line, a rest between panels: x(t) = −X·cos(2π f t) for one
+//   stroke (from a reversal, so the probe stops where it is at rest), then
+//   x = −X, still, until the next panel;
 // - independent white Gaussian noise on each gauge;
 // - face-to-face gauges invert the sign of b, as in the paper's prototype.
 #pragma once
@@ -39,6 +42,11 @@ struct PanelScanParameters {
     double strainPerAcceleration_s2_per_m = 1e-5;
     double noiseSigma = 0.5e-6;  // strain, per gauge
     bool faceToFace = false;
+    // A panel line (0: one panel stroked back and forth for ever): each
+    // panel is stroked once, from one end of the stroke over the dent to the
+    // other end and back, then the probe rests there, lifted, this long
+    // while the next panel comes.
+    double restBetweenPanels_s = 0.0;
     std::uint64_t seed = 1;
 };
 
@@ -54,8 +62,10 @@ public:
     void generate(core::SampleBlock& block) override;
 
     const PanelScanParameters& parameters() const { return m_p; }
-    // Probe (cantilever A) position at time t, in metres from the stroke centre.
+    // Probe (cantilever A) position at time t, in metres from the stroke
+    // centre, and its acceleration.
     double probePosition_m(double t_s) const;
+    double probeAcceleration_m_s2(double t_s) const;
 
 private:
     double inclination_rad(double x_m) const;

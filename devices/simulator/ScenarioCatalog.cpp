@@ -10,15 +10,16 @@ namespace tactiscope::devices::simulator {
 
 std::vector<std::string> scenarioIds()
 {
-    return {kPanelScanScenario,  kPalpationScenario,       "capacitive-weights",
+    return {kPanelScanScenario,  kPanelLineScenario,       kPalpationScenario,      "capacitive-weights",
             "gauge-calibration", "gauge-calibration-soft", "capacitive-calibration"};
 }
 
 std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64_t seed, std::optional<double> rate_hz)
 {
-    if (id == kPanelScanScenario) {
+    if (id == kPanelScanScenario || id == kPanelLineScenario) {
         PanelScanParameters parameters;
         parameters.seed = seed;
+        if (id == kPanelLineScenario) parameters.restBetweenPanels_s = kPanelLineRest_s;
         if (rate_hz) parameters.sampleRate_hz = *rate_hz;
         return std::make_unique<PanelScanScenario>(parameters);
     }

@@ -16,6 +16,10 @@ namespace tactiscope::devices::simulator {
 // The scenarios of the two hand-held probes are named after their modes.
 inline const std::string kPanelScanScenario{core::toString(core::Mode::PanelScan)};
 inline const std::string kPalpationScenario{core::toString(core::Mode::Palpation)};
+// Panels passing a station, each stroked once (2 s), then 3 s at rest
+// while the next comes: a triggered recording's "one session per panel".
+inline const std::string kPanelLineScenario{"panel-line"};
+inline constexpr double kPanelLineRest_s = 3.0;
 
 std::vector<std::string> scenarioIds();
 

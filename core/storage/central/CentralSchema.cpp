@@ -107,6 +107,12 @@ CREATE TABLE IF NOT EXISTS events (
     note          TEXT NOT NULL DEFAULT ''
 );
 CREATE INDEX IF NOT EXISTS events_by_session ON events (session_id, analysis, start_s);
+-- Schema 6: triggered recordings: the trigger a session was cut by, and
+-- the instant its condition began as a 'trigger' event.
+ALTER TABLE events DROP CONSTRAINT IF EXISTS events_kind_check;
+ALTER TABLE events ADD CONSTRAINT events_kind_check
+    CHECK (kind IN ('defect', 'contact', 'press', 'alarm', 'marker', 'trigger'));
+ALTER TABLE sessions ADD COLUMN IF NOT EXISTS trigger_setup TEXT NOT NULL DEFAULT '';
 
 CREATE TABLE IF NOT EXISTS readings (
     id             BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY,

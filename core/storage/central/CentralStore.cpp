@@ -25,7 +25,9 @@ const std::string kSummaryQuery =
     "SELECT id, uuid, mode, subject, operator, site, notes, device_model, device_serial, device_firmware, "
     "profile_json, calibrations_json, started_utc, coalesce(ended_utc, ''), status, verdict, app_version, "
     "coalesce((SELECT sample_rate_hz FROM channels WHERE session_id = s.id AND position = 0), 0), " +
-    kSampleEnd + ", (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live'), station, station_id " +
+    kSampleEnd +
+    ", (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live'), station, station_id, "
+    "trigger_setup " +
     "FROM sessions s WHERE complete ";
 
 SessionSummary summaryFrom(const PgResult& r, int row)
@@ -43,7 +45,8 @@ SessionSummary summaryFrom(const PgResult& r, int row)
                   r.text(row, 8),
                   r.text(row, 9),
                   r.text(row, 10),
-                  r.text(row, 11)};
+                  r.text(row, 11),
+                  r.text(row, 22)};
     s.startedUtc = r.text(row, 12);
     s.endedUtc = r.text(row, 13);
     s.status = sessionStatusFromString(r.text(row, 14)).value_or(SessionStatus::Interrupted);

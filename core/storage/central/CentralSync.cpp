@@ -144,12 +144,13 @@ private:
         // No verdict: the server derives it from the trail sent with it.
         p.text(std::string(toString(s.status)));
         p.text(m.deviceModel).text(m.deviceSerial).text(m.deviceFirmware).text(m.profileJson);
-        p.text(m.calibrationsJson).text(s.appVersion).int64(s.id);
+        p.text(m.calibrationsJson).text(s.appVersion).int64(s.id).text(m.trigger);
         return m_db
             .query("INSERT INTO sessions (uuid, station, mode, subject, operator, site, notes, started_utc, ended_utc, "
                    "status, device_model, device_serial, device_firmware, profile_json, calibrations_json, "
-                   "app_version, station_id) VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14, $15, "
-                   "$16, $17) "
+                   "app_version, station_id, trigger_setup) VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, "
+                   "$13, "
+                   "$14, $15, $16, $17, $18) "
                    "RETURNING id",
                    p)
             .int64(0, 0);

@@ -18,6 +18,13 @@ public:
     explicit PanelScanUnit(const LiveUnitSetup& setup);
 
     std::shared_ptr<core::BlockSink> sink() const override { return m_detection; }
+    // The detector's output: its decision (-1, 0, +1) and both partial correlations.
+    std::vector<LiveQuantity> quantities() const override
+    {
+        return {{"decision", "", m_detection->output(), 0},
+                {"r_ab", "", m_detection->output(), 1},
+                {"r_ba", "", m_detection->output(), 2}};
+    }
     std::optional<std::string> tare() override;
     void startRecording(core::storage::Recorder& recorder) override;
     void take(const LiveTake& take) override;

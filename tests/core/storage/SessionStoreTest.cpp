@@ -63,7 +63,8 @@ TEST_F(SessionStoreTest, SessionsChannelsSamplesAndGapsRoundTrip)
                                  "SN42",
                                  "1.2.0",
                                  R"({"profile":"x"})",
-                                 R"([{"id":1}])"};
+                                 R"([{"id":1}])",
+                                 ""};
         id = store.beginSession(metadata, kChannels, 500.0);
         // Samples 0–99, then 30 lost (100–129), then 130–229 in three blocks.
         store.appendBlocks(id, std::vector{blockAt(0, 60), blockAt(60, 40)});

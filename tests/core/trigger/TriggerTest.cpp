@@ -144,3 +144,30 @@ TEST(TriggerMachine, WindowsAndNoValues)
     EXPECT_THROW(TriggerMachine(settings("x>1", -1.0, 0.0), 100.0), std::invalid_argument);
     EXPECT_THROW(TriggerMachine(settings("x>1", 0.0, 0.0, 0.0, 0), 100.0), std::invalid_argument);
 }
+
+TEST(TriggerMachine, SubjectsAreNumberedOnFromTheFirstOnes)
+{
+    using tactiscope::core::trigger::numberedSubject;
+    EXPECT_EQ(numberedSubject("door-17", 0), "door-17");
+    EXPECT_EQ(numberedSubject("door-17", 1), "door-18");
+    EXPECT_EQ(numberedSubject("door-17", 5), "door-22");
+    EXPECT_EQ(numberedSubject("panel-009", 1), "panel-010");
+    EXPECT_EQ(numberedSubject("panel-099", 1), "panel-100");
+    EXPECT_EQ(numberedSubject("panel", 0), "panel");
+    EXPECT_EQ(numberedSubject("panel", 1), "panel-2");
+    EXPECT_EQ(numberedSubject("panel", 2), "panel-3");
+    EXPECT_EQ(numberedSubject("", 3), "");
+    EXPECT_EQ(numberedSubject("42", 1), "43");
+    // A run of digits too long to count is part of a name.
+    EXPECT_EQ(numberedSubject("lot-1234567890123456789012", 1), "lot-1234567890123456789012-2");
+}
+
+TEST(TriggerMachine, TheSettingsReadAsTheRecordKeepsThem)
+{
+    using namespace tactiscope::core::trigger;
+    TriggerSettings settings;
+    settings.condition = *parseTrigger("a>20e-6").condition;
+    settings.pre_s = 0.5;
+    settings.post_s = 1.0;
+    EXPECT_EQ(settingsText(settings), "a>2e-05, pre 0.5 s, post 1 s, hold-off 0 s");
+}

@@ -1,0 +1,108 @@
+// WatchOptions: the trigger's and the limits' options, checked.
+#include "WatchOptions.h"
+
+#include "CliSupport.h"
+
+namespace tactiscope::cli {
+
+QList<QCommandLineOption> watchOptions()
+{
+    return {
+        {QStringLiteral("trigger"),
+         QStringLiteral("Record only when CONDITION begins, one session per trigger: CHANNEL>LEVEL, <, "
+                        "'CHANNEL rising LEVEL', 'falling', 'inside A..B', 'outside A..B'; CHANNEL a channel or a "
+                        "mode quantity (force, displacement, decision, …), in SI units."),
+         QStringLiteral("CONDITION")},
+        {QStringLiteral("pre"), QStringLiteral("With --trigger: seconds kept before the trigger (default 0)."),
+         QStringLiteral("S")},
+        {QStringLiteral("post"),
+         QStringLiteral("With --trigger: seconds kept after the condition clears (an edge: after it; default 0)."),
+         QStringLiteral("S")},
+        {QStringLiteral("hold-off"),
+         QStringLiteral("With --trigger: seconds after a session before the next may trigger (default 0)."),
+         QStringLiteral("S")},
+        {QStringLiteral("sessions"),
+         QStringLiteral("With --trigger: record N sessions, then stop (default 1); the subject is numbered on "
+                        "(door-17, door-18, …)."),
+         QStringLiteral("N")},
+        {QStringLiteral("rearm"), QStringLiteral("With --trigger: re-arm after every session until stopped.")},
+        {QStringLiteral("limit"),
+         QStringLiteral("Alarm limits, repeatable: QUANTITY>warning:W,critical:C (or <; either level alone), in SI "
+                        "units; alarms are printed and stored as alarm events."),
+         QStringLiteral("LIMIT")},
+        {QStringLiteral("stop-on"),
+         QStringLiteral("critical: end the recording at the first critical alarm (exit 1, data kept)."),
+         QStringLiteral("critical")},
+    };
+}
+
+std::optional<WatchOptions> parseWatchOptions(const QCommandLineParser& parser, QString& error)
+{
+    WatchOptions options;
+    const auto seconds = [&](const char* name, double& into) {
+        if (!parser.isSet(QLatin1String(name))) return true;
+        const auto value = parseNumber(parser.value(QLatin1String(name)));
+        if (!value || *value < 0.0) {
+            error = QStringLiteral("--%1 must be 0 or more seconds").arg(QLatin1String(name));
+            return false;
+        }
+        into = *value;
+        return true;
+    };
+    if (parser.isSet(QStringLiteral("trigger"))) {
+        const auto parsed = core::trigger::parseTrigger(parser.value(QStringLiteral("trigger")).toStdString());
+        if (!parsed.condition) {
+            error = QStringLiteral("--trigger: %1").arg(QString::fromStdString(parsed.error));
+            return std::nullopt;
+        }
+        core::trigger::TriggerSettings settings;
+        settings.condition = *parsed.condition;
+        if (!seconds("pre", settings.pre_s) || !seconds("post", settings.post_s) ||
+            !seconds("hold-off", settings.holdOff_s))
+            return std::nullopt;
+        if (parser.isSet(QStringLiteral("sessions")) && parser.isSet(QStringLiteral("rearm"))) {
+            error = QStringLiteral("give --sessions N or --rearm, not both");
+            return std::nullopt;
+        }
+        settings.sessions = 1u;
+        if (parser.isSet(QStringLiteral("sessions"))) {
+            bool ok = false;
+            const uint count = parser.value(QStringLiteral("sessions")).toUInt(&ok);
+            if (!ok || count == 0) {
+                error = QStringLiteral("--sessions must be a whole number of 1 or more");
+                return std::nullopt;
+            }
+            settings.sessions = count;
+        }
+        if (parser.isSet(QStringLiteral("rearm"))) settings.sessions.reset();
+        options.trigger = settings;
+    } else {
+        for (const char* name : {"pre", "post", "hold-off", "sessions", "rearm"})
+            if (parser.isSet(QLatin1String(name))) {
+                error = QStringLiteral("--%1 needs --trigger").arg(QLatin1String(name));
+                return std::nullopt;
+            }
+    }
+    for (const QString& text : parser.values(QStringLiteral("limit"))) {
+        const auto parsed = core::trigger::parseLimit(text.toStdString());
+        if (!parsed.limit) {
+            error = QStringLiteral("--limit: %1").arg(QString::fromStdString(parsed.error));
+            return std::nullopt;
+        }
+        options.limits.push_back(*parsed.limit);
+    }
+    if (parser.isSet(QStringLiteral("stop-on"))) {
+        if (parser.value(QStringLiteral("stop-on")) != QStringLiteral("critical")) {
+            error = QStringLiteral("--stop-on takes critical");
+            return std::nullopt;
+        }
+        if (options.limits.empty()) {
+            error = QStringLiteral("--stop-on critical needs a --limit with a critical level");
+            return std::nullopt;
+        }
+        options.stopOnCritical = true;
+    }
+    return options;
+}
+
+}  // namespace tactiscope::cli
