@@ -36,6 +36,7 @@ QString scenarioTitle(const std::string& id)
     if (id == "gauge-calibration") return DevicePanel::tr("Gauge-factor rig — stiff beam");
     if (id == "gauge-calibration-soft") return DevicePanel::tr("Gauge-factor rig — soft beam");
     if (id == "capacitive-calibration") return DevicePanel::tr("Capacitive beam — calibration rig");
+    if (id == devices::simulator::kCapacitiveOverloadScenario) return DevicePanel::tr("Capacitive beam — overloaded");
     return QString::fromStdString(id);
 }
 

@@ -16,6 +16,7 @@
 #include <QLocale>
 #include <QTextStream>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -195,6 +196,13 @@ int runRecord(const QStringList& arguments)
     session.setSite(metadata.site);
     if (const auto refusal = session.setLimits(watch->limits)) {
         printError(QStringLiteral("--limit: %1").arg(QString::fromStdString(*refusal)));
+        return kExitUsage;
+    }
+    if (watch->stopOnCritical && std::ranges::none_of(session.limits(), [](const core::sensors::SensorLimit& l) {
+            return l.limit.critical.has_value();
+        })) {
+        printError(QStringLiteral("--stop-on critical: no limit watched here has a critical level; give one with "
+                                  "--limit QUANTITY>critical:C"));
         return kExitUsage;
     }
     // Recording from the first block (attached before the device streams),

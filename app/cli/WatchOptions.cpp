@@ -28,7 +28,9 @@ QList<QCommandLineOption> watchOptions()
         {QStringLiteral("rearm"), QStringLiteral("With --trigger: re-arm after every session until stopped.")},
         {QStringLiteral("limit"),
          QStringLiteral("Alarm limits, repeatable: QUANTITY>warning:W,critical:C (or <; either level alone), in SI "
-                        "units; alarms are printed and stored as alarm events."),
+                        "units, besides the probe's own (its profile's or its sensor model's, e.g. a capacitive "
+                        "beam's safe force), whose limit on the same quantity and side it replaces; alarms are "
+                        "printed and stored as alarm events."),
          QStringLiteral("LIMIT")},
         {QStringLiteral("stop-on"),
          QStringLiteral("critical: end the recording at the first critical alarm (exit 1, data kept)."),
@@ -94,10 +96,6 @@ std::optional<WatchOptions> parseWatchOptions(const QCommandLineParser& parser, 
     if (parser.isSet(QStringLiteral("stop-on"))) {
         if (parser.value(QStringLiteral("stop-on")) != QStringLiteral("critical")) {
             error = QStringLiteral("--stop-on takes critical");
-            return std::nullopt;
-        }
-        if (options.limits.empty()) {
-            error = QStringLiteral("--stop-on critical needs a --limit with a critical level");
             return std::nullopt;
         }
         options.stopOnCritical = true;

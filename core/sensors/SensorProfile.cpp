@@ -156,6 +156,30 @@ RoleAssignment readRoles(ObjectReader& reader)
     }
 }
 
+// "limits": ["QUANTITY>warning:W,critical:C", …], each read as the
+// command line's --limit is.
+ProfileLimits readLimits(ObjectReader& reader)
+{
+    if (!reader.has("limits")) return std::nullopt;
+    const Json& limits = reader.require("limits");
+    if (!limits.is_array()) reader.fail("limits", "must be a list of limits such as \"force>warning:0.0005\"");
+    std::vector<trigger::LimitSpec> specs;
+    for (const auto& limit : limits) {
+        if (!limit.is_string()) reader.fail("limits", "each limit must be a text such as \"force>warning:0.0005\"");
+        const auto parsed = trigger::parseLimit(limit.get<std::string>());
+        if (!parsed.limit) reader.fail("limits", parsed.error);
+        specs.push_back(*parsed.limit);
+    }
+    return specs;
+}
+
+Json limitsJson(const std::vector<trigger::LimitSpec>& limits)
+{
+    Json json = Json::array();
+    for (const auto& limit : limits) json.push_back(limit.text());
+    return json;
+}
+
 Json rolesJson(const RoleAssignment& roles)
 {
     Json json = Json::object();
@@ -202,7 +226,7 @@ SensorProfile parseSensorProfile(std::string_view text, const std::string& sourc
     }
     if (kind == "compliance_pair") {
         CompliancePairProfile profile{name, readNestedBeam(reader.object("high")), readNestedBeam(reader.object("low")),
-                                      readRoles(reader)};
+                                      readRoles(reader), readLimits(reader)};
         reader.rejectUnknownKeys();
         const double kh = CantileverBeam(profile.high).stiffness_n_per_m();
         const double kl = CantileverBeam(profile.low).stiffness_n_per_m();
@@ -213,7 +237,7 @@ SensorProfile parseSensorProfile(std::string_view text, const std::string& sourc
         return profile;
     }
     if (kind == "capacitive_beam") {
-        CapacitiveBeamProfile profile{name, readCapacitiveBeam(reader), readRoles(reader)};
+        CapacitiveBeamProfile profile{name, readCapacitiveBeam(reader), readRoles(reader), readLimits(reader)};
         reader.rejectUnknownKeys();
         return profile;
     }
@@ -245,6 +269,7 @@ std::string toJson(const SensorProfile& profile)
                     {"high", geometryJson(pair->high)},
                     {"low", geometryJson(pair->low)}};
         if (!pair->roles.empty()) json["roles"] = rolesJson(pair->roles);
+        if (pair->limits) json["limits"] = limitsJson(*pair->limits);
     } else if (const auto* capacitive = std::get_if<CapacitiveBeamProfile>(&profile)) {
         const auto& g = capacitive->geometry;
         Json layers = Json::array();
@@ -264,6 +289,7 @@ std::string toJson(const SensorProfile& profile)
                     {"c0_pf", g.c0_f * 1e12}};
         if (g.doubleLayer_f) json["c_edl_pf"] = *g.doubleLayer_f * 1e12;
         if (!capacitive->roles.empty()) json["roles"] = rolesJson(capacitive->roles);
+        if (capacitive->limits) json["limits"] = limitsJson(*capacitive->limits);
     }
     return json.dump(2);
 }

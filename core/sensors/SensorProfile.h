@@ -21,13 +21,16 @@
 #include "core/modes/ChannelRoles.h"
 #include "core/sensors/CantileverBeam.h"
 #include "core/sensors/CapacitiveBeam.h"
+#include "core/trigger/LimitWatch.h"
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 namespace tactiscope::core::sensors {
 
@@ -36,17 +39,24 @@ struct CantileverProfile {
     CantileverGeometry geometry;
 };
 
+// A probe's limit alarms (core/trigger/LimitWatch.h), as "limits":
+// ["force>warning:0.0005,critical:0.0008", …]; none given: the sensor
+// model's (core/sensors/SensorLimits.h); an empty list: no alarms.
+using ProfileLimits = std::optional<std::vector<trigger::LimitSpec>>;
+
 struct CompliancePairProfile {
     std::string name;
     CantileverGeometry high;
     CantileverGeometry low;
     RoleAssignment roles{};  // by channel name; empty: the device's own
+    ProfileLimits limits{};
 };
 
 struct CapacitiveBeamProfile {
     std::string name;
     CapacitiveBeamGeometry geometry;
     RoleAssignment roles{};
+    ProfileLimits limits{};
 };
 
 using SensorProfile = std::variant<CantileverProfile, CompliancePairProfile, CapacitiveBeamProfile>;

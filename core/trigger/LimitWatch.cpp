@@ -5,6 +5,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace tactiscope::core::trigger {
@@ -69,12 +70,15 @@ ParsedLimit parseLimit(std::string_view text)
 
 std::string LimitChange::text(const LimitSpec& spec, const std::string& unit) const
 {
-    const auto withUnit = [&unit](double v) { return text::formatShortest(v) + (unit.empty() ? "" : " " + unit); };
+    const std::string suffix = unit.empty() ? "" : " " + unit;
     if (!raised)
         return spec.quantity + " back " + (spec.above ? "below" : "above") + " its " + toString(severity) + " limit " +
-               withUnit(level);
+               text::formatShortest(level) + suffix;
+    // The value to four digits: enough to see how far past the level it is.
+    char measured[32];
+    std::snprintf(measured, sizeof measured, "%.4g", value);
     return spec.quantity + " " + (spec.above ? "above" : "below") + " its " + toString(severity) + " limit " +
-           withUnit(level) + " (" + withUnit(value) + ")";
+           text::formatShortest(level) + suffix + " (" + measured + suffix + ")";
 }
 
 LimitWatch::LimitWatch(LimitSpec spec, double sampleRate_hz)

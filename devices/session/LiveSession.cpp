@@ -47,6 +47,7 @@ LiveSession::LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions
     m_acquisition->addSink(m_gate);
     buildAll();
     m_mode = declaredMode();
+    applyLimits();  // the probe's own, from the start
 }
 
 // The units of every mode the channels feed, and none of the others.
@@ -97,6 +98,7 @@ std::optional<std::string> LiveSession::rebuildChannels()
     }
     buildAll();
     if (refusalOf(m_mode)) m_mode = declaredMode();
+    refreshReaders();
     startLists(LiveClock::SinceConnect);  // what the old roles found is not this setup's
     return std::nullopt;
 }
@@ -447,16 +449,59 @@ std::optional<QuantityReader> LiveSession::readerFor(const std::string& quantity
 
 // The trigger and the limits read the processors now running: after a
 // processor was rebuilt (another profile, calibration, roles) or the mode
-// changed. A quantity gone reads as no value.
+// changed. A quantity gone reads as no value; limits that changed with the
+// profile or the mode are set anew.
 void LiveSession::refreshReaders()
 {
     if (!m_gate) return;  // building the first processors
     std::string ignored;
     if (m_trigger) m_gate->replaceReader(readerFor(m_trigger->condition.quantity, ignored).value_or(QuantityReader()));
+    const auto wanted = wantedLimits();
+    const auto same = std::ranges::equal(wanted, m_effectiveLimits,
+                                         [](const auto& a, const auto& b) { return a.limit.text() == b.limit.text(); });
+    if (!same) return applyLimits();
     std::vector<QuantityReader> readers;
-    for (const auto& limit : m_limits->limits())
-        readers.push_back(readerFor(limit.quantity, ignored).value_or(QuantityReader()));
+    for (const auto& limit : m_effectiveLimits)
+        readers.push_back(readerFor(limit.limit.quantity, ignored).value_or(QuantityReader()));
     m_limits->replaceReaders(std::move(readers));
+}
+
+// The probe's limits for the current mode, each replaced by one given on
+// the same quantity and side, then the given ones.
+std::vector<core::sensors::SensorLimit> LiveSession::wantedLimits() const
+{
+    std::vector<core::sensors::SensorLimit> wanted;
+    if (const auto* probe = profile(m_mode)) wanted = core::sensors::profileLimits(*probe, m_channels);
+    std::erase_if(wanted, [this](const core::sensors::SensorLimit& own) {
+        return std::ranges::any_of(m_givenLimits, [&own](const core::trigger::LimitSpec& given) {
+            return given.quantity == own.limit.quantity && given.above == own.limit.above;
+        });
+    });
+    for (const auto& given : m_givenLimits) wanted.push_back({given, "given for this session"});
+    return wanted;
+}
+
+// The limits watched from now on; those raised under the old ones end
+// here (stored, while recording). A profile's limit on a quantity this
+// device does not have is told as a problem and not watched.
+void LiveSession::applyLimits()
+{
+    if (m_recorder)
+        for (const auto& raised : m_raisedAlarms) storeAlarm(raised, m_recorder->sessionTime_s());
+    m_raisedAlarms.clear();
+    std::vector<LimitAlarms::Watched> watched;
+    m_effectiveLimits.clear();
+    for (auto& limit : wantedLimits()) {
+        std::string refusal;
+        auto reader = readerFor(limit.limit.quantity, refusal);
+        if (!reader) {
+            m_problems.push_back("limit " + limit.limit.text() + " (" + limit.basis + ") is not watched: " + refusal);
+            continue;
+        }
+        watched.push_back({limit.limit, std::move(*reader)});
+        m_effectiveLimits.push_back(std::move(limit));
+    }
+    m_limits->set(std::move(watched), source().nominalSampleRate_hz());
 }
 
 std::optional<std::string> LiveSession::armTrigger(const core::trigger::TriggerSettings& settings,
@@ -518,22 +563,17 @@ void LiveSession::takeTriggered()
 
 std::optional<std::string> LiveSession::setLimits(std::vector<core::trigger::LimitSpec> limits)
 {
-    std::vector<LimitAlarms::Watched> watched;
-    for (auto& limit : limits) {
+    for (const auto& limit : limits) {
         std::string refusal;
-        auto reader = readerFor(limit.quantity, refusal);
-        if (!reader) return refusal;
-        watched.push_back({std::move(limit), std::move(*reader)});
+        if (!readerFor(limit.quantity, refusal)) return refusal;
+        try {
+            core::trigger::LimitWatch check(limit, source().nominalSampleRate_hz());
+        } catch (const std::invalid_argument& e) {
+            return e.what();
+        }
     }
-    try {
-        m_limits->set(std::move(watched), source().nominalSampleRate_hz());
-    } catch (const std::invalid_argument& e) {
-        return e.what();
-    }
-    // Those raised under the old limits end here.
-    if (m_recorder)
-        for (const auto& raised : m_raisedAlarms) storeAlarm(raised, m_recorder->sessionTime_s());
-    m_raisedAlarms.clear();
+    m_givenLimits = std::move(limits);
+    applyLimits();
     return std::nullopt;
 }
 

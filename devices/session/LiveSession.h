@@ -40,6 +40,7 @@
 #include "core/detector/DefectSites.h"
 #include "core/detector/DetectorParameters.h"
 #include "core/modes/ChannelRoles.h"
+#include "core/sensors/SensorLimits.h"
 #include "core/sensors/SensorProfile.h"
 #include "core/storage/Recorder.h"
 #include "core/trigger/LimitWatch.h"
@@ -190,13 +191,17 @@ public:
     // The triggered sessions ended since the last call, in order.
     std::vector<RecordingSummary> takeTriggeredSummaries() { return std::exchange(m_triggeredSummaries, {}); }
 
-    // Limit alarms on device channels or quantities of the mode (replacing
-    // those set before; none: no alarms). Each alarm raised or cleared is
-    // told (takeAlarms()), and while recording stored as an `alarm` event
-    // from its raise to its clear (or the recording's end) naming its
-    // limit. Refused for a quantity nobody has: the reason.
+    // Limit alarms on device channels or quantities of the mode: the
+    // probe's own (its profile's, else its sensor model's:
+    // core/sensors/SensorLimits.h) and those given here, which replace the
+    // probe's on the same quantity and side (replacing those given before).
+    // Each alarm raised or cleared is told (takeAlarms()), and while
+    // recording stored as an `alarm` event from its raise to its clear (or
+    // the recording's end) naming its limit. Refused for a quantity nobody
+    // has: the reason.
     std::optional<std::string> setLimits(std::vector<core::trigger::LimitSpec> limits);
-    std::vector<core::trigger::LimitSpec> limits() const { return m_limits->limits(); }
+    // The limits watched, each with where it comes from.
+    const std::vector<core::sensors::SensorLimit>& limits() const { return m_effectiveLimits; }
     // The alarms raised or cleared since the last call, times on the
     // lists' clock; and those raised now.
     std::vector<LimitAlarm> takeAlarms() { return std::exchange(m_alarmsTold, {}); }
@@ -239,6 +244,8 @@ private:
     std::optional<std::string> beginRecording(const core::storage::SessionMetadata& request);
     std::optional<QuantityReader> readerFor(const std::string& quantity, std::string& refusal) const;
     void refreshReaders();
+    void applyLimits();
+    std::vector<core::sensors::SensorLimit> wantedLimits() const;
     void takeTriggered();
     void takeLimitAlarms();
     void storeAlarm(const LimitAlarm& raised, double end_s);
@@ -282,6 +289,8 @@ private:
     core::storage::SessionMetadata m_triggerRequest;
     unsigned m_triggeredStarted = 0;
     std::vector<RecordingSummary> m_triggeredSummaries;
+    std::vector<core::trigger::LimitSpec> m_givenLimits;
+    std::vector<core::sensors::SensorLimit> m_effectiveLimits;
     std::vector<LimitAlarm> m_alarmsTold;
     std::vector<LimitAlarm> m_raisedAlarms;  // as raised: stream times
 };

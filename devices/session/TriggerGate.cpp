@@ -111,8 +111,9 @@ void TriggerGate::consume(const core::SampleBlock& block)
             m_sessions.push_back({*step.started, block.timeAt_s(trigger)});
         }
         if (step.ended) {
-            const auto open = std::ranges::find(m_sessions, step.ended->first,
-                                                [](const TriggeredSession& t) { return t.span.first; });
+            // By its trigger: its first sample may have moved on (a backlog overrun).
+            const auto open = std::ranges::find(m_sessions, step.ended->trigger,
+                                                [](const TriggeredSession& t) { return t.span.trigger; });
             if (open != m_sessions.end()) open->span.end = step.ended->end;
         }
     }

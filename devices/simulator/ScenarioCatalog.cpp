@@ -10,8 +10,8 @@ namespace tactiscope::devices::simulator {
 
 std::vector<std::string> scenarioIds()
 {
-    return {kPanelScanScenario,  kPanelLineScenario,       kPalpationScenario,      "capacitive-weights",
-            "gauge-calibration", "gauge-calibration-soft", "capacitive-calibration"};
+    return {kPanelScanScenario,  kPanelLineScenario,       kPalpationScenario,       "capacitive-weights",
+            "gauge-calibration", "gauge-calibration-soft", "capacitive-calibration", kCapacitiveOverloadScenario};
 }
 
 std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64_t seed, std::optional<double> rate_hz)
@@ -29,9 +29,13 @@ std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64
         if (rate_hz) parameters.sampleRate_hz = *rate_hz;
         return std::make_unique<PalpationScenario>(parameters);
     }
-    if (id == "capacitive-weights" || id == "capacitive-calibration") {
+    if (id == "capacitive-weights" || id == "capacitive-calibration" || id == kCapacitiveOverloadScenario) {
         CapacitiveWeightsParameters parameters;
         parameters.seed = seed;
+        if (id == kCapacitiveOverloadScenario) {
+            parameters.baseline_s = 2.0;
+            parameters.dwell_s = 0.5;
+        }
         if (rate_hz) parameters.sampleRate_hz = *rate_hz;
         if (id == "capacitive-calibration") parameters.protocol = WeightProtocol::Manual;
         return std::make_unique<CapacitiveWeightsScenario>(parameters);

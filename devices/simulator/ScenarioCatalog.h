@@ -20,6 +20,11 @@ inline const std::string kPalpationScenario{core::toString(core::Mode::Palpation
 // while the next comes: a triggered recording's "one session per panel".
 inline const std::string kPanelLineScenario{"panel-line"};
 inline constexpr double kPanelLineRest_s = 3.0;
+// The extra-soft capacitive beam overloaded: the weights of
+// capacitive-weights (10 to 150 mgf), half a second each, after 2 s
+// unloaded; past its safe force (0.6 mN warns, 0.96 mN is critical) from
+// 5 s and 6.5 s.
+inline const std::string kCapacitiveOverloadScenario{"capacitive-overload"};
 
 std::vector<std::string> scenarioIds();
 

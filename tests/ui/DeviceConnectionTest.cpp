@@ -232,9 +232,12 @@ TEST(DevicePanel, TheEmulatorChosenInThePanelStreamsThroughAPtyWithItsCounters)
     window.resize(1200, 760);
     window.show();
     auto* tree = child<QTreeWidget>(window, "sourceTree");
-    // "Emulator" is the second heading; its second entry is palpation.
-    QTreeWidgetItem* emulator = tree->topLevelItem(1)->child(1);
-    ASSERT_TRUE(emulator->text(0).startsWith(QStringLiteral("Palpation")));
+    // "Emulator" is the second heading; palpation is among its entries.
+    QTreeWidgetItem* heading = tree->topLevelItem(1);
+    QTreeWidgetItem* emulator = nullptr;
+    for (int i = 0; i < heading->childCount() && !emulator; ++i)
+        if (heading->child(i)->text(0).startsWith(QStringLiteral("Palpation"))) emulator = heading->child(i);
+    ASSERT_NE(emulator, nullptr);
     tree->setCurrentItem(emulator);
     QTest::mouseClick(child<QPushButton>(window, "connectButton"), Qt::LeftButton);
     ASSERT_TRUE(waitFor([&] { return window.isConnected(); }, 6000));

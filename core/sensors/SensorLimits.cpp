@@ -1,0 +1,85 @@
+// SensorLimits: the capacitive beam's force limits from the elastica, the
+// compliance probe's stiff-beam ADC limits.
+#include "core/sensors/SensorLimits.h"
+
+#include "core/sensors/LargeDeflection.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tactiscope::core::sensors {
+namespace {
+
+// Three significant digits, towards zero: a limit that reads as it is
+// written, and never later than the model's.
+double threeDigits(double value)
+{
+    const double scale = std::pow(10.0, 2 - std::floor(std::log10(std::abs(value))));
+    return std::trunc(value * scale) / scale;
+}
+
+std::vector<SensorLimit> capacitiveLimits(const CapacitiveBeamProfile& probe)
+{
+    const CapacitiveBeam beam(probe.geometry);
+    const auto stiffness = bendingStiffness(beam);
+    const double length_m = probe.geometry.beam.length_m;
+    trigger::LimitSpec force;
+    force.quantity = "force";
+    force.warning = threeDigits(forceAtModelError(stiffness, length_m, kWarningModelError));
+    force.critical = threeDigits(forceAtModelError(stiffness, length_m, kCriticalModelError));
+    return {{force, "where the beam's small-deflection model overstates its tip deflection by 2 % (warning) and "
+                    "5 % (critical)"}};
+}
+
+std::vector<SensorLimit> complianceLimits(const std::vector<ChannelDescriptor>& channels,
+                                          const straingauge::AdcSettings& adc)
+{
+    const auto stiff =
+        std::ranges::find_if(channels, [](const ChannelDescriptor& c) { return c.role == ChannelRole::StiffBeam; });
+    if (stiff == channels.end() || (stiff->unit != "count" && stiff->unit != "counts")) return {};
+    const double fullScale = straingauge::StrainGaugeChain(adc, {}).fullScaleCounts();
+    const std::string basis = "the stiff beam's ADC: 90 % of its full scale (warning) and the 99 % at which its "
+                              "force is clipped (critical)";
+    trigger::LimitSpec above;
+    above.quantity = stiff->name;
+    above.warning = std::floor(kAdcWarningFraction * fullScale);
+    above.critical = std::floor(kAdcCriticalFraction * fullScale);
+    std::vector<SensorLimit> limits{{above, basis}};
+    if (adc.bipolar) {
+        trigger::LimitSpec below = above;
+        below.above = false;
+        below.warning = -*above.warning;
+        below.critical = -*above.critical;
+        limits.push_back({below, basis});
+    }
+    return limits;
+}
+
+}  // namespace
+
+std::vector<SensorLimit> modelLimits(const SensorProfile& profile, const std::vector<ChannelDescriptor>& channels,
+                                     const straingauge::AdcSettings& adc)
+{
+    if (const auto* capacitive = std::get_if<CapacitiveBeamProfile>(&profile)) return capacitiveLimits(*capacitive);
+    if (std::holds_alternative<CompliancePairProfile>(profile)) return complianceLimits(channels, adc);
+    return {};
+}
+
+std::vector<SensorLimit> profileLimits(const SensorProfile& profile, const std::vector<ChannelDescriptor>& channels,
+                                       const straingauge::AdcSettings& adc)
+{
+    const auto* own = std::visit(
+        [](const auto& p) -> const ProfileLimits* {
+            if constexpr (requires { p.limits; })
+                return &p.limits;
+            else
+                return nullptr;
+        },
+        profile);
+    if (!own || !*own) return modelLimits(profile, channels, adc);
+    std::vector<SensorLimit> limits;
+    for (const auto& limit : **own) limits.push_back({limit, "the sensor profile's"});
+    return limits;
+}
+
+}  // namespace tactiscope::core::sensors

@@ -1,0 +1,141 @@
+// `record --trigger` and `record --limit/--stop-on` against `emulate`, both
+// real processes over a real pty, into a real store, checked against the
+// stored samples and the scenarios' known loads:
+// - a panel line (one stroke per panel, 3 s rest between panels): three
+//   sessions, door-17 to door-19, each with its trigger 0.5 s in (the
+//   first sample above 20 µε is sample 250, none before it is) and ending
+//   exactly 1 s (500 samples) after the last sample above the level;
+// - the capacitive beam overloaded: its model's limits (0.597 mN warning,
+//   0.956 mN critical: core/sensors/SensorLimits.h) are crossed when the
+//   70 mgf and 100 mgf steps settle, by hand at 5.04 s and 7.05 s (steps at
+//   2 + 0.5·k s, settling with τ = 0.4 s from the step before:
+//   t = t_k + τ·ln((F_k − F_{k−1}) / (F_k − limit))); the warning comes
+//   first, both are stored as alarm events naming their limit, and
+//   --stop-on critical ends the recording there with exit 1, data kept.
+#include "core/storage/SessionStore.h"
+#include "support/CliRunner.h"
+#include "support/EmulatorProcess.h"
+
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace tactiscope;
+using tactiscope::testing::recordEmulated;
+using tactiscope::testing::runCli;
+
+namespace {
+
+std::vector<core::storage::SessionEvent> eventsOfKind(core::storage::SessionStore& store, std::int64_t session,
+                                                      core::EventKind kind)
+{
+    auto events = store.events(session);
+    std::erase_if(events, [kind](const auto& e) { return e.kind != kind; });
+    return events;
+}
+
+}  // namespace
+
+TEST(TriggeredRecordCli, APanelLineGetsOneSessionPerPanelFromHalfASecondBeforeItsTriggerToASecondAfter)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath("line.tactiscope");
+    const auto result = recordEmulated(
+        dir.path(), db, QStringLiteral("panel-line"), 40,
+        {"--subject", "door-17", "--trigger", "a>20e-6", "--pre", "0.5", "--post", "1", "--sessions", "3"});
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    EXPECT_EQ(result.out.count(QStringLiteral("Recorded session ")), 3) << result.out.toStdString();
+    EXPECT_EQ(result.out.count(QStringLiteral(" 0 lost, 0 CRC errors")), 3) << result.out.toStdString();
+    EXPECT_TRUE(result.err.contains(QStringLiteral("triggered: session 3 of 3"))) << result.err.toStdString();
+
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto sessions = store.sessions();
+    ASSERT_EQ(sessions.size(), 3u);
+    std::vector<std::string> subjects;
+    for (const auto& s : sessions) subjects.push_back(s.metadata.subject);
+    std::ranges::sort(subjects);
+    EXPECT_EQ(subjects, (std::vector<std::string>{"door-17", "door-18", "door-19"}));
+    constexpr double kLevel = 20e-6;
+    for (const auto& session : sessions) {
+        SCOPED_TRACE(session.metadata.subject);
+        EXPECT_EQ(session.status, core::SessionStatus::Complete);
+        EXPECT_EQ(session.metadata.trigger, "a>2e-05, pre 0.5 s, post 1 s, hold-off 0 s");
+        EXPECT_TRUE(store.gaps(session.id).empty());
+        const auto triggers = eventsOfKind(store, session.id, core::EventKind::Trigger);
+        ASSERT_EQ(triggers.size(), 1u);
+        EXPECT_NEAR(triggers[0].start_s, 0.5, 1e-9);
+        EXPECT_EQ(triggers[0].note, "a>2e-05");
+        const auto a = store.readChannel(session.id, 0, 0, store.sampleCount(session.id));
+        ASSERT_GT(a.size(), 500u);
+        // The trigger sample is the first above the level, 0.5 s (250 samples) in.
+        const auto firstAbove = std::ranges::find_if(a, [](double v) { return v > kLevel; }) - a.begin();
+        EXPECT_EQ(firstAbove, 250);
+        // It ends 1 s (500 samples) after the condition clears: after the
+        // last sample above the level, the first that is not.
+        const auto lastAbove = static_cast<std::size_t>(
+            a.rend() - std::find_if(a.rbegin(), a.rend(), [](double v) { return v > kLevel; }) - 1);
+        EXPECT_EQ(a.size(), lastAbove + 1 + 500);
+    }
+}
+
+TEST(TriggeredRecordCli, AnOverloadedCapacitiveBeamWarnsThenIsCriticalAndStopOnCriticalKeepsTheData)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath("beam.tactiscope");
+    const auto result =
+        recordEmulated(dir.path(), db, QStringLiteral("capacitive-overload"), 30, {"--stop-on", "critical"});
+    EXPECT_EQ(result.exitCode, 1) << result.err.toStdString();
+    const auto warning = result.err.indexOf(QStringLiteral("warning: force above its warning limit 0.000597 N"));
+    const auto critical = result.err.indexOf(QStringLiteral("critical: force above its critical limit 0.000956 N"));
+    ASSERT_GE(warning, 0) << result.err.toStdString();
+    ASSERT_GT(critical, warning) << result.err.toStdString();
+    EXPECT_TRUE(result.err.contains(QStringLiteral("stopped on a critical alarm at ")));
+    EXPECT_TRUE(result.err.contains(QStringLiteral("the recording was kept")));
+    const auto id = tactiscope::testing::sessionIdIn(result.out);
+    ASSERT_GT(id, 0) << result.out.toStdString();
+
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto session = store.session(id);
+    ASSERT_TRUE(session);
+    EXPECT_EQ(session->status, core::SessionStatus::Complete);
+    // Stopped shortly after the critical alarm, not at --seconds.
+    EXPECT_LT(session->duration_s(), 9.0);
+    EXPECT_GT(session->duration_s(), 7.0);
+    const auto alarms = eventsOfKind(store, id, core::EventKind::Alarm);
+    ASSERT_EQ(alarms.size(), 2u);
+    const auto& warned = alarms[0].note.find("warning limit") != std::string::npos ? alarms[0] : alarms[1];
+    const auto& critic = &warned == &alarms[0] ? alarms[1] : alarms[0];
+    for (const auto* alarm : {&warned, &critic})
+        EXPECT_NE(alarm->note.find("limit force>warning:0.000597,critical:0.000956"), std::string::npos) << alarm->note;
+    EXPECT_NE(critic.note.find("critical limit"), std::string::npos);
+    EXPECT_NEAR(warned.start_s, 5.04, 0.15);
+    EXPECT_NEAR(critic.start_s, 7.05, 0.15);
+    EXPECT_NEAR(warned.end_s, session->duration_s(), 0.15);  // still raised at the stop
+}
+
+TEST(TriggeredRecordCli, BadTriggerAndLimitOptionsAreRefusedBeforeAnythingIsRecorded)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath("none.tactiscope");
+    const auto refused = [&](const QStringList& options, const QString& why) {
+        const auto result = runCli(QStringList{"record", "--port", dir.filePath("nothing"), "--db", db} + options);
+        EXPECT_EQ(result.exitCode, 2) << options.join(' ').toStdString();
+        EXPECT_TRUE(result.err.contains(why)) << result.err.toStdString();
+    };
+    refused({"--pre", "0.5"}, QStringLiteral("--pre needs --trigger"));
+    refused({"--trigger", "a>>1"}, QStringLiteral("--trigger: "));
+    refused({"--trigger", "a>1", "--sessions", "2", "--rearm"}, QStringLiteral("not both"));
+    refused({"--trigger", "a>1", "--sessions", "0"}, QStringLiteral("--sessions must be"));
+    refused({"--trigger", "a>1", "--post", "-1"}, QStringLiteral("--post must be 0 or more seconds"));
+    refused({"--limit", "force>warming:1"}, QStringLiteral("--limit: "));
+    refused({"--stop-on", "warning"}, QStringLiteral("--stop-on takes critical"));
+    EXPECT_FALSE(QFile::exists(db));
+
+    // A quantity this device does not have: its names are listed.
+    const auto unknown = recordEmulated(dir.path(), db, QStringLiteral("panel-scan"), 5, {"--trigger", "force>1"});
+    EXPECT_EQ(unknown.exitCode, 2);
+    EXPECT_TRUE(unknown.err.contains(QStringLiteral("nothing called 'force' to watch"))) << unknown.err.toStdString();
+    EXPECT_TRUE(unknown.err.contains(QStringLiteral("a, b, decision, r_ab, r_ba"))) << unknown.err.toStdString();
+}
