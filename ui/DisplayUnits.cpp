@@ -1,7 +1,11 @@
 // Display scaling per channel kind.
 #include "ui/DisplayUnits.h"
 
+#include "ui/NumberText.h"
+
 #include "ui/modes/ModeUi.h"
+
+#include <algorithm>
 
 namespace tactiscope::ui {
 
@@ -37,6 +41,18 @@ DisplayUnit laneUnit(const core::ChannelDescriptor& lane, core::Mode mode)
     DisplayUnit unit = displayUnitFor(lane);
     unit.quantity = QString::fromStdString(lane.name);
     return unit;
+}
+
+DisplayUnit watchedUnit(const std::vector<core::ChannelDescriptor>& watchable, const std::string& name, core::Mode mode)
+{
+    const auto found = std::ranges::find(watchable, name, &core::ChannelDescriptor::name);
+    return found != watchable.end() ? laneUnit(*found, mode) : DisplayUnit();
+}
+
+QString watchedText(double si, const DisplayUnit& unit)
+{
+    const QString number = typedText(si * unit.scale);
+    return unit.symbol.isEmpty() ? number : QStringLiteral("%1 %2").arg(number, unit.symbol);
 }
 
 QString laneLabel(const DisplayUnit& unit)

@@ -8,6 +8,7 @@
 
 #include <QString>
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -44,6 +45,13 @@ DisplayUnit displayUnitFor(const core::ChannelDescriptor& channel);
 // in its kind's unit. `quantity` is the lane's title: short, as a lane is
 // low; the readout and the report name the quantity in full.
 DisplayUnit laneUnit(const core::ChannelDescriptor& lane, core::Mode mode);
+// What a trigger or limit watches (a device channel or a mode's quantity,
+// among `watchable`) in its lane's unit; a name not there: SI as it is.
+DisplayUnit watchedUnit(const std::vector<core::ChannelDescriptor>& watchable, const std::string& name,
+                        core::Mode mode);
+// A value in that unit: "597 µN", "20 µε", "0.3" (typed digits, no padding).
+QString watchedText(double si, const DisplayUnit& unit);
+
 // The colour a threshold line is drawn in on every plot (live, review,
 // report): teal, apart from the red playhead and the events' colours.
 inline constexpr unsigned kThresholdRgb = 0x00897b;

@@ -16,6 +16,7 @@
 #include "ui/DeviceConnector.h"
 #include "ui/DevicePanel.h"
 #include "ui/ElidedTextTips.h"
+#include "ui/HandsFreeControl.h"
 #include "ui/HelpWindows.h"
 #include "ui/InterruptedSessionsReport.h"
 #include "ui/LinkStatus.h"
@@ -34,6 +35,7 @@
 #include "ui/StoreJobs.h"
 #include "ui/VerdictDialog.h"
 #include "ui/VocabularyText.h"
+#include "ui/WatchBanner.h"
 #include "ui/XYPlotWidget.h"
 #include "ui/calibration/CalibrationHistory.h"
 #include "ui/calibration/CalibrationWizards.h"
@@ -61,6 +63,7 @@
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QToolBar>
+#include <QVBoxLayout>
 
 #include <algorithm>
 
@@ -116,7 +119,16 @@ MainWindow::MainWindow(QWidget* parent)
     centre->setStretchFactor(1, 1);
     centre->setSizes({400, 400});
     centre->setChildrenCollapsible(false);
-    setCentralWidget(centre);
+    // The trigger's state and the alarms over the traces, shown only when they have something to say.
+    auto* central = new QWidget(this);
+    auto* centralLayout = new QVBoxLayout(central);
+    centralLayout->setContentsMargins(0, 0, 0, 0);
+    centralLayout->setSpacing(0);
+    m_watchBanner = new WatchBanner(central);
+    m_watchBanner->setObjectName(QStringLiteral("watchBanner"));
+    centralLayout->addWidget(m_watchBanner);
+    centralLayout->addWidget(centre, 1);
+    setCentralWidget(central);
     // Fits a 1366×768 screen (less its panel) and any larger one at first start.
     resize(QSize(1340, 720).boundedTo(QGuiApplication::primaryScreen()->availableSize()));
     m_sessionBar = new SessionBar(this);
@@ -167,6 +179,22 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_devicePanel, &DevicePanel::connectRequested, m_connector, &DeviceConnector::request);
     connect(m_devicePanel, &DevicePanel::disconnectRequested, this, &MainWindow::disconnectSource);
     connect(m_devicePanel->rolesBox(), &ChannelRolesBox::rolesChosen, this, &MainWindow::setRoles);
+    m_handsFree = new HandsFreeControl(
+        m_watchBanner,
+        {[this] { return m_session.get(); }, [this] { return m_sessionBar->metadata(); },
+         [](const core::storage::SessionMetadata& metadata) {
+             return recordingRefusal(recordingPolicy(), QString::fromStdString(metadata.subject),
+                                     QString::fromStdString(metadata.operatorName));
+         },
+         [this](const devices::session::RecordingSummary& summary) { recordingEnded(summary, true); },
+         [this](const Problem& problem) { reportProblem(this, problem); },
+         [this](const QString& text) { statusBar()->showMessage(text, 8000); },
+         [this] {
+             m_sessionBar->setArmed(m_handsFree->armed());
+             m_sessionBar->setRecording(isRecording());
+             lockProfiles();
+         }},
+        this);
     createMenus();
     linkPlots();
     restoreSettings();
@@ -301,6 +329,8 @@ void MainWindow::createMenus()
     session->addAction(tr("Mark event with a &note…"), QKeySequence(tr("Ctrl+Shift+M")), this,
                        &MainWindow::markEventWithNote);
     session->addAction(tr("&Tare"), QKeySequence(tr("Ctrl+T")), this, &MainWindow::tare);
+    session->addSeparator();
+    m_handsFree->addActions(session);
     session->addSeparator();
     session->addAction(tr("Sensor &profiles…"), QKeySequence(tr("Ctrl+Shift+P")), this, &MainWindow::showProfiles);
     session->addAction(tr("Session &store…"), this, &MainWindow::chooseStore);
@@ -448,7 +478,9 @@ void MainWindow::reviewSessions(const std::vector<std::int64_t>& sessions)
 
 void MainWindow::toggleRecording()
 {
-    if (isRecording())
+    if (m_handsFree->armed())  // the button disarms: an open triggered session ends as complete
+        m_handsFree->disarm();
+    else if (isRecording())
         stopRecording();
     else
         startRecording();
@@ -488,7 +520,7 @@ void MainWindow::stopRecording()
     if (const auto summary = m_session->stopRecording()) recordingEnded(*summary);
 }
 
-void MainWindow::recordingEnded(const devices::session::RecordingSummary& summary)
+void MainWindow::recordingEnded(const devices::session::RecordingSummary& summary, bool triggered)
 {
     m_sessionBar->setRecording(false);
     if (m_session) {
@@ -521,6 +553,12 @@ void MainWindow::recordingEnded(const devices::session::RecordingSummary& summar
                              tr("Session %1 keeps every sample up to then, with an alarm; nothing after it was "
                                 "recorded. Connect the probe again and record to start a new session.")
                                  .arg(summary.session)});
+    else if (triggered)
+        statusBar()->showMessage(tr("Session %1 (%2) recorded by the trigger: %3")
+                                     .arg(summary.session)
+                                     .arg(QString::fromStdString(m_session->recordingMetadata().subject),
+                                          QString::fromStdString(summary.analysis)),
+                                 8000);
     else if (summary.verdict)
         askVerdict(this, m_store,
                    {summary.session, static_cast<int>(summary.defects), static_cast<int>(summary.sites),
@@ -773,12 +811,15 @@ void MainWindow::disconnectSource()
 {
     m_defectsOnTraces = 0;
     m_connector->cancel();  // a connect still in its handshake is dropped when it answers
+    m_handsFree->disarm();  // an open triggered session ends as complete
     stopRecording();        // the user ended the session by disconnecting
     m_statusTimer.stop();
     m_rawConsole->setSource(nullptr);  // before the source goes
     m_plot->clearSource();
     m_modeViews->bindAll(nullptr);
     m_session.reset();
+    m_handsFree->disconnected();
+    m_sessionBar->setArmed(false);
     m_loadRig.reset();
     showModeView();
     setWindowTitle(tr("Tactiscope"));
@@ -810,7 +851,13 @@ void MainWindow::updateStatus()
     m_modeViews->update(*m_session);
     updateTimeBase();
     showDefectsOnTraces();
+    const bool wasRecording = isRecording();
     if (const auto stopped = m_session->poll()) recordingEnded(*stopped);  // the disk stopped it
+    m_handsFree->update();
+    if (isRecording() != wasRecording) {  // a trigger started or ended one
+        m_sessionBar->setRecording(isRecording());
+        lockProfiles();
+    }
     // A link that failed for good (another probe came back on the port, a
     // rate that is not the device's) records nothing more: the recording
     // ends with what came before, the operator is told why, and a new

@@ -46,6 +46,8 @@ namespace tactiscope::ui {
 
 class DeviceConnector;
 class DevicePanel;
+class HandsFreeControl;
+class WatchBanner;
 class LivePlotWidget;
 class ModeViews;
 class RawConsole;
@@ -146,12 +148,16 @@ private:
     // The mode's calibration wizard on the connected device.
     void calibrate(core::Mode mode);
     void tare();  // the mode's zero, when its rule allows
-    void recordingEnded(const devices::session::RecordingSummary& summary);
+    // A recording ended: by a stop, the disk, the link, or (`triggered`)
+    // its trigger, after which no verdict is asked: the line goes on.
+    void recordingEnded(const devices::session::RecordingSummary& summary, bool triggered = false);
     void saveSettings() const;
 
     LivePlotWidget* m_plot = nullptr;
     SessionBar* m_sessionBar = nullptr;
-    ModeViews* m_modeViews = nullptr;  // the mode's view under the traces
+    WatchBanner* m_watchBanner = nullptr;     // the trigger's state and the alarms, above the traces
+    HandsFreeControl* m_handsFree = nullptr;  // triggers and limit alarms
+    ModeViews* m_modeViews = nullptr;         // the mode's view under the traces
     DevicePanel* m_devicePanel = nullptr;
     ReviewWindows* m_review = nullptr;      // the browser and review windows of the store
     CentralStoreLink* m_central = nullptr;  // sends the sessions on to the site's central store

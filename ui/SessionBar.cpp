@@ -115,16 +115,30 @@ void SessionBar::setRecordEnabled(bool enabled)
 void SessionBar::setRecording(bool recording)
 {
     m_recording = recording;
-    m_record->setText(recording ? tr("■  Stop") : tr("●  Record"));
+    applyState();
+}
+
+void SessionBar::setArmed(bool armed)
+{
+    m_armed = armed;
+    applyState();
+}
+
+void SessionBar::applyState()
+{
+    m_record->setText(m_armed ? tr("■  Disarm") : m_recording ? tr("■  Stop") : tr("●  Record"));
     // Red while recording, so the state reads from across the room.
-    m_record->setStyleSheet(recording ? QStringLiteral("QPushButton { background: #c62828; color: white; "
-                                                       "border-radius: 6px; padding: 4px 14px; }")
-                                      : QString());
-    m_elapsed->setStyleSheet(recording ? QStringLiteral("color: #c62828;") : QString());
+    m_record->setStyleSheet(m_recording ? QStringLiteral("QPushButton { background: #c62828; color: white; "
+                                                         "border-radius: 6px; padding: 4px 14px; }")
+                            : m_armed   ? QStringLiteral("QPushButton { background: #2f5d8a; color: white; "
+                                                           "border-radius: 6px; padding: 4px 14px; }")
+                                        : QString());
+    m_elapsed->setStyleSheet(m_recording ? QStringLiteral("color: #c62828;") : QString());
     // Read-only rather than disabled, so the metadata stays legible.
-    m_mode->setEnabled(!recording);
-    m_subject->setReadOnly(recording);
-    m_operator->setReadOnly(recording);
+    const bool hold = m_recording || m_armed;
+    m_mode->setEnabled(!hold);
+    m_subject->setReadOnly(hold);
+    m_operator->setReadOnly(hold);
 }
 
 void SessionBar::setElapsed(double seconds)

@@ -29,6 +29,9 @@ public:
 
     void setRecordEnabled(bool enabled);  // a device is streaming
     void setRecording(bool recording);
+    // A trigger is armed: the button disarms it, the fields hold (its
+    // sessions take them), whether or not one is recording now.
+    void setArmed(bool armed);
     void setElapsed(double seconds);
     void setStorePath(const QString& path);
 
@@ -44,6 +47,8 @@ private:
     QLabel* m_elapsed = nullptr;
     QLabel* m_store = nullptr;
     bool m_recording = false;
+    bool m_armed = false;
+    void applyState();
 };
 
 }  // namespace tactiscope::ui

@@ -11,7 +11,7 @@ QList<QCommandLineOption> watchOptions()
         {QStringLiteral("trigger"),
          QStringLiteral("Record only when CONDITION begins, one session per trigger: CHANNEL>LEVEL, <, "
                         "'CHANNEL rising LEVEL', 'falling', 'inside A..B', 'outside A..B'; CHANNEL a channel or a "
-                        "mode quantity (force, displacement, decision, …), in SI units."),
+                        "mode quantity (force, deflection, force_high, decision, …), in SI units."),
          QStringLiteral("CONDITION")},
         {QStringLiteral("pre"), QStringLiteral("With --trigger: seconds kept before the trigger (default 0)."),
          QStringLiteral("S")},

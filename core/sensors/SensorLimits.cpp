@@ -27,8 +27,7 @@ std::vector<SensorLimit> capacitiveLimits(const CapacitiveBeamProfile& probe)
     force.quantity = "force";
     force.warning = threeDigits(forceAtModelError(stiffness, length_m, kWarningModelError));
     force.critical = threeDigits(forceAtModelError(stiffness, length_m, kCriticalModelError));
-    return {{force, "where the beam's small-deflection model overstates its tip deflection by 2 % (warning) and "
-                    "5 % (critical)"}};
+    return {{force, "the beam's safe force: its small-deflection model errs by 2 % (warning) and 5 % (critical)"}};
 }
 
 std::vector<SensorLimit> complianceLimits(const std::vector<ChannelDescriptor>& channels,
@@ -38,8 +37,7 @@ std::vector<SensorLimit> complianceLimits(const std::vector<ChannelDescriptor>& 
         std::ranges::find_if(channels, [](const ChannelDescriptor& c) { return c.role == ChannelRole::StiffBeam; });
     if (stiff == channels.end() || (stiff->unit != "count" && stiff->unit != "counts")) return {};
     const double fullScale = straingauge::StrainGaugeChain(adc, {}).fullScaleCounts();
-    const std::string basis = "the stiff beam's ADC: 90 % of its full scale (warning) and the 99 % at which its "
-                              "force is clipped (critical)";
+    const std::string basis = "the stiff beam's ADC: 90 % of full scale (warning), clipped at 99 % (critical)";
     trigger::LimitSpec above;
     above.quantity = stiff->name;
     above.warning = std::floor(kAdcWarningFraction * fullScale);

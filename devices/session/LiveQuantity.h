@@ -7,6 +7,7 @@
 // (StreamWatch), so a derived value is there for the block just consumed.
 #pragma once
 
+#include "core/ChannelDescriptor.h"
 #include "core/LiveBuffer.h"
 #include "core/SampleBlock.h"
 
@@ -23,6 +24,7 @@ namespace tactiscope::devices::session {
 struct LiveQuantity {
     std::string name;
     std::string unit;
+    core::ChannelKind kind = core::ChannelKind::Other;  // how a view shows it (a force in mN)
     std::shared_ptr<const core::LiveBuffer> output;
     std::size_t channel = 0;
 };

@@ -422,13 +422,13 @@ void LiveSession::selectSite(core::compliance::SiteCell cell)
 
 namespace tactiscope::devices::session {
 
-std::vector<std::pair<std::string, std::string>> LiveSession::watchableQuantities() const
+std::vector<core::ChannelDescriptor> LiveSession::watchableQuantities() const
 {
-    std::vector<std::pair<std::string, std::string>> names;
-    for (const auto& channel : m_channels) names.emplace_back(channel.name, channel.unit);
+    std::vector<core::ChannelDescriptor> watchable = m_channels;
     if (const auto* unit = unitOf(m_mode))
-        for (const auto& quantity : unit->quantities()) names.emplace_back(quantity.name, quantity.unit);
-    return names;
+        for (const auto& quantity : unit->quantities())
+            watchable.push_back({quantity.name, quantity.unit, quantity.kind});
+    return watchable;
 }
 
 // A device channel by its name, else a quantity of the current mode's
@@ -441,7 +441,7 @@ std::optional<QuantityReader> LiveSession::readerFor(const std::string& quantity
         for (const auto& offered : unit->quantities())
             if (offered.name == quantity) return QuantityReader::derived(offered);
     std::string names;
-    for (const auto& [name, unit] : watchableQuantities()) names += (names.empty() ? "" : ", ") + name;
+    for (const auto& watchable : watchableQuantities()) names += (names.empty() ? "" : ", ") + watchable.name;
     refusal = "nothing called '" + quantity + "' to watch: the " + std::string(core::toString(m_mode)) +
               " mode on this device has " + names;
     return std::nullopt;

@@ -202,13 +202,14 @@ public:
     std::optional<std::string> setLimits(std::vector<core::trigger::LimitSpec> limits);
     // The limits watched, each with where it comes from.
     const std::vector<core::sensors::SensorLimit>& limits() const { return m_effectiveLimits; }
+    const std::vector<core::trigger::LimitSpec>& givenLimits() const { return m_givenLimits; }
     // The alarms raised or cleared since the last call, times on the
     // lists' clock; and those raised now.
     std::vector<LimitAlarm> takeAlarms() { return std::exchange(m_alarmsTold, {}); }
     const std::vector<LimitAlarm>& raisedAlarms() const { return m_raisedAlarms; }
-    // The names a trigger or limit may watch: the device's channels, then
-    // the current mode's quantities, each with its unit.
-    std::vector<std::pair<std::string, std::string>> watchableQuantities() const;
+    // What a trigger or limit may watch: the device's channels, then the
+    // current mode's quantities, each with its SI unit and kind.
+    std::vector<core::ChannelDescriptor> watchableQuantities() const;
 
     // The owner's periodic call: takes the processors' completed defects and
     // presses into the lists below and, while recording, into the store.

@@ -55,7 +55,7 @@ public:
     // Throws std::invalid_argument for non-physical parameters.
     explicit PanelScanScenario(const PanelScanParameters& parameters = {});
 
-    std::string name() const override { return "panel scan"; }
+    std::string name() const override { return m_p.restBetweenPanels_s > 0.0 ? "panel line" : "panel scan"; }
     std::optional<core::Mode> mode() const override { return core::Mode::PanelScan; }
     const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
     double sampleRate_hz() const override { return m_p.sampleRate_hz; }

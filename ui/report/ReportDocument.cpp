@@ -89,6 +89,7 @@ QString header(const core::report::ReportData& data)
     html += row(QObject::tr("Operator"), orDash(m.operatorName));
     html += row(QObject::tr("Mode"), wordText(m.mode));
     if (!m.site.empty()) html += row(QObject::tr("Site"), text(m.site));
+    if (!m.trigger.empty()) html += row(QObject::tr("Triggered on"), text(m.trigger));
     html += row(QObject::tr("Started"), fileDateTime(s.startedUtc).toHtmlEscaped());
     html += row(QObject::tr("Covered"), range);
     html += row(QObject::tr("Device"), device);
@@ -234,8 +235,11 @@ QString eventTables(const core::report::ReportData& data, QTextDocument& documen
     bool anyDefect = false;
     for (const auto& e : data.events) {
         anyDefect = anyDefect || e.kind == core::EventKind::Defect;
+        // An alarm lasts: from its raise to its clear.
         if (e.kind != core::EventKind::Defect)
-            others.push_back({number(e.start_s, 3), wordText(e.kind), orDash(e.note)});
+            others.push_back({e.end_s > e.start_s ? number(e.start_s, 3) + QStringLiteral("–") + number(e.end_s, 3)
+                                                  : number(e.start_s, 3),
+                              wordText(e.kind), orDash(e.note)});
     }
     if (core::definitionOf(data.session.metadata.mode).detectsDefects || anyDefect) html += defectTables(data);
     if (!section && !data.readings.empty()) {
@@ -251,7 +255,7 @@ QString eventTables(const core::report::ReportData& data, QTextDocument& documen
             table({QObject::tr("Time (s)"), QObject::tr("Quantity"), QObject::tr("Value"), QObject::tr("Site")}, rows);
     }
     if (!others.empty()) {
-        html += QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Markers and alarms"));
+        html += QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Markers, triggers and alarms"));
         html += table({QObject::tr("Time (s)"), QObject::tr("Kind"), QObject::tr("Note")}, others);
     }
     if (!data.annotations.empty()) {

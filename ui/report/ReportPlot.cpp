@@ -20,6 +20,7 @@ const QColor kDefectBThenA(117, 112, 179, 70);
 const QColor kReading(27, 158, 119, 50);
 const QColor kMarker(90, 90, 90);
 const QColor kGap(160, 160, 160, 90);
+const QColor kAlarm(214, 39, 40, 45);  // a limit alarm, from its raise to its clear
 
 // x in seconds on the lane's time axis, y as a fraction of the lane's height.
 void placeInLane(QCPItemPosition* position, QCPAxisRect* rect, double time_s, double heightRatio)
@@ -111,8 +112,10 @@ std::unique_ptr<QCustomPlot> buildPlot(const core::report::ReportData& data, int
             if (event.kind == core::EventKind::Defect)
                 shade(*plot, rect, event.start_s, event.end_s, event.direction > 0 ? kDefectAThenB : kDefectBThenA,
                       minimumEvent_s);
-            else if (event.kind == core::EventKind::Marker)
+            else if (event.kind == core::EventKind::Marker || event.kind == core::EventKind::Trigger)
                 mark(*plot, rect, event.start_s);
+            else if (event.kind == core::EventKind::Alarm && event.end_s > event.start_s)
+                shade(*plot, rect, event.start_s, event.end_s, kAlarm, minimumEvent_s);
         }
         for (const auto& reading : data.readings) shade(*plot, rect, reading.start_s, reading.end_s, kReading);
         addBand(*plot, rect, trace, unit);

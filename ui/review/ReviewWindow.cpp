@@ -340,6 +340,7 @@ void ReviewWindow::refreshHeader()
     add(tr("subject <b>%1</b>"), meta.subject);
     add(tr("operator %1"), meta.operatorName);
     add(tr("site %1"), meta.site);
+    add(tr("triggered on %1"), meta.trigger);
     header << tr("started %1").arg(screenDateTime(m_session.startedUtc))
            << tr("%1 at %2 Hz").arg(durationText(m_session.duration_s())).arg(typedText(m_session.sampleRate_hz));
     add(tr("device %1"), (meta.deviceModel + " " + meta.deviceSerial).substr(meta.deviceModel.empty() ? 1 : 0));

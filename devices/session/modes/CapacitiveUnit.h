@@ -15,9 +15,11 @@ public:
 
     std::shared_ptr<core::BlockSink> sink() const override { return m_capacitive; }
     const std::vector<core::storage::StoredCalibration>& calibrations() const override { return m_calibrations; }
+    // By the names the review's derived lanes have (core/derived).
     std::vector<LiveQuantity> quantities() const override
     {
-        return {{"force", "N", m_capacitive->output(), 0}, {"displacement", "m", m_capacitive->output(), 1}};
+        return {{"force", "N", core::ChannelKind::Force, m_capacitive->output(), 0},
+                {"deflection", "m", core::ChannelKind::Position, m_capacitive->output(), 1}};
     }
     std::optional<std::string> tare() override { return m_capacitive->tare(); }
     void startRecording(core::storage::Recorder& recorder) override;

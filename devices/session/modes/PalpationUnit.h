@@ -17,11 +17,12 @@ public:
 
     std::shared_ptr<core::BlockSink> sink() const override { return m_palpation; }
     const std::vector<core::storage::StoredCalibration>& calibrations() const override { return m_calibrations; }
+    // By the names the review's derived lanes have (core/derived).
     std::vector<LiveQuantity> quantities() const override
     {
-        return {{"force_stiff", "N", m_palpation->output(), 0},
-                {"force_soft", "N", m_palpation->output(), 1},
-                {"force_ratio", "", m_palpation->output(), 2}};
+        return {{"force_high", "N", core::ChannelKind::Force, m_palpation->output(), 0},
+                {"force_low", "N", core::ChannelKind::Force, m_palpation->output(), 1},
+                {"Q", "", core::ChannelKind::Other, m_palpation->output(), 2}};
     }
     std::optional<std::string> tare() override { return m_palpation->tare(); }
     void startRecording(core::storage::Recorder& recorder) override;

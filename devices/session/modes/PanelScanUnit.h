@@ -21,9 +21,9 @@ public:
     // The detector's output: its decision (-1, 0, +1) and both partial correlations.
     std::vector<LiveQuantity> quantities() const override
     {
-        return {{"decision", "", m_detection->output(), 0},
-                {"r_ab", "", m_detection->output(), 1},
-                {"r_ba", "", m_detection->output(), 2}};
+        return {{"decision", "", core::ChannelKind::Decision, m_detection->output(), 0},
+                {"r_ab", "", core::ChannelKind::Other, m_detection->output(), 1},
+                {"r_ba", "", core::ChannelKind::Other, m_detection->output(), 2}};
     }
     std::optional<std::string> tare() override;
     void startRecording(core::storage::Recorder& recorder) override;

@@ -1,0 +1,64 @@
+// Session ▸ Limits…: the limit alarms watched on the live stream, each with
+// where it comes from (the sensor profile, the sensor model's safe range,
+// or set here), in the quantities' display units; and an editor that sets
+// a warning and a critical level on any channel or quantity of the mode,
+// above or below, replacing the probe's own limit on that quantity and
+// side. The limits set here are the session's (LiveSession::setLimits) and
+// are remembered per mode by the main window.
+#pragma once
+
+#include "core/ChannelDescriptor.h"
+#include "core/Vocabulary.h"
+#include "core/sensors/SensorLimits.h"
+#include "core/trigger/LimitWatch.h"
+
+#include <QDialog>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QTableWidget;
+
+namespace tactiscope::ui {
+
+class LimitsDialog : public QDialog {
+    Q_OBJECT
+
+public:
+    struct Session {
+        std::vector<core::ChannelDescriptor> watchable;
+        core::Mode mode = core::Mode::General;  // whose units they are shown in
+        // The limits watched now, and those set here before.
+        std::function<std::vector<core::sensors::SensorLimit>()> limits;
+        std::vector<core::trigger::LimitSpec> given;
+        // Sets the limits given here; the refusal, or none.
+        std::function<std::optional<std::string>(const std::vector<core::trigger::LimitSpec>&)> apply;
+    };
+    explicit LimitsDialog(Session session, QWidget* parent = nullptr);
+
+    const std::vector<core::trigger::LimitSpec>& given() const { return m_session.given; }
+
+private:
+    void refreshTable();
+    void setLimit();
+    void removeLimit();
+    std::optional<double> level(const QLineEdit* edit) const;
+
+    Session m_session;
+    QTableWidget* m_table;
+    QComboBox* m_quantity;
+    QComboBox* m_side;
+    QLineEdit* m_warning;
+    QLineEdit* m_critical;
+    QLabel* m_unit;
+    QLabel* m_problem;
+    QPushButton* m_remove;
+};
+
+}  // namespace tactiscope::ui
