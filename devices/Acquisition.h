@@ -52,6 +52,8 @@ public:
 
     AcquisitionStats stats() const;
     const BlockSource& source() const { return *m_source; }
+    // For what a source takes from any thread (a shunt command, its answers).
+    BlockSource& source() { return *m_source; }
     // The source's notices since the last call (any thread).
     std::vector<LinkNotice> takeNotices() { return m_source->takeNotices(); }
 

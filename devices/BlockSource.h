@@ -37,6 +37,12 @@ enum class ReadStatus {
     Failed,    // the source cannot continue; see lastError()
 };
 
+// A device's STATUS frame: 0 ok, 1 warning, 2 error, and its message.
+struct DeviceStatus {
+    int level = 0;
+    std::string message;
+};
+
 class BlockSource {
 public:
     virtual ~BlockSource() = default;
@@ -75,6 +81,19 @@ public:
     // How the rate was found when it is not the device's own word (a text
     // device's estimate), for the record; none otherwise.
     virtual std::optional<std::string> rateNote() const { return std::nullopt; }
+
+    // Asks the device to switch the shunt across channel `channel`'s bridge
+    // (TSP/1 command 6); the answer comes as a status (takeStatuses()), or
+    // never from a device that does not know the command. Returns why it
+    // cannot even be asked (a text-protocol device takes no commands), none
+    // when asked. Any thread.
+    virtual std::optional<std::string> requestShunt(std::size_t /*channel*/, bool /*on*/)
+    {
+        return "this device takes no commands";
+    }
+    // What the device said in its STATUS frames since the last call, oldest
+    // first. Any thread.
+    virtual std::vector<DeviceStatus> takeStatuses() { return {}; }
 };
 
 }  // namespace tactiscope::devices

@@ -109,8 +109,33 @@ bool PortSource::layoutKnown() const
 
 void PortSource::sendCommand(protocol::CommandCode code, std::uint32_t argument)
 {
+    const std::lock_guard lock(m_writeMutex);
     m_transport->write(protocol::encodeFrame(protocol::FrameType::Command, m_commandSequence++,
                                              protocol::encodeCommand({code, argument})));
+}
+
+std::optional<std::string> PortSource::requestShunt(std::size_t channel, bool on)
+{
+    if (m_text) return "a text-protocol device takes no commands";
+    if (channel >= m_channels.size() || channel > 255) return "there is no channel " + std::to_string(channel + 1);
+    protocol::CommandPayload command;
+    command.code = protocol::CommandCode::Shunt;
+    command.channel = static_cast<std::uint8_t>(channel);
+    command.on = on;
+    try {
+        const std::lock_guard lock(m_writeMutex);
+        m_transport->write(
+            protocol::encodeFrame(protocol::FrameType::Command, m_commandSequence++, protocol::encodeCommand(command)));
+    } catch (const transport::TransportError& e) {
+        return std::string("the command could not be sent: ") + e.what();
+    }
+    return std::nullopt;
+}
+
+std::vector<DeviceStatus> PortSource::takeStatuses()
+{
+    const std::lock_guard lock(m_statusMutex);
+    return std::exchange(m_statuses, {});
 }
 
 void PortSource::pump(std::chrono::milliseconds timeout)
@@ -147,6 +172,8 @@ void PortSource::pump(std::chrono::milliseconds timeout)
                          std::make_move_iterator(out.notices.end()));
         m_counters = m_binary.counters();
         if (out.infoChanged) m_info = m_binary.info();
+        for (auto& status : out.statuses)
+            m_statuses.push_back({static_cast<int>(status.level), std::move(status.message)});
     }
 }
 

@@ -53,6 +53,8 @@ public:
     bool textProtocol() const override { return m_text.has_value(); }
     std::optional<std::string> rateNote() const override;
     std::optional<protocol::DeviceInfo> deviceInfo() const;
+    std::optional<std::string> requestShunt(std::size_t channel, bool on) override;
+    std::vector<DeviceStatus> takeStatuses() override;
     // Host steady-clock time (seconds) of a block time, drift-corrected
     // (ClockSync.h). Block times count the device's clock (binary) or
     // samples at the sample rate (text); either way the mapping learns the
@@ -81,8 +83,10 @@ private:
     std::vector<std::uint8_t> m_chunk = std::vector<std::uint8_t>(4096);
     mutable std::mutex m_statusMutex;  // guards the snapshots below
     protocol::DecoderCounters m_counters;
-    std::vector<LinkNotice> m_notices;  // not yet taken
-    std::deque<std::uint8_t> m_recent;  // the last kRecentBytes received
+    std::vector<LinkNotice> m_notices;     // not yet taken
+    std::vector<DeviceStatus> m_statuses;  // not yet taken
+    std::mutex m_writeMutex;               // a command from the owner while the handshake's or the stop's goes out
+    std::deque<std::uint8_t> m_recent;     // the last kRecentBytes received
     std::optional<protocol::DeviceInfo> m_info;
     ClockSync m_clock;
     DriftWatch m_drift;

@@ -119,6 +119,19 @@ std::vector<LinkNotice> ReconnectingSource::takeCurrentNotices()
     return notices;
 }
 
+std::optional<std::string> ReconnectingSource::requestShunt(std::size_t channel, bool on)
+{
+    const std::lock_guard lock(m_countersMutex);
+    if (!m_source) return "the probe is not connected (it is being waited for)";
+    return m_source->requestShunt(channel, on);
+}
+
+std::vector<DeviceStatus> ReconnectingSource::takeStatuses()
+{
+    const std::lock_guard lock(m_countersMutex);
+    return m_source ? m_source->takeStatuses() : std::vector<DeviceStatus>{};
+}
+
 protocol::DecoderCounters ReconnectingSource::decoderCounters() const
 {
     const std::lock_guard lock(m_countersMutex);

@@ -50,6 +50,8 @@ public:
     protocol::DecoderCounters decoderCounters() const override;
     // Of every connection so far, in the stream's time.
     std::vector<LinkNotice> takeNotices() override;
+    std::optional<std::string> requestShunt(std::size_t channel, bool on) override;
+    std::vector<DeviceStatus> takeStatuses() override;
     // Of the current connection.
     std::vector<std::uint8_t> recentBytes() const override;
     bool textProtocol() const override;

@@ -31,6 +31,7 @@ QString scenarioTitle(const std::string& id)
 {
     if (id == devices::simulator::kPanelScanScenario) return DevicePanel::tr("Panel scan — two strain cantilevers");
     if (id == devices::simulator::kPanelLineScenario) return DevicePanel::tr("Panel line — one stroke per panel");
+    if (id == devices::simulator::kPanelRestScenario) return DevicePanel::tr("Panel probe — at rest");
     if (id == devices::simulator::kPalpationScenario) return DevicePanel::tr("Palpation — compliance probe");
     if (id == "capacitive-weights") return DevicePanel::tr("Capacitive beam — weights");
     if (id == "gauge-calibration") return DevicePanel::tr("Gauge-factor rig — stiff beam");

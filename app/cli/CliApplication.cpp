@@ -14,6 +14,7 @@
 #include "ReportCommand.h"
 #include "ServerCommand.h"
 #include "SessionsCommand.h"
+#include "ShuntCheckCommand.h"
 #include "SimulateCommand.h"
 #include "SyncCommand.h"
 #include "core/Version.h"
@@ -45,6 +46,7 @@ constexpr std::array kCommands{
     Command{"server", "Set up a site's central store on PostgreSQL.", runServer},
     Command{"sync", "Send this station's sessions to a site's central store.", runSync},
     Command{"sessions", "List, show, export or delete the sessions of a store.", runSessions},
+    Command{"shunt-check", "Check a strain channel's bridge with the probe's shunt.", runShuntCheck},
     Command{"simulate", "Write a simulated recording as CSV.", runSimulate},
 };
 

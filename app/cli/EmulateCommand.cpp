@@ -47,6 +47,9 @@ int runEmulate(const QStringList& arguments)
                         "wrong-decisions (with --probe-detector: a detector that names every direction the wrong "
                         "way round)."),
          QStringLiteral("FAULT")},
+        {QStringLiteral("no-shunt"),
+         QStringLiteral("An older probe: it answers nothing to the shunt command (TSP/1 command 6). Otherwise each "
+                        "strain channel's quarter bridge (350 ohm gauges, GF 2) can switch a 100 kohm shunt.")},
         {QStringLiteral("probe-detector"),
          QStringLiteral("The probe runs the surface-deflection detector itself (firmware/probe-detector) and sends "
                         "its decisions as channels out, rab and rba of kind decision (panel-scan, TSP/1).")},
@@ -114,6 +117,7 @@ int runEmulate(const QStringList& arguments)
         std::tie(options.fault, options.faultAt_s) = *fault;
     }
     options.probeDetector = parser.isSet(QStringLiteral("probe-detector"));
+    options.shunt = !parser.isSet(QStringLiteral("no-shunt"));
 
     std::unique_ptr<devices::emulator::ProbeEmulator> emulator;
     try {

@@ -40,6 +40,14 @@ constexpr Field kFields[] = {
     {"adc_bits", "ADC resolution", "bits", {}},
     {"adc_bipolar", "ADC bipolar (1 = yes)", {}, {}},
     {"bridge_active_gauges", "Active gauges in the bridge", {}, {}},
+    {"gauge_resistance_ohm", "Gauge resistance", "Ω", {}},
+    {"shunt_resistance_ohm", "Shunt resistance", "Ω", {}},
+    {"shunt_gauge_factor", "Gauge factor checked", {}, {}},
+    {"shunt_expected_ue", "Expected step", "µε", {}},
+    {"shunt_measured_ue", "Measured step", "µε", "shunt_measured_standard_error_ue"},
+    {"shunt_deviation_percent", "Deviation", "%", {}},
+    {"shunt_tolerance_percent", "Tolerance", "%", {}},
+    {"shunt_passed", "Passed (1 = yes)", {}, {}},
 };
 
 const Field* fieldOf(std::string_view key)

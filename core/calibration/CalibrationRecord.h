@@ -16,6 +16,7 @@ namespace tactiscope::core::calibration {
 // The kinds of record, as stored.
 inline constexpr std::string_view kGaugeFactorKind = "gauge_factor";  // a strain-gauged beam's gauge factor
 inline constexpr std::string_view kCapacitiveKind = "capacitive";     // the capacitive beam's C0 and sensitivity
+inline constexpr std::string_view kShuntCheckKind = "shunt_check";    // a strain channel's shunt check, passed or not
 
 // The sensor a record belongs to. A compliance probe's two strain-gauged
 // beams are sensors of their own ("<probe> — stiff beam"), since each

@@ -33,4 +33,45 @@ ShuntCheck checkShunt(double expected, double measured, double tolerance)
     return check;
 }
 
+namespace {
+
+struct Moments {
+    double mean = 0.0;
+    double variance = 0.0;  // of one sample, n − 1 in the denominator
+};
+
+Moments momentsOf(std::span<const double> values)
+{
+    Moments m;
+    for (const double v : values) m.mean += v;
+    m.mean /= static_cast<double>(values.size());
+    for (const double v : values) m.variance += (v - m.mean) * (v - m.mean);
+    m.variance /= static_cast<double>(values.size() - 1);
+    return m;
+}
+
+}  // namespace
+
+ShuntStep measureShuntStep(std::span<const double> off, std::span<const double> on)
+{
+    if (off.size() < 2 || on.size() < 2)
+        throw std::invalid_argument("shunt step: two samples at least with the shunt off and with it on");
+    const Moments before = momentsOf(off), during = momentsOf(on);
+    return {during.mean - before.mean, std::sqrt(during.variance / static_cast<double>(on.size()) +
+                                                 before.variance / static_cast<double>(off.size()))};
+}
+
+int activeGauges(BridgeType type)
+{
+    switch (type) {
+    case BridgeType::Quarter:
+        return 1;
+    case BridgeType::HalfBending:
+        return 2;
+    case BridgeType::FullBending:
+        return 4;
+    }
+    return 1;
+}
+
 }  // namespace tactiscope::core::straingauge

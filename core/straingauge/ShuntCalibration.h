@@ -15,6 +15,8 @@
 
 #include "core/straingauge/StrainGaugeChain.h"
 
+#include <span>
+
 namespace tactiscope::core::straingauge {
 
 // The strain a channel of this bridge shows with the shunt on (negative: a
@@ -31,5 +33,18 @@ struct ShuntCheck {
 
 // `tolerance`: the largest relative deviation that passes (0.01: 1 %).
 ShuntCheck checkShunt(double expected, double measured, double tolerance);
+
+// The step a shunt made in a channel: the mean of the samples with it on
+// less the mean of those before, and that difference's standard
+// uncertainty, √(s²_on/n_on + s²_off/n_off) (white noise). Throws
+// std::invalid_argument for fewer than two samples either way.
+struct ShuntStep {
+    double step = 0.0;
+    double uncertainty = 0.0;
+};
+ShuntStep measureShuntStep(std::span<const double> off, std::span<const double> on);
+
+// The number of active gauges of a bridge type (1, 2, 4), as records keep it.
+int activeGauges(BridgeType type);
 
 }  // namespace tactiscope::core::straingauge

@@ -71,6 +71,7 @@ ProbeEmulator::ProbeEmulator(const EmulatorOptions& options)
         if (i >= base.size()) c.name += std::to_string(i / base.size() + 1);
         m_channels.push_back(c);
     }
+    m_shunts.emplace(base);
     if (options.fault == EmulatorFault::WrongDecisions && !options.probeDetector)
         throw std::invalid_argument("wrong decisions need the probe's detector on");
     if (options.probeDetector) {
@@ -215,6 +216,7 @@ std::vector<std::uint8_t> ProbeEmulator::nextPayload(std::size_t& samples)
     core::SampleBlock block(baseChannels, n, static_cast<double>(m_sampleIndex) / m_rate_hz, 1.0 / m_rate_hz,
                             m_sampleIndex);
     m_scenario->generate(block);
+    m_shunts->apply(block);
     samples = n;
     if (m_options.protocol == WireProtocol::Text) {
         std::string text;
@@ -304,6 +306,25 @@ void ProbeEmulator::handleCommands()
                 protocol::FrameType::Status, m_sequence++,
                 protocol::encodeStatus({protocol::StatusLevel::Warning, "the emulator keeps its scenario's rate"})));
             break;
+        case protocol::CommandCode::Shunt: {
+            if (!m_options.shunt) break;  // an older probe: it knows no such command
+            // A repeated channel is its scenario channel again; the decisions have no bridge.
+            const std::size_t measured = m_channels.size() - (m_detector ? kDecisionChannels : 0);
+            const std::size_t base = m_scenario->channels().size();
+            const auto refusal = command->channel < measured
+                                     ? m_shunts->set(command->channel % base, command->on)
+                                     : std::optional<std::string>("channel " + std::to_string(command->channel + 1) +
+                                                                  " has no bridge to shunt");
+            const std::string name =
+                command->channel < m_channels.size() ? m_channels[command->channel].name : std::string("?");
+            writeAll(protocol::encodeFrame(
+                protocol::FrameType::Status, m_sequence++,
+                protocol::encodeStatus(
+                    refusal ? protocol::StatusPayload{protocol::StatusLevel::Error, "shunt: " + *refusal}
+                            : protocol::StatusPayload{protocol::StatusLevel::Ok,
+                                                      std::string(command->on ? "shunt on " : "shunt off ") + name})));
+            break;
+        }
         }
     }
 }

@@ -15,6 +15,7 @@
 #include "devices/PortSource.h"
 #include "devices/protocol/BinaryDecoder.h"
 #include "devices/simulator/ScenarioCatalog.h"
+#include "devices/simulator/ShuntedBridges.h"
 #include "devices/simulator/SimulatedScenario.h"
 
 #include <atomic>
@@ -56,6 +57,10 @@ struct EmulatorOptions {
     // cantilevers and sends its decision and best R each way as channels
     // of kind "decision" named out, rab and rba (panel scan, TSP/1).
     bool probeDetector = false;
+    // Its strain channels' bridges can switch a shunt (TSP/1 command 6,
+    // devices/simulator/ShuntedBridges.h); false: an older probe that
+    // answers nothing to the command.
+    bool shunt = true;
 };
 
 // "restart@3", "sequence-jump@2.5", "frozen-sequence", "wrong-decisions": the command line's
@@ -99,6 +104,7 @@ private:
 
     EmulatorOptions m_options;
     std::unique_ptr<simulator::SimulatedScenario> m_scenario;
+    std::optional<simulator::ShuntedBridges> m_shunts;  // on the scenario's own channels
     std::vector<core::ChannelDescriptor> m_channels;
     double m_rate_hz = 0.0;
     int m_master = -1;

@@ -167,6 +167,10 @@ std::vector<std::uint8_t> encodeCommand(const CommandPayload& command)
     Writer w;
     w.u8(static_cast<std::uint8_t>(command.code));
     if (command.code == CommandCode::SetRate) w.u32(command.argument);
+    if (command.code == CommandCode::Shunt) {
+        w.u8(command.channel);
+        w.u8(command.on ? 1 : 0);
+    }
     return std::move(w.bytes());
 }
 
@@ -240,9 +244,15 @@ std::optional<CommandPayload> parseCommand(const std::vector<std::uint8_t>& payl
 {
     Reader r(payload);
     const std::uint8_t code = r.u8();
-    if (!r.ok() || code < 1 || code > 5) return std::nullopt;
+    if (!r.ok() || code < 1 || code > 6) return std::nullopt;
     CommandPayload c{static_cast<CommandCode>(code), 0};
     if (c.code == CommandCode::SetRate) c.argument = r.u32();
+    if (c.code == CommandCode::Shunt) {
+        c.channel = r.u8();
+        const std::uint8_t state = r.u8();
+        if (state > 1) return std::nullopt;
+        c.on = state == 1;
+    }
     if (!r.ok() || !r.atEnd()) return std::nullopt;
     return c;
 }

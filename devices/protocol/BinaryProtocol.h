@@ -44,6 +44,11 @@ enum class CommandCode : std::uint8_t {
     SetRate = 0x03,  // argument: u32 sample rate in millihertz
     Tare = 0x04,
     RequestInfo = 0x05,
+    // arguments: u8 channel (its place in INFO), u8 1 on / 0 off. The
+    // device answers with a STATUS: level ok and "shunt on NAME" / "shunt off
+    // NAME", or level error and "shunt: " and why not. A device that does
+    // not know the command answers nothing (docs/protocol.md).
+    Shunt = 0x06,
 };
 
 enum class StatusLevel : std::uint8_t { Ok = 0, Warning = 1, Error = 2 };
@@ -76,6 +81,8 @@ struct StatusPayload {
 struct CommandPayload {
     CommandCode code = CommandCode::Start;
     std::uint32_t argument = 0;  // SetRate only
+    std::uint8_t channel = 0;    // Shunt only
+    bool on = false;             // Shunt only
 };
 
 // A frame as it left the decoder: checked CRC, parsed header.

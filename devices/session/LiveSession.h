@@ -110,6 +110,13 @@ public:
 
     void start();  // starts streaming
     const BlockSource& source() const { return m_acquisition->source(); }
+    // A shunt across channel `channel`'s bridge, and what the device said
+    // (BlockSource::requestShunt, takeStatuses; ShuntCheckRun uses them).
+    std::optional<std::string> requestShunt(std::size_t channel, bool on)
+    {
+        return m_acquisition->source().requestShunt(channel, on);
+    }
+    std::vector<DeviceStatus> takeStatuses() { return m_acquisition->source().takeStatuses(); }
     AcquisitionStats stats() const { return m_acquisition->stats(); }
     // Every channel of the device, for the traces and the wizards.
     std::shared_ptr<const core::LiveBuffer> buffer() const { return m_buffer; }

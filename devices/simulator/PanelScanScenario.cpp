@@ -27,7 +27,8 @@ PanelScanScenario::PanelScanScenario(const PanelScanParameters& parameters)
       m_decay(0.0)
 {
     requirePositive(m_p.sampleRate_hz, "sample rate");
-    requirePositive(m_p.strokeAmplitude_m, "stroke amplitude");
+    if (!(m_p.strokeAmplitude_m >= 0.0))  // 0: the probe at rest
+        throw std::invalid_argument("panel scan: stroke amplitude must not be negative");
     requirePositive(m_p.strokeFrequency_hz, "stroke frequency");
     requirePositive(m_p.defectWidth_m, "defect width");
     requirePositive(m_p.adaptationTime_s, "adaptation time");

@@ -29,7 +29,7 @@ namespace tactiscope::devices::simulator {
 
 struct PanelScanParameters {
     double sampleRate_hz = 500.0;        // the paper's Δt = 2 ms
-    double strokeAmplitude_m = 0.100;    // half of the ~200 mm stroke
+    double strokeAmplitude_m = 0.100;    // half of the ~200 mm stroke; 0: the probe at rest
     double strokeFrequency_hz = 0.5;     // "slow movement"
     double cantileverSpacing_m = 0.015;  // the prototype's 15 mm
     bool hasDefect = true;
@@ -55,7 +55,12 @@ public:
     // Throws std::invalid_argument for non-physical parameters.
     explicit PanelScanScenario(const PanelScanParameters& parameters = {});
 
-    std::string name() const override { return m_p.restBetweenPanels_s > 0.0 ? "panel line" : "panel scan"; }
+    std::string name() const override
+    {
+        return m_p.strokeAmplitude_m == 0.0    ? "panel probe at rest"
+               : m_p.restBetweenPanels_s > 0.0 ? "panel line"
+                                               : "panel scan";
+    }
     std::optional<core::Mode> mode() const override { return core::Mode::PanelScan; }
     const std::vector<core::ChannelDescriptor>& channels() const override { return m_channels; }
     double sampleRate_hz() const override { return m_p.sampleRate_hz; }

@@ -10,16 +10,18 @@ namespace tactiscope::devices::simulator {
 
 std::vector<std::string> scenarioIds()
 {
-    return {kPanelScanScenario,  kPanelLineScenario,       kPalpationScenario,       "capacitive-weights",
-            "gauge-calibration", "gauge-calibration-soft", "capacitive-calibration", kCapacitiveOverloadScenario};
+    return {kPanelScanScenario,       kPanelLineScenario,       kPanelRestScenario,
+            kPalpationScenario,       "capacitive-weights",     "gauge-calibration",
+            "gauge-calibration-soft", "capacitive-calibration", kCapacitiveOverloadScenario};
 }
 
 std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64_t seed, std::optional<double> rate_hz)
 {
-    if (id == kPanelScanScenario || id == kPanelLineScenario) {
+    if (id == kPanelScanScenario || id == kPanelLineScenario || id == kPanelRestScenario) {
         PanelScanParameters parameters;
         parameters.seed = seed;
         if (id == kPanelLineScenario) parameters.restBetweenPanels_s = kPanelLineRest_s;
+        if (id == kPanelRestScenario) parameters.strokeAmplitude_m = 0.0;
         if (rate_hz) parameters.sampleRate_hz = *rate_hz;
         return std::make_unique<PanelScanScenario>(parameters);
     }

@@ -20,6 +20,9 @@ inline const std::string kPalpationScenario{core::toString(core::Mode::Palpation
 // while the next comes: a triggered recording's "one session per panel".
 inline const std::string kPanelLineScenario{"panel-line"};
 inline constexpr double kPanelLineRest_s = 3.0;
+// The panel probe at rest on its stand: its gauges' noise only, for a zero
+// or a shunt check (its bridges switch a shunt: ShuntedBridges.h).
+inline const std::string kPanelRestScenario{"panel-rest"};
 // The extra-soft capacitive beam overloaded: the weights of
 // capacitive-weights (10 to 150 mgf), half a second each, after 2 s
 // unloaded; past its safe force (0.6 mN warns, 0.96 mN is critical) from

@@ -8,11 +8,13 @@
 #include <cmath>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 namespace tactiscope::devices::simulator {
 
 SimulatorSource::SimulatorSource(std::unique_ptr<SimulatedScenario> scenario, const SimulatorOptions& options)
-    : m_scenario(std::move(scenario)),
+    : m_shunts(scenario ? scenario->channels() : std::vector<core::ChannelDescriptor>{}),
+      m_scenario(std::move(scenario)),
       m_options(options)
 {
     if (!m_scenario) throw std::invalid_argument("simulator needs a scenario");
@@ -59,8 +61,28 @@ ReadStatus SimulatorSource::readBlock(core::SampleBlock& out, std::chrono::milli
     out = core::SampleBlock(m_scenario->channels().size(), count, static_cast<double>(m_produced) * dt_s, dt_s,
                             m_produced, m_sequence++);
     m_scenario->generate(out);
+    {
+        const std::lock_guard lock(m_shuntMutex);
+        m_shunts.apply(out);
+    }
     m_produced += count;
     return ReadStatus::Block;
+}
+
+std::optional<std::string> SimulatorSource::requestShunt(std::size_t channel, bool on)
+{
+    const std::lock_guard lock(m_shuntMutex);
+    const auto refusal = m_shunts.set(channel, on);
+    const std::string name = channel < channels().size() ? channels()[channel].name : std::string("?");
+    m_statuses.push_back(refusal ? DeviceStatus{2, "shunt: " + *refusal}
+                                 : DeviceStatus{0, std::string(on ? "shunt on " : "shunt off ") + name});
+    return std::nullopt;
+}
+
+std::vector<DeviceStatus> SimulatorSource::takeStatuses()
+{
+    const std::lock_guard lock(m_shuntMutex);
+    return std::exchange(m_statuses, {});
 }
 
 }  // namespace tactiscope::devices::simulator

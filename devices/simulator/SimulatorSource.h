@@ -5,12 +5,14 @@
 #pragma once
 
 #include "devices/BlockSource.h"
+#include "devices/simulator/ShuntedBridges.h"
 #include "devices/simulator/SimulatedScenario.h"
 
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <optional>
 
 namespace tactiscope::devices::simulator {
@@ -40,8 +42,15 @@ public:
     const std::vector<core::ChannelDescriptor>& channels() const override { return m_scenario->channels(); }
     double nominalSampleRate_hz() const override { return m_scenario->sampleRate_hz(); }
     ReadStatus readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout) override;
+    // Its strain channels' bridges switch a shunt as a TSP/1 probe's do
+    // (ShuntedBridges.h), and it answers as one would.
+    std::optional<std::string> requestShunt(std::size_t channel, bool on) override;
+    std::vector<DeviceStatus> takeStatuses() override;
 
 private:
+    mutable std::mutex m_shuntMutex;  // guards the two below: the owner switches, the reader applies
+    ShuntedBridges m_shunts;
+    std::vector<DeviceStatus> m_statuses;
     std::unique_ptr<SimulatedScenario> m_scenario;
     SimulatorOptions m_options;
     std::optional<std::uint64_t> m_totalSamples;

@@ -1,0 +1,148 @@
+// The shunt-check subcommand: options, the device, a ShuntCheckRun driven
+// to its end, the line, and the record in the calibration history.
+#include "ShuntCheckCommand.h"
+
+#include "CliSupport.h"
+#include "core/storage/SessionStore.h"
+#include "devices/ReconnectingSource.h"
+#include "devices/session/ShuntCheckRun.h"
+
+#include <QLocale>
+#include <QTextStream>
+
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+namespace tactiscope::cli {
+namespace {
+
+std::optional<core::straingauge::BridgeType> parseBridge(const QString& text)
+{
+    if (text == QStringLiteral("quarter")) return core::straingauge::BridgeType::Quarter;
+    if (text == QStringLiteral("half")) return core::straingauge::BridgeType::HalfBending;
+    if (text == QStringLiteral("full")) return core::straingauge::BridgeType::FullBending;
+    return std::nullopt;
+}
+
+// "+5.00", "-0.56", "0.00" (no sign on what rounds to nothing).
+QString deviationText(double deviation)
+{
+    const double percent = std::round(deviation * 1e4) / 100.0;
+    return (percent > 0.0 ? QStringLiteral("+") : QString()) +
+           QLocale::c().toString(percent == 0.0 ? 0.0 : percent, 'f', 2);
+}
+
+}  // namespace
+
+int runShuntCheck(const QStringList& arguments)
+{
+    const QString name = QStringLiteral("shunt-check");
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Check a strain channel's bridge with its probe's shunt (TSP/1 command 6): the mean with the shunt off and\n"
+        "on, one second each, against the step the shunt, the gauge and the bridge say it must be:\n"
+        "quarter y/GF, half y/((2 + y)GF), full y/((4 + 2y)GF), with y = -Rg/(Rg + Rs)."));
+    parser.addOptions({
+        {QStringLiteral("port"), QStringLiteral("Serial port or link to it (required)."), QStringLiteral("PATH")},
+        {QStringLiteral("channel"), QStringLiteral("The strain channel, by name (required)."), QStringLiteral("NAME")},
+        {QStringLiteral("bridge"), QStringLiteral("quarter (default), half or full (bending)."),
+         QStringLiteral("TYPE")},
+        {QStringLiteral("gauge-ohms"), QStringLiteral("The gauges' resistance (default 350)."), QStringLiteral("OHM")},
+        {QStringLiteral("shunt-ohms"), QStringLiteral("The shunt's resistance (default 100000)."),
+         QStringLiteral("OHM")},
+        {QStringLiteral("gauge-factor"), QStringLiteral("The gauges' factor, from their data sheet (default 2)."),
+         QStringLiteral("GF")},
+        {QStringLiteral("tolerance"), QStringLiteral("The deviation that still passes, in percent (default 1)."),
+         QStringLiteral("PERCENT")},
+        {QStringLiteral("db"), QStringLiteral("Keep the result in this store's calibration history."),
+         QStringLiteral("FILE")},
+        {QStringLiteral("operator"), QStringLiteral("Who checks."), QStringLiteral("NAME")},
+    });
+    if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
+    const QString usage = commandUsage(parser, name);
+    if (!parser.positionalArguments().isEmpty())
+        return usageError(QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().front()), usage);
+    if (!parser.isSet(QStringLiteral("port"))) return usageError(QStringLiteral("--port PATH is required"), usage);
+    if (!parser.isSet(QStringLiteral("channel")))
+        return usageError(QStringLiteral("--channel NAME is required"), usage);
+    devices::session::ShuntCheckSettings settings;
+    if (parser.isSet(QStringLiteral("bridge"))) {
+        const auto bridge = parseBridge(parser.value(QStringLiteral("bridge")));
+        if (!bridge) return usageError(QStringLiteral("--bridge must be quarter, half or full"), usage);
+        settings.bridge = *bridge;
+    }
+    const auto positive = [&](const char* option, double& into) {
+        if (!parser.isSet(QLatin1String(option))) return true;
+        const auto value = parseNumber(parser.value(QLatin1String(option)));
+        if (!value || !(*value > 0.0)) return false;
+        into = *value;
+        return true;
+    };
+    double tolerance_percent = settings.tolerance * 100.0;
+    for (const auto& [option, into] :
+         {std::pair{"gauge-ohms", &settings.gauge_ohm}, std::pair{"shunt-ohms", &settings.shunt_ohm},
+          std::pair{"gauge-factor", &settings.gaugeFactor}, std::pair{"tolerance", &tolerance_percent}})
+        if (!positive(option, *into))
+            return usageError(QStringLiteral("--%1 must be a positive number").arg(QLatin1String(option)), usage);
+    settings.tolerance = tolerance_percent / 100.0;
+
+    std::unique_ptr<devices::BlockSource> source;
+    try {
+        source = devices::serialOpener(parser.value(QStringLiteral("port")).toStdString(), {}, 921600, {})();
+    } catch (const std::exception& e) {
+        printError(QString::fromStdString(e.what()));
+        return kExitFailure;
+    }
+    const auto channels = source->channels();
+    const std::string channelName = parser.value(QStringLiteral("channel")).toStdString();
+    const auto found = std::ranges::find(channels, channelName, &core::ChannelDescriptor::name);
+    if (found == channels.end()) {
+        printError(QStringLiteral("the probe has no channel '%1'").arg(toQString(channelName)));
+        return kExitUsage;
+    }
+    settings.channel = static_cast<std::size_t>(found - channels.begin());
+    const std::string sensor = source->identity().serial + " " + channelName;
+
+    devices::session::LiveSessionOptions options;
+    options.storePath = parser.value(QStringLiteral("db")).toStdString();
+    devices::session::LiveSession session(std::move(source), options);
+    session.start();
+    devices::session::ShuntCheckRun run(session, settings);
+    installStopSignals();
+    while (!run.advance()) {
+        if (stopRequested()) {
+            printError(QStringLiteral("stopped before the check was done; the shunt is switched off"));
+            return kExitFailure;
+        }
+        session.poll();
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    const auto& result = *run.result();
+    if (!result.refusal.empty()) {
+        printError(QString::fromStdString(result.refusal));
+        return kExitFailure;
+    }
+    const auto microstrain = [](double strain, int decimals) {
+        return QLocale::c().toString(strain * 1e6, 'f', decimals);
+    };
+    const auto& check = result.check;
+    QTextStream(stdout) << "Shunt check " << toQString(channelName) << ": expected " << microstrain(run.expected(), 1)
+                        << " µε, measured " << microstrain(result.measured.step, 1) << " ± "
+                        << microstrain(result.measured.uncertainty, 1) << " µε, deviation "
+                        << deviationText(check.deviation) << " % (tolerance "
+                        << QLocale::c().toString(tolerance_percent) << " %): " << (check.passed ? "PASS" : "FAIL")
+                        << Qt::endl;
+    if (parser.isSet(QStringLiteral("db"))) {
+        try {
+            core::storage::SessionStore store(options.storePath);
+            store.addCalibration(run.record(sensor, parser.value(QStringLiteral("operator")).toStdString()));
+        } catch (const core::storage::StorageError& e) {
+            printError(QStringLiteral("the result was not kept: %1").arg(QString::fromStdString(e.what())));
+            return kExitFailure;
+        }
+    }
+    return check.passed ? kExitOk : kExitFailure;
+}
+
+}  // namespace tactiscope::cli
