@@ -39,6 +39,7 @@
 #include "ui/XYPlotWidget.h"
 #include "ui/calibration/CalibrationHistory.h"
 #include "ui/calibration/CalibrationWizards.h"
+#include "ui/calibration/ShuntCheckDialog.h"
 #include "ui/modes/LiveModeView.h"
 #include "ui/modes/ModeUi.h"
 #include "ui/review/ReviewActions.h"
@@ -354,6 +355,15 @@ void MainWindow::createMenus()
     for (const auto& definition : core::modeDefinitions())
         if (const auto action = modeUi(definition.mode).calibrateAction)
             tools->addAction(action(), this, [this, mode = definition.mode] { calibrate(mode); });
+    QAction* shunt = tools->addAction(tr("Sh&unt check…"), this, [this] {
+        if (!m_session) return statusBar()->showMessage(tr("Connect a probe to check its bridges."), 5000);
+        auto* dialog = new ShuntCheckDialog({[this] { return m_session.get(); }, m_storePath,
+                                             QString::fromStdString(m_sessionBar->metadata().operatorName)},
+                                            this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->show();
+    });
+    shunt->setObjectName(QStringLiteral("shuntCheckAction"));
     tools->addAction(tr("Calibration &history…"), this, [this] {
         auto* history = new CalibrationHistory(m_storePath, this);
         history->setAttribute(Qt::WA_DeleteOnClose);

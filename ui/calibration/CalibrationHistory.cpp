@@ -53,6 +53,7 @@ MainValue mainValueOf(const std::string& kind)
 {
     if (kind == core::calibration::kCapacitiveKind)
         return {"sensitivity_pf_per_mn", "sensitivity_standard_error_pf_per_mn", "Sensitivity (pF/mN)"};
+    if (kind == core::calibration::kShuntCheckKind) return {"shunt_deviation_percent", "", "Shunt check deviation (%)"};
     return {"gauge_factor", "gauge_factor_standard_error", "Gauge factor"};
 }
 
@@ -207,12 +208,17 @@ void CalibrationHistory::showSensor()
         const auto value = r.value(main.key);
         const auto error = r.value(main.standardErrorKey);
         const bool active = i + 1 == m_shown.size();
-        const QStringList cells{screenDateTime(r.timestampUtc) + (active ? tr("  ✓ active") : QString()),
+        // A check has no fit and is never "in use": it passed or failed.
+        const bool check = r.kind == core::calibration::kShuntCheckKind;
+        const QString state = check    ? (r.value("shunt_passed") == 1.0 ? tr("  ✓ passed") : tr("  ✗ failed"))
+                              : active ? tr("  ✓ active")
+                                       : QString();
+        const QStringList cells{screenDateTime(r.timestampUtc) + state,
                                 QString::fromStdString(r.operatorName),
                                 value ? fixedText(*value, decimals) : QStringLiteral("–"),
                                 error ? significant(*error, 2) : QStringLiteral("–"),
-                                fixedText(r.fit.rSquared, 6),
-                                QString::number(r.fit.points),
+                                check ? QStringLiteral("–") : fixedText(r.fit.rSquared, 6),
+                                check ? QStringLiteral("–") : QString::number(r.fit.points),
                                 sessionCounts.count(m_shown[i]->id) ? QString::number(sessionCounts[m_shown[i]->id])
                                                                     : QStringLiteral("?")};
         for (int c = 0; c < cells.size(); ++c) {
