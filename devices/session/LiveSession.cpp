@@ -177,8 +177,9 @@ std::optional<std::string> LiveSession::beginRecording(const core::storage::Sess
     const double rate_hz = source().nominalSampleRate_hz();
     takeNotices();  // what the link noticed before belongs to no session
     // Nor do the defects and presses found before the record press: taken
-    // now, while no recorder would store them.
-    takeResults();
+    // now, while no recorder would store them. A triggered session's start
+    // reaches back: those after its first sample waited for it (takeResults()).
+    if (!m_trigger) takeResults();
     try {
         const auto directory = std::filesystem::path(m_options.storePath).parent_path();
         if (!directory.empty()) std::filesystem::create_directories(directory);
@@ -395,6 +396,9 @@ void LiveSession::takeResults()
     if (m_recorder) {
         take.recordedUntil_s = m_recorder->consumedUntil_s().value_or(-1.0);
         take.recordedFrom_s = m_recorder->acquisitionOrigin_s().value_or(take.recordedFrom_s);
+    } else if (const auto reachBack = m_gate->reachBack_s()) {
+        // Armed: what a session the trigger is about to start may reach back to waits for it.
+        take.recordedUntil_s = *reachBack;
     }
     for (const auto& [mode, unit] : m_units) {
         const bool own = m_recorder && m_metadata.mode == mode;

@@ -67,6 +67,11 @@ std::optional<bool> ShuntCheckRun::answer(bool on)
             m_deviceRefusal = status.message.substr(7);
             return false;
         }
+        // The reference sketch before command 6 said so (docs/firmware.md).
+        if (status.message == "unknown command") {
+            m_deviceRefusal = "it does not know the shunt command (firmware older than TSP/1 command 6)";
+            return false;
+        }
         if (status.message.rfind(on ? "shunt on" : "shunt off", 0) == 0) return true;
     }
     return std::nullopt;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace tactiscope::devices::session {
@@ -32,6 +33,7 @@ void TriggerGate::arm(const core::trigger::TriggerSettings& settings, QuantityRe
     const std::lock_guard lock(m_mutex);
     m_maxBacklog = machine.preSamples() + static_cast<std::uint64_t>(std::ceil(maxBacklog_s * sampleRate_hz));
     m_machine.emplace(std::move(machine));
+    m_rate_hz = sampleRate_hz;
     m_reader = std::move(reader);
     m_held.clear();
     m_sessions.clear();
@@ -73,6 +75,19 @@ std::optional<TriggeredSession> TriggerGate::pendingStart() const
     const std::lock_guard lock(m_mutex);
     if (m_recorder || m_finished || m_sessions.empty()) return std::nullopt;
     return m_sessions.front();
+}
+
+std::optional<double> TriggerGate::reachBack_s() const
+{
+    const std::lock_guard lock(m_mutex);
+    if (!m_machine) return std::nullopt;
+    const auto samples = [this](std::uint64_t n) { return static_cast<double>(n) / m_rate_hz; };
+    if (!m_sessions.empty() && !m_recorder) {
+        const auto& pending = m_sessions.front();
+        return pending.triggerTime_s - samples(pending.span.trigger - pending.span.first);
+    }
+    if (m_held.empty()) return -std::numeric_limits<double>::infinity();
+    return m_held.back().endTime_s() - samples(m_machine->preSamples());
 }
 
 void TriggerGate::attach(std::shared_ptr<core::storage::Recorder> recorder)

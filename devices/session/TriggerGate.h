@@ -53,6 +53,11 @@ public:
 
     // A session triggered and waiting for its recorder.
     std::optional<TriggeredSession> pendingStart() const;
+    // The stream time of the earliest sample a session not yet recording
+    // may start at (one triggered and waiting, or one triggered by the
+    // samples to come, reaching back its pre-trigger time): results that
+    // end after it may belong to a recording and wait. None when disarmed.
+    std::optional<double> reachBack_s() const;
     // Its recorder: from now on it gets the session's samples, the held
     // ones first.
     void attach(std::shared_ptr<core::storage::Recorder> recorder);
@@ -78,6 +83,7 @@ private:
     QuantityReader m_reader;
     std::vector<double> m_values;
     std::uint64_t m_maxBacklog = 0;  // samples
+    double m_rate_hz = 1.0;
     std::deque<core::SampleBlock> m_held;
     std::deque<TriggeredSession> m_sessions;  // the front one is the recorder's, once attached
     std::shared_ptr<core::storage::Recorder> m_recorder;

@@ -19,6 +19,10 @@
 // Wiring (both ADS1220 on the same SPI bus, each with its own chip select):
 //   SCLK 13, DOUT/MISO 12, DIN/MOSI 11; bridge A: CS 10; bridge B: CS 8;
 //   defect LED on pin 2 (through 330 Ω to ground), a piezo buzzer on pin 3.
+//   Shunt calibration: pins 4 (bridge A) and 5 (bridge B) each drive a
+//   reed relay (or a photo-MOS switch) that puts a 100 kΩ 0.1 % resistor
+//   across the bridge's first active gauge (TSP/1 command 6): Tactiscope's
+//   shunt check compares the step with the shunt, gauge and bridge.
 //   Each bridge: excitation from the board's 3.3 V
 //   (AVDD), signal on AIN0/AIN1, the excitation also on REFP0/REFN0 so the
 //   reading is ratiometric (supply drift cancels).
@@ -50,6 +54,7 @@ constexpr float kStrainPerCount = 2.0f / (kGaugeFactor * kGain * 8388608.0f);
 constexpr int kChipSelect[2] = {10, 8};
 constexpr int kDefectLed = 2;
 constexpr int kBuzzer = 3;
+constexpr int kShunt[2] = {4, 5};  // a relay putting the shunt across bridge A's, B's first gauge
 constexpr uint32_t kDefectShow_ms = 200;  // how long the LED and the buzzer tell a defect
 constexpr unsigned kBuzzer_hz = 2700;     // a piezo's loudest
 constexpr uint8_t kChannels = 7;          // a, b, then the detector's out, rab, rba, lag_ab, lag_ba
@@ -342,6 +347,17 @@ void handleCommand(const uint8_t* payload, uint16_t size)
     case 5:  // request info
         sendInfo();
         break;
+    case 6:  // shunt: u8 channel, u8 1 on / 0 off; answered either way
+        if (size < 3 || payload[2] > 1) {
+            sendStatus(2, "shunt: malformed command");
+        } else if (payload[1] > 1) {
+            sendStatus(2, "shunt: only channels a and b have a bridge");
+        } else {
+            digitalWrite(kShunt[payload[1]], payload[2] ? HIGH : LOW);
+            sendStatus(0, payload[2] ? (payload[1] ? "shunt on b" : "shunt on a")
+                                     : (payload[1] ? "shunt off b" : "shunt off a"));
+        }
+        break;
     default:
         sendStatus(1, "unknown command");
     }
@@ -383,6 +399,10 @@ void setup()
     SPI.begin();
     pinMode(kDefectLed, OUTPUT);
     pinMode(kBuzzer, OUTPUT);
+    for (int shunt : kShunt) {
+        pinMode(shunt, OUTPUT);
+        digitalWrite(shunt, LOW);  // no shunt until the host asks
+    }
     for (int adc = 0; adc < 2; ++adc) {
         pinMode(kChipSelect[adc], OUTPUT);
         digitalWrite(kChipSelect[adc], HIGH);

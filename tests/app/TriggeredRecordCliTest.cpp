@@ -4,7 +4,8 @@
 // - a panel line (one stroke per panel, 3 s rest between panels): three
 //   sessions, door-17 to door-19, each with its trigger 0.5 s in (the
 //   first sample above 20 µε is sample 250, none before it is) and ending
-//   exactly 1 s (500 samples) after the last sample above the level;
+//   exactly 1 s (500 samples) after the last sample above the level, with
+//   both crossings of the panel's dent stored (the one that triggered too);
 // - the capacitive beam overloaded: its model's limits (0.597 mN warning,
 //   0.956 mN critical: core/sensors/SensorLimits.h) are crossed when the
 //   70 mgf and 100 mgf steps settle, by hand at 5.04 s and 7.05 s (steps at
@@ -77,6 +78,14 @@ TEST(TriggeredRecordCli, APanelLineGetsOneSessionPerPanelFromHalfASecondBeforeIt
         const auto lastAbove = static_cast<std::size_t>(
             a.rend() - std::find_if(a.rbegin(), a.rend(), [](double v) { return v > kLevel; }) - 1);
         EXPECT_EQ(a.size(), lastAbove + 1 + 500);
+        // The stroke crosses the panel's dent out and back: A then B, then B
+        // then A, the first of them the very crossing that triggered.
+        auto defects = store.events(session.id);
+        std::erase_if(defects, [](const auto& e) { return e.kind != core::EventKind::Defect; });
+        ASSERT_EQ(defects.size(), 2u);
+        EXPECT_EQ(defects[0].direction, 1);
+        EXPECT_EQ(defects[1].direction, -1);
+        EXPECT_NEAR(defects[0].start_s, 0.5, 0.1);
     }
 }
 

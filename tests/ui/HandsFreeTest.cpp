@@ -2,7 +2,8 @@
 // Session ▸ Trigger… arms "a above 20 µε, 0.5 s before, 1 s after, 3
 // sessions" on a panel line, and the store then holds door-17, door-18 and
 // door-19, each with its trigger event 0.5 s in and ending 1 s after the
-// last sample above the level (the same rule the CLI test checks); the
+// last sample above the level (the same rule the CLI test checks), with
+// both of its stroke's defects, the triggering one among them; the
 // banner says armed, then triggered; the trigger disarms itself when done.
 // An overloaded capacitive beam turns the banner amber, then red, and
 // Session ▸ Limits… lists the beam's safe force with where it comes from
@@ -79,6 +80,7 @@ TEST(HandsFree, TheTriggerDialogCutsOneSessionPerPanelFromTheMainWindow)
     EXPECT_EQ(child<QPushButton>(window, "recordButton")->text(), QStringLiteral("■  Disarm"));
     ASSERT_TRUE(waitFor([&] { return banner->triggerText().startsWith(QStringLiteral("Triggered")); }, 8000));
     EXPECT_TRUE(window.isRecording());
+    tactiscope::testing::runEventLoopFor(1400);  // into the session: its clock and its defects
     tactiscope::testing::saveScreenshot(window, QStringLiteral("trigger-recording"));
     // Three panels, five seconds apart; then the trigger disarms itself.
     ASSERT_TRUE(waitFor([&] { return !window.liveSession()->triggerArmed(); }, 30000));
@@ -104,6 +106,14 @@ TEST(HandsFree, TheTriggerDialogCutsOneSessionPerPanelFromTheMainWindow)
         const auto lastAbove = static_cast<std::size_t>(
             a.rend() - std::find_if(a.rbegin(), a.rend(), [](double v) { return v > 20e-6; }) - 1);
         EXPECT_EQ(a.size(), lastAbove + 1 + 500);
+        // The stroke crosses the panel's dent out and back: A then B, then B
+        // then A, the first of them the very crossing that triggered.
+        auto defects = sessions.events(s.id);
+        std::erase_if(defects, [](const auto& e) { return e.kind != core::EventKind::Defect; });
+        ASSERT_EQ(defects.size(), 2u);
+        EXPECT_EQ(defects[0].direction, 1);
+        EXPECT_EQ(defects[1].direction, -1);
+        EXPECT_NEAR(defects[0].start_s, 0.5, 0.1);
     }
     std::ranges::sort(subjects);
     EXPECT_EQ(subjects, (std::vector<std::string>{"door-17", "door-18", "door-19"}));

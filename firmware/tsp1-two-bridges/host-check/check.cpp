@@ -8,6 +8,8 @@
 
 #include <cassert>
 #include <cmath>
+#include <string>
+#include <utility>
 
 namespace {
 
@@ -65,6 +67,29 @@ int main()
     pollCommands();
     assert(rate_mHz == 500000);
     assert(Serial.out.size() > 8 && Serial.out[3] == kStatus);
+
+    // COMMAND shunt on channel b (6, 1, 1): pin 5 high, "shunt on b"; off
+    // again; channel 2 has no bridge and says so.
+    const auto command = [](std::vector<uint8_t> payload) {
+        std::vector<uint8_t> frame{0xA5, 0x5A, 0x01, 0x10, static_cast<uint8_t>(payload.size()), 0x00, 0x09, 0x00};
+        frame.insert(frame.end(), payload.begin(), payload.end());
+        const uint16_t check = crc16Ccitt(frame.data() + 2, 6 + payload.size());
+        frame.push_back(static_cast<uint8_t>(check));
+        frame.push_back(static_cast<uint8_t>(check >> 8));
+        Serial.out.clear();
+        Serial.in = frame;
+        pollCommands();
+        // The STATUS's level and message.
+        assert(Serial.out.size() > 10 && Serial.out[3] == kStatus);
+        return std::pair{Serial.out[8], std::string(Serial.out.begin() + 10, Serial.out.begin() + 10 + Serial.out[9])};
+    };
+    assert(pinLevel[kShunt[1]] == LOW);
+    assert((command({6, 1, 1}) == std::pair{uint8_t{0}, std::string("shunt on b")}));
+    assert(pinLevel[kShunt[1]] == HIGH && pinLevel[kShunt[0]] == LOW);
+    assert((command({6, 1, 0}) == std::pair{uint8_t{0}, std::string("shunt off b")}));
+    assert(pinLevel[kShunt[1]] == LOW);
+    const auto noBridge = command({6, 2, 1});
+    assert(noBridge.first == 2 && noBridge.second.rfind("shunt: ", 0) == 0);
 
     // Ten samples make one DATA frame: 2 channels of int32, stamped with the
     // clock at its first sample.
