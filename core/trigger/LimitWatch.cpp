@@ -32,13 +32,14 @@ std::string LimitSpec::text() const
     if (warning) t += "warning:" + text::formatShortest(*warning);
     if (warning && critical) t += ",";
     if (critical) t += "critical:" + text::formatShortest(*critical);
+    if (hold_s > 0.0) t += ",hold:" + text::formatShortest(hold_s);
     return t;
 }
 
 ParsedLimit parseLimit(std::string_view text)
 {
     const auto fail = [](std::string why) { return ParsedLimit{std::nullopt, std::move(why)}; };
-    const std::string form = "write QUANTITY>warning:W,critical:C (or <; either level alone)";
+    const std::string form = "write QUANTITY>warning:W,critical:C (or <; either level alone; ,hold:S for a hold time)";
     const auto op = text.find_first_of("<>");
     if (op == std::string_view::npos || op == 0) return fail("'" + std::string(text) + "' is no limit: " + form);
     LimitSpec spec;
@@ -57,8 +58,10 @@ ParsedLimit parseLimit(std::string_view text)
             spec.warning = value;
         else if (name == "critical")
             spec.critical = value;
+        else if (name == "hold" && *value >= 0.0)
+            spec.hold_s = *value;
         else
-            return fail("'" + std::string(name) + "' is neither warning nor critical: " + form);
+            return fail("'" + std::string(name) + "' is neither warning, critical nor hold (0 s or more): " + form);
     }
     if (!spec.warning && !spec.critical) return fail("a limit needs a warning or a critical level: " + form);
     if (spec.warning && spec.critical &&

@@ -5,6 +5,7 @@
 // the CLI (`record --limit`) and the GUI share them.
 //   force>warning:0.002,critical:0.003    above: 2 mN warns, 3 mN is critical
 //   a<warning:-8e-4,critical:-1e-3         below
+//   force>critical:0.003,hold:0.2          beyond it for 0.2 s before it is raised
 #pragma once
 
 #include <cstdint>
@@ -34,8 +35,8 @@ struct ParsedLimit {
     std::optional<LimitSpec> limit;
     std::string error;
 };
-// "QUANTITY>warning:W,critical:C" (either level may be left out, not both;
-// above, a warning below its critical; below, above it).
+// "QUANTITY>warning:W,critical:C[,hold:S]" (either level may be left out,
+// not both; above, a warning below its critical; below, above it).
 ParsedLimit parseLimit(std::string_view text);
 
 // A raised or cleared alarm: at sample `index`, the value then, the level.

@@ -41,8 +41,14 @@ TEST(LimitWatch, ReadsTheLimitsWordsAndSaysWhyNot)
     EXPECT_EQ(l->text(), "force>warning:0.002,critical:0.003");
     EXPECT_FALSE(parseLimit("a<critical:-1e-3").limit->above);
     EXPECT_EQ(parseLimit("a<critical:-1e-3").limit->warning, std::nullopt);
-    for (const char* bad : {"", "force", ">warning:1", "force>", "force>warning", "force>warning:x", "force>alarm:1",
-                            "force>warning:3,critical:2", "a<warning:-2,critical:-1"}) {
+    // A hold time in the same words, and back.
+    const auto held = parseLimit("force>critical:0.003,hold:0.2").limit;
+    ASSERT_TRUE(held);
+    EXPECT_EQ(held->hold_s, 0.2);
+    EXPECT_EQ(held->text(), "force>critical:0.003,hold:0.2");
+    for (const char* bad :
+         {"", "force", ">warning:1", "force>", "force>warning", "force>warning:x", "force>alarm:1",
+          "force>warning:3,critical:2", "a<warning:-2,critical:-1", "force>warning:1,hold:-1", "force>hold:1"}) {
         const auto parsed = parseLimit(bad);
         EXPECT_FALSE(parsed.limit) << bad;
         EXPECT_FALSE(parsed.error.empty()) << bad;
