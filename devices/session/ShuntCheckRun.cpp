@@ -84,7 +84,21 @@ bool ShuntCheckRun::advance()
     std::vector<double> fresh;
     while (m_session.buffer()->readNew(m_cursor, m_chunk, 4096) > 0)
         fresh.insert(fresh.end(), m_chunk.values[channel].begin(), m_chunk.values[channel].end());
-    if (m_cursor.overrun > 0) return refuse("the display buffer overran: the check missed samples"), true;
+    // Samples missed (the owner stalled behind the live buffer's two
+    // seconds): a window must be contiguous, so the one being filled starts
+    // again from the samples after the gap; a workstation that keeps
+    // missing them cannot check.
+    if (m_cursor.overrun > 0) {
+        m_cursor.overrun = 0;
+        if (++m_overruns > kMostOverruns)
+            return refuse("the check kept missing samples: the workstation is too busy to follow the stream"), true;
+        if (m_phase == Phase::Baseline) m_off.clear();
+        if (m_phase == Phase::Settle || m_phase == Phase::Shunted) {
+            m_on.clear();
+            m_settled = 0;
+            m_phase = Phase::Settle;
+        }
+    }
     const auto elapsed_s = [this] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - m_asked).count();
     };

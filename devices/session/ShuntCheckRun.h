@@ -79,6 +79,8 @@ private:
     core::LiveChunk m_chunk;
     std::vector<double> m_off, m_on;
     std::size_t m_settled = 0;
+    static constexpr int kMostOverruns = 5;
+    int m_overruns = 0;
     Phase m_phase = Phase::Baseline;
     bool m_shuntOn = false;
     std::chrono::steady_clock::time_point m_asked;

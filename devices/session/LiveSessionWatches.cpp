@@ -1,0 +1,197 @@
+// LiveSession's hands-free part (issue 39): what a trigger or a limit can
+// watch, arming and disarming the trigger and cutting its sessions, and
+// the limit alarms told and stored.
+#include "devices/session/LiveSession.h"
+
+#include "core/storage/DefectRecords.h"
+
+#include <algorithm>
+
+namespace tactiscope::devices::session {
+
+std::vector<core::ChannelDescriptor> LiveSession::watchableQuantities() const
+{
+    std::vector<core::ChannelDescriptor> watchable = m_channels;
+    if (const auto* unit = unitOf(m_mode))
+        for (const auto& quantity : unit->quantities())
+            watchable.push_back({quantity.name, quantity.unit, quantity.kind});
+    return watchable;
+}
+
+// A device channel by its name, else a quantity of the current mode's
+// processor; none, with the names there are, for anything else.
+std::optional<QuantityReader> LiveSession::readerFor(const std::string& quantity, std::string& refusal) const
+{
+    for (std::size_t c = 0; c < m_channels.size(); ++c)
+        if (m_channels[c].name == quantity) return QuantityReader::deviceChannel(c, m_channels[c].unit);
+    if (const auto* unit = unitOf(m_mode))
+        for (const auto& offered : unit->quantities())
+            if (offered.name == quantity) return QuantityReader::derived(offered);
+    std::string names;
+    for (const auto& watchable : watchableQuantities()) names += (names.empty() ? "" : ", ") + watchable.name;
+    refusal = "nothing called '" + quantity + "' to watch: the " + std::string(core::toString(m_mode)) +
+              " mode on this device has " + names;
+    return std::nullopt;
+}
+
+// The trigger and the limits read the processors now running: after a
+// processor was rebuilt (another profile, calibration, roles) or the mode
+// changed. A quantity gone reads as no value; limits that changed with the
+// profile or the mode are set anew.
+void LiveSession::refreshReaders()
+{
+    if (!m_gate) return;  // building the first processors
+    std::string ignored;
+    if (m_trigger) m_gate->replaceReader(readerFor(m_trigger->condition.quantity, ignored).value_or(QuantityReader()));
+    const auto wanted = wantedLimits();
+    const auto same = std::ranges::equal(wanted, m_effectiveLimits,
+                                         [](const auto& a, const auto& b) { return a.limit.text() == b.limit.text(); });
+    if (!same) return applyLimits();
+    std::vector<QuantityReader> readers;
+    for (const auto& limit : m_effectiveLimits)
+        readers.push_back(readerFor(limit.limit.quantity, ignored).value_or(QuantityReader()));
+    m_limits->replaceReaders(std::move(readers));
+}
+
+// The probe's limits for the current mode, each replaced by one given on
+// the same quantity and side, then the given ones.
+std::vector<core::sensors::SensorLimit> LiveSession::wantedLimits() const
+{
+    std::vector<core::sensors::SensorLimit> wanted;
+    if (const auto* probe = profile(m_mode)) wanted = core::sensors::profileLimits(*probe, m_channels);
+    std::erase_if(wanted, [this](const core::sensors::SensorLimit& own) {
+        return std::ranges::any_of(m_givenLimits, [&own](const core::trigger::LimitSpec& given) {
+            return given.quantity == own.limit.quantity && given.above == own.limit.above;
+        });
+    });
+    for (const auto& given : m_givenLimits) wanted.push_back({given, "given for this session"});
+    return wanted;
+}
+
+// The limits watched from now on; those raised under the old ones end
+// here (stored, while recording). A profile's limit on a quantity this
+// device does not have is told as a problem and not watched.
+void LiveSession::applyLimits()
+{
+    if (m_recorder)
+        for (const auto& raised : m_raisedAlarms) storeAlarm(raised, m_recorder->sessionTime_s());
+    m_raisedAlarms.clear();
+    std::vector<LimitAlarms::Watched> watched;
+    m_effectiveLimits.clear();
+    for (auto& limit : wantedLimits()) {
+        std::string refusal;
+        auto reader = readerFor(limit.limit.quantity, refusal);
+        if (!reader) {
+            m_problems.push_back("limit " + limit.limit.text() + " (" + limit.basis + ") is not watched: " + refusal);
+            continue;
+        }
+        watched.push_back({limit.limit, std::move(*reader)});
+        m_effectiveLimits.push_back(std::move(limit));
+    }
+    m_limits->set(std::move(watched), source().nominalSampleRate_hz());
+}
+
+std::optional<std::string> LiveSession::armTrigger(const core::trigger::TriggerSettings& settings,
+                                                   const core::storage::SessionMetadata& request)
+{
+    if (isRecording()) return "a recording is running; stop it before arming the trigger";
+    if (auto refusal = refusalOf(m_mode)) return refusal;
+    std::string refusal;
+    auto reader = readerFor(settings.condition.quantity, refusal);
+    if (!reader) return refusal;
+    try {
+        m_gate->arm(settings, std::move(*reader), source().nominalSampleRate_hz(), m_options.recorderQueue_s);
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    m_trigger = settings;
+    m_triggerRequest = request;
+    m_triggerRequest.trigger = core::trigger::settingsText(settings);
+    m_triggeredStarted = 0;
+    return std::nullopt;
+}
+
+std::optional<RecordingSummary> LiveSession::disarmTrigger()
+{
+    std::optional<RecordingSummary> open;
+    if (m_trigger && m_recorder) open = finishRecording();
+    m_gate->disarm();
+    m_trigger.reset();
+    return open;
+}
+
+// The gate's sessions: one that has had its last sample is finished; one
+// that was triggered gets its recorder, its held samples and its trigger
+// event.
+void LiveSession::takeTriggered()
+{
+    if (!m_trigger) return;
+    if (m_gate->takeFinished()) m_triggeredSummaries.push_back(finishRecording());
+    if (m_recorder) return;
+    const auto pending = m_gate->pendingStart();
+    if (!pending) return;
+    auto request = m_triggerRequest;
+    request.subject = core::trigger::numberedSubject(m_triggerRequest.subject, m_triggeredStarted);
+    if (auto error = beginRecording(request)) {
+        // The store refuses: every trigger would meet the same refusal.
+        m_gate->disarm();
+        m_trigger.reset();
+        m_linkNotices.push_back({pending->triggerTime_s, "the trigger could not start a recording: " + *error});
+        return;
+    }
+    ++m_triggeredStarted;
+    m_gate->attach(m_recorder);
+    core::storage::SessionEvent trigger;
+    trigger.kind = core::EventKind::Trigger;
+    trigger.start_s = trigger.end_s = m_recorder->sessionTimeOf(pending->triggerTime_s);
+    trigger.note = m_trigger->condition.text();
+    m_recorder->addEvents({trigger});
+}
+
+std::optional<std::string> LiveSession::setLimits(std::vector<core::trigger::LimitSpec> limits)
+{
+    for (const auto& limit : limits) {
+        std::string refusal;
+        if (!readerFor(limit.quantity, refusal)) return refusal;
+        try {
+            core::trigger::LimitWatch check(limit, source().nominalSampleRate_hz());
+        } catch (const std::invalid_argument& e) {
+            return e.what();
+        }
+    }
+    m_givenLimits = std::move(limits);
+    applyLimits();
+    return std::nullopt;
+}
+
+// Each alarm raised or cleared: told on the lists' clock; a clear stores
+// the alarm, from its raise, into the recording.
+void LiveSession::takeLimitAlarms()
+{
+    for (auto alarm : m_limits->take()) {
+        const auto same = [&alarm](const LimitAlarm& raised) {
+            return raised.change.severity == alarm.change.severity && raised.limit.text() == alarm.limit.text();
+        };
+        if (alarm.change.raised) {
+            m_raisedAlarms.push_back(alarm);
+        } else if (const auto raised = std::ranges::find_if(m_raisedAlarms, same); raised != m_raisedAlarms.end()) {
+            if (m_recorder) storeAlarm(*raised, m_recorder->sessionTimeOf(alarm.time_s));
+            m_raisedAlarms.erase(raised);
+        }
+        alarm.time_s = listTime_s(alarm.time_s);
+        m_alarmsTold.push_back(std::move(alarm));
+    }
+}
+
+// An alarm as the recording keeps it: from its raise (or the recording's
+// start) to `end_s`, naming its limit.
+void LiveSession::storeAlarm(const LimitAlarm& raised, double end_s)
+{
+    if (!m_recorder->acquisitionOrigin_s()) return;  // before the first sample there is nothing to mark
+    const double start_s = std::max(0.0, m_recorder->sessionTimeOf(raised.time_s));
+    if (start_s > end_s) return;  // raised after the recording's last sample
+    m_recorder->addEvents(
+        {core::storage::alarmRecord(start_s, end_s, raised.text() + "; limit " + raised.limit.text())});
+}
+
+}  // namespace tactiscope::devices::session
