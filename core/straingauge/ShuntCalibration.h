@@ -44,7 +44,8 @@ struct ShuntStep {
 };
 ShuntStep measureShuntStep(std::span<const double> off, std::span<const double> on);
 
-// The number of active gauges of a bridge type (1, 2, 4), as records keep it.
+// The number of active gauges of a bridge type (quarter 1, half 2, full 4):
+// how calibration records keep a bridge, a physical count rather than a code.
 int activeGauges(BridgeType type);
 
 }  // namespace tactiscope::core::straingauge

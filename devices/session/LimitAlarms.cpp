@@ -14,14 +14,6 @@ void LimitAlarms::set(std::vector<Watched> watched, double sampleRate_hz)
     m_changes.clear();
 }
 
-std::vector<core::trigger::LimitSpec> LimitAlarms::limits() const
-{
-    const std::lock_guard lock(m_mutex);
-    std::vector<core::trigger::LimitSpec> limits;
-    for (const auto& w : m_watches) limits.push_back(w.watch.spec());
-    return limits;
-}
-
 void LimitAlarms::replaceReaders(std::vector<QuantityReader> readers)
 {
     const std::lock_guard lock(m_mutex);

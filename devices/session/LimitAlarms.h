@@ -37,9 +37,8 @@ public:
     // Replaces the limits watched (none: no alarms); those raised are
     // forgotten. Throws std::invalid_argument for a limit LimitWatch refuses.
     void set(std::vector<Watched> watched, double sampleRate_hz);
-    std::vector<core::trigger::LimitSpec> limits() const;
     // Each limit's quantity from another processor (one rebuilt), in the
-    // order of limits(); the alarms' states kept.
+    // order they were set; the alarms' states kept.
     void replaceReaders(std::vector<QuantityReader> readers);
 
     void consume(const core::SampleBlock& block) override;

@@ -31,7 +31,6 @@ double shuntedReading(const ProbeBridge& b)
 
 ShuntedBridges::ShuntedBridges(std::vector<core::ChannelDescriptor> channels, ProbeBridge bridge)
     : m_channels(std::move(channels)),
-      m_bridge(bridge),
       m_on(m_channels.size(), false),
       m_step(shuntedReading(bridge))
 {
@@ -44,11 +43,6 @@ std::optional<std::string> ShuntedBridges::set(std::size_t channel, bool on)
         return "channel " + m_channels[channel].name + " has no bridge to shunt";
     m_on[channel] = on;
     return std::nullopt;
-}
-
-bool ShuntedBridges::on(std::size_t channel) const
-{
-    return channel < m_on.size() && m_on[channel];
 }
 
 void ShuntedBridges::apply(core::SampleBlock& block) const

@@ -42,14 +42,11 @@ public:
     // Switches channel `channel`'s shunt; none when done, else why not
     // (no such channel, or it is no strain channel: no bridge behind it).
     std::optional<std::string> set(std::size_t channel, bool on);
-    bool on(std::size_t channel) const;
     // Adds each shunted channel's step to the block's samples.
     void apply(core::SampleBlock& block) const;
-    const ProbeBridge& bridge() const { return m_bridge; }
 
 private:
     std::vector<core::ChannelDescriptor> m_channels;
-    ProbeBridge m_bridge;
     std::vector<bool> m_on;
     double m_step;
 };

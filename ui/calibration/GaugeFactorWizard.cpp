@@ -5,6 +5,7 @@
 #include "ui/NumberText.h"
 
 #include "core/storage/SessionStore.h"
+#include "core/straingauge/ShuntCalibration.h"
 #include "ui/QuantityEdit.h"
 #include "ui/calibration/CheckedPage.h"
 #include "ui/calibration/WizardText.h"
@@ -28,13 +29,8 @@ namespace {
 using core::calibration::kStandardGravity_m_per_s2;
 using core::straingauge::BridgeType;
 
-// A bridge is stored as its number of active gauges: a physical count
-// rather than a code (quarter 1, half 2, full 4).
-double activeGauges(BridgeType type)
-{
-    return type == BridgeType::Quarter ? 1.0 : type == BridgeType::HalfBending ? 2.0 : 4.0;
-}
-
+// A bridge is stored as its number of active gauges
+// (core::straingauge::activeGauges): a physical count rather than a code.
 BridgeType bridgeOfGauges(double gauges)
 {
     return gauges < 1.5 ? BridgeType::Quarter : gauges < 3.0 ? BridgeType::HalfBending : BridgeType::FullBending;
@@ -346,13 +342,14 @@ core::calibration::CalibrationRecord GaugeFactorWizard::record() const
 {
     core::calibration::CalibrationRecord record = m_result->record;
     const core::straingauge::StrainGaugeChain c = *chain();
-    const std::vector<std::pair<std::string, double>> setup{{"zero_sigma_counts", zero()->sigma},
-                                                            {"bridge_active_gauges", activeGauges(c.bridge().type)},
-                                                            {"excitation_v", c.bridge().excitation_v},
-                                                            {"amplifier_gain", c.adc().gain},
-                                                            {"adc_bits", static_cast<double>(c.adc().bits)},
-                                                            {"adc_reference_v", c.adc().reference_v},
-                                                            {"adc_bipolar", c.adc().bipolar ? 1.0 : 0.0}};
+    const std::vector<std::pair<std::string, double>> setup{
+        {"zero_sigma_counts", zero()->sigma},
+        {"bridge_active_gauges", core::straingauge::activeGauges(c.bridge().type)},
+        {"excitation_v", c.bridge().excitation_v},
+        {"amplifier_gain", c.adc().gain},
+        {"adc_bits", static_cast<double>(c.adc().bits)},
+        {"adc_reference_v", c.adc().reference_v},
+        {"adc_bipolar", c.adc().bipolar ? 1.0 : 0.0}};
     record.values.insert(record.values.end(), setup.begin(), setup.end());
     return record;
 }
