@@ -22,9 +22,10 @@ namespace {
 
 // An alarm in the quantity's display unit: "force above its critical limit
 // 956 µN (978 µN)", "force back below its warning limit 597 µN".
-QString alarmText(const devices::session::LimitAlarm& alarm, const devices::session::LiveSession& live)
+QString alarmText(const devices::session::LimitAlarm& alarm, const std::vector<core::ChannelDescriptor>& watchable,
+                  core::Mode mode)
 {
-    const DisplayUnit unit = watchedUnit(live.watchableQuantities(), alarm.limit.quantity, live.mode());
+    const DisplayUnit unit = watchedUnit(watchable, alarm.limit.quantity, mode);
     const QString quantity = QString::fromStdString(alarm.limit.quantity);
     const QString severity = QString::fromLatin1(core::trigger::toString(alarm.change.severity));
     if (!alarm.change.raised)
@@ -159,14 +160,16 @@ void HandsFreeControl::update()
 {
     auto* live = m_hooks.session();
     if (!live) return;
+    const auto watchable = live->watchableQuantities();  // once per poll, for every alarm
     for (const auto& summary : live->takeTriggeredSummaries()) m_hooks.sessionEnded(summary);
     bool fresh = false;
     for (const auto& alarm : live->takeAlarms()) {
         const bool critical = alarm.change.severity == core::trigger::LimitSeverity::Critical;
-        const QString text = alarm.change.raised
-                                 ? (critical ? tr("Critical alarm at %1 s: %2") : tr("Warning at %1 s: %2"))
-                                       .arg(fixedText(alarm.time_s, 1), alarmText(alarm, *live))
-                                 : tr("Cleared at %1 s: %2").arg(fixedText(alarm.time_s, 1), alarmText(alarm, *live));
+        const QString text =
+            alarm.change.raised
+                ? (critical ? tr("Critical alarm at %1 s: %2") : tr("Warning at %1 s: %2"))
+                      .arg(fixedText(alarm.time_s, 1), alarmText(alarm, watchable, live->mode()))
+                : tr("Cleared at %1 s: %2").arg(fixedText(alarm.time_s, 1), alarmText(alarm, watchable, live->mode()));
         logProblem({tr("Limit alarm"), text, {}, {}});
         m_hooks.tell(text);
         fresh = fresh || alarm.change.raised;
@@ -180,7 +183,7 @@ void HandsFreeControl::update()
             return other.change.severity == core::trigger::LimitSeverity::Critical &&
                    other.limit.text() == alarm.limit.text();
         });
-        if (!outdone) lines.push_back({critical, alarmText(alarm, *live)});
+        if (!outdone) lines.push_back({critical, alarmText(alarm, watchable, live->mode())});
     }
     m_banner->showAlarms(lines, fresh);
     if (!live->triggerArmed()) {
@@ -198,7 +201,7 @@ void HandsFreeControl::update()
     view.status = live->triggerStatus();
     view.recording = live->isRecording();
     if (m_last) {
-        view.condition = conditionText(m_last->condition, live->watchableQuantities(), live->mode());
+        view.condition = conditionText(m_last->condition, watchable, live->mode());
         view.sessions = m_last->sessions;
     }
     view.subject = QString::fromStdString(
