@@ -10,7 +10,6 @@
 #include "ui/WatchBanner.h"
 
 #include <QAction>
-#include <QLatin1Char>
 #include <QMenu>
 #include <QSettings>
 #include <QWidget>
@@ -26,17 +25,10 @@ QString alarmText(const devices::session::LimitAlarm& alarm, const std::vector<c
                   core::Mode mode)
 {
     const DisplayUnit unit = watchedUnit(watchable, alarm.limit.quantity, mode);
-    const QString quantity = QString::fromStdString(alarm.limit.quantity);
-    const QString severity = QString::fromLatin1(core::trigger::toString(alarm.change.severity));
-    if (!alarm.change.raised)
-        return HandsFreeControl::tr("%1 back %2 its %3 limit %4")
-            .arg(quantity, alarm.limit.above ? HandsFreeControl::tr("below") : HandsFreeControl::tr("above"), severity,
-                 watchedText(alarm.change.level, unit));
-    return HandsFreeControl::tr("%1 %2 its %3 limit %4 (%5)")
-        .arg(quantity, alarm.limit.above ? HandsFreeControl::tr("above") : HandsFreeControl::tr("below"), severity,
-             watchedText(alarm.change.level, unit),
-             significantText(alarm.change.value * unit.scale, 3) +
-                 (unit.symbol.isEmpty() ? QString() : QLatin1Char(' ') + unit.symbol));
+    const core::trigger::LimitWording wording{
+        [&unit](double si) { return typedText(si * unit.scale).toStdString(); },
+        [&unit](double si) { return significantText(si * unit.scale, 3).toStdString(); }, unit.symbol.toStdString()};
+    return QString::fromStdString(alarm.change.text(alarm.limit, wording));
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 
 #include <QComboBox>
 #include <QDialogButtonBox>
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
@@ -21,10 +21,33 @@
 namespace tactiscope::ui {
 namespace {
 
-QString levelText(const std::optional<double>& si, const DisplayUnit& unit)
+using core::trigger::LimitSide;
+
+QString levelText(const std::optional<core::trigger::LimitLevel>& si, LimitSide side, const DisplayUnit& unit)
 {
-    return si ? watchedText(*si, unit) : QStringLiteral("—");
+    if (!si) return QStringLiteral("—");
+    if (!core::trigger::isWindow(side)) return watchedText(si->low, unit);
+    // One unit for both ends: "−900 … 900 count".
+    const QString low = typedText(si->low * unit.scale);
+    return LimitsDialog::tr("%1 … %2").arg(low, watchedText(si->high, unit));
 }
+
+QString sideText(LimitSide side)
+{
+    switch (side) {
+    case LimitSide::Above:
+        return LimitsDialog::tr("above");
+    case LimitSide::Below:
+        return LimitsDialog::tr("below");
+    case LimitSide::Inside:
+        return LimitsDialog::tr("inside");
+    case LimitSide::Outside:
+        return LimitsDialog::tr("outside");
+    }
+    return {};
+}
+
+constexpr LimitSide kSides[] = {LimitSide::Above, LimitSide::Below, LimitSide::Outside, LimitSide::Inside};
 
 }  // namespace
 
@@ -35,8 +58,12 @@ LimitsDialog::LimitsDialog(Session session, QWidget* parent)
       m_quantity(new QComboBox(this)),
       m_side(new QComboBox(this)),
       m_warning(new QLineEdit(this)),
+      m_warningHigh(new QLineEdit(this)),
       m_critical(new QLineEdit(this)),
-      m_unit(new QLabel(this)),
+      m_criticalHigh(new QLineEdit(this)),
+      m_hold(new QLineEdit(this)),
+      m_warningUnit(new QLabel(this)),
+      m_criticalUnit(new QLabel(this)),
       m_problem(new QLabel(this)),
       m_remove(new QPushButton(tr("Remove the one set here"), this))
 {
@@ -54,13 +81,17 @@ LimitsDialog::LimitsDialog(Session session, QWidget* parent)
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->setWordWrap(true);
     for (const auto& q : m_session.watchable) m_quantity->addItem(QString::fromStdString(q.name));
-    m_side->addItems({tr("above"), tr("below")});
+    for (const LimitSide side : kSides)
+        m_side->addItem(core::trigger::isWindow(side) ? tr("%1 a window").arg(sideText(side)) : sideText(side),
+                        static_cast<int>(side));
     m_quantity->setObjectName(QStringLiteral("limitQuantity"));
     m_side->setObjectName(QStringLiteral("limitSide"));
     m_warning->setObjectName(QStringLiteral("limitWarning"));
+    m_warningHigh->setObjectName(QStringLiteral("limitWarningHigh"));
     m_critical->setObjectName(QStringLiteral("limitCritical"));
-    m_warning->setPlaceholderText(tr("warning"));
-    m_critical->setPlaceholderText(tr("critical"));
+    m_criticalHigh->setObjectName(QStringLiteral("limitCriticalHigh"));
+    m_hold->setObjectName(QStringLiteral("limitHold"));
+    m_hold->setPlaceholderText(QStringLiteral("0"));
     m_problem->setObjectName(QStringLiteral("limitProblem"));
     m_problem->setStyleSheet(QStringLiteral("color: #b00020"));
     m_problem->setWordWrap(true);
@@ -68,16 +99,42 @@ LimitsDialog::LimitsDialog(Session session, QWidget* parent)
     auto* set = new QPushButton(tr("Set"), this);
     set->setObjectName(QStringLiteral("setLimit"));
 
-    auto* editor = new QHBoxLayout;
-    editor->addWidget(m_quantity, 2);
-    editor->addWidget(m_side);
-    editor->addWidget(m_warning, 1);
-    editor->addWidget(m_critical, 1);
-    editor->addWidget(m_unit);
-    editor->addWidget(set);
-    auto* explain = new QLabel(tr("A limit set here replaces the probe's own on the same quantity and side. An alarm "
-                                  "is raised once its value has been past the level for the hold time and clears "
-                                  "2 % of the level back, so noise at a level does not chatter."),
+    // A form: the quantity, the side and hold time, then each level (or
+    // each window's two ends, aligned) on its own row.
+    auto* editor = new QGridLayout;
+    const auto label = [this](const QString& text, QWidget* buddy) {
+        auto* l = new QLabel(text, this);
+        l->setBuddy(buddy);
+        return l;
+    };
+    auto* warningTo = new QLabel(tr("to"), this);
+    auto* criticalTo = new QLabel(tr("to"), this);
+    editor->addWidget(label(tr("&Quantity"), m_quantity), 0, 0);
+    editor->addWidget(m_quantity, 0, 1, 1, 3);
+    editor->addWidget(label(tr("&Alarm when"), m_side), 1, 0);
+    editor->addWidget(m_side, 1, 1);
+    editor->addWidget(label(tr("&Hold"), m_hold), 1, 2, Qt::AlignRight);
+    editor->addWidget(m_hold, 1, 3);
+    editor->addWidget(new QLabel(tr("s"), this), 1, 4);
+    editor->addWidget(label(tr("&Warning"), m_warning), 2, 0);
+    editor->addWidget(m_warning, 2, 1);
+    editor->addWidget(warningTo, 2, 2, Qt::AlignRight);
+    editor->addWidget(m_warningHigh, 2, 3);
+    editor->addWidget(m_warningUnit, 2, 4);
+    editor->addWidget(label(tr("&Critical"), m_critical), 3, 0);
+    editor->addWidget(m_critical, 3, 1);
+    editor->addWidget(criticalTo, 3, 2, Qt::AlignRight);
+    editor->addWidget(m_criticalHigh, 3, 3);
+    editor->addWidget(m_criticalUnit, 3, 4);
+    editor->addWidget(set, 3, 6);
+    editor->setColumnStretch(1, 1);
+    editor->setColumnStretch(3, 1);
+    editor->setColumnStretch(5, 1);
+    m_windowOnly = {warningTo, m_warningHigh, criticalTo, m_criticalHigh};
+    auto* explain = new QLabel(tr("A limit set here replaces the probe's own on the same quantity and side (outside a "
+                                  "window is both above and below). An alarm is raised once its value has been past "
+                                  "the level for the hold time and clears 2 % of the level back, so noise at a level "
+                                  "does not chatter. Either level may be left empty."),
                                this);
     explain->setWordWrap(true);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
@@ -93,10 +150,13 @@ LimitsDialog::LimitsDialog(Session session, QWidget* parent)
 
     const auto unitChanged = [this] {
         if (m_quantity->currentIndex() < 0) return;
-        m_unit->setText(
-            watchedUnit(m_session.watchable, m_quantity->currentText().toStdString(), m_session.mode).symbol);
+        const QString symbol =
+            watchedUnit(m_session.watchable, m_quantity->currentText().toStdString(), m_session.mode).symbol;
+        m_warningUnit->setText(symbol);
+        m_criticalUnit->setText(symbol);
     };
     connect(m_quantity, &QComboBox::currentIndexChanged, this, unitChanged);
+    connect(m_side, &QComboBox::currentIndexChanged, this, &LimitsDialog::sideChanged);
     connect(set, &QPushButton::clicked, this, &LimitsDialog::setLimit);
     connect(m_remove, &QPushButton::clicked, this, &LimitsDialog::removeLimit);
     connect(m_table, &QTableWidget::itemSelectionChanged, this, [this] {
@@ -104,16 +164,37 @@ LimitsDialog::LimitsDialog(Session session, QWidget* parent)
         m_remove->setEnabled(row >= 0 && m_table->item(row, 0)->data(Qt::UserRole).toBool());
     });
     unitChanged();
+    sideChanged();
     refreshTable();
-    resize(760, 420);
+    resize(780, 460);
 }
 
-std::optional<double> LimitsDialog::level(const QLineEdit* edit) const
+void LimitsDialog::sideChanged()
 {
-    bool ok = false;
+    const bool window = core::trigger::isWindow(static_cast<LimitSide>(m_side->currentData().toInt()));
+    for (QWidget* w : m_windowOnly) w->setVisible(window);
+    m_warning->setPlaceholderText(window ? tr("from") : QString());
+    m_critical->setPlaceholderText(window ? tr("from") : QString());
+}
+
+double LimitsDialog::toSi(const QLineEdit* edit, bool& ok) const
+{
     const double shown = QLocale().toDouble(edit->text().trimmed(), &ok);
-    if (!ok || !std::isfinite(shown) || m_quantity->currentIndex() < 0) return std::nullopt;
+    ok = ok && std::isfinite(shown) && m_quantity->currentIndex() >= 0;
     return shown / watchedUnit(m_session.watchable, m_quantity->currentText().toStdString(), m_session.mode).scale;
+}
+
+LimitsDialog::Typed LimitsDialog::typed(const QLineEdit* low, const QLineEdit* high) const
+{
+    const bool window = core::trigger::isWindow(static_cast<LimitSide>(m_side->currentData().toInt()));
+    const bool lowEmpty = low->text().trimmed().isEmpty();
+    const bool highEmpty = !window || high->text().trimmed().isEmpty();
+    if (lowEmpty && highEmpty) return {};
+    bool lowOk = false, highOk = !window;
+    const double lowSi = toSi(low, lowOk);
+    const double highSi = window ? toSi(high, highOk) : lowSi;
+    if (!lowOk || !highOk) return {std::nullopt, true};
+    return {core::trigger::LimitLevel(lowSi, highSi), false};
 }
 
 void LimitsDialog::refreshTable()
@@ -124,11 +205,10 @@ void LimitsDialog::refreshTable()
         const auto& entry = limits[static_cast<std::size_t>(row)];
         const auto& limit = entry.limit;
         const DisplayUnit unit = watchedUnit(m_session.watchable, limit.quantity, m_session.mode);
-        const bool given = std::ranges::any_of(m_session.given, [&limit](const auto& g) {
-            return g.quantity == limit.quantity && g.above == limit.above;
-        });
-        const QStringList cells{QString::fromStdString(limit.quantity), limit.above ? tr("above") : tr("below"),
-                                levelText(limit.warning, unit), levelText(limit.critical, unit),
+        const bool given =
+            std::ranges::any_of(m_session.given, [&limit](const auto& g) { return g.text() == limit.text(); });
+        const QStringList cells{QString::fromStdString(limit.quantity), sideText(limit.side),
+                                levelText(limit.warning, limit.side, unit), levelText(limit.critical, limit.side, unit),
                                 given ? tr("set here") : QString::fromStdString(entry.basis)};
         for (int column = 0; column < cells.size(); ++column) {
             auto* item = new QTableWidgetItem(cells[column]);
@@ -144,23 +224,32 @@ void LimitsDialog::setLimit()
 {
     core::trigger::LimitSpec limit;
     limit.quantity = m_quantity->currentText().toStdString();
-    limit.above = m_side->currentIndex() == 0;
-    if (!m_warning->text().trimmed().isEmpty()) limit.warning = level(m_warning);
-    if (!m_critical->text().trimmed().isEmpty()) limit.critical = level(m_critical);
-    if ((!m_warning->text().trimmed().isEmpty() && !limit.warning) ||
-        (!m_critical->text().trimmed().isEmpty() && !limit.critical))
-        return m_problem->setText(tr("Type each level as a number, in %1.").arg(m_unit->text()));
+    limit.side = static_cast<LimitSide>(m_side->currentData().toInt());
+    const Typed warning = typed(m_warning, m_warningHigh);
+    const Typed critical = typed(m_critical, m_criticalHigh);
+    if (warning.bad || critical.bad)
+        return m_problem->setText(
+            core::trigger::isWindow(limit.side)
+                ? tr("Type both ends of each window as numbers, in %1.").arg(m_warningUnit->text())
+                : tr("Type each level as a number, in %1.").arg(m_warningUnit->text()));
+    limit.warning = warning.level;
+    limit.critical = critical.level;
+    if (!m_hold->text().trimmed().isEmpty()) {
+        bool ok = false;
+        limit.hold_s = QLocale().toDouble(m_hold->text().trimmed(), &ok);
+        if (!ok || !std::isfinite(limit.hold_s) || limit.hold_s < 0.0)
+            return m_problem->setText(tr("Type the hold time in seconds, 0 or more."));
+    }
     // The rules the command line's --limit is read by.
     const auto checked = core::trigger::parseLimit(limit.text());
     if (!checked.limit) return m_problem->setText(QString::fromStdString(checked.error));
     auto given = m_session.given;
-    std::erase_if(given, [&limit](const auto& g) { return g.quantity == limit.quantity && g.above == limit.above; });
+    std::erase_if(given, [&limit](const auto& g) { return limit.replaces(g); });
     given.push_back(limit);
     if (const auto refusal = m_session.apply(given)) return m_problem->setText(QString::fromStdString(*refusal));
     m_session.given = std::move(given);
     m_problem->clear();
-    m_warning->clear();
-    m_critical->clear();
+    for (QLineEdit* edit : {m_warning, m_warningHigh, m_critical, m_criticalHigh, m_hold}) edit->clear();
     refreshTable();
 }
 
@@ -170,7 +259,7 @@ void LimitsDialog::removeLimit()
     if (row < 0) return;
     const auto limit = m_session.limits().at(static_cast<std::size_t>(row)).limit;
     auto given = m_session.given;
-    std::erase_if(given, [&limit](const auto& g) { return g.quantity == limit.quantity && g.above == limit.above; });
+    std::erase_if(given, [&limit](const auto& g) { return g.text() == limit.text(); });
     if (const auto refusal = m_session.apply(given)) return m_problem->setText(QString::fromStdString(*refusal));
     m_session.given = std::move(given);
     refreshTable();

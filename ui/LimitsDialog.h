@@ -2,9 +2,9 @@
 // where it comes from (the sensor profile, the sensor model's safe range,
 // or set here), in the quantities' display units; and an editor that sets
 // a warning and a critical level on any channel or quantity of the mode,
-// above or below, replacing the probe's own limit on that quantity and
-// side. The limits set here are the session's (LiveSession::setLimits) and
-// are remembered per mode by the main window.
+// above or below a level or inside or outside a window, with a hold time,
+// replacing the probe's own limit on that quantity and side. The limits set here are the session's
+// (LiveSession::setLimits) and are remembered per mode by the main window.
 #pragma once
 
 #include "core/ChannelDescriptor.h"
@@ -48,15 +48,28 @@ private:
     void refreshTable();
     void setLimit();
     void removeLimit();
-    std::optional<double> level(const QLineEdit* edit) const;
+    void sideChanged();
+    // The level typed in one row (empty: none; a number that is not, or a
+    // half-typed window: the problem).
+    struct Typed {
+        std::optional<core::trigger::LimitLevel> level;
+        bool bad = false;
+    };
+    Typed typed(const QLineEdit* low, const QLineEdit* high) const;
+    double toSi(const QLineEdit* edit, bool& ok) const;
 
     Session m_session;
     QTableWidget* m_table;
     QComboBox* m_quantity;
     QComboBox* m_side;
-    QLineEdit* m_warning;
+    QLineEdit* m_warning;  // the level, or a window's low end
+    QLineEdit* m_warningHigh;
     QLineEdit* m_critical;
-    QLabel* m_unit;
+    QLineEdit* m_criticalHigh;
+    QLineEdit* m_hold;
+    std::vector<QWidget*> m_windowOnly;  // shown for inside and outside
+    QLabel* m_warningUnit;
+    QLabel* m_criticalUnit;
     QLabel* m_problem;
     QPushButton* m_remove;
 };

@@ -27,11 +27,11 @@ QList<QCommandLineOption> watchOptions()
          QStringLiteral("N")},
         {QStringLiteral("rearm"), QStringLiteral("With --trigger: re-arm after every session until stopped.")},
         {QStringLiteral("limit"),
-         QStringLiteral(
-             "Alarm limits, repeatable: QUANTITY>warning:W,critical:C[,hold:S] (or <; either level "
-             "alone), in SI units, besides the probe's own (its profile's or its sensor model's, e.g. a capacitive "
-             "beam's safe force), whose limit on the same quantity and side it replaces; alarms are "
-             "printed and stored as alarm events."),
+         QStringLiteral("Alarm limits, repeatable: QUANTITY>warning:W,critical:C[,hold:S] (or <; either level "
+                        "alone), or a window: QUANTITY outside warning:A..B,critical:C..D (or inside), in SI units, "
+                        "besides the probe's own (its profile's or its sensor model's, e.g. a capacitive "
+                        "beam's safe force), whose limit on the same quantity and side it replaces; alarms are "
+                        "printed and stored as alarm events."),
          QStringLiteral("LIMIT")},
         {QStringLiteral("stop-on"),
          QStringLiteral("critical: end the recording at the first critical alarm (exit 1, data kept)."),

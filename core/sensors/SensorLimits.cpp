@@ -38,19 +38,20 @@ std::vector<SensorLimit> complianceLimits(const std::vector<ChannelDescriptor>& 
     if (stiff == channels.end() || (stiff->unit != "count" && stiff->unit != "counts")) return {};
     const double fullScale = straingauge::StrainGaugeChain(adc, {}).fullScaleCounts();
     const std::string basis = "the stiff beam's ADC: 90 % of full scale (warning), clipped at 99 % (critical)";
-    trigger::LimitSpec above;
-    above.quantity = stiff->name;
-    above.warning = std::floor(kAdcWarningFraction * fullScale);
-    above.critical = std::floor(kAdcCriticalFraction * fullScale);
-    std::vector<SensorLimit> limits{{above, basis}};
+    // A bipolar ADC clips at either end: one window the counts must stay in.
+    const double warning = std::floor(kAdcWarningFraction * fullScale);
+    const double critical = std::floor(kAdcCriticalFraction * fullScale);
+    trigger::LimitSpec counts;
+    counts.quantity = stiff->name;
     if (adc.bipolar) {
-        trigger::LimitSpec below = above;
-        below.above = false;
-        below.warning = -*above.warning;
-        below.critical = -*above.critical;
-        limits.push_back({below, basis});
+        counts.side = trigger::LimitSide::Outside;
+        counts.warning = trigger::LimitLevel(-warning, warning);
+        counts.critical = trigger::LimitLevel(-critical, critical);
+    } else {
+        counts.warning = warning;
+        counts.critical = critical;
     }
-    return limits;
+    return {{counts, basis}};
 }
 
 }  // namespace

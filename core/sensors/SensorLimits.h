@@ -7,7 +7,8 @@
 // - a compliance probe (seed 001) whose beams' channels are in ADC
 //   counts: the stiff beam (which clips first, being the stiffer at the
 //   same press depth) at 90 % of the ADC's full scale (warning) and at the
-//   level where its force is called clipped (critical, 99 %), either sign.
+//   level where its force is called clipped (critical, 99 %); with a
+//   bipolar ADC, a window of either sign the counts must stay within.
 // Each limit comes with the sentence that says where it comes from.
 #pragma once
 

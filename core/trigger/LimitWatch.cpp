@@ -1,11 +1,13 @@
-// LimitWatch: hold time to raise, hysteresis to clear.
+// LimitWatch: the limit's words, hold time to raise, hysteresis to clear.
 #include "core/trigger/LimitWatch.h"
 
 #include "core/text/NumberFormat.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 namespace tactiscope::core::trigger {
@@ -19,6 +21,74 @@ std::optional<double> number(std::string_view text)
     return value;
 }
 
+// A number, or a window LOW..HIGH with its low end below its high end.
+std::optional<LimitLevel> levelValue(std::string_view text, bool window)
+{
+    if (!window) {
+        const auto at = number(text);
+        return at ? std::optional<LimitLevel>(*at) : std::nullopt;
+    }
+    const auto dots = text.find("..");
+    if (dots == std::string_view::npos) return std::nullopt;
+    const auto low = number(text.substr(0, dots)), high = number(text.substr(dots + 2));
+    if (!low || !high || !(*low < *high)) return std::nullopt;
+    return LimitLevel(*low, *high);
+}
+
+std::string_view trimmed(std::string_view text)
+{
+    while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+    while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
+    return text;
+}
+
+// Whether the critical level lies beyond the warning one.
+bool ordered(LimitSide side, const LimitLevel& warning, const LimitLevel& critical)
+{
+    switch (side) {
+    case LimitSide::Above:
+        return warning.low < critical.low;
+    case LimitSide::Below:
+        return warning.low > critical.low;
+    case LimitSide::Outside:
+        return critical.low <= warning.low && warning.high <= critical.high && warning != critical;
+    case LimitSide::Inside:
+        return warning.low <= critical.low && critical.high <= warning.high && warning != critical;
+    }
+    return false;
+}
+
+const char* orderRule(LimitSide side)
+{
+    switch (side) {
+    case LimitSide::Above:
+        return "above the warning";
+    case LimitSide::Below:
+        return "below the warning";
+    case LimitSide::Outside:
+        return "a window around the warning one";
+    case LimitSide::Inside:
+        return "a window within the warning one";
+    }
+    return "";
+}
+
+// The sides a limit guards: past a high level, past a low one, within a window.
+int guarded(LimitSide side)
+{
+    switch (side) {
+    case LimitSide::Above:
+        return 1;
+    case LimitSide::Below:
+        return 2;
+    case LimitSide::Outside:
+        return 3;
+    case LimitSide::Inside:
+        return 4;
+    }
+    return 0;
+}
+
 }  // namespace
 
 const char* toString(LimitSeverity severity)
@@ -26,12 +96,45 @@ const char* toString(LimitSeverity severity)
     return severity == LimitSeverity::Warning ? "warning" : "critical";
 }
 
+const char* toString(LimitSide side)
+{
+    switch (side) {
+    case LimitSide::Above:
+        return "above";
+    case LimitSide::Below:
+        return "below";
+    case LimitSide::Inside:
+        return "inside";
+    case LimitSide::Outside:
+        return "outside";
+    }
+    return "";
+}
+
+bool isWindow(LimitSide side)
+{
+    return side == LimitSide::Inside || side == LimitSide::Outside;
+}
+
+bool LimitSpec::replaces(const LimitSpec& other) const
+{
+    return quantity == other.quantity && (guarded(side) & guarded(other.side)) != 0;
+}
+
 std::string LimitSpec::text() const
 {
-    std::string t = quantity + (above ? ">" : "<");
-    if (warning) t += "warning:" + text::formatShortest(*warning);
+    const auto shown = [this](const LimitLevel& l) {
+        return isWindow(side) ? text::formatShortest(l.low) + ".." + text::formatShortest(l.high)
+                              : text::formatShortest(l.low);
+    };
+    std::string t = quantity;
+    if (side == LimitSide::Above || side == LimitSide::Below)
+        t += side == LimitSide::Above ? ">" : "<";
+    else
+        t += std::string(" ") + toString(side) + " ";
+    if (warning) t += "warning:" + shown(*warning);
     if (warning && critical) t += ",";
-    if (critical) t += "critical:" + text::formatShortest(*critical);
+    if (critical) t += "critical:" + shown(*critical);
     if (hold_s > 0.0) t += ",hold:" + text::formatShortest(hold_s);
     return t;
 }
@@ -39,49 +142,79 @@ std::string LimitSpec::text() const
 ParsedLimit parseLimit(std::string_view text)
 {
     const auto fail = [](std::string why) { return ParsedLimit{std::nullopt, std::move(why)}; };
-    const std::string form = "write QUANTITY>warning:W,critical:C (or <; either level alone; ,hold:S for a hold time)";
-    const auto op = text.find_first_of("<>");
+    const std::string form =
+        "write QUANTITY>warning:W,critical:C (or <), or QUANTITY outside warning:A..B,critical:C..D "
+        "(or inside); either level alone; ,hold:S for a hold time";
+    const auto op = text.find_first_of("<> ");
     if (op == std::string_view::npos || op == 0) return fail("'" + std::string(text) + "' is no limit: " + form);
     LimitSpec spec;
     spec.quantity = std::string(text.substr(0, op));
-    spec.above = text[op] == '>';
     std::string_view rest = text.substr(op + 1);
+    if (text[op] != ' ') {
+        spec.side = text[op] == '>' ? LimitSide::Above : LimitSide::Below;
+    } else {
+        rest = trimmed(rest);
+        const auto space = rest.find(' ');
+        const std::string_view word = rest.substr(0, space);
+        if (word != "inside" && word != "outside")
+            return fail("'" + std::string(word) + "' is neither inside nor outside: " + form);
+        spec.side = word == "inside" ? LimitSide::Inside : LimitSide::Outside;
+        rest = space == std::string_view::npos ? std::string_view() : trimmed(rest.substr(space + 1));
+    }
+    const bool window = isWindow(spec.side);
     while (!rest.empty()) {
         const auto comma = rest.find(',');
         const std::string_view part = rest.substr(0, comma);
         rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
         const auto colon = part.find(':');
         const std::string_view name = part.substr(0, colon);
-        const auto value = colon == std::string_view::npos ? std::nullopt : number(part.substr(colon + 1));
-        if (!value) return fail("'" + std::string(part) + "' is no level: " + form);
-        if (name == "warning")
-            spec.warning = value;
-        else if (name == "critical")
-            spec.critical = value;
-        else if (name == "hold" && *value >= 0.0)
-            spec.hold_s = *value;
-        else
-            return fail("'" + std::string(name) + "' is neither warning, critical nor hold (0 s or more): " + form);
+        const std::string_view value = colon == std::string_view::npos ? std::string_view() : part.substr(colon + 1);
+        if (name == "hold") {
+            const auto hold = number(value);
+            if (!hold || *hold < 0.0) return fail("'" + std::string(part) + "' is no hold time (0 s or more)");
+            spec.hold_s = *hold;
+            continue;
+        }
+        if (name != "warning" && name != "critical")
+            return fail("'" + std::string(name) + "' is neither warning, critical nor hold: " + form);
+        const auto level = levelValue(value, window);
+        if (!level)
+            return fail("'" + std::string(part) +
+                        "' is no level: " + (window ? "a window is LOW..HIGH, its low end first" : form));
+        (name == "warning" ? spec.warning : spec.critical) = level;
     }
     if (!spec.warning && !spec.critical) return fail("a limit needs a warning or a critical level: " + form);
-    if (spec.warning && spec.critical &&
-        (spec.above ? *spec.warning >= *spec.critical : *spec.warning <= *spec.critical))
-        return fail(std::string("the warning must come before the critical level (") +
-                    (spec.above ? "below it" : "above it") + ")");
+    if (spec.warning && spec.critical && !ordered(spec.side, *spec.warning, *spec.critical))
+        return fail(std::string("the critical level must lie beyond the warning one (") + orderRule(spec.side) + ")");
     return {spec, {}};
 }
 
 std::string LimitChange::text(const LimitSpec& spec, const std::string& unit) const
 {
-    const std::string suffix = unit.empty() ? "" : " " + unit;
-    if (!raised)
-        return spec.quantity + " back " + (spec.above ? "below" : "above") + " its " + toString(severity) + " limit " +
-               text::formatShortest(level) + suffix;
     // The value to four digits: enough to see how far past the level it is.
-    char measured[32];
-    std::snprintf(measured, sizeof measured, "%.4g", value);
-    return spec.quantity + " " + (spec.above ? "above" : "below") + " its " + toString(severity) + " limit " +
-           text::formatShortest(level) + suffix + " (" + measured + suffix + ")";
+    const auto measured = [](double v) {
+        char digits[32];
+        std::snprintf(digits, sizeof digits, "%.4g", v);
+        return std::string(digits);
+    };
+    return text(spec, LimitWording{[](double v) { return text::formatShortest(v); }, measured, unit});
+}
+
+std::string LimitChange::text(const LimitSpec& spec, const LimitWording& wording) const
+{
+    const std::string suffix = wording.unit.empty() ? "" : " " + wording.unit;
+    const LimitLevel at = spec.level(severity).value_or(LimitLevel());
+    const bool window = isWindow(spec.side);
+    const std::string level =
+        (window ? wording.level(at.low) + ".." + wording.level(at.high) : wording.level(at.low)) + suffix;
+    const std::string what = std::string(" its ") + toString(severity) + (window ? " window " : " limit ");
+    if (raised)
+        return spec.quantity + " " + toString(spec.side) + what + level + " (" + wording.measured(value) + suffix + ")";
+    const LimitSide backTo = spec.side == LimitSide::Above    ? LimitSide::Below
+                             : spec.side == LimitSide::Below  ? LimitSide::Above
+                             : spec.side == LimitSide::Inside ? LimitSide::Outside
+                                                              : LimitSide::Inside;
+    return spec.quantity + " back " + toString(backTo) + what + level;
 }
 
 LimitWatch::LimitWatch(LimitSpec spec, double sampleRate_hz)
@@ -94,10 +227,31 @@ LimitWatch::LimitWatch(LimitSpec spec, double sampleRate_hz)
     if (!(std::isfinite(m_spec.hysteresis_fraction) && m_spec.hysteresis_fraction >= 0.0))
         throw std::invalid_argument("limit: the hysteresis must be 0 or more");
     m_hold = static_cast<std::uint64_t>(std::llround(m_spec.hold_s * sampleRate_hz));
-    m_level[0].at = m_spec.warning;
-    m_level[1].at = m_spec.critical;
-    for (Level& l : m_level)
-        if (l.at) l.hysteresis = m_spec.hysteresis_fraction * std::abs(*l.at);
+    constexpr double infinity = std::numeric_limits<double>::infinity();
+    for (int s = 0; s < 2; ++s) {
+        const auto& at = m_spec.level(static_cast<LimitSeverity>(s));
+        if (!at) continue;
+        Level& l = m_level[s];
+        l.watched = true;
+        l.low = m_spec.side == LimitSide::Above ? -infinity : at->low;
+        l.high = m_spec.side == LimitSide::Below ? infinity : at->high;
+        l.hysteresis = m_spec.hysteresis_fraction * std::max(std::abs(at->low), std::abs(at->high));
+        // A window the value must stay in keeps room to come back to.
+        if (m_spec.side == LimitSide::Outside) l.hysteresis = std::min(l.hysteresis, (at->high - at->low) / 4.0);
+    }
+}
+
+bool LimitWatch::beyond(const Level& l, double value) const
+{
+    if (m_spec.side == LimitSide::Inside) return l.low < value && value < l.high;
+    return value < l.low || value > l.high;
+}
+
+// Cleared only back past the level by the hysteresis: noise at the level does not chatter.
+bool LimitWatch::back(const Level& l, double value) const
+{
+    if (m_spec.side == LimitSide::Inside) return value < l.low - l.hysteresis || value > l.high + l.hysteresis;
+    return l.low + l.hysteresis < value && value < l.high - l.hysteresis;
 }
 
 void LimitWatch::push(std::uint64_t index, double value, std::vector<LimitChange>& changes)
@@ -105,14 +259,10 @@ void LimitWatch::push(std::uint64_t index, double value, std::vector<LimitChange
     if (std::isnan(value)) return;
     for (int s = 0; s < 2; ++s) {
         Level& l = m_level[s];
-        if (!l.at) continue;
-        const double level = *l.at;
-        const bool beyond = m_spec.above ? value > level : value < level;
-        // Cleared only back past the level by the hysteresis: noise at the level does not chatter.
-        const bool back = m_spec.above ? value < level - l.hysteresis : value > level + l.hysteresis;
+        if (!l.watched) continue;
         const auto severity = static_cast<LimitSeverity>(s);
         if (!l.raised) {
-            if (!beyond) {
+            if (!beyond(l, value)) {
                 l.beyondSince.reset();
                 continue;
             }
@@ -121,11 +271,11 @@ void LimitWatch::push(std::uint64_t index, double value, std::vector<LimitChange
             if (index + 1 - *l.beyondSince > m_hold) {
                 l.raised = true;
                 l.beyondSince.reset();
-                changes.push_back({severity, true, index, value, level});
+                changes.push_back({severity, true, index, value});
             }
-        } else if (back) {
+        } else if (back(l, value)) {
             l.raised = false;
-            changes.push_back({severity, false, index, value, level});
+            changes.push_back({severity, false, index, value});
         }
     }
 }

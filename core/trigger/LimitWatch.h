@@ -1,14 +1,20 @@
 // Limit alarms on one channel or derived quantity (issue 39): a warning and
-// a critical level, above or below which the value must stay for a hold
-// time to raise its alarm, and back past the level by a hysteresis to clear
-// it, so noise at the level does not chatter. The rules live below the UI:
-// the CLI (`record --limit`) and the GUI share them.
+// a critical level, or a window for each, beyond which the value must stay
+// for a hold time to raise its alarm, and back by a hysteresis to clear it,
+// so noise at a level does not chatter. The rules live below the UI: the
+// CLI (`record --limit`) and the GUI share them.
 //   force>warning:0.002,critical:0.003    above: 2 mN warns, 3 mN is critical
 //   a<warning:-8e-4,critical:-1e-3         below
 //   force>critical:0.003,hold:0.2          beyond it for 0.2 s before it is raised
+//   a outside warning:-900..900,critical:-990..990   either way out of a window
+//   C inside critical:-1e-15..1e-15        within a window (a dead channel)
+// Above, below and outside are one rule: the value must stay within an
+// allowed range, open at one end for above and below; inside forbids the
+// range instead.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -19,35 +25,79 @@ namespace tactiscope::core::trigger {
 enum class LimitSeverity { Warning, Critical };
 const char* toString(LimitSeverity severity);  // "warning", "critical"
 
+enum class LimitSide { Above, Below, Inside, Outside };
+const char* toString(LimitSide side);  // "above", "below", "inside", "outside"
+bool isWindow(LimitSide side);         // inside or outside: its levels are LOW..HIGH
+
+// One level: a number above or below, a window's ends inside or outside.
+struct LimitLevel {
+    double low = 0.0;
+    double high = 0.0;  // the same as low above or below
+
+    LimitLevel() = default;
+    // Above or below, a level is one number.
+    LimitLevel(double at)  // NOLINT(google-explicit-constructor)
+        : low(at),
+          high(at)
+    {
+    }
+    LimitLevel(double lowEnd, double highEnd)
+        : low(lowEnd),
+          high(highEnd)
+    {
+    }
+    bool operator==(const LimitLevel&) const = default;
+};
+
 struct LimitSpec {
     std::string quantity;
-    bool above = true;  // the alarm is for values above the levels (else below)
-    std::optional<double> warning, critical;
-    // Back past a level by this much clears its alarm (SI; by default 2 %
-    // of the level's size); beyond it this long raises it.
+    LimitSide side = LimitSide::Above;
+    std::optional<LimitLevel> warning, critical;
+    // Back past a level by this much clears its alarm (a fraction of the
+    // level's size, a window's larger end; by default 2 %); beyond it this
+    // long raises it.
     double hysteresis_fraction = 0.02;
     double hold_s = 0.0;
 
+    const std::optional<LimitLevel>& level(LimitSeverity severity) const
+    {
+        return severity == LimitSeverity::Warning ? warning : critical;
+    }
     std::string text() const;  // back in the form above
+    // Whether a limit given on the same quantity takes this one's place:
+    // they guard a side in common (outside guards both above and below).
+    bool replaces(const LimitSpec& other) const;
 };
 
 struct ParsedLimit {
     std::optional<LimitSpec> limit;
     std::string error;
 };
-// "QUANTITY>warning:W,critical:C[,hold:S]" (either level may be left out,
-// not both; above, a warning below its critical; below, above it).
+// "QUANTITY>warning:W,critical:C[,hold:S]" (or <), "QUANTITY outside
+// warning:A..B,critical:C..D[,hold:S]" (or inside); either level may be
+// left out, not both. The critical level lies beyond the warning one:
+// above it, below it, a window around it outside, within it inside.
 ParsedLimit parseLimit(std::string_view text);
 
-// A raised or cleared alarm: at sample `index`, the value then, the level.
+// How an alarm's numbers read: the levels as they are typed, the measured
+// value, both in `unit` (none: SI, as stored).
+struct LimitWording {
+    std::function<std::string(double)> level, measured;
+    std::string unit;
+};
+
+// A raised or cleared alarm: at sample `index`, the value then.
 struct LimitChange {
     LimitSeverity severity = LimitSeverity::Warning;
     bool raised = true;
     std::uint64_t index = 0;
     double value = 0.0;
-    double level = 0.0;
-    // "force above its critical limit 0.003 N (0.0031 N)", in the quantity's SI unit.
+
+    // "force above its critical limit 0.003 N (0.0031 N)", "a outside its
+    // warning window -900..900 count (912 count)", "force back below its
+    // critical limit 0.003 N": in the quantity's SI unit, or worded.
     std::string text(const LimitSpec& spec, const std::string& unit = {}) const;
+    std::string text(const LimitSpec& spec, const LimitWording& wording) const;
 };
 
 class LimitWatch {
@@ -64,12 +114,18 @@ public:
     const LimitSpec& spec() const { return m_spec; }
 
 private:
+    // A level as the range the value must stay in (inside: must stay out
+    // of), and the narrower range it must come back to.
     struct Level {
-        std::optional<double> at;
+        bool watched = false;
+        double low = 0.0, high = 0.0;
         double hysteresis = 0.0;
         bool raised = false;
         std::optional<std::uint64_t> beyondSince;  // first sample of the current run beyond the level
     };
+    bool beyond(const Level& level, double value) const;
+    bool back(const Level& level, double value) const;
+
     LimitSpec m_spec;
     std::uint64_t m_hold;
     Level m_level[2];

@@ -201,7 +201,8 @@ public:
     // Limit alarms on device channels or quantities of the mode: the
     // probe's own (its profile's, else its sensor model's:
     // core/sensors/SensorLimits.h) and those given here, which replace the
-    // probe's on the same quantity and side (replacing those given before).
+    // probe's on the same quantity and side (LimitSpec::replaces; replacing
+    // those given before).
     // Each alarm raised or cleared is told (takeAlarms()), and while
     // recording stored as an `alarm` event from its raise to its clear (or
     // the recording's end) naming its limit. Refused for a quantity nobody

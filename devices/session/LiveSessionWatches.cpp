@@ -54,15 +54,14 @@ void LiveSession::refreshReaders()
 }
 
 // The probe's limits for the current mode, each replaced by one given on
-// the same quantity and side, then the given ones.
+// the same quantity that guards a side in common, then the given ones.
 std::vector<core::sensors::SensorLimit> LiveSession::wantedLimits() const
 {
     std::vector<core::sensors::SensorLimit> wanted;
     if (const auto* probe = profile(m_mode)) wanted = core::sensors::profileLimits(*probe, m_channels);
     std::erase_if(wanted, [this](const core::sensors::SensorLimit& own) {
-        return std::ranges::any_of(m_givenLimits, [&own](const core::trigger::LimitSpec& given) {
-            return given.quantity == own.limit.quantity && given.above == own.limit.above;
-        });
+        return std::ranges::any_of(m_givenLimits,
+                                   [&own](const core::trigger::LimitSpec& given) { return given.replaces(own.limit); });
     });
     for (const auto& given : m_givenLimits) wanted.push_back({given, "given for this session"});
     return wanted;

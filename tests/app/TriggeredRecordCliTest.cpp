@@ -124,6 +124,37 @@ TEST(TriggeredRecordCli, AnOverloadedCapacitiveBeamWarnsThenIsCriticalAndStopOnC
     EXPECT_NEAR(warned.end_s, session->duration_s(), 0.15);  // still raised at the stop
 }
 
+// A window given on the command line takes the place of the beam's own
+// force limit. By hand (the scenario's steps, settling with τ = 0.4 s and
+// creeping 1 % with τ = 4 s, sampled at 10 Hz): the force first exceeds
+// 0.3 mN at 3.6 s and 0.5 mN at 4.6 s, and on the way down falls below
+// 0.49 mN (0.5 mN less 2 %) at 14.6 s and 0.294 mN at 15.6 s.
+TEST(TriggeredRecordCli, AWindowLimitReplacesTheBeamsOwnAndSpansItsExcursion)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath("beam.tactiscope");
+    const auto result = recordEmulated(dir.path(), db, QStringLiteral("capacitive-overload"), 18,
+                                       {"--limit", "force outside warning:-3e-4..3e-4,critical:-5e-4..5e-4"});
+    EXPECT_EQ(result.exitCode, 0) << result.err.toStdString();
+    EXPECT_TRUE(result.err.contains(QStringLiteral("warning: force outside its warning window -3e-04..3e-04 N")))
+        << result.err.toStdString();
+    EXPECT_FALSE(result.err.contains(QStringLiteral("0.000597"))) << "the model's limit was replaced";
+    const auto id = tactiscope::testing::sessionIdIn(result.out);
+    ASSERT_GT(id, 0) << result.out.toStdString();
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto alarms = eventsOfKind(store, id, core::EventKind::Alarm);
+    ASSERT_EQ(alarms.size(), 2u);
+    const auto& warned = alarms[0].note.find("warning window") != std::string::npos ? alarms[0] : alarms[1];
+    const auto& critic = &warned == &alarms[0] ? alarms[1] : alarms[0];
+    EXPECT_NE(critic.note.find("critical window"), std::string::npos) << critic.note;
+    EXPECT_NE(warned.note.find("limit force outside warning:-3e-04..3e-04,critical:-5e-04..5e-04"), std::string::npos)
+        << warned.note;
+    EXPECT_NEAR(warned.start_s, 3.6, 0.15);
+    EXPECT_NEAR(critic.start_s, 4.6, 0.15);
+    EXPECT_NEAR(critic.end_s, 14.6, 0.25);
+    EXPECT_NEAR(warned.end_s, 15.6, 0.25);
+}
+
 TEST(TriggeredRecordCli, BadTriggerAndLimitOptionsAreRefusedBeforeAnythingIsRecorded)
 {
     QTemporaryDir dir;
@@ -139,6 +170,7 @@ TEST(TriggeredRecordCli, BadTriggerAndLimitOptionsAreRefusedBeforeAnythingIsReco
     refused({"--trigger", "a>1", "--sessions", "0"}, QStringLiteral("--sessions must be"));
     refused({"--trigger", "a>1", "--post", "-1"}, QStringLiteral("--post must be 0 or more seconds"));
     refused({"--limit", "force>warming:1"}, QStringLiteral("--limit: "));
+    refused({"--limit", "force outside warning:1..-1"}, QStringLiteral("a window is LOW..HIGH"));
     refused({"--stop-on", "warning"}, QStringLiteral("--stop-on takes critical"));
     EXPECT_FALSE(QFile::exists(db));
 

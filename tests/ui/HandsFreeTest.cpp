@@ -154,5 +154,34 @@ TEST(HandsFree, AnOverloadedBeamTurnsTheBannerRedAndItsLimitsAreListedWithTheirB
     const auto& limits = window.liveSession()->limits();
     ASSERT_EQ(limits.size(), 2u);
     EXPECT_EQ(limits[1].limit.text(), "deflection>warning:0.001");
+
+    // A window on the force, either way out of it, typed in µN with a hold
+    // time: it takes the place of the beam's own force limit (above), and
+    // the loaded beam (still past 0.5 mN from the peak down) is outside it.
+    quantity->setCurrentIndex(quantity->findText(QStringLiteral("force")));
+    auto* side = child<QComboBox>(*dialog, "limitSide");
+    side->setCurrentIndex(side->findData(static_cast<int>(core::trigger::LimitSide::Outside)));
+    EXPECT_TRUE(child<QLineEdit>(*dialog, "limitWarningHigh")->isVisible());
+    const std::pair<const char*, const char*> typed[] = {{"limitWarning", "-300"},
+                                                         {"limitWarningHigh", "300"},
+                                                         {"limitCritical", "-500"},
+                                                         {"limitCriticalHigh", "500"},
+                                                         {"limitHold", "0.2"}};
+    for (const auto& [name, text] : typed) QTest::keyClicks(child<QLineEdit>(*dialog, name), QString::fromLatin1(text));
     tactiscope::testing::saveScreenshot(*dialog, QStringLiteral("limits-dialog"));
+    QTest::mouseClick(child<QPushButton>(*dialog, "setLimit"), Qt::LeftButton);
+    EXPECT_TRUE(child<QLabel>(*dialog, "limitProblem")->text().isEmpty())
+        << child<QLabel>(*dialog, "limitProblem")->text().toStdString();
+    const auto& windowed = window.liveSession()->limits();
+    ASSERT_EQ(windowed.size(), 2u);
+    EXPECT_EQ(windowed[0].limit.text(), "deflection>warning:0.001");
+    EXPECT_EQ(windowed[1].limit.text(), "force outside warning:-3e-04..3e-04,critical:-5e-04..5e-04,hold:0.2");
+    ASSERT_EQ(table->rowCount(), 2);
+    EXPECT_EQ(table->item(1, 1)->text(), QStringLiteral("outside"));
+    EXPECT_EQ(table->item(1, 3)->text(), QStringLiteral("-500 … 500 µN"));
+    ASSERT_TRUE(waitFor(
+        [&] { return banner->alarmText().contains(QStringLiteral("CRITICAL: force outside its critical window")); },
+        3000))
+        << banner->alarmText().toStdString();
+    EXPECT_TRUE(banner->alarmText().contains(QStringLiteral("-500..500 µN"))) << banner->alarmText().toStdString();
 }

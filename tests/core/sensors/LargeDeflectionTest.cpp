@@ -59,10 +59,10 @@ TEST(SensorLimits, TheCapacitiveBeamWarnsAndIsCriticalWhereItsModelStopsHolding)
     const auto limits = modelLimits(profile, {});
     ASSERT_EQ(limits.size(), 1u);
     EXPECT_EQ(limits[0].limit.quantity, "force");
-    EXPECT_TRUE(limits[0].limit.above);
+    EXPECT_EQ(limits[0].limit.side, trigger::LimitSide::Above);
     // Three digits, towards zero: never later than the model.
-    EXPECT_DOUBLE_EQ(*limits[0].limit.warning, 0.000597);
-    EXPECT_DOUBLE_EQ(*limits[0].limit.critical, 0.000956);
+    EXPECT_DOUBLE_EQ(limits[0].limit.warning->low, 0.000597);
+    EXPECT_DOUBLE_EQ(limits[0].limit.critical->low, 0.000956);
     EXPECT_NE(limits[0].basis.find("small-deflection"), std::string::npos);
 }
 
@@ -75,11 +75,11 @@ TEST(SensorLimits, TheStiffBeamInCountsIsWatchedAtItsAdcsRangeEitherWay)
     channels[0].role = ChannelRole::StiffBeam;
     channels[1].role = ChannelRole::SoftBeam;
     channels[2].role = ChannelRole::Displacement;
-    // A 16-bit bipolar ADC: full scale 32768 counts; 90 % and 99 % of it.
+    // A 16-bit bipolar ADC: full scale 32768 counts; 90 % and 99 % of it,
+    // either sign: one window.
     const auto limits = modelLimits(*profile, channels);
-    ASSERT_EQ(limits.size(), 2u);
-    EXPECT_EQ(limits[0].limit.text(), "high>warning:29491,critical:32440");
-    EXPECT_EQ(limits[1].limit.text(), "high<warning:-29491,critical:-32440");
+    ASSERT_EQ(limits.size(), 1u);
+    EXPECT_EQ(limits[0].limit.text(), "high outside warning:-29491..29491,critical:-32440..32440");
     // A unipolar 12-bit one: 4096 counts, one side.
     straingauge::AdcSettings adc;
     adc.bits = 12;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <random>
 #include <vector>
 
 using namespace tactiscope::core::trigger;
@@ -35,11 +36,11 @@ TEST(LimitWatch, ReadsTheLimitsWordsAndSaysWhyNot)
     const auto l = parseLimit("force>warning:0.002,critical:0.003").limit;
     ASSERT_TRUE(l);
     EXPECT_EQ(l->quantity, "force");
-    EXPECT_TRUE(l->above);
+    EXPECT_EQ(l->side, LimitSide::Above);
     EXPECT_EQ(l->warning, 0.002);
     EXPECT_EQ(l->critical, 0.003);
     EXPECT_EQ(l->text(), "force>warning:0.002,critical:0.003");
-    EXPECT_FALSE(parseLimit("a<critical:-1e-3").limit->above);
+    EXPECT_EQ(parseLimit("a<critical:-1e-3").limit->side, LimitSide::Below);
     EXPECT_EQ(parseLimit("a<critical:-1e-3").limit->warning, std::nullopt);
     // A hold time in the same words, and back.
     const auto held = parseLimit("force>critical:0.003,hold:0.2").limit;
@@ -69,7 +70,6 @@ TEST(LimitWatch, NoiseAtTheLevelRaisesOnceAndClearsOnlyPastTheHysteresis)
     ASSERT_EQ(changes.size(), 2U);
     EXPECT_TRUE(changes[0].raised);
     EXPECT_EQ(changes[0].index, 50U);
-    EXPECT_EQ(changes[0].level, 1.0);
     EXPECT_FALSE(changes[1].raised);
     EXPECT_EQ(changes[1].index, 251U);
     EXPECT_EQ(changes[0].text(watch.spec()), "x above its warning limit 1 (1.005)");
@@ -114,4 +114,127 @@ TEST(LimitWatch, WarningThenCriticalOnTheWayUpAndTheOtherWayDownBelowToo)
     EXPECT_EQ(below[0].index, 2U);  // a lost sample changes nothing
     EXPECT_FALSE(below[1].raised);
     EXPECT_EQ(below[1].index, 4U);
+}
+
+// Windows (issue 39: "above/below/inside/outside"): one limit for either
+// way out of a range, or for a range the value must not dwell in.
+
+TEST(LimitWatch, ReadsWindowsAndRefusesOnesThatAreNot)
+{
+    const auto out = parseLimit("a outside warning:-900..900,critical:-990..990,hold:0.05").limit;
+    ASSERT_TRUE(out);
+    EXPECT_EQ(out->quantity, "a");
+    EXPECT_EQ(out->side, LimitSide::Outside);
+    EXPECT_EQ(out->warning, LimitLevel(-900, 900));
+    EXPECT_EQ(out->critical, LimitLevel(-990, 990));
+    EXPECT_EQ(out->hold_s, 0.05);
+    EXPECT_EQ(out->text(), "a outside warning:-900..900,critical:-990..990,hold:0.05");
+    const auto in = parseLimit("C  inside  critical:-1e-15..1e-15").limit;
+    ASSERT_TRUE(in);
+    EXPECT_EQ(in->side, LimitSide::Inside);
+    EXPECT_EQ(in->text(), "C inside critical:-1e-15..1e-15");
+    for (const char* bad : {"a outside", "a between warning:1..2", "a outside warning:900..-900",
+                            "a outside warning:-900", "a outside warning:-900..", "a>warning:-1..1",
+                            // critical within the warning window outside, around it inside: backwards
+                            "a outside warning:-990..990,critical:-900..900", "a inside warning:-1..1,critical:-2..2",
+                            "a outside warning:-1..1,critical:-1..1"}) {
+        const auto parsed = parseLimit(bad);
+        EXPECT_FALSE(parsed.limit) << bad;
+        EXPECT_FALSE(parsed.error.empty()) << bad;
+    }
+    // One end may be shared: critical only past the high end.
+    EXPECT_TRUE(parseLimit("a outside warning:-1..1,critical:-1..2").limit);
+}
+
+TEST(LimitWatch, OutsideAWindowIsWatchedAtBothEndsWithTheirHysteresis)
+{
+    // Window −1..1 (hysteresis 2 % of 1): out past the high end with noise
+    // ±0.015 at it, back in, out past the low end likewise, back in.
+    LimitWatch watch(spec("a outside warning:-1..1"), 100.0);
+    std::vector<double> v(20, 0.0);
+    v.push_back(1.005);
+    for (int i = 0; i < 100; ++i) v.push_back(1.0 + 0.015 * std::sin(0.7 * i));
+    v.push_back(0.975);  // 121: back in by more than 0.02
+    v.insert(v.end(), 20, 0.0);
+    v.push_back(-1.005);  // 142
+    for (int i = 0; i < 100; ++i) v.push_back(-1.0 + 0.015 * std::sin(0.7 * i));
+    v.push_back(-0.975);  // 243
+    const auto changes = run(watch, v);
+    ASSERT_EQ(changes.size(), 4U);
+    EXPECT_EQ(changes[0].index, 20U);
+    EXPECT_EQ(changes[1].index, 121U);
+    EXPECT_FALSE(changes[1].raised);
+    EXPECT_EQ(changes[2].index, 142U);
+    EXPECT_EQ(changes[3].index, 243U);
+    EXPECT_EQ(changes[0].text(watch.spec(), "count"), "a outside its warning window -1..1 count (1.005 count)");
+    EXPECT_EQ(changes[3].text(watch.spec()), "a back inside its warning window -1..1");
+}
+
+TEST(LimitWatch, InsideAWindowHonoursTheHoldTime)
+{
+    // A dead channel: C stuck within ±0.1 for more than 0.1 s (10 samples
+    // at 100 Hz). Passing through is no alarm; dwelling is, at its 11th
+    // sample; it clears once 0.002 past either end.
+    LimitWatch watch(spec("C inside critical:-0.1..0.1", 0.1), 100.0);
+    std::vector<double> v;
+    for (int i = 0; i < 30; ++i) v.push_back(1.0 - 0.1 * i);  // through the window in 1 sample steps of 0.1
+    v.insert(v.end(), 15, 0.05);                              // 30…44 dwelling
+    v.push_back(0.101);                                       // 45: out, but within the hysteresis
+    v.push_back(0.05);                                        // 46
+    v.push_back(0.103);                                       // 47: out past it
+    const auto changes = run(watch, v);
+    ASSERT_EQ(changes.size(), 2U);
+    EXPECT_TRUE(changes[0].raised);
+    EXPECT_EQ(changes[0].index, 40U);
+    EXPECT_FALSE(changes[1].raised);
+    EXPECT_EQ(changes[1].index, 47U);
+    EXPECT_EQ(changes[0].text(watch.spec()), "C inside its critical window -0.1..0.1 (0.05)");
+    EXPECT_EQ(changes[1].text(watch.spec()), "C back outside its critical window -0.1..0.1");
+}
+
+TEST(LimitWatch, ANarrowWindowStillLeavesRoomToComeBackTo)
+{
+    // 0.99..1.0 is narrower than twice 2 % of 1: the hysteresis shrinks to a
+    // quarter of the width (0.0025) so the alarm can clear at all.
+    LimitWatch watch(spec("x outside warning:0.99..1"), 100.0);
+    // With 0.02 it could never clear: 0.99 + 0.02 lies above 1.0 − 0.02.
+    const auto changes = run(watch, {0.995, 1.001, 0.999, 0.995});
+    ASSERT_EQ(changes.size(), 2U);
+    EXPECT_EQ(changes[0].index, 1U);
+    EXPECT_EQ(changes[1].index, 3U);  // 0.999 is within 0.0025 of the end; 0.995 is not
+}
+
+TEST(LimitWatch, NoisyCrossingsRaiseOnceEachAndChatterWithoutTheHysteresis)
+{
+    // A slow triangle out of the window 0..1 and back, three times, with
+    // Gaussian noise σ = 0.004 (a fifth of the hysteresis 0.02): each
+    // excursion is one alarm and one clear. The same stream with no
+    // hysteresis chatters, so the test can tell.
+    std::mt19937 random(39);
+    std::normal_distribution<double> noise(0.0, 0.004);
+    std::vector<double> v;
+    for (int cycle = 0; cycle < 3; ++cycle) {
+        for (int i = 0; i <= 400; ++i) v.push_back(0.9 + 0.2 * i / 400.0 + noise(random));
+        for (int i = 400; i >= 0; --i) v.push_back(0.9 + 0.2 * i / 400.0 + noise(random));
+    }
+    LimitWatch steady(spec("x outside warning:0..1"), 100.0);
+    const auto changes = run(steady, v);
+    ASSERT_EQ(changes.size(), 6U);
+    for (std::size_t i = 0; i < changes.size(); ++i) EXPECT_EQ(changes[i].raised, i % 2 == 0) << i;
+    LimitSpec bare = spec("x outside warning:0..1");
+    bare.hysteresis_fraction = 0.0;
+    LimitWatch chattering(bare, 100.0);
+    EXPECT_GT(run(chattering, v).size(), 12U);
+}
+
+TEST(LimitWatch, AGivenLimitReplacesThoseGuardingASideInCommon)
+{
+    const auto limit = [](const char* text) { return *parseLimit(text).limit; };
+    EXPECT_TRUE(limit("a outside warning:-1..1").replaces(limit("a>warning:2")));
+    EXPECT_TRUE(limit("a outside warning:-1..1").replaces(limit("a<warning:-2")));
+    EXPECT_TRUE(limit("a>warning:2").replaces(limit("a outside warning:-1..1")));
+    EXPECT_TRUE(limit("a>warning:2").replaces(limit("a>critical:5")));
+    EXPECT_FALSE(limit("a>warning:2").replaces(limit("a<warning:-2")));
+    EXPECT_FALSE(limit("a inside warning:-1..1").replaces(limit("a outside warning:-2..2")));
+    EXPECT_FALSE(limit("b>warning:2").replaces(limit("a>warning:2")));
 }
