@@ -337,6 +337,25 @@ std::vector<std::vector<std::size_t>> byRank(const std::vector<std::vector<std::
     return sites;
 }
 
+// A single stroke out and back (a panel line's one stroke per panel): the
+// crossings, in time order, change direction once and are as many each way.
+// Each dent on the way out lies on the way back too, so the last crossing
+// out and the first back are one dent, and so on outwards from the
+// reversal: those pairs are the sites. Anything else (a dent missed one
+// way, more reversals): none.
+std::optional<std::vector<std::vector<std::size_t>>> outAndBack(std::span<const DefectEvent> events,
+                                                                const std::vector<std::size_t>& inTimeOrder)
+{
+    if (inTimeOrder.size() < 2 || inTimeOrder.size() % 2 != 0) return std::nullopt;
+    const std::size_t k = inTimeOrder.size() / 2;
+    const int out = events[inTimeOrder.front()].direction;
+    for (std::size_t j = 0; j < inTimeOrder.size(); ++j)
+        if (events[inTimeOrder[j]].direction != (j < k ? out : -out) || out == 0) return std::nullopt;
+    std::vector<std::vector<std::size_t>> pairs;
+    for (std::size_t j = 0; j < k; ++j) pairs.push_back({inTimeOrder[k - 1 - j], inTimeOrder[k + j]});
+    return pairs;
+}
+
 }  // namespace
 
 CrossingPlaces placeCrossings(std::span<const DefectEvent> events)
@@ -404,9 +423,13 @@ SiteGrouping groupSites(std::span<const DefectEvent> events, const CrossingPlace
     // from the pass's start (passes split at the long gaps).
     std::ranges::sort(unplaced, {}, [&](std::size_t i) { return midTime(events[i]); });
     // Passes are told from a rhythm: fewer than kMinPasses crossings show
-    // none, and each is a site of its own (never fewer sites than there may be).
+    // none, and each is a site of its own (never fewer sites than there may
+    // be), unless they are a single stroke out and back.
     std::vector<std::vector<std::size_t>> passes, unplacedSites;
-    if (unplaced.size() < kMinPasses) {
+    const auto mirrored = placed.empty() ? outAndBack(events, unplaced) : std::nullopt;
+    if (mirrored) {
+        unplacedSites = *mirrored;
+    } else if (unplaced.size() < kMinPasses) {
         for (const std::size_t i : unplaced) unplacedSites.push_back({i});
     } else {
         std::vector<double> gaps;
@@ -459,7 +482,9 @@ SiteGrouping groupSites(std::span<const DefectEvent> events, const CrossingPlace
         site.last_s = std::max(site.last_s, events[i].end_s);
     }
     const bool anyPlaced = std::ranges::any_of(grouping.sites, [](const auto& s) { return s.position_m.has_value(); });
-    grouping.method = anyPlaced ? places.model : "not placed";
+    grouping.method = anyPlaced ? places.model
+                      : mirrored ? "not placed: one stroke out and back, each dent crossed once each way"
+                                 : "not placed";
     return grouping;
 }
 

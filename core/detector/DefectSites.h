@@ -51,6 +51,10 @@
 // pass (passes split at the long gaps between crossings): a dent seen one
 // way is one site "position unknown", not one per crossing. Fewer than
 // kMinPasses unplaced crossings show no rhythm: each is a site of its own.
+// The exception is a single stroke out and back (nothing placed; the
+// crossings change direction once, as many each way): each dent on the way
+// out is on the way back, so the crossings pair mirrored about the
+// reversal, the last out with the first back, one site per pair.
 #pragma once
 
 #include "core/detector/DefectEvent.h"

@@ -187,3 +187,25 @@ TEST(DefectSitesScan, AcrossDentLayoutsNoSiteIsOutsideTheStrokeAndEveryMisplaced
     EXPECT_EQ(scans, 72);
     EXPECT_LE(misplaced, 12);  // measured: 12 of 72, all flagged (docs/detector.md)
 }
+
+// A panel line strokes each panel once, out and back, then rests (the
+// scenario "panel-line"): one panel's recording holds each dent's crossing
+// out and its crossing back, and nothing else. Through the detector, each
+// dent is one site, whatever the number of dents.
+TEST(DefectSitesScan, APanelStrokedOnceOutAndBackHasOneSitePerDent)
+{
+    for (const std::vector<double>& dents : std::vector<std::vector<double>>{{0.030}, {-0.050}, {-0.040, 0.030}}) {
+        devices::simulator::PanelScanParameters p;
+        p.restBetweenPanels_s = 3.0;
+        p.defectPosition_m = dents.front();
+        p.moreDefects_m.assign(dents.begin() + 1, dents.end());
+        p.seed = 11;
+        const auto events = detectScan(p, 5.0);  // one panel: 2 s stroke, 3 s at rest
+        const auto grouping = core::detector::scanSites(events);
+        ASSERT_EQ(grouping.sites.size(), dents.size()) << grouping.method << ", " << events.size() << " events";
+        for (const auto& site : grouping.sites) {
+            EXPECT_EQ(site.forward, 1u);
+            EXPECT_EQ(site.backward, 1u);
+        }
+    }
+}

@@ -202,6 +202,45 @@ TEST(DefectSites, ADentSeenOneWayIsOneUnplacedSite)
     EXPECT_EQ(scanSites(crossings(harmonic(0.5), {-0.040, 0.030}, 20.0, {.onlyDirection = -1})).sites.size(), 2u);
 }
 
+// One stroke out and back (x = 0.1·sin πt over 1 s: out to the end at
+// 0.5 s, back by 1 s), as a panel line strokes each panel: no whole stroke
+// lies between two reversals, so nothing is placed, but every dent passed
+// on the way out is passed on the way back: one site per dent, its two
+// crossings mirrored about the reversal.
+TEST(DefectSites, ASingleStrokeOutAndBackPairsItsCrossingsIntoOneSitePerDent)
+{
+    const auto one = crossings(harmonic(0.5), {0.030}, 1.0);
+    ASSERT_EQ(one.size(), 2u);
+    const auto single = scanSites(one);
+    ASSERT_EQ(single.sites.size(), 1u) << single.method;
+    EXPECT_FALSE(single.sites.front().position_m);
+    EXPECT_EQ(single.sites.front().forward, 1u);
+    EXPECT_EQ(single.sites.front().backward, 1u);
+    EXPECT_EQ(single.method, "not placed: one stroke out and back, each dent crossed once each way");
+
+    // Two dents: out over 30 then 60 mm, back over 60 then 30 mm.
+    const auto two = crossings(harmonic(0.5), {0.030, 0.060}, 1.0);
+    ASSERT_EQ(two.size(), 4u);
+    const auto pairs = scanSites(two);
+    ASSERT_EQ(pairs.sites.size(), 2u);
+    for (const auto& site : pairs.sites) {
+        ASSERT_EQ(site.crossings.size(), 2u);
+        // Its crossings lie symmetric about the reversal at 0.5 s: one dent.
+        const double a = two[site.crossings[0]].start_s, b = two[site.crossings[1]].start_s;
+        EXPECT_NEAR(0.5 * (a + b) + 0.05, 0.5, 0.001);
+    }
+
+    // Seen one way only: two crossings the same way are two dents.
+    EXPECT_EQ(scanSites(crossings(harmonic(0.5), {0.030, 0.060}, 1.0, {.onlyDirection = 1})).sites.size(), 2u);
+    // A crossing missed on the way back: no mirror, so the pairing is not
+    // taken (the pass rule groups them; never fewer sites than dents).
+    auto missed = two;
+    missed.erase(missed.begin() + 2);
+    const auto unpaired = scanSites(missed);
+    EXPECT_EQ(unpaired.method, "not placed");
+    EXPECT_GE(unpaired.sites.size(), 2u);
+}
+
 TEST(DefectSites, EventsWithoutSpeedAreUnplacedButStillGrouped)
 {
     auto events = crossings(harmonic(0.5), {0.030}, 10.0);
