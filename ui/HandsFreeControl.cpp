@@ -154,6 +154,13 @@ void HandsFreeControl::update()
     if (!live) return;
     const auto watchable = live->watchableQuantities();  // once per poll, for every alarm
     for (const auto& summary : live->takeTriggeredSummaries()) m_hooks.sessionEnded(summary);
+    if (const auto refusal = live->takeTriggerRefusal()) {
+        m_disarm->setEnabled(false);
+        m_hooks.stateChanged();
+        m_hooks.problem({tr("Trigger disarmed"), tr("The trigger fired, but no recording could start."),
+                         QString::fromStdString(*refusal),
+                         tr("Free space for the session store, or choose another, then arm the trigger again.")});
+    }
     bool fresh = false;
     for (const auto& alarm : live->takeAlarms()) {
         const bool critical = alarm.change.severity == core::trigger::LimitSeverity::Critical;

@@ -313,6 +313,12 @@ int runRecord(const QStringList& arguments)
         tellTrigger();
         reportTriggered();
         if (summary) break;  // the disk stopped it
+        if (const auto refusal = session.takeTriggerRefusal()) {
+            printError(QStringLiteral("the trigger could not start a recording: %1; the trigger was disarmed")
+                           .arg(QString::fromStdString(*refusal)));
+            exit = kExitFailure;
+            break;
+        }
         const auto now = std::chrono::steady_clock::now();
         const auto state = session.stats().state;
         if (stopRequested() || criticalStop || state == devices::AcquisitionState::Finished ||

@@ -197,6 +197,9 @@ public:
     TriggerStatus triggerStatus() const { return m_gate->status(); }
     // The triggered sessions ended since the last call, in order.
     std::vector<RecordingSummary> takeTriggeredSummaries() { return std::exchange(m_triggeredSummaries, {}); }
+    // Why the trigger disarmed itself: the store's refusal of the session
+    // a trigger started (every later one would meet the same); taken once.
+    std::optional<std::string> takeTriggerRefusal() { return std::exchange(m_triggerRefusal, std::nullopt); }
 
     // Limit alarms on device channels or quantities of the mode: the
     // probe's own (its profile's, else its sensor model's:
@@ -298,6 +301,7 @@ private:
     core::storage::SessionMetadata m_triggerRequest;
     unsigned m_triggeredStarted = 0;
     std::vector<RecordingSummary> m_triggeredSummaries;
+    std::optional<std::string> m_triggerRefusal;
     std::vector<core::trigger::LimitSpec> m_givenLimits;
     std::vector<core::sensors::SensorLimit> m_effectiveLimits;
     std::vector<LimitAlarm> m_alarmsTold;

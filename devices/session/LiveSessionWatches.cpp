@@ -135,7 +135,7 @@ void LiveSession::takeTriggered()
         // The store refuses: every trigger would meet the same refusal.
         m_gate->disarm();
         m_trigger.reset();
-        m_linkNotices.push_back({pending->triggerTime_s, "the trigger could not start a recording: " + *error});
+        m_triggerRefusal = *error;
         return;
     }
     ++m_triggeredStarted;

@@ -16,12 +16,15 @@
 #include "core/storage/SessionStore.h"
 #include "support/CliRunner.h"
 #include "support/EmulatorProcess.h"
+#include "support/TmpfsMount.h"
 
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
+#include <vector>
 
 using namespace tactiscope;
 using tactiscope::testing::recordEmulated;
@@ -153,6 +156,35 @@ TEST(TriggeredRecordCli, AWindowLimitReplacesTheBeamsOwnAndSpansItsExcursion)
     EXPECT_NEAR(critic.start_s, 4.6, 0.15);
     EXPECT_NEAR(critic.end_s, 14.6, 0.25);
     EXPECT_NEAR(warned.end_s, 15.6, 0.25);
+}
+
+// The store's disk (a real tmpfs) fills while the trigger waits: the first
+// trigger cannot start its session, every later one would meet the same,
+// so the trigger disarms, `record` says why and exits 1.
+TEST(TriggeredRecordCli, AStoreThatRefusesAtTheTriggerDisarmsItAndExitsWithTheReason)
+{
+    tactiscope::testing::TmpfsMount disk("1m");
+    if (!disk.mounted()) GTEST_SKIP() << tactiscope::testing::TmpfsMount::kSkipReason;
+    QTemporaryDir dir;
+    const QString db = QString::fromStdString(disk.file("line.tactiscope"));
+    // The store made while there is room (a second of a first panel)…
+    ASSERT_EQ(recordEmulated(dir.path(), db, QStringLiteral("panel-line"), 1).exitCode, 0);
+    // …then the disk full.
+    {
+        std::ofstream filler(disk.file("filler"), std::ios::binary);
+        const std::vector<char> block(1024, 'x');
+        while (filler.write(block.data(), static_cast<std::streamsize>(block.size())) && filler.flush()) {
+        }
+    }
+    const auto result = recordEmulated(dir.path(), db, QStringLiteral("panel-line"), 15,
+                                       {"--subject", "door-17", "--trigger", "a>20e-6", "--sessions", "2"});
+    EXPECT_EQ(result.exitCode, 1) << result.err.toStdString();
+    EXPECT_TRUE(result.err.contains(QStringLiteral("the trigger could not start a recording: ")))
+        << result.err.toStdString();
+    EXPECT_TRUE(result.err.contains(QStringLiteral("the disk is full"))) << result.err.toStdString();
+    EXPECT_TRUE(result.err.contains(QStringLiteral("; the trigger was disarmed"))) << result.err.toStdString();
+    EXPECT_TRUE(result.err.contains(QStringLiteral("0 of 2 triggered sessions recorded"))) << result.err.toStdString();
+    EXPECT_FALSE(result.out.contains(QStringLiteral("Recorded session"))) << result.out.toStdString();
 }
 
 TEST(TriggeredRecordCli, BadTriggerAndLimitOptionsAreRefusedBeforeAnythingIsRecorded)

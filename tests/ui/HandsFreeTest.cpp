@@ -12,6 +12,7 @@
 #include "devices/session/LiveSession.h"
 #include "support/MainWindowHelpers.h"
 #include "support/Screenshot.h"
+#include "support/TmpfsMount.h"
 #include "support/WaitFor.h"
 #include "ui/LimitsDialog.h"
 #include "ui/MainWindow.h"
@@ -23,6 +24,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
@@ -32,6 +34,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
 
 using namespace tactiscope;
 using tactiscope::testing::child;
@@ -114,9 +117,56 @@ TEST(HandsFree, TheTriggerDialogCutsOneSessionPerPanelFromTheMainWindow)
         EXPECT_EQ(defects[0].direction, 1);
         EXPECT_EQ(defects[1].direction, -1);
         EXPECT_NEAR(defects[0].start_s, 0.5, 0.1);
+        // …which is one dent, one site (DefectSites: a stroke out and back).
+        const auto verdicts = sessions.verdicts(s.id);
+        ASSERT_FALSE(verdicts.empty());
+        EXPECT_NE(verdicts.front().basisJson.find("\"sites\":1"), std::string::npos) << verdicts.front().basisJson;
     }
     std::ranges::sort(subjects);
     EXPECT_EQ(subjects, (std::vector<std::string>{"door-17", "door-18", "door-19"}));
+}
+
+// The store is on a full disk (a real tmpfs, filled): arming works (nothing
+// is written until a trigger), but the first trigger cannot start a
+// recording. Every later trigger would meet the same refusal, so the
+// trigger disarms and says why, rather than firing into nothing.
+TEST(HandsFree, AStoreThatRefusesAtTheTriggerDisarmsItAndSaysWhy)
+{
+    tactiscope::testing::TmpfsMount disk("256k");
+    if (!disk.mounted()) GTEST_SKIP() << tactiscope::testing::TmpfsMount::kSkipReason;
+    {
+        std::ofstream filler(disk.file("filler"), std::ios::binary);
+        const std::vector<char> block(4096, 'x');
+        while (filler.write(block.data(), static_cast<std::streamsize>(block.size())) && filler.flush()) {
+        }
+    }
+    ui::MainWindow window;
+    window.setStorePath(QString::fromStdString(disk.file("line.tactiscope")));
+    window.resize(1280, 760);
+    window.show();
+    window.connectSource(liveSimulator("panel-line"));
+    action(window, "triggerAction")->trigger();
+    auto* dialog = window.findChild<ui::TriggerDialog*>(QStringLiteral("triggerDialog"));
+    ASSERT_NE(dialog, nullptr);
+    child<QComboBox>(*dialog, "triggerQuantity")->setCurrentIndex(0);  // a, in µε
+    child<QComboBox>(*dialog, "triggerKind")->setCurrentIndex(0);      // is above
+    QTest::keyClicks(child<QLineEdit>(*dialog, "triggerLevel"), QStringLiteral("20"));
+    QTest::mouseClick(child<QPushButton>(*dialog, "armButton"), Qt::LeftButton);
+    ASSERT_TRUE(window.liveSession()->triggerArmed());
+    ASSERT_TRUE(waitFor([&] { return !window.liveSession()->triggerArmed(); }, 8000));
+    EXPECT_FALSE(window.isRecording());
+    EXPECT_EQ(child<QPushButton>(window, "recordButton")->text(), QStringLiteral("●  Record"));
+    auto* box = window.findChild<QMessageBox*>(QStringLiteral("problemBox"));
+    ASSERT_NE(box, nullptr);
+    EXPECT_EQ(box->windowTitle(), QStringLiteral("Trigger disarmed"));
+    EXPECT_EQ(box->text(), QStringLiteral("The trigger fired, but no recording could start."));
+    EXPECT_TRUE(box->informativeText().contains(QStringLiteral("the disk is full")))
+        << box->informativeText().toStdString();
+    EXPECT_FALSE(action(window, "disarmAction")->isEnabled());
+    auto* banner = child<ui::WatchBanner>(window, "watchBanner");
+    EXPECT_FALSE(banner->triggerText().startsWith(QStringLiteral("Trigger armed")))
+        << banner->triggerText().toStdString();
+    tactiscope::testing::saveScreenshot(*box, QStringLiteral("trigger-refused"));
 }
 
 TEST(HandsFree, AnOverloadedBeamTurnsTheBannerRedAndItsLimitsAreListedWithTheirBasis)
