@@ -482,7 +482,7 @@ SiteGrouping groupSites(std::span<const DefectEvent> events, const CrossingPlace
         site.last_s = std::max(site.last_s, events[i].end_s);
     }
     const bool anyPlaced = std::ranges::any_of(grouping.sites, [](const auto& s) { return s.position_m.has_value(); });
-    grouping.method = anyPlaced ? places.model
+    grouping.method = anyPlaced  ? places.model
                       : mirrored ? "not placed: one stroke out and back, each dent crossed once each way"
                                  : "not placed";
     return grouping;
