@@ -341,8 +341,10 @@ std::vector<std::vector<std::size_t>> byRank(const std::vector<std::vector<std::
 // crossings, in time order, change direction once and are as many each way.
 // Each dent on the way out lies on the way back too, so the last crossing
 // out and the first back are one dent, and so on outwards from the
-// reversal: those pairs are the sites. Anything else (a dent missed one
-// way, more reversals): none.
+// reversal: those pairs are the sites. Each pair must be one the probe
+// could make: both crossings with a speed, and no further apart than going
+// kMaxStroke_m to the turn and back at the slower of them. Anything else
+// (a dent missed one way, more reversals, crossings minutes apart): none.
 std::optional<std::vector<std::vector<std::size_t>>> outAndBack(std::span<const DefectEvent> events,
                                                                 const std::vector<std::size_t>& inTimeOrder)
 {
@@ -352,7 +354,13 @@ std::optional<std::vector<std::vector<std::size_t>>> outAndBack(std::span<const 
     for (std::size_t j = 0; j < inTimeOrder.size(); ++j)
         if (events[inTimeOrder[j]].direction != (j < k ? out : -out) || out == 0) return std::nullopt;
     std::vector<std::vector<std::size_t>> pairs;
-    for (std::size_t j = 0; j < k; ++j) pairs.push_back({inTimeOrder[k - 1 - j], inTimeOrder[k + j]});
+    for (std::size_t j = 0; j < k; ++j) {
+        const DefectEvent& there = events[inTimeOrder[k - 1 - j]];
+        const DefectEvent& back = events[inTimeOrder[k + j]];
+        const auto v1 = speedOf(there), v2 = speedOf(back);
+        if (!v1 || !v2 || midTime(back) - midTime(there) > 2.0 * kMaxStroke_m / std::min(*v1, *v2)) return std::nullopt;
+        pairs.push_back({inTimeOrder[k - 1 - j], inTimeOrder[k + j]});
+    }
     return pairs;
 }
 

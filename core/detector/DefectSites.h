@@ -54,7 +54,9 @@
 // The exception is a single stroke out and back (nothing placed; the
 // crossings change direction once, as many each way): each dent on the way
 // out is on the way back, so the crossings pair mirrored about the
-// reversal, the last out with the first back, one site per pair.
+// reversal, the last out with the first back, one site per pair, as long
+// as each pair has its speeds and lies close enough in time for the probe
+// to have gone to the turn and back (kMaxStroke_m each way).
 #pragma once
 
 #include "core/detector/DefectEvent.h"
@@ -81,6 +83,9 @@ inline constexpr double kSiteReach_m = 0.015;
 inline constexpr double kMinSiteSeparation_m = 0.010;
 // Unplaced crossings are grouped by passes only from this many on.
 inline constexpr std::size_t kMinPasses = 3;
+// Farther than any stroke over a panel goes, by hand or machine (the
+// paper's is about 200 mm).
+inline constexpr double kMaxStroke_m = 1.0;
 
 // Where each event was placed, and why some were not.
 struct CrossingPlaces {

@@ -230,6 +230,16 @@ TEST(DefectSites, ASingleStrokeOutAndBackPairsItsCrossingsIntoOneSitePerDent)
         EXPECT_NEAR(0.5 * (a + b) + 0.05, 0.5, 0.001);
     }
 
+    // Without their speeds, or minutes apart, two crossings could be two
+    // dents each seen one way: not paired.
+    auto noSpeed = one;
+    noSpeed[1].speed_m_per_s.reset();
+    EXPECT_EQ(scanSites(noSpeed).sites.size(), 2u);
+    auto apart = one;
+    apart[1].start_s += 180.0;
+    apart[1].end_s += 180.0;
+    EXPECT_EQ(scanSites(apart).sites.size(), 2u);
+
     // Seen one way only: two crossings the same way are two dents.
     EXPECT_EQ(scanSites(crossings(harmonic(0.5), {0.030, 0.060}, 1.0, {.onlyDirection = 1})).sites.size(), 2u);
     // A crossing missed on the way back: no mirror, so the pairing is not

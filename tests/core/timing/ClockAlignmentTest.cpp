@@ -1,0 +1,180 @@
+// A device clock mapped onto the host's (issue 40), on streams made here
+// with a known offset and drift and delivery delays drawn from two kinds
+// of link: exponential (mean 2 ms) and bursty (2 % of frames held up to
+// 40 ms more). The truth is the arrival floor, the device's instant
+// mapped plus the link's fixed 1 ms; the issue's targets are 1 ms after
+// 10 s and 0.2 ms after 60 s, met here by every one of 100 seeds at the
+// recording's start, middle and end. A polled link (arrivals on 1 ms
+// ticks and nothing else random) is the worst case and has its own test.
+#include "core/timing/ClockAlignment.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+
+using tactiscope::core::timing::ClockAlignment;
+using tactiscope::core::timing::ClockMapping;
+
+namespace {
+
+enum class Link { Exponential, Bursty, Polled };
+
+struct Device {
+    double offset_s = 0.5;
+    double drift = 80e-6;  // the host's seconds per device second, less one
+    double floor_s = 1e-3;
+    // The host's instant for a device time: the truth (at the floor).
+    double host_s(double device_s) const { return offset_s + (1.0 + drift) * device_s + floor_s; }
+};
+
+double delay_s(Link link, std::mt19937_64& random)
+{
+    std::exponential_distribution<double> exponential(1.0 / 2e-3);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    switch (link) {
+    case Link::Exponential:
+        return exponential(random);
+    case Link::Bursty:
+        return 0.5 * exponential(random) + (unit(random) < 0.02 ? 40e-3 * unit(random) : 0.0);
+    case Link::Polled:
+        return 0.0;  // the poll's tick does it
+    }
+    return 0.0;
+}
+
+ClockAlignment stream(const Device& device, Link link, double frames_hz, double seconds, std::uint64_t seed)
+{
+    std::mt19937_64 random(seed);
+    ClockAlignment clock;
+    const auto frames = static_cast<long>(std::lround(seconds * frames_hz));
+    for (long k = 0; k < frames; ++k) {
+        const double d = static_cast<double>(k) / frames_hz;
+        double arrival = device.host_s(d) + delay_s(link, random);
+        if (link == Link::Polled) arrival = std::ceil(arrival / 1e-3) * 1e-3;
+        clock.add(d, arrival);
+    }
+    return clock;
+}
+
+// The largest error of the mapping at the start, middle and end.
+double worstError_s(const ClockMapping& mapping, const Device& device, double seconds)
+{
+    double worst = 0.0;
+    for (const double d : {0.0, seconds / 2.0, seconds})
+        worst = std::max(worst, std::abs(mapping.host_s(d) - device.host_s(d)));
+    return worst;
+}
+
+}  // namespace
+
+TEST(ClockAlignment, MeetsTheTargetsAfterTenAndSixtySecondsOnEveryLinkAndRate)
+{
+    for (const Link link : {Link::Exponential, Link::Bursty})
+        for (const double frames_hz : {10.0, 100.0, 500.0})
+            for (const double drift : {-100e-6, 80e-6, 100e-6})
+                for (const auto& [seconds, target_s] : {std::pair{10.0, 1e-3}, std::pair{60.0, 0.2e-3}}) {
+                    const Device device{0.5, drift};
+                    double worst = 0.0;
+                    for (std::uint64_t seed = 1; seed <= 100; ++seed) {
+                        const auto mapping = stream(device, link, frames_hz, seconds, seed).mapping();
+                        ASSERT_TRUE(mapping);
+                        worst = std::max(worst, worstError_s(*mapping, device, seconds));
+                    }
+                    EXPECT_LE(worst, target_s) << "link " << static_cast<int>(link) << ", " << frames_hz
+                                               << " frames/s, drift " << drift << ", " << seconds << " s";
+                }
+}
+
+// The worst link: frames taken on 1 ms ticks and nothing else random, from
+// a device 80 ppm slow. The tick's phase then moves by 80 µs a second
+// whatever the frame rate, and sweeps the whole millisecond only once in
+// 12.5 s (a beat: tick / drift): until it has, few frames have come at the
+// floor, and the line may lie up to a tick off. After several beats it
+// lies on the floor. (With less drift the beat is longer: docs/multi-device.md.)
+TEST(ClockAlignment, APollBeatingWithTheDeviceNeedsOneBeatToFindTheFloor)
+{
+    const Device device{0.5, 80e-6};
+    const auto early = stream(device, Link::Polled, 10.0, 10.0, 1).mapping();
+    const auto later = stream(device, Link::Polled, 10.0, 60.0, 1).mapping();
+    ASSERT_TRUE(early && later);
+    EXPECT_LE(worstError_s(*early, device, 10.0), 1e-3 + 1e-9);
+    EXPECT_LE(worstError_s(*later, device, 60.0), 0.02e-3);
+}
+
+TEST(ClockAlignment, TheDriftIsFoundToATenthOfAPartPerMillionAndTheOffsetWhereItIsGiven)
+{
+    const Device device{-2.25, -100e-6};
+    const auto mapping = stream(device, Link::Exponential, 100.0, 60.0, 7).mapping();
+    ASSERT_TRUE(mapping);
+    EXPECT_NEAR(mapping->drift, -100e-6, 0.1e-6);
+    EXPECT_NEAR(mapping->offset_s, device.host_s(mapping->reference_s) - mapping->reference_s, 20e-6);
+    EXPECT_NEAR(mapping->reference_s, 30.0, 0.5);  // the middle of the pairs
+    // Between the fastest frames of the first and the last quarter second.
+    EXPECT_NEAR(mapping->span_s, 59.75, 0.25);
+    EXPECT_EQ(mapping->pairs, 6000u);
+}
+
+TEST(ClockAlignment, TwoDevicesMarkingOneInstantAreAlignedOnTheHostClock)
+{
+    // Both emulators mark the host's instant 37.000 s: each at its own
+    // device time. Mapped back, the two marks lie together.
+    const Device a{0.5, 80e-6}, b{-0.2, -100e-6};
+    const double instant = 37.0 + a.floor_s;
+    const double markA = (instant - a.offset_s - a.floor_s) / (1.0 + a.drift);
+    const double markB = (instant - b.offset_s - b.floor_s) / (1.0 + b.drift);
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        const auto mapA = stream(a, Link::Bursty, 100.0, 60.0, seed).mapping();
+        const auto mapB = stream(b, Link::Bursty, 50.0, 60.0, seed + 1000).mapping();
+        ASSERT_TRUE(mapA && mapB);
+        EXPECT_LE(std::abs(mapA->host_s(markA) - mapB->host_s(markB)), 0.2e-3) << seed;
+    }
+}
+
+TEST(ClockAlignment, NeedsTwoQuarterSecondsAndIgnoresWhatIsNoTime)
+{
+    ClockAlignment clock;
+    EXPECT_FALSE(clock.mapping());
+    clock.add(0.0, 1.0);
+    clock.add(0.1, 1.1);
+    EXPECT_FALSE(clock.mapping());  // one bin: no line yet
+    clock.add(std::numeric_limits<double>::quiet_NaN(), 2.0);
+    clock.add(0.3, std::numeric_limits<double>::infinity());
+    EXPECT_EQ(clock.pairsSeen(), 2u);
+    clock.add(0.3, 1.3);
+    const auto mapping = clock.mapping();
+    ASSERT_TRUE(mapping);
+    EXPECT_NEAR(mapping->host_s(10.0), 11.0, 1e-12);
+    // A stamp from before (a restarted device) is not this clock.
+    clock.add(0.05, 5.0);
+    EXPECT_EQ(clock.pairsSeen(), 3u);
+}
+
+TEST(ClockAlignment, StaysBoundedOverTenHoursAndFollowsADriftThatWanders)
+{
+    // Ten hours at 100 frames/s; the device's crystal wanders ±2 ppm with a
+    // one-hour temperature cycle. Memory holds ten minutes of quarter
+    // seconds, and the mapping at the end is still within the target.
+    std::mt19937_64 random(3);
+    ClockAlignment clock;
+    const double hours = 10.0, period_s = 3600.0, wander = 2e-6;
+    const auto host = [&](double d) {
+        // ∫ (1 + 80e-6 + wander·sin(2πt/P)) dt
+        return 0.5 + 1e-3 + (1.0 + 80e-6) * d +
+               wander * period_s / (2.0 * M_PI) * (1.0 - std::cos(2.0 * M_PI * d / period_s));
+    };
+    std::size_t mostKept = 0;
+    const double end = hours * 3600.0;
+    for (double d = 0.0; d < end; d += 0.01) {
+        clock.add(d, host(d) + delay_s(Link::Exponential, random));
+        mostKept = std::max(mostKept, clock.pointsKept());
+    }
+    EXPECT_LE(mostKept, static_cast<std::size_t>(600.0 / 0.25) + 2);
+    const auto mapping = clock.mapping();
+    ASSERT_TRUE(mapping);
+    EXPECT_LE(std::abs(mapping->host_s(end) - host(end)), 0.2e-3);
+    EXPECT_LE(std::abs(mapping->host_s(end - 300.0) - host(end - 300.0)), 0.2e-3);
+}
