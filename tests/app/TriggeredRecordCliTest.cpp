@@ -23,8 +23,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <fstream>
-#include <vector>
 
 using namespace tactiscope;
 using tactiscope::testing::recordEmulated;
@@ -170,12 +168,7 @@ TEST(TriggeredRecordCli, AStoreThatRefusesAtTheTriggerDisarmsItAndExitsWithTheRe
     // The store made while there is room (a second of a first panel)…
     ASSERT_EQ(recordEmulated(dir.path(), db, QStringLiteral("panel-line"), 1).exitCode, 0);
     // …then the disk full.
-    {
-        std::ofstream filler(disk.file("filler"), std::ios::binary);
-        const std::vector<char> block(1024, 'x');
-        while (filler.write(block.data(), static_cast<std::streamsize>(block.size())) && filler.flush()) {
-        }
-    }
+    disk.fill();
     const auto result = recordEmulated(dir.path(), db, QStringLiteral("panel-line"), 15,
                                        {"--subject", "door-17", "--trigger", "a>20e-6", "--sessions", "2"});
     EXPECT_EQ(result.exitCode, 1) << result.err.toStdString();

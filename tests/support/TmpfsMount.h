@@ -8,7 +8,9 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
+#include <vector>
 
 namespace tactiscope::testing {
 
@@ -38,6 +40,14 @@ public:
     bool mounted() const { return !m_path.empty(); }
     const std::string& path() const { return m_path; }
     std::string file(const std::string& name) const { return m_path + "/" + name; }
+    // Fills it to the last byte with a file of its own: a full disk.
+    void fill() const
+    {
+        std::ofstream filler(file("filler"), std::ios::binary);
+        const std::vector<char> block(1024, 'x');
+        while (filler.write(block.data(), static_cast<std::streamsize>(block.size())) && filler.flush()) {
+        }
+    }
     // Write-protects it, as a locked card or a mounted archive is.
     bool makeReadOnly() const
     {

@@ -34,7 +34,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <fstream>
 
 using namespace tactiscope;
 using tactiscope::testing::child;
@@ -50,6 +49,19 @@ QAction* action(const QWidget& window, const char* name)
     return found;
 }
 
+// Session ▸ Trigger… set to "a is above 20 µε" (the panel line's dents).
+ui::TriggerDialog* triggerOnA(const ui::MainWindow& window)
+{
+    action(window, "triggerAction")->trigger();
+    auto* dialog = window.findChild<ui::TriggerDialog*>(QStringLiteral("triggerDialog"));
+    EXPECT_NE(dialog, nullptr);
+    if (!dialog) return nullptr;
+    child<QComboBox>(*dialog, "triggerQuantity")->setCurrentIndex(0);  // a, in µε
+    child<QComboBox>(*dialog, "triggerKind")->setCurrentIndex(0);      // is above
+    QTest::keyClicks(child<QLineEdit>(*dialog, "triggerLevel"), QStringLiteral("20"));
+    return dialog;
+}
+
 }  // namespace
 
 TEST(HandsFree, TheTriggerDialogCutsOneSessionPerPanelFromTheMainWindow)
@@ -63,12 +75,8 @@ TEST(HandsFree, TheTriggerDialogCutsOneSessionPerPanelFromTheMainWindow)
     window.connectSource(liveSimulator("panel-line"));
     QTest::keyClicks(child<QLineEdit>(window, "subjectEdit"), QStringLiteral("door-17"));
 
-    action(window, "triggerAction")->trigger();
-    auto* dialog = window.findChild<ui::TriggerDialog*>(QStringLiteral("triggerDialog"));
+    auto* dialog = triggerOnA(window);
     ASSERT_NE(dialog, nullptr);
-    child<QComboBox>(*dialog, "triggerQuantity")->setCurrentIndex(0);  // a, in µε
-    child<QComboBox>(*dialog, "triggerKind")->setCurrentIndex(0);      // is above
-    QTest::keyClicks(child<QLineEdit>(*dialog, "triggerLevel"), QStringLiteral("20"));
     child<QDoubleSpinBox>(*dialog, "triggerPre")->setValue(0.5);
     child<QDoubleSpinBox>(*dialog, "triggerPost")->setValue(1.0);
     child<QSpinBox>(*dialog, "triggerSessions")->setValue(3);
@@ -134,23 +142,14 @@ TEST(HandsFree, AStoreThatRefusesAtTheTriggerDisarmsItAndSaysWhy)
 {
     tactiscope::testing::TmpfsMount disk("256k");
     if (!disk.mounted()) GTEST_SKIP() << tactiscope::testing::TmpfsMount::kSkipReason;
-    {
-        std::ofstream filler(disk.file("filler"), std::ios::binary);
-        const std::vector<char> block(4096, 'x');
-        while (filler.write(block.data(), static_cast<std::streamsize>(block.size())) && filler.flush()) {
-        }
-    }
+    disk.fill();
     ui::MainWindow window;
     window.setStorePath(QString::fromStdString(disk.file("line.tactiscope")));
     window.resize(1280, 760);
     window.show();
     window.connectSource(liveSimulator("panel-line"));
-    action(window, "triggerAction")->trigger();
-    auto* dialog = window.findChild<ui::TriggerDialog*>(QStringLiteral("triggerDialog"));
+    auto* dialog = triggerOnA(window);
     ASSERT_NE(dialog, nullptr);
-    child<QComboBox>(*dialog, "triggerQuantity")->setCurrentIndex(0);  // a, in µε
-    child<QComboBox>(*dialog, "triggerKind")->setCurrentIndex(0);      // is above
-    QTest::keyClicks(child<QLineEdit>(*dialog, "triggerLevel"), QStringLiteral("20"));
     QTest::mouseClick(child<QPushButton>(*dialog, "armButton"), Qt::LeftButton);
     ASSERT_TRUE(window.liveSession()->triggerArmed());
     ASSERT_TRUE(waitFor([&] { return !window.liveSession()->triggerArmed(); }, 8000));
