@@ -1,5 +1,6 @@
 // The device the benchmarks stream: 8 strain channels at 2 kHz (the
-// workstation's sizing case), noisy sines that differ per channel.
+// workstation's sizing case), noisy sines that differ per channel; and the
+// same at any channel count and rate (16 at 10 kHz: issue 40).
 #pragma once
 
 #include "core/ChannelDescriptor.h"
@@ -15,19 +16,20 @@ namespace tactiscope::bench {
 inline constexpr std::size_t kChannels = 8;
 inline constexpr double kRate_hz = 2000.0;
 
-inline std::vector<core::ChannelDescriptor> eightChannels()
+// Strain channels s0, s1, …
+inline std::vector<core::ChannelDescriptor> strainChannels(std::size_t count)
 {
     std::vector<core::ChannelDescriptor> result;
-    for (std::size_t c = 0; c < kChannels; ++c)  // not "s" + …: GCC 12 warns falsely (-Wrestrict)
+    for (std::size_t c = 0; c < count; ++c)  // not "s" + …: GCC 12 warns falsely (-Wrestrict)
         result.push_back({std::string(1, 's').append(std::to_string(c)), "", core::ChannelKind::Strain});
     return result;
 }
 
-// Samples [first, first + count) of the stream.
-inline core::SampleBlock eightChannelBlock(std::uint64_t first, std::size_t count)
+// Samples [first, first + count) of a stream of `channels` at `rate_hz`.
+inline core::SampleBlock streamBlock(std::size_t channels, double rate_hz, std::uint64_t first, std::size_t count)
 {
-    core::SampleBlock block(kChannels, count, static_cast<double>(first) / kRate_hz, 1.0 / kRate_hz, first);
-    for (std::size_t c = 0; c < kChannels; ++c) {
+    core::SampleBlock block(channels, count, static_cast<double>(first) / rate_hz, 1.0 / rate_hz, first);
+    for (std::size_t c = 0; c < channels; ++c) {
         auto values = block.channel(c);
         for (std::size_t s = 0; s < count; ++s) {
             const auto i = static_cast<double>(first + s);
@@ -35,6 +37,16 @@ inline core::SampleBlock eightChannelBlock(std::uint64_t first, std::size_t coun
         }
     }
     return block;
+}
+
+inline std::vector<core::ChannelDescriptor> eightChannels()
+{
+    return strainChannels(kChannels);
+}
+
+inline core::SampleBlock eightChannelBlock(std::uint64_t first, std::size_t count)
+{
+    return streamBlock(kChannels, kRate_hz, first, count);
 }
 
 }  // namespace tactiscope::bench

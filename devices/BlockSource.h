@@ -6,6 +6,7 @@
 
 #include "core/ChannelDescriptor.h"
 #include "core/Vocabulary.h"
+#include "core/timing/ClockAlignment.h"
 #include "devices/LinkNotice.h"
 #include "devices/protocol/DecoderCounters.h"
 
@@ -94,6 +95,10 @@ public:
     // What the device said in its STATUS frames since the last call, oldest
     // first. Any thread.
     virtual std::vector<DeviceStatus> takeStatuses() { return {}; }
+    // The device's clock on the host's steady clock: block time → host
+    // time (core/timing/ClockAlignment.h); none from a source whose block
+    // times are the host's own or before enough blocks. Any thread.
+    virtual std::optional<core::timing::ClockMapping> hostClock() const { return std::nullopt; }
 };
 
 }  // namespace tactiscope::devices

@@ -6,12 +6,16 @@
 
 namespace tactiscope::devices {
 
-std::optional<std::string> DriftWatch::check(const ClockSync& clock, double streamTime_s)
+std::optional<std::string> DriftWatch::check(const core::timing::ClockAlignment& alignment, double streamTime_s)
 {
-    if (clock.windows() < kWindows) return std::nullopt;
+    if (m_lastCheck_s && streamTime_s >= *m_lastCheck_s && streamTime_s - *m_lastCheck_s < kCheckEvery_s)
+        return std::nullopt;
+    m_lastCheck_s = streamTime_s;
+    const auto clock = alignment.mapping();
+    if (!clock || clock->span_s < kMinSpan_s) return std::nullopt;
     // drift = d(host − device)/d(device): negative when the device's time
     // runs ahead of the host's, i.e. it samples faster than it says.
-    const double ppm = -clock.drift() * 1e6;
+    const double ppm = -clock->drift * 1e6;
     if (std::abs(ppm) < kAlarm_ppm) return std::nullopt;
     if (m_lastNotice_s && streamTime_s - *m_lastNotice_s < kRepeat_s) return std::nullopt;
     m_lastNotice_s = streamTime_s;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace tactiscope::devices {
 
@@ -144,10 +145,16 @@ void PortSource::pump(std::chrono::milliseconds timeout)
     if (n == 0) return;
     const std::span<const std::uint8_t> bytes(m_chunk.data(), n);
     const double arrival_s = steadySeconds();
-    // Every new block teaches the clock mapping when it arrived.
-    const auto enqueue = [&](std::vector<core::SampleBlock>& blocks) {
+    // Every new block teaches the clock mapping when its last sample
+    // arrived (a block cannot leave before it), unless the device's clock
+    // broke off since: then the mapping begins again.
+    const auto enqueue = [&](std::vector<core::SampleBlock>& blocks, const protocol::DecoderCounters& counters) {
+        if (const auto breaks = counters.deviceRestarts + counters.sequenceFaults; breaks != m_clockBreaks) {
+            m_clockBreaks = breaks;
+            m_clock = {};
+        }
         for (auto& b : blocks) {
-            m_clock.observe(b.endTime_s(), arrival_s);
+            m_clock.add(b.endTime_s() - b.dt_s(), arrival_s);
             if (auto drift = m_drift.check(m_clock, b.endTime_s())) m_notices.push_back({b.endTime_s(), *drift});
             m_queue.push_back(std::move(b));
         }
@@ -161,16 +168,16 @@ void PortSource::pump(std::chrono::milliseconds timeout)
         std::vector<core::SampleBlock> blocks;
         m_text->push(bytes, arrival_s, blocks);
         const std::lock_guard lock(m_statusMutex);
-        enqueue(blocks);
         m_counters = m_text->counters();
+        enqueue(blocks, m_counters);
     } else {
         protocol::StreamOutput out;
         m_binary.push(bytes, arrival_s, out);
         const std::lock_guard lock(m_statusMutex);
-        enqueue(out.blocks);
+        m_counters = m_binary.counters();
+        enqueue(out.blocks, m_counters);
         m_notices.insert(m_notices.end(), std::make_move_iterator(out.notices.begin()),
                          std::make_move_iterator(out.notices.end()));
-        m_counters = m_binary.counters();
         if (out.infoChanged) m_info = m_binary.info();
         for (auto& status : out.statuses)
             m_statuses.push_back({static_cast<int>(status.level), std::move(status.message)});
@@ -202,10 +209,16 @@ ReadStatus PortSource::readBlock(core::SampleBlock& out, std::chrono::millisecon
     return ReadStatus::Block;
 }
 
-double PortSource::hostTime_s(double blockTime_s) const
+std::optional<core::timing::ClockMapping> PortSource::hostClock() const
 {
     const std::lock_guard lock(m_statusMutex);
-    return m_clock.hostTime_s(blockTime_s);
+    return m_clock.mapping();
+}
+
+double PortSource::hostTime_s(double blockTime_s) const
+{
+    const auto mapping = hostClock();
+    return mapping ? mapping->host_s(blockTime_s) : blockTime_s;
 }
 
 std::vector<LinkNotice> PortSource::takeNotices()

@@ -7,8 +7,8 @@
 // arrived meanwhile. The destructor sends stop.
 #pragma once
 
+#include "core/timing/ClockAlignment.h"
 #include "devices/BlockSource.h"
-#include "devices/ClockSync.h"
 #include "devices/DriftWatch.h"
 #include "devices/protocol/BinaryStream.h"
 #include "devices/protocol/TextStream.h"
@@ -55,10 +55,15 @@ public:
     std::optional<protocol::DeviceInfo> deviceInfo() const;
     std::optional<std::string> requestShunt(std::size_t channel, bool on) override;
     std::vector<DeviceStatus> takeStatuses() override;
-    // Host steady-clock time (seconds) of a block time, drift-corrected
-    // (ClockSync.h). Block times count the device's clock (binary) or
-    // samples at the sample rate (text); either way the mapping learns the
-    // offset and the rate error from the arrival times.
+    // The stream's clock on the host's (core/timing/ClockAlignment.h), from
+    // each block's last sample and its arrival. Block times count the
+    // device's clock (binary) or samples at the sample rate (text); either
+    // way the mapping learns the offset and the rate error. Begun again
+    // where the device's clock stops placing the samples (a restart, a
+    // sequence fault). Any thread.
+    std::optional<core::timing::ClockMapping> hostClock() const override;
+    // Host steady-clock time (seconds) of a block time; the block time
+    // itself before the mapping is known.
     double hostTime_s(double blockTime_s) const;
 
 private:
@@ -88,7 +93,8 @@ private:
     std::mutex m_writeMutex;               // a command from the owner while the handshake's or the stop's goes out
     std::deque<std::uint8_t> m_recent;     // the last kRecentBytes received
     std::optional<protocol::DeviceInfo> m_info;
-    ClockSync m_clock;
+    core::timing::ClockAlignment m_clock;
+    std::uint64_t m_clockBreaks = 0;  // restarts and sequence faults the mapping began again after
     DriftWatch m_drift;
 };
 

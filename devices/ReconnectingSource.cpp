@@ -71,9 +71,9 @@ bool ReconnectingSource::tryReconnect()
         // Continue after the last delivered sample, leaving room for what the
         // outage cost; time goes on from the host's clock.
         m_indexOffset = m_endIndex + static_cast<std::uint64_t>(std::llround(away_s * m_rate_hz));
-        m_timeOffset_s = std::chrono::duration<double>(now - m_start).count();
         {
-            const std::lock_guard lock(m_countersMutex);
+            const std::lock_guard lock(m_countersMutex);  // the owner reads the offset (notices, clock)
+            m_timeOffset_s = std::chrono::duration<double>(now - m_start).count();
             char text[96];
             std::snprintf(text, sizeof text, "the probe was away %.1f s and came back", away_s);
             m_pastNotices.push_back({m_lostAtTime_s, text});
@@ -144,6 +144,19 @@ std::vector<std::uint8_t> ReconnectingSource::recentBytes() const
 {
     const std::lock_guard lock(m_countersMutex);
     return m_source ? m_source->recentBytes() : std::vector<std::uint8_t>{};
+}
+
+// The current connection's mapping, for the stream's times: they are its
+// block times shifted by the offset it continues at.
+std::optional<core::timing::ClockMapping> ReconnectingSource::hostClock() const
+{
+    const std::lock_guard lock(m_countersMutex);
+    auto mapping = m_source ? m_source->hostClock() : std::nullopt;
+    if (mapping) {
+        mapping->reference_s += m_timeOffset_s;
+        mapping->offset_s -= m_timeOffset_s;
+    }
+    return mapping;
 }
 
 bool ReconnectingSource::textProtocol() const

@@ -56,6 +56,8 @@ public:
     std::vector<std::uint8_t> recentBytes() const override;
     bool textProtocol() const override;
     std::optional<std::string> rateNote() const override { return m_rateNote; }
+    // The current connection's, in the stream's time.
+    std::optional<core::timing::ClockMapping> hostClock() const override;
 
     DeviceState state() const { return m_state; }  // any thread
     std::uint64_t reconnections() const { return m_reconnections; }

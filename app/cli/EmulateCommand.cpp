@@ -41,6 +41,13 @@ int runEmulate(const QStringList& arguments)
          QStringLiteral("The rate its clock stamps frames at, in Hz (default: the true rate; another is a clock "
                         "that lies with --info-rate)."),
          QStringLiteral("HZ")},
+        {QStringLiteral("drift-ppm"),
+         QStringLiteral("Its crystal's error against the host's: +80 runs its clock, and its sampling, 80 ppm slow "
+                        "(default 0; within ±1000)."),
+         QStringLiteral("PPM")},
+        {QStringLiteral("clock-offset"),
+         QStringLiteral("Its clock's reading at the first sample, in seconds (default 0; 0 to 4000)."),
+         QStringLiteral("S")},
         {QStringLiteral("fault"),
          QStringLiteral("Misbehave as broken firmware (TSP/1): restart@S (silent 0.5 s, then sequence and clock "
                         "from 0), sequence-jump@S (one frame's sequence +30000), frozen-sequence, or "
@@ -108,6 +115,19 @@ int runEmulate(const QStringList& arguments)
         if (!ok) return usageError(QStringLiteral("--seed must be a non-negative integer"), usage);
     }
 
+    if (parser.isSet(QStringLiteral("drift-ppm"))) {
+        const auto ppm = parseNumber(parser.value(QStringLiteral("drift-ppm")));
+        if (!ppm || std::abs(*ppm) > 1000.0)
+            return usageError(QStringLiteral("--drift-ppm must be a number of ppm within ±1000"), usage);
+        options.clockDrift = *ppm * 1e-6;
+    }
+    if (parser.isSet(QStringLiteral("clock-offset"))) {
+        // The 32-bit microsecond clock wraps at 4295 s.
+        const auto offset = parseNumber(parser.value(QStringLiteral("clock-offset")));
+        if (!offset || *offset < 0.0 || *offset > 4000.0)
+            return usageError(QStringLiteral("--clock-offset must be a number of seconds from 0 to 4000"), usage);
+        options.clockOffset_s = *offset;
+    }
     if (parser.isSet(QStringLiteral("fault"))) {
         const auto fault = devices::emulator::parseFault(parser.value(QStringLiteral("fault")).toStdString());
         if (!fault)

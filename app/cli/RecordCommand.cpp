@@ -9,6 +9,7 @@
 #include "core/sensors/SensorProfile.h"
 #include "core/storage/RecorderLock.h"
 #include "core/storage/SessionStore.h"
+#include "devices/DriftWatch.h"
 #include "devices/ReconnectingSource.h"
 #include "devices/session/LiveSession.h"
 #include "devices/transport/SerialPorts.h"
@@ -336,12 +337,21 @@ int runRecord(const QStringList& arguments)
         }
     }
     const auto acquired = session.stats();
+    const auto clock = session.source().hostClock();
     if (!summary) summary = watch->trigger ? session.disarmTrigger() : session.stopRecording();
     tellNotices();
     tellAlarms();
     if (progress) err << '\n';
     reportTriggered();
     if (summary) report(*summary, acquired);
+    // The device's crystal against the host's (core/timing): what every
+    // time it stamped is off by, unmapped. Said once enough of its blocks
+    // were mapped for the drift to mean something (DriftWatch's span).
+    if (clock && clock->span_s >= devices::DriftWatch::kMinSpan_s)
+        printError(QStringLiteral("device clock: %1 ppm %2 against the host's (mapped over %3 s of its blocks)")
+                       .arg(std::abs(clock->drift) * 1e6, 0, 'f', 1)
+                       .arg(clock->drift >= 0.0 ? QStringLiteral("slow") : QStringLiteral("fast"))
+                       .arg(clock->span_s, 0, 'f', 1));
     if (watch->trigger && watch->trigger->sessions && stored < *watch->trigger->sessions)
         printError(QStringLiteral("%1 of %2 triggered sessions recorded before the stop")
                        .arg(stored)

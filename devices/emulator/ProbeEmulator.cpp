@@ -232,9 +232,10 @@ std::vector<std::uint8_t> ProbeEmulator::nextPayload(std::size_t& samples)
         return {text.begin(), text.end()};
     }
     protocol::DataPayload data;
-    data.timestamp_us = static_cast<std::uint32_t>(std::llround(static_cast<double>(m_sampleIndex - m_clockStart) *
-                                                                1e6 / m_options.clockRate_hz.value_or(m_rate_hz)) &
-                                                   0xFFFFFFFF);
+    data.timestamp_us = static_cast<std::uint32_t>(
+        std::llround(m_options.clockOffset_s * 1e6 + static_cast<double>(m_sampleIndex - m_clockStart) * 1e6 /
+                                                         m_options.clockRate_hz.value_or(m_rate_hz)) &
+        0xFFFFFFFF);
     data.format = protocol::SampleFormat::Float32;
     data.channelCount = static_cast<std::uint8_t>(m_channels.size());
     data.samplesPerChannel = static_cast<std::uint16_t>(n);
@@ -358,8 +359,11 @@ void ProbeEmulator::run(const std::stop_token& stop)
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
             continue;
         }
-        const auto due = streamStart + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
-                                           static_cast<double>(paced + m_options.samplesPerFrame) / m_rate_hz));
+        // Its samples come at its own crystal's pace.
+        const auto due =
+            streamStart +
+            std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
+                static_cast<double>(paced + m_options.samplesPerFrame) / m_rate_hz * (1.0 + m_options.clockDrift)));
         if (Clock::now() < due) {
             std::this_thread::sleep_until(std::min(due, Clock::now() + std::chrono::milliseconds(5)));
             continue;
@@ -374,6 +378,7 @@ void ProbeEmulator::run(const std::stop_token& stop)
             *firstStart += kRestartPause;  // the pause is not streaming time
             m_sampleIndex += static_cast<std::uint64_t>(std::llround(kRestartPause.count() * 1e-3 * m_rate_hz));
             m_clockStart = m_sampleIndex;
+            m_options.clockOffset_s = 0.0;  // a clock begun again reads from zero
             m_sequence = 0;
             if (m_detector) m_detector->reset();  // and its detector starts from silence
         }

@@ -53,6 +53,12 @@ struct EmulatorOptions {
     // The rate its clock stamps frames at (default: the true rate; another
     // is a clock that lies with its INFO).
     std::optional<double> clockRate_hz = std::nullopt;
+    // Its crystal: host seconds per device second, less one (+80e-6: its
+    // clock runs 80 ppm slow, and it samples as much slower in host time),
+    // and its clock's reading at the first sample, in seconds. Two
+    // emulators with known values are two devices to align (issue 40).
+    double clockDrift = 0.0;
+    double clockOffset_s = 0.0;
     // The probe runs the detector itself (firmware/probe-detector) on its
     // cantilevers and sends its decision and best R each way as channels
     // of kind "decision" named out, rab and rba (panel scan, TSP/1).

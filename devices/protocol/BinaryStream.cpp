@@ -37,7 +37,7 @@ constexpr double kClockRateTolerance = 0.02;
 // arrives at once). Over 5 s the host's delivery jitter is well under 1 %;
 // two windows in a row off by more than this fraction of the rate the
 // device states end the stream (its times would all be wrong by as much).
-// Smaller drifts are PortSource's (ClockSync), over a minute.
+// Smaller drifts are PortSource's (its clock mapping, core/timing).
 constexpr double kArrivalWindow_s = 5.0;
 constexpr double kArrivalSettle_s = 0.5;
 constexpr double kArrivalMismatch = 0.10;
@@ -183,7 +183,6 @@ void BinaryStream::onData(const Frame& frame, double hostTime_s, StreamOutput& o
         publish(waiting.first, waiting.second, out);
     }
     publish(*data, timestamp, out);
-    m_hostClock.add(m_lastEnd_s - 1.0 / *sampleRate_hz(), hostTime_s);
     checkRate(hostTime_s);
 }
 
@@ -253,10 +252,8 @@ std::uint64_t BinaryStream::believedLoss(std::uint16_t sequence, std::uint64_t t
 
     ++m_counters.sequenceFaults;
     // This frame follows the last one after the loss believed: the device's
-    // clock no longer places it, nor measures the rate across it, nor maps
-    // it onto the host's.
+    // clock no longer places it, nor measures the rate across it.
     m_clockRun.reset();
-    m_hostClock = {};
     m_originDevice_us = timestamp_us;
     m_originTime_s = m_lastEnd_s + static_cast<double>(lost) / rate;
     if (!m_lastFaultNotice_s || m_lastEnd_s - *m_lastFaultNotice_s >= kNoticeInterval_s) {
@@ -287,7 +284,6 @@ void BinaryStream::restart(std::uint64_t timestamp_us, std::size_t samples, doub
     const auto gap = static_cast<std::uint64_t>(std::llround(away_s * rate));
     ++m_counters.deviceRestarts;
     m_clockRun.reset();  // its clock began again
-    m_hostClock = {};
     m_counters.samplesLost += gap;
     m_nextSampleIndex += gap;
     m_originDevice_us = timestamp_us;

@@ -26,7 +26,6 @@
 #pragma once
 
 #include "core/SampleBlock.h"
-#include "core/timing/ClockAlignment.h"
 #include "devices/LinkNotice.h"
 #include "devices/protocol/BinaryDecoder.h"
 
@@ -60,12 +59,6 @@ public:
     std::uint64_t dataFrames() const { return m_dataFrames; }
     // Why the rate cannot be believed (see above); none while it can.
     const std::optional<std::string>& rateProblem() const { return m_rateProblem; }
-    // The stream's clock on the host's steady clock (stream time → host
-    // time; core/timing/ClockAlignment.h), from each frame's last sample
-    // and its arrival: a frame cannot leave before its last sample.
-    // Begun again wherever the device's clock stops placing the samples (a
-    // restart, a sequence fault); none before two quarter seconds of frames.
-    std::optional<core::timing::ClockMapping> hostClock() const { return m_hostClock.mapping(); }
     void reset();
 
 private:
@@ -102,7 +95,6 @@ private:
         std::uint64_t samples = 0;  // from start_us to the newest frame
     };
     std::optional<ClockRun> m_clockRun;  // consecutively numbered frames
-    core::timing::ClockAlignment m_hostClock;
     std::optional<double> m_clockRate_hz;
     std::uint64_t m_dataFrames = 0;
     std::optional<std::pair<double, std::uint64_t>> m_arrivalStart;  // host time, sample index

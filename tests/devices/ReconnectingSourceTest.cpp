@@ -5,6 +5,7 @@
 
 #include "core/SampleBlock.h"
 #include "devices/Acquisition.h"
+#include "devices/SteadyClock.h"
 #include "devices/emulator/ProbeEmulator.h"
 
 #include "support/Eventually.h"
@@ -13,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <mutex>
 #include <thread>
 
 using namespace tactiscope;
@@ -24,6 +26,18 @@ emulator::EmulatorOptions probeAt(const std::string& link, std::optional<double>
 {
     return {link, WireProtocol::Binary, "panel-scan", 1000.0, std::nullopt, seconds, 0.0, 10, seed};
 }
+
+// The stream time a block ended at, and the host time it was seen.
+struct LastBlock final : core::BlockSink {
+    void consume(const core::SampleBlock& block) override
+    {
+        const std::lock_guard lock(mutex);
+        end_s = block.endTime_s();
+        seen_s = steadySeconds();
+    }
+    std::mutex mutex;
+    double end_s = 0.0, seen_s = 0.0;
+};
 
 }  // namespace
 
@@ -38,6 +52,8 @@ TEST(ReconnectingSource, ContinuesAfterUnplugAndReplugWithTheGapMarked)
         std::chrono::milliseconds(100));
     auto* reconnecting = source.get();
     Acquisition acquisition(std::move(source));
+    auto last = std::make_shared<LastBlock>();
+    acquisition.addSink(last);
     acquisition.start();
 
     // The first probe streams 0.5 s, then hangs up: Lost.
@@ -55,6 +71,13 @@ TEST(ReconnectingSource, ContinuesAfterUnplugAndReplugWithTheGapMarked)
         return reconnecting->state() == DeviceState::Streaming && acquisition.stats().samples > before.samples + 200;
     }));
     const auto after = acquisition.stats();
+    // The reconnected probe's clock maps the stream's time (shifted past
+    // the outage) onto the host's: its latest block, to when it was seen.
+    ASSERT_TRUE(tactiscope::testing::eventually([&] { return reconnecting->hostClock().has_value(); }));
+    {
+        const std::lock_guard lock(last->mutex);
+        EXPECT_NEAR(reconnecting->hostClock()->host_s(last->end_s), last->seen_s, 0.05);
+    }
     acquisition.stop();
     EXPECT_EQ(reconnecting->reconnections(), 1u);
     // At least the 0.4 s away (400 samples at 1 kHz) is counted as lost.
