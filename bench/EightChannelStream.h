@@ -25,15 +25,17 @@ inline std::vector<core::ChannelDescriptor> strainChannels(std::size_t count)
     return result;
 }
 
-// Samples [first, first + count) of a stream of `channels` at `rate_hz`.
+// Samples [first, first + count) of a stream of `channels` at `rate_hz`:
+// the same signals in time at any rate (channel c a sine of 0.318·(c + 1) Hz,
+// plus a small one at 541 Hz), so rates compare on the same traces.
 inline core::SampleBlock streamBlock(std::size_t channels, double rate_hz, std::uint64_t first, std::size_t count)
 {
     core::SampleBlock block(channels, count, static_cast<double>(first) / rate_hz, 1.0 / rate_hz, first);
     for (std::size_t c = 0; c < channels; ++c) {
         auto values = block.channel(c);
         for (std::size_t s = 0; s < count; ++s) {
-            const auto i = static_cast<double>(first + s);
-            values[s] = 1e-4 * std::sin(i * 0.001 * static_cast<double>(c + 1)) + 1e-6 * std::sin(i * 1.7);
+            const double t = static_cast<double>(first + s) / rate_hz;
+            values[s] = 1e-4 * std::sin(2.0 * t * static_cast<double>(c + 1)) + 1e-6 * std::sin(3400.0 * t);
         }
     }
     return block;

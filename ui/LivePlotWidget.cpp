@@ -85,7 +85,13 @@ LivePlotWidget::LivePlotWidget(QWidget* parent)
     layout->addWidget(m_plot, 1);
 
     m_laneMargins = new QCPMarginGroup(m_plot);
-    m_plot->setPlottingHint(QCP::phFastPolylines, true);
+    // Each trace as one polyline, not a line call per segment (QCustomPlot's
+    // "fast polylines"): for thin unsmoothed pens the raster engine strokes
+    // a whole polyline faster (measured: bench/LiveDisplayBenchmark).
+    m_plot->setPlottingHint(QCP::phFastPolylines, false);
+    // One paint buffer, not a second for the overlay layer (nothing is drawn
+    // there): each frame clears and composes one full-size image less.
+    m_plot->layer(QStringLiteral("overlay"))->setMode(QCPLayer::lmLogical);
     // Thin unsmoothed traces draw several times faster; text stays smooth.
     m_plot->setNotAntialiasedElements(QCP::aePlottables | QCP::aeGrid | QCP::aeSubGrid | QCP::aeZeroLine);
     m_plot->setNoAntialiasingOnDrag(true);
