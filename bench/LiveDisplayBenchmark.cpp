@@ -55,6 +55,15 @@ double threadCpuSeconds()
     return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
 }
 
+// The widget as every benchmark here shows it: 1600 × 900, on `buffer`.
+void showOn(ui::LivePlotWidget& plot, const std::shared_ptr<core::LiveBuffer>& buffer, std::size_t channels,
+            double rate_hz)
+{
+    plot.resize(1600, 900);
+    plot.show();
+    plot.setSource(buffer, strainChannels(channels), rate_hz);
+}
+
 // Args: channels, rate in Hz.
 void BM_LivePlotFrame(benchmark::State& state)
 {
@@ -66,9 +75,7 @@ void BM_LivePlotFrame(benchmark::State& state)
     for (; next < static_cast<std::uint64_t>(kWindow_s * rate_hz); next += frame)
         buffer->consume(streamBlock(channels, rate_hz, next, frame));
     ui::LivePlotWidget plot;
-    plot.resize(1600, 900);
-    plot.show();
-    plot.setSource(buffer, strainChannels(channels), rate_hz);
+    showOn(plot, buffer, channels, rate_hz);
     QMetaObject::invokeMethod(&plot, "refresh", Qt::DirectConnection);  // the full window once
     for (auto _ : state) {
         state.PauseTiming();  // making the samples is the acquisition's work, not the display's
@@ -123,9 +130,7 @@ void BM_LiveDisplayRealTime(benchmark::State& state)
     for (auto _ : state) {
         auto buffer = std::make_shared<core::LiveBuffer>(channels, static_cast<std::size_t>(2.0 * rate_hz));
         ui::LivePlotWidget plot;
-        plot.resize(1600, 900);
-        plot.show();
-        plot.setSource(buffer, strainChannels(channels), rate_hz);
+        showOn(plot, buffer, channels, rate_hz);
         std::atomic<bool> running = true;
         // The acquisition's side: a 5 ms block every 5 ms.
         std::thread feeder([&] {
@@ -182,9 +187,7 @@ void BM_LiveDisplayHourMemory(benchmark::State& state)
     for (auto _ : state) {
         auto buffer = std::make_shared<core::LiveBuffer>(channels, static_cast<std::size_t>(2.0 * rate_hz));
         ui::LivePlotWidget plot;
-        plot.resize(1600, 900);
-        plot.show();
-        plot.setSource(buffer, strainChannels(channels), rate_hz);
+        showOn(plot, buffer, channels, rate_hz);
         double afterMinute = 0.0;
         const auto blocks = static_cast<std::uint64_t>(3600.0 * rate_hz) / block;
         for (std::uint64_t k = 0; k < blocks; ++k) {

@@ -31,8 +31,8 @@ double statedDrift_ppm(const QString& err)
 TEST(DeviceClockCli, ACrystalEightyPpmSlowIsSaidAsSuch)
 {
     QTemporaryDir dir;
-    const auto result = recordEmulated(dir.path(), dir.filePath("t.tactiscope"), QStringLiteral("panel-scan"), 20,
-                                       {}, {"--drift-ppm", "80"});
+    const auto result = recordEmulated(dir.path(), dir.filePath("t.tactiscope"), QStringLiteral("panel-scan"), 20, {},
+                                       {"--drift-ppm", "80"});
     ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
     EXPECT_NEAR(statedDrift_ppm(result.err), 80.0, 10.0) << result.err.toStdString();
 }
@@ -40,8 +40,8 @@ TEST(DeviceClockCli, ACrystalEightyPpmSlowIsSaidAsSuch)
 TEST(DeviceClockCli, ACrystalAHundredPpmFastWithItsClockAlreadyRunningIsSaidAsSuch)
 {
     QTemporaryDir dir;
-    const auto result = recordEmulated(dir.path(), dir.filePath("t.tactiscope"), QStringLiteral("panel-scan"), 20,
-                                       {}, {"--drift-ppm", "-100", "--clock-offset", "1000"});
+    const auto result = recordEmulated(dir.path(), dir.filePath("t.tactiscope"), QStringLiteral("panel-scan"), 20, {},
+                                       {"--drift-ppm", "-100", "--clock-offset", "1000"});
     ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
     EXPECT_NEAR(statedDrift_ppm(result.err), -100.0, 10.0) << result.err.toStdString();
 }
@@ -49,8 +49,8 @@ TEST(DeviceClockCli, ACrystalAHundredPpmFastWithItsClockAlreadyRunningIsSaidAsSu
 TEST(DeviceClockCli, AShortRecordingSaysNothingOfTheClockAndBadCrystalsAreRefused)
 {
     QTemporaryDir dir;
-    const auto shortOne = recordEmulated(dir.path(), dir.filePath("t.tactiscope"), QStringLiteral("panel-scan"), 3,
-                                         {}, {"--drift-ppm", "80"});
+    const auto shortOne = recordEmulated(dir.path(), dir.filePath("t.tactiscope"), QStringLiteral("panel-scan"), 3, {},
+                                         {"--drift-ppm", "80"});
     ASSERT_EQ(shortOne.exitCode, 0) << shortOne.err.toStdString();
     EXPECT_FALSE(shortOne.err.contains(QStringLiteral("device clock"))) << "3 s cannot tell 80 ppm";
     for (const QStringList& bad : {QStringList{"--drift-ppm", "2000"}, QStringList{"--drift-ppm", "x"},
