@@ -32,19 +32,10 @@ QString levelText(const std::optional<core::trigger::LimitLevel>& si, LimitSide 
     return LimitsDialog::tr("%1 … %2").arg(low, watchedText(si->high, unit));
 }
 
+// The side in the limit's own words ("above", "outside"), as the command line writes it.
 QString sideText(LimitSide side)
 {
-    switch (side) {
-    case LimitSide::Above:
-        return LimitsDialog::tr("above");
-    case LimitSide::Below:
-        return LimitsDialog::tr("below");
-    case LimitSide::Inside:
-        return LimitsDialog::tr("inside");
-    case LimitSide::Outside:
-        return LimitsDialog::tr("outside");
-    }
-    return {};
+    return QString::fromLatin1(core::trigger::toString(side));
 }
 
 constexpr LimitSide kSides[] = {LimitSide::Above, LimitSide::Below, LimitSide::Outside, LimitSide::Inside};

@@ -58,35 +58,25 @@ bool ordered(LimitSide side, const LimitLevel& warning, const LimitLevel& critic
     return false;
 }
 
-const char* orderRule(LimitSide side)
-{
-    switch (side) {
-    case LimitSide::Above:
-        return "above the warning";
-    case LimitSide::Below:
-        return "below the warning";
-    case LimitSide::Outside:
-        return "a window around the warning one";
-    case LimitSide::Inside:
-        return "a window within the warning one";
-    }
-    return "";
-}
+// What each side is called, what it clears back to, how its critical level
+// must lie, and the sides it guards (bits: past a high level, past a low
+// one, within a window); in LimitSide's order.
+struct SideFacts {
+    const char* name;
+    const char* backTo;
+    const char* orderRule;
+    int guarded;
+};
+constexpr SideFacts kSideFacts[] = {
+    {"above", "below", "above the warning", 1},
+    {"below", "above", "below the warning", 2},
+    {"inside", "outside", "a window within the warning one", 4},
+    {"outside", "inside", "a window around the warning one", 3},
+};
 
-// The sides a limit guards: past a high level, past a low one, within a window.
-int guarded(LimitSide side)
+const SideFacts& facts(LimitSide side)
 {
-    switch (side) {
-    case LimitSide::Above:
-        return 1;
-    case LimitSide::Below:
-        return 2;
-    case LimitSide::Outside:
-        return 3;
-    case LimitSide::Inside:
-        return 4;
-    }
-    return 0;
+    return kSideFacts[static_cast<int>(side)];
 }
 
 }  // namespace
@@ -98,17 +88,7 @@ const char* toString(LimitSeverity severity)
 
 const char* toString(LimitSide side)
 {
-    switch (side) {
-    case LimitSide::Above:
-        return "above";
-    case LimitSide::Below:
-        return "below";
-    case LimitSide::Inside:
-        return "inside";
-    case LimitSide::Outside:
-        return "outside";
-    }
-    return "";
+    return facts(side).name;
 }
 
 bool isWindow(LimitSide side)
@@ -118,7 +98,7 @@ bool isWindow(LimitSide side)
 
 bool LimitSpec::replaces(const LimitSpec& other) const
 {
-    return quantity == other.quantity && (guarded(side) & guarded(other.side)) != 0;
+    return quantity == other.quantity && (facts(side).guarded & facts(other.side).guarded) != 0;
 }
 
 std::string LimitSpec::text() const
@@ -185,7 +165,8 @@ ParsedLimit parseLimit(std::string_view text)
     }
     if (!spec.warning && !spec.critical) return fail("a limit needs a warning or a critical level: " + form);
     if (spec.warning && spec.critical && !ordered(spec.side, *spec.warning, *spec.critical))
-        return fail(std::string("the critical level must lie beyond the warning one (") + orderRule(spec.side) + ")");
+        return fail(std::string("the critical level must lie beyond the warning one (") + facts(spec.side).orderRule +
+                    ")");
     return {spec, {}};
 }
 
@@ -210,11 +191,7 @@ std::string LimitChange::text(const LimitSpec& spec, const LimitWording& wording
     const std::string what = std::string(" its ") + toString(severity) + (window ? " window " : " limit ");
     if (raised)
         return spec.quantity + " " + toString(spec.side) + what + level + " (" + wording.measured(value) + suffix + ")";
-    const LimitSide backTo = spec.side == LimitSide::Above    ? LimitSide::Below
-                             : spec.side == LimitSide::Below  ? LimitSide::Above
-                             : spec.side == LimitSide::Inside ? LimitSide::Outside
-                                                              : LimitSide::Inside;
-    return spec.quantity + " back " + toString(backTo) + what + level;
+    return spec.quantity + " back " + facts(spec.side).backTo + what + level;
 }
 
 LimitWatch::LimitWatch(LimitSpec spec, double sampleRate_hz)
