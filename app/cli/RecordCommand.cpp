@@ -348,10 +348,15 @@ int runRecord(const QStringList& arguments)
     // time it stamped is off by, unmapped. Said once enough of its blocks
     // were mapped for the drift to mean something (DriftWatch's span).
     if (clock && clock->span_s >= devices::DriftWatch::kMinSpan_s)
-        printError(QStringLiteral("device clock: %1 ppm %2 against the host's (mapped over %3 s of its blocks)")
-                       .arg(std::abs(clock->drift) * 1e6, 0, 'f', 1)
+        printError(QStringLiteral("device clock: %1 ppm %2 against the host's (mapped over %3 s of its blocks; ± %4)")
+                       .arg(clock->basis == core::timing::ClockUncertaintyBasis::TooFewFrames
+                                ? QString::number(std::abs(clock->drift) * 1e6, 'f', 1)
+                                : QStringLiteral("%1 ± %2")
+                                      .arg(std::abs(clock->drift) * 1e6, 0, 'f', 1)
+                                      .arg(clock->drift_u * 1e6, 0, 'f', 1))
                        .arg(clock->drift >= 0.0 ? QStringLiteral("slow") : QStringLiteral("fast"))
-                       .arg(clock->span_s, 0, 'f', 1));
+                       .arg(clock->span_s, 0, 'f', 1)
+                       .arg(QString::fromUtf8(core::timing::describe(clock->basis))));
     if (watch->trigger && watch->trigger->sessions && stored < *watch->trigger->sessions)
         printError(QStringLiteral("%1 of %2 triggered sessions recorded before the stop")
                        .arg(stored)

@@ -1,40 +1,38 @@
-// ClockAlignment: the fastest pair per bin, their lower hull, the hull's
-// edge over their mean.
+// ClockAlignment: the four fastest pairs per bin; the lower hull of the
+// fastest; the segments' floor points and the line through them.
 #include "core/timing/ClockAlignment.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 namespace tactiscope::core::timing {
 
-void ClockAlignment::add(double device_s, double arrival_s)
-{
-    if (!std::isfinite(device_s) || !std::isfinite(arrival_s)) return;
-    const auto bin = static_cast<long long>(std::floor(device_s / kClockBin_s));
-    if (m_lastBin && bin < *m_lastBin) return;  // a stamp gone back: not this clock
-    ++m_pairs;
-    const Point point{device_s, arrival_s - device_s};
-    if (m_lastBin && bin == *m_lastBin) {
-        if (point.lag_s < m_points.back().lag_s) m_points.back() = point;
-    } else {
-        m_points.push_back(point);
-        m_lastBin = bin;
-    }
-    while (m_points.size() > 2 && device_s - m_points.front().device_s > kClockWindow_s) m_points.pop_front();
-}
+namespace {
 
-std::optional<ClockMapping> ClockAlignment::mapping() const
+// The floor points' scatter about their line, in units of their expected
+// spread, beyond which the delivery is not random at the floor. On
+// exponential, uniform and bursty links it stays below 17 in thousands of
+// streams; on a link polled on 1 ms ticks it reaches 70 to 10⁵ once a
+// second or more of frames come in (tests/core/timing/ClockAlignmentTest).
+constexpr double kMostScatter = 30.0;
+constexpr double kMostBelow = 4.0;
+
+struct Line {
+    double x0, y0, slope;  // y = y0 + slope·(x − x0)
+    double at(double x) const { return y0 + slope * (x - x0); }
+};
+
+// The lower hull's edge over the fastest pairs' mean device time.
+Line hullLine(const std::deque<ClockAlignment::Bin>& bins, double& meanX)
 {
-    if (m_points.size() < 2) return std::nullopt;
-    // Lag against device time, relative to the first point (the lag is the
-    // offset plus drift times device time: a line, however long the session).
-    const double x0 = m_points.front().device_s;
-    const double y0 = m_points.front().lag_s;
+    const auto point = [&](std::size_t i) { return bins[i].fastest[0]; };
+    const double x0 = point(0).device_s, y0 = point(0).lag_s;
+    const auto x = [&](std::size_t i) { return point(i).device_s - x0; };
+    const auto y = [&](std::size_t i) { return point(i).lag_s - y0; };
     std::vector<std::size_t> hull;
-    const auto x = [&](std::size_t i) { return m_points[i].device_s - x0; };
-    const auto y = [&](std::size_t i) { return m_points[i].lag_s - y0; };
-    double meanX = 0.0;
-    for (std::size_t i = 0; i < m_points.size(); ++i) {
+    meanX = 0.0;
+    for (std::size_t i = 0; i < bins.size(); ++i) {
         meanX += x(i);
         // Andrew's monotone chain, lower half: pop while the last two and
         // this one do not turn left (the middle one is not below the chord).
@@ -45,19 +43,179 @@ std::optional<ClockMapping> ClockAlignment::mapping() const
         }
         hull.push_back(i);
     }
-    meanX /= static_cast<double>(m_points.size());
+    meanX /= static_cast<double>(bins.size());
     // The edge over the mean: of all lines under every point, the one whose
     // sum of distances to them is least.
     std::size_t edge = 0;
     while (edge + 2 < hull.size() && x(hull[edge + 1]) < meanX) ++edge;
     const std::size_t a = hull[edge], b = hull[edge + 1];
-    const double slope = (y(b) - y(a)) / (x(b) - x(a));
-    ClockMapping mapping;
-    mapping.reference_s = x0 + meanX;
-    mapping.offset_s = y0 + y(a) + slope * (meanX - x(a));
-    mapping.drift = slope;
-    mapping.span_s = x(m_points.size() - 1);
+    meanX += x0;
+    return {point(a).device_s, point(a).lag_s, (y(b) - y(a)) / (x(b) - x(a))};
+}
+
+struct FloorPoint {
+    double device_s;
+    double above_s;  // the segment's fastest, above the hull's line
+    double frames;   // in its segment
+};
+
+// Each segment's fastest frame, and the gaps above it scaled to the
+// inverse of the delays' density at their floor: of n exponential
+// spacings, the (q+1)-th gap is 1/((n−q−1)·density) on average. False
+// when a segment holds too few frames.
+bool floorPoints(const std::deque<ClockAlignment::Bin>& bins, const Line& hull, std::vector<FloorPoint>& points,
+                 std::vector<double>& inverseDensities)
+{
+    std::vector<FloorPoint> candidates;
+    for (std::size_t j = 0; j < kClockSegments; ++j) {
+        const auto first = static_cast<std::size_t>(std::lround(static_cast<double>(j * bins.size()) / kClockSegments));
+        const auto last =
+            static_cast<std::size_t>(std::lround(static_cast<double>((j + 1) * bins.size()) / kClockSegments));
+        std::size_t frames = 0;
+        candidates.clear();
+        for (std::size_t b = first; b < last; ++b) {
+            frames += bins[b].frames;
+            for (std::size_t k = 0; k < bins[b].kept; ++k) {
+                const auto& p = bins[b].fastest[k];
+                candidates.push_back({p.device_s, p.lag_s - hull.at(p.device_s), 0.0});
+            }
+        }
+        if (frames < kClockFramesPerSegment || candidates.size() < ClockAlignment::kKeptPerBin) return false;
+        const auto end = candidates.begin() + ClockAlignment::kKeptPerBin;
+        std::partial_sort(candidates.begin(), end, candidates.end(),
+                          [](const FloorPoint& a, const FloorPoint& b) { return a.above_s < b.above_s; });
+        const auto n = static_cast<double>(frames);
+        points.push_back({candidates[0].device_s, candidates[0].above_s, n});
+        for (std::size_t q = 0; q + 1 < ClockAlignment::kKeptPerBin; ++q)
+            inverseDensities.push_back((candidates[q + 1].above_s - candidates[q].above_s) *
+                                       (n - static_cast<double>(q) - 1.0));
+    }
+    return true;
+}
+
+// Whether the stated floor lies above a frame that came through by more
+// than kMostBelow of its uncertainty there: no floor can, so the points it
+// rests on were not random draws above it (a delivery locked to a poll,
+// whose segments' fastest fall wherever the beat leaves them).
+bool floorAboveFastest(const std::deque<ClockAlignment::Bin>& bins, const ClockMapping& floor)
+{
+    for (const auto& bin : bins) {
+        const auto& p = bin.fastest[0];
+        if (floor.host_s(p.device_s) - (p.device_s + p.lag_s) > kMostBelow * *floor.uncertainty_s(p.device_s))
+            return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+const char* describe(ClockUncertaintyBasis basis)
+{
+    switch (basis) {
+    case ClockUncertaintyBasis::Spread:
+        return "from the spread of the fastest frames' delays";
+    case ClockUncertaintyBasis::Bound:
+        return "a bound: the fastest frames lie apart from the rest's floor (a polled link, or rare fast frames)";
+    case ClockUncertaintyBasis::TooFewFrames:
+        return "too few frames yet";
+    }
+    return "";
+}
+
+std::optional<double> ClockMapping::uncertainty_s(double device_s) const
+{
+    if (basis == ClockUncertaintyBasis::TooFewFrames) return std::nullopt;
+    return std::hypot(offset_u_s, drift_u * (device_s - reference_s));
+}
+
+std::size_t ClockAlignment::pointsKept() const
+{
+    std::size_t kept = 0;
+    for (const Bin& bin : m_bins) kept += bin.kept;
+    return kept;
+}
+
+void ClockAlignment::add(double device_s, double arrival_s)
+{
+    if (!std::isfinite(device_s) || !std::isfinite(arrival_s)) return;
+    const auto index = static_cast<long long>(std::floor(device_s / kClockBin_s));
+    if (!m_bins.empty() && index < m_bins.back().index) return;  // a stamp gone back: not this clock
+    ++m_pairs;
+    if (m_bins.empty() || index != m_bins.back().index) m_bins.push_back(Bin{index});
+    Bin& bin = m_bins.back();
+    ++bin.frames;
+    // Insert by lag among the fastest kept; a slower one than all four is dropped.
+    const Point point{device_s, arrival_s - device_s};
+    std::size_t at = bin.kept;
+    while (at > 0 && point.lag_s < bin.fastest[at - 1].lag_s) --at;
+    if (at == kKeptPerBin) return;
+    for (std::size_t k = std::min(bin.kept, kKeptPerBin - 1); k > at; --k) bin.fastest[k] = bin.fastest[k - 1];
+    bin.fastest[at] = point;
+    bin.kept = std::min(bin.kept + 1, kKeptPerBin);
+    const auto windowBins = static_cast<long long>(kClockWindow_s / kClockBin_s);
+    while (m_bins.size() > 2 && index - m_bins.front().index > windowBins) m_bins.pop_front();
+}
+
+std::optional<ClockMapping> ClockAlignment::mapping() const
+{
+    if (m_bins.size() < 2) return std::nullopt;
+    ClockMapping mapping;  // the hull's, and no uncertainty
+    double meanX = 0.0;
+    const Line hull = hullLine(m_bins, meanX);
+    mapping.reference_s = meanX;
+    mapping.offset_s = hull.at(meanX);
+    mapping.drift = hull.slope;
+    mapping.span_s = m_bins.back().fastest[0].device_s - m_bins.front().fastest[0].device_s;
     mapping.pairs = m_pairs;
+
+    std::vector<FloorPoint> points;
+    std::vector<double> gaps;
+    if (!floorPoints(m_bins, hull, points, gaps)) return mapping;
+    double inverseDensity = 0.0;
+    for (const double g : gaps) inverseDensity += g / static_cast<double>(gaps.size());
+    // The fastest of n lies above the floor by 1/(n·density) on average,
+    // with as much spread: lowered by it, each segment gives a point on
+    // the floor with that standard deviation.
+    const auto lift = [&](const FloorPoint& p) { return inverseDensity / p.frames; };
+    const auto m = static_cast<double>(points.size());
+    double meanT = 0.0, meanY = 0.0, meanLift = 0.0;
+    for (const auto& p : points) {
+        meanT += p.device_s / m;
+        meanY += (p.above_s - lift(p)) / m;
+        meanLift += lift(p) / m;
+    }
+    double sxx = 0.0, sxy = 0.0;
+    for (const auto& p : points) {
+        sxx += (p.device_s - meanT) * (p.device_s - meanT);
+        sxy += (p.device_s - meanT) * (p.above_s - lift(p) - meanY);
+    }
+    const double slope = sxy / sxx;
+    double scatter = 0.0, offsetVariance = 0.0, slopeVariance = 0.0;
+    for (const auto& p : points) {
+        const double r = p.above_s - lift(p) - meanY - slope * (p.device_s - meanT);
+        scatter += r * r / (lift(p) * lift(p) * (m - 2.0));
+        offsetVariance += lift(p) * lift(p) / (m * m);
+        slopeVariance += (p.device_s - meanT) * (p.device_s - meanT) * lift(p) * lift(p) / (sxx * sxx);
+    }
+    // The lifts taken off are known to 1/√(gaps) of themselves, together.
+    offsetVariance += meanLift * meanLift / static_cast<double>(gaps.size());
+    ClockMapping floor = mapping;
+    floor.basis = ClockUncertaintyBasis::Spread;
+    floor.reference_s = meanT;
+    floor.offset_s = hull.at(meanT) + meanY;
+    floor.drift = hull.slope + slope;
+    floor.offset_u_s = std::sqrt(offsetVariance);
+    floor.drift_u = std::sqrt(slopeVariance);
+    if (inverseDensity > 0.0 && scatter <= kMostScatter && !floorAboveFastest(m_bins, floor)) return floor;
+    // Not sharp: the floor lies between the hull's line and this one.
+    // Their difference, meanY + slope·(t − meanT), bounds it; as the
+    // half-width of a uniform distribution its standard uncertainty is
+    // a third of its square, term by term.
+    mapping.basis = ClockUncertaintyBasis::Bound;
+    mapping.reference_s = meanT;
+    mapping.offset_s = hull.at(meanT);
+    mapping.offset_u_s = std::sqrt(offsetVariance + meanY * meanY / 3.0);
+    mapping.drift_u = std::sqrt(slopeVariance + slope * slope / 3.0);
     return mapping;
 }
 

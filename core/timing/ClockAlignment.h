@@ -2,29 +2,56 @@
 // probes in one session on one clock). Each frame brings a pair: the time
 // the device stamped on it and the time it arrived. Arrival is the
 // device's instant, mapped, plus a delivery delay that is never negative
-// and is often far above its minimum (the OS, USB polling, a busy core):
-// the mapping is the line under all the pairs that lies closest to them,
-// the lower convex hull's edge over their mean device time (Moon, Skelly
-// and Towsley, "Estimation and removal of clock skew from network delay
-// measurements", INFOCOM 1999). Jitter only lifts points above the line,
-// so however wild it is, the frames that came through fastest decide.
+// and is often far above its minimum (the OS, USB polling, a busy core).
+//
+// Two steps, both resting on the frames that came through fastest, so
+// however wild the jitter, it cannot bias the line:
+//  1. The lower convex hull of the pairs, its edge over their mean device
+//     time (Moon, Skelly and Towsley, "Estimation and removal of clock skew
+//     from network delay measurements", INFOCOM 1999): a line under every
+//     pair, robust to any delivery, even a regular one.
+//  2. With enough frames, a stated uncertainty. The span is cut into ten
+//     segments; in each, the fastest frame lies above the floor by an
+//     amount whose scale is the gap between the next fastest ones (where
+//     delays have a density at their floor, the fastest of n lie above it
+//     by about 1/(n·density), and so do the gaps between them). Each
+//     segment's fastest, lowered by that expected lift, is an unbiased
+//     point on the floor with a known spread; a least-squares line through
+//     the twenty gives the mapping and its standard uncertainty.
+//  3. When those points scatter far more than their spread allows, or
+//     their line passes above frames that came faster (a delivery locked
+//     to a poll; a link whose rare frames are far faster than the rest, as
+//     a pty's), the floor is not sharp: the hull's line stands, and the
+//     uncertainty is a bound, the two lines' difference taken as the
+//     half-width of a uniform distribution (a GUM type B evaluation).
 //
 // What it gives is the arrival floor: the device's instant plus the
 // link's minimum delay, which no arrival can tell apart from the offset.
 // Two devices on like links (the same kind of port) are aligned to within
-// the estimate's own error; a constant difference in minimum delay between
+// the stated uncertainty; a constant difference in minimum delay between
 // unlike links remains (docs/multi-device.md).
 //
-// Bounded over hours: pairs are kept as the fastest per quarter second of
-// device time (a later pair can only raise the others in it), over the
-// last ten minutes, so drift that wanders with temperature is followed.
+// Bounded over hours: pairs are kept as the four fastest per quarter
+// second of device time (with the count of all), over the last ten
+// minutes, so drift that wanders with temperature is followed.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <deque>
 #include <optional>
 
 namespace tactiscope::core::timing {
+
+// How a mapping's uncertainty was found, or why it has none.
+enum class ClockUncertaintyBasis {
+    Spread,        // from the spread of the fastest frames' delays (a standard uncertainty)
+    Bound,         // the floor is not sharp: half the gap between the fastest frames and the rest's floor
+    TooFewFrames,  // fewer than kClockSegments × kClockFramesPerSegment frames in the window: none
+};
+
+// In words, for a report: "from the spread of …", "too few frames yet".
+const char* describe(ClockUncertaintyBasis basis);
 
 // host_s = device_s + offset_s + drift·(device_s − reference_s).
 struct ClockMapping {
@@ -33,12 +60,21 @@ struct ClockMapping {
     double drift = 0.0;        // host seconds per device second, less one (+80e-6: the device is 80 ppm slow)
     double span_s = 0.0;       // device time the pairs it rests on cover
     std::size_t pairs = 0;
+    // Standard uncertainties of the offset (at reference_s) and of the
+    // drift; zero when there are too few frames.
+    ClockUncertaintyBasis basis = ClockUncertaintyBasis::TooFewFrames;
+    double offset_u_s = 0.0;
+    double drift_u = 0.0;
 
     double host_s(double device_s) const { return device_s + offset_s + drift * (device_s - reference_s); }
+    // The standard uncertainty of host_s(device_s); none on too few frames.
+    std::optional<double> uncertainty_s(double device_s) const;
 };
 
 inline constexpr double kClockBin_s = 0.25;
 inline constexpr double kClockWindow_s = 600.0;
+inline constexpr std::size_t kClockSegments = 20;
+inline constexpr std::size_t kClockFramesPerSegment = 20;
 
 class ClockAlignment {
 public:
@@ -51,15 +87,22 @@ public:
     std::optional<ClockMapping> mapping() const;
 
     std::size_t pairsSeen() const { return m_pairs; }
-    std::size_t pointsKept() const { return m_points.size(); }
+    std::size_t pointsKept() const;
 
-private:
     struct Point {
         double device_s;
         double lag_s;  // arrival − device
     };
-    std::deque<Point> m_points;  // the fastest pair of each bin, in device time
-    std::optional<long long> m_lastBin;
+    static constexpr std::size_t kKeptPerBin = 4;  // the fastest and three gaps above it
+    struct Bin {
+        long long index;
+        std::size_t frames = 0;
+        std::size_t kept = 0;
+        std::array<Point, kKeptPerBin> fastest{};  // by lag, ascending
+    };
+
+private:
+    std::deque<Bin> m_bins;
     std::size_t m_pairs = 0;
 };
 

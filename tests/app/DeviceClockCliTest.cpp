@@ -21,7 +21,8 @@ namespace {
 // "device clock: 80.3 ppm slow against …" → +80.3 (fast: negative); NaN without one.
 double statedDrift_ppm(const QString& err)
 {
-    const auto match = QRegularExpression(QStringLiteral("device clock: ([0-9.]+) ppm (slow|fast)")).match(err);
+    const auto match =
+        QRegularExpression(QStringLiteral("device clock: ([0-9.]+)(?: ± [0-9.]+)? ppm (slow|fast)")).match(err);
     if (!match.hasMatch()) return std::nan("");
     return match.captured(1).toDouble() * (match.captured(2) == QStringLiteral("slow") ? 1.0 : -1.0);
 }
