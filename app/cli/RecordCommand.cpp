@@ -4,6 +4,8 @@
 #include "RecordCommand.h"
 
 #include "CliSupport.h"
+#include "ProbePort.h"
+#include "RecordDevices.h"
 #include "WatchOptions.h"
 #include "core/ModeCapability.h"
 #include "core/sensors/SensorProfile.h"
@@ -12,7 +14,6 @@
 #include "devices/DriftWatch.h"
 #include "devices/ReconnectingSource.h"
 #include "devices/session/LiveSession.h"
-#include "devices/transport/SerialPorts.h"
 
 #include <QLocale>
 #include <QTextStream>
@@ -20,7 +21,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <thread>
 #include <unistd.h>
 
@@ -28,19 +28,6 @@ namespace tactiscope::cli {
 namespace {
 
 constexpr int kDefaultBaud = 921600;
-
-// The USB serial number of the port behind `path` (a link is followed), so a
-// replugged probe is found again even under another name.
-std::string usbSerialOf(const std::string& path)
-{
-    std::error_code error;
-    const auto resolved = std::filesystem::canonical(path, error);
-    if (error) return {};
-    for (const auto& port : devices::transport::listSerialPorts()) {
-        if (port.path == resolved.string()) return port.usbSerialNumber;
-    }
-    return {};
-}
 
 }  // namespace
 
@@ -54,7 +41,10 @@ int runRecord(const QStringList& arguments)
                        "verdict, a palpation its stiffness readings, every session its profile and calibrations.\n"
                        "An unplugged probe is waited for and the gap is marked in the recording."));
     parser.addOptions({
-        {QStringLiteral("port"), QStringLiteral("Serial port or link to it (required)."), QStringLiteral("PATH")},
+        {QStringLiteral("port"),
+         QStringLiteral("Serial port or link to it (required). Given more than once, the devices are recorded into "
+                        "one session, each as NAME (default: its model), their clocks mapped onto the host's."),
+         QStringLiteral("[NAME=]PATH")},
         {QStringLiteral("protocol"), QStringLiteral("binary (TSP/1, default) or text."), QStringLiteral("binary|text")},
         {QStringLiteral("baud"), QStringLiteral("Baud rate (default %1).").arg(kDefaultBaud), QStringLiteral("N")},
         {QStringLiteral("rate"),
@@ -83,7 +73,12 @@ int runRecord(const QStringList& arguments)
     if (!parser.isSet(QStringLiteral("port"))) return usageError(QStringLiteral("--port PATH is required"), usage);
     if (!parser.isSet(QStringLiteral("db"))) return usageError(QStringLiteral("--db FILE is required"), usage);
 
-    const std::string port = parser.value(QStringLiteral("port")).toStdString();
+    const auto ports = parseProbePorts(parser.values(QStringLiteral("port")));
+    if (!ports)
+        return usageError(QStringLiteral("--port: a device's NAME must be a word without '/' or '=', and "
+                                         "each name given once"),
+                          usage);
+    const std::string port = ports->front().path;
     const std::string db = parser.value(QStringLiteral("db")).toStdString();
     devices::PortSourceOptions options;
     const auto protocol = parseWireProtocol(parser.value(QStringLiteral("protocol")));
@@ -141,26 +136,31 @@ int runRecord(const QStringList& arguments)
         return kExitUsage;
     }
 
+    if (ports->size() > 1) {
+        if (mode || profile || watch->trigger || !watch->limits.empty() || watch->stopOnCritical)
+            return usageError(QStringLiteral("with several devices, each records in its own mode with its own "
+                                             "limits; --mode, --profile, --trigger, --limit and --stop-on are for "
+                                             "one device"),
+                              usage);
+        return recordDevices({*ports, db, options, baud, seconds, metadata, *roles});
+    }
+
     // The first connection is made here, to know the device before the
     // recording; the reconnecting source takes it over and reopens it after
     // an unplug.
-    const auto reopen = devices::serialOpener(port, usbSerialOf(port), baud, options);
-    std::unique_ptr<devices::BlockSource> first;
+    std::unique_ptr<devices::ReconnectingSource> source;
     try {
-        first = reopen();
+        source = openProbePort(port, baud, options);
     } catch (const std::exception& e) {
         printError(QString::fromStdString(e.what()));
         return kExitFailure;
     }
-    const double rate_hz = first->nominalSampleRate_hz();
+    const double rate_hz = source->nominalSampleRate_hz();
     if (options.requestRate_hz && std::abs(rate_hz - *options.requestRate_hz) > 1e-6 * *options.requestRate_hz)
         printError(QStringLiteral("the device streams at %1 Hz, not the %2 Hz asked for; recording at %1 Hz")
                        .arg(rate_hz)
                        .arg(*options.requestRate_hz));
-    const auto channels = first->channels();
-    auto handover = std::make_shared<std::unique_ptr<devices::BlockSource>>(std::move(first));
-    auto source = std::make_unique<devices::ReconnectingSource>(
-        [handover, reopen] { return *handover ? std::move(*handover) : reopen(); });
+    const auto channels = source->channels();
     const auto* device = source.get();
 
     devices::session::LiveSessionOptions sessionOptions;

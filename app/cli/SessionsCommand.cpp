@@ -9,6 +9,7 @@
 #include "core/storage/SessionExport.h"
 #include "core/storage/SessionSource.h"
 #include "core/text/JsonWriter.h"
+#include "core/timing/ClockMappingText.h"
 
 #include <QTextStream>
 
@@ -108,22 +109,45 @@ int show(SessionSource& store, std::int64_t id, bool json)
     line("status", std::string(core::toString(s.status)));
     line("verdict", std::string(core::verdictText(s.verdict)));
     for (const auto& decision : core::report::verdictTrailLines(store.verdicts(id))) line("", "  " + decision);
-    line("device", s.metadata.deviceModel + (s.metadata.deviceSerial.empty() ? "" : " " + s.metadata.deviceSerial));
-    line("firmware", s.metadata.deviceFirmware);
+    // One device's identity, samples and channels: the session's own, or
+    // each part's for a session of several devices.
+    const auto device = [&](const core::storage::SessionMetadata& m, std::int64_t of) {
+        line("device", m.deviceModel + (m.deviceSerial.empty() ? "" : " " + m.deviceSerial));
+        line("firmware", m.deviceFirmware);
+        std::uint64_t lost = 0;
+        for (const auto& gap : store.gaps(of)) lost += gap.count;
+        const auto channels = store.channels(of);
+        const auto own = store.session(of);
+        out << QString("samples").leftJustified(18) << store.sampleCount(of) << " per channel ("
+            << QString::number(own ? own->duration_s() : 0.0, 'f', 3) << " s), " << lost << " lost\n";
+        out << QString("channels").leftJustified(18);
+        for (std::size_t c = 0; c < channels.size(); ++c) {
+            const auto& d = channels[c].descriptor;
+            out << (c ? ", " : "") << toQString(d.name) << " ["
+                << (d.unit.empty() ? toQString(core::toString(d.kind)) : toQString(d.unit)) << "]";
+            if (d.role) out << " as " << toQString(core::toString(*d.role));
+        }
+        if (!channels.empty()) out << " at " << channels.front().sampleRate_hz << " Hz";
+        out << '\n';
+    };
+    const auto parts = store.parts(id);
+    if (parts.empty()) device(s.metadata, id);
     line("recorded by", "Tactiscope " + s.appVersion);
-    std::uint64_t lost = 0;
-    for (const auto& gap : store.gaps(id)) lost += gap.count;
-    const auto channels = store.channels(id);
-    out << QString("samples").leftJustified(18) << store.sampleCount(id) << " per channel ("
-        << QString::number(s.duration_s(), 'f', 3) << " s), " << lost << " lost\n";
-    out << QString("channels").leftJustified(18);
-    for (std::size_t c = 0; c < channels.size(); ++c) {
-        const auto& d = channels[c].descriptor;
-        out << (c ? ", " : "") << toQString(d.name) << " ["
-            << (d.unit.empty() ? toQString(core::toString(d.kind)) : toQString(d.unit)) << "]";
-        if (d.role) out << " as " << toQString(core::toString(*d.role));
+    for (const auto& part : parts) {
+        out << '\n';
+        line("part", part.deviceName + " (session " + std::to_string(part.id) + ", " +
+                         std::string(core::toString(part.status)) + ")");
+        const auto own = store.session(part.id);
+        if (own) device(own->metadata, part.id);
+        line("clock", core::timing::clockMappingText(part.clockJson));
+        QStringList partAnalyses;
+        for (const auto& analysis : store.analyses(part.id))
+            partAnalyses
+                << QStringLiteral("%1 %2").arg(store.events(part.id, analysis).size()).arg(toQString(analysis));
+        line("events", partAnalyses.join(QStringLiteral(", ")).toStdString());
+        line("readings", std::to_string(store.readings(part.id).size()));
     }
-    out << " at " << channels.front().sampleRate_hz << " Hz\n";
+    if (!parts.empty()) out << '\n';
     QStringList analyses;
     for (const auto& analysis : store.analyses(id))
         analyses << QStringLiteral("%1 %2").arg(store.events(id, analysis).size()).arg(toQString(analysis));

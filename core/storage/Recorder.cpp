@@ -4,6 +4,7 @@
 #include "core/SampleBlock.h"
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace tactiscope::core::storage {
@@ -12,12 +13,12 @@ Recorder::Recorder(const std::string& storePath, const SessionMetadata& metadata
                    std::vector<ChannelDescriptor> channels, double sampleRate_hz, std::uint64_t maxQueuedSamples,
                    const std::vector<std::int64_t>& calibrations)
     : m_sampleRate_hz(sampleRate_hz),
-      m_lock(RecorderLock::acquire(storePath)),
+      m_lock(metadata.partOf != 0 ? std::nullopt : std::optional<RecorderLock>(RecorderLock::acquire(storePath))),
       m_store(storePath),
       m_maxQueued(maxQueuedSamples)
 {
     m_store.refuseIfDamaged();  // a damaged file only gets worse with every page written
-    m_store.markCrashedSessionsInterrupted();
+    if (m_lock) m_store.markCrashedSessionsInterrupted();
     m_session = m_store.beginSession(metadata, channels, sampleRate_hz);
     try {
         for (const std::int64_t calibration : calibrations) m_store.linkCalibration(m_session, calibration);
@@ -67,6 +68,13 @@ void Recorder::addReadings(std::vector<SessionReading> readings)
     const std::lock_guard lock(m_mutex);
     m_queuedReadings.insert(m_queuedReadings.end(), std::make_move_iterator(readings.begin()),
                             std::make_move_iterator(readings.end()));
+    m_wake.notify_one();
+}
+
+void Recorder::setClockMapping(std::string clockJson)
+{
+    const std::lock_guard lock(m_mutex);
+    m_queuedClock = std::move(clockJson);
     m_wake.notify_one();
 }
 
@@ -129,8 +137,10 @@ void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
 {
     // Zeros wait for the first block, which fixes the session's sample 0.
     const bool zeros = !m_queuedZeros.empty() && m_firstIndex;
-    if ((m_queue.empty() && m_queuedEvents.empty() && m_queuedReadings.empty() && !zeros) || !m_stats.error.empty())
+    if ((m_queue.empty() && m_queuedEvents.empty() && m_queuedReadings.empty() && !zeros && !m_queuedClock) ||
+        !m_stats.error.empty())
         return;
+    const std::optional<std::string> clock = std::exchange(m_queuedClock, std::nullopt);
     std::vector<SessionZero> zeroRecords;
     if (zeros) {
         zeroRecords = std::move(m_queuedZeros);
@@ -152,6 +162,7 @@ void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
         if (!events.empty()) m_store.addEvents(m_session, events);
         for (const auto& reading : readings) m_store.addReading(m_session, reading);
         for (const auto& zero : zeroRecords) m_store.addZero(m_session, zero);
+        if (clock) m_store.setClockMapping(m_session, *clock);
     } catch (const StorageError& e) {
         error = e.what();
     }

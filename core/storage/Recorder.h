@@ -41,7 +41,9 @@ public:
 
     // Takes the store's RecorderLock (one recorder per store), refuses a
     // damaged store, marks sessions a crash left "recording" as
-    // interrupted, and begins the session,
+    // interrupted, and begins the session (a device's part of a session of
+    // several, metadata.partOf, does neither of the first and last: the
+    // recording of the whole session holds the lock, SessionOfDevices),
     // linked with the stored calibrations it uses. Throws StorageError, e.g.
     // when another recorder holds the store.
     Recorder(const std::string& storePath, const SessionMetadata& metadata, std::vector<ChannelDescriptor> channels,
@@ -65,6 +67,9 @@ public:
     // session time (a probe that went and did not come back): finish()
     // records them as a gap at the session's end. Any thread.
     void markLostUntil(double sessionTime_s);
+    // The mapping of a part's clock onto its session's (ClockMappingJson),
+    // stored with the next commit; any thread.
+    void setClockMapping(std::string clockJson);
     // The session time of the newest sample consumed (0 before the first).
     double sessionTime_s() const;
     // The acquisition time (a block's clock) of the newest sample consumed;
@@ -86,7 +91,9 @@ private:
     void writeQueued(std::unique_lock<std::mutex>& lock);
 
     double m_sampleRate_hz;
-    RecorderLock m_lock;  // held before the store is touched, released last
+    // Held before the store is touched, released last; none for a device's
+    // part of a session of several, whose recording holds it for all parts.
+    std::optional<RecorderLock> m_lock;
     SessionStore m_store;
     std::int64_t m_session = 0;
     std::uint64_t m_maxQueued;
@@ -96,6 +103,7 @@ private:
     std::vector<SessionEvent> m_queuedEvents;
     std::vector<SessionReading> m_queuedReadings;
     std::vector<SessionZero> m_queuedZeros;  // stream indices until the first block is seen
+    std::optional<std::string> m_queuedClock;
     std::uint64_t m_queuedSamples = 0;
     std::optional<std::uint64_t> m_firstIndex;  // of the first block consumed
     double m_firstTime_s = 0.0;

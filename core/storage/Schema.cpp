@@ -258,7 +258,21 @@ ALTER TABLE events_v6 RENAME TO events;
 CREATE INDEX events_by_session ON events (session_id, analysis, start_s);
 )sql";
 
-constexpr std::array kMigrations{kVersion1, kVersion2, kVersion3, kVersion4, kVersion5, kVersion6};
+// Version 6 → 7: sessions of several devices (issue 40). Such a session is
+// a row like any other, with no channels of its own, and a part per
+// device: a session row whose parent_id is it, holding that device's
+// channels, samples, gaps and pyramid at the device's own rate and on its
+// own clock, with the device's name in the session (device_name) and the
+// mapping of its clock onto the session's (clock_json). Parts go with
+// their session when it is deleted.
+constexpr const char* kVersion7 = R"sql(
+ALTER TABLE sessions ADD COLUMN parent_id INTEGER REFERENCES sessions (id) ON DELETE CASCADE;
+ALTER TABLE sessions ADD COLUMN device_name TEXT NOT NULL DEFAULT '';
+ALTER TABLE sessions ADD COLUMN clock_json TEXT NOT NULL DEFAULT '';
+CREATE INDEX sessions_by_parent ON sessions (parent_id);
+)sql";
+
+constexpr std::array kMigrations{kVersion1, kVersion2, kVersion3, kVersion4, kVersion5, kVersion6, kVersion7};
 static_assert(kMigrations.size() == kSchemaVersion);
 
 std::int64_t pragma(Database& db, const char* name)

@@ -14,10 +14,13 @@ void SessionLayout::check(std::int64_t session)
     if (!exists.step()) return;
     const double duration_s = exists.isNull(0) ? 0.0 : exists.real(0);
 
-    auto channels = m_db.prepare("SELECT count(*), min(sample_rate_hz), max(sample_rate_hz) FROM channels "
-                                 "WHERE session_id = ?");
+    auto channels = m_db.prepare("SELECT count(*), min(sample_rate_hz), max(sample_rate_hz), (SELECT count(*) FROM "
+                                 "sessions WHERE parent_id = ?1) FROM channels WHERE session_id = ?1");
     channels.bind(1, session);
     channels.step();
+    // A session of several devices holds no samples of its own: its parts
+    // do, and each is checked as a session when it is read.
+    if (channels.int64(0) == 0 && channels.int64(3) > 0) return;
     SessionBounds& bounds = m_checked.try_emplace(session, m_db.path(), session).first->second;
     bounds.session(duration_s, channels.int64(0), channels.real(1), channels.real(2));
 

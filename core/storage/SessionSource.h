@@ -35,6 +35,11 @@ struct SessionMetadata {
     // What cut a triggered recording (core/trigger): "a>2e-05, pre 0.5 s,
     // post 1 s, hold-off 0 s"; empty for a recording started by hand.
     std::string trigger;
+    // A session of several devices records each into a part of it: the
+    // session's id and the device's name in it ("load-cell"); 0 and empty
+    // for a session of its own.
+    std::int64_t partOf = 0;
+    std::string deviceName;
 };
 
 // Who a session is when it was recorded elsewhere (an import of an export):
@@ -60,6 +65,8 @@ struct SessionSummary {
     std::uint64_t eventCount = 0;   // live events of any kind
     std::string station;            // the station it came from, on a central store; empty on a station's own
     std::int64_t stationId = 0;     // its id in that station's store (0 on a station's own: `id`)
+    std::size_t devices = 0;        // its parts, for a session of several devices (then the longest part's
+                                    // rate and count above); 0 for a session of one
     double duration_s() const { return sampleRate_hz > 0.0 ? static_cast<double>(sampleCount) / sampleRate_hz : 0.0; }
 };
 
@@ -84,6 +91,21 @@ using lod::OverviewPoint;
 struct StoredChannel {
     ChannelDescriptor descriptor;
     double sampleRate_hz = 0.0;
+};
+
+// One device's part of a session of several: a session of its own (its
+// channels, samples and gaps are read through `id`), at the device's rate
+// and on its clock, with the mapping of that clock onto the session's.
+struct SessionPart {
+    std::int64_t id = 0;
+    std::string deviceName;
+    std::string deviceModel;
+    std::string deviceSerial;
+    std::string deviceFirmware;
+    // core/timing/ClockMappingJson: the part's session time → the
+    // session's, with its uncertainty; empty until one was found.
+    std::string clockJson;
+    SessionStatus status = SessionStatus::Recording;
 };
 
 struct SampleGap {
@@ -129,6 +151,9 @@ public:
     virtual std::optional<SessionSummary> session(std::int64_t id) = 0;
     virtual std::optional<std::int64_t> sessionWithUuid(const std::string& uuid) = 0;
     virtual std::vector<StoredChannel> channels(std::int64_t session) = 0;
+    // A session of several devices' parts, in the order they were begun;
+    // none for a session of one device (its channels are its own).
+    virtual std::vector<SessionPart> parts(std::int64_t session) = 0;
     // Per channel, including gaps and lost ones at the end.
     virtual std::uint64_t sampleCount(std::int64_t session) = 0;
     virtual std::vector<SampleGap> gaps(std::int64_t session) = 0;

@@ -53,7 +53,9 @@ SessionSummary summaryFrom(const Statement& row)
                   row.text(9),
                   row.text(10),
                   row.text(11),
-                  row.text(20)};
+                  row.text(20),
+                  row.isNull(22) ? 0 : row.int64(22),
+                  row.text(23)};
     s.startedUtc = row.text(12);
     s.endedUtc = row.text(13);
     s.status = sessionStatusFromString(row.text(14)).value_or(SessionStatus::Interrupted);
@@ -62,6 +64,7 @@ SessionSummary summaryFrom(const Statement& row)
     s.sampleRate_hz = row.real(17);
     s.sampleCount = static_cast<std::uint64_t>(row.int64(18));
     s.eventCount = static_cast<std::uint64_t>(row.int64(19));
+    s.devices = static_cast<std::size_t>(row.int64(21));
     return s;
 }
 
@@ -83,7 +86,8 @@ const std::string& summaryQuery()
         "profile_json, calibrations_json, started_utc, ended_utc, status, verdict, app_version, "
         "(SELECT sample_rate_hz FROM channels WHERE session_id = s.id AND position = 0), " +
         sampleEndSql("s.id") +
-        ", (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live'), trigger_setup FROM sessions s ";
+        ", (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live'), trigger_setup, "
+        "(SELECT count(*) FROM sessions p WHERE p.parent_id = s.id), parent_id, device_name FROM sessions s ";
     return sql;
 }
 
@@ -172,6 +176,7 @@ void refuseUnstorableText(const SessionMetadata& m, std::span<const ChannelDescr
     check(m.profileJson, "sensor profile");
     check(m.calibrationsJson, "calibrations");
     check(m.trigger, "trigger");
+    check(m.deviceName, "device name");
     check(origin.startedUtc, "start time");
     check(origin.appVersion, "app version");
     for (const ChannelDescriptor& c : channels) {
@@ -185,18 +190,18 @@ void refuseUnstorableText(const SessionMetadata& m, std::span<const ChannelDescr
 
 }  // namespace
 
-std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<const ChannelDescriptor> channels,
-                                        double sampleRate_hz, const SessionOrigin& origin)
+std::int64_t SessionStore::insertSessionRow(const SessionMetadata& m, const SessionOrigin& origin)
 {
-    if (channels.empty()) throw StorageError("a session needs at least one channel");
-    if (!(sampleRate_hz > 0.0) || !std::isfinite(sampleRate_hz))
-        throw StorageError("a session needs a positive sample rate");
-    refuseUnstorableText(m, channels, origin);
-    Transaction transaction(m_db);
-    m_db.prepare("INSERT INTO sessions (uuid, mode, subject, operator, site, notes, device_model, device_serial, "
-                 "device_firmware, profile_json, calibrations_json, started_utc, status, app_version, trigger_setup) "
-                 "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
-        .bind(1, origin.uuid.empty() ? newUuid() : origin.uuid)
+    if (m.partOf != 0) refuseUnknownParent(m.partOf);
+    auto session = m_db.prepare(
+        "INSERT INTO sessions (uuid, mode, subject, operator, site, notes, device_model, device_serial, "
+        "device_firmware, profile_json, calibrations_json, started_utc, status, app_version, "
+        "trigger_setup, parent_id, device_name) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    if (m.partOf != 0)
+        session.bind(16, m.partOf);
+    else
+        session.bindNull(16);
+    session.bind(1, origin.uuid.empty() ? newUuid() : origin.uuid)
         .bind(2, toString(m.mode))
         .bind(3, m.subject)
         .bind(4, m.operatorName)
@@ -211,8 +216,20 @@ std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<cons
         .bind(13, toString(SessionStatus::Recording))
         .bind(14, origin.appVersion.empty() ? std::string(versionString()) : origin.appVersion)
         .bind(15, m.trigger)
+        .bind(17, m.deviceName)
         .run();
-    const std::int64_t id = m_db.lastInsertId();
+    return m_db.lastInsertId();
+}
+
+std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<const ChannelDescriptor> channels,
+                                        double sampleRate_hz, const SessionOrigin& origin)
+{
+    if (channels.empty()) throw StorageError("a session needs at least one channel");
+    if (!(sampleRate_hz > 0.0) || !std::isfinite(sampleRate_hz))
+        throw StorageError("a session needs a positive sample rate");
+    refuseUnstorableText(m, channels, origin);
+    Transaction transaction(m_db);
+    const std::int64_t id = insertSessionRow(m, origin);
     auto insert = m_db.prepare("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz, role) "
                                "VALUES (?, ?, ?, ?, ?, ?, ?)");
     for (std::size_t c = 0; c < channels.size(); ++c) {
@@ -382,7 +399,7 @@ void SessionStore::refuseIfDamaged()
 std::vector<SessionSummary> SessionStore::sessions(const SessionFilter& filter)
 {
     std::vector<SessionSummary> result;
-    std::string where = "WHERE 1";
+    std::string where = "WHERE parent_id IS NULL";  // a device's part is listed in its session
     std::vector<std::string> values;
     const auto condition = [&](const std::string& value, const char* sql) {
         if (value.empty()) return;
@@ -409,6 +426,7 @@ std::vector<SessionSummary> SessionStore::sessions(const SessionFilter& filter)
     for (std::size_t i = 0; i < values.size(); ++i) query.bind(static_cast<int>(i + 1), values[i]);
     query.bind(limit, filter.limit > 0 ? static_cast<std::int64_t>(filter.limit) : std::int64_t{-1});
     while (query.step()) result.push_back(summaryFrom(query));
+    for (SessionSummary& summary : result) fillFromLongestPart(summary);
     showCrashedRecordingsInterrupted(result);
     return result;
 }
@@ -431,6 +449,7 @@ std::optional<SessionSummary> SessionStore::session(std::int64_t id)
     query.bind(1, id);
     if (!query.step()) return std::nullopt;
     SessionSummary summary = summaryFrom(query);
+    fillFromLongestPart(summary);
     showCrashedRecordingsInterrupted(std::span(&summary, 1));
     return summary;
 }

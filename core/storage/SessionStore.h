@@ -38,6 +38,12 @@ public:
     // import says so first, in its own words.
     std::int64_t beginSession(const SessionMetadata& metadata, std::span<const ChannelDescriptor> channels,
                               double sampleRate_hz, const SessionOrigin& origin = {});
+    // A session of several devices: a row with no channels of its own,
+    // whose parts are begun with beginSession() and SessionMetadata::partOf.
+    std::int64_t beginSessionOfDevices(const SessionMetadata& metadata, const SessionOrigin& origin = {});
+    // The mapping of a part's clock onto its session's
+    // (core/timing/ClockMappingJson), replacing the one before.
+    void setClockMapping(std::int64_t part, const std::string& clockJson);
     void appendBlocks(std::int64_t session, std::span<const SampleBlock> blocks);  // one transaction
     // Records samples lost after the last stored ones (e.g. at the end of a
     // recording, where no later block marks the gap). No-op when none are.
@@ -59,6 +65,7 @@ public:
     std::optional<SessionSummary> session(std::int64_t id) override;
     std::optional<std::int64_t> sessionWithUuid(const std::string& uuid) override;
     std::vector<StoredChannel> channels(std::int64_t session) override;
+    std::vector<SessionPart> parts(std::int64_t session) override;
     std::uint64_t sampleCount(std::int64_t session) override;
     std::vector<SampleGap> gaps(std::int64_t session) override;
     std::size_t readChannels(std::int64_t session, std::span<const std::size_t> channels, std::uint64_t firstIndex,
@@ -124,6 +131,9 @@ private:
     void rebuildPyramids(std::int64_t session);
     lod::LodTable pyramid(std::int64_t session, std::size_t channel);
     void showCrashedRecordingsInterrupted(std::span<SessionSummary> summaries);
+    std::int64_t insertSessionRow(const SessionMetadata& metadata, const SessionOrigin& origin);
+    void refuseUnknownParent(std::int64_t session);
+    void fillFromLongestPart(SessionSummary& summary);
 
     Database m_db;
     SessionLayout m_layout{m_db};  // checked before any count read sizes anything

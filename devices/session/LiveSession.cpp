@@ -4,6 +4,8 @@
 // the limit alarms are in LiveSessionWatches.cpp.
 #include "devices/session/LiveSession.h"
 
+#include "core/timing/ClockMappingJson.h"
+
 #include "core/ModeCapability.h"
 #include "core/SinkSlot.h"
 #include "core/modes/ModeDefinition.h"
@@ -162,6 +164,10 @@ std::optional<std::string> LiveSession::beginRecording(const core::storage::Sess
     if (auto refusal = refusalOf(m_mode)) return refusal;
     core::storage::SessionMetadata metadata = request;
     metadata.mode = m_mode;
+    if (m_options.partOf) {
+        metadata.partOf = m_options.partOf->session;
+        metadata.deviceName = m_options.partOf->deviceName;
+    }
     const DeviceIdentity device = source().identity();
     metadata.deviceModel = device.model;
     metadata.deviceSerial = device.serial;
@@ -266,6 +272,7 @@ RecordingSummary LiveSession::finishRecording()
     for (const auto& raised : m_raisedAlarms) storeAlarm(raised, m_recorder->sessionTime_s());
     RecordingSummary summary;
     recordUnstoppedEnd(summary);
+    storeClockMapping();
     summary.session = m_recorder->sessionId();
     summary.end_s = m_recorder->sessionTime_s();
     const bool whole = !summary.lostAt_s && summary.stoppedBecause.empty();
@@ -332,7 +339,23 @@ std::optional<RecordingSummary> LiveSession::poll()
         return finishRecording();
     }
     takeTriggered();
+    if (m_options.partOf && steadySeconds() >= m_nextClockStore_host_s) {
+        m_nextClockStore_host_s = steadySeconds() + 1.0;
+        storeClockMapping();
+    }
     return std::nullopt;
+}
+
+// A part's clock, mapped onto its session's, goes with the record as it
+// is found: a recording cut short by a crash keeps the last one.
+void LiveSession::storeClockMapping()
+{
+    if (!m_options.partOf || !m_recorder) return;
+    const auto clock = source().hostClock();
+    const auto origin = m_recorder->acquisitionOrigin_s();
+    if (!clock || !origin) return;
+    m_recorder->setClockMapping(
+        core::timing::toJson(core::timing::onSessionClocks(*clock, *origin, m_options.partOf->start_host_s)));
 }
 
 // The samples per channel the recorder may hold while the disk is slow:

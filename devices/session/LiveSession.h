@@ -93,6 +93,16 @@ struct LiveSessionOptions {
     double panelSpacing_m = core::detector::kPrototypeSpacing_m;
     // Roles given to the device's channels by name (core/modes/ChannelRoles.h).
     core::RoleAssignment roles;
+    // Recording as one device's part of a session of several
+    // (SessionOfDevices): the session, the device's name in it, and the
+    // host instant (steadySeconds()) of the session's t = 0, onto which the
+    // part's clock is mapped and stored once a second.
+    struct PartOfSession {
+        std::int64_t session = 0;
+        std::string deviceName;
+        double start_host_s = 0.0;
+    };
+    std::optional<PartOfSession> partOf;
 };
 
 class LiveSession {
@@ -273,6 +283,7 @@ private:
     void takeNotices();
     void recordStandingFaults();
     void recordUnstoppedEnd(RecordingSummary& summary);
+    void storeClockMapping();
     std::uint64_t recorderQueueBound(double rate_hz, std::size_t channels) const;
     RecordingSummary finishRecording();
 
@@ -296,6 +307,7 @@ private:
     std::vector<std::string> m_problems;
     std::vector<LinkNotice> m_linkNotices;
     double m_recordingStartHost_s = 0.0;  // steady clock
+    double m_nextClockStore_host_s = 0.0;
     // The trigger armed: its settings and the metadata its sessions take.
     std::optional<core::trigger::TriggerSettings> m_trigger;
     core::storage::SessionMetadata m_triggerRequest;

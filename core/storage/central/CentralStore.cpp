@@ -46,7 +46,9 @@ SessionSummary summaryFrom(const PgResult& r, int row)
                   r.text(row, 9),
                   r.text(row, 10),
                   r.text(row, 11),
-                  r.text(row, 22)};
+                  r.text(row, 22),
+                  0,
+                  {}};
     s.startedUtc = r.text(row, 12);
     s.endedUtc = r.text(row, 13);
     s.status = sessionStatusFromString(r.text(row, 14)).value_or(SessionStatus::Interrupted);

@@ -378,6 +378,12 @@ SyncOutcome syncToCentral(SessionStore& local, CentralStore& central, const std:
             outcome.keptAtStation.push_back("session " + s->uuid +
                                             ": its reviewer decisions stay at the station (a reviewer decides on "
                                             "the central store: sessions --db SERVER verdict)");
+        if (s->devices > 0) {
+            outcome.refused.push_back("session " + s->uuid + " holds " + std::to_string(s->devices) +
+                                      " devices; a central store takes sessions of one device only, so it stays at "
+                                      "the station");
+            continue;
+        }
         if (!text::isUuid(s->uuid)) {  // stored before imports checked them: reported, and the others go
             outcome.refused.push_back("session " + std::to_string(s->id) + " ('" + s->uuid.substr(0, 40) +
                                       "') has no valid uuid; it was not sent");
@@ -415,7 +421,8 @@ SyncOutcome syncToCentral(SessionStore& local, CentralStore& central, const std:
 
 int sessionsToSync(SessionStore& local, CentralStore& central)
 {
-    const std::vector<SessionSummary> finished = finishedSessions(local.sessions());
+    std::vector<SessionSummary> finished = finishedSessions(local.sessions());
+    std::erase_if(finished, [](const SessionSummary& s) { return s.devices > 0; });  // kept at the station
     return static_cast<int>(finished.size() - sessionsOnServer(central.connection(), finished).size());
 }
 

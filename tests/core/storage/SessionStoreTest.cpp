@@ -64,6 +64,8 @@ TEST_F(SessionStoreTest, SessionsChannelsSamplesAndGapsRoundTrip)
                                  "1.2.0",
                                  R"({"profile":"x"})",
                                  R"([{"id":1}])",
+                                 "",
+                                 0,
                                  ""};
         id = store.beginSession(metadata, kChannels, 500.0);
         // Samples 0–99, then 30 lost (100–129), then 130–229 in three blocks.

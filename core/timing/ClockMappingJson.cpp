@@ -1,0 +1,96 @@
+// ClockMappingJson: the stored form of a clock mapping, and the shift onto
+// a session's clocks.
+#include "core/timing/ClockMappingJson.h"
+
+#include "core/JsonText.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+
+namespace tactiscope::core::timing {
+
+namespace {
+
+const char* basisWord(ClockUncertaintyBasis basis)
+{
+    switch (basis) {
+    case ClockUncertaintyBasis::Spread:
+        return "spread";
+    case ClockUncertaintyBasis::Bound:
+        return "bound";
+    case ClockUncertaintyBasis::TooFewFrames:
+        return "too-few-frames";
+    }
+    return "too-few-frames";
+}
+
+constexpr double kMostDrift = 0.01;
+
+}  // namespace
+
+std::string toJson(const ClockMapping& m)
+{
+    nlohmann::ordered_json json;
+    json["reference_s"] = m.reference_s;
+    json["offset_s"] = m.offset_s;
+    json["drift"] = m.drift;
+    json["span_s"] = m.span_s;
+    json["pairs"] = m.pairs;
+    json["uncertainty"] = basisWord(m.basis);
+    json["offset_u_s"] = m.offset_u_s;
+    json["drift_u"] = m.drift_u;
+    return json.dump();
+}
+
+std::optional<ClockMapping> clockMappingFromJson(std::string_view text)
+{
+    nlohmann::json json;
+    try {
+        json = parseJsonText(text, "clock mapping");
+    } catch (const JsonTextError&) {
+        return std::nullopt;
+    }
+    if (!json.is_object()) return std::nullopt;
+    ClockMapping m;
+    const auto number = [&](const char* key, double& into) {
+        const auto found = json.find(key);
+        if (found == json.end() || !found->is_number()) return false;
+        into = found->get<double>();
+        return std::isfinite(into);
+    };
+    double pairs = 0.0;
+    if (!number("reference_s", m.reference_s) || !number("offset_s", m.offset_s) || !number("drift", m.drift) ||
+        !number("span_s", m.span_s) || !number("pairs", pairs) || !number("offset_u_s", m.offset_u_s) ||
+        !number("drift_u", m.drift_u))
+        return std::nullopt;
+    if (std::abs(m.drift) > kMostDrift || m.offset_u_s < 0.0 || m.drift_u < 0.0 || m.span_s < 0.0 || pairs < 0.0 ||
+        pairs > 1e15)
+        return std::nullopt;
+    m.pairs = static_cast<std::size_t>(pairs);
+    const auto basis = json.find("uncertainty");
+    if (basis == json.end() || !basis->is_string()) return std::nullopt;
+    const std::string word = basis->get<std::string>();
+    if (word == "spread")
+        m.basis = ClockUncertaintyBasis::Spread;
+    else if (word == "bound")
+        m.basis = ClockUncertaintyBasis::Bound;
+    else if (word == "too-few-frames")
+        m.basis = ClockUncertaintyBasis::TooFewFrames;
+    else
+        return std::nullopt;
+    return m;
+}
+
+// host = a + offset + drift·(a − ref) with a = s + origin, and the
+// session's time is host − start: s + (origin + offset − start) +
+// drift·(s − (ref − origin)).
+ClockMapping onSessionClocks(const ClockMapping& mapping, double origin_s, double sessionStart_host_s)
+{
+    ClockMapping shifted = mapping;
+    shifted.reference_s = mapping.reference_s - origin_s;
+    shifted.offset_s = origin_s + mapping.offset_s - sessionStart_host_s;
+    return shifted;
+}
+
+}  // namespace tactiscope::core::timing

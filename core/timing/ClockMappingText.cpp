@@ -1,0 +1,27 @@
+// ClockMappingText: the stored mapping read back and put in words.
+#include "core/timing/ClockMappingText.h"
+
+#include "core/timing/ClockMappingJson.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace tactiscope::core::timing {
+
+std::string clockMappingText(const std::string& clockJson)
+{
+    if (clockJson.empty()) return "not mapped (no frames with the device's times were seen)";
+    const auto clock = clockMappingFromJson(clockJson);
+    if (!clock) return "not mapped (the stored mapping cannot be read: the file was altered)";
+    const auto u_s = clock->uncertainty_s(0.0);
+    char text[256];
+    int n = std::snprintf(text, sizeof text, "%+.6f s at the start", clock->host_s(0.0));
+    if (u_s) n += std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), " ± %.3f ms", *u_s * 1e3);
+    n += std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), ", %.1f", std::abs(clock->drift) * 1e6);
+    if (u_s) n += std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), " ± %.1f", clock->drift_u * 1e6);
+    std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), " ppm %s (± %s)",
+                  clock->drift >= 0.0 ? "slow" : "fast", describe(clock->basis));
+    return text;
+}
+
+}  // namespace tactiscope::core::timing

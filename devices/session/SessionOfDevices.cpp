@@ -1,0 +1,47 @@
+// SessionOfDevices: the lock, the session row and its end.
+#include "devices/session/SessionOfDevices.h"
+
+#include "core/storage/SessionStore.h"
+#include "devices/SteadyClock.h"
+
+#include <algorithm>
+
+namespace tactiscope::devices::session {
+
+SessionOfDevices::SessionOfDevices(const std::string& storePath, const core::storage::SessionMetadata& metadata)
+    : m_storePath(storePath),
+      m_lock(core::storage::RecorderLock::acquire(storePath))
+{
+    core::storage::SessionStore store(storePath);
+    store.refuseIfDamaged();
+    store.markCrashedSessionsInterrupted();
+    m_start_host_s = steadySeconds();
+    m_session = store.beginSessionOfDevices(metadata);
+}
+
+SessionOfDevices::~SessionOfDevices()
+{
+    try {
+        finish();
+    } catch (const core::storage::StorageError&) {  // a reader shows it interrupted (no recorder holds the store)
+    }
+}
+
+LiveSessionOptions::PartOfSession SessionOfDevices::partFor(const std::string& deviceName) const
+{
+    return {m_session, deviceName, m_start_host_s};
+}
+
+void SessionOfDevices::finish()
+{
+    if (m_finished) return;
+    m_finished = true;
+    core::storage::SessionStore store(m_storePath);
+    const auto parts = store.parts(m_session);
+    const bool whole = !parts.empty() && std::ranges::all_of(parts, [](const core::storage::SessionPart& p) {
+        return p.status == core::SessionStatus::Complete;
+    });
+    store.endSession(m_session, whole ? core::SessionStatus::Complete : core::SessionStatus::Interrupted);
+}
+
+}  // namespace tactiscope::devices::session
