@@ -48,6 +48,11 @@ int runEmulate(const QStringList& arguments)
         {QStringLiteral("clock-offset"),
          QStringLiteral("Its clock's reading at the first sample, in seconds (default 0; 0 to 4000)."),
          QStringLiteral("S")},
+        {QStringLiteral("mark-at"),
+         QStringLiteral("Mark this instant of the host's steady clock (CLOCK_MONOTONIC, seconds): the first channel "
+                        "ramps by ±0.001 over 10 ms either side of it. Two emulators marking one instant are one "
+                        "event to align."),
+         QStringLiteral("S")},
         {QStringLiteral("fault"),
          QStringLiteral("Misbehave as broken firmware (TSP/1): restart@S (silent 0.5 s, then sequence and clock "
                         "from 0), sequence-jump@S (one frame's sequence +30000), frozen-sequence, or "
@@ -127,6 +132,11 @@ int runEmulate(const QStringList& arguments)
         if (!offset || *offset < 0.0 || *offset > 4000.0)
             return usageError(QStringLiteral("--clock-offset must be a number of seconds from 0 to 4000"), usage);
         options.clockOffset_s = *offset;
+    }
+    if (parser.isSet(QStringLiteral("mark-at"))) {
+        const auto at = parseNumber(parser.value(QStringLiteral("mark-at")));
+        if (!at || *at < 0.0) return usageError(QStringLiteral("--mark-at must be a number of seconds"), usage);
+        options.markAt_s = *at;
     }
     if (parser.isSet(QStringLiteral("fault"))) {
         const auto fault = devices::emulator::parseFault(parser.value(QStringLiteral("fault")).toStdString());

@@ -9,6 +9,8 @@
 
 #include "core/text/JsonWriter.h"
 #include "core/text/NumberFormat.h"
+#include "core/timing/ClockMappingJson.h"
+#include "core/timing/ClockMappingText.h"
 
 #include <algorithm>
 #include <charconv>
@@ -222,8 +224,139 @@ void writeMetadata(text::JsonWriter& json, SessionSource& store, std::int64_t se
     json.endArray();
     writeRecords(json, store, session);
     // A panel scan's defect sites, from the events recorded live.
-    if (definitionOf(s.metadata.mode).detectsDefects)
+    if (definitionOf(s.metadata.mode).detectsDefects && s.devices == 0)
         detector::writeSitesJson(json, detector::scanSites(defectEventsOf(store.events(session))));
+}
+
+// A device's part, read sample by sample in windows, each sample's time
+// on the session's clock (its own time mapped; its own as it is when no
+// mapping was stored).
+class PartReader {
+public:
+    PartReader(SessionSource& store, const SessionPart& part)
+        : m_store(store),
+          m_part(part.id),
+          m_clock(timing::clockMappingFromJson(part.clockJson)),
+          m_channels(store.channels(part.id)),
+          m_rate_hz(m_channels.empty() ? 1.0 : m_channels.front().sampleRate_hz),
+          m_end(store.sampleCount(part.id)),
+          m_gaps(store.gaps(part.id)),
+          m_wanted(m_channels.size())
+    {
+        for (std::size_t c = 0; c < m_wanted.size(); ++c) m_wanted[c] = c;
+        m_step = std::clamp<std::uint64_t>(kWindowValues / std::max<std::size_t>(1, m_wanted.size()), 1, kWindow);
+        m_gap = m_gaps.begin();
+        settle();
+    }
+
+    bool done() const { return m_channels.empty() || m_index >= m_end; }
+    double time_s() const
+    {
+        const double own_s = static_cast<double>(m_index) / m_rate_hz;
+        return m_clock ? m_clock->host_s(own_s) : own_s;
+    }
+    double value(std::size_t channel) const { return m_window[channel][m_index - m_windowFirst]; }
+    const std::vector<StoredChannel>& channels() const { return m_channels; }
+    void next()
+    {
+        ++m_index;
+        settle();
+    }
+
+private:
+    // On the next stored sample (past gaps), its window read.
+    void settle()
+    {
+        for (;;) {
+            while (m_gap != m_gaps.end() && m_gap->firstIndex + m_gap->count <= m_index) ++m_gap;
+            if (m_gap != m_gaps.end() && m_index >= m_gap->firstIndex) {
+                m_index = m_gap->firstIndex + m_gap->count;
+                continue;
+            }
+            break;
+        }
+        if (done() || (m_index >= m_windowFirst && m_index < m_windowFirst + m_windowCount)) return;
+        m_window.resize(m_wanted.size());
+        m_windowFirst = m_index;
+        m_windowCount = m_store.readChannels(m_part, m_wanted, m_index, std::min(m_step, m_end - m_index), m_window);
+    }
+
+    SessionSource& m_store;
+    std::int64_t m_part;
+    std::optional<timing::ClockMapping> m_clock;
+    std::vector<StoredChannel> m_channels;
+    double m_rate_hz;
+    std::uint64_t m_end;
+    std::vector<SampleGap> m_gaps;
+    std::vector<SampleGap>::const_iterator m_gap;
+    std::vector<std::size_t> m_wanted;
+    std::uint64_t m_step = 1;
+    std::uint64_t m_index = 0;
+    std::uint64_t m_windowFirst = 0;
+    std::uint64_t m_windowCount = 0;
+    std::vector<std::vector<double>> m_window;
+};
+
+// The parts' samples on one time axis: rows in the order of their times on
+// the session's clock, each device's channels filled in its own rows and
+// empty in the others' (no value is made up between a device's samples).
+void writeDevicesCsv(SessionSource& store, const std::vector<SessionPart>& parts, std::ostream& out)
+{
+    const auto snapshot = store.snapshot();
+    std::vector<PartReader> readers;
+    readers.reserve(parts.size());
+    for (const auto& part : parts) readers.emplace_back(store, part);
+    out << "t [s]";
+    for (std::size_t p = 0; p < parts.size(); ++p)
+        for (const auto& channel : readers[p].channels())
+            out << ',' << parts[p].deviceName << '/' << csvHeader(channel.descriptor);
+    out << '\n';
+    char buffer[32];
+    for (;;) {
+        PartReader* earliest = nullptr;
+        for (auto& reader : readers)
+            if (!reader.done() && (!earliest || reader.time_s() < earliest->time_s())) earliest = &reader;
+        if (!earliest) break;
+        out << text::formatShortest(earliest->time_s());
+        for (auto& reader : readers)
+            for (std::size_t c = 0; c < reader.channels().size(); ++c) {
+                out << ',';
+                if (&reader == earliest) out << formatSample(reader.value(c), buffer);
+            }
+        out << '\n';
+        earliest->next();
+    }
+}
+
+// The parts as the metadata lists them: each device's name, its clock
+// mapping (as stored, and in words) and its own session's metadata.
+void writeDevices(text::JsonWriter& json, SessionSource& store, const std::vector<SessionPart>& parts)
+{
+    json.key("time").value("each device's sample times mapped onto the session's clock, in seconds from its "
+                           "start; the mapping of each and its uncertainty are under its \"clock\"");
+    json.key("devices").beginArray();
+    for (const auto& part : parts) {
+        json.beginObject();
+        json.key("name").value(part.deviceName);
+        json.key("clock");
+        if (const auto clock = timing::clockMappingFromJson(part.clockJson)) {
+            json.beginObject();
+            json.key("reference_s").value(clock->reference_s);
+            json.key("offset_s").value(clock->offset_s);
+            json.key("drift").value(clock->drift);
+            json.key("offset_u_s").value(clock->offset_u_s);
+            json.key("drift_u").value(clock->drift_u);
+            json.key("uncertainty").value(timing::toString(clock->basis));
+            json.key("span_s").value(clock->span_s);
+            json.endObject();
+        } else {
+            json.null();
+        }
+        json.key("clock_text").value(timing::clockMappingText(part.clockJson));
+        writeMetadata(json, store, part.id, {});
+        json.endObject();
+    }
+    json.endArray();
 }
 
 }  // namespace
@@ -239,6 +372,10 @@ void writeSessionCsv(SessionSource& store, std::int64_t session, std::ostream& o
                      ComputedColumns* computed)
 {
     requireSession(store, session);
+    if (const auto parts = store.parts(session); !parts.empty()) {
+        writeDevicesCsv(store, parts, out);  // the whole session: a range and computed columns are one device's
+        return;
+    }
     const auto channels = store.channels(session);
     out << "t [s]";
     for (const auto& channel : channels) out << ',' << csvHeader(channel.descriptor);
@@ -268,6 +405,7 @@ void writeSessionMetadataJson(SessionSource& store, std::int64_t session, std::o
     text::JsonWriter json;
     json.beginObject();
     writeMetadata(json, store, session, range);
+    if (const auto parts = store.parts(session); !parts.empty()) writeDevices(json, store, parts);
     if (computed) {
         json.key("computed_columns").beginArray();
         for (const auto& channel : computed->channels()) {
@@ -285,19 +423,20 @@ void writeSessionMetadataJson(SessionSource& store, std::int64_t session, std::o
     out << json.str() << '\n';
 }
 
-void writeSessionJson(SessionSource& store, std::int64_t session, std::ostream& out)
+namespace {
+
+// One session's samples as JSON columns, "t" (each sample's time by
+// timeOf(index)) and one per channel, written into an open object.
+void writeSampleColumns(SessionSource& store, std::int64_t session, std::ostream& out,
+                        const std::function<double(std::uint64_t)>& timeOf)
 {
-    text::JsonWriter head;
-    head.beginObject();
-    writeMetadata(head, store, session, {});
     // The samples are written column by column ("t", then each channel), a
     // group of columns per pass over the store: as many as kGroupValues
     // values hold, so an hour-long session of a few channels never sits in
     // memory whole and a session of thousands of channels is not read once
     // per channel (quadratic: 10 000 channels took minutes).
-    out << head.str() << ",\"samples\":{";
     const auto channels = store.channels(session);
-    const double rate_hz = channels.front().sampleRate_hz;
+    if (channels.empty()) return;
     const std::uint64_t samples = std::max<std::uint64_t>(1, store.sampleCount(session));
     const std::size_t group =
         static_cast<std::size_t>(std::clamp<std::uint64_t>(kGroupValues / samples, 1, channels.size()));
@@ -310,7 +449,7 @@ void writeSessionJson(SessionSource& store, std::int64_t session, std::ostream& 
     column("t", true);
     bool first = true;
     forEachSample(store, session, {0}, [&](std::uint64_t index, const auto&, std::size_t) {
-        out << (first ? "" : ",") << text::formatShortest(static_cast<double>(index) / rate_hz);
+        out << (first ? "" : ",") << text::formatShortest(timeOf(index));
         first = false;
     });
     out << ']';
@@ -328,6 +467,39 @@ void writeSessionJson(SessionSource& store, std::int64_t session, std::ostream& 
                 out << (s == 0 ? "" : ",") << formatSample(values[k][s], buffer);
             out << ']';
         }
+    }
+}
+
+}  // namespace
+
+void writeSessionJson(SessionSource& store, std::int64_t session, std::ostream& out)
+{
+    const auto parts = store.parts(session);
+    text::JsonWriter head;
+    head.beginObject();
+    writeMetadata(head, store, session, {});
+    if (!parts.empty()) writeDevices(head, store, parts);
+    out << head.str() << ",\"samples\":{";
+    if (parts.empty()) {
+        const auto channels = store.channels(session);
+        const double rate_hz = channels.empty() ? 1.0 : channels.front().sampleRate_hz;
+        writeSampleColumns(store, session, out,
+                           [rate_hz](std::uint64_t i) { return static_cast<double>(i) / rate_hz; });
+    }
+    // A session of several devices: an object of columns per device, its
+    // "t" on the session's clock.
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+        text::JsonWriter key;
+        key.value(parts[p].deviceName);
+        out << (p ? "," : "") << key.str() << ":{";
+        const auto channels = store.channels(parts[p].id);
+        const double rate_hz = channels.empty() ? 1.0 : channels.front().sampleRate_hz;
+        const auto clock = timing::clockMappingFromJson(parts[p].clockJson);
+        writeSampleColumns(store, parts[p].id, out, [&](std::uint64_t i) {
+            const double own_s = static_cast<double>(i) / rate_hz;
+            return clock ? clock->host_s(own_s) : own_s;
+        });
+        out << '}';
     }
     out << "}}\n";
 }

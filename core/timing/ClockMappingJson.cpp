@@ -12,7 +12,11 @@ namespace tactiscope::core::timing {
 
 namespace {
 
-const char* basisWord(ClockUncertaintyBasis basis)
+constexpr double kMostDrift = 0.01;
+
+}  // namespace
+
+const char* toString(ClockUncertaintyBasis basis)
 {
     switch (basis) {
     case ClockUncertaintyBasis::Spread:
@@ -25,10 +29,6 @@ const char* basisWord(ClockUncertaintyBasis basis)
     return "too-few-frames";
 }
 
-constexpr double kMostDrift = 0.01;
-
-}  // namespace
-
 std::string toJson(const ClockMapping& m)
 {
     nlohmann::ordered_json json;
@@ -37,7 +37,7 @@ std::string toJson(const ClockMapping& m)
     json["drift"] = m.drift;
     json["span_s"] = m.span_s;
     json["pairs"] = m.pairs;
-    json["uncertainty"] = basisWord(m.basis);
+    json["uncertainty"] = toString(m.basis);
     json["offset_u_s"] = m.offset_u_s;
     json["drift_u"] = m.drift_u;
     return json.dump();

@@ -13,6 +13,9 @@
 
 namespace tactiscope::core::timing {
 
+// The stored word: "spread", "bound" or "too-few-frames".
+const char* toString(ClockUncertaintyBasis basis);
+
 // {"reference_s":…,"offset_s":…,"drift":…,"span_s":…,"pairs":…,
 //  "uncertainty":"spread"|"bound"|"too-few-frames","offset_u_s":…,"drift_u":…}
 std::string toJson(const ClockMapping& mapping);

@@ -209,6 +209,21 @@ void ProbeEmulator::sendFrame(std::vector<std::uint8_t> frame, std::size_t sampl
     if (!corrupted) m_stats.samplesSent += samples;
 }
 
+// The mark, by the host instant each sample is taken at: the stream's
+// start plus its samples since, at the crystal's pace.
+void ProbeEmulator::addMark(core::SampleBlock& block) const
+{
+    if (!m_options.markAt_s || block.channelCount() == 0) return;
+    const double start_s = std::chrono::duration<double>(m_streamStart.time_since_epoch()).count();
+    auto values = block.channel(0);
+    for (std::size_t s = 0; s < values.size(); ++s) {
+        const double taken_s = start_s + static_cast<double>(block.firstSampleIndex() + s - m_streamStartIndex) /
+                                             m_rate_hz * (1.0 + m_options.clockDrift);
+        const double x = (taken_s - *m_options.markAt_s) / kMarkHalfWidth_s;
+        if (std::abs(x) <= 1.0) values[s] += kMarkHeight * x;
+    }
+}
+
 std::vector<std::uint8_t> ProbeEmulator::nextPayload(std::size_t& samples)
 {
     const std::size_t n = m_options.samplesPerFrame;
@@ -217,6 +232,7 @@ std::vector<std::uint8_t> ProbeEmulator::nextPayload(std::size_t& samples)
                             m_sampleIndex);
     m_scenario->generate(block);
     m_shunts->apply(block);
+    addMark(block);
     samples = n;
     if (m_options.protocol == WireProtocol::Text) {
         std::string text;
@@ -351,6 +367,8 @@ void ProbeEmulator::run(const std::stop_token& stop)
         handleCommands();
         if (m_streaming && !wasStreaming) {
             streamStart = Clock::now();
+            m_streamStart = streamStart;
+            m_streamStartIndex = m_sampleIndex;
             if (!firstStart) firstStart = streamStart;
             paced = 0;
         }
@@ -374,7 +392,7 @@ void ProbeEmulator::run(const std::stop_token& stop)
             // and clock start again at 0; the world it measures went on.
             m_faulted = true;
             std::this_thread::sleep_for(kRestartPause);
-            streamStart += kRestartPause;
+            streamStart += kRestartPause;  // (the sample index jumps the pause too: m_streamStart stays)
             *firstStart += kRestartPause;  // the pause is not streaming time
             m_sampleIndex += static_cast<std::uint64_t>(std::llround(kRestartPause.count() * 1e-3 * m_rate_hz));
             m_clockStart = m_sampleIndex;

@@ -19,6 +19,7 @@
 #include "devices/simulator/SimulatedScenario.h"
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -36,6 +37,9 @@ namespace tactiscope::devices::emulator {
 // detector on) a detector built wrong: it takes its gauges for face to
 // face, so it names every defect's direction the wrong way round.
 enum class EmulatorFault { None, Restart, SequenceJump, FrozenSequence, WrongDecisions };
+
+inline constexpr double kMarkHeight = 1e-3;
+inline constexpr double kMarkHalfWidth_s = 0.01;
 
 struct EmulatorOptions {
     std::string linkPath;
@@ -59,6 +63,12 @@ struct EmulatorOptions {
     // emulators with known values are two devices to align (issue 40).
     double clockDrift = 0.0;
     double clockOffset_s = 0.0;
+    // A mark at this instant of the host's steady clock (CLOCK_MONOTONIC,
+    // seconds): the first channel ramps from −kMarkHeight to +kMarkHeight
+    // over kMarkHalfWidth_s either side of it, on top of the scenario, by
+    // the host instant each sample is taken at. Two emulators given one
+    // instant mark one event, to see aligned in the session (issue 40).
+    std::optional<double> markAt_s;
     // The probe runs the detector itself (firmware/probe-detector) on its
     // cantilevers and sends its decision and best R each way as channels
     // of kind "decision" named out, rab and rba (panel scan, TSP/1).
@@ -106,6 +116,7 @@ private:
     void sendFrame(std::vector<std::uint8_t> frame, std::size_t samples);
     bool writeAll(const std::vector<std::uint8_t>& bytes);
     std::vector<std::uint8_t> nextPayload(std::size_t& samples);
+    void addMark(core::SampleBlock& block) const;
     void hangUp();
 
     EmulatorOptions m_options;
@@ -121,6 +132,8 @@ private:
     std::atomic<bool> m_finished = false;
     std::uint16_t m_sequence = 0;
     std::uint64_t m_sampleIndex = 0;
+    std::uint64_t m_streamStartIndex = 0;  // m_sampleIndex when the stream (re)started pacing
+    std::chrono::steady_clock::time_point m_streamStart{};
     std::uint64_t m_clockStart = 0;                                  // the sample index the device clock counts from
     bool m_faulted = false;                                          // a one-off fault has happened
     std::optional<core::detector::FirmwarePairDetector> m_detector;  // the probe's own, when it runs one
