@@ -2,16 +2,46 @@
 #include "core/derived/SessionLanes.h"
 
 #include "core/modes/ModeDefinition.h"
+#include "core/timing/ClockMappingJson.h"
 
 #include <algorithm>
 #include <stdexcept>
 
 namespace tactiscope::core::derived {
 
+namespace {
+
+// A session of several devices: each device's stored channels, named
+// DEVICE/CHANNEL, at its rate and placed by its clock on the session's.
+// Each device's analysis is its own part's; its quantities are not
+// derived across devices here.
+SessionLanes partLanes(storage::SessionSource& store, const std::vector<storage::SessionPart>& parts)
+{
+    SessionLanes result;
+    for (const auto& part : parts) {
+        const auto channels = store.channels(part.id);
+        if (channels.empty()) continue;
+        storage::LaneClock clock{channels.front().sampleRate_hz, store.sampleCount(part.id),
+                                 timing::clockMappingFromJson(part.clockJson)};
+        for (std::size_t c = 0; c < channels.size(); ++c) {
+            auto descriptor = channels[c].descriptor;
+            descriptor.name = part.deviceName + "/" + descriptor.name;
+            result.lanes.push_back(std::make_unique<storage::StoredLane>(store, part.id, c, descriptor, clock));
+        }
+        if (!clock.mapping)
+            result.problem += (result.problem.empty() ? "" : "; ") + part.deviceName +
+                              ": its clock was not mapped, its samples are placed by its own times";
+    }
+    return result;
+}
+
+}  // namespace
+
 SessionLanes sessionLanes(storage::SessionSource& store, const storage::SessionSummary& session,
                           const LaneOptions& options)
 {
     SessionLanes result;
+    if (const auto parts = store.parts(session.id); !parts.empty()) return partLanes(store, parts);
     const auto channels = store.channels(session.id);
     ModeLanes added;
     const auto& definition = definitionOf(session.metadata.mode);

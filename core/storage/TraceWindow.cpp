@@ -24,8 +24,18 @@ TraceWindow readTraceWindow(SessionSource& store, std::int64_t session, std::siz
     return readTraceWindow(lane, sampleRate_hz, sampleCount, from_s, to_s, pixels);
 }
 
-TraceWindow readTraceWindow(LaneSource& lane, double sampleRate_hz, std::uint64_t sampleCount, double from_s,
-                            double to_s, std::size_t pixels)
+// The mapping is a line: session = own·(1 + drift) + offset − drift·reference.
+double LaneClock::ownTime_s(double session_s) const
+{
+    if (!mapping) return session_s;
+    return (session_s - mapping->offset_s + mapping->drift * mapping->reference_s) / (1.0 + mapping->drift);
+}
+
+namespace {
+
+// On the lane's own sample times.
+TraceWindow readOwnTimes(LaneSource& lane, double sampleRate_hz, std::uint64_t sampleCount, double from_s, double to_s,
+                         std::size_t pixels)
 {
     TraceWindow window;
     if (sampleRate_hz <= 0.0 || sampleCount == 0 || !(to_s > from_s)) return window;
@@ -56,6 +66,19 @@ TraceWindow readTraceWindow(LaneSource& lane, double sampleRate_hz, std::uint64_
         window.low.push_back(stored ? p.min : std::numeric_limits<double>::quiet_NaN());
         window.high.push_back(stored ? p.max : std::numeric_limits<double>::quiet_NaN());
     }
+    return window;
+}
+
+}  // namespace
+
+TraceWindow readTraceWindow(LaneSource& lane, double sampleRate_hz, std::uint64_t sampleCount, double from_s,
+                            double to_s, std::size_t pixels)
+{
+    const auto clock = lane.clock();
+    if (!clock) return readOwnTimes(lane, sampleRate_hz, sampleCount, from_s, to_s, pixels);
+    TraceWindow window = readOwnTimes(lane, clock->sampleRate_hz, clock->sampleCount, clock->ownTime_s(from_s),
+                                      clock->ownTime_s(to_s), pixels);
+    for (double& t : window.t_s) t = clock->sessionTime_s(t);
     return window;
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/storage/SessionSource.h"
+#include "core/timing/ClockAlignment.h"
 
 #include <cstdint>
 #include <optional>
@@ -30,12 +31,26 @@ struct TraceWindow {
 // Samples per pixel at or below which the exact samples are read.
 inline constexpr double kExactSamplesPerPixel = 4.0;
 
+// A lane on a clock of its own: a device's part of a session of several,
+// at the device's rate, its sample times mapped onto the session's clock
+// (none stored: its own times as they are).
+struct LaneClock {
+    double sampleRate_hz = 0.0;
+    std::uint64_t sampleCount = 0;
+    std::optional<timing::ClockMapping> mapping;
+
+    double sessionTime_s(double own_s) const { return mapping ? mapping->host_s(own_s) : own_s; }
+    double ownTime_s(double session_s) const;
+};
+
 // What a review lane plots: a stored channel, or a quantity derived from
 // the stored ones (core/derived), read exactly or as a min/max overview.
 class LaneSource {
 public:
     virtual ~LaneSource() = default;
     virtual ChannelDescriptor descriptor() const = 0;
+    // Its own rate, count and clock; none for a lane on the session's.
+    virtual std::optional<LaneClock> clock() const { return std::nullopt; }
     // Samples [first, first + count), NaN where lost or undefined.
     virtual std::vector<double> exact(std::uint64_t first, std::uint64_t count) = 0;
     // About `points` min/max stretches of [first, first + count).
@@ -54,7 +69,15 @@ public:
           m_descriptor(std::move(descriptor))
     {
     }
+    // A part's channel is on its device's clock (`clock`).
+    StoredLane(SessionSource& store, std::int64_t session, std::size_t channel, ChannelDescriptor descriptor,
+               LaneClock clock)
+        : StoredLane(store, session, channel, std::move(descriptor))
+    {
+        m_clock = std::move(clock);
+    }
     ChannelDescriptor descriptor() const override { return m_descriptor; }
+    std::optional<LaneClock> clock() const override { return m_clock; }
     std::vector<double> exact(std::uint64_t first, std::uint64_t count) override
     {
         return m_store.readChannel(m_session, m_channel, first, count);
@@ -69,11 +92,14 @@ private:
     std::int64_t m_session;
     std::size_t m_channel;
     ChannelDescriptor m_descriptor;
+    std::optional<LaneClock> m_clock;
 };
 
 // The window of a lane over [from_s, to_s] (session seconds, clipped to
 // the recording) for a plot `pixels` wide. One sample beyond each end is
-// included when exact, so a line reaches the plot's edges.
+// included when exact, so a line reaches the plot's edges. A lane with a
+// clock of its own is read at its rate and count, over its own times of
+// the span, and its points placed at their session times.
 TraceWindow readTraceWindow(LaneSource& lane, double sampleRate_hz, std::uint64_t sampleCount, double from_s,
                             double to_s, std::size_t pixels);
 // The same for stored channel `channel`.

@@ -68,7 +68,7 @@ struct EmulatorOptions {
     // over kMarkHalfWidth_s either side of it, on top of the scenario, by
     // the host instant each sample is taken at. Two emulators given one
     // instant mark one event, to see aligned in the session (issue 40).
-    std::optional<double> markAt_s;
+    std::optional<double> markAt_s = std::nullopt;
     // The probe runs the detector itself (firmware/probe-detector) on its
     // cantilevers and sends its decision and best R each way as channels
     // of kind "decision" named out, rab and rba (panel scan, TSP/1).

@@ -1,5 +1,8 @@
 // ReviewWindow: header, plot, record list, notes, replay, re-analysis and exports.
 #include "ui/review/ReviewWindow.h"
+
+#include "core/timing/ClockMappingJson.h"
+#include "core/timing/ClockMappingText.h"
 #include "ui/DateText.h"
 
 #include "core/modes/ModeDefinition.h"
@@ -187,7 +190,8 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionSour
     : QMainWindow(parent),
       m_storePath(storePath),
       m_store(std::move(store)),
-      m_session(std::move(session))
+      m_session(std::move(session)),
+      m_parts(m_store->parts(m_session.id))
 {
     setAttribute(Qt::WA_DeleteOnClose);
     setWindowFlag(Qt::Window);
@@ -214,8 +218,9 @@ ReviewWindow::ReviewWindow(const QString& storePath, std::unique_ptr<SessionSour
     auto* bottom = new QSplitter(Qt::Horizontal, this);
     bottom->addWidget(m_list);
     // The mode's own account beside the list (ui/modes/ModeUi.h); a mode
-    // without one (general) has the list alone.
-    if (const auto account = modeUi(meta.mode).reviewAccount) {
+    // without one (general), and a session of several devices (each
+    // device's analysis is its own part's), have the list alone.
+    if (const auto account = m_parts.empty() ? modeUi(meta.mode).reviewAccount : nullptr) {
         const ReviewAccountContext context{
             storePath, *m_store, m_session,
             [this](const std::function<void(core::derived::LaneOptions&)>& change) { return changeLanes(change); },
@@ -341,9 +346,22 @@ void ReviewWindow::refreshHeader()
     add(tr("operator %1"), meta.operatorName);
     add(tr("site %1"), meta.site);
     add(tr("triggered on %1"), meta.trigger);
-    header << tr("started %1").arg(screenDateTime(m_session.startedUtc))
-           << tr("%1 at %2 Hz").arg(durationText(m_session.duration_s())).arg(typedText(m_session.sampleRate_hz));
-    add(tr("device %1"), (meta.deviceModel + " " + meta.deviceSerial).substr(meta.deviceModel.empty() ? 1 : 0));
+    header << tr("started %1").arg(screenDateTime(m_session.startedUtc));
+    if (m_parts.empty()) {
+        header << tr("%1 at %2 Hz").arg(durationText(m_session.duration_s())).arg(typedText(m_session.sampleRate_hz));
+        add(tr("device %1"), (meta.deviceModel + " " + meta.deviceSerial).substr(meta.deviceModel.empty() ? 1 : 0));
+    } else {
+        QStringList devices;
+        for (const auto& part : m_parts) {
+            const auto channels = m_store->channels(part.id);
+            devices << tr("%1 at %2 Hz")
+                           .arg(text(part.deviceName).toHtmlEscaped())
+                           .arg(typedText(channels.empty() ? 0.0 : channels.front().sampleRate_hz));
+        }
+        header << tr("%1 on the session's clock: %2")
+                      .arg(durationText(m_session.duration_s()))
+                      .arg(devices.join(QStringLiteral(", ")));
+    }
     header << (interrupted ? tr("<span style='color:#a05000'><b>interrupted</b> (kept up to the cut)</span>")
                            : tr("status %1").arg(wordText(m_session.status)));
     add(tr("verdict <b>%1</b>"), std::string(core::verdictText(m_session.verdict)));
@@ -506,6 +524,26 @@ void ReviewWindow::refreshRecords()
             const auto readings = m_store->readings(m_session.id, analysis);
             add(m_store->events(m_session.id, analysis), readings, newRow(text(analysis)), source, source);
             if (!readings.empty()) otherReadings.push_back({source, readings});
+        }
+        // Each device's own record, on the session's clock, and how its
+        // clock was mapped there.
+        for (const auto& part : m_parts) {
+            const auto clock = core::timing::clockMappingFromJson(part.clockJson);
+            const auto onSession = [&clock](double t) { return clock ? clock->host_s(t) : t; };
+            auto events = m_store->events(part.id);
+            for (auto& e : events) {
+                e.start_s = onSession(e.start_s);
+                e.end_s = onSession(e.end_s);
+            }
+            auto readings = m_store->readings(part.id);
+            for (auto& r : readings) {
+                r.start_s = onSession(r.start_s);
+                r.end_s = onSession(r.end_s);
+            }
+            const QString device = text(part.deviceName);
+            add(events, readings, newRow(device), device, device);
+            entries.push_back({onSession(0.0), onSession(0.0), tr("device"), device,
+                               tr("clock: %1").arg(text(core::timing::clockMappingText(part.clockJson)))});
         }
         const auto recordedReadings = m_store->readings(m_session.id);
         add({}, recordedReadings, newRow(tr("Readings")), {}, tr("reading"));

@@ -113,6 +113,8 @@ private:
     QString m_storePath;
     std::unique_ptr<core::storage::SessionSource> m_store;
     core::storage::SessionSummary m_session;
+    // A session of several devices: its parts, each device's own record.
+    std::vector<core::storage::SessionPart> m_parts;
     ReviewPlot* m_plot = nullptr;
     QTreeWidget* m_list = nullptr;
     QLabel* m_header = nullptr;
