@@ -85,6 +85,8 @@ int runAnalyze(const QStringList& arguments)
         if (!id)
             return usageError(
                 QStringLiteral("no session '%1' in the store").arg(parser.value(QStringLiteral("session"))), usage);
+        if (const auto refusal = core::storage::oneDeviceRefusal(store, *id, "analyze"))
+            return usageError(toQString(*refusal), usage);
         const auto summary = *store.session(*id);
         // The detector's defects are the analysis of a mode that detects them.
         if (!core::definitionOf(summary.metadata.mode).detectsDefects)

@@ -66,6 +66,8 @@ SessionLanes sessionLanes(storage::SessionSource& store, const storage::SessionS
 std::unique_ptr<storage::ComputedColumns> computedColumns(storage::SessionSource& store,
                                                           const storage::SessionSummary& session)
 {
+    if (const auto refusal = storage::oneDeviceRefusal(store, session.id, "the mode's physical quantities"))
+        throw std::invalid_argument(*refusal);
     const auto& definition = definitionOf(session.metadata.mode);
     if (!definition.computedColumns)
         throw std::invalid_argument("session " + std::to_string(session.id) + " is a " + std::string(definition.name) +

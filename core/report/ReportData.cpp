@@ -69,6 +69,8 @@ ReportData gatherReport(storage::SessionSource& store, std::int64_t session, con
     const ReportRange& range = request.range;
     const auto summary = store.session(session);
     if (!summary) throw storage::StorageError("no session " + std::to_string(session) + " in the store");
+    if (const auto refusal = storage::oneDeviceRefusal(store, session, "a report"))
+        throw std::invalid_argument(*refusal);
     ReportData data;
     data.session = *summary;
     data.sensorName = profileName(summary->metadata.profileJson);

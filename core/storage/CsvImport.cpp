@@ -83,6 +83,13 @@ std::optional<nlohmann::json> readSideFile(const std::string& csvPath)
     if (!in) return std::nullopt;
     try {
         auto json = nlohmann::json::parse(in);
+        // A session of several devices is exported on the session's clock,
+        // each device in its own rows: not one device's grid to import.
+        if (json.contains("devices"))
+            throw CsvError(
+                "'" + csvPath +
+                "' is the export of a session of several devices; import each device's "
+                "part from its own export (sessions export PART, PART being its session in `sessions show`)");
         if (json.contains("session") && json.contains("channels")) return json;
     } catch (const nlohmann::json::exception& e) {
         throw CsvError("'" + side + "' is not a Tactiscope metadata file: " + e.what());

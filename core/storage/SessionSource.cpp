@@ -13,6 +13,17 @@ std::string textSearchPattern(const std::string& text)
     return pattern + "%";
 }
 
+std::optional<std::string> oneDeviceRefusal(SessionSource& store, std::int64_t session, const std::string& what)
+{
+    const auto parts = store.parts(session);
+    if (parts.empty()) return std::nullopt;
+    std::string named;
+    for (const auto& part : parts)
+        named += (named.empty() ? "" : ", ") + part.deviceName + ": session " + std::to_string(part.id);
+    return "session " + std::to_string(session) + " holds " + std::to_string(parts.size()) + " devices (" + named +
+           "); name one device's session for " + what;
+}
+
 std::vector<double> SessionSource::readChannel(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,
                                                std::uint64_t count)
 {

@@ -82,6 +82,12 @@ struct SessionFilter {
     std::size_t limit = 0;  // only the newest this many; 0: all
 };
 
+// Why `what` ("a report"), which reads one device's samples, cannot take
+// `session`: it holds several devices. Names each part's session, which
+// it can take. None for a session of one device.
+class SessionSource;
+std::optional<std::string> oneDeviceRefusal(SessionSource& store, std::int64_t session, const std::string& what);
+
 // The LIKE pattern (escaped by a backslash) that finds SessionFilter::text
 // anywhere in a column: its own '%' and '_' are literal, so "10%" finds "10%".
 std::string textSearchPattern(const std::string& text);

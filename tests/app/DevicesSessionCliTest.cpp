@@ -115,6 +115,41 @@ TEST(DevicesSessionCli, TwoProbesOnTheirOwnClocksMarkOneInstantWithinATenthOfAMi
     RecordProperty("mark_difference_us", std::to_string(std::llround((*markA - *markB) * 1e6)));
     std::printf("marks: a at %.6f s, b at %.6f s: %.1f µs apart\n", *markA, *markB, (*markA - *markB) * 1e6);
 
+    // The CSV export: rows in time order on the session's clock, each
+    // device's columns in its own rows; an import refuses it as a whole.
+    const QString csv = dir.filePath("x.csv");
+    ASSERT_EQ(runCli({"sessions", "--db", db, "export", QString::number(session), "--format", "csv", "--output", csv})
+                  .exitCode,
+              0);
+    QFile csvFile(csv);
+    ASSERT_TRUE(csvFile.open(QIODevice::ReadOnly));
+    EXPECT_EQ(QString::fromUtf8(csvFile.readLine()).trimmed(),
+              QStringLiteral("t [s],a/a [strain],a/b [strain],b/a [strain],b/b [strain]"));
+    double previous = -1e9;
+    int rows = 0, disordered = 0;
+    while (!csvFile.atEnd()) {
+        const double t = QString::fromUtf8(csvFile.readLine()).section(QLatin1Char(','), 0, 0).toDouble();
+        disordered += t < previous;
+        previous = t;
+        ++rows;
+    }
+    EXPECT_EQ(disordered, 0);
+    EXPECT_GT(rows, 2 * 29000);  // both devices' samples, 60 s at 500 Hz each
+    const auto imported = runCli({"import", "--db", dir.filePath("t.tactiscope"), csv});
+    EXPECT_EQ(imported.exitCode, 2);
+    EXPECT_TRUE(imported.err.contains(QStringLiteral("a session of several devices"))) << imported.err.toStdString();
+
+    // What reads one device's samples names the parts instead.
+    for (const QStringList& oneDevice :
+         {QStringList{"report", "--db", db, "--session", QString::number(session), "--output", dir.filePath("r.pdf")},
+          QStringList{"analyze", "--db", db, "--session", QString::number(session)}}) {
+        const auto refused = runCli(oneDevice);
+        EXPECT_EQ(refused.exitCode, 2) << oneDevice.front().toStdString();
+        EXPECT_TRUE(refused.err.contains(
+            QStringLiteral("holds 2 devices (a: session %1, b: session %2)").arg(session + 1).arg(session + 2)))
+            << refused.err.toStdString();
+    }
+
     // `sessions show` lists the devices and their clocks.
     const auto shown = runCli({"sessions", "--db", db, "show", QString::number(session)});
     ASSERT_EQ(shown.exitCode, 0) << shown.err.toStdString();
