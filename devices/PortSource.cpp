@@ -144,7 +144,7 @@ void PortSource::pump(std::chrono::milliseconds timeout)
     const std::size_t n = m_transport->read(m_chunk, timeout);
     if (n == 0) return;
     const std::span<const std::uint8_t> bytes(m_chunk.data(), n);
-    const double arrival_s = steadySeconds();
+    const double arrival_s = m_transport->arrival_s().value_or(steadySeconds());
     // Every new block teaches the clock mapping when its last sample
     // arrived (a block cannot leave before it), unless the device's clock
     // broke off since: then the mapping begins again.

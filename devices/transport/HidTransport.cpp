@@ -1,6 +1,8 @@
 // HID report framing and the thin hidapi layer.
 #include "devices/transport/HidTransport.h"
 
+#include "devices/transport/ReadAheadTransport.h"
+
 #include <hidapi.h>
 
 #include <algorithm>
@@ -130,7 +132,8 @@ std::vector<HidDeviceInfo> listHidDevices(std::optional<std::uint16_t> vendorId,
 
 std::unique_ptr<Transport> openHidTransport(const std::string& path)
 {
-    return std::make_unique<HidTransport>(std::make_unique<HidApiReportReader>(path));
+    return std::make_unique<ReadAheadTransport>(
+        std::make_unique<HidTransport>(std::make_unique<HidApiReportReader>(path)));
 }
 
 }  // namespace tactiscope::devices::transport

@@ -1,6 +1,8 @@
 // Port listing and the choice of serial backend.
 #include "devices/transport/SerialPorts.h"
 
+#include "devices/transport/ReadAheadTransport.h"
+
 #include "devices/transport/LibSerialPortTransport.h"
 #include "devices/transport/PosixSerialTransport.h"
 
@@ -52,7 +54,9 @@ std::vector<SerialPortInfo> listSerialPorts()
     return result;
 }
 
-std::unique_ptr<Transport> openSerialTransport(const std::string& path, int baud)
+namespace {
+
+std::unique_ptr<Transport> openPort(const std::string& path, int baud)
 {
     if (isPseudoTerminal(path)) return std::make_unique<PosixSerialTransport>(path, baud);
     try {
@@ -62,6 +66,14 @@ std::unique_ptr<Transport> openSerialTransport(const std::string& path, int baud
         // anything else libserialport disliked may still open there.
         return std::make_unique<PosixSerialTransport>(path, baud);
     }
+}
+
+}  // namespace
+
+// Read ahead, so the port's few kilobytes never fill while the host is busy.
+std::unique_ptr<Transport> openSerialTransport(const std::string& path, int baud)
+{
+    return std::make_unique<ReadAheadTransport>(openPort(path, baud));
 }
 
 }  // namespace tactiscope::devices::transport

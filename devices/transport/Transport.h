@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -31,6 +32,10 @@ public:
     virtual std::size_t read(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout) = 0;
     // All of `bytes`, or TransportError.
     virtual void write(std::span<const std::uint8_t> bytes) = 0;
+    // When the bytes the last read() returned reached the host (steady
+    // clock seconds), when it knows better than its caller's clock after
+    // the call (ReadAheadTransport read them earlier); none otherwise.
+    virtual std::optional<double> arrival_s() const { return std::nullopt; }
 };
 
 }  // namespace tactiscope::devices::transport
