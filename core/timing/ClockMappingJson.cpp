@@ -6,7 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace tactiscope::core::timing {
 
@@ -14,18 +16,21 @@ namespace {
 
 constexpr double kMostDrift = 0.01;
 
+// Each basis and its stored word, one table for writing and reading.
+struct BasisWord {
+    ClockUncertaintyBasis basis;
+    const char* word;
+};
+constexpr BasisWord kBasisWords[] = {{ClockUncertaintyBasis::Spread, "spread"},
+                                     {ClockUncertaintyBasis::Bound, "bound"},
+                                     {ClockUncertaintyBasis::TooFewFrames, "too-few-frames"}};
+
 }  // namespace
 
 const char* toString(ClockUncertaintyBasis basis)
 {
-    switch (basis) {
-    case ClockUncertaintyBasis::Spread:
-        return "spread";
-    case ClockUncertaintyBasis::Bound:
-        return "bound";
-    case ClockUncertaintyBasis::TooFewFrames:
-        return "too-few-frames";
-    }
+    for (const auto& entry : kBasisWords)
+        if (entry.basis == basis) return entry.word;
     return "too-few-frames";
 }
 
@@ -71,14 +76,9 @@ std::optional<ClockMapping> clockMappingFromJson(std::string_view text)
     const auto basis = json.find("uncertainty");
     if (basis == json.end() || !basis->is_string()) return std::nullopt;
     const std::string word = basis->get<std::string>();
-    if (word == "spread")
-        m.basis = ClockUncertaintyBasis::Spread;
-    else if (word == "bound")
-        m.basis = ClockUncertaintyBasis::Bound;
-    else if (word == "too-few-frames")
-        m.basis = ClockUncertaintyBasis::TooFewFrames;
-    else
-        return std::nullopt;
+    const auto* entry = std::ranges::find_if(kBasisWords, [&](const BasisWord& e) { return word == e.word; });
+    if (entry == std::end(kBasisWords)) return std::nullopt;
+    m.basis = entry->basis;
     return m;
 }
 
