@@ -17,13 +17,14 @@ constexpr std::array<std::pair<ChannelKind, std::string_view>, 6> kKindNames{{
     {ChannelKind::Decision, "decision"},
 }};
 
-constexpr std::array<std::pair<ChannelRole, std::string_view>, 6> kRoleNames{{
+constexpr std::array<std::pair<ChannelRole, std::string_view>, 7> kRoleNames{{
     {ChannelRole::CantileverA, "cantilever-a"},
     {ChannelRole::CantileverB, "cantilever-b"},
     {ChannelRole::StiffBeam, "stiff-beam"},
     {ChannelRole::SoftBeam, "soft-beam"},
     {ChannelRole::Displacement, "displacement"},
     {ChannelRole::Capacitance, "capacitance"},
+    {ChannelRole::ReferenceForce, "reference-force"},
 }};
 
 }  // namespace

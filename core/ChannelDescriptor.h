@@ -24,11 +24,14 @@ std::optional<ChannelKind> channelKindFromString(std::string_view name);
 // protocol's NAME@ROLE labels), a sensor profile or the user may give it
 // (the device panel, `record --roles`); a channel without one is matched
 // by its kind. The texts are the command line's and the store's words.
-enum class ChannelRole { CantileverA, CantileverB, StiffBeam, SoftBeam, Displacement, Capacitance };
+// ReferenceForce: a force known from another instrument (a load cell),
+// that a capacitive beam is calibrated against (issue 40); it may come
+// from another device of the session than the beam.
+enum class ChannelRole { CantileverA, CantileverB, StiffBeam, SoftBeam, Displacement, Capacitance, ReferenceForce };
 std::string_view toString(ChannelRole role);  // "cantilever-a", "cantilever-b", "stiff-beam", …
 std::optional<ChannelRole> channelRoleFromString(std::string_view name);  // none for "" or an unknown word
 std::string_view roleWord(const std::optional<ChannelRole>& role);        // "" for none, as stored
-// "cantilever-a, cantilever-b, stiff-beam, soft-beam, displacement or capacitance"
+// "cantilever-a, cantilever-b, stiff-beam, soft-beam, displacement, capacitance or reference-force"
 std::string channelRoleChoices();
 
 struct ChannelDescriptor {

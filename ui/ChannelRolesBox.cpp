@@ -11,9 +11,10 @@
 namespace tactiscope::ui {
 namespace {
 
-constexpr core::ChannelRole kRoles[] = {core::ChannelRole::CantileverA,  core::ChannelRole::CantileverB,
-                                        core::ChannelRole::StiffBeam,    core::ChannelRole::SoftBeam,
-                                        core::ChannelRole::Displacement, core::ChannelRole::Capacitance};
+constexpr core::ChannelRole kRoles[] = {core::ChannelRole::CantileverA,   core::ChannelRole::CantileverB,
+                                        core::ChannelRole::StiffBeam,     core::ChannelRole::SoftBeam,
+                                        core::ChannelRole::Displacement,  core::ChannelRole::Capacitance,
+                                        core::ChannelRole::ReferenceForce};
 
 QString roleTitle(core::ChannelRole role)
 {
@@ -30,6 +31,8 @@ QString roleTitle(core::ChannelRole role)
         return QObject::tr("displacement (palpation)");
     case core::ChannelRole::Capacitance:
         return QObject::tr("capacitance (capacitive)");
+    case core::ChannelRole::ReferenceForce:
+        return QObject::tr("reference force (capacitive calibration)");
     }
     return {};
 }

@@ -15,6 +15,7 @@ namespace tactiscope::core {
 namespace {
 
 constexpr std::array kRoles{ChannelRole::Capacitance};
+constexpr std::array kOptionalRoles{ChannelRole::ReferenceForce};
 
 derived::ModeLanes lanes(storage::SessionSource& store, const storage::SessionSummary& session,
                          const derived::LaneOptions& options)
@@ -46,6 +47,7 @@ const ModeDefinition& capacitiveMode()
         .title = "Capacitive",
         .needs = "a capacitance",
         .roles = kRoles,
+        .optionalRoles = kOptionalRoles,
         .profile = ProfileType::CapacitiveBeam,
         .detectsDefects = false,
         .readings = std::nullopt,

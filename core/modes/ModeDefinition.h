@@ -42,6 +42,10 @@ struct ModeDefinition {
     // "two strain cantilevers (A and B)".
     std::string_view needs{};
     std::span<const ChannelRole> roles{};  // in the order its processor reads them
+    // Roles it uses when a channel plays them, on this device or another
+    // device of the session, and does without otherwise: the capacitive
+    // beam's reference force, for a calibration against a load cell.
+    std::span<const ChannelRole> optionalRoles{};
     ProfileType profile = ProfileType::None;
     // Stores the detector's defects and decides the automatic verdict.
     bool detectsDefects = false;

@@ -61,6 +61,8 @@ bool kindCanPlay(ChannelKind kind, ChannelRole role)
         return kind == ChannelKind::Position;
     case ChannelRole::Capacitance:
         return kind == ChannelKind::Capacitance;
+    case ChannelRole::ReferenceForce:
+        return kind == ChannelKind::Force;
     }
     return false;
 }

@@ -272,7 +272,30 @@ ALTER TABLE sessions ADD COLUMN clock_json TEXT NOT NULL DEFAULT '';
 CREATE INDEX sessions_by_parent ON sessions (parent_id);
 )sql";
 
-constexpr std::array kMigrations{kVersion1, kVersion2, kVersion3, kVersion4, kVersion5, kVersion6, kVersion7};
+// Version 7 → 8: a channel may be a reference force (a load cell a
+// capacitive beam is calibrated against, issue 40). The channels table is
+// rebuilt for the CHECK; nothing refers to its rows.
+constexpr const char* kVersion8 = R"sql(
+CREATE TABLE channels_v8 (
+    session_id     INTEGER NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    position       INTEGER NOT NULL,
+    name           TEXT NOT NULL,
+    unit           TEXT NOT NULL,
+    kind           TEXT NOT NULL,
+    sample_rate_hz REAL NOT NULL CHECK (sample_rate_hz > 0),
+    role           TEXT NOT NULL DEFAULT ''
+        CHECK (role IN ('', 'cantilever-a', 'cantilever-b', 'stiff-beam', 'soft-beam', 'displacement', 'capacitance',
+                        'reference-force')),
+    PRIMARY KEY (session_id, position)
+) WITHOUT ROWID;
+INSERT INTO channels_v8 (session_id, position, name, unit, kind, sample_rate_hz, role)
+    SELECT session_id, position, name, unit, kind, sample_rate_hz, role FROM channels;
+DROP TABLE channels;
+ALTER TABLE channels_v8 RENAME TO channels;
+)sql";
+
+constexpr std::array kMigrations{kVersion1, kVersion2, kVersion3, kVersion4,
+                                 kVersion5, kVersion6, kVersion7, kVersion8};
 static_assert(kMigrations.size() == kSchemaVersion);
 
 std::int64_t pragma(Database& db, const char* name)

@@ -2,7 +2,9 @@
 // their rows becomes version 5 with nothing lost and its foreign keys still
 // in force (the sessions table is rebuilt for the general mode's CHECK);
 // a general session keeps the roles its channels played; the store refuses
-// a role word it does not know.
+// a role word it does not know. Schema 8: a version-7 store keeps its
+// channels and their roles through the channels table's rebuild, and a
+// channel may then be a reference force.
 #include "core/SampleBlock.h"
 #include "core/storage/ChunkCodec.h"
 #include "core/storage/Schema.h"
@@ -104,6 +106,41 @@ TEST_F(GeneralModeStoreTest, AGeneralSessionKeepsTheRolesItsChannelsPlayed)
     general.mode = Mode::General;
     EXPECT_EQ(store.sessions(general).size(), 1u);
     EXPECT_THROW(store.database().exec("UPDATE channels SET role = 'cantilever-c' WHERE position = 2"), StorageError);
+}
+
+TEST_F(GeneralModeStoreTest, AVersion7StoreBecomesVersion8WithItsChannelsAndTheirRoles)
+{
+    const std::string path = file("v7.tactiscope");
+    {
+        Database db(path, Database::Access::ReadWrite);
+        ASSERT_EQ(prepareSchema(db, 7), 0);
+        db.exec("INSERT INTO sessions (id, uuid, mode, subject, started_utc, status, app_version) VALUES "
+                "(1, 'u1', 'general', 'board', '2026-01-01T00:00:00.000Z', 'complete', '0.9'),"
+                "(2, 'u2', 'capacitive', 'beam', '2026-01-02T00:00:00.000Z', 'complete', '0.9')");
+        db.exec("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz, role) VALUES "
+                "(1, 0, 'a', '', 'other', 100, 'cantilever-a'), (1, 1, 'b', '', 'other', 100, 'cantilever-b'), "
+                "(2, 0, 'capacitance', 'F', 'capacitance', 10, '')");
+        EXPECT_THROW(db.exec("UPDATE channels SET role = 'reference-force' WHERE session_id = 2"), StorageError);
+    }
+    SessionStore store(path);
+    auto version = store.database().prepare("PRAGMA user_version");
+    ASSERT_TRUE(version.step());
+    EXPECT_EQ(version.int64(0), 8);
+    const auto general = store.channels(1);
+    ASSERT_EQ(general.size(), 2u);
+    EXPECT_EQ(general[0].descriptor.role, ChannelRole::CantileverA);
+    EXPECT_EQ(general[1].descriptor.role, ChannelRole::CantileverB);
+    EXPECT_DOUBLE_EQ(general[1].sampleRate_hz, 100.0);
+    ASSERT_EQ(store.channels(2).size(), 1u);
+    auto& db = store.database();
+    db.exec("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz, role) VALUES "
+            "(2, 1, 'force', 'N', 'force', 1000, 'reference-force')");
+    EXPECT_EQ(store.channels(2)[1].descriptor.role, ChannelRole::ReferenceForce);
+    db.exec("DELETE FROM sessions WHERE id = 1");  // the rebuilt table is still its session's
+    EXPECT_EQ(countOf(db, "channels"), 2);
+    EXPECT_THROW(db.exec("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz) VALUES "
+                         "(99, 0, 'x', '', 'other', 1)"),
+                 StorageError);
 }
 
 // A newer program's store may hold a mode this build does not know: it is

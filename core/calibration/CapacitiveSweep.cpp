@@ -1,0 +1,164 @@
+// CapacitiveSweep: a reference-force sweep → baselines, directions, bins →
+// the calibration's input.
+#include "core/calibration/CapacitiveSweep.h"
+
+#include "core/calibration/LinearFit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <stdexcept>
+
+namespace tactiscope::core::calibration {
+namespace {
+
+double meanOf(std::span<const double> values)
+{
+    double sum = 0.0;
+    for (const double v : values) sum += v;
+    return sum / static_cast<double>(values.size());
+}
+
+// Samples [first, end) from their first stable window on, as one window;
+// none when they never settle.
+std::optional<WindowStatistics> settledPart(const CapacitiveRecording& r, std::size_t first, std::size_t end,
+                                            const StabilitySettings& stability)
+{
+    if (end <= first + 2) return std::nullopt;
+    const std::span<const double> t(r.t_s.data() + first, end - first);
+    const std::span<const double> c(r.capacitance_f.data() + first, end - first);
+    const auto stable = firstStableWindow(t, c, stability);
+    if (!stable) return std::nullopt;
+    std::size_t from = first;
+    while (r.t_s[from] < stable->start_s) ++from;
+    const std::span<const double> tt(r.t_s.data() + from, end - from);
+    const std::span<const double> cc(r.capacitance_f.data() + from, end - from);
+    WindowStatistics w;
+    w.count = end - from;
+    w.start_s = tt.front();
+    w.end_s = tt.back();
+    w.stable = true;
+    w.mean = meanOf(cc);
+    const LinearFit line = fitLine(tt, cc);
+    w.sigma = line.residualStandardDeviation;
+    w.drift_per_s = line.slope;
+    std::vector<double> residuals(w.count);
+    for (std::size_t i = 0; i < w.count; ++i) residuals[i] = cc[i] - (line.intercept + line.slope * tt[i]);
+    w.meanStandardError = meanStandardError(residuals);
+    return w;
+}
+
+// Where the sweep turns: the extreme before each rise or fall of `turn`
+// past it.
+std::vector<std::size_t> turningPoints(std::span<const double> force, double turn)
+{
+    std::vector<std::size_t> turns;
+    bool rising = true;
+    std::size_t extreme = 0;
+    for (std::size_t i = 1; i < force.size(); ++i) {
+        if (rising ? force[i] > force[extreme] : force[i] < force[extreme]) {
+            extreme = i;
+        } else if (std::abs(force[i] - force[extreme]) > turn) {
+            turns.push_back(extreme);
+            rising = !rising;
+            extreme = i;
+        }
+    }
+    return turns;
+}
+
+}  // namespace
+
+SweepSteps stepsFromSweep(const CapacitiveRecording& r, const SweepSettings& settings)
+{
+    const std::size_t n = r.capacitance_f.size();
+    if (r.t_s.size() != n || r.load_n.size() != n)
+        throw std::invalid_argument("a sweep needs every sample's time and reference force");
+    if (settings.bins < 1 || settings.minimumPerBin < 2)
+        throw std::invalid_argument("a sweep needs at least one bin of two samples");
+    const auto [lowest, highest] = std::ranges::minmax(r.load_n);
+    if (!(highest > lowest)) throw std::invalid_argument("the reference force does not change: there is no sweep");
+
+    // The unloaded start: before the reference first leaves the bottom of
+    // its range. Its first half gives the reference's zero and noise; the
+    // sweep begins where the reference leaves that noise (5σ), so the
+    // baseline holds no sample of the rise.
+    const double unloaded = lowest + settings.unloadedFraction * (highest - lowest);
+    const auto firstLoaded = std::ranges::find_if(r.load_n, [&](double f) { return f > unloaded; });
+    const auto rise = static_cast<std::size_t>(firstLoaded - r.load_n.begin());
+    if (rise < 4) throw std::invalid_argument("the recording must start unloaded: its first samples give C0");
+    const std::span<const double> quiet(r.load_n.data(), rise / 2);
+    SweepSteps result;
+    result.referenceZero_n = meanOf(quiet);
+    double squares = 0.0;
+    for (const double f : quiet) squares += (f - result.referenceZero_n) * (f - result.referenceZero_n);
+    const double noise = std::sqrt(squares / static_cast<double>(quiet.size() - 1));
+    const double leaves = std::max(5.0 * noise, 1e-3 * (highest - lowest));
+    std::vector<double> force(n);
+    for (std::size_t i = 0; i < n; ++i) force[i] = r.load_n[i] - result.referenceZero_n;
+    std::size_t begin = 0;
+    while (begin < rise && force[begin] <= leaves) ++begin;
+    std::size_t end = n;
+    while (end > begin && force[end - 1] <= leaves) --end;
+
+    CapacitiveSteps& out = result.steps;
+    const auto baseline = settledPart(r, 0, begin, settings.stability);
+    if (!baseline) throw std::invalid_argument("the unloaded baseline before the sweep never settles");
+    out.input.baseline = *baseline;
+    if (const auto final = settledPart(r, end, n, settings.stability)) {
+        out.input.finalBaseline = *final;
+        out.finalShift_f = final->mean - baseline->mean;
+    }
+
+    const std::span<const double> loaded(force.data() + begin, end - begin);
+    result.span_n = *std::ranges::max_element(loaded);
+    const std::vector<std::size_t> turns = turningPoints(loaded, settings.turnFraction * result.span_n);
+    result.turns = turns.size();
+    const double width = result.span_n / static_cast<double>(settings.bins);
+    // Each direction's samples by bin: loading until the first turn, then
+    // each turn swaps.
+    std::vector<std::vector<std::size_t>> bins(2 * settings.bins);
+    std::size_t turn = 0;
+    for (std::size_t i = 0; i < loaded.size(); ++i) {
+        while (turn < turns.size() && turns[turn] < i) ++turn;
+        const bool loading = turn % 2 == 0;
+        const auto bin = std::min(settings.bins - 1, static_cast<std::size_t>(std::max(0.0, loaded[i]) / width));
+        bins[(loading ? 0 : settings.bins) + bin].push_back(begin + i);
+    }
+    for (std::size_t b = 0; b < bins.size(); ++b) {
+        const bool loading = b < settings.bins;
+        // Loading upwards, unloading downwards, as weights go on and off.
+        const std::size_t k = loading ? b : 2 * settings.bins - 1 - b;
+        const auto& members = bins[loading ? k : settings.bins + k];
+        if (members.size() < settings.minimumPerBin) continue;
+        std::vector<double> f, c, t;
+        for (const std::size_t i : members) {
+            f.push_back(force[i]);
+            c.push_back(r.capacitance_f[i]);
+            t.push_back(r.t_s[i]);
+        }
+        // A bin the sweep crossed gives its capacitance at its middle; one
+        // it dwelt in (a quarter of its width or less), its mean at its
+        // mean force.
+        const auto [least, most] = std::ranges::minmax(f);
+        const bool crossed = most - least > 0.25 * width;
+        const LinearFit line = crossed ? fitLine(f, c) : LinearFit{};
+        const double middle = crossed ? (static_cast<double>(k) + 0.5) * width : meanOf(f);
+        FoundStep step;
+        step.force_n = middle;
+        step.loading = loading;
+        step.window.mean = crossed ? line.intercept + line.slope * middle : meanOf(c);
+        step.window.sigma = line.residualStandardDeviation;
+        step.window.count = members.size();
+        step.window.start_s = *std::ranges::min_element(t);
+        step.window.end_s = *std::ranges::max_element(t);
+        step.window.stable = true;
+        result.samplesUsed += members.size();
+        out.steps.push_back(step);
+        out.input.steps.push_back({middle, std::nullopt, step.window.mean, meanOf(t), loading});
+    }
+    if (out.steps.size() < 2) throw std::invalid_argument("the sweep gave fewer than two points");
+    return result;
+}
+
+}  // namespace tactiscope::core::calibration
