@@ -111,8 +111,9 @@ TEST(ChannelRoles, ARoleListIsParsedAndWrittenBackAndBadOnesAreNamed)
     };
     EXPECT_EQ(message("a"), "'a' is not NAME=ROLE (e.g. a=cantilever-a)");
     EXPECT_EQ(message("=stiff-beam"), "'=stiff-beam' names no channel");
-    EXPECT_EQ(message("a=cantilever-c"), "'cantilever-c' is not a channel role; the roles are cantilever-a, "
-                                         "cantilever-b, stiff-beam, soft-beam, displacement or capacitance");
+    EXPECT_EQ(message("a=cantilever-c"),
+              "'cantilever-c' is not a channel role; the roles are cantilever-a, "
+              "cantilever-b, stiff-beam, soft-beam, displacement, capacitance or reference-force");
     EXPECT_EQ(message("a=stiff-beam,a=soft-beam"), "channel 'a' is given two roles");
     EXPECT_EQ(message("a=stiff-beam,b=stiff-beam"), "the role stiff-beam is given to both 'a' and 'b'");
 }
