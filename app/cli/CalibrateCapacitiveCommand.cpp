@@ -1,21 +1,20 @@
 // The calibrate-capacitive subcommand: a calibration recording (raw
-// capacitance with its loads, or rows of force and capacitance) to C0, the
-// sensitivity, the drift, the hysteresis and the detection limit.
+// capacitance with its loads, or rows of force and capacitance), or a
+// stored sweep against a reference force, to C0, the sensitivity, the
+// drift, the hysteresis and the detection limit.
 #include "CalibrateCapacitiveCommand.h"
 
+#include "CapacitiveCalibrationOutput.h"
 #include "CliSupport.h"
 #include "RecordingImport.h"
-#include "core/calibration/CapacitiveSteps.h"
+#include "SessionArgument.h"
+#include "core/calibration/CapacitiveSweep.h"
+#include "core/derived/ReferencedSweep.h"
 #include "core/io/CsvColumns.h"
 #include "core/io/CsvReader.h"
-#include "core/text/JsonWriter.h"
-#include "core/text/UncertaintyFormat.h"
-
-#include <QTextStream>
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 
 namespace tactiscope::cli {
 namespace {
@@ -108,75 +107,80 @@ std::optional<std::vector<double>> parseLoads(const QString& text)
     return loads;
 }
 
-void writeJson(const calibration::CapacitiveCalibrationResult& result, const calibration::CapacitiveSteps& steps,
-               bool timed)
+// A channel named on the command line, or the one playing `role`.
+std::optional<derived::SessionChannel> channelFor(storage::SessionSource& store, std::int64_t session,
+                                                  const QString& label, ChannelRole role)
 {
-    text::JsonWriter json;
-    json.beginObject();
-    for (const auto& [key, value] : result.record.values) {
-        if (key == "drift_pf_per_s" && !timed) continue;  // no time base: no drift
-        json.key(key).value(value);
-    }
-    json.key("sensitivity_standard_error_pf_per_mn").value(result.forceFit->slopeStandardError * 1e9);
-    json.key("detection_limit_mgf").value(*result.detectionLimit_n / calibration::kMilligramForce_n);
-    json.key("baseline_samples").value(static_cast<long long>(steps.input.baseline.count));
-    if (steps.finalShift_f) json.key("final_baseline_shift_pf").value(*steps.finalShift_f * 1e12);
-    json.key("points").value(static_cast<long long>(result.forceFit->points));
-    json.key("steps_unsettled").value(static_cast<long long>(steps.unsettled));
-    json.key("cautions").beginArray();
-    for (const std::string& caution : result.cautions) json.value(caution);
-    json.endArray();
-    json.key("steps").beginArray();
-    for (const auto& step : steps.steps) {
-        json.beginObject();
-        json.key("force_n").value(step.force_n);
-        json.key("loading").value(step.loading);
-        json.key("capacitance_pf").value(step.window.mean * 1e12);
-        json.key("samples").value(static_cast<long long>(step.window.count));
-        if (timed) {
-            json.key("start_s").value(step.window.start_s);
-            json.key("end_s").value(step.window.end_s);
-        }
-        json.endObject();
-    }
-    json.endArray();
-    json.endObject();
-    std::cout << json.str() << '\n';
+    return label.isEmpty() ? derived::channelPlaying(store, session, role)
+                           : derived::channelNamed(store, session, label.toStdString());
 }
 
-void writeText(const calibration::CapacitiveCalibrationResult& result, const calibration::CapacitiveSteps& steps,
-               bool timed)
+// A stored sweep of the beam against a reference force, each from any
+// device of the session.
+int calibrateStoredSweep(const QCommandLineParser& parser, const QString& usage, std::optional<double> area_m2)
 {
-    QTextStream out(stdout);
-    out << "C0: " << QString::number(result.c0_f * 1e12, 'f', 4) << " pF (baseline σ "
-        << QString::number(result.baselineSigma_f * 1e12, 'f', 4) << " pF over " << steps.input.baseline.count
-        << (timed ? " samples of the first baseline)\n" : " rows of the first baseline)\n");
-    if (steps.finalShift_f) {
-        if (timed)
-            out << "drift: " << QString::number(result.drift_f_per_s * 1e12, 'g', 3) << " pF/s (the final baseline is "
-                << QString::number(*steps.finalShift_f * 1e12, 'f', 4)
-                << " pF from C0), removed before ΔC and the hysteresis\n";
-        else
-            out << "final baseline " << QString::number(*steps.finalShift_f * 1e12, 'f', 4)
-                << " pF from C0: not removed (no time column to spread it over)\n";
+    calibration::SweepSteps sweep;
+    calibration::CapacitiveCalibrationResult result;
+    SweepReport report;
+    try {
+        const auto opened = openStoreArgument(parser.value(QStringLiteral("db")), storage::Database::Access::ReadOnly);
+        storage::SessionSource& store = *opened;
+        const QString text = parser.value(QStringLiteral("session"));
+        const auto id = resolveSession(store, text);
+        if (!id) return usageError(QStringLiteral("no session '%1' in the store").arg(text), usage);
+        const QString capacitanceLabel = parser.value(QStringLiteral("capacitance"));
+        const QString referenceLabel = parser.value(QStringLiteral("reference"));
+        const auto capacitance = channelFor(store, *id, capacitanceLabel, ChannelRole::Capacitance);
+        if (!capacitance)
+            return usageError(capacitanceLabel.isEmpty()
+                                  ? QStringLiteral("session %1 has no capacitance channel").arg(*id)
+                                  : QStringLiteral("session %1 has no channel '%2' (name it DEVICE/CHANNEL)")
+                                        .arg(*id)
+                                        .arg(capacitanceLabel),
+                              usage);
+        const auto reference = channelFor(store, *id, referenceLabel, ChannelRole::ReferenceForce);
+        if (!reference)
+            return usageError(referenceLabel.isEmpty()
+                                  ? QStringLiteral("session %1 has no reference force: no channel plays "
+                                                   "reference-force and none is a force; name one with --reference "
+                                                   "DEVICE/CHANNEL")
+                                        .arg(*id)
+                                  : QStringLiteral("session %1 has no channel '%2' (name it DEVICE/CHANNEL)")
+                                        .arg(*id)
+                                        .arg(referenceLabel),
+                              usage);
+        const derived::ReferencedSweep paired = derived::referencedSweep(store, *capacitance, *reference);
+        sweep =
+            calibration::stepsFromSweep(paired.recording, {.stability = calibration::capacitiveStabilityDefaults()});
+        sweep.steps.input.contactArea_m2 = area_m2;
+        result = calibration::calibrateCapacitive(sweep.steps.input, capacitance->label(), "");
+        if (!paired.clockUncertainty_s)
+            result.cautions.push_back("the two devices' clocks were mapped without a stated uncertainty (too few "
+                                      "frames): how well each capacitance sample meets its force is not known");
+        report = {reference->label(),
+                  capacitance->label(),
+                  sweep.referenceZero_n,
+                  sweep.span_n,
+                  sweep.turns,
+                  paired.recording.t_s.size(),
+                  paired.outsideReference,
+                  paired.clockUncertainty_s,
+                  paired.steepest_n_per_s};
+    } catch (const storage::StorageError& e) {
+        return storageFailure(e);
+    } catch (const std::invalid_argument& e) {  // units, no sweep, an unsettled start
+        printError(QStringLiteral("session %1: %2").arg(parser.value(QStringLiteral("session")), toQString(e.what())));
+        return kExitUsage;
     }
-    const auto& fit = *result.forceFit;
-    out << "sensitivity: " << toQString(text::valueWithUncertainty(fit.slope * 1e9, fit.slopeStandardError * 1e9))
-        << " pF/mN, intercept " << QString::number(fit.intercept * 1e12, 'f', 4) << " pF, R² "
-        << QString::number(fit.rSquared, 'f', 5) << " (" << fit.points << " points)\n";
-    out << "relative sensitivity: " << QString::number(*result.relativeSensitivity_per_n * 1e-3, 'f', 4) << " per mN";
-    if (result.pressureSensitivity_per_pa)
-        out << ", " << QString::number(*result.pressureSensitivity_per_pa * 1e3, 'f', 3) << " per kPa";
-    out << "\ndetection limit: " << QString::number(*result.detectionLimit_n * 1e6, 'f', 1) << " µN ("
-        << QString::number(*result.detectionLimit_n / calibration::kMilligramForce_n, 'f', 2) << " mgf, 3σ of C0)\n";
-    if (result.hysteresis)
-        out << "hysteresis: " << QString::number(*result.hysteresis * 100.0, 'f', 2) << " % of full scale\n";
-    const auto unloading = std::ranges::count_if(steps.steps, [](const auto& s) { return !s.loading; });
-    out << "steps: " << steps.steps.size() - static_cast<std::size_t>(unloading) << " loading, " << unloading
-        << " unloading";
-    if (steps.unsettled > 0) out << ", " << steps.unsettled << " never settled (left out)";
-    out << '\n';
-    for (const std::string& caution : result.cautions) out << "caution: " << QString::fromStdString(caution) << '\n';
+    if (!result.forceFit || !(result.forceFit->slope > 0.0)) {
+        printError(QStringLiteral("the capacitance does not rise with the reference force; check the channels"));
+        return kExitUsage;
+    }
+    if (parser.isSet(QStringLiteral("json")))
+        writeCapacitiveJson(result, sweep.steps, true, &report);
+    else
+        writeCapacitiveText(result, sweep.steps, true, &report);
+    return kExitOk;
 }
 
 }  // namespace
@@ -190,8 +194,12 @@ int runCalibrateCapacitive(const QStringList& arguments)
         "RECORDING.csv is a raw recording — a time column, the capacitance ('capacitance [F]' or [pF]) and the "
         "load placed ('load [N]', as the simulator writes it) — or, without a load column, the loads in order "
         "with --loads-mgf; or rows force_n,capacitance_pf (step means or every sample). The first baseline gives "
-        "C0 and its noise, the last the drift, removed before the hysteresis."));
-    parser.addPositionalArgument(QStringLiteral("RECORDING.csv"), QStringLiteral("The calibration recording."));
+        "C0 and its noise, the last the drift, removed before the hysteresis.\n"
+        "Or, with --db and --session, a recorded sweep against a reference force (a load cell on this or another "
+        "device of the session): the beam's samples are paired with the force at their instants on the session's "
+        "clock, and gathered in force bins, loading and unloading apart."));
+    parser.addPositionalArgument(QStringLiteral("RECORDING.csv"),
+                                 QStringLiteral("The calibration recording (without --session)."));
     parser.addOptions({
         {QStringLiteral("loads-mgf"),
          QStringLiteral("The loads placed, in order, in mgf, the unloaded baseline first (0,10,20,…,0)."),
@@ -201,11 +209,35 @@ int runCalibrateCapacitive(const QStringList& arguments)
         {QStringLiteral("contact-area-mm2"), QStringLiteral("Contact area for the pressure sensitivity (e.g. 9)."),
          QStringLiteral("A")},
         {QStringLiteral("json"), QStringLiteral("Print one JSON object.")},
+        {QStringLiteral("db"), QStringLiteral("The session store of a sweep (with --session)."),
+         QStringLiteral("FILE|CONNINFO")},
+        {QStringLiteral("session"), QStringLiteral("The sweep's session: its id, its uuid, or 'last'."),
+         QStringLiteral("ID|UUID|last")},
+        {QStringLiteral("reference"),
+         QStringLiteral("The reference force channel, DEVICE/CHANNEL (default: the one playing reference-force, else "
+                        "the first force channel)."),
+         QStringLiteral("LABEL")},
+        {QStringLiteral("capacitance"),
+         QStringLiteral("The beam's capacitance channel, DEVICE/CHANNEL (default: the first capacitance)."),
+         QStringLiteral("LABEL")},
     });
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
-    if (parser.positionalArguments().size() != 1)
-        return usageError(QStringLiteral("calibrate-capacitive needs RECORDING.csv"), usage);
+    const bool stored = parser.isSet(QStringLiteral("session"));
+    if (stored != parser.isSet(QStringLiteral("db")))
+        return usageError(QStringLiteral("a stored sweep needs both --db and --session"), usage);
+    if (stored ? !parser.positionalArguments().isEmpty() : parser.positionalArguments().size() != 1)
+        return usageError(stored ? QStringLiteral("give either RECORDING.csv or --db and --session")
+                                 : QStringLiteral("calibrate-capacitive needs RECORDING.csv"),
+                          usage);
+    for (const char* option : {"reference", "capacitance"})
+        if (!stored && parser.isSet(QLatin1String(option)))
+            return usageError(QStringLiteral("--%1 names a channel of a stored sweep (with --session)").arg(option),
+                              usage);
+    if (stored && (parser.isSet(QStringLiteral("loads-mgf")) || parser.isSet(QStringLiteral("unit"))))
+        return usageError(QStringLiteral("--loads-mgf and --unit are for a recording file; a stored sweep's "
+                                         "reference gives its loads and its channels their units"),
+                          usage);
     std::optional<double> area_m2;
     if (parser.isSet(QStringLiteral("contact-area-mm2"))) {
         const auto value = parseNumber(parser.value(QStringLiteral("contact-area-mm2")));
@@ -213,6 +245,7 @@ int runCalibrateCapacitive(const QStringList& arguments)
             return usageError(QStringLiteral("--contact-area-mm2 must be a positive number"), usage);
         area_m2 = *value * 1e-6;
     }
+    if (stored) return calibrateStoredSweep(parser, usage, area_m2);
     std::optional<std::vector<double>> loads;
     if (parser.isSet(QStringLiteral("loads-mgf"))) {
         loads = parseLoads(parser.value(QStringLiteral("loads-mgf")));
@@ -257,9 +290,9 @@ int runCalibrateCapacitive(const QStringList& arguments)
     }
     const bool timed = !recording.t_s.empty();
     if (parser.isSet(QStringLiteral("json")))
-        writeJson(result, steps, timed);
+        writeCapacitiveJson(result, steps, timed, nullptr);
     else
-        writeText(result, steps, timed);
+        writeCapacitiveText(result, steps, timed, nullptr);
     return kExitOk;
 }
 

@@ -53,6 +53,11 @@ int runEmulate(const QStringList& arguments)
                         "ramps by ±0.001 over 10 ms either side of it. Two emulators marking one instant are one "
                         "event to align."),
          QStringLiteral("S")},
+        {QStringLiteral("sweep-at"),
+         QStringLiteral("Begin a calibration sweep at this instant of the host's steady clock (seconds): the rig of "
+                        "the capacitive-calibration or load-cell scenario pushes 0 → 1.47 mN (150 mgf) over 20 s and "
+                        "back. A beam and a load cell emulated with one instant feel one force."),
+         QStringLiteral("S")},
         {QStringLiteral("fault"),
          QStringLiteral("Misbehave as broken firmware (TSP/1): restart@S (silent 0.5 s, then sequence and clock "
                         "from 0), sequence-jump@S (one frame's sequence +30000), frozen-sequence, or "
@@ -137,6 +142,11 @@ int runEmulate(const QStringList& arguments)
         const auto at = parseNumber(parser.value(QStringLiteral("mark-at")));
         if (!at || *at < 0.0) return usageError(QStringLiteral("--mark-at must be a number of seconds"), usage);
         options.markAt_s = *at;
+    }
+    if (parser.isSet(QStringLiteral("sweep-at"))) {
+        const auto at = parseNumber(parser.value(QStringLiteral("sweep-at")));
+        if (!at || *at < 0.0) return usageError(QStringLiteral("--sweep-at must be a number of seconds"), usage);
+        options.sweepAt_s = *at;
     }
     if (parser.isSet(QStringLiteral("fault"))) {
         const auto fault = devices::emulator::parseFault(parser.value(QStringLiteral("fault")).toStdString());

@@ -4,6 +4,7 @@
 #include "core/SampleBlock.h"
 #include "core/Version.h"
 #include "devices/protocol/BinaryDecoder.h"
+#include "devices/simulator/LoadSweep.h"
 #include "devices/simulator/ScenarioCatalog.h"
 
 #include <cerrno>
@@ -72,6 +73,8 @@ ProbeEmulator::ProbeEmulator(const EmulatorOptions& options)
         m_channels.push_back(c);
     }
     m_shunts.emplace(base);
+    if (options.sweepAt_s && !m_scenario->loadRig())
+        throw std::invalid_argument("a sweep needs a scenario with a load rig (capacitive-calibration, load-cell)");
     if (options.fault == EmulatorFault::WrongDecisions && !options.probeDetector)
         throw std::invalid_argument("wrong decisions need the probe's detector on");
     if (options.probeDetector) {
@@ -209,18 +212,35 @@ void ProbeEmulator::sendFrame(std::vector<std::uint8_t> frame, std::size_t sampl
     if (!corrupted) m_stats.samplesSent += samples;
 }
 
-// The mark, by the host instant each sample is taken at: the stream's
-// start plus its samples since, at the crystal's pace.
+// The stream's start plus its samples since, at the crystal's pace.
+double ProbeEmulator::takenAt_s(std::uint64_t index) const
+{
+    const double start_s = std::chrono::duration<double>(m_streamStart.time_since_epoch()).count();
+    return start_s + static_cast<double>(index - m_streamStartIndex) / m_rate_hz * (1.0 + m_options.clockDrift);
+}
+
 void ProbeEmulator::addMark(core::SampleBlock& block) const
 {
     if (!m_options.markAt_s || block.channelCount() == 0) return;
-    const double start_s = std::chrono::duration<double>(m_streamStart.time_since_epoch()).count();
     auto values = block.channel(0);
     for (std::size_t s = 0; s < values.size(); ++s) {
-        const double taken_s = start_s + static_cast<double>(block.firstSampleIndex() + s - m_streamStartIndex) /
-                                             m_rate_hz * (1.0 + m_options.clockDrift);
-        const double x = (taken_s - *m_options.markAt_s) / kMarkHalfWidth_s;
+        const double x = (takenAt_s(block.firstSampleIndex() + s) - *m_options.markAt_s) / kMarkHalfWidth_s;
         if (std::abs(x) <= 1.0) values[s] += kMarkHeight * x;
+    }
+}
+
+// The scenario's samples; under a sweep one at a time, each with the load
+// of the instant it is taken at on the rig.
+void ProbeEmulator::generate(core::SampleBlock& block)
+{
+    if (!m_options.sweepAt_s) return m_scenario->generate(block);
+    const simulator::LoadSweep sweep;
+    const std::shared_ptr<simulator::LoadRig> rig = m_scenario->loadRig();
+    core::SampleBlock one(block.channelCount(), 1, 0.0, 1.0 / m_rate_hz, 0);
+    for (std::size_t s = 0; s < block.sampleCount(); ++s) {
+        rig->place(sweep.load_n(takenAt_s(block.firstSampleIndex() + s) - *m_options.sweepAt_s));
+        m_scenario->generate(one);
+        for (std::size_t c = 0; c < block.channelCount(); ++c) block.channel(c)[s] = one.channel(c)[0];
     }
 }
 
@@ -230,7 +250,7 @@ std::vector<std::uint8_t> ProbeEmulator::nextPayload(std::size_t& samples)
     const std::size_t baseChannels = m_scenario->channels().size();
     core::SampleBlock block(baseChannels, n, static_cast<double>(m_sampleIndex) / m_rate_hz, 1.0 / m_rate_hz,
                             m_sampleIndex);
-    m_scenario->generate(block);
+    generate(block);
     m_shunts->apply(block);
     addMark(block);
     samples = n;

@@ -69,6 +69,12 @@ struct EmulatorOptions {
     // the host instant each sample is taken at. Two emulators given one
     // instant mark one event, to see aligned in the session (issue 40).
     std::optional<double> markAt_s = std::nullopt;
+    // A calibration sweep (devices/simulator/LoadSweep.h) begun at this
+    // instant of the host's steady clock, pushed through the scenario's
+    // load rig by the host instant each sample is taken at: a capacitive
+    // beam (capacitive-calibration) and a load cell (load-cell) emulated
+    // with one instant feel one force (issue 40).
+    std::optional<double> sweepAt_s = std::nullopt;
     // The probe runs the detector itself (firmware/probe-detector) on its
     // cantilevers and sends its decision and best R each way as channels
     // of kind "decision" named out, rab and rba (panel scan, TSP/1).
@@ -116,7 +122,10 @@ private:
     void sendFrame(std::vector<std::uint8_t> frame, std::size_t samples);
     bool writeAll(const std::vector<std::uint8_t>& bytes);
     std::vector<std::uint8_t> nextPayload(std::size_t& samples);
+    // The host instant (steady clock, s) sample `index` is taken at.
+    double takenAt_s(std::uint64_t index) const;
     void addMark(core::SampleBlock& block) const;
+    void generate(core::SampleBlock& block);
     void hangUp();
 
     EmulatorOptions m_options;

@@ -3,6 +3,7 @@
 
 #include "devices/simulator/CapacitiveWeightsScenario.h"
 #include "devices/simulator/GaugeCalibrationScenario.h"
+#include "devices/simulator/LoadCellScenario.h"
 #include "devices/simulator/PalpationScenario.h"
 #include "devices/simulator/PanelScanScenario.h"
 
@@ -10,9 +11,9 @@ namespace tactiscope::devices::simulator {
 
 std::vector<std::string> scenarioIds()
 {
-    return {kPanelScanScenario,       kPanelLineScenario,       kPanelRestScenario,
-            kPalpationScenario,       "capacitive-weights",     "gauge-calibration",
-            "gauge-calibration-soft", "capacitive-calibration", kCapacitiveOverloadScenario};
+    return {kPanelScanScenario,          kPanelLineScenario,  kPanelRestScenario,       kPalpationScenario,
+            "capacitive-weights",        "gauge-calibration", "gauge-calibration-soft", "capacitive-calibration",
+            kCapacitiveOverloadScenario, kLoadCellScenario};
 }
 
 std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64_t seed, std::optional<double> rate_hz)
@@ -48,6 +49,12 @@ std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64
         parameters.softBeam = id == "gauge-calibration-soft";
         if (rate_hz) parameters.sampleRate_hz = *rate_hz;
         return std::make_unique<GaugeCalibrationScenario>(parameters);
+    }
+    if (id == kLoadCellScenario) {
+        LoadCellParameters parameters;
+        parameters.seed = seed;
+        if (rate_hz) parameters.sampleRate_hz = *rate_hz;
+        return std::make_unique<LoadCellScenario>(parameters);
     }
     return nullptr;
 }

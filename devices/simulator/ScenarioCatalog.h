@@ -29,6 +29,8 @@ inline const std::string kPanelRestScenario{"panel-rest"};
 // 5 s and 6.5 s.
 inline const std::string kCapacitiveOverloadScenario{"capacitive-overload"};
 
+// A reference load cell (LoadCellScenario.h, kLoadCellScenario) is one
+// too: a second device to calibrate the capacitive beam against.
 std::vector<std::string> scenarioIds();
 
 // A new scenario with default parameters, the given noise seed and, when

@@ -1,0 +1,162 @@
+// ReferencedSweep: roles across a session's devices, and the beam's samples
+// paired with the reference force on the session's clock.
+#include "core/derived/ReferencedSweep.h"
+
+#include "core/modes/ModeDefinition.h"
+#include "core/timing/ClockMappingJson.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace tactiscope::core::derived {
+namespace {
+
+// Every channel of the session, device by device.
+std::vector<SessionChannel> allChannels(storage::SessionSource& store, std::int64_t session)
+{
+    std::vector<std::pair<std::int64_t, const storage::SessionPart*>> sources;
+    const auto parts = store.parts(session);
+    if (parts.empty()) sources.emplace_back(session, nullptr);
+    for (const auto& part : parts) sources.emplace_back(part.id, &part);
+    std::vector<SessionChannel> channels;
+    for (const auto& [source, part] : sources) {
+        const auto stored = store.channels(source);
+        for (std::size_t c = 0; c < stored.size(); ++c)
+            channels.push_back({source, part ? part->deviceName : std::string{}, c, stored[c],
+                                part ? timing::clockMappingFromJson(part->clockJson) : std::nullopt});
+    }
+    return channels;
+}
+
+// Units per SI unit of a stored channel: F for a capacitance, N for a force.
+std::optional<double> siPer(const std::string& unit, std::initializer_list<std::pair<const char*, double>> table)
+{
+    for (const auto& [name, scale] : table)
+        if (unit == name) return scale;
+    return std::nullopt;
+}
+
+struct Series {
+    std::vector<double> t_s, value;
+};
+
+// A channel's samples with their times on the session's clock, gaps left out.
+Series readSeries(storage::SessionSource& store, const SessionChannel& channel, double scale)
+{
+    const std::uint64_t count = store.sampleCount(channel.source);
+    const std::vector<double> values = store.readChannel(channel.source, channel.channel, 0, count);
+    Series series;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (!std::isfinite(values[i])) continue;
+        const double own_s = static_cast<double>(i) / channel.stored.sampleRate_hz;
+        series.t_s.push_back(channel.clock ? channel.clock->host_s(own_s) : own_s);
+        series.value.push_back(values[i] * scale);
+    }
+    return series;
+}
+
+}  // namespace
+
+std::string SessionChannel::label() const
+{
+    return device.empty() ? stored.descriptor.name : device + "/" + stored.descriptor.name;
+}
+
+std::optional<SessionChannel> channelPlaying(storage::SessionSource& store, std::int64_t session, ChannelRole role)
+{
+    const auto channels = allChannels(store, session);
+    for (const auto& channel : channels)
+        if (channel.stored.descriptor.role == role) return channel;
+    for (const auto& channel : channels)
+        if (!channel.stored.descriptor.role && kindCanPlay(channel.stored.descriptor.kind, role)) return channel;
+    return std::nullopt;
+}
+
+std::optional<SessionChannel> channelNamed(storage::SessionSource& store, std::int64_t session,
+                                           const std::string& label)
+{
+    for (auto& channel : allChannels(store, session))
+        if (channel.label() == label) return std::move(channel);
+    return std::nullopt;
+}
+
+ReferencedSweep referencedSweep(storage::SessionSource& store, const SessionChannel& capacitance,
+                                const SessionChannel& reference)
+{
+    const auto farads =
+        siPer(capacitance.stored.descriptor.unit, {{"F", 1.0}, {"nF", 1e-9}, {"pF", 1e-12}, {"fF", 1e-15}});
+    if (!farads)
+        throw std::invalid_argument("the capacitance " + capacitance.label() + " is in '" +
+                                    capacitance.stored.descriptor.unit + "', not F, nF, pF or fF");
+    const auto newtons =
+        siPer(reference.stored.descriptor.unit, {{"N", 1.0}, {"mN", 1e-3}, {"µN", 1e-6}, {"uN", 1e-6}});
+    if (!newtons)
+        throw std::invalid_argument("the reference force " + reference.label() + " is in '" +
+                                    reference.stored.descriptor.unit + "', not N, mN or µN");
+    const Series beam = readSeries(store, capacitance, *farads);
+    const Series force = readSeries(store, reference, *newtons);
+
+    ReferencedSweep result;
+    // Neighbouring reference samples further apart than two of its periods
+    // have a gap between them: nothing is made up across it.
+    const double longest_s = 2.0 / reference.stored.sampleRate_hz;
+    std::size_t j = 0;
+    for (std::size_t i = 0; i < beam.t_s.size(); ++i) {
+        const double t = beam.t_s[i];
+        while (j + 1 < force.t_s.size() && force.t_s[j + 1] <= t) ++j;
+        if (j + 1 >= force.t_s.size() || force.t_s[j] > t || force.t_s[j + 1] - force.t_s[j] > longest_s) {
+            ++result.outsideReference;
+            continue;
+        }
+        const double w = (t - force.t_s[j]) / (force.t_s[j + 1] - force.t_s[j]);
+        result.recording.t_s.push_back(t);
+        result.recording.capacitance_f.push_back(beam.value[i]);
+        result.recording.load_n.push_back(force.value[j] + w * (force.value[j + 1] - force.value[j]));
+    }
+    if (result.recording.t_s.size() < 3)
+        throw std::invalid_argument("the reference force " + reference.label() + " and the capacitance " +
+                                    capacitance.label() + " share fewer than three instants");
+
+    // The steepest change between the means of consecutive half seconds:
+    // a difference of single samples would be the cell's noise.
+    const auto block = std::max<std::size_t>(1, static_cast<std::size_t>(0.5 * reference.stored.sampleRate_hz));
+    std::optional<std::pair<double, double>> previous;  // mean time, mean force
+    for (std::size_t k = 0; k + block <= force.t_s.size(); k += block) {
+        double t = 0.0, f = 0.0;
+        for (std::size_t i = k; i < k + block; ++i) {
+            t += force.t_s[i];
+            f += force.value[i];
+        }
+        const std::pair mean{t / static_cast<double>(block), f / static_cast<double>(block)};
+        if (previous && mean.first - previous->first < 2.0 * 0.5 + longest_s)  // not across a gap
+            result.steepest_n_per_s = std::max(result.steepest_n_per_s, std::abs(mean.second - previous->second) /
+                                                                            (mean.first - previous->first));
+        previous = mean;
+    }
+
+    if (capacitance.source == reference.source) {
+        result.clockUncertainty_s = 0.0;
+    } else {
+        // Each device's own time at the recording's ends: a mapping's u
+        // grows away from its middle, so its largest is at one of them.
+        double largest = 0.0;
+        bool stated = true;
+        for (const double t : {result.recording.t_s.front(), result.recording.t_s.back()}) {
+            double squares = 0.0;
+            for (const SessionChannel* channel : {&capacitance, &reference}) {
+                const auto u =
+                    channel->clock ? channel->clock->uncertainty_s(t - channel->clock->offset_s) : std::nullopt;
+                stated = stated && u.has_value();
+                squares += u ? *u * *u : 0.0;
+            }
+            largest = std::max(largest, std::sqrt(squares));
+        }
+        if (stated) result.clockUncertainty_s = largest;
+    }
+    return result;
+}
+
+}  // namespace tactiscope::core::derived
