@@ -2,6 +2,7 @@
 // paired with the reference force on the session's clock.
 #include "core/derived/ReferencedSweep.h"
 
+#include "core/calibration/ReferencePairing.h"
 #include "core/modes/ModeDefinition.h"
 #include "core/timing/ClockMappingJson.h"
 
@@ -43,14 +44,13 @@ struct Series {
     std::vector<double> t_s, value;
 };
 
-// A channel's samples with their times on the session's clock, gaps left out.
+// A channel's samples with their times on the session's clock (NaN in gaps).
 Series readSeries(storage::SessionSource& store, const SessionChannel& channel, double scale)
 {
     const std::uint64_t count = store.sampleCount(channel.source);
     const std::vector<double> values = store.readChannel(channel.source, channel.channel, 0, count);
     Series series;
     for (std::size_t i = 0; i < values.size(); ++i) {
-        if (!std::isfinite(values[i])) continue;
         const double own_s = static_cast<double>(i) / channel.stored.sampleRate_hz;
         series.t_s.push_back(channel.clock ? channel.clock->host_s(own_s) : own_s);
         series.value.push_back(values[i] * scale);
@@ -98,64 +98,18 @@ ReferencedSweep referencedSweep(storage::SessionSource& store, const SessionChan
                                     reference.stored.descriptor.unit + "', not N, mN or µN");
     const Series beam = readSeries(store, capacitance, *farads);
     const Series force = readSeries(store, reference, *newtons);
-
+    calibration::PairedSweep paired =
+        calibration::pairWithReference(beam.t_s, beam.value, force.t_s, force.value, reference.stored.sampleRate_hz);
     ReferencedSweep result;
-    // Neighbouring reference samples further apart than two of its periods
-    // have a gap between them: nothing is made up across it.
-    const double longest_s = 2.0 / reference.stored.sampleRate_hz;
-    std::size_t j = 0;
-    for (std::size_t i = 0; i < beam.t_s.size(); ++i) {
-        const double t = beam.t_s[i];
-        while (j + 1 < force.t_s.size() && force.t_s[j + 1] <= t) ++j;
-        if (j + 1 >= force.t_s.size() || force.t_s[j] > t || force.t_s[j + 1] - force.t_s[j] > longest_s) {
-            ++result.outsideReference;
-            continue;
-        }
-        const double w = (t - force.t_s[j]) / (force.t_s[j + 1] - force.t_s[j]);
-        result.recording.t_s.push_back(t);
-        result.recording.capacitance_f.push_back(beam.value[i]);
-        result.recording.load_n.push_back(force.value[j] + w * (force.value[j + 1] - force.value[j]));
-    }
-    if (result.recording.t_s.size() < 3)
-        throw std::invalid_argument("the reference force " + reference.label() + " and the capacitance " +
-                                    capacitance.label() + " share fewer than three instants");
+    result.recording = std::move(paired.recording);
+    result.outsideReference = paired.outsideReference;
+    result.steepest_n_per_s = paired.steepest_n_per_s;
 
-    // The steepest change between the means of consecutive half seconds:
-    // a difference of single samples would be the cell's noise.
-    const auto block = std::max<std::size_t>(1, static_cast<std::size_t>(0.5 * reference.stored.sampleRate_hz));
-    std::optional<std::pair<double, double>> previous;  // mean time, mean force
-    for (std::size_t k = 0; k + block <= force.t_s.size(); k += block) {
-        double t = 0.0, f = 0.0;
-        for (std::size_t i = k; i < k + block; ++i) {
-            t += force.t_s[i];
-            f += force.value[i];
-        }
-        const std::pair mean{t / static_cast<double>(block), f / static_cast<double>(block)};
-        if (previous && mean.first - previous->first < 2.0 * 0.5 + longest_s)  // not across a gap
-            result.steepest_n_per_s = std::max(result.steepest_n_per_s, std::abs(mean.second - previous->second) /
-                                                                            (mean.first - previous->first));
-        previous = mean;
-    }
-
-    if (capacitance.source == reference.source) {
+    if (capacitance.source == reference.source)
         result.clockUncertainty_s = 0.0;
-    } else {
-        // Each device's own time at the recording's ends: a mapping's u
-        // grows away from its middle, so its largest is at one of them.
-        double largest = 0.0;
-        bool stated = true;
-        for (const double t : {result.recording.t_s.front(), result.recording.t_s.back()}) {
-            double squares = 0.0;
-            for (const SessionChannel* channel : {&capacitance, &reference}) {
-                const auto u =
-                    channel->clock ? channel->clock->uncertainty_s(t - channel->clock->offset_s) : std::nullopt;
-                stated = stated && u.has_value();
-                squares += u ? *u * *u : 0.0;
-            }
-            largest = std::max(largest, std::sqrt(squares));
-        }
-        if (stated) result.clockUncertainty_s = largest;
-    }
+    else if (capacitance.clock && reference.clock)
+        result.clockUncertainty_s = timing::relativeUncertainty_s(
+            *capacitance.clock, *reference.clock, result.recording.t_s.front(), result.recording.t_s.back());
     return result;
 }
 

@@ -5,7 +5,7 @@
 // linearly between its own samples; each device's time mapped by its
 // stored clock). What the pairing cannot know, it says: the two clocks'
 // relative uncertainty and the force it can shift a pairing by on the
-// sweep's steepest part.
+// sweep's steepest part. The pairing itself is core/calibration/ReferencePairing.
 #pragma once
 
 #include "core/ChannelDescriptor.h"
@@ -51,7 +51,8 @@ struct ReferencedSweep {
 };
 
 // Throws std::invalid_argument for a capacitance channel not in F, pF, nF
-// or fF, a reference not in N, mN, µN (uN), or fewer than three paired samples.
+// or fF, a reference not in N, mN, µN (uN), or fewer than three paired
+// samples.
 ReferencedSweep referencedSweep(storage::SessionSource& store, const SessionChannel& capacitance,
                                 const SessionChannel& reference);
 

@@ -128,6 +128,20 @@ std::optional<double> ClockMapping::uncertainty_s(double device_s) const
     return std::hypot(offset_u_s, drift_u * (device_s - reference_s));
 }
 
+std::optional<double> relativeUncertainty_s(const ClockMapping& a, const ClockMapping& b, double from_s, double to_s)
+{
+    std::optional<double> largest;
+    for (const double host_s : {from_s, to_s}) {
+        // A mapping's own time there: the drift's part of it is far below
+        // what moves its uncertainty.
+        const auto ua = a.uncertainty_s(host_s - a.offset_s);
+        const auto ub = b.uncertainty_s(host_s - b.offset_s);
+        if (!ua || !ub) return std::nullopt;
+        largest = std::max(largest.value_or(0.0), std::hypot(*ua, *ub));
+    }
+    return largest;
+}
+
 std::size_t ClockAlignment::pointsKept() const
 {
     std::size_t kept = 0;

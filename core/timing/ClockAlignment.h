@@ -71,6 +71,13 @@ struct ClockMapping {
     std::optional<double> uncertainty_s(double device_s) const;
 };
 
+// How well two devices' mapped times agree between the host instants
+// `from_s` and `to_s`: the two mappings' standard uncertainties combined
+// (they were estimated apart), at their largest there — a mapping's grows
+// away from its middle, so at one of the ends. None when either states
+// none.
+std::optional<double> relativeUncertainty_s(const ClockMapping& a, const ClockMapping& b, double from_s, double to_s);
+
 inline constexpr double kClockBin_s = 0.25;
 inline constexpr double kClockWindow_s = 600.0;
 inline constexpr std::size_t kClockSegments = 20;

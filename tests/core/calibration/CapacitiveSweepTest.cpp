@@ -6,6 +6,7 @@
 // times; a sweep that does not start unloaded, a reference that never
 // moves and an unsettled start are refused.
 #include "core/calibration/CapacitiveSweep.h"
+#include "core/calibration/ReferencePairing.h"
 
 #include <gtest/gtest.h>
 
@@ -154,4 +155,28 @@ TEST(CapacitiveSweepTest, RefusesWhatIsNoCalibrationSweep)
     CapacitiveRecording untimed = record({});
     untimed.t_s.clear();
     EXPECT_THROW(stepsFromSweep(untimed, settings()), std::invalid_argument);
+}
+
+// The pairing against a reference known everywhere: a force rising 2 N/s,
+// sampled at 10 Hz with a second missing; beam samples inside it, in the
+// gap and beyond the ends.
+TEST(ReferencePairingTest, InterpolatesInsideTheReferenceAndMakesNothingUpAcrossItsGapsOrEnds)
+{
+    std::vector<double> rt, rf;
+    for (int i = 0; i <= 100; ++i) {
+        const double t = 0.1 * i;
+        rt.push_back(t);
+        rf.push_back(t >= 4.0 && t < 5.0 ? std::nan("") : 2.0 * t);  // a gap from 4 s to 5 s
+    }
+    const std::vector<double> bt{-0.5, 0.05, 1.234, 3.95, 4.5, 5.05, 9.999, 10.5};
+    const std::vector<double> bc{1, 2, 3, 4, 5, 6, 7, 8};
+    const PairedSweep paired = pairWithReference(bt, bc, rt, rf, 10.0);
+    EXPECT_EQ(paired.outsideReference, 4u);  // before, in the gap (twice: 3.95 and 4.5 lie between 3.9 and 5.0), after
+    ASSERT_EQ(paired.recording.t_s.size(), 4u);
+    const std::vector<double> expected{0.1, 2.468, 10.1, 19.998};
+    for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_NEAR(paired.recording.load_n[i], expected[i], 1e-9) << i;
+    EXPECT_EQ(paired.recording.capacitance_f, (std::vector<double>{2, 3, 6, 7}));
+    EXPECT_NEAR(paired.steepest_n_per_s, 2.0, 1e-9);
+    EXPECT_THROW(pairWithReference(bt, bc, rt, rf, 0.0), std::invalid_argument);
+    EXPECT_THROW(pairWithReference({bt.data(), 1}, {bc.data(), 1}, rt, rf, 10.0), std::invalid_argument);
 }

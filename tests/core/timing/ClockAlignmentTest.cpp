@@ -22,6 +22,8 @@
 
 using tactiscope::core::timing::ClockAlignment;
 using tactiscope::core::timing::ClockMapping;
+using tactiscope::core::timing::ClockUncertaintyBasis;
+using tactiscope::core::timing::relativeUncertainty_s;
 
 namespace {
 
@@ -281,4 +283,24 @@ TEST(ClockAlignment, StatesNoUncertaintyOnTooFewFramesAndABoundOnADeliveryLocked
                     << frames_hz << " frames/s, " << seconds << " s, at " << d;
         }
     EXPECT_EQ(bounded, 5);
+}
+
+// Two mappings' relative uncertainty, by hand: offsets' u of 3 and 4 µs
+// at their references and drifts' u of 1 and 0 ppm; 100 s from the first
+// one's reference its u is √(3² + 100²) µs.
+TEST(ClockAlignment, TwoMappingsAgreeWithinTheirUncertaintiesCombinedAndStateNothingWhenOneStatesNothing)
+{
+    ClockMapping a;
+    a.basis = ClockUncertaintyBasis::Spread;
+    a.offset_u_s = 3e-6;
+    a.drift_u = 1e-6;
+    ClockMapping b = a;
+    b.offset_u_s = 4e-6;
+    b.drift_u = 0.0;
+    ASSERT_TRUE(relativeUncertainty_s(a, b, 0.0, 0.0));
+    EXPECT_NEAR(*relativeUncertainty_s(a, b, 0.0, 0.0), 5e-6, 1e-12);
+    EXPECT_NEAR(*relativeUncertainty_s(a, b, 0.0, 100.0), std::sqrt(9e-12 + 1e-8 + 16e-12), 1e-12);
+    EXPECT_NEAR(*relativeUncertainty_s(a, b, -100.0, 50.0), std::sqrt(9e-12 + 1e-8 + 16e-12), 1e-12);
+    b.basis = ClockUncertaintyBasis::TooFewFrames;
+    EXPECT_FALSE(relativeUncertainty_s(a, b, 0.0, 10.0));
 }
