@@ -667,13 +667,13 @@ void MainWindow::calibrate(core::Mode mode)
         statusBar()->showMessage(tr("Stop recording first: a session keeps the calibration it started with."), 6000);
         return;
     }
-    CalibrationContext context{m_session->buffer(),
-                               m_session->channels(),
-                               m_session->source().nominalSampleRate_hz(),
-                               m_loadRig,
-                               m_store,
-                               QString::fromStdString(m_sessionBar->metadata().operatorName),
-                               ProfileLibrary::defaultDirectory()};
+    CalibrationContext context{m_session->buffer(), m_session->channels(), m_session->source().nominalSampleRate_hz(),
+                               m_loadRig, m_store, QString::fromStdString(m_sessionBar->metadata().operatorName),
+                               ProfileLibrary::defaultDirectory(),
+                               // The device's clock while it is this session's (a wizard may outlive it).
+                               [this, session = m_session.get()] {
+                                   return m_session.get() == session ? session->source().hostClock() : std::nullopt;
+                               }};
     openCalibrationWizard(mode, std::move(context), this, [this, mode](const QString& sensor) {
         if (m_session) {
             if (const auto problem = m_session->reloadCalibrations(mode))

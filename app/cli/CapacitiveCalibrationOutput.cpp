@@ -25,6 +25,7 @@ void writeCapacitiveJson(const calibration::CapacitiveCalibrationResult& result,
         json.key("reference_zero_n").value(sweep->zero_n);
         json.key("sweep_span_n").value(sweep->span_n);
         json.key("sweep_turns").value(static_cast<long long>(sweep->turns));
+        json.key("beam_lag_s").value(sweep->lag_s);
         json.key("paired_samples").value(static_cast<long long>(sweep->paired));
         json.key("unpaired_samples").value(static_cast<long long>(sweep->outside));
         json.key("clock_u_s");
@@ -76,14 +77,14 @@ void writeCapacitiveText(const calibration::CapacitiveCalibrationResult& result,
             << toQString(sweep->capacitance) << "; sweep to " << QString::number(sweep->span_n * 1e3, 'f', 4) << " mN, "
             << sweep->turns << (sweep->turns == 1 ? " turn; " : " turns; ") << sweep->paired << " samples paired";
         if (sweep->outside > 0) out << ", " << sweep->outside << " outside the reference's samples (left out)";
-        out << '\n';
+        out << "\nlag: the beam settles behind the reference with τ = " << QString::number(sweep->lag_s, 'f', 3)
+            << " s (a first-order lag), taken out before the points are binned\n";
         if (sweep->clockUncertainty_s && *sweep->clockUncertainty_s > 0.0)  // two devices' clocks
             out << "timing: the two clocks agree within ±" << QString::number(*sweep->clockUncertainty_s * 1e3, 'f', 3)
                 << " ms (standard), at most "
                 << QString::number(*sweep->clockUncertainty_s * sweep->steepest_n_per_s * 1e6, 'f', 3)
                 << " µN on the sweep's steepest part (" << QString::number(sweep->steepest_n_per_s * 1e6, 'f', 1)
-                << " µN/s); loading and unloading take it with opposite signs, so it widens the hysteresis, not the "
-                   "slope\n";
+                << " µN/s); an offset between the clocks acts as a lag, and goes out with the beam's\n";
     }
     out << "C0: " << QString::number(result.c0_f * 1e12, 'f', 4) << " pF (baseline σ "
         << QString::number(result.baselineSigma_f * 1e12, 'f', 4) << " pF over " << steps.input.baseline.count

@@ -19,6 +19,7 @@ struct SweepReport {
     double zero_n = 0.0;
     double span_n = 0.0;
     std::size_t turns = 0;
+    double lag_s = 0.0;       // the beam's time constant, taken out
     std::size_t paired = 0;   // beam samples with a reference value
     std::size_t outside = 0;  // without one, left out
     std::optional<double> clockUncertainty_s;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 #include <stdexcept>
 
@@ -67,6 +68,59 @@ std::vector<std::size_t> turningPoints(std::span<const double> force, double tur
     return turns;
 }
 
+// The force a beam that settles as a first-order lag of time constant
+// `tau` feels, sample by sample (tau 0: the force itself).
+std::vector<double> felt(std::span<const double> t, std::span<const double> force, double tau)
+{
+    std::vector<double> out(force.begin(), force.end());
+    if (!(tau > 0.0)) return out;
+    for (std::size_t i = 1; i < out.size(); ++i)
+        out[i] = out[i - 1] + (force[i] - out[i - 1]) * (1.0 - std::exp(-(t[i] - t[i - 1]) / tau));
+    return out;
+}
+
+// The scatter of the samples [begin, end) about one straight line of
+// capacitance against force: a lag left in spreads loading and unloading
+// apart, so the right one makes it least.
+double scatterAboutLine(std::span<const double> force, std::span<const double> c, std::size_t begin, std::size_t end)
+{
+    double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0, syy = 0.0;
+    const double c0 = c[begin];  // (centred: farads are tiny next to their sums of squares)
+    for (std::size_t i = begin; i < end; ++i) {
+        const double x = force[i], y = c[i] - c0;
+        n += 1.0;
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
+        syy += y * y;
+    }
+    if (n < 3.0) return std::numeric_limits<double>::infinity();
+    const double vx = sxx - sx * sx / n, vxy = sxy - sx * sy / n, vy = syy - sy * sy / n;
+    return vx > 0.0 ? (vy - vxy * vxy / vx) / n : std::numeric_limits<double>::infinity();
+}
+
+// The beam's time constant within [0, most]: a grid of 20 ms, then of
+// 1 ms about its best.
+double lagOf(const CapacitiveRecording& r, std::span<const double> force, std::size_t begin, std::size_t end,
+             double most)
+{
+    double best = 0.0;
+    double least = scatterAboutLine(force, r.capacitance_f, begin, end);
+    for (const double step : {0.02, 0.001}) {
+        const double from = step == 0.02 ? step : std::max(step, best - 0.02);
+        const double to = step == 0.02 ? most : best + 0.02;
+        for (double tau = from; tau <= to + step / 2; tau += step) {
+            const double scatter = scatterAboutLine(felt(r.t_s, force, tau), r.capacitance_f, begin, end);
+            if (scatter < least) {
+                least = scatter;
+                best = tau;
+            }
+        }
+    }
+    return best;
+}
+
 }  // namespace
 
 SweepSteps stepsFromSweep(const CapacitiveRecording& r, const SweepSettings& settings)
@@ -110,11 +164,15 @@ SweepSteps stepsFromSweep(const CapacitiveRecording& r, const SweepSettings& set
         out.finalShift_f = final->mean - baseline->mean;
     }
 
-    const std::span<const double> loaded(force.data() + begin, end - begin);
-    result.span_n = *std::ranges::max_element(loaded);
+    // The force each sample felt: the reference's, through the beam's lag.
+    if (settings.maxLag_s > 0.0) result.lag_s = lagOf(r, force, begin, end, settings.maxLag_s);
+    const std::vector<double> feltForce = felt(r.t_s, force, result.lag_s);
+    const std::span<const double> loaded(feltForce.data() + begin, end - begin);
+    result.span_n = *std::ranges::max_element(std::span<const double>(force.data() + begin, end - begin));
     const std::vector<std::size_t> turns = turningPoints(loaded, settings.turnFraction * result.span_n);
     result.turns = turns.size();
-    const double width = result.span_n / static_cast<double>(settings.bins);
+    // The bins span what the beam felt (a lag rounds the peak off).
+    const double width = *std::ranges::max_element(loaded) / static_cast<double>(settings.bins);
     // Each direction's samples by bin: loading until the first turn, then
     // each turn swaps.
     std::vector<std::vector<std::size_t>> bins(2 * settings.bins);
@@ -133,7 +191,7 @@ SweepSteps stepsFromSweep(const CapacitiveRecording& r, const SweepSettings& set
         if (members.size() < settings.minimumPerBin) continue;
         std::vector<double> f, c, t;
         for (const std::size_t i : members) {
-            f.push_back(force[i]);
+            f.push_back(feltForce[i]);
             c.push_back(r.capacitance_f[i]);
             t.push_back(r.t_s[i]);
         }

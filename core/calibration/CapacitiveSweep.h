@@ -15,9 +15,15 @@
 //   through the bin's samples), so loading and unloading meet at the same
 //   loads and give the hysteresis as weights placed and removed do.
 //
-// A beam that lags the sweep (the soft silicone settling, its creep) reads
-// low while loading and high while unloading: the points' scatter, and so
-// the slope's ±, carries it, and the hysteresis shows it.
+// A beam lags a sweep (the soft beam settles in about 0.4 s): it reads low
+// while loading and high while unloading, by the force the sweep moves in
+// that time, several per cent of full scale at a brisk pace — a property
+// of the pace, not of the beam's static sensitivity. The beam is taken to
+// settle as a first-order lag; the time constant that puts loading and
+// unloading on one line (the least scatter about it, within maxLag_s) is
+// found, stated, and the reference passed through it before binning. What
+// stays apart is the silicone's own hysteresis (its slow creep), as weights
+// show it; a lag from the two devices' clocks is taken out with it.
 #pragma once
 
 #include "core/calibration/CapacitiveSteps.h"
@@ -31,6 +37,7 @@ struct SweepSettings {
     std::size_t minimumPerBin = 5;     // samples a bin needs to give a point
     double unloadedFraction = 0.02;    // of the span: at or below it, the beam is unloaded
     double turnFraction = 0.05;        // of the span: a turn of the sweep
+    double maxLag_s = 3.0;             // the beam's time constant looked for; 0: none taken out
     StabilitySettings stability = {};  // the baselines' (capacitiveStabilityDefaults)
 };
 
@@ -39,6 +46,7 @@ struct SweepSteps {
     double referenceZero_n = 0.0;  // the reference's mean over the unloaded start, taken off
     double span_n = 0.0;           // the largest reference force, from that zero
     std::size_t turns = 0;         // the sweep's turning points (1: up once, then down)
+    double lag_s = 0.0;            // the beam's time constant, taken out
     std::size_t samplesUsed = 0;   // loaded samples in a bin that gave a point
 };
 

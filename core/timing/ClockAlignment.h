@@ -67,6 +67,8 @@ struct ClockMapping {
     double drift_u = 0.0;
 
     double host_s(double device_s) const { return device_s + offset_s + drift * (device_s - reference_s); }
+    // The inverse: the device time of a host instant.
+    double device_s(double host_s) const { return (host_s - offset_s + drift * reference_s) / (1.0 + drift); }
     // The standard uncertainty of host_s(device_s); none on too few frames.
     std::optional<double> uncertainty_s(double device_s) const;
 };

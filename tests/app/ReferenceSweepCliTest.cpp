@@ -94,9 +94,12 @@ TEST(ReferenceSweepCli, TheBeamCalibratedAgainstALoadCellOnAnotherDeviceAgreesWi
         << w["sensitivity_pf_per_mn"].toDouble() << " ± " << uw;
     // One beam: one C0, within the baselines' wander of a minute.
     EXPECT_NEAR(s["c0_pf"].toDouble(), w["c0_pf"].toDouble(), 0.05);
-    // The beam lags a sweep (0.4 s to settle): loading and unloading apart
-    // by about 2 × 0.4 s × 74 µN/s of 1.47 mN, which weights never show.
-    EXPECT_GT(s["hysteresis_fraction"].toDouble(), 0.02);
+    // The beam lags a sweep: the simulated beam settles with τ = 0.4 s, and
+    // its silicone's creep (1 %, 4 s) lengthens the lag found a little.
+    // Taken out, loading and unloading are as close as the weights'.
+    EXPECT_GE(s["beam_lag_s"].toDouble(), 0.39);
+    EXPECT_LE(s["beam_lag_s"].toDouble(), 0.55);
+    EXPECT_LT(s["hysteresis_fraction"].toDouble(), 0.01);
     EXPECT_LT(w["hysteresis_fraction"].toDouble(), 0.01);
 
     // Named, the same channels give the same calibration; a name that is

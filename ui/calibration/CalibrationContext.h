@@ -1,17 +1,20 @@
 // What a calibration wizard works with: the connected device's live samples
-// and channels, the simulator's load rig when the device is the simulator,
-// the window's store worker its record goes to, who calibrates and where
-// the profiles are.
+// and channels, its clock on the host's, the simulator's load rig when the
+// device is the simulator, the window's store worker its record goes to,
+// who calibrates and where the profiles are.
 #pragma once
 
 #include "core/ChannelDescriptor.h"
 #include "core/LiveBuffer.h"
 #include "core/storage/StoreWorker.h"
+#include "core/timing/ClockAlignment.h"
 #include "devices/simulator/LoadRig.h"
 
 #include <QString>
 
+#include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace tactiscope::ui {
@@ -26,6 +29,10 @@ struct CalibrationContext {
     std::shared_ptr<core::storage::StoreWorker> store;
     QString operatorName;
     QString profileDirectory;
+    // The device's clock on the host's steady clock, as now estimated
+    // (devices::BlockSource::hostClock), for pairing its samples with
+    // another device's; unset or none: not known.
+    std::function<std::optional<core::timing::ClockMapping>()> hostClock;
 };
 
 }  // namespace tactiscope::ui

@@ -299,6 +299,13 @@ void CalibrationWizard::retake(int row)
     capture();
 }
 
+void CalibrationWizard::setLoads(std::vector<Load> loads)
+{
+    m_loads = std::move(loads);
+    m_retakeIndex.reset();
+    refit();
+}
+
 void CalibrationWizard::remove(int row)
 {
     m_loads.erase(m_loads.begin() + row);

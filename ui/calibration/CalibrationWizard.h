@@ -131,6 +131,8 @@ protected:
     // standard error's, so the zero reads alike on every page ("120.056").
     int meanDecimals(const core::calibration::WindowStatistics& window) const;
     const std::vector<Load>& loads() const { return m_loads; }
+    // Replaces every load at once (a sweep's points) and fits them.
+    void setLoads(std::vector<Load> loads);
     CapturePanel* panel() const { return m_panel; }
     QVBoxLayout* resultLayout() const { return m_resultLayout; }
     // The next stable window goes to `use`, once; the loads page waits.

@@ -12,15 +12,29 @@
 #include "core/calibration/CapacitiveCalibration.h"
 #include "ui/calibration/CalibrationWizard.h"
 
+#include <QString>
+
+#include <memory>
 #include <optional>
 
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QRadioButton;
+class QTimer;
+
 namespace tactiscope::ui {
+
+class ReferenceLink;
+class SweepCapture;
 
 class CapacitiveWizard : public CalibrationWizard {
     Q_OBJECT
 
 public:
     explicit CapacitiveWizard(CalibrationContext context, QWidget* parent = nullptr);
+    ~CapacitiveWizard() override;
 
     const std::optional<core::calibration::CapacitiveCalibrationResult>& result() const { return m_result; }
 
@@ -41,6 +55,40 @@ private:
     // The final zero, when it was taken after the zero the loads are
     // measured from (a final zero older than a retaken zero is stale).
     std::optional<core::calibration::WindowStatistics> finalZero() const;
+
+    // The sweep against a reference force.
+    struct Sweep {
+        QString reference;  // "force (load cell)"
+        double zero_n = 0.0;
+        double span_n = 0.0;
+        std::size_t turns = 0;
+        double lag_s = 0.0;  // the beam's time constant, taken out
+        std::size_t paired = 0;
+        std::optional<double> clockUncertainty_s;
+        double steepest_n_per_s = 0.0;
+        std::optional<core::calibration::WindowStatistics> finalBaseline;
+    };
+    CheckedPage* createMethodPage();
+    bool sweeping() const;
+    void listReferences();
+    void connectReference();
+    void showMethod(int page);
+    void startSweep();
+    void pollSweep();
+    void finishSweep();
+    QString sweepHtml() const;
+
+    QRadioButton* m_bySweep = nullptr;
+    QComboBox* m_reference = nullptr;
+    QLineEdit* m_referencePath = nullptr;
+    QLabel* m_referenceStatus = nullptr;
+    QPushButton* m_finalZeroButton = nullptr;
+    QPushButton* m_startSweep = nullptr;
+    QPushButton* m_finishSweep = nullptr;
+    QTimer* m_sweepTimer = nullptr;
+    ReferenceLink* m_link = nullptr;
+    std::unique_ptr<SweepCapture> m_capture;
+    std::optional<Sweep> m_sweep;
 
     std::optional<core::calibration::WindowStatistics> m_finalZero;
     std::optional<core::calibration::CapacitiveCalibrationResult> m_result;

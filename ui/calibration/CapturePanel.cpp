@@ -19,6 +19,7 @@ CapturePanel::CapturePanel(const StabilityWatch* watch, const DisplayUnit& signa
                            const std::vector<std::pair<QString, int>>& loadUnits, const QStringList& columns,
                            QWidget* parent)
     : QWidget(parent),
+      m_entry(new QWidget(this)),
       m_value(new QDoubleSpinBox(this)),
       m_unit(new QComboBox(this)),
       m_capture(new QPushButton(tr("&Capture"), this)),
@@ -50,7 +51,8 @@ CapturePanel::CapturePanel(const StabilityWatch* watch, const DisplayUnit& signa
     auto* indicator = new StabilityIndicator(watch, this);
     indicator->setUnit(signalUnit);
 
-    auto* entry = new QHBoxLayout;
+    auto* entry = new QHBoxLayout(m_entry);
+    entry->setContentsMargins(0, 0, 0, 0);
     auto* loadLabel = new QLabel(tr("&Load"), this);
     loadLabel->setBuddy(m_value);
     entry->addWidget(loadLabel);
@@ -62,7 +64,7 @@ CapturePanel::CapturePanel(const StabilityWatch* watch, const DisplayUnit& signa
     m_buttonRow->addWidget(m_remove);
     m_buttonRow->addStretch();
     auto* left = new QVBoxLayout;
-    left->addLayout(entry);
+    left->addWidget(m_entry);
     left->addWidget(indicator);
     left->addWidget(m_status);
     left->addWidget(m_table, 1);
@@ -82,6 +84,13 @@ CapturePanel::CapturePanel(const StabilityWatch* watch, const DisplayUnit& signa
     connect(m_remove, &QPushButton::clicked, this, [this] {
         if (selectedRow() >= 0) emit removeRequested(selectedRow());
     });
+}
+
+void CapturePanel::setLoadsByHand(bool byHand)
+{
+    m_entry->setVisible(byHand);
+    m_retake->setVisible(byHand);
+    m_remove->setVisible(byHand);
 }
 
 double CapturePanel::loadValue() const

@@ -46,6 +46,9 @@ public:
     int selectedRow() const;
     void setFitSummary(const QString& text);
     CalibrationPlot* plot() const { return m_plot; }
+    // Whether the loads are entered and captured one by one (the entry,
+    // Retake and Remove shown) or come all at once from elsewhere (a sweep).
+    void setLoadsByHand(bool byHand);
     // Puts a button at the right end of the Retake / Remove row.
     void addButton(QPushButton* button);
     // Back to the load entry, its text selected, for the next value.
@@ -57,6 +60,7 @@ signals:
     void removeRequested(int row);
 
 private:
+    QWidget* m_entry;  // the load, its unit and Capture
     QDoubleSpinBox* m_value;
     QComboBox* m_unit;
     QPushButton* m_capture;

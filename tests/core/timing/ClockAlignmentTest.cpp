@@ -304,3 +304,13 @@ TEST(ClockAlignment, TwoMappingsAgreeWithinTheirUncertaintiesCombinedAndStateNot
     b.basis = ClockUncertaintyBasis::TooFewFrames;
     EXPECT_FALSE(relativeUncertainty_s(a, b, 0.0, 10.0));
 }
+
+TEST(ClockAlignment, AMappingsInverseGivesTheDeviceTimeBack)
+{
+    ClockMapping m;
+    m.reference_s = 12.0;
+    m.offset_s = 0.5;
+    m.drift = 80e-6;
+    for (const double device : {-3.0, 0.0, 12.0, 3600.0}) EXPECT_NEAR(m.device_s(m.host_s(device)), device, 1e-12);
+    EXPECT_NEAR(m.device_s(112.5 + 80e-4), 112.0, 1e-12);  // 100 s past its reference, 8 ms later on the host
+}
