@@ -53,6 +53,9 @@ protected:
     {
         ASSERT_TRUE(tactiscope::testing::showActive(wizard));
         pressMnemonic(wizard, Qt::Key_N);
+        ASSERT_EQ(wizard.currentId(), ui::CapacitiveWizard::SetupPage);  // weights, by default
+        ASSERT_TRUE(pageComplete(wizard));
+        pressMnemonic(wizard, Qt::Key_N);
         ASSERT_EQ(wizard.currentId(), ui::CapacitiveWizard::ZeroPage);
         ASSERT_TRUE(waitFor([&] { return pageComplete(wizard); }, 15000)) << "no stable zero";
         pressMnemonic(wizard, Qt::Key_N);

@@ -155,7 +155,9 @@ CheckedPage* CapacitiveWizard::createMethodPage()
     auto* form = new QFormLayout(sweepBox);
     form->setContentsMargins(24, 0, 0, 0);
     form->addRow(tr("&Reference"), m_reference);
-    form->addRow(tr("Another &device"), other);
+    auto* otherLabel = new QLabel(tr("Another &device"), page);
+    otherLabel->setBuddy(m_referencePath);
+    form->addRow(otherLabel, other);
     form->addRow(m_referenceStatus);
     auto* layout = new QVBoxLayout(page);
     layout->addWidget(byWeights);
@@ -231,6 +233,10 @@ void CapacitiveWizard::showMethod(int page)
         return;
     }
     const bool sweep = sweeping();
+    currentPage()->setSubTitle(
+        sweep ? tr("One sweep from nothing to full scale and back, read by the reference force. Its samples are "
+                   "gathered in ten bins each way; each bin's capacitance at its middle force is a point.")
+              : capacitiveWords().loadsSubTitle);
     panel()->setLoadsByHand(!sweep);
     m_finalZeroButton->setVisible(!sweep);
     m_startSweep->setVisible(sweep);
@@ -366,6 +372,7 @@ double CapacitiveWizard::forceOf(const Load& load) const
 
 QString CapacitiveWizard::loadText(const Load& load) const
 {
+    if (m_sweep) return tr("%1 mgf").arg(significant(load.value, 4));  // a bin's middle, not a typed load
     return static_cast<Unit>(load.unit) == Unit::Grams ? tr("%1 g").arg(typedText(load.value))
                                                        : tr("%1 mgf").arg(typedText(load.value));
 }

@@ -60,7 +60,9 @@ void ReferenceLink::start(std::unique_ptr<devices::BlockSource> source)
 {
     m_channels = source->channels();
     m_rate_hz = source->nominalSampleRate_hz();
-    m_name = QString::fromStdString(source->name());
+    // Its model and serial: what tells two boards apart, without the port.
+    const devices::DeviceIdentity identity = source->identity();
+    m_name = QString::fromStdString(identity.serial.empty() ? identity.model : identity.model + " " + identity.serial);
     const auto kept = static_cast<std::size_t>(std::max(1.0, m_rate_hz * kKept_s));
     m_buffer = std::make_shared<core::LiveBuffer>(std::max<std::size_t>(1, m_channels.size()), kept);
     m_acquisition = std::make_unique<devices::Acquisition>(std::move(source));
