@@ -81,6 +81,11 @@ bool referenceFits(const core::ChannelDescriptor& c)
            newtonsPer(c.unit).has_value();
 }
 
+QString turnsText(std::size_t turns)
+{
+    return turns == 1 ? QObject::tr("1 turn") : QObject::tr("%1 turns").arg(turns);
+}
+
 constexpr int kOnLinkRole = Qt::UserRole + 1;  // the reference box's: on the other device
 
 // A sweep is over once the reference has been back at rest this long: the
@@ -312,9 +317,8 @@ void CapacitiveWizard::finishSweep()
                         paired.clockUncertainty_s,
                         paired.sweep.steepest_n_per_s,
                         steps.steps.input.finalBaseline};
-        panel()->setStatus(tr("Sweep to %1 mN, %n turn(s), %2 samples paired: its points are below.", "",
-                              static_cast<int>(steps.turns))
-                               .arg(fixedText(steps.span_n * 1e3, 4))
+        panel()->setStatus(tr("Sweep to %1 mN, %2, %3 samples paired: its points are below.")
+                               .arg(fixedText(steps.span_n * 1e3, 4), turnsText(steps.turns))
                                .arg(paired.sweep.recording.t_s.size()));
         setLoads(std::move(points));
     } catch (const std::invalid_argument& e) {
@@ -406,11 +410,11 @@ QString CapacitiveWizard::sweepHtml() const
                     "sweep's steepest part; an offset between them acts as a lag and goes out with the beam's.")
                      .arg(fixedText(*w.clockUncertainty_s * 1e3, 3),
                           significant(*w.clockUncertainty_s * w.steepest_n_per_s * 1e6, 2));
-    return tr("<br>Against the reference force %1 (its zero, %2 µN, taken off): a sweep to %3 mN, %n turn(s), %4 "
-              "samples of the beam paired with it. The beam settles behind the force with τ = %5 s (a first-order "
-              "lag), taken out before the points were binned.",
-              "", static_cast<int>(w.turns))
-               .arg(w.reference.toHtmlEscaped(), fixedText(w.zero_n * 1e6, 2), fixedText(w.span_n * 1e3, 4))
+    return tr("<br>Against the reference force %1 (its zero, %2 µN, taken off): a sweep to %3 mN, %4, %5 samples "
+              "of the beam paired with it. The beam settles behind the force with τ = %6 s (a first-order lag), "
+              "taken out before the points were binned.")
+               .arg(w.reference.toHtmlEscaped(), fixedText(w.zero_n * 1e6, 2), fixedText(w.span_n * 1e3, 4),
+                    turnsText(w.turns))
                .arg(w.paired)
                .arg(fixedText(w.lag_s, 3)) +
            timing;
