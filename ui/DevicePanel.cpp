@@ -3,6 +3,7 @@
 
 #include "ui/ChannelRolesBox.h"
 
+#include "devices/simulator/LoadCellScenario.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "ui/NumberText.h"
 
@@ -38,6 +39,7 @@ QString scenarioTitle(const std::string& id)
     if (id == "gauge-calibration-soft") return DevicePanel::tr("Gauge-factor rig — soft beam");
     if (id == "capacitive-calibration") return DevicePanel::tr("Capacitive beam — calibration rig");
     if (id == devices::simulator::kCapacitiveOverloadScenario) return DevicePanel::tr("Capacitive beam — overloaded");
+    if (id == devices::simulator::kLoadCellScenario) return DevicePanel::tr("Load cell — a reference force");
     return QString::fromStdString(id);
 }
 
@@ -95,6 +97,10 @@ DevicePanel::DevicePanel(QWidget* parent)
     m_connect->setToolTip(tr("Connect to the selected source (double-click works too)"));
     auto* refreshButton = new QPushButton(tr("&Refresh"), this);
     refreshButton->setToolTip(tr("Look for serial ports and HID devices again"));
+    m_add = new QPushButton(tr("Add to the &session"), this);
+    m_add->setObjectName(QStringLiteral("addDeviceButton"));
+    m_add->setToolTip(tr("Connect the selected source as another device, recorded with the connected one into one "
+                         "session, each on its own clock (View ▸ Other devices)"));
 
     auto* sourcesBox = new QGroupBox(tr("Sources"), this);
     auto* sourcesLayout = new QVBoxLayout(sourcesBox);
@@ -110,6 +116,7 @@ DevicePanel::DevicePanel(QWidget* parent)
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(refreshButton);
     buttons->addStretch(1);
+    buttons->addWidget(m_add);
     sourcesLayout->addLayout(buttons);
     auto* connectRow = new QHBoxLayout;
     connectRow->addWidget(m_connect, 1);
@@ -149,6 +156,9 @@ DevicePanel::DevicePanel(QWidget* parent)
     });
     connect(m_protocol, &QComboBox::currentIndexChanged, this, &DevicePanel::updateEnabled);
     connect(m_connect, &QPushButton::clicked, this, &DevicePanel::requestConnect);
+    connect(m_add, &QPushButton::clicked, this, [this] {
+        if (const auto choice = request()) emit addRequested(*choice);
+    });
     connect(m_disconnect, &QPushButton::clicked, this, &DevicePanel::disconnectRequested);
     refresh();
     clearCounters();
@@ -280,6 +290,8 @@ void DevicePanel::updateEnabled()
     m_textRate->setEnabled(!simulator && text);
     m_connect->setEnabled(request().has_value());
     m_disconnect->setEnabled(m_connected);
+    // Another device joins a connected one; the emulator's link is the window's own.
+    m_add->setEnabled(m_connected && request().has_value() && !emulator);
 }
 
 void DevicePanel::requestConnect()

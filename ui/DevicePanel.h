@@ -76,6 +76,8 @@ public slots:
 
 signals:
     void connectRequested(const SourceRequest& request);
+    // The choice as another device of the session, beside the connected one.
+    void addRequested(const SourceRequest& request);
     void disconnectRequested();
 
 private:
@@ -95,6 +97,7 @@ private:
     QDoubleSpinBox* m_textRate = nullptr;
     QPushButton* m_connect = nullptr;
     QPushButton* m_disconnect = nullptr;
+    QPushButton* m_add = nullptr;
     QLabel* m_connectedTo = nullptr;
     QLabel* m_state = nullptr;
     QLabel* m_rate = nullptr;

@@ -8,6 +8,7 @@
 #include "core/storage/SessionStore.h"
 #include "core/storage/StoreWorker.h"
 #include "devices/session/LiveSession.h"
+#include "devices/session/SessionOfDevices.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "ui/AboutText.h"
 #include "ui/ActiveProfiles.h"
@@ -25,6 +26,7 @@
 #include "ui/ModeViews.h"
 #include "ui/ModeXY.h"
 #include "ui/NumberText.h"
+#include "ui/OtherDevices.h"
 #include "ui/PlotControls.h"
 #include "ui/ProblemReport.h"
 #include "ui/RawConsole.h"
@@ -178,12 +180,41 @@ MainWindow::MainWindow(QWidget* parent)
          }},
         this);
     connect(m_devicePanel, &DevicePanel::connectRequested, m_connector, &DeviceConnector::request);
+    m_others = new OtherDevices(this);
+    m_othersDock =
+        addDock(this, tr("Other devices"), QStringLiteral("otherDevicesDock"), m_others, Qt::RightDockWidgetArea);
+    m_othersDock->hide();  // until a device is added
+    m_adder = new DeviceConnector(
+        {[] {},  // the window's device stays
+         [this](const QString& label) { statusBar()->showMessage(tr("Connecting to %1…").arg(label)); },
+         [this](std::unique_ptr<devices::BlockSource> source, std::shared_ptr<devices::simulator::LoadRig>) {
+             addOtherDevice(std::move(source));
+         },
+         [this](const Problem& problem) { reportProblem(this, problem); }},
+        this);
+    connect(m_devicePanel, &DevicePanel::addRequested, this, [this](const SourceRequest& request) {
+        if (isRecording() || m_handsFree->armed()) {
+            statusBar()->showMessage(tr("Stop recording first: a session keeps the devices it started with."), 6000);
+            return;
+        }
+        m_adder->request(request);
+    });
+    connect(m_others, &OtherDevices::removeRequested, this, [this](std::size_t index) {
+        if (isRecording()) {
+            statusBar()->showMessage(tr("Stop recording first: a session keeps the devices it started with."), 6000);
+            return;
+        }
+        m_others->remove(index);
+    });
     connect(m_devicePanel, &DevicePanel::disconnectRequested, this, &MainWindow::disconnectSource);
     connect(m_devicePanel->rolesBox(), &ChannelRolesBox::rolesChosen, this, &MainWindow::setRoles);
     m_handsFree = new HandsFreeControl(
         m_watchBanner,
         {[this] { return m_session.get(); }, [this] { return m_sessionBar->metadata(); },
-         [](const core::storage::SessionMetadata& metadata) {
+         [this](const core::storage::SessionMetadata& metadata) {
+             if (!m_others->empty())
+                 return tr("A trigger records the window's device alone: remove the other devices first (View ▸ "
+                           "Other devices).");
              return recordingRefusal(recordingPolicy(), QString::fromStdString(metadata.subject),
                                      QString::fromStdString(metadata.operatorName));
          },
@@ -340,6 +371,7 @@ void MainWindow::createMenus()
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_deviceDock->toggleViewAction());
+    view->addAction(m_othersDock->toggleViewAction());
     view->addAction(m_xyDock->toggleViewAction());
     view->addAction(m_consoleDock->toggleViewAction());
     view->addSeparator();
@@ -512,6 +544,7 @@ bool MainWindow::startRecording()
             {tr("Cannot record"), tr("Recording did not start."), refusal, {}, QStringLiteral("recordRefusedBox")});
         return false;
     }
+    if (!m_others->empty()) return startRecordingDevices(metadata);
     if (const auto error = m_session->startRecording(metadata)) {
         reportProblem(this, {tr("Cannot record"), tr("Recording could not start."), QString::fromStdString(*error),
                              tr("Choose another session store (Session ▸ Session store…) or free space on its "
@@ -524,14 +557,82 @@ bool MainWindow::startRecording()
     return true;
 }
 
+bool MainWindow::startRecordingDevices(const core::storage::SessionMetadata& metadata)
+{
+    const auto refused = [this](const QString& why) {
+        reportProblem(this, {tr("Cannot record"), tr("Recording of the devices did not start."), why,
+                             tr("Check the session store and each device, then record again.")});
+        return false;
+    };
+    try {
+        m_devicesSession = std::make_unique<devices::session::SessionOfDevices>(m_storePath.toStdString(), metadata);
+    } catch (const core::storage::StorageError& e) {
+        return refused(QString::fromStdString(e.what()));
+    }
+    if (const auto error = m_session->startRecordingPart(metadata, m_devicesSession->partFor(deviceName()))) {
+        m_devicesSession.reset();  // ends the session, with no part, as interrupted
+        return refused(QString::fromStdString(deviceName() + ": " + *error));
+    }
+    if (const auto error = m_others->startParts(metadata, *m_devicesSession)) {
+        m_session->stopRecording();
+        m_devicesSession.reset();
+        return refused(QString::fromStdString(*error));
+    }
+    m_sessionBar->setRecording(true);
+    lockProfiles();
+    updateRecording();
+    return true;
+}
+
+devices::session::RecordingSummary MainWindow::endRecordingDevices(devices::session::RecordingSummary summary)
+{
+    const std::vector<std::string> problems = m_others->stopParts();
+    try {
+        m_devicesSession->finish();
+    } catch (const core::storage::StorageError& e) {
+        if (summary.stats.error.empty()) summary.stats.error = e.what();
+    }
+    summary.session = m_devicesSession->sessionId();
+    // Each part keeps its device's own analysis; the session of several
+    // has no one automatic verdict to confirm.
+    summary.verdict.reset();
+    m_devicesSession.reset();
+    for (const std::string& problem : problems)
+        reportProblem(this,
+                      {tr("Device stopped"), tr("One device's part of session %1 ended early.").arg(summary.session),
+                       QString::fromStdString(problem),
+                       tr("Its samples up to then are kept in its part; the others recorded on.")});
+    return summary;
+}
+
+std::string MainWindow::deviceName() const
+{
+    return m_session ? devices::session::partName(m_session->source().identity(), {}) : std::string{};
+}
+
+void MainWindow::addOtherDevice(std::unique_ptr<devices::BlockSource> source)
+{
+    if (!m_session || isRecording()) return;  // the window's device went, or a recording began meanwhile
+    devices::session::LiveSessionOptions options;
+    options.storePath = m_storePath.toStdString();
+    options.displaySeconds = LivePlotWidget::kMaxWindow_s + 2.0;
+    const QString name = QString::fromStdString(source->name());
+    m_others->add(std::move(source), std::move(options), {deviceName()});
+    m_othersDock->show();
+    statusBar()->showMessage(
+        tr("%1 added: Record records it with %2 into one session.").arg(name, QString::fromStdString(deviceName())),
+        8000);
+}
+
 void MainWindow::stopRecording()
 {
     if (!isRecording()) return;
     if (const auto summary = m_session->stopRecording()) recordingEnded(*summary);
 }
 
-void MainWindow::recordingEnded(const devices::session::RecordingSummary& summary, bool triggered)
+void MainWindow::recordingEnded(const devices::session::RecordingSummary& ended, bool triggered)
 {
+    const devices::session::RecordingSummary summary = m_devicesSession ? endRecordingDevices(ended) : ended;
     m_sessionBar->setRecording(false);
     if (m_session) {
         // The lists now hold exactly what the session stored: shown at once.
@@ -827,6 +928,8 @@ void MainWindow::disconnectSource()
     m_rawConsole->setSource(nullptr);  // before the source goes
     m_plot->clearSource();
     m_modeViews->bindAll(nullptr);
+    m_others->clear();  // they were recorded with this device
+    m_othersDock->hide();
     m_session.reset();
     m_handsFree->disconnected();
     m_sessionBar->setArmed(false);
@@ -858,6 +961,9 @@ void MainWindow::updateStatus()
     const LinkCounters counters = linkCounters(m_session->stats(), m_session->source());
     m_devicePanel->showCounters(counters);
     m_status->showLink(counters);
+    for (const std::string& problem : m_others->update())
+        reportProblem(this, {tr("Device stopped"), tr("One device's part of the recording ended early."),
+                             QString::fromStdString(problem), tr("The other devices record on.")});
     m_modeViews->update(*m_session);
     updateTimeBase();
     showDefectsOnTraces();

@@ -39,12 +39,14 @@ class LoadRig;
 }
 namespace tactiscope::devices::session {
 class LiveSession;
+class SessionOfDevices;
 struct RecordingSummary;
 }  // namespace tactiscope::devices::session
 
 namespace tactiscope::ui {
 
 class DeviceConnector;
+class OtherDevices;
 class DevicePanel;
 class HandsFreeControl;
 class WatchBanner;
@@ -81,6 +83,8 @@ public:
     // The live view of `mode` (ui/modes/ModeUi.h); null for a mode without one.
     LiveModeView* modeView(core::Mode mode) const;
     DevicePanel* devicePanel() const { return m_devicePanel; }
+    // The devices recorded with the connected one (View ▸ Other devices).
+    OtherDevices* otherDevices() const { return m_others; }
 
     // Recording: into the session store at storePath() (remembered across
     // runs), with the session bar's metadata and the device's identity.
@@ -151,6 +155,13 @@ private:
     // A recording ended: by a stop, the disk, the link, or (`triggered`)
     // its trigger, after which no verdict is asked: the line goes on.
     void recordingEnded(const devices::session::RecordingSummary& summary, bool triggered = false);
+    // With other devices: each records its part of one session.
+    bool startRecordingDevices(const core::storage::SessionMetadata& metadata);
+    // Their parts ended with the window's device's; the summary names the session.
+    devices::session::RecordingSummary endRecordingDevices(devices::session::RecordingSummary summary);
+    void addOtherDevice(std::unique_ptr<devices::BlockSource> source);
+    // The connected device's name in a session of several.
+    std::string deviceName() const;
     void saveSettings() const;
 
     LivePlotWidget* m_plot = nullptr;
@@ -176,6 +187,10 @@ private:
     QString m_storePath;
     std::shared_ptr<core::storage::StoreWorker> m_store;  // the window's connection to the store, off its thread
     DeviceConnector* m_connector = nullptr;
+    OtherDevices* m_others = nullptr;
+    QDockWidget* m_othersDock = nullptr;
+    DeviceConnector* m_adder = nullptr;                                    // opens the other devices
+    std::unique_ptr<devices::session::SessionOfDevices> m_devicesSession;  // while recording with other devices
 };
 
 }  // namespace tactiscope::ui

@@ -28,20 +28,6 @@ bool isDeviceName(const std::string& name)
     return !name.empty() && std::ranges::none_of(name, [](char c) { return c == '/' || c == '=' || c == ' '; });
 }
 
-// The device's model as a name: lower case, words joined by '-'.
-std::string nameFromModel(const std::string& model)
-{
-    std::string name;
-    for (const char c : model) {
-        if (std::isalnum(static_cast<unsigned char>(c)))
-            name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        else if (!name.empty() && name.back() != '-')
-            name += '-';
-    }
-    while (!name.empty() && name.back() == '-') name.pop_back();
-    return name.empty() ? "device" : name;
-}
-
 struct Device {
     std::string name;
     std::unique_ptr<devices::session::LiveSession> live;
@@ -94,16 +80,18 @@ int recordDevices(const DevicesRecording& setup)
             return kExitFailure;
         }
         Device device;
-        device.name = port.name.empty() ? nameFromModel(sources.back()->identity().model) : port.name;
+        device.name = port.name;
         devices.push_back(std::move(device));
     }
-    // Names not given are made unique: "probe", "probe-2".
-    for (std::size_t i = 0; i < devices.size(); ++i) {
-        int copies = 1;
-        for (std::size_t j = 0; j < i; ++j)
-            if (devices[j].name == devices[i].name) ++copies;
-        if (copies > 1) devices[i].name += "-" + std::to_string(copies);
-    }
+    // Names not given come from the devices, unlike the given ones and each other.
+    std::vector<std::string> taken;
+    for (const ProbePortArgument& port : setup.ports)
+        if (!port.name.empty()) taken.push_back(port.name);
+    for (std::size_t i = 0; i < devices.size(); ++i)
+        if (devices[i].name.empty()) {
+            devices[i].name = devices::session::partName(sources[i]->identity(), taken);
+            taken.push_back(devices[i].name);
+        }
     for (const auto& [name, assignment] : roles)
         if (std::ranges::none_of(devices, [&](const Device& d) { return d.name == name; })) {
             printError(QStringLiteral("--roles: there is no device '%1'").arg(toQString(name)));

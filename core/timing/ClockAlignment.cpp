@@ -118,6 +118,8 @@ const char* describe(ClockUncertaintyBasis basis)
         return "a bound: the fastest frames lie apart from the rest's floor (a polled link, or rare fast frames)";
     case ClockUncertaintyBasis::TooFewFrames:
         return "too few frames yet";
+    case ClockUncertaintyBasis::Exact:
+        return "exact: the source times its samples by the host's clock";
     }
     return "";
 }

@@ -48,6 +48,7 @@ enum class ClockUncertaintyBasis {
     Spread,        // from the spread of the fastest frames' delays (a standard uncertainty)
     Bound,         // the floor is not sharp: half the gap between the fastest frames and the rest's floor
     TooFewFrames,  // fewer than kClockSegments × kClockFramesPerSegment frames in the window: none
+    Exact,         // the source times its samples by the host's clock itself (the simulator): 0
 };
 
 // In words, for a report: "from the spread of …", "too few frames yet".

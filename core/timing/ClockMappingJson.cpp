@@ -23,7 +23,8 @@ struct BasisWord {
 };
 constexpr BasisWord kBasisWords[] = {{ClockUncertaintyBasis::Spread, "spread"},
                                      {ClockUncertaintyBasis::Bound, "bound"},
-                                     {ClockUncertaintyBasis::TooFewFrames, "too-few-frames"}};
+                                     {ClockUncertaintyBasis::TooFewFrames, "too-few-frames"},
+                                     {ClockUncertaintyBasis::Exact, "exact"}};
 
 }  // namespace
 

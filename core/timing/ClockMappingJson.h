@@ -13,11 +13,11 @@
 
 namespace tactiscope::core::timing {
 
-// The stored word: "spread", "bound" or "too-few-frames".
+// The stored word: "spread", "bound", "too-few-frames" or "exact".
 const char* toString(ClockUncertaintyBasis basis);
 
 // {"reference_s":…,"offset_s":…,"drift":…,"span_s":…,"pairs":…,
-//  "uncertainty":"spread"|"bound"|"too-few-frames","offset_u_s":…,"drift_u":…}
+//  "uncertainty":"spread"|"bound"|"too-few-frames"|"exact","offset_u_s":…,"drift_u":…}
 std::string toJson(const ClockMapping& mapping);
 // None for text that is not such an object, or holds a number that is
 // not finite, a drift beyond ±1 % (no crystal is that far off: the text

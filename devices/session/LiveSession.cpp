@@ -152,7 +152,22 @@ std::optional<std::string> LiveSession::startRecording(const core::storage::Sess
 {
     if (isRecording()) return std::nullopt;
     if (m_trigger) return "the armed trigger starts the recordings; disarm it first";
+    m_part = m_options.partOf;
     if (auto error = beginRecording(request)) return error;
+    m_tap->attach(m_recorder);
+    return std::nullopt;
+}
+
+std::optional<std::string> LiveSession::startRecordingPart(const core::storage::SessionMetadata& request,
+                                                           const LiveSessionOptions::PartOfSession& part)
+{
+    if (isRecording()) return std::nullopt;
+    if (m_trigger) return "the armed trigger records one device; disarm it first";
+    m_part = part;
+    if (auto error = beginRecording(request)) {
+        m_part.reset();
+        return error;
+    }
     m_tap->attach(m_recorder);
     return std::nullopt;
 }
@@ -164,9 +179,9 @@ std::optional<std::string> LiveSession::beginRecording(const core::storage::Sess
     if (auto refusal = refusalOf(m_mode)) return refusal;
     core::storage::SessionMetadata metadata = request;
     metadata.mode = m_mode;
-    if (m_options.partOf) {
-        metadata.partOf = m_options.partOf->session;
-        metadata.deviceName = m_options.partOf->deviceName;
+    if (m_part) {
+        metadata.partOf = m_part->session;
+        metadata.deviceName = m_part->deviceName;
     }
     const DeviceIdentity device = source().identity();
     metadata.deviceModel = device.model;
@@ -286,6 +301,7 @@ RecordingSummary LiveSession::finishRecording()
         summary.analysis =
             core::text::countText(m_channels.size(), "channel", "channels") + " as they came, no analysis";
     m_recorder.reset();
+    m_part.reset();
     m_lists.clock = LiveClock::Recorded;  // the lists hold what was stored, until the next event
     return summary;
 }
@@ -339,7 +355,7 @@ std::optional<RecordingSummary> LiveSession::poll()
         return finishRecording();
     }
     takeTriggered();
-    if (m_options.partOf && steadySeconds() >= m_nextClockStore_host_s) {
+    if (m_part && steadySeconds() >= m_nextClockStore_host_s) {
         m_nextClockStore_host_s = steadySeconds() + 1.0;
         storeClockMapping();
     }
@@ -350,12 +366,12 @@ std::optional<RecordingSummary> LiveSession::poll()
 // is found: a recording cut short by a crash keeps the last one.
 void LiveSession::storeClockMapping()
 {
-    if (!m_options.partOf || !m_recorder) return;
+    if (!m_part || !m_recorder) return;
     const auto clock = source().hostClock();
     const auto origin = m_recorder->acquisitionOrigin_s();
     if (!clock || !origin) return;
     m_recorder->setClockMapping(
-        core::timing::toJson(core::timing::onSessionClocks(*clock, *origin, m_options.partOf->start_host_s)));
+        core::timing::toJson(core::timing::onSessionClocks(*clock, *origin, m_part->start_host_s)));
 }
 
 // The samples per channel the recorder may hold while the disk is slow:

@@ -179,6 +179,10 @@ public:
     // cannot start (the mode cannot run, the store refuses), nothing when
     // it started.
     std::optional<std::string> startRecording(const core::storage::SessionMetadata& request);
+    // The same as one device's part of a session of several
+    // (SessionOfDevices::partFor), for this recording only.
+    std::optional<std::string> startRecordingPart(const core::storage::SessionMetadata& request,
+                                                  const LiveSessionOptions::PartOfSession& part);
     // Ends it as complete, with the automatic verdict in panel scan.
     std::optional<RecordingSummary> stopRecording();
     bool isRecording() const { return m_recorder != nullptr; }
@@ -288,6 +292,9 @@ private:
     RecordingSummary finishRecording();
 
     LiveSessionOptions m_options;
+    // The session this recording is a part of (m_options.partOf, or
+    // startRecordingPart's); none for a session of one device.
+    std::optional<LiveSessionOptions::PartOfSession> m_part;
     std::unique_ptr<Acquisition> m_acquisition;
     std::shared_ptr<core::LiveBuffer> m_buffer;
     std::shared_ptr<core::storage::RecordingTap> m_tap;

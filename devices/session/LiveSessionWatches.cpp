@@ -131,6 +131,7 @@ void LiveSession::takeTriggered()
     if (!pending) return;
     auto request = m_triggerRequest;
     request.subject = core::trigger::numberedSubject(m_triggerRequest.subject, m_triggeredStarted);
+    m_part = m_options.partOf;
     if (auto error = beginRecording(request)) {
         // The store refuses: every trigger would meet the same refusal.
         m_gate->disarm();

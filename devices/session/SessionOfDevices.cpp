@@ -5,8 +5,38 @@
 #include "devices/SteadyClock.h"
 
 #include <algorithm>
+#include <cctype>
 
 namespace tactiscope::devices::session {
+namespace {
+
+// Lower case, runs of anything else than letters and digits as one '-'.
+std::string slug(const std::string& text)
+{
+    std::string name;
+    for (const char c : text) {
+        if (std::isalnum(static_cast<unsigned char>(c)))
+            name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        else if (!name.empty() && name.back() != '-')
+            name += '-';
+    }
+    while (!name.empty() && name.back() == '-') name.pop_back();
+    return name;
+}
+
+}  // namespace
+
+std::string partName(const DeviceIdentity& identity, std::span<const std::string> taken)
+{
+    const auto free = [&](const std::string& name) { return std::ranges::find(taken, name) == taken.end(); };
+    std::string name = slug(identity.model);
+    if (name.empty()) name = "device";
+    if (free(name)) return name;
+    if (const std::string serial = slug(identity.serial); !serial.empty() && free(name + "-" + serial))
+        return name + "-" + serial;
+    for (int copy = 2;; ++copy)
+        if (free(name + "-" + std::to_string(copy))) return name + "-" + std::to_string(copy);
+}
 
 SessionOfDevices::SessionOfDevices(const std::string& storePath, const core::storage::SessionMetadata& metadata)
     : m_storePath(storePath),

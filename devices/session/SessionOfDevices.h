@@ -12,6 +12,7 @@
 #include "devices/session/LiveSession.h"
 
 #include <cstdint>
+#include <span>
 #include <string>
 
 namespace tactiscope::devices::session {
@@ -41,5 +42,12 @@ private:
     double m_start_host_s = 0.0;
     bool m_finished = false;
 };
+
+// A device's name in a session (its channels read DEVICE/CHANNEL): its
+// model in lower case, words joined by '-' ("tactiscope-simulator"); a
+// second device of a model taken already adds its serial
+// ("tactiscope-simulator-reference-load-cell"), and a number where that is
+// taken too ("…-2"). Never empty, never with '/', '=' or a space.
+std::string partName(const DeviceIdentity& identity, std::span<const std::string> taken);
 
 }  // namespace tactiscope::devices::session

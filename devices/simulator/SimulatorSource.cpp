@@ -47,7 +47,10 @@ ReadStatus SimulatorSource::readBlock(core::SampleBlock& out, std::chrono::milli
 
     if (m_options.pacing == Pacing::RealTime) {
         const auto now = std::chrono::steady_clock::now();
-        if (!m_start) m_start = now;
+        if (!m_start) {
+            m_start = now;
+            m_start_host_s = std::chrono::duration<double>(now.time_since_epoch()).count();
+        }
         const auto ready =
             *m_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(
                            static_cast<double>(m_produced + count) * dt_s / m_options.speed));
@@ -83,6 +86,17 @@ std::vector<DeviceStatus> SimulatorSource::takeStatuses()
 {
     const std::lock_guard lock(m_shuntMutex);
     return std::exchange(m_statuses, {});
+}
+
+std::optional<core::timing::ClockMapping> SimulatorSource::hostClock() const
+{
+    const double start_s = m_start_host_s;
+    if (std::isnan(start_s)) return std::nullopt;
+    core::timing::ClockMapping mapping;
+    mapping.offset_s = start_s + 1.0 / m_scenario->sampleRate_hz() / m_options.speed;
+    mapping.drift = 1.0 / m_options.speed - 1.0;
+    mapping.basis = core::timing::ClockUncertaintyBasis::Exact;
+    return mapping;
 }
 
 }  // namespace tactiscope::devices::simulator

@@ -8,9 +8,11 @@
 #include "devices/simulator/ShuntedBridges.h"
 #include "devices/simulator/SimulatedScenario.h"
 
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -46,6 +48,10 @@ public:
     // (ShuntedBridges.h), and it answers as one would.
     std::optional<std::string> requestShunt(std::size_t channel, bool on) override;
     std::vector<DeviceStatus> takeStatuses() override;
+    // Paced in real time it times its samples by the host's clock itself:
+    // sample k is taken at the pace's start + (k + 1)·dt/speed (when its
+    // block is due). Exact; none before the first block, or unpaced.
+    std::optional<core::timing::ClockMapping> hostClock() const override;
 
 private:
     mutable std::mutex m_shuntMutex;  // guards the two below: the owner switches, the reader applies
@@ -57,6 +63,7 @@ private:
     std::uint64_t m_produced = 0;
     std::uint32_t m_sequence = 0;
     std::optional<std::chrono::steady_clock::time_point> m_start;
+    std::atomic<double> m_start_host_s = std::numeric_limits<double>::quiet_NaN();  // m_start, for any thread
 };
 
 }  // namespace tactiscope::devices::simulator
