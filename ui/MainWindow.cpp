@@ -1012,6 +1012,7 @@ void MainWindow::updateTimeBase()
     const auto origin = m_session->recordingOrigin_s();
     const QString label = origin ? tr("Recording time (s)") : tr("Time since connect (s)");
     for (LivePlotWidget* plot : allPlots()) plot->setTimeOrigin(origin.value_or(0.0), label);
+    m_others->setTimeBase(m_session->source().hostClock(), origin.value_or(0.0), label);
 }
 
 // The window's plots move as one while paused, under one banner.

@@ -95,6 +95,23 @@ void OtherDevices::clear()
     while (!m_devices.empty()) remove(m_devices.size() - 1);
 }
 
+void OtherDevices::setTimeBase(const std::optional<core::timing::ClockMapping>& windowClock, double origin_s,
+                               const QString& label)
+{
+    for (Device& device : m_devices) {
+        const auto own = device.session->source().hostClock();
+        if (!windowClock || !own) {
+            device.plot->setTimeOrigin(0.0, tr("Time since this device connected (s)"));
+            continue;
+        }
+        // Where its time t shows: the window's device's time at the same
+        // host instant, less the window's origin (the drifts move this by
+        // microseconds over a screenful: one origin will do).
+        const double t = own->reference_s;
+        device.plot->setTimeOrigin(t - windowClock->device_s(own->host_s(t)) + origin_s, label);
+    }
+}
+
 std::vector<std::string> OtherDevices::names() const
 {
     std::vector<std::string> names;

@@ -55,6 +55,15 @@ public:
     // On the window's status tick: each device's lists, clock and link
     // line; what stopped a device's part by itself (its disk), by name.
     std::vector<std::string> update();
+    // Each plot's time axis on the window's device's: its stream time
+    // `origin_s` shown as 0, titled `label`, each device's own time carried
+    // over through the host's clock by the two mappings (`windowClock`,
+    // the window's device's). A device whose clock is not known yet shows
+    // its own time since connect, and says so.
+    void setTimeBase(const std::optional<core::timing::ClockMapping>& windowClock, double origin_s,
+                     const QString& label);
+    const devices::session::LiveSession& session(std::size_t index) const { return *m_devices.at(index).session; }
+    const LivePlotWidget& plot(std::size_t index) const { return *m_devices.at(index).plot; }
 
 signals:
     void changed();  // a device added or removed

@@ -8,6 +8,7 @@
 #include "CliSupport.h"
 #include "RecordingImport.h"
 #include "SessionArgument.h"
+#include "core/UnitScale.h"
 #include "core/calibration/CapacitiveSweep.h"
 #include "core/derived/ReferencedSweep.h"
 #include "core/io/CsvColumns.h"
@@ -20,14 +21,6 @@ namespace tactiscope::cli {
 namespace {
 
 using namespace core;
-
-// Farads per unit of a capacitance column; none for another unit.
-std::optional<double> faradsPer(const std::string& unit)
-{
-    for (const auto& [name, scale] : {std::pair{"F", 1.0}, {"nF", 1e-9}, {"pF", 1e-12}, {"fF", 1e-15}})
-        if (unit == name) return scale;
-    return std::nullopt;
-}
 
 // The rows form: force_n,capacitance_pf (and a time column when there is
 // one), either step means or every sample with its load.
@@ -76,11 +69,7 @@ std::optional<QString> readRaw(const QString& path, const QString& unit, calibra
         channels[*capacitance].unit.empty() ? unit.toStdString() : channels[*capacitance].unit;
     const auto scale = faradsPer(capacitanceUnit);
     if (!scale) return QStringLiteral("capacitance in '%1': use F, nF, pF or fF").arg(toQString(capacitanceUnit));
-    double loadScale = 1.0;
-    if (load) {
-        const std::string& u = channels[*load].unit;
-        loadScale = u == "mN" ? 1e-3 : (u == "uN" || u == "µN") ? 1e-6 : 1.0;
-    }
+    const double loadScale = load ? newtonsPer(channels[*load].unit).value_or(1.0) : 1.0;
     auto& store = imported.store();
     const auto summary = store.session(imported.session());
     const std::uint64_t n = summary->sampleCount;

@@ -2,6 +2,7 @@
 // paired with the reference force on the session's clock.
 #include "core/derived/ReferencedSweep.h"
 
+#include "core/UnitScale.h"
 #include "core/calibration/ReferencePairing.h"
 #include "core/modes/ModeDefinition.h"
 #include "core/timing/ClockMappingJson.h"
@@ -30,14 +31,6 @@ std::vector<SessionChannel> allChannels(storage::SessionSource& store, std::int6
                                 part ? timing::clockMappingFromJson(part->clockJson) : std::nullopt});
     }
     return channels;
-}
-
-// Units per SI unit of a stored channel: F for a capacitance, N for a force.
-std::optional<double> siPer(const std::string& unit, std::initializer_list<std::pair<const char*, double>> table)
-{
-    for (const auto& [name, scale] : table)
-        if (unit == name) return scale;
-    return std::nullopt;
 }
 
 struct Series {
@@ -86,13 +79,11 @@ std::optional<SessionChannel> channelNamed(storage::SessionSource& store, std::i
 ReferencedSweep referencedSweep(storage::SessionSource& store, const SessionChannel& capacitance,
                                 const SessionChannel& reference)
 {
-    const auto farads =
-        siPer(capacitance.stored.descriptor.unit, {{"F", 1.0}, {"nF", 1e-9}, {"pF", 1e-12}, {"fF", 1e-15}});
+    const auto farads = faradsPer(capacitance.stored.descriptor.unit);
     if (!farads)
         throw std::invalid_argument("the capacitance " + capacitance.label() + " is in '" +
                                     capacitance.stored.descriptor.unit + "', not F, nF, pF or fF");
-    const auto newtons =
-        siPer(reference.stored.descriptor.unit, {{"N", 1.0}, {"mN", 1e-3}, {"µN", 1e-6}, {"uN", 1e-6}});
+    const auto newtons = newtonsPer(reference.stored.descriptor.unit);
     if (!newtons)
         throw std::invalid_argument("the reference force " + reference.label() + " is in '" +
                                     reference.stored.descriptor.unit + "', not N, mN or µN");

@@ -80,6 +80,8 @@ std::optional<ClockMapping> clockMappingFromJson(std::string_view text)
     const auto* entry = std::ranges::find_if(kBasisWords, [&](const BasisWord& e) { return word == e.word; });
     if (entry == std::end(kBasisWords)) return std::nullopt;
     m.basis = entry->basis;
+    // An exact mapping states no uncertainty: one that does was altered.
+    if (m.basis == ClockUncertaintyBasis::Exact && (m.offset_u_s != 0.0 || m.drift_u != 0.0)) return std::nullopt;
     return m;
 }
 

@@ -7,6 +7,7 @@
 // session's clock. The marks must lie within 0.2 ms of each other (the
 // issue's target after 60 s); where each mark lies is found from the
 // samples alone, by the ramp's zero crossing.
+#include "devices/SteadyClock.h"
 #include "support/CliRunner.h"
 #include "support/EmulatorProcess.h"
 
@@ -23,7 +24,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <optional>
 
@@ -33,11 +33,6 @@ using tactiscope::testing::startEmulator;
 using tactiscope::testing::stopEmulator;
 
 namespace {
-
-double steadyNow_s()
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 // Where the ramp crosses zero, by linear interpolation between the two
 // samples around it, on the times given; none without a ramp.
@@ -61,7 +56,7 @@ TEST(DevicesSessionCli, TwoProbesOnTheirOwnClocksMarkOneInstantWithinATenthOfAMi
 {
     QTemporaryDir dir;
     const QString db = dir.filePath("s.tactiscope");
-    const QString mark = QString::number(steadyNow_s() + 30.0, 'f', 6);
+    const QString mark = QString::number(tactiscope::devices::steadySeconds() + 30.0, 'f', 6);
     QProcess a, b;
     ASSERT_TRUE(startEmulator(a, dir.filePath("a"), {"--scenario", "panel-scan", "--seed", "3", "--mark-at", mark}));
     ASSERT_TRUE(startEmulator(

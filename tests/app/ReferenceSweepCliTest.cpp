@@ -11,6 +11,7 @@
 // cell's zero, the sweep's peak (150 mgf) and its one turn. A session
 // without a reference force, a channel named that is not there and the
 // options' misuse are refused with the reason.
+#include "devices/SteadyClock.h"
 #include "support/CliRunner.h"
 #include "support/EmulatorProcess.h"
 
@@ -21,7 +22,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 
 using tactiscope::testing::jsonOf;
@@ -34,11 +34,6 @@ namespace {
 
 constexpr double kMilligramForce_n = 9.80665e-6;
 
-double steadyNow_s()
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
 }  // namespace
 
 TEST(ReferenceSweepCli, TheBeamCalibratedAgainstALoadCellOnAnotherDeviceAgreesWithItsWeights)
@@ -46,7 +41,7 @@ TEST(ReferenceSweepCli, TheBeamCalibratedAgainstALoadCellOnAnotherDeviceAgreesWi
     QTemporaryDir dir;
     const QString db = dir.filePath("s.tactiscope");
     // 12 s unloaded (C0), the 40 s sweep, 12 s unloaded (the drift).
-    const QString sweepAt = QString::number(steadyNow_s() + 12.0, 'f', 6);
+    const QString sweepAt = QString::number(tactiscope::devices::steadySeconds() + 12.0, 'f', 6);
     QProcess beam, cell;
     ASSERT_TRUE(startEmulator(beam, dir.filePath("beam"),
                               {"--scenario", "capacitive-calibration", "--rate", "500", "--seed", "3", "--drift-ppm",

@@ -16,6 +16,7 @@
 #include "core/storage/SessionStore.h"
 #include "devices/Acquisition.h"
 #include "devices/DeviceDiscovery.h"
+#include "devices/SteadyClock.h"
 #include "devices/emulator/ProbeEmulator.h"
 #include "devices/simulator/CapacitiveWeightsScenario.h"
 #include "support/MainWindowHelpers.h"
@@ -31,7 +32,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 
 using namespace tactiscope;
@@ -41,11 +41,6 @@ using tactiscope::testing::pressMnemonic;
 using tactiscope::testing::waitFor;
 
 namespace {
-
-double steadyNow_s()
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 // The weights' calibration of the simulated beam, as the paper takes it:
 // 15 weights stacked in 5 s steps and taken off again.
@@ -117,7 +112,7 @@ protected:
 TEST_F(CapacitiveSweepWizardTest, CalibratesAgainstALoadCellOnASecondDeviceAndAgreesWithTheWeights)
 {
     // The zero takes a few seconds; the sweep then starts on the beam at rest.
-    const double sweepAt = steadyNow_s() + 14.0;
+    const double sweepAt = tactiscope::devices::steadySeconds() + 14.0;
     devices::emulator::EmulatorOptions cell;
     cell.linkPath = file("cell");
     cell.scenario = "load-cell";
@@ -147,7 +142,7 @@ TEST_F(CapacitiveSweepWizardTest, CalibratesAgainstALoadCellOnASecondDeviceAndAg
     pressMnemonic(wizard, Qt::Key_N);
     ASSERT_EQ(wizard.currentId(), ui::CapacitiveWizard::LoadsPage);
     EXPECT_FALSE(child<QPushButton>(wizard, "captureButton")->isVisible());
-    ASSERT_LT(steadyNow_s(), sweepAt - 3.0) << "the sweep began before the recording";
+    ASSERT_LT(tactiscope::devices::steadySeconds(), sweepAt - 3.0) << "the sweep began before the recording";
     child<QPushButton>(wizard, "startSweepButton")->click();
     // 40 s of sweep, then 5 s at rest ends it by itself.
     auto* table = child<QTableWidget>(wizard, "pointsTable");

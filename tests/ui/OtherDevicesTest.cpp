@@ -5,7 +5,8 @@
 // Record records both into one session of several devices, each its part
 // at its own rate and on its own clock; the simulators time their samples
 // by the host's clock, so each part's stored mapping is exact and both
-// parts begin within a block of the session's start. Devices cannot be
+// parts begin within a block of the session's start; live, the load cell's
+// plot reads the probe's time axis. Devices cannot be
 // added or removed while recording, nor a trigger armed with them; Remove
 // takes one away afterwards, and the next recording is of one device.
 #include "ui/OtherDevices.h"
@@ -15,6 +16,7 @@
 #include "support/Screenshot.h"
 #include "support/WaitFor.h"
 #include "ui/DevicePanel.h"
+#include "ui/LivePlotWidget.h"
 #include "ui/MainWindow.h"
 
 #include <QDockWidget>
@@ -43,6 +45,7 @@ TEST(OtherDevices, ALoadCellAddedBesideTheProbeIsRecordedWithItIntoOneSessionOnO
     window.devicePanel()->selectSimulator(QStringLiteral("load-cell"));
     EXPECT_FALSE(add->isEnabled());  // nothing to add it to yet
     window.connectSource(liveSimulator());
+    runEventLoopFor(700);  // the load cell comes later: its own time runs 0.7 s behind
     window.devicePanel()->selectSimulator(QStringLiteral("load-cell"));
     ASSERT_TRUE(add->isEnabled());
     QTest::mouseClick(add, Qt::LeftButton);
@@ -50,6 +53,17 @@ TEST(OtherDevices, ALoadCellAddedBesideTheProbeIsRecordedWithItIntoOneSessionOnO
     EXPECT_EQ(window.otherDevices()->names().front(), "tactiscope-simulator-reference-load-cell");
     EXPECT_TRUE(child<QDockWidget>(window, "otherDevicesDock")->isVisible());
     runEventLoopFor(1500);  // its trace fills
+    // Both plots on the window's device's clock: the newest samples of two
+    // devices streaming in real time show at one time (within a block and
+    // a status tick), though the load cell connected later.
+    const auto newest = [](const devices::session::LiveSession& live, const ui::LivePlotWidget& plot) {
+        return static_cast<double>(live.buffer()->samplesWritten()) / live.source().nominalSampleRate_hz() -
+               plot.timeOrigin_s();
+    };
+    EXPECT_NEAR(newest(*window.liveSession(), *window.livePlot()),
+                newest(window.otherDevices()->session(0), window.otherDevices()->plot(0)), 0.08);
+    EXPECT_NEAR(window.otherDevices()->plot(0).timeOrigin_s(), -0.7, 0.15);  // it connected 0.7 s after the probe
+    EXPECT_EQ(window.otherDevices()->plot(0).timeAxisLabel(), window.livePlot()->timeAxisLabel());
     tactiscope::testing::saveScreenshot(window, QStringLiteral("other-devices"));
 
     QTest::keyClicks(child<QLineEdit>(window, "subjectEdit"), QStringLiteral("beam-3"));

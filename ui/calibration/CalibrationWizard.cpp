@@ -167,7 +167,7 @@ CheckedPage* CalibrationWizard::createResultPage()
 void CalibrationWizard::initializePage(int id)
 {
     if (id == ZeroPage) {
-        m_watch->setInput(m_context.buffer, m_channel->currentData().toULongLong());
+        m_watch->setInput(m_context.buffer, chosenChannel());
         // The defaults follow the setup (an ADC's full scale); a user's own
         // criteria stay until the setup changes them.
         const auto defaults = stabilityDefaults();
@@ -197,6 +197,11 @@ const ProfileEntry* CalibrationWizard::chosenProfileEntry() const
     const int index = m_profile ? m_profile->currentIndex() : -1;
     if (index < 0 || index >= static_cast<int>(m_profiles.size())) return nullptr;
     return &m_profiles[static_cast<std::size_t>(index)];
+}
+
+std::size_t CalibrationWizard::chosenChannel() const
+{
+    return static_cast<std::size_t>(m_channel->currentData().toULongLong());
 }
 
 void CalibrationWizard::setSensorSummary(const QString& text)

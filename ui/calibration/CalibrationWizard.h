@@ -124,6 +124,8 @@ protected:
         return entry ? &std::get<Profile>(*entry->profile) : nullptr;
     }
     QComboBox* profileBox() const { return m_profile; }
+    // The channel chosen on the sensor page (an index into context().channels).
+    std::size_t chosenChannel() const;
     void setSensorSummary(const QString& text);
     QString operatorName() const;
     const std::optional<core::calibration::WindowStatistics>& zero() const { return m_zero; }

@@ -3,6 +3,7 @@
 #include "ui/calibration/CapacitiveWizard.h"
 #include "ui/NumberText.h"
 
+#include "core/UnitScale.h"
 #include "core/calibration/CapacitiveSweep.h"
 #include "core/sensors/CapacitiveBeam.h"
 #include "ui/calibration/CalibrationText.h"
@@ -58,27 +59,11 @@ CalibrationWizard::Words capacitiveWords()
             .limits = core::calibration::capacitiveCredibilityLimits()};
 }
 
-// Newtons per unit of a force channel; none for another unit.
-std::optional<double> newtonsPer(const std::string& unit)
-{
-    for (const auto& [name, scale] : {std::pair{"N", 1.0}, {"mN", 1e-3}, {"µN", 1e-6}, {"uN", 1e-6}})
-        if (unit == name) return scale;
-    return std::nullopt;
-}
-
-// Farads per unit of the capacitance channel.
-double faradsPer(const std::string& unit)
-{
-    for (const auto& [name, scale] : {std::pair{"nF", 1e-9}, {"pF", 1e-12}, {"fF", 1e-15}})
-        if (unit == name) return scale;
-    return 1.0;
-}
-
 // A channel that can be a reference force: a force in N, mN or µN.
 bool referenceFits(const core::ChannelDescriptor& c)
 {
     return (c.role == core::ChannelRole::ReferenceForce || c.kind == core::ChannelKind::Force) &&
-           newtonsPer(c.unit).has_value();
+           core::newtonsPer(c.unit).has_value();
 }
 
 QString turnsText(std::size_t turns)
@@ -262,13 +247,10 @@ void CapacitiveWizard::startSweep()
         panel()->setStatus(tr("The reference device is gone: connect it again on the Loads page."));
         return;
     }
-    const std::size_t beam =
-        static_cast<std::size_t>(std::find_if(context().channels.begin(), context().channels.end(),
-                                              [](const auto& c) { return c.kind == core::ChannelKind::Capacitance; }) -
-                                 context().channels.begin());
-    m_capture =
-        std::make_unique<SweepCapture>(SweepChannel{context().buffer, beam, faradsPer(context().channels[beam].unit)},
-                                       SweepChannel{buffer, channel, *newtonsPer(channels[channel].unit)});
+    const std::size_t beam = chosenChannel();
+    m_capture = std::make_unique<SweepCapture>(
+        SweepChannel{context().buffer, beam, core::faradsPer(context().channels[beam].unit).value_or(1.0)},
+        SweepChannel{buffer, channel, *core::newtonsPer(channels[channel].unit)});
     m_sweep.reset();
     setLoads({});
     m_startSweep->setEnabled(false);

@@ -147,6 +147,26 @@ TEST(CapacitiveSweepTest, TwoCyclesTurnThreeTimesAndFillTheSameBins)
     EXPECT_LT(std::abs(result.forceFit->slope - kSensitivity_f_per_n), 3.0 * result.forceFit->slopeStandardError);
 }
 
+// Pushed up and never taken off (the recording stopped at the peak): the
+// loading points alone, and the calibration says what that leaves out.
+TEST(CapacitiveSweepTest, ASweepThatNeverComesBackGivesLoadingPointsAndACaution)
+{
+    CapacitiveRecording r = record({});
+    const auto peak = static_cast<std::size_t>((10.0 + 20.0) * 10.0);  // 10 s at rest, 20 s up, at 10 Hz
+    r.t_s.resize(peak);
+    r.capacitance_f.resize(peak);
+    r.load_n.resize(peak);
+    const SweepSteps sweep = stepsFromSweep(r, settings());
+    EXPECT_EQ(sweep.turns, 0u);
+    EXPECT_FALSE(sweep.steps.input.finalBaseline);
+    ASSERT_FALSE(sweep.steps.steps.empty());
+    for (const auto& step : sweep.steps.steps) EXPECT_TRUE(step.loading);
+    const auto result = calibrateCapacitive(sweep.steps.input, "beam", "");
+    EXPECT_FALSE(result.hysteresis);
+    ASSERT_EQ(result.cautions.size(), 1u);
+    EXPECT_NE(result.cautions.front().find("never removed"), std::string::npos) << result.cautions.front();
+}
+
 TEST(CapacitiveSweepTest, RefusesWhatIsNoCalibrationSweep)
 {
     Sweep loadedFromTheStart;

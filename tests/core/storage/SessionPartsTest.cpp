@@ -148,6 +148,8 @@ TEST_F(SessionPartsTest, AStoredMappingComesBackAndAnAlteredOneReadsAsNone)
           R"("offset_u_s":0,"drift_u":0})",
           R"({"reference_s":5,"offset_s":0.5,"drift":0,"span_s":9,"pairs":1,"uncertainty":"spread",)"
           R"("offset_u_s":-1,"drift_u":0})",
+          R"({"reference_s":5,"offset_s":0.5,"drift":0,"span_s":9,"pairs":1,"uncertainty":"exact",)"
+          R"("offset_u_s":1e-6,"drift_u":0})",
           R"({"reference_s":5,"offset_s":1e400,"drift":0,"span_s":9,"pairs":1,"uncertainty":"spread",)"
           R"("offset_u_s":0,"drift_u":0})"}) {
         EXPECT_FALSE(timing::clockMappingFromJson(altered)) << altered;
