@@ -54,19 +54,4 @@ std::vector<SessionPart> SessionStore::parts(std::int64_t session)
     return result;
 }
 
-// A session of several devices lasts as long as its longest part: its
-// rate and count stand for the session's in a list.
-void SessionStore::fillFromLongestPart(SessionSummary& summary)
-{
-    if (summary.devices == 0) return;
-    for (const SessionPart& part : parts(summary.id)) {
-        const auto own = session(part.id);
-        if (!own || !(own->sampleRate_hz > 0.0)) continue;
-        if (summary.sampleRate_hz <= 0.0 || own->duration_s() > summary.duration_s()) {
-            summary.sampleRate_hz = own->sampleRate_hz;
-            summary.sampleCount = own->sampleCount;
-        }
-    }
-}
-
 }  // namespace tactiscope::core::storage

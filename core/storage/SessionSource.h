@@ -160,6 +160,9 @@ public:
     // A session of several devices' parts, in the order they were begun;
     // none for a session of one device (its channels are its own).
     virtual std::vector<SessionPart> parts(std::int64_t session) = 0;
+    // A session of several devices lasts as long as its longest part: its
+    // rate and count stand for the session's in a list.
+    void fillFromLongestPart(SessionSummary& summary);
     // Per channel, including gaps and lost ones at the end.
     virtual std::uint64_t sampleCount(std::int64_t session) = 0;
     virtual std::vector<SampleGap> gaps(std::int64_t session) = 0;

@@ -133,7 +133,6 @@ private:
     void showCrashedRecordingsInterrupted(std::span<SessionSummary> summaries);
     std::int64_t insertSessionRow(const SessionMetadata& metadata, const SessionOrigin& origin);
     void refuseUnknownParent(std::int64_t session);
-    void fillFromLongestPart(SessionSummary& summary);
 
     Database m_db;
     SessionLayout m_layout{m_db};  // checked before any count read sizes anything

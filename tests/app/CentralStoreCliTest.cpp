@@ -157,6 +157,70 @@ TEST_F(CentralStoreCli, AGeneralSessionAndItsChannelsRolesGoToTheServerAsTheyAre
     expectSameExports(maker, server("quality"));
 }
 
+// A session of several devices (issue 40) goes whole: the session, each
+// device's part with its rate, samples and clock, in one transaction; the
+// reviewer lists the session once, reads its parts and exports the same
+// bytes as the station; a second sync finds it there. No station can hang
+// a part on another station's session, nor add one to a finished session.
+TEST_F(CentralStoreCli, ASessionOfSeveralDevicesGoesWholeWithItsPartsAndClocks)
+{
+    const QString lab = m_dir.filePath("lab.tactiscope");
+    std::int64_t sessionId = 0;
+    {
+        core::storage::SessionStore store(lab.toStdString());
+        core::storage::SessionMetadata metadata;
+        metadata.mode = core::Mode::Capacitive;
+        metadata.subject = "beam-3";
+        sessionId = store.beginSessionOfDevices(metadata);
+        metadata.partOf = sessionId;
+        metadata.deviceName = "beam";
+        const std::vector<core::ChannelDescriptor> capacitance{{"capacitance", "F", core::ChannelKind::Capacitance}};
+        const std::vector<core::ChannelDescriptor> force{{"force", "N", core::ChannelKind::Force}};
+        const std::int64_t beam = store.beginSession(metadata, capacitance, 100.0);
+        tactiscope::testing::writeSamples(store, beam, 1, 1000, 100.0, 3);
+        store.setClockMapping(beam, R"({"reference_s":5,"offset_s":0.5,"drift":8e-05,"span_s":9,"pairs":900,)"
+                                    R"("uncertainty":"spread","offset_u_s":1.2e-05,"drift_u":3e-07})");
+        metadata.deviceName = "load-cell";
+        metadata.mode = core::Mode::General;
+        const std::int64_t cell = store.beginSession(metadata, force, 1000.0);
+        tactiscope::testing::writeSamples(store, cell, 1, 12000, 1000.0, 4);
+        for (const std::int64_t id : {beam, cell, sessionId}) store.endSession(id, core::SessionStatus::Complete);
+    }
+    const CliResult sent = sync(lab, server("press_a"));
+    ASSERT_EQ(sent.exitCode, 0) << sent.err.toStdString();
+    EXPECT_TRUE(sent.out.contains("synced 1 sessions")) << sent.out.toStdString();
+    auto owner = connect();
+    EXPECT_EQ(owner.query("SELECT count(*) FROM sessions").text(0, 0), "3");
+    EXPECT_EQ(owner.query("SELECT string_agg(device_name, ',' ORDER BY id) FROM sessions WHERE parent_id IS NOT NULL")
+                  .text(0, 0),
+              "beam,load-cell");
+    EXPECT_EQ(owner.query("SELECT count(*) FROM sessions WHERE NOT complete").text(0, 0), "0");
+
+    const auto onServer = listed(server("quality"));
+    ASSERT_EQ(onServer.size(), 1u);  // the session, not its parts
+    const CliResult shown = runCli({"sessions", "--db", server("quality"), "show", onServer.begin()->first});
+    ASSERT_EQ(shown.exitCode, 0) << shown.err.toStdString();
+    EXPECT_TRUE(shown.out.contains("load-cell")) << shown.out.toStdString();
+    EXPECT_TRUE(shown.out.contains("80.0 ± 0.3 ppm slow")) << shown.out.toStdString();
+    expectSameExports(lab, server("quality"));
+
+    const CliResult again = sync(lab, server("press_a"));
+    ASSERT_EQ(again.exitCode, 0) << again.err.toStdString();
+    EXPECT_TRUE(again.out.contains("synced 0 sessions")) << again.out.toStdString();
+    EXPECT_TRUE(again.out.contains("1 already there")) << again.out.toStdString();
+
+    // A part hung on another station's session, or on a finished one of its own.
+    const std::string parent = owner.query("SELECT id FROM sessions WHERE parent_id IS NULL").text(0, 0);
+    const std::string part =
+        "INSERT INTO sessions (uuid, station, mode, started_utc, status, app_version, parent_id, device_name) "
+        "VALUES ($1, $2, 'general', '2026-01-01T00:00:00Z', 'complete', '1', $3, 'x')";
+    auto pressB = connect("press_b");
+    EXPECT_TRUE(refused(pressB, part, {"6f1c7d1e-0000-4000-8000-000000000001", "press_b", parent}));
+    auto pressA = connect("press_a");
+    EXPECT_TRUE(refused(pressA, part, {"6f1c7d1e-0000-4000-8000-000000000002", "press_a", parent}));
+    EXPECT_EQ(owner.query("SELECT count(*) FROM sessions").text(0, 0), "3");
+}
+
 TEST_F(CentralStoreCli, TwoStationsListTogetherWithTheirNamesAndExportTheSameBytes)
 {
     const CliResult a = sync(m_stationA, server("press_a"));

@@ -113,6 +113,13 @@ ALTER TABLE events DROP CONSTRAINT IF EXISTS events_kind_check;
 ALTER TABLE events ADD CONSTRAINT events_kind_check
     CHECK (kind IN ('defect', 'contact', 'press', 'alarm', 'marker', 'trigger'));
 ALTER TABLE sessions ADD COLUMN IF NOT EXISTS trigger_setup TEXT NOT NULL DEFAULT '';
+-- Schema 7: sessions of several devices (issue 40): each device a part, a
+-- session row whose parent_id is its session, with the device's name and
+-- the mapping of its clock onto the session's.
+ALTER TABLE sessions ADD COLUMN IF NOT EXISTS parent_id BIGINT REFERENCES sessions (id) ON DELETE CASCADE;
+ALTER TABLE sessions ADD COLUMN IF NOT EXISTS device_name TEXT NOT NULL DEFAULT '';
+ALTER TABLE sessions ADD COLUMN IF NOT EXISTS clock_json TEXT NOT NULL DEFAULT '';
+CREATE INDEX IF NOT EXISTS sessions_by_parent ON sessions (parent_id);
 
 CREATE TABLE IF NOT EXISTS readings (
     id             BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY,
@@ -288,6 +295,21 @@ BEGIN
     RETURN NEW;
 END)sql";
 
+// A device's part joins a session of its own station's that is still being
+// sent, and a session of one level: no station hangs a part on another's
+// session (its reviewers would read it as that station's), adds one to a
+// finished session, or nests parts.
+constexpr const char* kPartOfOwnSession = R"sql(
+BEGIN
+    IF NEW.parent_id IS NOT NULL AND NOT EXISTS (
+            SELECT 1 FROM sessions p WHERE p.id = NEW.parent_id AND p.station = NEW.station AND NOT p.complete
+               AND p.parent_id IS NULL) THEN
+        RAISE EXCEPTION 'a device''s part belongs to a session of its own station still being sent'
+            USING ERRCODE = 'check_violation';
+    END IF;
+    RETURN NEW;
+END)sql";
+
 // The session's verdict is the latest decision of its trail, set by the
 // server as each decision arrives.
 constexpr const char* kVerdictFromTrail = R"sql(
@@ -358,6 +380,7 @@ void initCentralStore(PgConnection& connection)
     script += kSchema;
     script += kBounds;
     script += serverTrigger("chunk_fits_channels", "BEFORE INSERT", "chunks", kChunkFitsChannels);
+    script += serverTrigger("part_of_own_session", "BEFORE INSERT", "sessions", kPartOfOwnSession);
     script += kRights;
     script += serverTrigger("verdict_from_trail", "AFTER INSERT", "verdicts", kVerdictFromTrail);
     script += policies("sessions", "station = current_user", "complete");

@@ -27,7 +27,8 @@ const std::string kSummaryQuery =
     "coalesce((SELECT sample_rate_hz FROM channels WHERE session_id = s.id AND position = 0), 0), " +
     kSampleEnd +
     ", (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live'), station, station_id, "
-    "trigger_setup " +
+    "trigger_setup, coalesce(parent_id, 0), device_name, "
+    "(SELECT count(*) FROM sessions p WHERE p.parent_id = s.id AND p.complete) " +
     "FROM sessions s WHERE complete ";
 
 SessionSummary summaryFrom(const PgResult& r, int row)
@@ -47,8 +48,8 @@ SessionSummary summaryFrom(const PgResult& r, int row)
                   r.text(row, 10),
                   r.text(row, 11),
                   r.text(row, 22),
-                  0,
-                  {}};
+                  r.int64(row, 23),
+                  r.text(row, 24)};
     s.startedUtc = r.text(row, 12);
     s.endedUtc = r.text(row, 13);
     s.status = sessionStatusFromString(r.text(row, 14)).value_or(SessionStatus::Interrupted);
@@ -59,6 +60,7 @@ SessionSummary summaryFrom(const PgResult& r, int row)
     s.eventCount = static_cast<std::uint64_t>(r.int64(row, 19));
     s.station = r.text(row, 20);
     s.stationId = r.int64(row, 21);
+    s.devices = static_cast<std::size_t>(r.int64(row, 25));
     return s;
 }
 
@@ -193,17 +195,40 @@ std::vector<SessionSummary> CentralStore::sessions(const SessionFilter& filter)
     }
     // LIMIT NULL: all of them.
     filter.limit > 0 ? values.int64(static_cast<std::int64_t>(filter.limit)) : values.null();
-    const PgResult r = m_connection.query(kSummaryQuery + where + " ORDER BY started_utc DESC, id DESC LIMIT $" +
-                                              std::to_string(++n) + "::bigint",
-                                          values, PgFormat::Binary);
-    return rowsOf(r, [](const PgResult& q, int i) { return summaryFrom(q, i); });
+    // A device's part is listed with its session, not of its own.
+    const PgResult r =
+        m_connection.query(kSummaryQuery + "AND parent_id IS NULL" + where +
+                               " ORDER BY started_utc DESC, id DESC LIMIT $" + std::to_string(++n) + "::bigint",
+                           values, PgFormat::Binary);
+    auto summaries = rowsOf(r, [](const PgResult& q, int i) { return summaryFrom(q, i); });
+    for (SessionSummary& summary : summaries) fillFromLongestPart(summary);
+    return summaries;
 }
 
 std::optional<SessionSummary> CentralStore::session(std::int64_t id)
 {
     const PgResult r = m_connection.query(kSummaryQuery + "AND id = $1", PgParams().int64(id), PgFormat::Binary);
     if (r.rows() == 0) return std::nullopt;
-    return summaryFrom(r, 0);
+    SessionSummary summary = summaryFrom(r, 0);
+    fillFromLongestPart(summary);
+    return summary;
+}
+
+std::vector<SessionPart> CentralStore::parts(std::int64_t session)
+{
+    const PgResult r = m_connection.query(
+        "SELECT id, device_name, device_model, device_serial, device_firmware, clock_json, status FROM sessions "
+        "WHERE complete AND parent_id = $1 ORDER BY id",
+        PgParams().int64(session), PgFormat::Binary);
+    return rowsOf(r, [](const PgResult& q, int i) {
+        return SessionPart{q.int64(i, 0),
+                           q.text(i, 1),
+                           q.text(i, 2),
+                           q.text(i, 3),
+                           q.text(i, 4),
+                           q.text(i, 5),
+                           sessionStatusFromString(q.text(i, 6)).value_or(SessionStatus::Interrupted)};
+    });
 }
 
 std::optional<std::int64_t> CentralStore::sessionWithUuid(const std::string& uuid)
@@ -219,9 +244,16 @@ void CentralStore::checkLayout(std::int64_t session)
     const PgResult s = m_connection.query(
         "SELECT started_utc, coalesce(ended_utc, ''), (SELECT count(*) FROM channels WHERE session_id = s.id), "
         "(SELECT min(sample_rate_hz) FROM channels WHERE session_id = s.id), "
-        "(SELECT max(sample_rate_hz) FROM channels WHERE session_id = s.id) FROM sessions s WHERE complete AND id = $1",
+        "(SELECT max(sample_rate_hz) FROM channels WHERE session_id = s.id), "
+        "(SELECT count(*) FROM sessions p WHERE p.parent_id = s.id) FROM sessions s WHERE complete AND id = $1",
         PgParams().int64(session), PgFormat::Binary);
     if (s.rows() == 0) return;  // not listed: nothing of it is read
+    // A session of several devices holds no samples of its own: its parts
+    // do, and each is checked as a session when it is read.
+    if (s.int64(0, 2) == 0 && s.int64(0, 5) > 0) {
+        m_checked.insert(session);
+        return;
+    }
     const auto started = text::utcSeconds(s.text(0, 0)), ended = text::utcSeconds(s.text(0, 1));
     SessionBounds bounds(location(), session);
     bounds.session(started && ended ? *ended - *started : 0.0, s.int64(0, 2), s.isNull(0, 3) ? 0.0 : s.real(0, 3),

@@ -35,9 +35,7 @@ public:
     std::optional<SessionSummary> session(std::int64_t id) override;
     std::optional<std::int64_t> sessionWithUuid(const std::string& uuid) override;
     std::vector<StoredChannel> channels(std::int64_t session) override;
-    // None: a central store holds sessions of one device (a station's sync
-    // keeps a session of several at the station, and says so).
-    std::vector<SessionPart> parts(std::int64_t) override { return {}; }
+    std::vector<SessionPart> parts(std::int64_t session) override;
     std::uint64_t sampleCount(std::int64_t session) override;
     std::vector<SampleGap> gaps(std::int64_t session) override;
     std::size_t readChannels(std::int64_t session, std::span<const std::size_t> channels, std::uint64_t firstIndex,

@@ -79,23 +79,27 @@ public:
     {
     }
 
-    // Sends one session; returns the values sent.
+    // Sends one session, and a session of several devices with all its
+    // parts, whole or not at all; returns the values sent.
     std::uint64_t send(const SessionSummary& s, const std::string& checksum)
     {
         PgTransaction transaction(m_db);
-        const std::int64_t id = insertSession(s);
-        insertChannelsAndGaps(s.id, id);  // first: the server checks each chunk against the channels
-        const std::uint64_t values = copyChunks(s.id, id);
-        copyPyramid(s.id, id);
-        insertRecords(s.id, id);
-        insertCalibrations(s.id, id);
-        // The last step: what arrived is what the station holds.
-        const std::string arrived = m_db.query(kServerChecksum, PgParams().int64(id)).text(0, 0);
-        if (arrived != checksum)
-            throw StorageError("its samples arrived damaged (checksum " + arrived + ", sent " + checksum +
-                               "); nothing of it was kept");
-        m_db.query("UPDATE sessions SET complete = true, checksum = $1 WHERE id = $2",
-                   PgParams().text(checksum).int64(id));
+        std::uint64_t values = 0;
+        if (s.devices == 0) {
+            values = sendRows(s, checksum, {});
+        } else {
+            // The session itself holds no samples: its records, then each
+            // device's part under it, then the session made complete.
+            const std::int64_t id = insertSession(s, {});
+            insertRecords(s.id, id);
+            for (const SessionPart& part : m_local.parts(s.id)) {
+                const auto summary = m_local.session(part.id);
+                if (!summary) throw StorageError("its part " + std::to_string(part.id) + " cannot be read");
+                values += sendRows(*summary, sessionChecksum(m_local, part.id), PartRow{id, part.clockJson});
+            }
+            m_db.query("UPDATE sessions SET complete = true, checksum = $1 WHERE id = $2",
+                       PgParams().text(checksum).int64(id));
+        }
         transaction.commit();
         return values;
     }
@@ -134,7 +138,32 @@ public:
     }
 
 private:
-    std::int64_t insertSession(const SessionSummary& s)
+    struct PartRow {
+        std::int64_t parent = 0;  // the session's id on the server
+        std::string clockJson;
+    };
+
+    // A session of one device, or one device's part: its row, samples,
+    // pyramid and records, checked against what the station holds.
+    std::uint64_t sendRows(const SessionSummary& s, const std::string& checksum, const std::optional<PartRow>& part)
+    {
+        const std::int64_t id = insertSession(s, part);
+        insertChannelsAndGaps(s.id, id);  // first: the server checks each chunk against the channels
+        const std::uint64_t values = copyChunks(s.id, id);
+        copyPyramid(s.id, id);
+        insertRecords(s.id, id);
+        insertCalibrations(s.id, id);
+        // The last step: what arrived is what the station holds.
+        const std::string arrived = m_db.query(kServerChecksum, PgParams().int64(id)).text(0, 0);
+        if (arrived != checksum)
+            throw StorageError("its samples arrived damaged (checksum " + arrived + ", sent " + checksum +
+                               "); nothing of it was kept");
+        m_db.query("UPDATE sessions SET complete = true, checksum = $1 WHERE id = $2",
+                   PgParams().text(checksum).int64(id));
+        return values;
+    }
+
+    std::int64_t insertSession(const SessionSummary& s, const std::optional<PartRow>& part)
     {
         const SessionMetadata& m = s.metadata;
         PgParams p;
@@ -145,13 +174,13 @@ private:
         p.text(std::string(toString(s.status)));
         p.text(m.deviceModel).text(m.deviceSerial).text(m.deviceFirmware).text(m.profileJson);
         p.text(m.calibrationsJson).text(s.appVersion).int64(s.id).text(m.trigger);
+        part ? p.int64(part->parent) : p.null();
+        p.text(m.deviceName).text(part ? part->clockJson : std::string{});
         return m_db
             .query("INSERT INTO sessions (uuid, station, mode, subject, operator, site, notes, started_utc, ended_utc, "
                    "status, device_model, device_serial, device_firmware, profile_json, calibrations_json, "
-                   "app_version, station_id, trigger_setup) VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, "
-                   "$13, "
-                   "$14, $15, $16, $17, $18) "
-                   "RETURNING id",
+                   "app_version, station_id, trigger_setup, parent_id, device_name, clock_json) VALUES ($1, $2, $3, "
+                   "$4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14, $15, $16, $17, $18, $19, $20, $21) RETURNING id",
                    p)
             .int64(0, 0);
     }
@@ -346,6 +375,14 @@ std::string syncSummary(const SyncOutcome& outcome)
 std::string sessionChecksum(SessionStore& local, std::int64_t session)
 {
     std::string lines;
+    // A session of several devices: its parts', each named by its device.
+    for (const SessionPart& part : local.parts(session))
+        lines += part.deviceName + ' ' + sessionChecksum(local, part.id) + '\n';
+    if (!lines.empty()) {
+        text::Md5 md5;
+        md5.add(lines);
+        return md5.hex();
+    }
     local.forEachChunk(session, [&lines](const SessionStore::RawChunk& c) {
         if (!lines.empty()) lines += '\n';
         lines += chunkLine(c.firstIndex, c.count, c.samples);
@@ -378,12 +415,6 @@ SyncOutcome syncToCentral(SessionStore& local, CentralStore& central, const std:
             outcome.keptAtStation.push_back("session " + s->uuid +
                                             ": its reviewer decisions stay at the station (a reviewer decides on "
                                             "the central store: sessions --db SERVER verdict)");
-        if (s->devices > 0) {
-            outcome.refused.push_back("session " + s->uuid + " holds " + std::to_string(s->devices) +
-                                      " devices; a central store takes sessions of one device only, so it stays at "
-                                      "the station");
-            continue;
-        }
         if (!text::isUuid(s->uuid)) {  // stored before imports checked them: reported, and the others go
             outcome.refused.push_back("session " + std::to_string(s->id) + " ('" + s->uuid.substr(0, 40) +
                                       "') has no valid uuid; it was not sent");
@@ -421,8 +452,7 @@ SyncOutcome syncToCentral(SessionStore& local, CentralStore& central, const std:
 
 int sessionsToSync(SessionStore& local, CentralStore& central)
 {
-    std::vector<SessionSummary> finished = finishedSessions(local.sessions());
-    std::erase_if(finished, [](const SessionSummary& s) { return s.devices > 0; });  // kept at the station
+    const std::vector<SessionSummary> finished = finishedSessions(local.sessions());
     return static_cast<int>(finished.size() - sessionsOnServer(central.connection(), finished).size());
 }
 

@@ -44,7 +44,9 @@ struct SyncProgress {
 
 // The checksum of a session's samples, as the central store computes it
 // from the rows it holds: the MD5 of one line "first:count:md5(samples)"
-// per chunk, in order, joined by newlines.
+// per chunk, in order, joined by newlines. A session of several devices
+// holds no samples of its own: the MD5 of one line "device checksum" per
+// part, so a session sent again with other parts is told apart.
 std::string sessionChecksum(SessionStore& local, std::int64_t session);
 
 // Sends what the central store lacks. `station` names where the sessions
