@@ -223,6 +223,10 @@ void CapacitiveWizard::showMethod(int page)
         return;
     }
     const bool sweep = sweeping();
+    // Weights' loads and a sweep's points never mix: the other way's are
+    // dropped when the way changed since.
+    if (sweep != m_sweep.has_value() && !loads().empty()) setLoads({});
+    if (!sweep) m_sweep.reset();
     currentPage()->setSubTitle(
         sweep ? tr("One sweep from nothing to full scale and back, read by the reference force. Its samples are "
                    "gathered in ten bins each way; each bin's capacitance at its middle force is a point.")
