@@ -1,6 +1,9 @@
 // ChannelRolesBox: a role list per channel, and the roles kept in QSettings.
 #include "ui/ChannelRolesBox.h"
 
+#include "core/modes/ModeDefinition.h"
+#include "ui/VocabularyText.h"
+
 #include <QComboBox>
 #include <QFormLayout>
 #include <QLabel>
@@ -8,33 +11,56 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace tactiscope::ui {
 namespace {
 
-constexpr core::ChannelRole kRoles[] = {core::ChannelRole::CantileverA,   core::ChannelRole::CantileverB,
-                                        core::ChannelRole::StiffBeam,     core::ChannelRole::SoftBeam,
-                                        core::ChannelRole::Displacement,  core::ChannelRole::Capacitance,
-                                        core::ChannelRole::ReferenceForce};
-
-QString roleTitle(core::ChannelRole role)
+QString roleName(core::ChannelRole role)
 {
     switch (role) {
     case core::ChannelRole::CantileverA:
-        return QObject::tr("cantilever A (panel scan)");
+        return QObject::tr("cantilever A");
     case core::ChannelRole::CantileverB:
-        return QObject::tr("cantilever B (panel scan)");
+        return QObject::tr("cantilever B");
     case core::ChannelRole::StiffBeam:
-        return QObject::tr("stiff beam (palpation)");
+        return QObject::tr("stiff beam");
     case core::ChannelRole::SoftBeam:
-        return QObject::tr("soft beam (palpation)");
+        return QObject::tr("soft beam");
     case core::ChannelRole::Displacement:
-        return QObject::tr("displacement (palpation)");
+        return QObject::tr("displacement");
     case core::ChannelRole::Capacitance:
-        return QObject::tr("capacitance (capacitive)");
+        return QObject::tr("capacitance");
     case core::ChannelRole::ReferenceForce:
-        return QObject::tr("reference force (capacitive calibration)");
+        return QObject::tr("reference force");
     }
     return {};
+}
+
+// Each role a mode reads, then each it uses when a channel plays it, in the
+// registry's order, titled with the mode's: "capacitance (capacitive)".
+// A mode's roles are offered from its definition, none listed here.
+std::vector<std::pair<core::ChannelRole, QString>> offeredRoles()
+{
+    std::vector<std::pair<core::ChannelRole, QString>> offered;
+    const auto offer = [&offered](core::ChannelRole role, const QString& title) {
+        if (std::ranges::none_of(offered, [role](const auto& o) { return o.first == role; }))
+            offered.emplace_back(role, title);
+    };
+    for (const core::ModeDefinition& mode : core::modeDefinitions()) {
+        const QString title = modeTitle(mode.mode).toLower();
+        for (const core::ChannelRole role : mode.roles) offer(role, QObject::tr("%1 (%2)").arg(roleName(role), title));
+        for (const core::ChannelRole role : mode.optionalRoles)
+            offer(role, QObject::tr("%1 (%2, when present)").arg(roleName(role), title));
+    }
+    return offered;
+}
+
+QString roleTitle(core::ChannelRole role)
+{
+    for (const auto& [offered, title] : offeredRoles())
+        if (offered == role) return title;
+    return roleName(role);
 }
 
 // One settings key per device: its model and serial, so two boards of one
@@ -102,8 +128,8 @@ void ChannelRolesBox::setChannels(const std::vector<core::ChannelDescriptor>& de
                             ? tr("device: %1").arg(roleTitle(*channel.role))
                             : tr("by kind (%1)").arg(QString::fromStdString(std::string(toString(channel.kind)))),
                         QString());
-        for (const core::ChannelRole role : kRoles)
-            choice->addItem(roleTitle(role), QString::fromStdString(std::string(toString(role))));
+        for (const auto& [role, title] : offeredRoles())
+            choice->addItem(title, QString::fromStdString(std::string(toString(role))));
         if (const auto found = given.find(channel.name); found != given.end())
             choice->setCurrentIndex(choice->findData(QString::fromStdString(std::string(toString(found->second)))));
         connect(choice, &QComboBox::currentIndexChanged, this, [this] {
