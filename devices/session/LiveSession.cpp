@@ -15,12 +15,25 @@
 #include "devices/SteadyClock.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
 namespace tactiscope::devices::session {
+namespace {
+
+// The lists' generations are numbered across every live session of the
+// process: a view bound to another device's session (a new connection)
+// never takes its lists for the ones it has drawn.
+std::uint64_t nextListGeneration()
+{
+    static std::atomic<std::uint64_t> generation{0};
+    return ++generation;
+}
+
+}  // namespace
 
 LiveSession::LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions options)
     : m_options(std::move(options))
@@ -50,6 +63,7 @@ LiveSession::LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions
     m_acquisition->addSink(m_gate);
     buildAll();
     m_mode = declaredMode();
+    m_lists.generation = nextListGeneration();
     applyLimits();  // the probe's own, from the start
 }
 
@@ -405,7 +419,7 @@ void LiveSession::takeNotices()
 void LiveSession::startLists(LiveClock clock)
 {
     for (const auto& [mode, unit] : m_units) unit->clearLists();
-    ++m_lists.generation;
+    m_lists.generation = nextListGeneration();
     m_lists.clock = clock;
     m_lists.session = clock == LiveClock::SinceConnect ? 0 : sessionId();
     m_lists.origin_s = 0.0;

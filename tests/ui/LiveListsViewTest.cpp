@@ -18,6 +18,7 @@
 #include "ui/PanelScanView.h"
 #include "ui/SiteGridMap.h"
 
+#include <QAction>
 #include <QComboBox>
 #include <QDialog>
 #include <QHeaderView>
@@ -25,6 +26,7 @@
 #include <QLocale>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTest>
 
 #include <gtest/gtest.h>
 
@@ -96,6 +98,33 @@ TEST(LiveListsView, AfterStopTheDefectTableIsWhatWasStoredThenANewListStartsSinc
     EXPECT_TRUE(count->text().contains(QStringLiteral("since connect — not recorded"))) << count->text().toStdString();
     for (int row = 0; row < table->rowCount(); ++row)
         EXPECT_GT(QLocale().toDouble(table->item(row, 0)->text()), stored.back().start_s) << row;
+}
+
+// Issue 52: the operator starts on the simulator, sees defects listed, then
+// picks another source from the Device menu (the connector's real path):
+// the new device's lists start empty instead of being read past their end.
+TEST(LiveListsView, ConnectingAnotherDeviceAfterDefectsWereListedStartsItsListEmpty)
+{
+    QTemporaryDir dir;
+    ui::MainWindow window;
+    window.setStorePath(dir.filePath("s.tactiscope"));
+    window.resize(1366, 768);
+    window.connectSource(spedUp("panel-scan"));
+    window.show();
+    auto* view = window.findChild<ui::PanelScanView*>();
+    auto* table = child<QTableWidget>(*view, "defectTable");
+    ASSERT_TRUE(waitFor([&] { return table->rowCount() >= 1; }, 20000));
+
+    QAction* panelLine = nullptr;
+    for (QAction* action : window.findChildren<QAction*>())
+        if (action->text() == QStringLiteral("panel-line")) panelLine = action;
+    ASSERT_NE(panelLine, nullptr);
+    panelLine->trigger();
+    ASSERT_TRUE(window.isConnected());
+    QTest::qWait(300);  // a few frames of the new device's views
+    EXPECT_EQ(table->rowCount(), 0);
+    EXPECT_TRUE(child<QLabel>(*view, "defectCountLabel")->text().startsWith(QStringLiteral("0 defects")))
+        << child<QLabel>(*view, "defectCountLabel")->text().toStdString();
 }
 
 TEST(LiveListsView, PressesAreListedOnTheRecordingsClockAndTheGridStartsAtTheSiteSelectedBeforeRecord)
