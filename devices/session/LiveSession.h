@@ -275,6 +275,7 @@ private:
     void takeTriggered();
     void takeLimitAlarms();
     void storeAlarm(const LimitAlarm& raised, double end_s);
+    void storeAlarmsBeforeTrigger();
     core::RoleAssignment effectiveRoles(const std::vector<core::ChannelDescriptor>& device) const;
     std::optional<std::string> rebuildChannels();
     void buildAll();
@@ -325,6 +326,13 @@ private:
     std::vector<core::sensors::SensorLimit> m_effectiveLimits;
     std::vector<LimitAlarm> m_alarmsTold;
     std::vector<LimitAlarm> m_raisedAlarms;  // as raised: stream times
+    // Alarms that ended while the trigger was armed and nothing recorded:
+    // a session it starts next may reach back over them (stream times).
+    struct ClosedAlarm {
+        LimitAlarm raised;
+        double cleared_s = 0.0;
+    };
+    std::vector<ClosedAlarm> m_alarmsBeforeTrigger;
 };
 
 }  // namespace tactiscope::devices::session

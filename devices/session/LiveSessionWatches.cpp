@@ -6,6 +6,7 @@
 #include "core/storage/DefectRecords.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace tactiscope::devices::session {
 
@@ -116,6 +117,7 @@ std::optional<RecordingSummary> LiveSession::disarmTrigger()
     if (m_trigger && m_recorder) open = finishRecording();
     m_gate->disarm();
     m_trigger.reset();
+    m_alarmsBeforeTrigger.clear();
     return open;
 }
 
@@ -128,7 +130,12 @@ void LiveSession::takeTriggered()
     if (m_gate->takeFinished()) m_triggeredSummaries.push_back(finishRecording());
     if (m_recorder) return;
     const auto pending = m_gate->pendingStart();
-    if (!pending) return;
+    if (!pending) {
+        // Only what a session the trigger may still start reaches back to is kept.
+        const auto reachBack = m_gate->reachBack_s().value_or(std::numeric_limits<double>::infinity());
+        std::erase_if(m_alarmsBeforeTrigger, [reachBack](const ClosedAlarm& c) { return c.cleared_s < reachBack; });
+        return;
+    }
     auto request = m_triggerRequest;
     request.subject = core::trigger::numberedSubject(m_triggerRequest.subject, m_triggeredStarted);
     m_part = m_options.partOf;
@@ -140,7 +147,8 @@ void LiveSession::takeTriggered()
         return;
     }
     ++m_triggeredStarted;
-    m_gate->attach(m_recorder);
+    m_gate->attach(m_recorder);  // its first samples are in the recorder now: its clock is known
+    storeAlarmsBeforeTrigger();
     core::storage::SessionEvent trigger;
     trigger.kind = core::EventKind::Trigger;
     trigger.start_s = trigger.end_s = m_recorder->sessionTimeOf(pending->triggerTime_s);
@@ -175,12 +183,28 @@ void LiveSession::takeLimitAlarms()
         if (alarm.change.raised) {
             m_raisedAlarms.push_back(alarm);
         } else if (const auto raised = std::ranges::find_if(m_raisedAlarms, same); raised != m_raisedAlarms.end()) {
-            if (m_recorder) storeAlarm(*raised, m_recorder->sessionTimeOf(alarm.time_s));
+            if (m_recorder)
+                storeAlarm(*raised, m_recorder->sessionTimeOf(alarm.time_s));
+            else if (m_trigger)  // the session a trigger is about to start may reach back over it
+                m_alarmsBeforeTrigger.push_back({*raised, alarm.time_s});
             m_raisedAlarms.erase(raised);
         }
         alarm.time_s = listTime_s(alarm.time_s);
         m_alarmsTold.push_back(std::move(alarm));
     }
+}
+
+// The alarms raised and cleared before a triggered session's recorder was
+// made, from samples it reaches back to (its pre-trigger time, the
+// stroke that triggered it): stored in it as a manual recording of the
+// same samples would have; those older than any session can reach back to
+// are forgotten.
+void LiveSession::storeAlarmsBeforeTrigger()
+{
+    const auto origin = m_recorder->acquisitionOrigin_s();
+    for (const auto& closed : std::exchange(m_alarmsBeforeTrigger, {}))
+        if (origin && closed.cleared_s >= *origin)
+            storeAlarm(closed.raised, m_recorder->sessionTimeOf(closed.cleared_s));
 }
 
 // An alarm as the recording keeps it: from its raise (or the recording's

@@ -90,6 +90,44 @@ TEST(TriggeredRecordCli, APanelLineGetsOneSessionPerPanelFromHalfASecondBeforeIt
     }
 }
 
+// Issue 52: the stroke that triggers a session crosses the limits too; the
+// session receives every alarm of its samples, the pre-trigger window's
+// included, exactly as a manual recording of them would. Checked against
+// the stored samples: each level crossed in them is an alarm of that
+// severity spanning the first sample beyond it.
+TEST(TriggeredRecordCli, ATriggeredSessionKeepsTheAlarmsOfTheStrokeThatTriggeredIt)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath("line.tactiscope");
+    const auto result = recordEmulated(dir.path(), db, QStringLiteral("panel-line"), 30,
+                                       {"--subject", "door-17", "--trigger", "a>20e-6", "--pre", "0.5", "--post", "1",
+                                        "--sessions", "2", "--limit", "a>warning:20e-6,critical:28e-6"});
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    EXPECT_TRUE(result.err.contains(QStringLiteral("critical"))) << result.err.toStdString();
+
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto sessions = store.sessions();
+    ASSERT_EQ(sessions.size(), 2u);
+    for (const auto& session : sessions) {
+        SCOPED_TRACE(session.metadata.subject);
+        const auto a = store.readChannel(session.id, 0, 0, store.sampleCount(session.id));
+        const double dt_s = 1.0 / session.sampleRate_hz;
+        const auto alarms = eventsOfKind(store, session.id, core::EventKind::Alarm);
+        for (const auto& [level, severity] : {std::pair{20e-6, "warning"}, std::pair{28e-6, "critical"}}) {
+            SCOPED_TRACE(severity);
+            const auto first = std::ranges::find_if(a, [level](double v) { return v > level; });
+            ASSERT_NE(first, a.end()) << "the scenario's stroke reaches the level";
+            const double crossed_s = static_cast<double>(first - a.begin()) * dt_s;
+            const auto covering = std::ranges::find_if(alarms, [&](const core::storage::SessionEvent& e) {
+                return e.note.find(std::string("its ") + severity) != std::string::npos && e.start_s <= crossed_s + dt_s &&
+                       e.end_s >= crossed_s;
+            });
+            EXPECT_NE(covering, alarms.end()) << "no " << severity << " alarm at " << crossed_s << " s among "
+                                              << alarms.size() << " alarms";
+        }
+    }
+}
+
 TEST(TriggeredRecordCli, AnOverloadedCapacitiveBeamWarnsThenIsCriticalAndStopOnCriticalKeepsTheData)
 {
     QTemporaryDir dir;
