@@ -39,6 +39,15 @@ std::vector<double> lagRange_s(double start_s, double stop_s, double step_s)
     return lags;
 }
 
+double shortestJudged_s(const DetectorParameters& parameters)
+{
+    const double longestLag_s =
+        parameters.lags_s.empty() ? 0.0 : *std::max_element(parameters.lags_s.begin(), parameters.lags_s.end());
+    if (parameters.window_s) return longestLag_s + *parameters.window_s;
+    const double lambda_s = parameters.lambdaRule == LambdaRule::EqualsLag ? longestLag_s : parameters.fixedLambda_s;
+    return longestLag_s + 3.0 * lambda_s;
+}
+
 std::vector<double> liveLags_s(double sampleRate_hz)
 {
     const double step_s = std::max(0.002, 1.0 / sampleRate_hz);

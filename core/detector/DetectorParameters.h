@@ -47,6 +47,14 @@ std::vector<double> lagRange_s(double start_s, double stop_s, double step_s);
 // std::invalid_argument for a rate too slow to give a lag under 150 ms.
 std::vector<double> liveLags_s(double sampleRate_hz);
 
+// The shortest recording the detector can judge a panel on: its longest
+// lag (the first moment it can correlate every lag) plus three of that
+// lag's forgetting times λ (after which the weighted moments hold less
+// than 5 % of their start), or plus the window in the sliding-window form.
+// At the paper's settings: 0.15 + 3 × 0.15 = 0.6 s. A shorter recording
+// gets no automatic verdict: its silence says nothing of the panel.
+double shortestJudged_s(const DetectorParameters& parameters);
+
 // The parameters in samples, checked. A lag c becomes k = round(c/Δt) samples;
 // lags that round to the same k are kept once, in increasing order. The
 // window becomes round(h/Δt) samples.

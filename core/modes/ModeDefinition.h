@@ -49,6 +49,10 @@ struct ModeDefinition {
     ProfileType profile = ProfileType::None;
     // Stores the detector's defects and decides the automatic verdict.
     bool detectsDefects = false;
+    // The shortest recording its automatic verdict judges, as the rule its
+    // live unit applies, in words; a shorter one is "too short to judge"
+    // and gets none. Empty for a mode without an automatic verdict.
+    std::string_view shortestJudged{};
     // What its analysis stores as readings, if anything.
     std::optional<ReadingKind> readings{};
     // Why it has no zero to take; empty when it has one.

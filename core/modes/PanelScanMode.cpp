@@ -43,6 +43,8 @@ const ModeDefinition& panelScanMode()
         .roles = kRoles,
         .profile = ProfileType::None,
         .detectsDefects = true,
+        .shortestJudged = "the detector's longest lag plus three of its forgetting times "
+                          "(core/detector/DetectorParameters.h: shortestJudged_s; 0.6 s at the paper's settings)",
         .readings = std::nullopt,
         .noZero = "panel scan has no zero to take: the detector works on the signals' changes",
         .lanes = lanes,

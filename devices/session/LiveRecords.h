@@ -24,6 +24,8 @@ enum class LiveClock {
 struct LiveLists {
     // Changes whenever the lists start again (a recording starts, the
     // first event after a stop, other roles): a view clears and refills.
+    // Unique across the process's live sessions, so a view bound to a new
+    // device's session starts its lists again too; never 0.
     std::uint64_t generation = 0;
     LiveClock clock = LiveClock::SinceConnect;
     std::int64_t session = 0;  // the recording's (Recording, Recorded)
@@ -42,6 +44,9 @@ struct RecordingSummary {
     std::int64_t session = 0;
     core::storage::RecorderStats stats;
     std::optional<core::Verdict> verdict;  // the automatic one, stored with the session (panel scan)
+    // Why a mode that judges gave none: "too short to judge (0.01 s of the
+    // 0.6 s the detector needs)"; empty otherwise.
+    std::string notJudged;
     std::size_t defects = 0;               // of this recording's panel: crossings
     std::size_t sites = 0;                 // where they are: a defect crossed N times is one site
     // A probe that sends its own decisions: how far they agreed with the

@@ -8,6 +8,7 @@
 #include "core/storage/Recorder.h"
 #include "core/text/CountText.h"
 
+#include <cstdio>
 #include <stdexcept>
 
 namespace tactiscope::devices::session {
@@ -92,6 +93,17 @@ std::optional<core::storage::VerdictDecision> PanelScanUnit::finishRecording(Rec
     summary.sites = sites().sites.size();
     summary.probeAgreement = agreementSinceStart();
     if (!whole) return std::nullopt;
+    // The rule the panel-scan definition states (shortestJudged): a panel
+    // recorded for less than the detector needs was not inspected.
+    const auto& parameters = m_detection->settings().parameters;
+    const double recorded_s = summary.end_s + parameters.sampleInterval_s;
+    if (const double needed_s = core::detector::shortestJudged_s(parameters); recorded_s < needed_s) {
+        char text[96];
+        std::snprintf(text, sizeof text, "too short to judge (%.3g s of the %.3g s the detector needs)", recorded_s,
+                      needed_s);
+        summary.notJudged = text;
+        return std::nullopt;
+    }
     auto decision = core::storage::automaticDecision(core::storage::kLiveAnalysis, m_defects.size(), summary.sites,
                                                      m_detection->settings().parameters, summary.probeAgreement);
     summary.verdict = decision.verdict;
@@ -112,8 +124,10 @@ std::string PanelScanUnit::storedText(const RecordingSummary& summary) const
     using core::text::countText;
     std::string text = countText(summary.defects, "defect", "defects") + " stored" +
                        (summary.defects == 0 ? std::string() : " at " + countText(summary.sites, "site", "sites")) +
-                       ", verdict " +
-                       (summary.verdict ? std::string(core::verdictText(summary.verdict)) : std::string("none"));
+                       (summary.notJudged.empty() ? ", verdict " + (summary.verdict
+                                                                        ? std::string(core::verdictText(summary.verdict))
+                                                                        : std::string("none"))
+                                                  : ", " + summary.notJudged);
     if (summary.probeAgreement) text += "; " + core::detector::agreementText(*summary.probeAgreement);
     return text;
 }

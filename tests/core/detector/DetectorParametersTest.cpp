@@ -48,3 +48,20 @@ TEST(DetectorParameters, RejectsWhatCannotBeComputed)
     EXPECT_THROW(lagRange_s(0.010, 0.002, 0.002), std::invalid_argument);
     EXPECT_THROW(lagRange_s(0.002, 0.010, 0.0), std::invalid_argument);
 }
+
+// Issue 52: the shortest recording the detector judges, by hand: the
+// longest lag plus three of its forgetting times (λ = c: 0.15 + 0.45 s), a
+// fixed λ's three times (0.15 + 3 × 0.1 s), or the sliding window.
+TEST(DetectorParameters, TheShortestJudgedRecordingIsTheLongestLagAndItsSettling)
+{
+    DetectorParameters p;
+    EXPECT_NEAR(shortestJudged_s(p), 0.6, 1e-12);
+    p.lambdaRule = LambdaRule::Fixed;
+    p.fixedLambda_s = 0.1;
+    EXPECT_NEAR(shortestJudged_s(p), 0.45, 1e-12);
+    p.window_s = 0.2;
+    EXPECT_NEAR(shortestJudged_s(p), 0.35, 1e-12);
+    p = DetectorParameters{};
+    p.lags_s = lagRange_s(0.01, 0.05, 0.01);
+    EXPECT_NEAR(shortestJudged_s(p), 0.2, 1e-12);
+}
