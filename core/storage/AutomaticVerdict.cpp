@@ -1,6 +1,8 @@
 // AutomaticVerdict: the grounds written as a JSON object.
 #include "core/storage/AutomaticVerdict.h"
 
+#include "core/modes/ModeDefinition.h"
+
 #include <nlohmann/json.hpp>
 
 namespace tactiscope::core::storage {
@@ -28,6 +30,35 @@ VerdictDecision automaticDecision(const std::string& analysis, std::size_t defec
     VerdictDecision decision;
     decision.role = VerdictRole::Automatic;
     decision.verdict = automaticVerdict(sites);
+    decision.basisJson = basis.dump();
+    return decision;
+}
+
+std::optional<VerdictDecision> partsDecision(std::span<const SessionSummary> parts)
+{
+    const SessionSummary* decided = nullptr;
+    bool unjudged = false;
+    nlohmann::ordered_json judged = nlohmann::ordered_json::array();
+    for (const SessionSummary& part : parts) {
+        if (!part.verdict) {
+            unjudged = unjudged || definitionOf(part.metadata.mode).detectsDefects;
+            continue;
+        }
+        judged.push_back({{"device", part.metadata.deviceName}, {"session", part.id},
+                          {"verdict", std::string(toString(*part.verdict))}});
+        if (!decided || (*part.verdict == Verdict::DefectsFound && *decided->verdict != Verdict::DefectsFound))
+            decided = &part;
+    }
+    if (!decided || (unjudged && *decided->verdict != Verdict::DefectsFound)) return std::nullopt;
+    nlohmann::ordered_json basis;
+    basis["analysis"] = "parts";
+    basis["decided_by_part"] = decided->metadata.deviceName;
+    basis["part_session"] = decided->id;
+    basis["parts"] = std::move(judged);
+    VerdictDecision decision;
+    decision.role = VerdictRole::Automatic;
+    decision.verdict = *decided->verdict;
+    decision.note = "the worst of its devices' verdicts: " + decided->metadata.deviceName + "'s";
     decision.basisJson = basis.dump();
     return decision;
 }

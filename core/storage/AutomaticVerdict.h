@@ -1,13 +1,17 @@
 // The detector's verdict on a panel as a decision of the session's verdict
 // trail, with its grounds: which analysis, what it found, and the detector
-// parameters it ran with, so a reviewer can tell what the machine judged on.
+// parameters it ran with, so a reviewer can tell what the machine judged on;
+// and a session of several devices' verdict from its parts'.
 #pragma once
 
 #include "core/detector/DetectorParameters.h"
 #include "core/detector/ProbeDecisionCheck.h"
 #include "core/storage/SessionRecords.h"
+#include "core/storage/SessionSource.h"
 
 #include <cstddef>
+#include <optional>
+#include <span>
 #include <string>
 
 namespace tactiscope::core::storage {
@@ -18,5 +22,13 @@ namespace tactiscope::core::storage {
 VerdictDecision automaticDecision(const std::string& analysis, std::size_t defects, std::size_t sites,
                                   const detector::DetectorParameters& parameters,
                                   const std::optional<detector::ProbeAgreement>& probe = std::nullopt);
+
+// The automatic verdict of a session of several devices from its parts'
+// summaries (each with its device's name and mode): the worst wins
+// (defects found over pass), and its grounds name the part that decided.
+// None when no part found defects and some part of a mode that judges
+// (core/modes: detectsDefects) has no verdict (too short to judge, cut
+// by a lost probe), or when no part judges at all.
+std::optional<VerdictDecision> partsDecision(std::span<const SessionSummary> parts);
 
 }  // namespace tactiscope::core::storage

@@ -86,7 +86,10 @@ const std::string& summaryQuery()
         "profile_json, calibrations_json, started_utc, ended_utc, status, verdict, app_version, "
         "(SELECT sample_rate_hz FROM channels WHERE session_id = s.id AND position = 0), " +
         sampleEndSql("s.id") +
-        ", (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live'), trigger_setup, "
+        // A session of several devices counts its parts' events.
+        ", (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live') + (SELECT count(*) FROM "
+        "events e JOIN sessions p ON e.session_id = p.id WHERE p.parent_id = s.id AND e.analysis = 'live'), "
+        "trigger_setup, "
         "(SELECT count(*) FROM sessions p WHERE p.parent_id = s.id), parent_id, device_name FROM sessions s ";
     return sql;
 }

@@ -1,6 +1,7 @@
 // SessionOfDevices: the lock, the session row and its end.
 #include "devices/session/SessionOfDevices.h"
 
+#include "core/storage/AutomaticVerdict.h"
 #include "core/storage/SessionStore.h"
 #include "devices/SteadyClock.h"
 
@@ -62,9 +63,9 @@ LiveSessionOptions::PartOfSession SessionOfDevices::partFor(const std::string& d
     return {m_session, deviceName, m_start_host_s};
 }
 
-void SessionOfDevices::finish()
+std::optional<core::Verdict> SessionOfDevices::finish()
 {
-    if (m_finished) return;
+    if (m_finished) return m_verdict;
     m_finished = true;
     core::storage::SessionStore store(m_storePath);
     const auto parts = store.parts(m_session);
@@ -72,6 +73,16 @@ void SessionOfDevices::finish()
         return p.status == core::SessionStatus::Complete;
     });
     store.endSession(m_session, whole ? core::SessionStatus::Complete : core::SessionStatus::Interrupted);
+    // The session's verdict is its parts': lists, filters and the central
+    // store read it from the session as from a session of one device.
+    std::vector<core::storage::SessionSummary> summaries;
+    for (const auto& part : parts)
+        if (auto summary = store.session(part.id)) summaries.push_back(std::move(*summary));
+    if (const auto decision = core::storage::partsDecision(summaries)) {
+        store.decideVerdict(m_session, *decision);
+        m_verdict = decision->verdict;
+    }
+    return m_verdict;
 }
 
 }  // namespace tactiscope::devices::session

@@ -12,6 +12,7 @@
 #include "devices/session/LiveSession.h"
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -32,8 +33,9 @@ public:
     // What a device's LiveSession is given to record its part.
     LiveSessionOptions::PartOfSession partFor(const std::string& deviceName) const;
     // Ends the session once its parts have ended: complete when every part
-    // is, else interrupted. Idempotent.
-    void finish();
+    // is, else interrupted, with its parts' verdict (AutomaticVerdict.h:
+    // partsDecision), which it returns. Idempotent.
+    std::optional<core::Verdict> finish();
 
 private:
     std::string m_storePath;
@@ -41,6 +43,7 @@ private:
     std::int64_t m_session = 0;
     double m_start_host_s = 0.0;
     bool m_finished = false;
+    std::optional<core::Verdict> m_verdict;
 };
 
 // A device's name in a session (its channels read DEVICE/CHANNEL): its

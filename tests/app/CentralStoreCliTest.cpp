@@ -7,8 +7,10 @@
 // untouched, a uuid with other samples refused, a station unable to
 // delete or change another's session or to add rows readers cannot bound,
 // and a reviewer meeting older unbounded rows as damage.
+#include "core/storage/AutomaticVerdict.h"
 #include "core/storage/SessionStore.h"
 #include "core/storage/central/PgConnection.h"
+#include "devices/session/SessionOfDevices.h"
 #include "support/CliRunner.h"
 #include "support/FileBytes.h"
 #include "support/PostgresServer.h"
@@ -219,6 +221,63 @@ TEST_F(CentralStoreCli, ASessionOfSeveralDevicesGoesWholeWithItsPartsAndClocks)
     auto pressA = connect("press_a");
     EXPECT_TRUE(refused(pressA, part, {"6f1c7d1e-0000-4000-8000-000000000002", "press_a", parent}));
     EXPECT_EQ(owner.query("SELECT count(*) FROM sessions").text(0, 0), "3");
+}
+
+// Issue 52: a session of several devices carries its parts' verdict (the
+// worst, naming the part that decided) and counts their events, at the
+// station and on the server after a sync, where a reviewer's filter on
+// the verdict finds it. Its end is SessionOfDevices's, as a recording's.
+TEST_F(CentralStoreCli, ASessionOfSeveralDevicesHasItsPartsVerdictAndEventsHereAndOnTheServer)
+{
+    const QString lab = m_dir.filePath("line.tactiscope");
+    std::int64_t sessionId = 0;
+    {
+        core::storage::SessionMetadata metadata;
+        metadata.mode = core::Mode::PanelScan;
+        metadata.subject = "door-9";
+        devices::session::SessionOfDevices devicesSession(lab.toStdString(), metadata);
+        sessionId = devicesSession.sessionId();
+        {
+            core::storage::SessionStore store(lab.toStdString());
+            const std::vector<core::ChannelDescriptor> strains{{"a", "strain", core::ChannelKind::Strain},
+                                                               {"b", "strain", core::ChannelKind::Strain}};
+            // The first probe passes its panel; the second finds two crossings of one dent.
+            for (const auto& [name, defects] : {std::pair{"left", 0}, std::pair{"right", 2}}) {
+                metadata.partOf = sessionId;
+                metadata.deviceName = name;
+                const std::int64_t part = store.beginSession(metadata, strains, 500.0);
+                tactiscope::testing::writeSamples(store, part, 2, 2000, 500.0, 5);
+                std::vector<core::storage::SessionEvent> events(static_cast<std::size_t>(defects));
+                for (auto& e : events) e.kind = core::EventKind::Defect;
+                store.addEvents(part, events);
+                store.decideVerdict(part, core::storage::automaticDecision("live", events.size(), defects ? 1 : 0, {}));
+                store.endSession(part, core::SessionStatus::Complete);
+            }
+        }
+        devicesSession.finish();
+    }
+    const auto expectVerdictAndEvents = [](const QString& db) {
+        const CliResult found = runCli({"sessions", "--db", db, "list", "--verdict", "defects-found", "--json"});
+        ASSERT_EQ(found.exitCode, 0) << found.err.toStdString();
+        const auto rows = QJsonDocument::fromJson(found.out.toUtf8()).array();
+        ASSERT_EQ(rows.size(), 1) << db.toStdString() << ": " << found.out.toStdString();
+        EXPECT_EQ(rows[0].toObject()["subject"].toString(), QStringLiteral("door-9"));
+        EXPECT_EQ(rows[0].toObject()["events"].toInt(), 2);
+        const CliResult shown = runCli({"sessions", "--db", db, "show", rows[0].toObject()["uuid"].toString()});
+        EXPECT_TRUE(shown.out.contains(QStringLiteral("defects found"))) << shown.out.toStdString();
+        EXPECT_TRUE(shown.out.contains(QStringLiteral("right's"))) << shown.out.toStdString();
+    };
+    expectVerdictAndEvents(lab);
+    {
+        core::storage::SessionStore store(lab.toStdString(), core::storage::Database::Access::ReadOnly);
+        const auto trail = store.verdicts(sessionId);
+        ASSERT_EQ(trail.size(), 1u);
+        EXPECT_EQ(trail[0].verdict, core::Verdict::DefectsFound);
+        EXPECT_NE(trail[0].basisJson.find(R"("decided_by_part":"right")"), std::string::npos) << trail[0].basisJson;
+    }
+    const CliResult sent = sync(lab, server("press_a"));
+    ASSERT_EQ(sent.exitCode, 0) << sent.err.toStdString();
+    expectVerdictAndEvents(server("quality"));
 }
 
 TEST_F(CentralStoreCli, TwoStationsListTogetherWithTheirNamesAndExportTheSameBytes)

@@ -90,6 +90,32 @@ TEST(DevicesSessionCli, TwoProbesOnTheirOwnClocksMarkOneInstantWithinATenthOfAMi
             EXPECT_NEAR(clock->drift, part.deviceName == "b" ? 80e-6 : 0.0, 10e-6) << part.clockJson;
             EXPECT_GT(clock->span_s, 55.0);
         }
+        // Issue 52: the session carries its parts' verdict (defects found
+        // when either found any, else pass) and counts their events.
+        std::optional<tactiscope::core::Verdict> worst;
+        std::uint64_t events = 0;
+        for (const auto& part : parts) {
+            const auto summary = store.session(part.id);
+            ASSERT_TRUE(summary && summary->verdict) << part.deviceName;
+            if (!worst || *summary->verdict == tactiscope::core::Verdict::DefectsFound) worst = summary->verdict;
+            events += summary->eventCount;
+        }
+        const auto whole = store.session(session);
+        EXPECT_EQ(whole->verdict, worst);
+        EXPECT_EQ(whole->eventCount, events);
+        EXPECT_GT(events, 0u);
+    }
+    {
+        const auto listed = runCli({"sessions", "--db", db, "list", "--json", "--verdict",
+                                    QString::fromStdString(std::string(tactiscope::core::toString(
+                                        tactiscope::core::Verdict::DefectsFound)))
+                                        .replace(QLatin1Char(' '), QLatin1Char('-'))});
+        ASSERT_EQ(listed.exitCode, 0) << listed.err.toStdString();
+        tactiscope::core::storage::SessionStore store(db.toStdString(),
+                                                      tactiscope::core::storage::Database::Access::ReadOnly);
+        const bool defectsFound = store.session(session)->verdict == tactiscope::core::Verdict::DefectsFound;
+        EXPECT_EQ(QJsonDocument::fromJson(listed.out.toUtf8()).array().size(), defectsFound ? 1 : 0)
+            << listed.out.toStdString();
     }
 
     // The review's axis, as exported: both marks where the host made them.

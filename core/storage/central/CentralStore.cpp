@@ -26,7 +26,9 @@ const std::string kSummaryQuery =
     "profile_json, calibrations_json, started_utc, coalesce(ended_utc, ''), status, verdict, app_version, "
     "coalesce((SELECT sample_rate_hz FROM channels WHERE session_id = s.id AND position = 0), 0), " +
     kSampleEnd +
-    ", (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live'), station, station_id, "
+    // A session of several devices counts its parts' events.
+    ", (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live') + (SELECT count(*) FROM events e "
+    "JOIN sessions p ON e.session_id = p.id WHERE p.parent_id = s.id AND e.analysis = 'live'), station, station_id, "
     "trigger_setup, coalesce(parent_id, 0), device_name, "
     "(SELECT count(*) FROM sessions p WHERE p.parent_id = s.id AND p.complete) " +
     "FROM sessions s WHERE complete ";

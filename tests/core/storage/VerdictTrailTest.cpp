@@ -105,3 +105,42 @@ TEST_F(VerdictTrailTest, AVersion2StoreKeepsItsVerdictsWithoutATrail)
     store.decideVerdict(1, {0, VerdictRole::Reviewer, Verdict::Pass, "Q. Engineer", "", "", ""});
     EXPECT_EQ(report::verdictTrailLines(store.verdicts(1)).front().rfind("reviewer Q. Engineer decided: pass", 0), 0u);
 }
+
+// Issue 52: a session of several devices takes its parts' worst verdict,
+// naming the part that decided; a judging part without a verdict (too
+// short, cut short) leaves it unjudged unless another found defects; parts
+// that judge nothing (a load cell) give none.
+TEST(PartsVerdict, TheWorstPartDecidesAndAnUnjudgedPartLeavesAPassOpen)
+{
+    const auto part = [](std::int64_t id, const char* name, Mode mode, std::optional<Verdict> verdict) {
+        SessionSummary s;
+        s.id = id;
+        s.metadata.mode = mode;
+        s.metadata.deviceName = name;
+        s.verdict = verdict;
+        return s;
+    };
+    const std::vector<SessionSummary> found{part(2, "left", Mode::PanelScan, Verdict::Pass),
+                                            part(3, "right", Mode::PanelScan, Verdict::DefectsFound),
+                                            part(4, "cell", Mode::General, std::nullopt)};
+    const auto decision = partsDecision(found);
+    ASSERT_TRUE(decision);
+    EXPECT_EQ(decision->verdict, Verdict::DefectsFound);
+    EXPECT_EQ(decision->role, VerdictRole::Automatic);
+    const auto basis = nlohmann::json::parse(decision->basisJson);
+    EXPECT_EQ(basis["decided_by_part"], "right");
+    EXPECT_EQ(basis["part_session"], 3);
+    EXPECT_EQ(basis["parts"].size(), 2u);
+
+    const std::vector<SessionSummary> passing{part(2, "left", Mode::PanelScan, Verdict::Pass),
+                                              part(4, "cell", Mode::General, std::nullopt)};
+    ASSERT_TRUE(partsDecision(passing));
+    EXPECT_EQ(partsDecision(passing)->verdict, Verdict::Pass);
+
+    const std::vector<SessionSummary> unjudged{part(2, "left", Mode::PanelScan, Verdict::Pass),
+                                               part(3, "right", Mode::PanelScan, std::nullopt)};
+    EXPECT_FALSE(partsDecision(unjudged));
+    const std::vector<SessionSummary> nothingJudges{part(4, "cell", Mode::General, std::nullopt),
+                                                    part(5, "beam", Mode::Capacitive, std::nullopt)};
+    EXPECT_FALSE(partsDecision(nothingJudges));
+}
