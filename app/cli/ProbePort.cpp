@@ -1,8 +1,10 @@
-// ProbePort: the first connection, then reconnection by USB serial number.
+// ProbePort: the --port values, the first connection, then reconnection
+// by USB serial number.
 #include "ProbePort.h"
 
 #include "devices/transport/SerialPorts.h"
 
+#include <algorithm>
 #include <filesystem>
 
 namespace tactiscope::cli {
@@ -22,7 +24,31 @@ std::string usbSerialOf(const std::string& path)
     return {};
 }
 
+bool isDeviceName(const std::string& name)
+{
+    return !name.empty() && std::ranges::none_of(name, [](char c) { return c == '/' || c == '=' || c == ' '; });
+}
+
 }  // namespace
+
+std::optional<std::vector<ProbePortArgument>> parseProbePorts(const QStringList& values)
+{
+    std::vector<ProbePortArgument> ports;
+    for (const QString& value : values) {
+        const auto equals = value.indexOf(QLatin1Char('='));
+        ProbePortArgument port{{}, value.toStdString()};
+        if (equals >= 0) {
+            port.name = value.left(equals).toStdString();
+            port.path = value.mid(equals + 1).toStdString();
+            if (!isDeviceName(port.name) || port.path.empty()) return std::nullopt;
+            if (std::ranges::any_of(ports, [&](const ProbePortArgument& p) { return p.name == port.name; }))
+                return std::nullopt;
+        }
+        ports.push_back(std::move(port));
+    }
+    if (ports.empty()) return std::nullopt;
+    return ports;
+}
 
 std::unique_ptr<devices::ReconnectingSource> openProbePort(const std::string& port, int baud,
                                                            const devices::PortSourceOptions& options)

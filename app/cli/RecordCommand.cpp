@@ -1,11 +1,12 @@
-// The record subcommand: options, the device with reconnection, and the
-// live-session controller the GUI uses too (devices/session/LiveSession),
-// so a recording from here stores what the workstation would; the summary.
+// The record subcommand: options, the devices with reconnection, and the
+// live pipeline the GUI uses too (devices/session/LivePipeline), so a
+// recording from here, of one device or several, manual or triggered,
+// stores what the workstation would; what it tells is RecordOutput's.
 #include "RecordCommand.h"
 
 #include "CliSupport.h"
 #include "ProbePort.h"
-#include "RecordDevices.h"
+#include "RecordOutput.h"
 #include "WatchOptions.h"
 #include "core/ModeCapability.h"
 #include "core/sensors/SensorProfile.h"
@@ -13,14 +14,15 @@
 #include "core/storage/SessionStore.h"
 #include "devices/DriftWatch.h"
 #include "devices/ReconnectingSource.h"
-#include "devices/session/LiveSession.h"
+#include "devices/session/LivePipeline.h"
+#include "devices/session/SessionOfDevices.h"
 
-#include <QLocale>
 #include <QTextStream>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <thread>
 #include <unistd.h>
 
@@ -28,6 +30,120 @@ namespace tactiscope::cli {
 namespace {
 
 constexpr int kDefaultBaud = 921600;
+
+// Each port's device opened and added to the pipeline under its name (the
+// one given, else its model's, unlike every other); with several, each
+// channel's role given as DEVICE/CHANNEL. An exit code when one cannot be.
+std::optional<int> addDevices(devices::session::LivePipeline& pipeline, const std::vector<ProbePortArgument>& ports,
+                              int baud, const devices::PortSourceOptions& options, const core::RoleAssignment& roles)
+{
+    const bool several = ports.size() > 1;
+    std::map<std::string, core::RoleAssignment> rolesOf;  // by device name; "" for the only device
+    for (const auto& [key, role] : roles) {
+        if (!several) {
+            rolesOf[""][key] = role;
+            continue;
+        }
+        const auto slash = key.find('/');
+        if (slash == std::string::npos || slash == 0 || slash + 1 == key.size()) {
+            printError(QStringLiteral("--roles: with several devices, name each channel as DEVICE/CHANNEL ('%1')")
+                           .arg(toQString(key)));
+            return kExitUsage;
+        }
+        rolesOf[key.substr(0, slash)][key.substr(slash + 1)] = role;
+    }
+    std::vector<std::unique_ptr<devices::ReconnectingSource>> sources;
+    for (const ProbePortArgument& port : ports) {
+        try {
+            sources.push_back(openProbePort(port.path, baud, options));
+        } catch (const std::exception& e) {
+            printError(several ? QStringLiteral("%1: %2").arg(toQString(port.path), toQString(e.what()))
+                               : toQString(e.what()));
+            return kExitFailure;
+        }
+    }
+    // Names not given come from the devices, unlike the given ones and each other.
+    std::vector<std::string> names;
+    std::vector<std::string> taken;
+    for (const ProbePortArgument& port : ports)
+        if (!port.name.empty()) taken.push_back(port.name);
+    for (std::size_t i = 0; i < ports.size(); ++i) {
+        names.push_back(ports[i].name.empty() ? devices::session::partName(sources[i]->identity(), taken)
+                                              : ports[i].name);
+        taken.push_back(names.back());
+    }
+    for (const auto& [device, assignment] : rolesOf)
+        if (several && std::ranges::find(names, device) == names.end()) {
+            printError(QStringLiteral("--roles: there is no device '%1'").arg(toQString(device)));
+            return kExitUsage;
+        }
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+        devices::session::LiveSessionOptions sessionOptions;
+        sessionOptions.roles = rolesOf[several ? names[i] : std::string()];
+        try {
+            pipeline.add(std::move(sources[i]), std::move(sessionOptions), names[i]);
+        } catch (const std::invalid_argument& e) {  // a role for a channel the device lacks
+            printError(QStringLiteral("--roles: %1%2").arg(several ? toQString(names[i]) + QStringLiteral(": ") : "",
+                                                          toQString(e.what())));
+            return kExitUsage;
+        }
+    }
+    return std::nullopt;
+}
+
+// The only device's mode (the one asked for must run on it; without one,
+// the device's own), profile and limits; an exit code when refused.
+std::optional<int> setUpOneDevice(devices::session::LiveSession& session, std::optional<core::Mode> mode,
+                                  std::optional<core::sensors::SensorProfile> profile, const WatchOptions& watch)
+{
+    if (!mode) mode = session.declaredMode();
+    if (const auto refusal = session.setMode(*mode)) {
+        // Roles missing: how to give them here.
+        const QString how = session.refusalOf(*mode)
+                                ? QStringLiteral(" Give its channels roles with --roles %1, or record without --mode "
+                                                 "(the general mode records any channels).")
+                                      .arg(toQString(core::roleExample(*mode, session.channels())))
+                                : QString();
+        printError(QStringLiteral("cannot record in this mode: %1%2").arg(QString::fromStdString(*refusal), how));
+        return kExitUsage;
+    }
+    if (profile) {
+        if (const auto refusal = session.setProfile(*mode, std::move(*profile))) {
+            printError(QStringLiteral("bad profile: %1").arg(QString::fromStdString(*refusal)));
+            return kExitUsage;
+        }
+    }
+    for (const auto& problem : session.takeProblems()) printError(QString::fromStdString(problem));
+    if (const auto refusal = session.setLimits(watch.limits)) {
+        printError(QStringLiteral("--limit: %1").arg(QString::fromStdString(*refusal)));
+        return kExitUsage;
+    }
+    if (watch.stopOnCritical && std::ranges::none_of(session.limits(), [](const core::sensors::SensorLimit& l) {
+            return l.limit.critical.has_value();
+        })) {
+        printError(QStringLiteral("--stop-on critical: no limit watched here has a critical level; give one with "
+                                  "--limit QUANTITY>critical:C"));
+        return kExitUsage;
+    }
+    return std::nullopt;
+}
+
+// The device's crystal against the host's (core/timing): what every time
+// it stamped is off by, unmapped. Said once enough of its blocks were
+// mapped for the drift to mean something (DriftWatch's span).
+void tellDeviceClock(const std::optional<core::timing::ClockMapping>& clock)
+{
+    if (!clock || clock->span_s < devices::DriftWatch::kMinSpan_s) return;
+    printError(QStringLiteral("device clock: %1 ppm %2 against the host's (mapped over %3 s of its blocks; ± %4)")
+                   .arg(clock->basis == core::timing::ClockUncertaintyBasis::TooFewFrames
+                            ? QString::number(std::abs(clock->drift) * 1e6, 'f', 1)
+                            : QStringLiteral("%1 ± %2")
+                                  .arg(std::abs(clock->drift) * 1e6, 0, 'f', 1)
+                                  .arg(clock->drift_u * 1e6, 0, 'f', 1))
+                   .arg(clock->drift >= 0.0 ? QStringLiteral("slow") : QStringLiteral("fast"))
+                   .arg(clock->span_s, 0, 'f', 1)
+                   .arg(QString::fromUtf8(core::timing::describe(clock->basis))));
+}
 
 }  // namespace
 
@@ -78,7 +194,6 @@ int runRecord(const QStringList& arguments)
         return usageError(QStringLiteral("--port: a device's NAME must be a word without '/' or '=', and "
                                          "each name given once"),
                           usage);
-    const std::string port = ports->front().path;
     const std::string db = parser.value(QStringLiteral("db")).toStdString();
     devices::PortSourceOptions options;
     const auto protocol = parseWireProtocol(parser.value(QStringLiteral("protocol")));
@@ -136,240 +251,85 @@ int runRecord(const QStringList& arguments)
         return kExitUsage;
     }
 
-    if (ports->size() > 1) {
-        if (mode || profile || watch->trigger || !watch->limits.empty() || watch->stopOnCritical)
-            return usageError(QStringLiteral("with several devices, each records in its own mode with its own "
-                                             "limits; --mode, --profile, --trigger, --limit and --stop-on are for "
-                                             "one device"),
-                              usage);
-        return recordDevices({*ports, db, options, baud, seconds, metadata, *roles});
-    }
+    if (ports->size() > 1 &&
+        (mode || profile || watch->trigger || !watch->limits.empty() || watch->stopOnCritical))
+        return usageError(QStringLiteral("with several devices, each records in its own mode with its own "
+                                         "limits; --mode, --profile, --trigger, --limit and --stop-on are for "
+                                         "one device"),
+                          usage);
 
-    // The first connection is made here, to know the device before the
-    // recording; the reconnecting source takes it over and reopens it after
-    // an unplug.
-    std::unique_ptr<devices::ReconnectingSource> source;
-    try {
-        source = openProbePort(port, baud, options);
-    } catch (const std::exception& e) {
-        printError(QString::fromStdString(e.what()));
-        return kExitFailure;
-    }
-    const double rate_hz = source->nominalSampleRate_hz();
+    // Each device's first connection is made here, to know it before the
+    // recording; its reconnecting source reopens it after an unplug.
+    devices::session::LivePipeline pipeline(db);
+    if (const auto exit = addDevices(pipeline, *ports, baud, options, *roles)) return *exit;
+    auto& first = pipeline.device(0);
+    const double rate_hz = first.source().nominalSampleRate_hz();
     if (options.requestRate_hz && std::abs(rate_hz - *options.requestRate_hz) > 1e-6 * *options.requestRate_hz)
         printError(QStringLiteral("the device streams at %1 Hz, not the %2 Hz asked for; recording at %1 Hz")
                        .arg(rate_hz)
                        .arg(*options.requestRate_hz));
-    const auto channels = source->channels();
-    const auto* device = source.get();
+    if (pipeline.size() == 1)
+        if (const auto exit = setUpOneDevice(first, mode, std::move(profile), *watch)) return *exit;
+    for (std::size_t i = 0; i < pipeline.size(); ++i) pipeline.device(i).setSite(metadata.site);
 
-    devices::session::LiveSessionOptions sessionOptions;
-    sessionOptions.storePath = db;
-    sessionOptions.roles = *roles;
-    std::unique_ptr<devices::session::LiveSession> live;
-    try {
-        live = std::make_unique<devices::session::LiveSession>(std::move(source), sessionOptions);
-    } catch (const std::invalid_argument& e) {  // a role for a channel the device lacks
-        printError(QStringLiteral("--roles: %1").arg(QString::fromStdString(e.what())));
-        return kExitUsage;
-    }
-    auto& session = *live;
-    // The mode asked for must run on the device; without one, the device's
-    // own (general for a device that declares none its channels feed).
-    if (!mode) mode = session.declaredMode();
-    if (const auto refusal = session.setMode(*mode)) {
-        // Roles missing: how to give them here.
-        const QString how = session.refusalOf(*mode)
-                                ? QStringLiteral(" Give its channels roles with --roles %1, or record without --mode "
-                                                 "(the general mode records any channels).")
-                                      .arg(toQString(core::roleExample(*mode, session.channels())))
-                                : QString();
-        printError(QStringLiteral("cannot record in this mode: %1%2").arg(QString::fromStdString(*refusal), how));
-        return kExitUsage;
-    }
-    if (profile) {
-        if (const auto refusal = session.setProfile(*mode, std::move(*profile))) {
-            printError(QStringLiteral("bad profile: %1").arg(QString::fromStdString(*refusal)));
-            return kExitUsage;
-        }
-    }
-    for (const auto& problem : session.takeProblems()) printError(QString::fromStdString(problem));
-    session.setSite(metadata.site);
-    if (const auto refusal = session.setLimits(watch->limits)) {
-        printError(QStringLiteral("--limit: %1").arg(QString::fromStdString(*refusal)));
-        return kExitUsage;
-    }
-    if (watch->stopOnCritical && std::ranges::none_of(session.limits(), [](const core::sensors::SensorLimit& l) {
-            return l.limit.critical.has_value();
-        })) {
-        printError(QStringLiteral("--stop-on critical: no limit watched here has a critical level; give one with "
-                                  "--limit QUANTITY>critical:C"));
-        return kExitUsage;
-    }
-    // Recording from the first block (attached before the device streams),
+    // Recording from the first block (started before the devices stream),
     // or from each trigger.
     const auto refused =
-        watch->trigger ? session.armTrigger(*watch->trigger, metadata) : session.startRecording(metadata);
+        watch->trigger ? pipeline.armTrigger(*watch->trigger, metadata) : pipeline.startRecording(metadata);
     if (refused) {
         printError(QStringLiteral("%1%2").arg(watch->trigger ? QStringLiteral("--trigger: ") : QString(),
                                               QString::fromStdString(*refused)));
         return kExitUsage;
     }
     installStopSignals();
-    session.start();
+    pipeline.start();
 
+    RecordOutput output(db, pipeline, watch->trigger, watch->stopOnCritical);
     const bool progress = ::isatty(STDERR_FILENO) != 0;
     const auto start = std::chrono::steady_clock::now();
     auto nextProgress = start + std::chrono::seconds(5);
     QTextStream err(stderr);
-    const auto at = [](double time_s) { return QLocale::c().toString(time_s, 'f', 1); };
-    // What the link noticed is stored as an alarm and told here, as it comes.
-    const auto tellNotices = [&] {
-        for (const auto& notice : session.takeLinkNotices())
-            printError(QStringLiteral("at %1 s: %2").arg(at(notice.time_s), QString::fromStdString(notice.text)));
-    };
-    // Limit alarms likewise; a critical one ends the recording when asked.
-    std::optional<QString> criticalStop;
-    const auto tellAlarms = [&] {
-        for (const auto& alarm : session.takeAlarms()) {
-            const QString severity = QString::fromLatin1(core::trigger::toString(alarm.change.severity));
-            const QString text = QString::fromStdString(alarm.text());
-            printError(alarm.change.raised ? QStringLiteral("at %1 s: %2: %3").arg(at(alarm.time_s), severity, text)
-                                           : QStringLiteral("at %1 s: cleared: %2").arg(at(alarm.time_s), text));
-            if (watch->stopOnCritical && alarm.change.raised && !criticalStop &&
-                alarm.change.severity == core::trigger::LimitSeverity::Critical)
-                criticalStop = QStringLiteral("stopped on a critical alarm at %1 s: %2").arg(at(alarm.time_s), text);
-        }
-    };
-    // The trigger's state as it changes.
-    std::optional<devices::session::TriggerStatus> toldState;
-    const auto tellTrigger = [&] {
-        if (!watch->trigger) return;
-        const auto status = session.triggerStatus();
-        if (toldState && toldState->state == status.state && toldState->sessionsCut == status.sessionsCut) return;
-        toldState = status;
-        using core::trigger::TriggerState;
-        switch (status.state) {
-        case TriggerState::Waiting:
-            printError(QStringLiteral("trigger waiting: %1 must first not hold")
-                           .arg(toQString(watch->trigger->condition.text())));
-            break;
-        case TriggerState::Armed:
-            printError(QStringLiteral("trigger armed: %1").arg(toQString(watch->trigger->condition.text())));
-            break;
-        case TriggerState::Triggered:
-            printError(QStringLiteral("triggered: session %1%2")
-                           .arg(status.sessionsCut + 1)
-                           .arg(watch->trigger->sessions ? QStringLiteral(" of %1").arg(*watch->trigger->sessions)
-                                                         : QString()));
-            break;
-        case TriggerState::Finished:
-            break;
-        }
-    };
-
-    // One line per session stored (the contract line), and whether it ended well.
-    int exit = kExitOk;
-    unsigned stored = 0;
-    const auto report = [&](const devices::session::RecordingSummary& summary,
-                            const devices::AcquisitionStats& acquired) {
-        ++stored;
-        const auto& written = summary.stats;
-        // The samples lost are what the store marks as lost (its gaps), so
-        // the line and the store agree to the sample; what was counted while
-        // recording if the store cannot be read back.
-        std::uint64_t lost = acquired.samplesLost + written.samplesDropped + summary.samplesLostAtEnd;
-        try {
-            core::storage::SessionStore readBack(db, core::storage::Database::Access::ReadOnly);
-            lost = 0;
-            for (const auto& gap : readBack.gaps(summary.session)) lost += gap.count;
-        } catch (const core::storage::StorageError&) {
-        }
-        QTextStream(stdout) << "Recorded session " << summary.session << ": " << written.samplesWritten
-                            << " samples per channel, " << lost << " lost, " << device->decoderCounters().crcErrors
-                            << " CRC errors (" << channels.size() << " channels at " << QLocale::c().toString(rate_hz)
-                            << " Hz, into " << QString::fromStdString(db) << "); "
-                            << toQString(core::toString(session.recordingMetadata().mode)) << ": "
-                            << QString::fromStdString(summary.analysis) << Qt::endl;
-        if (!written.error.empty()) {
-            printError(QString::fromStdString(written.error));
-            exit = kExitFailure;
-        } else if (summary.lostAt_s) {
-            printError(QStringLiteral("the probe was lost at %1 s and did not come back; %2 samples kept")
-                           .arg(at(*summary.lostAt_s))
-                           .arg(written.samplesWritten));
-            exit = kExitFailure;
-        }
-    };
-    const auto reportTriggered = [&] {
-        for (const auto& summary : session.takeTriggeredSummaries()) report(summary, {});
-    };
-
-    std::optional<devices::session::RecordingSummary> summary;
     for (;;) {
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        summary = session.poll();
-        tellNotices();
-        tellAlarms();
-        tellTrigger();
-        reportTriggered();
-        if (summary) break;  // the disk stopped it
-        if (const auto refusal = session.takeTriggerRefusal()) {
-            printError(QStringLiteral("the trigger could not start a recording: %1; the trigger was disarmed")
-                           .arg(QString::fromStdString(*refusal)));
-            exit = kExitFailure;
-            break;
-        }
+        const auto news = pipeline.poll();
+        output.tell(news);
+        if (news.triggerRefused) break;
         const auto now = std::chrono::steady_clock::now();
-        const auto state = session.stats().state;
-        if (stopRequested() || criticalStop || state == devices::AcquisitionState::Finished ||
-            state == devices::AcquisitionState::Failed ||
+        if (stopRequested() || output.criticalStop() || !pipeline.streaming() ||
             (seconds && std::chrono::duration<double>(now - start).count() >= *seconds))
             break;
-        // Every session the trigger was asked for is stored.
-        if (watch->trigger && session.triggerStatus().state == core::trigger::TriggerState::Finished &&
-            !session.isRecording())
-            break;
+        if (watch->trigger) {
+            // Every session the trigger was asked for is stored.
+            if (pipeline.triggerStatus().state == core::trigger::TriggerState::Finished && !pipeline.isRecording())
+                break;
+        } else if (!pipeline.isRecording()) {
+            break;  // it ended by itself: its disk, or every device's link
+        }
         if (progress && now >= nextProgress) {
             nextProgress += std::chrono::seconds(5);
             err << "recording… " << std::llround(std::chrono::duration<double>(now - start).count()) << " s, "
-                << session.stats().samples << " samples per channel\r" << Qt::flush;
+                << first.stats().samples << " samples per channel\r" << Qt::flush;
         }
     }
-    const auto acquired = session.stats();
-    const auto clock = session.source().hostClock();
-    if (!summary) summary = watch->trigger ? session.disarmTrigger() : session.stopRecording();
-    tellNotices();
-    tellAlarms();
+    const auto clock = first.source().hostClock();
+    const auto last = watch->trigger ? pipeline.disarmTrigger() : pipeline.stopRecording();
+    output.tell(pipeline.poll());  // what came with the stop
     if (progress) err << '\n';
-    reportTriggered();
-    if (summary) report(*summary, acquired);
-    // The device's crystal against the host's (core/timing): what every
-    // time it stamped is off by, unmapped. Said once enough of its blocks
-    // were mapped for the drift to mean something (DriftWatch's span).
-    if (clock && clock->span_s >= devices::DriftWatch::kMinSpan_s)
-        printError(QStringLiteral("device clock: %1 ppm %2 against the host's (mapped over %3 s of its blocks; ± %4)")
-                       .arg(clock->basis == core::timing::ClockUncertaintyBasis::TooFewFrames
-                                ? QString::number(std::abs(clock->drift) * 1e6, 'f', 1)
-                                : QStringLiteral("%1 ± %2")
-                                      .arg(std::abs(clock->drift) * 1e6, 0, 'f', 1)
-                                      .arg(clock->drift_u * 1e6, 0, 'f', 1))
-                       .arg(clock->drift >= 0.0 ? QStringLiteral("slow") : QStringLiteral("fast"))
-                       .arg(clock->span_s, 0, 'f', 1)
-                       .arg(QString::fromUtf8(core::timing::describe(clock->basis))));
-    if (watch->trigger && watch->trigger->sessions && stored < *watch->trigger->sessions)
+    if (last) output.report(*last);
+    if (pipeline.size() == 1) tellDeviceClock(clock);
+    if (watch->trigger && watch->trigger->sessions && output.sessionsReported() < *watch->trigger->sessions)
         printError(QStringLiteral("%1 of %2 triggered sessions recorded before the stop")
-                       .arg(stored)
+                       .arg(output.sessionsReported())
                        .arg(*watch->trigger->sessions));
-    if (acquired.state == devices::AcquisitionState::Failed) {
-        printError(QString::fromStdString(acquired.error));
+    if (pipeline.size() == 1 && first.stats().state == devices::AcquisitionState::Failed) {
+        printError(QString::fromStdString(first.stats().error));
         return kExitFailure;
     }
-    if (criticalStop) {
-        printError(*criticalStop + QStringLiteral("; the recording was kept"));
+    if (output.criticalStop()) {
+        printError(*output.criticalStop() + QStringLiteral("; the recording was kept"));
         return kExitFailure;
     }
-    return exit;
+    return output.exitCode();
 }
 
 }  // namespace tactiscope::cli

@@ -1,0 +1,194 @@
+// RecordOutput: the pipeline's news and the recordings' contract lines.
+#include "RecordOutput.h"
+
+#include "CliSupport.h"
+#include "core/storage/SessionStore.h"
+#include "core/timing/ClockMappingText.h"
+
+#include <QLocale>
+#include <QTextStream>
+
+#include <algorithm>
+#include <map>
+
+namespace tactiscope::cli {
+namespace {
+
+QString at(double time_s)
+{
+    return QLocale::c().toString(time_s, 'f', 1);
+}
+
+// "NAME: " before what a device of several said; nothing for the only one.
+QString from(const std::string& device)
+{
+    return device.empty() ? QString() : toQString(device) + QStringLiteral(": ");
+}
+
+// The samples the store marks lost in each session given, read back;
+// none for a store that cannot be read (the caller's count stands).
+std::map<std::int64_t, std::uint64_t> storedLosses(const std::string& db, const std::vector<std::int64_t>& sessions)
+{
+    std::map<std::int64_t, std::uint64_t> lost;
+    try {
+        core::storage::SessionStore readBack(db, core::storage::Database::Access::ReadOnly);
+        for (const std::int64_t session : sessions) {
+            lost[session] = 0;
+            for (const auto& gap : readBack.gaps(session)) lost[session] += gap.count;
+        }
+    } catch (const core::storage::StorageError&) {
+    }
+    return lost;
+}
+
+}  // namespace
+
+RecordOutput::RecordOutput(std::string db, const devices::session::LivePipeline& pipeline,
+                           std::optional<core::trigger::TriggerSettings> trigger, bool stopOnCritical)
+    : m_db(std::move(db)),
+      m_pipeline(pipeline),
+      m_trigger(std::move(trigger)),
+      m_stopOnCritical(stopOnCritical)
+{
+}
+
+void RecordOutput::tell(const devices::session::PipelineNews& news)
+{
+    for (const auto& [device, problem] : news.problems) printError(from(device) + toQString(problem));
+    // What the link noticed is stored as an alarm and told here, as it comes.
+    for (const auto& [device, notice] : news.notices)
+        printError(QStringLiteral("%1at %2 s: %3").arg(from(device), at(notice.time_s), toQString(notice.text)));
+    for (const auto& [device, alarm] : news.alarms) {
+        const QString severity = QString::fromLatin1(core::trigger::toString(alarm.change.severity));
+        const QString text = toQString(alarm.text());
+        printError(alarm.change.raised
+                       ? QStringLiteral("%1at %2 s: %3: %4").arg(from(device), at(alarm.time_s), severity, text)
+                       : QStringLiteral("%1at %2 s: cleared: %3").arg(from(device), at(alarm.time_s), text));
+        if (m_stopOnCritical && alarm.change.raised && !m_criticalStop &&
+            alarm.change.severity == core::trigger::LimitSeverity::Critical)
+            m_criticalStop = QStringLiteral("stopped on a critical alarm at %1 s: %2").arg(at(alarm.time_s), text);
+    }
+    if (news.trigger) tellTrigger(*news.trigger);
+    for (const auto& [device, summary] : news.partsEnded)
+        printError(QStringLiteral("%1its part ended at %2 s; the other devices record on")
+                       .arg(from(device), at(summary.end_s)));
+    for (const auto& end : news.ended) report(end);
+    if (news.triggerRefused) {
+        printError(QStringLiteral("the trigger could not start a recording: %1; the trigger was disarmed")
+                       .arg(toQString(*news.triggerRefused)));
+        m_exit = kExitFailure;
+    }
+}
+
+void RecordOutput::tellTrigger(const devices::session::TriggerStatus& status)
+{
+    if (!m_trigger) return;
+    using core::trigger::TriggerState;
+    const QString condition = toQString(m_trigger->condition.text());
+    switch (status.state) {
+    case TriggerState::Waiting:
+        printError(QStringLiteral("trigger waiting: %1 must first not hold").arg(condition));
+        break;
+    case TriggerState::Armed:
+        printError(QStringLiteral("trigger armed: %1").arg(condition));
+        break;
+    case TriggerState::Triggered:
+        printError(QStringLiteral("triggered: session %1%2")
+                       .arg(status.sessionsCut + 1)
+                       .arg(m_trigger->sessions ? QStringLiteral(" of %1").arg(*m_trigger->sessions) : QString()));
+        break;
+    case TriggerState::Finished:
+        break;
+    }
+}
+
+void RecordOutput::report(const devices::session::RecordingEnd& end)
+{
+    ++m_reported;
+    if (end.parts.size() == 1 && end.parts.front().device.empty())
+        reportOne(end);
+    else
+        reportSeveral(end);
+}
+
+std::size_t RecordOutput::deviceIndex(const std::string& name) const
+{
+    if (name.empty()) return 0;
+    const auto names = m_pipeline.names();
+    return static_cast<std::size_t>(std::ranges::find(names, name) - names.begin());
+}
+
+void RecordOutput::reportOne(const devices::session::RecordingEnd& end)
+{
+    const auto& summary = end.parts.front().what;
+    const auto& live = m_pipeline.device(0);
+    const auto& written = summary.stats;
+    const auto lost = storedLosses(m_db, {summary.session});
+    const std::uint64_t lostCount = lost.contains(summary.session)
+                                        ? lost.at(summary.session)
+                                        : live.stats().samplesLost + written.samplesDropped + summary.samplesLostAtEnd;
+    QTextStream(stdout) << "Recorded session " << summary.session << ": " << written.samplesWritten
+                        << " samples per channel, " << lostCount << " lost, "
+                        << live.source().decoderCounters().crcErrors << " CRC errors (" << live.channels().size()
+                        << " channels at " << QLocale::c().toString(live.source().nominalSampleRate_hz())
+                        << " Hz, into " << toQString(m_db) << "); "
+                        << toQString(core::toString(live.recordingMetadata().mode)) << ": "
+                        << toQString(summary.analysis) << Qt::endl;
+    tellEndProblem({}, summary);
+}
+
+void RecordOutput::reportSeveral(const devices::session::RecordingEnd& end)
+{
+    std::vector<std::int64_t> parts;
+    for (const auto& part : end.parts) parts.push_back(part.what.session);
+    const auto lost = storedLosses(m_db, parts);
+    std::vector<core::storage::SessionPart> stored;
+    try {
+        core::storage::SessionStore readBack(m_db, core::storage::Database::Access::ReadOnly);
+        stored = readBack.parts(end.session);
+    } catch (const core::storage::StorageError& e) {
+        printError(toQString(e.what()));
+        m_exit = kExitFailure;
+    }
+    QTextStream out(stdout);
+    out << "Recorded session " << end.session << ": " << m_pipeline.size() << " devices, into " << toQString(m_db)
+        << Qt::endl;
+    for (const std::string& name : m_pipeline.names()) {
+        const auto part = std::ranges::find(end.parts, name, &devices::session::FromDevice<
+                                                                   devices::session::RecordingSummary>::device);
+        if (part == end.parts.end()) {
+            out << "  " << toQString(name) << ": not recorded" << Qt::endl;
+            m_exit = kExitFailure;
+            continue;
+        }
+        const auto& summary = part->what;
+        const auto& live = m_pipeline.device(deviceIndex(name));
+        const auto clock = std::ranges::find(stored, summary.session, &core::storage::SessionPart::id);
+        out << "  " << toQString(name) << " (session " << summary.session
+            << "): " << summary.stats.samplesWritten << " samples per channel, "
+            << (lost.contains(summary.session) ? lost.at(summary.session) : live.stats().samplesLost) << " lost, "
+            << live.source().decoderCounters().crcErrors << " CRC errors (" << live.channels().size()
+            << " channels at " << QLocale::c().toString(live.source().nominalSampleRate_hz()) << " Hz); "
+            << toQString(core::toString(live.recordingMetadata().mode)) << ": " << toQString(summary.analysis)
+            << "; clock: " << toQString(core::timing::clockMappingText(clock != stored.end() ? clock->clockJson : ""))
+            << Qt::endl;
+        tellEndProblem(name, summary);
+    }
+}
+
+// A recording that did not end well: the disk's error, or a probe lost
+// and not back by the stop. Either makes the run's exit 1.
+void RecordOutput::tellEndProblem(const std::string& device, const devices::session::RecordingSummary& summary)
+{
+    if (!summary.stats.error.empty()) {
+        printError(from(device) + toQString(summary.stats.error));
+        m_exit = kExitFailure;
+    } else if (summary.lostAt_s) {
+        printError(QStringLiteral("%1the probe was lost at %2 s and did not come back; %3 samples kept")
+                       .arg(from(device), at(*summary.lostAt_s))
+                       .arg(summary.stats.samplesWritten));
+        m_exit = kExitFailure;
+    }
+}
+
+}  // namespace tactiscope::cli
