@@ -154,8 +154,8 @@ void RecordOutput::reportSeveral(const devices::session::RecordingEnd& end)
     out << "Recorded session " << end.session << ": " << m_pipeline.size() << " devices, into " << toQString(m_db)
         << Qt::endl;
     for (const std::string& name : m_pipeline.names()) {
-        const auto part = std::ranges::find(end.parts, name, &devices::session::FromDevice<
-                                                                   devices::session::RecordingSummary>::device);
+        const auto part = std::ranges::find(end.parts, name,
+                                            &devices::session::FromDevice<devices::session::RecordingSummary>::device);
         if (part == end.parts.end()) {
             out << "  " << toQString(name) << ": not recorded" << Qt::endl;
             m_exit = kExitFailure;
@@ -164,11 +164,11 @@ void RecordOutput::reportSeveral(const devices::session::RecordingEnd& end)
         const auto& summary = part->what;
         const auto& live = m_pipeline.device(deviceIndex(name));
         const auto clock = std::ranges::find(stored, summary.session, &core::storage::SessionPart::id);
-        out << "  " << toQString(name) << " (session " << summary.session
-            << "): " << summary.stats.samplesWritten << " samples per channel, "
+        out << "  " << toQString(name) << " (session " << summary.session << "): " << summary.stats.samplesWritten
+            << " samples per channel, "
             << (lost.contains(summary.session) ? lost.at(summary.session) : live.stats().samplesLost) << " lost, "
-            << live.source().decoderCounters().crcErrors << " CRC errors (" << live.channels().size()
-            << " channels at " << QLocale::c().toString(live.source().nominalSampleRate_hz()) << " Hz); "
+            << live.source().decoderCounters().crcErrors << " CRC errors (" << live.channels().size() << " channels at "
+            << QLocale::c().toString(live.source().nominalSampleRate_hz()) << " Hz); "
             << toQString(core::toString(live.recordingMetadata().mode)) << ": " << toQString(summary.analysis)
             << "; clock: " << toQString(core::timing::clockMappingText(clock != stored.end() ? clock->clockJson : ""))
             << Qt::endl;

@@ -60,7 +60,7 @@ int list(SessionSource& store, const core::storage::SessionFilter& filter, bool 
             out.key("verdict").value(core::verdictText(s.verdict));
             out.key("duration_s").value(s.duration_s());
             out.key("events").value(static_cast<long long>(s.eventCount));  // its parts' too
-            if (!s.station.empty()) out.key("station").value(s.station);  // a central store's
+            if (!s.station.empty()) out.key("station").value(s.station);    // a central store's
             out.endObject();
         }
         out.endArray();

@@ -44,7 +44,8 @@ std::optional<VerdictDecision> partsDecision(std::span<const SessionSummary> par
             unjudged = unjudged || definitionOf(part.metadata.mode).detectsDefects;
             continue;
         }
-        judged.push_back({{"device", part.metadata.deviceName}, {"session", part.id},
+        judged.push_back({{"device", part.metadata.deviceName},
+                          {"session", part.id},
                           {"verdict", std::string(toString(*part.verdict))}});
         if (!decided || (*part.verdict == Verdict::DefectsFound && *decided->verdict != Verdict::DefectsFound))
             decided = &part;

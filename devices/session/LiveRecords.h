@@ -47,8 +47,8 @@ struct RecordingSummary {
     // Why a mode that judges gave none: "too short to judge (0.01 s of the
     // 0.6 s the detector needs)"; empty otherwise.
     std::string notJudged;
-    std::size_t defects = 0;               // of this recording's panel: crossings
-    std::size_t sites = 0;                 // where they are: a defect crossed N times is one site
+    std::size_t defects = 0;  // of this recording's panel: crossings
+    std::size_t sites = 0;    // where they are: a defect crossed N times is one site
     // A probe that sends its own decisions: how far they agreed with the
     // workstation's over the recording (after the warm-up).
     std::optional<core::detector::ProbeAgreement> probeAgreement;

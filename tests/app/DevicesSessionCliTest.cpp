@@ -106,10 +106,10 @@ TEST(DevicesSessionCli, TwoProbesOnTheirOwnClocksMarkOneInstantWithinATenthOfAMi
         EXPECT_GT(events, 0u);
     }
     {
-        const auto listed = runCli({"sessions", "--db", db, "list", "--json", "--verdict",
-                                    QString::fromStdString(std::string(tactiscope::core::toString(
-                                        tactiscope::core::Verdict::DefectsFound)))
-                                        .replace(QLatin1Char(' '), QLatin1Char('-'))});
+        const auto listed = runCli(
+            {"sessions", "--db", db, "list", "--json", "--verdict",
+             QString::fromStdString(std::string(tactiscope::core::toString(tactiscope::core::Verdict::DefectsFound)))
+                 .replace(QLatin1Char(' '), QLatin1Char('-'))});
         ASSERT_EQ(listed.exitCode, 0) << listed.err.toStdString();
         tactiscope::core::storage::SessionStore store(db.toStdString(),
                                                       tactiscope::core::storage::Database::Access::ReadOnly);

@@ -56,9 +56,8 @@ TEST(TooShortToJudgeCli, TheOneSampleSessionsOfATriggerOnEveryCrossingGetNoVerdi
 {
     QTemporaryDir dir;
     const QString db = dir.filePath("crossings.tactiscope");
-    const auto result =
-        recordEmulated(dir.path(), db, QStringLiteral("panel-scan"), 20,
-                       {"--trigger", "a rising 0", "--pre", "0", "--post", "0", "--sessions", "3"});
+    const auto result = recordEmulated(dir.path(), db, QStringLiteral("panel-scan"), 20,
+                                       {"--trigger", "a rising 0", "--pre", "0", "--post", "0", "--sessions", "3"});
     ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
     EXPECT_EQ(result.out.count(QStringLiteral("too short to judge")), 3) << result.out.toStdString();
 

@@ -119,11 +119,11 @@ TEST(TriggeredRecordCli, ATriggeredSessionKeepsTheAlarmsOfTheStrokeThatTriggered
             ASSERT_NE(first, a.end()) << "the scenario's stroke reaches the level";
             const double crossed_s = static_cast<double>(first - a.begin()) * dt_s;
             const auto covering = std::ranges::find_if(alarms, [&](const core::storage::SessionEvent& e) {
-                return e.note.find(std::string("its ") + severity) != std::string::npos && e.start_s <= crossed_s + dt_s &&
-                       e.end_s >= crossed_s;
+                return e.note.find(std::string("its ") + severity) != std::string::npos &&
+                       e.start_s <= crossed_s + dt_s && e.end_s >= crossed_s;
             });
-            EXPECT_NE(covering, alarms.end()) << "no " << severity << " alarm at " << crossed_s << " s among "
-                                              << alarms.size() << " alarms";
+            EXPECT_NE(covering, alarms.end())
+                << "no " << severity << " alarm at " << crossed_s << " s among " << alarms.size() << " alarms";
         }
     }
 }

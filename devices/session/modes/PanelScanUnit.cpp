@@ -122,12 +122,12 @@ std::optional<core::detector::ProbeAgreement> PanelScanUnit::agreementSinceStart
 std::string PanelScanUnit::storedText(const RecordingSummary& summary) const
 {
     using core::text::countText;
-    std::string text = countText(summary.defects, "defect", "defects") + " stored" +
-                       (summary.defects == 0 ? std::string() : " at " + countText(summary.sites, "site", "sites")) +
-                       (summary.notJudged.empty() ? ", verdict " + (summary.verdict
-                                                                        ? std::string(core::verdictText(summary.verdict))
-                                                                        : std::string("none"))
-                                                  : ", " + summary.notJudged);
+    std::string text =
+        countText(summary.defects, "defect", "defects") + " stored" +
+        (summary.defects == 0 ? std::string() : " at " + countText(summary.sites, "site", "sites")) +
+        (summary.notJudged.empty()
+             ? ", verdict " + (summary.verdict ? std::string(core::verdictText(summary.verdict)) : std::string("none"))
+             : ", " + summary.notJudged);
     if (summary.probeAgreement) text += "; " + core::detector::agreementText(*summary.probeAgreement);
     return text;
 }

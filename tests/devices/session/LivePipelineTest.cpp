@@ -5,16 +5,16 @@
 // on the session as the store lists it; what a session keeps (its
 // devices, one trigger for one device) is refused with the reason; and a
 // poll's news carries every part's end.
-#include "core/storage/SessionStore.h"
 #include "devices/session/LivePipeline.h"
+#include "core/storage/SessionStore.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <thread>
 #include <unistd.h>
 
@@ -76,8 +76,8 @@ TEST(LivePipeline, OneDeviceAndTwoRecordThroughTheSameCallsAndTheSessionTakesIts
 
     // A second device: a session of two, each its part.
     ASSERT_FALSE(pipeline.add(spedUp("load-cell"), {}));
-    EXPECT_EQ(pipeline.names(), (std::vector<std::string>{"tactiscope-simulator",
-                                                          "tactiscope-simulator-reference-load-cell"}));
+    EXPECT_EQ(pipeline.names(),
+              (std::vector<std::string>{"tactiscope-simulator", "tactiscope-simulator-reference-load-cell"}));
     pipeline.start();
     ASSERT_FALSE(pipeline.startRecording(metadata));
     EXPECT_TRUE(pipeline.isRecording());
