@@ -17,7 +17,7 @@
 #include "EightChannelStream.h"
 #include "core/LiveBuffer.h"
 #include "core/SampleBlock.h"
-#include "ui/LivePlotWidget.h"
+#include "ui/plot/LivePlotWidget.h"
 
 #include <benchmark/benchmark.h>
 #include <qcustomplot.h>

@@ -83,8 +83,8 @@ std::optional<int> addDevices(devices::session::LivePipeline& pipeline, const st
         try {
             pipeline.add(std::move(sources[i]), std::move(sessionOptions), names[i]);
         } catch (const std::invalid_argument& e) {  // a role for a channel the device lacks
-            printError(QStringLiteral("--roles: %1%2").arg(several ? toQString(names[i]) + QStringLiteral(": ") : "",
-                                                          toQString(e.what())));
+            printError(QStringLiteral("--roles: %1%2")
+                           .arg(several ? toQString(names[i]) + QStringLiteral(": ") : "", toQString(e.what())));
             return kExitUsage;
         }
     }
@@ -251,8 +251,7 @@ int runRecord(const QStringList& arguments)
         return kExitUsage;
     }
 
-    if (ports->size() > 1 &&
-        (mode || profile || watch->trigger || !watch->limits.empty() || watch->stopOnCritical))
+    if (ports->size() > 1 && (mode || profile || watch->trigger || !watch->limits.empty() || watch->stopOnCritical))
         return usageError(QStringLiteral("with several devices, each records in its own mode with its own "
                                          "limits; --mode, --profile, --trigger, --limit and --stop-on are for "
                                          "one device"),
@@ -270,7 +269,6 @@ int runRecord(const QStringList& arguments)
                        .arg(*options.requestRate_hz));
     if (pipeline.size() == 1)
         if (const auto exit = setUpOneDevice(first, mode, std::move(profile), *watch)) return *exit;
-    for (std::size_t i = 0; i < pipeline.size(); ++i) pipeline.device(i).setSite(metadata.site);
 
     // Recording from the first block (started before the devices stream),
     // or from each trigger.

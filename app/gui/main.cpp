@@ -6,6 +6,7 @@
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
 #include "ui/MainWindow.h"
+#include "ui/live/LiveStation.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -97,7 +98,7 @@ int main(int argc, char* argv[])
         }
         window.setMode(*mode);
     }
-    window.connectSource(std::make_unique<tactiscope::devices::simulator::SimulatorSource>(
+    window.station().connectSource(std::make_unique<tactiscope::devices::simulator::SimulatorSource>(
         tactiscope::devices::simulator::makeScenario(scenario)));
     window.show();
     window.checkStore();

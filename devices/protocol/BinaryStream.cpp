@@ -2,6 +2,8 @@
 // losses that sequence, device clock and host clock agree on.
 #include "devices/protocol/BinaryStream.h"
 
+#include "core/text/CountText.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -268,8 +270,8 @@ std::uint64_t BinaryStream::believedLoss(std::uint16_t sequence, std::uint64_t t
                    " between two consecutive frames: the samples are placed "
                    "by their count";
         else
-            text = "the device's sequence number skipped " + std::to_string(gap) + " frames while its clock moved " +
-                   moved + ": no sample counted lost for it";
+            text = "the device's sequence number skipped " + core::text::countText(gap, "frame", "frames") +
+                   " while its clock moved " + moved + ": no sample counted lost for it";
         out.notices.push_back({m_lastEnd_s, text});
     }
     return lost;

@@ -78,11 +78,10 @@ struct LiveTake {
     // Called before anything is added to a list: after a stop, the first
     // new entry starts the lists again.
     std::function<void()> adding;
-    // Where on the subject the next reading is taken (a phantom's grid
-    // cell, `record --site`), and the call that moves the grid on once a
-    // reading there was stored.
-    std::function<std::string()> site;
-    std::function<void()> siteStored;
+    // Where on the subject the recording is taken (its metadata's site,
+    // `record --site`); a unit with a finer place of its own (a phantom's
+    // grid cell) uses that instead.
+    std::string recordingSite;
     // Tells the operator what the unit saw about the device (a probe whose
     // own detector disagrees), at a time on the lists' clock, as the link's
     // notices are told; the unit stores its own alarm while recording.

@@ -148,6 +148,7 @@ RecordingEnd LivePipeline::finishSeveral()
 {
     RecordingEnd end;
     end.session = m_devicesSession->sessionId();
+    end.subject = m_devices.front().live->recordingMetadata().subject;
     for (Device& device : m_devices) {
         auto summary = device.live->isRecording() ? device.live->stopRecording() : std::exchange(device.endedPart, {});
         if (summary) end.parts.push_back({device.name, std::move(*summary)});
@@ -164,6 +165,7 @@ RecordingEnd LivePipeline::endOfOne(RecordingSummary summary, bool triggered) co
 {
     RecordingEnd end;
     end.session = summary.session;
+    end.subject = m_devices.front().live->recordingMetadata().subject;
     end.triggered = triggered;
     end.verdict = summary.verdict;
     end.parts.push_back({tellName(m_devices.front()), std::move(summary)});

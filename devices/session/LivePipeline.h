@@ -47,6 +47,7 @@ struct FromDevice {
 // link, or cut by the trigger.
 struct RecordingEnd {
     std::int64_t session = 0;  // the session (of several devices: the whole one)
+    std::string subject;       // what it inspected (a triggered one's numbered: door-18)
     bool triggered = false;    // a session the trigger cut
     // Each device's recording, in the order the devices were added: the
     // one device's, or each part's (a part ended early included).

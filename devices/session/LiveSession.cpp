@@ -320,11 +320,6 @@ RecordingSummary LiveSession::finishRecording()
     return summary;
 }
 
-core::detector::SiteGrouping LiveSession::panelSites() const
-{
-    return core::detector::scanSites(panelDefects());
-}
-
 std::int64_t LiveSession::sessionId() const
 {
     return m_recorder ? m_recorder->sessionId() : 0;
@@ -442,10 +437,7 @@ void LiveSession::takeResults()
     take.adding = [this] {
         if (m_lists.clock == LiveClock::Recorded) startLists(LiveClock::SinceConnect);
     };
-    take.site = [this] { return m_siteGrid ? m_siteGrid->currentName() : m_site; };
-    take.siteStored = [this] {
-        if (m_siteGrid) m_siteGrid->advance();
-    };
+    if (m_recorder) take.recordingSite = m_metadata.site;
     take.tell = [this](double time_s, std::string text) { m_linkNotices.push_back({time_s, std::move(text)}); };
     if (m_recorder) {
         take.recordedUntil_s = m_recorder->consumedUntil_s().value_or(-1.0);
@@ -461,19 +453,6 @@ void LiveSession::takeResults()
         unit->take(take);
         unit->takeZeros(take.recorder);
     }
-}
-
-void LiveSession::setSiteGrid(std::optional<core::compliance::SiteGrid> grid)
-{
-    // The same grid keeps its selection (the owner sets it on every poll).
-    if (grid && m_siteGrid && grid->rows() == m_siteGrid->rows() && grid->columns() == m_siteGrid->columns()) return;
-    if (grid && m_siteGrid) grid->select(m_siteGrid->current());
-    m_siteGrid = std::move(grid);
-}
-
-void LiveSession::selectSite(core::compliance::SiteCell cell)
-{
-    if (m_siteGrid) m_siteGrid->select(cell);
 }
 
 }  // namespace tactiscope::devices::session

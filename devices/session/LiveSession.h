@@ -23,9 +23,9 @@
 //   rebuilt for another profile or calibration goes on from its
 //   predecessor's zero: no zero is ever taken under load;
 // - what the views show of the session (defects, presses, the site the
-//   next press is taken at) is the lists below, on one clock: the
-//   recording's while recording, exactly what was stored after the stop,
-//   the device's since-connect clock otherwise (listClock()).
+//   next press is taken at) is the mode units' lists (unitAs()), on one
+//   clock: the recording's while recording, exactly what was stored after
+//   the stop, the device's since-connect clock otherwise (lists()).
 //
 // Threading: every call from one owner thread (the GUI thread, the CLI's
 // main loop). The processors run on the acquisition thread; poll() takes
@@ -34,10 +34,6 @@
 
 #include "core/LiveBuffer.h"
 #include "core/Vocabulary.h"
-#include "core/compliance/SiteGrid.h"
-#include "core/compliance/StiffnessReadings.h"
-#include "core/detector/DefectEvent.h"
-#include "core/detector/DefectSites.h"
 #include "core/detector/DetectorParameters.h"
 #include "core/modes/ChannelRoles.h"
 #include "core/sensors/SensorLimits.h"
@@ -57,6 +53,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tactiscope::core {
@@ -64,15 +61,6 @@ class SinkSlot;
 }
 namespace tactiscope::core::storage {
 class RecordingTap;
-}
-namespace tactiscope::core::detector {
-class LiveDetection;
-}
-namespace tactiscope::core::compliance {
-class LivePalpation;
-}
-namespace tactiscope::core::capacitive {
-class LiveCapacitive;
 }
 
 namespace tactiscope::devices::session {
@@ -165,11 +153,22 @@ public:
     // A mode's unit; null when the channels cannot feed the mode or it has
     // none (general).
     const LiveModeUnit* unit(core::Mode mode) const;
-    // The built-in modes' processors, for their views; null when the
-    // channels cannot feed them.
-    std::shared_ptr<core::detector::LiveDetection> detection() const;
-    std::shared_ptr<core::compliance::LivePalpation> palpation() const;
-    std::shared_ptr<core::capacitive::LiveCapacitive> capacitive() const;
+    // A mode's unit by its type (devices/session/modes/<Name>Unit.h), for
+    // that mode's own views and tests: what a mode keeps of its own (its
+    // processor, its lists, a phantom's grid) is reached through its unit,
+    // never through a door of this class. Null when no unit of that type runs.
+    template <typename Unit>
+    const Unit* unitAs() const
+    {
+        for (const auto& [mode, unit] : m_units)
+            if (const auto* typed = dynamic_cast<const Unit*>(unit.get())) return typed;
+        return nullptr;
+    }
+    template <typename Unit>
+    Unit* unitAs()
+    {
+        return const_cast<Unit*>(std::as_const(*this).unitAs<Unit>());
+    }
 
     // The current mode's zero; nothing when taken, else why not.
     std::optional<std::string> tare();
@@ -241,21 +240,8 @@ public:
     // A recording the disk stopped ends here; its summary is returned.
     std::optional<RecordingSummary> poll();
 
-    // The lists the views show, on the clock listClock() says: the panel's
-    // defects and the presses (see LiveLists).
+    // The clock and generation of the lists the mode units keep (see LiveLists).
     const LiveLists& lists() const { return m_lists; }
-    const std::vector<core::detector::DefectEvent>& panelDefects() const;
-    const std::vector<PressRecord>& presses() const;
-    // The panel's defects grouped into sites (core/detector/DefectSites.h),
-    // which the automatic verdict counts.
-    core::detector::SiteGrouping panelSites() const;
-    // The phantom's grid of sites (none: presses have no site) and the cell
-    // the next press is taken at; a press stored moves it on.
-    void setSiteGrid(std::optional<core::compliance::SiteGrid> grid);
-    const std::optional<core::compliance::SiteGrid>& siteGrid() const { return m_siteGrid; }
-    void selectSite(core::compliance::SiteCell cell);
-    // Without a grid: the site every press is taken at (`record --site`).
-    void setSite(std::string site) { m_site = std::move(site); }
 
     // Problems met building the processors (a bad calibration, a probe the
     // model rejects), each one sentence; taken once.
@@ -282,8 +268,6 @@ private:
     void startLists(LiveClock clock);
     double listTime_s(double streamTime_s) const;
     LiveModeUnit* unitOf(core::Mode mode) const;
-    template <typename Unit>
-    const Unit* unitOfType() const;
     void takeResults();  // each unit's completed results and zeros
     void takeNotices();
     void recordStandingFaults();
@@ -310,8 +294,6 @@ private:
     std::shared_ptr<core::storage::Recorder> m_recorder;
     core::storage::SessionMetadata m_metadata;  // of the recording
     LiveLists m_lists;
-    std::optional<core::compliance::SiteGrid> m_siteGrid;
-    std::string m_site;
     std::vector<std::string> m_problems;
     std::vector<LinkNotice> m_linkNotices;
     double m_recordingStartHost_s = 0.0;  // steady clock

@@ -126,45 +126,4 @@ const LiveModeUnit* LiveSession::unit(core::Mode mode) const
     return unitOf(mode);
 }
 
-// The built-in modes' parts the views read, from the unit of that type.
-template <typename Unit>
-const Unit* LiveSession::unitOfType() const
-{
-    for (const auto& [mode, unit] : m_units)
-        if (const auto* typed = dynamic_cast<const Unit*>(unit.get())) return typed;
-    return nullptr;
-}
-
-std::shared_ptr<core::detector::LiveDetection> LiveSession::detection() const
-{
-    const auto* scan = unitOfType<PanelScanUnit>();
-    return scan ? scan->detection() : nullptr;
-}
-
-std::shared_ptr<core::compliance::LivePalpation> LiveSession::palpation() const
-{
-    const auto* palpation = unitOfType<PalpationUnit>();
-    return palpation ? palpation->palpation() : nullptr;
-}
-
-std::shared_ptr<core::capacitive::LiveCapacitive> LiveSession::capacitive() const
-{
-    const auto* capacitive = unitOfType<CapacitiveUnit>();
-    return capacitive ? capacitive->capacitive() : nullptr;
-}
-
-const std::vector<core::detector::DefectEvent>& LiveSession::panelDefects() const
-{
-    static const std::vector<core::detector::DefectEvent> none;
-    const auto* scan = unitOfType<PanelScanUnit>();
-    return scan ? scan->defects() : none;
-}
-
-const std::vector<PressRecord>& LiveSession::presses() const
-{
-    static const std::vector<PressRecord> none;
-    const auto* palpation = unitOfType<PalpationUnit>();
-    return palpation ? palpation->presses() : none;
-}
-
 }  // namespace tactiscope::devices::session

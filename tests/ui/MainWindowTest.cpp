@@ -1,11 +1,12 @@
 // The main window against the real-time simulator: live samples reach the
 // plot and the status bar, and a screenshot shows what a user sees.
 #include "ui/MainWindow.h"
+#include "ui/live/LiveStation.h"
 
 #include "support/MainWindowHelpers.h"
 #include "support/Screenshot.h"
 #include "support/WaitFor.h"
-#include "ui/LivePlotWidget.h"
+#include "ui/plot/LivePlotWidget.h"
 
 #include <QLabel>
 #include <QLocale>
@@ -31,9 +32,9 @@ QString labelText(const ui::MainWindow& window, const char* name)
 TEST(MainWindow, ShowsLiveSimulatorSamplesWithinTwoSeconds)
 {
     ui::MainWindow window;
-    window.connectSource(liveSimulator());
+    window.station().connectSource(liveSimulator());
     window.show();
-    ASSERT_TRUE(window.isConnected());
+    ASSERT_TRUE(window.station().isConnected());
     EXPECT_TRUE(waitFor(
         [&] { return window.livePlot()->drawnPointCount(0) > 0 && window.livePlot()->drawnPointCount(1) > 0; }, 2000));
     EXPECT_EQ(labelText(window, "deviceLabel"), QStringLiteral("Simulator — panel scan"));
@@ -46,7 +47,7 @@ TEST(MainWindow, ReportsTheMeasuredRateAndSampleCount)
 {
     ui::MainWindow window;
     window.resize(1200, 720);
-    window.connectSource(liveSimulator());
+    window.station().connectSource(liveSimulator());
     window.show();
     // The rate is measured over one second; give the traces a few strokes.
     ASSERT_TRUE(waitFor([&] { return labelText(window, "rateLabel").contains(QStringLiteral("Hz (nominal")); }, 5000));
@@ -61,11 +62,11 @@ TEST(MainWindow, ReportsTheMeasuredRateAndSampleCount)
 TEST(MainWindow, DisconnectStopsTheStreamAndClearsThePlot)
 {
     ui::MainWindow window;
-    window.connectSource(liveSimulator());
+    window.station().connectSource(liveSimulator());
     window.show();
     ASSERT_TRUE(waitFor([&] { return window.livePlot()->drawnPointCount(0) > 0; }, 2000));
-    window.disconnectSource();
-    EXPECT_FALSE(window.isConnected());
+    window.station().disconnectDevices();
+    EXPECT_FALSE(window.station().isConnected());
     EXPECT_EQ(window.livePlot()->drawnPointCount(0), 0);
     EXPECT_EQ(window.windowTitle(), QStringLiteral("Tactiscope"));
     EXPECT_EQ(labelText(window, "deviceLabel"), QStringLiteral("No device"));

@@ -1,13 +1,13 @@
 // CalibrationHistory: sensors, records, drift plot, sessions per record.
 #include "ui/calibration/CalibrationHistory.h"
-#include "ui/DateText.h"
-#include "ui/NumberText.h"
-#include "ui/VocabularyText.h"
+#include "ui/common/DateText.h"
+#include "ui/common/NumberText.h"
+#include "ui/common/VocabularyText.h"
 
 #include "core/calibration/CalibrationDrift.h"
 #include "core/storage/SessionStore.h"
-#include "ui/ProblemReport.h"
 #include "ui/calibration/WizardText.h"
+#include "ui/common/ProblemReport.h"
 
 #include <QDateTime>
 #include <QFileInfo>

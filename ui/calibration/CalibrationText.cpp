@@ -3,8 +3,8 @@
 
 #include "core/calibration/CalibrationFields.h"
 #include "core/calibration/CapacitiveCalibration.h"
-#include "ui/DateText.h"
-#include "ui/NumberText.h"
+#include "ui/common/DateText.h"
+#include "ui/common/NumberText.h"
 
 #include <QObject>
 

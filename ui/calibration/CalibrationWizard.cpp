@@ -1,13 +1,10 @@
 // CalibrationWizard: the sensor, zero, loads and result pages every
 // calibration shares, and storing its record off the GUI thread.
 #include "ui/calibration/CalibrationWizard.h"
-#include "ui/DisplayUnits.h"
-#include "ui/NumberText.h"
+#include "ui/common/DisplayUnits.h"
+#include "ui/common/NumberText.h"
 
 #include "core/storage/SessionStore.h"
-#include "ui/ActiveProfiles.h"
-#include "ui/ProblemReport.h"
-#include "ui/StoreJobs.h"
 #include "ui/calibration/CalibrationPlot.h"
 #include "ui/calibration/CapturePanel.h"
 #include "ui/calibration/CheckedPage.h"
@@ -16,6 +13,9 @@
 #include "ui/calibration/StabilityIndicator.h"
 #include "ui/calibration/StabilityWatch.h"
 #include "ui/calibration/WizardText.h"
+#include "ui/common/ProblemReport.h"
+#include "ui/common/StoreJobs.h"
+#include "ui/profiles/ActiveProfiles.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -62,7 +62,9 @@ void CalibrationWizard::recheck(int id)
 
 CheckedPage* CalibrationWizard::createSensorPage(const std::vector<std::pair<QString, QWidget*>>& rows)
 {
-    auto* page = new CheckedPage([this] { return m_channel->currentIndex() >= 0 && sensorChosen(); });
+    // A record says who calibrated: none is stored without a name.
+    auto* page = new CheckedPage(
+        [this] { return m_channel->currentIndex() >= 0 && sensorChosen() && !operatorName().isEmpty(); });
     page->setTitle(tr("Channel and sensor"));
     page->setSubTitle(tr("Which channel, on which sensor, and who calibrates."));
     m_channel = new QComboBox(page);
@@ -75,7 +77,8 @@ CheckedPage* CalibrationWizard::createSensorPage(const std::vector<std::pair<QSt
     for (const ProfileEntry& entry : m_profiles) m_profile->addItem(entry.name, entry.path);
     m_operator = new QLineEdit(m_context.operatorName, page);
     m_operator->setObjectName(QStringLiteral("operatorEdit"));
-    m_operator->setPlaceholderText(tr("who calibrates (stored with the record)"));
+    m_operator->setPlaceholderText(tr("who calibrates (required: stored with the record)"));
+    connect(m_operator, &QLineEdit::textChanged, page, &CheckedPage::recheck);
     m_sensorSummary = wrappedLabel({}, page);
 
     auto* form = new QFormLayout;

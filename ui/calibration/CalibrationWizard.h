@@ -20,9 +20,9 @@
 #include "core/calibration/FitCredibility.h"
 #include "core/calibration/LinearFit.h"
 #include "core/calibration/StabilityMonitor.h"
-#include "ui/DisplayUnits.h"
-#include "ui/ProfileLibrary.h"
 #include "ui/calibration/CalibrationContext.h"
+#include "ui/common/DisplayUnits.h"
+#include "ui/profiles/ProfileLibrary.h"
 
 #include <QWizard>
 

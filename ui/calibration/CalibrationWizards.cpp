@@ -1,8 +1,17 @@
 // CalibrationWizards: which wizard a mode calibrates with.
 #include "ui/calibration/CalibrationWizards.h"
 
+#include "core/modes/ModeDefinition.h"
+#include "devices/session/LiveSession.h"
+#include "ui/calibration/CalibrationHistory.h"
 #include "ui/calibration/CalibrationWizard.h"
+#include "ui/calibration/ShuntCheckDialog.h"
+#include "ui/common/ProblemReport.h"
+#include "ui/common/VocabularyText.h"
+#include "ui/live/LiveStation.h"
 #include "ui/modes/ModeUi.h"
+
+#include <QMenu>
 
 namespace tactiscope::ui {
 
@@ -18,6 +27,61 @@ QWizard* openCalibrationWizard(core::Mode mode, CalibrationContext context, QWid
     wizard->setAttribute(Qt::WA_DeleteOnClose);
     wizard->show();
     return wizard;
+}
+
+void calibrateLive(LiveStation& station, core::Mode mode, LiveCalibration setup, QWidget* window)
+{
+    auto* live = station.device();
+    if (!live) return setup.tell(QObject::tr("Connect the probe to calibrate (or the simulator's calibration rig)."));
+    if (station.isRecording())
+        return setup.tell(QObject::tr("Stop recording first: a session keeps the calibration it started with."));
+    CalibrationContext context{
+        live->buffer(), live->channels(), live->source().nominalSampleRate_hz(), station.loadRig(), setup.store,
+        setup.operatorName, setup.profileDirectory,
+        // The device's clock while it is the station's (a wizard may outlive it).
+        [station = &station, live] { return station->device() == live ? live->source().hostClock() : std::nullopt; }};
+    openCalibrationWizard(mode, std::move(context), window, [&station, mode, setup, window](const QString& sensor) {
+        auto* now = station.device();
+        if (!now) return;
+        const QString view = modeTitle(mode).toLower();
+        if (const auto problem = now->reloadCalibrations(mode))
+            reportProblem(window, {QObject::tr("Calibration not applied"),
+                                   QObject::tr("The %1 view does not read through the new calibration.").arg(view),
+                                   QString::fromStdString(*problem),
+                                   {}});
+        reportAnalysisProblems(window, now->takeProblems());
+        setup.applied(mode);
+        // The zero in use was taken before this calibration: readings through
+        // it are off by what the probe drifted since, until a tare.
+        const bool hasZero = core::definitionOf(mode).noZero.empty();
+        setup.tell(hasZero ? QObject::tr("Calibration of %1 stored; the %2 view reads through it. Tare (Ctrl+T) with "
+                                         "the probe unloaded: the zero in use was taken before it.")
+                                 .arg(sensor, view)
+                           : QObject::tr("Calibration of %1 stored; the %2 view reads through it.").arg(sensor, view));
+    });
+}
+
+void addCalibrationActions(QMenu* tools, LiveStation& station, std::function<LiveCalibration()> setup, QWidget* window)
+{
+    for (const auto& definition : core::modeDefinitions())
+        if (const auto action = modeUi(definition.mode).calibrateAction)
+            tools->addAction(action(), window, [&station, setup, window, mode = definition.mode] {
+                calibrateLive(station, mode, setup(), window);
+            });
+    QAction* shunt = tools->addAction(QObject::tr("Sh&unt check…"), window, [&station, setup, window] {
+        if (!station.device()) return setup().tell(QObject::tr("Connect a probe to check its bridges."));
+        const auto now = setup();
+        auto* dialog =
+            new ShuntCheckDialog({[&station] { return station.device(); }, now.storePath, now.operatorName}, window);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->show();
+    });
+    shunt->setObjectName(QStringLiteral("shuntCheckAction"));
+    tools->addAction(QObject::tr("Calibration &history…"), window, [setup, window] {
+        auto* history = new CalibrationHistory(setup().storePath, window);
+        history->setAttribute(Qt::WA_DeleteOnClose);
+        history->show();
+    });
 }
 
 }  // namespace tactiscope::ui

@@ -6,7 +6,7 @@
 // user's requests.
 #pragma once
 
-#include "ui/DisplayUnits.h"
+#include "ui/common/DisplayUnits.h"
 
 #include <QStringList>
 #include <QWidget>

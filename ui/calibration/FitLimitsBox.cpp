@@ -1,7 +1,7 @@
 // FitLimitsBox: three limits and the problems text.
 #include "ui/calibration/FitLimitsBox.h"
 
-#include "ui/NumberText.h"
+#include "ui/common/NumberText.h"
 
 #include <QDoubleSpinBox>
 #include <QFormLayout>

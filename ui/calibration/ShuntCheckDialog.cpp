@@ -2,7 +2,7 @@
 #include "ui/calibration/ShuntCheckDialog.h"
 
 #include "core/storage/SessionStore.h"
-#include "ui/NumberText.h"
+#include "ui/common/NumberText.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

@@ -1,8 +1,8 @@
 // StabilityCriteria: three spin boxes in display units.
 #include "ui/calibration/StabilityCriteria.h"
 
-#include "ui/DisplayUnits.h"
-#include "ui/NumberText.h"
+#include "ui/common/DisplayUnits.h"
+#include "ui/common/NumberText.h"
 
 #include <QDoubleSpinBox>
 #include <QFormLayout>

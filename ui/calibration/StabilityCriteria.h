@@ -4,7 +4,7 @@
 #pragma once
 
 #include "core/calibration/StabilityMonitor.h"
-#include "ui/DisplayUnits.h"
+#include "ui/common/DisplayUnits.h"
 
 #include <QWidget>
 

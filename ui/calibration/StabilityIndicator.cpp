@@ -1,9 +1,9 @@
 // StabilityIndicator: the watch's state in words and a coloured dot.
 #include "ui/calibration/StabilityIndicator.h"
 
-#include "ui/DisplayUnits.h"
-#include "ui/NumberText.h"
 #include "ui/calibration/StabilityWatch.h"
+#include "ui/common/DisplayUnits.h"
+#include "ui/common/NumberText.h"
 
 #include <cmath>
 

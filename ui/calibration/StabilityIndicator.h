@@ -4,7 +4,7 @@
 // green with the window's mean and σ once it is stable.
 #pragma once
 
-#include "ui/DisplayUnits.h"
+#include "ui/common/DisplayUnits.h"
 
 #include <QLabel>
 

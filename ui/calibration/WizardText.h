@@ -2,7 +2,7 @@
 // and a measured number to a given count of significant digits.
 #pragma once
 
-#include "ui/NumberText.h"
+#include "ui/common/NumberText.h"
 
 #include <QLabel>
 

@@ -1,7 +1,7 @@
 // CentralStoreDialog: the address form and the live sending state.
 #include "ui/central/CentralStoreDialog.h"
-#include "ui/DateText.h"
-#include "ui/NumberText.h"
+#include "ui/common/DateText.h"
+#include "ui/common/NumberText.h"
 
 #include "core/storage/central/PgConnection.h"
 #include "ui/calibration/WizardText.h"

@@ -1,6 +1,6 @@
 // CentralStoreLink: the controller, its status-bar field and its dialog.
 #include "ui/central/CentralStoreLink.h"
-#include "ui/DateText.h"
+#include "ui/common/DateText.h"
 
 #include "ui/central/CentralStoreDialog.h"
 #include "ui/central/CentralSyncController.h"

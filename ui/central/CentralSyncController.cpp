@@ -3,7 +3,7 @@
 #include "ui/central/CentralSyncController.h"
 
 #include "core/storage/central/CentralSync.h"
-#include "ui/NumberText.h"
+#include "ui/common/NumberText.h"
 
 #include <QFileInfo>
 #include <QMetaObject>

@@ -1,7 +1,8 @@
 // A mode's view under the live traces, as the main window sees every one:
 // bound to the live session (its processor, probe and calibrations), fed on
 // each status poll from the session's one model, with the lanes that follow
-// the traces' clock. Each mode's view (PanelScanView, PalpationView,
+// the traces' clock, marking its events on the traces when it has any.
+// Each mode's view (PanelScanView, PalpationView,
 // CapacitiveView) implements it; ui/modes/ModeUi.h says which view a mode has.
 #pragma once
 
@@ -28,6 +29,9 @@ public:
     virtual void update(devices::session::LiveSession& session) = 0;
     // The processor's output as lanes under the traces.
     virtual LivePlotWidget* lanes() const = 0;
+    // The device's traces above it, for a view that marks its events there
+    // (the panel's defects where they happened); none by default.
+    virtual void setTraces(LivePlotWidget* traces) { static_cast<void>(traces); }
 
 signals:
     void profilesRequested();  // the probe line's "Change…" link

@@ -1,16 +1,17 @@
 // A mode's part in the user interface, in one entry the rest of the ui asks
 // instead of switching on the mode: its live view, the units its derived
 // quantities are shown in, its calibration wizard, its live XY plot, its
-// account in the review window and its section of the report. Each
+// account in the review window, its section of the report and a tool of
+// its own. Each
 // built-in mode has its entry in its own file beside this one
-// (PanelScanUi.cpp, …); ModeUiRegistry.cpp lists them. A mode without an
+// (panelscan/PanelScanUi.cpp, …); ModeUiRegistry.cpp lists them. A mode without an
 // entry (general) has none of these parts: the device's traces, the list of
 // records and the report's tables say all there is.
 #pragma once
 
 #include "core/Vocabulary.h"
-#include "ui/DisplayUnits.h"
 #include "ui/calibration/CalibrationContext.h"
+#include "ui/common/DisplayUnits.h"
 
 #include <QString>
 
@@ -52,6 +53,10 @@ struct ModeUi {
     // Its section of the report (HTML); without one the report lists the
     // session's readings as a table.
     QString (*reportSection)(const core::report::ReportData& data, QTextDocument& document) = nullptr;
+    // A tool of its own in the Tools menu (the compliance probe's design):
+    // the entry's text and the window it opens, non-modal.
+    QString (*toolAction)() = nullptr;
+    void (*openTool)(QWidget* parent) = nullptr;
 };
 
 // The entry of `mode`; a mode without one gets an entry with no parts.

@@ -5,7 +5,7 @@
 // and a value range that keeps the data and the threshold in view.
 #pragma once
 
-#include "ui/DisplayUnits.h"
+#include "ui/common/DisplayUnits.h"
 
 #include <optional>
 

@@ -2,10 +2,10 @@
 #include "ui/report/ReportDocument.h"
 
 #include "core/modes/ModeDefinition.h"
-#include "ui/DateText.h"
-#include "ui/NumberText.h"
-#include "ui/VocabularyText.h"
 #include "ui/calibration/CalibrationText.h"
+#include "ui/common/DateText.h"
+#include "ui/common/NumberText.h"
+#include "ui/common/VocabularyText.h"
 
 #include "core/Version.h"
 #include "core/report/VerdictTrail.h"

@@ -1,7 +1,7 @@
 // ReportHtml: the report's HTML building blocks.
 #include "ui/report/ReportHtml.h"
 
-#include "ui/NumberText.h"
+#include "ui/common/NumberText.h"
 
 #include <QLocale>
 

@@ -1,8 +1,8 @@
 // ReportPlot: lanes, bands and the session's records on QCustomPlot.
 #include "ui/report/ReportPlot.h"
-#include "ui/AxisTicks.h"
+#include "ui/plot/AxisTicks.h"
 
-#include "ui/DisplayUnits.h"
+#include "ui/common/DisplayUnits.h"
 #include "ui/report/LaneAxis.h"
 #include "ui/report/PlotImage.h"
 

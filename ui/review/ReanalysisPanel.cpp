@@ -3,7 +3,7 @@
 
 #include "core/storage/OpenSessionSource.h"
 
-#include "ui/NumberText.h"
+#include "ui/common/NumberText.h"
 #include "ui/review/AnalysisName.h"
 
 #include "core/ModeCapability.h"

@@ -4,7 +4,7 @@
 // themselves, whether or not a review is open.
 #pragma once
 
-#include "ui/HelpWindows.h"
+#include "ui/common/HelpWindows.h"
 
 #include <QList>
 #include <QObject>

@@ -2,9 +2,9 @@
 // the hover readout, the pinned cursor and the replay playhead.
 #include "ui/review/ReviewPlot.h"
 
-#include "ui/AxisTicks.h"
-#include "ui/DisplayUnits.h"
-#include "ui/NumberText.h"
+#include "ui/common/DisplayUnits.h"
+#include "ui/common/NumberText.h"
+#include "ui/plot/AxisTicks.h"
 #include "ui/report/LaneAxis.h"
 #include "ui/report/PlotImage.h"
 

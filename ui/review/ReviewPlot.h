@@ -16,7 +16,7 @@
 #include "core/derived/SessionLanes.h"
 #include "core/storage/SessionStore.h"
 #include "core/storage/TraceWindow.h"
-#include "ui/DisplayUnits.h"
+#include "ui/common/DisplayUnits.h"
 
 #include <QColor>
 #include <QPointF>

@@ -3,15 +3,15 @@
 
 #include "core/timing/ClockMappingJson.h"
 #include "core/timing/ClockMappingText.h"
-#include "ui/DateText.h"
+#include "ui/common/DateText.h"
 
 #include "core/modes/ModeDefinition.h"
 #include "core/storage/OpenSessionSource.h"
 
-#include "ui/NumberText.h"
-#include "ui/ProblemReport.h"
-#include "ui/VerdictDialog.h"
-#include "ui/VocabularyText.h"
+#include "ui/common/NumberText.h"
+#include "ui/common/ProblemReport.h"
+#include "ui/common/VocabularyText.h"
+#include "ui/live/VerdictDialog.h"
 
 #include "core/detector/DefectSites.h"
 #include "core/report/PressTable.h"

@@ -2,9 +2,9 @@
 #include "ui/review/ReviewWindows.h"
 
 #include "core/storage/StoreWorker.h"
-#include "ui/InterruptedSessionsReport.h"
-#include "ui/ProblemReport.h"
-#include "ui/StoreJobs.h"
+#include "ui/common/ProblemReport.h"
+#include "ui/common/StoreJobs.h"
+#include "ui/review/InterruptedSessionsReport.h"
 #include "ui/review/ReviewWindow.h"
 #include "ui/review/SessionBrowser.h"
 

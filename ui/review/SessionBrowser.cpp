@@ -1,13 +1,13 @@
 // SessionBrowser: filters, table, open and delete.
 #include "ui/review/SessionBrowser.h"
-#include "ui/DateText.h"
-#include "ui/NumberText.h"
+#include "ui/common/DateText.h"
+#include "ui/common/NumberText.h"
 
 #include "core/modes/ModeDefinition.h"
 #include "core/storage/OpenSessionSource.h"
-#include "ui/ProblemReport.h"
-#include "ui/StoreJobs.h"
-#include "ui/VocabularyText.h"
+#include "ui/common/ProblemReport.h"
+#include "ui/common/StoreJobs.h"
+#include "ui/common/VocabularyText.h"
 
 #include "ui/calibration/WizardText.h"
 #include "ui/review/SessionTableModel.h"

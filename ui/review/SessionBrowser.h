@@ -8,7 +8,7 @@
 // samples) runs on the window's store worker, off the GUI thread.
 #pragma once
 
-#include "ui/HelpWindows.h"
+#include "ui/common/HelpWindows.h"
 
 #include "core/storage/SessionSource.h"
 

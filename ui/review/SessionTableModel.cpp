@@ -1,8 +1,8 @@
 // SessionTableModel: one row per stored session.
 #include "ui/review/SessionTableModel.h"
-#include "ui/DateText.h"
-#include "ui/NumberText.h"
-#include "ui/VocabularyText.h"
+#include "ui/common/DateText.h"
+#include "ui/common/NumberText.h"
+#include "ui/common/VocabularyText.h"
 
 #include <QApplication>
 #include <QColor>

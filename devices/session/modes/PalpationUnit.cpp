@@ -33,8 +33,23 @@ PalpationUnit::PalpationUnit(const LiveUnitSetup& setup)
         throw std::invalid_argument("the profile '" + probe.name + "' cannot be used: " + e.what());
     }
     for (const std::size_t i : usable) m_calibrations.push_back(newest[i]);
-    if (const auto* previous = dynamic_cast<const PalpationUnit*>(setup.previous))
+    if (const auto* previous = dynamic_cast<const PalpationUnit*>(setup.previous)) {
         m_palpation->inheritZero(*previous->m_palpation);
+        m_siteGrid = previous->m_siteGrid;  // the phantom is the same
+    }
+}
+
+void PalpationUnit::setSiteGrid(std::optional<core::compliance::SiteGrid> grid)
+{
+    // The same grid keeps its selection (the view sets it on every poll).
+    if (grid && m_siteGrid && grid->rows() == m_siteGrid->rows() && grid->columns() == m_siteGrid->columns()) return;
+    if (grid && m_siteGrid) grid->select(m_siteGrid->current());
+    m_siteGrid = std::move(grid);
+}
+
+void PalpationUnit::selectSite(core::compliance::SiteCell cell)
+{
+    if (m_siteGrid) m_siteGrid->select(cell);
 }
 
 // The zero in use reads the session's first samples (it applies from
@@ -49,7 +64,7 @@ void PalpationUnit::take(const LiveTake& take)
 {
     std::vector<core::storage::SessionReading> stored;
     for (auto& press : resultsForLists(m_later, m_palpation->takeReadings(), take)) {
-        PressRecord record{std::move(press), take.site(), false};
+        PressRecord record{std::move(press), m_siteGrid ? m_siteGrid->currentName() : take.recordingSite, false};
         // Out of range or clipped is a state, not a stiffness: shown, not stored as a number.
         if (take.recorder && record.press.status == core::compliance::PressStatus::Ok) {
             core::storage::SessionReading reading;
@@ -64,7 +79,7 @@ void PalpationUnit::take(const LiveTake& take)
             reading.detailsJson = core::compliance::pressDetailsJson(record.press);
             stored.push_back(std::move(reading));
             record.stored = true;
-            take.siteStored();  // the site has its reading: the next press is the next site's
+            if (m_siteGrid) m_siteGrid->advance();  // the site has its reading: the next press is the next site's
         }
         m_presses.push_back(std::move(record));
     }

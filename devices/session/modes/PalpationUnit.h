@@ -1,11 +1,12 @@
 // The palpation mode's live part: the compliance probe's forces through
 // its profile and each beam's newest gauge-factor calibration, the presses
-// on the lists' clock with the site each was taken at, stored as stiffness
-// readings (in range only) while a palpation records, and the zeros the
-// forces read on.
+// on the lists' clock with the site each was taken at (a phantom's grid
+// cell, else the recording's site), stored as stiffness readings (in range
+// only) while a palpation records, and the zeros the forces read on.
 #pragma once
 
 #include "core/compliance/LivePalpation.h"
+#include "core/compliance/SiteGrid.h"
 #include "devices/session/LiveModeUnit.h"
 
 namespace tactiscope::devices::session {
@@ -33,12 +34,19 @@ public:
 
     const std::shared_ptr<core::compliance::LivePalpation>& palpation() const { return m_palpation; }
     const std::vector<PressRecord>& presses() const { return m_presses; }
+    // The phantom's grid of sites (none: a press is taken at the
+    // recording's site) and the cell the next press is taken at; a press
+    // stored moves it on. The same grid keeps its selection.
+    void setSiteGrid(std::optional<core::compliance::SiteGrid> grid);
+    const std::optional<core::compliance::SiteGrid>& siteGrid() const { return m_siteGrid; }
+    void selectSite(core::compliance::SiteCell cell);
 
 private:
     std::vector<core::storage::StoredCalibration> m_calibrations;
     std::shared_ptr<core::compliance::LivePalpation> m_palpation;
     std::vector<PressRecord> m_presses;
     std::vector<core::compliance::PressReading> m_later;  // stream times, after the samples recorded
+    std::optional<core::compliance::SiteGrid> m_siteGrid;
 };
 
 }  // namespace tactiscope::devices::session

@@ -11,8 +11,10 @@
 #include "core/sensors/BuiltInProfiles.h"
 #include "core/storage/SessionStore.h"
 #include "devices/session/LiveSession.h"
+#include "devices/session/modes/CapacitiveUnit.h"
 #include "devices/simulator/CapacitiveWeightsScenario.h"
 #include "devices/simulator/SimulatorSource.h"
+#include "support/LiveUnit.h"
 
 #include <gtest/gtest.h>
 
@@ -23,6 +25,8 @@
 #include <unistd.h>
 
 using namespace tactiscope;
+using tactiscope::devices::session::CapacitiveUnit;
+using tactiscope::testing::liveUnit;
 
 TEST(DerivedCapacitive, TheReviewsForceAndDeflectionAreTheLiveOnesForTheSameSamples)
 {
@@ -76,7 +80,7 @@ TEST(DerivedCapacitive, TheReviewsForceAndDeflectionAreTheLiveOnesForTheSameSamp
 
     core::LiveCursor outputCursor;
     core::LiveChunk output;
-    live.capacitive()->output()->readNew(outputCursor, output);
+    liveUnit<CapacitiveUnit>(live).capacitive()->output()->readNew(outputCursor, output);
 
     core::storage::SessionStore sessions(store.string(), core::storage::Database::Access::ReadOnly);
     for (const auto& z : sessions.zeros(summary->session))

@@ -9,8 +9,10 @@
 #include "core/derived/PalpationChannels.h"
 #include "core/storage/SessionStore.h"
 #include "devices/session/LiveSession.h"
+#include "devices/session/modes/PalpationUnit.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
+#include "support/LiveUnit.h"
 
 #include <gtest/gtest.h>
 
@@ -21,6 +23,8 @@
 #include <unistd.h>
 
 using namespace tactiscope;
+using tactiscope::devices::session::PalpationUnit;
+using tactiscope::testing::liveUnit;
 
 namespace {
 
@@ -74,7 +78,7 @@ TEST(DerivedPalpation, TheReviewsForcesAreTheLiveOnesForTheSameSamples)
     core::LiveChunk raw, forces;
     live.buffer()->readNew(cursor, raw);
     core::LiveCursor forceCursor;
-    live.palpation()->output()->readNew(forceCursor, forces);
+    liveUnit<PalpationUnit>(live).palpation()->output()->readNew(forceCursor, forces);
 
     core::storage::SessionStore sessions(store.string(), core::storage::Database::Access::ReadOnly);
     EXPECT_EQ(sessions.zeros(summary->session).size(), 2u);  // the one in use at the start, and the tare

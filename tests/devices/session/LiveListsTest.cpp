@@ -10,10 +10,13 @@
 #include "core/sensors/BuiltInProfiles.h"
 #include "core/storage/SessionStore.h"
 #include "devices/session/LiveSession.h"
+#include "devices/session/modes/PalpationUnit.h"
+#include "devices/session/modes/PanelScanUnit.h"
 #include "devices/simulator/PalpationScenario.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
 
+#include "support/LiveUnit.h"
 #include "support/RelabelledSource.h"
 #include "support/TempDirectory.h"
 
@@ -27,6 +30,9 @@
 using namespace tactiscope;
 using devices::session::LiveClock;
 using devices::session::LiveSession;
+using tactiscope::devices::session::PalpationUnit;
+using tactiscope::devices::session::PanelScanUnit;
+using tactiscope::testing::liveUnit;
 using tactiscope::testing::RelabelledSource;
 
 namespace {
@@ -76,14 +82,14 @@ TEST_F(LiveListsTest, AfterTheStopTheDefectListIsExactlyWhatWasStoredThenANewLis
     LiveSession session(simulator("panel-scan"), optionsFor(file("s.tactiscope")));
     session.start();
     // Defects before the record press: since connect, not recorded.
-    ASSERT_TRUE(pollUntil(session, [&] { return session.panelDefects().size() >= 2; }));
+    ASSERT_TRUE(pollUntil(session, [&] { return liveUnit<PanelScanUnit>(session).defects().size() >= 2; }));
     EXPECT_EQ(session.lists().clock, LiveClock::SinceConnect);
     const auto unrecorded = session.lists().generation;
 
     ASSERT_FALSE(session.startRecording({}));
     EXPECT_NE(session.lists().generation, unrecorded);
-    EXPECT_TRUE(session.panelDefects().empty());  // the panel starts empty
-    ASSERT_TRUE(pollUntil(session, [&] { return session.panelDefects().size() >= 3; }));
+    EXPECT_TRUE(liveUnit<PanelScanUnit>(session).defects().empty());  // the panel starts empty
+    ASSERT_TRUE(pollUntil(session, [&] { return liveUnit<PanelScanUnit>(session).defects().size() >= 3; }));
     EXPECT_EQ(session.lists().clock, LiveClock::Recording);
     const auto summary = session.stopRecording();
     ASSERT_TRUE(summary);
@@ -94,7 +100,7 @@ TEST_F(LiveListsTest, AfterTheStopTheDefectListIsExactlyWhatWasStoredThenANewLis
     core::storage::SessionStore store(file("s.tactiscope"), core::storage::Database::Access::ReadOnly);
     auto stored = store.events(summary->session);
     std::erase_if(stored, [](const auto& e) { return e.kind != core::EventKind::Defect; });
-    const auto shown = session.panelDefects();
+    const auto shown = liveUnit<PanelScanUnit>(session).defects();
     ASSERT_EQ(shown.size(), stored.size());
     EXPECT_EQ(shown.size(), summary->defects);
     for (std::size_t i = 0; i < shown.size(); ++i) {
@@ -111,8 +117,9 @@ TEST_F(LiveListsTest, AfterTheStopTheDefectListIsExactlyWhatWasStoredThenANewLis
     ASSERT_TRUE(pollUntil(session, [&] { return session.lists().generation != recorded; }));
     EXPECT_EQ(session.lists().clock, LiveClock::SinceConnect);
     EXPECT_EQ(session.lists().origin_s, 0.0);
-    ASSERT_FALSE(session.panelDefects().empty());
-    for (const auto& e : session.panelDefects()) EXPECT_GT(e.end_s, recordingOrigin_s + summary->end_s - 0.5);
+    ASSERT_FALSE(liveUnit<PanelScanUnit>(session).defects().empty());
+    for (const auto& e : liveUnit<PanelScanUnit>(session).defects())
+        EXPECT_GT(e.end_s, recordingOrigin_s + summary->end_s - 0.5);
 }
 
 TEST_F(LiveListsTest, WhileRecordingPressTimesAreTheRecordingsAsStored)
@@ -121,17 +128,17 @@ TEST_F(LiveListsTest, WhileRecordingPressTimesAreTheRecordingsAsStored)
     ASSERT_EQ(session.mode(), core::Mode::Palpation);
     session.start();
     // Some presses first, so the stream's clock is well ahead of the recording's.
-    ASSERT_TRUE(pollUntil(session, [&] { return session.presses().size() >= 2; }));
-    const double streamBefore_s = session.presses().back().press.end_s;
+    ASSERT_TRUE(pollUntil(session, [&] { return liveUnit<PalpationUnit>(session).presses().size() >= 2; }));
+    const double streamBefore_s = liveUnit<PalpationUnit>(session).presses().back().press.end_s;
     ASSERT_FALSE(session.startRecording({}));
-    ASSERT_TRUE(pollUntil(session, [&] { return storedCount(session.presses()) >= 2; }));
+    ASSERT_TRUE(pollUntil(session, [&] { return storedCount(liveUnit<PalpationUnit>(session).presses()) >= 2; }));
     const auto summary = session.stopRecording();
     ASSERT_TRUE(summary);
 
     core::storage::SessionStore store(file("p.tactiscope"), core::storage::Database::Access::ReadOnly);
     const auto readings = store.readings(summary->session);
     std::vector<devices::session::PressRecord> shown;
-    for (const auto& press : session.presses())
+    for (const auto& press : liveUnit<PalpationUnit>(session).presses())
         if (press.stored) shown.push_back(press);
     ASSERT_EQ(shown.size(), readings.size());
     for (std::size_t i = 0; i < shown.size(); ++i) {
@@ -146,48 +153,49 @@ TEST_F(LiveListsTest, WhileRecordingPressTimesAreTheRecordingsAsStored)
 TEST_F(LiveListsTest, TheFirstRecordedPressIsTakenAtTheSiteSelectedBeforeRecordAndOnlyStoredPressesMoveOn)
 {
     LiveSession session(simulator("palpation"), optionsFor(file("g.tactiscope")));
-    session.setSiteGrid(core::compliance::SiteGrid(3, 4));
-    session.selectSite({0, 0});
+    liveUnit<PalpationUnit>(session).setSiteGrid(core::compliance::SiteGrid(3, 4));
+    liveUnit<PalpationUnit>(session).selectSite({0, 0});
     session.start();
     // Presses while not recording read at A1, and leave the selection there.
-    ASSERT_TRUE(pollUntil(session, [&] { return session.presses().size() >= 2; }));
-    EXPECT_EQ(session.siteGrid()->currentName(), "A1");
-    for (const auto& press : session.presses()) EXPECT_FALSE(press.stored);
+    ASSERT_TRUE(pollUntil(session, [&] { return liveUnit<PalpationUnit>(session).presses().size() >= 2; }));
+    EXPECT_EQ(liveUnit<PalpationUnit>(session).siteGrid()->currentName(), "A1");
+    for (const auto& press : liveUnit<PalpationUnit>(session).presses()) EXPECT_FALSE(press.stored);
 
     ASSERT_FALSE(session.startRecording({}));
-    EXPECT_TRUE(session.presses().empty());
-    ASSERT_TRUE(pollUntil(session, [&] { return storedCount(session.presses()) >= 2; }));
+    EXPECT_TRUE(liveUnit<PalpationUnit>(session).presses().empty());
+    ASSERT_TRUE(pollUntil(session, [&] { return storedCount(liveUnit<PalpationUnit>(session).presses()) >= 2; }));
     const auto summary = session.stopRecording();
     core::storage::SessionStore store(file("g.tactiscope"), core::storage::Database::Access::ReadOnly);
     const auto readings = store.readings(summary->session);
     ASSERT_GE(readings.size(), 2u);
     EXPECT_EQ(readings[0].site, "A1");
     EXPECT_EQ(readings[1].site, "A2");
-    EXPECT_EQ(session.siteGrid()->currentName(), core::compliance::SiteGrid::name({0, int(readings.size()) % 4}));
+    EXPECT_EQ(liveUnit<PalpationUnit>(session).siteGrid()->currentName(),
+              core::compliance::SiteGrid::name({0, int(readings.size()) % 4}));
 }
 
 TEST_F(LiveListsTest, AProfileChosenWhilePressingTakesNoZeroUnderLoad)
 {
     LiveSession session(simulator("palpation"), optionsFor(file("z.tactiscope")));
     session.start();
-    ASSERT_TRUE(pollUntil(session, [&] { return !session.presses().empty(); }));
+    ASSERT_TRUE(pollUntil(session, [&] { return !liveUnit<PalpationUnit>(session).presses().empty(); }));
     // The deepest presses load the beams most: wait for one in progress.
-    ASSERT_TRUE(pollUntil(session, [&] { return session.palpation()->state().pressing; }));
-    const auto zero = session.palpation()->currentZero();
+    ASSERT_TRUE(pollUntil(session, [&] { return liveUnit<PalpationUnit>(session).palpation()->state().pressing; }));
+    const auto zero = liveUnit<PalpationUnit>(session).palpation()->currentZero();
     ASSERT_TRUE(zero);
-    const auto previous = session.palpation();
+    const auto previous = liveUnit<PalpationUnit>(session).palpation();
     ASSERT_FALSE(session.setProfile(core::Mode::Palpation, *core::sensors::builtInProfile(core::Mode::Palpation)));
-    ASSERT_NE(session.palpation(), previous);  // rebuilt
-    ASSERT_TRUE(session.palpation()->currentZero());
-    EXPECT_EQ(session.palpation()->currentZero()->firstIndex, zero->firstIndex);
-    EXPECT_FALSE(session.palpation()->state().taring);
+    ASSERT_NE(liveUnit<PalpationUnit>(session).palpation(), previous);  // rebuilt
+    ASSERT_TRUE(liveUnit<PalpationUnit>(session).palpation()->currentZero());
+    EXPECT_EQ(liveUnit<PalpationUnit>(session).palpation()->currentZero()->firstIndex, zero->firstIndex);
+    EXPECT_FALSE(liveUnit<PalpationUnit>(session).palpation()->state().taring);
 
     // The next presses read the specimen, not the load it was pressed with.
-    const std::size_t before = session.presses().size();
-    ASSERT_TRUE(pollUntil(session, [&] { return session.presses().size() >= before + 3; }));
+    const std::size_t before = liveUnit<PalpationUnit>(session).presses().size();
+    ASSERT_TRUE(pollUntil(session, [&] { return liveUnit<PalpationUnit>(session).presses().size() >= before + 3; }));
     const double truth = devices::simulator::PalpationParameters{}.objectStiffness_n_per_m;
-    for (std::size_t i = before + 1; i < session.presses().size(); ++i) {
-        const auto& press = session.presses()[i].press;
+    for (std::size_t i = before + 1; i < liveUnit<PalpationUnit>(session).presses().size(); ++i) {
+        const auto& press = liveUnit<PalpationUnit>(session).presses()[i].press;
         EXPECT_EQ(press.stiffness.range, core::sensors::ComplianceRange::InRange) << i;
         EXPECT_NEAR(press.stiffness.objectStiffness_n_per_m, truth, 0.05 * truth) << i;
     }
@@ -223,10 +231,10 @@ TEST_F(LiveListsTest, ADeviceThatDeclaresNothingRecordsInGeneralModeAndGivenRole
     options.roles = core::parseRoleAssignment("a=cantilever-a,b=cantilever-b");
     LiveSession scan(std::make_unique<RelabelledSource>("panel-scan", std::vector<std::string>{"a", "b"}), options);
     EXPECT_EQ(scan.mode(), core::Mode::PanelScan);
-    ASSERT_TRUE(scan.detection());
+    ASSERT_TRUE(scan.unitAs<PanelScanUnit>());
     ASSERT_FALSE(scan.startRecording({}));
     scan.start();
-    ASSERT_TRUE(pollUntil(scan, [&] { return scan.panelDefects().size() >= 2; }));
+    ASSERT_TRUE(pollUntil(scan, [&] { return liveUnit<PanelScanUnit>(scan).defects().size() >= 2; }));
     const auto summary = scan.stopRecording();
     ASSERT_TRUE(summary);
     EXPECT_EQ(summary->verdict, core::Verdict::DefectsFound);
@@ -254,7 +262,7 @@ TEST_F(LiveListsTest, AProfilesRolesMakeABoardAPalpationProbe)
     // Given to a running session: the channels are built again on its roles.
     ASSERT_FALSE(plain.setProfile(core::Mode::Palpation, probe));
     EXPECT_FALSE(plain.refusalOf(core::Mode::Palpation));
-    ASSERT_TRUE(plain.palpation());
+    ASSERT_TRUE(plain.unitAs<PalpationUnit>());
     EXPECT_EQ(plain.channels()[2].role, core::ChannelRole::Displacement);
 
     auto options = optionsFor(file("b.tactiscope"));
@@ -263,9 +271,10 @@ TEST_F(LiveListsTest, AProfilesRolesMakeABoardAPalpationProbe)
                         options);
     EXPECT_EQ(session.mode(), core::Mode::Palpation);  // ch9 is not on this board: left out
     session.start();
-    ASSERT_TRUE(pollUntil(session, [&] { return session.presses().size() >= 2; }));
+    ASSERT_TRUE(pollUntil(session, [&] { return liveUnit<PalpationUnit>(session).presses().size() >= 2; }));
     const double truth = devices::simulator::PalpationParameters{}.objectStiffness_n_per_m;
-    EXPECT_NEAR(session.presses().back().press.stiffness.objectStiffness_n_per_m, truth, 0.05 * truth);
+    EXPECT_NEAR(liveUnit<PalpationUnit>(session).presses().back().press.stiffness.objectStiffness_n_per_m, truth,
+                0.05 * truth);
     // Roles by hand win over the profile's: the beams swapped, no palpation.
     EXPECT_FALSE(session.setRoles(core::parseRoleAssignment("ch1=soft-beam,ch2=stiff-beam")));
     EXPECT_EQ(session.channels()[0].role, core::ChannelRole::SoftBeam);

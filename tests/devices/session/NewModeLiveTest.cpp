@@ -4,11 +4,14 @@
 // (registerLiveUnit). Nothing else is edited, and the live session serves
 // it: built on a device whose channels play its roles, chosen by setMode,
 // fed the stream on the acquisition thread, asked for its zero, and asked
-// each poll for what completed.
+// each poll for what completed; the list it keeps is reached through its
+// unit (LiveSession::unitAs), started again at a record press, with no
+// door of its own in LiveSession.h (issue 52).
 #include "core/ModeCapability.h"
 #include "core/SampleBlock.h"
 #include "core/modes/ModeDefinition.h"
 #include "devices/session/LiveSession.h"
+#include "devices/session/modes/PanelScanUnit.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
 
@@ -25,6 +28,7 @@
 using namespace tactiscope;
 using devices::session::LiveModeUnit;
 using devices::session::LiveSession;
+using tactiscope::devices::session::PanelScanUnit;
 
 namespace {
 
@@ -66,11 +70,22 @@ public:
     }
     std::shared_ptr<core::BlockSink> sink() const override { return m_sink; }
     std::optional<std::string> tare() override { return "the peak starts again only with a new connection"; }
-    void take(const devices::session::LiveTake&) override { ++takes; }
+    // A list of its own: the peak at each poll, started again with the
+    // session's lists (a record press). Reached through unitAs<PeakUnit>().
+    void take(const devices::session::LiveTake&) override
+    {
+        ++takes;
+        m_peaks.push_back(m_sink->peak());
+    }
+    void clearLists() override { m_peaks.clear(); }
     std::string storedText(const devices::session::RecordingSummary&) const override { return "nothing stored"; }
+    const std::vector<double>& peaks() const { return m_peaks; }
 
     std::shared_ptr<PeakSink> m_sink;
     int takes = 0;
+
+private:
+    std::vector<double> m_peaks;
 };
 
 class Registered {
@@ -123,5 +138,35 @@ TEST_F(NewModeLiveTest, AModeRegisteredAloneRunsInTheLiveSession)
     EXPECT_GT(unit->m_sink->peak(), 1e-6);  // the dent's strain, well above the noise
     EXPECT_GT(unit->takes, 0);
     // The panel scan runs beside it, as every mode the channels feed.
-    EXPECT_NE(session.detection(), nullptr);
+    EXPECT_NE(session.unitAs<PanelScanUnit>(), nullptr);
+}
+
+TEST_F(NewModeLiveTest, AModesOwnListIsReachedThroughItsUnitAndStartsAgainWithARecording)
+{
+    const Registered registered;
+    devices::simulator::SimulatorOptions pace;
+    pace.speed = 10.0;
+    devices::session::LiveSessionOptions options;
+    options.storePath = file("s.tactiscope");
+    LiveSession session(
+        std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario("panel-scan"), pace),
+        options);
+    ASSERT_FALSE(session.setMode(kPeakMode));
+    session.start();
+    const auto* unit = session.unitAs<PeakUnit>();
+    ASSERT_NE(unit, nullptr);
+    EXPECT_EQ(unit, session.unit(kPeakMode));
+    for (int i = 0; i < 10 || unit->peaks().empty(); ++i) {
+        session.poll();
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    ASSERT_FALSE(unit->peaks().empty());
+    // A record press (in a mode the store knows: a test's mode has no word
+    // in the store's CHECK list) starts every unit's lists again.
+    ASSERT_FALSE(session.setMode(core::Mode::PanelScan));
+    ASSERT_FALSE(session.startRecording({}));
+    EXPECT_TRUE(unit->peaks().empty());
+    session.poll();
+    EXPECT_FALSE(unit->peaks().empty());
+    EXPECT_TRUE(session.stopRecording());
 }
