@@ -111,7 +111,7 @@ void LiveStation::connectSource(std::unique_ptr<devices::BlockSource> source,
     auto& live = m_pipeline.device(0);
     // The source's own mode wins; a source that declares none runs in the
     // mode the window wants when its channels can feed it.
-    if (!live.source().declaredMode() && !live.refusalOf(m_wantedMode)) live.setMode(m_wantedMode);
+    if (!live.source().declaredMode() && m_wantedMode && !live.refusalOf(*m_wantedMode)) live.setMode(*m_wantedMode);
     m_pipeline.start();
     m_poll.start();
     emit connected();
@@ -184,7 +184,7 @@ std::optional<QString> LiveStation::setRoles(const core::RoleAssignment& roles)
     if (!device()) return std::nullopt;
     if (auto refusal = refusalText(device()->setRoles(roles))) return refusal;
     rememberRoles(device()->source().identity(), roles);
-    if (!device()->refusalOf(m_wantedMode)) device()->setMode(m_wantedMode);
+    if (m_wantedMode && !device()->refusalOf(*m_wantedMode)) device()->setMode(*m_wantedMode);
     return std::nullopt;
 }
 
@@ -215,7 +215,7 @@ std::optional<QString> LiveStation::startRecording(const core::storage::SessionM
 
 void LiveStation::stopRecording()
 {
-    if (auto end = m_pipeline.stopRecording()) ended(*end);
+    if (auto end = m_pipeline.stopRecording()) emit recordingEnded(*end);
     followRecording();
 }
 
@@ -230,7 +230,7 @@ std::optional<QString> LiveStation::armTrigger(const core::trigger::TriggerSetti
 
 void LiveStation::disarmTrigger()
 {
-    if (auto end = m_pipeline.disarmTrigger()) ended(*end);
+    if (auto end = m_pipeline.disarmTrigger()) emit recordingEnded(*end);
     followRecording();
 }
 
@@ -238,13 +238,8 @@ void LiveStation::poll()
 {
     const auto news = m_pipeline.poll();
     emit polled(news);
-    for (const auto& end : news.ended) ended(end);
+    for (const auto& end : news.ended) emit recordingEnded(end);
     followRecording();
-}
-
-void LiveStation::ended(const devices::session::RecordingEnd& end)
-{
-    emit recordingEnded(end);
 }
 
 // The record button and the locks follow the pipeline, whoever changed it.

@@ -114,12 +114,11 @@ signals:
 private:
     devices::session::LiveSessionOptions sessionOptions(const devices::BlockSource& source);
     void poll();
-    void ended(const devices::session::RecordingEnd& end);
     void followRecording();
 
     devices::session::LivePipeline m_pipeline;
     std::shared_ptr<devices::simulator::LoadRig> m_loadRig;
-    core::Mode m_wantedMode = core::Mode::PanelScan;
+    std::optional<core::Mode> m_wantedMode;  // none until the window says
     QTimer m_poll;
     bool m_wasRecording = false;
     bool m_wasArmed = false;

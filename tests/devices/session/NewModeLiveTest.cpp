@@ -32,7 +32,15 @@ using tactiscope::devices::session::PanelScanUnit;
 
 namespace {
 
-using NewModeLiveTest = tactiscope::testing::TempDirectoryTest;
+class NewModeLiveTest : public tactiscope::testing::TempDirectoryTest {
+protected:
+    devices::session::LiveSessionOptions storeOptions()
+    {
+        devices::session::LiveSessionOptions options;
+        options.storePath = file("s.tactiscope");
+        return options;
+    }
+};
 
 constexpr auto kPeakMode = static_cast<core::Mode>(41);
 constexpr std::array kRoles{core::ChannelRole::CantileverA};
@@ -110,18 +118,20 @@ public:
     Registered& operator=(const Registered&) = delete;
 };
 
+// The panel-scan simulator, ten times real time: cantilever A for the peak.
+std::unique_ptr<devices::BlockSource> spedUpPanelProbe()
+{
+    devices::simulator::SimulatorOptions pace;
+    pace.speed = 10.0;
+    return std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario("panel-scan"), pace);
+}
+
 }  // namespace
 
 TEST_F(NewModeLiveTest, AModeRegisteredAloneRunsInTheLiveSession)
 {
     const Registered registered;
-    devices::simulator::SimulatorOptions pace;
-    pace.speed = 10.0;
-    devices::session::LiveSessionOptions options;
-    options.storePath = file("s.tactiscope");
-    LiveSession session(
-        std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario("panel-scan"), pace),
-        options);
+    LiveSession session(spedUpPanelProbe(), storeOptions());
     EXPECT_EQ(session.mode(), core::Mode::PanelScan);  // the device's own
     ASSERT_NE(session.unit(kPeakMode), nullptr);       // built: cantilever A is there
     ASSERT_FALSE(session.setMode(kPeakMode));
@@ -144,13 +154,7 @@ TEST_F(NewModeLiveTest, AModeRegisteredAloneRunsInTheLiveSession)
 TEST_F(NewModeLiveTest, AModesOwnListIsReachedThroughItsUnitAndStartsAgainWithARecording)
 {
     const Registered registered;
-    devices::simulator::SimulatorOptions pace;
-    pace.speed = 10.0;
-    devices::session::LiveSessionOptions options;
-    options.storePath = file("s.tactiscope");
-    LiveSession session(
-        std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario("panel-scan"), pace),
-        options);
+    LiveSession session(spedUpPanelProbe(), storeOptions());
     ASSERT_FALSE(session.setMode(kPeakMode));
     session.start();
     const auto* unit = session.unitAs<PeakUnit>();
