@@ -43,24 +43,30 @@ struct TwoRecordings {
     double overlapEnd_s = 0.0;  // in the CLI's session time
 };
 
-// Records `scenario` from both paths for about `seconds` and aligns them.
-TwoRecordings recordBoth(const QTemporaryDir& dir, const std::string& scenario, double seconds)
+// A probe emulating `scenario` at the shared rate and seed, streaming behind
+// a pty linked at `name` in `dir`.
+std::unique_ptr<ProbeEmulator> startedProbe(const QTemporaryDir& dir, const QString& name, const std::string& scenario)
 {
     devices::emulator::EmulatorOptions options;
     options.scenario = scenario;
     options.rate_hz = kRate_hz;
     options.seed = kSeed;
-    options.linkPath = dir.filePath("gui-probe").toStdString();
-    ProbeEmulator guiProbe(options);
-    options.linkPath = dir.filePath("cli-probe").toStdString();
-    ProbeEmulator cliProbe(options);
-    guiProbe.start();
-    cliProbe.start();
+    options.linkPath = dir.filePath(name).toStdString();
+    auto probe = std::make_unique<ProbeEmulator>(options);
+    probe->start();
+    return probe;
+}
+
+// Records `scenario` from both paths for about `seconds` and aligns them.
+TwoRecordings recordBoth(const QTemporaryDir& dir, const std::string& scenario, double seconds)
+{
+    const auto guiProbe = startedProbe(dir, QStringLiteral("gui-probe"), scenario);
+    const auto cliProbe = startedProbe(dir, QStringLiteral("cli-probe"), scenario);
     const QString guiDb = dir.filePath("gui.tactiscope"), cliDb = dir.filePath("cli.tactiscope");
 
     QProcess cli;
-    cli.start(QStringLiteral(TACTISCOPE_CLI), {"record", "--port", QString::fromStdString(options.linkPath),
-                                               "--seconds", QString::number(seconds + 2.0), "--db", cliDb});
+    cli.start(QStringLiteral(TACTISCOPE_CLI), {"record", "--port", dir.filePath("cli-probe"), "--seconds",
+                                               QString::number(seconds + 2.0), "--db", cliDb});
     EXPECT_TRUE(cli.waitForStarted());
     {
         ui::MainWindow window;
@@ -170,22 +176,14 @@ struct TriggeredPair {
 
 TriggeredPair recordTriggered(const QTemporaryDir& dir)
 {
-    devices::emulator::EmulatorOptions options;
-    options.scenario = "panel-line";
-    options.rate_hz = kRate_hz;
-    options.seed = kSeed;
-    options.linkPath = dir.filePath("gui-line").toStdString();
-    ProbeEmulator guiProbe(options);
-    options.linkPath = dir.filePath("cli-line").toStdString();
-    ProbeEmulator cliProbe(options);
-    guiProbe.start();
-    cliProbe.start();
+    const auto guiProbe = startedProbe(dir, QStringLiteral("gui-line"), "panel-line");
+    const auto cliProbe = startedProbe(dir, QStringLiteral("cli-line"), "panel-line");
     const QString guiDb = dir.filePath("gui-line.tactiscope"), cliDb = dir.filePath("cli-line.tactiscope");
     const QStringList trigger{"--trigger", "a>20e-6", "--pre",   "0.5",
                               "--post",    "1",       "--limit", "a>warning:20e-6,critical:28e-6"};
     QProcess cli;
-    cli.start(QStringLiteral(TACTISCOPE_CLI), QStringList{"record", "--port", QString::fromStdString(options.linkPath),
-                                                          "--seconds", "30", "--db", cliDb, "--sessions", "3"} +
+    cli.start(QStringLiteral(TACTISCOPE_CLI), QStringList{"record", "--port", dir.filePath("cli-line"), "--seconds",
+                                                          "30", "--db", cliDb, "--sessions", "3"} +
                                                   trigger);
     EXPECT_TRUE(cli.waitForStarted());
     {
@@ -255,17 +253,10 @@ TEST(GuiCliEquivalence, ATriggeredSessionWithLimitsIsTheSameFromBothPaths)
 TEST(GuiCliEquivalence, ASessionOfTwoDevicesIsTheSameFromBothPaths)
 {
     QTemporaryDir dir;
-    devices::emulator::EmulatorOptions options;
-    options.rate_hz = kRate_hz;
-    options.seed = kSeed;
     std::vector<std::unique_ptr<ProbeEmulator>> probes;
     for (const char* side : {"gui", "cli"})
-        for (const char* scenario : {"panel-scan", "load-cell"}) {
-            options.scenario = scenario;
-            options.linkPath = dir.filePath(QStringLiteral("%1-%2").arg(side, scenario)).toStdString();
-            probes.push_back(std::make_unique<ProbeEmulator>(options));
-            probes.back()->start();
-        }
+        for (const char* scenario : {"panel-scan", "load-cell"})
+            probes.push_back(startedProbe(dir, QStringLiteral("%1-%2").arg(side, scenario), scenario));
     const QString guiDb = dir.filePath("gui2.tactiscope"), cliDb = dir.filePath("cli2.tactiscope");
     QProcess cli;
     cli.start(QStringLiteral(TACTISCOPE_CLI), {"record", "--port", dir.filePath("cli-panel-scan"), "--port",
