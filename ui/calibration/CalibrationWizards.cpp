@@ -14,6 +14,32 @@
 #include <QMenu>
 
 namespace tactiscope::ui {
+namespace {
+
+// The station's devices beside `calibrated`, each read while it stays in
+// the session (a wizard may outlive its place there).
+std::vector<ReferenceDevice> otherDevices(const LiveStation& station, const devices::session::LiveSession* calibrated)
+{
+    std::vector<ReferenceDevice> result;
+    const auto& pipeline = station.pipeline();
+    for (std::size_t i = 0; i < pipeline.size(); ++i) {
+        const auto& live = pipeline.device(i);
+        if (&live == calibrated) continue;
+        auto stillThere = [station = &station, device = &live] {
+            const auto& now = station->pipeline();
+            for (std::size_t j = 0; j < now.size(); ++j)
+                if (&now.device(j) == device) return true;
+            return false;
+        };
+        result.push_back(
+            {QString::fromStdString(pipeline.name(i)), QString::fromStdString(live.source().name()), live.channels(),
+             live.buffer(), live.source().nominalSampleRate_hz(),
+             [stillThere, device = &live] { return stillThere() ? device->source().hostClock() : std::nullopt; }});
+    }
+    return result;
+}
+
+}  // namespace
 
 QWizard* openCalibrationWizard(core::Mode mode, CalibrationContext context, QWidget* parent,
                                std::function<void(const QString& sensor)> stored)
@@ -39,7 +65,8 @@ void calibrateLive(LiveStation& station, core::Mode mode, LiveCalibration setup,
         live->buffer(), live->channels(), live->source().nominalSampleRate_hz(), station.loadRig(), setup.store,
         setup.operatorName, setup.profileDirectory,
         // The device's clock while it is the station's (a wizard may outlive it).
-        [station = &station, live] { return station->device() == live ? live->source().hostClock() : std::nullopt; }};
+        [station = &station, live] { return station->device() == live ? live->source().hostClock() : std::nullopt; },
+        [station = &station, live] { return otherDevices(*station, live); }};
     openCalibrationWizard(mode, std::move(context), window, [&station, mode, setup, window](const QString& sensor) {
         auto* now = station.device();
         if (!now) return;

@@ -71,7 +71,7 @@ QString turnsText(std::size_t turns)
     return turns == 1 ? QObject::tr("1 turn") : QObject::tr("%1 turns").arg(turns);
 }
 
-constexpr int kOnLinkRole = Qt::UserRole + 1;  // the reference box's: on the other device
+constexpr int kDeviceRole = Qt::UserRole + 1;  // the reference box's: its device's place in m_references
 
 // A sweep is over once the reference has been back at rest this long: the
 // beam's final baseline needs a stable window (2 s) after its creep.
@@ -119,8 +119,10 @@ CheckedPage* CapacitiveWizard::createMethodPage()
 {
     auto* page = new CheckedPage([this] { return !sweeping() || m_reference->count() > 0; });
     page->setTitle(tr("Loads"));
-    page->setSubTitle(tr("Weights placed and removed by hand, or one continuous sweep read by a reference force: a "
-                         "load cell in series with the beam, on this device or on another one connected here."));
+    page->setSubTitle(
+        tr("Weights placed and removed by hand, or one continuous sweep read by a reference force: a "
+           "load cell in series with the beam, on this device, on another in the session (Device ▸ Add to the "
+           "session) or on one connected here."));
     auto* byWeights = new QRadioButton(tr("&Weights, placed and removed one at a time"), page);
     byWeights->setObjectName(QStringLiteral("byWeightsButton"));
     byWeights->setChecked(true);
@@ -162,6 +164,7 @@ CheckedPage* CapacitiveWizard::createMethodPage()
     sweepBox->setEnabled(false);
     connect(m_bySweep, &QRadioButton::toggled, this, [this, sweepBox](bool on) {
         sweepBox->setEnabled(on);
+        if (on) listReferences();  // devices may have joined the session since
         recheck(SetupPage);
     });
     connect(connectButton, &QPushButton::clicked, this, &CapacitiveWizard::connectReference);
@@ -169,7 +172,7 @@ CheckedPage* CapacitiveWizard::createMethodPage()
     connect(m_link, &ReferenceLink::opened, this, [this] {
         listReferences();
         m_referenceStatus->setText(
-            m_reference->count() > 0
+            m_reference->findData(static_cast<qulonglong>(m_references.size() - 1), kDeviceRole) >= 0
                 ? tr("Connected to %1.").arg(m_link->deviceName())
                 : tr("%1 sends no force in N, mN or µN: it cannot be the reference.").arg(m_link->deviceName()));
     });
@@ -188,28 +191,60 @@ bool CapacitiveWizard::sweeping() const
 
 void CapacitiveWizard::listReferences()
 {
-    m_reference->clear();
-    for (std::size_t c = 0; c < context().channels.size(); ++c)
-        if (referenceFits(context().channels[c])) {
-            m_reference->addItem(tr("%1 (this device)").arg(QString::fromStdString(context().channels[c].name)),
-                                 static_cast<qulonglong>(c));
-            m_reference->setItemData(m_reference->count() - 1, false, kOnLinkRole);
+    // This device, the session's others, the one connected for the wizard.
+    m_references = {{tr("this device"), {}, context().channels, context().buffer, context().sampleRate_hz, {}}};
+    if (context().sessionDevices)
+        for (auto& other : context().sessionDevices()) {
+            other.name = tr("%1, in the session").arg(other.name);
+            m_references.push_back(std::move(other));
         }
-    for (std::size_t c = 0; c < m_link->channels().size(); ++c)
-        if (referenceFits(m_link->channels()[c])) {
-            m_reference->addItem(
-                tr("%1 (%2)").arg(QString::fromStdString(m_link->channels()[c].name), m_link->deviceName()),
-                static_cast<qulonglong>(c));
-            m_reference->setItemData(m_reference->count() - 1, true, kOnLinkRole);
-            m_reference->setCurrentIndex(m_reference->count() - 1);  // the device just connected for it
+    if (m_link->isOpen()) m_references.push_back(m_link->reference());
+    m_reference->clear();
+    for (std::size_t d = 0; d < m_references.size(); ++d)
+        for (std::size_t c = 0; c < m_references[d].channels.size(); ++c)
+            if (referenceFits(m_references[d].channels[c])) {
+                m_reference->addItem(
+                    tr("%1 (%2)").arg(QString::fromStdString(m_references[d].channels[c].name), m_references[d].name),
+                    static_cast<qulonglong>(c));
+                m_reference->setItemData(m_reference->count() - 1, static_cast<qulonglong>(d), kDeviceRole);
+            }
+    // The device connected for the sweep, else another device's force (a
+    // reference on the calibrated device itself is the rare case).
+    for (std::size_t d = m_references.size(); d-- > 1;)
+        if (const int item = m_reference->findData(static_cast<qulonglong>(d), kDeviceRole); item >= 0) {
+            m_reference->setCurrentIndex(item);
+            break;
         }
     if (page(SetupPage)) recheck(SetupPage);  // (not while the page is being made)
+}
+
+std::size_t CapacitiveWizard::currentReferenceDevice() const
+{
+    return static_cast<std::size_t>(m_reference->currentData(kDeviceRole).toULongLong());
 }
 
 void CapacitiveWizard::connectReference()
 {
     const QString path = m_referencePath->text().trimmed();
     if (path.isEmpty()) return;
+    // A device of the session is read from there: its port is open
+    // already, and opening it again would find it busy. (A port's source
+    // is described as "PATH at BAUD baud", after its model when it said it.)
+    listReferences();
+    const QString described = path + QStringLiteral(" at ");
+    for (std::size_t d = 1; d < m_references.size(); ++d) {
+        const QString& source = m_references[d].source;
+        if (!source.startsWith(described) && !source.contains(QLatin1Char('(') + described)) continue;
+        const int item = m_reference->findData(static_cast<qulonglong>(d), kDeviceRole);
+        if (item < 0) {
+            m_referenceStatus->setText(
+                tr("%1 sends no force in N, mN or µN: it cannot be the reference.").arg(m_references[d].name));
+            return;
+        }
+        m_reference->setCurrentIndex(item);
+        m_referenceStatus->setText(tr("%1 is in the session already: the reference is read from it.").arg(path));
+        return;
+    }
     m_referenceStatus->setText(tr("Connecting to %1…").arg(path));
     m_link->open(path);
 }
@@ -243,18 +278,18 @@ void CapacitiveWizard::showMethod(int page)
 
 void CapacitiveWizard::startSweep()
 {
-    const bool onLink = m_reference->currentData(kOnLinkRole).toBool();
     const auto channel = static_cast<std::size_t>(m_reference->currentData().toULongLong());
-    const auto& channels = onLink ? m_link->channels() : context().channels;
-    const auto buffer = onLink ? m_link->buffer() : context().buffer;
-    if (!buffer || channel >= channels.size()) {
+    const std::size_t device = currentReferenceDevice();
+    if (m_reference->currentIndex() < 0 || device >= m_references.size() || !m_references[device].buffer ||
+        channel >= m_references[device].channels.size()) {
         panel()->setStatus(tr("The reference device is gone: connect it again on the Loads page."));
         return;
     }
     const std::size_t beam = chosenChannel();
     m_capture = std::make_unique<SweepCapture>(
         SweepChannel{context().buffer, beam, core::faradsPer(context().channels[beam].unit).value_or(1.0)},
-        SweepChannel{buffer, channel, *core::newtonsPer(channels[channel].unit)});
+        SweepChannel{m_references[device].buffer, channel,
+                     *core::newtonsPer(m_references[device].channels[channel].unit)});
     m_sweep.reset();
     setLoads({});
     m_startSweep->setEnabled(false);
@@ -283,11 +318,12 @@ void CapacitiveWizard::finishSweep()
     m_startSweep->setEnabled(true);
     if (!m_capture) return;
     m_capture->poll();
-    const bool onLink = m_reference->currentData(kOnLinkRole).toBool();
+    const ReferenceDevice& reference = m_references.at(currentReferenceDevice());
     try {
-        const double rate_hz = onLink ? m_link->sampleRate_hz() : context().sampleRate_hz;
-        const auto paired = m_capture->pair(context().hostClock ? context().hostClock() : std::nullopt,
-                                            onLink ? m_link->hostClock() : std::nullopt, rate_hz);
+        // This device's own reference shares its clock: none to pair by.
+        const auto paired =
+            m_capture->pair(context().hostClock ? context().hostClock() : std::nullopt,
+                            reference.hostClock ? reference.hostClock() : std::nullopt, reference.sampleRate_hz);
         const auto steps =
             core::calibration::stepsFromSweep(paired.sweep.recording, {.stability = stabilityDefaults()});
         std::vector<Load> points;

@@ -16,6 +16,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 class QComboBox;
 class QLabel;
@@ -71,6 +72,7 @@ private:
     CheckedPage* createMethodPage();
     bool sweeping() const;
     void listReferences();
+    std::size_t currentReferenceDevice() const;  // its place in m_references
     void connectReference();
     void showMethod(int page);
     void startSweep();
@@ -87,6 +89,9 @@ private:
     QPushButton* m_finishSweep = nullptr;
     QTimer* m_sweepTimer = nullptr;
     ReferenceLink* m_link = nullptr;
+    // The devices a reference can be read from, as the reference box lists
+    // them: this one, the session's others, the one connected for the sweep.
+    std::vector<ReferenceDevice> m_references;
     std::unique_ptr<SweepCapture> m_capture;
     std::optional<Sweep> m_sweep;
 

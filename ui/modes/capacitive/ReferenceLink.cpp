@@ -56,6 +56,11 @@ std::optional<core::timing::ClockMapping> ReferenceLink::hostClock() const
     return m_acquisition ? m_acquisition->source().hostClock() : std::nullopt;
 }
 
+ReferenceDevice ReferenceLink::reference() const
+{
+    return {m_name, {}, m_channels, m_buffer, m_rate_hz, [this] { return hostClock(); }};
+}
+
 void ReferenceLink::start(std::unique_ptr<devices::BlockSource> source)
 {
     m_channels = source->channels();

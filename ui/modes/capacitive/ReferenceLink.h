@@ -3,12 +3,14 @@
 // (a serial port, an emulator's link) through a handshake off the GUI
 // thread (DeviceConnector), streamed by an acquisition of its own into a
 // live buffer, its clock mapped onto the host's as it streams. It lives
-// as long as the wizard; the window's device is not touched.
+// as long as the wizard; the window's device is not touched. A device
+// already in the session is never opened here: the wizard reads it there.
 #pragma once
 
 #include "core/ChannelDescriptor.h"
 #include "core/LiveBuffer.h"
 #include "core/timing/ClockAlignment.h"
+#include "ui/calibration/CalibrationContext.h"
 
 #include <QObject>
 #include <QString>
@@ -44,6 +46,8 @@ public:
     std::shared_ptr<const core::LiveBuffer> buffer() const { return m_buffer; }
     double sampleRate_hz() const { return m_rate_hz; }
     std::optional<core::timing::ClockMapping> hostClock() const;
+    // What the wizard reads a reference from; the link outlives no wizard.
+    ReferenceDevice reference() const;
 
 signals:
     void opened();

@@ -9,7 +9,9 @@
 // the weights' calibration of the same simulated beam (the paper's
 // procedure, computed here from the scenario's samples and loads) within
 // the two stated uncertainties (k = 2). A reference that cannot be
-// connected says why and lets no sweep start.
+// connected says why and lets no sweep start. A load cell already in the
+// main window's session (Add to the session) is offered as the reference
+// and read from there: typing its port does not open it a second time.
 #include "ui/modes/capacitive/CapacitiveWizard.h"
 
 #include "core/calibration/CapacitiveSteps.h"
@@ -23,12 +25,18 @@
 #include "support/Screenshot.h"
 #include "support/SimulatedRig.h"
 #include "support/TempDirectory.h"
+#include "support/WaitFor.h"
+#include "ui/MainWindow.h"
+#include "ui/live/LiveStation.h"
 
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenuBar>
 #include <QRadioButton>
+#include <QRegularExpression>
 #include <QTableWidget>
+#include <QTest>
 
 #include <gtest/gtest.h>
 
@@ -194,4 +202,63 @@ TEST_F(CapacitiveSweepWizardTest, AReferenceThatCannotBeConnectedSaysWhyAndNoSwe
         << status->text().toStdString();
     EXPECT_FALSE(pageComplete(wizard));
     EXPECT_EQ(child<QComboBox>(wizard, "referenceBox")->count(), 0);
+}
+
+TEST_F(CapacitiveSweepWizardTest, ALoadCellAlreadyInTheSessionIsTheReferenceAndItsPortIsNotOpenedAgain)
+{
+    devices::emulator::EmulatorOptions cell;
+    cell.linkPath = file("cell");
+    cell.scenario = "load-cell";
+    cell.seed = 4;
+    m_cell = std::make_unique<devices::emulator::ProbeEmulator>(cell);
+    m_cell->start();
+    ui::MainWindow window;
+    window.setStorePath(QString::fromStdString(file("sessions.tactiscope")));
+    QTest::keyClicks(child<QLineEdit>(window, "operatorEdit"), QStringLiteral("Grace"));
+    window.station().connectSimulator("capacitive-calibration");
+    ASSERT_TRUE(window.station().isConnected());
+    window.station().addSource(
+        std::make_unique<devices::ReconnectingSource>(tactiscope::testing::serialOpener(cell.linkPath)));
+    ASSERT_EQ(window.station().pipeline().size(), 2u);
+
+    QAction* calibrate = nullptr;
+    for (QAction* menu : window.menuBar()->actions())
+        if (menu->menu())
+            for (QAction* action : menu->menu()->actions())
+                if (action->text().startsWith(QStringLiteral("Calibrate the &capacitive beam"))) calibrate = action;
+    ASSERT_NE(calibrate, nullptr);
+    calibrate->trigger();
+    auto* wizard = window.findChild<ui::CapacitiveWizard*>();
+    ASSERT_NE(wizard, nullptr);
+    ASSERT_TRUE(tactiscope::testing::showActive(*wizard));
+    pressMnemonic(*wizard, Qt::Key_N);
+    ASSERT_EQ(wizard->currentId(), ui::CapacitiveWizard::SetupPage);
+    child<QRadioButton>(*wizard, "bySweepButton")->click();
+    auto* reference = child<QComboBox>(*wizard, "referenceBox");
+    EXPECT_TRUE(reference->currentText().startsWith("force (")) << reference->currentText().toStdString();
+    EXPECT_TRUE(reference->currentText().contains("in the session")) << reference->currentText().toStdString();
+    EXPECT_TRUE(pageComplete(*wizard));
+
+    // Its port typed, as the operator did: read from the session, never busy.
+    child<QLineEdit>(*wizard, "referencePath")->setText(QString::fromStdString(cell.linkPath));
+    child<QPushButton>(*wizard, "connectReferenceButton")->click();
+    tactiscope::testing::runEventLoopFor(1000);
+    const QString said = child<QLabel>(*wizard, "referenceStatus")->text();
+    EXPECT_TRUE(said.contains("in the session already")) << said.toStdString();
+    EXPECT_FALSE(said.contains("busy")) << said.toStdString();
+    EXPECT_TRUE(reference->currentText().contains("in the session")) << reference->currentText().toStdString();
+
+    // The sweep reads the shared device: its force streams, at rest.
+    pressMnemonic(*wizard, Qt::Key_N);
+    ASSERT_EQ(wizard->currentId(), ui::CapacitiveWizard::ZeroPage);
+    ASSERT_TRUE(waitFor([&] { return pageComplete(*wizard); }, 15000)) << "no stable zero";
+    pressMnemonic(*wizard, Qt::Key_N);
+    ASSERT_EQ(wizard->currentId(), ui::CapacitiveWizard::LoadsPage);
+    auto* start = child<QPushButton>(*wizard, "startSweepButton");
+    ASSERT_TRUE(start->isVisible() && start->isEnabled());
+    start->click();
+    auto* status = child<QLabel>(*wizard, "captureStatus");
+    const QRegularExpression atRest(QStringLiteral("reference -?0\\.000\\d mN"));
+    EXPECT_TRUE(waitFor([&] { return atRest.match(status->text()).hasMatch(); }, 5000)) << status->text().toStdString();
+    wizard->reject();
 }
