@@ -1,10 +1,13 @@
-// The shunt-check subcommand: options, the device, a ShuntCheckRun driven
-// to its end, the line, and the record in the calibration history.
+// The shunt-check subcommand: options, the device in the live pipeline (as
+// record runs it), a ShuntCheckRun driven to its end, the line, and the
+// record in the calibration history.
 #include "ShuntCheckCommand.h"
 
 #include "CliSupport.h"
+#include "RecordOutput.h"
 #include "core/storage/SessionStore.h"
 #include "devices/ReconnectingSource.h"
+#include "devices/session/LivePipeline.h"
 #include "devices/session/ShuntCheckRun.h"
 
 #include <QLocale>
@@ -104,18 +107,24 @@ int runShuntCheck(const QStringList& arguments)
     settings.channel = static_cast<std::size_t>(found - channels.begin());
     const std::string sensor = source->identity().serial + " " + channelName;
 
-    devices::session::LiveSessionOptions options;
-    options.storePath = parser.value(QStringLiteral("db")).toStdString();
-    devices::session::LiveSession session(std::move(source), options);
-    session.start();
-    devices::session::ShuntCheckRun run(session, settings);
+    // The one live pipeline, as record runs it: what the link notices is
+    // told as it is while recording.
+    const std::string storePath = parser.value(QStringLiteral("db")).toStdString();
+    devices::session::LivePipeline pipeline(storePath);
+    if (const auto refusal = pipeline.add(std::move(source), {})) {
+        printError(QString::fromStdString(*refusal));
+        return kExitFailure;
+    }
+    pipeline.start();
+    RecordOutput output(storePath, pipeline, std::nullopt, false);
+    devices::session::ShuntCheckRun run(pipeline.device(0), settings);
     installStopSignals();
     while (!run.advance()) {
         if (stopRequested()) {
             printError(QStringLiteral("stopped before the check was done; the shunt is switched off"));
             return kExitFailure;
         }
-        session.poll();
+        output.tell(pipeline.poll());
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
     const auto& result = *run.result();
@@ -135,7 +144,7 @@ int runShuntCheck(const QStringList& arguments)
                         << Qt::endl;
     if (parser.isSet(QStringLiteral("db"))) {
         try {
-            core::storage::SessionStore store(options.storePath);
+            core::storage::SessionStore store(storePath);
             store.addCalibration(run.record(sensor, parser.value(QStringLiteral("operator")).toStdString()));
         } catch (const core::storage::StorageError& e) {
             printError(QStringLiteral("the result was not kept: %1").arg(QString::fromStdString(e.what())));
