@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace tactiscope::devices::session {
 
@@ -49,6 +50,10 @@ struct RecordingSummary {
     std::string notJudged;
     std::size_t defects = 0;  // of this recording's panel: crossings
     std::size_t sites = 0;    // where they are: a defect crossed N times is one site
+    // What the verdict was decided on, a line each, for the one who judges
+    // it: a panel's sites, "Site 1: 37 mm ± 2 mm (6 crossings), 4 A then B,
+    // 2 B then A, 3.2–9.8 s".
+    std::vector<std::string> findings;
     // A probe that sends its own decisions: how far they agreed with the
     // workstation's over the recording (after the warm-up).
     std::optional<core::detector::ProbeAgreement> probeAgreement;

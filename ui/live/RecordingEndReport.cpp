@@ -67,10 +67,16 @@ VerdictDialog* tellRecordingEnd(const devices::session::RecordingEnd& end, const
     }
     if (!end.verdict || !well) return nullptr;
     // What the verdict was decided on: every part's defects and sites.
-    VerdictQuestion question{end.session, 0, 0, *end.verdict, context.operatorName};
+    VerdictQuestion question;
+    question.session = end.session;
+    question.automatic = *end.verdict;
+    question.operatorName = context.operatorName;
     for (const auto& part : end.parts) {
         question.crossings += static_cast<int>(part.what.defects);
         question.sites += static_cast<int>(part.what.sites);
+        // A part's lines say whose they are.
+        const QString whose = part.device.empty() ? QString() : QString::fromStdString(part.device) + ": ";
+        for (const auto& line : part.what.findings) question.findings << whose + QString::fromStdString(line);
     }
     return askVerdict(context.window, context.store, question, [context](const QString& message) {
         context.tell(message);

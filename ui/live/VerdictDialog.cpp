@@ -10,13 +10,16 @@
 #include <QDialogButtonBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace tactiscope::ui {
 
-VerdictDialog::VerdictDialog(const QString& summaryText, const QStringList& trail, core::Verdict verdict,
-                             QWidget* parent)
+VerdictDialog::VerdictDialog(const QString& summaryText, const QStringList& findings, const QStringList& trail,
+                             core::Verdict verdict, QWidget* parent)
     : QDialog(parent),
       m_note(new QLineEdit(this))
 {
@@ -30,6 +33,17 @@ VerdictDialog::VerdictDialog(const QString& summaryText, const QStringList& trai
     summary->setFont(bold);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(summary);
+    // The panel's own list: the live view behind may already show the next.
+    if (!findings.isEmpty()) {
+        auto* list = new QListWidget(this);
+        list->setObjectName(QStringLiteral("verdictFindings"));
+        list->addItems(findings);
+        list->setSelectionMode(QAbstractItemView::NoSelection);
+        list->setFocusPolicy(Qt::NoFocus);
+        const int rows = static_cast<int>(std::min<qsizetype>(findings.size(), 6));
+        list->setFixedHeight(rows * list->sizeHintForRow(0) + 2 * list->frameWidth());
+        layout->addWidget(list);
+    }
     if (!trail.isEmpty()) {
         auto* history = new QLabel(trail.join(QLatin1Char('\n')), this);
         history->setObjectName(QStringLiteral("verdictTrail"));
@@ -84,8 +98,10 @@ VerdictDialog* askVerdict(QWidget* parent, std::shared_ptr<core::storage::StoreW
                               : VerdictDialog::tr("%1 at %2 found")
                                     .arg(defectCountText(question.crossings), siteCountText(question.sites));
     auto* dialog =
-        new VerdictDialog(VerdictDialog::tr("%1: the verdict is \"%2\".").arg(found, wordText(question.automatic)), {},
-                          question.automatic, parent);
+        new VerdictDialog(VerdictDialog::tr("Session %1, %2: the verdict is \"%3\".")
+                              .arg(question.session)
+                              .arg(question.crossings == 0 ? found.toLower() : found, wordText(question.automatic)),
+                          question.findings, {}, question.automatic, parent);
     QObject::connect(
         dialog, &VerdictDialog::decided, parent,
         [parent, store, question, saved](core::Verdict chosen, const QString& note) {

@@ -29,9 +29,11 @@ class VerdictDialog : public QDialog {
     Q_OBJECT
 
 public:
-    // `summary` says what was found and the verdict; `trail` lists the
-    // decisions so far (core/report/VerdictTrail.h), shown small.
-    VerdictDialog(const QString& summary, const QStringList& trail, core::Verdict verdict, QWidget* parent = nullptr);
+    // `summary` says what was found and the verdict; `findings` lists what
+    // it was decided on (a panel's sites), `trail` the decisions so far
+    // (core/report/VerdictTrail.h), shown small.
+    VerdictDialog(const QString& summary, const QStringList& findings, const QStringList& trail, core::Verdict verdict,
+                  QWidget* parent = nullptr);
 
 signals:
     // The verdict chosen (the same one when kept) and the note, maybe empty.
@@ -48,6 +50,7 @@ struct VerdictQuestion {
     std::int64_t session = 0;
     int crossings = 0;                              // the detector's events
     int sites = 0;                                  // the places they group into
+    QStringList findings;                           // a line per site (RecordingSummary::findings)
     core::Verdict automatic = core::Verdict::Pass;  // already stored with the session
     std::string operatorName;
 };

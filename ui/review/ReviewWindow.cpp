@@ -609,7 +609,7 @@ void ReviewWindow::askVerdict()
     const auto current = m_session.verdict.value_or(core::Verdict::Pass);
     const QString summary =
         m_session.verdict ? tr("The verdict is \"%1\".").arg(wordText(current)) : tr("The session has no verdict yet.");
-    auto* dialog = new VerdictDialog(summary, trail, current, this);
+    auto* dialog = new VerdictDialog(summary, {}, trail, current, this);
     connect(dialog, &VerdictDialog::decided, this, [this](core::Verdict verdict, const QString& note) {
         const QString error = decideVerdict(verdict, note);
         if (!error.isEmpty()) showProblem(error);

@@ -45,6 +45,7 @@ void PanelScanUnit::startRecording(core::storage::Recorder& recorder)
 {
     LiveModeUnit::startRecording(recorder);
     m_agreementAtStart = m_detection->probeAgreement();
+    m_notJudged.clear();
 }
 
 void PanelScanUnit::take(const LiveTake& take)
@@ -90,7 +91,16 @@ void PanelScanUnit::takeProbeDecisions(const LiveTake& take)
 std::optional<core::storage::VerdictDecision> PanelScanUnit::finishRecording(RecordingSummary& summary, bool whole)
 {
     summary.defects = m_defects.size();
-    summary.sites = sites().sites.size();
+    const auto grouping = sites();
+    summary.sites = grouping.sites.size();
+    for (std::size_t i = 0; i < grouping.sites.size(); ++i) {
+        const auto& site = grouping.sites[i];
+        char times[64];
+        std::snprintf(times, sizeof times, "%.1f–%.1f s", site.first_s, site.last_s);
+        summary.findings.push_back("Site " + std::to_string(i + 1) + ": " + core::detector::siteText(site) + ", " +
+                                   std::to_string(site.forward) + " A then B, " + std::to_string(site.backward) +
+                                   " B then A, " + times);
+    }
     summary.probeAgreement = agreementSinceStart();
     if (!whole) return std::nullopt;
     // The rule the panel-scan definition states (shortestJudged): a panel
@@ -101,7 +111,7 @@ std::optional<core::storage::VerdictDecision> PanelScanUnit::finishRecording(Rec
         char text[96];
         std::snprintf(text, sizeof text, "too short to judge (%.3g s of the %.3g s the detector needs)", recorded_s,
                       needed_s);
-        summary.notJudged = text;
+        summary.notJudged = m_notJudged = text;
         return std::nullopt;
     }
     auto decision = core::storage::automaticDecision(core::storage::kLiveAnalysis, m_defects.size(), summary.sites,

@@ -35,6 +35,9 @@ public:
     const std::shared_ptr<core::detector::LiveDetection>& detection() const { return m_detection; }
     const std::vector<core::detector::DefectEvent>& defects() const { return m_defects; }
     core::detector::SiteGrouping sites() const { return core::detector::scanSites(m_defects); }
+    // Why the last recording got no verdict ("too short to judge (…)");
+    // empty when it got one, and while recording.
+    const std::string& notJudged() const { return m_notJudged; }
 
 private:
     void takeProbeDecisions(const LiveTake& take);
@@ -47,6 +50,7 @@ private:
     std::vector<core::detector::DefectEvent> m_laterProbe;
     std::vector<core::storage::SessionEvent> m_laterAlarms;
     std::optional<core::detector::ProbeAgreement> m_agreementAtStart;
+    std::string m_notJudged;
 };
 
 }  // namespace tactiscope::devices::session

@@ -183,6 +183,10 @@ void PanelScanView::update(devices::session::LiveSession& session)
 {
     const auto* unit = session.unitAs<devices::session::PanelScanUnit>();
     if (!unit) return;
+    if (unit->notJudged() != m_notJudged) {
+        m_notJudged = unit->notJudged();
+        showCount();
+    }
     showDefects(unit->defects(), session.lists());
     markOnTraces(unit->defects(), session.lists());
 }
@@ -284,7 +288,10 @@ void PanelScanView::showCount()
                                                  : tr("%1 on this panel — %2").arg(countText(), verdictText()));
         break;
     case devices::session::LiveClock::Recorded:
-        m_countLabel->setText(tr("%1 recorded on this panel — %2").arg(countText(), verdictText()));
+        // The stored verdict's rule: a panel too short to judge has none.
+        m_countLabel->setText(
+            tr("%1 recorded on this panel — %2")
+                .arg(countText(), m_notJudged.empty() ? verdictText() : QString::fromStdString(m_notJudged)));
         break;
     case devices::session::LiveClock::SinceConnect:
         m_countLabel->setText(tr("%1 since connect — not recorded").arg(countText()));

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 class QCheckBox;
@@ -67,6 +68,7 @@ private:
     std::uint64_t m_tracesGeneration = 0;  // of the lists whose defects are on m_traces
     std::size_t m_onTraces = 0;
     devices::session::LiveClock m_clock = devices::session::LiveClock::SinceConnect;
+    std::string m_notJudged;  // the last recording's, as its unit says
     QDoubleSpinBox* m_threshold = nullptr;
     QDoubleSpinBox* m_lagFrom = nullptr;
     QDoubleSpinBox* m_lagTo = nullptr;

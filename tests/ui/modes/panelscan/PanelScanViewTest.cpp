@@ -19,8 +19,10 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QScrollBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -73,6 +75,17 @@ TEST(PanelScanView, DefectsAreListedStoredAndMatchTheCoreDetector)
     auto* verdict = window.findChild<QDialog*>(QStringLiteral("verdictBox"));
     ASSERT_NE(verdict, nullptr);
     EXPECT_FALSE(verdict->isModal());
+    // Issue 52: the dialog lists the panel it judges, whatever the live
+    // list behind it shows by now: its one site, crossed as often as it says.
+    auto* findings = child<QListWidget>(*verdict, "verdictFindings");
+    ASSERT_EQ(findings->count(), 1);
+    const QString site = findings->item(0)->text();
+    const auto crossed =
+        QRegularExpression(QStringLiteral("^Site 1: .*, (\\d+) A then B, (\\d+) B then A, ")).match(site);
+    ASSERT_TRUE(crossed.hasMatch()) << site.toStdString();
+    const int crossings = crossed.captured(1).toInt() + crossed.captured(2).toInt();
+    const QString said = verdict->findChildren<QLabel*>().front()->text();
+    EXPECT_TRUE(said.contains(QStringLiteral("%1 defects at 1 site found").arg(crossings))) << said.toStdString();
     {
         // The automatic verdict is stored before the operator answers.
         core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
@@ -150,4 +163,23 @@ TEST(PanelScanView, EditedParametersReachTheLiveDetectorAndBadOnesAreRefused)
     EXPECT_FALSE(error->isVisible());
     EXPECT_TRUE(
         waitFor([&] { return liveUnit<PanelScanUnit>(*window.station().device()).defects().size() > before; }, 5000));
+}
+
+// Issue 52: a panel recorded for less than the detector needs is not
+// judged, and the live view says so where it says the verdict.
+TEST(PanelScanView, APanelRecordedTooShortToJudgeIsSaidSoAndNotAskedAbout)
+{
+    QTemporaryDir dir;
+    ui::MainWindow window;
+    window.setStorePath(dir.filePath("s.tactiscope"));
+    window.station().connectSource(liveSimulator());
+    window.show();
+    QTest::keyClicks(child<QLineEdit>(window, "operatorEdit"), QStringLiteral("Ada"));
+    runEventLoopFor(300);
+    ASSERT_TRUE(window.startRecording());
+    window.stopRecording();
+    runEventLoopFor(2 * ui::LiveStation::kPoll_ms);
+    const QString count = child<QLabel>(*window.findChild<ui::PanelScanView*>(), "defectCountLabel")->text();
+    EXPECT_TRUE(count.contains(QStringLiteral("recorded on this panel — too short to judge ("))) << count.toStdString();
+    EXPECT_EQ(window.findChild<QDialog*>(QStringLiteral("verdictBox")), nullptr);
 }
