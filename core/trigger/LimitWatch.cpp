@@ -181,6 +181,29 @@ std::string LimitChange::text(const LimitSpec& spec, const std::string& unit) co
     return text(spec, LimitWording{[](double v) { return text::formatShortest(v); }, measured, unit});
 }
 
+LimitWording readableWording(ChannelKind kind, const std::string& unit, double level)
+{
+    double scale = 1.0;
+    std::string shown = unit;
+    if (kind == ChannelKind::Strain && unit.empty()) {  // a strain is a pure number
+        scale = 1e6;
+        shown = "µε";
+    } else if (!unit.empty() && std::isfinite(level) && level != 0.0) {
+        static constexpr const char* kPrefixes[] = {"f", "p", "n", "µ", "m", "", "k", "M", "G"};
+        const int thousands = std::clamp(static_cast<int>(std::floor(std::log10(std::abs(level)) / 3.0)), -5, 3);
+        scale = std::pow(10.0, -3.0 * thousands);
+        shown = kPrefixes[thousands + 5] + unit;
+    }
+    // Six digits undo the scaling's rounding (0.000956 N is 956 µN, not
+    // 955.9999999999999 µN); a measured value to three.
+    const auto digits = [scale](double si, int significant) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.*g", significant, si * scale);
+        return std::string(text);
+    };
+    return {[digits](double si) { return digits(si, 6); }, [digits](double si) { return digits(si, 3); }, shown};
+}
+
 std::string LimitChange::text(const LimitSpec& spec, const LimitWording& wording) const
 {
     const std::string suffix = wording.unit.empty() ? "" : " " + wording.unit;

@@ -13,6 +13,8 @@
 // range instead.
 #pragma once
 
+#include "core/ChannelDescriptor.h"
+
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -85,6 +87,13 @@ struct LimitWording {
     std::function<std::string(double)> level, measured;
     std::string unit;
 };
+
+// The wording a stored alarm keeps, in the units people read it in: a
+// strain in µε, another quantity in its SI unit with the prefix that puts
+// `level` (the limit's) between 1 and 1000 (956 µN, 3 mN, 51.4 pF), the
+// measured value to three digits in the same unit; a quantity without a
+// unit as it is.
+LimitWording readableWording(ChannelKind kind, const std::string& unit, double level);
 
 // A raised or cleared alarm: at sample `index`, the value then.
 struct LimitChange {

@@ -158,6 +158,9 @@ TEST(TriggeredRecordCli, AnOverloadedCapacitiveBeamWarnsThenIsCriticalAndStopOnC
     for (const auto* alarm : {&warned, &critic})
         EXPECT_NE(alarm->note.find("limit force>warning:0.000597,critical:0.000956"), std::string::npos) << alarm->note;
     EXPECT_NE(critic.note.find("critical limit"), std::string::npos);
+    // Stored as the user reads it (issue 52): in µN, not "0.000956 N".
+    EXPECT_NE(critic.note.find("force above its critical limit 956 µN ("), std::string::npos) << critic.note;
+    EXPECT_NE(warned.note.find("force above its warning limit 597 µN ("), std::string::npos) << warned.note;
     EXPECT_NEAR(warned.start_s, 5.04, 0.15);
     EXPECT_NEAR(critic.start_s, 7.05, 0.15);
     EXPECT_NEAR(warned.end_s, session->duration_s(), 0.15);  // still raised at the stop

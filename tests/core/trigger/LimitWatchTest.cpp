@@ -238,3 +238,35 @@ TEST(LimitWatch, AGivenLimitReplacesThoseGuardingASideInCommon)
     EXPECT_FALSE(limit("a inside warning:-1..1").replaces(limit("a outside warning:-2..2")));
     EXPECT_FALSE(limit("b>warning:2").replaces(limit("a>warning:2")));
 }
+
+// Issue 52: a stored alarm reads in the units the user typed and saw, not
+// as raw SI floats ("2e-05 (2.106e-05)", "0.000956 N").
+TEST(LimitWatch, AStoredAlarmIsWordedInTheUnitsPeopleReadIt)
+{
+    using tactiscope::core::ChannelKind;
+    LimitChange change;
+    change.severity = LimitSeverity::Critical;
+    change.value = 0.000978;
+    const auto force = spec("force>warning:0.000597,critical:0.000956");
+    EXPECT_EQ(change.text(force, readableWording(ChannelKind::Force, "N", 0.000956)),
+              "force above its critical limit 956 µN (978 µN)");
+    change.severity = LimitSeverity::Warning;
+    change.value = 2.106e-05;
+    const auto strain = spec("a>warning:20e-6,critical:28e-6");
+    EXPECT_EQ(change.text(strain, readableWording(ChannelKind::Strain, "", 20e-6)),
+              "a above its warning limit 20 µε (21.1 µε)");
+    change.raised = false;
+    EXPECT_EQ(change.text(strain, readableWording(ChannelKind::Strain, "", 20e-6)),
+              "a back below its warning limit 20 µε");
+    change.raised = true;
+    change.value = 1.2e-15;
+    const auto window = spec("C inside warning:-1e-15..1e-15");
+    EXPECT_EQ(change.text(window, readableWording(ChannelKind::Capacitance, "F", 1e-15)),
+              "C inside its warning window -1..1 fF (1.2 fF)");
+    change.value = 3.5;
+    EXPECT_EQ(change.text(spec("x>warning:3"), readableWording(ChannelKind::Other, "", 3.0)),
+              "x above its warning limit 3 (3.5)");
+    change.value = 2500.0;
+    EXPECT_EQ(change.text(spec("p>warning:2000"), readableWording(ChannelKind::Other, "Pa", 2000.0)),
+              "p above its warning limit 2 kPa (2.5 kPa)");
+}
