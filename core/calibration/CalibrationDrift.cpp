@@ -28,9 +28,12 @@ DriftSummary summarizeDrift(std::span<const double> t_s, std::span<const double>
     const double first = values[static_cast<std::size_t>(oldest - t_s.begin())];
     const double last = values[static_cast<std::size_t>(newest - t_s.begin())];
     d.firstToLast = first != 0.0 ? (last - first) / first : 0.0;
-    if (*newest > *oldest) {
+    d.span_s = *newest - *oldest;
+    if (d.count >= kTrendRecords && d.span_s >= kTrendSpan_s) {
         constexpr double kYear_s = 365.25 * 86400.0;
-        d.trendPerYear = fitLine(t_s, values).slope * kYear_s;
+        const auto fit = fitLine(t_s, values);
+        const double dof = n - 2.0;  // ≥ 8: kTrendRecords
+        d.trend = DriftTrend{fit.slope * kYear_s, fit.slopeStandardError * std::sqrt(dof / (dof - 2.0)) * kYear_s};
     }
     return d;
 }

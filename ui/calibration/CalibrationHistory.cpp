@@ -47,14 +47,24 @@ struct MainValue {
     const char* key;
     const char* standardErrorKey;
     const char* title;
+    const char* unit;  // its trend's, per year; none for a pure number
 };
 
 MainValue mainValueOf(const std::string& kind)
 {
     if (kind == core::calibration::kCapacitiveKind)
-        return {"sensitivity_pf_per_mn", "sensitivity_standard_error_pf_per_mn", "Sensitivity (pF/mN)"};
-    if (kind == core::calibration::kShuntCheckKind) return {"shunt_deviation_percent", "", "Shunt check deviation (%)"};
-    return {"gauge_factor", "gauge_factor_standard_error", "Gauge factor"};
+        return {"sensitivity_pf_per_mn", "sensitivity_standard_error_pf_per_mn", "Sensitivity (pF/mN)", "pF/mN"};
+    if (kind == core::calibration::kShuntCheckKind)
+        return {"shunt_deviation_percent", "", "Shunt check deviation (%)", "%"};
+    return {"gauge_factor", "gauge_factor_standard_error", "Gauge factor", ""};
+}
+
+// How far apart the oldest and newest records are: "19 min", "5 h", "40 days".
+QString spanText(double seconds)
+{
+    if (seconds < 3600.0) return QObject::tr("%1 min").arg(std::round(seconds / 60.0));
+    if (seconds < 2.0 * 86400.0) return QObject::tr("%1 h").arg(std::round(seconds / 3600.0));
+    return QObject::tr("%1 days").arg(std::round(seconds / 86400.0));
 }
 
 double secondsOf(const std::string& timestampUtc)
@@ -200,11 +210,12 @@ void CalibrationHistory::showSensor()
     const int decimals = sharedDecimals(standardErrors, 4);
     std::vector<double> t, v;
     QVector<double> keys, values, errors;
-    QString title;
+    QString title, unit;
     for (std::size_t i = 0; i < m_shown.size(); ++i) {
         const auto& r = m_shown[i]->record;
         const MainValue main = mainValueOf(r.kind);
         title = tr(main.title);
+        unit = QString::fromUtf8(main.unit);
         const auto value = r.value(main.key);
         const auto error = r.value(main.standardErrorKey);
         const bool active = i + 1 == m_shown.size();
@@ -260,8 +271,18 @@ void CalibrationHistory::showSensor()
                       .arg(title, countText(static_cast<long long>(d.count), tr("calibration"), tr("calibrations")))
                       .arg(fixedText(d.mean, decimals), significant(d.standardDeviation, 2),
                            fixedText(100.0 * d.firstToLast, 2));
-        // The trend in the mean's decimals: both are values of the same quantity.
-        if (d.count > 1 && d.trendPerYear) text += tr("; trend %1 per year").arg(fixedText(*d.trendPerYear, decimals));
+        // A trend with its uncertainty, in the quantity's unit; a span or a
+        // count too small for one says what one needs.
+        if (d.trend)
+            text += tr("; trend %1%2 per year")
+                        .arg(valueWithErrorText(d.trend->perYear, d.trend->uncertaintyPerYear),
+                             unit.isEmpty() ? QString() : QLatin1Char(' ') + unit);
+        else if (d.count > 1)
+            text +=
+                tr("; no trend from %1 over %2 (one needs %3 over %4 days)")
+                    .arg(countText(static_cast<long long>(d.count), tr("record"), tr("records")), spanText(d.span_s))
+                    .arg(core::calibration::kTrendRecords)
+                    .arg(core::calibration::kTrendSpan_s / 86400.0);
         m_drift->setText(text + QLatin1Char('.'));
         m_drift->setToolTip(m_drift->text());  // whole, should a narrow window cut the second line
     }
