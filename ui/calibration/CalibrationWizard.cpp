@@ -80,6 +80,7 @@ CheckedPage* CalibrationWizard::createSensorPage(const std::vector<std::pair<QSt
     m_operator->setPlaceholderText(tr("who calibrates (required: stored with the record)"));
     connect(m_operator, &QLineEdit::textChanged, page, &CheckedPage::recheck);
     m_sensorSummary = wrappedLabel({}, page);
+    m_sensorSummary->setObjectName(QStringLiteral("sensorSummary"));
 
     auto* form = new QFormLayout;
     form->addRow(m_words.channelLabel, m_channel);

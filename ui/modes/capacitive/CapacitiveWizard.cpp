@@ -6,6 +6,7 @@
 #include "core/UnitScale.h"
 #include "core/calibration/CapacitiveSweep.h"
 #include "core/sensors/CapacitiveBeam.h"
+#include "core/sensors/SensorLimits.h"
 #include "ui/calibration/CalibrationText.h"
 #include "ui/calibration/CapturePanel.h"
 #include "ui/calibration/CheckedPage.h"
@@ -358,11 +359,23 @@ void CapacitiveWizard::showBeam()
 {
     if (!profile()) return;
     const core::sensors::CapacitiveBeam beam(profile()->geometry);
-    setSensorSummary(tr("The beam model expects C0 = %1 pF, %2 pF/mN and k = %3 N/m: the calibration measures the "
-                        "first two on the real beam.")
-                         .arg(significant(profile()->geometry.c0_f * 1e12),
-                              significant(beam.capacitancePerNewton_f_per_n() * 1e9),
-                              significant(beam.stiffness_n_per_m())));
+    QString summary =
+        tr("The beam model expects C0 = %1 pF, %2 pF/mN and k = %3 N/m: the calibration measures the "
+           "first two on the real beam.")
+            .arg(significant(profile()->geometry.c0_f * 1e12), significant(beam.capacitancePerNewton_f_per_n() * 1e9),
+                 significant(beam.stiffness_n_per_m()));
+    // The live view watches the beam's limits while the wizard loads it: a
+    // full-scale load past them raises its alarm, and that is said first.
+    for (const auto& limit : core::sensors::profileLimits(core::sensors::SensorProfile{*profile()}, context().channels))
+        if (limit.limit.quantity == "force" && limit.limit.warning && limit.limit.critical) {
+            const auto mgf = [](double n) { return significant(n / kMilligramForce_n, 3); };
+            summary += QLatin1Char(' ') +
+                       tr("Its limits: warning above %1 mgf, critical above %2 mgf (%3). Heavier loads raise the "
+                          "live view's alarms: expected while calibrating, and no session records them.")
+                           .arg(mgf(limit.limit.warning->low), mgf(limit.limit.critical->low),
+                                QString::fromStdString(limit.basis));
+        }
+    setSensorSummary(summary);
 }
 
 void CapacitiveWizard::takeFinalZero()

@@ -15,6 +15,7 @@
 
 #include <QFileInfo>
 #include <QLabel>
+#include <QRegularExpression>
 #include <QTableWidget>
 
 #include <gtest/gtest.h>
@@ -78,6 +79,13 @@ protected:
 TEST_F(CapacitiveWizardTest, LoadAndUnloadOnTheSimulatorStoresItsC0AndSensitivity)
 {
     ui::CapacitiveWizard wizard(m_rig->context);
+    // Issue 52: the 150 mgf of this calibration go past the beam's critical
+    // limit, and the wizard says so before the alarm does.
+    const QString beam = child<QLabel>(wizard, "sensorSummary")->text();
+    const auto critical = QRegularExpression(QStringLiteral("critical above ([0-9.]+) mgf")).match(beam);
+    ASSERT_TRUE(critical.hasMatch()) << beam.toStdString();
+    EXPECT_LT(critical.captured(1).toDouble(), 150.0) << beam.toStdString();
+    EXPECT_TRUE(beam.contains(QStringLiteral("Heavier loads raise the live view's alarms"))) << beam.toStdString();
     ASSERT_NO_FATAL_FAILURE(toSteps(wizard));
     for (double mgf : {30.0, 60.0, 90.0, 120.0, 150.0, 120.0, 90.0, 60.0, 30.0})
         ASSERT_NO_FATAL_FAILURE(capture(wizard, mgf));
