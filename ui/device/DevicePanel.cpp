@@ -206,7 +206,10 @@ void DevicePanel::refresh()
     QTreeWidgetItem* emulator = group(tr("Emulator (serial path, no hardware)"));
     for (const std::string& id : devices::simulator::scenarioIds()) {
         choice(simulator, scenarioTitle(id), SourceKind::Simulator, QString::fromStdString(id));
-        choice(emulator, scenarioTitle(id), SourceKind::Emulator, QString::fromStdString(id));
+        // Told apart wherever the choice is named again (the status line).
+        choice(emulator, tr("%1 (emulated port)").arg(scenarioTitle(id)), SourceKind::Emulator,
+               QString::fromStdString(id))
+            ->setToolTip(0, tr("The same probe behind a pseudo-terminal, through the serial path a real probe takes"));
     }
     QTreeWidgetItem* ports = group(tr("Serial ports and HID devices"));
     for (std::size_t i = 0; i < m_discovered.size(); ++i) {
@@ -229,6 +232,10 @@ void DevicePanel::refresh()
 
 void DevicePanel::selectionChanged()
 {
+    // A simulated or emulated probe speaks TSP/1 unless told otherwise
+    // after it is chosen: a text protocol left from a board is no default.
+    if (selectedKind() == SourceKind::Simulator || selectedKind() == SourceKind::Emulator)
+        m_protocol->setCurrentIndex(0);
     if (selectedKind() == SourceKind::Port) {
         const auto& device = m_discovered[m_sources->currentItem()->data(0, kIdRole).toULongLong()];
         m_path->setText(QString::fromStdString(device.path));

@@ -240,7 +240,12 @@ TEST(DevicePanel, TheEmulatorChosenInThePanelStreamsThroughAPtyWithItsCounters)
     for (int i = 0; i < heading->childCount() && !emulator; ++i)
         if (heading->child(i)->text(0).startsWith(QStringLiteral("Palpation"))) emulator = heading->child(i);
     ASSERT_NE(emulator, nullptr);
+    // Issue 52: told apart from the simulator's entry, and in TSP/1 even
+    // after a text board's connection left the protocol on text lines.
+    EXPECT_EQ(emulator->text(0), QStringLiteral("Palpation — compliance probe (emulated port)"));
+    child<QComboBox>(window, "protocolBox")->setCurrentIndex(1);
     tree->setCurrentItem(emulator);
+    EXPECT_EQ(child<QComboBox>(window, "protocolBox")->currentIndex(), 0);
     QTest::mouseClick(child<QPushButton>(window, "connectButton"), Qt::LeftButton);
     ASSERT_TRUE(waitFor([&] { return window.station().isConnected(); }, 6000));
     EXPECT_TRUE(window.windowTitle().contains(QStringLiteral("EMU-")));  // the firmware's answer over the pty
