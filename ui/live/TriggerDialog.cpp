@@ -154,11 +154,19 @@ TriggerDialog::TriggerDialog(std::vector<core::ChannelDescriptor> watchable, cor
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
 
+    // The rows stay under the pointer as the texts below them come and go:
+    // those have room kept for them, and spare height goes to the stretch.
+    const int line = fontMetrics().lineSpacing();
+    m_command->setMinimumHeight(3 * line);
+    m_problem->setMinimumHeight(2 * line);
+    m_command->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    m_problem->setAlignment(Qt::AlignLeft | Qt::AlignTop);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
     layout->addWidget(note);
     layout->addWidget(m_command);
     layout->addWidget(m_problem);
+    layout->addStretch(1);
     layout->addWidget(buttons);
 
     connect(m_quantity, &QComboBox::currentIndexChanged, this, &TriggerDialog::quantityChanged);

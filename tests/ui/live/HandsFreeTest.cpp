@@ -21,6 +21,8 @@
 #include "ui/live/WatchBanner.h"
 
 #include <QAction>
+#include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
@@ -64,6 +66,34 @@ ui::TriggerDialog* triggerOnA(const ui::MainWindow& window)
 }
 
 }  // namespace
+
+// Issue 52: a click meant for a row toggled Re-arm, the rows having moved
+// as the texts below them changed.
+TEST(HandsFree, TheTriggerDialogsRowsStayPutAsItsTextsComeAndGo)
+{
+    ui::MainWindow window;
+    window.show();
+    window.station().connectSource(liveSimulator("panel-line"));
+    auto* dialog = triggerOnA(window);
+    ASSERT_NE(dialog, nullptr);
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(dialog));
+    auto* rearm = child<QCheckBox>(*dialog, "triggerRearm");
+    auto* level = child<QLineEdit>(*dialog, "triggerLevel");
+    const auto where = [&] { return rearm->mapTo(dialog, QPoint(0, 0)); };
+    const QPoint before = where();
+    EXPECT_FALSE(child<QLabel>(*dialog, "triggerCommand")->text().isEmpty());
+    level->clear();  // no level: the command goes, the problem comes
+    QTest::keyClicks(level, QStringLiteral("x"));
+    QApplication::processEvents();
+    EXPECT_FALSE(child<QLabel>(*dialog, "triggerProblem")->text().isEmpty());
+    EXPECT_EQ(where(), before);
+    level->clear();
+    QTest::keyClicks(level, QStringLiteral("20"));
+    child<QComboBox>(*dialog, "triggerKind")->setCurrentIndex(1);
+    QApplication::processEvents();
+    EXPECT_EQ(where(), before);
+    dialog->reject();
+}
 
 TEST(HandsFree, TheTriggerDialogCutsOneSessionPerPanelFromTheMainWindow)
 {
