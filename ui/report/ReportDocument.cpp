@@ -193,13 +193,14 @@ QString defectTables(const core::report::ReportData& data)
         const auto& site = data.sites.sites[k];
         for (const std::size_t i : site.crossings) siteOf[i] = static_cast<int>(k + 1);
         for (const std::size_t i : site.parts) siteOf[i] = static_cast<int>(k + 1);
-        // Never "± 0": crossings that agree to the millimetre say so.
+        // Never "± 0": crossings that agree to the millimetre read "± <1",
+        // short enough for the column (issue 52: "37 (spread" was cut).
         QString position = QObject::tr("unknown");
         if (site.position_m) {
             position = fixedText(std::abs(*site.position_m) < 0.5e-3 ? 0.0 : *site.position_m * 1e3, 0);
             if (site.crossings.size() > 1)
-                position += site.spread_m < 0.5e-3 ? QObject::tr(" (spread < 1)")
-                                                   : QStringLiteral(" ± ") + number(site.spread_m * 1e3, 0);
+                position += QStringLiteral(" ± ") +
+                            (site.spread_m < 0.5e-3 ? QStringLiteral("&lt;1") : number(site.spread_m * 1e3, 0));
         }
         sites.push_back({QString::number(k + 1), position, QString::number(site.crossings.size()),
                          QObject::tr("%1 A→B, %2 B→A").arg(site.forward).arg(site.backward),
