@@ -5,29 +5,92 @@
 #include "core/timing/ClockMappingJson.h"
 
 #include <algorithm>
+#include <functional>
 #include <stdexcept>
 
 namespace tactiscope::core::derived {
 
 namespace {
 
-// A session of several devices: each device's stored channels, named
-// DEVICE/CHANNEL, at its rate and placed by its clock on the session's.
-// Each device's analysis is its own part's; its quantities are not
-// derived across devices here.
-SessionLanes partLanes(storage::SessionSource& store, const std::vector<storage::SessionPart>& parts)
+// A lane a part's mode derived, on its device's clock and named after it.
+class PartLane final : public storage::LaneSource {
+public:
+    PartLane(std::unique_ptr<storage::LaneSource> lane, const std::string& device, storage::LaneClock clock)
+        : m_lane(std::move(lane)),
+          m_descriptor(m_lane->descriptor()),
+          m_clock(std::move(clock))
+    {
+        m_descriptor.name = device + "/" + m_descriptor.name;
+    }
+    ChannelDescriptor descriptor() const override { return m_descriptor; }
+    std::optional<storage::LaneClock> clock() const override { return m_clock; }
+    std::vector<double> exact(std::uint64_t first, std::uint64_t count) override { return m_lane->exact(first, count); }
+    std::vector<storage::OverviewPoint> overview(std::uint64_t first, std::uint64_t count, std::size_t points) override
+    {
+        return m_lane->overview(first, count, points);
+    }
+    std::optional<double> threshold() const override { return m_lane->threshold(); }
+
+private:
+    std::unique_ptr<storage::LaneSource> m_lane;
+    ChannelDescriptor m_descriptor;
+    storage::LaneClock m_clock;
+};
+
+// The lanes of one recording: its mode's quantities around its stored
+// channels (replaced ones left out), each made into a lane by `lane`.
+void addRecordingLanes(
+    SessionLanes& result, storage::SessionSource& store, const storage::SessionSummary& session,
+    const LaneOptions& options, const std::string& device,
+    const std::function<std::unique_ptr<storage::LaneSource>(std::unique_ptr<storage::LaneSource>)>& placed,
+    const std::function<std::unique_ptr<storage::LaneSource>(std::size_t, ChannelDescriptor)>& stored)
+{
+    const auto channels = store.channels(session.id);
+    ModeLanes added;
+    const auto& definition = definitionOf(session.metadata.mode);
+    if (!options.raw && definition.lanes) {
+        try {
+            added = definition.lanes(store, session, options);
+            result.basis += (result.basis.empty() ? "" : "; ") + (device.empty() ? "" : device + ": ") + added.basis;
+            result.derived = true;
+        } catch (const std::invalid_argument& e) {
+            added = {};
+            result.problem += (result.problem.empty() ? "" : "; ") + (device.empty() ? "" : device + ": ") + e.what();
+        }
+    }
+    const auto push = [&](std::unique_ptr<storage::LaneSource> lane) {
+        result.lanes.push_back(std::move(lane));
+        result.modes.push_back(session.metadata.mode);
+        result.devices.push_back(device);
+    };
+    for (auto& lane : added.before) push(placed(std::move(lane)));
+    for (std::size_t c = 0; c < channels.size(); ++c)
+        if (std::ranges::find(added.replaced, c) == added.replaced.end()) push(stored(c, channels[c].descriptor));
+    for (auto& lane : added.after) push(placed(std::move(lane)));
+}
+
+// A session of several devices: each device's lanes as its own recording
+// has them (its mode's quantities and its stored channels), named
+// DEVICE/NAME, at its rate and placed by its clock on the session's.
+SessionLanes partLanes(storage::SessionSource& store, const std::vector<storage::SessionPart>& parts,
+                       const LaneOptions& options)
 {
     SessionLanes result;
     for (const auto& part : parts) {
         const auto channels = store.channels(part.id);
-        if (channels.empty()) continue;
-        storage::LaneClock clock{channels.front().sampleRate_hz, store.sampleCount(part.id),
-                                 timing::clockMappingFromJson(part.clockJson)};
-        for (std::size_t c = 0; c < channels.size(); ++c) {
-            auto descriptor = channels[c].descriptor;
-            descriptor.name = part.deviceName + "/" + descriptor.name;
-            result.lanes.push_back(std::make_unique<storage::StoredLane>(store, part.id, c, descriptor, clock));
-        }
+        const auto recording = store.session(part.id);
+        if (channels.empty() || !recording) continue;
+        const storage::LaneClock clock{channels.front().sampleRate_hz, store.sampleCount(part.id),
+                                       timing::clockMappingFromJson(part.clockJson)};
+        addRecordingLanes(
+            result, store, *recording, options, part.deviceName,
+            [&](std::unique_ptr<storage::LaneSource> lane) {
+                return std::make_unique<PartLane>(std::move(lane), part.deviceName, clock);
+            },
+            [&](std::size_t c, ChannelDescriptor descriptor) {
+                descriptor.name = part.deviceName + "/" + descriptor.name;
+                return std::make_unique<storage::StoredLane>(store, part.id, c, std::move(descriptor), clock);
+            });
         if (!clock.mapping)
             result.problem += (result.problem.empty() ? "" : "; ") + part.deviceName +
                               ": its clock was not mapped, its samples are placed by its own times";
@@ -40,26 +103,13 @@ SessionLanes partLanes(storage::SessionSource& store, const std::vector<storage:
 SessionLanes sessionLanes(storage::SessionSource& store, const storage::SessionSummary& session,
                           const LaneOptions& options)
 {
+    if (const auto parts = store.parts(session.id); !parts.empty()) return partLanes(store, parts, options);
     SessionLanes result;
-    if (const auto parts = store.parts(session.id); !parts.empty()) return partLanes(store, parts);
-    const auto channels = store.channels(session.id);
-    ModeLanes added;
-    const auto& definition = definitionOf(session.metadata.mode);
-    if (!options.raw && definition.lanes) {
-        try {
-            added = definition.lanes(store, session, options);
-            result.basis = added.basis;
-            result.derived = true;
-        } catch (const std::invalid_argument& e) {
-            added = {};
-            result.problem = e.what();
-        }
-    }
-    for (auto& lane : added.before) result.lanes.push_back(std::move(lane));
-    for (std::size_t c = 0; c < channels.size(); ++c)
-        if (std::ranges::find(added.replaced, c) == added.replaced.end())
-            result.lanes.push_back(std::make_unique<storage::StoredLane>(store, session.id, c, channels[c].descriptor));
-    for (auto& lane : added.after) result.lanes.push_back(std::move(lane));
+    addRecordingLanes(
+        result, store, session, options, {}, [](std::unique_ptr<storage::LaneSource> lane) { return lane; },
+        [&](std::size_t c, ChannelDescriptor descriptor) -> std::unique_ptr<storage::LaneSource> {
+            return std::make_unique<storage::StoredLane>(store, session.id, c, std::move(descriptor));
+        });
     return result;
 }
 

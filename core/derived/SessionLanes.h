@@ -3,9 +3,11 @@
 // makes them (core/modes: e.g. palpation's F_H, F_L, Q and k_o before the
 // stored channels the forces did not come from; a panel scan's best R and
 // decision after the strains), or every stored channel as it is (`raw`,
-// and the general mode).
+// and the general mode). A session of several devices has each part's, by
+// its own mode, named DEVICE/NAME and placed by its device's clock.
 #pragma once
 
+#include "core/Vocabulary.h"
 #include "core/calibration/CalibrationRecord.h"
 #include "core/derived/ModeLanes.h"
 #include "core/storage/SessionExport.h"
@@ -21,6 +23,11 @@ namespace tactiscope::core::derived {
 
 struct SessionLanes {
     std::vector<std::unique_ptr<storage::LaneSource>> lanes;
+    // Each lane's mode, whose units it is shown in, and its device: the
+    // session's mode and no device, or in a session of several devices its
+    // part's mode and device (its name's DEVICE/).
+    std::vector<Mode> modes;
+    std::vector<std::string> devices;
     std::string basis;    // what the derived lanes were computed with; empty without them
     std::string problem;  // why a mode's quantities could not be derived, if so
     bool derived = false;

@@ -8,6 +8,7 @@
 
 #include <QString>
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,6 +31,9 @@ struct DisplayUnit {
     // A quantity that takes a few values only (the detector's decision):
     // each value's name, shown on its axis in place of numbers.
     std::vector<std::pair<double, QString>> levels;
+    // A readout's decimals when fixed (a correlation's 3: "Best R 0.001",
+    // not "0.0013789"); none: as many as its magnitude needs.
+    std::optional<int> decimals;
 
     // Axis title such as "Strain (µε)".
     QString axisTitle() const;

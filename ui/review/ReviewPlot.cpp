@@ -43,7 +43,7 @@ void placeInLane(QCPItemPosition* position, QCPAxisRect* rect, double time_s, do
 // `magnitude` (display units), so a stretch's minimum and maximum match.
 QString valueText(double value, const DisplayUnit& unit, double magnitude)
 {
-    return fixedText(value * unit.scale, decimalsForMagnitude(magnitude, 5));
+    return fixedText(value * unit.scale, unit.decimals.value_or(decimalsForMagnitude(magnitude, 5)));
 }
 
 // A lane of named levels (the detector's decision) reads as its names,
@@ -183,7 +183,14 @@ int ReviewPlot::laneLine() const
 
 DisplayUnit ReviewPlot::unitOf(std::size_t lane) const
 {
-    return laneUnit(m_lanes.lanes[lane]->descriptor(), m_session.metadata.mode);
+    // A part's lane, DEVICE/NAME, in its own mode's units, titled after its device.
+    auto descriptor = m_lanes.lanes[lane]->descriptor();
+    const std::string& device = m_lanes.devices.at(lane);
+    if (device.empty()) return laneUnit(descriptor, m_lanes.modes.at(lane));
+    descriptor.name.erase(0, device.size() + 1);
+    DisplayUnit unit = laneUnit(descriptor, m_lanes.modes.at(lane));
+    unit.quantity.prepend(QString::fromStdString(device + "/"));
+    return unit;
 }
 
 std::vector<std::string> ReviewPlot::laneNames() const

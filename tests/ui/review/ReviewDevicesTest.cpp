@@ -9,11 +9,15 @@
 #include "core/storage/SessionStore.h"
 #include "core/storage/TraceWindow.h"
 #include "core/timing/ClockMappingJson.h"
+#include "support/CliRunner.h"
+#include "support/EmulatorProcess.h"
 #include "support/Screenshot.h"
 #include "ui/review/ReviewPlot.h"
 #include "ui/review/ReviewWindow.h"
 
 #include <QLabel>
+#include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTreeWidget>
 
@@ -106,7 +110,43 @@ TEST(ReviewDevices, EachDevicesChannelsArePlacedByItsClockOnTheSessionsAxis)
     EXPECT_TRUE(header->text().contains(QStringLiteral("beam at 100 Hz, load-cell at 1000 Hz")))
         << header->text().toStdString();
     const QString readout = window->plot()->readoutAt(4.05);
-    EXPECT_TRUE(readout.contains(QStringLiteral("beam/force"))) << readout.toStdString();
+    EXPECT_TRUE(readout.contains(QStringLiteral("beam/Force"))) << readout.toStdString();
     window->plot()->setRange(3.95, 4.05);
     tactiscope::testing::saveScreenshot(*window, QStringLiteral("review-devices"));
+}
+
+// Issue 52: a beam recorded beside a load cell is reviewed as a beam
+// recorded alone would be, its capacitance change, force and deflection
+// in its own units beside its stored capacitance, named after its device;
+// the load cell's force as stored.
+TEST(ReviewDevices, EachPartIsShownWithItsOwnModesQuantities)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath("s.tactiscope");
+    QProcess beam, cell;
+    ASSERT_TRUE(tactiscope::testing::startEmulator(beam, dir.filePath("beam"),
+                                                   {"--scenario", "capacitive-weights", "--seed", "3"}));
+    ASSERT_TRUE(tactiscope::testing::startEmulator(cell, dir.filePath("cell"), {"--scenario", "load-cell"}));
+    const auto recorded =
+        tactiscope::testing::runCli({"record", "--port", "beam=" + dir.filePath("beam"), "--port",
+                                     "load-cell=" + dir.filePath("cell"), "--seconds", "3", "--db", db});
+    tactiscope::testing::stopEmulator(beam);
+    tactiscope::testing::stopEmulator(cell);
+    ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
+    const auto session = tactiscope::testing::sessionIdIn(recorded.out);
+
+    QString error;
+    std::unique_ptr<ui::ReviewWindow> window(ui::ReviewWindow::open(db, session, nullptr, error));
+    ASSERT_NE(window, nullptr) << error.toStdString();
+    window->resize(1366, 768);
+    window->show();
+    window->plot()->reload();
+    EXPECT_EQ(window->plot()->laneNames(), (std::vector<std::string>{"beam/capacitance", "beam/delta_c", "beam/force",
+                                                                     "beam/deflection", "load-cell/force"}));
+    EXPECT_NE(window->plot()->derivedBasis().find("beam: "), std::string::npos) << window->plot()->derivedBasis();
+    // The beam's force in its users' µN, titled after its device.
+    const QString readout = window->plot()->readoutAt(1.5);
+    EXPECT_TRUE(QRegularExpression(QStringLiteral("beam/[^:]*: -?[0-9.,]+ µN")).match(readout).hasMatch())
+        << readout.toStdString();
+    tactiscope::testing::saveScreenshot(*window, QStringLiteral("review-devices-beam"));
 }

@@ -146,6 +146,9 @@ TEST_F(ReviewWindowTest, TheOverviewReadsAFewChunksAndAZoomShowsTheExactSamples)
     ASSERT_TRUE(bestR.exact);
     ASSERT_EQ(bestR.t_s.size(), zoomed.t_s.size());
     for (const double r : bestR.low) EXPECT_TRUE(r >= -1.0 && r <= 1.0) << r;
+    // A correlation reads to three decimals (issue 52: "Best R: 0.0013789").
+    EXPECT_TRUE(QRegularExpression(QStringLiteral("Best R: -?[01]\\.\\d{3} ")).match(readout).hasMatch())
+        << readout.toStdString();
 
     // A still view reads nothing more (no reload on every repaint).
     const std::uint64_t settled = m_window->store().chunksRead();

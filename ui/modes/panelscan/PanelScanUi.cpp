@@ -13,7 +13,11 @@ namespace {
 
 std::optional<DisplayUnit> laneUnit(std::string_view lane)
 {
-    if (lane == "best_r") return DisplayUnit{1.0, {}, QObject::tr("Best R")};
+    if (lane == "best_r") {
+        DisplayUnit correlation{1.0, {}, QObject::tr("Best R")};
+        correlation.decimals = 3;  // a correlation, within ±1
+        return correlation;
+    }
     if (lane == "decision")
         return DisplayUnit{1.0,
                            {},
