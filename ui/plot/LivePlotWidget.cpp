@@ -214,6 +214,10 @@ void LivePlotWidget::buildPlotItems(const std::vector<core::ChannelDescriptor>& 
     }
     if (sharedLane) moveLegendTo(m_lanes[*sharedLane].rect);
     m_plot->legend->setVisible(sharedLane.has_value());
+    // The lane the legend sits over gets the room of two, its traces the
+    // room left under the legend (issue 52: 40 px under seven entries).
+    for (std::size_t lane = 0; lane < m_lanes.size(); ++lane)
+        m_plot->plotLayout()->setRowStretchFactor(static_cast<int>(lane), sharedLane == lane ? 2.0 : 1.0);
     updateInteractions();
 }
 

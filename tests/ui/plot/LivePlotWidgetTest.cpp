@@ -13,6 +13,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 using namespace tactiscope;
 using tactiscope::testing::saveScreenshot;
@@ -212,4 +214,36 @@ TEST(LivePlotWidget, NoTraceRunsUnderTheLegend)
     }
     EXPECT_GT(points, 100);
     EXPECT_FALSE(saveScreenshot(plot, QStringLiteral("live-plot-legend")).isEmpty());
+}
+
+// Issue 52: a probe sending its own decisions beside its strains had its
+// strain lane 40 px tall under a legend of seven entries. The lane the
+// legend sits over gets twice the room of the others.
+TEST(LivePlotWidget, TheLaneUnderTheLegendHasRoomForItsTraces)
+{
+    std::vector<core::ChannelDescriptor> channels;
+    for (int c = 0; c < 7; ++c) channels.push_back({"s" + std::to_string(c), "", core::ChannelKind::Strain});
+    channels.push_back({"beam", "F", core::ChannelKind::Capacitance});
+    channels.push_back({"decision", "", core::ChannelKind::Decision});
+    auto buffer = std::make_shared<core::LiveBuffer>(channels.size(), 20000);
+    for (std::uint64_t first = 0; first < 1000; first += 10) {
+        core::SampleBlock block(channels.size(), 10, static_cast<double>(first) * 0.002, 0.002, first);
+        for (std::size_t c = 0; c < channels.size(); ++c)
+            for (std::size_t i = 0; i < 10; ++i) block.channel(c)[i] = 1e-6 * static_cast<double>(c + i);
+        buffer->consume(block);
+    }
+    ui::LivePlotWidget plot;
+    plot.resize(700, 420);
+    plot.show();
+    plot.setSource(buffer, channels, 500.0);
+    ASSERT_TRUE(waitFor([&] { return plot.samplesReceived() == 1000u; }, 2000));
+    tactiscope::testing::runEventLoopFor(150);
+    auto* customPlot = plot.findChild<QCustomPlot*>();
+    ASSERT_NE(customPlot, nullptr);
+    const auto rects = customPlot->axisRects();
+    ASSERT_EQ(rects.size(), 3);
+    ASSERT_TRUE(customPlot->legend->visible());
+    EXPECT_GE(rects[0]->height(), 2 * customPlot->legend->outerRect().height())
+        << "strain lane " << rects[0]->height() << " px under a legend of " << customPlot->legend->outerRect().height();
+    EXPECT_GT(rects[0]->height(), rects[1]->height()) << "plot " << customPlot->height() << " px";
 }
