@@ -10,11 +10,8 @@
 #include <QDialogButtonBox>
 #include <QLabel>
 #include <QLineEdit>
-#include <QListWidget>
 #include <QPushButton>
 #include <QVBoxLayout>
-
-#include <algorithm>
 
 namespace tactiscope::ui {
 
@@ -33,15 +30,16 @@ VerdictDialog::VerdictDialog(const QString& summaryText, const QStringList& find
     summary->setFont(bold);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(summary);
-    // The panel's own list: the live view behind may already show the next.
+    // The panel's own sites: the live view behind may already show the next
+    // panel's. A long list is cut with the count of the rest.
     if (!findings.isEmpty()) {
-        auto* list = new QListWidget(this);
+        constexpr qsizetype kShown = 8;
+        QStringList shown = findings.mid(0, kShown);
+        if (findings.size() > kShown) shown << tr("… and %1 more").arg(findings.size() - kShown);
+        auto* list = new QLabel(shown.join(QLatin1Char('\n')), this);
         list->setObjectName(QStringLiteral("verdictFindings"));
-        list->addItems(findings);
-        list->setSelectionMode(QAbstractItemView::NoSelection);
-        list->setFocusPolicy(Qt::NoFocus);
-        const int rows = static_cast<int>(std::min<qsizetype>(findings.size(), 6));
-        list->setFixedHeight(rows * list->sizeHintForRow(0) + 2 * list->frameWidth());
+        list->setWordWrap(true);
+        list->setTextInteractionFlags(Qt::TextSelectableByMouse);
         layout->addWidget(list);
     }
     if (!trail.isEmpty()) {
