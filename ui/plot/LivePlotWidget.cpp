@@ -605,7 +605,15 @@ void LivePlotWidget::draw(double start_s, double end_s)
     const double maxStep_s = std::max(2.0 * (end_s - start_s) / width_px, 1.5 / m_sampleRate_hz);
     for (std::size_t c = 0; c < m_graphs.size(); ++c) {
         decimatedPoints(c, start_s, end_s);
-        if (c == 0) m_gaps = core::signal::gapsIn(m_decimatedTime, maxStep_s);
+        if (c == 0) {
+            m_gaps = core::signal::gapsIn(m_decimatedTime, maxStep_s);
+            // A probe away longer than the window: its first samples back
+            // start mid-view, and what came before lies beyond the left
+            // edge, so the gap reaches back to that edge.
+            if (!m_decimatedTime.empty() && m_decimatedTime.front() - start_s > maxStep_s &&
+                firstIndexAtOrAfter(start_s) > m_time->oldestIndex())
+                m_gaps.insert(m_gaps.begin(), {start_s, m_decimatedTime.front()});
+        }
         core::signal::breakAtGaps(m_decimatedTime, m_decimatedValues, maxStep_s);
         QVector<double> keys(m_decimatedTime.begin(), m_decimatedTime.end());
         QVector<double> values(static_cast<qsizetype>(m_decimatedValues.size()));

@@ -91,6 +91,25 @@ TEST(LivePlotWidget, LostSamplesAreDrawnAsAGapNotJoined)
     EXPECT_TRUE(plot.gapsShown().empty());
 }
 
+// Issue 52: a probe away longer than the window came back with no grey
+// band until the view was panned.
+TEST(LivePlotWidget, AGapLongerThanTheWindowIsShownUpToItsLeftEdge)
+{
+    auto buffer = std::make_shared<core::LiveBuffer>(2, 20000);
+    fill(*buffer, 0.0, 4.0);
+    fill(*buffer, 30.0, 33.0);  // 26 s away; the window is 10 s
+    ui::LivePlotWidget plot;
+    plot.resize(900, 600);
+    plot.show();
+    plot.setWindowLength(10.0);
+    plot.setSource(buffer, kChannels, 500.0);
+    ASSERT_TRUE(waitFor([&] { return plot.samplesReceived() == 3500u && plot.drawnPointCount(0) > 0; }, 2000));
+    tactiscope::testing::runEventLoopFor(100);
+    ASSERT_EQ(plot.gapsShown().size(), 1u);
+    EXPECT_NEAR(plot.gapsShown()[0].from_s, 33.0 - 10.0, 0.02);
+    EXPECT_NEAR(plot.gapsShown()[0].to_s, 30.0, 0.02);
+}
+
 TEST(LivePlotWidget, CountsSamplesItMissedWhenTheBufferOverran)
 {
     auto buffer = std::make_shared<core::LiveBuffer>(2, 100);
