@@ -138,7 +138,8 @@ void MainWindow::buildFrame()
     sessionToolBar->setObjectName(QStringLiteral("sessionToolBar"));
     sessionToolBar->setMovable(false);
     sessionToolBar->addWidget(m_sessionBar);
-    m_deviceDock = addDock(this, tr("Device"), QStringLiteral("deviceDock"), m_devicePanel, Qt::LeftDockWidgetArea);
+    m_deviceDock = addDock(this, tr("Device"), QStringLiteral("deviceDock"), scrollingPanel(m_devicePanel),
+                           Qt::LeftDockWidgetArea);
     m_deviceDock->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable);
     resizeDocks({m_deviceDock}, {290}, Qt::Horizontal);
     m_xyPlot = new XYPlotWidget(this);

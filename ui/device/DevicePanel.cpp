@@ -22,6 +22,7 @@
 #include <QLineEdit>
 #include <QLocale>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -146,9 +147,15 @@ DevicePanel::DevicePanel(QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(6, 6, 6, 6);
     m_roles = new ChannelRolesBox(this);
-    layout->addWidget(sourcesBox, 1);
+    // The sources keep their height and the hint room for three lines:
+    // the Port field stays where it is as the channel roles come and go
+    // and the hint changes. Spare height goes below the counters.
+    m_hint->setMinimumHeight(3 * m_hint->fontMetrics().lineSpacing());
+    m_hint->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    layout->addWidget(sourcesBox);
     layout->addWidget(m_roles);
     layout->addWidget(countersBox);
+    layout->addStretch(1);
 
     connect(refreshButton, &QPushButton::clicked, this, &DevicePanel::refresh);
     connect(m_sources, &QTreeWidget::currentItemChanged, this, &DevicePanel::selectionChanged);
@@ -387,6 +394,17 @@ void DevicePanel::showCounters(const LinkCounters& counters)
     m_crc->setStyleSheet(decoder && decoder->crcErrors > 0 ? QStringLiteral("color: #c62828;") : QString());
     m_resyncs->setText(decoder ? count(decoder->resyncs) : tr("—"));
     m_reconnections->setText(count(counters.reconnections));
+}
+
+QWidget* scrollingPanel(DevicePanel* panel)
+{
+    auto* scroll = new QScrollArea(panel->parentWidget());
+    scroll->setObjectName(QStringLiteral("devicePanelScroll"));
+    scroll->setWidget(panel);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    return scroll;
 }
 
 }  // namespace tactiscope::ui

@@ -121,4 +121,9 @@ private:
     bool m_connected = false;
 };
 
+// The panel in a scroll area for its dock: on a short screen it scrolls
+// rather than squeezes, so its Port field stays put as the channel roles
+// and the link's name below it come and go.
+QWidget* scrollingPanel(DevicePanel* panel);
+
 }  // namespace tactiscope::ui

@@ -246,6 +246,9 @@ TEST(DevicePanel, TheEmulatorChosenInThePanelStreamsThroughAPtyWithItsCounters)
     child<QComboBox>(window, "protocolBox")->setCurrentIndex(1);
     tree->setCurrentItem(emulator);
     EXPECT_EQ(child<QComboBox>(window, "protocolBox")->currentIndex(), 0);
+    // The Port field stays put as the device's channel roles appear below.
+    auto* path = child<QLineEdit>(window, "pathEdit");
+    const QPoint portBefore = path->mapTo(&window, QPoint(0, 0));
     QTest::mouseClick(child<QPushButton>(window, "connectButton"), Qt::LeftButton);
     ASSERT_TRUE(waitFor([&] { return window.station().isConnected(); }, 6000));
     EXPECT_TRUE(window.windowTitle().contains(QStringLiteral("EMU-")));  // the firmware's answer over the pty
@@ -259,6 +262,7 @@ TEST(DevicePanel, TheEmulatorChosenInThePanelStreamsThroughAPtyWithItsCounters)
         [&] { return child<QLabel>(window, "rateLabel")->text().contains(QStringLiteral(" Hz (nominal 1,000 Hz)")); },
         3000))
         << child<QLabel>(window, "rateLabel")->text().toStdString();
+    EXPECT_EQ(path->mapTo(&window, QPoint(0, 0)), portBefore);
     EXPECT_FALSE(saveScreenshot(window, QStringLiteral("device-panel")).isEmpty());
 
     QTest::mouseClick(child<QPushButton>(window, "disconnectButton"), Qt::LeftButton);
