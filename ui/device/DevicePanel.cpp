@@ -23,6 +23,7 @@
 #include <QLocale>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QStyle>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -404,6 +405,10 @@ QWidget* scrollingPanel(DevicePanel* panel)
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    // As wide as the panel needs beside a vertical scroll bar: it only ever
+    // scrolls up and down.
+    scroll->setMinimumWidth(panel->minimumSizeHint().width() +
+                            scroll->style()->pixelMetric(QStyle::PM_ScrollBarExtent) + 2);
     return scroll;
 }
 
