@@ -10,6 +10,7 @@
 #include "core/storage/SessionStore.h"
 #include "support/DamagedStore.h"
 #include "support/MainWindowHelpers.h"
+#include "support/ReadyToRecord.h"
 #include "support/Screenshot.h"
 #include "support/WaitFor.h"
 #include "ui/MainWindow.h"
@@ -234,10 +235,7 @@ TEST(Recording, QuittingWhileRecordingAsksFirstAndStoppingGoesThroughTheVerdict)
     // nobody confirmed.
     QTemporaryDir dir;
     ui::MainWindow window;
-    window.setStorePath(dir.filePath("s.tactiscope"));
-    window.station().connectSource(liveSimulator());
-    window.show();
-    QTest::keyClicks(child<QLineEdit>(window, "operatorEdit"), QStringLiteral("Ada"));
+    tactiscope::testing::readyToRecord(window, dir.filePath("s.tactiscope"));
     ASSERT_TRUE(window.startRecording());
     runEventLoopFor(500);
 

@@ -11,6 +11,7 @@
 #include "devices/session/modes/PanelScanUnit.h"
 #include "support/LiveUnit.h"
 #include "support/MainWindowHelpers.h"
+#include "support/ReadyToRecord.h"
 #include "support/Screenshot.h"
 #include "support/WaitFor.h"
 #include "ui/MainWindow.h"
@@ -169,10 +170,7 @@ TEST(PanelScanView, APanelRecordedTooShortToJudgeIsSaidSoAndNotAskedAbout)
 {
     QTemporaryDir dir;
     ui::MainWindow window;
-    window.setStorePath(dir.filePath("s.tactiscope"));
-    window.station().connectSource(liveSimulator());
-    window.show();
-    QTest::keyClicks(child<QLineEdit>(window, "operatorEdit"), QStringLiteral("Ada"));
+    tactiscope::testing::readyToRecord(window, dir.filePath("s.tactiscope"));
     runEventLoopFor(300);
     ASSERT_TRUE(window.startRecording());
     window.stopRecording();
