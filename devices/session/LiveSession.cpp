@@ -304,7 +304,15 @@ RecordingSummary LiveSession::finishRecording()
     storeClockMapping();
     summary.session = m_recorder->sessionId();
     summary.end_s = m_recorder->sessionTime_s();
-    const bool whole = !summary.lostAt_s && summary.stoppedBecause.empty();
+    // Past a critical limit the probe's readings stop being true (its
+    // limits say so): a recording that went there, as one stopped on a
+    // critical alarm mid-stroke did, is not judged automatically.
+    const bool pastCritical = std::exchange(m_criticalWhileRecording, false) ||
+                              std::ranges::any_of(m_raisedAlarms, [](const LimitAlarm& alarm) {
+                                  return alarm.change.severity == core::trigger::LimitSeverity::Critical;
+                              });
+    if (pastCritical) summary.notJudged = "not judged: it went past a critical limit";
+    const bool whole = !summary.lostAt_s && summary.stoppedBecause.empty() && !pastCritical;
     std::optional<core::storage::VerdictDecision> decision;
     if (auto* unit = unitOf(m_metadata.mode)) decision = unit->finishRecording(summary, whole);
     summary.stats = m_recorder->finish(core::SessionStatus::Complete, decision);

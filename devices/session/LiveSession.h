@@ -308,6 +308,9 @@ private:
     std::vector<core::sensors::SensorLimit> m_effectiveLimits;
     std::vector<LimitAlarm> m_alarmsTold;
     std::vector<LimitAlarm> m_raisedAlarms;  // as raised: stream times
+    // A critical alarm was raised while recording (or is raised at its
+    // end): its readings were not true for a while, so it is not judged.
+    bool m_criticalWhileRecording = false;
     // Alarms that ended while the trigger was armed and nothing recorded:
     // a session it starts next may reach back over them (stream times).
     struct ClosedAlarm {

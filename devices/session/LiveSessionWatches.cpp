@@ -182,6 +182,8 @@ void LiveSession::takeLimitAlarms()
             return raised.change.severity == alarm.change.severity && raised.limit.text() == alarm.limit.text();
         };
         if (alarm.change.raised) {
+            if (m_recorder && alarm.change.severity == core::trigger::LimitSeverity::Critical)
+                m_criticalWhileRecording = true;
             m_raisedAlarms.push_back(alarm);
         } else if (const auto raised = std::ranges::find_if(m_raisedAlarms, same); raised != m_raisedAlarms.end()) {
             if (m_recorder)

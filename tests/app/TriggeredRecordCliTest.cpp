@@ -171,6 +171,28 @@ TEST(TriggeredRecordCli, AnOverloadedCapacitiveBeamWarnsThenIsCriticalAndStopOnC
 // creeping 1 % with τ = 4 s, sampled at 10 Hz): the force first exceeds
 // 0.3 mN at 3.6 s and 0.5 mN at 4.6 s, and on the way down falls below
 // 0.49 mN (0.5 mN less 2 %) at 14.6 s and 0.294 mN at 15.6 s.
+// Issue 52 (fresh eyes): a panel scan stopped on a critical alarm mid-stroke
+// was stored "pass": past a critical limit the readings are not true, so
+// it is not judged, and says why.
+TEST(TriggeredRecordCli, APanelStoppedOnACriticalAlarmIsNotJudged)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath("line.tactiscope");
+    const auto result = recordEmulated(dir.path(), db, QStringLiteral("panel-line"), 12,
+                                       {"--limit", "a>warning:15e-6,critical:24e-6", "--stop-on", "critical"});
+    EXPECT_EQ(result.exitCode, 1) << result.err.toStdString();
+    ASSERT_TRUE(result.err.contains(QStringLiteral("stopped on a critical alarm"))) << result.err.toStdString();
+    EXPECT_TRUE(result.out.contains(QStringLiteral("not judged: it went past a critical limit")))
+        << result.out.toStdString();
+    const auto id = tactiscope::testing::sessionIdIn(result.out);
+    ASSERT_GT(id, 0) << result.out.toStdString();
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto session = store.session(id);
+    ASSERT_TRUE(session);
+    EXPECT_EQ(session->status, core::SessionStatus::Complete);
+    EXPECT_FALSE(session->verdict.has_value());
+}
+
 TEST(TriggeredRecordCli, AWindowLimitReplacesTheBeamsOwnAndSpansItsExcursion)
 {
     QTemporaryDir dir;
