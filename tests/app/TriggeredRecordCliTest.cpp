@@ -23,12 +23,32 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 
 using namespace tactiscope;
 using tactiscope::testing::recordEmulated;
 using tactiscope::testing::runCli;
 
 namespace {
+
+// The session a record stopped on a critical alarm kept, stored complete:
+// exit 1, and both said.
+std::optional<core::storage::SessionSummary> keptOnCritical(const tactiscope::testing::CliResult& result,
+                                                            const QString& db)
+{
+    EXPECT_EQ(result.exitCode, 1) << result.err.toStdString();
+    EXPECT_TRUE(result.err.contains(QStringLiteral("stopped on a critical alarm at "))) << result.err.toStdString();
+    EXPECT_TRUE(result.err.contains(QStringLiteral("the recording was kept"))) << result.err.toStdString();
+    const auto id = tactiscope::testing::sessionIdIn(result.out);
+    if (id <= 0) {
+        ADD_FAILURE() << "no session in: " << result.out.toStdString();
+        return std::nullopt;
+    }
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    auto session = store.session(id);
+    EXPECT_TRUE(session && session->status == core::SessionStatus::Complete) << "session " << id;
+    return session;
+}
 
 std::vector<core::storage::SessionEvent> eventsOfKind(core::storage::SessionStore& store, std::int64_t session,
                                                       core::EventKind kind)
@@ -134,20 +154,14 @@ TEST(TriggeredRecordCli, AnOverloadedCapacitiveBeamWarnsThenIsCriticalAndStopOnC
     const QString db = dir.filePath("beam.tactiscope");
     const auto result =
         recordEmulated(dir.path(), db, QStringLiteral("capacitive-overload"), 30, {"--stop-on", "critical"});
-    EXPECT_EQ(result.exitCode, 1) << result.err.toStdString();
     const auto warning = result.err.indexOf(QStringLiteral("warning: force above its warning limit 0.000597 N"));
     const auto critical = result.err.indexOf(QStringLiteral("critical: force above its critical limit 0.000956 N"));
     ASSERT_GE(warning, 0) << result.err.toStdString();
     ASSERT_GT(critical, warning) << result.err.toStdString();
-    EXPECT_TRUE(result.err.contains(QStringLiteral("stopped on a critical alarm at ")));
-    EXPECT_TRUE(result.err.contains(QStringLiteral("the recording was kept")));
-    const auto id = tactiscope::testing::sessionIdIn(result.out);
-    ASSERT_GT(id, 0) << result.out.toStdString();
-
-    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
-    const auto session = store.session(id);
+    const auto session = keptOnCritical(result, db);
     ASSERT_TRUE(session);
-    EXPECT_EQ(session->status, core::SessionStatus::Complete);
+    const auto id = session->id;
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
     // Stopped shortly after the critical alarm, not at --seconds.
     EXPECT_LT(session->duration_s(), 9.0);
     EXPECT_GT(session->duration_s(), 7.0);
@@ -180,16 +194,10 @@ TEST(TriggeredRecordCli, APanelStoppedOnACriticalAlarmIsNotJudged)
     const QString db = dir.filePath("line.tactiscope");
     const auto result = recordEmulated(dir.path(), db, QStringLiteral("panel-line"), 12,
                                        {"--limit", "a>warning:15e-6,critical:24e-6", "--stop-on", "critical"});
-    EXPECT_EQ(result.exitCode, 1) << result.err.toStdString();
-    ASSERT_TRUE(result.err.contains(QStringLiteral("stopped on a critical alarm"))) << result.err.toStdString();
     EXPECT_TRUE(result.out.contains(QStringLiteral("not judged: it went past a critical limit")))
         << result.out.toStdString();
-    const auto id = tactiscope::testing::sessionIdIn(result.out);
-    ASSERT_GT(id, 0) << result.out.toStdString();
-    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
-    const auto session = store.session(id);
+    const auto session = keptOnCritical(result, db);
     ASSERT_TRUE(session);
-    EXPECT_EQ(session->status, core::SessionStatus::Complete);
     EXPECT_FALSE(session->verdict.has_value());
 }
 
