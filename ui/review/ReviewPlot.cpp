@@ -41,16 +41,18 @@ void placeInLane(QCPItemPosition* position, QCPAxisRect* rect, double time_s, do
 
 // A readout value with the decimals of five significant digits at
 // `magnitude` (display units), so a stretch's minimum and maximum match.
-// A lane's axis title that fits beside it: a part's device on a line of
-// its own ("beam" over "Deflection" over "(mm)"), each line elided to the
-// lane's height, so no title runs into the next lane's (issue 52).
-QString fittedLaneLabel(const DisplayUnit& unit, const QFont& font, int height_px)
+// A lane's axis title that fits beside it: a part's device (its lane's,
+// which leads its quantity as "DEVICE/") on a line of its own ("beam" over
+// "Deflection" over "(mm)"), each line elided to the lane's height, so no
+// title runs into the next lane's (issue 52).
+QString fittedLaneLabel(DisplayUnit unit, const std::string& device, const QFont& font, int height_px)
 {
-    QStringList lines = laneLabel(unit).split(QLatin1Char('\n'));
-    if (const auto slash = lines.front().indexOf(QLatin1Char('/')); slash > 0) {
-        lines.insert(1, lines.front().mid(slash + 1));
-        lines.front().truncate(slash);
+    QStringList lines;
+    if (!device.empty()) {
+        lines << QString::fromStdString(device);
+        unit.quantity.remove(0, static_cast<qsizetype>(device.size()) + 1);
     }
+    lines << laneLabel(unit).split(QLatin1Char('\n'));
     const QFontMetrics metrics(font);
     for (QString& line : lines) line = metrics.elidedText(line, Qt::ElideRight, std::max(height_px - 4, 12));
     return lines.join(QLatin1Char('\n'));
@@ -361,7 +363,7 @@ void ReviewPlot::reload()
         QCPGraph* graph = m_graphs[c];
         graph->setData(keys, values, true);
         QCPAxis* axis = graph->valueAxis();
-        axis->setLabel(fittedLaneLabel(unit, axis->labelFont(), axis->axisRect()->height()));
+        axis->setLabel(fittedLaneLabel(unit, m_lanes.devices[c], axis->labelFont(), axis->axisRect()->height()));
         const bool dots = window.exact && static_cast<double>(window.t_s.size()) * 6.0 < static_cast<double>(pixels);
         graph->setScatterStyle(dots ? QCPScatterStyle(QCPScatterStyle::ssDisc, 4) : QCPScatterStyle());
         bool found = false;
