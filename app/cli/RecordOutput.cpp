@@ -41,6 +41,16 @@ std::map<std::int64_t, std::uint64_t> storedLosses(const std::string& db, const 
     return lost;
 }
 
+// "2 channels at 500 Hz", "1 channel at 10 Hz".
+QString channelsAt(const devices::session::LiveSession& live)
+{
+    const std::size_t n = live.channels().size();
+    return QStringLiteral("%1 %2 at %3 Hz")
+        .arg(n)
+        .arg(n == 1 ? QStringLiteral("channel") : QStringLiteral("channels"))
+        .arg(QLocale::c().toString(live.source().nominalSampleRate_hz()));
+}
+
 }  // namespace
 
 RecordOutput::RecordOutput(std::string db, const devices::session::LivePipeline& pipeline,
@@ -60,7 +70,7 @@ void RecordOutput::tell(const devices::session::PipelineNews& news)
         printError(QStringLiteral("%1at %2 s: %3").arg(from(device), at(notice.time_s), toQString(notice.text)));
     for (const auto& [device, alarm] : news.alarms) {
         const QString severity = QString::fromLatin1(core::trigger::toString(alarm.change.severity));
-        const QString text = toQString(alarm.text());
+        const QString text = toQString(m_pipeline.device(deviceIndex(device)).readableText(alarm));
         printError(alarm.change.raised
                        ? QStringLiteral("%1at %2 s: %3: %4").arg(from(device), at(alarm.time_s), severity, text)
                        : QStringLiteral("%1at %2 s: cleared: %3").arg(from(device), at(alarm.time_s), text));
@@ -129,10 +139,8 @@ void RecordOutput::reportOne(const devices::session::RecordingEnd& end)
                                         : live.stats().samplesLost + written.samplesDropped + summary.samplesLostAtEnd;
     QTextStream(stdout) << "Recorded session " << summary.session << ": " << written.samplesWritten
                         << " samples per channel, " << lostCount << " lost, "
-                        << live.source().decoderCounters().crcErrors << " CRC errors (" << live.channels().size()
-                        << " channels at " << QLocale::c().toString(live.source().nominalSampleRate_hz())
-                        << " Hz, into " << toQString(m_db) << "); "
-                        << toQString(core::toString(live.recordingMetadata().mode)) << ": "
+                        << live.source().decoderCounters().crcErrors << " CRC errors (" << channelsAt(live) << ", into "
+                        << toQString(m_db) << "); " << toQString(core::toString(live.recordingMetadata().mode)) << ": "
                         << toQString(summary.analysis) << Qt::endl;
     tellEndProblem({}, summary);
 }
@@ -167,8 +175,7 @@ void RecordOutput::reportSeveral(const devices::session::RecordingEnd& end)
         out << "  " << toQString(name) << " (session " << summary.session << "): " << summary.stats.samplesWritten
             << " samples per channel, "
             << (lost.contains(summary.session) ? lost.at(summary.session) : live.stats().samplesLost) << " lost, "
-            << live.source().decoderCounters().crcErrors << " CRC errors (" << live.channels().size() << " channels at "
-            << QLocale::c().toString(live.source().nominalSampleRate_hz()) << " Hz); "
+            << live.source().decoderCounters().crcErrors << " CRC errors (" << channelsAt(live) << "); "
             << toQString(core::toString(live.recordingMetadata().mode)) << ": " << toQString(summary.analysis)
             << "; clock: " << toQString(core::timing::clockMappingText(clock != stored.end() ? clock->clockJson : ""))
             << Qt::endl;

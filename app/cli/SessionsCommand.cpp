@@ -85,6 +85,24 @@ int list(SessionSource& store, const core::storage::SessionFilter& filter, bool 
     return kExitOk;
 }
 
+std::size_t eventCount(SessionSource& store, std::int64_t id)
+{
+    std::size_t count = 0;
+    for (const auto& analysis : store.analyses(id)) count += store.events(id, analysis).size();
+    return count;
+}
+
+// A session's events by the analysis that found them: "8 live, 3 offline",
+// or "none".
+std::string eventsText(SessionSource& store, std::int64_t id)
+{
+    QStringList analyses;
+    for (const auto& analysis : store.analyses(id))
+        if (const auto count = store.events(id, analysis).size(); count > 0)
+            analyses << QStringLiteral("%1 %2").arg(count).arg(toQString(analysis));
+    return analyses.isEmpty() ? std::string("none") : analyses.join(QStringLiteral(", ")).toStdString();
+}
+
 int show(SessionSource& store, std::int64_t id, bool json)
 {
     if (json) {
@@ -133,6 +151,7 @@ int show(SessionSource& store, std::int64_t id, bool json)
     };
     const auto parts = store.parts(id);
     if (parts.empty()) device(s.metadata, id);
+    std::size_t partEvents = 0;
     line("recorded by", "Tactiscope " + s.appVersion);
     for (const auto& part : parts) {
         out << '\n';
@@ -141,18 +160,14 @@ int show(SessionSource& store, std::int64_t id, bool json)
         const auto own = store.session(part.id);
         if (own) device(own->metadata, part.id);
         line("clock", core::timing::clockMappingText(part.clockJson));
-        QStringList partAnalyses;
-        for (const auto& analysis : store.analyses(part.id))
-            partAnalyses
-                << QStringLiteral("%1 %2").arg(store.events(part.id, analysis).size()).arg(toQString(analysis));
-        line("events", partAnalyses.join(QStringLiteral(", ")).toStdString());
+        line("events", eventsText(store, part.id));
         line("readings", std::to_string(store.readings(part.id).size()));
+        partEvents += eventCount(store, part.id);
     }
     if (!parts.empty()) out << '\n';
-    QStringList analyses;
-    for (const auto& analysis : store.analyses(id))
-        analyses << QStringLiteral("%1 %2").arg(store.events(id, analysis).size()).arg(toQString(analysis));
-    line("events", analyses.join(QStringLiteral(", ")).toStdString());
+    // A session of several devices keeps its events in its parts.
+    line("events", parts.empty() ? eventsText(store, id)
+                                 : std::to_string(eventCount(store, id) + partEvents) + " with its parts'");
     line("readings", std::to_string(store.readings(id).size()));
     line("annotations", std::to_string(store.annotations(id).size()));
     return kExitOk;

@@ -23,12 +23,32 @@ UtcParts partsOf(const std::string& utc)
     return {utc.substr(0, 10), utc.substr(11, 5)};
 }
 
+// A session of several devices is decided by its parts: the worst of their
+// verdicts, each named by its device.
+std::string partsBasisText(const nlohmann::json& basis)
+{
+    std::ostringstream text;
+    text << "the worst of its parts'";
+    const auto parts = basis.find("parts");
+    if (parts == basis.end() || !parts->is_array()) return text.str();
+    const char* separator = ": ";
+    for (const auto& part : *parts) {
+        if (!part.is_object() || !part.value("device", nlohmann::json()).is_string() ||
+            !part.value("verdict", nlohmann::json()).is_string())
+            continue;
+        text << separator << part["device"].get<std::string>() << " " << part["verdict"].get<std::string>();
+        separator = ", ";
+    }
+    return text.str();
+}
+
 }  // namespace
 
 std::string basisText(const std::string& basisJson)
 {
     const auto basis = nlohmann::json::parse(basisJson, nullptr, false);
     if (!basis.is_object() || !basis.contains("analysis") || !basis["analysis"].is_string()) return {};
+    if (basis["analysis"] == "parts") return partsBasisText(basis);
     const auto count = [&](const char* key) {
         return basis.contains(key) && basis[key].is_number_unsigned() ? basis[key].get<std::size_t>() : 0;
     };

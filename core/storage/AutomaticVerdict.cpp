@@ -59,7 +59,6 @@ std::optional<VerdictDecision> partsDecision(std::span<const SessionSummary> par
     VerdictDecision decision;
     decision.role = VerdictRole::Automatic;
     decision.verdict = *decided->verdict;
-    decision.note = "the worst of its devices' verdicts: " + decided->metadata.deviceName + "'s";
     decision.basisJson = basis.dump();
     return decision;
 }

@@ -226,7 +226,10 @@ LimitWatch::LimitWatch(LimitSpec spec, double sampleRate_hz)
         throw std::invalid_argument("limit: the hold time must be 0 s or more");
     if (!(std::isfinite(m_spec.hysteresis_fraction) && m_spec.hysteresis_fraction >= 0.0))
         throw std::invalid_argument("limit: the hysteresis must be 0 or more");
+    if (!(std::isfinite(m_spec.clear_s) && m_spec.clear_s >= 0.0))
+        throw std::invalid_argument("limit: the clear time must be 0 s or more");
     m_hold = static_cast<std::uint64_t>(std::llround(m_spec.hold_s * sampleRate_hz));
+    m_clear = static_cast<std::uint64_t>(std::llround(m_spec.clear_s * sampleRate_hz));
     constexpr double infinity = std::numeric_limits<double>::infinity();
     for (int s = 0; s < 2; ++s) {
         const auto& at = m_spec.level(static_cast<LimitSeverity>(s));
@@ -273,9 +276,16 @@ void LimitWatch::push(std::uint64_t index, double value, std::vector<LimitChange
                 l.beyondSince.reset();
                 changes.push_back({severity, true, index, value});
             }
-        } else if (back(l, value)) {
-            l.raised = false;
-            changes.push_back({severity, false, index, value});
+        } else if (!back(l, value)) {
+            l.backSince.reset();
+        } else {
+            if (!l.backSince) l.backSince = index;
+            // Cleared once back for the clear time, as raised after the hold.
+            if (index + 1 - *l.backSince > m_clear) {
+                l.raised = false;
+                l.backSince.reset();
+                changes.push_back({severity, false, index, value});
+            }
         }
     }
 }

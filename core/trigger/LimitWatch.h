@@ -1,8 +1,8 @@
 // Limit alarms on one channel or derived quantity (issue 39): a warning and
 // a critical level, or a window for each, beyond which the value must stay
-// for a hold time to raise its alarm, and back by a hysteresis to clear it,
-// so noise at a level does not chatter. The rules live below the UI: the
-// CLI (`record --limit`) and the GUI share them.
+// for a hold time to raise its alarm, and back by a hysteresis for a clear
+// time (0.1 s) to clear it, so noise at a level does not chatter. The rules
+// live below the UI: the CLI (`record --limit`) and the GUI share them.
 //   force>warning:0.002,critical:0.003    above: 2 mN warns, 3 mN is critical
 //   a<warning:-8e-4,critical:-1e-3         below
 //   force>critical:0.003,hold:0.2          beyond it for 0.2 s before it is raised
@@ -56,10 +56,13 @@ struct LimitSpec {
     LimitSide side = LimitSide::Above;
     std::optional<LimitLevel> warning, critical;
     // Back past a level by this much clears its alarm (a fraction of the
-    // level's size, a window's larger end; by default 2 %); beyond it this
-    // long raises it.
+    // level's size, a window's larger end; by default 2 %) once it stays
+    // back for clear_s; beyond it for hold_s raises it. The clear time
+    // keeps noise spikes across a level from raising and clearing dozens of
+    // times a second when the noise is larger than the hysteresis.
     double hysteresis_fraction = 0.02;
     double hold_s = 0.0;
+    double clear_s = 0.1;
 
     const std::optional<LimitLevel>& level(LimitSeverity severity) const
     {
@@ -131,12 +134,14 @@ private:
         double hysteresis = 0.0;
         bool raised = false;
         std::optional<std::uint64_t> beyondSince;  // first sample of the current run beyond the level
+        std::optional<std::uint64_t> backSince;    // first sample of the current run back, raised
     };
     bool beyond(const Level& level, double value) const;
     bool back(const Level& level, double value) const;
 
     LimitSpec m_spec;
     std::uint64_t m_hold;
+    std::uint64_t m_clear;
     Level m_level[2];
 };
 

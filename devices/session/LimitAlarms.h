@@ -23,9 +23,6 @@ struct LimitAlarm {
     std::string unit;
     core::trigger::LimitChange change;
     double time_s = 0.0;
-
-    // "force above its critical limit 0.003 N (0.0031 N)".
-    std::string text() const { return change.text(limit, unit); }
 };
 
 class LimitAlarms final : public core::BlockSink {

@@ -234,6 +234,9 @@ public:
     // What a trigger or limit may watch: the device's channels, then the
     // current mode's quantities, each with its SI unit and kind.
     std::vector<core::ChannelDescriptor> watchableQuantities() const;
+    // An alarm as people read it and the recording keeps it: "a above its
+    // warning limit 20 µε (22.2 µε)", "force … 956 µN (978 µN)".
+    std::string readableText(const LimitAlarm& alarm) const;
 
     // The owner's periodic call: takes the processors' completed defects and
     // presses into the lists below and, while recording, into the store.

@@ -217,15 +217,19 @@ void LiveSession::storeAlarm(const LimitAlarm& raised, double end_s)
     if (!m_recorder->acquisitionOrigin_s()) return;  // before the first sample there is nothing to mark
     const double start_s = std::max(0.0, m_recorder->sessionTimeOf(raised.time_s));
     if (start_s > end_s) return;  // raised after the recording's last sample
-    // Worded as people read it (956 µN, 20 µε); the limit as it was given.
+    // The limit as it was given, besides.
+    m_recorder->addEvents(
+        {core::storage::alarmRecord(start_s, end_s, readableText(raised) + "; limit " + raised.limit.text())});
+}
+
+std::string LiveSession::readableText(const LimitAlarm& alarm) const
+{
     const auto watchable = watchableQuantities();
-    const auto quantity = std::ranges::find(watchable, raised.limit.quantity, &core::ChannelDescriptor::name);
-    const auto level = raised.limit.level(raised.change.severity).value_or(core::trigger::LimitLevel());
-    const auto wording =
-        core::trigger::readableWording(quantity != watchable.end() ? quantity->kind : core::ChannelKind::Other,
-                                       raised.unit, std::max(std::abs(level.low), std::abs(level.high)));
-    m_recorder->addEvents({core::storage::alarmRecord(
-        start_s, end_s, raised.change.text(raised.limit, wording) + "; limit " + raised.limit.text())});
+    const auto quantity = std::ranges::find(watchable, alarm.limit.quantity, &core::ChannelDescriptor::name);
+    const auto level = alarm.limit.level(alarm.change.severity).value_or(core::trigger::LimitLevel());
+    return alarm.change.text(alarm.limit, core::trigger::readableWording(
+                                              quantity != watchable.end() ? quantity->kind : core::ChannelKind::Other,
+                                              alarm.unit, std::max(std::abs(level.low), std::abs(level.high))));
 }
 
 }  // namespace tactiscope::devices::session

@@ -181,6 +181,14 @@ TEST(DevicesSessionCli, TwoProbesOnTheirOwnClocksMarkOneInstantWithinATenthOfAMi
         shown.out.contains(QRegularExpression(QStringLiteral("clock +\\+?-?[0-9.]+ s at the start ± [0-9.]+ ms, "
                                                              "[0-9.]+ ± [0-9.]+ ppm slow"))))
         << shown.out.toStdString();
+    // Its verdict is said as its parts' verdicts, and its events are theirs.
+    EXPECT_TRUE(shown.out.contains(QStringLiteral("(the worst of its parts': a "))) << shown.out.toStdString();
+    int partEvents = 0;
+    for (const auto& m : QRegularExpression(QStringLiteral("\nevents +([0-9]+) live\n")).globalMatch(shown.out))
+        partEvents += m.captured(1).toInt();
+    EXPECT_GT(partEvents, 0);
+    EXPECT_TRUE(shown.out.contains(QStringLiteral("events            %1 with its parts'").arg(partEvents)))
+        << shown.out.toStdString();
 }
 
 // A probe that goes while the other records on: a gap at the end of its

@@ -131,6 +131,12 @@ TEST(PartsVerdict, TheWorstPartDecidesAndAnUnjudgedPartLeavesAPassOpen)
     EXPECT_EQ(basis["decided_by_part"], "right");
     EXPECT_EQ(basis["part_session"], 3);
     EXPECT_EQ(basis["parts"].size(), 2u);
+    // Said as its parts' verdicts, not as a detector that found nothing.
+    const std::vector<VerdictDecision> trail{*decision};
+    EXPECT_EQ(report::verdictTrailLines(trail).front().rfind(
+                  "automatic: defects found (the worst of its parts': left pass, right defects found), ", 0),
+              0u)
+        << report::verdictTrailLines(trail).front();
 
     const std::vector<SessionSummary> passing{part(2, "left", Mode::PanelScan, Verdict::Pass),
                                               part(4, "cell", Mode::General, std::nullopt)};

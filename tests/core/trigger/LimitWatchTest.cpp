@@ -1,6 +1,7 @@
 // Limit alarms (issue 39): the limit's words, a hold time that must pass
 // beyond a level before its alarm, and a hysteresis that keeps noise at the
-// level from chattering. 100 Hz streams: 0.1 s is 10 samples.
+// level from chattering, and a clear time (0.1 s) it must stay back for.
+// 100 Hz streams: 0.1 s is 10 samples.
 #include "core/trigger/LimitWatch.h"
 
 #include <gtest/gtest.h>
@@ -60,18 +61,18 @@ TEST(LimitWatch, NoiseAtTheLevelRaisesOnceAndClearsOnlyPastTheHysteresis)
 {
     // A level of 1 (hysteresis 2 %, 0.02): the value crosses to 1.005 and then
     // wanders ±0.015 around 1 for 200 samples (inside the band): one alarm, no
-    // clear; then it drops to 0.97, past the band: cleared there.
+    // clear; then it drops to 0.97, past the band, at 251: cleared 0.1 s later.
     LimitWatch watch(spec("x>warning:1"), 100.0);
     std::vector<double> v(50, 0.5);
     v.push_back(1.005);
     for (int i = 0; i < 200; ++i) v.push_back(1.0 + 0.015 * std::sin(0.7 * i));
-    v.push_back(0.97);
+    v.insert(v.end(), 11, 0.97);
     const auto changes = run(watch, v);
     ASSERT_EQ(changes.size(), 2U);
     EXPECT_TRUE(changes[0].raised);
     EXPECT_EQ(changes[0].index, 50U);
     EXPECT_FALSE(changes[1].raised);
-    EXPECT_EQ(changes[1].index, 251U);
+    EXPECT_EQ(changes[1].index, 261U);
     EXPECT_EQ(changes[0].text(watch.spec()), "x above its warning limit 1 (1.005)");
 }
 
@@ -102,18 +103,22 @@ TEST(LimitWatch, WarningThenCriticalOnTheWayUpAndTheOtherWayDownBelowToo)
     EXPECT_EQ(changes[0].index, 21U);
     EXPECT_EQ(changes[1].severity, LimitSeverity::Critical);  // past 3 at 3.1
     EXPECT_EQ(changes[1].index, 31U);
-    EXPECT_FALSE(changes[2].raised);  // back below 3 − 0.06 at 2.9
+    EXPECT_FALSE(changes[2].raised);  // back below 3 − 0.06 at 2.9 (index 52), for 0.1 s
     EXPECT_EQ(changes[2].severity, LimitSeverity::Critical);
-    EXPECT_FALSE(changes[3].raised);  // and below 2 − 0.04 at 1.9
+    EXPECT_EQ(changes[2].index, 62U);
+    EXPECT_FALSE(changes[3].raised);  // and below 2 − 0.04 at 1.9 (index 62), for 0.1 s
     EXPECT_EQ(changes[3].severity, LimitSeverity::Warning);
+    EXPECT_EQ(changes[3].index, 72U);
 
     LimitWatch down(spec("a<warning:-1"), 100.0);
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    const auto below = run(down, {0.0, nan, -1.5, nan, -0.5});
+    std::vector<double> dip{0.0, nan, -1.5, nan};
+    dip.insert(dip.end(), 11, -0.5);  // back from index 4
+    const auto below = run(down, dip);
     ASSERT_EQ(below.size(), 2U);
     EXPECT_EQ(below[0].index, 2U);  // a lost sample changes nothing
     EXPECT_FALSE(below[1].raised);
-    EXPECT_EQ(below[1].index, 4U);
+    EXPECT_EQ(below[1].index, 14U);
 }
 
 // Windows (issue 39: "above/below/inside/outside"): one limit for either
@@ -154,18 +159,18 @@ TEST(LimitWatch, OutsideAWindowIsWatchedAtBothEndsWithTheirHysteresis)
     std::vector<double> v(20, 0.0);
     v.push_back(1.005);
     for (int i = 0; i < 100; ++i) v.push_back(1.0 + 0.015 * std::sin(0.7 * i));
-    v.push_back(0.975);  // 121: back in by more than 0.02
+    v.push_back(0.975);  // 121: back in by more than 0.02, cleared 0.1 s later
     v.insert(v.end(), 20, 0.0);
     v.push_back(-1.005);  // 142
     for (int i = 0; i < 100; ++i) v.push_back(-1.0 + 0.015 * std::sin(0.7 * i));
-    v.push_back(-0.975);  // 243
+    v.insert(v.end(), 11, -0.975);  // 243
     const auto changes = run(watch, v);
     ASSERT_EQ(changes.size(), 4U);
     EXPECT_EQ(changes[0].index, 20U);
-    EXPECT_EQ(changes[1].index, 121U);
+    EXPECT_EQ(changes[1].index, 131U);
     EXPECT_FALSE(changes[1].raised);
     EXPECT_EQ(changes[2].index, 142U);
-    EXPECT_EQ(changes[3].index, 243U);
+    EXPECT_EQ(changes[3].index, 253U);
     EXPECT_EQ(changes[0].text(watch.spec(), "count"), "a outside its warning window -1..1 count (1.005 count)");
     EXPECT_EQ(changes[3].text(watch.spec()), "a back inside its warning window -1..1");
 }
@@ -174,20 +179,20 @@ TEST(LimitWatch, InsideAWindowHonoursTheHoldTime)
 {
     // A dead channel: C stuck within ±0.1 for more than 0.1 s (10 samples
     // at 100 Hz). Passing through is no alarm; dwelling is, at its 11th
-    // sample; it clears once 0.002 past either end.
+    // sample; it clears 0.1 s after it is 0.002 past either end.
     LimitWatch watch(spec("C inside critical:-0.1..0.1", 0.1), 100.0);
     std::vector<double> v;
     for (int i = 0; i < 30; ++i) v.push_back(1.0 - 0.1 * i);  // through the window in 1 sample steps of 0.1
     v.insert(v.end(), 15, 0.05);                              // 30…44 dwelling
     v.push_back(0.101);                                       // 45: out, but within the hysteresis
     v.push_back(0.05);                                        // 46
-    v.push_back(0.103);                                       // 47: out past it
+    v.insert(v.end(), 11, 0.103);                             // 47…: out past it
     const auto changes = run(watch, v);
     ASSERT_EQ(changes.size(), 2U);
     EXPECT_TRUE(changes[0].raised);
     EXPECT_EQ(changes[0].index, 40U);
     EXPECT_FALSE(changes[1].raised);
-    EXPECT_EQ(changes[1].index, 47U);
+    EXPECT_EQ(changes[1].index, 57U);
     EXPECT_EQ(changes[0].text(watch.spec()), "C inside its critical window -0.1..0.1 (0.05)");
     EXPECT_EQ(changes[1].text(watch.spec()), "C back outside its critical window -0.1..0.1");
 }
@@ -196,7 +201,9 @@ TEST(LimitWatch, ANarrowWindowStillLeavesRoomToComeBackTo)
 {
     // 0.99..1.0 is narrower than twice 2 % of 1: the hysteresis shrinks to a
     // quarter of the width (0.0025) so the alarm can clear at all.
-    LimitWatch watch(spec("x outside warning:0.99..1"), 100.0);
+    LimitSpec narrow = spec("x outside warning:0.99..1");
+    narrow.clear_s = 0.0;  // cleared at once: the hysteresis alone
+    LimitWatch watch(narrow, 100.0);
     // With 0.02 it could never clear: 0.99 + 0.02 lies above 1.0 − 0.02.
     const auto changes = run(watch, {0.995, 1.001, 0.999, 0.995});
     ASSERT_EQ(changes.size(), 2U);
@@ -209,7 +216,7 @@ TEST(LimitWatch, NoisyCrossingsRaiseOnceEachAndChatterWithoutTheHysteresis)
     // A slow triangle out of the window 0..1 and back, three times, with
     // Gaussian noise σ = 0.004 (a fifth of the hysteresis 0.02): each
     // excursion is one alarm and one clear. The same stream with no
-    // hysteresis chatters, so the test can tell.
+    // hysteresis and no clear time chatters, so the test can tell.
     std::mt19937 random(39);
     std::normal_distribution<double> noise(0.0, 0.004);
     std::vector<double> v;
@@ -223,8 +230,35 @@ TEST(LimitWatch, NoisyCrossingsRaiseOnceEachAndChatterWithoutTheHysteresis)
     for (std::size_t i = 0; i < changes.size(); ++i) EXPECT_EQ(changes[i].raised, i % 2 == 0) << i;
     LimitSpec bare = spec("x outside warning:0..1");
     bare.hysteresis_fraction = 0.0;
+    bare.clear_s = 0.0;
     LimitWatch chattering(bare, 100.0);
     EXPECT_GT(run(chattering, v).size(), 12U);
+}
+
+TEST(LimitWatch, NoiseLargerThanTheHysteresisAtAWindowsEndRaisesOnceAndClearsOnceItStaysBack)
+{
+    // Issue 52 (fresh eyes): a 1 kHz channel whose noise (σ = 0.05, far
+    // beyond the 2 % hysteresis) rides at the window's end for 2 s crosses
+    // it every few samples. It is one alarm from its first crossing, cleared
+    // 0.1 s after the value settles back; without the clear time it is
+    // hundreds.
+    std::mt19937 random(52);
+    std::normal_distribution<double> noise(0.0, 0.05);
+    std::vector<double> v(500, 0.0);
+    for (int i = 0; i < 2000; ++i) v.push_back(1.0 + noise(random));
+    v.insert(v.end(), 500, 0.0);  // back from 2500
+    LimitWatch watch(spec("a outside warning:-1..1"), 1000.0);
+    const auto changes = run(watch, v);
+    ASSERT_EQ(changes.size(), 2U);
+    EXPECT_TRUE(changes[0].raised);
+    EXPECT_LT(changes[0].index, 510U);
+    // 0.1 s after the last sample back: 2500, or the last noise ones if they were.
+    EXPECT_LE(changes[1].index, 2600U);
+    EXPECT_GE(changes[1].index, 2590U);
+    LimitSpec bare = spec("a outside warning:-1..1");
+    bare.clear_s = 0.0;
+    LimitWatch chattering(bare, 1000.0);
+    EXPECT_GT(run(chattering, v).size(), 200U);
 }
 
 TEST(LimitWatch, AGivenLimitReplacesThoseGuardingASideInCommon)
