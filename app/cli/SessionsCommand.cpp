@@ -126,7 +126,8 @@ int show(SessionSource& store, std::int64_t id, bool json)
     line("started (UTC)", s.startedUtc);
     line("ended (UTC)", s.endedUtc);
     line("status", std::string(core::toString(s.status)));
-    line("verdict", std::string(core::verdictText(s.verdict)));
+    // No verdict: why, when its mode would have judged it.
+    line("verdict", s.verdict || s.unjudged.empty() ? std::string(core::verdictText(s.verdict)) : s.unjudged);
     for (const auto& decision : core::report::verdictTrailLines(store.verdicts(id))) line("", "  " + decision);
     // One device's identity, samples and channels: the session's own, or
     // each part's for a session of several devices.

@@ -63,4 +63,12 @@ std::optional<VerdictDecision> partsDecision(std::span<const SessionSummary> par
     return decision;
 }
 
+std::string partsUnjudged(std::span<const SessionSummary> parts)
+{
+    std::string why;
+    for (const SessionSummary& part : parts)
+        if (!part.unjudged.empty()) why += (why.empty() ? "" : "; ") + part.metadata.deviceName + ": " + part.unjudged;
+    return why;
+}
+
 }  // namespace tactiscope::core::storage

@@ -30,5 +30,8 @@ VerdictDecision automaticDecision(const std::string& analysis, std::size_t defec
 // (core/modes: detectsDefects) has no verdict (too short to judge, cut
 // by a lost probe), or when no part judges at all.
 std::optional<VerdictDecision> partsDecision(std::span<const SessionSummary> parts);
+// Why such a session has no verdict, from its parts' reasons: "left: too
+// short to judge (…); right: not judged: …"; empty when none gave one.
+std::string partsUnjudged(std::span<const SessionSummary> parts);
 
 }  // namespace tactiscope::core::storage

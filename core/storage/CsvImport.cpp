@@ -144,6 +144,7 @@ struct RecordedIdentity {
     SessionStatus status = SessionStatus::Complete;
     std::optional<std::string> endedUtc;  // none: ended by this import
     std::optional<Verdict> verdict;
+    std::string unjudged;
     std::uint64_t samplesPerChannel = 0;  // lost ones at the end included
 };
 
@@ -158,6 +159,7 @@ RecordedIdentity identityOf(const std::optional<nlohmann::json>& side)
     if (textOf(session, "status") != "complete") identity.status = SessionStatus::Interrupted;
     identity.endedUtc = textOf(session, "ended_utc");
     identity.verdict = verdictFromString(textOf(session, "verdict"));
+    identity.unjudged = textOf(session, "unjudged");
     identity.samplesPerChannel = session.value("samples_per_channel", std::uint64_t{0});
     return identity;
 }
@@ -449,6 +451,7 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
     if (side && holdsWholeSession(*side)) importZeros(store, result.session, *side);
     const bool trail = side && holdsWholeSession(*side) && importVerdictTrail(store, result.session, *side);
     if (identity.verdict && !trail) store.setVerdict(result.session, *identity.verdict);
+    if (!identity.unjudged.empty()) store.markUnjudged(result.session, identity.unjudged);
     store.endSession(result.session, identity.status, identity.endedUtc);
     transaction.commit();
     return result;

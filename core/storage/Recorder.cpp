@@ -180,7 +180,8 @@ void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
     }
 }
 
-RecorderStats Recorder::finish(SessionStatus status, const std::optional<VerdictDecision>& verdict)
+RecorderStats Recorder::finish(SessionStatus status, const std::optional<VerdictDecision>& verdict,
+                               const std::string& unjudged)
 {
     {
         const std::lock_guard lock(m_mutex);
@@ -203,6 +204,7 @@ RecorderStats Recorder::finish(SessionStatus status, const std::optional<Verdict
     try {
         m_store.endSession(m_session, m_stats.error.empty() ? status : SessionStatus::Interrupted);
         if (verdict) m_store.decideVerdict(m_session, *verdict);
+        if (!unjudged.empty()) m_store.markUnjudged(m_session, unjudged);
     } catch (const StorageError& e) {
         // The samples are committed; only the end mark is missing.
         if (m_stats.error.empty()) m_stats.error = e.what();

@@ -82,9 +82,10 @@ public:
     std::optional<double> acquisitionOrigin_s() const;
     RecorderStats stats() const;
     // Stores what is queued, ends the session with `status` (interrupted if
-    // a write failed) and its automatic verdict, if any, and stops the
-    // writer. Idempotent.
-    RecorderStats finish(SessionStatus status, const std::optional<VerdictDecision>& verdict = std::nullopt);
+    // a write failed) and its automatic verdict, if any, or why its mode
+    // gave none (`unjudged`), and stops the writer. Idempotent.
+    RecorderStats finish(SessionStatus status, const std::optional<VerdictDecision>& verdict = std::nullopt,
+                         const std::string& unjudged = {});
 
 private:
     void run(const std::stop_token& stop);

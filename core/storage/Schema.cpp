@@ -294,8 +294,15 @@ DROP TABLE channels;
 ALTER TABLE channels_v8 RENAME TO channels;
 )sql";
 
-constexpr std::array kMigrations{kVersion1, kVersion2, kVersion3, kVersion4,
-                                 kVersion5, kVersion6, kVersion7, kVersion8};
+// Version 8 → 9: why a session of a mode that judges got no automatic
+// verdict ("too short to judge (…)", "not judged: it went past a critical
+// limit"), so a reviewer reads it later rather than a bare "—" (issue 52).
+constexpr const char* kVersion9 = R"sql(
+ALTER TABLE sessions ADD COLUMN unjudged TEXT NOT NULL DEFAULT '';
+)sql";
+
+constexpr std::array kMigrations{kVersion1, kVersion2, kVersion3, kVersion4, kVersion5,
+                                 kVersion6, kVersion7, kVersion8, kVersion9};
 static_assert(kMigrations.size() == kSchemaVersion);
 
 std::int64_t pragma(Database& db, const char* name)

@@ -185,6 +185,7 @@ void writeMetadata(text::JsonWriter& json, SessionSource& store, std::int64_t se
     json.key("ended_utc").value(s.endedUtc);
     json.key("status").value(toString(s.status));
     json.key("verdict").value(verdictText(s.verdict));
+    if (!s.unjudged.empty()) json.key("unjudged").value(s.unjudged);
     json.key("device_model").value(s.metadata.deviceModel);
     json.key("device_serial").value(s.metadata.deviceSerial);
     json.key("device_firmware").value(s.metadata.deviceFirmware);

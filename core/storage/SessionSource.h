@@ -59,6 +59,7 @@ struct SessionSummary {
     std::string endedUtc;    // empty while recording or when interrupted
     SessionStatus status = SessionStatus::Recording;
     std::optional<Verdict> verdict;  // none until one is given (another word in the file reads as none)
+    std::string unjudged;            // why its mode gave no automatic verdict; empty when it gave one or judges nothing
     std::string appVersion;
     double sampleRate_hz = 0.0;
     std::uint64_t sampleCount = 0;  // per channel, including lost samples

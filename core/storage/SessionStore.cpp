@@ -65,6 +65,7 @@ SessionSummary summaryFrom(const Statement& row)
     s.sampleCount = static_cast<std::uint64_t>(row.int64(18));
     s.eventCount = static_cast<std::uint64_t>(row.int64(19));
     s.devices = static_cast<std::size_t>(row.int64(21));
+    s.unjudged = row.text(24);
     return s;
 }
 
@@ -90,7 +91,7 @@ const std::string& summaryQuery()
         ", (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live') + (SELECT count(*) FROM "
         "events e JOIN sessions p ON e.session_id = p.id WHERE p.parent_id = s.id AND e.analysis = 'live'), "
         "trigger_setup, "
-        "(SELECT count(*) FROM sessions p WHERE p.parent_id = s.id), parent_id, device_name FROM sessions s ";
+        "(SELECT count(*) FROM sessions p WHERE p.parent_id = s.id), parent_id, device_name, unjudged FROM sessions s ";
     return sql;
 }
 
@@ -365,6 +366,11 @@ void SessionStore::endSession(std::int64_t session, SessionStatus status, std::o
         .bind(2, endedUtc.value_or(utcNow()))
         .bind(3, session)
         .run();
+}
+
+void SessionStore::markUnjudged(std::int64_t session, const std::string& why)
+{
+    m_db.prepare("UPDATE sessions SET unjudged = ? WHERE id = ?").bind(1, why).bind(2, session).run();
 }
 
 void SessionStore::setVerdict(std::int64_t session, Verdict verdict)

@@ -52,6 +52,8 @@ public:
     // for one that never ended).
     void endSession(std::int64_t session, SessionStatus status, std::optional<std::string> endedUtc = std::nullopt);
     std::int64_t decideVerdict(std::int64_t session, const VerdictDecision& decision) override;
+    // Why its mode gave it no automatic verdict (SessionSummary::unjudged).
+    void markUnjudged(std::int64_t session, const std::string& why);
     // Sets the verdict without a trail: only for an import of an export
     // made before verdicts had one.
     void setVerdict(std::int64_t session, Verdict verdict);

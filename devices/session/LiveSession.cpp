@@ -315,7 +315,17 @@ RecordingSummary LiveSession::finishRecording()
     const bool whole = !summary.lostAt_s && summary.stoppedBecause.empty() && !pastCritical;
     std::optional<core::storage::VerdictDecision> decision;
     if (auto* unit = unitOf(m_metadata.mode)) decision = unit->finishRecording(summary, whole);
-    summary.stats = m_recorder->finish(core::SessionStatus::Complete, decision);
+    // A mode that judges says why it did not, for the reviewer too.
+    if (!decision && summary.notJudged.empty() && core::definitionOf(m_metadata.mode).detectsDefects) {
+        if (summary.lostAt_s) {
+            char text[96];
+            std::snprintf(text, sizeof text, "not judged: the probe was lost at %.1f s and not back by the stop",
+                          *summary.lostAt_s);
+            summary.notJudged = text;
+        } else if (!summary.stoppedBecause.empty())
+            summary.notJudged = "not judged: " + summary.stoppedBecause;
+    }
+    summary.stats = m_recorder->finish(core::SessionStatus::Complete, decision, summary.notJudged);
     if (!summary.stats.error.empty()) summary.verdict.reset();  // the session ended interrupted
     if (const auto* unit = unitOf(m_metadata.mode))
         summary.analysis = unit->storedText(summary);

@@ -81,6 +81,8 @@ std::optional<core::Verdict> SessionOfDevices::finish()
     if (const auto decision = core::storage::partsDecision(summaries)) {
         store.decideVerdict(m_session, *decision);
         m_verdict = decision->verdict;
+    } else if (const auto why = core::storage::partsUnjudged(summaries); !why.empty()) {
+        store.markUnjudged(m_session, why);
     }
     return m_verdict;
 }

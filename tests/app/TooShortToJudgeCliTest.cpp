@@ -3,10 +3,16 @@
 // the paper's settings, by hand) gets no automatic verdict, never "pass":
 // a manual recording stopped after 50 ms, and the one-sample sessions of a
 // trigger on every crossing. `record` against `emulate` over a real pty.
+// Why it has none is kept with it: `sessions show`, the export, an import
+// of that export and the report say so.
 #include "core/storage/SessionStore.h"
 #include "support/CliRunner.h"
 #include "support/EmulatorProcess.h"
+#include "support/PdfText.h"
 
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -48,8 +54,32 @@ TEST(TooShortToJudgeCli, ARecordingShorterThanTheDetectorNeedsGetsNoVerdict)
     EXPECT_EQ(shortOne.status, core::SessionStatus::Complete);
     EXPECT_FALSE(shortOne.verdict.has_value());
     EXPECT_TRUE(store.verdicts(shortOne.id).empty());
+    EXPECT_EQ(shortOne.unjudged.rfind("too short to judge (", 0), 0u) << shortOne.unjudged;
     ASSERT_GT(sessions[1].duration_s(), kShortestJudged_s);
     EXPECT_TRUE(sessions[1].verdict.has_value());
+    EXPECT_EQ(sessions[1].unjudged, "");
+
+    // Kept for the reviewer: what `show`, the export and the report say.
+    const QString id = QString::number(shortOne.id);
+    const auto shown = runCli({"sessions", "--db", db, "show", id});
+    EXPECT_TRUE(shown.out.contains(QStringLiteral("\nverdict           too short to judge (")))
+        << shown.out.toStdString();
+    const QString csv = dir.filePath("short.csv");
+    ASSERT_EQ(runCli({"sessions", "--db", db, "export", id, "--format", "csv", "--output", csv}).exitCode, 0);
+    QFile meta(dir.filePath("short.meta.json"));
+    ASSERT_TRUE(meta.open(QIODevice::ReadOnly));
+    const auto exported = QJsonDocument::fromJson(meta.readAll()).object()["session"].toObject();
+    EXPECT_EQ(exported["unjudged"].toString().toStdString(), shortOne.unjudged);
+    const QString elsewhere = dir.filePath("elsewhere.tactiscope");
+    ASSERT_EQ(runCli({"import", csv, "--db", elsewhere}).exitCode, 0);
+    core::storage::SessionStore imported(elsewhere.toStdString(), core::storage::Database::Access::ReadOnly);
+    EXPECT_EQ(imported.session(1)->unjudged, shortOne.unjudged);
+    if (*tactiscope::testing::pdfTextMissing()) return;
+    const QString pdf = dir.filePath("r.pdf");
+    ASSERT_EQ(runCli({"report", "--db", db, "--session", id, "--output", pdf}).exitCode, 0);
+    EXPECT_TRUE(
+        tactiscope::testing::pdfText(pdf).simplified().contains(QStringLiteral("No verdict: too short to judge")))
+        << tactiscope::testing::pdfText(pdf).toStdString();
 }
 
 TEST(TooShortToJudgeCli, TheOneSampleSessionsOfATriggerOnEveryCrossingGetNoVerdict)

@@ -173,6 +173,9 @@ QString verdict(const core::report::ReportData& data)
     }
     if (const QString peaks = capacitivePeaks(data); !peaks.isEmpty())
         return QStringLiteral("<p class=verdict>%1</p>").arg(peaks);
+    if (!data.session.unjudged.empty())
+        return QStringLiteral("<p class=verdict>%1</p>")
+            .arg(QObject::tr("No verdict: %1").arg(text(data.session.unjudged)));
     return QStringLiteral("<p class=verdict>%1</p>").arg(QObject::tr("No verdict recorded"));
 }
 

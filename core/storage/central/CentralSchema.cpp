@@ -120,6 +120,8 @@ ALTER TABLE sessions ADD COLUMN IF NOT EXISTS parent_id BIGINT REFERENCES sessio
 ALTER TABLE sessions ADD COLUMN IF NOT EXISTS device_name TEXT NOT NULL DEFAULT '';
 ALTER TABLE sessions ADD COLUMN IF NOT EXISTS clock_json TEXT NOT NULL DEFAULT '';
 CREATE INDEX IF NOT EXISTS sessions_by_parent ON sessions (parent_id);
+-- Schema 9: why a session of a mode that judges got no automatic verdict.
+ALTER TABLE sessions ADD COLUMN IF NOT EXISTS unjudged TEXT NOT NULL DEFAULT '';
 
 CREATE TABLE IF NOT EXISTS readings (
     id             BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY,

@@ -30,7 +30,7 @@ const std::string kSummaryQuery =
     ", (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live') + (SELECT count(*) FROM events e "
     "JOIN sessions p ON e.session_id = p.id WHERE p.parent_id = s.id AND e.analysis = 'live'), station, station_id, "
     "trigger_setup, coalesce(parent_id, 0), device_name, "
-    "(SELECT count(*) FROM sessions p WHERE p.parent_id = s.id AND p.complete) " +
+    "(SELECT count(*) FROM sessions p WHERE p.parent_id = s.id AND p.complete), unjudged " +
     "FROM sessions s WHERE complete ";
 
 SessionSummary summaryFrom(const PgResult& r, int row)
@@ -63,6 +63,7 @@ SessionSummary summaryFrom(const PgResult& r, int row)
     s.station = r.text(row, 20);
     s.stationId = r.int64(row, 21);
     s.devices = static_cast<std::size_t>(r.int64(row, 25));
+    s.unjudged = r.text(row, 26);
     return s;
 }
 

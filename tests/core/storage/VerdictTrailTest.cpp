@@ -146,6 +146,10 @@ TEST(PartsVerdict, TheWorstPartDecidesAndAnUnjudgedPartLeavesAPassOpen)
     const std::vector<SessionSummary> unjudged{part(2, "left", Mode::PanelScan, Verdict::Pass),
                                                part(3, "right", Mode::PanelScan, std::nullopt)};
     EXPECT_FALSE(partsDecision(unjudged));
+    std::vector<SessionSummary> saidWhy = unjudged;
+    saidWhy[1].unjudged = "too short to judge (0.3 s of the 0.6 s the detector needs)";
+    EXPECT_EQ(partsUnjudged(saidWhy), "right: too short to judge (0.3 s of the 0.6 s the detector needs)");
+    EXPECT_EQ(partsUnjudged(found), "");
     const std::vector<SessionSummary> nothingJudges{part(4, "cell", Mode::General, std::nullopt),
                                                     part(5, "beam", Mode::Capacitive, std::nullopt)};
     EXPECT_FALSE(partsDecision(nothingJudges));
