@@ -42,6 +42,14 @@ QString oneCell(const std::string& text)
     return cell;
 }
 
+// The verdict in a list's column: "pass", "defects found", "not judged"
+// (its mode judges but did not: `show` says why), or "—".
+QString verdictCell(const core::storage::SessionSummary& s)
+{
+    if (s.verdict) return toQString(core::verdictText(s.verdict));
+    return s.unjudged.empty() ? QStringLiteral("—") : QStringLiteral("not judged");
+}
+
 int list(SessionSource& store, const core::storage::SessionFilter& filter, bool json)
 {
     const auto sessions = store.sessions(filter);
@@ -74,11 +82,12 @@ int list(SessionSource& store, const core::storage::SessionFilter& filter, bool 
     }
     out << qSetFieldWidth(6) << Qt::right << "id" << qSetFieldWidth(0) << "  "
         << QString("started (UTC)").leftJustified(26) << QString("mode").leftJustified(11)
-        << QString("status").leftJustified(12) << QString("duration").rightJustified(10) << "  subject / operator\n";
+        << QString("status").leftJustified(12) << QString("verdict").leftJustified(14)
+        << QString("duration").rightJustified(10) << "  subject / operator\n";
     for (const auto& s : sessions) {
         out << qSetFieldWidth(6) << Qt::right << s.id << qSetFieldWidth(0) << "  "
             << toQString(s.startedUtc).leftJustified(26) << toQString(core::toString(s.metadata.mode)).leftJustified(11)
-            << toQString(core::toString(s.status)).leftJustified(12)
+            << toQString(core::toString(s.status)).leftJustified(12) << verdictCell(s).leftJustified(14)
             << (QString::number(s.duration_s(), 'f', 1) + QStringLiteral(" s")).rightJustified(10) << "  "
             << oneCell(s.metadata.subject) << " / " << oneCell(s.metadata.operatorName) << '\n';
     }
@@ -126,6 +135,7 @@ int show(SessionSource& store, std::int64_t id, bool json)
     line("started (UTC)", s.startedUtc);
     line("ended (UTC)", s.endedUtc);
     line("status", std::string(core::toString(s.status)));
+    if (!s.metadata.trigger.empty()) line("trigger", s.metadata.trigger);
     // No verdict: why, when its mode would have judged it.
     line("verdict", s.verdict || s.unjudged.empty() ? std::string(core::verdictText(s.verdict)) : s.unjudged);
     for (const auto& decision : core::report::verdictTrailLines(store.verdicts(id))) line("", "  " + decision);

@@ -13,6 +13,7 @@
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -64,6 +65,9 @@ TEST(TooShortToJudgeCli, ARecordingShorterThanTheDetectorNeedsGetsNoVerdict)
     const auto shown = runCli({"sessions", "--db", db, "show", id});
     EXPECT_TRUE(shown.out.contains(QStringLiteral("\nverdict           too short to judge (")))
         << shown.out.toStdString();
+    const auto listed = runCli({"sessions", "--db", db, "list"});
+    EXPECT_TRUE(listed.out.contains(QRegularExpression(QStringLiteral("complete +not judged +0\\.[0-9] s"))))
+        << listed.out.toStdString();
     const QString csv = dir.filePath("short.csv");
     ASSERT_EQ(runCli({"sessions", "--db", db, "export", id, "--format", "csv", "--output", csv}).exitCode, 0);
     QFile meta(dir.filePath("short.meta.json"));

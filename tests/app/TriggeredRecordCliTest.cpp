@@ -79,6 +79,9 @@ TEST(TriggeredRecordCli, APanelLineGetsOneSessionPerPanelFromHalfASecondBeforeIt
     for (const auto& s : sessions) subjects.push_back(s.metadata.subject);
     std::ranges::sort(subjects);
     EXPECT_EQ(subjects, (std::vector<std::string>{"door-17", "door-18", "door-19"}));
+    const auto shown = runCli({"sessions", "--db", db, "show", "last"});
+    EXPECT_TRUE(shown.out.contains(QStringLiteral("trigger           a>2e-05, pre 0.5 s, post 1 s, hold-off 0 s")))
+        << shown.out.toStdString();
     constexpr double kLevel = 20e-6;
     for (const auto& session : sessions) {
         SCOPED_TRACE(session.metadata.subject);

@@ -5,6 +5,7 @@
 #include "support/CliRunner.h"
 #include "support/PdfText.h"
 
+#include <QRegularExpression>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -78,6 +79,11 @@ TEST_F(VerdictCli, AReviewersVerdictJoinsTheTrailWithTheNameAndTheNote)
 
     const auto list = runCli({"sessions", "--db", m_db, "list", "--verdict", "pass"});
     EXPECT_TRUE(list.out.contains("door-5")) << list.out.toStdString();
+    // The list shows each session's verdict in a column of its own.
+    EXPECT_TRUE(list.out.contains(QRegularExpression(QStringLiteral("\\bverdict +duration\\b"))))
+        << list.out.toStdString();
+    EXPECT_TRUE(list.out.contains(QRegularExpression(QStringLiteral("complete +pass +[0-9.]+ s  door-5"))))
+        << list.out.toStdString();
     // The list filter takes the verdict as the verdict command writes it (and as stored).
     for (const char* word : {"defects-found", "defects found"}) {
         const auto none = runCli({"sessions", "--db", m_db, "list", "--verdict", word});
