@@ -5,6 +5,7 @@
 #include "core/storage/Database.h"
 #include "core/storage/central/PgConnection.h"
 
+#include <QRegularExpression>
 #include <QTextStream>
 
 #include <atomic>
@@ -59,7 +60,17 @@ int storageFailure(const core::storage::StorageError& error, const QString& pref
 int usageError(const QString& message, const QString& usage)
 {
     printError(message);
-    QTextStream(stderr) << '\n' << usage;
+    // A command's usage is a page of options: its first line and where the
+    // rest is, so the error stays on screen. The program's own (the list
+    // of commands) is short and is the help itself.
+    static const QRegularExpression command(QStringLiteral("^Usage: tactiscope-cli ([a-z-]+)"));
+    const auto match = command.match(usage);
+    if (!match.hasMatch()) {
+        QTextStream(stderr) << '\n' << usage;
+        return kExitUsage;
+    }
+    QTextStream(stderr) << usage.section(QLatin1Char('\n'), 0, 0) << "\nRun 'tactiscope-cli " << match.captured(1)
+                        << " --help' for its options.\n";
     return kExitUsage;
 }
 

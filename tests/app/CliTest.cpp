@@ -62,6 +62,8 @@ TEST(Cli, MissingCommandUnknownCommandAndBadFlagExitWithUsage)
     }
 }
 
+// A command's error is its line, the usage line and where the options are:
+// not a page of options that scrolls the error away.
 TEST(Cli, SimulateRejectsBadArgumentsWithOneLineAndUsage)
 {
     const std::vector<QStringList> cases{
@@ -77,6 +79,9 @@ TEST(Cli, SimulateRejectsBadArgumentsWithOneLineAndUsage)
         EXPECT_EQ(run.exitCode, 2) << arguments.join(' ').toStdString();
         EXPECT_TRUE(firstLine(run.err).startsWith(QStringLiteral("tactiscope-cli: "))) << run.err.toStdString();
         EXPECT_TRUE(run.err.contains(QStringLiteral("Usage: tactiscope-cli simulate")));
+        EXPECT_TRUE(run.err.endsWith(QStringLiteral("\nRun 'tactiscope-cli simulate --help' for its options.\n")))
+            << run.err.toStdString();
+        EXPECT_EQ(run.err.count(QLatin1Char('\n')), 3) << run.err.toStdString();
     }
 }
 
