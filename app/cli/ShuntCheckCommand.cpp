@@ -6,6 +6,7 @@
 #include "CliSupport.h"
 #include "RecordOutput.h"
 #include "core/storage/SessionStore.h"
+#include "core/text/UncertaintyFormat.h"
 #include "devices/ReconnectingSource.h"
 #include "devices/session/LivePipeline.h"
 #include "devices/session/ShuntCheckRun.h"
@@ -137,9 +138,10 @@ int runShuntCheck(const QStringList& arguments)
     };
     const auto& check = result.check;
     QTextStream(stdout) << "Shunt check " << toQString(channelName) << ": expected " << microstrain(run.expected(), 1)
-                        << " µε, measured " << microstrain(result.measured.step, 1) << " ± "
-                        << microstrain(result.measured.uncertainty, 1) << " µε, deviation "
-                        << deviationText(check.deviation) << " % (tolerance "
+                        << " µε, measured "
+                        << toQString(core::text::valueWithUncertainty(result.measured.step * 1e6,
+                                                                      result.measured.uncertainty * 1e6, "µε"))
+                        << ", deviation " << deviationText(check.deviation) << " % (tolerance "
                         << QLocale::c().toString(tolerance_percent) << " %): " << (check.passed ? "PASS" : "FAIL")
                         << Qt::endl;
     if (parser.isSet(QStringLiteral("db"))) {

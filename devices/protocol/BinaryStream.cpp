@@ -89,6 +89,7 @@ void BinaryStream::push(std::span<const std::uint8_t> bytes, double hostTime_s, 
     m_frames.clear();
     m_decoder.push(bytes, m_frames);
     for (const Frame& frame : m_frames) {
+        if (frame.type == FrameType::Info || frame.type == FrameType::Status) ++m_otherFrames;
         switch (frame.type) {
         case FrameType::Info:
             if (auto info = parseInfo(frame.payload)) {
@@ -157,12 +158,15 @@ void BinaryStream::onData(const Frame& frame, double hostTime_s, StreamOutput& o
     } else if (clockWentBack) {
         restart(timestamp, data->samplesPerChannel, hostTime_s, out);
     } else if (m_lastSequence && !m_waiting) {
-        const std::uint64_t lost = believedLoss(frame.sequence, timestamp, hostTime_s, out);
+        // The number it would have had without the frames of other types.
+        const auto sequence = static_cast<std::uint16_t>(frame.sequence - m_otherFrames);
+        const std::uint64_t lost = believedLoss(sequence, timestamp, hostTime_s, out);
         m_counters.samplesLost += lost;
         m_nextSampleIndex += lost;
-        measureClockRate(frame.sequence, timestamp);
+        measureClockRate(sequence, timestamp);
     }
     m_lastSequence = frame.sequence;
+    m_otherFrames = 0;
     m_lastSamples = data->samplesPerChannel;
     m_lastTimestamp_us = timestamp;
     m_lastHost_s = hostTime_s;

@@ -78,6 +78,10 @@ private:
     std::optional<double> m_estimatedInterval_s;
     std::optional<std::pair<DataPayload, std::uint64_t>> m_waiting;  // first frame, until the interval is known
     std::optional<std::uint16_t> m_lastSequence;
+    // INFO and STATUS frames since the last DATA frame: each took a sequence
+    // number (+1 per frame sent, docs/protocol.md), so a reply to a command
+    // between two DATA frames is no frame lost.
+    std::uint16_t m_otherFrames = 0;
     std::uint16_t m_lastSamples = 0;
     std::optional<std::uint32_t> m_lastRawTimestamp;
     std::uint64_t m_lastTimestamp_us = 0;  // unwrapped, of the last frame

@@ -72,6 +72,31 @@ TEST(BinaryStream, CountsSamplesLostToSequenceGapsAndLeavesAGapInTheIndex)
     EXPECT_DOUBLE_EQ(out.blocks[2].t0_s(), 0.016);
 }
 
+// Every frame sent takes a sequence number (docs/protocol.md): a probe's
+// STATUS reply to a command (the shunt check's) between two DATA frames is
+// no frame lost and no sequence fault; DATA frames lost before one still are.
+TEST(BinaryStream, AStatusFrameBetweenDataFramesTakesItsSequenceNumberAndLosesNothing)
+{
+    BinaryStream stream;
+    StreamOutput out;
+    stream.push(info(), 0.0, out);
+    stream.push(data(10, 0, 0), 0.004, out);
+    stream.push(data(11, 4000, 4), 0.008, out);
+    stream.push(encodeFrame(FrameType::Status, 12, encodeStatus({StatusLevel::Ok, "shunt on a"})), 0.009, out);
+    stream.push(data(13, 8000, 8), 0.012, out);
+    EXPECT_EQ(stream.counters().samplesLost, 0u);
+    EXPECT_EQ(stream.counters().sequenceFaults, 0u);
+    EXPECT_TRUE(out.notices.empty());
+    // Frames 15 and 16 lost, then a reply (17), then DATA 18: 8 samples lost.
+    stream.push(data(14, 12000, 12), 0.016, out);
+    stream.push(encodeFrame(FrameType::Status, 17, encodeStatus({StatusLevel::Ok, "shunt off a"})), 0.025, out);
+    stream.push(data(18, 24000, 24), 0.028, out);
+    EXPECT_EQ(stream.counters().samplesLost, 8u);
+    EXPECT_EQ(stream.counters().sequenceFaults, 0u);
+    ASSERT_EQ(out.blocks.size(), 5u);
+    EXPECT_EQ(out.blocks[4].firstSampleIndex(), 24u);
+}
+
 namespace {
 
 // Ten frames of 4 samples at 1 kHz (sequence 0…9, clock 0…36 ms), each
