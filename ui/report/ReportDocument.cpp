@@ -212,10 +212,14 @@ QString defectTables(const core::report::ReportData& data)
     html += table({QObject::tr("Site"), QObject::tr("Position (mm)"), QObject::tr("Crossings"),
                    QObject::tr("Directions"), QObject::tr("Time (s)")},
                   sites);
+    // The method, or why no crossing could be placed ("not placed: no whole
+    // stroke between two reversals"), which reads as a sentence of its own.
+    const bool placed = data.sites.method.rfind("not placed", 0) != 0;
     html += QStringLiteral("<p><small>%1</small></p>")
-                .arg(QObject::tr("Position along the stroke from its centre (± the spread of its crossings), "
-                                 "placed by %1 between reversals; see docs/detector.md.")
-                         .arg(text(data.sites.method)));
+                .arg(placed ? QObject::tr("Position along the stroke from its centre (± the spread of its crossings), "
+                                          "placed by %1 between reversals; see docs/detector.md.")
+                                  .arg(text(data.sites.method))
+                            : QObject::tr("Positions %1; see docs/detector.md.").arg(text(data.sites.method)));
     std::vector<QStringList> crossings;
     for (std::size_t i = 0; i < defects.size(); ++i) {
         const auto& e = defects[i];

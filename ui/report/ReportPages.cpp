@@ -19,24 +19,36 @@ namespace {
 constexpr double kPx_per_mm = 96.0 / 25.4;
 constexpr double kMargin_mm = 20.0;
 
-// The document position where what follows the root-frame item `it`
-// begins: a table's first body row (its header rows repeat on every page,
-// so they are no content), another frame's first position, or the next
-// block's.
+// A table's first body row: its header rows repeat on every page, so they
+// are no content.
+int firstBodyRow(const QTextTable& table)
+{
+    return table.cellAt(std::min(table.format().headerRowCount(), table.rows() - 1), 0).firstPosition();
+}
+
+// The document position a heading (the root-frame item `it`) must share a
+// page with: the first body row of its table, when one follows after at
+// most a line or two of introduction ("Defect sites (3)", "From the events
+// recorded live.", then the sites: the heading and its line alone at a
+// page's foot say nothing); else another frame's first position, or the
+// next block's.
 std::optional<int> contentAfter(QTextFrame::iterator it)
 {
+    constexpr int kIntroductionBlocks = 2;
+    std::optional<int> firstBlock;
+    int blocks = 0;
     for (++it; !it.atEnd(); ++it) {
         if (QTextFrame* frame = it.currentFrame()) {
-            if (auto* table = qobject_cast<QTextTable*>(frame)) {
-                const int first = std::min(table->format().headerRowCount(), table->rows() - 1);
-                return table->cellAt(first, 0).firstPosition();
-            }
-            return frame->firstPosition();
+            if (auto* table = qobject_cast<QTextTable*>(frame)) return firstBodyRow(*table);
+            return firstBlock ? firstBlock : frame->firstPosition();
         }
-        if (it.currentBlock().isValid() && !it.currentBlock().text().trimmed().isEmpty())
-            return it.currentBlock().position();
+        const QTextBlock block = it.currentBlock();
+        if (!block.isValid() || block.text().trimmed().isEmpty()) continue;
+        if (block.blockFormat().headingLevel() != 0) break;  // the next section: no table of this one
+        if (!firstBlock) firstBlock = block.position();
+        if (++blocks >= kIntroductionBlocks) break;
     }
-    return std::nullopt;
+    return firstBlock;
 }
 
 }  // namespace
