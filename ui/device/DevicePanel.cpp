@@ -13,6 +13,7 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -139,6 +140,9 @@ DevicePanel::DevicePanel(QWidget* parent)
     stateFont.setPointSizeF(stateFont.pointSizeF() * 1.2);
     m_state->setFont(stateFont);
     m_rate = addCounter(counters, tr("Rate"), "rateLabel");
+    // "1,000.0 Hz (nominal 1,000 Hz)" wraps in a narrow dock rather than
+    // being cut or widening the panel as the measurement comes.
+    m_rate->setWordWrap(true);
     m_samples = addCounter(counters, tr("Samples"), "samplesLabel");
     m_lost = addCounter(counters, tr("Lost"), "lostLabel");
     m_crc = addCounter(counters, tr("CRC errors"), "crcLabel");
@@ -397,6 +401,41 @@ void DevicePanel::showCounters(const LinkCounters& counters)
     m_reconnections->setText(count(counters.reconnections));
 }
 
+namespace {
+
+// Keeps a scroll area as wide as its panel needs beside a vertical scroll
+// bar, as the panel grows (a device's channel roles, a longer link name):
+// set once, the general mode's roles cut the panel at its right edge.
+class WidthFollower : public QObject {
+public:
+    WidthFollower(QScrollArea* scroll, QWidget* panel)
+        : QObject(scroll),
+          m_scroll(scroll),
+          m_panel(panel)
+    {
+        panel->installEventFilter(this);
+        follow();
+    }
+
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (watched == m_panel && event->type() == QEvent::LayoutRequest) follow();
+        return false;
+    }
+
+private:
+    void follow()
+    {
+        m_scroll->setMinimumWidth(m_panel->minimumSizeHint().width() +
+                                  m_scroll->style()->pixelMetric(QStyle::PM_ScrollBarExtent) + 2);
+    }
+
+    QScrollArea* m_scroll;
+    QWidget* m_panel;
+};
+
+}  // namespace
+
 QWidget* scrollingPanel(DevicePanel* panel)
 {
     auto* scroll = new QScrollArea(panel->parentWidget());
@@ -405,10 +444,8 @@ QWidget* scrollingPanel(DevicePanel* panel)
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    // As wide as the panel needs beside a vertical scroll bar: it only ever
-    // scrolls up and down.
-    scroll->setMinimumWidth(panel->minimumSizeHint().width() +
-                            scroll->style()->pixelMetric(QStyle::PM_ScrollBarExtent) + 2);
+    // It only ever scrolls up and down.
+    new WidthFollower(scroll, panel);
     return scroll;
 }
 

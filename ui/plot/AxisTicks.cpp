@@ -2,9 +2,9 @@
 #include "ui/plot/AxisTicks.h"
 
 #include <QLocale>
-#include <qcustomplot.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace tactiscope::ui {
 namespace {
@@ -26,7 +26,40 @@ TickFit tryCount(QCPAxis& axis, int count, int height_px)
     return fit;
 }
 
+// The fewest decimals that write `step` exactly (to a millionth of it).
+int decimalsOf(double step)
+{
+    constexpr int kMost = 8;
+    for (int d = 0; d <= kMost; ++d) {
+        const double scaled = step * std::pow(10.0, d);
+        if (std::abs(scaled - std::round(scaled)) <= 1e-6 * scaled) return d;
+    }
+    return kMost + 1;
+}
+
 }  // namespace
+
+QVector<QString> EvenDecimalsTicker::createLabelVector(const QVector<double>& ticks, const QLocale& locale,
+                                                       QChar formatChar, int precision)
+{
+    if (ticks.size() < 2) return QCPAxisTicker::createLabelVector(ticks, locale, formatChar, precision);
+    const double step = std::abs(ticks[1] - ticks[0]);
+    const double largest = std::max(std::abs(ticks.front()), std::abs(ticks.back()));
+    const int decimals = step > 0.0 ? decimalsOf(step) : 9;
+    if (decimals > 8 || largest >= 1e6) return QCPAxisTicker::createLabelVector(ticks, locale, formatChar, precision);
+    QVector<QString> labels;
+    labels.reserve(ticks.size());
+    for (const double tick : ticks)  // a zero that rounding left at -1e-19 is no "-0.0000"
+        labels.push_back(locale.toString(std::abs(tick) < 1e-6 * step ? 0.0 : tick, 'f', decimals));
+    return labels;
+}
+
+void useEvenDecimals(QCPAxis& axis)
+{
+    QSharedPointer<EvenDecimalsTicker> ticker(new EvenDecimalsTicker);
+    ticker->setTickCount(axis.ticker()->tickCount());
+    axis.setTicker(ticker);
+}
 
 bool fitTickCount(QCPAxis& axis, int height_px, double line_px, int most)
 {

@@ -2,12 +2,26 @@
 // whose labels stand a label's height apart, and never fewer than two
 // labels inside the range when any count gives two: a live lane of 1.7 mN
 // with "about two ticks" got steps of 2 and one lonely "0". The live view,
-// the review and the reports' lanes ask the same rule.
+// the review and the reports' lanes ask the same rule. And every label of
+// an axis with the same decimals, those of its step: 0.0190, 0.0195,
+// 0.0200 mN, not 0.019, 0.0195, 0.02.
 #pragma once
 
-class QCPAxis;
+#include <qcustomplot.h>
 
 namespace tactiscope::ui {
+
+// Labels in fixed notation with the decimals the tick step needs (0.0005:
+// four; 2.5: one; 2: none). Beyond a million or below a hundred-millionth
+// it leaves the labels to QCustomPlot's own notation.
+class EvenDecimalsTicker : public QCPAxisTicker {
+protected:
+    QVector<QString> createLabelVector(const QVector<double>& ticks, const QLocale& locale, QChar formatChar,
+                                       int precision) override;
+};
+
+// Gives `axis` an EvenDecimalsTicker with its present tick count.
+void useEvenDecimals(QCPAxis& axis);
 
 // Sets the tick count of `axis` (its ticker and range as they are now)
 // for a lane `height_px` tall whose labels are `line_px` high, at most

@@ -190,6 +190,7 @@ void LivePlotWidget::buildPlotItems(const std::vector<core::ChannelDescriptor>& 
             connect(rect->axis(QCPAxis::atBottom), qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
                     &LivePlotWidget::syncTimeAxes, Qt::UniqueConnection);
             rect->axis(QCPAxis::atLeft)->setLabel(unit.axisTitle());
+            useEvenDecimals(*rect->axis(QCPAxis::atLeft));
             m_lanes.push_back({rect, {0.0, 0.0}, unit.scale, std::nullopt, nullptr});
         }
         QCPAxisRect* rect = m_lanes[lane].rect;

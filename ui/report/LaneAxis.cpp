@@ -1,6 +1,8 @@
 // LaneAxis: label, ticker, threshold line and range of one lane.
 #include "ui/report/LaneAxis.h"
 
+#include "ui/plot/AxisTicks.h"
+
 #include <qcustomplot.h>
 
 #include <cmath>
@@ -16,6 +18,7 @@ void setUpLaneAxis(QCPAxisRect& lane, const DisplayUnit& unit, std::optional<dou
 {
     QCPAxis* values = lane.axis(QCPAxis::atLeft);
     values->setLabel(laneLabel(unit));
+    useEvenDecimals(*values);
     values->ticker()->setTickCount(3);
     if (!unit.levels.empty()) {
         QSharedPointer<QCPAxisTickerText> ticker(new QCPAxisTickerText);

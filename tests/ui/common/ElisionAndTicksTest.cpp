@@ -86,3 +86,27 @@ TEST(AxisTicks, ALowLaneShowsTwoLabelsAtLeastAndNoneOverlap)
         }
     }
 }
+
+// Issue 52 (fresh eyes): a load cell's lane read 0.019, 0.0195, 0.02,
+// 0.0205, 0.021 mN and a beam's 51.44, 51.445, 51.45 pF. Every label of an
+// axis has the decimals of its step.
+TEST(AxisTicks, EveryLabelOfAnAxisHasTheDecimalsOfItsStep)
+{
+    QCustomPlot plot;
+    QCPAxis& axis = *plot.yAxis;
+    ui::useEvenDecimals(axis);
+    const auto labels = [&](double lower, double upper, int count) {
+        axis.ticker()->setTickCount(count);
+        QVector<double> ticks;
+        QVector<QString> texts;
+        axis.ticker()->generate(QCPRange(lower, upper), QLocale::c(), QLatin1Char('g'), 6, ticks, nullptr, &texts);
+        QStringList inside;
+        for (int i = 0; i < ticks.size(); ++i)
+            if (ticks[i] >= lower && ticks[i] <= upper) inside << texts[i];
+        return inside.join(QLatin1Char(' ')).toStdString();
+    };
+    EXPECT_EQ(labels(0.0189, 0.0211, 5), "0.0190 0.0195 0.0200 0.0205 0.0210");
+    EXPECT_EQ(labels(51.4395, 51.4505, 3), "51.4400 51.4425 51.4450 51.4475 51.4500");
+    EXPECT_EQ(labels(-1.1, 1.1, 5), "-1.0 -0.5 0.0 0.5 1.0");
+    EXPECT_EQ(labels(0.0, 25.0, 3), "0 10 20");
+}

@@ -199,6 +199,10 @@ void PalpationView::resizeEvent(QResizeEvent* event)
     }
     font.setPointSizeF(size);
     m_stiffness->setFont(font);
+    // The probe's and calibration's lines, wrapped at this width, are part
+    // of the view's least height: the splitter above leaves them their room
+    // rather than cutting the calibration line off at a 768-pixel screen.
+    m_probe->setMinimumHeight(m_probe->heightForWidth(m_probe->width()));
 }
 
 void PalpationView::updateReadout()

@@ -171,7 +171,7 @@ void PanelScanView::bind(const devices::session::LiveSession* session)
         return;
     }
     // Short titles: the lanes are low, beside the defect list.
-    const DisplayUnit decision{1.0, QString(), tr("Output")};
+    const DisplayUnit decision{1.0, QString(), tr("Decision")};  // as the review and the report call it
     const DisplayUnit correlation{1.0, QString(), tr("Best R")};
     m_lanes->setSource(m_detection->output(), core::detector::LiveDetection::outputChannels(),
                        session->source().nominalSampleRate_hz(), {decision, correlation, correlation});
