@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <map>
+#include <utility>
+#include <vector>
 
 namespace tactiscope::cli {
 namespace {
@@ -65,19 +67,26 @@ RecordOutput::RecordOutput(std::string db, const devices::session::LivePipeline&
 void RecordOutput::tell(const devices::session::PipelineNews& news)
 {
     for (const auto& [device, problem] : news.problems) printError(from(device) + toQString(problem));
-    // What the link noticed is stored as an alarm and told here, as it comes.
+    // What the links noticed (stored as alarms) and the limits' alarms, of
+    // every device, told in the order they happened.
+    std::vector<std::pair<double, QString>> timed;
     for (const auto& [device, notice] : news.notices)
-        printError(QStringLiteral("%1at %2 s: %3").arg(from(device), at(notice.time_s), toQString(notice.text)));
+        timed.emplace_back(
+            notice.time_s,
+            QStringLiteral("%1at %2 s: %3").arg(from(device), at(notice.time_s), toQString(notice.text)));
     for (const auto& [device, alarm] : news.alarms) {
         const QString severity = QString::fromLatin1(core::trigger::toString(alarm.change.severity));
         const QString text = toQString(m_pipeline.device(deviceIndex(device)).readableText(alarm));
-        printError(alarm.change.raised
-                       ? QStringLiteral("%1at %2 s: %3: %4").arg(from(device), at(alarm.time_s), severity, text)
-                       : QStringLiteral("%1at %2 s: cleared: %3").arg(from(device), at(alarm.time_s), text));
+        timed.emplace_back(alarm.time_s,
+                           alarm.change.raised
+                               ? QStringLiteral("%1at %2 s: %3: %4").arg(from(device), at(alarm.time_s), severity, text)
+                               : QStringLiteral("%1at %2 s: cleared: %3").arg(from(device), at(alarm.time_s), text));
         if (m_stopOnCritical && alarm.change.raised && !m_criticalStop &&
             alarm.change.severity == core::trigger::LimitSeverity::Critical)
             m_criticalStop = QStringLiteral("stopped on a critical alarm at %1 s: %2").arg(at(alarm.time_s), text);
     }
+    std::ranges::stable_sort(timed, {}, &std::pair<double, QString>::first);
+    for (const auto& [time_s, line] : timed) printError(line);
     if (news.trigger) tellTrigger(*news.trigger);
     for (const auto& [device, summary] : news.partsEnded)
         printError(QStringLiteral("%1its part ended at %2 s; the other devices record on")
