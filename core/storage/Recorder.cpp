@@ -2,7 +2,9 @@
 #include "core/storage/Recorder.h"
 
 #include "core/SampleBlock.h"
+#include "core/text/UtcTime.h"
 
+#include <chrono>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -20,6 +22,7 @@ Recorder::Recorder(const std::string& storePath, const SessionMetadata& metadata
     m_store.refuseIfDamaged();  // a damaged file only gets worse with every page written
     if (m_lock) m_store.markCrashedSessionsInterrupted();
     m_session = m_store.beginSession(metadata, channels, sampleRate_hz);
+    m_triggered = !metadata.trigger.empty();
     try {
         for (const std::int64_t calibration : calibrations) m_store.linkCalibration(m_session, calibration);
     } catch (const StorageError&) {
@@ -202,7 +205,15 @@ RecorderStats Recorder::finish(SessionStatus status, const std::optional<Verdict
         m_stats.error += "; the samples not stored could not be marked as lost in the store";
     }
     try {
-        m_store.endSession(m_session, m_stats.error.empty() ? status : SessionStatus::Interrupted);
+        const auto now = std::chrono::system_clock::now();
+        m_store.endSession(m_session, m_stats.error.empty() ? status : SessionStatus::Interrupted,
+                           text::utcIso8601(now));
+        if (m_triggered && m_firstIndex) {  // its last sample's end is about now
+            const double length_s = static_cast<double>(m_consumedEnd) / m_sampleRate_hz;
+            m_store.setStartedUtc(m_session,
+                                  text::utcIso8601(now - std::chrono::duration_cast<std::chrono::milliseconds>(
+                                                             std::chrono::duration<double>(length_s))));
+        }
         if (verdict) m_store.decideVerdict(m_session, *verdict);
         if (!unjudged.empty()) m_store.markUnjudged(m_session, unjudged);
     } catch (const StorageError& e) {

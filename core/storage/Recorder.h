@@ -112,6 +112,10 @@ private:
     std::uint64_t m_consumedEnd = 0;          // one past the last sample consumed, session-relative
     RecorderStats m_stats;
     bool m_finished = false;
+    // Cut by a trigger: its first samples were taken before the recorder
+    // was made (its pre-trigger time), so its start is dated back from its
+    // end by its length when it finishes.
+    bool m_triggered = false;
     std::jthread m_writer;  // last: stopped before the members it uses go
 };
 

@@ -368,6 +368,11 @@ void SessionStore::endSession(std::int64_t session, SessionStatus status, std::o
         .run();
 }
 
+void SessionStore::setStartedUtc(std::int64_t session, const std::string& startedUtc)
+{
+    m_db.prepare("UPDATE sessions SET started_utc = ? WHERE id = ?").bind(1, startedUtc).bind(2, session).run();
+}
+
 void SessionStore::markUnjudged(std::int64_t session, const std::string& why)
 {
     m_db.prepare("UPDATE sessions SET unjudged = ? WHERE id = ?").bind(1, why).bind(2, session).run();

@@ -52,6 +52,8 @@ public:
     // for one that never ended).
     void endSession(std::int64_t session, SessionStatus status, std::optional<std::string> endedUtc = std::nullopt);
     std::int64_t decideVerdict(std::int64_t session, const VerdictDecision& decision) override;
+    // Dates its start (a triggered session's first sample came before its recorder).
+    void setStartedUtc(std::int64_t session, const std::string& startedUtc);
     // Why its mode gave it no automatic verdict (SessionSummary::unjudged).
     void markUnjudged(std::int64_t session, const std::string& why);
     // Sets the verdict without a trail: only for an import of an export

@@ -14,6 +14,7 @@
 //   first, both are stored as alarm events naming their limit, and
 //   --stop-on critical ends the recording there with exit 1, data kept.
 #include "core/storage/SessionStore.h"
+#include "core/text/UtcTime.h"
 #include "support/CliRunner.h"
 #include "support/EmulatorProcess.h"
 #include "support/TmpfsMount.h"
@@ -87,6 +88,13 @@ TEST(TriggeredRecordCli, APanelLineGetsOneSessionPerPanelFromHalfASecondBeforeIt
         SCOPED_TRACE(session.metadata.subject);
         EXPECT_EQ(session.status, core::SessionStatus::Complete);
         EXPECT_EQ(session.metadata.trigger, "a>2e-05, pre 0.5 s, post 1 s, hold-off 0 s");
+        // Dated from its first sample, half a second before the trigger, not
+        // from when the trigger made its recorder: its wall-clock span is
+        // its length (issue 52, fresh eyes).
+        const auto started = core::text::utcSeconds(session.startedUtc);
+        const auto ended = core::text::utcSeconds(session.endedUtc);
+        ASSERT_TRUE(started && ended);
+        EXPECT_NEAR(*ended - *started, session.duration_s(), 0.1);
         EXPECT_TRUE(store.gaps(session.id).empty());
         const auto triggers = eventsOfKind(store, session.id, core::EventKind::Trigger);
         ASSERT_EQ(triggers.size(), 1u);
