@@ -92,6 +92,22 @@ std::vector<std::string> strandedHeadings(const QTextDocument& document)
     return stranded;
 }
 
+// The report of `data` laid out twice: as Qt paginates by itself, whose
+// stranded headings are counted (the sweep does reach page feet), and by
+// layOutPages, where each stranded heading is a failure said with `what`.
+int strandedInBothLayouts(const core::report::ReportData& data, const std::string& what)
+{
+    const auto plain = ui::buildReportDocument(data);
+    QTextFrameFormat margins = plain->rootFrame()->frameFormat();
+    margins.setMargin(20.0 * 96.0 / 25.4);
+    plain->rootFrame()->setFrameFormat(margins);
+    plain->setPageSize(ui::a4Paper_px());
+    const auto kept = ui::buildReportDocument(data);
+    ui::layOutPages(*kept, ui::a4Paper_px());
+    for (const auto& heading : strandedHeadings(*kept)) ADD_FAILURE() << what << ": " << heading;
+    return static_cast<int>(strandedHeadings(*plain).size());
+}
+
 }  // namespace
 
 TEST(ReportPages, AHeadingIsNeverLeftAtThePageFootWithoutItsTable)
@@ -104,16 +120,7 @@ TEST(ReportPages, AHeadingIsNeverLeftAtThePageFootWithoutItsTable)
         for (int k = 0; k < markers; ++k)
             data.events.push_back({0, "live", core::EventKind::Marker, 0.1 * k, 0.1 * k, 0, {}, {}, {}, "marker"});
         for (int k = 0; k < 4; ++k) data.annotations.push_back({0, 0.5 + k, "Grace", "a note", "", ""});
-        // As Qt paginates by itself: the count shows the sweep does reach page feet.
-        const auto plain = ui::buildReportDocument(data);
-        QTextFrameFormat margins = plain->rootFrame()->frameFormat();
-        margins.setMargin(20.0 * 96.0 / 25.4);
-        plain->rootFrame()->setFrameFormat(margins);
-        plain->setPageSize(ui::a4Paper_px());
-        strandedByQt += static_cast<int>(strandedHeadings(*plain).size());
-        const auto kept = ui::buildReportDocument(data);
-        ui::layOutPages(*kept, ui::a4Paper_px());
-        for (const auto& what : strandedHeadings(*kept)) ADD_FAILURE() << markers << " markers: " << what;
+        strandedByQt += strandedInBothLayouts(data, std::to_string(markers) + " markers");
     }
     EXPECT_GT(strandedByQt, 0) << "no heading reached a page's foot: the sweep tests nothing";
 }
@@ -129,15 +136,7 @@ TEST(ReportPages, AHeadingAndItsLineOfIntroductionGoWithTheirTable)
     for (int words = 0; words <= 1400; words += 12) {
         auto data = base;
         for (int k = 0; k < words; ++k) data.session.metadata.notes += "notes ";
-        const auto plain = ui::buildReportDocument(data);
-        QTextFrameFormat margins = plain->rootFrame()->frameFormat();
-        margins.setMargin(20.0 * 96.0 / 25.4);
-        plain->rootFrame()->setFrameFormat(margins);
-        plain->setPageSize(ui::a4Paper_px());
-        strandedByQt += static_cast<int>(strandedHeadings(*plain).size());
-        const auto kept = ui::buildReportDocument(data);
-        ui::layOutPages(*kept, ui::a4Paper_px());
-        for (const auto& what : strandedHeadings(*kept)) ADD_FAILURE() << words << " words of notes: " << what;
+        strandedByQt += strandedInBothLayouts(data, std::to_string(words) + " words of notes");
     }
     EXPECT_GT(strandedByQt, 0) << "no heading reached a page's foot: the sweep tests nothing";
     // Sites the detector could not place: why, in a sentence.
