@@ -133,7 +133,7 @@ TEST(ReportPages, AHeadingAndItsLineOfIntroductionGoWithTheirTable)
     QTemporaryDir dir;
     const auto base = panelWithDefects(dir);
     int strandedByQt = 0;
-    for (int words = 0; words <= 1400; words += 12) {
+    for (int words = 0; words <= 1100; words += 16) {
         auto data = base;
         for (int k = 0; k < words; ++k) data.session.metadata.notes += "notes ";
         strandedByQt += strandedInBothLayouts(data, std::to_string(words) + " words of notes");
