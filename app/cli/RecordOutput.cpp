@@ -3,6 +3,7 @@
 
 #include "CliSupport.h"
 #include "core/storage/SessionStore.h"
+#include "core/text/CountText.h"
 #include "core/timing/ClockMappingText.h"
 
 #include <QLocale>
@@ -146,10 +147,11 @@ void RecordOutput::reportOne(const devices::session::RecordingEnd& end)
     const std::uint64_t lostCount = lost.contains(summary.session)
                                         ? lost.at(summary.session)
                                         : live.stats().samplesLost + written.samplesDropped + summary.samplesLostAtEnd;
-    QTextStream(stdout) << "Recorded session " << summary.session << ": " << written.samplesWritten
-                        << " samples per channel, " << lostCount << " lost, "
-                        << live.source().decoderCounters().crcErrors << " CRC errors (" << channelsAt(live) << ", into "
-                        << toQString(m_db) << "); " << toQString(core::toString(live.recordingMetadata().mode)) << ": "
+    QTextStream(stdout) << "Recorded session " << summary.session << ": "
+                        << toQString(core::text::countText(written.samplesWritten, "sample", "samples"))
+                        << " per channel, " << lostCount << " lost, " << live.source().decoderCounters().crcErrors
+                        << " CRC errors (" << channelsAt(live) << ", into " << toQString(m_db) << "); "
+                        << toQString(core::toString(live.recordingMetadata().mode)) << ": "
                         << toQString(summary.analysis) << Qt::endl;
     tellEndProblem({}, summary);
 }
@@ -181,8 +183,9 @@ void RecordOutput::reportSeveral(const devices::session::RecordingEnd& end)
         const auto& summary = part->what;
         const auto& live = m_pipeline.device(deviceIndex(name));
         const auto clock = std::ranges::find(stored, summary.session, &core::storage::SessionPart::id);
-        out << "  " << toQString(name) << " (session " << summary.session << "): " << summary.stats.samplesWritten
-            << " samples per channel, "
+        out << "  " << toQString(name) << " (session " << summary.session
+            << "): " << toQString(core::text::countText(summary.stats.samplesWritten, "sample", "samples"))
+            << " per channel, "
             << (lost.contains(summary.session) ? lost.at(summary.session) : live.stats().samplesLost) << " lost, "
             << live.source().decoderCounters().crcErrors << " CRC errors (" << channelsAt(live) << "); "
             << toQString(core::toString(live.recordingMetadata().mode)) << ": " << toQString(summary.analysis)

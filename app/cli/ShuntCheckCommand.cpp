@@ -14,6 +14,7 @@
 #include <QLocale>
 #include <QTextStream>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <thread>
@@ -133,12 +134,11 @@ int runShuntCheck(const QStringList& arguments)
         printError(QString::fromStdString(result.refusal));
         return kExitFailure;
     }
-    const auto microstrain = [](double strain, int decimals) {
-        return QLocale::c().toString(strain * 1e6, 'f', decimals);
-    };
+    // The expected step to the measured one's decimals, side by side.
+    const int decimals = std::max(1, core::text::uncertaintyDecimals(result.measured.uncertainty * 1e6));
     const auto& check = result.check;
-    QTextStream(stdout) << "Shunt check " << toQString(channelName) << ": expected " << microstrain(run.expected(), 1)
-                        << " µε, measured "
+    QTextStream(stdout) << "Shunt check " << toQString(channelName) << ": expected "
+                        << QLocale::c().toString(run.expected() * 1e6, 'f', decimals) << " µε, measured "
                         << toQString(core::text::valueWithUncertainty(result.measured.step * 1e6,
                                                                       result.measured.uncertainty * 1e6, "µε"))
                         << ", deviation " << deviationText(check.deviation) << " % (tolerance "

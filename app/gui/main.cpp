@@ -14,6 +14,7 @@
 #include <QTimer>
 
 #include <algorithm>
+#include <optional>
 
 namespace {
 
@@ -51,7 +52,8 @@ void addOptions(QCommandLineParser& parser)
              .arg(scenarios.join(", "), QString::fromStdString(tactiscope::devices::simulator::kPanelScanScenario)),
          QStringLiteral("ID"), QString::fromStdString(tactiscope::devices::simulator::kPanelScanScenario)},
         {QStringLiteral("mode"),
-         QStringLiteral("Start in this mode: %1 (a scenario of another mode switches to it).")
+         QStringLiteral("Start in this mode: %1 (general takes any scenario; one that cannot feed another "
+                        "mode is refused with the reason, and the window stays in the scenario's).")
              .arg(QString::fromStdString(tactiscope::core::modeChoices())),
          QStringLiteral("MODE")},
         {QStringLiteral("screenshot"), QStringLiteral("Save the window as a PNG after a delay, then quit."),
@@ -88,18 +90,22 @@ int main(int argc, char* argv[])
         return 2;
     }
 
-    tactiscope::ui::MainWindow window;
+    std::optional<tactiscope::core::Mode> mode;
     if (parser.isSet(QStringLiteral("mode"))) {
-        const auto mode = tactiscope::core::modeFromString(parser.value(QStringLiteral("mode")).toStdString());
+        mode = tactiscope::core::modeFromString(parser.value(QStringLiteral("mode")).toStdString());
         if (!mode) {
             QTextStream(stderr) << "tactiscope: unknown mode " << parser.value(QStringLiteral("mode")) << "; one of "
                                 << QString::fromStdString(tactiscope::core::modeChoices()) << '\n';
             return 2;
         }
-        window.setMode(*mode);
     }
+
+    tactiscope::ui::MainWindow window;
     window.station().connectSource(std::make_unique<tactiscope::devices::simulator::SimulatorSource>(
         tactiscope::devices::simulator::makeScenario(scenario)));
+    // Asked of the connected simulator, as the mode box asks it: a device's
+    // own mode would otherwise win at its connect.
+    if (mode) window.setMode(*mode);
     window.show();
     window.checkStore();
 

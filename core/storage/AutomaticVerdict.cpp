@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <string_view>
+
 namespace tactiscope::core::storage {
 
 VerdictDecision automaticDecision(const std::string& analysis, std::size_t defects, std::size_t sites,
@@ -61,6 +63,12 @@ std::optional<VerdictDecision> partsDecision(std::span<const SessionSummary> par
     decision.verdict = *decided->verdict;
     decision.basisJson = basis.dump();
     return decision;
+}
+
+std::string unjudgedReason(const std::string& unjudged)
+{
+    constexpr std::string_view kPrefix = "not judged: ";
+    return unjudged.starts_with(kPrefix) ? unjudged.substr(kPrefix.size()) : unjudged;
 }
 
 std::string partsUnjudged(std::span<const SessionSummary> parts)

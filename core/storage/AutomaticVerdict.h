@@ -33,5 +33,9 @@ std::optional<VerdictDecision> partsDecision(std::span<const SessionSummary> par
 // Why such a session has no verdict, from its parts' reasons: "left: too
 // short to judge (…); right: not judged: …"; empty when none gave one.
 std::string partsUnjudged(std::span<const SessionSummary> parts);
+// The reason alone, for a sentence that already says there is no verdict
+// ("No verdict: it went past a critical limit"): without a leading "not
+// judged: ".
+std::string unjudgedReason(const std::string& unjudged);
 
 }  // namespace tactiscope::core::storage

@@ -79,7 +79,7 @@ struct SessionFilter {
     std::string subject;       // exact
     std::string operatorName;  // exact
     std::optional<Verdict> verdict;
-    std::string text;       // found in subject, operator, site, notes, verdict or device serial (any case)
+    std::string text;       // found in subject, operator, site, notes, verdict, why none, or device serial (any case)
     std::size_t limit = 0;  // only the newest this many; 0: all
 };
 

@@ -430,7 +430,7 @@ std::vector<SessionSummary> SessionStore::sessions(const SessionFilter& filter)
         // One parameter, numbered, used for every searched column.
         const std::string like = " LIKE ?" + std::to_string(values.size() + 1) + " ESCAPE '\\'";
         where += " AND (subject" + like + " OR operator" + like + " OR site" + like + " OR notes" + like +
-                 " OR verdict" + like + " OR device_serial" + like + ")";
+                 " OR verdict" + like + " OR unjudged" + like + " OR device_serial" + like + ")";
         values.push_back(textSearchPattern(filter.text));
     }
     // LIMIT -1: all of them.

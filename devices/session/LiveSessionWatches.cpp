@@ -217,6 +217,9 @@ void LiveSession::storeAlarm(const LimitAlarm& raised, double end_s)
     if (!m_recorder->acquisitionOrigin_s()) return;  // before the first sample there is nothing to mark
     const double start_s = std::max(0.0, m_recorder->sessionTimeOf(raised.time_s));
     if (start_s > end_s) return;  // raised after the recording's last sample
+    // A critical alarm over the recording's samples, however it came (a
+    // triggered session's pre-trigger stroke included), leaves it unjudged.
+    if (raised.change.severity == core::trigger::LimitSeverity::Critical) m_criticalWhileRecording = true;
     // The limit as it was given, besides.
     m_recorder->addEvents(
         {core::storage::alarmRecord(start_s, end_s, readableText(raised) + "; limit " + raised.limit.text())});

@@ -18,6 +18,7 @@
 #include "devices/simulator/SimulatedScenario.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace tactiscope::devices::simulator {
@@ -28,6 +29,7 @@ struct CapacitiveWeightsParameters {
     double sampleRate_hz = 10.0;
     core::sensors::CapacitiveBeamGeometry geometry = paperSensorNo1();
     WeightProtocol protocol = WeightProtocol::Cumulative;
+    std::string name;  // what the link says it is; empty: by its protocol
     std::vector<double> weights_mgf{10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110, 120, 130, 140, 150};
     double baseline_s = 10.0;  // unloaded at the start and the end
     double dwell_s = 5.0;      // per step
@@ -59,6 +61,7 @@ public:
     // The rig a wizard drives is named as the source list names it.
     std::string name() const override
     {
+        if (!m_p.name.empty()) return m_p.name;
         return m_p.protocol == WeightProtocol::Manual ? "capacitive calibration rig" : "capacitive weights";
     }
     std::optional<core::Mode> mode() const override { return core::Mode::Capacitive; }

@@ -38,6 +38,7 @@ std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64
         if (id == kCapacitiveOverloadScenario) {
             parameters.baseline_s = 2.0;
             parameters.dwell_s = 0.5;
+            parameters.name = "overloaded capacitive beam";
         }
         if (rate_hz) parameters.sampleRate_hz = *rate_hz;
         if (id == "capacitive-calibration") parameters.protocol = WeightProtocol::Manual;

@@ -156,6 +156,10 @@ TEST(TriggeredRecordCli, ATriggeredSessionKeepsTheAlarmsOfTheStrokeThatTriggered
             EXPECT_NE(covering, alarms.end())
                 << "no " << severity << " alarm at " << crossed_s << " s among " << alarms.size() << " alarms";
         }
+        // Past its critical limit it is not judged, as a manual recording of
+        // the same stroke is not (issue 52, fresh eyes: it was "defects found").
+        EXPECT_FALSE(session.verdict.has_value());
+        EXPECT_EQ(session.unjudged, "not judged: it went past a critical limit");
     }
 }
 

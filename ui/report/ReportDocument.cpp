@@ -9,6 +9,7 @@
 
 #include "core/Version.h"
 #include "core/report/VerdictTrail.h"
+#include "core/storage/AutomaticVerdict.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/SafeOutput.h"
 #include "ui/modes/ModeUi.h"
@@ -175,7 +176,7 @@ QString verdict(const core::report::ReportData& data)
         return QStringLiteral("<p class=verdict>%1</p>").arg(peaks);
     if (!data.session.unjudged.empty())
         return QStringLiteral("<p class=verdict>%1</p>")
-            .arg(QObject::tr("No verdict: %1").arg(text(data.session.unjudged)));
+            .arg(QObject::tr("No verdict: %1").arg(text(core::storage::unjudgedReason(data.session.unjudged))));
     return QStringLiteral("<p class=verdict>%1</p>").arg(QObject::tr("No verdict recorded"));
 }
 

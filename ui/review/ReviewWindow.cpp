@@ -17,6 +17,7 @@
 #include "core/report/PressTable.h"
 #include "core/report/ReportData.h"
 #include "core/report/VerdictTrail.h"
+#include "core/storage/AutomaticVerdict.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/SafeOutput.h"
 #include "core/storage/SessionExport.h"
@@ -365,7 +366,8 @@ void ReviewWindow::refreshHeader()
     header << (interrupted ? tr("<span style='color:#a05000'><b>interrupted</b> (kept up to the cut)</span>")
                            : tr("status %1").arg(wordText(m_session.status)));
     add(tr("verdict <b>%1</b>"), std::string(core::verdictText(m_session.verdict)));
-    if (!m_session.verdict) add(tr("no verdict: %1"), m_session.unjudged);
+    if (!m_session.verdict && !m_session.unjudged.empty())
+        add(tr("no verdict: %1"), core::storage::unjudgedReason(m_session.unjudged));
     QStringList trail;
     try {
         for (const auto& line : core::report::verdictTrailLines(m_store->verdicts(m_session.id), screenTimeOf))

@@ -193,7 +193,7 @@ std::vector<SessionSummary> CentralStore::sessions(const SessionFilter& filter)
         // One parameter for every searched column; ILIKE as SQLite's LIKE ignores case.
         const std::string like = " ILIKE $" + std::to_string(++n) + " ESCAPE '\\'";
         where += " AND (subject" + like + " OR operator" + like + " OR site" + like + " OR notes" + like +
-                 " OR verdict" + like + " OR device_serial" + like + ")";
+                 " OR verdict" + like + " OR unjudged" + like + " OR device_serial" + like + ")";
         values.text(textSearchPattern(filter.text));
     }
     // LIMIT NULL: all of them.

@@ -10,10 +10,12 @@
 #include "ui/live/LiveStation.h"
 #include "ui/live/ModeViews.h"
 #include "ui/modes/palpation/PalpationView.h"
+#include "ui/plot/LivePlotWidget.h"
 
 #include <QComboBox>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QSplitter>
 #include <QStackedWidget>
 #include <QTemporaryDir>
 
@@ -58,6 +60,27 @@ TEST(ModeAndSource, ChoosingTheSimulatorOfAnotherModeSwitchesToIt)
     ASSERT_NE(views, nullptr);
     EXPECT_TRUE(views->isVisible());
     EXPECT_EQ(views->shown(), window.findChild<ui::PalpationView*>());
+}
+
+// `tactiscope --scenario panel-scan --mode general` asks the mode of the
+// connected simulator (issue 52, fresh eyes: asked before the connect, the
+// device's own mode won and --mode general never showed).
+TEST(ModeAndSource, TheGeneralModeAskedAfterConnectingTakesAnySimulator)
+{
+    ui::MainWindow window;
+    window.show();
+    window.station().connectSource(liveSimulator("panel-scan"));
+    ASSERT_EQ(window.mode(), core::Mode::PanelScan);
+    // The detector's marks on the traces go with its mode (they stayed, and
+    // new ones came, on a general recording of the panel probe).
+    auto* traces = qobject_cast<ui::LivePlotWidget*>(child<QSplitter>(window, "centreSplitter")->widget(0));
+    ASSERT_NE(traces, nullptr);
+    ASSERT_TRUE(tactiscope::testing::waitFor([&] { return traces->eventCount() > 0; }, 4000));
+    EXPECT_TRUE(window.setMode(core::Mode::General));
+    EXPECT_EQ(window.mode(), core::Mode::General);
+    EXPECT_EQ(window.station().device()->mode(), core::Mode::General);
+    runEventLoopFor(1500);  // a defect crossing every 0.7 s or so
+    EXPECT_EQ(traces->eventCount(), 0u);
 }
 
 TEST(ModeAndSource, AModeTheDeviceCannotFeedIsRefusedAndNothingIsRecordedInIt)

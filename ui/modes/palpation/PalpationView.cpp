@@ -202,7 +202,7 @@ void PalpationView::resizeEvent(QResizeEvent* event)
     // The probe's and calibration's lines, wrapped at this width, are part
     // of the view's least height: the splitter above leaves them their room
     // rather than cutting the calibration line off at a 768-pixel screen.
-    m_probe->setMinimumHeight(m_probe->heightForWidth(m_probe->width()));
+    m_probe->setMinimumHeight(std::max(0, m_probe->heightForWidth(m_probe->width())));  // -1: no text yet
 }
 
 void PalpationView::updateReadout()

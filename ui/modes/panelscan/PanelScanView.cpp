@@ -183,6 +183,14 @@ void PanelScanView::update(devices::session::LiveSession& session)
 {
     const auto* unit = session.unitAs<devices::session::PanelScanUnit>();
     if (!unit) return;
+    // In another mode the detector's marks leave the traces (a device of
+    // two strain channels recorded in general mode showed "A then B").
+    if (session.mode() != core::Mode::PanelScan) {
+        if (m_traces && m_onTraces > 0) m_traces->clearEvents();
+        m_onTraces = 0;
+        m_tracesGeneration = ~std::uint64_t{0};  // back in this mode: marked afresh
+        return;
+    }
     if (unit->notJudged() != m_notJudged) {
         m_notJudged = unit->notJudged();
         showCount();
