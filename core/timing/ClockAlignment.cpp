@@ -117,7 +117,7 @@ const char* describe(ClockUncertaintyBasis basis)
     case ClockUncertaintyBasis::Bound:
         return "a bound: the fastest frames lie apart from the rest's floor (a polled link, or rare fast frames)";
     case ClockUncertaintyBasis::TooFewFrames:
-        return "too few frames yet";
+        return "too few frames to tell";
     case ClockUncertaintyBasis::Exact:
         return "exact: the source times its samples by the host's clock";
     }

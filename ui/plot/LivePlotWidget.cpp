@@ -191,7 +191,13 @@ void LivePlotWidget::buildPlotItems(const std::vector<core::ChannelDescriptor>& 
                     &LivePlotWidget::syncTimeAxes, Qt::UniqueConnection);
             rect->axis(QCPAxis::atLeft)->setLabel(unit.axisTitle());
             useEvenDecimals(*rect->axis(QCPAxis::atLeft));
-            m_lanes.push_back({rect, {0.0, 0.0}, unit.scale, std::nullopt, nullptr});
+            m_lanes.push_back({rect, {0.0, 0.0}, unit.scale, std::nullopt, nullptr, std::nullopt});
+            if (!unit.levels.empty()) {  // a lane of named levels reads as its names, as in the review
+                QSharedPointer<QCPAxisTickerText> named(new QCPAxisTickerText);
+                for (const auto& [value, name] : unit.levels) named->addTick(value, name);
+                rect->axis(QCPAxis::atLeft)->setTicker(named);
+                m_lanes.back().levels = AxisRange{unit.levels.front().first - 0.4, unit.levels.back().first + 0.4};
+            }
         }
         QCPAxisRect* rect = m_lanes[lane].rect;
         QCPGraph* graph = m_plot->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
@@ -639,6 +645,10 @@ void LivePlotWidget::draw(double start_s, double end_s)
         if (l.threshold_si) {  // the line it is read against stays in view
             laneMin[lane] = std::min(laneMin[lane], *l.threshold_si * l.scale);
             laneMax[lane] = std::max(laneMax[lane], *l.threshold_si * l.scale);
+        }
+        if (l.levels) {
+            laneMin[lane] = std::min(laneMin[lane], l.levels->lower);
+            laneMax[lane] = std::max(laneMax[lane], l.levels->upper);
         }
         if (m_scaleHeld || !std::isfinite(laneMin[lane])) continue;
         l.range = nextAxisRange(l.range, laneMin[lane], laneMax[lane]);

@@ -142,6 +142,7 @@ private:
         double scale = 1.0;         // SI → display
         std::optional<double> threshold_si;
         QCPAbstractItem* thresholdLine = nullptr;
+        std::optional<AxisRange> levels;  // a lane of named levels keeps them all in view
     };
 
     void scheduleFrame();

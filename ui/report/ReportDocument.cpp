@@ -309,8 +309,13 @@ std::unique_ptr<QTextDocument> buildReportDocument(const core::report::ReportDat
                                ? QObject::tr("Shaded: defects (orange A then B, purple B then A), lost samples "
                                              "(grey); dashed: markers; teal dashed: the detector's threshold.")
                                : QObject::tr("Shaded: readings (green), lost samples (grey); dashed: markers.");
-    html += QStringLiteral("<p><small>%1 %2</small></p>")
-                .arg(shaded, QObject::tr("Bands show each stretch's minimum and maximum."));
+    // The red bands of limit alarms, when the session has any.
+    const bool alarms = std::ranges::any_of(data.events, [](const core::storage::SessionEvent& e) {
+        return e.kind == core::EventKind::Alarm && e.end_s > e.start_s;
+    });
+    html += QStringLiteral("<p><small>%1 %2%3</small></p>")
+                .arg(shaded, alarms ? QObject::tr("Red: a limit alarm, from its raise to its clear. ") : QString(),
+                     QObject::tr("Bands show each stretch's minimum and maximum."));
     html += eventTables(data, *document);
     html += QStringLiteral("<p class=footer>%1</p>")
                 .arg(QObject::tr("Tactiscope %1 (recorded with %2), %3")

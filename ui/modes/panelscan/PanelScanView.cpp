@@ -1,6 +1,8 @@
 // PanelScanView: parameter form → LiveDetectionSettings, events → table and alarm.
 #include "ui/modes/panelscan/PanelScanView.h"
 
+#include "ui/modes/ModeUi.h"
+
 #include "devices/session/modes/PanelScanUnit.h"
 
 #include "core/detector/DefectSites.h"
@@ -171,7 +173,9 @@ void PanelScanView::bind(const devices::session::LiveSession* session)
         return;
     }
     // Short titles: the lanes are low, beside the defect list.
-    const DisplayUnit decision{1.0, QString(), tr("Decision")};  // as the review and the report call it
+    // Named and levelled as the review and the report have it.
+    const DisplayUnit decision =
+        panelScanUi().laneUnit("decision").value_or(DisplayUnit{1.0, QString(), tr("Decision")});
     const DisplayUnit correlation{1.0, QString(), tr("Best R")};
     m_lanes->setSource(m_detection->output(), core::detector::LiveDetection::outputChannels(),
                        session->source().nominalSampleRate_hz(), {decision, correlation, correlation});

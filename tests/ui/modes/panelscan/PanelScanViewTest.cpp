@@ -16,6 +16,7 @@
 #include "support/WaitFor.h"
 #include "ui/MainWindow.h"
 #include "ui/live/LiveStation.h"
+#include "ui/plot/LivePlotWidget.h"
 
 #include <QDoubleSpinBox>
 #include <QLabel>
@@ -27,6 +28,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <qcustomplot.h>
 
 #include <gtest/gtest.h>
 
@@ -178,4 +180,24 @@ TEST(PanelScanView, APanelRecordedTooShortToJudgeIsSaidSoAndNotAskedAbout)
     const QString count = child<QLabel>(*window.findChild<ui::PanelScanView*>(), "defectCountLabel")->text();
     EXPECT_TRUE(count.contains(QStringLiteral("recorded on this panel — too short to judge ("))) << count.toStdString();
     EXPECT_EQ(window.findChild<QDialog*>(QStringLiteral("verdictBox")), nullptr);
+}
+
+// Issue 52 (fresh eyes): the live decision lane read "1 / 0 / -1" where the
+// review and the report name its levels. It names them too, all in view.
+TEST(PanelScanView, TheLiveDecisionLaneNamesItsLevelsAsTheReviewDoes)
+{
+    ui::MainWindow window;
+    window.station().connectSource(liveSimulator());
+    window.show();
+    auto* lanes = window.findChild<ui::PanelScanView*>()->lanes();
+    // Before the first defect the lane holds only "none": every level is in view all the same.
+    ASSERT_TRUE(waitFor([&] { return lanes->laneCount() == 2 && lanes->valueRange(0).first < -1.0; }, 4000));
+    EXPECT_GT(lanes->valueRange(0).second, 1.0);
+    auto* plot = lanes->findChild<QCustomPlot*>();
+    ASSERT_NE(plot, nullptr);
+    auto* named = dynamic_cast<QCPAxisTickerText*>(plot->axisRect(0)->axis(QCPAxis::atLeft)->ticker().data());
+    ASSERT_NE(named, nullptr);
+    QStringList names;
+    for (const auto& name : named->ticks()) names << name;
+    EXPECT_EQ(names, QStringList({"B→A", "none", "A→B"}));
 }
