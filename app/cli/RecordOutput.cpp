@@ -103,6 +103,8 @@ void RecordOutput::tell(const devices::session::PipelineNews& news)
 void RecordOutput::tellTrigger(const devices::session::TriggerStatus& status)
 {
     if (!m_trigger) return;
+    // Its last session started, the trigger waits for nothing more.
+    if (m_trigger->sessions && m_triggered >= *m_trigger->sessions) return;
     using core::trigger::TriggerState;
     const QString condition = toQString(m_trigger->condition.text());
     switch (status.state) {
@@ -113,6 +115,7 @@ void RecordOutput::tellTrigger(const devices::session::TriggerStatus& status)
         printError(QStringLiteral("trigger armed: %1").arg(condition));
         break;
     case TriggerState::Triggered:
+        m_triggered = status.sessionsCut + 1;
         printError(QStringLiteral("triggered: session %1%2")
                        .arg(status.sessionsCut + 1)
                        .arg(m_trigger->sessions ? QStringLiteral(" of %1").arg(*m_trigger->sessions) : QString()));

@@ -48,6 +48,7 @@ private:
     bool m_stopOnCritical = false;
     std::optional<QString> m_criticalStop;
     unsigned m_reported = 0;
+    unsigned m_triggered = 0;  // sessions the trigger has started
     int m_exit = 0;
 };
 

@@ -72,6 +72,10 @@ TEST(TriggeredRecordCli, APanelLineGetsOneSessionPerPanelFromHalfASecondBeforeIt
     EXPECT_EQ(result.out.count(QStringLiteral("Recorded session ")), 3) << result.out.toStdString();
     EXPECT_EQ(result.out.count(QStringLiteral(" 0 lost, 0 CRC errors")), 3) << result.out.toStdString();
     EXPECT_TRUE(result.err.contains(QStringLiteral("triggered: session 3 of 3"))) << result.err.toStdString();
+    // After its last session the trigger is not said to wait again.
+    EXPECT_EQ(
+        result.err.indexOf(QStringLiteral("trigger waiting"), result.err.indexOf(QStringLiteral("session 3 of 3"))), -1)
+        << result.err.toStdString();
 
     core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
     const auto sessions = store.sessions();
