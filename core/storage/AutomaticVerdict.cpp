@@ -67,8 +67,7 @@ std::optional<VerdictDecision> partsDecision(std::span<const SessionSummary> par
 
 std::string unjudgedReason(const std::string& unjudged)
 {
-    constexpr std::string_view kPrefix = "not judged: ";
-    return unjudged.starts_with(kPrefix) ? unjudged.substr(kPrefix.size()) : unjudged;
+    return unjudged.starts_with(kNotJudged) ? unjudged.substr(kNotJudged.size()) : unjudged;
 }
 
 std::string partsUnjudged(std::span<const SessionSummary> parts)

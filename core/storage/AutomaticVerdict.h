@@ -13,6 +13,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 
 namespace tactiscope::core::storage {
 
@@ -33,9 +34,12 @@ std::optional<VerdictDecision> partsDecision(std::span<const SessionSummary> par
 // Why such a session has no verdict, from its parts' reasons: "left: too
 // short to judge (…); right: not judged: …"; empty when none gave one.
 std::string partsUnjudged(std::span<const SessionSummary> parts);
+// How a reason other than a too-short recording begins: "not judged: it
+// went past a critical limit". One prefix for those who write it and
+// unjudgedReason(), which takes it off.
+inline constexpr std::string_view kNotJudged = "not judged: ";
 // The reason alone, for a sentence that already says there is no verdict
-// ("No verdict: it went past a critical limit"): without a leading "not
-// judged: ".
+// ("No verdict: it went past a critical limit"): without kNotJudged.
 std::string unjudgedReason(const std::string& unjudged);
 
 }  // namespace tactiscope::core::storage

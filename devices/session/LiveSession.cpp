@@ -9,6 +9,7 @@
 #include "core/ModeCapability.h"
 #include "core/SinkSlot.h"
 #include "core/modes/ModeDefinition.h"
+#include "core/storage/AutomaticVerdict.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/RecordingTap.h"
 #include "core/text/CountText.h"
@@ -311,7 +312,7 @@ RecordingSummary LiveSession::finishRecording()
                               std::ranges::any_of(m_raisedAlarms, [](const LimitAlarm& alarm) {
                                   return alarm.change.severity == core::trigger::LimitSeverity::Critical;
                               });
-    if (pastCritical) summary.notJudged = "not judged: it went past a critical limit";
+    if (pastCritical) summary.notJudged = std::string(core::storage::kNotJudged) + "it went past a critical limit";
     const bool whole = !summary.lostAt_s && summary.stoppedBecause.empty() && !pastCritical;
     std::optional<core::storage::VerdictDecision> decision;
     if (auto* unit = unitOf(m_metadata.mode)) decision = unit->finishRecording(summary, whole);
@@ -319,11 +320,11 @@ RecordingSummary LiveSession::finishRecording()
     if (!decision && summary.notJudged.empty() && core::definitionOf(m_metadata.mode).detectsDefects) {
         if (summary.lostAt_s) {
             char text[96];
-            std::snprintf(text, sizeof text, "not judged: the probe was lost at %.1f s and not back by the stop",
+            std::snprintf(text, sizeof text, "the probe was lost at %.1f s and not back by the stop",
                           *summary.lostAt_s);
-            summary.notJudged = text;
+            summary.notJudged = std::string(core::storage::kNotJudged) + text;
         } else if (!summary.stoppedBecause.empty())
-            summary.notJudged = "not judged: " + summary.stoppedBecause;
+            summary.notJudged = std::string(core::storage::kNotJudged) + summary.stoppedBecause;
     }
     summary.stats = m_recorder->finish(core::SessionStatus::Complete, decision, summary.notJudged);
     if (!summary.stats.error.empty()) summary.verdict.reset();  // the session ended interrupted
