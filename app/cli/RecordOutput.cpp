@@ -68,8 +68,10 @@ RecordOutput::RecordOutput(std::string db, const devices::session::LivePipeline&
 void RecordOutput::tell(const devices::session::PipelineNews& news)
 {
     for (const auto& [device, problem] : news.problems) printError(from(device) + toQString(problem));
-    // What the links noticed (stored as alarms) and the limits' alarms, of
-    // every device, told in the order they happened.
+    // What the links noticed (stored as alarms), the limits' alarms and the
+    // trigger instants, of every device, told in the order they happened
+    // on the streams' clock: seconds since record connected, one clock
+    // however many sessions a trigger cuts.
     std::vector<std::pair<double, QString>> timed;
     for (const auto& [device, notice] : news.notices)
         timed.emplace_back(
@@ -86,11 +88,17 @@ void RecordOutput::tell(const devices::session::PipelineNews& news)
             alarm.change.severity == core::trigger::LimitSeverity::Critical)
             m_criticalStop = QStringLiteral("stopped on a critical alarm at %1 s: %2").arg(at(alarm.time_s), text);
     }
+    std::optional<QString> triggerLine;
+    if (news.trigger) triggerLine = triggerText(*news.trigger);
+    if (triggerLine && news.trigger->state == core::trigger::TriggerState::Triggered && news.trigger->lastTrigger_s) {
+        const double time_s = *news.trigger->lastTrigger_s;
+        timed.emplace_back(time_s, QStringLiteral("at %1 s: %2").arg(at(time_s), *std::exchange(triggerLine, {})));
+    }
     std::ranges::stable_sort(timed, {}, &std::pair<double, QString>::first);
     for (const auto& [time_s, line] : timed) printError(line);
-    if (news.trigger) tellTrigger(*news.trigger);
+    if (triggerLine) printError(*triggerLine);
     for (const auto& [device, summary] : news.partsEnded)
-        printError(QStringLiteral("%1its part ended at %2 s; the other devices record on")
+        printError(QStringLiteral("%1its part ended after %2 s of recording; the other devices record on")
                        .arg(from(device), at(summary.end_s)));
     for (const auto& end : news.ended) report(end);
     if (news.triggerRefused) {
@@ -100,29 +108,27 @@ void RecordOutput::tell(const devices::session::PipelineNews& news)
     }
 }
 
-void RecordOutput::tellTrigger(const devices::session::TriggerStatus& status)
+std::optional<QString> RecordOutput::triggerText(const devices::session::TriggerStatus& status)
 {
-    if (!m_trigger) return;
+    if (!m_trigger) return std::nullopt;
     // Its last session started, the trigger waits for nothing more.
-    if (m_trigger->sessions && m_triggered >= *m_trigger->sessions) return;
+    if (m_trigger->sessions && m_triggered >= *m_trigger->sessions) return std::nullopt;
     using core::trigger::TriggerState;
     const QString condition = toQString(m_trigger->condition.text());
     switch (status.state) {
     case TriggerState::Waiting:
-        printError(QStringLiteral("trigger waiting: %1 must first not hold").arg(condition));
-        break;
+        return QStringLiteral("trigger waiting: %1 must first not hold").arg(condition);
     case TriggerState::Armed:
-        printError(QStringLiteral("trigger armed: %1").arg(condition));
-        break;
+        return QStringLiteral("trigger armed: %1").arg(condition);
     case TriggerState::Triggered:
         m_triggered = status.sessionsCut + 1;
-        printError(QStringLiteral("triggered: session %1%2")
-                       .arg(status.sessionsCut + 1)
-                       .arg(m_trigger->sessions ? QStringLiteral(" of %1").arg(*m_trigger->sessions) : QString()));
-        break;
+        return QStringLiteral("triggered: session %1%2")
+            .arg(status.sessionsCut + 1)
+            .arg(m_trigger->sessions ? QStringLiteral(" of %1").arg(*m_trigger->sessions) : QString());
     case TriggerState::Finished:
         break;
     }
+    return std::nullopt;
 }
 
 void RecordOutput::report(const devices::session::RecordingEnd& end)

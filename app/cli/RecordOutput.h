@@ -1,6 +1,8 @@
 // What `tactiscope-cli record` prints of the live pipeline
 // (devices/session/LivePipeline): each poll's news on stderr as it comes
-// (what a link noticed, limit alarms, the trigger's state), and each
+// (what a link noticed, limit alarms, the trigger's state; times in
+// seconds since the device connected, one clock for every session a
+// trigger cuts, where the store keeps each session's own), and each
 // recording that ended on stdout, in the contract lines: for a session of
 // one device "Recorded session N: S samples per channel, L lost, C CRC
 // errors (K channels at R Hz, into DB); MODE: ANALYSIS", for one of
@@ -39,7 +41,8 @@ private:
     void reportOne(const devices::session::RecordingEnd& end);
     void reportSeveral(const devices::session::RecordingEnd& end);
     void tellEndProblem(const std::string& device, const devices::session::RecordingSummary& summary);
-    void tellTrigger(const devices::session::TriggerStatus& status);
+    // The line a trigger's new state is told by; none when nothing is said.
+    std::optional<QString> triggerText(const devices::session::TriggerStatus& status);
     std::size_t deviceIndex(const std::string& name) const;
 
     std::string m_db;

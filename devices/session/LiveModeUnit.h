@@ -83,8 +83,8 @@ struct LiveTake {
     // grid cell) uses that instead.
     std::string recordingSite;
     // Tells the operator what the unit saw about the device (a probe whose
-    // own detector disagrees), at a time on the lists' clock, as the link's
-    // notices are told; the unit stores its own alarm while recording.
+    // own detector disagrees), at its stream time, as the link's notices
+    // are told; the unit stores its own alarm while recording.
     std::function<void(double, std::string)> tell;
 };
 

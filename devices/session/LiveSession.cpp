@@ -420,8 +420,8 @@ void LiveSession::takeNotices()
     std::vector<core::storage::SessionEvent> stored;
     for (auto& notice : m_acquisition->takeNotices()) {
         if (m_recorder && m_recorder->sessionTimeOf(notice.time_s) >= 0.0) {
-            notice.time_s = m_recorder->sessionTimeOf(notice.time_s);
-            stored.push_back(core::storage::alarmRecord(notice.time_s, notice.time_s, notice.text));
+            const double session_s = m_recorder->sessionTimeOf(notice.time_s);
+            stored.push_back(core::storage::alarmRecord(session_s, session_s, notice.text));
         }
         m_linkNotices.push_back(std::move(notice));
     }

@@ -227,8 +227,9 @@ public:
     // The limits watched, each with where it comes from.
     const std::vector<core::sensors::SensorLimit>& limits() const { return m_effectiveLimits; }
     const std::vector<core::trigger::LimitSpec>& givenLimits() const { return m_givenLimits; }
-    // The alarms raised or cleared since the last call, times on the
-    // lists' clock; and those raised now.
+    // The alarms raised or cleared since the last call, at stream times
+    // (seconds since the device connected: one clock for a run of many
+    // triggered sessions); and those raised now.
     std::vector<LimitAlarm> takeAlarms() { return std::exchange(m_alarmsTold, {}); }
     const std::vector<LimitAlarm>& raisedAlarms() const { return m_raisedAlarms; }
     // What a trigger or limit may watch: the device's channels, then the
@@ -250,8 +251,8 @@ public:
     // model rejects), each one sentence; taken once.
     std::vector<std::string> takeProblems() { return std::exchange(m_problems, {}); }
     // What the link noticed (a device restart, a sequence its clock
-    // contradicted), in session time while recording (where poll() has
-    // stored each as an alarm event) and stream time otherwise; taken once.
+    // contradicted), at stream times as the alarms; taken once. While
+    // recording, poll() has stored each as an alarm event.
     std::vector<LinkNotice> takeLinkNotices() { return std::exchange(m_linkNotices, {}); }
 
 private:

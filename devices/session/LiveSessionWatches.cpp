@@ -173,8 +173,9 @@ std::optional<std::string> LiveSession::setLimits(std::vector<core::trigger::Lim
     return std::nullopt;
 }
 
-// Each alarm raised or cleared: told on the lists' clock; a clear stores
-// the alarm, from its raise, into the recording.
+// Each alarm raised or cleared: told on the stream's clock (one that does
+// not start again with each session a trigger cuts); a clear stores the
+// alarm, from its raise, into the recording.
 void LiveSession::takeLimitAlarms()
 {
     for (auto alarm : m_limits->take()) {
@@ -192,7 +193,6 @@ void LiveSession::takeLimitAlarms()
                 m_alarmsBeforeTrigger.push_back({*raised, alarm.time_s});
             m_raisedAlarms.erase(raised);
         }
-        alarm.time_s = listTime_s(alarm.time_s);
         m_alarmsTold.push_back(std::move(alarm));
     }
 }

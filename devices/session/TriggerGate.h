@@ -35,6 +35,8 @@ struct TriggeredSession {
 struct TriggerStatus {
     core::trigger::TriggerState state = core::trigger::TriggerState::Waiting;
     unsigned sessionsCut = 0;
+    // The stream time of the newest trigger instant; none before the first.
+    std::optional<double> lastTrigger_s;
 };
 
 class TriggerGate final : public core::BlockSink {
@@ -89,6 +91,7 @@ private:
     std::shared_ptr<core::storage::Recorder> m_recorder;
     std::uint64_t m_forwardedUntil = 0;  // the front session's samples before this went to its recorder
     std::optional<Finished> m_finished;
+    std::optional<double> m_lastTrigger_s;
 };
 
 }  // namespace tactiscope::devices::session

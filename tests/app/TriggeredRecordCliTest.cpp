@@ -19,6 +19,7 @@
 #include "support/EmulatorProcess.h"
 #include "support/TmpfsMount.h"
 
+#include <QRegularExpression>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -57,6 +58,44 @@ std::vector<core::storage::SessionEvent> eventsOfKind(core::storage::SessionStor
     auto events = store.events(session);
     std::erase_if(events, [kind](const auto& e) { return e.kind != kind; });
     return events;
+}
+
+// What record told of a triggered run is on one clock, the streams'
+// (issue 52: an alarm raised before its session was told at 5.6 s, its
+// clear inside it at 0.6 s): every "at T s:" line is in time order, each
+// trigger is told at its instant, and the time from a session's trigger
+// to the clear of its critical alarm is the one its stored events span.
+void toldOnOneClock(const QString& err, core::storage::SessionStore& store,
+                    std::vector<core::storage::SessionSummary> sessions)
+{
+    std::ranges::sort(sessions, {}, &core::storage::SessionSummary::id);  // in the order they were triggered
+    const QRegularExpression timed(QStringLiteral("^tactiscope-cli: at (\\d+\\.\\d) s: (.*)$"),
+                                   QRegularExpression::MultilineOption);
+    double previous_s = -1.0;
+    std::vector<double> triggers_s;
+    std::vector<double> criticalCleared_s;
+    for (auto it = timed.globalMatch(err); it.hasNext();) {
+        const auto line = it.next();
+        const double time_s = line.captured(1).toDouble();
+        EXPECT_GE(time_s, previous_s) << line.captured(0).toStdString();
+        previous_s = time_s;
+        if (line.captured(2).startsWith(QStringLiteral("triggered: session"))) triggers_s.push_back(time_s);
+        if (line.captured(2).startsWith(QStringLiteral("cleared: a back below its critical")) &&
+            criticalCleared_s.size() < triggers_s.size())
+            criticalCleared_s.push_back(time_s);
+    }
+    ASSERT_EQ(triggers_s.size(), sessions.size()) << err.toStdString();
+    ASSERT_EQ(criticalCleared_s.size(), sessions.size()) << err.toStdString();
+    for (std::size_t k = 0; k < sessions.size(); ++k) {
+        const auto trigger = eventsOfKind(store, sessions[k].id, core::EventKind::Trigger);
+        auto alarms = eventsOfKind(store, sessions[k].id, core::EventKind::Alarm);
+        std::erase_if(alarms, [](const auto& e) { return e.note.find("its critical") == std::string::npos; });
+        ASSERT_EQ(trigger.size(), 1u);
+        ASSERT_FALSE(alarms.empty());
+        // Each told time is rounded to 0.1 s: their difference to 0.1 s.
+        EXPECT_NEAR(criticalCleared_s[k] - triggers_s[k], alarms.front().end_s - trigger.front().start_s, 0.1 + 1e-9)
+            << "session " << sessions[k].id;
+    }
 }
 
 }  // namespace
@@ -165,6 +204,7 @@ TEST(TriggeredRecordCli, ATriggeredSessionKeepsTheAlarmsOfTheStrokeThatTriggered
         EXPECT_FALSE(session.verdict.has_value());
         EXPECT_EQ(session.unjudged, "not judged: it went past a critical limit");
     }
+    toldOnOneClock(result.err, store, sessions);
 }
 
 TEST(TriggeredRecordCli, AnOverloadedCapacitiveBeamWarnsThenIsCriticalAndStopOnCriticalKeepsTheData)

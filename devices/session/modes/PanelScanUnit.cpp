@@ -67,7 +67,7 @@ void PanelScanUnit::takeProbeDecisions(const LiveTake& take)
 {
     std::vector<core::storage::SessionEvent> alarms;
     for (const auto& d : m_detection->takeDisagreements()) {
-        if (take.tell) take.tell(take.listTime_s(d.start_s), d.text());  // the operator hears it at once
+        if (take.tell) take.tell(d.start_s, d.text());  // the operator hears it at once
         alarms.push_back(core::storage::alarmRecord(d.start_s, d.start_s, d.text()));
     }
     LiveTake recordOnly = take;
