@@ -66,6 +66,7 @@ int list(SessionSource& store, const core::storage::SessionFilter& filter, bool 
             out.key("started_utc").value(s.startedUtc);
             out.key("status").value(core::toString(s.status));
             out.key("verdict").value(core::verdictText(s.verdict));
+            if (!s.unjudged.empty()) out.key("unjudged").value(s.unjudged);  // why its mode gave none
             out.key("duration_s").value(s.duration_s());
             out.key("events").value(static_cast<long long>(s.eventCount));  // its parts' too
             if (!s.station.empty()) out.key("station").value(s.station);    // a central store's

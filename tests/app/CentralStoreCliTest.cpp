@@ -21,6 +21,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -157,6 +158,48 @@ TEST_F(CentralStoreCli, AGeneralSessionAndItsChannelsRolesGoToTheServerAsTheyAre
     EXPECT_EQ(connect().query("SELECT string_agg(role, ',' ORDER BY position) FROM channels").text(0, 0),
               "stiff-beam,");
     expectSameExports(maker, server("quality"));
+}
+
+// Issue 52: a session its mode could not judge (it went past a critical
+// limit) says so on the server as on the station: `show` gives the reason,
+// the list's verdict column "not judged" and its JSON the reason, a search
+// for it finds it, and both export the same bytes.
+TEST_F(CentralStoreCli, ASessionNotJudgedSaysWhyOnTheServerAsOnTheStation)
+{
+    const QString line = m_dir.filePath("line.tactiscope");
+    const std::string why = "not judged: it went past a critical limit";
+    {
+        core::storage::SessionStore store(line.toStdString());
+        core::storage::SessionMetadata metadata;
+        metadata.mode = core::Mode::PanelScan;
+        metadata.subject = "door-40";
+        const std::vector<core::ChannelDescriptor> channels{
+            {"a", "", core::ChannelKind::Strain, core::ChannelRole::CantileverA},
+            {"b", "", core::ChannelKind::Strain, core::ChannelRole::CantileverB}};
+        const auto id = store.beginSession(metadata, channels, 500.0);
+        tactiscope::testing::writeSamples(store, id, 2, 1000, 500.0, 5);
+        store.markUnjudged(id, why);
+        store.endSession(id, core::SessionStatus::Complete);
+    }
+    const CliResult sent = sync(line, server("press_a"));
+    ASSERT_EQ(sent.exitCode, 0) << sent.err.toStdString();
+    for (const QString& db : {line, server("quality")}) {
+        SCOPED_TRACE(db.toStdString());
+        const CliResult shown = runCli({"sessions", "--db", db, "show", "last"});
+        ASSERT_EQ(shown.exitCode, 0) << shown.err.toStdString();
+        EXPECT_TRUE(shown.out.contains(QRegularExpression(QStringLiteral("\\nverdict +") +
+                                                          QRegularExpression::escape(QString::fromStdString(why)))))
+            << shown.out.toStdString();
+        const CliResult table = runCli({"sessions", "--db", db, "list"});
+        EXPECT_TRUE(table.out.contains(QStringLiteral("not judged"))) << table.out.toStdString();
+        const CliResult found = runCli({"sessions", "--db", db, "list", "--search", "critical limit", "--json"});
+        ASSERT_EQ(found.exitCode, 0) << found.err.toStdString();
+        const auto sessions = QJsonDocument::fromJson(found.out.toUtf8()).array();
+        ASSERT_EQ(sessions.size(), 1) << found.out.toStdString();
+        EXPECT_EQ(sessions[0].toObject()["subject"].toString(), QStringLiteral("door-40"));
+        EXPECT_EQ(sessions[0].toObject()["unjudged"].toString(), QString::fromStdString(why));
+    }
+    expectSameExports(line, server("quality"));
 }
 
 // A session of several devices (issue 40) goes whole: the session, each
