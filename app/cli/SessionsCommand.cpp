@@ -137,6 +137,8 @@ int show(SessionSource& store, std::int64_t id, bool json)
     line("ended (UTC)", s.endedUtc);
     line("status", std::string(core::toString(s.status)));
     if (!s.metadata.trigger.empty()) line("trigger", s.metadata.trigger);
+    if (s.metadata.partOf != 0)  // one device's part: the session it belongs to
+        line("part of", "session " + std::to_string(s.metadata.partOf) + " (device " + s.metadata.deviceName + ")");
     // No verdict: why, when its mode would have judged it.
     line("verdict", s.verdict || s.unjudged.empty() ? std::string(core::verdictText(s.verdict)) : s.unjudged);
     for (const auto& decision : core::report::verdictTrailLines(store.verdicts(id))) line("", "  " + decision);

@@ -43,7 +43,9 @@ std::optional<VerdictDecision> partsDecision(std::span<const SessionSummary> par
     nlohmann::ordered_json judged = nlohmann::ordered_json::array();
     for (const SessionSummary& part : parts) {
         if (!part.verdict) {
-            unjudged = unjudged || definitionOf(part.metadata.mode).detectsDefects;
+            // A part whose mode judges, or any part that says why its
+            // readings cannot be trusted (past a critical limit).
+            unjudged = unjudged || definitionOf(part.metadata.mode).detectsDefects || !part.unjudged.empty();
             continue;
         }
         judged.push_back({{"device", part.metadata.deviceName},

@@ -24,6 +24,14 @@ std::optional<std::string> oneDeviceRefusal(SessionSource& store, std::int64_t s
            "); name one device's session for " + what;
 }
 
+std::optional<std::string> partDeletionRefusal(const SessionSummary& session)
+{
+    if (session.metadata.partOf == 0) return std::nullopt;
+    return "session " + std::to_string(session.id) + " is the part of device " + session.metadata.deviceName +
+           " in session " + std::to_string(session.metadata.partOf) + "; delete session " +
+           std::to_string(session.metadata.partOf) + ", which goes with all its parts";
+}
+
 std::vector<double> SessionSource::readChannel(std::int64_t session, std::size_t channel, std::uint64_t firstIndex,
                                                std::uint64_t count)
 {

@@ -89,6 +89,10 @@ struct SessionFilter {
 class SessionSource;
 std::optional<std::string> oneDeviceRefusal(SessionSource& store, std::int64_t session, const std::string& what);
 
+// Why `session` may not be deleted alone: it is one device's part of a
+// session of several, whose verdict and events count it. None otherwise.
+std::optional<std::string> partDeletionRefusal(const SessionSummary& session);
+
 // The LIKE pattern (escaped by a backslash) that finds SessionFilter::text
 // anywhere in a column: its own '%' and '_' are literal, so "10%" finds "10%".
 std::string textSearchPattern(const std::string& text);

@@ -145,6 +145,7 @@ void SessionStore::deleteSession(std::int64_t session)
     // "recording" has a live recorder.
     if (summary->status == SessionStatus::Recording)
         throw StorageError("session " + std::to_string(session) + " is being recorded; stop the recording first");
+    if (const auto refusal = partDeletionRefusal(*summary)) throw StorageError(*refusal);
     m_db.prepare("DELETE FROM sessions WHERE id = ?").bind(1, session).run();  // cascades
 }
 
@@ -430,7 +431,8 @@ std::vector<SessionSummary> SessionStore::sessions(const SessionFilter& filter)
         // One parameter, numbered, used for every searched column.
         const std::string like = " LIKE ?" + std::to_string(values.size() + 1) + " ESCAPE '\\'";
         where += " AND (subject" + like + " OR operator" + like + " OR site" + like + " OR notes" + like +
-                 " OR verdict" + like + " OR unjudged" + like + " OR device_serial" + like + ")";
+                 " OR verdict" + like + " OR (unjudged <> '' AND ('not judged: ' || unjudged)" + like + ")" +
+                 " OR device_serial" + like + ")";
         values.push_back(textSearchPattern(filter.text));
     }
     // LIMIT -1: all of them.

@@ -192,12 +192,14 @@ TEST_F(CentralStoreCli, ASessionNotJudgedSaysWhyOnTheServerAsOnTheStation)
             << shown.out.toStdString();
         const CliResult table = runCli({"sessions", "--db", db, "list"});
         EXPECT_TRUE(table.out.contains(QStringLiteral("not judged"))) << table.out.toStdString();
-        const CliResult found = runCli({"sessions", "--db", db, "list", "--search", "critical limit", "--json"});
-        ASSERT_EQ(found.exitCode, 0) << found.err.toStdString();
-        const auto sessions = QJsonDocument::fromJson(found.out.toUtf8()).array();
-        ASSERT_EQ(sessions.size(), 1) << found.out.toStdString();
-        EXPECT_EQ(sessions[0].toObject()["subject"].toString(), QStringLiteral("door-40"));
-        EXPECT_EQ(sessions[0].toObject()["unjudged"].toString(), QString::fromStdString(why));
+        for (const QString words : {"critical limit", "not judged"}) {
+            const CliResult found = runCli({"sessions", "--db", db, "list", "--search", words, "--json"});
+            ASSERT_EQ(found.exitCode, 0) << found.err.toStdString();
+            const auto sessions = QJsonDocument::fromJson(found.out.toUtf8()).array();
+            ASSERT_EQ(sessions.size(), 1) << found.out.toStdString();
+            EXPECT_EQ(sessions[0].toObject()["subject"].toString(), QStringLiteral("door-40"));
+            EXPECT_EQ(sessions[0].toObject()["unjudged"].toString(), QString::fromStdString(why));
+        }
     }
     expectSameExports(line, server("quality"));
 }
@@ -264,6 +266,19 @@ TEST_F(CentralStoreCli, ASessionOfSeveralDevicesGoesWholeWithItsPartsAndClocks)
     auto pressA = connect("press_a");
     EXPECT_TRUE(refused(pressA, part, {"6f1c7d1e-0000-4000-8000-000000000002", "press_a", parent}));
     EXPECT_EQ(owner.query("SELECT count(*) FROM sessions").text(0, 0), "3");
+
+    // Not even the owner deletes a part alone: the session goes whole.
+    const std::string beamPart = owner.query("SELECT id FROM sessions WHERE device_name = 'beam'").text(0, 0);
+    const CliResult alone = runCli({"sessions", "--db", server(), "delete", QString::fromStdString(beamPart)});
+    EXPECT_NE(alone.exitCode, 0);
+    EXPECT_TRUE(alone.err.contains(QStringLiteral("is the part of device beam in session %1; delete session %1")
+                                       .arg(QString::fromStdString(parent))))
+        << alone.err.toStdString();
+    EXPECT_EQ(owner.query("SELECT count(*) FROM sessions").text(0, 0), "3");
+    const CliResult partShown = runCli({"sessions", "--db", server(), "show", QString::fromStdString(beamPart)});
+    EXPECT_TRUE(partShown.out.contains(
+        QStringLiteral("\npart of           session %1 (device beam)\n").arg(QString::fromStdString(parent))))
+        << partShown.out.toStdString();
 }
 
 // Issue 52: a session of several devices carries its parts' verdict (the

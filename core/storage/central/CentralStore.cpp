@@ -193,7 +193,8 @@ std::vector<SessionSummary> CentralStore::sessions(const SessionFilter& filter)
         // One parameter for every searched column; ILIKE as SQLite's LIKE ignores case.
         const std::string like = " ILIKE $" + std::to_string(++n) + " ESCAPE '\\'";
         where += " AND (subject" + like + " OR operator" + like + " OR site" + like + " OR notes" + like +
-                 " OR verdict" + like + " OR unjudged" + like + " OR device_serial" + like + ")";
+                 " OR verdict" + like + " OR (unjudged <> '' AND ('not judged: ' || unjudged)" + like + ")" +
+                 " OR device_serial" + like + ")";
         values.text(textSearchPattern(filter.text));
     }
     // LIMIT NULL: all of them.
@@ -619,7 +620,9 @@ void CentralStore::addReadings(std::int64_t session, std::span<const SessionRead
 
 void CentralStore::deleteSession(std::int64_t session)
 {
-    if (!this->session(session)) throw StorageError("there is no session " + std::to_string(session));
+    const auto summary = this->session(session);
+    if (!summary) throw StorageError("there is no session " + std::to_string(session));
+    if (const auto refusal = partDeletionRefusal(*summary)) throw StorageError(*refusal);
     // Only the owner has DELETE; the server refuses anyone else.
     const PgResult r = m_connection.query("DELETE FROM sessions WHERE id = $1 RETURNING id", PgParams().int64(session));
     if (r.rows() == 0)

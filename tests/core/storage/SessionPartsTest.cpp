@@ -82,10 +82,22 @@ TEST_F(SessionPartsTest, TheListShowsTheSessionWithItsDevicesAndItsLongestPartsD
     EXPECT_EQ(store.sampleCount(ids.session), 0u);
 }
 
+// A part alone is not deleted (fresh eyes, issue 52: the session kept a
+// verdict and events of a part that was gone); the session goes whole.
 TEST_F(SessionPartsTest, DeletingTheSessionTakesItsPartsAndTheirSamples)
 {
     SessionStore store(file("s.tactiscope"));
     const auto ids = storeTwoDevices(store);
+    try {
+        store.deleteSession(ids.cell);
+        ADD_FAILURE() << "a part was deleted alone";
+    } catch (const StorageError& e) {
+        EXPECT_EQ(std::string(e.what()), "session " + std::to_string(ids.cell) +
+                                             " is the part of device load-cell in session " +
+                                             std::to_string(ids.session) + "; delete session " +
+                                             std::to_string(ids.session) + ", which goes with all its parts");
+    }
+    EXPECT_TRUE(store.session(ids.cell));
     store.deleteSession(ids.session);
     EXPECT_FALSE(store.session(ids.beam));
     EXPECT_FALSE(store.session(ids.cell));

@@ -153,4 +153,14 @@ TEST(PartsVerdict, TheWorstPartDecidesAndAnUnjudgedPartLeavesAPassOpen)
     const std::vector<SessionSummary> nothingJudges{part(4, "cell", Mode::General, std::nullopt),
                                                     part(5, "beam", Mode::Capacitive, std::nullopt)};
     EXPECT_FALSE(partsDecision(nothingJudges));
+    // A part that judges nothing but went past a critical limit (fresh
+    // eyes: a beam overloaded beside a passing panel gave "pass"): the
+    // session's readings are not all true, so no pass, and it says why.
+    std::vector<SessionSummary> overloaded = passing;
+    overloaded[1].unjudged = "not judged: it went past a critical limit";
+    EXPECT_FALSE(partsDecision(overloaded));
+    EXPECT_EQ(partsUnjudged(overloaded), "cell: not judged: it went past a critical limit");
+    overloaded[0].verdict = Verdict::DefectsFound;  // defects found stand whatever else is true
+    ASSERT_TRUE(partsDecision(overloaded));
+    EXPECT_EQ(partsDecision(overloaded)->verdict, Verdict::DefectsFound);
 }
