@@ -88,19 +88,24 @@ void RecordOutput::tell(const devices::session::PipelineNews& news)
             alarm.change.severity == core::trigger::LimitSeverity::Critical)
             m_criticalStop = QStringLiteral("stopped on a critical alarm at %1 s: %2").arg(at(alarm.time_s), text);
     }
-    std::optional<QString> triggerLine;
-    if (news.trigger) triggerLine = triggerText(*news.trigger);
-    if (triggerLine && news.trigger->state == core::trigger::TriggerState::Triggered && news.trigger->lastTrigger_s) {
-        const double time_s = *news.trigger->lastTrigger_s;
-        timed.emplace_back(time_s, QStringLiteral("at %1 s: %2").arg(at(time_s), *std::exchange(triggerLine, {})));
+    // Every session the trigger started, however many since the last poll.
+    for (const auto& start : news.triggered) {
+        m_triggered = start.session;
+        const QString of =
+            m_trigger && m_trigger->sessions ? QStringLiteral(" of %1").arg(*m_trigger->sessions) : QString();
+        timed.emplace_back(
+            start.trigger_s,
+            QStringLiteral("at %1 s: triggered: session %2%3").arg(at(start.trigger_s)).arg(start.session).arg(of));
     }
     std::ranges::stable_sort(timed, {}, &std::pair<double, QString>::first);
     for (const auto& [time_s, line] : timed) printError(line);
-    if (triggerLine) printError(*triggerLine);
     for (const auto& [device, summary] : news.partsEnded)
         printError(QStringLiteral("%1its part ended after %2 s of recording; the other devices record on")
                        .arg(from(device), at(summary.end_s)));
     for (const auto& end : news.ended) report(end);
+    // What the trigger does next, after the sessions it ended.
+    if (news.trigger)
+        if (const auto line = triggerText(*news.trigger)) printError(*line);
     if (news.triggerRefused) {
         printError(QStringLiteral("the trigger could not start a recording: %1; the trigger was disarmed")
                        .arg(toQString(*news.triggerRefused)));
@@ -120,11 +125,7 @@ std::optional<QString> RecordOutput::triggerText(const devices::session::Trigger
         return QStringLiteral("trigger waiting: %1 must first not hold").arg(condition);
     case TriggerState::Armed:
         return QStringLiteral("trigger armed: %1").arg(condition);
-    case TriggerState::Triggered:
-        m_triggered = status.sessionsCut + 1;
-        return QStringLiteral("triggered: session %1%2")
-            .arg(status.sessionsCut + 1)
-            .arg(m_trigger->sessions ? QStringLiteral(" of %1").arg(*m_trigger->sessions) : QString());
+    case TriggerState::Triggered:  // told by each session it started (PipelineNews::triggered)
     case TriggerState::Finished:
         break;
     }

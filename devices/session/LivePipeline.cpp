@@ -234,6 +234,7 @@ void LivePipeline::pollDevice(Device& device, PipelineNews& news)
     for (auto& problem : live.takeProblems()) news.problems.push_back({name, std::move(problem)});
     for (auto& notice : live.takeLinkNotices()) news.notices.push_back({name, std::move(notice)});
     for (auto& alarm : live.takeAlarms()) news.alarms.push_back({name, std::move(alarm)});
+    for (auto& start : live.takeTriggeredStarts()) news.triggered.push_back(start);
     for (auto& summary : live.takeTriggeredSummaries()) news.ended.push_back(endOfOne(std::move(summary), true));
     if (auto refusal = live.takeTriggerRefusal()) news.triggerRefused = std::move(refusal);
     if (!ended && live.isRecording() && linkEnded(live)) ended = live.stopRecording();

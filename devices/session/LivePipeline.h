@@ -63,6 +63,7 @@ struct PipelineNews {
     std::vector<FromDevice<LinkNotice>> notices;    // what a link noticed (stored as alarms while recording)
     std::vector<FromDevice<LimitAlarm>> alarms;     // limit alarms raised or cleared
     std::optional<TriggerStatus> trigger;           // the trigger's state, when it changed
+    std::vector<TriggeredStart> triggered;          // each session the trigger started, in order
     // A device's part that ended while the others record on (its link
     // failed, its disk stopped it): the session of several goes on.
     std::vector<FromDevice<RecordingSummary>> partsEnded;
@@ -72,8 +73,8 @@ struct PipelineNews {
 
     bool empty() const
     {
-        return problems.empty() && notices.empty() && alarms.empty() && !trigger && partsEnded.empty() &&
-               ended.empty() && !triggerRefused;
+        return problems.empty() && notices.empty() && alarms.empty() && !trigger && triggered.empty() &&
+               partsEnded.empty() && ended.empty() && !triggerRefused;
     }
 };
 

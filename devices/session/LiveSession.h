@@ -210,6 +210,8 @@ public:
     TriggerStatus triggerStatus() const { return m_gate->status(); }
     // The triggered sessions ended since the last call, in order.
     std::vector<RecordingSummary> takeTriggeredSummaries() { return std::exchange(m_triggeredSummaries, {}); }
+    // The triggered sessions started since the last call, in order.
+    std::vector<TriggeredStart> takeTriggeredStarts() { return std::exchange(m_triggeredStarts, {}); }
     // Why the trigger disarmed itself: the store's refusal of the session
     // a trigger started (every later one would meet the same); taken once.
     std::optional<std::string> takeTriggerRefusal() { return std::exchange(m_triggerRefusal, std::nullopt); }
@@ -263,6 +265,7 @@ private:
     void applyLimits();
     std::vector<core::sensors::SensorLimit> wantedLimits() const;
     void takeTriggered();
+    bool startTriggered(const TriggeredSession& pending);
     void takeLimitAlarms();
     void storeAlarm(const LimitAlarm& raised, double end_s);
     void storeAlarmsBeforeTrigger();
@@ -307,6 +310,7 @@ private:
     core::storage::SessionMetadata m_triggerRequest;
     unsigned m_triggeredStarted = 0;
     std::vector<RecordingSummary> m_triggeredSummaries;
+    std::vector<TriggeredStart> m_triggeredStarts;
     std::optional<std::string> m_triggerRefusal;
     std::vector<core::trigger::LimitSpec> m_givenLimits;
     std::vector<core::sensors::SensorLimit> m_effectiveLimits;

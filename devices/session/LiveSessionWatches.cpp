@@ -124,37 +124,48 @@ std::optional<RecordingSummary> LiveSession::disarmTrigger()
 
 // The gate's sessions: one that has had its last sample is finished; one
 // that was triggered gets its recorder, its held samples and its trigger
-// event.
+// event. As many as the gate cut since the last poll: a trigger that
+// re-arms faster than the polls loses none of them.
 void LiveSession::takeTriggered()
 {
     if (!m_trigger) return;
-    if (m_gate->takeFinished()) m_triggeredSummaries.push_back(finishRecording());
-    if (m_recorder) return;
-    const auto pending = m_gate->pendingStart();
-    if (!pending) {
-        // Only what a session the trigger may still start reaches back to is kept.
-        const auto reachBack = m_gate->reachBack_s().value_or(std::numeric_limits<double>::infinity());
-        std::erase_if(m_alarmsBeforeTrigger, [reachBack](const ClosedAlarm& c) { return c.cleared_s < reachBack; });
-        return;
+    for (;;) {
+        if (m_gate->takeFinished()) m_triggeredSummaries.push_back(finishRecording());
+        if (m_recorder) return;
+        const auto pending = m_gate->pendingStart();
+        if (!pending) {
+            // Only what a session the trigger may still start reaches back to is kept.
+            const auto reachBack = m_gate->reachBack_s().value_or(std::numeric_limits<double>::infinity());
+            std::erase_if(m_alarmsBeforeTrigger, [reachBack](const ClosedAlarm& c) { return c.cleared_s < reachBack; });
+            return;
+        }
+        if (!startTriggered(*pending)) return;
     }
+}
+
+// A session the gate cut gets its recorder (false when the store refuses:
+// the trigger is then disarmed, as every later one would meet the same).
+bool LiveSession::startTriggered(const TriggeredSession& pending)
+{
     auto request = m_triggerRequest;
     request.subject = core::trigger::numberedSubject(m_triggerRequest.subject, m_triggeredStarted);
     m_part = m_options.partOf;
     if (auto error = beginRecording(request)) {
-        // The store refuses: every trigger would meet the same refusal.
         m_gate->disarm();
         m_trigger.reset();
         m_triggerRefusal = *error;
-        return;
+        return false;
     }
     ++m_triggeredStarted;
+    m_triggeredStarts.push_back({m_triggeredStarted, pending.triggerTime_s});
     m_gate->attach(m_recorder);  // its first samples are in the recorder now: its clock is known
     storeAlarmsBeforeTrigger();
     core::storage::SessionEvent trigger;
     trigger.kind = core::EventKind::Trigger;
-    trigger.start_s = trigger.end_s = m_recorder->sessionTimeOf(pending->triggerTime_s);
+    trigger.start_s = trigger.end_s = m_recorder->sessionTimeOf(pending.triggerTime_s);
     trigger.note = m_trigger->condition.text();
     m_recorder->addEvents({trigger});
+    return true;
 }
 
 std::optional<std::string> LiveSession::setLimits(std::vector<core::trigger::LimitSpec> limits)

@@ -39,7 +39,6 @@ void TriggerGate::arm(const core::trigger::TriggerSettings& settings, QuantityRe
     m_sessions.clear();
     m_recorder.reset();
     m_finished.reset();
-    m_lastTrigger_s.reset();
 }
 
 void TriggerGate::disarm()
@@ -68,7 +67,7 @@ TriggerStatus TriggerGate::status() const
 {
     const std::lock_guard lock(m_mutex);
     if (!m_machine) return {};
-    return {m_machine->state(), m_machine->sessionsCut(), m_lastTrigger_s};
+    return {m_machine->state(), m_machine->sessionsCut()};
 }
 
 std::optional<TriggeredSession> TriggerGate::pendingStart() const
@@ -124,8 +123,7 @@ void TriggerGate::consume(const core::SampleBlock& block)
         const auto step = m_machine->push(block.firstSampleIndex() + s, m_values[s]);
         if (step.started) {
             const auto trigger = static_cast<std::size_t>(step.started->trigger - block.firstSampleIndex());
-            m_lastTrigger_s = block.timeAt_s(trigger);
-            m_sessions.push_back({*step.started, *m_lastTrigger_s});
+            m_sessions.push_back({*step.started, block.timeAt_s(trigger)});
         }
         if (step.ended) {
             // By its trigger: its first sample may have moved on (a backlog overrun).

@@ -32,11 +32,16 @@ struct TriggeredSession {
     double triggerTime_s = 0.0;
 };
 
+// A session the trigger started: its number since the arming (1 for the
+// first) and the stream time of its trigger instant.
+struct TriggeredStart {
+    unsigned session = 0;
+    double trigger_s = 0.0;
+};
+
 struct TriggerStatus {
     core::trigger::TriggerState state = core::trigger::TriggerState::Waiting;
     unsigned sessionsCut = 0;
-    // The stream time of the newest trigger instant; none before the first.
-    std::optional<double> lastTrigger_s;
 };
 
 class TriggerGate final : public core::BlockSink {
@@ -91,7 +96,6 @@ private:
     std::shared_ptr<core::storage::Recorder> m_recorder;
     std::uint64_t m_forwardedUntil = 0;  // the front session's samples before this went to its recorder
     std::optional<Finished> m_finished;
-    std::optional<double> m_lastTrigger_s;
 };
 
 }  // namespace tactiscope::devices::session

@@ -207,6 +207,33 @@ TEST(TriggeredRecordCli, ATriggeredSessionKeepsTheAlarmsOfTheStrokeThatTriggered
     toldOnOneClock(result.err, store, sessions);
 }
 
+// Fresh eyes, issue 52: a trigger re-armed on every crossing cut sessions
+// faster than the polls took them (one a poll): 299 were announced by a
+// "session 299", 101 stored, 33 told. Now every session the trigger cuts is
+// stored and told once, numbered on without a gap, subject by subject.
+TEST(TriggeredRecordCli, ATriggerOnEveryCrossingStoresAndTellsEachSessionItCuts)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath("crossings.tactiscope");
+    const auto result = recordEmulated(dir.path(), db, QStringLiteral("panel-line"), 3,
+                                       {"--subject", "d", "--trigger", "a rising 0", "--rearm"});
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    const QRegularExpression told(QStringLiteral("^tactiscope-cli: at \\d+\\.\\d s: triggered: session (\\d+)$"),
+                                  QRegularExpression::MultilineOption);
+    int count = 0;
+    for (auto it = told.globalMatch(result.err); it.hasNext();)
+        EXPECT_EQ(it.next().captured(1).toInt(), ++count) << "numbered on without a gap";
+    EXPECT_GT(count, 50) << "the stroke crosses 0 many times: " << result.err.toStdString();
+    EXPECT_EQ(result.out.count(QStringLiteral("Recorded session ")), count);
+
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    auto sessions = store.sessions();
+    ASSERT_EQ(sessions.size(), static_cast<std::size_t>(count));
+    std::ranges::sort(sessions, {}, &core::storage::SessionSummary::id);
+    for (std::size_t k = 0; k < sessions.size(); ++k)
+        EXPECT_EQ(sessions[k].metadata.subject, k == 0 ? "d" : "d-" + std::to_string(k + 1)) << k;
+}
+
 TEST(TriggeredRecordCli, AnOverloadedCapacitiveBeamWarnsThenIsCriticalAndStopOnCriticalKeepsTheData)
 {
     QTemporaryDir dir;
