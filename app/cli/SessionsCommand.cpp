@@ -141,6 +141,7 @@ int show(SessionSource& store, std::int64_t id, bool json)
         line("part of", "session " + std::to_string(s.metadata.partOf) + " (device " + s.metadata.deviceName + ")");
     // No verdict: why, when its mode would have judged it.
     line("verdict", s.verdict || s.unjudged.empty() ? std::string(core::verdictText(s.verdict)) : s.unjudged);
+    if (s.verdict && !s.unjudged.empty()) line("", "  " + core::report::unjudgedTrailLine(s.unjudged));
     for (const auto& decision : core::report::verdictTrailLines(store.verdicts(id))) line("", "  " + decision);
     // One device's identity, samples and channels: the session's own, or
     // each part's for a session of several devices.

@@ -97,4 +97,9 @@ std::vector<std::string> verdictTrailLines(std::span<const storage::VerdictDecis
     return lines;
 }
 
+std::string unjudgedTrailLine(const std::string& unjudged)
+{
+    return unjudged.empty() ? std::string() : "automatic: none, " + unjudged;
+}
+
 }  // namespace tactiscope::core::report

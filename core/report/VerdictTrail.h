@@ -24,6 +24,12 @@ using DecisionTime = std::function<std::string(const std::string& decidedUtc)>;
 std::vector<std::string> verdictTrailLines(std::span<const storage::VerdictDecision> trail,
                                            const DecisionTime& time = {});
 
+// A session its mode did not judge (`unjudged`, why: SessionSummary) whose
+// verdict a reviewer gave: the trail begins with what the mode said,
+// "automatic: none, not judged: it went past a critical limit", so the
+// reason stays beside the decision. Empty when it was judged.
+std::string unjudgedTrailLine(const std::string& unjudged);
+
 // "live detector: 21 defects at 3 sites, threshold 0.85": the automatic
 // verdict's grounds; empty when the basis cannot be read.
 std::string basisText(const std::string& basisJson);

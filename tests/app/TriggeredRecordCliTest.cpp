@@ -17,8 +17,11 @@
 #include "core/text/UtcTime.h"
 #include "support/CliRunner.h"
 #include "support/EmulatorProcess.h"
+#include "support/PdfText.h"
 #include "support/TmpfsMount.h"
 
+#include <QDir>
+#include <QFileInfo>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 
@@ -265,13 +268,17 @@ TEST(TriggeredRecordCli, AnOverloadedCapacitiveBeamWarnsThenIsCriticalAndStopOnC
     EXPECT_NEAR(warned.start_s, 5.04, 0.15);
     EXPECT_NEAR(critic.start_s, 7.05, 0.15);
     EXPECT_NEAR(warned.end_s, session->duration_s(), 0.15);  // still raised at the stop
+
+    // Fresh eyes: the report's peaks said nothing of the critical excursion.
+    if (*tactiscope::testing::pdfTextMissing()) GTEST_SKIP() << tactiscope::testing::pdfTextMissing();
+    const QString pdf = QFileInfo(db).dir().filePath(QStringLiteral("beam.pdf"));
+    const auto report = runCli({"report", "--db", db, "--session", QString::number(id), "--output", pdf});
+    ASSERT_EQ(report.exitCode, 0) << report.err.toStdString();
+    const QString text = tactiscope::testing::pdfText(pdf);
+    EXPECT_TRUE(text.simplified().contains(QStringLiteral("No verdict: it went past a critical limit")))
+        << text.toStdString();
 }
 
-// A window given on the command line takes the place of the beam's own
-// force limit. By hand (the scenario's steps, settling with τ = 0.4 s and
-// creeping 1 % with τ = 4 s, sampled at 10 Hz): the force first exceeds
-// 0.3 mN at 3.6 s and 0.5 mN at 4.6 s, and on the way down falls below
-// 0.49 mN (0.5 mN less 2 %) at 14.6 s and 0.294 mN at 15.6 s.
 // Issue 52 (fresh eyes): a panel scan stopped on a critical alarm mid-stroke
 // was stored "pass": past a critical limit the readings are not true, so
 // it is not judged, and says why.
@@ -286,8 +293,29 @@ TEST(TriggeredRecordCli, APanelStoppedOnACriticalAlarmIsNotJudged)
     const auto session = keptOnCritical(result, db);
     ASSERT_TRUE(session);
     EXPECT_FALSE(session->verdict.has_value());
+    // A reviewer's verdict keeps why the mode gave none beside it (fresh
+    // eyes: "verdict pass" and the reason gone).
+    const QString id = QString::number(session->id);
+    const auto decided =
+        runCli({"sessions", "--db", db, "verdict", id, "pass", "--by", "Q. Engineer", "--note", "checked"});
+    ASSERT_EQ(decided.exitCode, 0) << decided.err.toStdString();
+    const auto shown = runCli({"sessions", "--db", db, "show", id});
+    EXPECT_TRUE(shown.out.contains(QRegularExpression(
+        QStringLiteral("\\nverdict +pass\\n +automatic: none, not judged: it went past a critical limit\\n +"
+                       "reviewer Q. Engineer decided: pass"))))
+        << shown.out.toStdString();
+    if (*tactiscope::testing::pdfTextMissing()) GTEST_SKIP() << tactiscope::testing::pdfTextMissing();
+    const QString pdf = dir.filePath("panel.pdf");
+    ASSERT_EQ(runCli({"report", "--db", db, "--session", id, "--output", pdf}).exitCode, 0);
+    EXPECT_TRUE(tactiscope::testing::pdfText(pdf).simplified().contains(
+        QStringLiteral("automatic: none, not judged: it went past a critical limit")));
 }
 
+// A window given on the command line takes the place of the beam's own
+// force limit. By hand (the scenario's steps, settling with τ = 0.4 s and
+// creeping 1 % with τ = 4 s, sampled at 10 Hz): the force first exceeds
+// 0.3 mN at 3.6 s and 0.5 mN at 4.6 s, and on the way down falls below
+// 0.49 mN (0.5 mN less 2 %) at 14.6 s and 0.294 mN at 15.6 s.
 TEST(TriggeredRecordCli, AWindowLimitReplacesTheBeamsOwnAndSpansItsExcursion)
 {
     QTemporaryDir dir;

@@ -155,6 +155,7 @@ QString verdict(const core::report::ReportData& data)
                            .arg(pass ? QStringLiteral("#2e7d32") : QStringLiteral("#c62828"), QObject::tr("Verdict:"),
                                 wordText(*verdict).toUpper());
         QStringList trail;
+        if (!data.session.unjudged.empty()) trail << text(core::report::unjudgedTrailLine(data.session.unjudged));
         for (const auto& line : core::report::verdictTrailLines(
                  data.verdicts, [](const std::string& utc) { return fileDateTime(utc).toStdString(); }))
             trail << text(line);
@@ -162,6 +163,12 @@ QString verdict(const core::report::ReportData& data)
             trail << QObject::tr("Recorded before verdicts kept a trail: who decided it is not known.");
         return html + QStringLiteral("<p class=trail>%1</p>").arg(trail.join(QStringLiteral("<br>")));
     }
+    // Why its readings were not judged (past a critical limit) beside them.
+    const QString unjudged =
+        data.session.unjudged.empty()
+            ? QString()
+            : QStringLiteral("<p class=trail>%1</p>")
+                  .arg(QObject::tr("No verdict: %1").arg(text(core::storage::unjudgedReason(data.session.unjudged))));
     if (!data.readings.empty()) {
         double sum = 0.0;
         for (const auto& r : data.readings) sum += r.value;
@@ -169,11 +176,12 @@ QString verdict(const core::report::ReportData& data)
         const QString readings =
             countText(static_cast<long long>(count), QObject::tr("reading"), QObject::tr("readings"));
         return QStringLiteral("<p class=verdict>%1</p>")
-            .arg(QObject::tr("%1, mean %2 %3")
-                     .arg(readings, number(sum / static_cast<double>(count), 1), text(data.readings[0].unit)));
+                   .arg(QObject::tr("%1, mean %2 %3")
+                            .arg(readings, number(sum / static_cast<double>(count), 1), text(data.readings[0].unit))) +
+               unjudged;
     }
     if (const QString peaks = capacitivePeaks(data); !peaks.isEmpty())
-        return QStringLiteral("<p class=verdict>%1</p>").arg(peaks);
+        return QStringLiteral("<p class=verdict>%1</p>").arg(peaks) + unjudged;
     if (!data.session.unjudged.empty())
         return QStringLiteral("<p class=verdict>%1</p>")
             .arg(QObject::tr("No verdict: %1").arg(text(core::storage::unjudgedReason(data.session.unjudged))));

@@ -369,6 +369,8 @@ void ReviewWindow::refreshHeader()
     if (!m_session.verdict && !m_session.unjudged.empty())
         add(tr("no verdict: %1"), core::storage::unjudgedReason(m_session.unjudged));
     QStringList trail;
+    if (m_session.verdict && !m_session.unjudged.empty())
+        trail << text(core::report::unjudgedTrailLine(m_session.unjudged));
     try {
         for (const auto& line : core::report::verdictTrailLines(m_store->verdicts(m_session.id), screenTimeOf))
             trail << text(line);
