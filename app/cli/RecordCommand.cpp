@@ -133,13 +133,13 @@ std::optional<int> setUpOneDevice(devices::session::LiveSession& session, std::o
 // mapped for the drift to mean something (DriftWatch's span).
 void tellDeviceClock(const std::optional<core::timing::ClockMapping>& clock)
 {
-    if (!clock || clock->span_s < devices::DriftWatch::kMinSpan_s) return;
-    printError(QStringLiteral("device clock: %1 ppm %2 against the host's (mapped over %3 s of its blocks; ± %4)")
-                   .arg(clock->basis == core::timing::ClockUncertaintyBasis::TooFewFrames
-                            ? QString::number(std::abs(clock->drift) * 1e6, 'f', 1)
-                            : QStringLiteral("%1 ± %2")
-                                  .arg(std::abs(clock->drift) * 1e6, 0, 'f', 1)
-                                  .arg(clock->drift_u * 1e6, 0, 'f', 1))
+    // Too few frames: its drift would be noise, so nothing is said.
+    if (!clock || clock->span_s < devices::DriftWatch::kMinSpan_s ||
+        clock->basis == core::timing::ClockUncertaintyBasis::TooFewFrames)
+        return;
+    printError(QStringLiteral("device clock: %1 ± %2 ppm %3 against the host's (mapped over %4 s of its blocks; ± %5)")
+                   .arg(std::abs(clock->drift) * 1e6, 0, 'f', 1)
+                   .arg(clock->drift_u * 1e6, 0, 'f', 1)
                    .arg(clock->drift >= 0.0 ? QStringLiteral("slow") : QStringLiteral("fast"))
                    .arg(clock->span_s, 0, 'f', 1)
                    .arg(QString::fromUtf8(core::timing::describe(clock->basis))));

@@ -115,7 +115,7 @@ const char* describe(ClockUncertaintyBasis basis)
     case ClockUncertaintyBasis::Spread:
         return "from the spread of the fastest frames' delays";
     case ClockUncertaintyBasis::Bound:
-        return "a bound: the fastest frames lie apart from the rest's floor (a polled link, or rare fast frames)";
+        return "an upper bound: the link delays its frames unevenly (a polled link, or rare fast frames)";
     case ClockUncertaintyBasis::TooFewFrames:
         return "too few frames to tell";
     case ClockUncertaintyBasis::Exact:

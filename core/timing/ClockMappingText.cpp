@@ -16,9 +16,15 @@ std::string clockMappingText(const std::string& clockJson)
     const auto u_s = clock->uncertainty_s(0.0);
     char text[256];
     int n = std::snprintf(text, sizeof text, "%+.6f s at the start", clock->host_s(0.0));
-    if (u_s) n += std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), " ± %.3f ms", *u_s * 1e3);
+    // Too few frames: a drift figure would be noise, so none is given.
+    if (!u_s) {
+        std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), "; its drift not known (%s)",
+                      describe(clock->basis));
+        return text;
+    }
+    n += std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), " ± %.3f ms", *u_s * 1e3);
     n += std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), ", %.1f", std::abs(clock->drift) * 1e6);
-    if (u_s) n += std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), " ± %.1f", clock->drift_u * 1e6);
+    n += std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), " ± %.1f", clock->drift_u * 1e6);
     std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), " ppm %s (± %s)",
                   clock->drift >= 0.0 ? "slow" : "fast", describe(clock->basis));
     return text;

@@ -152,6 +152,11 @@ TEST_F(SessionPartsTest, AStoredMappingComesBackAndAnAlteredOneReadsAsNone)
               "delays)");
     EXPECT_EQ(timing::clockMappingText(store.parts(ids.session)[1].clockJson),
               "not mapped (no frames with the device's times were seen)");
+    // Too few frames to tell its drift (fresh eyes: "153.1 ppm slow (± too
+    // few frames to tell)" for 0.3 s): no drift figure is given.
+    mapping.basis = timing::ClockUncertaintyBasis::TooFewFrames;
+    EXPECT_EQ(timing::clockMappingText(timing::toJson(mapping)),
+              "+0.499600 s at the start; its drift not known (too few frames to tell)");
     for (const char* altered :
          {"not json", "[]", R"({"offset_s":0.5})",
           R"({"reference_s":5,"offset_s":0.5,"drift":0.5,"span_s":9,)"
