@@ -10,8 +10,9 @@
 #include <QTextFrame>
 #include <QTextTable>
 
+#include <algorithm>
 #include <cmath>
-#include <optional>
+#include <vector>
 
 namespace tactiscope::ui {
 namespace {
@@ -26,29 +27,38 @@ int firstBodyRow(const QTextTable& table)
     return table.cellAt(std::min(table.format().headerRowCount(), table.rows() - 1), 0).firstPosition();
 }
 
-// The document position a heading (the root-frame item `it`) must share a
+// A table this short reads as one piece (a basis's rows, a legend): it is
+// not cut across pages.
+constexpr int kShortTableRows = 15;
+
+// The document positions a heading (the root-frame item `it`) must share a
 // page with: the first body row of its table, when one follows after at
 // most a line or two of introduction ("Defect sites (3)", "From the events
 // recorded live.", then the sites: the heading and its line alone at a
-// page's foot say nothing); else another frame's first position, or the
-// next block's.
-std::optional<int> contentAfter(QTextFrame::iterator it)
+// page's foot say nothing), and a short table's last row too; else those
+// lines of its section ("None found." with them) or another frame's start.
+std::vector<int> contentAfter(QTextFrame::iterator it)
 {
     constexpr int kIntroductionBlocks = 2;
-    std::optional<int> firstBlock;
-    int blocks = 0;
+    std::vector<int> blocks;
     for (++it; !it.atEnd(); ++it) {
         if (QTextFrame* frame = it.currentFrame()) {
-            if (auto* table = qobject_cast<QTextTable*>(frame)) return firstBodyRow(*table);
-            return firstBlock ? firstBlock : frame->firstPosition();
+            if (auto* table = qobject_cast<QTextTable*>(frame)) {
+                blocks = {firstBodyRow(*table)};
+                if (table->rows() <= kShortTableRows)
+                    blocks.push_back(table->cellAt(table->rows() - 1, 0).firstPosition());
+                return blocks;
+            }
+            if (blocks.empty()) blocks.push_back(frame->firstPosition());
+            return blocks;
         }
         const QTextBlock block = it.currentBlock();
         if (!block.isValid() || block.text().trimmed().isEmpty()) continue;
         if (block.blockFormat().headingLevel() != 0) break;  // the next section: no table of this one
-        if (!firstBlock) firstBlock = block.position();
-        if (++blocks >= kIntroductionBlocks) break;
+        blocks.push_back(block.position());
+        if (static_cast<int>(blocks.size()) >= kIntroductionBlocks) break;
     }
-    return firstBlock;
+    return blocks;
 }
 
 }  // namespace
@@ -79,8 +89,10 @@ void layOutPages(QTextDocument& document, const QSizeF& paper_px)
             QTextBlock heading = it.currentBlock();
             if (!heading.isValid() || heading.blockFormat().headingLevel() == 0) continue;
             if (heading.blockFormat().pageBreakPolicy() & QTextFormat::PageBreak_AlwaysBefore) continue;
-            const auto next = contentAfter(it);
-            if (!next || pageAt(document, heading.position()) == pageAt(document, *next)) continue;
+            const int page = pageAt(document, heading.position());
+            const auto content = contentAfter(it);
+            if (std::ranges::all_of(content, [&](int position) { return pageAt(document, position) == page; }))
+                continue;
             QTextCursor cursor(heading);
             QTextBlockFormat format = heading.blockFormat();
             format.setPageBreakPolicy(QTextFormat::PageBreak_AlwaysBefore);
