@@ -38,7 +38,10 @@ DeviceIdentity SimulatorSource::identity() const
 
 ReadStatus SimulatorSource::readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout)
 {
-    std::size_t count = m_options.samplesPerBlock;
+    constexpr double kLongestBlock_s = 0.02;
+    const auto withinLongest =
+        static_cast<std::size_t>(std::max(1.0, std::floor(kLongestBlock_s * m_scenario->sampleRate_hz())));
+    std::size_t count = std::min(m_options.samplesPerBlock, withinLongest);
     if (m_totalSamples) {
         if (m_produced >= *m_totalSamples) return ReadStatus::Finished;
         count = static_cast<std::size_t>(std::min<std::uint64_t>(count, *m_totalSamples - m_produced));

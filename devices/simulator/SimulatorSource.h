@@ -23,7 +23,11 @@ enum class Pacing { RealTime, AsFastAsPossible };
 
 struct SimulatorOptions {
     Pacing pacing = Pacing::RealTime;
-    std::size_t samplesPerBlock = 10;  // 20 ms at 500 Hz: smooth, cheap to pass around
+    // At most this many samples a block (20 ms at 500 Hz: smooth, cheap to
+    // pass around), and at most 20 ms of them: a 10 Hz beam sends each
+    // sample as it comes, as a real one does, not a second's worth at once
+    // (its readouts then lagged its traces by a block).
+    std::size_t samplesPerBlock = 10;
     std::optional<double> duration_s;  // unlimited when empty
     // Real-time pacing only: simulated seconds per wall-clock second, so a
     // test can walk through a minute-long calibration in seconds.

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <stdexcept>
+#include <tuple>
 
 using namespace std::chrono_literals;
 using tactiscope::core::SampleBlock;
@@ -45,6 +46,26 @@ TEST(SimulatorSource, ProducesContiguousBlocksUntilTheDurationEnds)
     EXPECT_EQ(blocks, 51u);
     EXPECT_EQ(block.sampleCount(), 5u);
     EXPECT_EQ(source.readBlock(block, 0ms), ReadStatus::Finished);
+}
+
+// A slow device's samples come one at a time, not a second's worth in a
+// block (fresh eyes, issue 52: the 10 Hz beam's readouts lagged its traces
+// by up to a second); no block spans more than 20 ms or one sample.
+TEST(SimulatorSource, ABlockSpansAtMostTwentyMillisecondsOrOneSample)
+{
+    for (const auto& [scenario, rate_hz, perBlock] :
+         {std::tuple{"capacitive-overload", 10.0, 1u}, std::tuple{"panel-scan", 500.0, 10u}}) {
+        SCOPED_TRACE(scenario);
+        SimulatorSource source(makeScenario(scenario), {Pacing::AsFastAsPossible, 10, 2.0});
+        ASSERT_EQ(source.nominalSampleRate_hz(), rate_hz);
+        SampleBlock block;
+        std::uint64_t samples = 0;
+        while (source.readBlock(block, 0ms) == ReadStatus::Block) {
+            EXPECT_EQ(block.sampleCount(), perBlock);
+            samples += block.sampleCount();
+        }
+        EXPECT_EQ(samples, static_cast<std::uint64_t>(2.0 * rate_hz));
+    }
 }
 
 TEST(SimulatorSource, RealTimePacingNeverDeliversABlockBeforeItsTime)
