@@ -98,6 +98,9 @@ void RecordOutput::tell(const devices::session::PipelineNews& news)
             QStringLiteral("at %1 s: triggered: session %2%3").arg(at(start.trigger_s)).arg(start.session).arg(of));
     }
     std::ranges::stable_sort(timed, {}, &std::pair<double, QString>::first);
+    if (!timed.empty() && !std::exchange(m_clockSaid, true))
+        printError(QStringLiteral("times below are seconds since record connected; `sessions show` gives each "
+                                  "session's events on its own clock"));
     for (const auto& [time_s, line] : timed) printError(line);
     for (const auto& [device, summary] : news.partsEnded)
         printError(QStringLiteral("%1its part ended after %2 s of recording; the other devices record on")

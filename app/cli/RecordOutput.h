@@ -45,6 +45,7 @@ private:
     std::optional<QString> triggerText(const devices::session::TriggerStatus& status);
     std::size_t deviceIndex(const std::string& name) const;
 
+    bool m_clockSaid = false;  // the clock of the timed lines, said before the first
     std::string m_db;
     const devices::session::LivePipeline& m_pipeline;
     std::optional<core::trigger::TriggerSettings> m_trigger;

@@ -74,6 +74,7 @@ void toldOnOneClock(const QString& err, core::storage::SessionStore& store,
     std::ranges::sort(sessions, {}, &core::storage::SessionSummary::id);  // in the order they were triggered
     const QRegularExpression timed(QStringLiteral("^tactiscope-cli: at (\\d+\\.\\d) s: (.*)$"),
                                    QRegularExpression::MultilineOption);
+    EXPECT_EQ(err.count(QStringLiteral("times below are seconds since record connected")), 1) << err.toStdString();
     double previous_s = -1.0;
     std::vector<double> triggers_s;
     std::vector<double> criticalCleared_s;
