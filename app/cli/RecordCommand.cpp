@@ -17,11 +17,13 @@
 #include "devices/session/LivePipeline.h"
 #include "devices/session/SessionOfDevices.h"
 
+#include <QScopeGuard>
 #include <QTextStream>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <thread>
 #include <unistd.h>
@@ -241,6 +243,16 @@ int runRecord(const QStringList& arguments)
     metadata.operatorName = parser.value(QStringLiteral("operator")).toStdString();
     metadata.site = parser.value(QStringLiteral("site")).toStdString();
 
+    // A store this command creates and then records nothing into (a
+    // refused option, a device that cannot be reached) is not left behind.
+    const bool storeExisted = std::filesystem::exists(db);
+    bool recorded = false;
+    const auto leaveNoEmptyStore = qScopeGuard([&] {
+        if (storeExisted || recorded) return;
+        std::error_code ignored;
+        for (const char* suffix : {"", "-wal", "-shm", "-journal"}) std::filesystem::remove(db + suffix, ignored);
+        std::filesystem::remove(core::storage::RecorderLock::lockPath(db), ignored);
+    });
     // A store we may not write (not ours, newer, being recorded into) is bad
     // input: say so before touching the device.
     try {
@@ -279,6 +291,7 @@ int runRecord(const QStringList& arguments)
                                               QString::fromStdString(*refused)));
         return kExitUsage;
     }
+    recorded = true;  // a trigger's store stays, even should none fire: where its sessions were to go
     installStopSignals();
     pipeline.start();
 

@@ -391,4 +391,10 @@ TEST(TriggeredRecordCli, BadTriggerAndLimitOptionsAreRefusedBeforeAnythingIsReco
     EXPECT_EQ(unknown.exitCode, 2);
     EXPECT_TRUE(unknown.err.contains(QStringLiteral("nothing called 'force' to watch"))) << unknown.err.toStdString();
     EXPECT_TRUE(unknown.err.contains(QStringLiteral("a, b, decision, r_ab, r_ba"))) << unknown.err.toStdString();
+    // The store it would have made for it is not left behind empty (fresh eyes).
+    EXPECT_FALSE(QFile::exists(db));
+    EXPECT_FALSE(QFile::exists(db + QStringLiteral("-recorder.lock")));
+    // Nor one a device that cannot be reached would have recorded into.
+    EXPECT_EQ(runCli({"record", "--port", dir.filePath("nothing"), "--db", db, "--seconds", "1"}).exitCode, 1);
+    EXPECT_FALSE(QFile::exists(db));
 }
