@@ -80,6 +80,12 @@ bool fitTickCount(QCPAxis& axis, int height_px, double line_px, int most)
         if (fit.apart_px < line_px) break;
         if ((found = fit.inside >= 2)) chosen = count;
     }
+    // No two labels fit apart: one inside at least, never a bare axis (a
+    // 50 px Q lane over 2.60…2.98 had none: its one step's ticks 2.5 and 3).
+    for (int count = 1; count <= kLimit && !found; ++count) {
+        const TickFit fit = tryCount(axis, count, height_px);
+        if ((found = fit.inside == 1 || (fit.inside >= 2 && fit.apart_px >= line_px))) chosen = count;
+    }
     ticker.setTickCount(chosen);
     return chosen != was;
 }

@@ -87,6 +87,21 @@ TEST(AxisTicks, ALowLaneShowsTwoLabelsAtLeastAndNoneOverlap)
     }
 }
 
+// A range no two labels fit apart on (a palpation's Q lane, 50 px over
+// 2.60…2.98: ticks 0.1 apart are 13 px, 0.2 apart leave one inside) still
+// shows one label: it showed none.
+TEST(AxisTicks, ALaneTooLowForTwoLabelsShowsOne)
+{
+    QCustomPlot plot;
+    QCPAxis& axis = *plot.yAxis;
+    axis.setRange(2.60125, 2.97741);
+    ui::fitTickCount(axis, 50, 15.0, 2);
+    QVector<double> ticks;
+    axis.ticker()->generate(axis.range(), QLocale(), QLatin1Char('g'), 6, ticks, nullptr, nullptr);
+    const auto inside = std::count_if(ticks.begin(), ticks.end(), [&](double t) { return axis.range().contains(t); });
+    EXPECT_EQ(inside, 1);
+}
+
 // Issue 52 (fresh eyes): a load cell's lane read 0.019, 0.0195, 0.02,
 // 0.0205, 0.021 mN and a beam's 51.44, 51.445, 51.45 pF. Every label of an
 // axis has the decimals of its step.

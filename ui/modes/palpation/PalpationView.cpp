@@ -114,7 +114,7 @@ PalpationView::PalpationView(QWidget* parent)
     m_scale->setTissues(builtInTissues());
 
     m_presses->setHorizontalHeaderLabels(
-        {tr("Since connect (s)"), tr("kₒ (N/m)"), tr("± u"), tr("Depth (mm)"), tr("Slope"), tr("Site")});
+        {tr("Since connect (s)"), tr("kₒ (N/m)"), tr("± u"), tr("Depth (mm)"), tr("Slope (N/m/mm)"), tr("Site")});
     m_presses->horizontalHeaderItem(4)->setToolTip(
         tr("Change of kₒ per mm pressed, in N/m per mm: near zero when the reading does not depend on the depth"));
     m_presses->verticalHeader()->hide();
