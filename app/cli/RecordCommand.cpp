@@ -328,6 +328,11 @@ int runRecord(const QStringList& arguments)
     if (progress) err << '\n';
     if (last) output.report(*last);
     if (pipeline.size() == 1) tellDeviceClock(clock);
+    if (const std::size_t missed = watch->trigger ? first.cutNotRecorded() : 0; missed > 0)
+        printError(QStringLiteral("%1 more %2 the trigger cut could not be recorded before the stop: the store "
+                                  "did not keep up with the trigger")
+                       .arg(missed)
+                       .arg(missed == 1 ? QStringLiteral("session") : QStringLiteral("sessions")));
     if (watch->trigger && watch->trigger->sessions && output.sessionsReported() < *watch->trigger->sessions)
         printError(QStringLiteral("%1 of %2 triggered sessions recorded before the stop")
                        .arg(output.sessionsReported())

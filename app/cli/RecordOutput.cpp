@@ -122,10 +122,12 @@ std::optional<QString> RecordOutput::triggerText(const devices::session::Trigger
     // Its last session started, the trigger waits for nothing more.
     if (m_trigger->sessions && m_triggered >= *m_trigger->sessions) return std::nullopt;
     using core::trigger::TriggerState;
-    const QString condition = toQString(m_trigger->condition.text());
+    const QString condition = toQString(m_pipeline.device(0).readableText(m_trigger->condition));
     switch (status.state) {
-    case TriggerState::Waiting:
-        return QStringLiteral("trigger waiting: %1 must first not hold").arg(condition);
+    case TriggerState::Waiting:  // an edge waits only for its hold-off; a level also for its end
+        return m_trigger->condition.isEdge()
+                   ? QStringLiteral("trigger waiting for its hold-off to pass")
+                   : QStringLiteral("trigger waiting until %1 no longer holds").arg(condition);
     case TriggerState::Armed:
         return QStringLiteral("trigger armed: %1").arg(condition);
     case TriggerState::Triggered:  // told by each session it started (PipelineNews::triggered)

@@ -11,8 +11,10 @@
 #include "core/text/JsonWriter.h"
 #include "core/timing/ClockMappingText.h"
 
+#include <QLocale>
 #include <QTextStream>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -90,7 +92,8 @@ int list(SessionSource& store, const core::storage::SessionFilter& filter, bool 
             << toQString(s.startedUtc).leftJustified(26) << toQString(core::toString(s.metadata.mode)).leftJustified(11)
             << toQString(core::toString(s.status)).leftJustified(12) << verdictCell(s).leftJustified(14)
             << (QString::number(s.duration_s(), 'f', 1) + QStringLiteral(" s")).rightJustified(10) << "  "
-            << oneCell(s.metadata.subject) << " / " << oneCell(s.metadata.operatorName) << '\n';
+            << oneCell(s.metadata.subject)
+            << (s.metadata.operatorName.empty() ? QString() : " / " + oneCell(s.metadata.operatorName)) << '\n';
     }
     return kExitOk;
 }
@@ -111,6 +114,31 @@ std::string eventsText(SessionSource& store, std::int64_t id)
         if (const auto count = store.events(id, analysis).size(); count > 0)
             analyses << QStringLiteral("%1 %2").arg(count).arg(toQString(analysis));
     return analyses.isEmpty() ? std::string("none") : analyses.join(QStringLiteral(", ")).toStdString();
+}
+
+// The first of a session's live events, a line each under its count: when
+// (its span on the session's clock), what, and its order or note; the rest
+// are counted ("export --format json" has them all).
+void listEvents(QTextStream& out, const std::vector<core::storage::SessionEvent>& events)
+{
+    constexpr std::size_t kShown = 20;
+    const auto seconds = [](double t_s) { return QLocale::c().toString(t_s, 'f', 3); };
+    for (std::size_t i = 0; i < std::min(events.size(), kShown); ++i) {
+        const auto& e = events[i];
+        QString what = e.kind == core::EventKind::Defect
+                           ? (e.direction > 0 ? QStringLiteral("A then B") : QStringLiteral("B then A"))
+                           : toQString(e.note);
+        if (e.kind == core::EventKind::Defect && e.peakR)
+            what += QStringLiteral(", R %1").arg(QLocale::c().toString(*e.peakR, 'f', 2));
+        const QString when =
+            e.end_s > e.start_s ? seconds(e.start_s) + QStringLiteral("–") + seconds(e.end_s) : seconds(e.start_s);
+        out << QString(18, QLatin1Char(' ')) << (when + QStringLiteral(" s")).leftJustified(18) << ' '
+            << toQString(core::toString(e.kind)).leftJustified(8) << ' ' << oneCell(what.toStdString()) << '\n';
+    }
+    if (events.size() > kShown)
+        out << QString(18, QLatin1Char(' '))
+            << QStringLiteral("… and %1 more (export --format json lists them all)").arg(events.size() - kShown)
+            << '\n';
 }
 
 int show(SessionSource& store, std::int64_t id, bool json)
@@ -176,6 +204,7 @@ int show(SessionSource& store, std::int64_t id, bool json)
         if (own) device(own->metadata, part.id);
         line("clock", core::timing::clockMappingText(part.clockJson));
         line("events", eventsText(store, part.id));
+        listEvents(out, store.events(part.id));
         line("readings", std::to_string(store.readings(part.id).size()));
         partEvents += eventCount(store, part.id);
     }
@@ -183,6 +212,7 @@ int show(SessionSource& store, std::int64_t id, bool json)
     // A session of several devices keeps its events in its parts.
     line("events", parts.empty() ? eventsText(store, id)
                                  : std::to_string(eventCount(store, id) + partEvents) + " with its parts'");
+    if (parts.empty()) listEvents(out, store.events(id));
     line("readings", std::to_string(store.readings(id).size()));
     line("annotations", std::to_string(store.annotations(id).size()));
     return kExitOk;

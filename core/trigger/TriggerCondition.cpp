@@ -79,6 +79,26 @@ std::string TriggerCondition::text() const
     return quantity;
 }
 
+std::string TriggerCondition::readableText(const std::function<std::string(double)>& n, const std::string& unit) const
+{
+    const std::string in = unit.empty() ? "" : " " + unit;
+    switch (kind) {
+    case TriggerKind::Above:
+        return quantity + " above " + n(level) + in;
+    case TriggerKind::Below:
+        return quantity + " below " + n(level) + in;
+    case TriggerKind::Rising:
+        return quantity + " rising through " + n(level) + in;
+    case TriggerKind::Falling:
+        return quantity + " falling through " + n(level) + in;
+    case TriggerKind::Inside:
+        return quantity + " inside " + n(level) + ".." + n(high) + in;
+    case TriggerKind::Outside:
+        return quantity + " outside " + n(level) + ".." + n(high) + in;
+    }
+    return quantity;
+}
+
 ParsedTrigger parseTrigger(std::string_view text)
 {
     text = trimmed(text);

@@ -10,6 +10,7 @@
 // its end); an edge holds at one sample (post time counts from it).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -32,6 +33,9 @@ struct TriggerCondition {
     // windows: whether the condition begins there).
     bool begins(std::optional<double> previous, double value) const;
     std::string text() const;  // back in the form above
+    // As people read it, its levels written by `level` in `unit` ("a above
+    // 20 µε", "force inside 1..2 mN", "a rising through 0 µε").
+    std::string readableText(const std::function<std::string(double)>& level, const std::string& unit) const;
 };
 
 // The condition in `text`, or why it is none: "a>20e-6", "a rising 2e-5",

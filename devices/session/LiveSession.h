@@ -210,6 +210,9 @@ public:
     TriggerStatus triggerStatus() const { return m_gate->status(); }
     // The triggered sessions ended since the last call, in order.
     std::vector<RecordingSummary> takeTriggeredSummaries() { return std::exchange(m_triggeredSummaries, {}); }
+    // Sessions the trigger had cut and that were still waiting for their
+    // recorder when it was last disarmed (a store slower than the trigger).
+    std::size_t cutNotRecorded() const { return m_cutNotRecorded; }
     // The triggered sessions started since the last call, in order.
     std::vector<TriggeredStart> takeTriggeredStarts() { return std::exchange(m_triggeredStarts, {}); }
     // Why the trigger disarmed itself: the store's refusal of the session
@@ -240,6 +243,8 @@ public:
     // An alarm as people read it and the recording keeps it: "a above its
     // warning limit 20 µε (22.2 µε)", "force … 956 µN (978 µN)".
     std::string readableText(const LimitAlarm& alarm) const;
+    // A trigger's condition as people read it, in the same units: "a above 20 µε".
+    std::string readableText(const core::trigger::TriggerCondition& condition) const;
 
     // The owner's periodic call: takes the processors' completed defects and
     // presses into the lists below and, while recording, into the store.
@@ -311,6 +316,7 @@ private:
     unsigned m_triggeredStarted = 0;
     std::vector<RecordingSummary> m_triggeredSummaries;
     std::vector<TriggeredStart> m_triggeredStarts;
+    std::size_t m_cutNotRecorded = 0;
     std::optional<std::string> m_triggerRefusal;
     std::vector<core::trigger::LimitSpec> m_givenLimits;
     std::vector<core::sensors::SensorLimit> m_effectiveLimits;

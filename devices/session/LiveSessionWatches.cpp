@@ -116,6 +116,7 @@ std::optional<RecordingSummary> LiveSession::disarmTrigger()
 {
     std::optional<RecordingSummary> open;
     if (m_trigger && m_recorder) open = finishRecording();
+    m_cutNotRecorded = m_gate->waiting();
     m_gate->disarm();
     m_trigger.reset();
     m_alarmsBeforeTrigger.clear();
@@ -124,14 +125,16 @@ std::optional<RecordingSummary> LiveSession::disarmTrigger()
 
 // The gate's sessions: one that has had its last sample is finished; one
 // that was triggered gets its recorder, its held samples and its trigger
-// event. As many as the gate cut since the last poll: a trigger that
-// re-arms faster than the polls loses none of them.
+// event. Several a poll: a trigger that re-arms faster than the polls
+// loses none of them; but a bounded number, so a store slower than the
+// trigger cannot hold the poll (and the stop) for ever: the rest wait.
 void LiveSession::takeTriggered()
 {
+    constexpr int kMostStartsPerPoll = 32;
     if (!m_trigger) return;
-    for (;;) {
+    for (int started = 0;; ++started) {
         if (m_gate->takeFinished()) m_triggeredSummaries.push_back(finishRecording());
-        if (m_recorder) return;
+        if (m_recorder || started == kMostStartsPerPoll) return;
         const auto pending = m_gate->pendingStart();
         if (!pending) {
             // Only what a session the trigger may still start reaches back to is kept.
@@ -234,6 +237,17 @@ void LiveSession::storeAlarm(const LimitAlarm& raised, double end_s)
     // The limit as it was given, besides.
     m_recorder->addEvents(
         {core::storage::alarmRecord(start_s, end_s, readableText(raised) + "; limit " + raised.limit.text())});
+}
+
+std::string LiveSession::readableText(const core::trigger::TriggerCondition& condition) const
+{
+    const auto watchable = watchableQuantities();
+    const auto quantity = std::ranges::find(watchable, condition.quantity, &core::ChannelDescriptor::name);
+    const auto wording =
+        core::trigger::readableWording(quantity != watchable.end() ? quantity->kind : core::ChannelKind::Other,
+                                       quantity != watchable.end() ? quantity->unit : std::string(),
+                                       std::max(std::abs(condition.level), std::abs(condition.high)));
+    return condition.readableText(wording.level, wording.unit);
 }
 
 std::string LiveSession::readableText(const LimitAlarm& alarm) const

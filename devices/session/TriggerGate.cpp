@@ -77,6 +77,12 @@ std::optional<TriggeredSession> TriggerGate::pendingStart() const
     return m_sessions.front();
 }
 
+std::size_t TriggerGate::waiting() const
+{
+    const std::lock_guard lock(m_mutex);
+    return m_sessions.size() - (m_recorder && !m_sessions.empty() ? 1 : 0);
+}
+
 std::optional<double> TriggerGate::reachBack_s() const
 {
     const std::lock_guard lock(m_mutex);

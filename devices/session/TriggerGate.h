@@ -60,6 +60,8 @@ public:
 
     // A session triggered and waiting for its recorder.
     std::optional<TriggeredSession> pendingStart() const;
+    // Sessions cut that have no recorder yet.
+    std::size_t waiting() const;
     // The stream time of the earliest sample a session not yet recording
     // may start at (one triggered and waiting, or one triggered by the
     // samples to come, reaching back its pre-trigger time): results that
