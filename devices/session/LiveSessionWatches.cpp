@@ -10,6 +10,16 @@
 #include <limits>
 
 namespace tactiscope::devices::session {
+namespace {
+
+// The quantity of `all` named `name`; Other, without a unit, when none is.
+core::ChannelDescriptor named(const std::vector<core::ChannelDescriptor>& all, const std::string& name)
+{
+    const auto found = std::ranges::find(all, name, &core::ChannelDescriptor::name);
+    return found != all.end() ? *found : core::ChannelDescriptor{name, "", core::ChannelKind::Other};
+}
+
+}  // namespace
 
 std::vector<core::ChannelDescriptor> LiveSession::watchableQuantities() const
 {
@@ -241,23 +251,18 @@ void LiveSession::storeAlarm(const LimitAlarm& raised, double end_s)
 
 std::string LiveSession::readableText(const core::trigger::TriggerCondition& condition) const
 {
-    const auto watchable = watchableQuantities();
-    const auto quantity = std::ranges::find(watchable, condition.quantity, &core::ChannelDescriptor::name);
-    const auto wording =
-        core::trigger::readableWording(quantity != watchable.end() ? quantity->kind : core::ChannelKind::Other,
-                                       quantity != watchable.end() ? quantity->unit : std::string(),
-                                       std::max(std::abs(condition.level), std::abs(condition.high)));
+    const auto quantity = named(watchableQuantities(), condition.quantity);
+    const auto wording = core::trigger::readableWording(quantity.kind, quantity.unit,
+                                                        std::max(std::abs(condition.level), std::abs(condition.high)));
     return condition.readableText(wording.level, wording.unit);
 }
 
 std::string LiveSession::readableText(const LimitAlarm& alarm) const
 {
-    const auto watchable = watchableQuantities();
-    const auto quantity = std::ranges::find(watchable, alarm.limit.quantity, &core::ChannelDescriptor::name);
     const auto level = alarm.limit.level(alarm.change.severity).value_or(core::trigger::LimitLevel());
-    return alarm.change.text(alarm.limit, core::trigger::readableWording(
-                                              quantity != watchable.end() ? quantity->kind : core::ChannelKind::Other,
-                                              alarm.unit, std::max(std::abs(level.low), std::abs(level.high))));
+    return alarm.change.text(
+        alarm.limit, core::trigger::readableWording(named(watchableQuantities(), alarm.limit.quantity).kind, alarm.unit,
+                                                    std::max(std::abs(level.low), std::abs(level.high))));
 }
 
 }  // namespace tactiscope::devices::session
