@@ -121,6 +121,19 @@ int strandedInBothLayouts(const core::report::ReportData& data, const std::strin
     return static_cast<int>(strandedHeadings(*plain).size());
 }
 
+// strandedInBothLayouts over `base` with session notes a line (16 words)
+// longer at a time, which walk each heading down through a page's foot.
+int strandedOverGrowingNotes(const core::report::ReportData& base, const std::string& what)
+{
+    int strandedByQt = 0;
+    for (int words = 0; words <= 1100; words += 16) {
+        auto data = base;
+        for (int k = 0; k < words; ++k) data.session.metadata.notes += "notes ";
+        strandedByQt += strandedInBothLayouts(data, std::to_string(words) + " words of notes" + what);
+    }
+    return strandedByQt;
+}
+
 }  // namespace
 
 TEST(ReportPages, AHeadingIsNeverLeftAtThePageFootWithoutItsTable)
@@ -145,24 +158,12 @@ TEST(ReportPages, AHeadingAndItsLineOfIntroductionGoWithTheirTable)
 {
     QTemporaryDir dir;
     const auto base = panelWithDefects(dir);
-    int strandedByQt = 0;
-    for (int words = 0; words <= 1100; words += 16) {
-        auto data = base;
-        for (int k = 0; k < words; ++k) data.session.metadata.notes += "notes ";
-        strandedByQt += strandedInBothLayouts(data, std::to_string(words) + " words of notes");
-    }
-    EXPECT_GT(strandedByQt, 0) << "no heading reached a page's foot: the sweep tests nothing";
+    EXPECT_GT(strandedOverGrowingNotes(base, ""), 0) << "no heading reached a page's foot: the sweep tests nothing";
     // Fresh eyes: with no defects, "None found." sat alone on the next page.
     auto none = base;
     none.events.clear();
     none.sites = {};
-    int noneStrandedByQt = 0;
-    for (int words = 0; words <= 1100; words += 16) {
-        auto data = none;
-        for (int k = 0; k < words; ++k) data.session.metadata.notes += "notes ";
-        noneStrandedByQt += strandedInBothLayouts(data, std::to_string(words) + " words of notes, no defects");
-    }
-    EXPECT_GT(noneStrandedByQt, 0) << "no heading without a table reached a page's foot";
+    EXPECT_GT(strandedOverGrowingNotes(none, ", no defects"), 0) << "no heading without a table reached a page's foot";
     // Sites the detector could not place: why, in a sentence.
     auto unplaced = base;
     unplaced.sites.method = "not placed: no whole stroke between two reversals";
