@@ -2,6 +2,7 @@
 #include "DetectorOptions.h"
 
 #include "CliSupport.h"
+#include "core/detector/DefectOrder.h"
 #include "core/detector/DefectSitesJson.h"
 #include "core/detector/PartialCorrelationKernel.h"
 #include "core/text/JsonWriter.h"
@@ -27,11 +28,6 @@ unsigned threadsUsed(const DetectorOptions& options)
 }
 
 using core::detector::DefectEvent;
-
-const char* order(int direction)
-{
-    return direction > 0 ? "A then B" : "B then A";
-}
 
 }  // namespace
 
@@ -140,7 +136,7 @@ std::string eventsJson(std::size_t samples, std::size_t lags, double elapsed_s, 
         json.key("start_s").value(e.start_s);
         json.key("end_s").value(e.end_s);
         json.key("direction").value(static_cast<long long>(e.direction));
-        json.key("order").value(order(e.direction));
+        json.key("order").value(core::detector::defectOrderText(e.direction));
         json.key("peak_r").value(e.peakR);
         json.key("lag_ms").value(std::round(e.peakLag_s * 1e9) / 1e6);
         if (e.speed_m_per_s) json.key("speed_mm_s").value(*e.speed_m_per_s * 1e3);
@@ -183,7 +179,8 @@ void printDetection(const QString& source, std::size_t samples, double dt_s, std
     out << qSetFieldWidth(0) << '\n';
     for (const DefectEvent& e : events) {
         out << qSetFieldWidth(12) << QString::number(e.start_s, 'f', 3) << QString::number(e.end_s, 'f', 3)
-            << order(e.direction) << QString::number(e.peakR, 'f', 3) << QString::number(e.peakLag_s * 1e3, 'f', 1);
+            << core::detector::defectOrderText(e.direction) << QString::number(e.peakR, 'f', 3)
+            << QString::number(e.peakLag_s * 1e3, 'f', 1);
         if (e.speed_m_per_s) out << QString::number(*e.speed_m_per_s * 1e3, 'f', 0);
         out << qSetFieldWidth(0) << '\n';
     }

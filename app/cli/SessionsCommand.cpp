@@ -4,6 +4,7 @@
 #include "CliSupport.h"
 #include "SessionArgument.h"
 #include "core/derived/SessionLanes.h"
+#include "core/detector/DefectOrder.h"
 #include "core/modes/ModeDefinition.h"
 #include "core/report/VerdictTrail.h"
 #include "core/storage/SessionExport.h"
@@ -126,7 +127,7 @@ void listEvents(QTextStream& out, const std::vector<core::storage::SessionEvent>
     for (std::size_t i = 0; i < std::min(events.size(), kShown); ++i) {
         const auto& e = events[i];
         QString what = e.kind == core::EventKind::Defect
-                           ? (e.direction > 0 ? QStringLiteral("A then B") : QStringLiteral("B then A"))
+                           ? QString::fromLatin1(core::detector::defectOrderText(e.direction))
                            : toQString(e.note);
         if (e.kind == core::EventKind::Defect && e.peakR)
             what += QStringLiteral(", R %1").arg(QLocale::c().toString(*e.peakR, 'f', 2));

@@ -2,20 +2,12 @@
 #include "core/detector/ProbeDecisionCheck.h"
 
 #include "core/SampleBlock.h"
+#include "core/detector/DefectOrder.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace tactiscope::core::detector {
-namespace {
-
-const char* directionWord(int decision)
-{
-    return decision > 0 ? "A then B" : decision < 0 ? "B then A" : "no defect";
-}
-
-}  // namespace
-
 std::optional<ProbeDecisionChannels> probeDecisionChannels(const std::vector<ChannelDescriptor>& channels)
 {
     std::optional<std::size_t> out, rab, rba, lagAb, lagBa;
@@ -44,8 +36,8 @@ int probeDecisionOf(double value)
 
 std::string ProbeDisagreement::text() const
 {
-    return std::string("the probe's detector and the workstation's disagree: the probe says ") + directionWord(probe) +
-           ", the workstation " + directionWord(workstation) + " (for " +
+    return std::string("the probe's detector and the workstation's disagree: the probe says ") +
+           defectOrderText(probe) + ", the workstation " + defectOrderText(workstation) + " (for " +
            std::to_string(ProbeDecisionCheck::kLastingSamples) +
            " samples or more; check the probe's firmware and its detector's settings)";
 }
