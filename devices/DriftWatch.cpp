@@ -20,10 +20,16 @@ std::optional<std::string> DriftWatch::check(const core::timing::ClockAlignment&
     if (m_lastNotice_s && streamTime_s - *m_lastNotice_s < kRepeat_s) return std::nullopt;
     m_lastNotice_s = streamTime_s;
     char text[256];
-    std::snprintf(text, sizeof text,
-                  "the device's clock runs %.0f ppm %s against the host's: the rate it states is off by as much, "
-                  "and so is every time in the recording (%.1f s an hour)",
-                  std::abs(ppm), ppm > 0.0 ? "fast" : "slow", std::abs(ppm) * 1e-6 * 3600.0);
+    if (m_subject == Subject::TextLines)
+        std::snprintf(text, sizeof text,
+                      "the board's lines now come %.0f ppm %s than the rate they were timed at when they began: "
+                      "every time in the recording is off by as much (%.1f s an hour)",
+                      std::abs(ppm), ppm > 0.0 ? "faster" : "slower", std::abs(ppm) * 1e-6 * 3600.0);
+    else
+        std::snprintf(text, sizeof text,
+                      "the device's clock runs %.0f ppm %s against the host's: the rate it states is off by as much, "
+                      "and so is every time in the recording (%.1f s an hour)",
+                      std::abs(ppm), ppm > 0.0 ? "fast" : "slow", std::abs(ppm) * 1e-6 * 3600.0);
     return text;
 }
 

@@ -17,6 +17,14 @@ namespace tactiscope::devices {
 
 class DriftWatch {
 public:
+    // Whose rate is watched: a device's clock, or the rate a text board's
+    // lines were timed at when they began (protocol/LineRate.h).
+    enum class Subject { DeviceClock, TextLines };
+    explicit DriftWatch(Subject subject = Subject::DeviceClock)
+        : m_subject(subject)
+    {
+    }
+
     // 500 ppm: ten times a cheap crystal's tolerance, and far above what
     // 15 s of arrivals can mismeasure (a few ppm for 1–6 ms of delivery
     // jitter: core/timing).
@@ -31,6 +39,7 @@ public:
     std::optional<std::string> check(const core::timing::ClockAlignment& clock, double streamTime_s);
 
 private:
+    Subject m_subject;
     std::optional<double> m_lastNotice_s;
     std::optional<double> m_lastCheck_s;
 };

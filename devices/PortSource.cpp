@@ -16,6 +16,7 @@ PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const Po
     discardWaiting();
     if (options.protocol == WireProtocol::Text) {
         m_text.emplace(options.textRate_hz);
+        m_drift = DriftWatch(DriftWatch::Subject::TextLines);
     } else {
         if (options.requestRate_hz)
             sendCommand(protocol::CommandCode::SetRate,
@@ -23,8 +24,12 @@ PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const Po
         sendCommand(protocol::CommandCode::RequestInfo);
         sendCommand(protocol::CommandCode::Start);
     }
-    const auto deadline = std::chrono::steady_clock::now() + options.handshakeTimeout;
+    const auto start = std::chrono::steady_clock::now();
+    auto deadline = start + options.handshakeTimeout;
     while (!layoutKnown() || !rateConfirmed(deadline)) {
+        // A text board that prints is timed for as long as its rate takes
+        // to settle (eight of its periods: a minute at one line in 8 s).
+        if (m_text && m_text->counters().frames > 0) deadline = std::max(deadline, start + kLongestTextTiming);
         if (std::chrono::steady_clock::now() >= deadline) {
             throw transport::TransportError(m_transport->description() + ": no " +
                                             (options.protocol == WireProtocol::Binary ? std::string("TSP/1 frames")
@@ -82,12 +87,27 @@ void PortSource::discardWaiting()
 
 std::optional<std::string> PortSource::rateNote() const
 {
-    if (!m_text || m_options.textRate_hz) return std::nullopt;
-    char text[256];
+    if (!m_text || !m_text->measuredRate()) return std::nullopt;
+    const auto& rate = *m_text->measuredRate();
+    char uncertainty[96];
+    if (rate.u_hz)
+        std::snprintf(uncertainty, sizeof uncertainty, " ± %.2g Hz", *rate.u_hz);
+    else
+        std::snprintf(uncertainty, sizeof uncertainty, " (its uncertainty not known from %zu lines)", rate.lines);
+    char basis[96];
+    if (rate.boardClock)
+        std::snprintf(basis, sizeof basis, "by the board's own clock (%s) over %zu lines",
+                      rate.boardSecondsPerUnit == 1.0    ? "in s"
+                      : rate.boardSecondsPerUnit == 1e-3 ? "in ms"
+                                                         : "in µs",
+                      rate.lines);
+    else
+        std::snprintf(basis, sizeof basis, "from the arrival times of %zu lines over %.1f s", rate.lines, rate.span_s);
+    char text[400];
     std::snprintf(text, sizeof text,
-                  "the sample rate, %.6g Hz, was estimated from the arrival times of the first %.0f s: a text device "
-                  "sends no clock, so every time in this recording rests on it",
-                  m_rate_hz, protocol::TextStream::kEstimationWindow_s);
+                  "the sample rate, %.7g Hz%s, was measured %s: a text device states no rate, so every time in this "
+                  "recording rests on it",
+                  rate.rate_hz, uncertainty, basis);
     return text;
 }
 
@@ -146,15 +166,19 @@ void PortSource::pump(std::chrono::milliseconds timeout)
     const std::span<const std::uint8_t> bytes(m_chunk.data(), n);
     const double arrival_s = m_transport->arrival_s().value_or(steadySeconds());
     // Every new block teaches the clock mapping when its last sample
-    // arrived (a block cannot leave before it), unless the device's clock
-    // broke off since: then the mapping begins again.
-    const auto enqueue = [&](std::vector<core::SampleBlock>& blocks, const protocol::DecoderCounters& counters) {
+    // arrived (a block cannot leave before it; a text block's lines were
+    // held while its rate settled, each block with its own arrival),
+    // unless the device's clock broke off since: then the mapping begins
+    // again.
+    const auto enqueue = [&](std::vector<core::SampleBlock>& blocks, const protocol::DecoderCounters& counters,
+                             const std::vector<double>& arrivals) {
         if (const auto breaks = counters.deviceRestarts + counters.sequenceFaults; breaks != m_clockBreaks) {
             m_clockBreaks = breaks;
             m_clock = {};
         }
-        for (auto& b : blocks) {
-            m_clock.add(b.endTime_s() - b.dt_s(), arrival_s);
+        for (std::size_t i = 0; i < blocks.size(); ++i) {
+            auto& b = blocks[i];
+            m_clock.add(b.endTime_s() - b.dt_s(), i < arrivals.size() ? arrivals[i] : arrival_s);
             if (auto drift = m_drift.check(m_clock, b.endTime_s())) m_notices.push_back({b.endTime_s(), *drift});
             m_queue.push_back(std::move(b));
         }
@@ -166,16 +190,19 @@ void PortSource::pump(std::chrono::milliseconds timeout)
     }
     if (m_text) {
         std::vector<core::SampleBlock> blocks;
-        m_text->push(bytes, arrival_s, blocks);
+        std::vector<double> arrivals;
+        m_text->push(bytes, arrival_s, blocks, &arrivals);
         const std::lock_guard lock(m_statusMutex);
         m_counters = m_text->counters();
-        enqueue(blocks, m_counters);
+        enqueue(blocks, m_counters, arrivals);
+        if (auto warning = m_text->takeRateWarning())
+            m_notices.push_back({blocks.empty() ? 0.0 : blocks.back().endTime_s(), std::move(*warning)});
     } else {
         protocol::StreamOutput out;
         m_binary.push(bytes, arrival_s, out);
         const std::lock_guard lock(m_statusMutex);
         m_counters = m_binary.counters();
-        enqueue(out.blocks, m_counters);
+        enqueue(out.blocks, m_counters, {});
         m_notices.insert(m_notices.end(), std::make_move_iterator(out.notices.begin()),
                          std::make_move_iterator(out.notices.end()));
         if (out.infoChanged) m_info = m_binary.info();

@@ -26,7 +26,7 @@ enum class WireProtocol { Binary, Text };
 
 struct PortSourceOptions {
     WireProtocol protocol = WireProtocol::Binary;
-    std::optional<double> textRate_hz;  // text only: else estimated (2 s)
+    std::optional<double> textRate_hz;  // text only: else measured (protocol/LineRate.h)
     std::chrono::milliseconds handshakeTimeout{4000};
     std::optional<double> requestRate_hz;  // binary only: asked of the device with "set rate"; it may refuse
 };
@@ -65,6 +65,9 @@ public:
     // Host steady-clock time (seconds) of a block time; the block time
     // itself before the mapping is known.
     double hostTime_s(double blockTime_s) const;
+
+    // How long a text board that prints may take to be timed.
+    static constexpr std::chrono::seconds kLongestTextTiming{60};
 
 private:
     void sendCommand(protocol::CommandCode code, std::uint32_t argument = 0);

@@ -133,12 +133,27 @@ std::optional<int> setUpOneDevice(devices::session::LiveSession& session, std::o
 // The device's crystal against the host's (core/timing): what every time
 // it stamped is off by, unmapped. Said once enough of its blocks were
 // mapped for the drift to mean something (DriftWatch's span).
-void tellDeviceClock(const std::optional<core::timing::ClockMapping>& clock)
+void tellDeviceClock(const std::optional<core::timing::ClockMapping>& clock, const devices::BlockSource& source)
 {
     // Too few frames: its drift would be noise, so nothing is said.
     if (!clock || clock->span_s < devices::DriftWatch::kMinSpan_s ||
         clock->basis == core::timing::ClockUncertaintyBasis::TooFewFrames)
         return;
+    if (source.textProtocol()) {
+        // A text board has no clock to drift: the rate its lines were timed
+        // at is what the mapping checks, as the rate they kept coming at.
+        const double rate_hz = source.nominalSampleRate_hz();
+        const double kept_hz = rate_hz / (1.0 + clock->drift);
+        printError(QStringLiteral("the board's lines came at %1 ± %2 Hz over %3 s of the recording (by the host's "
+                                  "clock; ± %4); the rate in use, %5 Hz, is %6 ppm off it")
+                       .arg(kept_hz, 0, 'g', 8)
+                       .arg(kept_hz * clock->drift_u, 0, 'g', 2)
+                       .arg(clock->span_s, 0, 'f', 1)
+                       .arg(QString::fromUtf8(core::timing::describe(clock->basis)))
+                       .arg(rate_hz, 0, 'g', 8)
+                       .arg(std::abs(rate_hz / kept_hz - 1.0) * 1e6, 0, 'f', 0));
+        return;
+    }
     printError(QStringLiteral("device clock: %1 ± %2 ppm %3 against the host's (mapped over %4 s of its blocks; ± %5)")
                    .arg(std::abs(clock->drift) * 1e6, 0, 'f', 1)
                    .arg(clock->drift_u * 1e6, 0, 'f', 1)
@@ -327,7 +342,7 @@ int runRecord(const QStringList& arguments)
     output.tell(pipeline.poll());  // what came with the stop
     if (progress) err << '\n';
     if (last) output.report(*last);
-    if (pipeline.size() == 1) tellDeviceClock(clock);
+    if (pipeline.size() == 1) tellDeviceClock(clock, first.source());
     if (const std::size_t missed = watch->trigger ? first.cutNotRecorded() : 0; missed > 0)
         printError(QStringLiteral("%1 more %2 the trigger cut could not be recorded before the stop: the store "
                                   "did not keep up with the trigger")

@@ -1,21 +1,35 @@
-// Serial-Plotter style line parsing.
+// TextDecoder: lines, Teleplot's gathering, and the channels' layout.
 #include "devices/protocol/TextDecoder.h"
 
-#include <charconv>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace tactiscope::devices::protocol {
 
+namespace {
+
+std::vector<std::string> labelsOf(const TextLine& line)
+{
+    std::vector<std::string> labels;
+    for (const auto& field : line.fields) labels.push_back(field.label);
+    return labels;
+}
+
+// A value beyond the ±3.4e38 a stored (binary32) sample holds would be
+// stored as infinity and poison the live detector for the rest of the
+// session: like an unreadable line, it is a hole.
+bool storable(const TextLine& line)
+{
+    constexpr auto kLargest = static_cast<double>(std::numeric_limits<float>::max());
+    return std::ranges::all_of(line.fields, [](const TextField& f) { return std::abs(f.value) <= kLargest; });
+}
+
+}  // namespace
+
 void TextDecoder::reset()
 {
-    m_line.clear();
-    m_overlong = false;
-    m_names.clear();
-    m_labels.clear();
-    m_candidate.reset();
-    m_candidateLabels.clear();
-    m_counters = {};
+    *this = TextDecoder();
 }
 
 void TextDecoder::push(std::span<const std::uint8_t> bytes, double hostTime_s, std::vector<TextSample>& out)
@@ -25,9 +39,9 @@ void TextDecoder::push(std::span<const std::uint8_t> bytes, double hostTime_s, s
         if (byte == '\n') {
             if (m_overlong) {
                 ++m_counters.linesSkipped;
-                if (!m_labels.empty()) out.push_back({hostTime_s, {}});  // a hole, as any unreadable line
+                hole(hostTime_s, out);
             } else
-                parseLine(hostTime_s, out);
+                onLine(hostTime_s, out);
             m_line.clear();
             m_overlong = false;
         } else if (!m_overlong) {
@@ -39,71 +53,112 @@ void TextDecoder::push(std::span<const std::uint8_t> bytes, double hostTime_s, s
     }
 }
 
-void TextDecoder::parseLine(double hostTime_s, std::vector<TextSample>& out)
+void TextDecoder::onLine(double hostTime_s, std::vector<TextSample>& out)
 {
-    std::vector<std::string> labels;
-    TextSample sample{hostTime_s, {}};
-    bool empty = true;
-    bool ok = true;
-    std::size_t i = 0;
-    const auto separator = [](char c) { return c == ',' || c == ' ' || c == '\t' || c == '\r'; };
-    while (i < m_line.size()) {
-        while (i < m_line.size() && separator(m_line[i])) ++i;
-        if (i == m_line.size()) break;
-        std::size_t end = i;
-        while (end < m_line.size() && !separator(m_line[end])) ++end;
-        std::string_view token(m_line.data() + i, end - i);
-        empty = false;
-        std::string label;
-        if (const auto colon = token.rfind(':'); colon != std::string_view::npos) {
-            label = std::string(token.substr(0, colon));
-            token.remove_prefix(colon + 1);
-        }
-        double value = 0.0;
-        const auto [ptr, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-        // A value beyond the ±3.4e38 a stored (binary32) sample holds would
-        // be stored as infinity and poison the live detector for the rest of
-        // the session: like an unreadable line, it is a hole.
-        constexpr auto kLargestStorable = static_cast<double>(std::numeric_limits<float>::max());
-        if (error != std::errc() || ptr != token.data() + token.size() || token.empty() || !std::isfinite(value) ||
-            std::abs(value) > kLargestStorable) {
-            ok = false;
-            break;
-        }
-        labels.push_back(std::move(label));
-        sample.values.push_back(value);
-        i = end;
+    ParsedLine parsed = parseTextLine(m_line);
+    if (!parsed.line) {
+        if (parsed.refusal == LineRefusal::Blank) return;
+        ++m_counters.linesSkipped;
+        // Teleplot shows the other lines as a log: a board's prints
+        // between its variables are no samples lost.
+        if (m_teleplot) return;
+        flushGathering(out);
+        if (m_candidate) ++m_counters.linesSkipped;  // the first sample must be followed by an agreeing one
+        m_candidate.reset();
+        hole(hostTime_s, out);
+        return;
     }
-    if (empty) return;
-    if (m_labels.empty()) {
-        // The layout is fixed by two consecutive lines that agree: a port
-        // opened mid-line starts with a fragment, which must not decide it.
-        if (!ok || !m_candidate || m_candidateLabels != labels) {
-            if (m_candidate) ++m_counters.linesSkipped;
-            m_candidate.reset();
-            if (ok) {
-                m_candidate = std::move(sample);
-                m_candidateLabels = std::move(labels);
-            } else {
-                ++m_counters.linesSkipped;
-            }
+    TextLine& line = *parsed.line;
+    if (!line.teleplot) {
+        flushGathering(out);
+        onSample(std::move(line), hostTime_s, out);
+        return;
+    }
+    // Teleplot: a variable seen again, or another timestamp, begins the
+    // next instant; the one gathered so far is a sample.
+    if (m_gathering) {
+        auto& [gathered, at_s] = *m_gathering;
+        const bool again = std::ranges::any_of(
+            gathered.fields, [&](const TextField& f) { return f.label == line.fields.front().label; });
+        const bool movedOn = line.boardTime && gathered.boardTime && line.boardTime->value != gathered.boardTime->value;
+        if (!again && !movedOn) {
+            gathered.fields.push_back(std::move(line.fields.front()));
+            at_s = hostTime_s;
             return;
         }
-        m_labels = labels;
-        for (std::size_t c = 0; c < labels.size(); ++c)
-            m_names.push_back(labels[c].empty() ? "ch" + std::to_string(c + 1) : labels[c]);
-        ++m_counters.frames;
-        out.push_back(std::move(*m_candidate));
+        flushGathering(out);
+    }
+    m_gathering.emplace(std::move(line), hostTime_s);
+}
+
+void TextDecoder::flushGathering(std::vector<TextSample>& out)
+{
+    if (!m_gathering) return;
+    auto [line, at_s] = std::move(*m_gathering);
+    m_gathering.reset();
+    onSample(std::move(line), at_s, out);
+}
+
+std::optional<std::vector<double>> TextDecoder::inLayout(const TextLine& line) const
+{
+    if (line.fields.size() != m_labels.size()) return std::nullopt;
+    std::vector<double> values(m_labels.size());
+    for (std::size_t c = 0; c < m_labels.size(); ++c) {
+        if (m_labels[c].empty()) {
+            // Unlabelled: by position, and only where the line is unlabelled too.
+            if (!line.fields[c].label.empty()) return std::nullopt;
+            values[c] = line.fields[c].value;
+            continue;
+        }
+        const auto field =
+            std::ranges::find_if(line.fields, [&](const TextField& f) { return f.label == m_labels[c]; });
+        if (field == line.fields.end()) return std::nullopt;
+        values[c] = field->value;
+    }
+    return values;
+}
+
+void TextDecoder::onSample(TextLine line, double hostTime_s, std::vector<TextSample>& out)
+{
+    if (m_labels.empty()) {
+        // The layout is fixed by two consecutive samples that agree: a port
+        // opened mid-line starts with a fragment, which must not decide it.
+        const bool agrees = m_candidate && storable(line) && labelsOf(m_candidate->first) == labelsOf(line);
+        if (!agrees) {
+            if (m_candidate) ++m_counters.linesSkipped;
+            m_candidate.reset();
+            if (storable(line))
+                m_candidate.emplace(std::move(line), hostTime_s);
+            else
+                ++m_counters.linesSkipped;
+            return;
+        }
+        const TextLine& first = m_candidate->first;
+        for (std::size_t c = 0; c < first.fields.size(); ++c) {
+            m_labels.push_back(first.fields[c].label);
+            m_names.push_back(first.fields[c].label.empty() ? "ch" + std::to_string(c + 1) : first.fields[c].label);
+            m_units.push_back(first.fields[c].unit);
+        }
+        m_teleplot = first.teleplot;
+        auto [candidate, at_s] = std::move(*m_candidate);
         m_candidate.reset();
-    } else if (!ok || labels != m_labels) {
+        onSample(std::move(candidate), at_s, out);
+    }
+    auto values = storable(line) ? inLayout(line) : std::nullopt;
+    if (!values) {
         // A sample was sent here and cannot be read: a hole, so that the
         // samples after it keep their time.
         ++m_counters.linesSkipped;
-        out.push_back({hostTime_s, {}});
+        hole(hostTime_s, out);
         return;
     }
     ++m_counters.frames;
-    out.push_back(std::move(sample));
+    out.push_back({hostTime_s, std::move(*values), line.boardTime});
+}
+
+void TextDecoder::hole(double hostTime_s, std::vector<TextSample>& out)
+{
+    if (!m_labels.empty()) out.push_back({hostTime_s, {}, std::nullopt});
 }
 
 }  // namespace tactiscope::devices::protocol

@@ -1,17 +1,21 @@
-// Lines of numbers, as boards print them for the Arduino IDE's Serial
-// Plotter: one sample per line, values separated by commas, spaces or tabs,
-// optionally as label:value pairs, ended by \n or \r\n.
+// A text board's bytes into samples: lines (ended by \n or \r\n, up to
+// kMaxLine) read by parseTextLine (TextLine.h, every dialect), Teleplot's
+// one-variable lines gathered into one sample per instant (a sample ends
+// when a variable comes again, or the timestamp moves on).
 //
-// The first two consecutive lines that parse alike fix the channels (a port
+// The first two consecutive samples that agree fix the channels (a port
 // opened mid-line begins with a fragment): their names come from the
-// labels, else ch1…chN. After that, a line with another number of values or
-// other labels, or a value that is not a finite number, is counted and
-// comes out as a sample without values (a hole: the sample was sent and is
-// lost, and the ones after it keep their time); a line longer than kMaxLine
-// is skipped and counted. Empty lines are ignored.
+// labels, else ch1…chN, their units from the labels' brackets or
+// Teleplot's '§'. Labelled values are matched by name, so their order on
+// the line may change. After that, a line with other channels, or a value
+// that is not a finite number, is counted and comes out as a sample
+// without values (a hole: the sample was sent and is lost, and the ones
+// after it keep their time); a longer line than kMaxLine is skipped and
+// counted. Blank lines are ignored.
 #pragma once
 
 #include "devices/protocol/DecoderCounters.h"
+#include "devices/protocol/TextLine.h"
 
 #include <cstdint>
 #include <optional>
@@ -22,29 +26,39 @@
 namespace tactiscope::devices::protocol {
 
 struct TextSample {
-    double hostTime_s = 0.0;     // when the chunk holding the line's end arrived
+    double hostTime_s = 0.0;     // when the chunk holding the sample's last line arrived
     std::vector<double> values;  // empty: a line that could not be read
+    std::optional<BoardTime> boardTime;
 };
 
 class TextDecoder {
 public:
-    static constexpr std::size_t kMaxLine = 1024;
+    // 200 channels of long numbers fit many times over.
+    static constexpr std::size_t kMaxLine = 64 * 1024;
 
     void push(std::span<const std::uint8_t> bytes, double hostTime_s, std::vector<TextSample>& out);
-    // Empty until the first line has parsed.
+    // Empty until the first sample has been read.
     const std::vector<std::string>& channelNames() const { return m_names; }
+    const std::vector<std::string>& channelUnits() const { return m_units; }
     const DecoderCounters& counters() const { return m_counters; }
     void reset();
 
 private:
-    void parseLine(double hostTime_s, std::vector<TextSample>& out);
+    void onLine(double hostTime_s, std::vector<TextSample>& out);
+    void onSample(TextLine line, double hostTime_s, std::vector<TextSample>& out);
+    // The line's values in the channels' order; none when its channels are others.
+    std::optional<std::vector<double>> inLayout(const TextLine& line) const;
+    void hole(double hostTime_s, std::vector<TextSample>& out);
+    void flushGathering(std::vector<TextSample>& out);
 
     std::string m_line;
     bool m_overlong = false;
+    std::vector<std::string> m_labels;  // as they appeared ("" when unlabelled)
     std::vector<std::string> m_names;
-    std::vector<std::string> m_labels;      // as they appeared ("" when unlabelled)
-    std::optional<TextSample> m_candidate;  // the first line, until the next one agrees
-    std::vector<std::string> m_candidateLabels;
+    std::vector<std::string> m_units;
+    bool m_teleplot = false;  // the layout is Teleplot's: other lines are the board's log
+    std::optional<std::pair<TextLine, double>> m_candidate;  // the first sample, until the next one agrees
+    std::optional<std::pair<TextLine, double>> m_gathering;  // Teleplot lines of one instant
     DecoderCounters m_counters;
 };
 

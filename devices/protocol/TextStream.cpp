@@ -1,13 +1,15 @@
 // TextStream: line samples into uniformly spaced blocks.
 #include "devices/protocol/TextStream.h"
 
-#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace tactiscope::devices::protocol {
 
 TextStream::TextStream(std::optional<double> sampleRate_hz)
-    : m_rate_hz(sampleRate_hz)
+    : m_rate_hz(sampleRate_hz),
+      m_checkingGivenRate(sampleRate_hz.has_value())
 {
     if (sampleRate_hz && !(*sampleRate_hz > 0.0)) throw std::invalid_argument("text stream rate must be positive");
 }
@@ -15,11 +17,14 @@ TextStream::TextStream(std::optional<double> sampleRate_hz)
 // A label may say the channel's role (docs/protocol.md, "Channel roles"):
 // "a@cantilever-a" is channel a as cantilever A, and a label that is a
 // role's name ("stiff-beam") plays that role. Anything else is only a name.
+// Its unit is the one the board gave, as it gave it ("mN", "°C").
 std::vector<core::ChannelDescriptor> TextStream::channels() const
 {
     std::vector<core::ChannelDescriptor> result;
-    for (const auto& label : m_decoder.channelNames()) {
-        core::ChannelDescriptor channel{label, "", core::ChannelKind::Other};
+    const auto& names = m_decoder.channelNames();
+    for (std::size_t c = 0; c < names.size(); ++c) {
+        const std::string& label = names[c];
+        core::ChannelDescriptor channel{label, m_decoder.channelUnits()[c], core::ChannelKind::Other};
         const auto at = label.rfind('@');
         if (const auto role = core::channelRoleFromString(label)) {
             channel.role = role;
@@ -34,30 +39,47 @@ std::vector<core::ChannelDescriptor> TextStream::channels() const
     return result;
 }
 
-void TextStream::push(std::span<const std::uint8_t> bytes, double hostTime_s, std::vector<core::SampleBlock>& out)
+void TextStream::push(std::span<const std::uint8_t> bytes, double hostTime_s, std::vector<core::SampleBlock>& out,
+                      std::vector<double>* arrivals)
 {
     m_scratch.clear();
     m_decoder.push(bytes, hostTime_s, m_scratch);
+    if (m_checkingGivenRate) {
+        for (const auto& sample : m_scratch) m_lineRate.add(sample.hostTime_s, sample.boardTime);
+        checkGivenRate();
+    }
     if (!m_rate_hz) {
-        m_held.insert(m_held.end(), m_scratch.begin(), m_scratch.end());
-        if (m_held.empty()) return;
-        const double first_s = m_held.front().hostTime_s;
-        const double last_s = m_held.back().hostTime_s;
-        if (last_s - first_s < kEstimationWindow_s) return;
-        // Lines arrive in bursts (USB packets); what counts is how many
-        // arrive over a long stretch, once the backlog that waited in the
-        // port (read in the first moments, however many reads it takes) is
-        // through: the lines after kSettle_s, over the time after it.
-        const double settled_s = first_s + kSettle_s;
-        const auto later = std::count_if(m_held.begin(), m_held.end(),
-                                         [settled_s](const TextSample& s) { return s.hostTime_s > settled_s; });
-        if (later < 2) return;
-        m_rate_hz = static_cast<double>(later) / (last_s - settled_s);
-        publish(m_held, out);
+        for (auto& sample : m_scratch) {
+            m_lineRate.add(sample.hostTime_s, sample.boardTime);
+            m_held.push_back(std::move(sample));
+        }
+        if (!m_lineRate.settled()) return;
+        m_measured = m_lineRate.estimate();
+        m_rate_hz = m_measured->rate_hz;
+        m_lineRate = {};
+        publish(m_held, out, arrivals);
         m_held.clear();
         return;
     }
-    publish(m_scratch, out);
+    publish(m_scratch, out, arrivals);
+}
+
+// A rate given by the user against the arrivals, once they settle: a
+// mismatch is said, since every time in the recording rests on the rate.
+void TextStream::checkGivenRate()
+{
+    if (!m_lineRate.settled()) return;
+    m_checkingGivenRate = false;
+    const auto measured = m_lineRate.estimate();
+    m_lineRate = {};
+    if (std::abs(*m_rate_hz / measured->rate_hz - 1.0) <= kGivenRateTolerance) return;
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "the lines arrive at %.5g Hz (%s, over %.1f s), not at the %.6g Hz given: every time in this "
+                  "recording is off by %.1f %%",
+                  measured->rate_hz, measured->boardClock ? "by the board's clock" : "by the host's clock",
+                  measured->span_s, *m_rate_hz, 100.0 * (measured->rate_hz / *m_rate_hz - 1.0));
+    m_rateWarning = text;
 }
 
 DecoderCounters TextStream::counters() const
@@ -67,9 +89,35 @@ DecoderCounters TextStream::counters() const
     return counters;
 }
 
-// One block per run of readable lines; each unreadable line between runs
-// moves the index on by one.
-void TextStream::publish(std::vector<TextSample>& samples, std::vector<core::SampleBlock>& out)
+// The sample number of a readable line: the next one, or, by the board's
+// clock, as many periods on from its last stamp as its stamp says (the
+// lines between were lost).
+std::uint64_t TextStream::indexOf(const TextSample& sample) const
+{
+    const auto stamp_s = boardSeconds(sample);
+    if (!stamp_s || !m_lastBoardTime || !(*stamp_s > m_lastBoardTime->first)) return m_nextSampleIndex;
+    const double periods = std::max(1.0, std::round((*stamp_s - m_lastBoardTime->first) * *m_rate_hz));
+    return std::max(m_nextSampleIndex, m_lastBoardTime->second + static_cast<std::uint64_t>(periods));
+}
+
+std::optional<double> TextStream::boardSeconds(const TextSample& sample) const
+{
+    if (!sample.boardTime || !m_measured || !m_measured->boardClock) return std::nullopt;
+    return sample.boardTime->value * m_measured->boardSecondsPerUnit;
+}
+
+void TextStream::accept(const TextSample& sample, std::uint64_t index)
+{
+    m_samplesLost += index - m_nextSampleIndex;
+    m_nextSampleIndex = index + 1;
+    if (const auto stamp_s = boardSeconds(sample)) m_lastBoardTime = {*stamp_s, index};
+}
+
+// One block per run of lines that arrived together and follow each other;
+// each unreadable line, and each sample the board's clock says was lost,
+// moves the index on.
+void TextStream::publish(std::vector<TextSample>& samples, std::vector<core::SampleBlock>& out,
+                         std::vector<double>* arrivals)
 {
     const double dt = 1.0 / *m_rate_hz;
     std::size_t s = 0;
@@ -80,15 +128,20 @@ void TextStream::publish(std::vector<TextSample>& samples, std::vector<core::Sam
             ++s;
             continue;
         }
-        std::size_t end = s;
-        while (end < samples.size() && !samples[end].values.empty()) ++end;
+        const std::uint64_t first = indexOf(samples[s]);
+        accept(samples[s], first);
+        std::size_t end = s + 1;
+        while (end < samples.size() && !samples[end].values.empty() &&
+               samples[end].hostTime_s == samples[s].hostTime_s && indexOf(samples[end]) == m_nextSampleIndex) {
+            accept(samples[end], m_nextSampleIndex);
+            ++end;
+        }
         const std::size_t channels = samples[s].values.size();
-        core::SampleBlock block(channels, end - s, static_cast<double>(m_nextSampleIndex) * dt, dt, m_nextSampleIndex,
-                                m_blockSequence++);
+        core::SampleBlock block(channels, end - s, static_cast<double>(first) * dt, dt, first, m_blockSequence++);
         for (std::size_t i = s; i < end; ++i)
             for (std::size_t c = 0; c < channels; ++c) block.channel(c)[i - s] = samples[i].values[c];
-        m_nextSampleIndex += end - s;
         out.push_back(std::move(block));
+        if (arrivals) arrivals->push_back(samples[end - 1].hostTime_s);
         s = end;
     }
 }

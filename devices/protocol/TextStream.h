@@ -1,19 +1,22 @@
-// Serial-Plotter text → SampleBlocks. Text carries no timing: the sample
-// rate is the one given, or (none given) estimated from the arrival times of
-// the lines of the first 2 s, which are held back until then. The lines of
-// the first half second are not counted in the estimate (a backlog that
-// waited in the port arrives then, at once); the lines after it over the
-// time they took are.
-// Each block holds the lines of one read; a line that could not be read is
-// a lost sample (a gap of one), so the lines after it keep their time.
+// Text lines → SampleBlocks. Text carries no rate: it is the one given
+// (checked against the arrivals once they settle), or it is measured
+// (LineRate: by the board's own clock when its lines carry one, else from
+// their arrival times), and the lines are held back until it has settled.
+// With a board clock, a step of several periods in it is samples lost.
+// Each block holds consecutive lines that arrived together; a line that
+// could not be read is a lost sample (a gap of one), so the lines after it
+// keep their time.
 #pragma once
 
 #include "core/ChannelDescriptor.h"
 #include "core/SampleBlock.h"
+#include "devices/protocol/LineRate.h"
 #include "devices/protocol/TextDecoder.h"
 
 #include <optional>
 #include <span>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace tactiscope::devices::protocol {
@@ -24,23 +27,38 @@ public:
     explicit TextStream(std::optional<double> sampleRate_hz = std::nullopt);
 
     // hostTime_s: when the bytes arrived (seconds on a steady clock).
-    void push(std::span<const std::uint8_t> bytes, double hostTime_s, std::vector<core::SampleBlock>& out);
+    // `arrivals`, when given, receives the arrival of each block put out.
+    void push(std::span<const std::uint8_t> bytes, double hostTime_s, std::vector<core::SampleBlock>& out,
+              std::vector<double>* arrivals = nullptr);
 
     std::optional<double> sampleRate_hz() const { return m_rate_hz; }
+    // How the rate was measured; none when it was given.
+    const std::optional<LineRateEstimate>& measuredRate() const { return m_measured; }
+    // A given rate the arrivals contradict (by more than kGivenRateTolerance),
+    // said once.
+    std::optional<std::string> takeRateWarning() { return std::exchange(m_rateWarning, std::nullopt); }
     std::vector<core::ChannelDescriptor> channels() const;
     DecoderCounters counters() const;
 
-    static constexpr double kEstimationWindow_s = 2.0;
-    static constexpr double kSettle_s = 0.5;
+    static constexpr double kGivenRateTolerance = 0.02;
 
 private:
-    void publish(std::vector<TextSample>& samples, std::vector<core::SampleBlock>& out);
+    void publish(std::vector<TextSample>& samples, std::vector<core::SampleBlock>& out, std::vector<double>* arrivals);
+    std::uint64_t indexOf(const TextSample& sample) const;
+    std::optional<double> boardSeconds(const TextSample& sample) const;  // its board time, when that is the clock
+    void accept(const TextSample& sample, std::uint64_t index);
+    void checkGivenRate();
 
     TextDecoder m_decoder;
     std::optional<double> m_rate_hz;
+    std::optional<LineRateEstimate> m_measured;
+    LineRate m_lineRate;               // until it settles
+    bool m_checkingGivenRate = false;  // a given rate, until the arrivals have said whether they agree
+    std::optional<std::string> m_rateWarning;
     std::vector<TextSample> m_held;  // until the rate is known
     std::vector<TextSample> m_scratch;
     std::uint64_t m_nextSampleIndex = 0;
+    std::optional<std::pair<double, std::uint64_t>> m_lastBoardTime;  // the last timed sample's stamp and index
     std::uint64_t m_samplesLost = 0;
     std::uint32_t m_blockSequence = 0;
 };

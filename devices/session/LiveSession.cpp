@@ -169,7 +169,7 @@ std::optional<std::string> LiveSession::startRecording(const core::storage::Sess
     if (m_trigger) return "the armed trigger starts the recordings; disarm it first";
     m_part = m_options.partOf;
     if (auto error = beginRecording(request)) return error;
-    m_tap->attach(m_recorder);
+    m_tap->attach(m_recorder, sourceTimeNow_s());
     return std::nullopt;
 }
 
@@ -183,8 +183,19 @@ std::optional<std::string> LiveSession::startRecordingPart(const core::storage::
         m_part.reset();
         return error;
     }
-    m_tap->attach(m_recorder);
+    m_tap->attach(m_recorder, sourceTimeNow_s());
     return std::nullopt;
+}
+
+// The source's block time of this instant, by its clock mapping: a
+// recording begins there. None while the mapping is not known, or is
+// no clock (a mapping fitted on a burst may have any slope).
+std::optional<double> LiveSession::sourceTimeNow_s() const
+{
+    const auto clock = source().hostClock();
+    if (!clock || !(std::abs(clock->drift) < 0.1)) return std::nullopt;
+    const double now_s = clock->device_s(steadySeconds());
+    return std::isfinite(now_s) ? std::optional(now_s) : std::nullopt;
 }
 
 // A recording's recorder, metadata, lists and the zero in use, ready for
@@ -236,7 +247,7 @@ std::optional<std::string> LiveSession::beginRecording(const core::storage::Sess
 }
 
 // The probe's silence before the stop is part of the record: longer than
-// a second (or three of its blocks) means it was lost and did not come
+// a second (or three of its blocks, or of its sample periods) means it was lost and did not come
 // back, so the samples to the stop are a gap, with an alarm; a link that
 // failed for good says why.
 void LiveSession::recordUnstoppedEnd(RecordingSummary& summary)
@@ -255,7 +266,9 @@ void LiveSession::recordUnstoppedEnd(RecordingSummary& summary)
         const double end_s = m_recorder->sessionTime_s();
         alarms.push_back(core::storage::alarmRecord(end_s, end_s, "the link failed: " + acquired.error));
     }
-    if (silence_s > std::max(1.0, 3.0 * blockDuration_s)) {
+    // A slow board's silence between its lines is no loss: three of its
+    // periods (three seconds at one line a second) before it is called lost.
+    if (silence_s > std::max({1.0, 3.0 * blockDuration_s, 3.0 / rate_hz})) {
         const double lostAt_s = m_recorder->sessionTime_s();
         summary.lostAt_s = lostAt_s;
         summary.samplesLostAtEnd = static_cast<std::uint64_t>(std::llround(silence_s * rate_hz));

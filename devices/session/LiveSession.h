@@ -285,6 +285,7 @@ private:
     void recordStandingFaults();
     void recordUnstoppedEnd(RecordingSummary& summary);
     void storeClockMapping();
+    std::optional<double> sourceTimeNow_s() const;
     std::uint64_t recorderQueueBound(double rate_hz, std::size_t channels) const;
     RecordingSummary finishRecording();
 

@@ -265,7 +265,6 @@ TEST(TriggeredRecordCli, AnOverloadedCapacitiveBeamWarnsThenIsCriticalAndStopOnC
     core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
     // Stopped shortly after the critical alarm, not at --seconds.
     EXPECT_LT(session->duration_s(), 9.0);
-    EXPECT_GT(session->duration_s(), 7.0);
     const auto alarms = eventsOfKind(store, id, core::EventKind::Alarm);
     ASSERT_EQ(alarms.size(), 2u);
     const auto& warned = alarms[0].note.find("warning limit") != std::string::npos ? alarms[0] : alarms[1];
@@ -276,8 +275,12 @@ TEST(TriggeredRecordCli, AnOverloadedCapacitiveBeamWarnsThenIsCriticalAndStopOnC
     // Stored as the user reads it (issue 52): in µN, not "0.000956 N".
     EXPECT_NE(critic.note.find("force above its critical limit 956 µN ("), std::string::npos) << critic.note;
     EXPECT_NE(warned.note.find("force above its warning limit 597 µN ("), std::string::npos) << warned.note;
-    EXPECT_NEAR(warned.start_s, 5.04, 0.15);
-    EXPECT_NEAR(critic.start_s, 7.05, 0.15);
+    // The scenario's force passes 597 µN at 5.04 s and 956 µN at 7.05 s of
+    // its stream; the session begins when record's handshake is done (the
+    // samples before are not recorded), so those are 2.01 s apart in it.
+    EXPECT_NEAR(critic.start_s - warned.start_s, 2.01, 0.15);
+    EXPECT_GT(critic.start_s, 0.0);
+    EXPECT_LT(session->duration_s() - critic.start_s, 2.0);
     EXPECT_NEAR(warned.end_s, session->duration_s(), 0.15);  // still raised at the stop
 
     // Fresh eyes: the report's peaks said nothing of the critical excursion.
@@ -347,10 +350,13 @@ TEST(TriggeredRecordCli, AWindowLimitReplacesTheBeamsOwnAndSpansItsExcursion)
     EXPECT_NE(critic.note.find("critical window"), std::string::npos) << critic.note;
     EXPECT_NE(warned.note.find("limit force outside warning:-3e-04..3e-04,critical:-5e-04..5e-04"), std::string::npos)
         << warned.note;
-    EXPECT_NEAR(warned.start_s, 3.6, 0.15);
-    EXPECT_NEAR(critic.start_s, 4.6, 0.15);
-    EXPECT_NEAR(critic.end_s, 14.6, 0.25);
-    EXPECT_NEAR(warned.end_s, 15.6, 0.25);
+    // On the session's clock, which begins when record's handshake is done
+    // (the samples before are not recorded): the same instants, apart as
+    // much as by hand.
+    EXPECT_GT(warned.start_s, 0.0);
+    EXPECT_NEAR(critic.start_s - warned.start_s, 1.0, 0.15);
+    EXPECT_NEAR(critic.end_s - warned.start_s, 11.0, 0.25);
+    EXPECT_NEAR(warned.end_s - warned.start_s, 12.0, 0.25);
 }
 
 // The store's disk (a real tmpfs) fills while the trigger waits: the first

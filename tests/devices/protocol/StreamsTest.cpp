@@ -249,20 +249,28 @@ TEST(TextStream, LabelsMayGiveTheChannelsRoles)
     for (const auto& channel : channels) EXPECT_EQ(channel.kind, ChannelKind::Other);
 }
 
-TEST(TextStream, EstimatesTheRateFromTwoSecondsOfArrivals)
+TEST(TextStream, MeasuresTheRateFromTheArrivalsAndHoldsTheLinesUntilThen)
 {
     TextStream stream;
     std::vector<tactiscope::core::SampleBlock> out;
-    // 100 lines per second, arriving in bursts of five every 50 ms.
-    for (int burst = 0; burst <= 44; ++burst) {
+    // 100 lines per second, arriving in bursts of five every 50 ms: timed
+    // from the first read after 0.5 s (0.55 s) on, over 2 s.
+    for (int burst = 0; burst <= 51; ++burst) {
+        EXPECT_FALSE(stream.sampleRate_hz().has_value()) << burst;
         std::string text;
         for (int i = 0; i < 5; ++i) text += std::to_string(burst * 5 + i) + "\n";
         stream.push(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()), burst * 0.05, out);
     }
     ASSERT_TRUE(stream.sampleRate_hz().has_value());
-    EXPECT_NEAR(*stream.sampleRate_hz(), 100.0, 3.0);
+    // Five lines arrive at once: each is up to 40 ms late, in a sawtooth
+    // the stated uncertainty covers.
+    ASSERT_TRUE(stream.measuredRate() && stream.measuredRate()->u_hz);
+    EXPECT_NEAR(*stream.sampleRate_hz(), 100.0, 2.0 * *stream.measuredRate()->u_hz);
+    EXPECT_LT(*stream.measuredRate()->u_hz, 0.5);
+    EXPECT_FALSE(stream.measuredRate()->boardClock);
     ASSERT_FALSE(out.empty());
     EXPECT_EQ(out[0].value(0, 0), 0.0);  // held lines come out first, in order
+    EXPECT_EQ(out.size(), 52u);          // a block per read
 }
 
 TEST(BinaryStream, AnInfoRateItsOwnClockContradictsIsAProblem)
@@ -322,9 +330,10 @@ TEST(TextStream, LinesThatWaitedInThePortDoNotCountInTheRate)
     std::string waited;
     for (int i = 0; i < 1000; ++i) waited += "1,2\n";
     pushText(stream, waited, 0.0, out);
-    for (int burst = 1; burst <= 41; ++burst) pushText(stream, "3,4\n3,4\n3,4\n3,4\n3,4\n", burst * 0.05, out);
+    for (int burst = 1; burst <= 51; ++burst) pushText(stream, "3,4\n3,4\n3,4\n3,4\n3,4\n", burst * 0.05, out);
     ASSERT_TRUE(stream.sampleRate_hz());
-    EXPECT_DOUBLE_EQ(*stream.sampleRate_hz(), 100.0);  // 150 lines from 0.5 s to 2 s
+    EXPECT_NEAR(*stream.sampleRate_hz(), 100.0, 2.0 * *stream.measuredRate()->u_hz);
+    EXPECT_LT(*stream.measuredRate()->u_hz, 0.5);
 }
 
 TEST(TextStream, AnUnreadableLineIsALostSampleAndTheRestKeepTheirTime)

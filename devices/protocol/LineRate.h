@@ -1,0 +1,60 @@
+// The sample rate of a text board, which sends no rate of its own:
+//   - from the board's clock, when its lines carry one (a labelled t,
+//     time, millis or micros value, Teleplot's timestamp): the lines over
+//     the time they span by it, a unit the label does not give found from
+//     the arrivals (seconds, milliseconds or microseconds: whichever power
+//     of 1000 the board's time runs nearest the host's at);
+//   - else from the host's arrival times, by the clock mapping the probes
+//     use (core/timing/ClockAlignment): line i is stamped i periods of a
+//     provisional rate, and the mapping's drift corrects that rate; its
+//     uncertainty is the mapping's (400 lines and more). Lines read in the
+//     first kBacklog_s may have waited in the port: they are not timed.
+//     On fewer lines, a least-squares line through the arrivals (after
+//     those held up far above the mapping's floor) gives the rate and its
+//     standard error.
+// Settled once the lines it is timed on span kWindow_s and kPeriods of
+// their own periods (a board printing once a second is timed over 8 s,
+// after the first line, which may have waited in the port).
+#pragma once
+
+#include "devices/protocol/TextLine.h"
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace tactiscope::devices::protocol {
+
+struct LineRateEstimate {
+    double rate_hz = 0.0;
+    std::optional<double> u_hz;  // standard uncertainty; none while the mapping states none
+    std::size_t lines = 0;
+    double span_s = 0.0;
+    bool boardClock = false;
+    double boardSecondsPerUnit = 1.0;  // with a board clock: its unit, given or found
+};
+
+class LineRate {
+public:
+    static constexpr double kWindow_s = 2.0;
+    static constexpr double kPeriods = 8.0;
+    // Timing by arrivals begins this long after the first line.
+    static constexpr double kBacklog_s = 0.5;
+
+    // One line (a sample, or a hole: it was sent too), when it arrived and
+    // the board's time on it.
+    void add(double arrival_s, const std::optional<BoardTime>& boardTime);
+    std::optional<LineRateEstimate> estimate() const;
+    bool settled() const;
+    std::size_t lines() const { return m_arrivals.size(); }
+
+private:
+    std::optional<LineRateEstimate> fromBoardClock() const;
+    std::optional<LineRateEstimate> fromArrivals() const;
+
+    std::vector<double> m_arrivals;
+    std::vector<BoardTime> m_boardTimes;  // while every line carries one
+    bool m_everyLineTimed = true;
+};
+
+}  // namespace tactiscope::devices::protocol

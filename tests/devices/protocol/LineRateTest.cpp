@@ -1,0 +1,126 @@
+// A text board's rate measured from the lines' arrivals (and from its own
+// clock), against boards whose true rate is known: the stated ± covers
+// the truth as a standard uncertainty should, for a slow board timed on a
+// few lines and a fast one timed on many, on links that deliver at random,
+// in USB bursts, and with a backlog read at once.
+#include "devices/protocol/LineRate.h"
+
+#include "tests/support/Coverage.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using tactiscope::devices::protocol::BoardTime;
+using tactiscope::devices::protocol::LineRate;
+
+namespace {
+
+enum class Link { Random, Bursts };
+
+// `lines` lines of a board printing at `rate_hz`, delivered over `link`;
+// the estimate once the rate has settled.
+tactiscope::devices::protocol::LineRateEstimate timeBoard(double rate_hz, Link link, unsigned seed,
+                                                          std::size_t backlog = 0)
+{
+    std::mt19937_64 random(seed);
+    std::exponential_distribution<double> delay(1.0 / 0.8e-3);  // the OS and the link: 0.8 ms on average
+    std::uniform_real_distribution<double> phase(0.0, 1.0);
+    LineRate rate;
+    const double start_s = 100.0 + phase(random);
+    // A backlog that waited in the port arrives at once with the first line.
+    for (std::size_t i = 0; i < backlog; ++i) rate.add(start_s, std::nullopt);
+    // The link is read 50 times a second; the rate is looked at after each read.
+    const auto linesPerRead = static_cast<std::size_t>(std::max(1.0, rate_hz / 50.0));
+    for (std::size_t i = 0; i % linesPerRead != 0 || !rate.settled(); ++i) {
+        const double sent_s = start_s + static_cast<double>(i) / rate_hz;
+        double arrival_s = sent_s + 0.2e-3 + delay(random);
+        // USB full speed: the board's bytes leave in 1 ms frames.
+        if (link == Link::Bursts) arrival_s = std::ceil(arrival_s * 1000.0) / 1000.0 + 0.1e-3 * phase(random);
+        rate.add(arrival_s, std::nullopt);
+    }
+    return *rate.estimate();
+}
+
+}  // namespace
+
+TEST(LineRate, ASlowBoardsRateOnAFewLinesIsCoveredByItsUncertainty)
+{
+    for (const Link link : {Link::Random, Link::Bursts}) {
+        tactiscope::testing::Coverage coverage;
+        for (unsigned seed = 1; seed <= 400; ++seed) {
+            const auto rate = timeBoard(10.0, link, seed);
+            ASSERT_TRUE(rate.u_hz);
+            EXPECT_LE(rate.lines, 25u);  // 2 s of it
+            coverage.add(rate.rate_hz - 10.0, *rate.u_hz);
+        }
+        EXPECT_TRUE(coverage.isGaussian()) << (link == Link::Random ? "random" : "bursts");
+    }
+}
+
+TEST(LineRate, AFastBoardsRateIsCoveredByTheClockMappingsUncertainty)
+{
+    for (const Link link : {Link::Random, Link::Bursts}) {
+        tactiscope::testing::Coverage coverage;
+        for (unsigned seed = 1; seed <= 200; ++seed) {
+            const auto rate = timeBoard(500.0, link, seed);
+            ASSERT_TRUE(rate.u_hz);
+            EXPECT_LT(std::abs(rate.rate_hz / 500.0 - 1.0), 5e-4);  // the 0.05 %
+            coverage.add(rate.rate_hz - 500.0, *rate.u_hz);
+        }
+        EXPECT_TRUE(coverage.isGaussian()) << (link == Link::Random ? "random" : "bursts");
+    }
+}
+
+TEST(LineRate, ABacklogReadAtOnceDoesNotMoveTheRate)
+{
+    // Two seconds of lines that waited in the port: counted, they would
+    // make a 100 Hz board 200 Hz.
+    const auto rate = timeBoard(100.0, Link::Random, 7, 200);
+    EXPECT_NEAR(rate.rate_hz, 100.0, 4.0 * *rate.u_hz);
+    EXPECT_LT(std::abs(rate.rate_hz / 100.0 - 1.0), 1e-3);
+}
+
+TEST(LineRate, ASlowBoardIsTimedOverEightOfItsPeriods)
+{
+    // The first line may have waited in the port: nine after it, eight periods.
+    LineRate rate;
+    for (int i = 0; i < 9; ++i) {
+        rate.add(10.0 + i * 1.0 + 1e-3 * (i % 3), std::nullopt);
+        EXPECT_FALSE(rate.settled()) << "after " << i + 1 << " lines";
+    }
+    rate.add(19.0, std::nullopt);
+    ASSERT_TRUE(rate.settled());
+    EXPECT_NEAR(rate.estimate()->rate_hz, 1.0, 2e-3);
+}
+
+TEST(LineRate, TheBoardsOwnClockTimesItsLinesAndItsUnitIsFoundFromTheArrivals)
+{
+    // A board whose loop takes 101.3 ms stamps its lines with millis(),
+    // unlabelled as to unit ("t"); its lines arrive late and unevenly.
+    LineRate rate;
+    std::mt19937_64 random(3);
+    std::uniform_real_distribution<double> late(0.0, 0.02);
+    for (int i = 0; i < 30; ++i) {
+        const double stamp_ms = std::floor(1000.0 + i * 101.3);
+        rate.add(50.0 + i * 0.1013 + late(random), BoardTime{stamp_ms, std::nullopt});
+    }
+    ASSERT_TRUE(rate.settled());
+    const auto estimate = *rate.estimate();
+    EXPECT_TRUE(estimate.boardClock);
+    EXPECT_DOUBLE_EQ(estimate.boardSecondsPerUnit, 1e-3);
+    // 29 periods over floor(1000 + 29·101.3) − 1000 = 2937 ms.
+    EXPECT_NEAR(estimate.rate_hz, 29.0 / 2.937, 1e-9);
+    ASSERT_TRUE(estimate.u_hz);
+    EXPECT_NEAR(*estimate.u_hz, estimate.rate_hz * 1.0 / std::sqrt(6.0) / 2937.0, 1e-12);
+}
+
+TEST(LineRate, ABoardClockStepOfSeveralPeriodsIsLinesLostNotASlowerRate)
+{
+    LineRate rate;
+    for (int i = 0; i < 40; ++i) {
+        if (i == 10 || i == 11) continue;                         // two lines lost on the way
+        rate.add(1.0 + i * 0.05, BoardTime{i * 50'000.0, 1e-6});  // micros
+    }
+    EXPECT_NEAR(rate.estimate()->rate_hz, 20.0, 1e-9);
+}
