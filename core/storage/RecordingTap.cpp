@@ -42,8 +42,8 @@ void RecordingTap::consume(const SampleBlock& block)
     const std::lock_guard lock(m_mutex);
     if (!m_recorder) return;
     if (m_from_s) {
-        // Half a sample's slack: a sample at the start instant belongs in.
-        const double from_s = *m_from_s - 0.5 * block.dt_s();
+        // A sample at the start instant belongs in, whatever the rounding.
+        const double from_s = *m_from_s - 1e-6 * block.dt_s();
         const double first = std::max(0.0, std::ceil((from_s - block.t0_s()) / block.dt_s()));
         if (first >= static_cast<double>(block.sampleCount())) return;
         m_from_s.reset();

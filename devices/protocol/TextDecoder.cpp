@@ -133,7 +133,11 @@ void TextDecoder::onSample(TextLine line, double hostTime_s, std::vector<TextSam
                 ++m_counters.linesSkipped;
             return;
         }
-        const TextLine& first = m_candidate->first;
+        TextLine& first = m_candidate->first;
+        // Teleplot's variables are independent lines, gathered in the order
+        // printed from wherever the port was opened: in name order they
+        // are the same channels on every connection.
+        if (first.teleplot) std::ranges::sort(first.fields, {}, [](const TextField& f) { return f.label; });
         for (std::size_t c = 0; c < first.fields.size(); ++c) {
             m_labels.push_back(first.fields[c].label);
             m_names.push_back(first.fields[c].label.empty() ? "ch" + std::to_string(c + 1) : first.fields[c].label);
