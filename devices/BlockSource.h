@@ -82,6 +82,9 @@ public:
     // How the rate was found when it is not the device's own word (a text
     // device's estimate), for the record; none otherwise.
     virtual std::optional<std::string> rateNote() const { return std::nullopt; }
+    // The standard uncertainty of a rate this program measured (a text
+    // device's: protocol/LineRate.h); none for a rate the device states.
+    virtual std::optional<double> rateUncertainty_hz() const { return std::nullopt; }
 
     // Asks the device to switch the shunt across channel `channel`'s bridge
     // (TSP/1 command 6); the answer comes as a status (takeStatuses()), or

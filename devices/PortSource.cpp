@@ -111,6 +111,11 @@ std::optional<std::string> PortSource::rateNote() const
     return text;
 }
 
+std::optional<double> PortSource::rateUncertainty_hz() const
+{
+    return m_text && m_text->measuredRate() ? m_text->measuredRate()->u_hz : std::nullopt;
+}
+
 // A TSP/1 device's INFO rate is checked against its clock before anyone
 // records with it: the handshake waits for two consecutively numbered
 // frames, among the first four at most (a device whose sequence does not

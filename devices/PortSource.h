@@ -52,6 +52,7 @@ public:
     std::vector<std::uint8_t> recentBytes() const override;
     bool textProtocol() const override { return m_text.has_value(); }
     std::optional<std::string> rateNote() const override;
+    std::optional<double> rateUncertainty_hz() const override;
     std::optional<protocol::DeviceInfo> deviceInfo() const;
     std::optional<std::string> requestShunt(std::size_t channel, bool on) override;
     std::vector<DeviceStatus> takeStatuses() override;

@@ -35,6 +35,7 @@ ReconnectingSource::ReconnectingSource(Opener opener, std::chrono::milliseconds 
       m_channels(m_source->channels()),
       m_rate_hz(m_source->nominalSampleRate_hz()),
       m_rateNote(m_source->rateNote()),
+      m_rateU_hz(m_source->rateUncertainty_hz()),
       m_start(std::chrono::steady_clock::now())
 {
 }

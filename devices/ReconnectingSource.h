@@ -56,6 +56,7 @@ public:
     std::vector<std::uint8_t> recentBytes() const override;
     bool textProtocol() const override;
     std::optional<std::string> rateNote() const override { return m_rateNote; }
+    std::optional<double> rateUncertainty_hz() const override { return m_rateU_hz; }
     // The current connection's, in the stream's time.
     std::optional<core::timing::ClockMapping> hostClock() const override;
 
@@ -80,6 +81,7 @@ private:
     std::vector<core::ChannelDescriptor> m_channels;
     double m_rate_hz = 0.0;
     std::optional<std::string> m_rateNote;  // the first connection's: the rate kept
+    std::optional<double> m_rateU_hz;       // and its uncertainty
     std::string m_error;
     bool m_failedForGood = false;
     std::atomic<DeviceState> m_state = DeviceState::Streaming;

@@ -181,8 +181,8 @@ int runRecord(const QStringList& arguments)
         {QStringLiteral("protocol"), QStringLiteral("binary (TSP/1, default) or text."), QStringLiteral("binary|text")},
         {QStringLiteral("baud"), QStringLiteral("Baud rate (default %1).").arg(kDefaultBaud), QStringLiteral("N")},
         {QStringLiteral("rate"),
-         QStringLiteral("Sample rate in Hz: text, the rate of the lines (else estimated); binary, asked of the "
-                        "device."),
+         QStringLiteral("Sample rate in Hz: text, the rate of the lines (else timed by the board's own clock or "
+                        "their arrivals, checked against them when given); binary, asked of the device."),
          QStringLiteral("HZ")},
         {QStringLiteral("seconds"), QStringLiteral("Record this long (default: until Ctrl-C)."), QStringLiteral("S")},
         {QStringLiteral("db"), QStringLiteral("Session store to record into (required; created if missing)."),

@@ -135,7 +135,10 @@ void ChannelRolesBox::setChannels(const std::vector<core::ChannelDescriptor>& de
         connect(choice, &QComboBox::currentIndexChanged, this, [this] {
             if (!m_showing) emit rolesChosen(roles());
         });
-        m_rows->addRow(name.toHtmlEscaped() + QLatin1Char(':'), choice);
+        // The unit the device gave, or none: a plain number.
+        const QString unit =
+            channel.unit.empty() ? QString() : QStringLiteral(" [%1]").arg(QString::fromStdString(channel.unit));
+        m_rows->addRow((name + unit).toHtmlEscaped() + QLatin1Char(':'), choice);
         m_choices.push_back(choice);
     }
     setVisible(!declared.empty());

@@ -86,17 +86,17 @@ DevicePanel::DevicePanel(QWidget* parent)
     m_hint->setStyleSheet(QStringLiteral("color: palette(placeholder-text);"));
     m_path->setPlaceholderText(tr("/dev/ttyACM0 or a link such as /tmp/probe"));
     m_protocol->addItem(tr("TSP/1 binary frames"), static_cast<int>(devices::WireProtocol::Binary));
-    m_protocol->addItem(tr("Text lines (Serial Plotter)"), static_cast<int>(devices::WireProtocol::Text));
+    m_protocol->addItem(tr("Text lines (any board)"), static_cast<int>(devices::WireProtocol::Text));
     m_baud->setEditable(true);
     m_baud->setValidator(new QIntValidator(50, 4'000'000, m_baud));
     for (const int baud : {9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600})
         m_baud->addItem(QString::number(baud));
     m_baud->setCurrentText(QString::number(kDefaultBaud));
-    // 0 means "estimate": the text protocol carries no rate (docs/protocol.md).
+    // 0 means "time it": a text board states no rate (docs/protocol.md).
     m_textRate->setRange(0.0, 100'000.0);
     m_textRate->setDecimals(1);
     m_textRate->setSuffix(tr(" Hz"));
-    m_textRate->setSpecialValueText(tr("estimate"));
+    m_textRate->setSpecialValueText(tr("time it"));
 
     // Large buttons: this panel is used with gloves on.
     for (QPushButton* button : {m_connect, m_disconnect}) button->setMinimumHeight(40);
@@ -386,10 +386,16 @@ void DevicePanel::showCounters(const LinkCounters& counters)
 {
     m_state->setText(counters.state);
     m_state->setStyleSheet(counters.healthy ? QStringLiteral("color: #2e7d32;") : QStringLiteral("color: #c62828;"));
-    m_rate->setText(
-        counters.rate_hz
-            ? tr("%1 Hz (nominal %2 Hz)").arg(fixedText(*counters.rate_hz, 1), compactText(counters.nominalRate_hz, 6))
-            : tr("measuring… (nominal %1 Hz)").arg(compactText(counters.nominalRate_hz, 6)));
+    // A text board states no rate: the one its lines were timed at, with
+    // its uncertainty, is what every time rests on.
+    const QString nominal =
+        !counters.nominalMeasured ? tr("nominal %1 Hz").arg(compactText(counters.nominalRate_hz, 6))
+        : counters.nominalRateU_hz
+            ? tr("timed %1 ± %2 Hz from its lines")
+                  .arg(compactText(counters.nominalRate_hz, 7), compactText(*counters.nominalRateU_hz, 2))
+            : tr("timed %1 Hz from its lines").arg(compactText(counters.nominalRate_hz, 7));
+    m_rate->setText(counters.rate_hz ? tr("%1 Hz (%2)").arg(fixedText(*counters.rate_hz, 1), nominal)
+                                     : tr("measuring… (%1)").arg(nominal));
     m_samples->setText(count(counters.samples));
     m_lost->setText(count(counters.samplesLost));
     // Any loss is worth a glance: red, not hidden among the other numbers.

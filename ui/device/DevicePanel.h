@@ -52,6 +52,10 @@ struct LinkCounters {
     bool healthy = true;  // false: lost, reconnecting or failed (drawn in red)
     std::optional<double> rate_hz;
     double nominalRate_hz = 0.0;
+    // A rate this program measured (a text board's), with its uncertainty:
+    // shown as measured, not as the device's word.
+    bool nominalMeasured = false;
+    std::optional<double> nominalRateU_hz;
     std::uint64_t samples = 0;
     std::uint64_t samplesLost = 0;
     std::optional<devices::protocol::DecoderCounters> decoder;  // sources with a wire protocol

@@ -15,6 +15,8 @@ LinkCounters linkCounters(const devices::AcquisitionStats& stats, const devices:
     LinkCounters counters;
     counters.rate_hz = stats.measuredRate_hz;
     counters.nominalRate_hz = source.nominalSampleRate_hz();
+    counters.nominalMeasured = source.rateNote().has_value();
+    counters.nominalRateU_hz = source.rateUncertainty_hz();
     counters.samples = stats.samples;
     counters.samplesLost = stats.samplesLost;
     switch (stats.state) {

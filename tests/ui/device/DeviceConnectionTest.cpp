@@ -10,6 +10,7 @@
 #include "support/Screenshot.h"
 #include "support/TempDirectory.h"
 #include "support/TempPath.h"
+#include "support/TextBoard.h"
 #include "support/WaitFor.h"
 #include "ui/MainWindow.h"
 #include "ui/device/DevicePanel.h"
@@ -188,6 +189,39 @@ TEST(DeviceConnection, ANewerConnectSupersedesOneStillInItsHandshake)
     EXPECT_TRUE(window.windowTitle().contains(QStringLiteral("EMU-6")));
     EXPECT_EQ(window.findChild<QMessageBox*>(QStringLiteral("connectErrorBox")), nullptr);
     EXPECT_EQ(stateText(window), QStringLiteral("Streaming"));
+}
+
+// A maker's board (issue 53): the panel shows the rate its lines were
+// timed at, with its uncertainty, and each channel's unit as the board
+// gave it (none: a plain number).
+TEST(DeviceConnection, ATextBoardShowsTheRateItWasTimedAtAndItsChannelsUnits)
+{
+    const std::string link = uniqueTempPath("text-board");
+    tactiscope::testing::TextBoard board(link,
+                                         {100.0,
+                                          [](std::uint64_t n) {
+                                              return "force[mN]:" + std::to_string(0.01 * static_cast<double>(n % 50)) +
+                                                     " pos:" + std::to_string(n % 7) + "\r\n";
+                                          },
+                                          4, 2e-3, false});
+    ASSERT_TRUE(board.ok());
+    ui::MainWindow window;
+    window.show();
+    window.station().connectDevice(
+        QString::fromStdString(link),
+        serialOpener(link, {WireProtocol::Text, std::nullopt, std::chrono::milliseconds(4000), std::nullopt}));
+    ASSERT_TRUE(waitFor([&] { return window.station().isConnected(); }, 8000));
+    ASSERT_TRUE(waitFor([&] { return stateText(window) == QStringLiteral("Streaming"); }, 2000));
+    tactiscope::testing::runEventLoopFor(1200);
+    const QString rate = child<QLabel>(window, "rateLabel")->text();
+    EXPECT_TRUE(rate.contains(QStringLiteral("(timed 100")) && rate.contains(QStringLiteral(" ± ")) &&
+                rate.contains(QStringLiteral(" Hz from its lines)")))
+        << rate.toStdString();
+    QStringList labels;
+    for (const auto* label : window.findChildren<QLabel*>()) labels << label->text();
+    EXPECT_TRUE(labels.contains(QStringLiteral("force [mN]:"))) << labels.join(QLatin1Char('|')).toStdString();
+    EXPECT_TRUE(labels.contains(QStringLiteral("pos:"))) << labels.join(QLatin1Char('|')).toStdString();
+    EXPECT_FALSE(saveScreenshot(window, QStringLiteral("main-window-text-board")).isEmpty());
 }
 
 TEST(DevicePanel, ReturnsTheChosenPortAndLinkSettings)
