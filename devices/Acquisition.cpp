@@ -13,6 +13,7 @@ namespace {
 
 // Bounds how long stop() can wait for a blocked read.
 constexpr std::chrono::milliseconds kReadTimeout{100};
+constexpr double kQueuedAtStart_s = 0.5;
 
 }  // namespace
 
@@ -71,6 +72,7 @@ void Acquisition::run(const std::stop_token& stopToken)
 {
     core::SampleBlock block;
     std::optional<std::uint64_t> previousEnd;
+    std::optional<double> firstBlock_s;
     while (!stopToken.stop_requested()) {
         ReadStatus status = ReadStatus::Failed;
         try {
@@ -102,7 +104,10 @@ void Acquisition::run(const std::stop_token& stopToken)
         m_stats.samples += block.sampleCount();
         ++m_stats.blocks;
         const double now = steadySeconds();
-        m_rateMeter.observe(now, m_stats.samples);
+        // What the handshake queued (a text board's lines, held while its
+        // rate was timed) comes at once: the rate is measured after it.
+        if (!firstBlock_s) firstBlock_s = now;
+        if (now - *firstBlock_s >= kQueuedAtStart_s) m_rateMeter.observe(now, m_stats.samples);
         m_stats.lastBlockHost_s = now;
         m_stats.measuredRate_hz = m_rateMeter.rate_hz();
         previousEnd = block.endSampleIndex();

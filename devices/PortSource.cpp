@@ -31,6 +31,11 @@ PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const Po
         // to settle (eight of its periods: a minute at one line in 8 s).
         if (m_text && m_text->counters().frames > 0) deadline = std::max(deadline, start + kLongestTextTiming);
         if (std::chrono::steady_clock::now() >= deadline) {
+            if (m_text && m_text->counters().frames > 0)
+                throw transport::TransportError(m_transport->description() + ": its lines could not be timed in " +
+                                                std::to_string(kLongestTextTiming.count()) + " s (" +
+                                                std::to_string(m_text->counters().frames) +
+                                                " read); give their rate (--rate, or Rate in the device panel)");
             throw transport::TransportError(m_transport->description() + ": no " +
                                             (options.protocol == WireProtocol::Binary ? std::string("TSP/1 frames")
                                                                                       : std::string("readable lines")) +

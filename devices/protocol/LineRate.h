@@ -46,7 +46,6 @@ public:
     void add(double arrival_s, const std::optional<BoardTime>& boardTime);
     std::optional<LineRateEstimate> estimate() const;
     bool settled() const;
-    std::size_t lines() const { return m_arrivals.size(); }
 
 private:
     std::optional<LineRateEstimate> fromBoardClock() const;

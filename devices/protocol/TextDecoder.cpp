@@ -27,11 +27,6 @@ bool storable(const TextLine& line)
 
 }  // namespace
 
-void TextDecoder::reset()
-{
-    *this = TextDecoder();
-}
-
 void TextDecoder::push(std::span<const std::uint8_t> bytes, double hostTime_s, std::vector<TextSample>& out)
 {
     m_counters.bytes += bytes.size();

@@ -11,7 +11,8 @@
 // that is not a finite number, is counted and comes out as a sample
 // without values (a hole: the sample was sent and is lost, and the ones
 // after it keep their time); a longer line than kMaxLine is skipped and
-// counted. Blank lines are ignored.
+// counted. Blank lines are ignored, and so are the lines beside Teleplot's
+// that are not its (the board's log, which Teleplot shows apart).
 #pragma once
 
 #include "devices/protocol/DecoderCounters.h"
@@ -41,7 +42,6 @@ public:
     const std::vector<std::string>& channelNames() const { return m_names; }
     const std::vector<std::string>& channelUnits() const { return m_units; }
     const DecoderCounters& counters() const { return m_counters; }
-    void reset();
 
 private:
     void onLine(double hostTime_s, std::vector<TextSample>& out);
