@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <random>
 
 using tactiscope::devices::protocol::BoardTime;
@@ -42,34 +43,35 @@ tactiscope::devices::protocol::LineRateEstimate timeBoard(double rate_hz, Link l
     return *rate.estimate();
 }
 
-}  // namespace
-
-TEST(LineRate, ASlowBoardsRateOnAFewLinesIsCoveredByItsUncertainty)
+// Over `seeds` boards at `rate_hz` on each link: the stated ± covers the
+// truth as a standard uncertainty should; `check` looks at each estimate.
+void expectCoverage(double rate_hz, unsigned seeds,
+                    const std::function<void(const tactiscope::devices::protocol::LineRateEstimate&)>& check)
 {
     for (const Link link : {Link::Random, Link::Bursts}) {
         tactiscope::testing::Coverage coverage;
-        for (unsigned seed = 1; seed <= 400; ++seed) {
-            const auto rate = timeBoard(10.0, link, seed);
+        for (unsigned seed = 1; seed <= seeds; ++seed) {
+            const auto rate = timeBoard(rate_hz, link, seed);
             ASSERT_TRUE(rate.u_hz);
-            EXPECT_LE(rate.lines, 25u);  // 2 s of it
-            coverage.add(rate.rate_hz - 10.0, *rate.u_hz);
+            check(rate);
+            coverage.add(rate.rate_hz - rate_hz, *rate.u_hz);
         }
         EXPECT_TRUE(coverage.isGaussian()) << (link == Link::Random ? "random" : "bursts");
     }
 }
 
+}  // namespace
+
+TEST(LineRate, ASlowBoardsRateOnAFewLinesIsCoveredByItsUncertainty)
+{
+    expectCoverage(10.0, 400, [](const auto& rate) { EXPECT_LE(rate.lines, 25u); });  // 2 s of it
+}
+
 TEST(LineRate, AFastBoardsRateIsCoveredByTheClockMappingsUncertainty)
 {
-    for (const Link link : {Link::Random, Link::Bursts}) {
-        tactiscope::testing::Coverage coverage;
-        for (unsigned seed = 1; seed <= 200; ++seed) {
-            const auto rate = timeBoard(500.0, link, seed);
-            ASSERT_TRUE(rate.u_hz);
-            EXPECT_LT(std::abs(rate.rate_hz / 500.0 - 1.0), 5e-4);  // the 0.05 %
-            coverage.add(rate.rate_hz - 500.0, *rate.u_hz);
-        }
-        EXPECT_TRUE(coverage.isGaussian()) << (link == Link::Random ? "random" : "bursts");
-    }
+    expectCoverage(500.0, 200, [](const auto& rate) {
+        EXPECT_LT(std::abs(rate.rate_hz / 500.0 - 1.0), 5e-4);  // the 0.05 %
+    });
 }
 
 TEST(LineRate, ABacklogReadAtOnceDoesNotMoveTheRate)
@@ -113,6 +115,29 @@ TEST(LineRate, TheBoardsOwnClockTimesItsLinesAndItsUnitIsFoundFromTheArrivals)
     EXPECT_NEAR(estimate.rate_hz, 29.0 / 2.937, 1e-9);
     ASSERT_TRUE(estimate.u_hz);
     EXPECT_NEAR(*estimate.u_hz, estimate.rate_hz * 1.0 / std::sqrt(6.0) / 2937.0, 1e-12);
+}
+
+// A board's millis() stamps are whole milliseconds: the span between the
+// first and the last is off by the difference of two roundings, which the
+// stated ± (q/√6) covers as a standard uncertainty.
+TEST(LineRate, ABoardClocksResolutionIsCoveredByItsUncertainty)
+{
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> phase(0.0, 1.0);
+    tactiscope::testing::Coverage coverage;
+    for (int board = 0; board < 400; ++board) {
+        const double period_ms = 9.0 + phase(random);  // 100–111 Hz by the board's crystal
+        const double start_ms = 1000.0 * phase(random);
+        LineRate rate;
+        for (int i = 0; !rate.settled(); ++i) {
+            const double sent_ms = start_ms + i * period_ms;
+            rate.add(20.0 + sent_ms * 1e-3 + 1e-3 * phase(random), BoardTime{std::floor(sent_ms), 1e-3});
+        }
+        const auto estimate = *rate.estimate();
+        ASSERT_TRUE(estimate.boardClock && estimate.u_hz);
+        coverage.add(estimate.rate_hz - 1000.0 / period_ms, *estimate.u_hz);
+    }
+    EXPECT_TRUE(coverage.isGaussian());
 }
 
 TEST(LineRate, ABoardClockStepOfSeveralPeriodsIsLinesLostNotASlowerRate)
