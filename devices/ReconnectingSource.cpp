@@ -49,9 +49,21 @@ std::optional<std::string> ReconnectingSource::differenceFrom(const BlockSource&
         return "another device came back on the port (" + identity.model + " " + identity.serial + ", where " +
                m_identity.model + " " + m_identity.serial +
                " was): what came before is kept, nothing of it is mixed in; connect it as a new session";
-    if (back.channels() != m_channels || back.nominalSampleRate_hz() != m_rate_hz)
+    if (back.channels() != m_channels || !sameRate(back))
         return "the device came back with other channels or another rate; reconnect it by hand";
     return std::nullopt;
+}
+
+// A rate the device states must be the same; one this program measured (a
+// text board timed again when it comes back) agrees within three of the
+// two measurements' combined uncertainty.
+bool ReconnectingSource::sameRate(const BlockSource& back) const
+{
+    const double rate_hz = back.nominalSampleRate_hz();
+    if (rate_hz == m_rate_hz) return true;
+    const auto u_hz = back.rateUncertainty_hz();
+    if (!m_rateNote || !back.rateNote() || !m_rateU_hz || !u_hz) return false;
+    return std::abs(rate_hz - m_rate_hz) <= 3.0 * std::hypot(*m_rateU_hz, *u_hz);
 }
 
 bool ReconnectingSource::tryReconnect()

@@ -9,8 +9,9 @@
 // since the first connection, and their sample index jumps by the samples
 // the outage cost (time away × rate), so Acquisition counts them as lost and
 // a recording marks the gap. A device that comes back as another (another
-// model or serial number in its INFO, other channels or another rate) ends
-// the source for good, with the reason: nothing of it joins the session.
+// model or serial number in its INFO, other channels or another rate; a
+// text board's rate, timed again, within its uncertainty) ends the source
+// for good, with the reason: nothing of it joins the session.
 #pragma once
 
 #include "devices/BlockSource.h"
@@ -68,6 +69,7 @@ private:
     // Why a device that came back is not this one (another model or serial
     // number, other channels or rate); none when it is.
     std::optional<std::string> differenceFrom(const BlockSource& back) const;
+    bool sameRate(const BlockSource& back) const;
 
     void replaceSource(std::unique_ptr<BlockSource> source);
     std::vector<LinkNotice> takeCurrentNotices();

@@ -10,6 +10,7 @@
 
 #include "support/Eventually.h"
 #include "support/TempPath.h"
+#include "support/TextBoard.h"
 
 #include <gtest/gtest.h>
 
@@ -90,4 +91,32 @@ TEST(ReconnectingSource, TheFirstConnectionMustSucceed)
     EXPECT_ANY_THROW(ReconnectingSource(
         serialOpener("/dev/nonexistent-tactiscope", "", 115200,
                      {WireProtocol::Binary, std::nullopt, std::chrono::milliseconds(200), std::nullopt})));
+}
+
+// A text board unplugged and plugged back in is timed again when it comes
+// back: a rate a hair apart (within the two timings' uncertainty) is the
+// same board, not "another rate" that ends the stream.
+TEST(ReconnectingSource, ATextBoardTimedAgainWhenItComesBackContinues)
+{
+    const std::string link = tactiscope::testing::uniqueTempPath("text-replug");
+    const tactiscope::testing::TextBoardOptions printing{
+        200.0, [](std::uint64_t n) { return "a:" + std::to_string(n % 10) + " b:1\n"; }, 4, 2e-3, false};
+    auto board = std::make_unique<tactiscope::testing::TextBoard>(link, printing);
+    auto source = std::make_unique<ReconnectingSource>(
+        serialOpener(link, "", 115200,
+                     {WireProtocol::Text, std::nullopt, std::chrono::milliseconds(4000), std::nullopt}),
+        std::chrono::milliseconds(100));
+    auto* reconnecting = source.get();
+    ASSERT_TRUE(reconnecting->rateUncertainty_hz());
+    Acquisition acquisition(std::move(source));
+    acquisition.start();
+    board.reset();  // unplugged
+    ASSERT_TRUE(tactiscope::testing::eventually([&] { return reconnecting->state() != DeviceState::Streaming; }));
+    board = std::make_unique<tactiscope::testing::TextBoard>(link, printing);
+    ASSERT_TRUE(tactiscope::testing::eventually(
+        [&] { return reconnecting->reconnections() == 1 && reconnecting->state() == DeviceState::Streaming; },
+        std::chrono::seconds(10)))
+        << reconnecting->lastError();
+    EXPECT_FALSE(reconnecting->failedForGood());
+    acquisition.stop();
 }
