@@ -99,13 +99,14 @@ private:
         }
     }
 
-    // What does not fit in the pty within 100 ms is lost, as from a
-    // board's full buffer while nobody reads the port; a reader that is
-    // merely slow (a busy core) takes it all.
+    // A board's write waits while the port is full (as Serial.write does),
+    // but what does not fit within a second is lost, as from a board whose
+    // buffer nobody reads; a reader that is merely slow (a busy core, a
+    // sanitizer) takes it all.
     void write(const std::string& bytes) const
     {
         std::size_t sent = 0;
-        for (int wait = 0; sent < bytes.size() && wait < 100; ++wait) {
+        for (int wait = 0; sent < bytes.size() && wait < 1000; ++wait) {
             const auto written = ::write(m_master, bytes.data() + sent, bytes.size() - sent);
             if (written > 0) sent += static_cast<std::size_t>(written);
             if (sent < bytes.size()) {
