@@ -3,6 +3,7 @@
 
 #include "devices/SteadyClock.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <utility>
@@ -27,9 +28,10 @@ PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const Po
     const auto start = std::chrono::steady_clock::now();
     auto deadline = start + options.handshakeTimeout;
     while (!layoutKnown() || !rateConfirmed(deadline)) {
-        // A text board that prints is timed for as long as its rate takes
-        // to settle (eight of its periods: a minute at one line in 8 s).
-        if (m_text && m_text->counters().frames > 0) deadline = std::max(deadline, start + kLongestTextTiming);
+        // A text board that prints numbers is waited for as long as its
+        // channels and its rate take to settle (two lines, eight periods: a
+        // minute at one line in 8 s).
+        if (m_text && m_text->heardNumbers()) deadline = std::max(deadline, start + kLongestTextTiming);
         if (std::chrono::steady_clock::now() >= deadline) {
             if (m_text && m_text->counters().frames > 0)
                 throw transport::TransportError(m_transport->description() + ": its lines could not be timed in " +
@@ -40,7 +42,8 @@ PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const Po
                                             (options.protocol == WireProtocol::Binary ? std::string("TSP/1 frames")
                                                                                       : std::string("readable lines")) +
                                             " within " + std::to_string(options.handshakeTimeout.count()) +
-                                            " ms; check the protocol, the baud rate and that the device is streaming");
+                                            " ms; check the protocol (a board that prints lines is --protocol text), "
+                                            "the baud rate and that the device is streaming");
         }
         pump(std::chrono::milliseconds(50));
     }
@@ -94,25 +97,29 @@ std::optional<std::string> PortSource::rateNote() const
 {
     if (!m_text || !m_text->measuredRate()) return std::nullopt;
     const auto& rate = *m_text->measuredRate();
-    char uncertainty[96];
-    if (rate.u_hz)
-        std::snprintf(uncertainty, sizeof uncertainty, " ± %.2g Hz", *rate.u_hz);
-    else
-        std::snprintf(uncertainty, sizeof uncertainty, " (its uncertainty not known from %zu lines)", rate.lines);
+    // The rate to its uncertainty's second digit, in plain decimals.
+    char measured[96];
+    if (rate.u_hz && *rate.u_hz > 0.0) {
+        const int decimals = std::clamp(1 - static_cast<int>(std::floor(std::log10(*rate.u_hz))), 0, 12);
+        std::snprintf(measured, sizeof measured, "%.*f ± %.*f Hz", decimals, rate.rate_hz, decimals, *rate.u_hz);
+    } else {
+        std::snprintf(measured, sizeof measured, "%.7g Hz", rate.rate_hz);
+    }
     char basis[96];
     if (rate.boardClock)
-        std::snprintf(basis, sizeof basis, "by the board's own clock (%s) over %zu lines",
+        std::snprintf(basis, sizeof basis, "by the board's own clock (%s) over %zu samples",
                       rate.boardSecondsPerUnit == 1.0    ? "in s"
                       : rate.boardSecondsPerUnit == 1e-3 ? "in ms"
                                                          : "in µs",
                       rate.lines);
     else
-        std::snprintf(basis, sizeof basis, "from the arrival times of %zu lines over %.1f s", rate.lines, rate.span_s);
+        std::snprintf(basis, sizeof basis, "from the arrival times of %zu samples over %.1f s", rate.lines,
+                      rate.span_s);
     char text[400];
     std::snprintf(text, sizeof text,
-                  "the sample rate, %.7g Hz%s, was measured %s: a text device states no rate, so every time in this "
+                  "the sample rate, %s, was measured %s: a text device states no rate, so every time in this "
                   "recording rests on it",
-                  rate.rate_hz, uncertainty, basis);
+                  measured, basis);
     return text;
 }
 

@@ -5,6 +5,7 @@
 #include "devices/PortSource.h"
 #include "devices/transport/SerialPorts.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <thread>
@@ -79,14 +80,23 @@ bool ReconnectingSource::tryReconnect()
             m_state = DeviceState::Lost;
             return false;
         }
-        const auto now = std::chrono::steady_clock::now();
-        const double away_s = std::chrono::duration<double>(now - m_lostAt).count();
+        // The outage ends where the new connection's first sample was
+        // taken: a text board's lines, held while it was timed again, and
+        // a handshake's frames come after it.
+        auto resumed = std::chrono::steady_clock::now();
+        if (const auto clock = source->hostClock()) {
+            const auto first =
+                std::chrono::steady_clock::time_point(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                    std::chrono::duration<double>(clock->host_s(0.0))));
+            resumed = std::clamp(first, m_lostAt, resumed);
+        }
+        const double away_s = std::chrono::duration<double>(resumed - m_lostAt).count();
         // Continue after the last delivered sample, leaving room for what the
         // outage cost; time goes on from the host's clock.
         m_indexOffset = m_endIndex + static_cast<std::uint64_t>(std::llround(away_s * m_rate_hz));
         {
             const std::lock_guard lock(m_countersMutex);  // the owner reads the offset (notices, clock)
-            m_timeOffset_s = std::chrono::duration<double>(now - m_start).count();
+            m_timeOffset_s = std::chrono::duration<double>(resumed - m_start).count();
             char text[96];
             std::snprintf(text, sizeof text, "the probe was away %.1f s and came back", away_s);
             m_pastNotices.push_back({m_lostAtTime_s, text});

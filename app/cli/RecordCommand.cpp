@@ -144,7 +144,7 @@ void tellDeviceClock(const std::optional<core::timing::ClockMapping>& clock, con
         // at is what the mapping checks, as the rate they kept coming at.
         const double rate_hz = source.nominalSampleRate_hz();
         const double kept_hz = rate_hz / (1.0 + clock->drift);
-        printError(QStringLiteral("the board's lines came at %1 ± %2 Hz over %3 s of the recording (by the host's "
+        printError(QStringLiteral("the board's lines came at %1 ± %2 Hz over the last %3 s of them (by the host's "
                                   "clock; ± %4); the rate in use, %5 Hz, is %6 ppm off it")
                        .arg(kept_hz, 0, 'g', 8)
                        .arg(kept_hz * clock->drift_u, 0, 'g', 2)

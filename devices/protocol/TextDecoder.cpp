@@ -25,6 +25,24 @@ bool storable(const TextLine& line)
     return std::ranges::all_of(line.fields, [](const TextField& f) { return std::abs(f.value) <= kLargest; });
 }
 
+// Whether any field of the line reads as a number (a sample cut or
+// garbled), rather than words.
+bool hasNumber(std::string_view line)
+{
+    std::size_t i = 0;
+    const auto separator = [](char c) { return c == ',' || c == ' ' || c == '\t' || c == '\r'; };
+    while (i < line.size()) {
+        while (i < line.size() && separator(line[i])) ++i;
+        std::size_t end = i;
+        while (end < line.size() && !separator(line[end])) ++end;
+        std::string_view token = line.substr(i, end - i);
+        if (const auto mark = token.find_last_of(":="); mark != std::string_view::npos) token.remove_prefix(mark + 1);
+        if (!token.empty() && parseBoardNumber(token)) return true;
+        i = end;
+    }
+    return false;
+}
+
 }  // namespace
 
 void TextDecoder::push(std::span<const std::uint8_t> bytes, double hostTime_s, std::vector<TextSample>& out)
@@ -54,9 +72,9 @@ void TextDecoder::onLine(double hostTime_s, std::vector<TextSample>& out)
     if (!parsed.line) {
         if (parsed.refusal == LineRefusal::Blank) return;
         ++m_counters.linesSkipped;
-        // Teleplot shows the other lines as a log: a board's prints
-        // between its variables are no samples lost.
-        if (m_teleplot) return;
+        // A line with no number in it is the board's log ("Sensor OK"), as
+        // Teleplot shows the lines beside its variables: no sample lost.
+        if (m_teleplot || !hasNumber(m_line)) return;
         flushGathering(out);
         if (m_candidate) ++m_counters.linesSkipped;  // the first sample must be followed by an agreeing one
         m_candidate.reset();

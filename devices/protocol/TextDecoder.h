@@ -11,8 +11,8 @@
 // that is not a finite number, is counted and comes out as a sample
 // without values (a hole: the sample was sent and is lost, and the ones
 // after it keep their time); a longer line than kMaxLine is skipped and
-// counted. Blank lines are ignored, and so are the lines beside Teleplot's
-// that are not its (the board's log, which Teleplot shows apart).
+// counted. Blank lines are ignored, and so are (counted) lines with no
+// number in them and the lines beside Teleplot's: the board's log.
 #pragma once
 
 #include "devices/protocol/DecoderCounters.h"
@@ -42,6 +42,8 @@ public:
     const std::vector<std::string>& channelNames() const { return m_names; }
     const std::vector<std::string>& channelUnits() const { return m_units; }
     const DecoderCounters& counters() const { return m_counters; }
+    // Whether a line of numbers has come (the channels may wait for a second).
+    bool heardNumbers() const { return m_candidate || m_gathering || !m_labels.empty(); }
 
 private:
     void onLine(double hostTime_s, std::vector<TextSample>& out);

@@ -1,6 +1,7 @@
 // TextStream: line samples into uniformly spaced blocks.
 #include "devices/protocol/TextStream.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -72,11 +73,14 @@ void TextStream::checkGivenRate()
     m_checkingGivenRate = false;
     const auto measured = m_lineRate.estimate();
     m_lineRate = {};
-    if (std::abs(*m_rate_hz / measured->rate_hz - 1.0) <= kGivenRateTolerance) return;
+    // Off by more than the measurement can tell, and than a tenth of a
+    // percent (0.4 s in a 6-minute recording).
+    const double tolerance_hz = std::max(kGivenRateTolerance * measured->rate_hz, 3.0 * measured->u_hz.value_or(0.0));
+    if (std::abs(*m_rate_hz - measured->rate_hz) <= tolerance_hz) return;
     char text[320];
     std::snprintf(text, sizeof text,
-                  "the lines arrive at %.5g Hz (%s, over %.1f s), not at the %.6g Hz given: every time in this "
-                  "recording is off by %.1f %%",
+                  "the lines arrive at %.6g Hz (%s, over %.1f s), not at the %.6g Hz given: every time in this "
+                  "recording is off by %.2f %%; give --rate as measured, or none to have the lines timed",
                   measured->rate_hz, measured->boardClock ? "by the board's clock" : "by the host's clock",
                   measured->span_s, *m_rate_hz, 100.0 * (measured->rate_hz / *m_rate_hz - 1.0));
     m_rateWarning = text;

@@ -34,13 +34,14 @@ public:
     std::optional<double> sampleRate_hz() const { return m_rate_hz; }
     // How the rate was measured; none when it was given.
     const std::optional<LineRateEstimate>& measuredRate() const { return m_measured; }
-    // A given rate the arrivals contradict (by more than kGivenRateTolerance),
-    // said once.
+    // A given rate the arrivals contradict (by more than kGivenRateTolerance
+    // and three of the measurement's uncertainty), said once.
     std::optional<std::string> takeRateWarning() { return std::exchange(m_rateWarning, std::nullopt); }
     std::vector<core::ChannelDescriptor> channels() const;
     DecoderCounters counters() const;
+    bool heardNumbers() const { return m_decoder.heardNumbers(); }
 
-    static constexpr double kGivenRateTolerance = 0.02;
+    static constexpr double kGivenRateTolerance = 1e-3;
 
 private:
     void publish(std::vector<TextSample>& samples, std::vector<core::SampleBlock>& out, std::vector<double>* arrivals);

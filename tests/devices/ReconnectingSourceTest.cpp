@@ -110,13 +110,19 @@ TEST(ReconnectingSource, ATextBoardTimedAgainWhenItComesBackContinues)
     ASSERT_TRUE(reconnecting->rateUncertainty_hz());
     Acquisition acquisition(std::move(source));
     acquisition.start();
+    const double unplugged_s = steadySeconds();
     board.reset();  // unplugged
     ASSERT_TRUE(tactiscope::testing::eventually([&] { return reconnecting->state() != DeviceState::Streaming; }));
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
     board = std::make_unique<tactiscope::testing::TextBoard>(link, printing);
+    const double away_s = steadySeconds() - unplugged_s;
     ASSERT_TRUE(tactiscope::testing::eventually(
         [&] { return reconnecting->reconnections() == 1 && reconnecting->state() == DeviceState::Streaming; },
         std::chrono::seconds(10)))
         << reconnecting->lastError();
     EXPECT_FALSE(reconnecting->failedForGood());
+    // The gap is the time it was away, not that and the 2.5 s it took to
+    // be timed again (its lines of that time are in the stream).
+    EXPECT_NEAR(static_cast<double>(acquisition.stats().samplesLost), away_s * 200.0, 0.3 * 200.0);
     acquisition.stop();
 }

@@ -73,3 +73,31 @@ TEST(TextDecoder, LinesSplitAcrossChunksKeepTheTimeOfTheirEnd)
     EXPECT_EQ(out[0].values, (std::vector<double>{1.5, 2.5}));
     EXPECT_EQ(out[0].hostTime_s, 1.1);
 }
+
+// A board's log between its samples ("Sensor OK") is no sample lost: the
+// lines after it keep their time. A line with a number in it that does not
+// read (a garbled sample) still is one.
+TEST(TextDecoder, ALineWithNoNumberIsTheBoardsLogNotALostSample)
+{
+    TextDecoder decoder;
+    const auto out = decode(decoder, "1,2\n3,4\nSensor OK\n#debug: reset\n5,6\n7,x\n9,10\n");
+    ASSERT_EQ(out.size(), 5u);
+    EXPECT_EQ(out[2].values, (std::vector<double>{5, 6}));
+    EXPECT_TRUE(out[3].values.empty());
+    EXPECT_EQ(out[4].values, (std::vector<double>{9, 10}));
+    EXPECT_EQ(decoder.counters().linesSkipped, 3u);
+}
+
+// A board that prints numbers is waited for (PortSource) however slowly it
+// prints: one line of numbers is enough to know it does; words are not.
+TEST(TextDecoder, OneLineOfNumbersSaysTheBoardPrintsThem)
+{
+    TextDecoder decoder;
+    decode(decoder, "hello world\n");
+    EXPECT_FALSE(decoder.heardNumbers());
+    decode(decoder, "1.5,2\n");
+    EXPECT_TRUE(decoder.heardNumbers());
+    TextDecoder teleplot;
+    decode(teleplot, ">temp:21.5\n");
+    EXPECT_TRUE(teleplot.heardNumbers());
+}
