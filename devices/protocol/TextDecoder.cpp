@@ -25,24 +25,6 @@ bool storable(const TextLine& line)
     return std::ranges::all_of(line.fields, [](const TextField& f) { return std::abs(f.value) <= kLargest; });
 }
 
-// Whether any field of the line reads as a number (a sample cut or
-// garbled), rather than words.
-bool hasNumber(std::string_view line)
-{
-    std::size_t i = 0;
-    const auto separator = [](char c) { return c == ',' || c == ' ' || c == '\t' || c == '\r'; };
-    while (i < line.size()) {
-        while (i < line.size() && separator(line[i])) ++i;
-        std::size_t end = i;
-        while (end < line.size() && !separator(line[end])) ++end;
-        std::string_view token = line.substr(i, end - i);
-        if (const auto mark = token.find_last_of(":="); mark != std::string_view::npos) token.remove_prefix(mark + 1);
-        if (!token.empty() && parseBoardNumber(token)) return true;
-        i = end;
-    }
-    return false;
-}
-
 }  // namespace
 
 void TextDecoder::push(std::span<const std::uint8_t> bytes, double hostTime_s, std::vector<TextSample>& out)

@@ -103,6 +103,21 @@ std::optional<double> parseBoardNumber(std::string_view token)
     return value;
 }
 
+bool hasNumber(std::string_view text)
+{
+    std::size_t i = 0;
+    while (i < text.size()) {
+        while (i < text.size() && separator(text[i])) ++i;
+        std::size_t end = i;
+        while (end < text.size() && !separator(text[end])) ++end;
+        std::string_view token = text.substr(i, end - i);
+        if (const auto mark = token.find_last_of(":="); mark != std::string_view::npos) token.remove_prefix(mark + 1);
+        if (!token.empty() && parseBoardNumber(token)) return true;
+        i = end;
+    }
+    return false;
+}
+
 ParsedLine parseTextLine(std::string_view text)
 {
     const auto start = std::ranges::find_if_not(text, separator);

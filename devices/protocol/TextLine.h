@@ -50,6 +50,10 @@ struct ParsedLine {
 
 ParsedLine parseTextLine(std::string_view text);
 
+// Whether any field of a line that is no sample reads as a number (a
+// sample cut or garbled) rather than words (the board's log).
+bool hasNumber(std::string_view text);
+
 // A number as boards print it: optional sign (a leading '+' too), digits,
 // decimal point, exponent. NaN and infinities are refused.
 std::optional<double> parseBoardNumber(std::string_view token);
