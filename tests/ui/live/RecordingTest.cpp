@@ -237,7 +237,9 @@ TEST(Recording, QuittingWhileRecordingAsksFirstAndStoppingGoesThroughTheVerdict)
     ui::MainWindow window;
     tactiscope::testing::readyToRecord(window, dir.filePath("s.tactiscope"));
     ASSERT_TRUE(window.startRecording());
-    runEventLoopFor(500);
+    // Longer than the 0.6 s the panel scan's verdict needs: a shorter
+    // recording is "too short to judge" and asks no verdict.
+    runEventLoopFor(1500);
 
     EXPECT_FALSE(window.close());  // refused: it asks
     EXPECT_TRUE(window.isRecording());
