@@ -15,11 +15,17 @@ std::size_t channelFor(ChannelRole role, std::span<const ChannelDescriptor> chan
                        std::span<const std::size_t> taken)
 {
     for (std::size_t c = 0; c < channels.size(); ++c)
-        if (channels[c].role == role) return c;
+        if (channels[c].role == role) return canPlay(channels[c], role) ? c : kNone;
     for (std::size_t c = 0; c < channels.size(); ++c)
-        if (!channels[c].role && kindCanPlay(channels[c].kind, role) && std::ranges::find(taken, c) == taken.end())
-            return c;
+        if (!channels[c].role && canPlay(channels[c], role) && std::ranges::find(taken, c) == taken.end()) return c;
     return kNone;
+}
+
+// "a plain number", "in °C": what a channel's values are, for a refusal.
+std::string valuesOf(const ChannelDescriptor& channel)
+{
+    if (channel.kind != ChannelKind::Other) return "a " + std::string(toString(channel.kind));
+    return channel.unit.empty() ? "a plain number (no unit)" : "in " + channel.unit;
 }
 
 // The channel each role of `mode` goes to (kNone where none can).
@@ -55,15 +61,36 @@ std::optional<std::string> modeRefusal(Mode mode, std::span<const ChannelDescrip
 {
     const auto& definition = definitionOf(mode);
     const auto picked = roleChannels(mode, channels);
-    std::string missing;
+    std::string missing, unfit;
     for (std::size_t r = 0; r < picked.size(); ++r) {
         if (picked[r] != kNone) continue;
+        const ChannelRole role = definition.roles[r];
+        // Given the role, but its values are not what the role reads: the
+        // unit (or the scale) is what is missing, not a channel.
+        const auto given = std::ranges::find(channels, std::optional(role), &ChannelDescriptor::role);
+        if (given != channels.end()) {
+            unfit += (unfit.empty() ? "" : "; ") + given->name + " plays " + std::string(toString(role)) + " but is " +
+                     valuesOf(*given) + ", and " + std::string(toString(role)) + " reads " +
+                     std::string(quantityFor(role));
+            continue;
+        }
         if (!missing.empty()) missing += ", ";
-        missing += toString(definition.roles[r]);
+        missing += toString(role);
     }
-    if (missing.empty()) return std::nullopt;
-    return std::string(definition.name) + " needs " + std::string(definition.needs) + ": no channel plays " + missing +
-           "; this device has " + described(channels) + ".";
+    if (missing.empty() && unfit.empty()) return std::nullopt;
+    std::string text = std::string(definition.name) + " needs " + std::string(definition.needs) + ": ";
+    if (!unfit.empty()) text += unfit + (missing.empty() ? "" : "; ");
+    if (!missing.empty()) text += "no channel plays " + missing;
+    return text + "; this device has " + described(channels) + ".";
+}
+
+std::vector<std::string> channelsWithoutFittingUnit(Mode mode, std::span<const ChannelDescriptor> channels)
+{
+    std::vector<std::string> names;
+    for (const ChannelRole role : definitionOf(mode).roles)
+        for (const auto& channel : channels)
+            if (channel.role == role && !canPlay(channel, role)) names.push_back(channel.name);
+    return names;
 }
 
 std::string roleExample(Mode mode, std::span<const ChannelDescriptor> channels)

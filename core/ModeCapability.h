@@ -29,6 +29,10 @@ std::optional<std::vector<std::size_t>> modeChannels(Mode mode, std::span<const 
 // roles missing and the channels the device has. Each front end adds how
 // roles are given there (the command line's --roles, the device panel).
 std::optional<std::string> modeRefusal(Mode mode, std::span<const ChannelDescriptor> channels);
+// The channels given a role of `mode` whose values it cannot read (no unit,
+// or another quantity's): the refusal's first part. Each front end adds
+// how units are given there.
+std::vector<std::string> channelsWithoutFittingUnit(Mode mode, std::span<const ChannelDescriptor> channels);
 // The roles `mode` reads given to the device's channels in order, as the
 // front ends show how to give them: "a=cantilever-a,b=cantilever-b"
 // ("NAME=…" where the device has fewer channels).

@@ -9,6 +9,16 @@
 #include <utility>
 
 namespace tactiscope::devices {
+namespace {
+
+std::string channelNames(const std::vector<core::ChannelDescriptor>& channels)
+{
+    std::string names;
+    for (const auto& channel : channels) names += (names.empty() ? "" : ", ") + channel.name;
+    return names;
+}
+
+}  // namespace
 
 PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const PortSourceOptions& options)
     : m_transport(std::move(transport)),
@@ -16,7 +26,7 @@ PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const Po
 {
     discardWaiting();
     if (options.protocol == WireProtocol::Text) {
-        m_text.emplace(options.textRate_hz);
+        m_text.emplace(options.textRate_hz, options.textUnits);
         m_drift = DriftWatch(DriftWatch::Subject::TextLines);
     } else {
         if (options.requestRate_hz)
@@ -50,6 +60,10 @@ PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const Po
     if (!m_text && m_binary.rateProblem())
         throw transport::TransportError(m_transport->description() + ": " + *m_binary.rateProblem());
     if (m_text) {
+        if (const auto unknown = m_text->unknownUnitNames(); !unknown.empty())
+            throw transport::TransportError(m_transport->description() + ": a unit is given for '" + unknown.front() +
+                                            "', which the board does not print; its channels are " +
+                                            channelNames(m_text->channels()));
         m_channels = m_text->channels();
         m_rate_hz = *m_text->sampleRate_hz();
     } else {

@@ -16,6 +16,7 @@
 
 #include <chrono>
 #include <deque>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -29,6 +30,10 @@ struct PortSourceOptions {
     std::optional<double> textRate_hz;  // text only: else measured (protocol/LineRate.h)
     std::chrono::milliseconds handshakeTimeout{4000};
     std::optional<double> requestRate_hz;  // binary only: asked of the device with "set rate"; it may refuse
+    // Text only: a unit for channels by name, over their labels' (a board
+    // that prints plain numbers: "a" → "µε"). A name the board does not
+    // print is refused at the handshake.
+    std::map<std::string, std::string> textUnits;
 };
 
 class PortSource final : public BlockSource {

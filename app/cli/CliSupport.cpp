@@ -149,6 +149,27 @@ std::optional<core::RoleAssignment> parseRolesOption(const QCommandLineParser& p
     }
 }
 
+QCommandLineOption unitsOption(const QString& whose)
+{
+    return {QStringLiteral("units"),
+            QStringLiteral("The unit of %1, by channel name: NAME=UNIT,… (e.g. a=µε,b=µε). Strain (strain, µε), "
+                           "force (N, mN, µN), length (m, mm, µm) and capacitance (F, pF) are stored in SI; a "
+                           "channel with no unit is a plain number, which no mode reads as a strain or a force.")
+                .arg(whose),
+            QStringLiteral("LIST")};
+}
+
+std::optional<core::UnitAssignment> parseUnitsOption(const QCommandLineParser& parser, QString& error)
+{
+    if (!parser.isSet(QStringLiteral("units"))) return core::UnitAssignment{};
+    try {
+        return core::parseUnitAssignment(parser.value(QStringLiteral("units")).toStdString());
+    } catch (const std::invalid_argument& e) {
+        error = QStringLiteral("--units: %1").arg(QString::fromStdString(e.what()));
+        return std::nullopt;
+    }
+}
+
 int exitForReadError(const QString& path)
 {
     try {

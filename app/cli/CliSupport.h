@@ -2,6 +2,7 @@
 // lines on stderr, and conversions between Qt and standard strings.
 #pragma once
 
+#include "core/UnitScale.h"
 #include "core/Vocabulary.h"
 #include "core/modes/ChannelRoles.h"
 #include "core/storage/Database.h"
@@ -59,6 +60,10 @@ QString modeUsageError();  // "--mode must be panel-scan, palpation, capacitive 
 // value; a bad list is the usage error's text in `error`.
 QCommandLineOption rolesOption();
 std::optional<core::RoleAssignment> parseRolesOption(const QCommandLineParser& parser, QString& error);
+// --units NAME=UNIT,…: the unit of channels that carry none (a text board's
+// plain numbers, a CSV's bare columns). `whose` says what they are, for the help.
+QCommandLineOption unitsOption(const QString& whose);
+std::optional<core::UnitAssignment> parseUnitsOption(const QCommandLineParser& parser, QString& error);
 
 // Inside a catch block of a command that read the file `path`: prints the
 // error and returns the exit code. A file the importer refuses (io::CsvError,

@@ -51,16 +51,15 @@ std::vector<calibration::CalibrationRecord> loadGaugeFactors(const std::string& 
 // A beam channel must say what it holds: counts, strain or force.
 std::optional<QString> unitlessBeam(const std::vector<ChannelDescriptor>& channels)
 {
-    const auto picked = modeChannels(Mode::Palpation, channels);
-    if (!picked) return toQString(*modeRefusal(Mode::Palpation, channels));
-    for (const std::size_t beam : {(*picked)[0], (*picked)[1]}) {
-        const auto& c = channels[beam];
+    if (modeChannels(Mode::Palpation, channels)) return std::nullopt;
+    // A plain-number column plays no beam: its unit is what is missing.
+    for (const auto& c : channels) {
         if (c.kind == ChannelKind::Other && c.unit.empty())
             return QStringLiteral("the beam column '%1' has no unit: name it in the header ('%1 [count]', "
                                   "'%1 [strain]' or '%1 [N]')")
                 .arg(toQString(c.name));
     }
-    return std::nullopt;
+    return toQString(*modeRefusal(Mode::Palpation, channels));
 }
 
 struct Options {

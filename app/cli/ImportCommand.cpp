@@ -34,6 +34,7 @@ int runImport(const QStringList& arguments)
                                        "else general).")),
          QStringLiteral("MODE")},
         rolesOption(),
+        unitsOption(QStringLiteral("the data columns, over their headers' (\"d [mm]\")")),
         {QStringLiteral("subject"), QStringLiteral("Panel or phantom id."), QStringLiteral("ID")},
         {QStringLiteral("operator"), QStringLiteral("Who recorded it."), QStringLiteral("NAME")},
         {QStringLiteral("notes"), QStringLiteral("Free text, e.g. the program it came from."), QStringLiteral("TEXT")},
@@ -65,6 +66,10 @@ int runImport(const QStringList& arguments)
     const auto roles = parseRolesOption(parser, rolesError);
     if (!roles) return usageError(rolesError, usage);
     options.roles = *roles;
+    QString unitsError;
+    const auto units = parseUnitsOption(parser, unitsError);
+    if (!units) return usageError(unitsError, usage);
+    options.units = *units;
     metadata.subject = parser.value(QStringLiteral("subject")).toStdString();
     metadata.operatorName = parser.value(QStringLiteral("operator")).toStdString();
     metadata.notes = parser.value(QStringLiteral("notes")).toStdString();

@@ -37,9 +37,25 @@ constexpr int kDefaultBaud = 921600;
 // one given, else its model's, unlike every other); with several, each
 // channel's role given as DEVICE/CHANNEL. An exit code when one cannot be.
 std::optional<int> addDevices(devices::session::LivePipeline& pipeline, const std::vector<ProbePortArgument>& ports,
-                              int baud, const devices::PortSourceOptions& options, const core::RoleAssignment& roles)
+                              int baud, const devices::PortSourceOptions& options, const core::RoleAssignment& roles,
+                              const core::UnitAssignment& units)
 {
     const bool several = ports.size() > 1;
+    // Units are the board's own, given before it is opened: with several,
+    // by the name its port is given (NAME=PATH).
+    std::map<std::string, core::UnitAssignment> unitsOf;
+    for (const auto& [key, unit] : units) {
+        const auto slash = key.find('/');
+        const std::string device = several && slash != std::string::npos ? key.substr(0, slash) : std::string();
+        if (several && (slash == std::string::npos || slash == 0 ||
+                        std::ranges::none_of(ports, [&](const ProbePortArgument& p) { return p.name == device; }))) {
+            printError(QStringLiteral("--units: with several devices, name each channel as DEVICE/CHANNEL, DEVICE "
+                                      "being a name given to its port (--port DEVICE=PATH) ('%1')")
+                           .arg(toQString(key)));
+            return kExitUsage;
+        }
+        unitsOf[device][several ? key.substr(slash + 1) : key] = unit;
+    }
     std::map<std::string, core::RoleAssignment> rolesOf;  // by device name; "" for the only device
     for (const auto& [key, role] : roles) {
         if (!several) {
@@ -57,7 +73,9 @@ std::optional<int> addDevices(devices::session::LivePipeline& pipeline, const st
     std::vector<std::unique_ptr<devices::ReconnectingSource>> sources;
     for (const ProbePortArgument& port : ports) {
         try {
-            sources.push_back(openProbePort(port.path, baud, options));
+            devices::PortSourceOptions portOptions = options;
+            portOptions.textUnits = unitsOf[several ? port.name : std::string()];
+            sources.push_back(openProbePort(port.path, baud, portOptions));
         } catch (const std::exception& e) {
             printError(several ? QStringLiteral("%1: %2").arg(toQString(port.path), toQString(e.what()))
                                : toQString(e.what()));
@@ -99,21 +117,29 @@ std::optional<int> setUpOneDevice(devices::session::LiveSession& session, std::o
                                   std::optional<core::sensors::SensorProfile> profile, const WatchOptions& watch)
 {
     if (!mode) mode = session.declaredMode();
-    if (const auto refusal = session.setMode(*mode)) {
-        // Roles missing: how to give them here.
-        const QString how = session.refusalOf(*mode)
-                                ? QStringLiteral(" Give its channels roles with --roles %1, or record without --mode "
-                                                 "(the general mode records any channels).")
-                                      .arg(toQString(core::roleExample(*mode, session.channels())))
-                                : QString();
-        printError(QStringLiteral("cannot record in this mode: %1%2").arg(QString::fromStdString(*refusal), how));
-        return kExitUsage;
-    }
+    // The profile first: its channel scales may be what lets the mode read the beams.
     if (profile) {
         if (const auto refusal = session.setProfile(*mode, std::move(*profile))) {
             printError(QStringLiteral("bad profile: %1").arg(QString::fromStdString(*refusal)));
             return kExitUsage;
         }
+    }
+    if (const auto refusal = session.setMode(*mode)) {
+        // Roles or units missing: how to give them here.
+        const auto unitless = core::channelsWithoutFittingUnit(*mode, session.channels());
+        QString how;
+        if (!unitless.empty())
+            how = QStringLiteral(" Give %1 its unit with --units %1=UNIT, or have the board print it with its unit "
+                                 "(%1[UNIT]:VALUE), "
+                                 "or, for ADC counts, give its scale in the sensor profile's \"channels\"; or record "
+                                 "without --mode (the general mode records plain numbers).")
+                      .arg(toQString(unitless.front()));
+        else if (session.refusalOf(*mode))
+            how = QStringLiteral(" Give its channels roles with --roles %1, or record without --mode "
+                                 "(the general mode records any channels).")
+                      .arg(toQString(core::roleExample(*mode, session.channels())));
+        printError(QStringLiteral("cannot record in this mode: %1%2").arg(QString::fromStdString(*refusal), how));
+        return kExitUsage;
     }
     for (const auto& problem : session.takeProblems()) printError(QString::fromStdString(problem));
     if (const auto refusal = session.setLimits(watch.limits)) {
@@ -197,6 +223,7 @@ int runRecord(const QStringList& arguments)
          QStringLiteral("Sensor profile (JSON) for palpation or capacitive (default: the paper's, built in)."),
          QStringLiteral("FILE")},
         rolesOption(),
+        unitsOption(QStringLiteral("a text board's channels, over its labels' units")),
     });
     parser.addOptions(watchOptions());
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
@@ -241,6 +268,13 @@ int runRecord(const QStringList& arguments)
     QString rolesError;
     const auto roles = parseRolesOption(parser, rolesError);
     if (!roles) return usageError(rolesError, usage);
+    QString unitsError;
+    const auto units = parseUnitsOption(parser, unitsError);
+    if (!units) return usageError(unitsError, usage);
+    if (!units->empty() && options.protocol != devices::WireProtocol::Text)
+        return usageError(QStringLiteral("--units is for a board that prints lines (--protocol text): a TSP/1 "
+                                         "probe declares its channels' units"),
+                          usage);
     QString watchError;
     const auto watch = parseWatchOptions(parser, watchError);
     if (!watch) return usageError(watchError, usage);
@@ -287,7 +321,7 @@ int runRecord(const QStringList& arguments)
     // Each device's first connection is made here, to know it before the
     // recording; its reconnecting source reopens it after an unplug.
     devices::session::LivePipeline pipeline(db);
-    if (const auto exit = addDevices(pipeline, *ports, baud, options, *roles)) return *exit;
+    if (const auto exit = addDevices(pipeline, *ports, baud, options, *roles, *units)) return *exit;
     auto& first = pipeline.device(0);
     const double rate_hz = first.source().nominalSampleRate_hz();
     if (options.requestRate_hz && std::abs(rate_hz - *options.requestRate_hz) > 1e-6 * *options.requestRate_hz)

@@ -2,6 +2,7 @@
 #include "core/compliance/PalpationForces.h"
 
 #include "core/ModeCapability.h"
+#include "core/UnitScale.h"
 #include "core/text/JsonWriter.h"
 
 #include <nlohmann/json.hpp>
@@ -13,14 +14,16 @@
 namespace tactiscope::core::compliance {
 namespace {
 
-bool inCounts(const ChannelDescriptor& channel)
+BeamInput inputOf(const ChannelDescriptor& channel, const sensors::ChannelScales& scales)
 {
-    return channel.unit == "count" || channel.unit == "counts";
+    if (isCounts(channel.unit)) return scales.contains(channel.name) ? BeamInput::ProfileScale : BeamInput::GaugeChain;
+    return channel.kind == ChannelKind::Force ? BeamInput::Force : BeamInput::Strain;
 }
 
 }  // namespace
 
 LivePalpationSettings palpationSettings(const sensors::CompliancePairProfile& probe, double sampleRate_hz,
+                                        std::span<const ChannelDescriptor> channels,
                                         std::span<const calibration::CalibrationRecord> calibrations,
                                         std::vector<std::size_t>* used)
 {
@@ -28,7 +31,14 @@ LivePalpationSettings palpationSettings(const sensors::CompliancePairProfile& pr
     settings.high = probe.high;
     settings.low = probe.low;
     settings.press = pressSettingsAt(sampleRate_hz);
+    settings.scales = probe.channels;
+    if (const auto beams = modeChannels(Mode::Palpation, channels)) {
+        settings.highInput = inputOf(channels[(*beams)[0]], settings.scales);
+        settings.lowInput = inputOf(channels[(*beams)[1]], settings.scales);
+    }
     for (const bool stiff : {true, false}) {
+        // A gauge factor is used only where the gauge chain is.
+        if ((stiff ? settings.highInput : settings.lowInput) != BeamInput::GaugeChain) continue;
         const std::string sensor = calibration::beamSensorName(probe.name, stiff);
         std::optional<std::size_t> newest;
         for (std::size_t i = 0; i < calibrations.size(); ++i) {
@@ -51,10 +61,23 @@ std::string basisText(const sensors::CompliancePairProfile& probe, const LivePal
     const auto beam = [&settings](bool high) {
         const auto& factor = high ? settings.highGaugeFactor : settings.lowGaugeFactor;
         std::ostringstream text;
-        if (factor)
-            text << "gauge factor " << *factor << " (calibrated)";
-        else
-            text << "gauge factor " << settings.bridge.gaugeFactor << " (nominal)";
+        switch (high ? settings.highInput : settings.lowInput) {
+        case BeamInput::GaugeChain:
+            if (factor)
+                text << "gauge factor " << *factor << " (calibrated)";
+            else
+                text << "gauge factor " << settings.bridge.gaugeFactor << " (nominal)";
+            break;
+        case BeamInput::ProfileScale:
+            text << "the profile's scale";
+            break;
+        case BeamInput::Strain:
+            text << "the device's strain";
+            break;
+        case BeamInput::Force:
+            text << "the device's force";
+            break;
+        }
         return text.str();
     };
     return "profile " + probe.name + "; stiff beam " + beam(true) + ", soft beam " + beam(false);
@@ -63,6 +86,7 @@ std::string basisText(const sensors::CompliancePairProfile& probe, const LivePal
 std::optional<std::string> mixedCalibration(const LivePalpationSettings& settings)
 {
     if (settings.highGaugeFactor.has_value() == settings.lowGaugeFactor.has_value()) return std::nullopt;
+    if (settings.highInput != BeamInput::GaugeChain || settings.lowInput != BeamInput::GaugeChain) return std::nullopt;
     const bool stiff = settings.highGaugeFactor.has_value();
     return std::string("only the ") + (stiff ? "stiff" : "soft") +
            " beam has a gauge-factor calibration: kₒ reads through its calibrated and the " +
@@ -106,8 +130,9 @@ void PalpationForces::Input::setZero(double value)
 double PalpationForces::Input::force(const sensors::CantileverBeam& beam, double value) const
 {
     if (chain) return chain->strain(value) / beam.rootStrainPerNewton();
-    if (kind == ChannelKind::Force) return value - zero;
-    return (value - zero) / beam.rootStrainPerNewton();  // a strain channel
+    const double reading = (value - zero) * unitsPerCount;
+    if (kind == ChannelKind::Force) return reading;
+    return reading / beam.rootStrainPerNewton();  // a strain
 }
 
 PalpationForces::PalpationForces(const std::vector<ChannelDescriptor>& channels, const LivePalpationSettings& settings)
@@ -122,9 +147,19 @@ PalpationForces::PalpationForces(const std::vector<ChannelDescriptor>& channels,
         Input in;
         in.channel = c;
         in.kind = channels[c].kind;
+        if (!isCounts(channels[c].unit)) return in;
+        if (const auto scale = settings.scales.find(channels[c].name); scale != settings.scales.end()) {
+            // The profile's scale: its unit is a strain or a force (checked when the profile was read).
+            const auto unit = physicalUnit(scale->second.unit);
+            in.kind = unit->kind;
+            in.unitsPerCount = unit->factor / scale->second.countsPerUnit;
+            in.fullScale = scale->second.fullScale_counts;
+            return in;
+        }
         straingauge::BridgeSettings bridge = settings.bridge;
         bridge.gaugeFactor = gaugeFactor.value_or(bridge.gaugeFactor);
-        if (inCounts(channels[c])) in.chain.emplace(settings.adc, bridge);
+        in.chain.emplace(settings.adc, bridge);
+        in.fullScale = in.chain->fullScaleCounts();
         return in;
     };
     m_high = input(beams[0], settings.highGaugeFactor);
@@ -134,8 +169,7 @@ PalpationForces::PalpationForces(const std::vector<ChannelDescriptor>& channels,
 bool PalpationForces::atLimit(bool highBeam, double raw) const
 {
     const Input& beam = highBeam ? m_high : m_low;
-    if (!beam.chain) return false;
-    return std::abs(raw) >= (1.0 - kNearLimit) * beam.chain->fullScaleCounts();
+    return beam.fullScale && std::abs(raw) >= (1.0 - kNearLimit) * *beam.fullScale;
 }
 
 std::optional<double> PalpationForces::gaugeFactor(bool highBeam) const

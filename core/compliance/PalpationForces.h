@@ -7,11 +7,13 @@
 //
 // Channels: the first Position channel is the displacement; the first two
 // other channels are the high- and the low-stiffness beam, in the device's
-// order. A channel in ADC counts goes through the strain-gauge chain
-// (counts → strain), a strain channel through the beam model (F = ε /
-// (root strain per newton)), a force channel is used as it is. Every one of
-// these is an increasing function of the raw value, so the force of a
-// stretch's raw minimum and maximum are the stretch's force extremes.
+// order. A channel in ADC counts goes through the profile's scale for it
+// (core/sensors/ChannelScale.h) when it gives one, else through the
+// strain-gauge chain (counts → strain); a strain channel through the beam
+// model (F = ε / (root strain per newton)), a force channel is used as it
+// is. Every one of these is an increasing function of the raw value, so the
+// force of a stretch's raw minimum and maximum are the stretch's force
+// extremes.
 #pragma once
 
 #include "core/ChannelDescriptor.h"
@@ -29,26 +31,41 @@
 
 namespace tactiscope::core::compliance {
 
+// How a beam's raw values become a force.
+enum class BeamInput {
+    GaugeChain,    // ADC counts through the bridge and its gauge factor
+    ProfileScale,  // ADC counts through the profile's scale for the channel
+    Strain,        // the device's strain, through the beam model
+    Force,         // the device's force, as it is
+};
+
 struct LivePalpationSettings {
     sensors::CantileverGeometry high;
     sensors::CantileverGeometry low;
     straingauge::AdcSettings adc;  // for channels in counts
     straingauge::BridgeSettings bridge;
     PressSettings press;
-    // Each beam's calibrated gauge factor; bridge.gaugeFactor (nominal) when none.
+    sensors::ChannelScales scales;  // the profile's, for beams in counts
+    BeamInput highInput = BeamInput::GaugeChain, lowInput = BeamInput::GaugeChain;
+    // Each beam's calibrated gauge factor, for a beam read through the
+    // gauge chain only; bridge.gaugeFactor (nominal) when none.
     std::optional<double> highGaugeFactor, lowGaugeFactor;
 };
 
-// A probe's settings at a stream's rate, with each beam's gauge factor from
-// the newest usable "gauge_factor" record among `calibrations` for that
-// beam (calibration::beamSensorName), the nominal one otherwise. The
-// records used are returned in `used` when given.
+// A probe's settings at a stream's rate for its beams on `channels`, with
+// each beam read through the gauge chain getting its gauge factor from the
+// newest usable "gauge_factor" record among `calibrations` for that beam
+// (calibration::beamSensorName), the nominal one otherwise. The records
+// used are returned in `used` when given: a beam read otherwise (its
+// device's strain or force, the profile's scale) uses none.
 LivePalpationSettings palpationSettings(const sensors::CompliancePairProfile& probe, double sampleRate_hz,
+                                        std::span<const ChannelDescriptor> channels,
                                         std::span<const calibration::CalibrationRecord> calibrations,
                                         std::vector<std::size_t>* used = nullptr);
 
-// What forces are computed with, in words: the profile and each beam's
-// gauge factor, calibrated or nominal.
+// What forces are computed with, in words: the profile and how each beam
+// is read (its gauge factor, calibrated or nominal; the profile's scale;
+// the device's strain or force).
 std::string basisText(const sensors::CompliancePairProfile& probe, const LivePalpationSettings& settings);
 
 // kₒ needs only the ratio of the forces, so nominal factors on both beams
@@ -93,9 +110,10 @@ public:
     // The zero's uncertainty in each beam's force; none when not known.
     std::optional<ZeroUncertainty> zeroUncertainty() const;
 
-    // Whether a beam's raw value is at its ADC's limit (within
-    // kNearLimit of full scale): its force is then clipped. Always false
-    // for channels not in counts (no ADC range known).
+    // Whether a beam's raw value is at its ADC's limit (within kNearLimit
+    // of full scale: the probe's converter's, or the one the profile's
+    // scale declares): its force is then clipped. Always false for
+    // channels not in counts, or in counts of no declared range.
     bool atLimit(bool highBeam, double raw) const;
     compliance::BeamLimits limitsOf(double rawHigh, double rawLow) const
     {
@@ -119,7 +137,9 @@ private:
         std::size_t channel = 0;
         ChannelKind kind = ChannelKind::Other;
         std::optional<straingauge::StrainGaugeChain> chain;  // a channel in counts; holds its zero
-        double zero = 0.0;                                   // other channels
+        double unitsPerCount = 1.0;                          // the scale's, in N or strain
+        double zero = 0.0;                                   // channels without a chain
+        std::optional<double> fullScale;                     // where its counts clip
         void setZero(double value);
         double force(const sensors::CantileverBeam& beam, double value) const;
     };

@@ -39,7 +39,7 @@ PalpationChannels::PalpationChannels(storage::SessionSource& store, std::int64_t
     std::vector<ChannelDescriptor> raw;
     for (const auto& channel : store.channels(session)) raw.push_back(channel.descriptor);
     const auto records = calibration::recordsFromJsonArray(summary->metadata.calibrationsJson);
-    const auto settings = compliance::palpationSettings(*probe, summary->sampleRate_hz, records);
+    const auto settings = compliance::palpationSettings(*probe, summary->sampleRate_hz, raw, records);
     m_forces = std::make_unique<compliance::PalpationForces>(raw, settings);
     m_sampleCount = summary->sampleCount;
     m_basis = compliance::basisText(*probe, settings);

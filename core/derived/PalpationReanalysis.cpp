@@ -111,7 +111,7 @@ SessionForces sessionForces(storage::SessionSource& store, std::int64_t session,
     for (const auto& channel : store.channels(session)) raw.push_back(channel.descriptor);
     SessionForces f;
     f.summary = *summary;
-    f.settings = compliance::palpationSettings(probe, summary->sampleRate_hz, calibrations);
+    f.settings = compliance::palpationSettings(probe, summary->sampleRate_hz, raw, calibrations);
     f.forces = std::make_unique<compliance::PalpationForces>(raw, f.settings);
     f.basis = compliance::basisText(probe, f.settings);
     f.zeros = zerosOf(store, session, *summary, *f.forces, f.recordedZeros);

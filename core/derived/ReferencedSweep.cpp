@@ -64,7 +64,7 @@ std::optional<SessionChannel> channelPlaying(storage::SessionSource& store, std:
     for (const auto& channel : channels)
         if (channel.stored.descriptor.role == role) return channel;
     for (const auto& channel : channels)
-        if (!channel.stored.descriptor.role && kindCanPlay(channel.stored.descriptor.kind, role)) return channel;
+        if (!channel.stored.descriptor.role && canPlay(channel.stored.descriptor, role)) return channel;
     return std::nullopt;
 }
 

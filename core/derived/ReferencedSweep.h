@@ -32,7 +32,7 @@ struct SessionChannel {
 };
 
 // The channel given `role` in any device of the session, else the first
-// with no role whose kind can play it (core::kindCanPlay). None when none
+// with no role that can play it (core::canPlay). None when none
 // can.
 std::optional<SessionChannel> channelPlaying(storage::SessionSource& store, std::int64_t session, ChannelRole role);
 // "DEVICE/CHANNEL", or "CHANNEL" in a session of one device; none when

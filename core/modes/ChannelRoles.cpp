@@ -1,40 +1,21 @@
 // ChannelRoles: parsing "NAME=ROLE" lists and applying them to channels.
 #include "core/modes/ChannelRoles.h"
 
+#include "core/text/NamedList.h"
+
 #include <algorithm>
 #include <stdexcept>
 
 namespace tactiscope::core {
-namespace {
-
-std::string_view trimmed(std::string_view text)
-{
-    while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
-    while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
-    return text;
-}
-
-}  // namespace
 
 RoleAssignment parseRoleAssignment(std::string_view text)
 {
     RoleAssignment roles;
-    while (!trimmed(text).empty()) {
-        const auto comma = text.find(',');
-        const std::string_view item = trimmed(text.substr(0, comma));
-        text = comma == std::string_view::npos ? std::string_view() : text.substr(comma + 1);
-        if (item.empty()) continue;
-        const auto equals = item.find('=');
-        if (equals == std::string_view::npos)
-            throw std::invalid_argument("'" + std::string(item) + "' is not NAME=ROLE (e.g. a=cantilever-a)");
-        const std::string name(trimmed(item.substr(0, equals)));
-        const std::string_view roleText = trimmed(item.substr(equals + 1));
-        if (name.empty()) throw std::invalid_argument("'" + std::string(item) + "' names no channel");
+    for (const auto& [name, roleText] : text::parseNamedList(text, "NAME=ROLE (e.g. a=cantilever-a)", "role")) {
         const auto role = channelRoleFromString(roleText);
         if (!role)
-            throw std::invalid_argument("'" + std::string(roleText) + "' is not a channel role; the roles are " +
+            throw std::invalid_argument("'" + roleText + "' is not a channel role; the roles are " +
                                         channelRoleChoices());
-        if (roles.contains(name)) throw std::invalid_argument("channel '" + name + "' is given two roles");
         for (const auto& [other, given] : roles)
             if (given == *role)
                 throw std::invalid_argument("the role " + std::string(roleText) + " is given to both '" + other +

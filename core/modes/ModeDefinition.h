@@ -87,9 +87,14 @@ const ModeDefinition& palpationMode();
 const ModeDefinition& capacitiveMode();
 const ModeDefinition& generalMode();
 
-// Whether a channel that was given no role can play `role` by its kind:
-// cantilevers are strain channels, the palpation beams any channel but a
-// position, the displacement a position, the capacitance a capacitance.
-bool kindCanPlay(ChannelKind kind, ChannelRole role);
+// Whether a channel's values are what `role` reads, whether it was given
+// the role or is matched by its kind: cantilevers read a strain, the
+// palpation beams a strain, a force or ADC counts (through the probe's
+// converter or a profile's scale), the displacement a length, the
+// capacitance a capacitance, the reference force a force. A plain number
+// (no unit) plays none of them: it is recorded as it is.
+bool canPlay(const ChannelDescriptor& channel, ChannelRole role);
+// What `role` reads, with units it takes: "a strain (strain, µε)".
+std::string_view quantityFor(ChannelRole role);
 
 }  // namespace tactiscope::core

@@ -2,6 +2,8 @@
 // its definition here (or registers it) and its file beside this one.
 #include "core/modes/ModeDefinition.h"
 
+#include "core/UnitScale.h"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -48,15 +50,16 @@ void unregisterMode(Mode mode)
     if (found != modes.end()) modes.erase(found);
 }
 
-bool kindCanPlay(ChannelKind kind, ChannelRole role)
+bool canPlay(const ChannelDescriptor& channel, ChannelRole role)
 {
+    const ChannelKind kind = channel.kind;
     switch (role) {
     case ChannelRole::CantileverA:
     case ChannelRole::CantileverB:
         return kind == ChannelKind::Strain;
     case ChannelRole::StiffBeam:
     case ChannelRole::SoftBeam:
-        return kind != ChannelKind::Position;
+        return kind == ChannelKind::Strain || kind == ChannelKind::Force || isCounts(channel.unit);
     case ChannelRole::Displacement:
         return kind == ChannelKind::Position;
     case ChannelRole::Capacitance:
@@ -65,6 +68,25 @@ bool kindCanPlay(ChannelKind kind, ChannelRole role)
         return kind == ChannelKind::Force;
     }
     return false;
+}
+
+std::string_view quantityFor(ChannelRole role)
+{
+    switch (role) {
+    case ChannelRole::CantileverA:
+    case ChannelRole::CantileverB:
+        return "a strain (strain, µε)";
+    case ChannelRole::StiffBeam:
+    case ChannelRole::SoftBeam:
+        return "a strain (strain, µε), a force (N, mN) or ADC counts with their scale";
+    case ChannelRole::Displacement:
+        return "a length (m, mm)";
+    case ChannelRole::Capacitance:
+        return "a capacitance (F, pF)";
+    case ChannelRole::ReferenceForce:
+        return "a force (N, mN)";
+    }
+    return "";
 }
 
 }  // namespace tactiscope::core

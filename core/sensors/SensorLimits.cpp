@@ -2,6 +2,7 @@
 // compliance probe's stiff-beam ADC limits.
 #include "core/sensors/SensorLimits.h"
 
+#include "core/UnitScale.h"
 #include "core/sensors/LargeDeflection.h"
 
 #include <algorithm>
@@ -30,20 +31,26 @@ std::vector<SensorLimit> capacitiveLimits(const CapacitiveBeamProfile& probe)
     return {{force, "the beam's safe force: its small-deflection model errs by 2 % (warning) and 5 % (critical)"}};
 }
 
-std::vector<SensorLimit> complianceLimits(const std::vector<ChannelDescriptor>& channels,
+std::vector<SensorLimit> complianceLimits(const CompliancePairProfile& probe,
+                                          const std::vector<ChannelDescriptor>& channels,
                                           const straingauge::AdcSettings& adc)
 {
     const auto stiff =
         std::ranges::find_if(channels, [](const ChannelDescriptor& c) { return c.role == ChannelRole::StiffBeam; });
-    if (stiff == channels.end() || (stiff->unit != "count" && stiff->unit != "counts")) return {};
-    const double fullScale = straingauge::StrainGaugeChain(adc, {}).fullScaleCounts();
+    if (stiff == channels.end() || !isCounts(stiff->unit)) return {};
+    // The profile's declared range for a board's counts, else the probe's converter's.
+    const auto scale = probe.channels.find(stiff->name);
+    if (scale != probe.channels.end() && !scale->second.fullScale_counts) return {};
+    const double fullScale = scale != probe.channels.end() ? *scale->second.fullScale_counts
+                                                           : straingauge::StrainGaugeChain(adc, {}).fullScaleCounts();
     const std::string basis = "the stiff beam's ADC: 90 % of full scale (warning), clipped at 99 % (critical)";
-    // A bipolar ADC clips at either end: one window the counts must stay in.
+    // A bipolar ADC clips at either end: one window the counts must stay
+    // in; so does a declared range, judged on |counts| as a probe's is.
     const double warning = std::floor(kAdcWarningFraction * fullScale);
     const double critical = std::floor(kAdcCriticalFraction * fullScale);
     trigger::LimitSpec counts;
     counts.quantity = stiff->name;
-    if (adc.bipolar) {
+    if (adc.bipolar || scale != probe.channels.end()) {
         counts.side = trigger::LimitSide::Outside;
         counts.warning = trigger::LimitLevel(-warning, warning);
         counts.critical = trigger::LimitLevel(-critical, critical);
@@ -60,7 +67,7 @@ std::vector<SensorLimit> modelLimits(const SensorProfile& profile, const std::ve
                                      const straingauge::AdcSettings& adc)
 {
     if (const auto* capacitive = std::get_if<CapacitiveBeamProfile>(&profile)) return capacitiveLimits(*capacitive);
-    if (std::holds_alternative<CompliancePairProfile>(profile)) return complianceLimits(channels, adc);
+    if (const auto* pair = std::get_if<CompliancePairProfile>(&profile)) return complianceLimits(*pair, channels, adc);
     return {};
 }
 

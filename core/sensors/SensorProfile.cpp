@@ -2,6 +2,7 @@
 #include "core/sensors/SensorProfile.h"
 
 #include "core/JsonText.h"
+#include "core/UnitScale.h"
 #include "core/sensors/CompliancePair.h"
 
 #include <nlohmann/json.hpp>
@@ -39,7 +40,8 @@ public:
 
     [[noreturn]] void fail(const std::string& key, const std::string& problem) const
     {
-        const std::string path = m_prefix + key;
+        std::string path = m_prefix + key;
+        if (key.empty() && !path.empty() && path.back() == '.') path.pop_back();  // the object itself
         throw ProfileError(m_source + ": " + (path.empty() ? "" : path + ": ") + problem);
     }
 
@@ -80,6 +82,13 @@ public:
     }
 
     bool has(const std::string& key) const { return m_object.contains(key); }
+
+    std::vector<std::string> keys() const
+    {
+        std::vector<std::string> names;
+        for (const auto& [key, value] : m_object.items()) names.push_back(key);
+        return names;
+    }
 
     void allowOptional(const std::string& key) { m_used.insert(key); }
 
@@ -180,6 +189,40 @@ Json limitsJson(const std::vector<trigger::LimitSpec>& limits)
     return json;
 }
 
+// "channels": {"NAME": {"unit", "counts_per_unit", "full_scale"}}:
+// beams a device sends in counts, read as a strain or a force.
+ChannelScales readScales(ObjectReader& reader)
+{
+    if (!reader.has("channels")) return {};
+    ObjectReader channels = reader.object("channels");
+    ChannelScales scales;
+    for (const std::string& name : channels.keys()) {
+        ObjectReader entry = channels.object(name);
+        ChannelScale scale;
+        scale.unit = entry.string("unit");
+        const auto unit = physicalUnit(scale.unit);
+        if (!unit || (unit->kind != ChannelKind::Strain && unit->kind != ChannelKind::Force))
+            entry.fail("unit",
+                       "'" + shortQuote(scale.unit) + "' is not a strain or a force unit (strain, µε, N, mN, µN)");
+        scale.countsPerUnit = entry.positive("counts_per_unit");
+        if (entry.has("full_scale")) scale.fullScale_counts = entry.positive("full_scale");
+        entry.rejectUnknownKeys();
+        scales.emplace(name, std::move(scale));
+    }
+    return scales;
+}
+
+Json scalesJson(const ChannelScales& scales)
+{
+    Json json = Json::object();
+    for (const auto& [channel, scale] : scales) {
+        Json entry{{"unit", scale.unit}, {"counts_per_unit", scale.countsPerUnit}};
+        if (scale.fullScale_counts) entry["full_scale"] = *scale.fullScale_counts;
+        json[channel] = std::move(entry);
+    }
+    return json;
+}
+
 Json rolesJson(const RoleAssignment& roles)
 {
     Json json = Json::object();
@@ -225,8 +268,12 @@ SensorProfile parseSensorProfile(std::string_view text, const std::string& sourc
         return profile;
     }
     if (kind == "compliance_pair") {
-        CompliancePairProfile profile{name, readNestedBeam(reader.object("high")), readNestedBeam(reader.object("low")),
-                                      readRoles(reader), readLimits(reader)};
+        CompliancePairProfile profile{name,
+                                      readNestedBeam(reader.object("high")),
+                                      readNestedBeam(reader.object("low")),
+                                      readRoles(reader),
+                                      readLimits(reader),
+                                      readScales(reader)};
         reader.rejectUnknownKeys();
         const double kh = CantileverBeam(profile.high).stiffness_n_per_m();
         const double kl = CantileverBeam(profile.low).stiffness_n_per_m();
@@ -270,6 +317,7 @@ std::string toJson(const SensorProfile& profile)
                     {"low", geometryJson(pair->low)}};
         if (!pair->roles.empty()) json["roles"] = rolesJson(pair->roles);
         if (pair->limits) json["limits"] = limitsJson(*pair->limits);
+        if (!pair->channels.empty()) json["channels"] = scalesJson(pair->channels);
     } else if (const auto* capacitive = std::get_if<CapacitiveBeamProfile>(&profile)) {
         const auto& g = capacitive->geometry;
         Json layers = Json::array();
@@ -297,6 +345,12 @@ std::string toJson(const SensorProfile& profile)
 const std::string& profileName(const SensorProfile& profile)
 {
     return std::visit([](const auto& p) -> const std::string& { return p.name; }, profile);
+}
+
+ChannelScales profileScales(const SensorProfile& profile)
+{
+    if (const auto* pair = std::get_if<CompliancePairProfile>(&profile)) return pair->channels;
+    return {};
 }
 
 RoleAssignment profileRoles(const SensorProfile& profile)

@@ -12,7 +12,10 @@
 //   (sheet layers from the beam surface outward)
 // A compliance pair and a capacitive beam may say which channels of their
 // device play which role: optional "roles": {"ch1": "stiff-beam", …}
-// (core/modes/ChannelRoles.h).
+// (core/modes/ChannelRoles.h). A compliance pair may give the scale of
+// beams read in raw counts: optional "channels": {"ch1": {"unit": "mN",
+// "counts_per_unit": 20.48, "full_scale": 32767}, …}
+// (core/sensors/ChannelScale.h).
 // Loading validates everything and reports the first problem with the key
 // that has it ("high.thickness_m: must be a positive number"); unknown keys
 // are errors too, so a misspelt key is not silently ignored.
@@ -21,6 +24,7 @@
 #include "core/modes/ChannelRoles.h"
 #include "core/sensors/CantileverBeam.h"
 #include "core/sensors/CapacitiveBeam.h"
+#include "core/sensors/ChannelScale.h"
 #include "core/trigger/LimitWatch.h"
 
 #include <cstddef>
@@ -50,6 +54,7 @@ struct CompliancePairProfile {
     CantileverGeometry low;
     RoleAssignment roles{};  // by channel name; empty: the device's own
     ProfileLimits limits{};
+    ChannelScales channels{};  // beams in counts the device does not scale itself
 };
 
 struct CapacitiveBeamProfile {
@@ -88,5 +93,7 @@ std::string toJson(const SensorProfile& profile);
 const std::string& profileName(const SensorProfile& profile);
 // The channel roles the profile gives (none for a single cantilever).
 RoleAssignment profileRoles(const SensorProfile& profile);
+// The channel scales the profile gives (a compliance pair's; none otherwise).
+ChannelScales profileScales(const SensorProfile& profile);
 
 }  // namespace tactiscope::core::sensors

@@ -3,7 +3,6 @@
 #include "core/storage/CsvImport.h"
 
 #include "core/ModeCapability.h"
-
 #include "core/SampleBlock.h"
 #include "core/io/CsvReader.h"
 #include "core/storage/Database.h"
@@ -33,20 +32,6 @@ std::string lower(std::string text)
 {
     for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return text;
-}
-
-ChannelKind kindFromUnit(const std::string& unit)
-{
-    for (const char* force : {"N", "mN", "uN", "µN"}) {
-        if (unit == force) return ChannelKind::Force;
-    }
-    for (const char* position : {"m", "mm", "um", "µm"}) {
-        if (unit == position) return ChannelKind::Position;
-    }
-    for (const char* capacitance : {"F", "pF", "fF", "nF"}) {
-        if (unit == capacitance) return ChannelKind::Capacitance;
-    }
-    return ChannelKind::Other;
 }
 
 // Seconds per unit of a time column's header unit.
@@ -350,13 +335,15 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
     if (latin1)
         result.notes.push_back("the header is not UTF-8: its names and units were read as Latin-1 (" +
                                text::latin1ToUtf8(header[dataColumns.front()]) + ", …)");
+    // Each column's unit is its header's ("d [mm]"), or the one given; a
+    // unit of the table is stored in SI (core/UnitScale.h). A column with
+    // none is a plain number.
+    std::vector<double> toStored;
     for (const std::size_t c : dataColumns) {
         auto [name, unit] = io::splitColumnHeader(latin1 ? text::latin1ToUtf8(header[c]) : header[c]);
-        // "[strain]" (as exported) and the unitless columns of a panel scan
-        // are the cantilevers' strains, which are dimensionless.
-        const bool strain = unit == "strain" || (unit.empty() && metadata.mode == Mode::PanelScan);
-        if (unit == "strain") unit.clear();
-        ChannelDescriptor channel{name, unit, strain ? ChannelKind::Strain : kindFromUnit(unit)};
+        if (const auto given = options.units.find(name); given != options.units.end()) unit = given->second;
+        ChannelDescriptor channel{name, "", ChannelKind::Other};
+        toStored.push_back(giveUnit(channel, unit));
         if (side) {
             for (const auto& stored : (*side)["channels"]) {
                 // Exports name each channel's column; older ones had the name alone as the column.
@@ -366,6 +353,7 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
                 channel = {textOf(stored, "name"), textOf(stored, "unit"),
                            channelKindFromString(textOf(stored, "kind")).value_or(ChannelKind::Other),
                            channelRoleFromString(textOf(stored, "role"))};
+                toStored.back() = 1.0;  // Tactiscope's own export: in the units it stored
             }
         }
         result.channels.push_back(channel);
@@ -375,11 +363,24 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
     } catch (const std::invalid_argument& e) {
         throw CsvError("'" + path + "': " + e.what());
     }
-    if (!mode && modeRefusal(Mode::PanelScan, result.channels)) {
-        // Not a scan: a general recording, whose unitless columns are no strains.
-        metadata.mode = Mode::General;
-        for (auto& channel : result.channels)
-            if (channel.kind == ChannelKind::Strain && channel.unit.empty() && !side) channel.kind = ChannelKind::Other;
+    for (const auto& [name, unit] : options.units)
+        if (std::ranges::find(result.channels, name, &ChannelDescriptor::name) == result.channels.end())
+            throw CsvError("'" + path + "': --units names '" + name + "', which is not one of its data columns");
+    if (!mode) {
+        // A scan when its columns are strains, else a general recording.
+        metadata.mode = modeRefusal(Mode::PanelScan, result.channels) ? Mode::General : Mode::PanelScan;
+    } else if (*mode == Mode::PanelScan && !side) {
+        // Asked for a scan of bare columns: they are taken as the strains
+        // the scan reads, and the note says so.
+        std::string assumed;
+        for (auto& channel : result.channels) {
+            if (channel.kind != ChannelKind::Other || !channel.unit.empty()) continue;
+            channel.kind = ChannelKind::Strain;
+            assumed += (assumed.empty() ? "" : ", ") + channel.name;
+        }
+        if (!assumed.empty())
+            result.notes.push_back(assumed + " carry no unit: read as strain, which a panel scan reads (give "
+                                             "--units to say otherwise)");
     }
 
     if (options.rate_hz) {
@@ -435,7 +436,7 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
         if (filled == 0)
             block = SampleBlock(result.channels.size(), kBlockRows, static_cast<double>(index) * dt_s, dt_s, index);
         for (std::size_t c = 0; c < dataColumns.size(); ++c)
-            block.channel(c)[filled] = cellValue(reader, fields[dataColumns[c]], dataColumns[c]);
+            block.channel(c)[filled] = cellValue(reader, fields[dataColumns[c]], dataColumns[c]) * toStored[c];
         ++filled;
         result.lostSamples += index - end;
         end = index + 1;

@@ -21,6 +21,7 @@
 // session imported from a Tactiscope export is the same file, to the bit.
 #pragma once
 
+#include "core/UnitScale.h"
 #include "core/io/CsvColumns.h"
 #include "core/modes/ChannelRoles.h"
 #include "core/storage/SessionStore.h"
@@ -36,11 +37,13 @@ struct CsvImportOptions {
     std::vector<std::string> columns;  // data columns, in order; empty: every column but the time column
     SessionMetadata metadata;          // its non-empty text fields win over the side file's
     // None: the side file's, else panel scan when the columns can feed it
-    // (unitless columns are strains), else general. A mode given is kept
+    // (two strain columns), else general. Panel scan given for columns with
+    // no unit takes them as strains (and says so). A mode given is kept
     // even where the columns cannot feed it: the samples are stored, and the
     // review says why the mode's quantities cannot be derived.
     std::optional<Mode> mode;
     RoleAssignment roles;  // by column name (after the unit is split off), over the side file's
+    UnitAssignment units;  // by column name, over the header's ("left" → "µε")
 };
 
 struct CsvImportResult {

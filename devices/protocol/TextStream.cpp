@@ -1,6 +1,8 @@
 // TextStream: line samples into uniformly spaced blocks.
 #include "devices/protocol/TextStream.h"
 
+#include "core/UnitScale.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -8,8 +10,9 @@
 
 namespace tactiscope::devices::protocol {
 
-TextStream::TextStream(std::optional<double> sampleRate_hz)
-    : m_rate_hz(sampleRate_hz),
+TextStream::TextStream(std::optional<double> sampleRate_hz, std::map<std::string, std::string> units)
+    : m_givenUnits(std::move(units)),
+      m_rate_hz(sampleRate_hz),
       m_checkingGivenRate(sampleRate_hz.has_value())
 {
     if (sampleRate_hz && !(*sampleRate_hz > 0.0)) throw std::invalid_argument("text stream rate must be positive");
@@ -18,14 +21,18 @@ TextStream::TextStream(std::optional<double> sampleRate_hz)
 // A label may say the channel's role (docs/protocol.md, "Channel roles"):
 // "a@cantilever-a" is channel a as cantilever A, and a label that is a
 // role's name ("stiff-beam") plays that role. Anything else is only a name.
-// Its unit is the one the board gave, as it gave it ("mN", "°C").
 std::vector<core::ChannelDescriptor> TextStream::channels() const
+{
+    return described(nullptr);
+}
+
+std::vector<core::ChannelDescriptor> TextStream::described(std::vector<double>* toStored) const
 {
     std::vector<core::ChannelDescriptor> result;
     const auto& names = m_decoder.channelNames();
     for (std::size_t c = 0; c < names.size(); ++c) {
         const std::string& label = names[c];
-        core::ChannelDescriptor channel{label, m_decoder.channelUnits()[c], core::ChannelKind::Other};
+        core::ChannelDescriptor channel{label, "", core::ChannelKind::Other};
         const auto at = label.rfind('@');
         if (const auto role = core::channelRoleFromString(label)) {
             channel.role = role;
@@ -35,9 +42,22 @@ std::vector<core::ChannelDescriptor> TextStream::channels() const
                 channel.role = named;
             }
         }
+        const auto given = m_givenUnits.find(channel.name);
+        const double factor =
+            core::giveUnit(channel, given != m_givenUnits.end() ? given->second : m_decoder.channelUnits()[c]);
+        if (toStored) toStored->push_back(factor);
         result.push_back(std::move(channel));
     }
     return result;
+}
+
+std::vector<std::string> TextStream::unknownUnitNames() const
+{
+    const auto known = channels();
+    std::vector<std::string> unknown;
+    for (const auto& [name, unit] : m_givenUnits)
+        if (std::ranges::find(known, name, &core::ChannelDescriptor::name) == known.end()) unknown.push_back(name);
+    return unknown;
 }
 
 void TextStream::push(std::span<const std::uint8_t> bytes, double hostTime_s, std::vector<core::SampleBlock>& out,
@@ -124,6 +144,7 @@ void TextStream::publish(std::vector<TextSample>& samples, std::vector<core::Sam
                          std::vector<double>* arrivals)
 {
     const double dt = 1.0 / *m_rate_hz;
+    if (m_toStored.empty()) described(&m_toStored);
     std::size_t s = 0;
     while (s < samples.size()) {
         if (samples[s].values.empty()) {
@@ -143,7 +164,7 @@ void TextStream::publish(std::vector<TextSample>& samples, std::vector<core::Sam
         const std::size_t channels = samples[s].values.size();
         core::SampleBlock block(channels, end - s, static_cast<double>(first) * dt, dt, first, m_blockSequence++);
         for (std::size_t i = s; i < end; ++i)
-            for (std::size_t c = 0; c < channels; ++c) block.channel(c)[i - s] = samples[i].values[c];
+            for (std::size_t c = 0; c < channels; ++c) block.channel(c)[i - s] = samples[i].values[c] * m_toStored[c];
         out.push_back(std::move(block));
         if (arrivals) arrivals->push_back(samples[end - 1].hostTime_s);
         s = end;

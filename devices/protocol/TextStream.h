@@ -13,6 +13,7 @@
 #include "devices/protocol/LineRate.h"
 #include "devices/protocol/TextDecoder.h"
 
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -24,7 +25,9 @@ namespace tactiscope::devices::protocol {
 class TextStream {
 public:
     // A given rate must be positive. Throws std::invalid_argument otherwise.
-    explicit TextStream(std::optional<double> sampleRate_hz = std::nullopt);
+    // `units`: a unit for channels by name, over the one its label gives.
+    explicit TextStream(std::optional<double> sampleRate_hz = std::nullopt,
+                        std::map<std::string, std::string> units = {});
 
     // hostTime_s: when the bytes arrived (seconds on a steady clock).
     // `arrivals`, when given, receives the arrival of each block put out.
@@ -37,13 +40,20 @@ public:
     // A given rate the arrivals contradict (by more than kGivenRateTolerance
     // and three of the measurement's uncertainty), said once.
     std::optional<std::string> takeRateWarning() { return std::exchange(m_rateWarning, std::nullopt); }
+    // Each channel's unit is its label's, or the one given; a unit of the
+    // table (core/UnitScale.h) gives its kind, and its values are stored
+    // in SI ("force[mN]:1.5" is 0.0015 N), any other is kept as it is.
     std::vector<core::ChannelDescriptor> channels() const;
+    // The names a unit was given for that the board does not print.
+    std::vector<std::string> unknownUnitNames() const;
     DecoderCounters counters() const;
     bool heardNumbers() const { return m_decoder.heardNumbers(); }
 
     static constexpr double kGivenRateTolerance = 1e-3;
 
 private:
+    // The channels, and each one's factor to its stored unit when asked.
+    std::vector<core::ChannelDescriptor> described(std::vector<double>* toStored) const;
     void publish(std::vector<TextSample>& samples, std::vector<core::SampleBlock>& out, std::vector<double>* arrivals);
     std::uint64_t indexOf(const TextSample& sample) const;
     std::optional<double> boardSeconds(const TextSample& sample) const;  // its board time, when that is the clock
@@ -51,6 +61,8 @@ private:
     void checkGivenRate();
 
     TextDecoder m_decoder;
+    std::map<std::string, std::string> m_givenUnits;
+    std::vector<double> m_toStored;  // each channel's factor to its stored unit, once the channels are known
     std::optional<double> m_rate_hz;
     std::optional<LineRateEstimate> m_measured;
     LineRate m_lineRate;               // until it settles

@@ -40,7 +40,7 @@ LiveSession::LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions
     : m_options(std::move(options))
 {
     if (!source) throw std::invalid_argument("a live session needs a source");
-    m_channels = core::applyRoles(source->channels(), effectiveRoles(source->channels()));
+    m_channels = effectiveChannels(source->channels());
     const double rate_hz = source->nominalSampleRate_hz();
     m_acquisition = std::make_unique<Acquisition>(std::move(source));
     // Two seconds of headroom: the display reads 40 times a second, so only
@@ -93,6 +93,20 @@ core::RoleAssignment LiveSession::effectiveRoles(const std::vector<core::Channel
     return roles;
 }
 
+// The device's channels with the roles given, and the beams a profile
+// scales marked as the counts they are (a board printing plain numbers).
+std::vector<core::ChannelDescriptor>
+LiveSession::effectiveChannels(const std::vector<core::ChannelDescriptor>& device) const
+{
+    auto channels = core::applyRoles(device, effectiveRoles(device));
+    for (const auto& [mode, profile] : m_options.profiles)
+        for (const auto& [name, scale] : core::sensors::profileScales(profile))
+            for (auto& channel : channels)
+                if (channel.name == name && channel.unit.empty() && channel.kind == core::ChannelKind::Other)
+                    channel.unit = "counts";
+    return channels;
+}
+
 std::optional<std::string> LiveSession::setRoles(core::RoleAssignment roles)
 {
     if (isRecording()) return "a recording keeps its channels' roles; stop it first";
@@ -110,7 +124,7 @@ std::optional<std::string> LiveSession::setRoles(core::RoleAssignment roles)
 std::optional<std::string> LiveSession::rebuildChannels()
 {
     try {
-        m_channels = core::applyRoles(source().channels(), effectiveRoles(source().channels()));
+        m_channels = effectiveChannels(source().channels());
     } catch (const std::invalid_argument& e) {
         return e.what();
     }

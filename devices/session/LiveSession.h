@@ -274,6 +274,7 @@ private:
     void takeLimitAlarms();
     void storeAlarm(const LimitAlarm& raised, double end_s);
     void storeAlarmsBeforeTrigger();
+    std::vector<core::ChannelDescriptor> effectiveChannels(const std::vector<core::ChannelDescriptor>& device) const;
     core::RoleAssignment effectiveRoles(const std::vector<core::ChannelDescriptor>& device) const;
     std::optional<std::string> rebuildChannels();
     void buildAll();

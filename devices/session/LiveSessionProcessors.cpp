@@ -37,8 +37,10 @@ std::optional<std::string> LiveSession::setProfile(core::Mode mode, core::sensor
     if (isRecording() && mode == m_mode) return "a recording keeps its sensor from start to end; stop it first";
     const auto* current = this->profile(mode);
     if (core::sensors::profileRoles(profile) !=
-        (current ? core::sensors::profileRoles(*current) : core::RoleAssignment{})) {
-        // Other roles: the channels and every processor are built again.
+            (current ? core::sensors::profileRoles(*current) : core::RoleAssignment{}) ||
+        core::sensors::profileScales(profile) !=
+            (current ? core::sensors::profileScales(*current) : core::sensors::ChannelScales{})) {
+        // Other roles or scales: the channels and every processor are built again.
         if (isRecording()) return "a recording keeps its channels' roles; stop it first";
         auto previous = std::exchange(m_options.profiles[mode], std::move(profile));
         if (auto problem = rebuildChannels()) {

@@ -78,12 +78,13 @@ TEST(GeneralModeCli, ATextDeviceRecordsInGeneralModeAndEveryReaderWorksOnIt)
     EXPECT_TRUE(text.contains(QStringLiteral("board-1"))) << text.toStdString();
 }
 
-TEST(GeneralModeCli, GivenRolesTheSameTextDeviceRecordsAPanelScan)
+TEST(GeneralModeCli, GivenRolesAndItsUnitsTheSameTextDeviceRecordsAPanelScan)
 {
     QTemporaryDir dir;
     const QString db = dir.filePath("line3.tactiscope");
-    const auto result =
-        recordText(dir.path(), db, {"--roles", "a=cantilever-a,b=cantilever-b", "--mode", "panel-scan"});
+    const auto result = recordText(
+        dir.path(), db,
+        {"--roles", "a=cantilever-a,b=cantilever-b", "--units", "a=strain,b=strain", "--mode", "panel-scan"});
     ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
     const auto show = runCli({"sessions", "--db", db, "show", "last", "--json"});
     ASSERT_EQ(show.exitCode, 0) << show.err.toStdString();
@@ -97,7 +98,7 @@ TEST(GeneralModeCli, GivenRolesTheSameTextDeviceRecordsAPanelScan)
     for (const auto& event : events) EXPECT_EQ(event.toObject()["kind"].toString(), "defect");
     // The roles are part of the record.
     const auto text = runCli({"sessions", "--db", db, "show", "last"});
-    EXPECT_TRUE(text.out.contains(QStringLiteral("a [other] as cantilever-a, b [other] as cantilever-b")))
+    EXPECT_TRUE(text.out.contains(QStringLiteral("a [strain] as cantilever-a, b [strain] as cantilever-b")))
         << text.out.toStdString();
 }
 

@@ -67,7 +67,9 @@ TEST(ImportCli, AForeignCsvWithMillisecondsAndMissingRowsBecomesASessionWithGaps
     const auto channels = store.channels(1);
     ASSERT_EQ(channels.size(), 2u);
     EXPECT_EQ(channels[0].descriptor, (core::ChannelDescriptor{"Force", "N", core::ChannelKind::Force}));
-    EXPECT_EQ(channels[1].descriptor, (core::ChannelDescriptor{"Gap", "mm", core::ChannelKind::Position}));
+    // Stored in SI: mm as m.
+    EXPECT_EQ(channels[1].descriptor, (core::ChannelDescriptor{"Gap", "m", core::ChannelKind::Position}));
+    EXPECT_EQ(store.readChannel(1, 1, 1, 1)[0], static_cast<double>(static_cast<float>(2.5e-3)));
     const auto gaps = store.gaps(1);
     ASSERT_EQ(gaps.size(), 1u);
     EXPECT_EQ(gaps[0].firstIndex, 3u);
@@ -79,6 +81,38 @@ TEST(ImportCli, AForeignCsvWithMillisecondsAndMissingRowsBecomesASessionWithGaps
     EXPECT_EQ(force[5], 1.5);
     EXPECT_EQ(force[6], 2.0);
     EXPECT_TRUE(std::isnan(store.readChannel(1, 1, 5, 1)[0]));  // the blank cell
+}
+
+// Issue 53: a column with no unit is a plain number, unless told.
+TEST(ImportCli, BareColumnsStayPlainNumbersUnlessAModeOrTheirUnitsSayOtherwise)
+{
+    QTemporaryDir dir;
+    const QString csv = dir.filePath("bench.csv");
+    writeText(csv, "t,left,right\n0,1,-1\n0.01,2,-2\n0.02,3,-3\n0.03,4,-4\n");
+    const QString db = dir.filePath("s.tactiscope");
+    const auto plain = runCli({"import", csv, "--db", db});
+    ASSERT_EQ(plain.exitCode, 0) << plain.err.toStdString();
+    const auto scan = runCli({"import", csv, "--db", db, "--mode", "panel-scan"});
+    ASSERT_EQ(scan.exitCode, 0) << scan.err.toStdString();
+    EXPECT_TRUE(scan.out.contains("note: left, right carry no unit: read as strain, which a panel scan reads"))
+        << scan.out.toStdString();
+    const auto given = runCli({"import", csv, "--db", db, "--units", "left=µε,right=µε"});
+    ASSERT_EQ(given.exitCode, 0) << given.err.toStdString();
+    const auto unknown = runCli({"import", csv, "--db", db, "--units", "middle=N"});
+    EXPECT_EQ(unknown.exitCode, 2);
+    EXPECT_TRUE(unknown.err.contains("--units names 'middle', which is not one of its data columns"))
+        << unknown.err.toStdString();
+
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    EXPECT_EQ(store.session(1)->metadata.mode, core::Mode::General);
+    EXPECT_EQ(store.channels(1)[0].descriptor, (core::ChannelDescriptor{"left", "", core::ChannelKind::Other}));
+    EXPECT_EQ(store.readChannel(1, 0, 1, 1)[0], 2.0);
+    EXPECT_EQ(store.session(2)->metadata.mode, core::Mode::PanelScan);
+    EXPECT_EQ(store.channels(2)[0].descriptor.kind, core::ChannelKind::Strain);
+    EXPECT_EQ(store.readChannel(2, 0, 1, 1)[0], 2.0);  // as written: the mode's assumption, said
+    EXPECT_EQ(store.session(3)->metadata.mode, core::Mode::PanelScan);
+    EXPECT_EQ(store.channels(3)[1].descriptor, (core::ChannelDescriptor{"right", "", core::ChannelKind::Strain}));
+    EXPECT_EQ(store.readChannel(3, 1, 1, 1)[0], static_cast<double>(static_cast<float>(-2e-6)));
 }
 
 TEST(ImportCli, ExportImportExportIsTheSameFilesAndTheSameBits)
@@ -327,7 +361,7 @@ TEST(ImportCli, WhatItStoresIsValidTextEverywhere)
     {
         QFile file(latin1);
         ASSERT_TRUE(file.open(QIODevice::WriteOnly));
-        file.write("t [s],a [\xB5strain],b [\xB5strain]\n0,1,2\n0.01,3,4\n0.02,5,6\n");
+        file.write("t [s],a [\xB5V],b [\xB5V]\n0,1,2\n0.01,3,4\n0.02,5,6\n");
     }
     const auto imported = runCli({"import", latin1, "--db", db});
     ASSERT_EQ(imported.exitCode, 0) << imported.err.toStdString();
@@ -336,7 +370,7 @@ TEST(ImportCli, WhatItStoresIsValidTextEverywhere)
         core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
         const auto channels = store.channels(store.sessions().front().id);
         ASSERT_EQ(channels.size(), 2u);
-        EXPECT_EQ(channels[0].descriptor.unit, "µstrain");
+        EXPECT_EQ(channels[0].descriptor.unit, "µV");
     }
 
     // An export's side file naming a uuid that is not one, or a subject

@@ -40,6 +40,7 @@ struct Dialect {
     std::vector<std::string> names;
     std::function<double(std::size_t, std::uint64_t)> value;
     std::vector<std::string> units = {};  // empty: none expected
+    std::vector<double> toStored = {};    // each channel's factor to its SI unit; empty: 1
     QStringList record = {"--rate", "100"};
     // Teleplot's lines are independent: opened between two of one instant,
     // the port pairs each with the next instant's (docs/protocol.md).
@@ -98,10 +99,11 @@ void recordsEveryValue(const std::vector<Dialect>& dialects, double seconds = 1.
         const std::uint64_t count = store.sampleCount(id);
         ASSERT_GT(count, static_cast<std::uint64_t>(50.0 * seconds));
         // The first sample is the board's line n0; every one after, the next line.
+        const auto factor = [&](std::size_t c) { return dialect.toStored.empty() ? 1.0 : dialect.toStored[c]; };
         const auto first = store.readChannel(id, 0, 0, count);
-        const auto n0 = static_cast<std::uint64_t>(std::llround(first[0]));
+        const auto n0 = static_cast<std::uint64_t>(std::llround(first[0] / factor(0)));
         const auto stored = [&](std::size_t c, std::uint64_t n) {
-            return static_cast<double>(static_cast<float>(dialect.value(c, n)));
+            return static_cast<double>(static_cast<float>(dialect.value(c, n) * factor(c)));
         };
         for (std::size_t c = 0; c < channels.size(); ++c) {
             const auto values = c == 0 ? first : store.readChannel(id, c, 0, count);
@@ -162,7 +164,8 @@ TEST(TextBoardCli, TheDialectsMakersPrintAreRecordedValueByValue)
         return std::string(text);
     };
     std::vector<Dialect> dialects;
-    // Teleplot, one variable a line, alternating; its units after '§'.
+    // Teleplot, one variable a line, alternating; its units after '§',
+    // stored in SI.
     dialects.push_back({"Teleplot",
                         [&](std::uint64_t n) {
                             return ">a:" + number(standard(0, n)) + "\xC2\xA7mN\n>b:" + number(standard(1, n)) +
@@ -170,7 +173,8 @@ TEST(TextBoardCli, TheDialectsMakersPrintAreRecordedValueByValue)
                         },
                         {"a", "b"},
                         standard,
-                        {"mN", "mN"},
+                        {"N", "N"},
+                        {1e-3, 1e-3},
                         {"--rate", "100"},
                         true});
     // Teleplot with its timestamps (ms): the board's clock times it.
@@ -181,6 +185,7 @@ TEST(TextBoardCli, TheDialectsMakersPrintAreRecordedValueByValue)
                         },
                         {"temp"},
                         standard,
+                        {},
                         {},
                         {}});
     dialects.push_back(
@@ -214,7 +219,7 @@ TEST(TextBoardCli, TheDialectsMakersPrintAreRecordedValueByValue)
          },
          many,
          [](std::size_t c, std::uint64_t n) { return 1000.0 * static_cast<double>(c) + static_cast<double>(n); }});
-    // Units in the labels, and the board's millis() as its clock.
+    // Units in the labels (stored in SI), and the board's millis() as its clock.
     dialects.push_back({"units and millis()",
                         [&](std::uint64_t n) {
                             return "millis:" + std::to_string(5000 + n * 10) + " force[mN]:" + number(standard(0, n)) +
@@ -222,7 +227,8 @@ TEST(TextBoardCli, TheDialectsMakersPrintAreRecordedValueByValue)
                         },
                         {"force", "pos"},
                         standard,
-                        {"mN", "mm"},
+                        {"N", "m"},
+                        {1e-3, 1e-3},
                         {}});
     for (auto& dialect : dialects) dialect.what += ": " + dialect.line(7);
     recordsEveryValue(dialects, 1.5);

@@ -64,7 +64,7 @@ TEST(ModeCapability, TheRunnableModesOfEachProbeEndWithGeneralWhichRunsOnAnyDevi
     EXPECT_EQ(modeChannels(Mode::General, std::vector{kHigh}), std::vector<std::size_t>{});
 }
 
-TEST(ModeCapability, ChannelsGivenRolesFeedAModeWhateverTheirKind)
+TEST(ModeCapability, ChannelsGivenRolesFeedAModeTheirValuesFit)
 {
     // An Arduino's two unlabelled columns: no kind, so no mode but general…
     const std::vector<ChannelDescriptor> board{{"a", "", ChannelKind::Other}, {"b", "", ChannelKind::Other}};
@@ -73,9 +73,13 @@ TEST(ModeCapability, ChannelsGivenRolesFeedAModeWhateverTheirKind)
     ASSERT_TRUE(refusal);
     EXPECT_NE(refusal->find("no channel plays cantilever-a, cantilever-b"), std::string::npos) << *refusal;
     EXPECT_EQ(roleExample(Mode::PanelScan, board), "a=cantilever-a,b=cantilever-b");
-    // …until they are given roles: B first on the wire, A second.
+    // …and given roles, plain numbers are still no strains; as strains
+    // (a unit given), B first on the wire, A second.
     const auto given = applyRoles(board, parseRoleAssignment("b=cantilever-a, a=cantilever-b"));
-    EXPECT_EQ(modeChannels(Mode::PanelScan, given), (std::vector<std::size_t>{1, 0}));
+    EXPECT_FALSE(modeChannels(Mode::PanelScan, given));
+    const std::vector<ChannelDescriptor> strains{{"a", "", ChannelKind::Strain}, {"b", "", ChannelKind::Strain}};
+    EXPECT_EQ(modeChannels(Mode::PanelScan, applyRoles(strains, parseRoleAssignment("b=cantilever-a, a=cantilever-b"))),
+              (std::vector<std::size_t>{1, 0}));
     // One role given, the other still missing: named alone.
     const auto half = applyRoles(board, parseRoleAssignment("a=cantilever-a"));
     EXPECT_NE(modeRefusal(Mode::PanelScan, half)->find("no channel plays cantilever-b;"), std::string::npos);
@@ -89,10 +93,13 @@ TEST(ModeCapability, AGivenRoleWinsOverTheKindsAndAChannelWithARoleIsNotTakenFor
     // A is C; B is the first strain channel without a role.
     EXPECT_EQ(modeChannels(Mode::PanelScan, channels), (std::vector<std::size_t>{2, 0}));
     // A channel the device declared capacitance and the user made the soft
-    // beam is no longer a capacitance.
+    // beam is no longer a capacitance, and no beam either: a beam reads a
+    // strain, a force or counts.
     channels = applyRoles(std::vector{kHigh, kCapacitance, kDisplacement}, {{"C", ChannelRole::SoftBeam}});
-    EXPECT_EQ(modeChannels(Mode::Palpation, channels), (std::vector<std::size_t>{0, 1, 2}));
+    EXPECT_FALSE(modeChannels(Mode::Palpation, channels));
     EXPECT_FALSE(modeChannels(Mode::Capacitive, channels));
+    channels = applyRoles(std::vector{kHigh, kLow, kDisplacement}, {{"high", ChannelRole::SoftBeam}});
+    EXPECT_EQ(modeChannels(Mode::Palpation, channels), (std::vector<std::size_t>{1, 0, 2}));
 }
 
 TEST(ChannelRoles, ARoleListIsParsedAndWrittenBackAndBadOnesAreNamed)
@@ -130,4 +137,34 @@ TEST(ChannelRoles, ARoleForAChannelTheDeviceLacksIsRefusedAndAGivenRoleMovesOffA
     EXPECT_EQ(moved[1].role, ChannelRole::CantileverA);
     for (const auto& definition : modeDefinitions())
         for (const ChannelRole role : definition.roles) EXPECT_EQ(channelRoleFromString(toString(role)), role);
+}
+
+// Issue 53: a role given to a plain number does not make it a strain.
+TEST(ModeCapability, ARoleGivenToAPlainNumberIsRefusedNamingTheChannelAndWhatTheRoleReads)
+{
+    const auto given =
+        applyRoles(std::vector<ChannelDescriptor>{{"a", "", ChannelKind::Other}, {"b", "", ChannelKind::Other}},
+                   parseRoleAssignment("a=cantilever-a,b=cantilever-b"));
+    EXPECT_FALSE(modeChannels(Mode::PanelScan, given));
+    const auto refusal = modeRefusal(Mode::PanelScan, given);
+    ASSERT_TRUE(refusal);
+    EXPECT_EQ(*refusal, "panel-scan needs two strain cantilevers (A and B): a plays cantilever-a but is a plain "
+                        "number (no unit), and cantilever-a reads a strain (strain, µε); b plays cantilever-b but is "
+                        "a plain number (no unit), and cantilever-b reads a strain (strain, µε); this device has a "
+                        "(cantilever-a), b (cantilever-b).");
+    EXPECT_EQ(channelsWithoutFittingUnit(Mode::PanelScan, given), (std::vector<std::string>{"a", "b"}));
+    // A beam in °C is no beam either; in counts, N or as a strain it is.
+    const auto degrees =
+        applyRoles(std::vector<ChannelDescriptor>{{"t", "°C", ChannelKind::Other}, kLow, kDisplacement},
+                   parseRoleAssignment("t=stiff-beam"));
+    EXPECT_TRUE(modeRefusal(Mode::Palpation, degrees)->find("t plays stiff-beam but is in °C") != std::string::npos);
+    for (const ChannelDescriptor& beam : {kHigh, kStrainA, ChannelDescriptor{"f", "N", ChannelKind::Force}}) {
+        const auto channels =
+            applyRoles(std::vector{beam, kLow, kDisplacement}, RoleAssignment{{beam.name, ChannelRole::StiffBeam}});
+        EXPECT_FALSE(modeRefusal(Mode::Palpation, channels)) << beam.name;
+    }
+    // Unassigned plain numbers are matched by no role's kind.
+    EXPECT_EQ(runnableModes(std::vector<ChannelDescriptor>{
+                  {"a", "", ChannelKind::Other}, {"b", "", ChannelKind::Other}, kDisplacement}),
+              (std::vector{Mode::General}));
 }

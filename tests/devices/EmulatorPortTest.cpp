@@ -31,7 +31,7 @@ std::unique_ptr<PortSource> connect(const std::string& link, WireProtocol protoc
 {
     return std::make_unique<PortSource>(
         std::make_unique<PosixSerialTransport>(link, 921600),
-        devices::PortSourceOptions{protocol, rate, std::chrono::milliseconds(4000), std::nullopt});
+        devices::PortSourceOptions{protocol, rate, std::chrono::milliseconds(4000), std::nullopt, {}});
 }
 
 // Reads until `samples` samples per channel arrived (or the source fails).
@@ -196,7 +196,7 @@ TEST(EmulatorPort, ClearErrorsForMissingBusyAndSilentPorts)
     // The emulator was never started: nothing answers the handshake.
     try {
         PortSource silent(std::make_unique<PosixSerialTransport>(uniqueTempPath("busy"), 9600),
-                          {WireProtocol::Binary, std::nullopt, std::chrono::milliseconds(300), std::nullopt});
+                          {WireProtocol::Binary, std::nullopt, std::chrono::milliseconds(300), std::nullopt, {}});
         FAIL();
     } catch (const TransportError& e) {
         EXPECT_NE(std::string(e.what()).find("no TSP/1 frames within 300 ms"), std::string::npos) << e.what();

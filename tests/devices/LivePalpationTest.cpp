@@ -40,7 +40,7 @@ Recording palpate(double seconds)
 core::compliance::LivePalpationSettings settingsOf(const devices::simulator::PalpationScenario& scenario)
 {
     const auto& p = scenario.parameters();
-    return {p.high, p.low, p.adc, p.bridge, {0.01, 100}, {}, {}};
+    return {p.high, p.low, p.adc, p.bridge, {0.01, 100}, {}, {}, {}, {}, {}};
 }
 
 // Samples [first, first + count) as a block numbered from `index`.

@@ -73,7 +73,7 @@ std::vector<core::compliance::PressReading> palpate(const std::vector<core::cali
     p.objectStiffness_n_per_m = kTruth_n_per_m;
     p.seed = 17;
     devices::simulator::PalpationScenario scenario(p);
-    const auto settings = core::compliance::palpationSettings(probe(), p.sampleRate_hz, records);
+    const auto settings = core::compliance::palpationSettings(probe(), p.sampleRate_hz, scenario.channels(), records);
     core::compliance::LivePalpation live(scenario.channels(), p.sampleRate_hz, settings, 2.0);
     if (warning) *warning = live.mixedCalibrationWarning();
     std::vector<core::compliance::PressReading> readings;

@@ -54,7 +54,7 @@ TEST(PalpationUncertainty, TheStatedUncertaintiesCoverTheTruthAsTheySay)
         core::SampleBlock all(3, static_cast<std::size_t>(16.0 * kRate_hz), 0.0, 1.0 / kRate_hz);
         scenario.generate(all);
         core::compliance::LivePalpation live(scenario.channels(), kRate_hz,
-                                             {p.high, p.low, p.adc, p.bridge, {0.01, 100}, {}, {}}, 1.0);
+                                             {p.high, p.low, p.adc, p.bridge, {0.01, 100}, {}, {}, {}, {}, {}}, 1.0);
         // The tare's window is the half second before its own moment.
         const auto tareAt =
             static_cast<std::size_t>(std::uniform_real_distribution<double>(1.05, 1.95)(tareMoments) * kRate_hz);

@@ -49,7 +49,7 @@ TEST(ReconnectingSource, ContinuesAfterUnplugAndReplugWithTheGapMarked)
     first->start();
     auto source = std::make_unique<ReconnectingSource>(
         serialOpener(link, "", 921600,
-                     {WireProtocol::Binary, std::nullopt, std::chrono::milliseconds(2000), std::nullopt}),
+                     {WireProtocol::Binary, std::nullopt, std::chrono::milliseconds(2000), std::nullopt, {}}),
         std::chrono::milliseconds(100));
     auto* reconnecting = source.get();
     Acquisition acquisition(std::move(source));
@@ -90,7 +90,7 @@ TEST(ReconnectingSource, TheFirstConnectionMustSucceed)
 {
     EXPECT_ANY_THROW(ReconnectingSource(
         serialOpener("/dev/nonexistent-tactiscope", "", 115200,
-                     {WireProtocol::Binary, std::nullopt, std::chrono::milliseconds(200), std::nullopt})));
+                     {WireProtocol::Binary, std::nullopt, std::chrono::milliseconds(200), std::nullopt, {}})));
 }
 
 // A text board unplugged and plugged back in is timed again when it comes
@@ -104,7 +104,7 @@ TEST(ReconnectingSource, ATextBoardTimedAgainWhenItComesBackContinues)
     auto board = std::make_unique<tactiscope::testing::TextBoard>(link, printing);
     auto source = std::make_unique<ReconnectingSource>(
         serialOpener(link, "", 115200,
-                     {WireProtocol::Text, std::nullopt, std::chrono::milliseconds(4000), std::nullopt}),
+                     {WireProtocol::Text, std::nullopt, std::chrono::milliseconds(4000), std::nullopt, {}}),
         std::chrono::milliseconds(100));
     auto* reconnecting = source.get();
     ASSERT_TRUE(reconnecting->rateUncertainty_hz());

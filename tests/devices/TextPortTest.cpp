@@ -46,7 +46,8 @@ std::pair<std::unique_ptr<PortSource>, std::vector<double>> readText(std::string
     });
     auto source = std::make_unique<PortSource>(
         std::move(transport),
-        devices::PortSourceOptions{devices::WireProtocol::Text, 100.0, std::chrono::milliseconds(3000), std::nullopt});
+        devices::PortSourceOptions{
+            devices::WireProtocol::Text, 100.0, std::chrono::milliseconds(3000), std::nullopt, {}});
     board.join();
     std::vector<double> values;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);

@@ -1,8 +1,11 @@
-// A simulator scenario re-announced as a device that says nothing of its
-// channels (a maker's board printing numbers): the same samples, other
-// names, kind `other`, no mode, and an identity of the test's choosing.
+// A simulator scenario re-announced as a maker's board printing numbers:
+// the same samples, other names, no mode, and an identity of the test's
+// choosing. A name may carry the unit the board labels it with ("d[m]",
+// "a[strain]": the values are the scenario's, in SI); without one the
+// channel is a plain number, as a board that says nothing of it.
 #pragma once
 
+#include "core/UnitScale.h"
 #include "devices/BlockSource.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
@@ -24,7 +27,13 @@ public:
         options.speed = speed;
         m_inner =
             std::make_unique<devices::simulator::SimulatorSource>(devices::simulator::makeScenario(scenario), options);
-        for (const auto& name : names) m_channels.push_back({name, "", core::ChannelKind::Other});
+        for (const auto& name : names) {
+            const auto bracket = name.find('[');
+            core::ChannelDescriptor channel{name.substr(0, bracket), "", core::ChannelKind::Other};
+            if (bracket != std::string::npos)
+                core::giveUnit(channel, name.substr(bracket + 1, name.size() - bracket - 2));
+            m_channels.push_back(std::move(channel));
+        }
     }
     std::string name() const override { return m_identity.model; }
     devices::DeviceIdentity identity() const override { return m_identity; }

@@ -3,6 +3,7 @@
 
 #include "ui/device/ChannelRolesBox.h"
 
+#include "core/UnitScale.h"
 #include "core/modes/ModeDefinition.h"
 #include "devices/session/LiveSession.h"
 #include "devices/simulator/LoadCellScenario.h"
@@ -65,6 +66,7 @@ DevicePanel::DevicePanel(QWidget* parent)
       m_protocol(new QComboBox(this)),
       m_baud(new QComboBox(this)),
       m_textRate(new QDoubleSpinBox(this)),
+      m_textUnits(new QLineEdit(this)),
       m_connect(new QPushButton(tr("&Connect"), this)),
       m_disconnect(new QPushButton(tr("&Disconnect"), this)),
       m_connectedTo(new QLabel(this))
@@ -74,6 +76,7 @@ DevicePanel::DevicePanel(QWidget* parent)
     m_protocol->setObjectName(QStringLiteral("protocolBox"));
     m_baud->setObjectName(QStringLiteral("baudBox"));
     m_textRate->setObjectName(QStringLiteral("textRateBox"));
+    m_textUnits->setObjectName(QStringLiteral("textUnitsEdit"));
     m_connect->setObjectName(QStringLiteral("connectButton"));
     m_disconnect->setObjectName(QStringLiteral("disconnectButton"));
     m_connectedTo->setObjectName(QStringLiteral("connectedToLabel"));
@@ -97,6 +100,9 @@ DevicePanel::DevicePanel(QWidget* parent)
     m_textRate->setDecimals(1);
     m_textRate->setSuffix(tr(" Hz"));
     m_textRate->setSpecialValueText(tr("time it"));
+    // A board's label may carry its unit ("a[µε]:12"); these are for the
+    // plain numbers of a board one cannot change.
+    m_textUnits->setPlaceholderText(tr("as labelled, e.g. a=µε, b=µε"));
 
     // Large buttons: this panel is used with gloves on.
     for (QPushButton* button : {m_connect, m_disconnect}) button->setMinimumHeight(40);
@@ -119,6 +125,7 @@ DevicePanel::DevicePanel(QWidget* parent)
     link->addRow(tr("Pro&tocol:"), m_protocol);
     link->addRow(tr("&Baud:"), m_baud);
     link->addRow(tr("&Rate:"), m_textRate);
+    link->addRow(tr("U&nits:"), m_textUnits);
     sourcesLayout->addLayout(link);
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(refreshButton);
@@ -171,6 +178,7 @@ DevicePanel::DevicePanel(QWidget* parent)
         updateEnabled();
     });
     connect(m_protocol, &QComboBox::currentIndexChanged, this, &DevicePanel::updateEnabled);
+    connect(m_textUnits, &QLineEdit::textChanged, this, &DevicePanel::updateEnabled);
     connect(m_connect, &QPushButton::clicked, this, &DevicePanel::requestConnect);
     connect(m_add, &QPushButton::clicked, this, [this] {
         if (const auto choice = request()) emit addRequested(*choice);
@@ -310,6 +318,13 @@ std::optional<SourceRequest> DevicePanel::request() const
     SourceRequest request;
     request.options.protocol = static_cast<devices::WireProtocol>(m_protocol->currentData().toInt());
     if (m_textRate->value() > 0.0) request.options.textRate_hz = m_textRate->value();
+    if (request.options.protocol == devices::WireProtocol::Text) {
+        try {
+            request.options.textUnits = core::parseUnitAssignment(m_textUnits->text().toStdString());
+        } catch (const std::invalid_argument&) {
+            return std::nullopt;  // the field says why (updateEnabled)
+        }
+    }
     request.baud = m_baud->currentText().toInt();
     if (request.baud <= 0) request.baud = kDefaultBaud;
 
@@ -348,6 +363,19 @@ void DevicePanel::updateEnabled()
     m_protocol->setEnabled(!simulator);
     m_baud->setEnabled(!simulator && !emulator);
     m_textRate->setEnabled(!simulator && text);
+    m_textUnits->setEnabled(!simulator && text);
+    QString unitsProblem;
+    try {
+        core::parseUnitAssignment(m_textUnits->text().toStdString());
+    } catch (const std::invalid_argument& e) {
+        unitsProblem = QString::fromStdString(e.what());
+    }
+    const QString help = tr("Units of a text board's channels by name: NAME=UNIT, … Strain (strain, µε), force "
+                            "(N, mN), length (m, mm) and capacitance (F, pF) feed the modes; a channel with no unit "
+                            "is a plain number, recorded as it is.");
+    // A list that cannot be read keeps Connect off, and says why.
+    m_textUnits->setStyleSheet(unitsProblem.isEmpty() ? QString() : QStringLiteral("color: #b00020;"));
+    m_textUnits->setToolTip(unitsProblem.isEmpty() ? help : tr("Cannot connect: %1\n\n%2").arg(unitsProblem, help));
     m_connect->setEnabled(request().has_value());
     m_disconnect->setEnabled(m_connected);
     // Another device joins a connected one; the emulator's link is the window's own.

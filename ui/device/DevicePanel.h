@@ -111,6 +111,7 @@ private:
     QComboBox* m_protocol = nullptr;
     QComboBox* m_baud = nullptr;
     QDoubleSpinBox* m_textRate = nullptr;
+    QLineEdit* m_textUnits = nullptr;  // "a=µε, b=µε": a text board's plain numbers' units
     QPushButton* m_connect = nullptr;
     QPushButton* m_disconnect = nullptr;
     QPushButton* m_add = nullptr;

@@ -61,16 +61,21 @@ void ModeChoice::chosen()
         const auto& live = *m_station.device();
         const QSignalBlocker quiet(m_widgets.bar);
         m_widgets.bar->setMode(live.mode());
+        const auto unitless = core::channelsWithoutFittingUnit(mode, live.channels());
+        const QString how =
+            unitless.empty()
+                ? tr("Give the device's channels roles in the device panel (Channel roles: %1), or connect the "
+                     "probe made for %2.")
+                      .arg(QString::fromStdString(core::roleExample(mode, live.channels()))
+                               .replace(QLatin1Char(','), QStringLiteral(", ")),
+                           modeTitle(mode))
+                : tr("Give %1 its unit: in the device panel's Units before connecting (%1=µε), by a label on "
+                     "the board (%1[µε]:12.5), or, for ADC counts, by the sensor profile's channel scale.")
+                      .arg(QString::fromStdString(unitless.front()));
         reportProblem(m_window,
                       {tr("Mode not available"),
                        tr("%1 cannot run on %2.").arg(modeTitle(mode), QString::fromStdString(live.source().name())),
-                       *refusal,
-                       tr("The session stays in %1. Give the device's channels roles in the device "
-                          "panel (Channel roles: %2), or connect the probe made for %3.")
-                           .arg(modeTitle(live.mode()),
-                                QString::fromStdString(core::roleExample(mode, live.channels()))
-                                    .replace(QLatin1Char(','), QStringLiteral(", ")),
-                                modeTitle(mode)),
+                       *refusal, tr("The session stays in %1. %2").arg(modeTitle(live.mode()), how),
                        QStringLiteral("modeRefusedBox")});
     }
     showView();

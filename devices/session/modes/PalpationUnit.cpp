@@ -25,7 +25,7 @@ PalpationUnit::PalpationUnit(const LiveUnitSetup& setup)
     std::vector<core::calibration::CalibrationRecord> records;
     for (const auto& stored : newest) records.push_back(stored.record);
     std::vector<std::size_t> usable;
-    const auto settings = core::compliance::palpationSettings(probe, setup.rate_hz, records, &usable);
+    const auto settings = core::compliance::palpationSettings(probe, setup.rate_hz, setup.channels, records, &usable);
     try {
         m_palpation = std::make_shared<core::compliance::LivePalpation>(setup.channels, setup.rate_hz, settings,
                                                                         setup.displaySeconds);

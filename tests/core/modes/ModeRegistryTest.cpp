@@ -126,7 +126,11 @@ TEST_F(ModeRegistryTest, AModeRegisteredAloneIsParsedOfferedAndRunsOnTheChannels
     EXPECT_EQ(*modeRefusal(kDifferenceMode, board),
               "strain-difference needs two strain cantilevers: no channel plays cantilever-a, cantilever-b; this "
               "device has x (other), y (other).");
-    EXPECT_EQ(modeChannels(kDifferenceMode, applyRoles(board, parseRoleAssignment("y=cantilever-a,x=cantilever-b"))),
+    // Given roles, plain numbers are still no strains; strains are.
+    EXPECT_FALSE(
+        modeChannels(kDifferenceMode, applyRoles(board, parseRoleAssignment("y=cantilever-a,x=cantilever-b"))));
+    const std::vector<ChannelDescriptor> strains{{"x", "", ChannelKind::Strain}, {"y", "", ChannelKind::Strain}};
+    EXPECT_EQ(modeChannels(kDifferenceMode, applyRoles(strains, parseRoleAssignment("y=cantilever-a,x=cantilever-b"))),
               (std::vector<std::size_t>{1, 0}));
     // A word or value taken is refused.
     EXPECT_THROW(registerMode(differenceMode()), std::invalid_argument);

@@ -177,3 +177,29 @@ TEST(SensorProfile, AHugeProfileIsRefusedUnreadAndBadValuesAreQuotedShort)
         }
     }
 }
+
+// Issue 53: a board that prints raw counts has its scale in the profile.
+TEST(SensorProfile, ACompliancePairMayScaleBeamsInCountsAndWritesTheScalesBack)
+{
+    const auto withChannels = [](const char* channels) {
+        std::string text(kPair);
+        text.insert(text.rfind('}'), std::string(", \"channels\": ") + channels);
+        return text;
+    };
+    const auto profile =
+        parseSensorProfile(withChannels(R"({"stiff": {"unit": "mN", "counts_per_unit": 20.5, "full_scale": 32767},
+                         "soft": {"unit": "µε", "counts_per_unit": 3}})"),
+                           "probe.json");
+    const ChannelScales expected{{"stiff", {"mN", 20.5, 32767.0}}, {"soft", {"µε", 3.0, std::nullopt}}};
+    EXPECT_EQ(profileScales(profile), expected);
+    EXPECT_EQ(profileScales(parseSensorProfile(toJson(profile), "again.json")), expected);
+    EXPECT_TRUE(profileScales(parseSensorProfile(kPair, "probe.json")).empty());
+
+    EXPECT_EQ(errorOf(withChannels(R"({"stiff": {"unit": "V", "counts_per_unit": 2}})")),
+              "probe.json: channels.stiff.unit: 'V' is not a strain or a force unit (strain, µε, N, mN, µN)");
+    EXPECT_EQ(errorOf(withChannels(R"({"stiff": {"unit": "N", "counts_per_unit": 0}})")),
+              "probe.json: channels.stiff.counts_per_unit: must be a positive number, got 0");
+    EXPECT_EQ(errorOf(withChannels(R"({"stiff": {"unit": "N", "counts_per_unit": 2, "offset": 5}})")),
+              "probe.json: channels.stiff.offset: unknown key");
+    EXPECT_EQ(errorOf(withChannels(R"([1])")), "probe.json: channels: must be a JSON object");
+}

@@ -229,7 +229,17 @@ TEST_F(LiveListsTest, ADeviceThatDeclaresNothingRecordsInGeneralModeAndGivenRole
     }
     auto options = optionsFor(file("m.tactiscope"));
     options.roles = core::parseRoleAssignment("a=cantilever-a,b=cantilever-b");
-    LiveSession scan(std::make_unique<RelabelledSource>("panel-scan", std::vector<std::string>{"a", "b"}), options);
+    {
+        // Roles alone make no plain number a strain (issue 53).
+        LiveSession plain(std::make_unique<RelabelledSource>("panel-scan", std::vector<std::string>{"a", "b"}),
+                          options);
+        EXPECT_EQ(plain.mode(), core::Mode::General);
+        EXPECT_NE(plain.refusalOf(core::Mode::PanelScan)->find("a plays cantilever-a but is a plain number"),
+                  std::string::npos);
+    }
+    // The board that labels its values as strains, given the roles.
+    LiveSession scan(
+        std::make_unique<RelabelledSource>("panel-scan", std::vector<std::string>{"a[strain]", "b[strain]"}), options);
     EXPECT_EQ(scan.mode(), core::Mode::PanelScan);
     ASSERT_TRUE(scan.unitAs<PanelScanUnit>());
     ASSERT_FALSE(scan.startRecording({}));
@@ -244,8 +254,9 @@ TEST_F(LiveListsTest, ADeviceThatDeclaresNothingRecordsInGeneralModeAndGivenRole
     EXPECT_EQ(channels[0].descriptor.role, core::ChannelRole::CantileverA);
     EXPECT_EQ(channels[1].descriptor.role, core::ChannelRole::CantileverB);
     // The roles cannot change under a recording, and name only real channels.
-    EXPECT_FALSE(scan.setRoles({}));  // not recording: taken
-    EXPECT_EQ(scan.mode(), core::Mode::General);
+    EXPECT_FALSE(scan.setRoles({}));                // not recording: taken
+    EXPECT_EQ(scan.mode(), core::Mode::PanelScan);  // two strains: A and B by their kind
+    EXPECT_FALSE(scan.channels()[0].role);
     EXPECT_TRUE(scan.setRoles({{"z", core::ChannelRole::CantileverA}}).has_value());
 }
 
@@ -253,12 +264,25 @@ TEST_F(LiveListsTest, ADeviceThatDeclaresNothingRecordsInGeneralModeAndGivenRole
 // three-column board a palpation probe; the roles given by hand win.
 TEST_F(LiveListsTest, AProfilesRolesMakeABoardAPalpationProbe)
 {
-    LiveSession plain(std::make_unique<RelabelledSource>("palpation", std::vector<std::string>{"ch1", "ch2", "ch3"}),
-                      optionsFor(file("b.tactiscope")));
+    // Its beams print raw counts, its displacement gauge metres.
+    const std::vector<std::string> board{"ch1", "ch2", "ch3[m]"};
+    LiveSession plain(std::make_unique<RelabelledSource>("palpation", board), optionsFor(file("b.tactiscope")));
     EXPECT_EQ(plain.mode(), core::Mode::General);
 
     auto probe = std::get<core::sensors::CompliancePairProfile>(*core::sensors::builtInProfile(core::Mode::Palpation));
     probe.roles = core::parseRoleAssignment("ch1=stiff-beam,ch2=soft-beam,ch3=displacement,ch9=capacitance");
+    // The counts' scale, as the maker writes it from the bridge's arithmetic
+    // (half bridge: V/V_exc = GF·ε/2) and the beam's root strain per newton
+    // 6L/(E·w·t²), in the simulated probe's true gauge factor.
+    const devices::simulator::PalpationParameters simulated;
+    const auto countsPerNewton = [&](const core::sensors::CantileverGeometry& beam) {
+        const double strainPerNewton =
+            6.0 * beam.length_m / (beam.youngsModulus_pa * beam.width_m * beam.thickness_m * beam.thickness_m);
+        return simulated.trueGaugeFactor / 2.0 * strainPerNewton * simulated.bridge.excitation_v * simulated.adc.gain /
+               simulated.adc.reference_v * std::ldexp(1.0, simulated.adc.bits - 1);
+    };
+    probe.channels = {{"ch1", {"N", countsPerNewton(probe.high), 32768.0}},
+                      {"ch2", {"N", countsPerNewton(probe.low), 32768.0}}};
     // Given to a running session: the channels are built again on its roles.
     ASSERT_FALSE(plain.setProfile(core::Mode::Palpation, probe));
     EXPECT_FALSE(plain.refusalOf(core::Mode::Palpation));
@@ -267,8 +291,7 @@ TEST_F(LiveListsTest, AProfilesRolesMakeABoardAPalpationProbe)
 
     auto options = optionsFor(file("b.tactiscope"));
     options.profiles.emplace(core::Mode::Palpation, probe);
-    LiveSession session(std::make_unique<RelabelledSource>("palpation", std::vector<std::string>{"ch1", "ch2", "ch3"}),
-                        options);
+    LiveSession session(std::make_unique<RelabelledSource>("palpation", board), options);
     EXPECT_EQ(session.mode(), core::Mode::Palpation);  // ch9 is not on this board: left out
     session.start();
     ASSERT_TRUE(pollUntil(session, [&] { return liveUnit<PalpationUnit>(session).presses().size() >= 2; }));

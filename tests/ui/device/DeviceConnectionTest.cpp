@@ -209,7 +209,7 @@ TEST(DeviceConnection, ATextBoardShowsTheRateItWasTimedAtAndItsChannelsUnits)
     window.show();
     window.station().connectDevice(
         QString::fromStdString(link),
-        serialOpener(link, {WireProtocol::Text, std::nullopt, std::chrono::milliseconds(4000), std::nullopt}));
+        serialOpener(link, {WireProtocol::Text, std::nullopt, std::chrono::milliseconds(4000), std::nullopt, {}}));
     ASSERT_TRUE(waitFor([&] { return window.station().isConnected(); }, 8000));
     ASSERT_TRUE(waitFor([&] { return stateText(window) == QStringLiteral("Streaming"); }, 2000));
     tactiscope::testing::runEventLoopFor(1200);
@@ -219,7 +219,7 @@ TEST(DeviceConnection, ATextBoardShowsTheRateItWasTimedAtAndItsChannelsUnits)
         << rate.toStdString();
     QStringList labels;
     for (const auto* label : window.findChildren<QLabel*>()) labels << label->text();
-    EXPECT_TRUE(labels.contains(QStringLiteral("force [mN]:"))) << labels.join(QLatin1Char('|')).toStdString();
+    EXPECT_TRUE(labels.contains(QStringLiteral("force [N]:"))) << labels.join(QLatin1Char('|')).toStdString();
     EXPECT_TRUE(labels.contains(QStringLiteral("pos:"))) << labels.join(QLatin1Char('|')).toStdString();
     EXPECT_FALSE(saveScreenshot(window, QStringLiteral("main-window-text-board")).isEmpty());
 }

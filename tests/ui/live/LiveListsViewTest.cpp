@@ -45,11 +45,14 @@ std::unique_ptr<devices::BlockSource> spedUp(const char* scenario)
 }
 
 // A maker's board streaming the panel probe's signals as "a" and "b",
-// without kinds or a mode, identified by its serial number.
-std::unique_ptr<devices::BlockSource> makerBoard()
+// plain numbers or labelled as strains, without a mode, identified by its
+// serial number.
+std::unique_ptr<devices::BlockSource> makerBoard(bool labelsStrains = false)
 {
     return std::make_unique<tactiscope::testing::RelabelledSource>(
-        "panel-scan", std::vector<std::string>{"a", "b"}, 10.0, devices::DeviceIdentity{"Nano 33", "MK-0042", "1.0"});
+        "panel-scan",
+        labelsStrains ? std::vector<std::string>{"a[strain]", "b[strain]"} : std::vector<std::string>{"a", "b"}, 10.0,
+        devices::DeviceIdentity{"Nano 33", "MK-0042", "1.0"});
 }
 
 QString headerOf(const QTableWidget& table)
@@ -170,7 +173,7 @@ TEST(LiveListsView, PressesAreListedOnTheRecordingsClockAndTheGridStartsAtTheSit
     EXPECT_NEAR(*grid->valueAt(0, 0), readings[0].value, 1e-9);
 }
 
-TEST(LiveListsView, ABoardThatSaysNothingRecordsInGeneralModeUntilItsChannelsGetRolesWhichAreRemembered)
+TEST(LiveListsView, ABoardThatSaysNothingRecordsInGeneralModeAndItsRolesAreRememberedForWhenItSaysItsUnits)
 {
     QTemporaryDir dir;
     const QString store = dir.filePath("m.tactiscope");
@@ -197,6 +200,17 @@ TEST(LiveListsView, ABoardThatSaysNothingRecordsInGeneralModeUntilItsChannelsGet
     roles->chooseRole(QStringLiteral("a"), core::ChannelRole::CantileverA);
     roles->chooseRole(QStringLiteral("b"), core::ChannelRole::CantileverB);
     tactiscope::testing::saveScreenshot(*window.devicePanel(), QStringLiteral("device-panel-roles"));
+    // Roles make no plain number a strain (issue 53): still refused.
+    EXPECT_FALSE(window.setMode(core::Mode::PanelScan));
+    EXPECT_EQ(window.mode(), core::Mode::General);
+
+    // The board again, now printing its values as strains: the roles
+    // chosen come back, and the panel scan runs.
+    window.station().disconnectDevices();
+    EXPECT_FALSE(roles->isVisible());
+    window.station().connectSource(makerBoard(true));
+    EXPECT_EQ(roles->roles(),
+              (core::RoleAssignment{{"a", core::ChannelRole::CantileverA}, {"b", core::ChannelRole::CantileverB}}));
     ASSERT_TRUE(window.setMode(core::Mode::PanelScan));
     ASSERT_TRUE(window.findChild<ui::PanelScanView*>()->isVisible());
     ASSERT_TRUE(window.startRecording());
@@ -216,13 +230,6 @@ TEST(LiveListsView, ABoardThatSaysNothingRecordsInGeneralModeUntilItsChannelsGet
         EXPECT_EQ(scan.metadata.mode, core::Mode::PanelScan);
         EXPECT_EQ(scan.verdict, core::Verdict::DefectsFound);
         EXPECT_EQ(sessions.channels(scan.id)[0].descriptor.role, core::ChannelRole::CantileverA);
+        EXPECT_EQ(sessions.channels(general.id)[0].descriptor.kind, core::ChannelKind::Other);
     }
-
-    // The same board again: its roles come back, and the panel scan runs.
-    window.station().disconnectDevices();
-    EXPECT_FALSE(roles->isVisible());
-    window.station().connectSource(makerBoard());
-    EXPECT_EQ(roles->roles(),
-              (core::RoleAssignment{{"a", core::ChannelRole::CantileverA}, {"b", core::ChannelRole::CantileverB}}));
-    EXPECT_EQ(window.mode(), core::Mode::PanelScan);
 }

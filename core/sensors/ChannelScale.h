@@ -1,0 +1,32 @@
+// A profile's scale for a channel in ADC counts: a board that prints raw
+// readings (a text board's plain numbers) is read as a probe whose
+// converter the profile describes. The stored samples stay the counts the
+// board sent; the mode reads them through the scale, and judges clipping
+// from the declared full scale by the same rule as a TSP/1 probe's ADC
+// (PalpationForces::atLimit).
+//   "channels": {"stiff": {"unit": "mN", "counts_per_unit": 20.48,
+//                          "full_scale": 32767}}
+// There is no offset: the zero taken with nothing pressed is the reading
+// of no force, as for a probe's bridge.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+
+namespace tactiscope::core::sensors {
+
+struct ChannelScale {
+    std::string unit;            // a strain or a force unit (core/UnitScale.h): "mN", "µε"
+    double countsPerUnit = 1.0;  // positive
+    // The ADC's largest |count|: a reading within 1 % of it is clipped.
+    // None: the board's range is not known, and nothing is judged clipped.
+    std::optional<double> fullScale_counts;
+
+    friend bool operator==(const ChannelScale&, const ChannelScale&) = default;
+};
+
+// By the channel's name.
+using ChannelScales = std::map<std::string, ChannelScale>;
+
+}  // namespace tactiscope::core::sensors

@@ -1,0 +1,258 @@
+// A text board's numbers have the unit they were given, or none (issue
+// 53): plain numbers are recorded as plain numbers, a mode that reads a
+// strain or a force refuses them and says how to give their unit (the
+// board's label, --units, a profile's scale), and a palpation board that
+// prints raw ADC counts is read through its profile's scale, its clipped
+// presses judged from the declared full scale and no calibration said to
+// be used that was not applied. Real pseudo-terminals, real boards'
+// timing (support/TextBoard.h).
+#include "support/CliRunner.h"
+#include "support/EmulatorProcess.h"
+#include "support/TextBoard.h"
+#include "support/TextFiles.h"
+
+#include "core/SampleBlock.h"
+#include "core/calibration/CalibrationRecord.h"
+#include "core/storage/SessionStore.h"
+#include "devices/simulator/PalpationScenario.h"
+
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+using namespace tactiscope;
+using tactiscope::testing::CliResult;
+using tactiscope::testing::runCli;
+using tactiscope::testing::sessionIdIn;
+using tactiscope::testing::TextBoard;
+using tactiscope::testing::TextBoardOptions;
+
+namespace {
+
+std::string plainLine(std::uint64_t n)
+{
+    return "a:" + std::to_string(n) + " b:" + std::to_string(2 * n) + "\n";
+}
+
+QStringList recordBoard(const QString& link, const QString& db, double seconds)
+{
+    return {"record", "--port", link, "--protocol", "text", "--rate", "50", "--seconds", QString::number(seconds),
+            "--db",   db};
+}
+
+}  // namespace
+
+TEST(TextBoardUnitsCli, PlainNumbersAreNoStrainAScanRefusesThemAndSaysHowToGiveTheirUnit)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath(QStringLiteral("board"));
+    TextBoard board(link.toStdString(), TextBoardOptions{50.0, plainLine, 1, 1e-3, false});
+    ASSERT_TRUE(board.ok());
+    const QString db = dir.filePath(QStringLiteral("bench.tactiscope"));
+
+    // Roles alone do not make a plain number a strain.
+    const CliResult refused = runCli(recordBoard(link, db, 1.0) +
+                                     QStringList{"--mode", "panel-scan", "--roles", "a=cantilever-a,b=cantilever-b"});
+    EXPECT_EQ(refused.exitCode, 2) << refused.out.toStdString();
+    EXPECT_TRUE(refused.err.contains(QStringLiteral("a plays cantilever-a but is a plain number (no unit)")))
+        << refused.err.toStdString();
+    EXPECT_TRUE(refused.err.contains(QStringLiteral("--units a=UNIT"))) << refused.err.toStdString();
+
+    // The general mode records them as they are: no unit, no kind.
+    const CliResult general = runCli(recordBoard(link, db, 1.0));
+    ASSERT_EQ(general.exitCode, 0) << general.err.toStdString();
+    {
+        core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+        const auto id = sessionIdIn(general.out);
+        const auto channels = store.channels(id);
+        ASSERT_EQ(channels.size(), 2u);
+        EXPECT_EQ(channels[0].descriptor.unit, "");
+        EXPECT_EQ(channels[0].descriptor.kind, core::ChannelKind::Other);
+        EXPECT_EQ(store.session(id)->metadata.mode, core::Mode::General);
+    }
+
+    // Given in µε, they are strains, stored as such (×1e-6), and the scan runs.
+    const CliResult scan =
+        runCli(recordBoard(link, db, 1.0) +
+               QStringList{"--mode", "panel-scan", "--roles", "a=cantilever-a,b=cantilever-b", "--units", "a=µε,b=µε"});
+    ASSERT_EQ(scan.exitCode, 0) << scan.err.toStdString();
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto id = sessionIdIn(scan.out);
+    const auto channels = store.channels(id);
+    ASSERT_EQ(channels.size(), 2u);
+    for (const auto& channel : channels) {
+        EXPECT_EQ(channel.descriptor.kind, core::ChannelKind::Strain) << channel.descriptor.name;
+        EXPECT_EQ(channel.descriptor.unit, "") << channel.descriptor.name;
+    }
+    const auto count = store.sampleCount(id);
+    ASSERT_GT(count, 20u);
+    const auto a = store.readChannel(id, 0, 0, count), b = store.readChannel(id, 1, 0, count);
+    const double n0 = std::round(a[0] * 1e6);
+    for (std::size_t i = 0; i < count; ++i) {
+        const double n = n0 + static_cast<double>(i);
+        ASSERT_EQ(a[i], static_cast<double>(static_cast<float>(n * 1e-6))) << i;
+        ASSERT_EQ(b[i], static_cast<double>(static_cast<float>(2.0 * n * 1e-6))) << i;
+    }
+
+    // A unit for a channel the board does not print is refused.
+    const CliResult unknown = runCli(recordBoard(link, db, 1.0) + QStringList{"--units", "c=mN"});
+    EXPECT_NE(unknown.exitCode, 0);
+    EXPECT_TRUE(unknown.err.contains(QStringLiteral("a unit is given for 'c', which the board does not print")))
+        << unknown.err.toStdString();
+}
+
+namespace {
+
+// A palpation board: the simulator's probe printing its two beams' raw
+// ADC counts and its displacement in mm, 200 lines a second.
+struct PalpationBoard {
+    devices::simulator::PalpationParameters parameters;
+    std::vector<std::string> lines;
+};
+
+PalpationBoard palpationBoard()
+{
+    PalpationBoard board;
+    auto& p = board.parameters;
+    p.sampleRate_hz = 200.0;
+    p.objectStiffness_n_per_m = 3000.0;        // the issue's phantom
+    p.pressDepths_m = {0.003, 0.006, 0.0095};  // the deepest drives the stiff beam to its limit
+    p.seed = 5;
+    devices::simulator::PalpationScenario scenario(p);
+    const std::size_t count = 60 * 200;
+    core::SampleBlock samples(3, count, 0.0, 1.0 / p.sampleRate_hz, 0);
+    scenario.generate(samples);
+    for (std::size_t i = 0; i < count; ++i) {
+        char line[96];
+        std::snprintf(line, sizeof line, "stiff:%.0f soft:%.0f d[mm]:%.4f\n", samples.channel(0)[i],
+                      samples.channel(1)[i], 1e3 * samples.channel(2)[i]);
+        board.lines.emplace_back(line);
+    }
+    return board;
+}
+
+// Counts per newton at a beam's root, from the bridge's arithmetic (half
+// bridge in bending: V/V_exc = GF·ε/2) and the beam's root strain per
+// newton, 6L/(E·w·t²): what a maker would write in the profile.
+double countsPerNewton(const core::sensors::CantileverGeometry& beam, const devices::simulator::PalpationParameters& p)
+{
+    const double strainPerNewton =
+        6.0 * beam.length_m / (beam.youngsModulus_pa * beam.width_m * beam.thickness_m * beam.thickness_m);
+    const double fullScale = std::ldexp(1.0, p.adc.bits - 1);
+    return p.trueGaugeFactor / 2.0 * strainPerNewton * p.bridge.excitation_v * p.adc.gain / p.adc.reference_v *
+           fullScale;
+}
+
+std::string geometryJson(const core::sensors::CantileverGeometry& g)
+{
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  R"({"length_m": %.17g, "width_m": %.17g, "thickness_m": %.17g, "youngs_modulus_pa": %.17g})",
+                  g.length_m, g.width_m, g.thickness_m, g.youngsModulus_pa);
+    return text;
+}
+
+std::string profileJson(const devices::simulator::PalpationParameters& p, bool withScales)
+{
+    std::string json = R"({"kind": "compliance_pair", "name": "maker probe", "high": )" + geometryJson(p.high) +
+                       R"(, "low": )" + geometryJson(p.low) +
+                       R"(, "roles": {"stiff": "stiff-beam", "soft": "soft-beam"})";
+    if (withScales) {
+        char scales[300];
+        std::snprintf(scales, sizeof scales,
+                      R"(, "channels": {"stiff": {"unit": "N", "counts_per_unit": %.17g, "full_scale": 32768},)"
+                      R"( "soft": {"unit": "N", "counts_per_unit": %.17g, "full_scale": 32768}})",
+                      countsPerNewton(p.high, p), countsPerNewton(p.low, p));
+        json += scales;
+    }
+    return json + "}";
+}
+
+}  // namespace
+
+TEST(TextBoardUnitsCli, APalpationBoardsCountsAreReadThroughItsProfilesScaleAndItsClippedPressesFlagged)
+{
+    const PalpationBoard printed = palpationBoard();
+    const auto& p = printed.parameters;
+    QTemporaryDir dir;
+    const QString link = dir.filePath(QStringLiteral("board"));
+    TextBoard board(link.toStdString(),
+                    TextBoardOptions{p.sampleRate_hz,
+                                     [&](std::uint64_t n) { return printed.lines[n % printed.lines.size()]; }, 4, 2e-3,
+                                     true});
+    ASSERT_TRUE(board.ok());
+    const QString db = dir.filePath(QStringLiteral("clinic.tactiscope"));
+    // A gauge-factor calibration of the probe's beams waits in the store:
+    // counts read through the profile's scale never go through it.
+    core::calibration::CalibrationRecord waiting;
+    waiting.kind = core::calibration::kGaugeFactorKind;
+    waiting.sensorName = core::calibration::beamSensorName("maker probe", true);
+    waiting.operatorName = "tester";
+    waiting.timestampUtc = "2026-11-20T08:00:00Z";
+    waiting.values = {{"gauge_factor", 2.2}};
+    core::storage::SessionStore(db.toStdString()).addCalibration(waiting);
+    const auto record = [&](bool withScales, const QString& seconds) {
+        const QString profile = dir.filePath(withScales ? QStringLiteral("scaled.json") : QStringLiteral("bare.json"));
+        tactiscope::testing::writeText(profile, QString::fromStdString(profileJson(p, withScales)));
+        return runCli({"record", "--port", link, "--protocol", "text", "--rate", "200", "--mode", "palpation",
+                       "--profile", profile, "--seconds", seconds, "--db", db});
+    };
+
+    // Without a scale, counts are no force: refused, naming the beam.
+    const CliResult bare = record(false, QStringLiteral("1"));
+    EXPECT_EQ(bare.exitCode, 2);
+    EXPECT_TRUE(bare.err.contains(QStringLiteral("stiff plays stiff-beam but is a plain number (no unit)")))
+        << bare.err.toStdString();
+    EXPECT_TRUE(bare.err.contains(QStringLiteral("sensor profile's \"channels\""))) << bare.err.toStdString();
+
+    const CliResult run = record(true, QStringLiteral("24"));
+    ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto id = sessionIdIn(run.out);
+    ASSERT_GT(id, 0) << run.out.toStdString();
+    EXPECT_EQ(store.channels(id)[0].descriptor.unit, "counts");  // the board's raw readings, kept as sent
+
+    // The presses the board printed in the recording, from its samples: a
+    // run of displacement beyond 0.5 mm; clipped where the stiff beam came
+    // within 1 % of the declared full scale.
+    const auto count = store.sampleCount(id);
+    const auto stiff = store.readChannel(id, 0, 0, count), depth = store.readChannel(id, 2, 0, count);
+    int presses = 0, clipped = 0;
+    bool pressing = false, atLimit = false;
+    for (std::size_t i = 0; i < count; ++i) {
+        const bool in = depth[i] > 0.5e-3;
+        if (in) atLimit = atLimit || std::abs(stiff[i]) >= 0.99 * 32768.0;
+        if (pressing && !in && i > 0) {
+            ++presses;
+            clipped += atLimit ? 1 : 0;
+        }
+        if (!in) atLimit = false;
+        pressing = in;
+    }
+    ASSERT_GE(clipped, 1);
+    ASSERT_GE(presses - clipped, 3);
+    const auto readings = store.readings(id);
+    // Every press that ended in the recording and did not clip is read (the
+    // first may have begun before it); none that clipped is.
+    EXPECT_GE(static_cast<int>(readings.size()), presses - clipped - 1);
+    EXPECT_LE(static_cast<int>(readings.size()), presses - clipped);
+    // Read through the scale as a probe's chain reads: true within their
+    // uncertainty. The presses share one zero, so a recording is one draw
+    // of its error (here all six lie 0.2–2.2 u above); the coverage of ±u
+    // over many recordings is ComplianceRangeCli's. A wrong scale would be
+    // off by far more.
+    for (const auto& reading : readings) {
+        ASSERT_TRUE(reading.standardError.has_value());
+        EXPECT_LE(std::abs(reading.value - p.objectStiffness_n_per_m), 3.0 * *reading.standardError)
+            << reading.value << " ± " << *reading.standardError;
+    }
+
+    // The calibration waiting in the store was not applied, so it is not
+    // recorded as used.
+    EXPECT_TRUE(store.calibrationsOfSession(id).empty());
+    EXPECT_TRUE(core::calibration::recordsFromJsonArray(store.session(id)->metadata.calibrationsJson).empty());
+}
