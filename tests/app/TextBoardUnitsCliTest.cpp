@@ -6,6 +6,7 @@
 // presses judged from the declared full scale and no calibration said to
 // be used that was not applied. Real pseudo-terminals, real boards'
 // timing (support/TextBoard.h).
+#include "support/BridgeArithmetic.h"
 #include "support/CliRunner.h"
 #include "support/EmulatorProcess.h"
 #include "support/TextBoard.h"
@@ -135,18 +136,6 @@ PalpationBoard palpationBoard()
     return board;
 }
 
-// Counts per newton at a beam's root, from the bridge's arithmetic (half
-// bridge in bending: V/V_exc = GF·ε/2) and the beam's root strain per
-// newton, 6L/(E·w·t²): what a maker would write in the profile.
-double countsPerNewton(const core::sensors::CantileverGeometry& beam, const devices::simulator::PalpationParameters& p)
-{
-    const double strainPerNewton =
-        6.0 * beam.length_m / (beam.youngsModulus_pa * beam.width_m * beam.thickness_m * beam.thickness_m);
-    const double fullScale = std::ldexp(1.0, p.adc.bits - 1);
-    return p.trueGaugeFactor / 2.0 * strainPerNewton * p.bridge.excitation_v * p.adc.gain / p.adc.reference_v *
-           fullScale;
-}
-
 std::string geometryJson(const core::sensors::CantileverGeometry& g)
 {
     char text[200];
@@ -166,7 +155,7 @@ std::string profileJson(const devices::simulator::PalpationParameters& p, bool w
         std::snprintf(scales, sizeof scales,
                       R"(, "channels": {"stiff": {"unit": "N", "counts_per_unit": %.17g, "full_scale": 32768},)"
                       R"( "soft": {"unit": "N", "counts_per_unit": %.17g, "full_scale": 32768}})",
-                      countsPerNewton(p.high, p), countsPerNewton(p.low, p));
+                      tactiscope::testing::countsPerNewton(p.high, p), tactiscope::testing::countsPerNewton(p.low, p));
         json += scales;
     }
     return json + "}";

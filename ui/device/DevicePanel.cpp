@@ -102,7 +102,7 @@ DevicePanel::DevicePanel(QWidget* parent)
     m_textRate->setSpecialValueText(tr("time it"));
     // A board's label may carry its unit ("a[µε]:12"); these are for the
     // plain numbers of a board one cannot change.
-    m_textUnits->setPlaceholderText(tr("as labelled, e.g. a=µε, b=µε"));
+    m_textUnits->setPlaceholderText(tr("e.g. a=µε, b=µε"));
 
     // Large buttons: this panel is used with gloves on.
     for (QPushButton* button : {m_connect, m_disconnect}) button->setMinimumHeight(40);

@@ -16,6 +16,7 @@
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
 
+#include "support/BridgeArithmetic.h"
 #include "support/LiveUnit.h"
 #include "support/RelabelledSource.h"
 #include "support/TempDirectory.h"
@@ -271,15 +272,10 @@ TEST_F(LiveListsTest, AProfilesRolesMakeABoardAPalpationProbe)
 
     auto probe = std::get<core::sensors::CompliancePairProfile>(*core::sensors::builtInProfile(core::Mode::Palpation));
     probe.roles = core::parseRoleAssignment("ch1=stiff-beam,ch2=soft-beam,ch3=displacement,ch9=capacitance");
-    // The counts' scale, as the maker writes it from the bridge's arithmetic
-    // (half bridge: V/V_exc = GF·ε/2) and the beam's root strain per newton
-    // 6L/(E·w·t²), in the simulated probe's true gauge factor.
+    // The counts' scale, as the maker writes it for the simulated probe.
     const devices::simulator::PalpationParameters simulated;
     const auto countsPerNewton = [&](const core::sensors::CantileverGeometry& beam) {
-        const double strainPerNewton =
-            6.0 * beam.length_m / (beam.youngsModulus_pa * beam.width_m * beam.thickness_m * beam.thickness_m);
-        return simulated.trueGaugeFactor / 2.0 * strainPerNewton * simulated.bridge.excitation_v * simulated.adc.gain /
-               simulated.adc.reference_v * std::ldexp(1.0, simulated.adc.bits - 1);
+        return tactiscope::testing::countsPerNewton(beam, simulated);
     };
     probe.channels = {{"ch1", {"N", countsPerNewton(probe.high), 32768.0}},
                       {"ch2", {"N", countsPerNewton(probe.low), 32768.0}}};
