@@ -71,7 +71,14 @@ protected:
         s.sessions = sessions;
         return s;
     }
-    std::string m_store = file("t.tactiscope");
+    // In the test's own folder, which SetUp makes: a member initialiser
+    // ran before it and named a file in the working directory.
+    void SetUp() override
+    {
+        TempDirectoryTest::SetUp();
+        m_store = file("t.tactiscope");
+    }
+    std::string m_store;
 
     static std::vector<double> range(std::uint64_t first, std::uint64_t end)
     {
