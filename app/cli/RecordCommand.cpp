@@ -33,6 +33,14 @@ namespace {
 
 constexpr int kDefaultBaud = 921600;
 
+// "DEVICE/CHANNEL" split at its first '/'; none when either part is empty.
+std::optional<std::pair<std::string, std::string>> deviceAndChannel(const std::string& key)
+{
+    const auto slash = key.find('/');
+    if (slash == std::string::npos || slash == 0 || slash + 1 == key.size()) return std::nullopt;
+    return std::pair{key.substr(0, slash), key.substr(slash + 1)};
+}
+
 // Each port's device opened and added to the pipeline under its name (the
 // one given, else its model's, unlike every other); with several, each
 // channel's role given as DEVICE/CHANNEL. An exit code when one cannot be.
@@ -43,18 +51,20 @@ std::optional<int> addDevices(devices::session::LivePipeline& pipeline, const st
     const bool several = ports.size() > 1;
     // Units are the board's own, given before it is opened: with several,
     // by the name its port is given (NAME=PATH).
-    std::map<std::string, core::UnitAssignment> unitsOf;
+    std::map<std::string, core::UnitAssignment> unitsOf;  // by the port's name; "" for the only device
     for (const auto& [key, unit] : units) {
-        const auto slash = key.find('/');
-        const std::string device = several && slash != std::string::npos ? key.substr(0, slash) : std::string();
-        if (several && (slash == std::string::npos || slash == 0 ||
-                        std::ranges::none_of(ports, [&](const ProbePortArgument& p) { return p.name == device; }))) {
+        if (!several) {
+            unitsOf[""][key] = unit;
+            continue;
+        }
+        const auto named = deviceAndChannel(key);
+        if (!named || std::ranges::none_of(ports, [&](const ProbePortArgument& p) { return p.name == named->first; })) {
             printError(QStringLiteral("--units: with several devices, name each channel as DEVICE/CHANNEL, DEVICE "
                                       "being a name given to its port (--port DEVICE=PATH) ('%1')")
                            .arg(toQString(key)));
             return kExitUsage;
         }
-        unitsOf[device][several ? key.substr(slash + 1) : key] = unit;
+        unitsOf[named->first][named->second] = unit;
     }
     std::map<std::string, core::RoleAssignment> rolesOf;  // by device name; "" for the only device
     for (const auto& [key, role] : roles) {
@@ -62,13 +72,13 @@ std::optional<int> addDevices(devices::session::LivePipeline& pipeline, const st
             rolesOf[""][key] = role;
             continue;
         }
-        const auto slash = key.find('/');
-        if (slash == std::string::npos || slash == 0 || slash + 1 == key.size()) {
+        const auto named = deviceAndChannel(key);
+        if (!named) {
             printError(QStringLiteral("--roles: with several devices, name each channel as DEVICE/CHANNEL ('%1')")
                            .arg(toQString(key)));
             return kExitUsage;
         }
-        rolesOf[key.substr(0, slash)][key.substr(slash + 1)] = role;
+        rolesOf[named->first][named->second] = role;
     }
     std::vector<std::unique_ptr<devices::ReconnectingSource>> sources;
     for (const ProbePortArgument& port : ports) {

@@ -147,9 +147,11 @@ PalpationForces::PalpationForces(const std::vector<ChannelDescriptor>& channels,
         Input in;
         in.channel = c;
         in.kind = channels[c].kind;
-        if (!isCounts(channels[c].unit)) return in;
-        if (const auto scale = settings.scales.find(channels[c].name); scale != settings.scales.end()) {
-            // The profile's scale: its unit is a strain or a force (checked when the profile was read).
+        const BeamInput how = inputOf(channels[c], settings.scales);
+        if (how == BeamInput::Strain || how == BeamInput::Force) return in;
+        if (how == BeamInput::ProfileScale) {
+            // Its unit is a strain or a force (checked when the profile was read).
+            const auto scale = settings.scales.find(channels[c].name);
             const auto unit = physicalUnit(scale->second.unit);
             in.kind = unit->kind;
             in.unitsPerCount = unit->factor / scale->second.countsPerUnit;

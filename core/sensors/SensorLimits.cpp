@@ -39,10 +39,11 @@ std::vector<SensorLimit> complianceLimits(const CompliancePairProfile& probe,
         std::ranges::find_if(channels, [](const ChannelDescriptor& c) { return c.role == ChannelRole::StiffBeam; });
     if (stiff == channels.end() || !isCounts(stiff->unit)) return {};
     // The profile's declared range for a board's counts, else the probe's converter's.
-    const auto scale = probe.channels.find(stiff->name);
-    if (scale != probe.channels.end() && !scale->second.fullScale_counts) return {};
-    const double fullScale = scale != probe.channels.end() ? *scale->second.fullScale_counts
-                                                           : straingauge::StrainGaugeChain(adc, {}).fullScaleCounts();
+    const auto found = probe.channels.find(stiff->name);
+    const ChannelScale* declared = found != probe.channels.end() ? &found->second : nullptr;
+    if (declared && !declared->fullScale_counts) return {};
+    const double fullScale =
+        declared ? *declared->fullScale_counts : straingauge::StrainGaugeChain(adc, {}).fullScaleCounts();
     const std::string basis = "the stiff beam's ADC: 90 % of full scale (warning), clipped at 99 % (critical)";
     // A bipolar ADC clips at either end: one window the counts must stay
     // in; so does a declared range, judged on |counts| as a probe's is.
@@ -50,7 +51,7 @@ std::vector<SensorLimit> complianceLimits(const CompliancePairProfile& probe,
     const double critical = std::floor(kAdcCriticalFraction * fullScale);
     trigger::LimitSpec counts;
     counts.quantity = stiff->name;
-    if (adc.bipolar || scale != probe.channels.end()) {
+    if (adc.bipolar || declared) {
         counts.side = trigger::LimitSide::Outside;
         counts.warning = trigger::LimitLevel(-warning, warning);
         counts.critical = trigger::LimitLevel(-critical, critical);

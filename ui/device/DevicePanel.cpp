@@ -319,11 +319,9 @@ std::optional<SourceRequest> DevicePanel::request() const
     request.options.protocol = static_cast<devices::WireProtocol>(m_protocol->currentData().toInt());
     if (m_textRate->value() > 0.0) request.options.textRate_hz = m_textRate->value();
     if (request.options.protocol == devices::WireProtocol::Text) {
-        try {
-            request.options.textUnits = core::parseUnitAssignment(m_textUnits->text().toStdString());
-        } catch (const std::invalid_argument&) {
-            return std::nullopt;  // the field says why (updateEnabled)
-        }
+        const auto units = givenUnits();
+        if (!units) return std::nullopt;  // the field says why (updateEnabled)
+        request.options.textUnits = *units;
     }
     request.baud = m_baud->currentText().toInt();
     if (request.baud <= 0) request.baud = kDefaultBaud;
@@ -352,6 +350,16 @@ std::optional<SourceKind> DevicePanel::selectedKind() const
     return static_cast<SourceKind>(kind.toInt());
 }
 
+std::optional<core::UnitAssignment> DevicePanel::givenUnits(QString* problem) const
+{
+    try {
+        return core::parseUnitAssignment(m_textUnits->text().toStdString());
+    } catch (const std::invalid_argument& e) {
+        if (problem) *problem = QString::fromStdString(e.what());
+        return std::nullopt;
+    }
+}
+
 void DevicePanel::updateEnabled()
 {
     // The simulator has no link; the emulator has a protocol but no port.
@@ -365,11 +373,7 @@ void DevicePanel::updateEnabled()
     m_textRate->setEnabled(!simulator && text);
     m_textUnits->setEnabled(!simulator && text);
     QString unitsProblem;
-    try {
-        core::parseUnitAssignment(m_textUnits->text().toStdString());
-    } catch (const std::invalid_argument& e) {
-        unitsProblem = QString::fromStdString(e.what());
-    }
+    givenUnits(&unitsProblem);
     const QString help = tr("Units of a text board's channels by name: NAME=UNIT, … Strain (strain, µε), force "
                             "(N, mN), length (m, mm) and capacitance (F, pF) feed the modes; a channel with no unit "
                             "is a plain number, recorded as it is.");

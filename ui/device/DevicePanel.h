@@ -9,6 +9,7 @@
 // (watch()), and the panel shows what it says.
 #pragma once
 
+#include "core/UnitScale.h"
 #include "devices/DeviceDiscovery.h"
 
 #include <QWidget>
@@ -102,6 +103,9 @@ private:
     void updateEnabled();
     void requestConnect();
     QLabel* addCounter(QFormLayout* form, const QString& caption, const char* objectName);
+
+    // The Units field's list; none, and why in `problem`, when it cannot be read.
+    std::optional<core::UnitAssignment> givenUnits(QString* problem = nullptr) const;
 
     std::vector<devices::DiscoveredDevice> m_discovered;
     QTreeWidget* m_sources = nullptr;
