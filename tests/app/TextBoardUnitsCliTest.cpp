@@ -21,6 +21,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -244,4 +245,90 @@ TEST(TextBoardUnitsCli, APalpationBoardsCountsAreReadThroughItsProfilesScaleAndI
     // recorded as used.
     EXPECT_TRUE(store.calibrationsOfSession(id).empty());
     EXPECT_TRUE(core::calibration::recordsFromJsonArray(store.session(id)->metadata.calibrationsJson).empty());
+}
+
+namespace {
+
+// A force board printing mN: a ramp 0…4.9 mN repeating each second.
+std::string forceLine(std::uint64_t n)
+{
+    return "force:" + std::to_string(0.1 * static_cast<double>(n % 50)) + "\n";
+}
+
+}  // namespace
+
+// The seams: units given per device in a session of several, and a
+// trigger and limits on a board's channel in the unit it was given (mN),
+// read in SI (N) as a probe's are.
+TEST(TextBoardUnitsCli, EachDeviceOfASessionTakesItsOwnUnitsAndATriggerAndLimitsReadThemInSi)
+{
+    QTemporaryDir dir;
+    const QString left = dir.filePath(QStringLiteral("left")), right = dir.filePath(QStringLiteral("right"));
+    TextBoard leftBoard(left.toStdString(), TextBoardOptions{50.0, forceLine, 1, 1e-3, false});
+    TextBoard rightBoard(right.toStdString(), TextBoardOptions{50.0, plainLine, 1, 1e-3, false});
+    ASSERT_TRUE(leftBoard.ok() && rightBoard.ok());
+    const QString db = dir.filePath(QStringLiteral("bench.tactiscope"));
+
+    const CliResult unnamed = runCli({"record", "--port", "l=" + left, "--port", "r=" + right, "--protocol", "text",
+                                      "--rate", "50", "--seconds", "1", "--db", db, "--units", "force=mN"});
+    EXPECT_EQ(unnamed.exitCode, 2);
+    EXPECT_TRUE(unnamed.err.contains(QStringLiteral("--units: with several devices, name each channel as "
+                                                    "DEVICE/CHANNEL")))
+        << unnamed.err.toStdString();
+
+    const CliResult both = runCli({"record", "--port", "l=" + left, "--port", "r=" + right, "--protocol", "text",
+                                   "--rate", "50", "--seconds", "1.5", "--db", db, "--units", "l/force=mN,r/a=µε"});
+    ASSERT_EQ(both.exitCode, 0) << both.err.toStdString();
+    {
+        core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+        const auto parts = store.parts(sessionIdIn(both.out));
+        ASSERT_EQ(parts.size(), 2u);
+        for (const auto& part : parts) {
+            const auto channels = store.channels(part.id);
+            if (part.deviceName == "l") {
+                EXPECT_EQ(channels[0].descriptor, (core::ChannelDescriptor{"force", "N", core::ChannelKind::Force}));
+            } else {
+                EXPECT_EQ(channels[0].descriptor, (core::ChannelDescriptor{"a", "", core::ChannelKind::Strain}));
+                EXPECT_EQ(channels[1].descriptor, (core::ChannelDescriptor{"b", "", core::ChannelKind::Other}));
+            }
+        }
+    }
+
+    // A trigger at 3 mN and a critical limit at 4 mN, both written in N.
+    const QString triggered = dir.filePath(QStringLiteral("triggered.tactiscope"));
+    const CliResult watched = runCli({"record",
+                                      "--port",
+                                      left,
+                                      "--protocol",
+                                      "text",
+                                      "--rate",
+                                      "50",
+                                      "--seconds",
+                                      "4",
+                                      "--db",
+                                      triggered,
+                                      "--units",
+                                      "force=mN",
+                                      "--trigger",
+                                      "force>0.003",
+                                      "--pre",
+                                      "0.1",
+                                      "--post",
+                                      "0.1",
+                                      "--sessions",
+                                      "1",
+                                      "--limit",
+                                      "force>warning:0.0035,critical:0.004"});
+    ASSERT_EQ(watched.exitCode, 0) << watched.err.toStdString();
+    core::storage::SessionStore store(triggered.toStdString(), core::storage::Database::Access::ReadOnly);
+    ASSERT_EQ(store.sessions().size(), 1u);
+    const auto id = store.sessions().front().id;
+    const auto force = store.readChannel(id, 0, 0, store.sampleCount(id));
+    ASSERT_FALSE(force.empty());
+    EXPECT_GT(*std::ranges::max_element(force), 0.003);  // the trigger's crossing is in it, in N
+    EXPECT_LT(*std::ranges::max_element(force), 0.005);
+    std::size_t critical = 0;
+    for (const auto& event : store.events(id))
+        if (event.kind == core::EventKind::Alarm && event.note.find("critical") != std::string::npos) ++critical;
+    EXPECT_GE(critical, 1u);
 }
