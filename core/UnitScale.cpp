@@ -73,6 +73,9 @@ UnitAssignment parseUnitAssignment(std::string_view text)
     UnitAssignment units;
     for (auto& [name, unit] : text::parseNamedList(text, "NAME=UNIT (e.g. a=µε)", "unit")) {
         if (unit.empty()) throw std::invalid_argument("channel '" + name + "' is given no unit");
+        // "force=mN;pos=mm": one item, whose unit would swallow the next.
+        if (unit.find_first_of("=;") != std::string::npos)
+            throw std::invalid_argument("'" + unit + "' is not a unit (separate the items with ',')");
         units.emplace(std::move(name), std::move(unit));
     }
     return units;

@@ -58,10 +58,15 @@ std::optional<int> addDevices(devices::session::LivePipeline& pipeline, const st
             continue;
         }
         const auto named = deviceAndChannel(key);
-        if (!named || std::ranges::none_of(ports, [&](const ProbePortArgument& p) { return p.name == named->first; })) {
+        if (!named) {
             printError(QStringLiteral("--units: with several devices, name each channel as DEVICE/CHANNEL, DEVICE "
                                       "being a name given to its port (--port DEVICE=PATH) ('%1')")
                            .arg(toQString(key)));
+            return kExitUsage;
+        }
+        if (std::ranges::none_of(ports, [&](const ProbePortArgument& p) { return p.name == named->first; })) {
+            printError(QStringLiteral("--units: no port is named '%1' (give it as --port %1=PATH)")
+                           .arg(toQString(named->first)));
             return kExitUsage;
         }
         unitsOf[named->first][named->second] = unit;

@@ -275,6 +275,11 @@ TEST(TextBoardUnitsCli, EachDeviceOfASessionTakesItsOwnUnitsAndATriggerAndLimits
     EXPECT_TRUE(unnamed.err.contains(QStringLiteral("--units: with several devices, name each channel as "
                                                     "DEVICE/CHANNEL")))
         << unnamed.err.toStdString();
+    const CliResult noSuchDevice = runCli({"record", "--port", "l=" + left, "--port", "r=" + right, "--protocol",
+                                           "text", "--rate", "50", "--seconds", "1", "--db", db, "--units", "c/a=mN"});
+    EXPECT_EQ(noSuchDevice.exitCode, 2);
+    EXPECT_TRUE(noSuchDevice.err.contains(QStringLiteral("--units: no port is named 'c'")))
+        << noSuchDevice.err.toStdString();
 
     const CliResult both = runCli({"record", "--port", "l=" + left, "--port", "r=" + right, "--protocol", "text",
                                    "--rate", "50", "--seconds", "1.5", "--db", db, "--units", "l/force=mN,r/a=µε"});

@@ -54,4 +54,5 @@ TEST(UnitScale, TheUnitsListNamesEachChannelOnceWithAUnit)
     EXPECT_EQ(message("a"), "'a' is not NAME=UNIT (e.g. a=µε)");
     EXPECT_EQ(message("a="), "channel 'a' is given no unit");
     EXPECT_EQ(message("a=mN,a=N"), "channel 'a' is given two units");
+    EXPECT_EQ(message("force=mN;pos=mm"), "'mN;pos=mm' is not a unit (separate the items with ',')");
 }
