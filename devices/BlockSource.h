@@ -102,6 +102,12 @@ public:
     // time (core/timing/ClockAlignment.h); none from a source whose block
     // times are the host's own or before enough blocks. Any thread.
     virtual std::optional<core::timing::ClockMapping> hostClock() const { return std::nullopt; }
+    // For a recording begun before the stream: the host instant (steady
+    // clock, seconds) its stream begins at, by hostClock(). What it
+    // delivers that was due earlier (what waited in the port, lines a board
+    // catches up on once it is read) belongs to no session. None: from its
+    // first block. Any thread.
+    virtual std::optional<double> streamStart_host_s() const { return std::nullopt; }
 };
 
 }  // namespace tactiscope::devices

@@ -25,6 +25,7 @@ PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const Po
       m_options(options)
 {
     discardWaiting();
+    m_streamStart_s = steadySeconds();
     if (options.protocol == WireProtocol::Text) {
         m_text.emplace(options.textRate_hz, options.textUnits);
         m_drift = DriftWatch(DriftWatch::Subject::TextLines);
@@ -66,6 +67,7 @@ PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const Po
                                             channelNames(m_text->channels()));
         m_channels = m_text->channels();
         m_rate_hz = *m_text->sampleRate_hz();
+        m_streamStart_s = steadySeconds();
     } else {
         m_channels = m_binary.channels();
         m_rate_hz = *m_binary.sampleRate_hz();
@@ -205,7 +207,7 @@ void PortSource::pump(std::chrono::milliseconds timeout)
                              const std::vector<double>& arrivals) {
         if (const auto breaks = counters.deviceRestarts + counters.sequenceFaults; breaks != m_clockBreaks) {
             m_clockBreaks = breaks;
-            m_clock = {};
+            m_clock = core::timing::ClockAlignment();
         }
         for (std::size_t i = 0; i < blocks.size(); ++i) {
             auto& b = blocks[i];

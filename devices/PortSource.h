@@ -68,6 +68,10 @@ public:
     // where the device's clock stops placing the samples (a restart, a
     // sequence fault). Any thread.
     std::optional<core::timing::ClockMapping> hostClock() const override;
+    // When the device was asked to start (what waited in the port read
+    // away), or, for a text board, when its rate was known: a recording
+    // begins once it is (protocol/TextStream.h).
+    std::optional<double> streamStart_host_s() const override { return m_streamStart_s; }
     // Host steady-clock time (seconds) of a block time; the block time
     // itself before the mapping is known.
     double hostTime_s(double blockTime_s) const;
@@ -103,6 +107,7 @@ private:
     std::deque<std::uint8_t> m_recent;     // the last kRecentBytes received
     std::optional<protocol::DeviceInfo> m_info;
     core::timing::ClockAlignment m_clock;
+    double m_streamStart_s = 0.0;
     std::uint64_t m_clockBreaks = 0;  // restarts and sequence faults the mapping began again after
     DriftWatch m_drift;
 };

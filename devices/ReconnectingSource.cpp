@@ -182,6 +182,12 @@ std::optional<core::timing::ClockMapping> ReconnectingSource::hostClock() const
     return mapping;
 }
 
+std::optional<double> ReconnectingSource::streamStart_host_s() const
+{
+    const std::lock_guard lock(m_countersMutex);
+    return m_source ? m_source->streamStart_host_s() : std::nullopt;
+}
+
 bool ReconnectingSource::textProtocol() const
 {
     const std::lock_guard lock(m_countersMutex);

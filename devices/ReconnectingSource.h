@@ -60,6 +60,7 @@ public:
     std::optional<double> rateUncertainty_hz() const override { return m_rateU_hz; }
     // The current connection's, in the stream's time.
     std::optional<core::timing::ClockMapping> hostClock() const override;
+    std::optional<double> streamStart_host_s() const override;
 
     DeviceState state() const { return m_state; }  // any thread
     std::uint64_t reconnections() const { return m_reconnections; }

@@ -1,5 +1,7 @@
-// RecordingTap: a mutex around the recorder pointer; Recorder::consume only
-// queues, so holding it while forwarding costs the acquisition nothing.
+// RecordingTap: a mutex around the recorder pointer, the blocks held while
+// the start is not known, and the cut at it; Recorder::consume only
+// queues, so holding the mutex while forwarding costs the acquisition
+// nothing.
 #include "core/storage/RecordingTap.h"
 
 #include "core/SampleBlock.h"
@@ -24,16 +26,21 @@ SampleBlock tailOf(const SampleBlock& block, std::size_t first)
 
 }  // namespace
 
-void RecordingTap::attach(std::shared_ptr<Recorder> recorder, std::optional<double> from_s)
+void RecordingTap::attach(std::shared_ptr<Recorder> recorder, RecordingStartFinder start)
 {
     const std::lock_guard lock(m_mutex);
     m_recorder = std::move(recorder);
-    m_from_s = from_s;
+    m_finder = std::move(start);
+    m_held.clear();
+    m_from_s.reset();
 }
 
 std::shared_ptr<Recorder> RecordingTap::detach()
 {
     const std::lock_guard lock(m_mutex);
+    if (m_recorder && m_finder && !m_held.empty()) release(m_finder(m_held.back().endTime_s(), true));
+    m_finder = nullptr;
+    m_held.clear();
     return std::exchange(m_recorder, nullptr);
 }
 
@@ -41,6 +48,25 @@ void RecordingTap::consume(const SampleBlock& block)
 {
     const std::lock_guard lock(m_mutex);
     if (!m_recorder) return;
+    if (!m_finder) {
+        record(block);
+        return;
+    }
+    m_held.push_back(block);
+    const bool mustAnswer = block.endTime_s() - m_held.front().t0_s() >= kMostHeld_s;
+    if (const auto start = m_finder(block.endTime_s(), mustAnswer); start.known || mustAnswer) release(start);
+}
+
+void RecordingTap::release(const RecordingStart& start)
+{
+    m_finder = nullptr;
+    m_from_s = start.from_s;
+    for (const auto& block : m_held) record(block);
+    m_held.clear();
+}
+
+void RecordingTap::record(const SampleBlock& block)
+{
     if (m_from_s) {
         // A sample at the start instant belongs in, whatever the rounding.
         const double from_s = *m_from_s - 1e-6 * block.dt_s();

@@ -3,31 +3,66 @@
 // and stops at any moment, while sinks can only be added before the
 // acquisition starts. attach() and detach() come from the GUI thread,
 // consume() from the acquisition thread.
+//
+// A recording begins at an instant; where that lies on the stream's block
+// time the source's clock says, and a clock may need the stream that
+// follows to say it (a board's lines that waited in its port look, until
+// later lines arrive on time, like the latest ones). The tap holds the
+// blocks until the start is known, then records from it.
 #pragma once
 
 #include "core/BlockSink.h"
+#include "core/SampleBlock.h"
 #include "core/storage/Recorder.h"
 
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <vector>
 
 namespace tactiscope::core::storage {
 
+// Where a recording begins: not known yet, at a block time, or from the
+// first block that reaches it.
+struct RecordingStart {
+    bool known = false;
+    std::optional<double> from_s;
+
+    static RecordingStart notYet() { return {}; }
+    static RecordingStart at(double from_s) { return {true, from_s}; }
+    static RecordingStart fromFirstBlock() { return {true, std::nullopt}; }
+};
+
+// Asked as blocks come while the start is not known, with the end time of
+// the newest; `mustAnswer` when the recording stops or the blocks held
+// reach kMostHeld_s (then a start that is not known is taken as the first
+// block's).
+using RecordingStartFinder = std::function<RecordingStart(double newestEnd_s, bool mustAnswer)>;
+
 class RecordingTap final : public BlockSink {
 public:
-    // From the sample at block time `from_s` on, when given: what the
-    // device measured before the recording began (a backlog in the port, a
-    // text board's lines held while its rate was timed) is not recorded.
-    void attach(std::shared_ptr<Recorder> recorder, std::optional<double> from_s = std::nullopt);
-    // Returns the recorder that was attached; no block reaches it afterwards.
+    // The blocks a start not yet known may hold back, in their own time.
+    static constexpr double kMostHeld_s = 10.0;
+
+    // From the first block when no finder is given.
+    void attach(std::shared_ptr<Recorder> recorder, RecordingStartFinder start = {});
+    // Returns the recorder that was attached, with what was held for it;
+    // no block reaches it afterwards.
     std::shared_ptr<Recorder> detach();
     void consume(const SampleBlock& block) override;
 
 private:
+    // Records the blocks held, from `start` on (and later blocks too, until
+    // one reaches it).
+    void release(const RecordingStart& start);
+    void record(const SampleBlock& block);
+
     std::mutex m_mutex;
     std::shared_ptr<Recorder> m_recorder;
-    std::optional<double> m_from_s;  // until a block reaches it
+    RecordingStartFinder m_finder;    // until the start is known
+    std::vector<SampleBlock> m_held;  // meanwhile
+    std::optional<double> m_from_s;   // until a block reaches it
 };
 
 }  // namespace tactiscope::core::storage

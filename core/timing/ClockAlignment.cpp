@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace tactiscope::core::timing {
@@ -17,6 +18,45 @@ namespace {
 // second or more of frames come in (tests/core/timing/ClockAlignmentTest).
 constexpr double kMostScatter = 30.0;
 constexpr double kMostBelow = 4.0;
+// No clock a device runs on is this far off the host's (a ceramic
+// resonator is within 0.5 %, an uncalibrated RC oscillator a few percent);
+// and frames this much later than that allows were held up.
+constexpr double kMostDrift = 0.05;
+constexpr double kHeldUp_s = 0.1;
+
+// The bins from `first` on.
+struct Bins {
+    const std::deque<ClockAlignment::Bin>& all;
+    std::size_t first = 0;
+
+    std::size_t size() const { return all.size() - first; }
+    const ClockAlignment::Bin& operator[](std::size_t i) const { return all[first + i]; }
+    const ClockAlignment::Bin& front() const { return all[first]; }
+    const ClockAlignment::Bin& back() const { return all.back(); }
+    auto begin() const { return all.begin() + static_cast<std::ptrdiff_t>(first); }
+    auto end() const { return all.end(); }
+};
+
+// The bins from the first whose fastest frame was not held up. A frame
+// was held up when a later one came through faster by more than any
+// clock's drift (about the one expected) explains: a port's backlog read
+// at once, a board catching up on what it could not send while nobody
+// read. At the start of the window nothing earlier holds the floor down,
+// and their lags, falling a period per period, would tilt the hull's
+// line; later on they lie above the floor and do no harm.
+Bins onTime(const std::deque<ClockAlignment::Bin>& bins, double expectedDrift)
+{
+    const auto bound = [expectedDrift](const ClockAlignment::Point& p) {
+        return p.lag_s + (kMostDrift - expectedDrift) * p.device_s;
+    };
+    // The least bound over the bins after each.
+    std::vector<double> leastAfter(bins.size(), std::numeric_limits<double>::infinity());
+    for (std::size_t i = bins.size() - 1; i-- > 0;)
+        leastAfter[i] = std::min(leastAfter[i + 1], bound(bins[i + 1].fastest[0]));
+    std::size_t first = 0;
+    while (first + 2 < bins.size() && bound(bins[first].fastest[0]) > leastAfter[first] + kHeldUp_s) ++first;
+    return {bins, first};
+}
 
 struct Line {
     double x0, y0, slope;  // y = y0 + slope·(x − x0)
@@ -24,7 +64,7 @@ struct Line {
 };
 
 // The lower hull's edge over the fastest pairs' mean device time.
-Line hullLine(const std::deque<ClockAlignment::Bin>& bins, double& meanX)
+Line hullLine(const Bins& bins, double& meanX)
 {
     const auto point = [&](std::size_t i) { return bins[i].fastest[0]; };
     const double x0 = point(0).device_s, y0 = point(0).lag_s;
@@ -63,7 +103,7 @@ struct FloorPoint {
 // inverse of the delays' density at their floor: of n exponential
 // spacings, the (q+1)-th gap is 1/((n−q−1)·density) on average. False
 // when a segment holds too few frames.
-bool floorPoints(const std::deque<ClockAlignment::Bin>& bins, const Line& hull, std::vector<FloorPoint>& points,
+bool floorPoints(const Bins& bins, const Line& hull, std::vector<FloorPoint>& points,
                  std::vector<double>& inverseDensities)
 {
     std::vector<FloorPoint> candidates;
@@ -97,7 +137,7 @@ bool floorPoints(const std::deque<ClockAlignment::Bin>& bins, const Line& hull, 
 // than kMostBelow of its uncertainty there: no floor can, so the points it
 // rests on were not random draws above it (a delivery locked to a poll,
 // whose segments' fastest fall wherever the beat leaves them).
-bool floorAboveFastest(const std::deque<ClockAlignment::Bin>& bins, const ClockMapping& floor)
+bool floorAboveFastest(const Bins& bins, const ClockMapping& floor)
 {
     for (const auto& bin : bins) {
         const auto& p = bin.fastest[0];
@@ -175,18 +215,19 @@ void ClockAlignment::add(double device_s, double arrival_s)
 std::optional<ClockMapping> ClockAlignment::mapping() const
 {
     if (m_bins.size() < 2) return std::nullopt;
+    const Bins bins = onTime(m_bins, m_expectedDrift);
     ClockMapping mapping;  // the hull's, and no uncertainty
     double meanX = 0.0;
-    const Line hull = hullLine(m_bins, meanX);
+    const Line hull = hullLine(bins, meanX);
     mapping.reference_s = meanX;
     mapping.offset_s = hull.at(meanX);
     mapping.drift = hull.slope;
-    mapping.span_s = m_bins.back().fastest[0].device_s - m_bins.front().fastest[0].device_s;
+    mapping.span_s = bins.back().fastest[0].device_s - bins.front().fastest[0].device_s;
     mapping.pairs = m_pairs;
 
     std::vector<FloorPoint> points;
     std::vector<double> gaps;
-    if (!floorPoints(m_bins, hull, points, gaps)) return mapping;
+    if (!floorPoints(bins, hull, points, gaps)) return mapping;
     double inverseDensity = 0.0;
     for (const double g : gaps) inverseDensity += g / static_cast<double>(gaps.size());
     // The fastest of n lies above the floor by 1/(n·density) on average,
@@ -222,7 +263,7 @@ std::optional<ClockMapping> ClockAlignment::mapping() const
     floor.drift = hull.slope + slope;
     floor.offset_u_s = std::sqrt(offsetVariance);
     floor.drift_u = std::sqrt(slopeVariance);
-    if (inverseDensity > 0.0 && scatter <= kMostScatter && !floorAboveFastest(m_bins, floor)) return floor;
+    if (inverseDensity > 0.0 && scatter <= kMostScatter && !floorAboveFastest(bins, floor)) return floor;
     // Not sharp: the floor lies between the hull's line and this one.
     // Their difference, meanY + slope·(t − meanT), bounds it; as the
     // half-width of a uniform distribution its standard uncertainty is

@@ -25,6 +25,11 @@
 //     uncertainty is a bound, the two lines' difference taken as the
 //     half-width of a uniform distribution (a GUM type B evaluation).
 //
+// Frames held up at the start of the window (a port's backlog read at
+// once, a board catching up on lines it could not send while nobody read)
+// are set aside first: with nothing earlier to hold the floor down, their
+// lags, falling a period per period, would tilt the hull's line.
+//
 // What it gives is the arrival floor: the device's instant plus the
 // link's minimum delay, which no arrival can tell apart from the offset.
 // Two devices on like links (the same kind of port) are aligned to within
@@ -88,6 +93,13 @@ inline constexpr std::size_t kClockFramesPerSegment = 20;
 
 class ClockAlignment {
 public:
+    // `expectedDrift`: a device axis known to run off the host's clock
+    // (one stretched on purpose); frames are held up against it.
+    explicit ClockAlignment(double expectedDrift = 0.0)
+        : m_expectedDrift(expectedDrift)
+    {
+    }
+
     // One frame's device stamp and host arrival, in seconds; the device's
     // stamps increase (a restart is a new ClockAlignment). Non-finite
     // values are ignored.
@@ -114,6 +126,7 @@ public:
 private:
     std::deque<Bin> m_bins;
     std::size_t m_pairs = 0;
+    double m_expectedDrift = 0.0;
 };
 
 }  // namespace tactiscope::core::timing

@@ -109,7 +109,7 @@ std::optional<LineRateEstimate> LineRate::fromArrivals() const
     const double stretch =
         std::max(1.0, 1.2 * static_cast<double>(core::timing::kClockSegments) * core::timing::kClockBin_s / span_s);
     const double step_s = stretch * span_s / static_cast<double>(arrivals.size() - 1);
-    core::timing::ClockAlignment alignment;
+    core::timing::ClockAlignment alignment(1.0 / stretch - 1.0);
     for (std::size_t i = 0; i < arrivals.size(); ++i) alignment.add(static_cast<double>(i) * step_s, arrivals[i]);
     const auto mapping = alignment.mapping();
     if (!mapping) return std::nullopt;

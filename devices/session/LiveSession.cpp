@@ -25,6 +25,10 @@
 namespace tactiscope::devices::session {
 namespace {
 
+// How far past a recording's start instant a clock mapping still learning
+// the link must have placed the stream before the start is placed by it.
+constexpr double kStartSettles_s = 1.0;
+
 // The lists' generations are numbered across every live session of the
 // process: a view bound to another device's session (a new connection)
 // never takes its lists for the ones it has drawn.
@@ -144,6 +148,7 @@ LiveSession::~LiveSession()
 void LiveSession::start()
 {
     m_acquisition->start();
+    m_started = true;
 }
 
 core::Mode LiveSession::declaredMode() const
@@ -183,7 +188,7 @@ std::optional<std::string> LiveSession::startRecording(const core::storage::Sess
     if (m_trigger) return "the armed trigger starts the recordings; disarm it first";
     m_part = m_options.partOf;
     if (auto error = beginRecording(request)) return error;
-    m_tap->attach(m_recorder, sourceTimeNow_s());
+    m_tap->attach(m_recorder, startsAt(steadySeconds()));
     return std::nullopt;
 }
 
@@ -197,19 +202,38 @@ std::optional<std::string> LiveSession::startRecordingPart(const core::storage::
         m_part.reset();
         return error;
     }
-    m_tap->attach(m_recorder, sourceTimeNow_s());
+    m_tap->attach(m_recorder, startsAt(part.start_host_s));  // every part from the session's instant
     return std::nullopt;
 }
 
-// The source's block time of this instant, by its clock mapping: a
-// recording begins there. None while the mapping is not known, or is
-// no clock (a mapping fitted on a burst may have any slope).
-std::optional<double> LiveSession::sourceTimeNow_s() const
+// A recording begins at a host instant (or, begun before the device
+// streams, where its source's stream begins; from its first block when it
+// says none): on the source's block time where its clock mapping places it. A mapping that states its uncertainty (or
+// is exact) places it at once. One still learning the link may rest on
+// lines that waited in the port or that a board caught up on once it was
+// opened (sent in a burst, their lags fall a period per period): it is
+// trusted once it has placed the stream a second past the instant, which
+// puts a second of lines on time under it (core/timing/ClockAlignment). A
+// mapping that is no clock (steeper than any clock drifts) places nothing;
+// a source with none records from its first block.
+core::storage::RecordingStartFinder LiveSession::startsAt(double host_s) const
 {
-    const auto clock = source().hostClock();
-    if (!clock || !(std::abs(clock->drift) < 0.1)) return std::nullopt;
-    const double now_s = clock->device_s(steadySeconds());
-    return std::isfinite(now_s) ? std::optional(now_s) : std::nullopt;
+    if (!m_started) {
+        const auto streamStart_s = source().streamStart_host_s();
+        if (!streamStart_s) return {};
+        host_s = *streamStart_s;
+    }
+    return [source = &source(), host_s](double newestEnd_s, bool mustAnswer) {
+        using core::storage::RecordingStart;
+        const auto clock = source->hostClock();
+        if (!clock || !(std::abs(clock->drift) < 0.1))
+            return mustAnswer ? RecordingStart::fromFirstBlock() : RecordingStart::notYet();
+        const bool settled = clock->basis != core::timing::ClockUncertaintyBasis::TooFewFrames ||
+                             clock->host_s(newestEnd_s) >= host_s + kStartSettles_s;
+        if (!settled && !mustAnswer) return RecordingStart::notYet();
+        const double from_s = clock->device_s(host_s);
+        return std::isfinite(from_s) ? RecordingStart::at(from_s) : RecordingStart::fromFirstBlock();
+    };
 }
 
 // A recording's recorder, metadata, lists and the zero in use, ready for

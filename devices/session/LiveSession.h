@@ -39,6 +39,7 @@
 #include "core/sensors/SensorLimits.h"
 #include "core/sensors/SensorProfile.h"
 #include "core/storage/Recorder.h"
+#include "core/storage/RecordingTap.h"
 #include "core/trigger/LimitWatch.h"
 #include "core/trigger/TriggerMachine.h"
 #include "devices/Acquisition.h"
@@ -58,9 +59,6 @@
 
 namespace tactiscope::core {
 class SinkSlot;
-}
-namespace tactiscope::core::storage {
-class RecordingTap;
 }
 
 namespace tactiscope::devices::session {
@@ -286,7 +284,7 @@ private:
     void recordStandingFaults();
     void recordUnstoppedEnd(RecordingSummary& summary);
     void storeClockMapping();
-    std::optional<double> sourceTimeNow_s() const;
+    core::storage::RecordingStartFinder startsAt(double host_s) const;
     std::uint64_t recorderQueueBound(double rate_hz, std::size_t channels) const;
     RecordingSummary finishRecording();
 
@@ -297,6 +295,7 @@ private:
     std::unique_ptr<Acquisition> m_acquisition;
     std::shared_ptr<core::LiveBuffer> m_buffer;
     std::shared_ptr<core::storage::RecordingTap> m_tap;
+    bool m_started = false;  // start() was called: the device streams
     std::shared_ptr<TriggerGate> m_gate;
     std::shared_ptr<LimitAlarms> m_limits;
     std::vector<core::ChannelDescriptor> m_channels;  // the source's, with the roles given

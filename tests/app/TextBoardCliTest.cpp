@@ -299,3 +299,42 @@ TEST(TextBoardCli, FiveHundredLinesASecondAreTimedWithinFiveHundredthsOfAPercent
     EXPECT_NEAR(static_cast<double>(board.samples), 5000.0, 50.0);
     EXPECT_GT(board.firstLine, board.printedBefore + 1000);
 }
+
+// A board nobody read for a while: its port filled, its writes waited
+// (as Serial.write does on a native USB port), and once the port is
+// opened it prints, as fast as its link takes them, the lines its schedule
+// says are due: half a second of catching up, far longer than the port's
+// backlog is read away for. Before, with --rate given, that catch-up was
+// recorded as the session's first seconds (a 3 s recording after 35 s
+// unread held 17 s).
+TEST(TextBoardCli, WhatABoardCatchesUpOnOnceThePortIsOpenedIsNotRecorded)
+{
+    QTemporaryDir dir;
+    const std::string link = dir.filePath(QStringLiteral("board")).toStdString();
+    constexpr double kRate_hz = 500.0;
+    TextBoardOptions options{kRate_hz, [](std::uint64_t n) {
+                                 // 16 channels, 200 bytes: the port fills in under a second.
+                                 std::string line = "a:" + std::to_string(std::sin(0.01 * static_cast<double>(n))) +
+                                                    " b:" + std::to_string(n);
+                                 for (int c = 0; c < 14; ++c) line += " c" + std::to_string(c) + ":0.000000";
+                                 return line + "\n";
+                             }};
+    options.longestWait_s = 60.0;
+    options.linkBytesPerSecond = 1e6;
+    TextBoard board(link, options);
+    ASSERT_TRUE(board.ok());
+    std::this_thread::sleep_for(std::chrono::seconds(5));
+    const std::uint64_t dueAtStart = board.due();
+    ASSERT_GT(dueAtStart, board.printed() + 1000) << "the board was not held up";
+    const QString db = dir.filePath(QStringLiteral("board.tactiscope"));
+    const auto result = runCli({"record", "--port", QString::fromStdString(link), "--protocol", "text", "--rate",
+                                QString::number(kRate_hz), "--seconds", "3", "--db", db});
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    const auto id = sessionIdIn(result.out);
+    ASSERT_GT(id, 0) << result.out.toStdString();
+    storage::SessionStore store(db.toStdString(), storage::Database::Access::ReadOnly);
+    const auto firstLine = static_cast<std::uint64_t>(std::llround(store.readChannel(id, 1, 0, 1)[0]));
+    EXPECT_GE(firstLine, dueAtStart);
+    // Three seconds, with what the stop's last read brought.
+    EXPECT_NEAR(static_cast<double>(store.sampleCount(id)), 3.0 * kRate_hz, 0.1 * kRate_hz);
+}

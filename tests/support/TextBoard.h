@@ -31,6 +31,11 @@ struct TextBoardOptions {
     std::size_t linesPerBurst = 1;  // lines gathered before they leave together
     double jitter_s = 0.0;          // each burst leaves up to this late
     bool splitWrites = false;       // each burst written in two pieces, cut mid-line
+    // How long a write waits on a full port before what does not fit is
+    // lost; a board whose Serial.write blocks waits for as long as it
+    // takes, and then catches up on the lines its schedule says are due.
+    double longestWait_s = 1.0;
+    double linkBytesPerSecond = 0.0;  // the link's pace (a USB CDC link's ~1 MB/s); 0: the pty's
 };
 
 class TextBoard {
@@ -71,6 +76,13 @@ public:
     bool ok() const { return m_slave >= 0; }
     // Lines printed so far (sent or waiting in the port).
     std::uint64_t printed() const { return m_printed; }
+    // The line its schedule is at: more than printed() while it is held up
+    // (its writes waited on a full port), which it then catches up on.
+    std::uint64_t due() const
+    {
+        const std::chrono::duration<double> since = std::chrono::steady_clock::now() - m_start;
+        return static_cast<std::uint64_t>(since.count() * m_options.rate_hz);
+    }
 
 private:
     void print(const std::stop_token& stop)
@@ -100,13 +112,20 @@ private:
     }
 
     // A board's write waits while the port is full (as Serial.write does),
-    // but what does not fit within a second is lost, as from a board whose
-    // buffer nobody reads; a reader that is merely slow (a busy core, a
-    // sanitizer) takes it all.
-    void write(const std::string& bytes) const
+    // but what does not fit within longestWait_s (a second) is lost, as
+    // from a board whose buffer nobody reads; a reader that is merely slow
+    // (a busy core, a sanitizer) takes it all.
+    void write(const std::string& bytes)
     {
+        if (m_options.linkBytesPerSecond > 0.0) {
+            std::this_thread::sleep_until(m_linkFree);
+            m_linkFree = std::max(m_linkFree, std::chrono::steady_clock::now()) +
+                         std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(
+                             static_cast<double>(bytes.size()) / m_options.linkBytesPerSecond));
+        }
         std::size_t sent = 0;
-        for (int wait = 0; sent < bytes.size() && wait < 1000; ++wait) {
+        const auto waits = static_cast<int>(1000.0 * m_options.longestWait_s);
+        for (int wait = 0; sent < bytes.size() && wait < waits; ++wait) {
             const auto written = ::write(m_master, bytes.data() + sent, bytes.size() - sent);
             if (written > 0) sent += static_cast<std::size_t>(written);
             if (sent < bytes.size()) {
@@ -121,6 +140,7 @@ private:
     int m_master = -1;
     int m_slave = -1;
     std::chrono::steady_clock::time_point m_start;
+    std::chrono::steady_clock::time_point m_linkFree;  // when the link has sent what it was given
     std::atomic<std::uint64_t> m_printed = 0;
     std::jthread m_thread;
 };

@@ -407,6 +407,63 @@ TEST_F(RecorderTest, ADamagedStoreIsReportedAndNeverWritten)
     EXPECT_TRUE(tactiscope::testing::fileBytes(m_path) == damaged);
 }
 
+// A start the source's clock cannot place yet (a board's catch-up still
+// arriving): the tap holds the blocks, then records from where it is
+// placed; stopped before, it records from the answer it must then give.
+TEST_F(RecorderTest, ATapHoldsTheBlocksUntilTheStartIsPlacedAndRecordsFromIt)
+{
+    RecordingTap tap;
+    auto recorder = std::make_shared<Recorder>(m_path, palpation(), kChannels, 1000.0, 100'000);
+    std::vector<std::pair<double, bool>> asked;
+    tap.attach(recorder, [&asked](double newestEnd_s, bool mustAnswer) {
+        asked.emplace_back(newestEnd_s, mustAnswer);
+        // Placed once the stream is past 7.8 s (block time), at 7.65 s.
+        return newestEnd_s >= 7.8 ? RecordingStart::at(7.65) : RecordingStart::notYet();
+    });
+    for (std::uint64_t first = 0; first < 400; first += 100) tap.consume(deviceBlock(first, 100));
+    ASSERT_EQ(asked.size(), 3u);  // the third block ends at 7.8 s: placed
+    EXPECT_FALSE(asked.back().second);
+    EXPECT_EQ(tap.detach(), recorder);
+    recorder->finish(tactiscope::core::SessionStatus::Complete);
+    SessionStore store(m_path, Database::Access::ReadOnly);
+    EXPECT_EQ(store.sampleCount(recorder->sessionId()), 250u);  // 7.65 s (sample 150) to 7.9 s
+    EXPECT_EQ(store.readChannel(recorder->sessionId(), 0, 0, 1)[0], 150.0);
+}
+
+TEST_F(RecorderTest, ATapStoppedOrHoldingTenSecondsBeforeTheStartIsPlacedRecordsFromItsAnswer)
+{
+    {
+        RecordingTap tap;
+        auto recorder = std::make_shared<Recorder>(m_path, palpation(), kChannels, 1000.0, 100'000);
+        tap.attach(recorder, [](double, bool mustAnswer) {
+            return mustAnswer ? RecordingStart::at(7.55) : RecordingStart::notYet();
+        });
+        for (std::uint64_t first = 0; first < 200; first += 100) tap.consume(deviceBlock(first, 100));
+        EXPECT_EQ(tap.detach(), recorder);
+        recorder->finish(tactiscope::core::SessionStatus::Complete);
+        SessionStore store(m_path, Database::Access::ReadOnly);
+        EXPECT_EQ(store.sampleCount(recorder->sessionId()), 150u);
+    }
+    {
+        RecordingTap tap;
+        auto recorder = std::make_shared<Recorder>(m_path, palpation(), kChannels, 1000.0, 100'000);
+        std::size_t held = 0;
+        tap.attach(recorder, [&held](double, bool mustAnswer) {
+            ++held;
+            return mustAnswer ? RecordingStart::fromFirstBlock() : RecordingStart::notYet();
+        });
+        const auto blocks = static_cast<std::uint64_t>(RecordingTap::kMostHeld_s * 10.0);  // of 0.1 s
+        for (std::uint64_t k = 0; k < blocks + 5; ++k) tap.consume(deviceBlock(100 * k, 100));
+        // Answered on the block that made ten seconds (the sum's rounding may take one more).
+        EXPECT_GE(held, blocks);
+        EXPECT_LE(held, blocks + 1);
+        EXPECT_EQ(tap.detach(), recorder);
+        recorder->finish(tactiscope::core::SessionStatus::Complete);
+        SessionStore store(m_path, Database::Access::ReadOnly);
+        EXPECT_EQ(store.sampleCount(recorder->sessionId()), 100 * (blocks + 5));
+    }
+}
+
 TEST_F(RecorderTest, ATapRecordsOnlyWhileARecorderIsAttachedAndMarkersLandInTheSession)
 {
     RecordingTap tap;

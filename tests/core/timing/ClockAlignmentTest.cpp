@@ -314,3 +314,33 @@ TEST(ClockAlignment, AMappingsInverseGivesTheDeviceTimeBack)
     for (const double device : {-3.0, 0.0, 12.0, 3600.0}) EXPECT_NEAR(m.device_s(m.host_s(device)), device, 1e-12);
     EXPECT_NEAR(m.device_s(112.5 + 80e-4), 112.0, 1e-12);  // 100 s past its reference, 8 ms later on the host
 }
+
+// A board left printing while nobody read: its first 30 s of frames
+// waited in the port and arrive at once when it is opened, the rest on
+// time. Before, the backlog's lags, falling a period per period, made the
+// hull's edge a line of drift −1, and a recording's start was placed
+// nowhere (a catch-up recorded as the session's first seconds). A second
+// of frames on time puts the mapping right (what LiveSession waits for).
+TEST(ClockAlignment, FramesThatWaitedInThePortDoNotTiltTheMapping)
+{
+    const Device device;
+    constexpr double kRate_hz = 500.0, kWaited_s = 30.0;
+    const double opened_s = device.host_s(kWaited_s);
+    for (const double onTime_s : {1.0, 5.0}) {
+        std::mt19937_64 random(11);
+        ClockAlignment clock;
+        const auto frames = static_cast<long>(std::lround((kWaited_s + onTime_s) * kRate_hz));
+        for (long k = 0; k < frames; ++k) {
+            const double d = static_cast<double>(k) / kRate_hz;
+            // What waited comes within 10 ms of the opening.
+            const double arrival = d < kWaited_s ? opened_s + 10e-3 * d / kWaited_s : device.host_s(d);
+            clock.add(d, arrival + delay_s(Link::Exponential, random));
+        }
+        const auto mapping = clock.mapping();
+        ASSERT_TRUE(mapping) << onTime_s;
+        EXPECT_LT(std::abs(mapping->drift - device.drift), 1e-3) << onTime_s;
+        EXPECT_LT(worstError_s(*mapping, device, kWaited_s + onTime_s), 1e-3) << onTime_s;
+        // The frames that waited lie before the opening on the host's clock.
+        EXPECT_LT(mapping->host_s(kWaited_s - 0.2), opened_s - 0.19) << onTime_s;
+    }
+}
