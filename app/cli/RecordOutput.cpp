@@ -168,6 +168,7 @@ void RecordOutput::reportOne(const devices::session::RecordingEnd& end)
                         << " CRC errors (" << channelsAt(live) << ", into " << toQString(m_db) << "); "
                         << toQString(core::toString(live.recordingMetadata().mode)) << ": "
                         << toQString(summary.analysis) << Qt::endl;
+    tellHoles({}, summary, live.channels());
     tellEndProblem({}, summary);
 }
 
@@ -206,8 +207,24 @@ void RecordOutput::reportSeveral(const devices::session::RecordingEnd& end)
             << toQString(core::toString(live.recordingMetadata().mode)) << ": " << toQString(summary.analysis)
             << "; clock: " << toQString(core::timing::clockMappingText(clock != stored.end() ? clock->clockJson : ""))
             << Qt::endl;
+        tellHoles(name, summary, live.channels());
         tellEndProblem(name, summary);
     }
+}
+
+// The values a board sent that were no number ("nan", "inf"): stored as
+// holes in their channel, the others' values at those samples kept.
+void RecordOutput::tellHoles(const std::string& device, const devices::session::RecordingSummary& summary,
+                             const std::vector<core::ChannelDescriptor>& channels)
+{
+    QStringList counts;
+    for (std::size_t c = 0; c < std::min(summary.stats.holes.size(), channels.size()); ++c)
+        if (summary.stats.holes[c] > 0)
+            counts << QStringLiteral("%1 in %2").arg(summary.stats.holes[c]).arg(toQString(channels[c].name));
+    if (counts.isEmpty()) return;
+    printError(QStringLiteral("%1note: values that were no number (nan, inf) are stored as holes in their channel "
+                              "alone: %2")
+                   .arg(from(device), counts.join(QStringLiteral(", "))));
 }
 
 // A recording that did not end well: the disk's error, or a probe lost

@@ -41,6 +41,8 @@ private:
     void reportOne(const devices::session::RecordingEnd& end);
     void reportSeveral(const devices::session::RecordingEnd& end);
     void tellEndProblem(const std::string& device, const devices::session::RecordingSummary& summary);
+    void tellHoles(const std::string& device, const devices::session::RecordingSummary& summary,
+                   const std::vector<core::ChannelDescriptor>& channels);
     // The line a trigger's new state is told by; none when nothing is said.
     std::optional<QString> triggerText(const devices::session::TriggerStatus& status);
     std::size_t deviceIndex(const std::string& name) const;

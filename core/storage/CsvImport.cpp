@@ -8,6 +8,7 @@
 #include "core/storage/Database.h"
 #include "core/storage/RecorderLock.h"
 #include "core/storage/SessionExport.h"
+#include "core/text/NoNumber.h"
 #include "core/text/TextChecks.h"
 
 #include <nlohmann/json.hpp>
@@ -266,11 +267,13 @@ double measureRate(const std::string& path, std::size_t timeColumn)
     return simplestRate(std::round(span_s / *middle), span_s);
 }
 
-// A cell as the binary32 sample it is stored as: a number beyond its range
-// would be stored as infinity, so it is refused.
+// A cell as the binary32 sample it is stored as. Empty, or what programs
+// print for no number ("nan", "inf"), it is a hole in its column alone, as
+// from a board live. A number beyond binary32's range would be stored as
+// infinity: it is refused (a file, unlike a stream, can be mended).
 double cellValue(const CsvReader& reader, std::string_view cell, std::size_t column)
 {
-    if (cell.empty()) return std::numeric_limits<double>::quiet_NaN();
+    if (cell.empty() || text::spellsNoNumber(cell)) return std::numeric_limits<double>::quiet_NaN();
     const double value = reader.number(cell, column);
     if (std::abs(value) > static_cast<double>(std::numeric_limits<float>::max()))
         throw reader.cellError(cell, column, "is beyond the ±3.4e38 a stored sample holds");

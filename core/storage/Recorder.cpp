@@ -4,6 +4,7 @@
 #include "core/SampleBlock.h"
 #include "core/text/UtcTime.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <utility>
@@ -169,8 +170,17 @@ void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
     } catch (const StorageError& e) {
         error = e.what();
     }
+    std::vector<std::uint64_t> holes;  // counted before the lock is taken again
+    for (const auto& block : batch) {
+        holes.resize(std::max(holes.size(), block.channelCount()));
+        for (std::size_t c = 0; c < block.channelCount(); ++c)
+            holes[c] += static_cast<std::uint64_t>(
+                std::ranges::count_if(block.channel(c), [](double v) { return std::isnan(v); }));
+    }
     lock.lock();
     if (error.empty()) {
+        m_stats.holes.resize(std::max(m_stats.holes.size(), holes.size()));
+        for (std::size_t c = 0; c < holes.size(); ++c) m_stats.holes[c] += holes[c];
         m_stats.samplesWritten += samples;
         m_stats.eventsWritten += events.size();
         m_stats.readingsWritten += readings.size();

@@ -29,6 +29,9 @@ namespace tactiscope::core::storage {
 struct RecorderStats {
     std::uint64_t samplesWritten = 0;  // per channel, committed
     std::uint64_t samplesDropped = 0;  // per channel, over the memory bound or after a failure
+    // Per channel, committed: values that were no number (NaN, a text
+    // board's "nan"), holes in that channel alone.
+    std::vector<std::uint64_t> holes;
     std::uint64_t eventsWritten = 0;
     std::uint64_t readingsWritten = 0;
     std::uint64_t commits = 0;

@@ -17,12 +17,18 @@ std::vector<std::string> labelsOf(const TextLine& line)
 }
 
 // A value beyond the ±3.4e38 a stored (binary32) sample holds would be
-// stored as infinity and poison the live detector for the rest of the
-// session: like an unreadable line, it is a hole.
-bool storable(const TextLine& line)
+// stored as infinity: like "nan" or "inf" printed, it is no number, a hole
+// in its channel alone. Returns how many a line holds.
+std::uint64_t markHoles(TextLine& line)
 {
     constexpr auto kLargest = static_cast<double>(std::numeric_limits<float>::max());
-    return std::ranges::all_of(line.fields, [](const TextField& f) { return std::abs(f.value) <= kLargest; });
+    std::uint64_t holes = 0;
+    for (auto& field : line.fields)
+        if (!(std::abs(field.value) <= kLargest)) {
+            field.value = std::numeric_limits<double>::quiet_NaN();
+            ++holes;
+        }
+    return holes;
 }
 
 }  // namespace
@@ -118,14 +124,10 @@ void TextDecoder::onSample(TextLine line, double hostTime_s, std::vector<TextSam
     if (m_labels.empty()) {
         // The layout is fixed by two consecutive samples that agree: a port
         // opened mid-line starts with a fragment, which must not decide it.
-        const bool agrees = m_candidate && storable(line) && labelsOf(m_candidate->first) == labelsOf(line);
+        const bool agrees = m_candidate && labelsOf(m_candidate->first) == labelsOf(line);
         if (!agrees) {
             if (m_candidate) ++m_counters.linesSkipped;
-            m_candidate.reset();
-            if (storable(line))
-                m_candidate.emplace(std::move(line), hostTime_s);
-            else
-                ++m_counters.linesSkipped;
+            m_candidate.emplace(std::move(line), hostTime_s);
             return;
         }
         TextLine& first = m_candidate->first;
@@ -143,7 +145,8 @@ void TextDecoder::onSample(TextLine line, double hostTime_s, std::vector<TextSam
         m_candidate.reset();
         onSample(std::move(candidate), at_s, out);
     }
-    auto values = storable(line) ? inLayout(line) : std::nullopt;
+    const std::uint64_t holes = markHoles(line);
+    auto values = inLayout(line);
     if (!values) {
         // A sample was sent here and cannot be read: a hole, so that the
         // samples after it keep their time.
@@ -152,6 +155,7 @@ void TextDecoder::onSample(TextLine line, double hostTime_s, std::vector<TextSam
         return;
     }
     ++m_counters.frames;
+    m_counters.valueHoles += holes;
     out.push_back({hostTime_s, std::move(*values), line.boardTime});
 }
 

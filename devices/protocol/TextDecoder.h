@@ -7,10 +7,11 @@
 // opened mid-line begins with a fragment): their names come from the
 // labels, else ch1…chN, their units from the labels' brackets or
 // Teleplot's '§'. Labelled values are matched by name, so their order on
-// the line may change. After that, a line with other channels, or a value
-// that is not a finite number, is counted and comes out as a sample
-// without values (a hole: the sample was sent and is lost, and the ones
-// after it keep their time); a longer line than kMaxLine is skipped and
+// the line may change. A value that is no number ("nan", "inf", beyond
+// what a stored sample holds) is NaN: a hole in its channel alone, the
+// others' values kept. After that, a line with other channels is counted
+// and comes out as a sample without values (a hole: the sample was sent
+// and is lost, and the ones after it keep their time); a longer line than kMaxLine is skipped and
 // counted. Blank lines are ignored, and so are (counted) lines with no
 // number in them and the lines beside Teleplot's: the board's log.
 #pragma once

@@ -1,11 +1,14 @@
 // parseTextLine: the Serial Plotter's fields, NAME=VALUE pairs and Teleplot.
 #include "devices/protocol/TextLine.h"
 
+#include "core/text/NoNumber.h"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <tuple>
 #include <utility>
 
@@ -85,7 +88,7 @@ ParsedLine parseTeleplot(std::string_view text)
         line.boardTime = BoardTime{*stamp, 1e-3};
         rest = rest.substr(second + 1);
     }
-    const auto value = parseBoardNumber(rest);
+    const auto value = parseBoardValue(rest);
     if (!value) return {};
     line.fields.push_back({std::string(text.substr(0, colon)), std::move(unit), *value});
     return {std::move(line), LineRefusal::NotNumbers};
@@ -101,6 +104,13 @@ std::optional<double> parseBoardNumber(std::string_view token)
     if (token.empty() || error != std::errc() || end != token.data() + token.size() || !std::isfinite(value))
         return std::nullopt;
     return value;
+}
+
+std::optional<double> parseBoardValue(std::string_view token)
+{
+    if (auto number = parseBoardNumber(token)) return number;
+    if (core::text::spellsNoNumber(token)) return std::numeric_limits<double>::quiet_NaN();
+    return std::nullopt;
 }
 
 bool hasNumber(std::string_view text)
@@ -140,10 +150,11 @@ ParsedLine parseTextLine(std::string_view text)
             std::tie(field.label, field.unit) = splitUnit(token.substr(0, mark));
             token.remove_prefix(mark + 1);
         }
-        const auto value = parseBoardNumber(token);
+        const auto value = parseBoardValue(token);
         if (!value) return {};
         field.value = *value;
         if (auto time = boardTimeOf(field); time && !line.boardTime) {
+            if (!std::isfinite(time->value)) return {};  // a clock that reads no number times nothing
             line.boardTime = time;
             continue;
         }

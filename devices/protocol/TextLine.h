@@ -6,7 +6,8 @@
 //   - Teleplot: one variable a line, ">NAME:VALUE" or ">NAME:TIMESTAMP:VALUE"
 //     (milliseconds), with an optional unit after '§' and flags after '|'.
 // A label may carry a unit in brackets ("force[mN]:1.2"). A value may have
-// a leading '+' ("%+.2f"). A labelled t, time, millis or micros value, and
+// a leading '+' ("%+.2f"); one that is no number ("nan", "inf", "ovf") is
+// NaN, a hole in its channel alone. A labelled t, time, millis or micros value, and
 // Teleplot's timestamp, is the board's own clock, not a channel.
 #pragma once
 
@@ -57,5 +58,10 @@ bool hasNumber(std::string_view text);
 // A number as boards print it: optional sign (a leading '+' too), digits,
 // decimal point, exponent. NaN and infinities are refused.
 std::optional<double> parseBoardNumber(std::string_view token);
+
+// A value as boards print it: a number, or what they print for none
+// (core/text/NoNumber.h: "nan", "inf", "ovf"), which is NaN, a hole in
+// that channel alone. None for anything else.
+std::optional<double> parseBoardValue(std::string_view token);
 
 }  // namespace tactiscope::devices::protocol

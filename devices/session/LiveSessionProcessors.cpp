@@ -4,6 +4,7 @@
 // parts the views read.
 #include "devices/session/LiveSession.h"
 
+#include "core/CompleteSamples.h"
 #include "core/ModeCapability.h"
 #include "core/SinkSlot.h"
 #include "core/modes/ModeDefinition.h"
@@ -12,9 +13,29 @@
 #include "devices/session/modes/PalpationUnit.h"
 #include "devices/session/modes/PanelScanUnit.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace tactiscope::devices::session {
+
+namespace {
+
+// The channels a mode's processor reads: those playing its roles. A hole
+// in one of them (NaN) is a gap to it; in another channel, nothing.
+std::vector<std::size_t> channelsRead(core::Mode mode, const std::vector<core::ChannelDescriptor>& channels)
+{
+    const auto& definition = core::definitionOf(mode);
+    std::vector<std::size_t> read;
+    for (std::size_t c = 0; c < channels.size(); ++c) {
+        const auto role = channels[c].role;
+        if (role && (std::ranges::find(definition.roles, *role) != definition.roles.end() ||
+                     std::ranges::find(definition.optionalRoles, *role) != definition.optionalRoles.end()))
+            read.push_back(c);
+    }
+    return read;
+}
+
+}  // namespace
 
 const core::sensors::SensorProfile* LiveSession::profile(core::Mode mode) const
 {
@@ -107,7 +128,8 @@ std::optional<std::string> LiveSession::build(core::Mode mode, bool inheritZero)
     const auto slot = m_slots.find(mode);
     if (slot == m_slots.end())  // registered after this session began: it has no place in the stream
         return "the " + std::string(core::toString(mode)) + " mode was added after this device connected";
-    slot->second->set(built ? built->sink() : nullptr);
+    slot->second->set(built ? std::make_shared<core::CompleteSamples>(built->sink(), channelsRead(mode, m_channels))
+                            : nullptr);
     if (built)
         m_units[mode] = std::move(built);
     else

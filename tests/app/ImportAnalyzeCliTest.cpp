@@ -115,6 +115,30 @@ TEST(ImportCli, BareColumnsStayPlainNumbersUnlessAModeOrTheirUnitsSayOtherwise)
     EXPECT_EQ(store.readChannel(3, 1, 1, 1)[0], static_cast<double>(static_cast<float>(-2e-6)));
 }
 
+// What a board's log holds for no number is a hole in that column alone,
+// as from the board live (before, "inf" refused the file).
+TEST(ImportCli, ACellThatIsNoNumberIsAHoleInItsColumnAlone)
+{
+    QTemporaryDir dir;
+    const QString csv = dir.filePath("board.csv");
+    writeText(csv, "t,a,b\n0,1,nan\n0.01,inf,2\n0.02,3,-Inf\n0.03,ovf,4\n0.04,5,\n0.05,6,7\n");
+    const QString db = dir.filePath("s.tactiscope");
+    const auto imported = runCli({"import", csv, "--db", db});
+    ASSERT_EQ(imported.exitCode, 0) << imported.err.toStdString();
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    ASSERT_EQ(store.sampleCount(1), 6u);
+    const auto a = store.readChannel(1, 0, 0, 6);
+    const auto b = store.readChannel(1, 1, 0, 6);
+    const std::vector<bool> aHoles{false, true, false, true, false, false};
+    const std::vector<bool> bHoles{true, false, true, false, true, false};
+    for (std::size_t i = 0; i < 6; ++i) {
+        EXPECT_EQ(std::isnan(a[i]), aHoles[i]) << i;
+        EXPECT_EQ(std::isnan(b[i]), bHoles[i]) << i;
+    }
+    EXPECT_EQ(a[5], 6.0);
+    EXPECT_EQ(b[5], 7.0);
+}
+
 TEST(ImportCli, ExportImportExportIsTheSameFilesAndTheSameBits)
 {
     QTemporaryDir dir;

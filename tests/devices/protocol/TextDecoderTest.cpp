@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 using namespace tactiscope::devices::protocol;
@@ -41,16 +42,41 @@ TEST(TextDecoder, LinesThatDoNotParseAreCountedHolesOnceTheChannelsAreKnown)
 {
     TextDecoder decoder;
     const std::string longLine(TextDecoder::kMaxLine + 10, '1');
-    const auto out =
-        decode(decoder, "1,2\n3,4\nhello,3\n4\n5,6,7\n\n\r\n" + longLine + "\n1,inf\n1e308,2\n8,-3.4e38\n");
-    // "1,2", "3,4", six holes (word, too few, too many, overlong, inf, beyond
-    // what a stored sample holds), "8,-3.4e38"; the empty lines are nothing.
-    ASSERT_EQ(out.size(), 9u);
+    const auto out = decode(decoder, "1,2\n3,4\nhello,3\n4\n5,6,7\n\n\r\n" + longLine + "\n8,-3.4e38\n");
+    // "1,2", "3,4", four holes (word, too few, too many, overlong),
+    // "8,-3.4e38"; the empty lines are nothing.
+    ASSERT_EQ(out.size(), 7u);
     EXPECT_EQ(out[1].values, (std::vector<double>{3, 4}));
-    for (std::size_t i = 2; i < 8; ++i) EXPECT_TRUE(out[i].values.empty()) << i;
-    EXPECT_EQ(out[8].values, (std::vector<double>{8, -3.4e38}));
-    EXPECT_EQ(decoder.counters().linesSkipped, 6u);
+    for (std::size_t i = 2; i < 6; ++i) EXPECT_TRUE(out[i].values.empty()) << i;
+    EXPECT_EQ(out[6].values, (std::vector<double>{8, -3.4e38}));
+    EXPECT_EQ(decoder.counters().linesSkipped, 4u);
     EXPECT_EQ(decoder.counters().frames, 3u);
+}
+
+// Before, "3.5,nan" made the whole line a hole and the 3.5 was lost.
+TEST(TextDecoder, AValueThatIsNoNumberIsAHoleInItsChannelAlone)
+{
+    TextDecoder decoder;
+    const auto out = decode(decoder, "1,2\n3,4\n3.5,nan\n-inf,5\n1e308,6\n7,ovf\nNaN,+inf\n8,Infinity\n"
+                                     "a:1 b:2\n");
+    ASSERT_EQ(out.size(), 9u);  // the last line has other channels: a hole
+    const auto holeAt = [&](std::size_t sample, std::size_t channel) {
+        return std::isnan(out[sample].values.at(channel));
+    };
+    EXPECT_EQ(out[2].values[0], 3.5);
+    EXPECT_TRUE(holeAt(2, 1));
+    EXPECT_TRUE(holeAt(3, 0));
+    EXPECT_EQ(out[3].values[1], 5.0);
+    EXPECT_TRUE(holeAt(4, 0));  // beyond what a stored sample holds
+    EXPECT_EQ(out[4].values[1], 6.0);
+    EXPECT_EQ(out[5].values[0], 7.0);
+    EXPECT_TRUE(holeAt(5, 1));
+    EXPECT_TRUE(holeAt(6, 0) && holeAt(6, 1));
+    EXPECT_TRUE(holeAt(7, 1));
+    EXPECT_TRUE(out[8].values.empty());
+    EXPECT_EQ(decoder.counters().valueHoles, 7u);
+    EXPECT_EQ(decoder.counters().frames, 8u);
+    EXPECT_EQ(decoder.counters().linesSkipped, 1u);
 }
 
 TEST(TextDecoder, AFragmentFirstDoesNotFixTheChannels)
