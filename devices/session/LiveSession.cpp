@@ -208,8 +208,9 @@ std::optional<std::string> LiveSession::startRecordingPart(const core::storage::
 
 // A recording begins at a host instant (or, begun before the device
 // streams, where its source's stream begins; from its first block when it
-// says none): on the source's block time where its clock mapping places it. A mapping that states its uncertainty (or
-// is exact) places it at once. One still learning the link may rest on
+// says none): on the source's block time where its clock mapping places
+// it. A mapping that states its uncertainty (or is exact) places it at
+// once. One still learning the link may rest on
 // lines that waited in the port or that a board caught up on once it was
 // opened (sent in a burst, their lags fall a period per period): it is
 // trusted once it has placed the stream a second past the instant, which

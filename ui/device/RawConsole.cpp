@@ -110,6 +110,8 @@ void RawConsole::refresh()
                       "%8 samples lost")
                        .arg(n(c.bytes), n(c.frames), text ? tr("lines") : tr("frames"), n(c.crcErrors), n(c.resyncs),
                             n(c.malformedPayloads), n(c.linesSkipped), n(c.samplesLost));
+    // A text board's values that were no number ("nan"): holes in their channel alone.
+    if (c.valueHoles > 0) line += tr(" · %1 values no number (holes)").arg(n(c.valueHoles));
     // What the firmware got wrong, shown once it has.
     if (c.sequenceFaults > 0) line += tr(" · %1 sequence faults").arg(n(c.sequenceFaults));
     if (c.deviceRestarts > 0) line += tr(" · %1 device restarts").arg(n(c.deviceRestarts));
