@@ -113,9 +113,20 @@ std::optional<LineRateEstimate> LineRate::fromArrivals() const
     for (std::size_t i = 0; i < arrivals.size(); ++i) alignment.add(static_cast<double>(i) * step_s, arrivals[i]);
     const auto mapping = alignment.mapping();
     if (!mapping) return std::nullopt;
+    // The lines the mapping found on time, from the first of its span: a
+    // board catching up on what it could not send while nobody read (its
+    // lags falling a period per period) is set aside by it, and the rate
+    // is timed, and settles, on the rest. (The span runs between bins'
+    // fastest lines: up to two bins short of the lines' even when none
+    // was set aside.)
+    const double lastStep = static_cast<double>(arrivals.size() - 1);
+    const double setAside_s = lastStep * step_s - mapping->span_s;
+    const auto onTime = setAside_s > 2.0 * core::timing::kClockBin_s
+                            ? static_cast<std::size_t>(std::clamp(std::floor(setAside_s / step_s), 0.0, lastStep))
+                            : std::size_t{0};
     LineRateEstimate rate;
-    rate.lines = arrivals.size();
-    rate.span_s = span_s;
+    rate.lines = arrivals.size() - onTime;
+    rate.span_s = arrivals.back() - arrivals[onTime];
     if (mapping->basis != core::timing::ClockUncertaintyBasis::TooFewFrames) {
         // Host seconds per step is 1 + drift.
         const double period_s = step_s * (1.0 + mapping->drift);
@@ -130,30 +141,31 @@ std::optional<LineRateEstimate> LineRate::fromArrivals() const
     // stalled read) are set aside. Its slope's standard error, widened for
     // the few lines (Student's t has variance ν/(ν−2)), is the uncertainty.
     std::vector<double> above;
-    for (std::size_t i = 0; i < arrivals.size(); ++i)
+    for (std::size_t i = onTime; i < arrivals.size(); ++i)
         above.push_back(arrivals[i] - mapping->host_s(static_cast<double>(i) * step_s));
     auto sorted = above;
     std::ranges::nth_element(sorted, sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2));
     const double heldUp_s = 5.0 * sorted[sorted.size() / 2] + 1e-6;
+    const auto heldUp = [&](std::size_t i) { return above[i - onTime] > heldUp_s; };
     double n = 0.0, meanX = 0.0, meanY = 0.0;
-    for (std::size_t i = 0; i < arrivals.size(); ++i) {
-        if (above[i] > heldUp_s) continue;
+    for (std::size_t i = onTime; i < arrivals.size(); ++i) {
+        if (heldUp(i)) continue;
         n += 1.0;
         meanX += (static_cast<double>(i) - meanX) / n;
         meanY += (arrivals[i] - meanY) / n;
     }
     if (n < 5.0) return std::nullopt;
     double sxx = 0.0, sxy = 0.0;
-    for (std::size_t i = 0; i < arrivals.size(); ++i) {
-        if (above[i] > heldUp_s) continue;
+    for (std::size_t i = onTime; i < arrivals.size(); ++i) {
+        if (heldUp(i)) continue;
         sxx += (static_cast<double>(i) - meanX) * (static_cast<double>(i) - meanX);
         sxy += (static_cast<double>(i) - meanX) * (arrivals[i] - meanY);
     }
     const double period_s = sxy / sxx;
     if (!(period_s > 0.0)) return std::nullopt;
     double squares = 0.0;
-    for (std::size_t i = 0; i < arrivals.size(); ++i) {
-        if (above[i] > heldUp_s) continue;
+    for (std::size_t i = onTime; i < arrivals.size(); ++i) {
+        if (heldUp(i)) continue;
         const double e = arrivals[i] - meanY - period_s * (static_cast<double>(i) - meanX);
         squares += e * e;
     }

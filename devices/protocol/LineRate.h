@@ -8,7 +8,10 @@
 //     use (core/timing/ClockAlignment): line i is stamped i periods of a
 //     provisional rate, and the mapping's drift corrects that rate; its
 //     uncertainty is the mapping's (400 lines and more). Lines read in the
-//     first kBacklog_s may have waited in the port: they are not timed.
+//     first kBacklog_s may have waited in the port: they are not timed,
+//     nor are those of a board catching up on what it could not send
+//     while nobody read, which the mapping sets aside (their lags fall a
+//     period per period): the rate settles on lines that came on time.
 //     On fewer lines, a least-squares line through the arrivals (after
 //     those held up far above the mapping's floor) gives the rate and its
 //     standard error.

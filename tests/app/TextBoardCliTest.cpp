@@ -300,41 +300,71 @@ TEST(TextBoardCli, FiveHundredLinesASecondAreTimedWithinFiveHundredthsOfAPercent
     EXPECT_GT(board.firstLine, board.printedBefore + 1000);
 }
 
+namespace {
+
 // A board nobody read for a while: its port filled, its writes waited
 // (as Serial.write does on a native USB port), and once the port is
 // opened it prints, as fast as its link takes them, the lines its schedule
 // says are due: half a second of catching up, far longer than the port's
-// backlog is read away for. Before, with --rate given, that catch-up was
-// recorded as the session's first seconds (a 3 s recording after 35 s
-// unread held 17 s).
-TEST(TextBoardCli, WhatABoardCatchesUpOnOnceThePortIsOpenedIsNotRecorded)
+// backlog is read away for. Recorded for 3 s with `options` given.
+struct CaughtUp {
+    std::uint64_t dueAtStart = 0;
+    std::uint64_t firstLine = 0;
+    std::uint64_t samples = 0;
+    double rate_hz = 0.0;
+};
+
+CaughtUp recordABoardThatCatchesUp(double rate_hz, const QStringList& options)
 {
     QTemporaryDir dir;
     const std::string link = dir.filePath(QStringLiteral("board")).toStdString();
-    constexpr double kRate_hz = 500.0;
-    TextBoardOptions options{kRate_hz, [](std::uint64_t n) {
-                                 // 16 channels, 200 bytes: the port fills in under a second.
-                                 std::string line = "a:" + std::to_string(std::sin(0.01 * static_cast<double>(n))) +
-                                                    " b:" + std::to_string(n);
-                                 for (int c = 0; c < 14; ++c) line += " c" + std::to_string(c) + ":0.000000";
-                                 return line + "\n";
-                             }};
-    options.longestWait_s = 60.0;
-    options.linkBytesPerSecond = 1e6;
-    TextBoard board(link, options);
-    ASSERT_TRUE(board.ok());
+    TextBoardOptions printing{rate_hz, [](std::uint64_t n) {
+                                  // 16 channels, 200 bytes: the port fills in under a second.
+                                  std::string line = "a:" + std::to_string(std::sin(0.01 * static_cast<double>(n))) +
+                                                     " b:" + std::to_string(n);
+                                  for (int c = 0; c < 14; ++c) line += " c" + std::to_string(c) + ":0.000000";
+                                  return line + "\n";
+                              }};
+    printing.longestWait_s = 60.0;
+    printing.linkBytesPerSecond = 1e6;
+    TextBoard board(link, printing);
+    EXPECT_TRUE(board.ok());
     std::this_thread::sleep_for(std::chrono::seconds(5));
-    const std::uint64_t dueAtStart = board.due();
-    ASSERT_GT(dueAtStart, board.printed() + 1000) << "the board was not held up";
+    CaughtUp caught;
+    caught.dueAtStart = board.due();
+    EXPECT_GT(caught.dueAtStart, board.printed() + 1000) << "the board was not held up";
     const QString db = dir.filePath(QStringLiteral("board.tactiscope"));
-    const auto result = runCli({"record", "--port", QString::fromStdString(link), "--protocol", "text", "--rate",
-                                QString::number(kRate_hz), "--seconds", "3", "--db", db});
-    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    const auto result = runCli(QStringList{"record", "--port", QString::fromStdString(link), "--protocol", "text",
+                                           "--seconds", "3", "--db", db} +
+                               options);
+    EXPECT_EQ(result.exitCode, 0) << result.err.toStdString();
     const auto id = sessionIdIn(result.out);
-    ASSERT_GT(id, 0) << result.out.toStdString();
+    EXPECT_GT(id, 0) << result.out.toStdString();
+    if (id <= 0) return caught;
     storage::SessionStore store(db.toStdString(), storage::Database::Access::ReadOnly);
-    const auto firstLine = static_cast<std::uint64_t>(std::llround(store.readChannel(id, 1, 0, 1)[0]));
-    EXPECT_GE(firstLine, dueAtStart);
+    caught.firstLine = static_cast<std::uint64_t>(std::llround(store.readChannel(id, 1, 0, 1)[0]));
+    caught.samples = store.sampleCount(id);
+    caught.rate_hz = store.channels(id)[0].sampleRate_hz;
+    return caught;
+}
+
+}  // namespace
+
+// Before, with --rate given, the catch-up was recorded as the session's
+// first seconds (a 3 s recording after 35 s unread held 17 s).
+TEST(TextBoardCli, WhatABoardCatchesUpOnOnceThePortIsOpenedIsNotRecorded)
+{
+    const auto given = recordABoardThatCatchesUp(500.0, {"--rate", "500"});
+    EXPECT_GE(given.firstLine, given.dueAtStart);
     // Three seconds, with what the stop's last read brought.
-    EXPECT_NEAR(static_cast<double>(store.sampleCount(id)), 3.0 * kRate_hz, 0.1 * kRate_hz);
+    EXPECT_NEAR(static_cast<double>(given.samples), 1500.0, 50.0);
+}
+
+// Timed from its lines, the catch-up neither sways the rate nor is recorded.
+TEST(TextBoardCli, ABoardThatCatchesUpIsTimedByTheLinesThatCameOnTime)
+{
+    const auto timed = recordABoardThatCatchesUp(500.0, {});
+    EXPECT_LT(std::abs(timed.rate_hz / 500.0 - 1.0), 1e-3) << timed.rate_hz;
+    EXPECT_GE(timed.firstLine, timed.dueAtStart);
+    EXPECT_NEAR(static_cast<double>(timed.samples), 1500.0, 50.0);
 }

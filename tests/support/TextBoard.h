@@ -101,11 +101,11 @@ private:
             std::string bytes;
             for (; n <= last; ++n) bytes += m_options.line(n);
             if (m_options.splitWrites && bytes.size() > 2) {
-                write(bytes.substr(0, bytes.size() / 2 + 1));
+                write(bytes.substr(0, bytes.size() / 2 + 1), stop);
                 std::this_thread::sleep_for(std::chrono::microseconds(300));
-                write(bytes.substr(bytes.size() / 2 + 1));
+                write(bytes.substr(bytes.size() / 2 + 1), stop);
             } else {
-                write(bytes);
+                write(bytes, stop);
             }
             m_printed = n;
         }
@@ -114,8 +114,9 @@ private:
     // A board's write waits while the port is full (as Serial.write does),
     // but what does not fit within longestWait_s (a second) is lost, as
     // from a board whose buffer nobody reads; a reader that is merely slow
-    // (a busy core, a sanitizer) takes it all.
-    void write(const std::string& bytes)
+    // (a busy core, a sanitizer) takes it all. A board being put away
+    // stops waiting.
+    void write(const std::string& bytes, const std::stop_token& stop)
     {
         if (m_options.linkBytesPerSecond > 0.0) {
             std::this_thread::sleep_until(m_linkFree);
@@ -125,7 +126,7 @@ private:
         }
         std::size_t sent = 0;
         const auto waits = static_cast<int>(1000.0 * m_options.longestWait_s);
-        for (int wait = 0; sent < bytes.size() && wait < waits; ++wait) {
+        for (int wait = 0; sent < bytes.size() && wait < waits && !stop.stop_requested(); ++wait) {
             const auto written = ::write(m_master, bytes.data() + sent, bytes.size() - sent);
             if (written > 0) sent += static_cast<std::size_t>(written);
             if (sent < bytes.size()) {
