@@ -356,8 +356,11 @@ TEST(TextBoardCli, WhatABoardCatchesUpOnOnceThePortIsOpenedIsNotRecorded)
 {
     const auto given = recordABoardThatCatchesUp(500.0, {"--rate", "500"});
     EXPECT_GE(given.firstLine, given.dueAtStart);
-    // Three seconds, with what the stop's last read brought.
-    EXPECT_NEAR(static_cast<double>(given.samples), 1500.0, 50.0);
+    // Three seconds at most (the catch-up alone is 2,500 lines), less
+    // what a slow reader (a sanitizer's, sharing its cores) had not read
+    // by the stop.
+    EXPECT_LE(given.samples, 1550u);
+    EXPECT_GE(given.samples, 1200u);
 }
 
 // Timed from its lines, the catch-up neither sways the rate nor is recorded.
@@ -366,5 +369,6 @@ TEST(TextBoardCli, ABoardThatCatchesUpIsTimedByTheLinesThatCameOnTime)
     const auto timed = recordABoardThatCatchesUp(500.0, {});
     EXPECT_LT(std::abs(timed.rate_hz / 500.0 - 1.0), 1e-3) << timed.rate_hz;
     EXPECT_GE(timed.firstLine, timed.dueAtStart);
-    EXPECT_NEAR(static_cast<double>(timed.samples), 1500.0, 50.0);
+    EXPECT_LE(timed.samples, 1550u);
+    EXPECT_GE(timed.samples, 1200u);
 }
