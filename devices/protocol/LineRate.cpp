@@ -44,12 +44,15 @@ std::optional<LineRateEstimate> LineRate::estimate() const
     return fromArrivals();
 }
 
-bool LineRate::settled() const
+bool LineRate::settled()
 {
     if (static_cast<double>(m_arrivals.size()) <= kPeriods || m_arrivals.back() - m_arrivals.front() < kWindow_s)
         return false;  // without fitting anything
+    if (10 * m_arrivals.size() < 11 * m_linesLookedAt) return false;
+    m_linesLookedAt = m_arrivals.size();
     const auto rate = estimate();
-    return rate && static_cast<double>(rate->lines) > kPeriods && rate->span_s >= kWindow_s;
+    if (!rate || static_cast<double>(rate->lines) <= kPeriods || rate->span_s < kWindow_s) return false;
+    return (rate->u_hz && *rate->u_hz <= kSettledU * rate->rate_hz) || rate->span_s >= kLongestWindow_s;
 }
 
 std::optional<LineRateEstimate> LineRate::fromBoardClock() const

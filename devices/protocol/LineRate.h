@@ -17,7 +17,10 @@
 //     standard error.
 // Settled once the lines it is timed on span kWindow_s and kPeriods of
 // their own periods (a board printing once a second is timed over 8 s,
-// after the first line, which may have waited in the port).
+// after the first line, which may have waited in the port), and the rate
+// is known to kSettledU of itself (every time in a recording rests on it:
+// 100 ppm is 0.36 s in an hour), or they span kLongestWindow_s (a link
+// too uneven for that: the rate is then stated with the ± it has).
 #pragma once
 
 #include "devices/protocol/TextLine.h"
@@ -43,12 +46,16 @@ public:
     static constexpr double kPeriods = 8.0;
     // Timing by arrivals begins this long after the first line.
     static constexpr double kBacklog_s = 0.5;
+    static constexpr double kSettledU = 1e-4;
+    static constexpr double kLongestWindow_s = 10.0;
 
     // One line (a sample, or a hole: it was sent too), when it arrived and
     // the board's time on it.
     void add(double arrival_s, const std::optional<BoardTime>& boardTime);
     std::optional<LineRateEstimate> estimate() const;
-    bool settled() const;
+    // Fits the lines again only once they have grown by a tenth since the
+    // last look, so that a fast board timed for seconds costs little.
+    bool settled();
 
 private:
     std::optional<LineRateEstimate> fromBoardClock() const;
@@ -57,6 +64,7 @@ private:
     std::vector<double> m_arrivals;
     std::vector<BoardTime> m_boardTimes;  // while every line carries one
     bool m_everyLineTimed = true;
+    std::size_t m_linesLookedAt = 0;
 };
 
 }  // namespace tactiscope::devices::protocol
