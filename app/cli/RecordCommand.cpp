@@ -5,6 +5,7 @@
 #include "RecordCommand.h"
 
 #include "CliSupport.h"
+#include "PortLinks.h"
 #include "ProbePort.h"
 #include "RecordOutput.h"
 #include "WatchOptions.h"
@@ -41,11 +42,12 @@ std::optional<std::pair<std::string, std::string>> deviceAndChannel(const std::s
     return std::pair{key.substr(0, slash), key.substr(slash + 1)};
 }
 
-// Each port's device opened and added to the pipeline under its name (the
-// one given, else its model's, unlike every other); with several, each
-// channel's role given as DEVICE/CHANNEL. An exit code when one cannot be.
+// Each port's device opened over its link and added to the pipeline under
+// its name (the one given, else its model's, unlike every other); with
+// several, each channel's role and unit given as DEVICE/CHANNEL. An exit
+// code when one cannot be.
 std::optional<int> addDevices(devices::session::LivePipeline& pipeline, const std::vector<ProbePortArgument>& ports,
-                              int baud, const devices::PortSourceOptions& options, const core::RoleAssignment& roles,
+                              const std::vector<PortLink>& links, const core::RoleAssignment& roles,
                               const core::UnitAssignment& units)
 {
     const bool several = ports.size() > 1;
@@ -85,12 +87,22 @@ std::optional<int> addDevices(devices::session::LivePipeline& pipeline, const st
         }
         rolesOf[named->first][named->second] = role;
     }
+    for (std::size_t i = 0; i < ports.size(); ++i) {
+        const auto& given = unitsOf[several ? ports[i].name : std::string()];
+        if (!given.empty() && links[i].options.protocol != devices::WireProtocol::Text) {
+            printError(QStringLiteral("--units is for a board that prints lines (--protocol %1text): a TSP/1 probe "
+                                      "declares its channels' units")
+                           .arg(several ? toQString(ports[i].name) + QLatin1Char('=') : QString()));
+            return kExitUsage;
+        }
+    }
     std::vector<std::unique_ptr<devices::ReconnectingSource>> sources;
-    for (const ProbePortArgument& port : ports) {
+    for (std::size_t i = 0; i < ports.size(); ++i) {
+        const ProbePortArgument& port = ports[i];
         try {
-            devices::PortSourceOptions portOptions = options;
+            devices::PortSourceOptions portOptions = links[i].options;
             portOptions.textUnits = unitsOf[several ? port.name : std::string()];
-            sources.push_back(openProbePort(port.path, baud, portOptions));
+            sources.push_back(openProbePort(port.path, links[i].baud, portOptions));
         } catch (const std::exception& e) {
             printError(several ? QStringLiteral("%1: %2").arg(toQString(port.path), toQString(e.what()))
                                : toQString(e.what()));
@@ -219,12 +231,16 @@ int runRecord(const QStringList& arguments)
          QStringLiteral("Serial port or link to it (required). Given more than once, the devices are recorded into "
                         "one session, each as NAME (default: its model), their clocks mapped onto the host's."),
          QStringLiteral("[NAME=]PATH")},
-        {QStringLiteral("protocol"), QStringLiteral("binary (TSP/1, default) or text."), QStringLiteral("binary|text")},
-        {QStringLiteral("baud"), QStringLiteral("Baud rate (default %1).").arg(kDefaultBaud), QStringLiteral("N")},
+        {QStringLiteral("protocol"),
+         QStringLiteral("binary (TSP/1, default) or text. With several ports, NAME=text is that port's (this and "
+                        "--baud and --rate are given once for every port, or once per port named)."),
+         QStringLiteral("[NAME=]binary|text")},
+        {QStringLiteral("baud"), QStringLiteral("Baud rate (default %1).").arg(kDefaultBaud),
+         QStringLiteral("[NAME=]N")},
         {QStringLiteral("rate"),
          QStringLiteral("Sample rate in Hz: text, the rate of the lines (else timed by the board's own clock or "
                         "their arrivals, checked against them when given); binary, asked of the device."),
-         QStringLiteral("HZ")},
+         QStringLiteral("[NAME=]HZ")},
         {QStringLiteral("seconds"), QStringLiteral("Record this long (default: until Ctrl-C)."), QStringLiteral("S")},
         {QStringLiteral("db"), QStringLiteral("Session store to record into (required; created if missing)."),
          QStringLiteral("FILE")},
@@ -254,21 +270,11 @@ int runRecord(const QStringList& arguments)
                                          "each name given once"),
                           usage);
     const std::string db = parser.value(QStringLiteral("db")).toStdString();
-    devices::PortSourceOptions options;
-    const auto protocol = parseWireProtocol(parser.value(QStringLiteral("protocol")));
-    if (!protocol) return usageError(QStringLiteral("--protocol must be binary or text"), usage);
-    options.protocol = *protocol;
-    int baud = kDefaultBaud;
-    if (parser.isSet(QStringLiteral("baud"))) {
-        bool ok = false;
-        baud = parser.value(QStringLiteral("baud")).toInt(&ok);
-        if (!ok || baud <= 0) return usageError(QStringLiteral("--baud must be a positive whole number"), usage);
-    }
-    if (parser.isSet(QStringLiteral("rate"))) {
-        const auto rate = parseNumber(parser.value(QStringLiteral("rate")));
-        if (!rate || *rate <= 0.0) return usageError(QStringLiteral("--rate must be a positive number of Hz"), usage);
-        (options.protocol == devices::WireProtocol::Text ? options.textRate_hz : options.requestRate_hz) = rate;
-    }
+    QString linkError;
+    const auto links = parsePortLinks({parser.values(QStringLiteral("protocol")), parser.values(QStringLiteral("baud")),
+                                       parser.values(QStringLiteral("rate"))},
+                                      *ports, kDefaultBaud, linkError);
+    if (!links) return usageError(linkError, usage);
     std::optional<double> seconds;
     if (parser.isSet(QStringLiteral("seconds"))) {
         seconds = parseNumber(parser.value(QStringLiteral("seconds")));
@@ -286,10 +292,6 @@ int runRecord(const QStringList& arguments)
     QString unitsError;
     const auto units = parseUnitsOption(parser, unitsError);
     if (!units) return usageError(unitsError, usage);
-    if (!units->empty() && options.protocol != devices::WireProtocol::Text)
-        return usageError(QStringLiteral("--units is for a board that prints lines (--protocol text): a TSP/1 "
-                                         "probe declares its channels' units"),
-                          usage);
     QString watchError;
     const auto watch = parseWatchOptions(parser, watchError);
     if (!watch) return usageError(watchError, usage);
@@ -336,13 +338,17 @@ int runRecord(const QStringList& arguments)
     // Each device's first connection is made here, to know it before the
     // recording; its reconnecting source reopens it after an unplug.
     devices::session::LivePipeline pipeline(db);
-    if (const auto exit = addDevices(pipeline, *ports, baud, options, *roles, *units)) return *exit;
+    if (const auto exit = addDevices(pipeline, *ports, *links, *roles, *units)) return *exit;
+    for (std::size_t i = 0; i < pipeline.size(); ++i) {
+        const auto asked_hz = (*links)[i].options.requestRate_hz;
+        const double rate_hz = pipeline.device(i).source().nominalSampleRate_hz();
+        if (asked_hz && std::abs(rate_hz - *asked_hz) > 1e-6 * *asked_hz)
+            printError(QStringLiteral("%1the device streams at %2 Hz, not the %3 Hz asked for; recording at %2 Hz")
+                           .arg(pipeline.size() > 1 ? toQString(pipeline.name(i)) + QStringLiteral(": ") : QString())
+                           .arg(rate_hz)
+                           .arg(*asked_hz));
+    }
     auto& first = pipeline.device(0);
-    const double rate_hz = first.source().nominalSampleRate_hz();
-    if (options.requestRate_hz && std::abs(rate_hz - *options.requestRate_hz) > 1e-6 * *options.requestRate_hz)
-        printError(QStringLiteral("the device streams at %1 Hz, not the %2 Hz asked for; recording at %1 Hz")
-                       .arg(rate_hz)
-                       .arg(*options.requestRate_hz));
     if (pipeline.size() == 1)
         if (const auto exit = setUpOneDevice(first, mode, std::move(profile), *watch)) return *exit;
 

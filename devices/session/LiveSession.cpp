@@ -207,8 +207,9 @@ std::optional<std::string> LiveSession::startRecordingPart(const core::storage::
 }
 
 // A recording begins at a host instant (or, begun before the device
-// streams, where its source's stream begins; from its first block when it
-// says none): on the source's block time where its clock mapping places
+// streams, where its source's stream begins, a part not before its
+// session's instant; from its first block when it says none): on the
+// source's block time where its clock mapping places
 // it. A mapping that states its uncertainty (or is exact) places it at
 // once. One still learning the link may rest on
 // lines that waited in the port or that a board caught up on once it was
@@ -222,7 +223,9 @@ core::storage::RecordingStartFinder LiveSession::startsAt(double host_s) const
     if (!m_started) {
         const auto streamStart_s = source().streamStart_host_s();
         if (!streamStart_s) return {};
-        host_s = *streamStart_s;
+        // A part begins at its session's instant: the devices opened before
+        // the last one (a text board is timed for seconds) streamed meanwhile.
+        host_s = m_part ? std::max(host_s, *streamStart_s) : *streamStart_s;
     }
     return [source = &source(), host_s](double newestEnd_s, bool mustAnswer) {
         using core::storage::RecordingStart;

@@ -10,6 +10,7 @@
 #include "devices/SteadyClock.h"
 #include "support/CliRunner.h"
 #include "support/EmulatorProcess.h"
+#include "support/TextBoard.h"
 
 #include "core/storage/SessionStore.h"
 #include "core/timing/ClockMappingJson.h"
@@ -229,10 +230,62 @@ TEST(DevicesSessionCli, RefusesWhatASessionOfSeveralDevicesCannotTake)
     usage({"--port", "a=/dev/null", "--port", "a=/dev/zero"}, "each name given once");
     usage({"--port", "a/b=/dev/null", "--port", "c=/dev/zero"}, "a word without '/'");
     usage({"--port", "a=/dev/null", "--port", "b=/dev/zero", "--mode", "general"}, "for one device");
+    // Each port's link: one value for every port, or once for each named.
+    usage({"--port", "a=/dev/null", "--port", "b=/dev/zero", "--protocol", "c=text"},
+          "--protocol: no port is named 'c'");
+    usage({"--port", "a=/dev/null", "--port", "b=/dev/zero", "--baud", "9600", "--baud", "115200"},
+          "--baud: give one value for every port, or NAME=VALUE once for each port named");
+    usage({"--port", "a=/dev/null", "--port", "b=/dev/zero", "--rate", "a=10", "--rate", "a=20"},
+          "--rate: 'a' is given twice");
+    usage({"--port", "a=/dev/null", "--port", "b=/dev/zero", "--protocol", "a=lines"},
+          "--protocol must be binary or text");
     EXPECT_TRUE(QDir(dir.path()).entryList({"*.tactiscope"}).size() <= 1);
     if (QFile::exists(db)) {
         tactiscope::core::storage::SessionStore store(db.toStdString(),
                                                       tactiscope::core::storage::Database::Access::ReadOnly);
         EXPECT_TRUE(store.sessions().empty()) << "nothing was recorded";
+    }
+}
+
+// A maker's board printing lines and a TSP/1 probe in one session, each
+// over its own link (--protocol board=text; --rate p=500 is asked of the
+// probe, the board's is timed): both parts begin at the session's
+// instant, although the probe streamed while the board was timed, and
+// last as long.
+TEST(DevicesSessionCli, ABoardPrintingLinesAndATsp1ProbeRecordIntoOneSessionEachOverItsOwnLink)
+{
+    QTemporaryDir dir;
+    QProcess probe;
+    ASSERT_TRUE(startEmulator(probe, dir.filePath("probe"), {"--scenario", "panel-scan"}));
+    tactiscope::testing::TextBoard board(
+        dir.filePath("board").toStdString(),
+        {100.0, [](std::uint64_t n) { return "force[mN]:" + std::to_string(static_cast<double>(n % 100)) + "\r\n"; }, 2,
+         1e-3, false});
+    ASSERT_TRUE(board.ok());
+    const QString db = dir.filePath("s.tactiscope");
+    const auto recorded =
+        runCli({"record", "--port", "p=" + dir.filePath("probe"), "--port", "board=" + dir.filePath("board"),
+                "--protocol", "board=text", "--baud", "board=115200", "--rate", "p=500", "--seconds", "2", "--db", db,
+                "--units", "board/force=mN"});
+    stopEmulator(probe);
+    ASSERT_EQ(recorded.exitCode, 0) << recorded.out.toStdString() << recorded.err.toStdString();
+    tactiscope::core::storage::SessionStore store(db.toStdString(),
+                                                  tactiscope::core::storage::Database::Access::ReadOnly);
+    const auto parts = store.parts(sessionIdIn(recorded.out));
+    ASSERT_EQ(parts.size(), 2u);
+    for (const auto& part : parts) {
+        SCOPED_TRACE(part.deviceName);
+        const auto channels = store.channels(part.id);
+        ASSERT_FALSE(channels.empty());
+        const double seconds = static_cast<double>(store.sampleCount(part.id)) / channels[0].sampleRate_hz;
+        EXPECT_NEAR(seconds, 2.0, 0.1) << "from the session's instant, for as long as the other part";
+        if (part.deviceName == "board") {
+            EXPECT_EQ(channels[0].descriptor.name, "force");
+            EXPECT_EQ(channels[0].descriptor.unit, "N");
+            EXPECT_NEAR(channels[0].sampleRate_hz, 100.0, 0.1);
+        } else {
+            EXPECT_EQ(part.deviceName, "p");
+            EXPECT_EQ(store.session(part.id)->metadata.mode, tactiscope::core::Mode::PanelScan);
+        }
     }
 }
