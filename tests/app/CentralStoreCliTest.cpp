@@ -15,6 +15,7 @@
 #include "support/FileBytes.h"
 #include "support/PostgresServer.h"
 #include "support/StationStore.h"
+#include "support/TextBoard.h"
 #include "support/WaitFor.h"
 
 #include <QJsonArray>
@@ -157,6 +158,37 @@ TEST_F(CentralStoreCli, AGeneralSessionAndItsChannelsRolesGoToTheServerAsTheyAre
     EXPECT_EQ(connect().query("SELECT mode FROM sessions").text(0, 0), "general");
     EXPECT_EQ(connect().query("SELECT string_agg(role, ',' ORDER BY position) FROM channels").text(0, 0),
               "stiff-beam,");
+    expectSameExports(maker, server("quality"));
+}
+
+// A board printing lines, recorded through a real pty as a maker records
+// it: its rate timed from the lines (not a round number), a unit from its
+// label, a value that was no number (a hole in its channel alone) and the
+// note saying how the rate was measured. The server keeps every one of
+// them: the same bytes exported, the hole NaN there too.
+TEST_F(CentralStoreCli, ABoardPrintingLinesGoesToTheServerWithItsTimedRateItsUnitsAndItsHoles)
+{
+    const QString link = m_dir.filePath("board");
+    tactiscope::testing::TextBoard board(link.toStdString(),
+                                         {100.0,
+                                          [](std::uint64_t n) {
+                                              return "force[mN]:" + std::to_string(static_cast<double>(n % 90)) +
+                                                     " temp:" + (n % 37 == 0 ? std::string("nan") : "21.5") + "\r\n";
+                                          },
+                                          2, 1e-3, false});
+    ASSERT_TRUE(board.ok());
+    const QString maker = m_dir.filePath("maker.tactiscope");
+    const CliResult recorded =
+        runCli({"record", "--port", link, "--protocol", "text", "--seconds", "1", "--db", maker});
+    ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
+    const CliResult sent = sync(maker, server("press_a"));
+    ASSERT_EQ(sent.exitCode, 0) << sent.err.toStdString();
+    EXPECT_EQ(connect().query("SELECT string_agg(unit, ',' ORDER BY position) FROM channels").text(0, 0), "N,");
+    EXPECT_NE(connect().query("SELECT sample_rate_hz FROM channels LIMIT 1").text(0, 0), "100");
+    EXPECT_EQ(connect().query("SELECT count(*) FROM events WHERE note LIKE 'the sample rate, %'").text(0, 0), "1");
+    const QString csv = exported(server("quality"), listed(maker).begin()->first, "csv", "board-central.csv");
+    EXPECT_TRUE(
+        QString::fromStdString(fileBytes(csv.toStdString())).contains(QStringLiteral("nan"), Qt::CaseInsensitive));
     expectSameExports(maker, server("quality"));
 }
 
