@@ -4,6 +4,7 @@
 #include "core/text/NamedList.h"
 
 #include <array>
+#include <cctype>
 #include <stdexcept>
 
 namespace tactiscope::core {
@@ -46,6 +47,20 @@ std::optional<double> factorOf(std::string_view unit, ChannelKind kind)
     return physical->factor;
 }
 
+// The unit of the table spelt as `unit` in another case ("MN" for mN,
+// "PF" for pF): a slip, since a unit's case is part of it (M is mega).
+std::optional<std::string_view> otherCaseOf(std::string_view unit)
+{
+    const auto lower = [](std::string_view text) {
+        std::string folded(text);
+        for (char& c : folded) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return folded;
+    };
+    for (const auto& entry : kUnits)
+        if (entry.name != unit && lower(entry.name) == lower(unit)) return entry.name;
+    return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<PhysicalUnit> physicalUnit(std::string_view unit)
@@ -76,6 +91,10 @@ UnitAssignment parseUnitAssignment(std::string_view text)
         // "force=mN;pos=mm": one item, whose unit would swallow the next.
         if (unit.find_first_of("=;") != std::string::npos)
             throw std::invalid_argument("'" + unit + "' is not a unit (separate the items with ',')");
+        if (!physicalUnit(unit))
+            if (const auto meant = otherCaseOf(unit))
+                throw std::invalid_argument("'" + unit + "' (" + name + "): did you mean " + std::string(*meant) +
+                                            "? A unit's case is part of it");
         units.emplace(std::move(name), std::move(unit));
     }
     return units;

@@ -54,7 +54,8 @@ QString usage()
 {
     QString text;
     QTextStream out(&text);
-    out << "Usage: tactiscope-cli [--help] [--version] <command> [options]\n\n"
+    out << "Usage: tactiscope-cli [--help] [--version] <command> [options]\n"
+        << "       tactiscope-cli help [<command>]\n\n"
         << "Headless tools of Tactiscope, the tactile-sensor inspection workstation.\n\n"
         << "Commands:\n";
     for (const Command& command : kCommands)
@@ -77,6 +78,16 @@ int runCli(const QStringList& arguments)
     if (first == QLatin1String("--version")) {
         QTextStream(stdout) << "tactiscope-cli " << core::versionString() << '\n';
         return kExitOk;
+    }
+    // "help" and "help record", as git and most tools take them.
+    if (first == QLatin1String("help")) {
+        if (arguments.size() == 1) {
+            QTextStream(stdout) << usage();
+            return kExitOk;
+        }
+        if (arguments.size() == 2 && !arguments[1].startsWith(QLatin1Char('-')))
+            return runCli({arguments[1], QStringLiteral("--help")});
+        return usageError(QStringLiteral("help takes one command's name"), usage());
     }
     if (first.startsWith(QLatin1Char('-')))
         return usageError(QStringLiteral("unknown option '%1'").arg(first), usage());

@@ -24,6 +24,17 @@ inline SessionEvent alarmRecord(double start_s, double end_s, std::string note)
     return event;
 }
 
+// A note at one instant: what the user marked, or what the recording must
+// carry from its start (how a text board's rate was found).
+inline SessionEvent noteRecord(double time_s, std::string note)
+{
+    SessionEvent event;
+    event.kind = EventKind::Marker;
+    event.start_s = event.end_s = time_s;
+    event.note = std::move(note);
+    return event;
+}
+
 inline SessionEvent defectRecord(const detector::DefectEvent& e, const std::string& analysis = kLiveAnalysis)
 {
     SessionEvent event;

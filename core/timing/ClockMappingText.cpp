@@ -12,7 +12,7 @@ std::string clockMappingText(const std::string& clockJson)
 {
     if (clockJson.empty()) return "not mapped (no frames with the device's times were seen)";
     const auto clock = clockMappingFromJson(clockJson);
-    if (!clock) return "not mapped (the stored mapping cannot be read: the file was altered)";
+    if (!clock) return "not mapped (the stored mapping does not read as one: damaged, or written by another program)";
     const auto u_s = clock->uncertainty_s(0.0);
     char text[256];
     int n = std::snprintf(text, sizeof text, "%+.6f s at the start", clock->host_s(0.0));

@@ -324,8 +324,9 @@ void LiveSession::recordUnstoppedEnd(RecordingSummary& summary)
 }
 
 // What the record must carry from before its start: a device that
-// contradicted itself still does (the link tells it only now and then), and
-// a rate that was estimated rather than given.
+// contradicted itself still does (the link tells it only now and then: an
+// alarm), and a rate that was estimated rather than given (a note: nothing
+// went wrong, but every time in the session rests on it).
 void LiveSession::recordStandingFaults()
 {
     std::vector<core::storage::SessionEvent> alarms;
@@ -336,7 +337,7 @@ void LiveSession::recordStandingFaults()
             "before this recording the device's sequence numbers contradicted its clock " +
                 std::to_string(counters.sequenceFaults) +
                 " times: they are not believed, losses are counted only where its clock agrees"));
-    if (const auto rate = source().rateNote()) alarms.push_back(core::storage::alarmRecord(0.0, 0.0, *rate));
+    if (const auto rate = source().rateNote()) alarms.push_back(core::storage::noteRecord(0.0, *rate));
     if (!alarms.empty()) m_recorder->addEvents(std::move(alarms));
 }
 
@@ -417,11 +418,7 @@ core::storage::RecorderStats LiveSession::recorderStats() const
 bool LiveSession::addMarker(double time_s, const std::string& note)
 {
     if (!m_recorder) return false;
-    core::storage::SessionEvent marker;
-    marker.kind = core::EventKind::Marker;
-    marker.start_s = marker.end_s = time_s;
-    marker.note = note;
-    m_recorder->addEvents({marker});
+    m_recorder->addEvents({core::storage::noteRecord(time_s, note)});
     return true;
 }
 

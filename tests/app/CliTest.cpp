@@ -36,6 +36,14 @@ TEST(Cli, HelpListsTheCommands)
     EXPECT_EQ(run.exitCode, 0);
     EXPECT_TRUE(run.out.startsWith(QStringLiteral("Usage: tactiscope-cli")));
     EXPECT_TRUE(run.out.contains(QStringLiteral("simulate")));
+    // "help" and "help COMMAND", as most tools take them.
+    const CliResult help = runCli({QStringLiteral("help")});
+    EXPECT_EQ(help.exitCode, 0);
+    EXPECT_EQ(help.out, run.out);
+    const CliResult record = runCli({QStringLiteral("help"), QStringLiteral("record")});
+    EXPECT_EQ(record.exitCode, 0);
+    EXPECT_TRUE(record.out.startsWith(QStringLiteral("Usage: tactiscope-cli record"))) << record.out.toStdString();
+    EXPECT_EQ(runCli({QStringLiteral("help"), QStringLiteral("frobnicate")}).exitCode, 2);
 }
 
 TEST(Cli, VersionPrintsTheBuildVersion)

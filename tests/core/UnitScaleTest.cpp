@@ -55,4 +55,9 @@ TEST(UnitScale, TheUnitsListNamesEachChannelOnceWithAUnit)
     EXPECT_EQ(message("a="), "channel 'a' is given no unit");
     EXPECT_EQ(message("a=mN,a=N"), "channel 'a' is given two units");
     EXPECT_EQ(message("force=mN;pos=mm"), "'mN;pos=mm' is not a unit (separate the items with ',')");
+    // A unit of the table in another case is a slip, not a unit of its own
+    // (MN would be a meganewton); one not in the table is kept as given.
+    EXPECT_EQ(message("force=MN"), "'MN' (force): did you mean mN? A unit's case is part of it");
+    EXPECT_EQ(message("c=PF"), "'PF' (c): did you mean pF? A unit's case is part of it");
+    EXPECT_EQ(parseUnitAssignment("t=degC,h=%"), (UnitAssignment{{"t", "degC"}, {"h", "%"}}));
 }

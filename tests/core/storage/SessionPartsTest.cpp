@@ -172,7 +172,7 @@ TEST_F(SessionPartsTest, AStoredMappingComesBackAndAnAlteredOneReadsAsNone)
         EXPECT_FALSE(timing::clockMappingFromJson(altered)) << altered;
         store.setClockMapping(ids.cell, altered);
         EXPECT_EQ(timing::clockMappingText(store.parts(ids.session)[1].clockJson),
-                  "not mapped (the stored mapping cannot be read: the file was altered)");
+                  "not mapped (the stored mapping does not read as one: damaged, or written by another program)");
     }
 }
 

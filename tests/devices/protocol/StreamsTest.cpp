@@ -275,7 +275,7 @@ TEST(TextStream, MeasuresTheRateFromTheArrivalsAndHoldsTheLinesUntilThen)
     EXPECT_LT(*stream.measuredRate()->u_hz, 0.5);
     EXPECT_FALSE(stream.measuredRate()->boardClock);
     ASSERT_FALSE(out.empty());
-    EXPECT_EQ(out[0].value(0, 0), 0.0);  // held lines come out first, in order
+    EXPECT_EQ(out[0].value(0, 0), 0.0);                      // held lines come out first, in order
     EXPECT_EQ(out.size(), static_cast<std::size_t>(burst));  // a block per read
 }
 

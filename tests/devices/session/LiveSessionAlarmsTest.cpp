@@ -1,7 +1,7 @@
 // What a recording says about its link before anything goes wrong in it: a
-// rate that was estimated, not given (a text device sends no clock), is an
-// alarm at the session's start, so every time in the session is read with
-// that in mind. The source is the simulator, saying its rate is estimated.
+// rate that was estimated, not given (a text device sends no clock), is a
+// note at the session's start (no alarm: nothing went wrong), so every
+// time in the session is read with that in mind. The source is the simulator, saying its rate is estimated.
 #include "core/storage/SessionStore.h"
 #include "devices/session/LiveSession.h"
 #include "devices/simulator/ScenarioCatalog.h"
@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <thread>
 #include <unistd.h>
@@ -55,7 +56,8 @@ TEST(LiveSessionAlarms, AnEstimatedRateIsSaidAtTheRecordingsStart)
     }
     core::storage::SessionStore sessions(store.string(), core::storage::Database::Access::ReadOnly);
     auto events = sessions.events(id);
-    std::erase_if(events, [](const auto& e) { return e.kind != core::EventKind::Alarm; });
+    EXPECT_TRUE(std::ranges::none_of(events, [](const auto& e) { return e.kind == core::EventKind::Alarm; }));
+    std::erase_if(events, [](const auto& e) { return e.kind != core::EventKind::Marker; });
     ASSERT_EQ(events.size(), 1u);
     EXPECT_EQ(events[0].start_s, 0.0);
     EXPECT_EQ(events[0].note, "the sample rate was estimated");
