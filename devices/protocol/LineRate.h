@@ -47,7 +47,7 @@ public:
     // Timing by arrivals begins this long after the first line.
     static constexpr double kBacklog_s = 0.5;
     static constexpr double kSettledU = 1e-4;
-    static constexpr double kLongestWindow_s = 10.0;
+    static constexpr double kLongestWindow_s = 5.0;
 
     // One line (a sample, or a hole: it was sent too), when it arrived and
     // the board's time on it.

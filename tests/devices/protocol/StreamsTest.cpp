@@ -265,7 +265,7 @@ TEST(TextStream, MeasuresTheRateFromTheArrivalsAndHoldsTheLinesUntilThen)
     ASSERT_TRUE(stream.sampleRate_hz().has_value());
     const double timedOver_s = (burst - 1) * 0.05 - 0.55;
     EXPECT_GE(timedOver_s, LineRate::kWindow_s);
-    EXPECT_LE(timedOver_s, LineRate::kLongestWindow_s + 0.05);
+    EXPECT_LE(timedOver_s, 1.1 * LineRate::kLongestWindow_s + 0.05);  // looked at as the lines grow by a tenth
     EXPECT_TRUE(*stream.measuredRate()->u_hz <= LineRate::kSettledU * 100.0 ||
                 timedOver_s >= LineRate::kLongestWindow_s);
     // Five lines arrive at once: each is up to 40 ms late, in a sawtooth
