@@ -163,6 +163,16 @@ namespace {
 // What a store holds is sent to the central store and read everywhere: its
 // text must be UTF-8 without NUL (a server refuses the one and cuts the
 // other), its uuid a uuid (one holding '"' once stopped every later sync).
+void refuseUnstorableText(std::span<const ChannelDescriptor> channels)
+{
+    for (const ChannelDescriptor& c : channels)
+        for (const auto& [text, what] :
+             {std::pair{c.name, std::string("channel name")}, std::pair{c.unit, "channel unit '" + c.name + "'"}})
+            if (const auto problem = text::textProblem(text))
+                throw StoreInputError("the session's " + what + " cannot be stored: " + *problem +
+                                      " (text must be UTF-8 without NUL); nothing was stored");
+}
+
 void refuseUnstorableText(const SessionMetadata& m, std::span<const ChannelDescriptor> channels,
                           const SessionOrigin& origin)
 {
@@ -184,13 +194,26 @@ void refuseUnstorableText(const SessionMetadata& m, std::span<const ChannelDescr
     check(m.deviceName, "device name");
     check(origin.startedUtc, "start time");
     check(origin.appVersion, "app version");
-    for (const ChannelDescriptor& c : channels) {
-        check(c.name, "channel name");
-        check(c.unit, "channel unit '" + c.name + "'");
-    }
+    refuseUnstorableText(channels);
     if (!origin.uuid.empty() && !text::isUuid(origin.uuid))
         throw StoreInputError("the session's uuid '" + origin.uuid.substr(0, 40) +
                               "' is not a uuid (8-4-4-4-12 hexadecimal digits); nothing was stored");
+}
+
+// `block` with `channels` channels, those it lacks NaN.
+SampleBlock withChannels(const SampleBlock& block, std::size_t channels)
+{
+    if (block.channelCount() >= channels) return block;
+    SampleBlock padded(channels, block.sampleCount(), block.t0_s(), block.dt_s(), block.firstSampleIndex(),
+                       block.sequence());
+    for (std::size_t c = 0; c < channels; ++c) {
+        auto out = padded.channel(c);
+        if (c < block.channelCount())
+            std::ranges::copy(block.channel(c), out.begin());
+        else
+            std::ranges::fill(out, std::numeric_limits<double>::quiet_NaN());
+    }
+    return padded;
 }
 
 }  // namespace
@@ -235,11 +258,19 @@ std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<cons
     refuseUnstorableText(m, channels, origin);
     Transaction transaction(m_db);
     const std::int64_t id = insertSessionRow(m, origin);
+    insertChannelRows(id, channels, 0, sampleRate_hz);
+    transaction.commit();
+    return id;
+}
+
+void SessionStore::insertChannelRows(std::int64_t session, std::span<const ChannelDescriptor> channels,
+                                     std::size_t firstPosition, double sampleRate_hz)
+{
     auto insert = m_db.prepare("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz, role) "
                                "VALUES (?, ?, ?, ?, ?, ?, ?)");
     for (std::size_t c = 0; c < channels.size(); ++c) {
-        insert.bind(1, id)
-            .bind(2, static_cast<std::int64_t>(c))
+        insert.bind(1, session)
+            .bind(2, static_cast<std::int64_t>(firstPosition + c))
             .bind(3, channels[c].name)
             .bind(4, channels[c].unit)
             .bind(5, toString(channels[c].kind))
@@ -247,8 +278,18 @@ std::int64_t SessionStore::beginSession(const SessionMetadata& m, std::span<cons
             .bind(7, roleWord(channels[c].role))
             .run();
     }
+}
+
+void SessionStore::addChannels(std::int64_t session, std::span<const ChannelDescriptor> added)
+{
+    if (added.empty()) return;
+    refuseUnstorableText(added);
+    const auto existing = channels(session);
+    if (existing.empty()) throw StorageError("session " + std::to_string(session) + " has no channels to add to");
+    Transaction transaction(m_db);
+    insertChannelRows(session, added, existing.size(), existing.front().sampleRate_hz);
+    padChunks(session, existing.size(), added.size());
     transaction.commit();
-    return id;
 }
 
 lod::LodTable SessionStore::pyramid(std::int64_t session, std::size_t channel)
@@ -271,11 +312,16 @@ void SessionStore::appendChunk(std::int64_t session, std::span<const SampleBlock
         .run();
 }
 
-void SessionStore::appendBlocks(std::int64_t session, std::span<const SampleBlock> blocks)
+void SessionStore::appendBlocks(std::int64_t session, std::span<const SampleBlock> given)
 {
-    if (blocks.empty()) return;
+    if (given.empty()) return;
     Transaction transaction(m_db);
     const std::size_t channelCount = channels(session).size();
+    // A block from before the session gained channels holds them as holes.
+    std::vector<SampleBlock> padded;
+    if (std::ranges::any_of(given, [&](const SampleBlock& b) { return b.channelCount() < channelCount; }))
+        for (const SampleBlock& block : given) padded.push_back(withChannels(block, channelCount));
+    const std::span<const SampleBlock> blocks = padded.empty() ? given : std::span<const SampleBlock>(padded);
     std::uint64_t end = sampleCount(session);
     std::vector<lod::LodBuilder> pyramids;
     for (std::size_t c = 0; c < channelCount; ++c) pyramids.push_back(pyramid(session, c).builderAt(end));

@@ -44,7 +44,12 @@ public:
     // The mapping of a part's clock onto its session's
     // (core/timing/ClockMappingJson), replacing the one before.
     void setClockMapping(std::int64_t part, const std::string& clockJson);
-    void appendBlocks(std::int64_t session, std::span<const SampleBlock> blocks);  // one transaction
+    // One transaction. A block may hold fewer channels than the session
+    // (it came before the session gained some): the rest are holes.
+    void appendBlocks(std::int64_t session, std::span<const SampleBlock> blocks);
+    // Channels the session gains while recorded, after its others: holes
+    // (NaN) in every sample stored before.
+    void addChannels(std::int64_t session, std::span<const ChannelDescriptor> added);
     // Records samples lost after the last stored ones (e.g. at the end of a
     // recording, where no later block marks the gap). No-op when none are.
     void markLostUntil(std::int64_t session, std::uint64_t endIndex);
@@ -136,6 +141,11 @@ private:
     lod::LodTable pyramid(std::int64_t session, std::size_t channel);
     void showCrashedRecordingsInterrupted(std::span<SessionSummary> summaries);
     std::int64_t insertSessionRow(const SessionMetadata& metadata, const SessionOrigin& origin);
+    void insertChannelRows(std::int64_t session, std::span<const ChannelDescriptor> channels, std::size_t firstPosition,
+                           double sampleRate_hz);
+    // Channels [from, from + added) of every stored chunk and their
+    // pyramids, as holes (SessionGrowth.cpp).
+    void padChunks(std::int64_t session, std::size_t from, std::size_t added);
     void refuseUnknownParent(std::int64_t session);
 
     Database m_db;
