@@ -4,6 +4,7 @@
 #include "core/SampleBlock.h"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace tactiscope::core {
@@ -23,6 +24,16 @@ void LiveBuffer::consume(const SampleBlock& block)
     const std::lock_guard lock(m_mutex);
     for (std::size_t i = 0; i < block.sampleCount(); ++i) m_time.push(block.timeAt_s(i));
     for (std::size_t c = 0; c < m_channels.size(); ++c) m_channels[c].push(block.channel(c));
+}
+
+// A channel that began mid-stream holds no value before it: NaN, as a hole.
+void LiveBuffer::channelsGrew(const std::vector<ChannelDescriptor>& all)
+{
+    const std::lock_guard lock(m_mutex);
+    while (m_channels.size() < all.size()) {
+        m_channels.emplace_back(m_time.capacity());
+        m_channels.back().fillTo(m_time.endIndex(), std::numeric_limits<double>::quiet_NaN());
+    }
 }
 
 std::size_t LiveBuffer::readNew(LiveCursor& cursor, LiveChunk& out, std::size_t maxSamples) const

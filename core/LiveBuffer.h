@@ -38,12 +38,18 @@ public:
     // when either count is zero.
     LiveBuffer(std::size_t channelCount, std::size_t capacitySamples);
 
-    std::size_t channelCount() const { return m_channels.size(); }
+    std::size_t channelCount() const
+    {
+        const std::lock_guard lock(m_mutex);
+        return m_channels.size();
+    }
     std::size_t capacity() const { return m_time.capacity(); }
 
     // Writer side (acquisition thread). Throws std::invalid_argument when the
     // block's channel count differs from the buffer's.
     void consume(const SampleBlock& block) override;
+    // New channels: NaN for the samples held before them.
+    void channelsGrew(const std::vector<ChannelDescriptor>& all) override;
 
     // Reader side: copies at most maxSamples samples after cursor.next into
     // out (replacing its contents) and advances the cursor. When samples were

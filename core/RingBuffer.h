@@ -75,6 +75,14 @@ public:
     }
 
     void clear() { m_written = 0; }
+    // Pushes `value` until endIndex() is `end` (at most capacity() of them
+    // are held): a ring begun late, aligned with others.
+    void fillTo(std::uint64_t end, const T& value)
+    {
+        if (end <= m_written) return;
+        m_written = std::max(m_written, end - std::min<std::uint64_t>(end, capacity()));
+        while (m_written < end) push(value);
+    }
 
 private:
     std::size_t slot(std::uint64_t index) const { return static_cast<std::size_t>(index % capacity()); }

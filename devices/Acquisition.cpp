@@ -93,6 +93,11 @@ void Acquisition::run(const std::stop_token& stopToken)
         }
 
         try {
+            if (auto grown = m_source->takeGrownChannels()) {
+                for (const auto& sink : m_sinks) sink->channelsGrew(*grown);
+                const std::lock_guard lock(m_statsMutex);
+                m_grownChannels = std::move(grown);
+            }
             for (const auto& sink : m_sinks) sink->consume(block);
         } catch (const std::exception& e) {
             fail(std::string("processing failed: ") + e.what());

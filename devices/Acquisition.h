@@ -17,6 +17,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace tactiscope::devices {
@@ -56,6 +57,13 @@ public:
     BlockSource& source() { return *m_source; }
     // The source's notices since the last call (any thread).
     std::vector<LinkNotice> takeNotices() { return m_source->takeNotices(); }
+    // The channels the source grew to since the last call, after the sinks
+    // were told (BlockSink::channelsGrew); none when it did not. Any thread.
+    std::optional<std::vector<core::ChannelDescriptor>> takeGrownChannels()
+    {
+        const std::lock_guard lock(m_statsMutex);
+        return std::exchange(m_grownChannels, std::nullopt);
+    }
 
 private:
     void run(const std::stop_token& stopToken);
@@ -65,6 +73,7 @@ private:
     std::vector<std::shared_ptr<core::BlockSink>> m_sinks;
     mutable std::mutex m_statsMutex;
     AcquisitionStats m_stats;
+    std::optional<std::vector<core::ChannelDescriptor>> m_grownChannels;  // not yet taken
     core::RateMeter m_rateMeter;
     std::jthread m_worker;
 };

@@ -74,6 +74,11 @@ public:
     // What the link noticed since the last call (a device restart, a
     // sequence its clock contradicted), oldest first. Any thread.
     virtual std::vector<LinkNotice> takeNotices() { return {}; }
+    // All the channels, when the block readBlock() just gave holds more
+    // than those before (a board printing lines began to print another
+    // value: channels() stays as connected); none otherwise. The reading
+    // thread's, after readBlock().
+    virtual std::optional<std::vector<core::ChannelDescriptor>> takeGrownChannels() { return std::nullopt; }
     // The last bytes received on the wire (at most a few kB), for the raw
     // data console; empty for sources without a wire. Any thread.
     virtual std::vector<std::uint8_t> recentBytes() const { return {}; }

@@ -1,7 +1,8 @@
 // Something the link saw that the record must keep (a device restart, a
-// sequence number its clock contradicted): when, in the source's stream
-// time, and one sentence. The live session stores each as an alarm event
-// while recording and tells the operator.
+// sequence number its clock contradicted, a board's new layout): when, in
+// the source's stream time, and one sentence. The live session stores each
+// as an event while recording (an alarm, or a note where nothing went
+// wrong) and tells the operator.
 #pragma once
 
 #include <string>
@@ -11,6 +12,7 @@ namespace tactiscope::devices {
 struct LinkNotice {
     double time_s = 0.0;
     std::string text;
+    bool alarm = true;
 };
 
 }  // namespace tactiscope::devices

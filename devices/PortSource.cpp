@@ -65,11 +65,17 @@ PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const Po
             throw transport::TransportError(m_transport->description() + ": a unit is given for '" + unknown.front() +
                                             "', which the board does not print; its channels are " +
                                             channelNames(m_text->channels()));
+        // The stream begins with the layout of its first block: the board
+        // may have printed another while its rate was timed (the blocks
+        // then grow, BlockSource::takeGrownChannels).
         m_channels = m_text->channels();
+        m_channels.resize(std::min(m_channels.size(), m_queue.front().channelCount()));
+        m_streamChannels = m_channels;
         m_rate_hz = *m_text->sampleRate_hz();
         m_streamStart_s = steadySeconds();
     } else {
         m_channels = m_binary.channels();
+        m_streamChannels = m_channels;
         m_rate_hz = *m_binary.sampleRate_hz();
     }
 }
@@ -230,6 +236,9 @@ void PortSource::pump(std::chrono::milliseconds timeout)
         enqueue(blocks, m_counters, arrivals);
         if (auto warning = m_text->takeRateWarning())
             m_notices.push_back({blocks.empty() ? 0.0 : blocks.back().endTime_s(), std::move(*warning)});
+        for (auto& change : m_text->takeLayoutChanges())
+            m_notices.push_back(
+                {static_cast<double>(change.sampleIndex) / *m_text->sampleRate_hz(), std::move(change.what), false});
     } else {
         protocol::StreamOutput out;
         m_binary.push(bytes, arrival_s, out);
@@ -258,7 +267,13 @@ ReadStatus PortSource::readBlock(core::SampleBlock& out, std::chrono::millisecon
         return ReadStatus::Failed;
     }
     if (m_queue.empty()) return ReadStatus::Timeout;
-    if (m_queue.front().channelCount() != m_channels.size()) {
+    // A text board's new layout: its blocks hold the channels it grew to.
+    if (m_text && m_queue.front().channelCount() > m_streamChannels.size()) {
+        m_streamChannels = m_text->channels();
+        m_streamChannels.resize(m_queue.front().channelCount());
+        m_grownChannels = m_streamChannels;
+    }
+    if (m_queue.front().channelCount() != m_streamChannels.size()) {
         m_error = "the device changed its channels while streaming (" + std::to_string(m_channels.size()) + " to " +
                   std::to_string(m_queue.front().channelCount()) + "); reconnect it by hand to record the new ones";
         m_failedForGood = true;  // reopened, it would be another recording's device

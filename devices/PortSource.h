@@ -20,6 +20,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <utility>
 
 namespace tactiscope::devices {
 
@@ -54,6 +55,10 @@ public:
     // Thread-safe snapshots for the UI and the record summary.
     protocol::DecoderCounters decoderCounters() const override;
     std::vector<LinkNotice> takeNotices() override;
+    std::optional<std::vector<core::ChannelDescriptor>> takeGrownChannels() override
+    {
+        return std::exchange(m_grownChannels, std::nullopt);
+    }
     std::vector<std::uint8_t> recentBytes() const override;
     bool textProtocol() const override { return m_text.has_value(); }
     std::optional<std::string> rateNote() const override;
@@ -92,7 +97,11 @@ private:
     protocol::BinaryStream m_binary;
     std::optional<protocol::TextStream> m_text;
     std::deque<core::SampleBlock> m_queue;
-    std::vector<core::ChannelDescriptor> m_channels;
+    std::vector<core::ChannelDescriptor> m_channels;  // as the handshake found them
+    // The reading thread's: the channels of the blocks read, and those they
+    // grew to with the last block read, until taken.
+    std::vector<core::ChannelDescriptor> m_streamChannels;
+    std::optional<std::vector<core::ChannelDescriptor>> m_grownChannels;
     double m_rate_hz = 0.0;
     std::string m_error;
     bool m_failedForGood = false;

@@ -194,6 +194,11 @@ bool ReconnectingSource::textProtocol() const
     return m_source && m_source->textProtocol();
 }
 
+std::optional<std::vector<core::ChannelDescriptor>> ReconnectingSource::takeGrownChannels()
+{
+    return m_source ? m_source->takeGrownChannels() : std::nullopt;
+}
+
 ReadStatus ReconnectingSource::readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout)
 {
     if (m_failedForGood) return ReadStatus::Failed;

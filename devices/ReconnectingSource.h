@@ -51,6 +51,8 @@ public:
     protocol::DecoderCounters decoderCounters() const override;
     // Of every connection so far, in the stream's time.
     std::vector<LinkNotice> takeNotices() override;
+    // The current connection's.
+    std::optional<std::vector<core::ChannelDescriptor>> takeGrownChannels() override;
     std::optional<std::string> requestShunt(std::size_t channel, bool on) override;
     std::vector<DeviceStatus> takeStatuses() override;
     // Of the current connection.

@@ -212,8 +212,9 @@ void RecordOutput::reportSeveral(const devices::session::RecordingEnd& end)
     }
 }
 
-// The values a board sent that were no number ("nan", "inf"): stored as
-// holes in their channel, the others' values at those samples kept.
+// The values a board sent that were no number ("nan", "inf"), or did not
+// send (a channel its new layout no longer prints, one it began to print
+// later): stored as holes in their channel, the others' values kept.
 void RecordOutput::tellHoles(const std::string& device, const devices::session::RecordingSummary& summary,
                              const std::vector<core::ChannelDescriptor>& channels)
 {
@@ -222,8 +223,8 @@ void RecordOutput::tellHoles(const std::string& device, const devices::session::
         if (summary.stats.holes[c] > 0)
             counts << QStringLiteral("%1 in %2").arg(summary.stats.holes[c]).arg(toQString(channels[c].name));
     if (counts.isEmpty()) return;
-    printError(QStringLiteral("%1note: values that were no number (nan, inf) are stored as holes in their channel "
-                              "alone: %2")
+    printError(QStringLiteral("%1note: values that were no number (nan, inf) or not printed are stored as holes in "
+                              "their channel alone: %2")
                    .arg(from(device), counts.join(QStringLiteral(", "))));
 }
 

@@ -18,7 +18,8 @@ Recorder::Recorder(const std::string& storePath, const SessionMetadata& metadata
     : m_sampleRate_hz(sampleRate_hz),
       m_lock(metadata.partOf != 0 ? std::nullopt : std::optional<RecorderLock>(RecorderLock::acquire(storePath))),
       m_store(storePath),
-      m_maxQueued(maxQueuedSamples)
+      m_maxQueued(maxQueuedSamples),
+      m_channelCount(channels.size())
 {
     m_store.refuseIfDamaged();  // a damaged file only gets worse with every page written
     if (m_lock) m_store.markCrashedSessionsInterrupted();
@@ -102,6 +103,15 @@ void Recorder::markLostUntil(double sessionTime_s)
     if (end > static_cast<double>(m_consumedEnd)) m_consumedEnd = static_cast<std::uint64_t>(end);
 }
 
+void Recorder::addChannels(const std::vector<ChannelDescriptor>& all)
+{
+    const std::lock_guard lock(m_mutex);
+    if (all.size() <= m_channelCount) return;
+    m_queuedChannels.insert(m_queuedChannels.end(), all.begin() + static_cast<std::ptrdiff_t>(m_channelCount),
+                            all.end());
+    m_channelCount = all.size();
+}
+
 std::optional<double> Recorder::consumedUntil_s() const
 {
     const std::lock_guard lock(m_mutex);
@@ -141,9 +151,11 @@ void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
 {
     // Zeros wait for the first block, which fixes the session's sample 0.
     const bool zeros = !m_queuedZeros.empty() && m_firstIndex;
-    if ((m_queue.empty() && m_queuedEvents.empty() && m_queuedReadings.empty() && !zeros && !m_queuedClock) ||
+    if ((m_queue.empty() && m_queuedEvents.empty() && m_queuedReadings.empty() && !zeros && !m_queuedClock &&
+         m_queuedChannels.empty()) ||
         !m_stats.error.empty())
         return;
+    const std::vector<ChannelDescriptor> channels = std::exchange(m_queuedChannels, {});
     const std::optional<std::string> clock = std::exchange(m_queuedClock, std::nullopt);
     std::vector<SessionZero> zeroRecords;
     if (zeros) {
@@ -162,6 +174,8 @@ void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
     lock.unlock();  // the acquisition keeps queueing while the disk works
     std::string error;
     try {
+        // First: blocks from before they came hold them as holes.
+        if (!channels.empty()) m_store.addChannels(m_session, channels);
         m_store.appendBlocks(m_session, batch);
         if (!events.empty()) m_store.addEvents(m_session, events);
         for (const auto& reading : readings) m_store.addReading(m_session, reading);

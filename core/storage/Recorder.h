@@ -58,6 +58,11 @@ public:
 
     std::int64_t sessionId() const { return m_session; }
     void consume(const SampleBlock& block) override;  // acquisition thread
+    // The device's channels, grown while recording (a board printing lines
+    // began to print another value): those past the session's are added to
+    // it with the next commit, holes before (SessionStore::addChannels).
+    // Blocks of them may follow at once. Any thread.
+    void addChannels(const std::vector<ChannelDescriptor>& all);
     // Events (e.g. an operator's marker) stored with the next commit; any thread.
     void addEvents(std::vector<SessionEvent> events);
     // Readings (e.g. a press's stiffness), likewise; times on the session clock.
@@ -102,6 +107,8 @@ private:
     std::int64_t m_session = 0;
     std::uint64_t m_maxQueued;
     mutable std::mutex m_mutex;
+    std::size_t m_channelCount;                       // the session's, with those queued
+    std::vector<ChannelDescriptor> m_queuedChannels;  // gained, not yet stored
     std::condition_variable_any m_wake;
     std::deque<SampleBlock> m_queue;
     std::vector<SessionEvent> m_queuedEvents;

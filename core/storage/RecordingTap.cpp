@@ -30,9 +30,17 @@ void RecordingTap::attach(std::shared_ptr<Recorder> recorder, RecordingStartFind
 {
     const std::lock_guard lock(m_mutex);
     m_recorder = std::move(recorder);
+    if (m_recorder) m_recorder->addChannels(m_grownTo);
     m_finder = std::move(start);
     m_held.clear();
     m_from_s.reset();
+}
+
+void RecordingTap::channelsGrew(const std::vector<ChannelDescriptor>& all)
+{
+    const std::lock_guard lock(m_mutex);
+    m_grownTo = all;
+    if (m_recorder) m_recorder->addChannels(all);
 }
 
 std::shared_ptr<Recorder> RecordingTap::detach()

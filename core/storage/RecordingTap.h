@@ -51,6 +51,8 @@ public:
     // no block reaches it afterwards.
     std::shared_ptr<Recorder> detach();
     void consume(const SampleBlock& block) override;
+    // To the recorder attached, and to each attached later.
+    void channelsGrew(const std::vector<ChannelDescriptor>& all) override;
 
 private:
     // Records the blocks held, from `start` on (and later blocks too, until
@@ -60,9 +62,10 @@ private:
 
     std::mutex m_mutex;
     std::shared_ptr<Recorder> m_recorder;
-    RecordingStartFinder m_finder;    // until the start is known
-    std::vector<SampleBlock> m_held;  // meanwhile
-    std::optional<double> m_from_s;   // until a block reaches it
+    RecordingStartFinder m_finder;             // until the start is known
+    std::vector<SampleBlock> m_held;           // meanwhile
+    std::optional<double> m_from_s;            // until a block reaches it
+    std::vector<ChannelDescriptor> m_grownTo;  // the device's channels, once they grew
 };
 
 }  // namespace tactiscope::core::storage

@@ -16,6 +16,22 @@ std::vector<std::string> labelsOf(const TextLine& line)
     return labels;
 }
 
+std::vector<std::string> sortedLabelsOf(const TextLine& line)
+{
+    auto labels = labelsOf(line);
+    std::ranges::sort(labels);
+    return labels;
+}
+
+// "a, b and c"
+std::string listed(const std::vector<std::string>& names)
+{
+    std::string text;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        text += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+    return text;
+}
+
 // A value beyond the ±3.4e38 a stored (binary32) sample holds would be
 // stored as infinity: like "nan" or "inf" printed, it is no number, a hole
 // in its channel alone. Returns how many a line holds.
@@ -102,21 +118,86 @@ void TextDecoder::flushGathering(std::vector<TextSample>& out)
 
 std::optional<std::vector<double>> TextDecoder::inLayout(const TextLine& line) const
 {
-    if (line.fields.size() != m_labels.size()) return std::nullopt;
-    std::vector<double> values(m_labels.size());
-    for (std::size_t c = 0; c < m_labels.size(); ++c) {
-        if (m_labels[c].empty()) {
-            // Unlabelled: by position, and only where the line is unlabelled too.
-            if (!line.fields[c].label.empty()) return std::nullopt;
-            values[c] = line.fields[c].value;
-            continue;
+    // Teleplot's variables are printed each on its own: an instant may
+    // lack some (holes), not hold others. Any other line prints the layout.
+    if (m_teleplot) {
+        for (const auto& field : line.fields)
+            if (std::ranges::find(m_labels, field.label) == m_labels.end()) return std::nullopt;
+    } else if (sortedLabelsOf(line) != m_layout) {
+        return std::nullopt;
+    }
+    std::vector<double> values(m_labels.size(), std::numeric_limits<double>::quiet_NaN());
+    std::size_t unlabelled = 0;  // the k-th unlabelled value is the k-th unlabelled channel's
+    for (const auto& field : line.fields) {
+        std::size_t c = 0;
+        if (field.label.empty()) {
+            for (std::size_t seen = 0; c < m_labels.size(); ++c)
+                if (m_labels[c].empty() && seen++ == unlabelled) break;
+            ++unlabelled;
+        } else {
+            c = static_cast<std::size_t>(std::ranges::find(m_labels, field.label) - m_labels.begin());
         }
-        const auto field =
-            std::ranges::find_if(line.fields, [&](const TextField& f) { return f.label == m_labels[c]; });
-        if (field == line.fields.end()) return std::nullopt;
-        values[c] = field->value;
+        values[c] = field.value;
     }
     return values;
+}
+
+std::optional<std::string> TextDecoder::adopt(const TextLine& line)
+{
+    const bool first = m_labels.empty();
+    std::vector<std::string> appeared;
+    std::size_t unlabelled = 0;
+    for (const auto& field : line.fields) {
+        const bool known = field.label.empty()
+                               ? unlabelled++ < static_cast<std::size_t>(std::ranges::count(m_labels, std::string()))
+                               : std::ranges::find(m_labels, field.label) != m_labels.end();
+        if (known) continue;
+        m_labels.push_back(field.label);
+        m_names.push_back(field.label.empty() ? "ch" + std::to_string(m_labels.size()) : field.label);
+        m_units.push_back(field.unit);
+        appeared.push_back(m_names.back());
+    }
+    // What the old layout printed and this one does not.
+    std::vector<std::string> gone;
+    auto now = sortedLabelsOf(line);
+    if (!m_teleplot) {
+        std::size_t unlabelledBefore = 0;
+        for (const auto& label : m_layout) {
+            if (!label.empty() && std::ranges::find(now, label) == now.end()) gone.push_back(label);
+            if (label.empty()) ++unlabelledBefore;
+        }
+        for (std::size_t k = unlabelled; k < unlabelledBefore; ++k) {
+            std::size_t seen = 0;
+            for (std::size_t c = 0; c < m_labels.size(); ++c)
+                if (m_labels[c].empty() && seen++ == k) gone.push_back(m_names[c]);
+        }
+        m_layout = std::move(now);
+    }
+    if (first || (appeared.empty() && gone.empty())) return std::nullopt;
+    std::string change = "the board's channels changed:";
+    if (!appeared.empty()) change += " " + listed(appeared) + " appeared (holes before the first value)";
+    if (!gone.empty())
+        change += std::string(appeared.empty() ? " " : "; ") + listed(gone) + (gone.size() == 1 ? " is" : " are") +
+                  " no longer printed (holes from here)";
+    return change;
+}
+
+void TextDecoder::putOut(TextLine& line, double hostTime_s, std::optional<std::string> change,
+                         std::vector<TextSample>& out)
+{
+    const std::uint64_t holes = markHoles(line);
+    ++m_counters.frames;
+    m_counters.valueHoles += holes;
+    out.push_back({hostTime_s, *inLayout(line), line.boardTime, std::move(change)});
+}
+
+void TextDecoder::flushNewLayout(std::vector<TextSample>& out)
+{
+    if (!m_newLayout) return;
+    const double at_s = m_newLayout->second;
+    m_newLayout.reset();
+    ++m_counters.linesSkipped;
+    hole(at_s, out);
 }
 
 void TextDecoder::onSample(TextLine line, double hostTime_s, std::vector<TextSample>& out)
@@ -135,33 +216,42 @@ void TextDecoder::onSample(TextLine line, double hostTime_s, std::vector<TextSam
         // printed from wherever the port was opened: in name order they
         // are the same channels on every connection.
         if (first.teleplot) std::ranges::sort(first.fields, {}, [](const TextField& f) { return f.label; });
-        for (std::size_t c = 0; c < first.fields.size(); ++c) {
-            m_labels.push_back(first.fields[c].label);
-            m_names.push_back(first.fields[c].label.empty() ? "ch" + std::to_string(c + 1) : first.fields[c].label);
-            m_units.push_back(first.fields[c].unit);
-        }
         m_teleplot = first.teleplot;
+        adopt(first);
         auto [candidate, at_s] = std::move(*m_candidate);
         m_candidate.reset();
         onSample(std::move(candidate), at_s, out);
     }
-    const std::uint64_t holes = markHoles(line);
-    auto values = inLayout(line);
-    if (!values) {
-        // A sample was sent here and cannot be read: a hole, so that the
-        // samples after it keep their time.
-        ++m_counters.linesSkipped;
-        hole(hostTime_s, out);
+    if (inLayout(line)) {
+        flushNewLayout(out);
+        putOut(line, hostTime_s, std::nullopt, out);
         return;
     }
-    ++m_counters.frames;
-    m_counters.valueHoles += holes;
-    out.push_back({hostTime_s, std::move(*values), line.boardTime});
+    // Teleplot's new variable is a channel at once; any other board's new
+    // layout once a second line agrees (one line of other labels is a
+    // sample garbled on the way: a hole, so that the samples after it keep
+    // their time).
+    if (m_teleplot) {
+        auto change = adopt(line);
+        putOut(line, hostTime_s, std::move(change), out);
+        return;
+    }
+    if (m_newLayout && sortedLabelsOf(m_newLayout->first) == sortedLabelsOf(line)) {
+        auto [previous, at_s] = std::move(*m_newLayout);
+        m_newLayout.reset();
+        auto change = adopt(previous);
+        putOut(previous, at_s, std::move(change), out);
+        putOut(line, hostTime_s, std::nullopt, out);
+        return;
+    }
+    flushNewLayout(out);
+    m_newLayout.emplace(std::move(line), hostTime_s);
 }
 
 void TextDecoder::hole(double hostTime_s, std::vector<TextSample>& out)
 {
-    if (!m_labels.empty()) out.push_back({hostTime_s, {}, std::nullopt});
+    flushNewLayout(out);  // it came first
+    if (!m_labels.empty()) out.push_back({hostTime_s, {}, std::nullopt, std::nullopt});
 }
 
 }  // namespace tactiscope::devices::protocol

@@ -9,11 +9,20 @@
 // Teleplot's '§'. Labelled values are matched by name, so their order on
 // the line may change. A value that is no number ("nan", "inf", beyond
 // what a stored sample holds) is NaN: a hole in its channel alone, the
-// others' values kept. After that, a line with other channels is counted
-// and comes out as a sample without values (a hole: the sample was sent
-// and is lost, and the ones after it keep their time); a longer line than kMaxLine is skipped and
-// counted. Blank lines are ignored, and so are (counted) lines with no
-// number in them and the lines beside Teleplot's: the board's log.
+// others' values kept.
+//
+// A board may change what it prints: two consecutive lines with other
+// labels (or another count of unlabelled values) are its new layout. The
+// channels only grow: a label not seen before is a new channel after the
+// others (its samples before are holes), a channel no longer printed is a
+// hole from there, a renamed one is both. Teleplot's variables come and
+// go one by one: a new one is a channel at once, one missing from an
+// instant a hole in it. A sample of a new layout carries what changed.
+// One line with other labels is counted and comes out as a sample without
+// values (a hole: the sample was sent and is lost, and the ones after it
+// keep their time); a longer line than kMaxLine is skipped and counted.
+// Blank lines are ignored, and so are (counted) lines with no number in
+// them and the lines beside Teleplot's: the board's log.
 #pragma once
 
 #include "devices/protocol/DecoderCounters.h"
@@ -31,6 +40,8 @@ struct TextSample {
     double hostTime_s = 0.0;     // when the chunk holding the sample's last line arrived
     std::vector<double> values;  // empty: a line that could not be read
     std::optional<BoardTime> boardTime;
+    // The first sample of a new layout: what changed, in words ("c appeared").
+    std::optional<std::string> layoutChange;
 };
 
 class TextDecoder {
@@ -39,7 +50,7 @@ public:
     static constexpr std::size_t kMaxLine = 64 * 1024;
 
     void push(std::span<const std::uint8_t> bytes, double hostTime_s, std::vector<TextSample>& out);
-    // Empty until the first sample has been read.
+    // Empty until the first sample has been read; grows with the layouts.
     const std::vector<std::string>& channelNames() const { return m_names; }
     const std::vector<std::string>& channelUnits() const { return m_units; }
     const DecoderCounters& counters() const { return m_counters; }
@@ -49,18 +60,26 @@ public:
 private:
     void onLine(double hostTime_s, std::vector<TextSample>& out);
     void onSample(TextLine line, double hostTime_s, std::vector<TextSample>& out);
-    // The line's values in the channels' order; none when its channels are others.
+    // The line's values in the channels' order (NaN in those it does not
+    // print); none when its labels are not the layout's.
     std::optional<std::vector<double>> inLayout(const TextLine& line) const;
+    // Takes the line's labels as the layout, adding channels for those not
+    // seen before; says what changed (none for the first layout).
+    std::optional<std::string> adopt(const TextLine& line);
+    void putOut(TextLine& line, double hostTime_s, std::optional<std::string> change, std::vector<TextSample>& out);
     void hole(double hostTime_s, std::vector<TextSample>& out);
     void flushGathering(std::vector<TextSample>& out);
+    void flushNewLayout(std::vector<TextSample>& out);  // the line that was not followed: a hole
 
     std::string m_line;
     bool m_overlong = false;
-    std::vector<std::string> m_labels;  // as they appeared ("" when unlabelled)
+    std::vector<std::string> m_labels;  // each channel's, as they appeared ("" when unlabelled)
     std::vector<std::string> m_names;
     std::vector<std::string> m_units;
-    bool m_teleplot = false;  // the layout is Teleplot's: other lines are the board's log
+    std::vector<std::string> m_layout;  // the labels the board prints now, sorted
+    bool m_teleplot = false;            // the layout is Teleplot's: other lines are the board's log
     std::optional<std::pair<TextLine, double>> m_candidate;  // the first sample, until the next one agrees
+    std::optional<std::pair<TextLine, double>> m_newLayout;  // a line of other labels, until the next one agrees
     std::optional<std::pair<TextLine, double>> m_gathering;  // Teleplot lines of one instant
     DecoderCounters m_counters;
 };

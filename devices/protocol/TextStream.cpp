@@ -144,7 +144,10 @@ void TextStream::publish(std::vector<TextSample>& samples, std::vector<core::Sam
                          std::vector<double>* arrivals)
 {
     const double dt = 1.0 / *m_rate_hz;
-    if (m_toStored.empty()) described(&m_toStored);
+    if (m_toStored.size() < m_decoder.channelNames().size()) {
+        m_toStored.clear();
+        described(&m_toStored);
+    }
     std::size_t s = 0;
     while (s < samples.size()) {
         if (samples[s].values.empty()) {
@@ -155,13 +158,14 @@ void TextStream::publish(std::vector<TextSample>& samples, std::vector<core::Sam
         }
         const std::uint64_t first = indexOf(samples[s]);
         accept(samples[s], first);
+        if (samples[s].layoutChange) m_layoutChanges.push_back({first, std::move(*samples[s].layoutChange)});
+        const std::size_t channels = samples[s].values.size();
         std::size_t end = s + 1;
-        while (end < samples.size() && !samples[end].values.empty() &&
+        while (end < samples.size() && samples[end].values.size() == channels && !samples[end].layoutChange &&
                samples[end].hostTime_s == samples[s].hostTime_s && indexOf(samples[end]) == m_nextSampleIndex) {
             accept(samples[end], m_nextSampleIndex);
             ++end;
         }
-        const std::size_t channels = samples[s].values.size();
         core::SampleBlock block(channels, end - s, static_cast<double>(first) * dt, dt, first, m_blockSequence++);
         for (std::size_t i = s; i < end; ++i)
             for (std::size_t c = 0; c < channels; ++c) block.channel(c)[i - s] = samples[i].values[c] * m_toStored[c];

@@ -46,6 +46,13 @@ public:
     std::vector<core::ChannelDescriptor> channels() const;
     // The names a unit was given for that the board does not print.
     std::vector<std::string> unknownUnitNames() const;
+    // Where the board's layout changed (protocol/TextDecoder.h): from the
+    // sample at `sampleIndex` on, blocks hold the channels() then known.
+    struct LayoutChange {
+        std::uint64_t sampleIndex = 0;
+        std::string what;
+    };
+    std::vector<LayoutChange> takeLayoutChanges() { return std::exchange(m_layoutChanges, {}); }
     DecoderCounters counters() const;
     bool heardNumbers() const { return m_decoder.heardNumbers(); }
 
@@ -63,6 +70,7 @@ private:
     TextDecoder m_decoder;
     std::map<std::string, std::string> m_givenUnits;
     std::vector<double> m_toStored;  // each channel's factor to its stored unit, once the channels are known
+    std::vector<LayoutChange> m_layoutChanges;
     std::optional<double> m_rate_hz;
     std::optional<LineRateEstimate> m_measured;
     LineRate m_lineRate;               // until it settles

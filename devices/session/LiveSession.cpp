@@ -44,7 +44,8 @@ LiveSession::LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions
     : m_options(std::move(options))
 {
     if (!source) throw std::invalid_argument("a live session needs a source");
-    m_channels = effectiveChannels(source->channels());
+    m_deviceChannels = source->channels();
+    m_channels = effectiveChannels(m_deviceChannels);
     const double rate_hz = source->nominalSampleRate_hz();
     m_acquisition = std::make_unique<Acquisition>(std::move(source));
     // Two seconds of headroom: the display reads 40 times a second, so only
@@ -128,7 +129,7 @@ std::optional<std::string> LiveSession::setRoles(core::RoleAssignment roles)
 std::optional<std::string> LiveSession::rebuildChannels()
 {
     try {
-        m_channels = effectiveChannels(source().channels());
+        m_channels = effectiveChannels(m_deviceChannels);
     } catch (const std::invalid_argument& e) {
         return e.what();
     }
@@ -426,6 +427,12 @@ std::optional<RecordingSummary> LiveSession::poll()
 {
     if (const auto origin = recordingOrigin_s()) m_lists.origin_s = *origin;
     takeResults();
+    // A board's new layout: its notice (below) says what changed; the
+    // buffer and the recording already hold the new channels.
+    if (auto grown = m_acquisition->takeGrownChannels()) {
+        m_deviceChannels = std::move(*grown);
+        m_channels = effectiveChannels(m_deviceChannels);
+    }
     takeNotices();
     takeLimitAlarms();
     if (m_recorder && !m_recorder->stats().error.empty()) {
@@ -465,15 +472,16 @@ std::uint64_t LiveSession::recorderQueueBound(double rate_hz, std::size_t channe
     return std::max(byRate, kMinimumValues / std::max<std::size_t>(channels, 1));
 }
 
-// The link's notices are part of the record: a recording keeps each as an
-// alarm at the moment it happened.
+// The link's notices are part of the record: a recording keeps each at the
+// moment it happened, as an alarm or, where nothing went wrong, a note.
 void LiveSession::takeNotices()
 {
     std::vector<core::storage::SessionEvent> stored;
     for (auto& notice : m_acquisition->takeNotices()) {
         if (m_recorder && m_recorder->sessionTimeOf(notice.time_s) >= 0.0) {
             const double session_s = m_recorder->sessionTimeOf(notice.time_s);
-            stored.push_back(core::storage::alarmRecord(session_s, session_s, notice.text));
+            stored.push_back(notice.alarm ? core::storage::alarmRecord(session_s, session_s, notice.text)
+                                          : core::storage::noteRecord(session_s, notice.text));
         }
         m_linkNotices.push_back(std::move(notice));
     }

@@ -298,7 +298,8 @@ private:
     bool m_started = false;  // start() was called: the device streams
     std::shared_ptr<TriggerGate> m_gate;
     std::shared_ptr<LimitAlarms> m_limits;
-    std::vector<core::ChannelDescriptor> m_channels;  // the source's, with the roles given
+    std::vector<core::ChannelDescriptor> m_deviceChannels;  // the source's, grown as a board's layout grew
+    std::vector<core::ChannelDescriptor> m_channels;        // those, with the roles given
     // A slot per mode in the acquisition, made before it streams; a unit
     // rebuilt goes into its mode's slot while the device streams.
     std::map<core::Mode, std::shared_ptr<core::SinkSlot>> m_slots;

@@ -101,9 +101,17 @@ void TriggerGate::attach(std::shared_ptr<core::storage::Recorder> recorder)
     const std::lock_guard lock(m_mutex);
     if (m_sessions.empty() || m_finished) return;
     m_recorder = std::move(recorder);
+    if (m_recorder) m_recorder->addChannels(m_grownTo);
     m_forwardedUntil = m_sessions.front().span.first;
     forward();
     trim();
+}
+
+void TriggerGate::channelsGrew(const std::vector<core::ChannelDescriptor>& all)
+{
+    const std::lock_guard lock(m_mutex);
+    m_grownTo = all;
+    if (m_recorder) m_recorder->addChannels(all);
 }
 
 std::optional<TriggerGate::Finished> TriggerGate::takeFinished()

@@ -82,6 +82,8 @@ public:
     std::shared_ptr<core::storage::Recorder> detach();
 
     void consume(const core::SampleBlock& block) override;
+    // To the recorder attached, and to each attached later.
+    void channelsGrew(const std::vector<core::ChannelDescriptor>& all) override;
 
 private:
     void forward();  // with m_mutex held
@@ -98,6 +100,7 @@ private:
     std::shared_ptr<core::storage::Recorder> m_recorder;
     std::uint64_t m_forwardedUntil = 0;  // the front session's samples before this went to its recorder
     std::optional<Finished> m_finished;
+    std::vector<core::ChannelDescriptor> m_grownTo;  // the device's channels, once they grew
 };
 
 }  // namespace tactiscope::devices::session

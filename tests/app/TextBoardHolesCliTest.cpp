@@ -95,7 +95,8 @@ TEST(TextBoardHolesCli, AValueThatIsNoNumberIsAHoleInItsChannelAloneAndTheDetect
     }
     EXPECT_GE(holes, 8u);
     EXPECT_TRUE(result.err.contains(
-        QStringLiteral("values that were no number (nan, inf) are stored as holes in their channel alone: %1 in b")
+        QStringLiteral(
+            "values that were no number (nan, inf) or not printed are stored as holes in their channel alone: %1 in b")
             .arg(holes)))
         << result.err.toStdString();
 

@@ -55,6 +55,7 @@ void LiveTraces::updateTimeBase()
 {
     const auto* live = m_station.device();
     if (!live) return;
+    m_traces->showMoreChannels(live->channels());  // a board's new layout
     const auto origin = live->recordingOrigin_s();
     const QString label = origin ? tr("Recording time (s)") : tr("Time since connect (s)");
     for (LivePlotWidget* plot : plots()) plot->setTimeOrigin(origin.value_or(0.0), label);

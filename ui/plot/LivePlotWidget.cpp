@@ -127,7 +127,8 @@ void LivePlotWidget::setSource(std::shared_ptr<const core::LiveBuffer> buffer,
                                std::vector<DisplayUnit> units)
 {
     clearSource();
-    if (!buffer || channels.size() != buffer->channelCount() || !(sampleRate_hz > 0.0)) return;
+    // The buffer may hold channels a board began to print since `channels`.
+    if (!buffer || channels.size() > buffer->channelCount() || !(sampleRate_hz > 0.0)) return;
     if (units.size() != channels.size()) {
         units.clear();
         for (const auto& channel : channels) units.push_back(displayUnitFor(channel));
@@ -141,6 +142,24 @@ void LivePlotWidget::setSource(std::shared_ptr<const core::LiveBuffer> buffer,
     m_values.assign(channels.size(), core::RingBuffer<double>(capacity));
     buildPlotItems(channels, units);
     drawMarkers();
+    scheduleFrame();
+}
+
+void LivePlotWidget::showMoreChannels(const std::vector<core::ChannelDescriptor>& channels)
+{
+    if (!m_buffer || channels.size() <= m_values.size() || channels.size() > m_buffer->channelCount()) return;
+    std::vector<DisplayUnit> units;
+    for (const auto& channel : channels) units.push_back(displayUnitFor(channel));
+    // The new traces begin where the history stands: holes before.
+    while (m_values.size() < channels.size()) {
+        m_values.emplace_back(m_time->capacity());
+        m_values.back().fillTo(m_time->endIndex(), std::numeric_limits<double>::quiet_NaN());
+    }
+    m_scrolling.clear();
+    removePlotItems();
+    buildPlotItems(channels, units);
+    drawMarkers();
+    m_viewChanged = true;
     scheduleFrame();
 }
 

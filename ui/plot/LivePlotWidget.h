@@ -65,6 +65,9 @@ public:
     // kinds, e.g. for derived signals such as the detector's output.
     void setSource(std::shared_ptr<const core::LiveBuffer> buffer, const std::vector<core::ChannelDescriptor>& channels,
                    double sampleRate_hz, std::vector<DisplayUnit> units = {});
+    // The channels of the same buffer, more of them (a board began to
+    // print another value): their traces are added, the history kept.
+    void showMoreChannels(const std::vector<core::ChannelDescriptor>& channels);
     // Stops plotting and clears the traces.
     void clearSource();
 

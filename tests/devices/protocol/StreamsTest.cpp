@@ -391,3 +391,29 @@ TEST(BinaryStream, TheClockRateIsMeasuredAfreshAfterARestart)
     EXPECT_NEAR(*stream.clockRate_hz(), 1000.0, 1e-9);
     EXPECT_FALSE(stream.rateProblem()) << *stream.rateProblem();
 }
+
+// A board's new layout continues the stream: its blocks hold the channels
+// it grew to, a new channel's unit is its label's, and where it began is
+// said with its sample index.
+TEST(TextStream, ANewLayoutGrowsTheBlocksFromTheSampleItBeganAt)
+{
+    TextStream stream(100.0);
+    std::vector<tactiscope::core::SampleBlock> out;
+    pushText(stream, "a:1\na:2\na:3\n", 0.0, out);
+    pushText(stream, "a:4 f[mN]:500\na:5 f[mN]:600\n", 0.05, out);
+    ASSERT_EQ(out.size(), 2u);
+    EXPECT_EQ(out[0].channelCount(), 1u);
+    EXPECT_EQ(out[1].channelCount(), 2u);
+    EXPECT_EQ(out[1].firstSampleIndex(), 3u);
+    EXPECT_EQ(out[1].value(0, 1), 5.0);
+    EXPECT_DOUBLE_EQ(out[1].value(1, 0), 0.5);  // N
+    const auto channels = stream.channels();
+    ASSERT_EQ(channels.size(), 2u);
+    EXPECT_EQ(channels[1].name, "f");
+    EXPECT_EQ(channels[1].unit, "N");
+    const auto changes = stream.takeLayoutChanges();
+    ASSERT_EQ(changes.size(), 1u);
+    EXPECT_EQ(changes[0].sampleIndex, 3u);
+    EXPECT_NE(changes[0].what.find("f appeared"), std::string::npos) << changes[0].what;
+    EXPECT_TRUE(stream.takeLayoutChanges().empty());
+}

@@ -58,8 +58,8 @@ TEST(TextDecoder, AValueThatIsNoNumberIsAHoleInItsChannelAlone)
 {
     TextDecoder decoder;
     const auto out = decode(decoder, "1,2\n3,4\n3.5,nan\n-inf,5\n1e308,6\n7,ovf\nNaN,+inf\n8,Infinity\n"
-                                     "a:1 b:2\n");
-    ASSERT_EQ(out.size(), 9u);  // the last line has other channels: a hole
+                                     "a:1 b:2\n9,10\n");
+    ASSERT_EQ(out.size(), 10u);  // "a:1 b:2" has other channels, and the line after it not: a hole
     const auto holeAt = [&](std::size_t sample, std::size_t channel) {
         return std::isnan(out[sample].values.at(channel));
     };
@@ -75,7 +75,7 @@ TEST(TextDecoder, AValueThatIsNoNumberIsAHoleInItsChannelAlone)
     EXPECT_TRUE(holeAt(7, 1));
     EXPECT_TRUE(out[8].values.empty());
     EXPECT_EQ(decoder.counters().valueHoles, 7u);
-    EXPECT_EQ(decoder.counters().frames, 8u);
+    EXPECT_EQ(decoder.counters().frames, 9u);
     EXPECT_EQ(decoder.counters().linesSkipped, 1u);
 }
 
@@ -126,4 +126,78 @@ TEST(TextDecoder, OneLineOfNumbersSaysTheBoardPrintsThem)
     TextDecoder teleplot;
     decode(teleplot, ">temp:21.5\n");
     EXPECT_TRUE(teleplot.heardNumbers());
+}
+
+namespace {
+
+bool isHole(double value)
+{
+    return std::isnan(value);
+}
+
+}  // namespace
+
+// Before, a board that began to print another channel, or renamed one,
+// turned every later line into a hole.
+TEST(TextDecoder, ANewLayoutContinuesWithItsChannelsAfterTheOthers)
+{
+    TextDecoder decoder;
+    const auto out = decode(decoder, "a:1 b:2\na:3 b:4\na:5 c:6\nc:8 a:7\na:9 c:10\n");
+    EXPECT_EQ(decoder.channelNames(), (std::vector<std::string>{"a", "b", "c"}));
+    ASSERT_EQ(out.size(), 5u);
+    EXPECT_EQ(out[1].values, (std::vector<double>{3, 4}));
+    // c is a channel of its own from the first line that printed it; b,
+    // renamed, a hole from there.
+    ASSERT_EQ(out[2].values.size(), 3u);
+    EXPECT_EQ(out[2].values[0], 5.0);
+    EXPECT_TRUE(isHole(out[2].values[1]));
+    EXPECT_EQ(out[2].values[2], 6.0);
+    EXPECT_EQ(out[3].values[0], 7.0);
+    EXPECT_EQ(out[3].values[2], 8.0);  // by label, in any order
+    EXPECT_EQ(out[2].layoutChange, "the board's channels changed: c appeared (holes before the first value); b is no "
+                                   "longer printed (holes from here)");
+    EXPECT_FALSE(out[3].layoutChange);
+    EXPECT_EQ(decoder.counters().frames, 5u);
+    EXPECT_EQ(decoder.counters().linesSkipped, 0u);
+}
+
+TEST(TextDecoder, UnlabelledValuesThatBecomeMoreAreNewChannelsAndFewerAreHoles)
+{
+    TextDecoder decoder;
+    const auto out = decode(decoder, "1\n2\n3,30\n4,40\n5\n6\n");
+    EXPECT_EQ(decoder.channelNames(), (std::vector<std::string>{"ch1", "ch2"}));
+    ASSERT_EQ(out.size(), 6u);
+    EXPECT_EQ(out[1].values, (std::vector<double>{2}));
+    EXPECT_EQ(out[2].values, (std::vector<double>{3, 30}));
+    EXPECT_EQ(out[2].layoutChange, "the board's channels changed: ch2 appeared (holes before the first value)");
+    EXPECT_EQ(out[4].values[0], 5.0);
+    EXPECT_TRUE(isHole(out[4].values[1]));
+    EXPECT_EQ(out[4].layoutChange, "the board's channels changed: ch2 is no longer printed (holes from here)");
+}
+
+TEST(TextDecoder, OneLineOfOtherLabelsIsAHoleNotANewChannel)
+{
+    TextDecoder decoder;
+    // A line garbled on the way ("a:5 x:6"), between lines of the layout.
+    const auto out = decode(decoder, "a:1 b:2\na:3 b:4\na:5 x:6\na:7 b:8\n");
+    EXPECT_EQ(decoder.channelNames(), (std::vector<std::string>{"a", "b"}));
+    ASSERT_EQ(out.size(), 4u);
+    EXPECT_TRUE(out[2].values.empty());
+    EXPECT_EQ(out[3].values, (std::vector<double>{7, 8}));
+    EXPECT_EQ(decoder.counters().linesSkipped, 1u);
+}
+
+TEST(TextDecoder, ATeleplotVariableIsAChannelFromItsFirstValueAndAHoleWhereAnInstantLacksIt)
+{
+    TextDecoder decoder;
+    const auto out = decode(decoder, ">a:1\n>b:2\n>a:3\n>b:4\n>a:5\n>b:6\n>c:7\n>a:8\n>c:9\n>a:10\n");
+    EXPECT_EQ(decoder.channelNames(), (std::vector<std::string>{"a", "b", "c"}));
+    // Instants: (1,2) (3,4) (5,6,7) (8,9); the last is gathering.
+    ASSERT_EQ(out.size(), 4u);
+    ASSERT_EQ(out[2].values.size(), 3u);
+    EXPECT_EQ(out[2].values, (std::vector<double>{5, 6, 7}));
+    EXPECT_EQ(out[2].layoutChange, "the board's channels changed: c appeared (holes before the first value)");
+    EXPECT_EQ(out[3].values[0], 8.0);
+    EXPECT_TRUE(isHole(out[3].values[1]));
+    EXPECT_EQ(out[3].values[2], 9.0);
 }

@@ -15,6 +15,7 @@
 #include "ui/MainWindow.h"
 #include "ui/device/DevicePanel.h"
 #include "ui/live/LiveStation.h"
+#include "ui/plot/LivePlotWidget.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -23,10 +24,13 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QSplitter>
 #include <QTest>
 #include <QTreeWidget>
 
+#include <atomic>
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -225,6 +229,39 @@ TEST(DeviceConnection, ATextBoardShowsTheRateItWasTimedAtAndItsChannelsUnits)
     EXPECT_TRUE(labels.contains(QStringLiteral("force [N]:"))) << labels.join(QLatin1Char('|')).toStdString();
     EXPECT_TRUE(labels.contains(QStringLiteral("pos:"))) << labels.join(QLatin1Char('|')).toStdString();
     EXPECT_FALSE(saveScreenshot(window, QStringLiteral("main-window-text-board")).isEmpty());
+}
+
+// A board that begins to print another value while the window shows it:
+// the traces gain the new channel (holes before its first value), the
+// others keep their history.
+TEST(DeviceConnection, ATextBoardsNewChannelJoinsTheTraces)
+{
+    const std::string link = uniqueTempPath("text-board-grows");
+    std::atomic<std::uint64_t> grows = std::numeric_limits<std::uint64_t>::max();
+    tactiscope::testing::TextBoard board(link, {100.0,
+                                                [&](std::uint64_t n) {
+                                                    std::string line = "a:" + std::to_string(n % 50);
+                                                    if (n >= grows) line += " b:" + std::to_string(n % 9);
+                                                    return line + "\r\n";
+                                                },
+                                                1, 1e-3, false});
+    ASSERT_TRUE(board.ok());
+    ui::MainWindow window;
+    window.show();
+    window.station().connectDevice(
+        QString::fromStdString(link),
+        serialOpener(link, {WireProtocol::Text, 100.0, std::chrono::milliseconds(4000), std::nullopt, {}}));
+    ASSERT_TRUE(waitFor([&] { return window.station().isConnected(); }, 8000));
+    auto* traces = qobject_cast<ui::LivePlotWidget*>(child<QSplitter>(window, "centreSplitter")->widget(0));
+    ASSERT_TRUE(traces);
+    tactiscope::testing::runEventLoopFor(500);
+    EXPECT_GT(traces->drawnPointCount(0), 0);
+    EXPECT_EQ(traces->drawnPointCount(1), 0);
+    grows = board.printed() + 20;
+    EXPECT_TRUE(waitFor([&] { return traces->drawnPointCount(1) > 0; }, 4000));
+    EXPECT_GT(traces->drawnPointCount(0), 0);
+    ASSERT_EQ(window.station().device()->channels().size(), 2u);
+    EXPECT_EQ(window.station().device()->channels()[1].name, "b");
 }
 
 TEST(DevicePanel, ReturnsTheChosenPortAndLinkSettings)

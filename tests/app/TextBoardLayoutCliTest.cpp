@@ -1,0 +1,93 @@
+// A board that changes what it prints mid-recording (issue 53): its new
+// layout continues the session. Through a real pseudo-terminal and
+// `record`, a board printing "a:n b:-n" renames b to c and then begins to
+// print d: the session holds a, b, c and d, each value where the board
+// printed it and holes elsewhere (c and d before their first value, b
+// after its last), and each change as a note at the sample it began at.
+#include "core/storage/SessionStore.h"
+#include "support/CliRunner.h"
+#include "support/EmulatorProcess.h"
+#include "support/TextBoard.h"
+
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <thread>
+
+using tactiscope::testing::runCli;
+using tactiscope::testing::sessionIdIn;
+using tactiscope::testing::TextBoard;
+namespace core = tactiscope::core;
+namespace storage = tactiscope::core::storage;
+
+TEST(TextBoardLayoutCli, ABoardThatRenamesAChannelAndAddsOneContinuesTheSessionWithEveryValue)
+{
+    constexpr double kRate_hz = 100.0;
+    // Where the board renames b to c, and where it adds d: set once it prints.
+    std::atomic<std::uint64_t> renamed = std::numeric_limits<std::uint64_t>::max();
+    std::atomic<std::uint64_t> added = std::numeric_limits<std::uint64_t>::max();
+    const auto line = [&](std::uint64_t n) {
+        const std::string a = "a:" + std::to_string(n);
+        if (n < renamed) return a + " b:-" + std::to_string(n) + "\r\n";
+        const std::string c = " c:" + std::to_string(0.25 * static_cast<double>(n));
+        if (n < added) return a + c + "\r\n";
+        return a + c + " d:" + std::to_string(n % 7) + "\r\n";
+    };
+    QTemporaryDir dir;
+    const std::string link = dir.filePath(QStringLiteral("board")).toStdString();
+    TextBoard board(link, {kRate_hz, line, 2, 1e-3, true});
+    ASSERT_TRUE(board.ok());
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    // The recording begins about half a second from here and lasts 3 s.
+    renamed = board.printed() + 150;
+    added = renamed + 100;
+    const QString db = dir.filePath(QStringLiteral("board.tactiscope"));
+    const auto result = runCli({"record", "--port", QString::fromStdString(link), "--protocol", "text", "--rate", "100",
+                                "--seconds", "3", "--db", db});
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    storage::SessionStore store(db.toStdString(), storage::Database::Access::ReadOnly);
+    const auto id = sessionIdIn(result.out);
+    const auto channels = store.channels(id);
+    ASSERT_EQ(channels.size(), 4u) << result.out.toStdString();
+    for (std::size_t c = 0; c < 4; ++c) EXPECT_EQ(channels[c].descriptor.name, std::string(1, "abcd"[c]));
+    const std::uint64_t count = store.sampleCount(id);
+    EXPECT_TRUE(store.gaps(id).empty());
+    std::vector<std::vector<double>> values;
+    for (std::size_t c = 0; c < 4; ++c) values.push_back(store.readChannel(id, c, 0, count));
+    const auto first = static_cast<std::uint64_t>(values[0][0]);
+    ASSERT_LT(first, renamed.load()) << "the recording began after the rename";
+    ASSERT_GT(first + count, added.load() + 10) << "the recording ended before d was added";
+    for (std::uint64_t s = 0; s < count; ++s) {
+        const std::uint64_t n = first + s;
+        SCOPED_TRACE("line " + std::to_string(n));
+        ASSERT_EQ(values[0][s], static_cast<double>(n));  // consecutive lines, every one
+        if (n < renamed) {
+            EXPECT_EQ(values[1][s], -static_cast<double>(n));
+            EXPECT_TRUE(std::isnan(values[2][s]));
+        } else {
+            EXPECT_TRUE(std::isnan(values[1][s]));
+            EXPECT_FLOAT_EQ(static_cast<float>(values[2][s]), static_cast<float>(0.25 * static_cast<double>(n)));
+        }
+        if (n < added)
+            EXPECT_TRUE(std::isnan(values[3][s]));
+        else
+            EXPECT_EQ(values[3][s], static_cast<double>(n % 7));
+    }
+    // Each change a note (no alarm) at the sample it began at.
+    std::vector<storage::SessionEvent> notes;
+    for (const auto& event : store.events(id))
+        if (event.note.starts_with("the board's channels changed")) notes.push_back(event);
+    ASSERT_EQ(notes.size(), 2u);
+    EXPECT_EQ(notes[0].kind, core::EventKind::Marker);
+    EXPECT_NEAR(notes[0].start_s, static_cast<double>(renamed - first) / kRate_hz, 1e-9);
+    EXPECT_EQ(notes[0].note, "the board's channels changed: c appeared (holes before the first value); b is no longer "
+                             "printed (holes from here)");
+    EXPECT_NEAR(notes[1].start_s, static_cast<double>(added - first) / kRate_hz, 1e-9);
+    EXPECT_EQ(notes[1].note, "the board's channels changed: d appeared (holes before the first value)");
+}
