@@ -34,17 +34,18 @@ std::string listed(const std::vector<std::string>& names)
 
 // A value beyond the ±3.4e38 a stored (binary32) sample holds would be
 // stored as infinity: like "nan" or "inf" printed, it is no number, a hole
-// in its channel alone. Returns how many a line holds.
-std::uint64_t markHoles(TextLine& line)
+// in its channel alone.
+void markHoles(TextLine& line)
 {
     constexpr auto kLargest = static_cast<double>(std::numeric_limits<float>::max());
-    std::uint64_t holes = 0;
     for (auto& field : line.fields)
-        if (!(std::abs(field.value) <= kLargest)) {
-            field.value = std::numeric_limits<double>::quiet_NaN();
-            ++holes;
-        }
-    return holes;
+        if (!(std::abs(field.value) <= kLargest)) field.value = std::numeric_limits<double>::quiet_NaN();
+}
+
+std::uint64_t holesIn(const TextLine& line)
+{
+    return static_cast<std::uint64_t>(
+        std::ranges::count_if(line.fields, [](const TextField& f) { return std::isnan(f.value); }));
 }
 
 }  // namespace
@@ -123,8 +124,9 @@ std::optional<std::vector<double>> TextDecoder::inLayout(const TextLine& line) c
     if (m_teleplot) {
         for (const auto& field : line.fields)
             if (std::ranges::find(m_labels, field.label) == m_labels.end()) return std::nullopt;
-    } else if (sortedLabelsOf(line) != m_layout) {
-        return std::nullopt;
+    } else if (!std::ranges::equal(line.fields, m_layoutAsPrinted, {}, &TextField::label) &&
+               sortedLabelsOf(line) != m_layout) {
+        return std::nullopt;  // (labels in another order are the same layout)
     }
     std::vector<double> values(m_labels.size(), std::numeric_limits<double>::quiet_NaN());
     std::size_t unlabelled = 0;  // the k-th unlabelled value is the k-th unlabelled channel's
@@ -172,6 +174,7 @@ std::optional<std::string> TextDecoder::adopt(const TextLine& line)
                 if (m_labels[c].empty() && seen++ == k) gone.push_back(m_names[c]);
         }
         m_layout = std::move(now);
+        m_layoutAsPrinted = labelsOf(line);
     }
     if (first || (appeared.empty() && gone.empty())) return std::nullopt;
     std::string change = "the board's channels changed:";
@@ -182,13 +185,12 @@ std::optional<std::string> TextDecoder::adopt(const TextLine& line)
     return change;
 }
 
-void TextDecoder::putOut(TextLine& line, double hostTime_s, std::optional<std::string> change,
-                         std::vector<TextSample>& out)
+void TextDecoder::putOut(const TextLine& line, std::vector<double> values, double hostTime_s,
+                         std::optional<std::string> change, std::vector<TextSample>& out)
 {
-    const std::uint64_t holes = markHoles(line);
     ++m_counters.frames;
-    m_counters.valueHoles += holes;
-    out.push_back({hostTime_s, *inLayout(line), line.boardTime, std::move(change)});
+    m_counters.valueHoles += holesIn(line);
+    out.push_back({hostTime_s, std::move(values), line.boardTime, std::move(change)});
 }
 
 void TextDecoder::flushNewLayout(std::vector<TextSample>& out)
@@ -222,26 +224,33 @@ void TextDecoder::onSample(TextLine line, double hostTime_s, std::vector<TextSam
         m_candidate.reset();
         onSample(std::move(candidate), at_s, out);
     }
-    if (inLayout(line)) {
+    markHoles(line);
+    if (auto values = inLayout(line)) {
         flushNewLayout(out);
-        putOut(line, hostTime_s, std::nullopt, out);
+        putOut(line, std::move(*values), hostTime_s, std::nullopt, out);
         return;
     }
-    // Teleplot's new variable is a channel at once; any other board's new
-    // layout once a second line agrees (one line of other labels is a
-    // sample garbled on the way: a hole, so that the samples after it keep
-    // their time).
+    // Teleplot's new variable is a channel at once (a line that is not
+    // Teleplot's, as the rest, is a hole); any other board's new layout
+    // once a second line agrees (one line of other labels is a sample
+    // garbled on the way: a hole, so that the samples after it keep their
+    // time).
     if (m_teleplot) {
+        if (!line.teleplot) {
+            ++m_counters.linesSkipped;
+            hole(hostTime_s, out);
+            return;
+        }
         auto change = adopt(line);
-        putOut(line, hostTime_s, std::move(change), out);
+        putOut(line, *inLayout(line), hostTime_s, std::move(change), out);
         return;
     }
     if (m_newLayout && sortedLabelsOf(m_newLayout->first) == sortedLabelsOf(line)) {
         auto [previous, at_s] = std::move(*m_newLayout);
         m_newLayout.reset();
         auto change = adopt(previous);
-        putOut(previous, at_s, std::move(change), out);
-        putOut(line, hostTime_s, std::nullopt, out);
+        putOut(previous, *inLayout(previous), at_s, std::move(change), out);
+        putOut(line, *inLayout(line), hostTime_s, std::nullopt, out);
         return;
     }
     flushNewLayout(out);

@@ -66,7 +66,8 @@ private:
     // Takes the line's labels as the layout, adding channels for those not
     // seen before; says what changed (none for the first layout).
     std::optional<std::string> adopt(const TextLine& line);
-    void putOut(TextLine& line, double hostTime_s, std::optional<std::string> change, std::vector<TextSample>& out);
+    void putOut(const TextLine& line, std::vector<double> values, double hostTime_s, std::optional<std::string> change,
+                std::vector<TextSample>& out);
     void hole(double hostTime_s, std::vector<TextSample>& out);
     void flushGathering(std::vector<TextSample>& out);
     void flushNewLayout(std::vector<TextSample>& out);  // the line that was not followed: a hole
@@ -76,8 +77,9 @@ private:
     std::vector<std::string> m_labels;  // each channel's, as they appeared ("" when unlabelled)
     std::vector<std::string> m_names;
     std::vector<std::string> m_units;
-    std::vector<std::string> m_layout;  // the labels the board prints now, sorted
-    bool m_teleplot = false;            // the layout is Teleplot's: other lines are the board's log
+    std::vector<std::string> m_layout;           // the labels the board prints now, sorted
+    std::vector<std::string> m_layoutAsPrinted;  // and in the order of the line that began it
+    bool m_teleplot = false;                     // the layout is Teleplot's: other lines are the board's log
     std::optional<std::pair<TextLine, double>> m_candidate;  // the first sample, until the next one agrees
     std::optional<std::pair<TextLine, double>> m_newLayout;  // a line of other labels, until the next one agrees
     std::optional<std::pair<TextLine, double>> m_gathering;  // Teleplot lines of one instant
