@@ -135,8 +135,9 @@ void LivePalpation::consume(const SampleBlock& block)
         display.channel(0)[s] = fHigh;
         display.channel(1)[s] = fLow;
         display.channel(2)[s] = m_forces.q(fHigh, fLow);
-        if (auto reading = m_reader.push(block.timeAt_s(s), block.value(m_forces.displacementChannel(), s), fHigh, fLow,
-                                         m_forces.limitsOf(high, low)))
+        if (auto reading = m_reader.push(block.timeAt_s(s),
+                                         m_forces.displacement_m(block.value(m_forces.displacementChannel(), s)), fHigh,
+                                         fLow, m_forces.limitsOf(high, low)))
             m_completed.push_back(*reading);
     }
     m_output->consume(display);

@@ -143,6 +143,16 @@ PalpationForces::PalpationForces(const std::vector<ChannelDescriptor>& channels,
     if (!picked) throw std::invalid_argument(*modeRefusal(Mode::Palpation, channels));
     const std::vector<std::size_t>& beams = *picked;  // stiff, soft, then the displacement
     m_displacement = beams[2];
+    if (isCounts(channels[m_displacement].unit)) {
+        const auto scale = settings.scales.find(channels[m_displacement].name);
+        const auto unit = scale != settings.scales.end() ? physicalUnit(scale->second.unit) : std::nullopt;
+        if (!unit || unit->kind != ChannelKind::Position)
+            throw std::invalid_argument("the displacement " + channels[m_displacement].name +
+                                        " is in counts and the sensor profile gives it no length scale (\"channels\": "
+                                        "{\"" +
+                                        channels[m_displacement].name + "\": {\"unit\": \"mm\"}})");
+        m_metresPerCount = unit->factor / scale->second.countsPerUnit;
+    }
     const auto input = [&](std::size_t c, std::optional<double> gaugeFactor) {
         Input in;
         in.channel = c;

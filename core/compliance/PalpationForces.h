@@ -92,13 +92,17 @@ std::optional<RawZero> zeroFromJson(const std::string& json);
 class PalpationForces {
 public:
     // Throws std::invalid_argument when the channels lack a displacement or
-    // two beams, or for a non-physical probe.
+    // two beams, for a displacement in counts the profile gives no length
+    // scale for, or for a non-physical probe.
     PalpationForces(const std::vector<ChannelDescriptor>& channels, const LivePalpationSettings& settings);
 
     const sensors::CompliancePair& pair() const { return m_pair; }
     std::size_t highChannel() const { return m_high.channel; }
     std::size_t lowChannel() const { return m_low.channel; }
     std::size_t displacementChannel() const { return m_displacement; }
+    // A raw displacement value in metres: a length channel's is; one in
+    // counts goes through the profile's scale for it.
+    double displacement_m(double raw) const { return raw * m_metresPerCount; }
     double contactThreshold_n() const { return m_contactThreshold_n; }
     // The gauge factor that turns a beam's counts into strain; none when
     // the device sends strain or force itself.
@@ -148,6 +152,7 @@ private:
     double m_contactThreshold_n;
     Input m_high, m_low;
     std::size_t m_displacement = 0;
+    double m_metresPerCount = 1.0;
     std::optional<RawZero> m_zero;
 };
 

@@ -83,7 +83,7 @@ void forEachForceSample(storage::SessionSource& store, std::int64_t session, con
                     restart(forces.zeroUncertainty());
                     continue;
                 }
-                sample({static_cast<double>(first + s) / summary.sampleRate_hz, displacement[s],
+                sample({static_cast<double>(first + s) / summary.sampleRate_hz, forces.displacement_m(displacement[s]),
                         forces.forceHigh(high[s]), forces.forceLow(low[s]), forces.limitsOf(high[s], low[s])});
             }
         }

@@ -61,7 +61,7 @@ bool canPlay(const ChannelDescriptor& channel, ChannelRole role)
     case ChannelRole::SoftBeam:
         return kind == ChannelKind::Strain || kind == ChannelKind::Force || isCounts(channel.unit);
     case ChannelRole::Displacement:
-        return kind == ChannelKind::Position;
+        return kind == ChannelKind::Position || isCounts(channel.unit);
     case ChannelRole::Capacitance:
         return kind == ChannelKind::Capacitance;
     case ChannelRole::ReferenceForce:
@@ -80,7 +80,7 @@ std::string_view quantityFor(ChannelRole role)
     case ChannelRole::SoftBeam:
         return "a strain (strain, µε), a force (N, mN) or ADC counts with their scale";
     case ChannelRole::Displacement:
-        return "a length (m, mm)";
+        return "a length (m, mm) or counts with their scale";
     case ChannelRole::Capacitance:
         return "a capacitance (F, pF)";
     case ChannelRole::ReferenceForce:

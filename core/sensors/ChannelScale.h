@@ -3,7 +3,8 @@
 // converter the profile describes. The stored samples stay the counts the
 // board sent; the mode reads them through the scale, and judges clipping
 // from the declared full scale by the same rule as a TSP/1 probe's ADC
-// (PalpationForces::atLimit).
+// (PalpationForces::atLimit). A displacement's scale is a length's ("d":
+// {"unit": "mm"}: plain numbers in millimetres, counts_per_unit 1).
 //   "channels": {"stiff": {"unit": "mN", "counts_per_unit": 20.48,
 //                          "full_scale": 32767}}
 // There is no offset: the zero taken with nothing pressed is the reading
@@ -17,8 +18,8 @@
 namespace tactiscope::core::sensors {
 
 struct ChannelScale {
-    std::string unit;            // a strain or a force unit (core/UnitScale.h): "mN", "µε"
-    double countsPerUnit = 1.0;  // positive
+    std::string unit;            // a strain, force or length unit (core/UnitScale.h): "mN", "µε", "mm"
+    double countsPerUnit = 1.0;  // positive; 1 when the values are in the unit
     // The ADC's largest |count|: a reading within 1 % of it is clipped.
     // None: the board's range is not known, and nothing is judged clipped.
     std::optional<double> fullScale_counts;

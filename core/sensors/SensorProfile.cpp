@@ -190,7 +190,9 @@ Json limitsJson(const std::vector<trigger::LimitSpec>& limits)
 }
 
 // "channels": {"NAME": {"unit", "counts_per_unit", "full_scale"}}:
-// beams a device sends in counts, read as a strain or a force.
+// beams a device sends in counts, read as a strain or a force, and a
+// displacement as a length; without counts_per_unit the values are in the
+// unit ("d": {"unit": "mm"}: a board printing millimetres).
 ChannelScales readScales(ObjectReader& reader)
 {
     if (!reader.has("channels")) return {};
@@ -201,10 +203,11 @@ ChannelScales readScales(ObjectReader& reader)
         ChannelScale scale;
         scale.unit = entry.string("unit");
         const auto unit = physicalUnit(scale.unit);
-        if (!unit || (unit->kind != ChannelKind::Strain && unit->kind != ChannelKind::Force))
-            entry.fail("unit",
-                       "'" + shortQuote(scale.unit) + "' is not a strain or a force unit (strain, µε, N, mN, µN)");
-        scale.countsPerUnit = entry.positive("counts_per_unit");
+        if (!unit || (unit->kind != ChannelKind::Strain && unit->kind != ChannelKind::Force &&
+                      unit->kind != ChannelKind::Position))
+            entry.fail("unit", "'" + shortQuote(scale.unit) +
+                                   "' is not a strain, a force or a length unit (strain, µε, N, mN, µN, m, mm, µm)");
+        if (entry.has("counts_per_unit")) scale.countsPerUnit = entry.positive("counts_per_unit");
         if (entry.has("full_scale")) scale.fullScale_counts = entry.positive("full_scale");
         entry.rejectUnknownKeys();
         scales.emplace(name, std::move(scale));

@@ -17,6 +17,8 @@
 #include "core/storage/SessionStore.h"
 #include "devices/simulator/PalpationScenario.h"
 
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -110,7 +112,8 @@ TEST(TextBoardUnitsCli, PlainNumbersAreNoStrainAScanRefusesThemAndSaysHowToGiveT
 namespace {
 
 // A palpation board: the simulator's probe printing its two beams' raw
-// ADC counts and its displacement in mm, 200 lines a second.
+// ADC counts and its displacement in mm as plain numbers, 200 lines a
+// second.
 struct PalpationBoard {
     devices::simulator::PalpationParameters parameters;
     std::vector<std::string> lines;
@@ -130,8 +133,8 @@ PalpationBoard palpationBoard()
     scenario.generate(samples);
     for (std::size_t i = 0; i < count; ++i) {
         char line[96];
-        std::snprintf(line, sizeof line, "stiff:%.0f soft:%.0f d[mm]:%.4f\n", samples.channel(0)[i],
-                      samples.channel(1)[i], 1e3 * samples.channel(2)[i]);
+        std::snprintf(line, sizeof line, "stiff:%.0f soft:%.0f d:%.4f\n", samples.channel(0)[i], samples.channel(1)[i],
+                      1e3 * samples.channel(2)[i]);
         board.lines.emplace_back(line);
     }
     return board;
@@ -155,7 +158,8 @@ std::string profileJson(const devices::simulator::PalpationParameters& p, bool w
         char scales[300];
         std::snprintf(scales, sizeof scales,
                       R"(, "channels": {"stiff": {"unit": "N", "counts_per_unit": %.17g, "full_scale": 32768},)"
-                      R"( "soft": {"unit": "N", "counts_per_unit": %.17g, "full_scale": 32768}})",
+                      R"( "soft": {"unit": "N", "counts_per_unit": %.17g, "full_scale": 32768},)"
+                      R"( "d": {"unit": "mm"}})",
                       tactiscope::testing::countsPerNewton(p.high, p), tactiscope::testing::countsPerNewton(p.low, p));
         json += scales;
     }
@@ -205,16 +209,17 @@ TEST(TextBoardUnitsCli, APalpationBoardsCountsAreReadThroughItsProfilesScaleAndI
     const auto id = sessionIdIn(run.out);
     ASSERT_GT(id, 0) << run.out.toStdString();
     EXPECT_EQ(store.channels(id)[0].descriptor.unit, "counts");  // the board's raw readings, kept as sent
+    EXPECT_EQ(store.channels(id)[2].descriptor.unit, "counts");  // millimetres as printed, read through the profile
 
-    // The presses the board printed in the recording, from its samples: a
-    // run of displacement beyond 0.5 mm; clipped where the stiff beam came
-    // within 1 % of the declared full scale.
+    // The presses the board printed in the recording, from its samples (the
+    // millimetres as printed): a run of displacement beyond 0.5 mm; clipped
+    // where the stiff beam came within 1 % of the declared full scale.
     const auto count = store.sampleCount(id);
     const auto stiff = store.readChannel(id, 0, 0, count), depth = store.readChannel(id, 2, 0, count);
     int presses = 0, clipped = 0;
     bool pressing = false, atLimit = false;
     for (std::size_t i = 0; i < count; ++i) {
-        const bool in = depth[i] > 0.5e-3;
+        const bool in = depth[i] > 0.5;
         if (in) atLimit = atLimit || std::abs(stiff[i]) >= 0.99 * 32768.0;
         if (pressing && !in && i > 0) {
             ++presses;
@@ -237,6 +242,13 @@ TEST(TextBoardUnitsCli, APalpationBoardsCountsAreReadThroughItsProfilesScaleAndI
     // off by far more.
     for (const auto& reading : readings) {
         ASSERT_TRUE(reading.standardError.has_value());
+        // The displacement read through the profile's "mm": the press's
+        // deepest point in metres, within the depths the board pressed to.
+        const double deepest_m = QJsonDocument::fromJson(QByteArray::fromStdString(reading.detailsJson))
+                                     .object()[QStringLiteral("displacement_max_m")]
+                                     .toDouble();
+        EXPECT_GT(deepest_m, 2e-3) << reading.detailsJson;
+        EXPECT_LT(deepest_m, 1e-2) << reading.detailsJson;
         EXPECT_LE(std::abs(reading.value - p.objectStiffness_n_per_m), 3.0 * *reading.standardError)
             << reading.value << " ± " << *reading.standardError;
     }

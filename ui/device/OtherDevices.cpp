@@ -133,6 +133,7 @@ void OtherDevices::update()
         const LinkCounters counters = linkCounters(device.session->stats(), device.session->source());
         device.link->setText(linkLine(counters));
         device.link->setStyleSheet(counters.healthy ? QString() : QStringLiteral("color: #b00020"));
+        device.plot->showMoreChannels(device.session->channels());  // a board's new layout
     }
     setTimeBase();
 }

@@ -195,8 +195,12 @@ TEST(SensorProfile, ACompliancePairMayScaleBeamsInCountsAndWritesTheScalesBack)
     EXPECT_EQ(profileScales(parseSensorProfile(toJson(profile), "again.json")), expected);
     EXPECT_TRUE(profileScales(parseSensorProfile(kPair, "probe.json")).empty());
 
+    // A displacement's length, given by its unit alone: the values are in it.
+    EXPECT_EQ(profileScales(parseSensorProfile(withChannels(R"({"d": {"unit": "mm"}})"), "probe.json")),
+              (ChannelScales{{"d", {"mm", 1.0, std::nullopt}}}));
     EXPECT_EQ(errorOf(withChannels(R"({"stiff": {"unit": "V", "counts_per_unit": 2}})")),
-              "probe.json: channels.stiff.unit: 'V' is not a strain or a force unit (strain, µε, N, mN, µN)");
+              "probe.json: channels.stiff.unit: 'V' is not a strain, a force or a length unit (strain, µε, N, mN, "
+              "µN, m, mm, µm)");
     EXPECT_EQ(errorOf(withChannels(R"({"stiff": {"unit": "N", "counts_per_unit": 0}})")),
               "probe.json: channels.stiff.counts_per_unit: must be a positive number, got 0");
     EXPECT_EQ(errorOf(withChannels(R"({"stiff": {"unit": "N", "counts_per_unit": 2, "offset": 5}})")),

@@ -1,0 +1,54 @@
+// A palpation board's displacement printed as plain numbers (millimetres,
+// an encoder's counts) is read through its profile's length scale; without
+// one the forces refuse it, naming the channel and how to give the scale.
+#include "core/compliance/PalpationForces.h"
+
+#include "core/sensors/BuiltInProfiles.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <variant>
+
+using namespace tactiscope::core;
+
+namespace {
+
+compliance::LivePalpationSettings settingsWith(sensors::ChannelScales scales)
+{
+    const auto probe = std::get<sensors::CompliancePairProfile>(*sensors::builtInProfile(Mode::Palpation));
+    compliance::LivePalpationSettings settings;
+    settings.high = probe.high;
+    settings.low = probe.low;
+    settings.scales = std::move(scales);
+    settings.highInput = settings.lowInput = compliance::BeamInput::ProfileScale;
+    return settings;
+}
+
+const std::vector<ChannelDescriptor> kCounts{{"stiff", "counts", ChannelKind::Other, ChannelRole::StiffBeam},
+                                             {"soft", "counts", ChannelKind::Other, ChannelRole::SoftBeam},
+                                             {"d", "counts", ChannelKind::Other, ChannelRole::Displacement}};
+
+}  // namespace
+
+TEST(PalpationForces, ADisplacementInCountsIsReadThroughItsProfilesLengthScale)
+{
+    const sensors::ChannelScales beams{{"stiff", {"N", 200.0, 32768.0}}, {"soft", {"N", 50.0, 32768.0}}};
+    auto millimetres = beams;
+    millimetres.emplace("d", sensors::ChannelScale{"mm", 1.0, std::nullopt});
+    EXPECT_DOUBLE_EQ(compliance::PalpationForces(kCounts, settingsWith(millimetres)).displacement_m(2.5), 2.5e-3);
+    auto encoder = beams;  // 400 counts a millimetre
+    encoder.emplace("d", sensors::ChannelScale{"mm", 400.0, std::nullopt});
+    EXPECT_DOUBLE_EQ(compliance::PalpationForces(kCounts, settingsWith(encoder)).displacement_m(1000.0), 2.5e-3);
+    // A length channel is in metres already.
+    auto inMetres = kCounts;
+    inMetres[2] = {"d", "m", ChannelKind::Position, ChannelRole::Displacement};
+    EXPECT_DOUBLE_EQ(compliance::PalpationForces(inMetres, settingsWith(beams)).displacement_m(0.004), 0.004);
+    try {
+        compliance::PalpationForces(kCounts, settingsWith(beams));
+        ADD_FAILURE() << "counts without a length scale were read";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_EQ(std::string(e.what()), "the displacement d is in counts and the sensor profile gives it no length "
+                                         "scale (\"channels\": {\"d\": {\"unit\": \"mm\"}})");
+    }
+}
