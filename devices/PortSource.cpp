@@ -49,12 +49,15 @@ PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const Po
                                                 std::to_string(kLongestTextTiming.count()) + " s (" +
                                                 std::to_string(m_text->counters().frames) +
                                                 " read); give their rate (--rate, or Rate in the device panel)");
-            throw transport::TransportError(m_transport->description() + ": no " +
-                                            (options.protocol == WireProtocol::Binary ? std::string("TSP/1 frames")
-                                                                                      : std::string("readable lines")) +
-                                            " within " + std::to_string(options.handshakeTimeout.count()) +
-                                            " ms; check the protocol (a board that prints lines is --protocol text), "
-                                            "the baud rate and that the device is streaming");
+            throw transport::TransportError(
+                m_transport->description() + ": no " +
+                (options.protocol == WireProtocol::Binary ? std::string("TSP/1 frames")
+                                                          : std::string("readable lines")) +
+                " within " + std::to_string(options.handshakeTimeout.count()) + " ms; check the protocol (" +
+                (options.protocol == WireProtocol::Binary ? std::string("a board that prints lines is --protocol text")
+                                                          : std::string("a TSP/1 probe is --protocol binary")) +
+                "), "
+                "the baud rate and that the device is streaming");
         }
         pump(std::chrono::milliseconds(50));
     }

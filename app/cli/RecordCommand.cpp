@@ -233,7 +233,8 @@ int runRecord(const QStringList& arguments)
          QStringLiteral("[NAME=]PATH")},
         {QStringLiteral("protocol"),
          QStringLiteral("binary (TSP/1, default) or text. With several ports, NAME=text is that port's (this and "
-                        "--baud and --rate are given once for every port, or once per port named)."),
+                        "--baud and --rate are given once for every port, or once per port named: a rate given once "
+                        "is asked of every TSP/1 probe too)."),
          QStringLiteral("[NAME=]binary|text")},
         {QStringLiteral("baud"), QStringLiteral("Baud rate (default %1).").arg(kDefaultBaud),
          QStringLiteral("[NAME=]N")},
