@@ -152,9 +152,10 @@ std::optional<core::RoleAssignment> parseRolesOption(const QCommandLineParser& p
 QCommandLineOption unitsOption(const QString& whose)
 {
     return {QStringLiteral("units"),
-            QStringLiteral("The unit of %1, by channel name: NAME=UNIT,… (e.g. a=µε,b=µε). Strain (strain, µε), "
-                           "force (N, mN, µN), length (m, mm, µm) and capacitance (F, pF) are stored in SI; a "
-                           "channel with no unit is a plain number, which no mode reads as a strain or a force.")
+            QStringLiteral(
+                "The unit of %1, by channel name: NAME=UNIT,… (e.g. a=µε,b=µε). Strain (strain, µε), "
+                "force (N, kN, mN, µN), length (m, cm, mm, µm) and capacitance (F, nF, pF, fF) are stored in SI; a "
+                "channel with no unit is a plain number, which no mode reads as a strain or a force.")
                 .arg(whose),
             QStringLiteral("LIST")};
 }
