@@ -163,24 +163,24 @@ namespace {
 // What a store holds is sent to the central store and read everywhere: its
 // text must be UTF-8 without NUL (a server refuses the one and cuts the
 // other), its uuid a uuid (one holding '"' once stopped every later sync).
+void check(std::string_view text, const std::string& what)
+{
+    if (const auto problem = text::textProblem(text))
+        throw StoreInputError("the session's " + what + " cannot be stored: " + *problem +
+                              " (text must be UTF-8 without NUL); nothing was stored");
+}
+
 void refuseUnstorableText(std::span<const ChannelDescriptor> channels)
 {
-    for (const ChannelDescriptor& c : channels)
-        for (const auto& [text, what] :
-             {std::pair{c.name, std::string("channel name")}, std::pair{c.unit, "channel unit '" + c.name + "'"}})
-            if (const auto problem = text::textProblem(text))
-                throw StoreInputError("the session's " + what + " cannot be stored: " + *problem +
-                                      " (text must be UTF-8 without NUL); nothing was stored");
+    for (const ChannelDescriptor& c : channels) {
+        check(c.name, "channel name");
+        check(c.unit, "channel unit '" + c.name + "'");
+    }
 }
 
 void refuseUnstorableText(const SessionMetadata& m, std::span<const ChannelDescriptor> channels,
                           const SessionOrigin& origin)
 {
-    const auto check = [](std::string_view text, const std::string& what) {
-        if (const auto problem = text::textProblem(text))
-            throw StoreInputError("the session's " + what + " cannot be stored: " + *problem +
-                                  " (text must be UTF-8 without NUL); nothing was stored");
-    };
     check(m.subject, "subject");
     check(m.operatorName, "operator");
     check(m.site, "site");

@@ -117,6 +117,14 @@ void TextDecoder::flushGathering(std::vector<TextSample>& out)
     onSample(std::move(line), at_s, out);
 }
 
+std::size_t TextDecoder::unlabelledChannel(std::size_t k) const
+{
+    std::size_t c = 0;
+    for (std::size_t seen = 0; c < m_labels.size(); ++c)
+        if (m_labels[c].empty() && seen++ == k) break;
+    return c;
+}
+
 std::optional<std::vector<double>> TextDecoder::inLayout(const TextLine& line) const
 {
     // Teleplot's variables are printed each on its own: an instant may
@@ -131,14 +139,9 @@ std::optional<std::vector<double>> TextDecoder::inLayout(const TextLine& line) c
     std::vector<double> values(m_labels.size(), std::numeric_limits<double>::quiet_NaN());
     std::size_t unlabelled = 0;  // the k-th unlabelled value is the k-th unlabelled channel's
     for (const auto& field : line.fields) {
-        std::size_t c = 0;
-        if (field.label.empty()) {
-            for (std::size_t seen = 0; c < m_labels.size(); ++c)
-                if (m_labels[c].empty() && seen++ == unlabelled) break;
-            ++unlabelled;
-        } else {
-            c = static_cast<std::size_t>(std::ranges::find(m_labels, field.label) - m_labels.begin());
-        }
+        const std::size_t c =
+            field.label.empty() ? unlabelledChannel(unlabelled++)
+                                : static_cast<std::size_t>(std::ranges::find(m_labels, field.label) - m_labels.begin());
         values[c] = field.value;
     }
     return values;
@@ -168,11 +171,7 @@ std::optional<std::string> TextDecoder::adopt(const TextLine& line)
             if (!label.empty() && std::ranges::find(now, label) == now.end()) gone.push_back(label);
             if (label.empty()) ++unlabelledBefore;
         }
-        for (std::size_t k = unlabelled; k < unlabelledBefore; ++k) {
-            std::size_t seen = 0;
-            for (std::size_t c = 0; c < m_labels.size(); ++c)
-                if (m_labels[c].empty() && seen++ == k) gone.push_back(m_names[c]);
-        }
+        for (std::size_t k = unlabelled; k < unlabelledBefore; ++k) gone.push_back(m_names[unlabelledChannel(k)]);
         m_layout = std::move(now);
         m_layoutAsPrinted = labelsOf(line);
     }

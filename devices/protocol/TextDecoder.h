@@ -63,6 +63,8 @@ private:
     // The line's values in the channels' order (NaN in those it does not
     // print); none when its labels are not the layout's.
     std::optional<std::vector<double>> inLayout(const TextLine& line) const;
+    // The k-th channel without a label: the k-th unlabelled value's.
+    std::size_t unlabelledChannel(std::size_t k) const;
     // Takes the line's labels as the layout, adding channels for those not
     // seen before; says what changed (none for the first layout).
     std::optional<std::string> adopt(const TextLine& line);
