@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -90,4 +91,50 @@ TEST(TextBoardLayoutCli, ABoardThatRenamesAChannelAndAddsOneContinuesTheSessionW
                              "printed (holes from here)");
     EXPECT_NEAR(notes[1].start_s, static_cast<double>(added - first) / kRate_hz, 1e-9);
     EXPECT_EQ(notes[1].note, "the board's channels changed: d appeared (holes before the first value)");
+}
+
+// The same seam in a triggered recording: the session the trigger cut
+// gains the channel its board began to print, with the note.
+TEST(TextBoardLayoutCli, ATriggeredSessionGainsTheChannelItsBoardBeganToPrint)
+{
+    std::atomic<std::uint64_t> added = std::numeric_limits<std::uint64_t>::max();
+    const auto line = [&](std::uint64_t n) {
+        std::string text = "a:" + std::to_string(n);
+        if (n >= added) text += " d:" + std::to_string(n % 7);
+        return text + "\r\n";
+    };
+    QTemporaryDir dir;
+    const std::string link = dir.filePath(QStringLiteral("board")).toStdString();
+    TextBoard board(link, {100.0, line, 2, 1e-3, true});
+    ASSERT_TRUE(board.ok());
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    const std::uint64_t fires = board.printed() + 100;  // a second from here
+    added = fires + 80;
+    const QString db = dir.filePath(QStringLiteral("board.tactiscope"));
+    const auto result =
+        runCli({"record", "--port", QString::fromStdString(link), "--protocol", "text", "--rate", "100", "--seconds",
+                "3.5", "--db", db, "--trigger", QStringLiteral("a>%1").arg(static_cast<double>(fires) - 0.5)});
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    storage::SessionStore store(db.toStdString(), storage::Database::Access::ReadOnly);
+    const auto sessions = store.sessions();
+    ASSERT_EQ(sessions.size(), 1u) << result.out.toStdString();
+    const auto id = sessions.front().id;
+    const auto channels = store.channels(id);
+    ASSERT_EQ(channels.size(), 2u);
+    EXPECT_EQ(channels[1].descriptor.name, "d");
+    const std::uint64_t count = store.sampleCount(id);
+    const auto a = store.readChannel(id, 0, 0, count), d = store.readChannel(id, 1, 0, count);
+    EXPECT_EQ(static_cast<std::uint64_t>(a[0]), fires);
+    for (std::uint64_t s = 0; s < count; ++s) {
+        const auto n = static_cast<std::uint64_t>(a[s]);
+        ASSERT_EQ(n, fires + s);
+        if (n < added)
+            EXPECT_TRUE(std::isnan(d[s])) << n;
+        else
+            EXPECT_EQ(d[s], static_cast<double>(n % 7)) << n;
+    }
+    const auto events = store.events(id);
+    EXPECT_TRUE(std::ranges::any_of(events, [](const auto& e) {
+        return e.note == "the board's channels changed: d appeared (holes before the first value)";
+    }));
 }
