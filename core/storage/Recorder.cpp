@@ -156,6 +156,10 @@ void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
         !m_stats.error.empty())
         return;
     const std::vector<ChannelDescriptor> channels = std::exchange(m_queuedChannels, {});
+    // The samples written before a channel came are holes in it, as are a
+    // block's samples in the channels it does not hold yet.
+    const std::size_t channelCount = m_channelCount;
+    const std::uint64_t writtenBefore = m_stats.samplesWritten;
     const std::optional<std::string> clock = std::exchange(m_queuedClock, std::nullopt);
     std::vector<SessionZero> zeroRecords;
     if (zeros) {
@@ -184,13 +188,13 @@ void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
     } catch (const StorageError& e) {
         error = e.what();
     }
-    std::vector<std::uint64_t> holes;  // counted before the lock is taken again
-    for (const auto& block : batch) {
-        holes.resize(std::max(holes.size(), block.channelCount()));
-        for (std::size_t c = 0; c < block.channelCount(); ++c)
-            holes[c] += static_cast<std::uint64_t>(
-                std::ranges::count_if(block.channel(c), [](double v) { return std::isnan(v); }));
-    }
+    std::vector<std::uint64_t> holes(channelCount);  // counted before the lock is taken again
+    for (std::size_t c = channelCount - channels.size(); c < channelCount; ++c) holes[c] = writtenBefore;
+    for (const auto& block : batch)
+        for (std::size_t c = 0; c < channelCount; ++c)
+            holes[c] += c < block.channelCount() ? static_cast<std::uint64_t>(std::ranges::count_if(
+                                                       block.channel(c), [](double v) { return std::isnan(v); }))
+                                                 : block.sampleCount();
     lock.lock();
     if (error.empty()) {
         m_stats.holes.resize(std::max(m_stats.holes.size(), holes.size()));

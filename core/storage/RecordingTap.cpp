@@ -33,6 +33,7 @@ void RecordingTap::attach(std::shared_ptr<Recorder> recorder, RecordingStartFind
     if (m_recorder) m_recorder->addChannels(m_grownTo);
     m_finder = std::move(start);
     m_held.clear();
+    m_heldValues = 0;
     m_from_s.reset();
 }
 
@@ -49,6 +50,7 @@ std::shared_ptr<Recorder> RecordingTap::detach()
     if (m_recorder && m_finder && !m_held.empty()) release(m_finder(m_held.back().endTime_s(), true));
     m_finder = nullptr;
     m_held.clear();
+    m_heldValues = 0;
     return std::exchange(m_recorder, nullptr);
 }
 
@@ -61,7 +63,8 @@ void RecordingTap::consume(const SampleBlock& block)
         return;
     }
     m_held.push_back(block);
-    const bool mustAnswer = block.endTime_s() - m_held.front().t0_s() >= kMostHeld_s;
+    m_heldValues += block.sampleCount() * block.channelCount();
+    const bool mustAnswer = m_heldValues >= m_mostHeldValues;
     if (const auto start = m_finder(block.endTime_s(), mustAnswer); start.known || mustAnswer) release(start);
 }
 
@@ -71,6 +74,7 @@ void RecordingTap::release(const RecordingStart& start)
     m_from_s = start.from_s;
     for (const auto& block : m_held) record(block);
     m_held.clear();
+    m_heldValues = 0;
 }
 
 void RecordingTap::record(const SampleBlock& block)

@@ -15,6 +15,7 @@
 #include "core/SampleBlock.h"
 #include "core/storage/Recorder.h"
 
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -36,14 +37,22 @@ struct RecordingStart {
 
 // Asked as blocks come while the start is not known, with the end time of
 // the newest; `mustAnswer` when the recording stops or the blocks held
-// reach kMostHeld_s (then a start that is not known is taken as the first
-// block's).
+// reach the most the tap holds (then a start that is not known is taken as
+// the first block's). How long to wait is the finder's to say: the blocks'
+// own time says nothing of it (a board catching up sends a minute of lines
+// in a second).
 using RecordingStartFinder = std::function<RecordingStart(double newestEnd_s, bool mustAnswer)>;
 
 class RecordingTap final : public BlockSink {
 public:
-    // The blocks a start not yet known may hold back, in their own time.
-    static constexpr double kMostHeld_s = 10.0;
+    // The values (samples times channels) a start not yet known may hold
+    // back: 128 MB, ten seconds of the fastest probe's every channel.
+    static constexpr std::size_t kMostHeldValues = std::size_t{1} << 24;
+
+    explicit RecordingTap(std::size_t mostHeldValues = kMostHeldValues)
+        : m_mostHeldValues(mostHeldValues)
+    {
+    }
 
     // From the first block when no finder is given.
     void attach(std::shared_ptr<Recorder> recorder, RecordingStartFinder start = {});
@@ -62,8 +71,10 @@ private:
 
     std::mutex m_mutex;
     std::shared_ptr<Recorder> m_recorder;
-    RecordingStartFinder m_finder;             // until the start is known
-    std::vector<SampleBlock> m_held;           // meanwhile
+    RecordingStartFinder m_finder;    // until the start is known
+    std::vector<SampleBlock> m_held;  // meanwhile
+    std::size_t m_heldValues = 0;     // in them
+    const std::size_t m_mostHeldValues;
     std::optional<double> m_from_s;            // until a block reaches it
     std::vector<ChannelDescriptor> m_grownTo;  // the device's channels, once they grew
 };

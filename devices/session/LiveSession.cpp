@@ -28,6 +28,11 @@ namespace {
 // How far past a recording's start instant a clock mapping still learning
 // the link must have placed the stream before the start is placed by it.
 constexpr double kStartSettles_s = 1.0;
+// How long after its instant a recording's start may wait for the clock to
+// place it, in the host's time: a board catching up on a minute of lines
+// sends them within a second, and its clock is no clock until lines come
+// on time after them.
+constexpr double kLongestStartWait_s = 10.0;
 
 // The lists' generations are numbered across every live session of the
 // process: a view bound to another device's session (a new connection)
@@ -217,8 +222,9 @@ std::optional<std::string> LiveSession::startRecordingPart(const core::storage::
 // opened (sent in a burst, their lags fall a period per period): it is
 // trusted once it has placed the stream a second past the instant, which
 // puts a second of lines on time under it (core/timing/ClockAlignment). A
-// mapping that is no clock (steeper than any clock drifts) places nothing;
-// a source with none records from its first block.
+// mapping that is no clock (steeper than any clock drifts, and not exact) places nothing;
+// a source with none, or none within kLongestStartWait_s, records from its
+// first block.
 core::storage::RecordingStartFinder LiveSession::startsAt(double host_s) const
 {
     if (!m_started) {
@@ -230,8 +236,11 @@ core::storage::RecordingStartFinder LiveSession::startsAt(double host_s) const
     }
     return [source = &source(), host_s](double newestEnd_s, bool mustAnswer) {
         using core::storage::RecordingStart;
+        mustAnswer = mustAnswer || steadySeconds() >= host_s + kLongestStartWait_s;
         const auto clock = source->hostClock();
-        if (!clock || !(std::abs(clock->drift) < 0.1))
+        // An exact mapping is one whatever its slope (a simulator faster than the host).
+        const bool exact = clock && clock->basis == core::timing::ClockUncertaintyBasis::Exact;
+        if (!clock || (!exact && !(std::abs(clock->drift) < 0.1)))
             return mustAnswer ? RecordingStart::fromFirstBlock() : RecordingStart::notYet();
         const bool settled = clock->basis != core::timing::ClockUncertaintyBasis::TooFewFrames ||
                              clock->host_s(newestEnd_s) >= host_s + kStartSettles_s;
@@ -266,7 +275,9 @@ std::optional<std::string> LiveSession::beginRecording(const core::storage::Sess
     }
     if (!used.empty()) metadata.calibrationsJson += "]";
     const double rate_hz = source().nominalSampleRate_hz();
-    takeNotices();  // what the link noticed before belongs to no session
+    // What the link noticed before belongs to no session (before a
+    // triggered one, what came after its first sample belongs in it).
+    if (!m_trigger) takeNotices(NoticesAt::RecordingBegins);
     // Nor do the defects and presses found before the record press: taken
     // now, while no recorder would store them. A triggered session's start
     // reaches back: those after its first sample waited for it (takeResults()).
@@ -354,7 +365,7 @@ RecordingSummary LiveSession::finishRecording()
     m_gate->detach();
     if (const auto origin = recordingOrigin_s()) m_lists.origin_s = *origin;
     takeResults();  // what completed up to the last recorded block
-    takeNotices();
+    takeNotices(NoticesAt::RecordingEnds);
     takeLimitAlarms();
     for (const auto& raised : m_raisedAlarms) storeAlarm(raised, m_recorder->sessionTime_s());
     RecordingSummary summary;
@@ -473,15 +484,28 @@ std::uint64_t LiveSession::recorderQueueBound(double rate_hz, std::size_t channe
 }
 
 // The link's notices are part of the record: a recording keeps each at the
-// moment it happened, as an alarm or, where nothing went wrong, a note.
-void LiveSession::takeNotices()
+// moment it happened, as an alarm or, where nothing went wrong, a note; one
+// from before it is told as such (a board's channel renamed before the
+// record press is a channel of holes in the session).
+void LiveSession::takeNotices(NoticesAt at)
 {
+    auto taken = m_acquisition->takeNotices();
+    m_noticesWaiting.insert(m_noticesWaiting.end(), std::make_move_iterator(taken.begin()),
+                            std::make_move_iterator(taken.end()));
+    // Where the recording's first sample lies its tap may not know yet (it
+    // holds the blocks while the clock learns the link): until then a
+    // notice's moment in it is not known either.
+    const auto origin = m_recorder ? m_recorder->acquisitionOrigin_s() : std::nullopt;
+    if (m_recorder && !origin && at == NoticesAt::Poll) return;
+    const double origin_s = origin.value_or(0.0);
     std::vector<core::storage::SessionEvent> stored;
-    for (auto& notice : m_acquisition->takeNotices()) {
-        if (m_recorder && m_recorder->sessionTimeOf(notice.time_s) >= 0.0) {
-            const double session_s = m_recorder->sessionTimeOf(notice.time_s);
+    for (auto& notice : std::exchange(m_noticesWaiting, {})) {
+        if (origin && notice.time_s >= origin_s) {
+            const double session_s = notice.time_s - origin_s;
             stored.push_back(notice.alarm ? core::storage::alarmRecord(session_s, session_s, notice.text)
                                           : core::storage::noteRecord(session_s, notice.text));
+        } else if (m_recorder || at == NoticesAt::RecordingBegins) {
+            notice.text += " (before the recording began, so not in it)";
         }
         m_linkNotices.push_back(std::move(notice));
     }

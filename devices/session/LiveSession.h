@@ -280,7 +280,11 @@ private:
     double listTime_s(double streamTime_s) const;
     LiveModeUnit* unitOf(core::Mode mode) const;
     void takeResults();  // each unit's completed results and zeros
-    void takeNotices();
+    // The link's notices are taken at each poll, as a recording begins
+    // (what came before is in no session) and as it ends (what waited for
+    // its first sample is told however it ended).
+    enum class NoticesAt { Poll, RecordingBegins, RecordingEnds };
+    void takeNotices(NoticesAt at = NoticesAt::Poll);
     void recordStandingFaults();
     void recordUnstoppedEnd(RecordingSummary& summary);
     void storeClockMapping();
@@ -310,7 +314,8 @@ private:
     LiveLists m_lists;
     std::vector<std::string> m_problems;
     std::vector<LinkNotice> m_linkNotices;
-    double m_recordingStartHost_s = 0.0;  // steady clock
+    std::vector<LinkNotice> m_noticesWaiting;  // for the recording's first sample, to place them in it
+    double m_recordingStartHost_s = 0.0;       // steady clock
     double m_nextClockStore_host_s = 0.0;
     // The trigger armed: its settings and the metadata its sessions take.
     std::optional<core::trigger::TriggerSettings> m_trigger;

@@ -305,8 +305,9 @@ namespace {
 // A board nobody read for a while: its port filled, its writes waited
 // (as Serial.write does on a native USB port), and once the port is
 // opened it prints, as fast as its link takes them, the lines its schedule
-// says are due: half a second of catching up, far longer than the port's
-// backlog is read away for. Recorded for 3 s with `options` given.
+// says are due, far faster than its rate and far longer than the port's
+// backlog is read away for. Unread for `unread_s`, then recorded for 3 s
+// with `options` given.
 struct CaughtUp {
     std::uint64_t dueAtStart = 0;
     std::uint64_t firstLine = 0;
@@ -314,7 +315,7 @@ struct CaughtUp {
     double rate_hz = 0.0;
 };
 
-CaughtUp recordABoardThatCatchesUp(double rate_hz, const QStringList& options)
+CaughtUp recordABoardThatCatchesUp(double rate_hz, double unread_s, const QStringList& options)
 {
     QTemporaryDir dir;
     const std::string link = dir.filePath(QStringLiteral("board")).toStdString();
@@ -329,7 +330,7 @@ CaughtUp recordABoardThatCatchesUp(double rate_hz, const QStringList& options)
     printing.linkBytesPerSecond = 1e6;
     TextBoard board(link, printing);
     EXPECT_TRUE(board.ok());
-    std::this_thread::sleep_for(std::chrono::seconds(5));
+    std::this_thread::sleep_for(std::chrono::duration<double>(unread_s));
     CaughtUp caught;
     caught.dueAtStart = board.due();
     EXPECT_GT(caught.dueAtStart, board.printed() + 1000) << "the board was not held up";
@@ -351,12 +352,14 @@ CaughtUp recordABoardThatCatchesUp(double rate_hz, const QStringList& options)
 }  // namespace
 
 // Before, with --rate given, the catch-up was recorded as the session's
-// first seconds (a 3 s recording after 35 s unread held 17 s).
+// first seconds (a 3 s recording after 35 s unread held 17 s); then, once
+// its lines spanned more than 10 s, as the start the recording had waited
+// too long for (a 2 s recording after a minute unread held 21.5 s).
 TEST(TextBoardCli, WhatABoardCatchesUpOnOnceThePortIsOpenedIsNotRecorded)
 {
-    const auto given = recordABoardThatCatchesUp(500.0, {"--rate", "500"});
+    const auto given = recordABoardThatCatchesUp(500.0, 12.0, {"--rate", "500"});
     EXPECT_GE(given.firstLine, given.dueAtStart);
-    // Three seconds at most (the catch-up alone is 2,500 lines), less
+    // Three seconds at most (the catch-up alone is over 11 s of lines), less
     // what a slow reader (a sanitizer's, sharing its cores) had not read
     // by the stop.
     EXPECT_LE(given.samples, 1550u);
@@ -366,7 +369,7 @@ TEST(TextBoardCli, WhatABoardCatchesUpOnOnceThePortIsOpenedIsNotRecorded)
 // Timed from its lines, the catch-up neither sways the rate nor is recorded.
 TEST(TextBoardCli, ABoardThatCatchesUpIsTimedByTheLinesThatCameOnTime)
 {
-    const auto timed = recordABoardThatCatchesUp(500.0, {});
+    const auto timed = recordABoardThatCatchesUp(500.0, 5.0, {});
     EXPECT_LT(std::abs(timed.rate_hz / 500.0 - 1.0), 1e-3) << timed.rate_hz;
     EXPECT_GE(timed.firstLine, timed.dueAtStart);
     EXPECT_LE(timed.samples, 1550u);

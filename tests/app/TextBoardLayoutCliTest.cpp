@@ -138,3 +138,43 @@ TEST(TextBoardLayoutCli, ATriggeredSessionGainsTheChannelItsBoardBeganToPrint)
         return e.note == "the board's channels changed: d appeared (holes before the first value)";
     }));
 }
+
+// A rename while the board's rate is timed, before the recording: the
+// session holds b (its channels are the stream's) as holes only, and both
+// the notice and the holes note say so. Before, the notice did not say it
+// came before the recording, and the note counted no hole in b.
+TEST(TextBoardLayoutCli, ARenameBeforeTheRecordingIsToldAsBeforeItAndItsChannelCountedAsHoles)
+{
+    std::atomic<std::uint64_t> renamed = std::numeric_limits<std::uint64_t>::max();
+    const auto line = [&](std::uint64_t n) {
+        return "a:" + std::to_string(n) + (n < renamed ? " b:" : " c:") + std::to_string(n % 5) + "\r\n";
+    };
+    QTemporaryDir dir;
+    const std::string link = dir.filePath(QStringLiteral("board")).toStdString();
+    TextBoard board(link, {100.0, line, 2, 2e-3, true});
+    ASSERT_TRUE(board.ok());
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    // A second from here: the port is open by then, and the lines' rate
+    // takes seconds more to settle.
+    renamed = board.printed() + 100;
+    const QString db = dir.filePath(QStringLiteral("board.tactiscope"));
+    const auto result =
+        runCli({"record", "--port", QString::fromStdString(link), "--protocol", "text", "--seconds", "1", "--db", db});
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    storage::SessionStore store(db.toStdString(), storage::Database::Access::ReadOnly);
+    const auto id = sessionIdIn(result.out);
+    const auto channels = store.channels(id);
+    ASSERT_EQ(channels.size(), 3u) << result.out.toStdString();
+    const std::uint64_t count = store.sampleCount(id);
+    const auto a = store.readChannel(id, 0, 0, count), b = store.readChannel(id, 1, 0, count);
+    ASSERT_GT(a[0], static_cast<double>(renamed.load())) << "the recording began before the rename";
+    EXPECT_TRUE(std::ranges::all_of(b, [](double v) { return std::isnan(v); }));
+    const QString err = result.err;
+    EXPECT_TRUE(err.contains(QStringLiteral("the board's channels changed: c appeared (holes before the first "
+                                            "value); b is no longer printed (holes from here) (before the recording "
+                                            "began, so not in it)")))
+        << err.toStdString();
+    EXPECT_TRUE(err.contains(QStringLiteral(": %1 in b").arg(count))) << err.toStdString();
+    for (const auto& event : store.events(id))
+        EXPECT_FALSE(event.note.starts_with("the board's channels")) << event.note;
+}

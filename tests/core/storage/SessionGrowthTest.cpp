@@ -2,7 +2,9 @@
 // lines that begins to print another value), in a real store: the new
 // channel is a hole before its first value, in the samples, the pyramid
 // and every read; a block from before the gain is stored with the new
-// channel as holes; the old channels are untouched.
+// channel as holes; the old channels are untouched; a recorder counts
+// every one of those holes.
+#include "core/storage/Recorder.h"
 #include "core/storage/SessionStore.h"
 
 #include "core/SampleBlock.h"
@@ -71,4 +73,23 @@ TEST_F(SessionGrowthTest, ANewChannelIsAHoleBeforeItsFirstValueAndTheOthersAreUn
     EXPECT_TRUE(std::isnan(before[0].min) || before[0].count == 0) << before[0].min;
     // A block of more channels than the session has is refused.
     EXPECT_THROW(store.appendBlocks(id, std::vector{blockOf(4, 100, 5)}), StorageError);
+}
+
+// Before, the recorder counted only the holes of blocks that held the new
+// channel: the samples before it came were not in its note.
+TEST_F(SessionGrowthTest, ARecorderCountsTheSamplesBeforeAChannelCameAsItsHoles)
+{
+    const std::vector<ChannelDescriptor> board{{"a", "", ChannelKind::Other}, {"b", "", ChannelKind::Other}};
+    Recorder recorder(file("grow.tactiscope"), {}, board, 100.0, 100'000);
+    recorder.consume(blockOf(2, 0, 40));
+    recorder.consume(blockOf(2, 40, 20));
+    recorder.addChannels({board[0], board[1], {"c", "", ChannelKind::Other}});
+    recorder.consume(blockOf(2, 60, 5));  // from before the gain
+    auto grown = blockOf(3, 65, 35);
+    grown.channel(0)[3] = std::nan("");
+    recorder.consume(grown);
+    const auto stats = recorder.finish(SessionStatus::Complete);
+    ASSERT_TRUE(stats.error.empty()) << stats.error;
+    EXPECT_EQ(stats.samplesWritten, 100u);
+    EXPECT_EQ(stats.holes, (std::vector<std::uint64_t>{1, 0, 65}));
 }
