@@ -34,11 +34,13 @@ ReconnectingSource::ReconnectingSource(Opener opener, std::chrono::milliseconds 
       m_identity(m_source->identity()),
       m_declaredMode(m_source->declaredMode()),
       m_channels(m_source->channels()),
+      m_streamChannels(m_channels),
       m_rate_hz(m_source->nominalSampleRate_hz()),
       m_rateNote(m_source->rateNote()),
       m_rateU_hz(m_source->rateUncertainty_hz()),
       m_start(std::chrono::steady_clock::now())
 {
+    for (std::size_t c = 0; c < m_channels.size(); ++c) m_channelMap.push_back(c);
 }
 
 std::optional<std::string> ReconnectingSource::differenceFrom(const BlockSource& back) const
@@ -50,9 +52,51 @@ std::optional<std::string> ReconnectingSource::differenceFrom(const BlockSource&
         return "another device came back on the port (" + identity.model + " " + identity.serial + ", where " +
                m_identity.model + " " + m_identity.serial +
                " was): what came before is kept, nothing of it is mixed in; connect it as a new session";
-    if (back.channels() != m_channels || !sameRate(back))
+    if ((!back.textProtocol() && back.channels() != m_channels) || !sameRate(back))
         return "the device came back with other channels or another rate; reconnect it by hand";
     return std::nullopt;
+}
+
+bool ReconnectingSource::matchChannels(const std::vector<core::ChannelDescriptor>& connection)
+{
+    std::vector<std::size_t> map;
+    auto stream = m_streamChannels;
+    for (const auto& channel : connection) {
+        const auto same = std::ranges::find(stream, channel.name, &core::ChannelDescriptor::name);
+        if (same != stream.end() && *same != channel) {
+            m_error = "the device came back printing " + channel.name + " in another unit (" +
+                      (channel.unit.empty() ? std::string("none") : channel.unit) + ", where it was " +
+                      (same->unit.empty() ? std::string("none") : same->unit) + "); reconnect it by hand";
+            return false;
+        }
+        map.push_back(static_cast<std::size_t>(same - stream.begin()));
+        if (same == stream.end()) stream.push_back(channel);
+    }
+    if (stream.size() > m_streamChannels.size()) m_grown = stream;
+    m_streamChannels = std::move(stream);
+    m_channelMap = std::move(map);
+    m_sameLayout = m_channelMap.size() == m_streamChannels.size();
+    for (std::size_t c = 0; c < m_channelMap.size(); ++c) m_sameLayout = m_sameLayout && m_channelMap[c] == c;
+    return true;
+}
+
+std::string ReconnectingSource::channelsNotPrinted() const
+{
+    std::string names;
+    for (std::size_t c = 0; c < m_streamChannels.size(); ++c)
+        if (std::ranges::find(m_channelMap, c) == m_channelMap.end())
+            names += (names.empty() ? "" : ", ") + m_streamChannels[c].name;
+    return names.empty() ? names : "; it no longer prints " + names + " (holes from here)";
+}
+
+core::SampleBlock ReconnectingSource::inStreamChannels(const core::SampleBlock& block) const
+{
+    core::SampleBlock out(m_streamChannels.size(), block.sampleCount(), block.t0_s(), block.dt_s(),
+                          block.firstSampleIndex(), block.sequence());
+    for (std::size_t c = 0; c < out.channelCount(); ++c) std::ranges::fill(out.channel(c), std::nan(""));
+    for (std::size_t c = 0; c < std::min(block.channelCount(), m_channelMap.size()); ++c)
+        std::ranges::copy(block.channel(c), out.channel(m_channelMap[c]).begin());
+    return out;
 }
 
 // A rate the device states must be the same; one this program measured (a
@@ -72,10 +116,11 @@ bool ReconnectingSource::tryReconnect()
     m_state = DeviceState::Reconnecting;
     try {
         auto source = m_opener();
-        if (const auto other = differenceFrom(*source)) {
+        const auto other = differenceFrom(*source);
+        if (other) m_error = *other;
+        if (other || !matchChannels(source->channels())) {
             // Another device, for the record: what came before is kept, and
             // nothing after is mixed into it.
-            m_error = *other;
             m_failedForGood = true;
             m_state = DeviceState::Lost;
             return false;
@@ -99,7 +144,7 @@ bool ReconnectingSource::tryReconnect()
             m_timeOffset_s = std::chrono::duration<double>(resumed - m_start).count();
             char text[96];
             std::snprintf(text, sizeof text, "the probe was away %.1f s and came back", away_s);
-            m_pastNotices.push_back({m_lostAtTime_s, text});
+            m_pastNotices.push_back({m_lostAtTime_s, text + channelsNotPrinted()});
         }
         replaceSource(std::move(source));
         m_state = DeviceState::Streaming;
@@ -196,7 +241,7 @@ bool ReconnectingSource::textProtocol() const
 
 std::optional<std::vector<core::ChannelDescriptor>> ReconnectingSource::takeGrownChannels()
 {
-    return m_source ? m_source->takeGrownChannels() : std::nullopt;
+    return std::exchange(m_grown, std::nullopt);
 }
 
 ReadStatus ReconnectingSource::readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout)
@@ -228,6 +273,12 @@ ReadStatus ReconnectingSource::readBlock(core::SampleBlock& out, std::chrono::mi
         return ReadStatus::Timeout;
     }
     if (status != ReadStatus::Block) return status;
+    // A board's new layout: matched to the stream's channels before its block.
+    if (auto grown = m_source->takeGrownChannels(); grown && !matchChannels(*grown)) {
+        m_failedForGood = true;
+        return ReadStatus::Failed;
+    }
+    if (!m_sameLayout || out.channelCount() != m_streamChannels.size()) out = inStreamChannels(out);
     out.rebase(m_timeOffset_s, m_indexOffset);
     m_endIndex = out.endSampleIndex();
     m_lastEnd_s = out.endTime_s();

@@ -11,7 +11,11 @@
 // a recording marks the gap. A device that comes back as another (another
 // model or serial number in its INFO, other channels or another rate; a
 // text board's rate, timed again, within its uncertainty) ends the source
-// for good, with the reason: nothing of it joins the session.
+// for good, with the reason: nothing of it joins the session. A board
+// printing lines may come back printing other channels, as it may change
+// them while it streams: each is matched to the stream's by its name (a
+// name the stream has in another unit is another device), a new one grows
+// the stream, and one it no longer prints is a channel of holes.
 #pragma once
 
 #include "devices/BlockSource.h"
@@ -51,7 +55,7 @@ public:
     protocol::DecoderCounters decoderCounters() const override;
     // Of every connection so far, in the stream's time.
     std::vector<LinkNotice> takeNotices() override;
-    // The current connection's.
+    // Every connection's new channels, in the stream's order.
     std::optional<std::vector<core::ChannelDescriptor>> takeGrownChannels() override;
     std::optional<std::string> requestShunt(std::size_t channel, bool on) override;
     std::vector<DeviceStatus> takeStatuses() override;
@@ -73,6 +77,15 @@ private:
     // number, other channels or rate); none when it is.
     std::optional<std::string> differenceFrom(const BlockSource& back) const;
     bool sameRate(const BlockSource& back) const;
+    // Matches a connection's channels to the stream's by name, growing the
+    // stream by those it lacks; false, with m_error set, when a name comes
+    // in another unit.
+    bool matchChannels(const std::vector<core::ChannelDescriptor>& connection);
+    // A block of the current connection in the stream's channels.
+    core::SampleBlock inStreamChannels(const core::SampleBlock& block) const;
+    // "; it no longer prints b (holes from here)": of the stream's channels,
+    // those the current connection does not print; empty when it prints all.
+    std::string channelsNotPrinted() const;
 
     void replaceSource(std::unique_ptr<BlockSource> source);
     std::vector<LinkNotice> takeCurrentNotices();
@@ -84,6 +97,10 @@ private:
     DeviceIdentity m_identity;
     std::optional<core::Mode> m_declaredMode;
     std::vector<core::ChannelDescriptor> m_channels;
+    std::vector<core::ChannelDescriptor> m_streamChannels;  // with those grown since
+    std::vector<std::size_t> m_channelMap;  // the connection's channel i is the stream's m_channelMap[i]
+    bool m_sameLayout = true;               // the map is the identity onto every stream channel
+    std::optional<std::vector<core::ChannelDescriptor>> m_grown;  // not yet taken
     double m_rate_hz = 0.0;
     std::optional<std::string> m_rateNote;  // the first connection's: the rate kept
     std::optional<double> m_rateU_hz;       // and its uncertainty

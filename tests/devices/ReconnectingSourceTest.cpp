@@ -14,9 +14,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <functional>
 #include <mutex>
+#include <string>
 #include <thread>
+#include <vector>
 
 using namespace tactiscope;
 using namespace tactiscope::devices;
@@ -39,6 +43,33 @@ struct LastBlock final : core::BlockSink {
     std::mutex mutex;
     double end_s = 0.0, seen_s = 0.0;
 };
+
+// The newest block's first sample, channel by channel.
+struct FirstValues final : core::BlockSink {
+    void consume(const core::SampleBlock& block) override
+    {
+        const std::lock_guard lock(mutex);
+        values.clear();
+        for (std::size_t c = 0; c < block.channelCount(); ++c) values.push_back(block.channel(c)[0]);
+    }
+    std::vector<double> get()
+    {
+        const std::lock_guard lock(mutex);
+        return values;
+    }
+    std::mutex mutex;
+    std::vector<double> values;
+};
+
+// A text board's source that reopens its link when it comes back; its
+// rate is given (not timed again at each connection).
+std::unique_ptr<ReconnectingSource> reopeningTextBoard(const std::string& link, double rate_hz)
+{
+    return std::make_unique<ReconnectingSource>(
+        serialOpener(link, "", 115200,
+                     {WireProtocol::Text, rate_hz, std::chrono::milliseconds(4000), std::nullopt, {}}),
+        std::chrono::milliseconds(100));
+}
 
 }  // namespace
 
@@ -124,5 +155,55 @@ TEST(ReconnectingSource, ATextBoardTimedAgainWhenItComesBackContinues)
     // The gap is the time it was away, not that and the 2.5 s it took to
     // be timed again (its lines of that time are in the stream).
     EXPECT_NEAR(static_cast<double>(acquisition.stats().samplesLost), away_s * 200.0, 0.3 * 200.0);
+    acquisition.stop();
+}
+
+// A board whose sketch changed while it was unplugged comes back printing
+// c and a: the stream goes on with a matched by its name, c a new channel
+// and b (no longer printed) holes, and says so. Before, any other channels
+// ended the stream. One that comes back printing a in another unit is
+// another device.
+TEST(ReconnectingSource, ATextBoardThatComesBackPrintingOtherChannelsContinuesByTheirNames)
+{
+    const std::string link = tactiscope::testing::uniqueTempPath("text-relayout");
+    const auto printing = [](std::function<std::string(std::uint64_t)> line) {
+        return tactiscope::testing::TextBoardOptions{200.0, std::move(line), 4, 1e-3, false};
+    };
+    auto board = std::make_unique<tactiscope::testing::TextBoard>(
+        link, printing([](std::uint64_t n) { return "a:" + std::to_string(n % 10) + " b:1\n"; }));
+    auto source = reopeningTextBoard(link, 200.0);
+    auto* reconnecting = source.get();
+    Acquisition acquisition(std::move(source));
+    auto first = std::make_shared<FirstValues>();
+    acquisition.addSink(first);
+    acquisition.start();
+    board.reset();
+    ASSERT_TRUE(tactiscope::testing::eventually([&] { return reconnecting->state() != DeviceState::Streaming; }));
+    board = std::make_unique<tactiscope::testing::TextBoard>(
+        link, printing([](std::uint64_t n) { return "c:7 a:" + std::to_string(n % 10) + "\n"; }));
+    ASSERT_TRUE(tactiscope::testing::eventually([&] { return first->get().size() == 3; }, std::chrono::seconds(10)))
+        << reconnecting->lastError();
+    const auto values = first->get();
+    EXPECT_GE(values[0], 0.0);
+    EXPECT_LE(values[0], 9.0);
+    EXPECT_TRUE(std::isnan(values[1]));
+    EXPECT_EQ(values[2], 7.0);
+    const auto grown = acquisition.takeGrownChannels();
+    ASSERT_TRUE(grown);
+    ASSERT_EQ(grown->size(), 3u);
+    EXPECT_EQ((*grown)[2].name, "c");
+    bool told = false;
+    for (const auto& notice : acquisition.takeNotices())
+        told = told || notice.text.ends_with("came back; it no longer prints b (holes from here)");
+    EXPECT_TRUE(told);
+
+    board.reset();
+    ASSERT_TRUE(tactiscope::testing::eventually([&] { return reconnecting->state() != DeviceState::Streaming; }));
+    board = std::make_unique<tactiscope::testing::TextBoard>(
+        link, printing([](std::uint64_t n) { return "a[mN]:" + std::to_string(n % 10) + "\n"; }));
+    ASSERT_TRUE(
+        tactiscope::testing::eventually([&] { return reconnecting->failedForGood(); }, std::chrono::seconds(10)));
+    EXPECT_EQ(reconnecting->lastError(),
+              "the device came back printing a in another unit (N, where it was none); reconnect it by hand");
     acquisition.stop();
 }
