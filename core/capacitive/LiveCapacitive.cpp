@@ -82,8 +82,9 @@ StoredCapacitiveCalibration capacitiveCalibrationOf(const calibration::Calibrati
 
 LiveCapacitive::LiveCapacitive(const std::vector<ChannelDescriptor>& channels, double sampleRate_hz,
                                const CapacitiveSensitivity& sensitivity, const DriftSettings& drift,
-                               double displaySeconds)
+                               double displaySeconds, const sensors::ChannelScales& scales)
     : m_channel(capacitanceChannel(channels)),
+      m_input(capacitanceInput(channels[m_channel], scales)),
       m_output(std::make_shared<LiveBuffer>(outputChannels().size(),
                                             static_cast<std::size_t>(std::ceil(displaySeconds * sampleRate_hz)) + 1)),
       m_noiseSigma_f(drift.noiseSigma_f),
@@ -145,7 +146,7 @@ void LiveCapacitive::consume(const SampleBlock& block)
             m_readout.tare();
             m_startTared = true;
         }
-        reading = m_readout.push(t_s, block.value(m_channel, s));
+        reading = m_readout.push(t_s, m_input.farads(block.value(m_channel, s)));
         // A new C0 (a tare before this sample, a drift step at it) reads this sample on.
         if (m_readout.baselineChanges() != m_changesSeen) {
             m_changesSeen = m_readout.baselineChanges();
@@ -160,7 +161,7 @@ void LiveCapacitive::consume(const SampleBlock& block)
     m_startTaredSeen = m_startTared;
     m_baselineChanges.insert(m_baselineChanges.end(), changes.begin(), changes.end());
     m_latest = reading;
-    for (std::size_t s = 0; s < block.sampleCount(); ++s) m_window.push(block.value(m_channel, s));
+    for (std::size_t s = 0; s < block.sampleCount(); ++s) m_window.push(m_input.farads(block.value(m_channel, s)));
 }
 
 BaselineChange LiveCapacitive::currentBaseline() const

@@ -18,6 +18,7 @@
 #include "core/ChannelDescriptor.h"
 #include "core/LiveBuffer.h"
 #include "core/calibration/CalibrationRecord.h"
+#include "core/capacitive/CapacitanceInput.h"
 #include "core/capacitive/CapacitiveReadout.h"
 #include "core/sensors/SensorProfile.h"
 #include "core/signal/SteadyWindow.h"
@@ -77,10 +78,12 @@ public:
     // of their difference: a steady noisy signal scores about 1.
     static constexpr double kSteadyScore = 6.0;
 
-    // Throws std::invalid_argument without a capacitance channel or for
-    // non-positive sensitivities.
+    // Throws std::invalid_argument without a capacitance channel, for one
+    // in counts that `scales` (the profile's) give no capacitance scale, or
+    // for non-positive sensitivities.
     LiveCapacitive(const std::vector<ChannelDescriptor>& channels, double sampleRate_hz,
-                   const CapacitiveSensitivity& sensitivity, const DriftSettings& drift, double displaySeconds);
+                   const CapacitiveSensitivity& sensitivity, const DriftSettings& drift, double displaySeconds,
+                   const sensors::ChannelScales& scales = {});
 
     // The channels of output(): force in N, tip displacement in m.
     static std::vector<ChannelDescriptor> outputChannels();
@@ -105,6 +108,7 @@ public:
 
 private:
     std::size_t m_channel = 0;
+    CapacitanceInput m_input;  // its values to farads
     std::shared_ptr<LiveBuffer> m_output;
     double m_noiseSigma_f;
 

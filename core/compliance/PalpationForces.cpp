@@ -152,6 +152,7 @@ PalpationForces::PalpationForces(const std::vector<ChannelDescriptor>& channels,
                                         "{\"" +
                                         channels[m_displacement].name + "\": {\"unit\": \"mm\"}})");
         m_metresPerCount = unit->factor / scale->second.countsPerUnit;
+        m_displacementOffset = scale->second.offset_counts;
     }
     const auto input = [&](std::size_t c, std::optional<double> gaugeFactor) {
         Input in;
@@ -165,6 +166,7 @@ PalpationForces::PalpationForces(const std::vector<ChannelDescriptor>& channels,
             const auto unit = physicalUnit(scale->second.unit);
             in.kind = unit->kind;
             in.unitsPerCount = unit->factor / scale->second.countsPerUnit;
+            in.offset = scale->second.offset_counts;
             in.fullScale = scale->second.fullScale_counts;
             return in;
         }
@@ -181,7 +183,7 @@ PalpationForces::PalpationForces(const std::vector<ChannelDescriptor>& channels,
 bool PalpationForces::atLimit(bool highBeam, double raw) const
 {
     const Input& beam = highBeam ? m_high : m_low;
-    return beam.fullScale && std::abs(raw) >= (1.0 - kNearLimit) * *beam.fullScale;
+    return beam.fullScale && std::abs(raw - beam.offset) >= (1.0 - kNearLimit) * *beam.fullScale;
 }
 
 std::optional<double> PalpationForces::gaugeFactor(bool highBeam) const

@@ -102,7 +102,7 @@ public:
     std::size_t displacementChannel() const { return m_displacement; }
     // A raw displacement value in metres: a length channel's is; one in
     // counts goes through the profile's scale for it.
-    double displacement_m(double raw) const { return raw * m_metresPerCount; }
+    double displacement_m(double raw) const { return (raw - m_displacementOffset) * m_metresPerCount; }
     double contactThreshold_n() const { return m_contactThreshold_n; }
     // The gauge factor that turns a beam's counts into strain; none when
     // the device sends strain or force itself.
@@ -143,7 +143,8 @@ private:
         std::optional<straingauge::StrainGaugeChain> chain;  // a channel in counts; holds its zero
         double unitsPerCount = 1.0;                          // the scale's, in N or strain
         double zero = 0.0;                                   // channels without a chain
-        std::optional<double> fullScale;                     // where its counts clip
+        double offset = 0.0;                                 // the count of zero, its clipping's centre
+        std::optional<double> fullScale;                     // where its counts clip, that far from it
         void setZero(double value);
         double force(const sensors::CantileverBeam& beam, double value) const;
     };
@@ -153,6 +154,7 @@ private:
     Input m_high, m_low;
     std::size_t m_displacement = 0;
     double m_metresPerCount = 1.0;
+    double m_displacementOffset = 0.0;  // in counts
     std::optional<RawZero> m_zero;
 };
 

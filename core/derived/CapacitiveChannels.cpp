@@ -45,6 +45,7 @@ CapacitiveChannels::CapacitiveChannels(storage::SessionSource& store, std::int64
     const auto picked = modeChannels(Mode::Capacitive, raw);
     if (!picked) throw std::invalid_argument(*modeRefusal(Mode::Capacitive, raw));
     m_channel = picked->front();
+    m_input = capacitive::capacitanceInput(raw[m_channel], beam->channels);
     const auto records =
         calibration ? std::vector{*calibration} : calibration::recordsFromJsonArray(summary->metadata.calibrationsJson);
     std::optional<std::size_t> used;
@@ -123,7 +124,7 @@ std::vector<std::vector<double>> CapacitiveChannels::read(std::uint64_t first, s
     for (std::size_t s = 0; s < c.size(); ++s) {
         if (!span || first + s < span->first || first + s >= span->end) span = spanAt(first + s);
         if (!span) continue;
-        for (std::size_t k = 0; k < 4; ++k) out[k][s] = value(k, c[s], span->c0_f);
+        for (std::size_t k = 0; k < 4; ++k) out[k][s] = value(k, m_input.farads(c[s]), span->c0_f);
     }
     return out;
 }
@@ -136,9 +137,10 @@ std::vector<storage::OverviewPoint> CapacitiveChannels::overview(std::size_t cha
     for (const auto& stretch : m_store.overview(m_session, m_channel, first, count, points)) {
         const std::uint64_t stretchEnd = stretch.firstIndex + stretch.count;
         const Span* span = spanAt(stretch.firstIndex);
-        if (span && stretchEnd <= span->end) {  // one C0: increasing in C
-            result.push_back({stretch.firstIndex, stretch.count, value(channel, stretch.min, span->c0_f),
-                              value(channel, stretch.max, span->c0_f)});
+        if (span && stretchEnd <= span->end) {  // one C0: increasing in C, which increases with the value
+            result.push_back({stretch.firstIndex, stretch.count,
+                              value(channel, m_input.farads(stretch.min), span->c0_f),
+                              value(channel, m_input.farads(stretch.max), span->c0_f)});
             continue;
         }
         appendExactOverview(read(stretch.firstIndex, stretch.count)[channel], stretch.firstIndex, 1, result);

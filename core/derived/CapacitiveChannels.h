@@ -1,7 +1,8 @@
 // A stored capacitive session's physical quantities — ΔC in F, ΔC/C0, the
 // tip force in N and deflection in m — computed from its capacitance
-// samples, the calibration it carries (else the beam model of its
-// profile) and the baselines C0 it recorded, by the live readout's own
+// samples (a board's counts through its profile's scale,
+// capacitive/CapacitanceInput.h), the calibration it carries (else the
+// beam model of its profile) and the baselines C0 it recorded, by the live readout's own
 // formulas (capacitive::CapacitiveReadout::readingAt). Each is C − C0
 // scaled by a positive constant on one baseline, so the overview maps the
 // store's min/max pyramid through it, and reads exact samples only for a
@@ -10,6 +11,7 @@
 
 #include "core/ChannelDescriptor.h"
 #include "core/calibration/CalibrationRecord.h"
+#include "core/capacitive/CapacitanceInput.h"
 #include "core/capacitive/CapacitiveReadout.h"
 #include "core/storage/SessionExport.h"
 #include "core/storage/SessionStore.h"
@@ -60,6 +62,7 @@ private:
     std::int64_t m_session;
     std::uint64_t m_sampleCount = 0;
     std::size_t m_channel = 0;
+    capacitive::CapacitanceInput m_input;  // its stored values to farads
     capacitive::CapacitiveSensitivity m_sensitivity;
     std::optional<calibration::CalibrationRecord> m_calibration;
     std::vector<Span> m_spans;

@@ -91,8 +91,9 @@ const ModeDefinition& generalMode();
 // the role or is matched by its kind: cantilevers read a strain, the
 // palpation beams a strain, a force or ADC counts (through the probe's
 // converter or a profile's scale), the displacement a length, the
-// capacitance a capacitance, the reference force a force. A plain number
-// (no unit) plays none of them: it is recorded as it is.
+// capacitance a capacitance (or counts given the role, by a capacitive
+// profile's scale), the reference force a force. A plain number (no unit)
+// plays none of them: it is recorded as it is.
 bool canPlay(const ChannelDescriptor& channel, ChannelRole role);
 // What `role` reads, with units it takes: "a strain (strain, µε)".
 std::string_view quantityFor(ChannelRole role);

@@ -63,7 +63,9 @@ bool canPlay(const ChannelDescriptor& channel, ChannelRole role)
     case ChannelRole::Displacement:
         return kind == ChannelKind::Position || isCounts(channel.unit);
     case ChannelRole::Capacitance:
-        return kind == ChannelKind::Capacitance;
+        // Counts only when given the role (a capacitive profile's scale
+        // gives it): a strain probe's counts are no capacitance.
+        return kind == ChannelKind::Capacitance || (isCounts(channel.unit) && channel.role == role);
     case ChannelRole::ReferenceForce:
         return kind == ChannelKind::Force;
     }
@@ -82,7 +84,7 @@ std::string_view quantityFor(ChannelRole role)
     case ChannelRole::Displacement:
         return "a length (m, mm) or counts with their scale";
     case ChannelRole::Capacitance:
-        return "a capacitance (F, pF)";
+        return "a capacitance (F, pF) or counts with their scale";
     case ChannelRole::ReferenceForce:
         return "a force (N, mN)";
     }

@@ -52,9 +52,10 @@ std::vector<SensorLimit> complianceLimits(const CompliancePairProfile& probe,
     trigger::LimitSpec counts;
     counts.quantity = stiff->name;
     if (adc.bipolar || declared) {
+        const double offset = declared ? declared->offset_counts : 0.0;  // the window's centre
         counts.side = trigger::LimitSide::Outside;
-        counts.warning = trigger::LimitLevel(-warning, warning);
-        counts.critical = trigger::LimitLevel(-critical, critical);
+        counts.warning = trigger::LimitLevel(offset - warning, offset + warning);
+        counts.critical = trigger::LimitLevel(offset - critical, offset + critical);
     } else {
         counts.warning = warning;
         counts.critical = critical;

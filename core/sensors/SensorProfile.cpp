@@ -60,6 +60,14 @@ public:
         return value.get<std::string>();
     }
 
+    double finite(const std::string& key)
+    {
+        const Json& value = require(key);
+        if (!value.is_number() || !std::isfinite(value.get<double>()))
+            fail(key, "must be a number, got " + shortQuote(value.dump()));
+        return value.get<double>();
+    }
+
     double positive(const std::string& key)
     {
         const Json& value = require(key);
@@ -189,11 +197,14 @@ Json limitsJson(const std::vector<trigger::LimitSpec>& limits)
     return json;
 }
 
-// "channels": {"NAME": {"unit", "counts_per_unit", "full_scale"}}:
-// beams a device sends in counts, read as a strain or a force, and a
-// displacement as a length; without counts_per_unit the values are in the
+// "channels": {"NAME": {"unit", "counts_per_unit", "offset", "full_scale"}}:
+// a compliance pair's beams a device sends in counts, read as a strain or
+// a force, and its displacement as a length; a capacitive beam's
+// capacitance in counts. Without counts_per_unit the values are in the
 // unit ("d": {"unit": "mm"}: a board printing millimetres).
-ChannelScales readScales(ObjectReader& reader)
+enum class ScaledQuantities { Beams, Capacitance };
+
+ChannelScales readScales(ObjectReader& reader, ScaledQuantities quantities)
 {
     if (!reader.has("channels")) return {};
     ObjectReader channels = reader.object("channels");
@@ -203,11 +214,18 @@ ChannelScales readScales(ObjectReader& reader)
         ChannelScale scale;
         scale.unit = entry.string("unit");
         const auto unit = physicalUnit(scale.unit);
-        if (!unit || (unit->kind != ChannelKind::Strain && unit->kind != ChannelKind::Force &&
-                      unit->kind != ChannelKind::Position))
+        const auto kind = unit ? unit->kind : ChannelKind::Other;
+        if (quantities == ScaledQuantities::Beams && kind != ChannelKind::Strain && kind != ChannelKind::Force &&
+            kind != ChannelKind::Position)
             entry.fail("unit", "'" + shortQuote(scale.unit) +
                                    "' is not a strain, a force or a length unit (strain, µε, N, mN, µN, m, mm, µm)");
+        if (quantities == ScaledQuantities::Capacitance && kind != ChannelKind::Capacitance)
+            entry.fail("unit", "'" + shortQuote(scale.unit) + "' is not a capacitance unit (F, nF, pF, fF)");
         if (entry.has("counts_per_unit")) scale.countsPerUnit = entry.positive("counts_per_unit");
+        if (entry.has("offset")) scale.offset_counts = entry.finite("offset");
+        // The capacitive readout judges no clipping (nor does it for a probe's capacitance).
+        if (quantities == ScaledQuantities::Capacitance && entry.has("full_scale"))
+            entry.fail("full_scale", "a capacitance's range is not judged: the capacitive mode flags no clipping");
         if (entry.has("full_scale")) scale.fullScale_counts = entry.positive("full_scale");
         entry.rejectUnknownKeys();
         scales.emplace(name, std::move(scale));
@@ -220,6 +238,7 @@ Json scalesJson(const ChannelScales& scales)
     Json json = Json::object();
     for (const auto& [channel, scale] : scales) {
         Json entry{{"unit", scale.unit}, {"counts_per_unit", scale.countsPerUnit}};
+        if (scale.offset_counts != 0.0) entry["offset"] = scale.offset_counts;
         if (scale.fullScale_counts) entry["full_scale"] = *scale.fullScale_counts;
         json[channel] = std::move(entry);
     }
@@ -276,7 +295,7 @@ SensorProfile parseSensorProfile(std::string_view text, const std::string& sourc
                                       readNestedBeam(reader.object("low")),
                                       readRoles(reader),
                                       readLimits(reader),
-                                      readScales(reader)};
+                                      readScales(reader, ScaledQuantities::Beams)};
         reader.rejectUnknownKeys();
         const double kh = CantileverBeam(profile.high).stiffness_n_per_m();
         const double kl = CantileverBeam(profile.low).stiffness_n_per_m();
@@ -287,7 +306,8 @@ SensorProfile parseSensorProfile(std::string_view text, const std::string& sourc
         return profile;
     }
     if (kind == "capacitive_beam") {
-        CapacitiveBeamProfile profile{name, readCapacitiveBeam(reader), readRoles(reader), readLimits(reader)};
+        CapacitiveBeamProfile profile{name, readCapacitiveBeam(reader), readRoles(reader), readLimits(reader),
+                                      readScales(reader, ScaledQuantities::Capacitance)};
         reader.rejectUnknownKeys();
         return profile;
     }
@@ -341,6 +361,7 @@ std::string toJson(const SensorProfile& profile)
         if (g.doubleLayer_f) json["c_edl_pf"] = *g.doubleLayer_f * 1e12;
         if (!capacitive->roles.empty()) json["roles"] = rolesJson(capacitive->roles);
         if (capacitive->limits) json["limits"] = limitsJson(*capacitive->limits);
+        if (!capacitive->channels.empty()) json["channels"] = scalesJson(capacitive->channels);
     }
     return json.dump(2);
 }
@@ -353,6 +374,7 @@ const std::string& profileName(const SensorProfile& profile)
 ChannelScales profileScales(const SensorProfile& profile)
 {
     if (const auto* pair = std::get_if<CompliancePairProfile>(&profile)) return pair->channels;
+    if (const auto* capacitive = std::get_if<CapacitiveBeamProfile>(&profile)) return capacitive->channels;
     return {};
 }
 

@@ -15,7 +15,9 @@
 // (core/modes/ChannelRoles.h). A compliance pair may give the scale of
 // beams read in raw counts: optional "channels": {"ch1": {"unit": "mN",
 // "counts_per_unit": 20.48, "full_scale": 32767}, …}
-// (core/sensors/ChannelScale.h).
+// (core/sensors/ChannelScale.h); a capacitive beam, of its capacitance in
+// counts: {"c": {"unit": "pF", "counts_per_unit": 2048000, "offset":
+// 8388608}} (core/capacitive/CapacitanceInput.h).
 // Loading validates everything and reports the first problem with the key
 // that has it ("high.thickness_m: must be a positive number"); unknown keys
 // are errors too, so a misspelt key is not silently ignored.
@@ -62,6 +64,7 @@ struct CapacitiveBeamProfile {
     CapacitiveBeamGeometry geometry;
     RoleAssignment roles{};
     ProfileLimits limits{};
+    ChannelScales channels{};  // a capacitance in counts the device does not scale itself
 };
 
 using SensorProfile = std::variant<CantileverProfile, CompliancePairProfile, CapacitiveBeamProfile>;
@@ -93,7 +96,8 @@ std::string toJson(const SensorProfile& profile);
 const std::string& profileName(const SensorProfile& profile);
 // The channel roles the profile gives (none for a single cantilever).
 RoleAssignment profileRoles(const SensorProfile& profile);
-// The channel scales the profile gives (a compliance pair's; none otherwise).
+// The channel scales the profile gives (a compliance pair's or a
+// capacitive beam's; none for a single cantilever).
 ChannelScales profileScales(const SensorProfile& profile);
 
 }  // namespace tactiscope::core::sensors

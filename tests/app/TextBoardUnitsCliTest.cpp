@@ -14,6 +14,9 @@
 
 #include "core/SampleBlock.h"
 #include "core/calibration/CalibrationRecord.h"
+#include "core/derived/CapacitiveChannels.h"
+#include "core/sensors/BuiltInProfiles.h"
+#include "core/sensors/SensorProfile.h"
 #include "core/storage/SessionStore.h"
 #include "devices/simulator/PalpationScenario.h"
 
@@ -348,4 +351,71 @@ TEST(TextBoardUnitsCli, EachDeviceOfASessionTakesItsOwnUnitsAndATriggerAndLimits
     for (const auto& event : store.events(id))
         if (event.kind == core::EventKind::Alarm && event.note.find("critical") != std::string::npos) ++critical;
     EXPECT_GE(critical, 1u);
+}
+
+// A capacitive board that prints its converter's counts, 100,000 a
+// picofarad and 1,000,000 at none: with its profile's scale the capacitive
+// mode takes it, the counts are stored as sent, and the review reads them
+// as the capacitance they are (a load of 1 pF is 1 pF of ΔC; the baseline
+// the tare took is a capacitance the board printed). Without the scale the
+// mode refuses, naming the channel.
+TEST(TextBoardUnitsCli, ACapacitiveBoardsCountsAreReadThroughItsProfilesScale)
+{
+    // 51.44 pF at rest and 52.44 pF loaded, by turns of half a second.
+    const auto picofarads = [](std::uint64_t n) { return 51.44 + ((n / 25) % 2 == 1 ? 1.0 : 0.0); };
+    QTemporaryDir dir;
+    const QString link = dir.filePath(QStringLiteral("beam"));
+    TextBoard board(link.toStdString(), TextBoardOptions{50.0,
+                                                         [&](std::uint64_t n) {
+                                                             const auto counts =
+                                                                 std::llround(1e6 + 1e5 * picofarads(n));
+                                                             return "c:" + std::to_string(counts) + "\r\n";
+                                                         },
+                                                         1, 1e-3, false});
+    ASSERT_TRUE(board.ok());
+    std::string profile = core::sensors::toJson(*core::sensors::builtInProfile(core::Mode::Capacitive));
+    const QString bare = dir.filePath(QStringLiteral("bare.json")),
+                  scaled = dir.filePath(QStringLiteral("scaled.json"));
+    tactiscope::testing::writeText(bare, QString::fromStdString(profile));
+    profile.insert(profile.rfind('}'), R"(, "channels": {"c": {"unit": "pF", "counts_per_unit": 1e5, "offset": 1e6}})");
+    tactiscope::testing::writeText(scaled, QString::fromStdString(profile));
+    const QString db = dir.filePath(QStringLiteral("beam.tactiscope"));
+    const auto record = [&](const QString& withProfile) {
+        return runCli({"record", "--port", link, "--protocol", "text", "--rate", "50", "--mode", "capacitive",
+                       "--profile", withProfile, "--seconds", "3", "--db", db});
+    };
+
+    const CliResult refused = record(bare);
+    EXPECT_EQ(refused.exitCode, 2);
+    EXPECT_TRUE(refused.err.contains(QStringLiteral("no channel plays capacitance"))) << refused.err.toStdString();
+
+    const CliResult recorded = record(scaled);
+    ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto id = sessionIdIn(recorded.out);
+    const auto channels = store.channels(id);
+    ASSERT_EQ(channels.size(), 1u);
+    EXPECT_EQ(channels[0].descriptor.unit, "counts");
+    const std::uint64_t count = store.sampleCount(id);
+    const auto sent = store.readChannel(id, 0, 0, count);
+    core::derived::CapacitiveChannels review(store, id, std::nullopt);
+    const auto derived = review.read(0, count);
+    for (const auto& [first, c0_f] : review.baselines()) {
+        EXPECT_GE(c0_f, 51.44e-12 - 1e-17);
+        EXPECT_LE(c0_f, 52.44e-12 + 1e-17);
+    }
+    // Each sample's ΔC is its own capacitance over its baseline's: counts
+    // the board sent through the scale, to the float's precision.
+    const auto baselines = review.baselines();
+    std::size_t loaded = 0, rest = 0;
+    for (std::uint64_t s = 0; s < count; ++s) {
+        const auto on = std::ranges::find_if(baselines.rbegin(), baselines.rend(),
+                                             [s](const auto& baseline) { return baseline.first <= s; });
+        ASSERT_NE(on, baselines.rend());
+        const double capacitance_f = (sent[s] - 1e6) / 1e5 * 1e-12;
+        ASSERT_NEAR(derived[0][s], capacitance_f - on->second, 1e-18) << s;
+        (std::abs(capacitance_f - 52.44e-12) < 1e-16 ? loaded : rest) += 1;
+    }
+    EXPECT_GT(loaded, 40u);
+    EXPECT_GT(rest, 40u);
 }

@@ -12,6 +12,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <stdexcept>
+#include <string>
 
 using namespace tactiscope;
 using core::capacitive::CapacitiveSensitivity;
@@ -26,9 +29,12 @@ struct Stream {
 };
 
 // Feeds the whole protocol in blocks of 7 samples; tares before block
-// `tareBlock` when given.
-Stream feed(LiveCapacitive& live, const devices::simulator::CapacitiveWeightsScenario& scenario,
-            std::optional<std::size_t> tareBlock = std::nullopt)
+// `tareBlock` when given; each capacitance as the device sends it
+// (`sent`: in farads, or a board's counts).
+Stream feed(
+    LiveCapacitive& live, const devices::simulator::CapacitiveWeightsScenario& scenario,
+    std::optional<std::size_t> tareBlock = std::nullopt,
+    const std::function<double(double)>& sent = [](double c_f) { return c_f; })
 {
     devices::simulator::CapacitiveWeightsScenario copy(scenario.parameters());
     const double rate = copy.sampleRate_hz();
@@ -39,7 +45,7 @@ Stream feed(LiveCapacitive& live, const devices::simulator::CapacitiveWeightsSce
         const std::size_t n = std::min<std::size_t>(7, all.sampleCount() - s);
         core::SampleBlock block(1, n, all.timeAt_s(s), all.dt_s(), s);
         for (std::size_t i = 0; i < n; ++i) {
-            block.channel(0)[i] = all.value(0, s + i);
+            block.channel(0)[i] = sent(all.value(0, s + i));
             run.t.push_back(all.timeAt_s(s + i));
             run.c.push_back(all.value(0, s + i));
         }
@@ -180,4 +186,39 @@ TEST(LiveCapacitive, RefusesAProbeWithoutACapacitanceChannel)
     const std::vector<core::ChannelDescriptor> channels{{"a", "", core::ChannelKind::Strain}};
     EXPECT_THROW(LiveCapacitive(channels, 10.0, CapacitiveSensitivity::fromModel(scenario.beam()), {}, 10.0),
                  std::invalid_argument);
+}
+
+// A board that prints its converter's counts (an AD7746's: 2,048,000 a
+// picofarad, zero at 8,388,608) is read through its profile's scale: every
+// force and deflection shown is the one the same capacitance in farads
+// gives; the samples' counts themselves are not farads.
+TEST(LiveCapacitive, ABoardsCountsAreReadThroughItsProfilesScaleAsTheirCapacitance)
+{
+    const devices::simulator::CapacitiveWeightsScenario scenario;
+    const auto sensitivity = CapacitiveSensitivity::fromModel(scenario.beam());
+    const double rate = scenario.sampleRate_hz();
+    LiveCapacitive inFarads(scenario.channels(), rate, sensitivity, {}, 600.0);
+    const std::vector<core::ChannelDescriptor> counts{
+        {"c", "counts", core::ChannelKind::Other, core::ChannelRole::Capacitance}};
+    const core::sensors::ChannelScales scales{{"c", {"pF", 2048000.0, std::nullopt, 8388608.0}}};
+    LiveCapacitive inCounts(counts, rate, sensitivity, {}, 600.0, scales);
+    const auto farads = feed(inFarads, scenario);
+    const auto board = feed(inCounts, scenario, std::nullopt, [](double c_f) {
+        return std::round(c_f * 1e12 * 2048000.0) + 8388608.0;  // what the converter reads
+    });
+    ASSERT_EQ(board.shown.sampleCount(), farads.shown.sampleCount());
+    // A count is 0.49 aF: the forces agree to that over the sensitivity.
+    const double countForce_n = 1e-12 / 2048000.0 / sensitivity.perNewton_f;
+    for (std::size_t s = 0; s < farads.shown.sampleCount(); s += 97)
+        ASSERT_NEAR(board.shown.values[0][s], farads.shown.values[0][s], 4.0 * countForce_n) << s;
+
+    // Counts without a capacitance scale are refused, naming the channel.
+    try {
+        LiveCapacitive unscaled(counts, rate, sensitivity, {}, 600.0);
+        ADD_FAILURE() << "counts were read as farads";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_EQ(std::string(e.what()), "the capacitance c is in counts and the sensor profile gives it no "
+                                         "capacitance scale (\"channels\": {\"c\": {\"unit\": \"pF\", "
+                                         "\"counts_per_unit\": …, \"offset\": …}})");
+    }
 }

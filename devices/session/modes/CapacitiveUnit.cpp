@@ -25,7 +25,7 @@ CapacitiveUnit::CapacitiveUnit(const LiveUnitSetup& setup)
         if (usable) m_calibrations.push_back(newest[*usable]);
         if (!refused.empty() && setup.refused) *setup.refused = refused;
         m_capacitive = std::make_shared<core::capacitive::LiveCapacitive>(setup.channels, setup.rate_hz, sensitivity,
-                                                                          drift, setup.displaySeconds);
+                                                                          drift, setup.displaySeconds, probe.channels);
     } catch (const std::invalid_argument& e) {
         throw std::invalid_argument("the profile '" + probe.name + "' cannot be used: " + e.what());
     }

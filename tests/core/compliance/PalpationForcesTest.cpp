@@ -40,6 +40,9 @@ TEST(PalpationForces, ADisplacementInCountsIsReadThroughItsProfilesLengthScale)
     auto encoder = beams;  // 400 counts a millimetre
     encoder.emplace("d", sensors::ChannelScale{"mm", 400.0, std::nullopt});
     EXPECT_DOUBLE_EQ(compliance::PalpationForces(kCounts, settingsWith(encoder)).displacement_m(1000.0), 2.5e-3);
+    auto centred = beams;  // a unipolar converter's: 2048 counts at zero
+    centred.emplace("d", sensors::ChannelScale{"mm", 400.0, std::nullopt, 2048.0});
+    EXPECT_DOUBLE_EQ(compliance::PalpationForces(kCounts, settingsWith(centred)).displacement_m(1048.0), -2.5e-3);
     // A length channel is in metres already.
     auto inMetres = kCounts;
     inMetres[2] = {"d", "m", ChannelKind::Position, ChannelRole::Displacement};
@@ -51,4 +54,20 @@ TEST(PalpationForces, ADisplacementInCountsIsReadThroughItsProfilesLengthScale)
         EXPECT_EQ(std::string(e.what()), "the displacement d is in counts and the sensor profile gives it no length "
                                          "scale (\"channels\": {\"d\": {\"unit\": \"mm\"}})");
     }
+}
+
+// A beam on a unipolar converter (0 to 4095, 2048 at no force) clips at
+// either end of its range: |count − offset| within 1 % of the full scale.
+// Its force is measured from the zero, whatever the offset.
+TEST(PalpationForces, ABeamsOffsetCentresItsClippingAndChangesNoForce)
+{
+    const sensors::ChannelScales scales{{"stiff", {"N", 200.0, 2048.0, 2048.0}},
+                                        {"soft", {"N", 50.0, 2048.0, 2048.0}},
+                                        {"d", {"mm", 1.0, std::nullopt}}};
+    compliance::PalpationForces forces(kCounts, settingsWith(scales));
+    for (const double clipped : {4095.0, 0.0, 20.0, 4076.0}) EXPECT_TRUE(forces.atLimit(true, clipped)) << clipped;
+    for (const double inRange : {2048.0, 4000.0, 100.0}) EXPECT_FALSE(forces.atLimit(true, inRange)) << inRange;
+    forces.setZero({2050.0, 2040.0, std::nullopt});
+    EXPECT_DOUBLE_EQ(forces.forceHigh(2250.0), 1.0);  // 200 counts a newton above its zero
+    EXPECT_DOUBLE_EQ(forces.forceLow(2090.0), 1.0);
 }

@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include <variant>
+
 using namespace tactiscope::core;
 using namespace tactiscope::core::sensors;
 
@@ -87,6 +89,13 @@ TEST(SensorLimits, TheStiffBeamInCountsIsWatchedAtItsAdcsRangeEitherWay)
     const auto unipolar = modelLimits(*profile, channels, adc);
     ASSERT_EQ(unipolar.size(), 1u);
     EXPECT_EQ(unipolar[0].limit.text(), "high>warning:3686,critical:4055");
+    // A board's range its profile declares, about its offset: a 12-bit
+    // converter centred on 2048 counts.
+    auto board = std::get<CompliancePairProfile>(*profile);
+    board.channels.emplace("high", ChannelScale{"N", 200.0, 2048.0, 2048.0});
+    const auto centred = modelLimits(board, channels);
+    ASSERT_EQ(centred.size(), 1u);
+    EXPECT_EQ(centred[0].limit.text(), "high outside warning:205..3891,critical:21..4075");
     // Beams sending force or strain have no ADC range known: no limit.
     channels[0].unit = "N";
     EXPECT_TRUE(modelLimits(*profile, channels).empty());

@@ -109,6 +109,33 @@ TEST(SensorProfile, CapacitiveBeamErrorsNameTheKey)
     EXPECT_EQ(errorOf(head + R"(0.6}, "sheet_layers": []})"), "probe.json: sheet_layers: must be a non-empty list");
 }
 
+// A board printing its capacitance converter's counts has their scale in
+// the capacitive beam's profile: a capacitance unit, counts per unit and
+// the count of zero; no full scale (the capacitive mode judges no
+// clipping), and no beam's unit.
+TEST(SensorProfile, ACapacitiveBeamMayScaleItsCapacitanceInCountsAndWritesTheScaleBack)
+{
+    const std::string head = R"({"kind": "capacitive_beam", "name": "x", "c0_pf": 51.44,
+        "beam": {"length_m": 0.015, "root_width_m": 0.005, "thickness_m": 0.002, "youngs_modulus_pa": 83000,
+                 "sheet_length_ratio": 0.6}, "sheet_layers": [{"name": "e", "thickness_m": 1e-4,
+                 "youngs_modulus_pa": 1800}], "channels": )";
+    const auto profile = parseSensorProfile(
+        head + R"({"c": {"unit": "pF", "counts_per_unit": 2048000, "offset": 8388608}}})", "probe.json");
+    const ChannelScales expected{{"c", {"pF", 2048000.0, std::nullopt, 8388608.0}}};
+    EXPECT_EQ(profileScales(profile), expected);
+    EXPECT_EQ(profileScales(parseSensorProfile(toJson(profile), "again.json")), expected);
+    EXPECT_EQ(errorOf(head + R"({"c": {"unit": "mN", "counts_per_unit": 2}}})"),
+              "probe.json: channels.c.unit: 'mN' is not a capacitance unit (F, nF, pF, fF)");
+    EXPECT_EQ(errorOf(head + R"({"c": {"unit": "pF", "counts_per_unit": 2, "full_scale": 8388608}}})"),
+              "probe.json: channels.c.full_scale: a capacitance's range is not judged: the capacitive mode flags "
+              "no clipping");
+    // Nor does a compliance pair take a capacitance.
+    std::string pair(kPair);
+    pair.insert(pair.rfind('}'), R"(, "channels": {"stiff": {"unit": "pF"}})");
+    EXPECT_EQ(errorOf(pair), "probe.json: channels.stiff.unit: 'pF' is not a strain, a force or a length unit "
+                             "(strain, µε, N, mN, µN, m, mm, µm)");
+}
+
 TEST(SensorProfile, AProfileMaySayWhichChannelsPlayWhichRoleAndWritesThemBack)
 {
     std::string json(kPair);
@@ -203,7 +230,15 @@ TEST(SensorProfile, ACompliancePairMayScaleBeamsInCountsAndWritesTheScalesBack)
               "µN, m, mm, µm)");
     EXPECT_EQ(errorOf(withChannels(R"({"stiff": {"unit": "N", "counts_per_unit": 0}})")),
               "probe.json: channels.stiff.counts_per_unit: must be a positive number, got 0");
-    EXPECT_EQ(errorOf(withChannels(R"({"stiff": {"unit": "N", "counts_per_unit": 2, "offset": 5}})")),
-              "probe.json: channels.stiff.offset: unknown key");
+    // An offset: the count of zero, written back.
+    const auto offset = parseSensorProfile(
+        withChannels(R"({"d": {"unit": "mm", "counts_per_unit": 400, "offset": -2048.5}})"), "probe.json");
+    const ChannelScales centred{{"d", {"mm", 400.0, std::nullopt, -2048.5}}};
+    EXPECT_EQ(profileScales(offset), centred);
+    EXPECT_EQ(profileScales(parseSensorProfile(toJson(offset), "again.json")), centred);
+    EXPECT_EQ(errorOf(withChannels(R"({"stiff": {"unit": "N", "counts_per_unit": 2, "offset": "mid"}})")),
+              "probe.json: channels.stiff.offset: must be a number, got \"mid\"");
+    EXPECT_EQ(errorOf(withChannels(R"({"stiff": {"unit": "N", "counts_per_unit": 2, "zero": 5}})")),
+              "probe.json: channels.stiff.zero: unknown key");
     EXPECT_EQ(errorOf(withChannels(R"([1])")), "probe.json: channels: must be a JSON object");
 }

@@ -39,7 +39,9 @@ CalibrationWizard::Words capacitiveWords()
             .channelLabel = QObject::tr("&Channel (capacitance)"),
             .channelFits = [](const core::ChannelDescriptor& c) { return c.kind == core::ChannelKind::Capacitance; },
             .noChannel = QObject::tr("<b>This device sends no capacitance channel.</b> Connect the capacitive beam, or "
-                                     "the simulator's capacitive calibration rig."),
+                                     "the simulator's capacitive calibration rig. A board that prints its "
+                                     "converter's counts is calibrated here once it prints picofarads "
+                                     "(<tt>c[pF]:51.2</tt>)."),
             .mode = core::Mode::Capacitive,
             .profileFits =
                 [](const core::sensors::SensorProfile& p) {
