@@ -222,10 +222,11 @@ int runRecord(const QStringList& arguments)
     const QString name = QStringLiteral("record");
     QCommandLineParser parser;
     parser.setApplicationDescription(
-        QStringLiteral("Record a probe on a serial port into a session store, until --seconds or Ctrl-C, running\n"
-                       "the mode's analysis as the workstation does: a panel scan stores its defects and\n"
-                       "verdict, a palpation its stiffness readings, every session its profile and calibrations.\n"
-                       "An unplugged probe is waited for and the gap is marked in the recording."));
+        QStringLiteral("Record a TSP/1 probe, or a board printing text lines (--protocol text), on a serial port\n"
+                       "into a session store, until --seconds or Ctrl-C, running the mode's analysis as the\n"
+                       "workstation does: a panel scan stores its defects and verdict, a palpation its stiffness\n"
+                       "readings, every session its profile and calibrations. An unplugged device is waited for\n"
+                       "and the gap is marked in the recording."));
     parser.addOptions({
         {QStringLiteral("port"),
          QStringLiteral("Serial port or link to it (required). Given more than once, the devices are recorded into "
@@ -236,7 +237,10 @@ int runRecord(const QStringList& arguments)
                         "--baud and --rate are given once for every port, or once per port named: a rate given once "
                         "is asked of every TSP/1 probe too)."),
          QStringLiteral("[NAME=]binary|text")},
-        {QStringLiteral("baud"), QStringLiteral("Baud rate (default %1).").arg(kDefaultBaud),
+        {QStringLiteral("baud"),
+         QStringLiteral("Baud rate (default %1, a TSP/1 probe's; a board's is its sketch's Serial.begin, such as "
+                        "115200; a board with native USB takes any).")
+             .arg(kDefaultBaud),
          QStringLiteral("[NAME=]N")},
         {QStringLiteral("rate"),
          QStringLiteral("Sample rate in Hz: text, the rate of the lines (else timed by the board's own clock or "
