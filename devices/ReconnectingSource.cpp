@@ -80,13 +80,20 @@ bool ReconnectingSource::matchChannels(const std::vector<core::ChannelDescriptor
     return true;
 }
 
-std::string ReconnectingSource::channelsNotPrinted() const
+std::string ReconnectingSource::layoutChange(std::size_t streamChannelsBefore) const
 {
-    std::string names;
-    for (std::size_t c = 0; c < m_streamChannels.size(); ++c)
-        if (std::ranges::find(m_channelMap, c) == m_channelMap.end())
-            names += (names.empty() ? "" : ", ") + m_streamChannels[c].name;
-    return names.empty() ? names : "; it no longer prints " + names + " (holes from here)";
+    std::string gone, added;
+    for (std::size_t c = 0; c < m_streamChannels.size(); ++c) {
+        const std::string& name = m_streamChannels[c].name;
+        if (c >= streamChannelsBefore)
+            added += (added.empty() ? "" : ", ") + name;
+        else if (std::ranges::find(m_channelMap, c) == m_channelMap.end())
+            gone += (gone.empty() ? "" : ", ") + name;
+    }
+    std::string text;
+    if (!added.empty()) text += "; it now prints " + added + " (holes before)";
+    if (!gone.empty()) text += "; it no longer prints " + gone + " (holes from here)";
+    return text;
 }
 
 core::SampleBlock ReconnectingSource::inStreamChannels(const core::SampleBlock& block) const
@@ -116,6 +123,7 @@ bool ReconnectingSource::tryReconnect()
     m_state = DeviceState::Reconnecting;
     try {
         auto source = m_opener();
+        const std::size_t streamChannelsBefore = m_streamChannels.size();
         const auto other = differenceFrom(*source);
         if (other) m_error = *other;
         if (other || !matchChannels(source->channels())) {
@@ -144,7 +152,7 @@ bool ReconnectingSource::tryReconnect()
             m_timeOffset_s = std::chrono::duration<double>(resumed - m_start).count();
             char text[96];
             std::snprintf(text, sizeof text, "the probe was away %.1f s and came back", away_s);
-            m_pastNotices.push_back({m_lostAtTime_s, text + channelsNotPrinted()});
+            m_pastNotices.push_back({m_lostAtTime_s, text + layoutChange(streamChannelsBefore)});
         }
         replaceSource(std::move(source));
         m_state = DeviceState::Streaming;

@@ -83,9 +83,11 @@ private:
     bool matchChannels(const std::vector<core::ChannelDescriptor>& connection);
     // A block of the current connection in the stream's channels.
     core::SampleBlock inStreamChannels(const core::SampleBlock& block) const;
-    // "; it no longer prints b (holes from here)": of the stream's channels,
-    // those the current connection does not print; empty when it prints all.
-    std::string channelsNotPrinted() const;
+    // "; it now prints c (holes before); it no longer prints b (holes from
+    // here)": the stream's channels the current connection added (of those
+    // after the first `streamChannelsBefore`) and those it does not print;
+    // empty when it prints the same.
+    std::string layoutChange(std::size_t streamChannelsBefore) const;
 
     void replaceSource(std::unique_ptr<BlockSource> source);
     std::vector<LinkNotice> takeCurrentNotices();

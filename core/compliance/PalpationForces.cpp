@@ -161,9 +161,15 @@ PalpationForces::PalpationForces(const std::vector<ChannelDescriptor>& channels,
         const BeamInput how = inputOf(channels[c], settings.scales);
         if (how == BeamInput::Strain || how == BeamInput::Force) return in;
         if (how == BeamInput::ProfileScale) {
-            // Its unit is a strain or a force (checked when the profile was read).
+            // Its unit is a strain, a force or a length (the profile's
+            // scales serve the displacement too): a beam takes no length.
             const auto scale = settings.scales.find(channels[c].name);
             const auto unit = physicalUnit(scale->second.unit);
+            if (unit->kind != ChannelKind::Strain && unit->kind != ChannelKind::Force)
+                throw std::invalid_argument("the beam " + channels[c].name + " is given a scale in " +
+                                            scale->second.unit +
+                                            ", a length; a beam's counts are read as a force (N, mN) or a strain "
+                                            "(strain, µε)");
             in.kind = unit->kind;
             in.unitsPerCount = unit->factor / scale->second.countsPerUnit;
             in.offset = scale->second.offset_counts;

@@ -194,7 +194,8 @@ TEST(ReconnectingSource, ATextBoardThatComesBackPrintingOtherChannelsContinuesBy
     EXPECT_EQ((*grown)[2].name, "c");
     bool told = false;
     for (const auto& notice : acquisition.takeNotices())
-        told = told || notice.text.ends_with("came back; it no longer prints b (holes from here)");
+        told = told || notice.text.ends_with(
+                           "came back; it now prints c (holes before); it no longer prints b (holes from here)");
     EXPECT_TRUE(told);
 
     board.reset();

@@ -71,3 +71,18 @@ TEST(PalpationForces, ABeamsOffsetCentresItsClippingAndChangesNoForce)
     EXPECT_DOUBLE_EQ(forces.forceHigh(2250.0), 1.0);  // 200 counts a newton above its zero
     EXPECT_DOUBLE_EQ(forces.forceLow(2090.0), 1.0);
 }
+
+// A beam's scale in a length (the profile's scales take lengths for the
+// displacement) is refused, naming the beam: it was read as a strain.
+TEST(PalpationForces, ABeamGivenALengthScaleIsRefused)
+{
+    const sensors::ChannelScales scales{
+        {"stiff", {"mm", 200.0, 2048.0}}, {"soft", {"N", 50.0, 2048.0}}, {"d", {"mm", 1.0, std::nullopt}}};
+    try {
+        compliance::PalpationForces(kCounts, settingsWith(scales));
+        ADD_FAILURE() << "a beam in millimetres was read";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_EQ(std::string(e.what()), "the beam stiff is given a scale in mm, a length; a beam's counts are read "
+                                         "as a force (N, mN) or a strain (strain, µε)");
+    }
+}
