@@ -182,7 +182,8 @@ int show(SessionSource& store, std::int64_t id, bool json)
         const auto channels = store.channels(of);
         const auto own = store.session(of);
         out << QString("samples").leftJustified(18) << store.sampleCount(of) << " per channel ("
-            << QString::number(own ? own->duration_s() : 0.0, 'f', 3) << " s), " << lost << " lost\n";
+            << QString::number(own ? own->duration_s() : 0.0, 'f', 3) << " s), " << lost
+            << (lost > 0 ? " of them lost\n" : " lost\n");
         out << QString("channels").leftJustified(18);
         for (std::size_t c = 0; c < channels.size(); ++c) {
             const auto& d = channels[c].descriptor;

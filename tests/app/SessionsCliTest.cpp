@@ -106,6 +106,9 @@ TEST(SessionsCli, ListAndShow)
     EXPECT_EQ(metadata["channels"].toArray()[1].toObject()["unit"].toString(), "N");
     EXPECT_EQ(metadata["gaps"].toArray()[0].toObject()["first_index"].toInt(), 50);
     EXPECT_EQ(metadata["gaps"].toArray()[0].toObject()["count"].toInt(), 10);
+    // The session's span holds its gap's lost samples (record counts them apart: 90 received, 10 lost).
+    const auto gapped = runCli({"sessions", "--db", db, "show", "2"});
+    EXPECT_TRUE(gapped.out.contains("100 per channel (0.500 s), 10 of them lost")) << gapped.out.toStdString();
     const auto human = runCli({"sessions", "--db", db, "show", "1"});
     EXPECT_TRUE(human.out.contains("20 per channel (0.100 s), 0 lost")) << human.out.toStdString();
     EXPECT_TRUE(human.out.contains("force [N]")) << human.out.toStdString();
