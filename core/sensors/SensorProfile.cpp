@@ -381,7 +381,13 @@ ChannelScales profileScales(const SensorProfile& profile)
 RoleAssignment profileRoles(const SensorProfile& profile)
 {
     if (const auto* pair = std::get_if<CompliancePairProfile>(&profile)) return pair->roles;
-    if (const auto* capacitive = std::get_if<CapacitiveBeamProfile>(&profile)) return capacitive->roles;
+    if (const auto* capacitive = std::get_if<CapacitiveBeamProfile>(&profile)) {
+        // A channel it scales is the beam's capacitance, in counts, unless
+        // it says otherwise.
+        RoleAssignment roles = capacitive->roles;
+        for (const auto& [channel, scale] : capacitive->channels) roles.try_emplace(channel, ChannelRole::Capacitance);
+        return roles;
+    }
     return {};
 }
 

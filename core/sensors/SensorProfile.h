@@ -94,7 +94,9 @@ void refuseOversizedProfile(std::uintmax_t bytes, const std::string& source);
 // session).
 std::string toJson(const SensorProfile& profile);
 const std::string& profileName(const SensorProfile& profile);
-// The channel roles the profile gives (none for a single cantilever).
+// The channel roles the profile gives (none for a single cantilever); a
+// capacitive beam's channel it scales plays the capacitance unless given
+// another role.
 RoleAssignment profileRoles(const SensorProfile& profile);
 // The channel scales the profile gives (a compliance pair's or a
 // capacitive beam's; none for a single cantilever).

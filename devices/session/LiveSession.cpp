@@ -8,7 +8,6 @@
 
 #include "core/ModeCapability.h"
 #include "core/SinkSlot.h"
-#include "core/UnitScale.h"
 #include "core/modes/ModeDefinition.h"
 #include "core/storage/AutomaticVerdict.h"
 #include "core/storage/DefectRecords.h"
@@ -110,18 +109,11 @@ std::vector<core::ChannelDescriptor>
 LiveSession::effectiveChannels(const std::vector<core::ChannelDescriptor>& device) const
 {
     auto channels = core::applyRoles(device, effectiveRoles(device));
-    // A plain number a profile scales is a converter's counts; one scaled
-    // to a capacitance plays the beam's capacitance (counts play it only
-    // when given the role: core::canPlay).
     for (const auto& [mode, profile] : m_options.profiles)
         for (const auto& [name, scale] : core::sensors::profileScales(profile))
-            for (auto& channel : channels) {
-                if (channel.name != name || !channel.unit.empty() || channel.kind != core::ChannelKind::Other) continue;
-                channel.unit = "counts";
-                const auto unit = core::physicalUnit(scale.unit);
-                if (!channel.role && unit && unit->kind == core::ChannelKind::Capacitance)
-                    channel.role = core::ChannelRole::Capacitance;
-            }
+            for (auto& channel : channels)
+                if (channel.name == name && channel.unit.empty() && channel.kind == core::ChannelKind::Other)
+                    channel.unit = "counts";
     return channels;
 }
 
