@@ -26,6 +26,13 @@ double resolutionOf(const std::vector<double>& stamps)
     return 1e-6;
 }
 
+// A rate's standard uncertainty from the fit's (relative) and the host's
+// wandering delay level, independent at the window's two ends.
+double withHostWander(double rate_hz, double fitU, double span_s)
+{
+    return rate_hz * std::hypot(fitU, std::sqrt(2.0) * LineRate::kHostWander_s / span_s);
+}
+
 }  // namespace
 
 void LineRate::add(double arrival_s, const std::optional<BoardTime>& boardTime)
@@ -135,7 +142,7 @@ std::optional<LineRateEstimate> LineRate::fromArrivals() const
         const double period_s = step_s * (1.0 + mapping->drift);
         if (!(period_s > 0.0)) return std::nullopt;
         rate.rate_hz = 1.0 / period_s;
-        rate.u_hz = rate.rate_hz * mapping->drift_u / (1.0 + mapping->drift);
+        rate.u_hz = withHostWander(rate.rate_hz, mapping->drift_u / (1.0 + mapping->drift), rate.span_s);
         return rate;
     }
     // Too few lines for the mapping to state its uncertainty: a straight
@@ -175,7 +182,7 @@ std::optional<LineRateEstimate> LineRate::fromArrivals() const
     const double dof = n - 2.0;
     const double periodU_s = std::sqrt(squares / dof / sxx * dof / (dof - 2.0));
     rate.rate_hz = 1.0 / period_s;
-    rate.u_hz = periodU_s / (period_s * period_s);
+    rate.u_hz = withHostWander(rate.rate_hz, periodU_s / period_s, rate.span_s);
     return rate;
 }
 

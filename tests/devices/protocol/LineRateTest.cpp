@@ -2,7 +2,8 @@
 // clock), against boards whose true rate is known: the stated ± covers
 // the truth as a standard uncertainty should, for a slow board timed on a
 // few lines and a fast one timed on many, on links that deliver at random,
-// in USB bursts, and with a backlog read at once.
+// in USB bursts and on the host itself (each on a host whose delays
+// wander), and with a backlog read at once.
 #include "devices/protocol/LineRate.h"
 
 #include "tests/support/Coverage.h"
@@ -17,27 +18,46 @@ using tactiscope::devices::protocol::LineRate;
 
 namespace {
 
-enum class Link { Random, Bursts };
+// Random: the OS and the link delay each line, 0.2 ms and more; Bursts:
+// USB frames; Pty: a board on the host itself, its lines read within a
+// hundred µs or so. On every link the level of the delays wanders over
+// seconds (the host's scheduler, its CPU's power states): an
+// Ornstein–Uhlenbeck level of kWander_s, correlated over 2 s, as on this
+// workstation's ptys (LineRate::kHostWander_s).
+enum class Link { Random, Bursts, Pty };
+constexpr double kWander_s = 25e-6;
 
-// `lines` lines of a board printing at `rate_hz`, delivered over `link`;
-// the estimate once the rate has settled.
+const char* nameOf(Link link)
+{
+    return link == Link::Random ? "random" : link == Link::Bursts ? "bursts" : "pty";
+}
+
+// A board printing at `rate_hz`, delivered over `link`; the estimate once
+// the rate has settled.
 tactiscope::devices::protocol::LineRateEstimate timeBoard(double rate_hz, Link link, unsigned seed,
                                                           std::size_t backlog = 0)
 {
     std::mt19937_64 random(seed);
     std::exponential_distribution<double> delay(1.0 / 0.8e-3);  // the OS and the link: 0.8 ms on average
     std::uniform_real_distribution<double> phase(0.0, 1.0);
+    std::normal_distribution<double> normal;
+    double level_s = kWander_s * normal(random);
     LineRate rate;
     const double start_s = 100.0 + phase(random);
     // A backlog that waited in the port arrives at once with the first line.
     for (std::size_t i = 0; i < backlog; ++i) rate.add(start_s, std::nullopt);
     // The link is read 50 times a second; the rate is looked at after each read.
     const auto linesPerRead = static_cast<std::size_t>(std::max(1.0, rate_hz / 50.0));
+    const double period_s = 1.0 / rate_hz, correlation_s = 2.0;
     for (std::size_t i = 0; i % linesPerRead != 0 || !rate.settled(); ++i) {
-        const double sent_s = start_s + static_cast<double>(i) / rate_hz;
-        double arrival_s = sent_s + 0.2e-3 + delay(random);
+        const double sent_s = start_s + static_cast<double>(i) * period_s;
+        level_s += -level_s * period_s / correlation_s +
+                   kWander_s * std::sqrt(2.0 * period_s / correlation_s) * normal(random);
+        double arrival_s = sent_s + (link == Link::Pty ? 100e-6 + 0.11 * delay(random) : 0.2e-3 + delay(random));
         // USB full speed: the board's bytes leave in 1 ms frames.
         if (link == Link::Bursts) arrival_s = std::ceil(arrival_s * 1000.0) / 1000.0 + 0.1e-3 * phase(random);
+        // The host reads them when its scheduler gets to it.
+        arrival_s += level_s;
         rate.add(arrival_s, std::nullopt);
     }
     return *rate.estimate();
@@ -48,7 +68,7 @@ tactiscope::devices::protocol::LineRateEstimate timeBoard(double rate_hz, Link l
 void expectCoverage(double rate_hz, unsigned seeds,
                     const std::function<void(const tactiscope::devices::protocol::LineRateEstimate&)>& check)
 {
-    for (const Link link : {Link::Random, Link::Bursts}) {
+    for (const Link link : {Link::Random, Link::Bursts, Link::Pty}) {
         tactiscope::testing::Coverage coverage;
         for (unsigned seed = 1; seed <= seeds; ++seed) {
             const auto rate = timeBoard(rate_hz, link, seed);
@@ -56,7 +76,7 @@ void expectCoverage(double rate_hz, unsigned seeds,
             check(rate);
             coverage.add(rate.rate_hz - rate_hz, *rate.u_hz);
         }
-        EXPECT_TRUE(coverage.isGaussian()) << (link == Link::Random ? "random" : "bursts");
+        EXPECT_TRUE(coverage.isGaussian()) << nameOf(link) << " at " << rate_hz << " Hz";
     }
 }
 
@@ -69,6 +89,11 @@ TEST(LineRate, ASlowBoardsRateOnAFewLinesIsCoveredByItsUncertainty)
         EXPECT_TRUE(*rate.u_hz <= LineRate::kSettledU * rate.rate_hz || rate.span_s >= LineRate::kLongestWindow_s);
         EXPECT_LE(rate.lines, 60u);
     });
+}
+
+TEST(LineRate, AHundredHertzBoardsRateOnTheLinesFitIsCoveredByItsUncertainty)
+{
+    expectCoverage(100.0, 200, [](const auto&) {});
 }
 
 TEST(LineRate, AFastBoardsRateIsCoveredByTheClockMappingsUncertainty)
