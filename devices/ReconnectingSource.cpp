@@ -37,8 +37,7 @@ ReconnectingSource::ReconnectingSource(Opener opener, std::chrono::milliseconds 
       m_streamChannels(m_channels),
       m_rate_hz(m_source->nominalSampleRate_hz()),
       m_rateNote(m_source->rateNote()),
-      m_rateU_hz(m_source->rateUncertainty_hz()),
-      m_start(std::chrono::steady_clock::now())
+      m_rateU_hz(m_source->rateUncertainty_hz())
 {
     for (std::size_t c = 0; c < m_channels.size(); ++c) m_channelMap.push_back(c);
 }
@@ -145,11 +144,19 @@ bool ReconnectingSource::tryReconnect()
         }
         const double away_s = std::chrono::duration<double>(resumed - m_lostAt).count();
         // Continue after the last delivered sample, leaving room for what the
-        // outage cost; time goes on from the host's clock.
-        m_indexOffset = m_endIndex + static_cast<std::uint64_t>(std::llround(away_s * m_rate_hz));
+        // outage cost: the new connection's first sample lies where the lost
+        // connection's clock places its host instant (a text board's stream
+        // began with lines it was timed on, before the connection was made),
+        // or, with no clock, as long after the last as the outage lasted.
+        double resumed_s = m_lastEnd_s + away_s;
+        if (m_lostClock)
+            resumed_s = std::max(
+                m_lastEnd_s, m_lostClock->device_s(std::chrono::duration<double>(resumed.time_since_epoch()).count()));
+        m_indexOffset = std::max(m_endIndex, static_cast<std::uint64_t>(std::llround(resumed_s * m_rate_hz)));
         {
             const std::lock_guard lock(m_countersMutex);  // the owner reads the offset (notices, clock)
-            m_timeOffset_s = std::chrono::duration<double>(resumed - m_start).count();
+            m_timeOffset_s = static_cast<double>(m_indexOffset) / m_rate_hz;
+            m_lostClock.reset();
             char text[96];
             std::snprintf(text, sizeof text, "the probe was away %.1f s and came back", away_s);
             m_pastNotices.push_back({m_lostAtTime_s, text + layoutChange(streamChannelsBefore)});
@@ -227,7 +234,9 @@ std::vector<std::uint8_t> ReconnectingSource::recentBytes() const
 std::optional<core::timing::ClockMapping> ReconnectingSource::hostClock() const
 {
     const std::lock_guard lock(m_countersMutex);
-    auto mapping = m_source ? m_source->hostClock() : std::nullopt;
+    // While the link is lost, its last clock still places what it delivered.
+    if (!m_source) return m_lostClock;
+    auto mapping = m_source->hostClock();
     if (mapping) {
         mapping->reference_s += m_timeOffset_s;
         mapping->offset_s -= m_timeOffset_s;
@@ -273,7 +282,12 @@ ReadStatus ReconnectingSource::readBlock(core::SampleBlock& out, std::chrono::mi
     }
     if (status == ReadStatus::Failed) {
         m_error = m_source->lastError();
+        const auto clock = hostClock();
         replaceSource(nullptr);
+        {
+            const std::lock_guard lock(m_countersMutex);
+            m_lostClock = clock;
+        }
         m_state = DeviceState::Lost;
         m_lostAt = std::chrono::steady_clock::now();
         m_lostAtTime_s = m_lastEnd_s;

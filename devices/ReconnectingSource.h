@@ -110,17 +110,17 @@ private:
     bool m_failedForGood = false;
     std::atomic<DeviceState> m_state = DeviceState::Streaming;
     std::atomic<std::uint64_t> m_reconnections = 0;
-    std::chrono::steady_clock::time_point m_start;
     std::chrono::steady_clock::time_point m_lostAt;
     std::chrono::steady_clock::time_point m_nextRetry;
-    std::uint64_t m_endIndex = 0;              // one past the last sample delivered
-    double m_lastEnd_s = 0.0;                  // and its time, just after it
-    double m_lostAtTime_s = 0.0;               // the stream time the link was lost at
-    double m_timeOffset_s = 0.0;               // added to the current connection's times
-    std::uint64_t m_indexOffset = 0;           // added to its sample indices
-    mutable std::mutex m_countersMutex;        // guards m_source's replacement and the sum below
-    protocol::DecoderCounters m_pastCounters;  // of the connections closed so far
-    std::vector<LinkNotice> m_pastNotices;     // of those, not yet taken
+    std::uint64_t m_endIndex = 0;                           // one past the last sample delivered
+    double m_lastEnd_s = 0.0;                               // and its time, just after it
+    double m_lostAtTime_s = 0.0;                            // the stream time the link was lost at
+    double m_timeOffset_s = 0.0;                            // added to the current connection's times
+    std::optional<core::timing::ClockMapping> m_lostClock;  // the lost connection's, on the stream's time
+    std::uint64_t m_indexOffset = 0;                        // added to its sample indices
+    mutable std::mutex m_countersMutex;                     // guards m_source's replacement and the sum below
+    protocol::DecoderCounters m_pastCounters;               // of the connections closed so far
+    std::vector<LinkNotice> m_pastNotices;                  // of those, not yet taken
 };
 
 // An opener for a serial device: by USB serial number when given (searching

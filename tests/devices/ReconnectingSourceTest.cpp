@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -59,6 +60,22 @@ struct FirstValues final : core::BlockSink {
     }
     std::mutex mutex;
     std::vector<double> values;
+};
+
+// Every block's start and end on the stream's time, in order.
+struct BlockTimes final : core::BlockSink {
+    void consume(const core::SampleBlock& block) override
+    {
+        const std::lock_guard lock(mutex);
+        spans.emplace_back(block.t0_s(), block.endTime_s());
+    }
+    std::vector<std::pair<double, double>> get()
+    {
+        const std::lock_guard lock(mutex);
+        return spans;
+    }
+    std::mutex mutex;
+    std::vector<std::pair<double, double>> spans;
 };
 
 // A text board's source that reopens its link when it comes back; its
@@ -140,7 +157,10 @@ TEST(ReconnectingSource, ATextBoardTimedAgainWhenItComesBackContinues)
     auto* reconnecting = source.get();
     ASSERT_TRUE(reconnecting->rateUncertainty_hz());
     Acquisition acquisition(std::move(source));
+    auto times = std::make_shared<BlockTimes>();
+    acquisition.addSink(times);
     acquisition.start();
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
     const double unplugged_s = steadySeconds();
     board.reset();  // unplugged
     ASSERT_TRUE(tactiscope::testing::eventually([&] { return reconnecting->state() != DeviceState::Streaming; }));
@@ -156,6 +176,17 @@ TEST(ReconnectingSource, ATextBoardTimedAgainWhenItComesBackContinues)
     // be timed again (its lines of that time are in the stream).
     EXPECT_NEAR(static_cast<double>(acquisition.stats().samplesLost), away_s * 200.0, 0.3 * 200.0);
     acquisition.stop();
+    // Its stream goes on after the last line before the unplug by the time
+    // it was away: its first connection's stream began with the lines it
+    // was timed on, 2.5 s before the connection was made, and the second
+    // was placed on the host's clock as if it had begun with it, which
+    // set its lines before the first's.
+    const auto spans = times->get();
+    const auto gap =
+        std::ranges::adjacent_find(spans, [](const auto& a, const auto& b) { return b.first - a.second > 0.1; });
+    ASSERT_NE(gap, spans.end());
+    EXPECT_NEAR(std::next(gap)->first - gap->second, away_s, 0.3);
+    EXPECT_TRUE(std::ranges::is_sorted(spans)) << "the stream's time went back";
 }
 
 // A board whose sketch changed while it was unplugged comes back printing
