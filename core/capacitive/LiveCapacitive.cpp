@@ -99,7 +99,7 @@ std::optional<std::string> LiveCapacitive::tare()
     const std::lock_guard lock(m_mutex);
     if (!m_window.full()) return "wait half a second: the signal is too short to judge";
     const double shift_f = m_window.halfShift();
-    if (m_window.halfShiftScore() > kSteadyScore && std::abs(shift_f) > 3.0 * m_noiseSigma_f) {
+    if (!windowSteady()) {
         char change[32];
         std::snprintf(change, sizeof change, "%.3f", shift_f * 1e12);
         return std::string("the capacitance is changing (") + change +
@@ -107,6 +107,13 @@ std::optional<std::string> LiveCapacitive::tare()
     }
     m_pendingC0_f = m_window.mean();
     return std::nullopt;
+}
+
+// Not a load being placed or lifted: no step within the last kTare_s
+// beyond its noise, or its halves within 3σ of the calibrated baseline noise.
+bool LiveCapacitive::windowSteady() const
+{
+    return m_window.stepScore() <= kSteadyScore || std::abs(m_window.halfShift()) <= 3.0 * m_noiseSigma_f;
 }
 
 void LiveCapacitive::inheritBaseline(const LiveCapacitive& previous)
@@ -137,16 +144,23 @@ void LiveCapacitive::consume(const SampleBlock& block)
         const std::lock_guard lock(m_mutex);
         if (const auto c0 = std::exchange(m_pendingC0_f, std::nullopt)) m_readout.setBaseline(*c0);
     }
-    if (!m_firstTime_s) m_firstTime_s = block.t0_s();
     SampleBlock display(2, block.sampleCount(), block.t0_s(), block.dt_s(), block.firstSampleIndex(), block.sequence());
     CapacitiveReading reading;
+    std::size_t windowed = 0;  // of this block's samples, those already in the window
     for (std::size_t s = 0; s < block.sampleCount(); ++s) {
-        const double t_s = block.timeAt_s(s);
-        if (!m_startTared && t_s - *m_firstTime_s >= kStartTare_s) {
-            m_readout.tare();
-            m_startTared = true;
+        const double c_f = m_input.farads(block.value(m_channel, s));
+        if (!m_startTared) {
+            // The start's C0: the first kTare_s of the stream that is
+            // steady, read from the sample after it on.
+            const std::lock_guard lock(m_mutex);
+            if (m_window.full() && windowSteady()) {
+                m_readout.setBaseline(m_window.mean());
+                m_startTared = true;
+            }
+            m_window.push(c_f);
+            windowed = s + 1;
         }
-        reading = m_readout.push(t_s, m_input.farads(block.value(m_channel, s)));
+        reading = m_readout.push(block.timeAt_s(s), c_f);
         // A new C0 (a tare before this sample, a drift step at it) reads this sample on.
         if (m_readout.baselineChanges() != m_changesSeen) {
             m_changesSeen = m_readout.baselineChanges();
@@ -161,7 +175,8 @@ void LiveCapacitive::consume(const SampleBlock& block)
     m_startTaredSeen = m_startTared;
     m_baselineChanges.insert(m_baselineChanges.end(), changes.begin(), changes.end());
     m_latest = reading;
-    for (std::size_t s = 0; s < block.sampleCount(); ++s) m_window.push(m_input.farads(block.value(m_channel, s)));
+    for (std::size_t s = windowed; s < block.sampleCount(); ++s)
+        m_window.push(m_input.farads(block.value(m_channel, s)));
 }
 
 BaselineChange LiveCapacitive::currentBaseline() const

@@ -5,10 +5,12 @@
 // readouts.
 //
 // Zero: the beam is unloaded when a stream starts, so the baseline C0 is
-// re-taken once kStartTare_s into the stream (the calibration's C0 is from
-// another day; the baseline drifts). tare() is a rule: the mean of the last
-// kTare_s becomes C0 only when that stretch is steady (its two halves agree
-// within their noise, or within 3σ of the calibrated baseline noise), so a
+// re-taken from the first kTare_s of the stream that is steady, by the
+// tare rule below (the calibration's C0 is from another day; the baseline
+// drifts; a stream may start while a weight is being placed). tare() is a rule: the mean of the last
+// kTare_s becomes C0 only when that stretch is steady (no step within it
+// beyond its noise, or its halves within 3σ of the calibrated baseline
+// noise), so a
 // weight being placed or lifted is never zeroed; otherwise it says why. A
 // readout rebuilt for another profile or calibration re-takes nothing: it
 // goes on from its predecessor's C0 (inheritBaseline).
@@ -72,10 +74,10 @@ ReadoutSettings readoutSettings(const sensors::CapacitiveBeamProfile& probe,
 
 class LiveCapacitive final : public BlockSink {
 public:
-    static constexpr double kStartTare_s = 0.5;
     static constexpr double kTare_s = 0.5;
-    // How far the halves of the tare window may differ, in standard errors
-    // of their difference: a steady noisy signal scores about 1.
+    // How far the means before and after any point of the tare window may
+    // differ, in standard errors of their difference (SteadyWindow::
+    // stepScore): a steady noisy signal's largest stays below 4.
     static constexpr double kSteadyScore = 6.0;
 
     // Throws std::invalid_argument without a capacitance channel, for one
@@ -107,6 +109,7 @@ public:
     std::vector<BaselineChange> takeBaselineChanges();
 
 private:
+    bool windowSteady() const;  // m_mutex held
     std::size_t m_channel = 0;
     CapacitanceInput m_input;  // its values to farads
     std::shared_ptr<LiveBuffer> m_output;
@@ -122,7 +125,6 @@ private:
 
     // Acquisition thread only.
     CapacitiveReadout m_readout;
-    std::optional<double> m_firstTime_s;
     bool m_startTared = false;
     std::uint64_t m_changesSeen = 0;  // the readout's baselineChanges() already recorded
 };

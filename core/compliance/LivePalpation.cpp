@@ -29,7 +29,9 @@ LivePalpation::LivePalpation(const std::vector<ChannelDescriptor>& channels, dou
       m_rawLow(m_rawHigh.length()),
       m_forceHigh(m_rawHigh.length()),
       m_forceLow(m_rawHigh.length()),
-      m_reader(m_forces.pair(), settings.press)
+      m_reader(m_forces.pair(), settings.press),
+      m_firstHigh(m_rawHigh.length()),
+      m_firstLow(m_rawHigh.length())
 {
 }
 
@@ -48,7 +50,7 @@ void LivePalpation::inheritZero(const LivePalpation& previous)
     if (!zero) return;  // it was still taking its first: so does this one
     m_forces.setZero(zero->zero);
     m_reader.setZeroUncertainty(m_forces.zeroUncertainty());
-    m_tareCount = m_tareSamples;
+    m_firstZeroTaken = true;
     const std::lock_guard lock(m_mutex);
     m_zero = zero;
     m_state.taring = false;
@@ -112,21 +114,24 @@ void LivePalpation::consume(const SampleBlock& block)
     if (gap || newZero) m_reader.dropPress();
     if (newZero) setZero(block.firstSampleIndex(), *newZero);
     // The first zero comes from samples without a gap: one a gap interrupted starts over.
-    if (gap && m_tareCount < m_tareSamples) {
-        m_tareCount = 0;
-        m_tareHigh = m_tareLow = m_tareHighSquares = m_tareLowSquares = 0.0;
+    if (gap && !m_firstZeroTaken) {
+        m_firstHigh.clear();
+        m_firstLow.clear();
     }
 
     SampleBlock display(3, block.sampleCount(), block.t0_s(), block.dt_s(), block.firstSampleIndex(), block.sequence());
     for (std::size_t s = 0; s < block.sampleCount(); ++s) {
         const double high = block.value(m_forces.highChannel(), s);
         const double low = block.value(m_forces.lowChannel(), s);
-        if (m_tareCount < m_tareSamples) {
-            m_tareHigh += high;
-            m_tareLow += low;
-            m_tareHighSquares += high * high;
-            m_tareLowSquares += low * low;
-            if (++m_tareCount == m_tareSamples) setZero(block.firstSampleIndex() + s + 1, firstZero());
+        if (!m_firstZeroTaken) {
+            m_firstHigh.push(high);
+            m_firstLow.push(low);
+            if (m_firstHigh.full() && firstZeroSteady()) {
+                m_firstZeroTaken = true;
+                setZero(block.firstSampleIndex() + s + 1,
+                        RawZero{m_firstHigh.mean(), m_firstLow.mean(),
+                                std::pair{m_firstHigh.standardErrorOfMean(), m_firstLow.standardErrorOfMean()}});
+            }
             for (std::size_t c = 0; c < 3; ++c) display.channel(c)[s] = kNaN;
             continue;
         }
@@ -150,7 +155,19 @@ void LivePalpation::consume(const SampleBlock& block)
         m_forceHigh.push(display.channel(0)[s]);
         m_forceLow.push(display.channel(1)[s]);
     }
-    m_state.taring = m_tareCount < m_tareSamples;
+    // Forces that hold below zero, steadily, beyond the contact threshold
+    // (no press pulls a beam) say the zero was taken under a load held
+    // still (a stream that began in a press's hold): the probe is lifted
+    // now, and this stretch becomes the zero.
+    const double threshold_n = m_pressSettings.contactThreshold_n;
+    const auto steady = [&](const signal::SteadyWindow& force) {
+        return force.spread() <= threshold_n || force.stepScore() <= kSteadyScore;
+    };
+    if (m_forceHigh.full() && m_rawHigh.full() && !m_pendingZero && !m_reader.pressing() &&
+        std::min(m_forceHigh.mean(), m_forceLow.mean()) < -threshold_n && steady(m_forceHigh) && steady(m_forceLow))
+        m_pendingZero = RawZero{m_rawHigh.mean(), m_rawLow.mean(),
+                                std::pair{m_rawHigh.standardErrorOfMean(), m_rawLow.standardErrorOfMean()}};
+    m_state.taring = !m_firstZeroTaken;
     m_state.pressing = m_reader.pressing();
     m_state.current = m_reader.current();
     m_state.atLimit = m_reader.pressAtLimit();
@@ -158,18 +175,15 @@ void LivePalpation::consume(const SampleBlock& block)
     m_completed.clear();
 }
 
-RawZero LivePalpation::firstZero() const
+// Each beam: its force moved by no more than the contact threshold over
+// the stretch, or its halves agree within their noise (a noisy beam).
+bool LivePalpation::firstZeroSteady() const
 {
-    const auto n = static_cast<double>(m_tareSamples);
-    // σ/√n of each beam's samples (n − 1), from the sums; none from one sample.
-    const auto standardError = [n](double sum, double squares) {
-        return n > 1.0 ? std::sqrt(std::max(0.0, squares - sum * sum / n) / (n - 1.0) / n) : 0.0;
+    const auto steady = [&](const signal::SteadyWindow& raw, bool highBeam) {
+        return m_forces.forceOfChange(highBeam, raw.spread()) <= m_pressSettings.contactThreshold_n ||
+               raw.stepScore() <= kSteadyScore;
     };
-    RawZero zero{m_tareHigh / n, m_tareLow / n, std::nullopt};
-    if (n > 1.0)
-        zero.uncertainty =
-            std::pair{standardError(m_tareHigh, m_tareHighSquares), standardError(m_tareLow, m_tareLowSquares)};
-    return zero;
+    return steady(m_firstHigh, true) && steady(m_firstLow, false);
 }
 
 PalpationState LivePalpation::state() const

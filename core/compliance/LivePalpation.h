@@ -6,11 +6,13 @@
 // Channels and forces: PalpationForces, the same per-sample code a stored
 // session's review and export run.
 //
-// Tare: the probe's zero is the mean of the first kTare_s of the stream (the
-// probe is lifted when a stream starts), with the standard error of that
-// mean as its uncertainty (each press reading carries what it adds to the
-// reading's uncertainty); while it is being taken no force is
-// computed (the output is NaN). tare() is a rule, not a wish: it takes the
+// Tare: the probe's zero is the mean of the first kTare_s of the stream
+// that is steady (the probe is lifted when a stream starts, but a stream
+// may start in the middle of a press: each beam's force moved by no more
+// than the contact threshold, or no more than its own noise explains),
+// with the standard error of that mean as its uncertainty (each press
+// reading carries what it adds to the reading's uncertainty); while it is
+// being taken no force is computed (the output is NaN). tare() is a rule, not a wish: it takes the
 // mean of the last kTare_s already seen as the new zero only when the probe
 // is not pressing and both beams stayed within the contact threshold over
 // that stretch, and otherwise says why not and changes nothing, so a zero is
@@ -55,6 +57,10 @@ struct PalpationState {
 class LivePalpation final : public BlockSink {
 public:
     static constexpr double kTare_s = 0.5;
+    // A beam whose means before and after a point of the window differ by
+    // this many of their standard errors moved (a ramp, a press), whatever
+    // its spread (SteadyWindow::stepScore).
+    static constexpr double kSteadyScore = 6.0;
 
     // Throws std::invalid_argument when the channels lack a displacement or
     // two beams, or for a non-physical probe.
@@ -94,7 +100,8 @@ public:
 
 private:
     void setZero(std::uint64_t firstIndex, const RawZero& zero);
-    RawZero firstZero() const;  // from the sums of the first kTare_s
+    // Whether the stretch in the first-zero windows may be the zero.
+    bool firstZeroSteady() const;
 
     PalpationForces m_forces;  // acquisition thread, but for the constant parts
     PressSettings m_pressSettings;
@@ -115,9 +122,8 @@ private:
     // Acquisition thread only.
     PressReader m_reader;
     std::optional<std::uint64_t> m_nextIndex;
-    std::size_t m_tareCount = 0;               // samples of the zero so far
-    double m_tareHigh = 0.0, m_tareLow = 0.0;  // sums and sums of squares of the first zero's samples
-    double m_tareHighSquares = 0.0, m_tareLowSquares = 0.0;
+    bool m_firstZeroTaken = false;
+    signal::SteadyWindow m_firstHigh, m_firstLow;  // the latest kTare_s while it is not
     std::vector<PressReading> m_completed;
 };
 

@@ -206,6 +206,15 @@ void PalpationForces::setZero(const RawZero& zero)
     m_zero = zero;
 }
 
+double PalpationForces::forceOfChange(bool highBeam, double rawChange) const
+{
+    const Input& beam = highBeam ? m_high : m_low;
+    const auto& cantilever = highBeam ? m_pair.high() : m_pair.low();
+    // About the count of zero (the quarter bridge's curvature is tiny there).
+    const double at = m_zero ? (highBeam ? m_zero->high : m_zero->low) : beam.offset;
+    return std::abs(beam.force(cantilever, at + rawChange) - beam.force(cantilever, at));
+}
+
 std::optional<ZeroUncertainty> PalpationForces::zeroUncertainty() const
 {
     if (!m_zero || !m_zero->uncertainty) return std::nullopt;

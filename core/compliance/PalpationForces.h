@@ -128,6 +128,9 @@ public:
     // In N on the zero; NaN before there is one.
     double forceHigh(double raw) const { return m_zero ? m_high.force(m_pair.high(), raw) : kNaN; }
     double forceLow(double raw) const { return m_zero ? m_low.force(m_pair.low(), raw) : kNaN; }
+    // The force a change of a beam's raw value by `rawChange` makes (its
+    // size), with or without a zero.
+    double forceOfChange(bool highBeam, double rawChange) const;
     // F_H/F_L while both exceed the contact threshold, else NaN.
     double q(double forceHigh_n, double forceLow_n) const;
     // k_o in N/m for a Q in range (1 < Q < k_h/k_l), else NaN.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 namespace tactiscope::core::signal {
 namespace {
@@ -85,6 +86,33 @@ double SteadyWindow::halfShiftScore() const
         std::sqrt(variance * (1.0 / static_cast<double>(first.count) + 1.0 / static_cast<double>(second.count)));
     if (standardError == 0.0) return shift == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
     return shift / standardError;
+}
+
+double SteadyWindow::stepScore() const
+{
+    const std::size_t n = m_values.size();
+    if (n < 4) return 0.0;
+    // Sums and sums of squares of the first i values, about the first (so
+    // that a large level costs no precision).
+    std::vector<double> sums(n + 1, 0.0), squares(n + 1, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double v = m_values[i] - m_values.front();
+        sums[i + 1] = sums[i] + v;
+        squares[i + 1] = squares[i] + v * v;
+    }
+    double largest = 0.0;
+    for (std::size_t k = 1; k < n; ++k) {
+        const auto before = static_cast<double>(k), after = static_cast<double>(n - k);
+        const double meanBefore = sums[k] / before, meanAfter = (sums[n] - sums[k]) / after;
+        const double shift = std::abs(meanAfter - meanBefore);
+        if (shift == 0.0) continue;
+        const double within = std::max(0.0, squares[k] - before * meanBefore * meanBefore) +
+                              std::max(0.0, squares[n] - squares[k] - after * meanAfter * meanAfter);
+        const double standardError = std::sqrt(within / static_cast<double>(n - 2) * (1.0 / before + 1.0 / after));
+        if (!(standardError > 1e-12 * shift)) return std::numeric_limits<double>::infinity();
+        largest = std::max(largest, shift / standardError);
+    }
+    return largest;
 }
 
 }  // namespace tactiscope::core::signal

@@ -29,6 +29,11 @@ public:
     // halves: about 1 for a steady noisy signal, large for a step or a ramp.
     // Infinite for a noiseless signal that moved, 0 for one that did not.
     double halfShiftScore() const;
+    // The same for every split of the window in two, at its
+    // largest: a step anywhere in the window, which the halves miss when
+    // it falls within one of them in a short window (five samples at
+    // 10 Hz). Infinite for a noiseless signal that moved.
+    double stepScore() const;
 
 private:
     std::size_t m_length;

@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <functional>
+#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -57,15 +58,6 @@ Stream feed(
     return run;
 }
 
-// The 0.5 s exponential running mean of c just before sample `until`.
-double runningMean(const Stream& run, std::size_t until)
-{
-    double mean = run.c[0];
-    for (std::size_t i = 1; i < until; ++i)
-        mean += (run.c[i] - mean) * (1.0 - std::exp(-(run.t[i] - run.t[i - 1]) / 0.5));
-    return mean;
-}
-
 }  // namespace
 
 TEST(LiveCapacitive, ZeroesHalfASecondInAndShowsDeltaCOverTheSensitivity)
@@ -75,8 +67,10 @@ TEST(LiveCapacitive, ZeroesHalfASecondInAndShowsDeltaCOverTheSensitivity)
     LiveCapacitive live(scenario.channels(), scenario.sampleRate_hz(), sensitivity, {}, 400.0);
     const Stream run = feed(live, scenario);
     ASSERT_EQ(run.shown.sampleCount(), run.c.size());
-    // At 10 Hz, sample 5 is the first 0.5 s in: the zero is the mean before it.
-    const double c0 = runningMean(run, 5);
+    // At 10 Hz, the first 0.5 s is samples 0 to 4, and steady (the beam
+    // unloaded): the zero is their mean, from sample 5 on.
+    double c0 = 0.0;
+    for (std::size_t i = 0; i < 5; ++i) c0 += run.c[i] / 5.0;
     for (std::size_t i = 5; i < run.c.size(); ++i) {
         ASSERT_NEAR(run.shown.values[0][i], (run.c[i] - c0) / sensitivity.perNewton_f, 1e-12) << i;
         ASSERT_NEAR(run.shown.values[1][i], (run.c[i] - c0) / sensitivity.perMetre_f, 1e-12) << i;
@@ -85,6 +79,26 @@ TEST(LiveCapacitive, ZeroesHalfASecondInAndShowsDeltaCOverTheSensitivity)
     ASSERT_TRUE(latest.has_value());
     EXPECT_DOUBLE_EQ(latest->c0_f, c0);
     EXPECT_DOUBLE_EQ(latest->relativeChange, (run.c.back() - c0) / c0);
+}
+
+// A stream that starts while a weight is lifted off (C falls 0.3 pF at
+// 0.3 s): the start's C0 waits for a steady half second, the beam
+// unloaded, where a C0 taken half a second in blended the two (51.62 pF
+// between 51.74 and 51.44).
+TEST(LiveCapacitive, TheStartsZeroWaitsForASteadySignal)
+{
+    const devices::simulator::CapacitiveWeightsScenario scenario;
+    const auto sensitivity = CapacitiveSensitivity::fromModel(scenario.beam());
+    LiveCapacitive live(scenario.channels(), 10.0, sensitivity, {}, 400.0);
+    std::mt19937_64 random(5);
+    std::normal_distribution<double> noise(0.0, 1e-15);
+    core::SampleBlock block(1, 30, 0.0, 0.1, 0);
+    for (std::size_t i = 0; i < 30; ++i) block.channel(0)[i] = (i < 3 ? 51.74e-12 : 51.44e-12) + noise(random);
+    live.consume(block);
+    const auto changes = live.takeBaselineChanges();
+    ASSERT_EQ(changes.size(), 1u);
+    EXPECT_EQ(changes[0].firstIndex, 8u);  // samples 3 to 7 are the first steady half second
+    EXPECT_NEAR(changes[0].c0_f, 51.44e-12, 3e-15);
 }
 
 TEST(LiveCapacitive, ReadsEachSettledWeightWithinFivePercentPlusTheBaselineDrift)

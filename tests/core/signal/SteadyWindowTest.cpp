@@ -55,3 +55,31 @@ TEST(SteadyWindow, SteadyNoiseScoresAboutOneAndAStepFarMore)
     EXPECT_GT(step.halfShiftScore(), 6.0);
     EXPECT_NEAR(step.halfShift(), 1.0, 0.3);
 }
+
+// A step in a short window, off its middle (a weight lifted 0.3 s into
+// five samples at 10 Hz): the halves, each holding some of both levels,
+// do not see it; the scan over every split does. On white noise its
+// largest score stays far below the steadiness rule's 6.
+TEST(SteadyWindow, TheStepScoreFindsAStepAnywhereAndStaysLowOnNoise)
+{
+    std::mt19937_64 random(3);
+    std::normal_distribution<double> noise(0.0, 1e-3);
+    SteadyWindow shortWindow(5);
+    for (int i = 0; i < 5; ++i) shortWindow.push((i < 3 ? 51.74 : 51.44) + noise(random));
+    EXPECT_LT(shortWindow.halfShiftScore(), 6.0);
+    EXPECT_GT(shortWindow.stepScore(), 6.0);
+    SteadyWindow steady(500);
+    double largest = 0.0;
+    for (int trial = 0; trial < 200; ++trial) {
+        steady.clear();
+        for (int i = 0; i < 500; ++i) steady.push(noise(random));
+        largest = std::max(largest, steady.stepScore());
+    }
+    EXPECT_LT(largest, 6.0);
+    EXPECT_GT(largest, 2.0);  // the largest of many splits' scores, not one's
+    SteadyWindow still(4), moved(4);
+    for (const double v : {1.0, 1.0, 1.0, 1.0}) still.push(v);
+    for (const double v : {1.0, 1.0, 2.0, 2.0}) moved.push(v);
+    EXPECT_EQ(still.stepScore(), 0.0);
+    EXPECT_TRUE(std::isinf(moved.stepScore()));
+}
