@@ -76,7 +76,7 @@ std::vector<ChannelDescriptor> LivePalpation::outputChannels()
 std::optional<std::string> LivePalpation::tare()
 {
     const std::lock_guard lock(m_mutex);
-    if (m_state.taring) return "the first zero is still being taken: keep the probe lifted";
+    if (m_state.taring) return "the first zero is still being taken: keep the probe lifted and still";
     if (!m_forceHigh.full()) return "wait half a second: the signal since the last zero or gap is too short to judge";
     const auto milliNewtons = [](double n) { return std::to_string(static_cast<long long>(std::lround(n * 1e3))); };
     if (m_state.pressing)

@@ -77,6 +77,8 @@ public:
     std::optional<double> gaugeFactor(bool highBeam) const { return m_forces.gaugeFactor(highBeam); }
     // One beam calibrated and the other not (mixedCalibration()): what to say.
     const std::optional<std::string>& mixedCalibrationWarning() const { return m_mixedCalibration; }
+    // A beam in counts whose clipping is not judged (PalpationForces).
+    std::optional<std::string> unjudgedClipping() const { return m_forces.unjudgedClipping(); }
 
     // Any thread: the last kTare_s become the zero (see above); nothing when
     // taken, else the reason, in words for the operator.

@@ -171,6 +171,8 @@ PalpationForces::PalpationForces(const std::vector<ChannelDescriptor>& channels,
                                             ", a length; a beam's counts are read as a force (N, mN) or a strain "
                                             "(strain, µε)");
             in.kind = unit->kind;
+            in.profileScaled = true;
+            in.name = channels[c].name;
             in.unitsPerCount = unit->factor / scale->second.countsPerUnit;
             in.offset = scale->second.offset_counts;
             in.fullScale = scale->second.fullScale_counts;
@@ -204,6 +206,18 @@ void PalpationForces::setZero(const RawZero& zero)
     m_high.setZero(zero.high);
     m_low.setZero(zero.low);
     m_zero = zero;
+}
+
+std::optional<std::string> PalpationForces::unjudgedClipping() const
+{
+    std::string beams;
+    for (const Input* beam : {&m_high, &m_low})
+        if (beam->profileScaled && !beam->fullScale) beams += (beams.empty() ? "" : " and ") + beam->name;
+    if (beams.empty()) return std::nullopt;
+    return "the profile gives " + beams +
+           " no \"full_scale\": where the converter clips is not known, so a press at its limit is read as any "
+           "other (give the largest count from the offset its converter gives, as in the user guide's \"Raw ADC "
+           "counts\")";
 }
 
 double PalpationForces::forceOfChange(bool highBeam, double rawChange) const

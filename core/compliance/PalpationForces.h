@@ -128,6 +128,10 @@ public:
     // In N on the zero; NaN before there is one.
     double forceHigh(double raw) const { return m_zero ? m_high.force(m_pair.high(), raw) : kNaN; }
     double forceLow(double raw) const { return m_zero ? m_low.force(m_pair.low(), raw) : kNaN; }
+    // A beam whose counts the profile scales with no "full_scale": where
+    // it clips is not known, so a clipped press is read as any other. What
+    // to say of it; none when every beam's range is known or the device's.
+    std::optional<std::string> unjudgedClipping() const;
     // The force a change of a beam's raw value by `rawChange` makes (its
     // size), with or without a zero.
     double forceOfChange(bool highBeam, double rawChange) const;
@@ -148,6 +152,8 @@ private:
         double zero = 0.0;                                   // channels without a chain
         double offset = 0.0;                                 // the count of zero, its clipping's centre
         std::optional<double> fullScale;                     // where its counts clip, that far from it
+        bool profileScaled = false;                          // counts the profile scales
+        std::string name;                                    // its channel's
         void setZero(double value);
         double force(const sensors::CantileverBeam& beam, double value) const;
     };

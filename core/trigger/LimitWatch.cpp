@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 namespace tactiscope::core::trigger {
 namespace {
@@ -170,14 +172,29 @@ ParsedLimit parseLimit(std::string_view text)
     return {spec, {}};
 }
 
+namespace {
+
+// The SI prefix that puts `value` between 1 and 1000, and its scale.
+std::pair<double, std::string> prefixFor(double value, const std::string& unit)
+{
+    static constexpr const char* kPrefixes[] = {"f", "p", "n", "µ", "m", "", "k", "M", "G"};
+    const int thousands = std::clamp(static_cast<int>(std::floor(std::log10(std::abs(value)) / 3.0)), -5, 3);
+    return {std::pow(10.0, -3.0 * thousands), kPrefixes[thousands + 5] + unit};
+}
+
+std::string significant(double value, int digits)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*g", digits, value);
+    return text;
+}
+
+}  // namespace
+
 std::string LimitChange::text(const LimitSpec& spec, const std::string& unit) const
 {
     // The value to four digits: enough to see how far past the level it is.
-    const auto measured = [](double v) {
-        char digits[32];
-        std::snprintf(digits, sizeof digits, "%.4g", v);
-        return std::string(digits);
-    };
+    const auto measured = [unit](double v) { return significant(v, 4) + (unit.empty() ? "" : " " + unit); };
     return text(spec, LimitWording{[](double v) { return text::formatShortest(v); }, measured, unit});
 }
 
@@ -185,23 +202,27 @@ LimitWording readableWording(ChannelKind kind, const std::string& unit, double l
 {
     double scale = 1.0;
     std::string shown = unit;
+    const bool prefixed = kind != ChannelKind::Strain && !unit.empty();
     if (kind == ChannelKind::Strain && unit.empty()) {  // a strain is a pure number
         scale = 1e6;
         shown = "µε";
-    } else if (!unit.empty() && std::isfinite(level) && level != 0.0) {
-        static constexpr const char* kPrefixes[] = {"f", "p", "n", "µ", "m", "", "k", "M", "G"};
-        const int thousands = std::clamp(static_cast<int>(std::floor(std::log10(std::abs(level)) / 3.0)), -5, 3);
-        scale = std::pow(10.0, -3.0 * thousands);
-        shown = kPrefixes[thousands + 5] + unit;
+    } else if (prefixed && std::isfinite(level) && level != 0.0) {
+        std::tie(scale, shown) = prefixFor(level, unit);
     }
+    const std::string suffix = shown.empty() ? "" : " " + shown;
     // Six digits undo the scaling's rounding (0.000956 N is 956 µN, not
-    // 955.9999999999999 µN); a measured value to three.
-    const auto digits = [scale](double si, int significant) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%.*g", significant, si * scale);
-        return std::string(text);
+    // 955.9999999999999 µN); a measured value to three, in the level's
+    // unit unless it lies a thousandfold or more beyond it (a board's counts
+    // given a unit they are not in: 3.44 kN, not 3.44e+09 µN).
+    const auto measured = [=](double si) {
+        const double x = si * scale;
+        if (prefixed && std::isfinite(x) && x != 0.0 && (std::abs(x) >= 1e5 || std::abs(x) < 1e-2)) {
+            const auto [own, ownUnit] = prefixFor(si, unit);
+            return significant(si * own, 3) + " " + ownUnit;
+        }
+        return significant(x, 3) + suffix;
     };
-    return {[digits](double si) { return digits(si, 6); }, [digits](double si) { return digits(si, 3); }, shown};
+    return {[scale](double si) { return significant(si * scale, 6); }, measured, shown};
 }
 
 std::string LimitChange::text(const LimitSpec& spec, const LimitWording& wording) const
@@ -212,8 +233,7 @@ std::string LimitChange::text(const LimitSpec& spec, const LimitWording& wording
     const std::string level =
         (window ? wording.level(at.low) + ".." + wording.level(at.high) : wording.level(at.low)) + suffix;
     const std::string what = std::string(" its ") + toString(severity) + (window ? " window " : " limit ");
-    if (raised)
-        return spec.quantity + " " + toString(spec.side) + what + level + " (" + wording.measured(value) + suffix + ")";
+    if (raised) return spec.quantity + " " + toString(spec.side) + what + level + " (" + wording.measured(value) + ")";
     return spec.quantity + " back " + facts(spec.side).backTo + what + level;
 }
 

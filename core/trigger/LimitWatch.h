@@ -87,15 +87,16 @@ ParsedLimit parseLimit(std::string_view text);
 // How an alarm's numbers read: the levels as they are typed, the measured
 // value, both in `unit` (none: SI, as stored).
 struct LimitWording {
-    std::function<std::string(double)> level, measured;
+    std::function<std::string(double)> level;     // the number, in `unit`
+    std::function<std::string(double)> measured;  // the number and its unit
     std::string unit;
 };
 
 // The wording a stored alarm keeps, in the units people read it in: a
 // strain in µε, another quantity in its SI unit with the prefix that puts
 // `level` (the limit's) between 1 and 1000 (956 µN, 3 mN, 51.4 pF), the
-// measured value to three digits in the same unit; a quantity without a
-// unit as it is.
+// measured value to three digits in the same unit (in its own prefix when
+// a thousandfold beyond); a quantity without a unit as it is.
 LimitWording readableWording(ChannelKind kind, const std::string& unit, double level);
 
 // A raised or cleared alarm: at sample `index`, the value then.

@@ -26,9 +26,13 @@ QString alarmText(const devices::session::LimitAlarm& alarm, const std::vector<c
                   core::Mode mode)
 {
     const DisplayUnit unit = watchedUnit(watchable, alarm.limit.quantity, mode);
-    const core::trigger::LimitWording wording{
-        [&unit](double si) { return typedText(si * unit.scale).toStdString(); },
-        [&unit](double si) { return significantText(si * unit.scale, 3).toStdString(); }, unit.symbol.toStdString()};
+    const core::trigger::LimitWording wording{[&unit](double si) { return typedText(si * unit.scale).toStdString(); },
+                                              [&unit](double si) {
+                                                  return (significantText(si * unit.scale, 3) +
+                                                          (unit.symbol.isEmpty() ? QString() : u' ' + unit.symbol))
+                                                      .toStdString();
+                                              },
+                                              unit.symbol.toStdString()};
     return QString::fromStdString(alarm.change.text(alarm.limit, wording));
 }
 

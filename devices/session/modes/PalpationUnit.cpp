@@ -2,6 +2,7 @@
 #include "devices/session/modes/PalpationUnit.h"
 
 #include "core/calibration/CalibrationRecord.h"
+#include "core/storage/DefectRecords.h"
 #include "core/storage/Recorder.h"
 #include "core/text/CountText.h"
 #include "devices/session/modes/StoredCalibrationLookup.h"
@@ -53,11 +54,14 @@ void PalpationUnit::selectSite(core::compliance::SiteCell cell)
 }
 
 // The zero in use reads the session's first samples (it applies from
-// index 0); those taken before were dropped.
+// index 0); those taken before were dropped. A beam whose clipping is not
+// judged is said in the record, since its readings rest on it.
 void PalpationUnit::startRecording(core::storage::Recorder& recorder)
 {
     if (const auto zero = m_palpation->currentZero())
         recorder.addZero(zero->firstIndex, core::compliance::zeroJson(zero->zero));
+    if (const auto unjudged = m_palpation->unjudgedClipping())
+        recorder.addEvents({core::storage::noteRecord(0.0, *unjudged)});
 }
 
 void PalpationUnit::take(const LiveTake& take)

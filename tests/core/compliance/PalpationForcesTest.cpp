@@ -1,6 +1,8 @@
-// A palpation board's displacement printed as plain numbers (millimetres,
-// an encoder's counts) is read through its profile's length scale; without
-// one the forces refuse it, naming the channel and how to give the scale.
+// A palpation board's scales: its displacement printed as plain numbers
+// (millimetres, an encoder's counts) is read through its profile's length
+// scale, and refused without one, naming the channel and how to give it; a
+// beam's offset centres its clipping, a beam in a length is refused, and
+// one without a full scale is said to have no clipping judged.
 #include "core/compliance/PalpationForces.h"
 
 #include "core/sensors/BuiltInProfiles.h"
@@ -85,4 +87,21 @@ TEST(PalpationForces, ABeamGivenALengthScaleIsRefused)
         EXPECT_EQ(std::string(e.what()), "the beam stiff is given a scale in mm, a length; a beam's counts are read "
                                          "as a force (N, mN) or a strain (strain, µε)");
     }
+}
+
+// A beam in counts given no full_scale has no clipping judged: said,
+// naming it, so that an operator knows a press at its limit reads as any
+// other; with every beam's full scale, nothing is said.
+TEST(PalpationForces, ABeamWithoutAFullScaleIsSaidToHaveNoClippingJudged)
+{
+    const sensors::ChannelScales judged{
+        {"stiff", {"N", 200.0, 2048.0}}, {"soft", {"N", 50.0, 2048.0}}, {"d", {"mm", 1.0, std::nullopt}}};
+    EXPECT_FALSE(compliance::PalpationForces(kCounts, settingsWith(judged)).unjudgedClipping());
+    const sensors::ChannelScales softUnjudged{
+        {"stiff", {"N", 200.0, 2048.0}}, {"soft", {"N", 50.0, std::nullopt}}, {"d", {"mm", 1.0, std::nullopt}}};
+    compliance::PalpationForces forces(kCounts, settingsWith(softUnjudged));
+    const auto said = forces.unjudgedClipping();
+    ASSERT_TRUE(said);
+    EXPECT_NE(said->find("gives soft no \"full_scale\""), std::string::npos) << *said;
+    EXPECT_FALSE(forces.atLimit(false, 1e9));
 }

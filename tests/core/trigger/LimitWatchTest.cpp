@@ -303,4 +303,9 @@ TEST(LimitWatch, AStoredAlarmIsWordedInTheUnitsPeopleReadIt)
     change.value = 2500.0;
     EXPECT_EQ(change.text(spec("p>warning:2000"), readableWording(ChannelKind::Other, "Pa", 2000.0)),
               "p above its warning limit 2 kPa (2.5 kPa)");
+    // A value a thousandfold beyond the level (a board's counts given a
+    // unit they are not in) in its own prefix, not in e-notation.
+    change.value = 3440.0;
+    EXPECT_EQ(change.text(force, readableWording(ChannelKind::Force, "N", 0.000956)),
+              "force above its warning limit 597 µN (3.44 kN)");
 }

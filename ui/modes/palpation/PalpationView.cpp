@@ -71,9 +71,10 @@ QString calibrationLine(const core::compliance::LivePalpation& palpation, const 
                        .arg(calibration.isEmpty() ? PalpationView::tr("none, nominal") : PalpationView::tr("stored"),
                             factorText(*high), factorText(*low))
                        .toHtmlEscaped();
-    if (const auto& mixed = palpation.mixedCalibrationWarning())
-        line += QStringLiteral("<br><span style='color:#b00020'><b>%1</b></span>")
-                    .arg(QString::fromStdString(*mixed).toHtmlEscaped());
+    for (const auto& warning : {palpation.mixedCalibrationWarning(), palpation.unjudgedClipping()})
+        if (warning)
+            line += QStringLiteral("<br><span style='color:#b00020'><b>%1</b></span>")
+                        .arg(QString::fromStdString(*warning).toHtmlEscaped());
     return line;
 }
 
@@ -219,7 +220,7 @@ void PalpationView::updateReadout()
                                    : stiffAtLimit              ? tr("Stiff beam")
                                                                : tr("Soft beam")));
     } else if (state.taring) {
-        m_status->setText(tr("Taking the zero: keep the probe lifted"));
+        m_status->setText(tr("Taking the zero: keep the probe lifted and still"));
     } else if (state.pressing && state.current) {
         m_stiffness->setText(stiffnessText(state.current->first, state.current->second));
         m_stiffness->setStyleSheet(QString());
