@@ -158,7 +158,7 @@ bool ReconnectingSource::tryReconnect()
             m_timeOffset_s = static_cast<double>(m_indexOffset) / m_rate_hz;
             m_lostClock.reset();
             char text[96];
-            std::snprintf(text, sizeof text, "the probe was away %.1f s and came back", away_s);
+            std::snprintf(text, sizeof text, "the device was away %.1f s and came back", away_s);
             m_pastNotices.push_back({m_lostAtTime_s, text + layoutChange(streamChannelsBefore)});
         }
         replaceSource(std::move(source));

@@ -99,13 +99,27 @@ std::optional<int> addDevices(devices::session::LivePipeline& pipeline, const st
     std::vector<std::unique_ptr<devices::ReconnectingSource>> sources;
     for (std::size_t i = 0; i < ports.size(); ++i) {
         const ProbePortArgument& port = ports[i];
+        // A board that states no rate is timed on its lines first, for
+        // seconds, before anything is recorded: said, so that an unplug
+        // meanwhile is understood (the recording has not begun; a device
+        // lost during the recording is waited for).
+        const bool timed = links[i].options.protocol == devices::WireProtocol::Text && !links[i].options.textRate_hz;
+        if (timed)
+            printError(QStringLiteral("%1: timing the board's lines (it states no rate; give --rate to skip this); "
+                                      "the recording begins once they are timed")
+                           .arg(toQString(port.path)));
         try {
             devices::PortSourceOptions portOptions = links[i].options;
             portOptions.textUnits = unitsOf[several ? port.name : std::string()];
             sources.push_back(openProbePort(port.path, links[i].baud, portOptions));
         } catch (const std::exception& e) {
-            printError(several ? QStringLiteral("%1: %2").arg(toQString(port.path), toQString(e.what()))
-                               : toQString(e.what()));
+            const QString before =
+                timed
+                    ? QStringLiteral(" (while its lines were timed, before the recording began: nothing was recorded)")
+                    : QString();
+            printError((several ? QStringLiteral("%1: %2").arg(toQString(port.path), toQString(e.what()))
+                                : toQString(e.what())) +
+                       before);
             return kExitFailure;
         }
     }

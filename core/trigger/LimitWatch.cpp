@@ -182,11 +182,25 @@ std::pair<double, std::string> prefixFor(double value, const std::string& unit)
     return {std::pow(10.0, -3.0 * thousands), kPrefixes[thousands + 5] + unit};
 }
 
+// To `digits` significant digits in plain decimals (1089, not 1.09e+03;
+// 0.00001, not 1e-05), trailing zeros dropped; e-notation only beyond
+// what plain decimals can show in a line.
 std::string significant(double value, int digits)
 {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.*g", digits, value);
-    return text;
+    char text[64];
+    const double size = std::abs(value);
+    if (!std::isfinite(value) || size == 0.0 || size >= 1e12 || size < 1e-9) {
+        std::snprintf(text, sizeof text, "%.*g", digits, value);
+        return text;
+    }
+    const int decimals = std::max(0, digits - 1 - static_cast<int>(std::floor(std::log10(size))));
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    std::string shown = text;
+    if (shown.find('.') != std::string::npos) {
+        shown.erase(shown.find_last_not_of('0') + 1);
+        if (shown.back() == '.') shown.pop_back();
+    }
+    return shown;
 }
 
 }  // namespace
@@ -202,7 +216,8 @@ LimitWording readableWording(ChannelKind kind, const std::string& unit, double l
 {
     double scale = 1.0;
     std::string shown = unit;
-    const bool prefixed = kind != ChannelKind::Strain && !unit.empty();
+    // A count takes no SI prefix (kcounts reads as nothing anyone uses).
+    const bool prefixed = kind != ChannelKind::Strain && !unit.empty() && unit != "counts" && unit != "count";
     if (kind == ChannelKind::Strain && unit.empty()) {  // a strain is a pure number
         scale = 1e6;
         shown = "µε";

@@ -238,6 +238,16 @@ TEST(TextBoardUnitsCli, APalpationBoardsCountsAreReadThroughItsProfilesScaleAndI
     // first may have begun before it); none that clipped is.
     EXPECT_GE(static_cast<int>(readings.size()), presses - clipped - 1);
     EXPECT_LE(static_cast<int>(readings.size()), presses - clipped);
+    // Each clipped press is said in the record, and at the end, as one that
+    // gave no reading: not to be taken for a press never made.
+    const auto events = store.events(id);
+    const auto clippedNotes = std::ranges::count_if(events, [](const core::storage::SessionEvent& event) {
+        return event.note.find("reached a beam's converter limit: no reading") != std::string::npos;
+    });
+    EXPECT_GE(clippedNotes, clipped - 1);
+    EXPECT_LE(clippedNotes, clipped);
+    EXPECT_TRUE(run.out.contains(QStringLiteral("gave none (clipped or out of the probe's range")))
+        << run.out.toStdString();
     // Read through the scale as a probe's chain reads: true within their
     // uncertainty. The presses share one zero, so a recording is one draw
     // of its error (here all six lie 0.2–2.2 u above); the coverage of ±u

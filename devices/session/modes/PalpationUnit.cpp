@@ -8,6 +8,7 @@
 #include "devices/session/modes/StoredCalibrationLookup.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 #include <variant>
 
@@ -64,9 +65,31 @@ void PalpationUnit::startRecording(core::storage::Recorder& recorder)
         recorder.addEvents({core::storage::noteRecord(0.0, *unjudged)});
 }
 
+namespace {
+
+// Why a press gave no stiffness, for the record.
+std::string unreadPressText(const core::compliance::PressReading& press)
+{
+    char span[64];
+    std::snprintf(span, sizeof span, "the press at %.2f–%.2f s", press.start_s, press.end_s);
+    switch (press.status) {
+    case core::compliance::PressStatus::Clipped:
+        return std::string(span) + " reached a beam's converter limit: no reading (press less deep)";
+    case core::compliance::PressStatus::BelowRange:
+    case core::compliance::PressStatus::AboveRange:
+        return std::string(span) + " is outside the probe's range (its force ratio gives no stiffness): no reading";
+    case core::compliance::PressStatus::Ok:
+        break;
+    }
+    return span;
+}
+
+}  // namespace
+
 void PalpationUnit::take(const LiveTake& take)
 {
     std::vector<core::storage::SessionReading> stored;
+    std::vector<core::storage::SessionEvent> notes;
     for (auto& press : resultsForLists(m_later, m_palpation->takeReadings(), take)) {
         PressRecord record{std::move(press), m_siteGrid ? m_siteGrid->currentName() : take.recordingSite, false};
         // Out of range or clipped is a state, not a stiffness: shown, not stored as a number.
@@ -84,10 +107,15 @@ void PalpationUnit::take(const LiveTake& take)
             stored.push_back(std::move(reading));
             record.stored = true;
             if (m_siteGrid) m_siteGrid->advance();  // the site has its reading: the next press is the next site's
+        } else if (take.recorder) {
+            // A press that gives no number is said in the record, so that it
+            // is not taken for one that was never made.
+            notes.push_back(core::storage::noteRecord(record.press.start_s, unreadPressText(record.press)));
         }
         m_presses.push_back(std::move(record));
     }
     if (!stored.empty()) take.recorder->addReadings(std::move(stored));
+    if (!notes.empty()) take.recorder->addEvents(std::move(notes));
 }
 
 void PalpationUnit::takeZeros(core::storage::Recorder* recorder)
@@ -98,9 +126,14 @@ void PalpationUnit::takeZeros(core::storage::Recorder* recorder)
 
 std::string PalpationUnit::storedText(const RecordingSummary&) const
 {
-    const auto stored = std::ranges::count_if(m_presses, &PressRecord::stored);
-    return core::text::countText(static_cast<std::size_t>(stored), "stiffness reading", "stiffness readings") +
-           " stored";
+    const auto stored = static_cast<std::size_t>(std::ranges::count_if(m_presses, &PressRecord::stored));
+    std::string text = core::text::countText(stored, "stiffness reading", "stiffness readings") + " stored";
+    const auto unread = static_cast<std::size_t>(std::ranges::count_if(
+        m_presses, [](const PressRecord& record) { return record.press.status != core::compliance::PressStatus::Ok; }));
+    if (unread > 0)
+        text += "; " + core::text::countText(unread, "press", "presses") +
+                " gave none (clipped or out of the probe's range: the notes say which)";
+    return text;
 }
 
 }  // namespace tactiscope::devices::session

@@ -308,4 +308,13 @@ TEST(LimitWatch, AStoredAlarmIsWordedInTheUnitsPeopleReadIt)
     change.value = 3440.0;
     EXPECT_EQ(change.text(force, readableWording(ChannelKind::Force, "N", 0.000956)),
               "force above its warning limit 597 µN (3.44 kN)");
+    // Counts in plain numbers and without a prefix, a plain number's small
+    // levels in decimals: no e-notation.
+    change.value = 1089.0;
+    EXPECT_EQ(
+        change.text(spec("stiff outside warning:-990..990"), readableWording(ChannelKind::Other, "counts", 990.0)),
+        "stiff outside its warning window -990..990 counts (1089 counts)");
+    change.value = -0.366;
+    EXPECT_EQ(change.text(spec("b outside warning:-1e-05..1e-05"), readableWording(ChannelKind::Other, "", 1e-5)),
+              "b outside its warning window -0.00001..0.00001 (-0.366)");
 }

@@ -25,7 +25,7 @@ namespace {
 // Ornstein–Uhlenbeck level of kWander_s, correlated over 2 s, as on this
 // workstation's ptys (LineRate::kHostWander_s).
 enum class Link { Random, Bursts, Pty };
-constexpr double kWander_s = 25e-6;
+constexpr double kWander_s = LineRate::kHostWander_s;
 
 const char* nameOf(Link link)
 {
