@@ -386,7 +386,14 @@ int runRecord(const QStringList& arguments)
 
     RecordOutput output(db, pipeline, watch->trigger, watch->stopOnCritical);
     const bool progress = ::isatty(STDERR_FILENO) != 0;
-    const auto start = std::chrono::steady_clock::now();
+    // --seconds counts from where the recording begins: one device's from
+    // its stream's start (a profile's setup between the connection and
+    // here, tenths of a second, is recorded too, and was counted on top).
+    auto start = std::chrono::steady_clock::now();
+    if (const auto streamStart_s = first.source().streamStart_host_s(); streamStart_s && pipeline.size() == 1)
+        start = std::min(start, std::chrono::steady_clock::time_point(
+                                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                        std::chrono::duration<double>(*streamStart_s))));
     auto nextProgress = start + std::chrono::seconds(5);
     QTextStream err(stderr);
     for (;;) {

@@ -407,6 +407,10 @@ TEST(TextBoardUnitsCli, ACapacitiveBoardsCountsAreReadThroughItsProfilesScale)
     ASSERT_EQ(channels.size(), 1u);
     EXPECT_EQ(channels[0].descriptor.unit, "counts");
     const std::uint64_t count = store.sampleCount(id);
+    // --seconds 3 at 50 Hz: 150 samples, counted from the recording's start
+    // (the capacitive profile's setup after the connection, tenths of a
+    // second, was recorded and counted on top: 8.37 s for --seconds 8).
+    EXPECT_NEAR(static_cast<double>(count), 150.0, 3.0);
     const auto sent = store.readChannel(id, 0, 0, count);
     core::derived::CapacitiveChannels review(store, id, std::nullopt);
     const auto derived = review.read(0, count);
