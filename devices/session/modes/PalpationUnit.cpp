@@ -35,6 +35,9 @@ PalpationUnit::PalpationUnit(const LiveUnitSetup& setup)
         throw std::invalid_argument("the profile '" + probe.name + "' cannot be used: " + e.what());
     }
     for (const std::size_t i : usable) m_calibrations.push_back(newest[i]);
+    // Said when the probe is set up too, not only in each record.
+    if (const auto unjudged = m_palpation->unjudgedClipping(); unjudged && setup.problems)
+        setup.problems->push_back(*unjudged);
     if (const auto* previous = dynamic_cast<const PalpationUnit*>(setup.previous)) {
         m_palpation->inheritZero(*previous->m_palpation);
         m_siteGrid = previous->m_siteGrid;  // the phantom is the same
