@@ -176,7 +176,7 @@ void LivePalpation::consume(const SampleBlock& block)
 }
 
 // Each beam: its force moved by no more than the contact threshold over
-// the stretch, or its halves agree within their noise (a noisy beam).
+// the stretch, or no step within it beyond its noise (a noisy beam).
 bool LivePalpation::firstZeroSteady() const
 {
     const auto steady = [&](const signal::SteadyWindow& raw, bool highBeam) {
