@@ -322,6 +322,16 @@ int runRecord(const QStringList& arguments)
             printError(QStringLiteral("bad profile: %1").arg(QString::fromStdString(e.what())));
             return kExitUsage;
         }
+        // A unit given for a channel the profile scales makes its values that
+        // unit as printed: the profile's counts_per_unit no longer applies.
+        const auto scales = core::sensors::profileScales(*profile);
+        for (const auto& [channel, unit] : *units)
+            if (const auto scaled = scales.find(channel); scaled != scales.end())
+                printError(QStringLiteral("--units %1=%2: the profile scales %1's counts (%3 counts a %4); the unit "
+                                          "given replaces that scale, so its values are read as %2 as printed")
+                               .arg(toQString(channel), toQString(unit))
+                               .arg(scaled->second.countsPerUnit)
+                               .arg(toQString(scaled->second.unit)));
     }
     core::storage::SessionMetadata metadata;
     metadata.subject = parser.value(QStringLiteral("subject")).toStdString();

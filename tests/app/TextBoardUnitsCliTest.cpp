@@ -206,6 +206,15 @@ TEST(TextBoardUnitsCli, APalpationBoardsCountsAreReadThroughItsProfilesScaleAndI
         << bare.err.toStdString();
     EXPECT_TRUE(bare.err.contains(QStringLiteral("sensor profile's \"channels\""))) << bare.err.toStdString();
 
+    // A unit given for a beam the profile scales replaces the scale: said.
+    const QString scaledProfile = dir.filePath(QStringLiteral("scaled.json"));
+    tactiscope::testing::writeText(scaledProfile, QString::fromStdString(profileJson(p, true)));
+    const CliResult overridden = runCli({"record", "--port", link, "--protocol", "text", "--rate", "200", "--mode",
+                                         "palpation", "--profile", scaledProfile, "--units", "stiff=mN", "--seconds",
+                                         "1", "--db", dir.filePath(QStringLiteral("other.tactiscope"))});
+    EXPECT_TRUE(overridden.err.contains(QStringLiteral("--units stiff=mN: the profile scales stiff's counts")))
+        << overridden.err.toStdString();
+
     const CliResult run = record(true, QStringLiteral("24"));
     ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
     core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
