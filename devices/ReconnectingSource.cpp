@@ -3,6 +3,7 @@
 
 #include "core/SampleBlock.h"
 #include "devices/PortSource.h"
+#include "devices/SteadyClock.h"
 #include "devices/transport/SerialPorts.h"
 
 #include <algorithm>
@@ -137,10 +138,7 @@ bool ReconnectingSource::tryReconnect()
         // a handshake's frames come after it.
         auto resumed = std::chrono::steady_clock::now();
         if (const auto clock = source->hostClock()) {
-            const auto first =
-                std::chrono::steady_clock::time_point(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                    std::chrono::duration<double>(clock->host_s(0.0))));
-            resumed = std::clamp(first, m_lostAt, resumed);
+            resumed = std::clamp(steadyInstant(clock->host_s(0.0)), m_lostAt, resumed);
         }
         const double away_s = std::chrono::duration<double>(resumed - m_lostAt).count();
         // Continue after the last delivered sample, leaving room for what the
@@ -149,9 +147,7 @@ bool ReconnectingSource::tryReconnect()
         // began with lines it was timed on, before the connection was made),
         // or, with no clock, as long after the last as the outage lasted.
         double resumed_s = m_lastEnd_s + away_s;
-        if (m_lostClock)
-            resumed_s = std::max(
-                m_lastEnd_s, m_lostClock->device_s(std::chrono::duration<double>(resumed.time_since_epoch()).count()));
+        if (m_lostClock) resumed_s = std::max(m_lastEnd_s, m_lostClock->device_s(steadySecondsOf(resumed)));
         m_indexOffset = std::max(m_endIndex, static_cast<std::uint64_t>(std::llround(resumed_s * m_rate_hz)));
         {
             const std::lock_guard lock(m_countersMutex);  // the owner reads the offset (notices, clock)

@@ -15,6 +15,7 @@
 #include "core/storage/SessionStore.h"
 #include "devices/DriftWatch.h"
 #include "devices/ReconnectingSource.h"
+#include "devices/SteadyClock.h"
 #include "devices/session/LivePipeline.h"
 #include "devices/session/SessionOfDevices.h"
 
@@ -401,9 +402,7 @@ int runRecord(const QStringList& arguments)
     // here, tenths of a second, is recorded too, and was counted on top).
     auto start = std::chrono::steady_clock::now();
     if (const auto streamStart_s = first.source().streamStart_host_s(); streamStart_s && pipeline.size() == 1)
-        start = std::min(start, std::chrono::steady_clock::time_point(
-                                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                        std::chrono::duration<double>(*streamStart_s))));
+        start = std::min(start, devices::steadyInstant(*streamStart_s));
     auto nextProgress = start + std::chrono::seconds(5);
     QTextStream err(stderr);
     for (;;) {

@@ -15,6 +15,12 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// A zero of the beams' stretches: their means, known to their standard errors.
+RawZero zeroOf(const signal::SteadyWindow& high, const signal::SteadyWindow& low)
+{
+    return {high.mean(), low.mean(), std::pair{high.standardErrorOfMean(), low.standardErrorOfMean()}};
+}
+
 }  // namespace
 
 LivePalpation::LivePalpation(const std::vector<ChannelDescriptor>& channels, double sampleRate_hz,
@@ -86,8 +92,7 @@ std::optional<std::string> LivePalpation::tare()
     if (moving > m_pressSettings.contactThreshold_n)
         return "the beams are moving (their force changed by " + milliNewtons(moving) +
                " mN in the last half second): hold the probe lifted and still, then tare";
-    m_pendingZero = RawZero{m_rawHigh.mean(), m_rawLow.mean(),
-                            std::pair{m_rawHigh.standardErrorOfMean(), m_rawLow.standardErrorOfMean()}};
+    m_pendingZero = zeroOf(m_rawHigh, m_rawLow);
     return std::nullopt;
 }
 
@@ -128,9 +133,7 @@ void LivePalpation::consume(const SampleBlock& block)
             m_firstLow.push(low);
             if (m_firstHigh.full() && firstZeroSteady()) {
                 m_firstZeroTaken = true;
-                setZero(block.firstSampleIndex() + s + 1,
-                        RawZero{m_firstHigh.mean(), m_firstLow.mean(),
-                                std::pair{m_firstHigh.standardErrorOfMean(), m_firstLow.standardErrorOfMean()}});
+                setZero(block.firstSampleIndex() + s + 1, zeroOf(m_firstHigh, m_firstLow));
             }
             for (std::size_t c = 0; c < 3; ++c) display.channel(c)[s] = kNaN;
             continue;
@@ -165,8 +168,7 @@ void LivePalpation::consume(const SampleBlock& block)
     };
     if (m_forceHigh.full() && m_rawHigh.full() && !m_pendingZero && !m_reader.pressing() &&
         std::min(m_forceHigh.mean(), m_forceLow.mean()) < -threshold_n && steady(m_forceHigh) && steady(m_forceLow))
-        m_pendingZero = RawZero{m_rawHigh.mean(), m_rawLow.mean(),
-                                std::pair{m_rawHigh.standardErrorOfMean(), m_rawLow.standardErrorOfMean()}};
+        m_pendingZero = zeroOf(m_rawHigh, m_rawLow);
     m_state.taring = !m_firstZeroTaken;
     m_state.pressing = m_reader.pressing();
     m_state.current = m_reader.current();
