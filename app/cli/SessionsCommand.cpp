@@ -7,6 +7,7 @@
 #include "core/detector/DefectOrder.h"
 #include "core/modes/ModeDefinition.h"
 #include "core/report/VerdictTrail.h"
+#include "core/sensors/SensorProfile.h"
 #include "core/storage/SessionExport.h"
 #include "core/storage/SessionSource.h"
 #include "core/text/JsonWriter.h"
@@ -26,6 +27,18 @@ namespace {
 using core::storage::SessionSource;
 using core::storage::SessionSummary;
 using core::storage::StorageError;
+
+// The scales the session's profile gives channels a board sent as counts
+// (none when it has no profile, or one this version cannot read).
+core::sensors::ChannelScales profileScalesOf(const std::string& profileJson)
+{
+    if (profileJson.empty()) return {};
+    try {
+        return core::sensors::profileScales(core::sensors::parseSensorProfile(profileJson, "the session's"));
+    } catch (const core::sensors::ProfileError&) {
+        return {};
+    }
+}
 
 // A stored text on one line of a table: a newline or another control
 // character in a subject would otherwise start a row of its own.
@@ -185,10 +198,14 @@ int show(SessionSource& store, std::int64_t id, bool json)
             << QString::number(own ? own->duration_s() : 0.0, 'f', 3) << " s), " << lost
             << (lost > 0 ? " of them lost\n" : " lost\n");
         out << QString("channels").leftJustified(18);
+        const auto scales = profileScalesOf(m.profileJson);
         for (std::size_t c = 0; c < channels.size(); ++c) {
             const auto& d = channels[c].descriptor;
+            const auto scale = core::isCounts(d.unit) ? scales.find(d.name) : scales.end();
             out << (c ? ", " : "") << toQString(d.name) << " ["
-                << (d.unit.empty() ? toQString(core::toString(d.kind)) : toQString(d.unit)) << "]";
+                << (d.unit.empty() ? toQString(core::toString(d.kind)) : toQString(d.unit))
+                << (scale != scales.end() ? ", " + toQString(core::sensors::scaleText(scale->second)) : QString())
+                << "]";
             if (d.role) out << " as " << toQString(core::toString(*d.role));
         }
         if (!channels.empty()) out << " at " << channels.front().sampleRate_hz << " Hz";

@@ -35,4 +35,8 @@ struct ChannelScale {
 // By the channel's name.
 using ChannelScales = std::map<std::string, ChannelScale>;
 
+// How its counts are read: "read as mm" (values in the unit), "215.3 a N",
+// "400 a mm from 2048" (counts a unit, from the count of zero).
+std::string scaleText(const ChannelScale& scale);
+
 }  // namespace tactiscope::core::sensors

@@ -222,6 +222,13 @@ TEST(TextBoardUnitsCli, APalpationBoardsCountsAreReadThroughItsProfilesScaleAndI
     ASSERT_GT(id, 0) << run.out.toStdString();
     EXPECT_EQ(store.channels(id)[0].descriptor.unit, "counts");  // the board's raw readings, kept as sent
     EXPECT_EQ(store.channels(id)[2].descriptor.unit, "counts");  // millimetres as printed, read through the profile
+    // Listed with the scale they are read through, not as bare counts.
+    const CliResult shown = runCli({"sessions", "show", QString::number(id), "--db", db});
+    EXPECT_TRUE(shown.out.contains(QStringLiteral("d [counts, read as mm]"))) << shown.out.toStdString();
+    EXPECT_TRUE(shown.out.contains(QStringLiteral("stiff [counts, ") +
+                                   QString::number(tactiscope::testing::countsPerNewton(p.high, p), 'g', 6) +
+                                   QStringLiteral(" a N] as stiff-beam")))
+        << shown.out.toStdString();
 
     // The presses the board printed in the recording, from its samples (the
     // millimetres as printed): a run of displacement beyond 0.5 mm; clipped
