@@ -13,6 +13,10 @@ struct LinkNotice {
     double time_s = 0.0;
     std::string text;
     bool alarm = true;
+    // What it says holds on after it (a board's new layout: a channel no
+    // longer printed is holes from then on), so a recording that begins
+    // later keeps it as a note at its start.
+    bool lasting = false;
 };
 
 }  // namespace tactiscope::devices

@@ -240,8 +240,8 @@ void PortSource::pump(std::chrono::milliseconds timeout)
         if (auto warning = m_text->takeRateWarning())
             m_notices.push_back({blocks.empty() ? 0.0 : blocks.back().endTime_s(), std::move(*warning)});
         for (auto& change : m_text->takeLayoutChanges())
-            m_notices.push_back(
-                {static_cast<double>(change.sampleIndex) / *m_text->sampleRate_hz(), std::move(change.what), false});
+            m_notices.push_back({static_cast<double>(change.sampleIndex) / *m_text->sampleRate_hz(),
+                                 std::move(change.what), false, true});
     } else {
         protocol::StreamOutput out;
         m_binary.push(bytes, arrival_s, out);

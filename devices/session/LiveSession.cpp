@@ -291,6 +291,7 @@ std::optional<std::string> LiveSession::beginRecording(const core::storage::Sess
         return e.what();
     }
     m_metadata = std::move(metadata);
+    m_lastingSeen = 0;
     startLists(LiveClock::Recording);
     // The zero in use reads the session's first samples; those taken before
     // were dropped above.
@@ -500,6 +501,7 @@ void LiveSession::takeNotices(NoticesAt at)
     const double origin_s = origin.value_or(0.0);
     std::vector<core::storage::SessionEvent> stored;
     for (auto& notice : std::exchange(m_noticesWaiting, {})) {
+        if (notice.lasting) keepLasting(notice);
         if (origin && notice.time_s >= origin_s) {
             const double session_s = notice.time_s - origin_s;
             stored.push_back(notice.alarm ? core::storage::alarmRecord(session_s, session_s, notice.text)
@@ -509,7 +511,26 @@ void LiveSession::takeNotices(NoticesAt at)
         }
         m_linkNotices.push_back(std::move(notice));
     }
+    // What still holds from before the recording, at its start: a channel
+    // of holes in it is then explained in it.
+    if (m_recorder && origin) {
+        for (; m_lastingSeen < m_lastingNotices.size(); ++m_lastingSeen)
+            if (const auto& notice = m_lastingNotices[m_lastingSeen]; notice.time_s < origin_s)
+                stored.push_back(core::storage::noteRecord(0.0, "before this recording, " + notice.text));
+    }
     if (!stored.empty()) m_recorder->addEvents(std::move(stored));
+}
+
+// The latest few: a board that changes its layout again and again leaves
+// the last changes, which say what it prints now.
+void LiveSession::keepLasting(const LinkNotice& notice)
+{
+    constexpr std::size_t kKept = 8;
+    m_lastingNotices.push_back(notice);
+    if (m_lastingNotices.size() > kKept) {
+        m_lastingNotices.erase(m_lastingNotices.begin());
+        m_lastingSeen = m_lastingSeen > 0 ? m_lastingSeen - 1 : 0;
+    }
 }
 
 // The lists start again: at a record press, at the first event after a

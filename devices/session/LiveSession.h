@@ -285,6 +285,7 @@ private:
     // its first sample is told however it ended).
     enum class NoticesAt { Poll, RecordingBegins, RecordingEnds };
     void takeNotices(NoticesAt at = NoticesAt::Poll);
+    void keepLasting(const LinkNotice& notice);
     void recordStandingFaults();
     void recordUnstoppedEnd(RecordingSummary& summary);
     void storeClockMapping();
@@ -315,7 +316,11 @@ private:
     std::vector<std::string> m_problems;
     std::vector<LinkNotice> m_linkNotices;
     std::vector<LinkNotice> m_noticesWaiting;  // for the recording's first sample, to place them in it
-    double m_recordingStartHost_s = 0.0;       // steady clock
+    // The lasting notices since the connection (its latest few), and how
+    // many of them the recording under way has seen.
+    std::vector<LinkNotice> m_lastingNotices;
+    std::size_t m_lastingSeen = 0;
+    double m_recordingStartHost_s = 0.0;  // steady clock
     double m_nextClockStore_host_s = 0.0;
     // The trigger armed: its settings and the metadata its sessions take.
     std::optional<core::trigger::TriggerSettings> m_trigger;

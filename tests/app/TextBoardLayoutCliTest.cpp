@@ -141,9 +141,10 @@ TEST(TextBoardLayoutCli, ATriggeredSessionGainsTheChannelItsBoardBeganToPrint)
 
 // A rename while the board's rate is timed, before the recording: the
 // session holds b (its channels are the stream's) as holes only, and both
-// the notice and the holes note say so. Before, the notice did not say it
-// came before the recording, and the note counted no hole in b.
-TEST(TextBoardLayoutCli, ARenameBeforeTheRecordingIsToldAsBeforeItAndItsChannelCountedAsHoles)
+// the notice and the holes note say so, and the session keeps why at its
+// start. Before, the notice did not say it came before the recording, the
+// note counted no hole in b, and the session did not say why b was empty.
+TEST(TextBoardLayoutCli, ARenameBeforeTheRecordingIsKeptAtItsStartAndItsChannelCountedAsHoles)
 {
     std::atomic<std::uint64_t> renamed = std::numeric_limits<std::uint64_t>::max();
     const auto line = [&](std::uint64_t n) {
@@ -175,6 +176,12 @@ TEST(TextBoardLayoutCli, ARenameBeforeTheRecordingIsToldAsBeforeItAndItsChannelC
                                             "began, so not in it)")))
         << err.toStdString();
     EXPECT_TRUE(err.contains(QStringLiteral(": %1 in b").arg(count))) << err.toStdString();
-    for (const auto& event : store.events(id))
-        EXPECT_FALSE(event.note.starts_with("the board's channels")) << event.note;
+    const auto events = store.events(id);
+    const auto kept = std::ranges::find_if(events, [](const auto& e) {
+        return e.note == "before this recording, the board's channels changed: c appeared (holes before the first "
+                         "value); b is no longer printed (holes from here)";
+    });
+    ASSERT_NE(kept, events.end());
+    EXPECT_EQ(kept->start_s, 0.0);
+    for (const auto& event : events) EXPECT_FALSE(event.note.starts_with("the board's channels")) << event.note;
 }
