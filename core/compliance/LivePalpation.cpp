@@ -15,6 +15,12 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// A force in whole millinewtons, as the operator reads it.
+std::string milliNewtons(double n)
+{
+    return std::to_string(static_cast<long long>(std::lround(n * 1e3)));
+}
+
 // A zero of the beams' stretches: their means, known to their standard errors.
 RawZero zeroOf(const signal::SteadyWindow& high, const signal::SteadyWindow& low)
 {
@@ -41,12 +47,12 @@ LivePalpation::LivePalpation(const std::vector<ChannelDescriptor>& channels, dou
 {
 }
 
-void LivePalpation::setZero(std::uint64_t firstIndex, const RawZero& zero)
+void LivePalpation::setZero(std::uint64_t firstIndex, double time_s, const RawZero& zero, std::string note)
 {
     m_forces.setZero(zero);
     m_reader.setZeroUncertainty(m_forces.zeroUncertainty());
     const std::lock_guard lock(m_mutex);
-    m_zero = ZeroChange{firstIndex, zero};
+    m_zero = ZeroChange{firstIndex, zero, time_s, std::move(note)};
     m_zeroChanges.push_back(*m_zero);
 }
 
@@ -84,7 +90,6 @@ std::optional<std::string> LivePalpation::tare()
     const std::lock_guard lock(m_mutex);
     if (m_state.taring) return "the first zero is still being taken: keep the probe lifted and still";
     if (!m_forceHigh.full()) return "wait half a second: the signal since the last zero or gap is too short to judge";
-    const auto milliNewtons = [](double n) { return std::to_string(static_cast<long long>(std::lround(n * 1e3))); };
     if (m_state.pressing)
         return "the probe is pressing (F_H " + milliNewtons(m_forceHigh.mean()) + " mN, F_L " +
                milliNewtons(m_forceLow.mean()) + " mN): lift it, then tare";
@@ -93,6 +98,7 @@ std::optional<std::string> LivePalpation::tare()
         return "the beams are moving (their force changed by " + milliNewtons(moving) +
                " mN in the last half second): hold the probe lifted and still, then tare";
     m_pendingZero = zeroOf(m_rawHigh, m_rawLow);
+    m_pendingZeroNote.clear();
     return std::nullopt;
 }
 
@@ -101,9 +107,11 @@ void LivePalpation::consume(const SampleBlock& block)
     if (block.empty()) return;
     const bool gap = m_nextIndex && block.firstSampleIndex() != *m_nextIndex;
     std::optional<RawZero> newZero;
+    std::string zeroNote;
     {
         const std::lock_guard lock(m_mutex);
         newZero = std::exchange(m_pendingZero, std::nullopt);
+        zeroNote = std::exchange(m_pendingZeroNote, {});
         // A zero is judged on samples without a gap, on one zero.
         if (gap || newZero) {
             m_forceHigh.clear();
@@ -117,7 +125,7 @@ void LivePalpation::consume(const SampleBlock& block)
     m_nextIndex = block.endSampleIndex();
     // Drop a press in progress: it would be read across a gap or two zeros.
     if (gap || newZero) m_reader.dropPress();
-    if (newZero) setZero(block.firstSampleIndex(), *newZero);
+    if (newZero) setZero(block.firstSampleIndex(), block.t0_s(), *newZero, std::move(zeroNote));
     // The first zero comes from samples without a gap: one a gap interrupted starts over.
     if (gap && !m_firstZeroTaken) {
         m_firstHigh.clear();
@@ -133,7 +141,8 @@ void LivePalpation::consume(const SampleBlock& block)
             m_firstLow.push(low);
             if (m_firstHigh.full() && firstZeroSteady()) {
                 m_firstZeroTaken = true;
-                setZero(block.firstSampleIndex() + s + 1, zeroOf(m_firstHigh, m_firstLow));
+                setZero(block.firstSampleIndex() + s + 1, block.timeAt_s(s) + block.dt_s(),
+                        zeroOf(m_firstHigh, m_firstLow));
             }
             for (std::size_t c = 0; c < 3; ++c) display.channel(c)[s] = kNaN;
             continue;
@@ -161,14 +170,21 @@ void LivePalpation::consume(const SampleBlock& block)
     // Forces that hold below zero, steadily, beyond the contact threshold
     // (no press pulls a beam) say the zero was taken under a load held
     // still (a stream that began in a press's hold): the probe is lifted
-    // now, and this stretch becomes the zero.
+    // now, and this stretch becomes the zero. The record says so: what
+    // was read before came from the wrong zero.
     const double threshold_n = m_pressSettings.contactThreshold_n;
     const auto steady = [&](const signal::SteadyWindow& force) {
         return force.spread() <= threshold_n || force.stepScore() <= kSteadyScore;
     };
     if (m_forceHigh.full() && m_rawHigh.full() && !m_pendingZero && !m_reader.pressing() &&
-        std::min(m_forceHigh.mean(), m_forceLow.mean()) < -threshold_n && steady(m_forceHigh) && steady(m_forceLow))
+        std::min(m_forceHigh.mean(), m_forceLow.mean()) < -threshold_n && steady(m_forceHigh) && steady(m_forceLow)) {
         m_pendingZero = zeroOf(m_rawHigh, m_rawLow);
+        m_pendingZeroNote = "the forces held at F_H " + milliNewtons(m_forceHigh.mean()) + " mN, F_L " +
+                            milliNewtons(m_forceLow.mean()) +
+                            " mN with the probe still, below any press: the zero before was taken under a load (a "
+                            "stream begun in a press held still), and the forces and readings before here were read "
+                            "from it; zeroed again here";
+    }
     m_state.taring = !m_firstZeroTaken;
     m_state.pressing = m_reader.pressing();
     m_state.current = m_reader.current();

@@ -41,6 +41,10 @@ namespace tactiscope::core::compliance {
 struct ZeroChange {
     std::uint64_t firstIndex = 0;
     RawZero zero;
+    double time_s = 0.0;  // the stream time of firstIndex
+    // Why, where the record must say it: a zero taken again because the
+    // one before was taken under a load (empty for a first zero, a tare).
+    std::string note;
 };
 
 // What the display shows between presses and while pressing.
@@ -101,7 +105,7 @@ public:
     std::vector<ZeroChange> takeZeroChanges();
 
 private:
-    void setZero(std::uint64_t firstIndex, const RawZero& zero);
+    void setZero(std::uint64_t firstIndex, double time_s, const RawZero& zero, std::string note = {});
     // Whether the stretch in the first-zero windows may be the zero.
     bool firstZeroSteady() const;
 
@@ -118,6 +122,7 @@ private:
     // the current zero) for judging it.
     signal::SteadyWindow m_rawHigh, m_rawLow, m_forceHigh, m_forceLow;
     std::optional<RawZero> m_pendingZero;
+    std::string m_pendingZeroNote;  // its ZeroChange::note
     std::optional<ZeroChange> m_zero;
     std::vector<ZeroChange> m_zeroChanges;
 

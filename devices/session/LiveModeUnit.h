@@ -105,9 +105,9 @@ public:
     // At the record press: the zero in use, into the recording of its mode.
     virtual void startRecording(core::storage::Recorder& recorder);
     // Each poll: completed results into the lists and the store; the zeros
-    // taken since into `recorder` (a recording of its mode) or dropped.
+    // taken since into take.recorder (a recording of its mode) or dropped.
     virtual void take(const LiveTake& take) = 0;
-    virtual void takeZeros(core::storage::Recorder* recorder);
+    virtual void takeZeros(const LiveTake& take);
     // The lists start again (a record press, other roles).
     virtual void clearLists() {}
     // At the end of a recording of its mode, after the last take():

@@ -48,7 +48,7 @@ const std::vector<core::storage::StoredCalibration>& LiveModeUnit::calibrations(
 
 void LiveModeUnit::startRecording(core::storage::Recorder&) {}
 
-void LiveModeUnit::takeZeros(core::storage::Recorder*) {}
+void LiveModeUnit::takeZeros(const LiveTake&) {}
 
 std::optional<core::storage::VerdictDecision> LiveModeUnit::finishRecording(RecordingSummary&, bool)
 {

@@ -575,7 +575,7 @@ void LiveSession::takeResults()
         take.recorder = own ? m_recorder.get() : nullptr;
         take.recordingOtherMode = m_recorder && !own;
         unit->take(take);
-        unit->takeZeros(take.recorder);
+        unit->takeZeros(take);
     }
 }
 

@@ -289,11 +289,24 @@ TEST(LivePalpation, AStreamThatStartsInAPressTakesItsZeroLifted)
     LivePalpation lifted(r.scenario.channels(), kRate_hz, settingsOf(r.scenario), 20.0);
     feed(lifted, r.samples, 0, r.samples.sampleCount(), 0);
     const auto zero = lifted.currentZero()->zero;
+    std::size_t zeroedAgain = 0;
     for (double start_s = expected[1].start_s - 0.05; start_s < expected[1].end_s; start_s += 0.05) {
         const auto first = static_cast<std::size_t>(start_s * kRate_hz);
         LivePalpation fresh(r.scenario.channels(), kRate_hz, settingsOf(r.scenario), 20.0);
         feed(fresh, r.samples, first, r.samples.sampleCount(), first);
         ASSERT_TRUE(fresh.currentZero()) << start_s;
+        // A first zero taken in the press's hold is taken again once the
+        // probe lifts, and that one says why (the record keeps it); the
+        // first says nothing.
+        const auto zeros = fresh.takeZeroChanges();
+        ASSERT_FALSE(zeros.empty());
+        EXPECT_TRUE(zeros.front().note.empty()) << zeros.front().note;
+        for (std::size_t z = 1; z < zeros.size(); ++z) {
+            EXPECT_TRUE(zeros[z].note.starts_with("the forces held at F_H -")) << zeros[z].note;
+            EXPECT_TRUE(zeros[z].note.ends_with("zeroed again here")) << zeros[z].note;
+            EXPECT_NEAR(zeros[z].time_s, static_cast<double>(zeros[z].firstIndex) / kRate_hz, 1e-9);
+        }
+        if (zeros.size() > 1) ++zeroedAgain;
         // Within the contact threshold of the lifted zero (the tare rule's
         // own bound on a steady probe), in each beam's force.
         EXPECT_LE(std::abs(forceOf(r, true, zero.high, fresh.currentZero()->zero.high)), 0.01) << start_s;
@@ -310,4 +323,5 @@ TEST(LivePalpation, AStreamThatStartsInAPressTakesItsZeroLifted)
                         0.01 * kTruth_n_per_m);
         }
     }
+    EXPECT_GE(zeroedAgain, 1u) << "no start fell in the press's hold: the re-zero was not tried";
 }

@@ -39,10 +39,10 @@ void CapacitiveUnit::startRecording(core::storage::Recorder& recorder)
     recorder.addZero(baseline.firstIndex, core::capacitive::baselineJson(baseline.c0_f));
 }
 
-void CapacitiveUnit::takeZeros(core::storage::Recorder* recorder)
+void CapacitiveUnit::takeZeros(const LiveTake& take)
 {
     for (const auto& baseline : m_capacitive->takeBaselineChanges())
-        if (recorder) recorder->addZero(baseline.firstIndex, core::capacitive::baselineJson(baseline.c0_f));
+        if (take.recorder) take.recorder->addZero(baseline.firstIndex, core::capacitive::baselineJson(baseline.c0_f));
 }
 
 std::string CapacitiveUnit::storedText(const RecordingSummary&) const

@@ -24,7 +24,7 @@ public:
     std::optional<std::string> tare() override { return m_capacitive->tare(); }
     void startRecording(core::storage::Recorder& recorder) override;
     void take(const LiveTake&) override {}
-    void takeZeros(core::storage::Recorder* recorder) override;
+    void takeZeros(const LiveTake& take) override;
     std::string storedText(const RecordingSummary& summary) const override;
 
     const std::shared_ptr<core::capacitive::LiveCapacitive>& capacitive() const { return m_capacitive; }

@@ -121,10 +121,19 @@ void PalpationUnit::take(const LiveTake& take)
     if (!notes.empty()) take.recorder->addEvents(std::move(notes));
 }
 
-void PalpationUnit::takeZeros(core::storage::Recorder* recorder)
+// A zero taken again because the one before was under a load is told,
+// and kept as a note where it was taken: what came before read wrongly.
+void PalpationUnit::takeZeros(const LiveTake& take)
 {
-    for (const auto& zero : m_palpation->takeZeroChanges())
-        if (recorder) recorder->addZero(zero.firstIndex, core::compliance::zeroJson(zero.zero));
+    std::vector<core::storage::SessionEvent> notes;
+    for (const auto& zero : m_palpation->takeZeroChanges()) {
+        if (!zero.note.empty()) {
+            if (take.tell) take.tell(zero.time_s, zero.note);
+            if (take.recorder) notes.push_back(core::storage::noteRecord(take.listTime_s(zero.time_s), zero.note));
+        }
+        if (take.recorder) take.recorder->addZero(zero.firstIndex, core::compliance::zeroJson(zero.zero));
+    }
+    if (!notes.empty()) take.recorder->addEvents(std::move(notes));
 }
 
 std::string PalpationUnit::storedText(const RecordingSummary&) const

@@ -28,7 +28,7 @@ public:
     std::optional<std::string> tare() override { return m_palpation->tare(); }
     void startRecording(core::storage::Recorder& recorder) override;
     void take(const LiveTake& take) override;
-    void takeZeros(core::storage::Recorder* recorder) override;
+    void takeZeros(const LiveTake& take) override;
     void clearLists() override { m_presses.clear(); }
     std::string storedText(const RecordingSummary& summary) const override;
 

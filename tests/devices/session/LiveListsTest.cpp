@@ -2,7 +2,8 @@
 // they agree with the record: each of the faults an operator met is
 // reproduced on the simulator (sped up) and checked against the store —
 // the defect list after a stop, the press times while recording, the grid
-// map's site at the record press, a profile chosen while pressing; and a
+// map's site at the record press, a profile chosen while pressing, a
+// stream met in a press held still; and a
 // device that declares nothing records in the general mode, or, given
 // roles, as a panel scan.
 #include "core/ModeCapability.h"
@@ -200,6 +201,118 @@ TEST_F(LiveListsTest, AProfileChosenWhilePressingTakesNoZeroUnderLoad)
         EXPECT_EQ(press.stiffness.range, core::sensors::ComplianceRange::InRange) << i;
         EXPECT_NEAR(press.stiffness.objectStiffness_n_per_m, truth, 0.05 * truth) << i;
     }
+}
+
+namespace {
+
+// A hand that holds a press still (no tremor): its hold is a load a zero
+// may be taken under.
+devices::simulator::PalpationParameters steadyHand()
+{
+    devices::simulator::PalpationParameters p;
+    p.tremorAmplitude_m = 0.0;
+    return p;
+}
+
+// The simulator's palpation stream as a device met at sample `skip`: the
+// samples before it are dropped, and the rest numbered and timed from 0.
+class JoinedMidStreamSource final : public devices::BlockSource {
+public:
+    explicit JoinedMidStreamSource(std::uint64_t skip)
+        : m_skip(skip)
+    {
+        devices::simulator::SimulatorOptions options;
+        options.speed = kSpeed;
+        m_inner = std::make_unique<devices::simulator::SimulatorSource>(
+            std::make_unique<devices::simulator::PalpationScenario>(steadyHand()), options);
+    }
+    std::string name() const override { return m_inner->name(); }
+    devices::DeviceIdentity identity() const override { return m_inner->identity(); }
+    std::optional<core::Mode> declaredMode() const override { return m_inner->declaredMode(); }
+    const std::vector<core::ChannelDescriptor>& channels() const override { return m_inner->channels(); }
+    double nominalSampleRate_hz() const override { return m_inner->nominalSampleRate_hz(); }
+    devices::ReadStatus readBlock(core::SampleBlock& out, std::chrono::milliseconds timeout) override
+    {
+        for (;;) {
+            const auto status = m_inner->readBlock(out, timeout);
+            if (status != devices::ReadStatus::Block) return status;
+            if (out.firstSampleIndex() < m_skip) continue;
+            out.rebase(-static_cast<double>(m_skip) * out.dt_s(), std::uint64_t{0} - m_skip);
+            return status;
+        }
+    }
+
+private:
+    std::unique_ptr<devices::BlockSource> m_inner;
+    std::uint64_t m_skip;
+};
+
+// Where the longest hold of the stream's first presses begins (as a
+// multiple of its blocks), and how many samples it lasts: the run where
+// the displacement stays within 1 % of its press's deepest point.
+std::pair<std::uint64_t, std::size_t> longestHold()
+{
+    devices::simulator::PalpationScenario scenario(steadyHand());
+    core::SampleBlock samples(3, static_cast<std::size_t>(30.0 * scenario.sampleRate_hz()), 0.0,
+                              1.0 / scenario.sampleRate_hz());
+    scenario.generate(samples);
+    const auto d = samples.channel(2);
+    const double lifted = d[0];
+    std::pair<std::uint64_t, std::size_t> longest{0, 0};
+    for (std::size_t in = 0; in < d.size();) {
+        while (in < d.size() && d[in] <= lifted + 1e-3) ++in;
+        std::size_t out = in;
+        while (out < d.size() && d[out] > lifted + 1e-3) ++out;
+        if (out == d.size()) break;
+        const auto press = d.subspan(in, out - in);
+        const double deepest = *std::ranges::max_element(press);
+        std::size_t first = 0;
+        while (press[first] < deepest - 0.01 * (deepest - lifted)) ++first;
+        std::size_t last = press.size() - 1;
+        while (press[last] < deepest - 0.01 * (deepest - lifted)) --last;
+        const std::size_t start = (in + first + 9) / 10 * 10;
+        if (in + last > start && in + last - start > longest.second) longest = {start, in + last - start};
+        in = out;
+    }
+    return longest;
+}
+
+}  // namespace
+
+// A stream met in a press held still takes its first zero under that load;
+// when the probe lifts the zero is taken again, and the recording keeps a
+// note there saying what came before read from the loaded zero, as the
+// operator is told. Before, nothing in the record said so.
+TEST_F(LiveListsTest, AZeroTakenAgainAfterAStartUnderLoadIsNotedInTheRecording)
+{
+    const auto [holdStart, holdLength] = longestHold();
+    ASSERT_GE(static_cast<double>(holdLength), 0.6 * steadyHand().sampleRate_hz) << "no hold long enough to zero in";
+    LiveSession session(std::make_unique<JoinedMidStreamSource>(holdStart), optionsFor(file("h.tactiscope")));
+    ASSERT_EQ(session.mode(), core::Mode::Palpation);
+    ASSERT_FALSE(session.startRecording({}));
+    session.start();
+    std::vector<devices::LinkNotice> told;
+    ASSERT_TRUE(pollUntil(session, [&] {
+        for (auto& notice : session.takeLinkNotices()) told.push_back(std::move(notice));
+        return liveUnit<PalpationUnit>(session).presses().size() >= 2;
+    }));
+    const auto summary = session.stopRecording();
+    ASSERT_TRUE(summary);
+    const auto zeroedAgain = [](const std::string& text) {
+        return text.starts_with("the forces held at F_H -") && text.ends_with("zeroed again here");
+    };
+    EXPECT_EQ(std::ranges::count_if(told, [&](const auto& notice) { return zeroedAgain(notice.text); }), 1);
+    core::storage::SessionStore store(file("h.tactiscope"), core::storage::Database::Access::ReadOnly);
+    const auto events = store.events(summary->session);
+    const auto note = std::ranges::find_if(events, [&](const auto& e) { return zeroedAgain(e.note); });
+    ASSERT_NE(note, events.end());
+    // Where the probe had lifted: after the hold's rest, before the next press.
+    EXPECT_GT(note->start_s, 0.5);
+    const auto readings = store.readings(summary->session);
+    ASSERT_FALSE(readings.empty());
+    EXPECT_LT(note->start_s, readings.front().start_s);
+    const double truth = devices::simulator::PalpationParameters{}.objectStiffness_n_per_m;
+    for (const auto& reading : readings) EXPECT_NEAR(reading.value, truth, 0.05 * truth);
 }
 
 TEST_F(LiveListsTest, ADeviceThatDeclaresNothingRecordsInGeneralModeAndGivenRolesAsAPanelScan)
