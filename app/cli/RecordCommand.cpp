@@ -34,6 +34,10 @@ namespace tactiscope::cli {
 namespace {
 
 constexpr int kDefaultBaud = 921600;
+// How long past a set length, on the host's clock, a recording waits for
+// its last samples (a board's lines come in bursts; a slow one's each
+// second) before it stops without them.
+constexpr double kLastSamplesWait_s = 2.0;
 
 // "DEVICE/CHANNEL" split at its first '/'; none when either part is empty.
 std::optional<std::pair<std::string, std::string>> deviceAndChannel(const std::string& key)
@@ -261,7 +265,10 @@ int runRecord(const QStringList& arguments)
          QStringLiteral("Sample rate in Hz: text, the rate of the lines (else timed by the board's own clock or "
                         "their arrivals, checked against them when given); binary, asked of the device."),
          QStringLiteral("[NAME=]HZ")},
-        {QStringLiteral("seconds"), QStringLiteral("Record this long (default: until Ctrl-C)."), QStringLiteral("S")},
+        {QStringLiteral("seconds"),
+         QStringLiteral("Record this long: exactly S seconds of samples, on the device's clock (default: until "
+                        "Ctrl-C; with --trigger, how long to watch)."),
+         QStringLiteral("S")},
         {QStringLiteral("db"), QStringLiteral("Session store to record into (required; created if missing)."),
          QStringLiteral("FILE")},
         {QStringLiteral("subject"), QStringLiteral("Panel or phantom id."), QStringLiteral("ID")},
@@ -383,9 +390,11 @@ int runRecord(const QStringList& arguments)
         if (const auto exit = setUpOneDevice(first, mode, std::move(profile), *watch)) return *exit;
 
     // Recording from the first block (started before the devices stream),
-    // or from each trigger.
+    // or from each trigger. A recording of --seconds holds exactly that
+    // long of samples (each device's), however late the last of them come.
+    const std::optional<double> length_s = watch->trigger ? std::nullopt : seconds;
     const auto refused =
-        watch->trigger ? pipeline.armTrigger(*watch->trigger, metadata) : pipeline.startRecording(metadata);
+        watch->trigger ? pipeline.armTrigger(*watch->trigger, metadata) : pipeline.startRecording(metadata, length_s);
     if (refused) {
         printError(QStringLiteral("%1%2").arg(watch->trigger ? QStringLiteral("--trigger: ") : QString(),
                                               QString::fromStdString(*refused)));
@@ -400,6 +409,8 @@ int runRecord(const QStringList& arguments)
     // --seconds counts from where the recording begins: one device's from
     // its stream's start (a profile's setup between the connection and
     // here, tenths of a second, is recorded too, and was counted on top).
+    // A recording of a set length ends when it has it, or, should its
+    // samples stop coming, a little after its length on the host's clock.
     auto start = std::chrono::steady_clock::now();
     if (const auto streamStart_s = first.source().streamStart_host_s(); streamStart_s && pipeline.size() == 1)
         start = std::min(start, devices::steadyInstant(*streamStart_s));
@@ -411,8 +422,9 @@ int runRecord(const QStringList& arguments)
         output.tell(news);
         if (news.triggerRefused) break;
         const auto now = std::chrono::steady_clock::now();
-        if (stopRequested() || output.criticalStop() || !pipeline.streaming() ||
-            (seconds && std::chrono::duration<double>(now - start).count() >= *seconds))
+        const double elapsed_s = std::chrono::duration<double>(now - start).count();
+        if (stopRequested() || output.criticalStop() || !pipeline.streaming() || pipeline.recordingComplete() ||
+            (seconds && elapsed_s >= *seconds + (length_s ? kLastSamplesWait_s : 0.0)))
             break;
         if (watch->trigger) {
             // Every session the trigger was asked for is stored.

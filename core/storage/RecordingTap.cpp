@@ -14,21 +14,33 @@ namespace tactiscope::core::storage {
 
 namespace {
 
-// The samples of `block` from `first` on, as a block of their own.
-SampleBlock tailOf(const SampleBlock& block, std::size_t first)
+// Samples [first, first + count) of `block`, as a block of their own.
+SampleBlock sliceOf(const SampleBlock& block, std::size_t first, std::size_t count)
 {
-    SampleBlock tail(block.channelCount(), block.sampleCount() - first, block.timeAt_s(first), block.dt_s(),
-                     block.firstSampleIndex() + first, block.sequence());
+    SampleBlock slice(block.channelCount(), count, block.timeAt_s(first), block.dt_s(),
+                      block.firstSampleIndex() + first, block.sequence());
     for (std::size_t c = 0; c < block.channelCount(); ++c)
-        std::ranges::copy(block.channel(c).subspan(first), tail.channel(c).begin());
-    return tail;
+        std::ranges::copy(block.channel(c).subspan(first, count), slice.channel(c).begin());
+    return slice;
+}
+
+// The first sample of `block` at or after `time_s` (a sample at it, whatever
+// the rounding, counts as at it); the sample count when none is.
+std::size_t firstAtOrAfter(const SampleBlock& block, double time_s)
+{
+    const double first = std::ceil((time_s - 1e-6 * block.dt_s() - block.t0_s()) / block.dt_s());
+    return static_cast<std::size_t>(std::clamp(first, 0.0, static_cast<double>(block.sampleCount())));
 }
 
 }  // namespace
 
-void RecordingTap::attach(std::shared_ptr<Recorder> recorder, RecordingStartFinder start)
+void RecordingTap::attach(std::shared_ptr<Recorder> recorder, RecordingStartFinder start,
+                          std::optional<double> length_s)
 {
     const std::lock_guard lock(m_mutex);
+    m_length_s = length_s;
+    m_until_s.reset();
+    m_complete = false;
     m_recorder = std::move(recorder);
     if (m_recorder) m_recorder->addChannels(m_grownTo);
     m_finder = std::move(start);
@@ -42,6 +54,12 @@ void RecordingTap::channelsGrew(const std::vector<ChannelDescriptor>& all)
     const std::lock_guard lock(m_mutex);
     m_grownTo = all;
     if (m_recorder) m_recorder->addChannels(all);
+}
+
+bool RecordingTap::complete() const
+{
+    const std::lock_guard lock(m_mutex);
+    return m_complete;
 }
 
 std::shared_ptr<Recorder> RecordingTap::detach()
@@ -79,18 +97,25 @@ void RecordingTap::release(const RecordingStart& start)
 
 void RecordingTap::record(const SampleBlock& block)
 {
+    if (m_complete) return;
+    std::size_t first = 0;
     if (m_from_s) {
-        // A sample at the start instant belongs in, whatever the rounding.
-        const double from_s = *m_from_s - 1e-6 * block.dt_s();
-        const double first = std::max(0.0, std::ceil((from_s - block.t0_s()) / block.dt_s()));
-        if (first >= static_cast<double>(block.sampleCount())) return;
+        first = firstAtOrAfter(block, *m_from_s);
+        if (first == block.sampleCount()) return;
         m_from_s.reset();
-        if (first > 0.0) {
-            m_recorder->consume(tailOf(block, static_cast<std::size_t>(first)));
-            return;
-        }
     }
-    m_recorder->consume(block);
+    std::size_t end = block.sampleCount();
+    if (m_length_s) {
+        // A sample is in when most of its period is: a length holds its
+        // whole number of periods whether the rate was measured a little
+        // high or a little low (2 s of a timed 100 Hz board: 200 samples).
+        if (!m_until_s) m_until_s = block.timeAt_s(first) + *m_length_s;
+        const double cut_s = *m_until_s - 0.5 * block.dt_s();
+        end = firstAtOrAfter(block, cut_s);
+        m_complete = end < block.sampleCount() || block.endTime_s() >= cut_s - 1e-6 * block.dt_s();
+        if (end <= first) return;
+    }
+    m_recorder->consume(first == 0 && end == block.sampleCount() ? block : sliceOf(block, first, end - first));
 }
 
 }  // namespace tactiscope::core::storage

@@ -54,8 +54,14 @@ public:
     {
     }
 
-    // From the first block when no finder is given.
-    void attach(std::shared_ptr<Recorder> recorder, RecordingStartFinder start = {});
+    // From the first block when no finder is given; `length_s`: only the
+    // samples whose periods lie (most of each) within it of the first one
+    // recorded, so a recording of a set length holds exactly that, however
+    // late the stop comes.
+    void attach(std::shared_ptr<Recorder> recorder, RecordingStartFinder start = {},
+                std::optional<double> length_s = std::nullopt);
+    // Whether a recording of a set length has all of it.
+    bool complete() const;
     // Returns the recorder that was attached, with what was held for it;
     // no block reaches it afterwards.
     std::shared_ptr<Recorder> detach();
@@ -69,13 +75,16 @@ private:
     void release(const RecordingStart& start);
     void record(const SampleBlock& block);
 
-    std::mutex m_mutex;
+    mutable std::mutex m_mutex;
     std::shared_ptr<Recorder> m_recorder;
     RecordingStartFinder m_finder;    // until the start is known
     std::vector<SampleBlock> m_held;  // meanwhile
     std::size_t m_heldValues = 0;     // in them
     const std::size_t m_mostHeldValues;
-    std::optional<double> m_from_s;            // until a block reaches it
+    std::optional<double> m_from_s;    // until a block reaches it
+    std::optional<double> m_length_s;  // a set length
+    std::optional<double> m_until_s;   // its end, once the first sample is recorded
+    bool m_complete = false;
     std::vector<ChannelDescriptor> m_grownTo;  // the device's channels, once they grew
 };
 

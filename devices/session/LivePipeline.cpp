@@ -108,12 +108,19 @@ std::int64_t LivePipeline::sessionId() const
     return m_devices.empty() ? 0 : m_devices.front().live->sessionId();
 }
 
-std::optional<std::string> LivePipeline::startRecording(const core::storage::SessionMetadata& request)
+bool LivePipeline::recordingComplete() const
+{
+    return !m_devices.empty() &&
+           std::ranges::all_of(m_devices, [](const Device& d) { return d.live->recordingComplete(); });
+}
+
+std::optional<std::string> LivePipeline::startRecording(const core::storage::SessionMetadata& request,
+                                                        std::optional<double> length_s)
 {
     if (isRecording()) return std::nullopt;
     if (m_devices.empty()) return "there is no device to record";
     if (triggerArmed()) return "the armed trigger starts the recordings; disarm it first";
-    if (m_devices.size() == 1) return m_devices.front().live->startRecording(request);
+    if (m_devices.size() == 1) return m_devices.front().live->startRecording(request, length_s);
     // The session lists in its first device's mode (the one the GUI's views read).
     auto whole = request;
     whole.mode = m_devices.front().live->mode();
@@ -125,7 +132,7 @@ std::optional<std::string> LivePipeline::startRecording(const core::storage::Ses
     for (std::size_t i = 0; i < m_devices.size(); ++i) {
         Device& device = m_devices[i];
         device.endedPart.reset();
-        if (auto refusal = device.live->startRecordingPart(request, m_devicesSession->partFor(device.name))) {
+        if (auto refusal = device.live->startRecordingPart(request, m_devicesSession->partFor(device.name), length_s)) {
             for (std::size_t j = 0; j < i; ++j) m_devices[j].live->stopRecording();
             m_devicesSession.reset();  // ends interrupted: nothing of it was meant to be
             return device.name + ": " + *refusal;

@@ -119,7 +119,12 @@ public:
     // Records every device with `request`'s metadata: a session of one, or
     // of several with each device its part. Refused (nothing recorded) when
     // any device cannot record, with which one and why, or while armed.
-    std::optional<std::string> startRecording(const core::storage::SessionMetadata& request);
+    // Given `length_s`, each device's recording holds that long of its
+    // samples (LiveSession::startRecording).
+    std::optional<std::string> startRecording(const core::storage::SessionMetadata& request,
+                                              std::optional<double> length_s = std::nullopt);
+    // Every device's recording of a set length has all of it.
+    bool recordingComplete() const;
     std::optional<RecordingEnd> stopRecording();
     bool isRecording() const;
     std::int64_t sessionId() const;  // the session being recorded; 0 when none

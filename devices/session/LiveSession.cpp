@@ -188,18 +188,20 @@ std::optional<std::string> LiveSession::tare()
     return refusalOf(m_mode).value_or("this mode's processor is not running");
 }
 
-std::optional<std::string> LiveSession::startRecording(const core::storage::SessionMetadata& request)
+std::optional<std::string> LiveSession::startRecording(const core::storage::SessionMetadata& request,
+                                                       std::optional<double> length_s)
 {
     if (isRecording()) return std::nullopt;
     if (m_trigger) return "the armed trigger starts the recordings; disarm it first";
     m_part = m_options.partOf;
     if (auto error = beginRecording(request)) return error;
-    m_tap->attach(m_recorder, startsAt(steadySeconds()));
+    m_tap->attach(m_recorder, startsAt(steadySeconds()), length_s);
     return std::nullopt;
 }
 
 std::optional<std::string> LiveSession::startRecordingPart(const core::storage::SessionMetadata& request,
-                                                           const LiveSessionOptions::PartOfSession& part)
+                                                           const LiveSessionOptions::PartOfSession& part,
+                                                           std::optional<double> length_s)
 {
     if (isRecording()) return std::nullopt;
     if (m_trigger) return "the armed trigger records one device; disarm it first";
@@ -208,7 +210,7 @@ std::optional<std::string> LiveSession::startRecordingPart(const core::storage::
         m_part.reset();
         return error;
     }
-    m_tap->attach(m_recorder, startsAt(part.start_host_s));  // every part from the session's instant
+    m_tap->attach(m_recorder, startsAt(part.start_host_s), length_s);  // every part from the session's instant
     return std::nullopt;
 }
 

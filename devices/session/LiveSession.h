@@ -174,12 +174,17 @@ public:
     // Recording into the store, with `request`'s subject, operator, site and
     // notes; the rest of the metadata is the session's. Returns why it
     // cannot start (the mode cannot run, the store refuses), nothing when
-    // it started.
-    std::optional<std::string> startRecording(const core::storage::SessionMetadata& request);
+    // it started. Given `length_s`, the recording holds the samples within
+    // it of its first (RecordingTap), and then is complete.
+    std::optional<std::string> startRecording(const core::storage::SessionMetadata& request,
+                                              std::optional<double> length_s = std::nullopt);
     // The same as one device's part of a session of several
     // (SessionOfDevices::partFor), for this recording only.
     std::optional<std::string> startRecordingPart(const core::storage::SessionMetadata& request,
-                                                  const LiveSessionOptions::PartOfSession& part);
+                                                  const LiveSessionOptions::PartOfSession& part,
+                                                  std::optional<double> length_s = std::nullopt);
+    // A recording of a set length has all of it: stop it now.
+    bool recordingComplete() const { return m_recorder && m_tap->complete(); }
     // Ends it as complete, with the automatic verdict in panel scan.
     std::optional<RecordingSummary> stopRecording();
     bool isRecording() const { return m_recorder != nullptr; }

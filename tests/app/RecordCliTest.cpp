@@ -65,10 +65,10 @@ TEST(RecordCli, TheStoreHoldsExactlyTheSamplesTheEmulatorSent)
     EXPECT_DOUBLE_EQ(channels[0].sampleRate_hz, 1000.0);
     EXPECT_TRUE(store.gaps(id).empty());
 
-    // About 1.5 s at 1000 Hz (the handshake may add a little).
+    // 1.5 s at 1000 Hz, exactly.
     const std::uint64_t n = store.sampleCount(id);
-    EXPECT_GE(n, 1400u);
-    EXPECT_LE(n, 2500u);
+    EXPECT_EQ(n, 1500u);
+    EXPECT_DOUBLE_EQ(session->duration_s(), 1.5);
     EXPECT_NE(result.out.indexOf(QStringLiteral(": %1 samples per channel").arg(n)), -1);
     // The emulator's samples are the scenario's, sent as binary32.
     auto scenario = devices::simulator::makeScenario("panel-scan", 9, 1000.0);

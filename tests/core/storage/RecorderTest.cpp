@@ -469,6 +469,50 @@ TEST_F(RecorderTest, ATapStoppedOrHoldingAllItMayBeforeTheStartIsPlacedRecordsFr
     }
 }
 
+// A recording of a set length holds its whole periods from its start, on
+// the stream's clock, however late the stop comes: 2 s of a 100 Hz stream
+// are 200 samples whether its rate was measured a little high or low
+// (before, the stop's moment decided: 201 for 2 s, 1000 for 10 s), from the
+// placed start, across a gap (lost samples are time in it too).
+TEST_F(RecorderTest, ATapOfASetLengthRecordsExactlyItsPeriodsAndIsThenComplete)
+{
+    const auto stream = [](double rate_hz, std::uint64_t first, std::size_t count) {
+        SampleBlock block(2, count, static_cast<double>(first) / rate_hz, 1.0 / rate_hz, first);
+        for (std::size_t s = 0; s < count; ++s) block.channel(0)[s] = static_cast<double>(first + s);
+        return block;
+    };
+    // The first sample at or after the start: at 100.0005 Hz sample 50 lies 25 ns before it.
+    for (const auto& [rate_hz, first] : {std::pair{99.9995, 50.0}, {100.0, 50.0}, {100.0005, 51.0}}) {
+        RecordingTap tap;
+        auto recorder = std::make_shared<Recorder>(m_path, palpation(), kChannels, rate_hz, 100'000);
+        tap.attach(
+            recorder, [](double, bool) { return RecordingStart::at(0.5); }, 2.0);
+        std::uint64_t next = 0;
+        for (; !tap.complete() && next < 1000; next += 7) tap.consume(stream(rate_hz, next, 7));
+        EXPECT_EQ(next, 252u) << rate_hz;       // complete with the block that holds the last sample
+        tap.consume(stream(rate_hz, next, 7));  // a late block: past the length
+        EXPECT_EQ(tap.detach(), recorder);
+        recorder->finish(tactiscope::core::SessionStatus::Complete);
+        SessionStore store(m_path, Database::Access::ReadOnly);
+        ASSERT_EQ(store.sampleCount(recorder->sessionId()), 200u) << rate_hz;
+        EXPECT_EQ(store.readChannel(recorder->sessionId(), 0, 0, 1)[0], first) << rate_hz;
+        EXPECT_EQ(store.readChannel(recorder->sessionId(), 0, 199, 1)[0], first + 199.0) << rate_hz;
+    }
+    // A gap of 30 samples within it: 2 s are 200 periods, 170 of them with samples.
+    RecordingTap tap;
+    auto recorder = std::make_shared<Recorder>(m_path, palpation(), kChannels, 100.0, 100'000);
+    tap.attach(recorder, {}, 2.0);
+    tap.consume(stream(100.0, 0, 100));
+    EXPECT_FALSE(tap.complete());
+    tap.consume(stream(100.0, 130, 100));
+    EXPECT_TRUE(tap.complete());
+    EXPECT_EQ(tap.detach(), recorder);
+    const auto stats = recorder->finish(tactiscope::core::SessionStatus::Complete);
+    EXPECT_EQ(stats.samplesWritten, 170u);
+    SessionStore store(m_path, Database::Access::ReadOnly);
+    EXPECT_EQ(store.sampleCount(recorder->sessionId()), 200u);
+}
+
 TEST_F(RecorderTest, ATapRecordsOnlyWhileARecorderIsAttachedAndMarkersLandInTheSession)
 {
     RecordingTap tap;
