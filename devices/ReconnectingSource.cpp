@@ -154,7 +154,9 @@ bool ReconnectingSource::tryReconnect()
             m_timeOffset_s = static_cast<double>(m_indexOffset) / m_rate_hz;
             m_lostClock.reset();
             char text[96];
-            std::snprintf(text, sizeof text, "the device was away %.1f s and came back", away_s);
+            // The samples' outage, not the device's: it may have been back
+            // up to a retry interval before it was opened again.
+            std::snprintf(text, sizeof text, "the device was lost and came back: no samples for %.1f s", away_s);
             m_pastNotices.push_back({m_lostAtTime_s, text + layoutChange(streamChannelsBefore)});
         }
         replaceSource(std::move(source));

@@ -40,8 +40,10 @@ public:
     // Opens a connection; throws (whatever the opener throws) when it fails.
     using Opener = std::function<std::unique_ptr<BlockSource>()>;
 
-    // The first connection is opened here and must succeed.
-    ReconnectingSource(Opener opener, std::chrono::milliseconds retryInterval = std::chrono::milliseconds(500));
+    // The first connection is opened here and must succeed. A lost one is
+    // tried again every `retryInterval`: an outage is told as up to that
+    // much longer than the device was away (no port to open costs little).
+    ReconnectingSource(Opener opener, std::chrono::milliseconds retryInterval = std::chrono::milliseconds(250));
 
     std::string name() const override { return m_name; }
     DeviceIdentity identity() const override { return m_identity; }

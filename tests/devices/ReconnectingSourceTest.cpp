@@ -225,8 +225,9 @@ TEST(ReconnectingSource, ATextBoardThatComesBackPrintingOtherChannelsContinuesBy
     EXPECT_EQ((*grown)[2].name, "c");
     bool told = false;
     for (const auto& notice : acquisition.takeNotices())
-        told = told || notice.text.ends_with(
-                           "came back; it now prints c (holes before); it no longer prints b (holes from here)");
+        told = told || (notice.text.starts_with("the device was lost and came back: no samples for ") &&
+                        notice.text.ends_with("; it now prints c (holes before); it no longer prints b (holes from "
+                                              "here)"));
     EXPECT_TRUE(told);
 
     board.reset();
