@@ -52,8 +52,17 @@ std::optional<std::string> ReconnectingSource::differenceFrom(const BlockSource&
         return "another device came back on the port (" + identity.model + " " + identity.serial + ", where " +
                m_identity.model + " " + m_identity.serial +
                " was): what came before is kept, nothing of it is mixed in; connect it as a new session";
-    if ((!back.textProtocol() && back.channels() != m_channels) || !sameRate(back))
-        return "the device came back with other channels or another rate; reconnect it by hand";
+    if (!back.textProtocol() && back.channels() != m_channels)
+        return "the device came back with other channels; reconnect it by hand";
+    if (!sameRate(back)) {
+        // One session holds one rate: a sketch with another delay is a new recording.
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "the device came back at another rate (%.6g Hz, where it was %.6g Hz): what came before is "
+                      "kept; record it again as a new session",
+                      back.nominalSampleRate_hz(), m_rate_hz);
+        return text;
+    }
     return std::nullopt;
 }
 

@@ -125,6 +125,10 @@ std::optional<QString> RecordOutput::triggerText(const devices::session::Trigger
     const QString condition = toQString(m_pipeline.device(0).readableText(m_trigger->condition));
     switch (status.state) {
     case TriggerState::Waiting:  // an edge waits only for its hold-off; a level also for its end
+        if (!status.valueSeen)
+            return QStringLiteral("trigger waiting for a first value of %1 (none yet: a force has none until its "
+                                  "mode's zero is taken)")
+                .arg(toQString(m_trigger->condition.quantity));
         return m_trigger->condition.isEdge()
                    ? QStringLiteral("trigger waiting for its hold-off to pass")
                    : QStringLiteral("trigger waiting until %1 no longer holds").arg(condition);
@@ -236,8 +240,11 @@ void RecordOutput::tellEndProblem(const std::string& device, const devices::sess
         printError(from(device) + toQString(summary.stats.error));
         m_exit = kExitFailure;
     } else if (summary.lostAt_s) {
-        printError(QStringLiteral("%1the probe was lost at %2 s and did not come back; %3 samples kept")
-                       .arg(from(device), at(*summary.lostAt_s))
+        // Not taken back: why follows (the link's error, after the stop).
+        printError(QStringLiteral("%1the probe was lost at %2 s and %3; %4 samples kept")
+                       .arg(from(device), at(*summary.lostAt_s),
+                            summary.stoppedBecause.empty() ? QStringLiteral("did not come back")
+                                                           : QStringLiteral("not taken back"))
                        .arg(summary.stats.samplesWritten));
         m_exit = kExitFailure;
     }

@@ -155,6 +155,30 @@ void listEvents(QTextStream& out, const std::vector<core::storage::SessionEvent>
             << '\n';
 }
 
+// The readings under their count, as the events are listed: when, what,
+// the value with its standard uncertainty, where, and whose when not the
+// recording's own (a saved re-analysis).
+void listReadings(QTextStream& out, const std::vector<core::storage::SessionReading>& readings)
+{
+    constexpr std::size_t kShown = 20;
+    const auto seconds = [](double t_s) { return QLocale::c().toString(t_s, 'f', 3); };
+    for (std::size_t i = 0; i < std::min(readings.size(), kShown); ++i) {
+        const auto& r = readings[i];
+        QString what = toQString(r.quantity) + QLatin1Char(' ') + QLocale::c().toString(r.value, 'g', 6);
+        if (r.standardError) what += QStringLiteral(" ± ") + QLocale::c().toString(*r.standardError, 'g', 2);
+        what += QLatin1Char(' ') + toQString(r.unit);
+        if (!r.site.empty()) what += QStringLiteral(" at ") + toQString(r.site);
+        if (r.analysis != core::storage::kLiveAnalysis) what += QStringLiteral(" (%1)").arg(toQString(r.analysis));
+        out << QString(18, QLatin1Char(' '))
+            << (seconds(r.start_s) + QStringLiteral("–") + seconds(r.end_s) + QStringLiteral(" s")).leftJustified(18)
+            << ' ' << oneCell(what.toStdString()) << '\n';
+    }
+    if (readings.size() > kShown)
+        out << QString(18, QLatin1Char(' '))
+            << QStringLiteral("… and %1 more (export --format json lists them all)").arg(readings.size() - kShown)
+            << '\n';
+}
+
 int show(SessionSource& store, std::int64_t id, bool json)
 {
     if (json) {
@@ -224,7 +248,9 @@ int show(SessionSource& store, std::int64_t id, bool json)
         line("clock", core::timing::clockMappingText(part.clockJson));
         line("events", eventsText(store, part.id));
         listEvents(out, store.events(part.id));
-        line("readings", std::to_string(store.readings(part.id).size()));
+        const auto partReadings = store.readings(part.id);
+        line("readings", std::to_string(partReadings.size()));
+        listReadings(out, partReadings);
         partEvents += eventCount(store, part.id);
     }
     if (!parts.empty()) out << '\n';
@@ -232,7 +258,9 @@ int show(SessionSource& store, std::int64_t id, bool json)
     line("events", parts.empty() ? eventsText(store, id)
                                  : std::to_string(eventCount(store, id) + partEvents) + " with its parts'");
     if (parts.empty()) listEvents(out, store.events(id));
-    line("readings", std::to_string(store.readings(id).size()));
+    const auto readings = store.readings(id);
+    line("readings", std::to_string(readings.size()));
+    listReadings(out, readings);
     line("annotations", std::to_string(store.annotations(id).size()));
     return kExitOk;
 }

@@ -187,6 +187,7 @@ void LivePalpation::consume(const SampleBlock& block)
     }
     m_state.taring = !m_firstZeroTaken;
     m_state.pressing = m_reader.pressing();
+    m_state.pressStart_s = m_reader.pressing() ? std::optional(m_reader.pressStart_s()) : std::nullopt;
     m_state.current = m_reader.current();
     m_state.atLimit = m_reader.pressAtLimit();
     m_readings.insert(m_readings.end(), m_completed.begin(), m_completed.end());

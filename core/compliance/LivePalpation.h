@@ -51,6 +51,7 @@ struct ZeroChange {
 struct PalpationState {
     bool taring = true;
     bool pressing = false;
+    std::optional<double> pressStart_s;  // while pressing, in stream time
     // While pressing: the mean k_o so far and its standard error, N/m.
     std::optional<std::pair<double, double>> current;
     // While pressing: the samples so far at each beam's ADC limit (a

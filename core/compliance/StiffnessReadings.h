@@ -161,6 +161,7 @@ public:
     void setZeroUncertainty(std::optional<ZeroUncertainty> zero) { m_zero = zero; }
 
     bool pressing() const { return m_pressing; }
+    double pressStart_s() const { return m_start_s; }  // while pressing
     // The samples of the press in progress at the ADC's limit, per beam.
     const BeamLimits& pressAtLimit() const { return m_atLimit; }
     // While pressing: k_o of the force ratio so far and its standard error

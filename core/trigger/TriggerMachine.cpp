@@ -73,6 +73,7 @@ TriggerMachine::Step TriggerMachine::push(std::uint64_t index, double value)
         m_previous.reset();
         return step;
     }
+    m_valueSeen = true;
     const bool holds = c.holds(value);
     const bool begins = c.begins(m_previous, value);
     m_previous = value;

@@ -64,6 +64,9 @@ public:
     Step push(std::uint64_t index, double value);
 
     TriggerState state() const { return m_state; }
+    // Whether any sample had a value (a derived quantity has none until its
+    // mode's zero is taken): before, Waiting is for a first value.
+    bool valueSeen() const { return m_valueSeen; }
     unsigned sessionsCut() const { return m_cut; }
     std::uint64_t preSamples() const { return m_pre; }
     const TriggerSettings& settings() const { return m_settings; }
@@ -73,6 +76,7 @@ private:
     std::uint64_t m_pre, m_post, m_holdOff;
     TriggerState m_state = TriggerState::Waiting;
     std::optional<double> m_previous;
+    bool m_valueSeen = false;
     std::optional<std::uint64_t> m_firstSeen;  // the stream's first index: a session reaches back no further
     std::optional<TriggeredSpan> m_open;
     std::optional<std::uint64_t> m_clearedAt;  // the open session's condition cleared here

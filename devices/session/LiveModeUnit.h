@@ -86,6 +86,9 @@ struct LiveTake {
     // own detector disagrees), at its stream time, as the link's notices
     // are told; the unit stores its own alarm while recording.
     std::function<void(double, std::string)> tell;
+    // The recording's last take: a result still under way (a press begun
+    // in it) will not be in it, which the unit may say.
+    bool recordingEnds = false;
 };
 
 class LiveModeUnit {

@@ -330,9 +330,12 @@ void LiveSession::recordUnstoppedEnd(RecordingSummary& summary)
         summary.lostAt_s = lostAt_s;
         summary.samplesLostAtEnd = static_cast<std::uint64_t>(std::llround(silence_s * rate_hz));
         m_recorder->markLostUntil(lostAt_s + silence_s);
+        // A link that failed for good may have found the device back, and
+        // not taken it (another device, another rate): not "did not come back".
+        const bool refused = acquired.state == AcquisitionState::Failed;
         char text[128];
-        std::snprintf(text, sizeof text, "the probe was lost at %.1f s and did not come back: %.1f s without samples",
-                      lostAt_s, silence_s);
+        std::snprintf(text, sizeof text, "the probe was lost at %.1f s and %s: %.1f s without samples", lostAt_s,
+                      refused ? "not taken back" : "did not come back", silence_s);
         alarms.push_back(core::storage::alarmRecord(lostAt_s, lostAt_s + silence_s, text));
     }
     if (!alarms.empty()) m_recorder->addEvents(std::move(alarms));
@@ -367,7 +370,7 @@ RecordingSummary LiveSession::finishRecording()
     m_tap->detach();
     m_gate->detach();
     if (const auto origin = recordingOrigin_s()) m_lists.origin_s = *origin;
-    takeResults();  // what completed up to the last recorded block
+    takeResults(true);  // what completed up to the last recorded block
     takeNotices(NoticesAt::RecordingEnds);
     takeLimitAlarms();
     for (const auto& raised : m_raisedAlarms) storeAlarm(raised, m_recorder->sessionTime_s());
@@ -556,9 +559,10 @@ double LiveSession::listTime_s(double streamTime_s) const
 // Each unit's completed results: into the lists, and into the store while
 // its mode records; while another mode records, a unit's processor runs on,
 // unseen and unstored. After a stop the first new entry starts the lists.
-void LiveSession::takeResults()
+void LiveSession::takeResults(bool recordingEnds)
 {
     LiveTake take;
+    take.recordingEnds = recordingEnds && m_recorder;
     take.listTime_s = [this](double t_s) { return listTime_s(t_s); };
     take.adding = [this] {
         if (m_lists.clock == LiveClock::Recorded) startLists(LiveClock::SinceConnect);

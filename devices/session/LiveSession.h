@@ -284,7 +284,9 @@ private:
     void startLists(LiveClock clock);
     double listTime_s(double streamTime_s) const;
     LiveModeUnit* unitOf(core::Mode mode) const;
-    void takeResults();  // each unit's completed results and zeros
+    // Each unit's completed results and zeros; `recordingEnds`: the last
+    // take of the recording (LiveTake::recordingEnds).
+    void takeResults(bool recordingEnds = false);
     // The link's notices are taken at each poll, as a recording begins
     // (what came before is in no session) and as it ends (what waited for
     // its first sample is told however it ended).

@@ -67,7 +67,7 @@ TriggerStatus TriggerGate::status() const
 {
     const std::lock_guard lock(m_mutex);
     if (!m_machine) return {};
-    return {m_machine->state(), m_machine->sessionsCut()};
+    return {m_machine->state(), m_machine->sessionsCut(), m_machine->valueSeen()};
 }
 
 std::optional<TriggeredSession> TriggerGate::pendingStart() const

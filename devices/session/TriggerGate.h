@@ -42,6 +42,7 @@ struct TriggeredStart {
 struct TriggerStatus {
     core::trigger::TriggerState state = core::trigger::TriggerState::Waiting;
     unsigned sessionsCut = 0;
+    bool valueSeen = false;  // TriggerMachine::valueSeen
 };
 
 class TriggerGate final : public core::BlockSink {

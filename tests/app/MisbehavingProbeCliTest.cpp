@@ -237,7 +237,10 @@ TEST(MisbehavingProbe, AProbeThatComesBackChangedEndsTheRecordingWithWhatCameBef
     QTemporaryDir dir;
     const auto r = recordAcrossAReplug(dir, {"--scenario", "panel-scan", "--rate", "500"});
     EXPECT_EQ(r.exitCode, 1) << r.out.toStdString();
-    EXPECT_TRUE(r.err.contains(QStringLiteral("came back with other channels or another rate"))) << r.err.toStdString();
+    // Said, and not contradicted ("did not come back" beside "came back").
+    EXPECT_FALSE(r.err.contains(QStringLiteral("did not come back"))) << r.err.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("came back at another rate (500 Hz, where it was 1000 Hz)")))
+        << r.err.toStdString();
     ASSERT_GT(r.session, 0) << r.out.toStdString();
     auto store = storeIn(dir);
     EXPECT_DOUBLE_EQ(store.channels(r.session)[0].sampleRate_hz, 1000.0);  // nothing of the 500 Hz device mixed in

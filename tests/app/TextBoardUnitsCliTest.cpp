@@ -250,6 +250,11 @@ TEST(TextBoardUnitsCli, APalpationBoardsCountsAreReadThroughItsProfilesScaleAndI
     ASSERT_GE(clipped, 1);
     ASSERT_GE(presses - clipped, 3);
     const auto readings = store.readings(id);
+    // Each reading is listed by `sessions show` with its value and unit.
+    for (const auto& reading : readings)
+        EXPECT_TRUE(shown.out.contains(QStringLiteral("stiffness %1 ± ").arg(reading.value, 0, 'g', 6)))
+            << reading.value << "\n"
+            << shown.out.toStdString();
     // Every press that ended in the recording and did not clip is read (the
     // first may have begun before it); none that clipped is.
     EXPECT_GE(static_cast<int>(readings.size()), presses - clipped - 1);

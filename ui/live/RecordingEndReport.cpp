@@ -28,7 +28,10 @@ void tellPartProblem(QWidget* window, const std::string& device, std::int64_t se
                                    .arg(session)});
     else if (summary.lostAt_s)
         reportProblem(window, {tr("Probe lost"),
-                               who + tr("The probe was lost at %1 s and did not come back before the stop.")
+                               who + (summary.stoppedBecause.empty()
+                                          ? tr("The probe was lost at %1 s and did not come back before the stop.")
+                                          : tr("The probe was lost at %1 s and was not taken back: the details say "
+                                               "why."))
                                          .arg(fixedText(*summary.lostAt_s, 1)),
                                QString::fromStdString(summary.stoppedBecause),
                                tr("Session %1 keeps every sample up to the loss; the time after it is a gap with an "

@@ -117,6 +117,23 @@ void PalpationUnit::take(const LiveTake& take)
         }
         m_presses.push_back(std::move(record));
     }
+    // A press begun in the recording and not ended in it gives no reading
+    // there: said, as a clipped one is (its samples past the end are not
+    // the recording's).
+    if (take.recorder && take.recordingEnds) {
+        std::vector<double> unended;
+        for (const auto& press : m_later)
+            if (press.start_s <= take.recordedUntil_s) unended.push_back(press.start_s);
+        if (const auto start = m_palpation->state().pressStart_s; start && *start <= take.recordedUntil_s)
+            unended.push_back(*start);
+        for (const double start_s : unended) {
+            char text[112];
+            std::snprintf(text, sizeof text,
+                          "the press at %.2f s was still under way when the recording ended: no reading",
+                          take.listTime_s(start_s));
+            notes.push_back(core::storage::noteRecord(take.listTime_s(start_s), text));
+        }
+    }
     if (!stored.empty()) take.recorder->addReadings(std::move(stored));
     if (!notes.empty()) take.recorder->addEvents(std::move(notes));
 }

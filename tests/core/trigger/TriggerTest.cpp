@@ -141,6 +141,15 @@ TEST(TriggerMachine, WindowsAndNoValues)
     ASSERT_EQ(out.ended.size(), 1U);
     EXPECT_EQ(out.ended[0].trigger, 3U);  // a lost sample (NaN) triggers nothing
     EXPECT_EQ(out.ended[0].end, 4U);
+    // Before any value (a force before its zero) the machine waits for a
+    // first one, which its status says; it judged nothing yet.
+    TriggerMachine unknown(settings("force>0.5", 0.0, 0.0), 100.0);
+    run(unknown, {nan, nan});
+    EXPECT_FALSE(unknown.valueSeen());
+    EXPECT_EQ(unknown.state(), TriggerState::Waiting);
+    run(unknown, {0.0}, 2);
+    EXPECT_TRUE(unknown.valueSeen());
+    EXPECT_EQ(unknown.state(), TriggerState::Armed);
     EXPECT_THROW(TriggerMachine(settings("x>1", -1.0, 0.0), 100.0), std::invalid_argument);
     EXPECT_THROW(TriggerMachine(settings("x>1", 0.0, 0.0, 0.0, 0), 100.0), std::invalid_argument);
 }

@@ -296,6 +296,8 @@ TEST_F(LiveListsTest, AZeroTakenAgainAfterAStartUnderLoadIsNotedInTheRecording)
         for (auto& notice : session.takeLinkNotices()) told.push_back(std::move(notice));
         return liveUnit<PalpationUnit>(session).presses().size() >= 2;
     }));
+    // Stopped in a press: it gives no reading, and the record says so.
+    ASSERT_TRUE(pollUntil(session, [&] { return liveUnit<PalpationUnit>(session).palpation()->state().pressing; }));
     const auto summary = session.stopRecording();
     ASSERT_TRUE(summary);
     const auto zeroedAgain = [](const std::string& text) {
@@ -313,6 +315,11 @@ TEST_F(LiveListsTest, AZeroTakenAgainAfterAStartUnderLoadIsNotedInTheRecording)
     EXPECT_LT(note->start_s, readings.front().start_s);
     const double truth = devices::simulator::PalpationParameters{}.objectStiffness_n_per_m;
     for (const auto& reading : readings) EXPECT_NEAR(reading.value, truth, 0.05 * truth);
+    const auto unended = std::ranges::find_if(events, [](const auto& e) {
+        return e.note.ends_with("was still under way when the recording ended: no reading");
+    });
+    ASSERT_NE(unended, events.end());
+    EXPECT_GT(unended->start_s, readings.back().end_s);
 }
 
 TEST_F(LiveListsTest, ADeviceThatDeclaresNothingRecordsInGeneralModeAndGivenRolesAsAPanelScan)
