@@ -142,8 +142,8 @@ std::optional<std::string> PortSource::rateNote() const
                       rate.span_s);
     char text[400];
     std::snprintf(text, sizeof text,
-                  "the sample rate, %s, was measured %s: a text device states no rate, so every time in this "
-                  "recording rests on it",
+                  "the sample rate, %s (standard uncertainty), was measured %s: a text device states no rate, so "
+                  "every time in this recording rests on it",
                   measured, basis);
     return text;
 }

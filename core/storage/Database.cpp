@@ -1,6 +1,8 @@
 // The SQLite wrapper: error translation and handle ownership.
 #include "core/storage/Database.h"
 
+#include "core/storage/StoreIdentity.h"
+
 #include <sqlite3.h>
 
 #include <cerrno>
@@ -206,6 +208,7 @@ Database::Database(const std::string& path, Access access)
     if (std::filesystem::is_directory(path, error))  // else SQLite says "disk I/O error"
         throw StoreInputError(path +
                               " is a folder, not a session store; choose a store file (or a new file name) in it");
+    refuseSeveralNames(path);
     const int flags = access == Access::ReadOnly ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
     // On read-only media SQLite cannot make the WAL's shared-memory file a
     // reader needs: nobody can be writing there, so the file is read as

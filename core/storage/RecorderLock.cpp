@@ -2,6 +2,7 @@
 #include "core/storage/RecorderLock.h"
 
 #include "core/storage/Database.h"
+#include "core/storage/StoreIdentity.h"
 
 #include <cerrno>
 #include <chrono>
@@ -13,9 +14,11 @@
 
 namespace tactiscope::core::storage {
 
+// Beside the store's own file, as SQLite's -wal: one lock whatever link
+// the store is reached by (core/storage/StoreIdentity.h).
 std::string RecorderLock::lockPath(const std::string& storePath)
 {
-    return storePath + "-recorder.lock";
+    return realStorePath(storePath) + "-recorder.lock";
 }
 
 namespace {

@@ -4,6 +4,7 @@
 
 #include "core/storage/Database.h"
 #include "core/storage/RecorderLock.h"
+#include "core/storage/StoreIdentity.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -79,7 +80,8 @@ mode_t ordinaryMode()
 
 std::vector<std::string> storeFiles(const std::string& storePath)
 {
-    return {storePath, storePath + "-wal", storePath + "-shm", RecorderLock::lockPath(storePath)};
+    const std::string real = realStorePath(storePath);  // SQLite's -wal and -shm are beside it
+    return {storePath, real + "-wal", real + "-shm", RecorderLock::lockPath(storePath)};
 }
 
 void refuseOverwriting(const std::string& output, const std::vector<std::string>& inputs)

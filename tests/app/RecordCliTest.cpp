@@ -2,7 +2,8 @@
 // processes over a real pseudo-terminal, into a real store: the samples in
 // the store are exactly those the emulator sent, the mode's analysis runs on
 // them (events of a panel scan, stiffness readings of palpation), Ctrl-C
-// ends a recording cleanly, and bad input is refused with exit code 2.
+// ends a recording cleanly, bad input is refused with exit code 2, and a
+// store reached through a link is the same store.
 #include "core/SampleBlock.h"
 #include "core/storage/Recorder.h"
 #include "core/storage/SessionStore.h"
@@ -290,4 +291,49 @@ TEST(RecordCli, BadInputExitsWithCodeTwoAndAMissingPortWithOne)
         runCli({"record", "--port", dir.filePath("no-such-port"), "--db", dir.filePath("s.tactiscope")});
     EXPECT_EQ(missing.exitCode, 1);
     EXPECT_TRUE(missing.err.contains(QStringLiteral("no-such-port"))) << missing.err.toStdString();
+}
+
+// A store is its file, whatever name reaches it (issue 54). Through a
+// symbolic link a second recorder is refused and a reader sees the
+// session being recorded as recording (a sync sends it only once
+// complete); before, each name had its own lock, so both recorded and a
+// reader through the link took the live session for one cut by a crash.
+// A store with two names (a hard link) would be two write-ahead logs of
+// one file: refused, saying why, by every command.
+TEST(RecordCli, AStoreIsOneFileWhateverNameReachesIt)
+{
+    QTemporaryDir dir;
+    const QString real = dir.filePath("line3.tactiscope");
+    const QString link = dir.filePath("link.tactiscope");
+    core::storage::SessionMetadata metadata;
+    metadata.mode = tactiscope::core::Mode::General;
+    auto recorder = std::make_unique<core::storage::Recorder>(
+        real.toStdString(), metadata, std::vector<core::ChannelDescriptor>{{"x", "m", core::ChannelKind::Position}},
+        100.0, 1000);
+    std::filesystem::create_symlink(real.toStdString(), link.toStdString());
+    QProcess emulator;
+    const QString probe = dir.filePath("probe");
+    ASSERT_TRUE(startEmulator(emulator, probe));
+    const auto second = runCli({"record", "--port", probe, "--db", link, "--seconds", "1"});
+    stopEmulator(emulator);
+    EXPECT_EQ(second.exitCode, 2) << second.out.toStdString();
+    EXPECT_TRUE(second.err.contains(QStringLiteral("another Tactiscope is recording into")))
+        << second.err.toStdString();
+    const auto shown = runCli({"sessions", "show", "last", "--db", link});
+    EXPECT_EQ(shown.exitCode, 0) << shown.err.toStdString();
+    EXPECT_TRUE(shown.out.contains(QRegularExpression(QStringLiteral("status +recording\n"))))
+        << shown.out.toStdString();
+    recorder->finish(tactiscope::core::SessionStatus::Complete);
+    recorder.reset();
+    // No lock or log of its own beside the link.
+    EXPECT_FALSE(std::filesystem::exists(link.toStdString() + "-recorder.lock"));
+    EXPECT_FALSE(std::filesystem::exists(link.toStdString() + "-wal"));
+
+    const QString hard = dir.filePath("hard.tactiscope");
+    std::filesystem::create_hard_link(real.toStdString(), hard.toStdString());
+    for (const QString& name : {real, hard}) {
+        const auto listed = runCli({"sessions", "list", "--db", name});
+        EXPECT_EQ(listed.exitCode, 2) << name.toStdString();
+        EXPECT_TRUE(listed.err.contains(QStringLiteral("has 2 names (hard links)"))) << listed.err.toStdString();
+    }
 }

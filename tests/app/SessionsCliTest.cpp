@@ -179,6 +179,31 @@ TEST(SessionsCli, ASessionIsNamedByItsUuidAsByItsId)
     EXPECT_EQ(runCli({"sessions", "--db", db, "show", "00000000-0000-4000-8000-000000000000"}).exitCode, 2);
 }
 
+// "last" is the session stored last, whatever the host's clock said (issue
+// 54): after a clock set back a day, the new session begins "before" the
+// old one; before, `report --session last` wrote the old one's report
+// under the new one's name.
+TEST(SessionsCli, LastIsTheSessionStoredLastWhateverTheClockSaid)
+{
+    QTemporaryDir dir;
+    const QString db = makeStore(dir);
+    {
+        core::storage::SessionStore store(db.toStdString());
+        core::storage::SessionMetadata metadata;
+        metadata.mode = tactiscope::core::Mode::PanelScan;
+        metadata.subject = "door-18";
+        const std::string yesterday = "2026-11-20T08:00:00.000Z";
+        const auto id =
+            store.beginSession(metadata, std::vector<core::ChannelDescriptor>{{"a", "", core::ChannelKind::Strain}},
+                               200.0, {{}, yesterday, {}});
+        store.endSession(id, tactiscope::core::SessionStatus::Complete, yesterday);
+        ASSERT_EQ(id, 3);
+    }
+    const auto shown = runCli({"sessions", "--db", db, "show", "last", "--json"});
+    ASSERT_EQ(shown.exitCode, 0) << shown.err.toStdString();
+    EXPECT_EQ(parse(shown.out).object()["session"].toObject()["subject"].toString(), QStringLiteral("door-18"));
+}
+
 TEST(SessionsCli, JsonExportHoldsMetadataAndColumns)
 {
     QTemporaryDir dir;
