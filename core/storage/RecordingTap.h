@@ -8,7 +8,8 @@
 // time the source's clock says, and a clock may need the stream that
 // follows to say it (a board's lines that waited in its port look, until
 // later lines arrive on time, like the latest ones). The tap holds the
-// blocks until the start is known, then records from it.
+// blocks until the start is known, then records from it; a recording of a
+// set length (`record --seconds`) ends where the stream's clock says.
 #pragma once
 
 #include "core/BlockSink.h"
