@@ -2,11 +2,13 @@
 #include "core/storage/Recorder.h"
 
 #include "core/SampleBlock.h"
+#include "core/storage/DefectRecords.h"
 #include "core/text/UtcTime.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 #include <vector>
 
@@ -23,7 +25,9 @@ Recorder::Recorder(const std::string& storePath, const SessionMetadata& metadata
 {
     m_store.refuseIfDamaged();  // a damaged file only gets worse with every page written
     if (m_lock) m_store.markCrashedSessionsInterrupted();
-    m_session = m_store.beginSession(metadata, channels, sampleRate_hz);
+    m_wallStart = std::chrono::system_clock::now();
+    m_steadyStart = std::chrono::steady_clock::now();
+    m_session = m_store.beginSession(metadata, channels, sampleRate_hz, {{}, text::utcIso8601(m_wallStart), {}});
     m_triggered = !metadata.trigger.empty();
     try {
         for (const std::int64_t calibration : calibrations) m_store.linkCalibration(m_session, calibration);
@@ -211,6 +215,26 @@ void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
     }
 }
 
+// Now on the host's wall clock, unless it was set (back, or forward by more
+// than a second) while recording: then the start plus the time the
+// recording lasted, with a note, so that a session never ends before it
+// began nor is dated by a step the recording did not take.
+std::chrono::system_clock::time_point Recorder::endOnTheWallClock()
+{
+    const auto now = std::chrono::system_clock::now();
+    const auto lasted = std::chrono::steady_clock::now() - m_steadyStart;
+    const double step_s = std::chrono::duration<double>((now - m_wallStart) - lasted).count();
+    if (std::abs(step_s) <= 1.0) return now;
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "the host's clock was set %s by %.1f s during this recording: its end is dated by its start and "
+                  "how long it lasted",
+                  step_s < 0.0 ? "back" : "forward", std::abs(step_s));
+    const double end_s = static_cast<double>(m_consumedEnd) / m_sampleRate_hz;
+    m_store.addEvents(m_session, std::vector{noteRecord(end_s, text)});
+    return m_wallStart + std::chrono::duration_cast<std::chrono::system_clock::duration>(lasted);
+}
+
 RecorderStats Recorder::finish(SessionStatus status, const std::optional<VerdictDecision>& verdict,
                                const std::string& unjudged)
 {
@@ -233,7 +257,7 @@ RecorderStats Recorder::finish(SessionStatus status, const std::optional<Verdict
         m_stats.error += "; the samples not stored could not be marked as lost in the store";
     }
     try {
-        const auto now = std::chrono::system_clock::now();
+        const auto now = endOnTheWallClock();
         m_store.endSession(m_session, m_stats.error.empty() ? status : SessionStatus::Interrupted,
                            text::utcIso8601(now));
         if (m_triggered && m_firstIndex) {  // its last sample's end is about now

@@ -96,6 +96,7 @@ public:
                          const std::string& unjudged = {});
 
 private:
+    std::chrono::system_clock::time_point endOnTheWallClock();
     void run(const std::stop_token& stop);
     void writeQueued(std::unique_lock<std::mutex>& lock);
 
@@ -126,6 +127,11 @@ private:
     // was made (its pre-trigger time), so its start is dated back from its
     // end by its length when it finishes.
     bool m_triggered = false;
+    // The session's start on the host's wall clock (its stored start) and
+    // on the steady clock: the end is dated by how long it lasted when the
+    // wall clock was set while recording.
+    std::chrono::system_clock::time_point m_wallStart;
+    std::chrono::steady_clock::time_point m_steadyStart;
     std::jthread m_writer;  // last: stopped before the members it uses go
 };
 

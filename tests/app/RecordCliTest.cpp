@@ -12,6 +12,7 @@
 #include "support/EmulatorProcess.h"
 #include "support/PdfText.h"
 
+#include <QDateTime>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -336,4 +337,38 @@ TEST(RecordCli, AStoreIsOneFileWhateverNameReachesIt)
         EXPECT_EQ(listed.exitCode, 2) << name.toStdString();
         EXPECT_TRUE(listed.err.contains(QStringLiteral("has 2 names (hard links)"))) << listed.err.toStdString();
     }
+}
+
+// The host's clock set back a day one second into a recording (a shim in
+// the recorder's process; the machine's clock is not touched): the session
+// ends after it began, dated by how long it lasted, and says why (issue
+// 54). Before, it was stored as ending a day before its start.
+TEST(RecordCli, AClockSetBackWhileRecordingNeverEndsASessionBeforeItsStart)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath("line3.tactiscope");
+    QProcess emulator;
+    const QString probe = dir.filePath("probe");
+    ASSERT_TRUE(startEmulator(emulator, probe));
+    auto environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("LD_PRELOAD"), QStringLiteral(TACTISCOPE_CLOCK_STEP_PRELOAD));
+    environment.insert(QStringLiteral("TACTISCOPE_TEST_CLOCK_STEP"), QStringLiteral("1,-86400"));
+    const auto result = runCli({"record", "--port", probe, "--db", db, "--seconds", "3"}, environment);
+    stopEmulator(emulator);
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto session = store.session(sessionIdIn(result.out));
+    ASSERT_TRUE(session);
+    // About the 3 s of samples (the recorder is made around the stream's start).
+    const auto utc = [](const std::string& text) {
+        return QDateTime::fromString(QString::fromStdString(text), Qt::ISODateWithMs);
+    };
+    const qint64 lasted_ms = utc(session->startedUtc).msecsTo(utc(session->endedUtc));
+    EXPECT_GE(lasted_ms, 2500) << session->startedUtc << " to " << session->endedUtc;
+    EXPECT_LT(lasted_ms, 6000) << session->startedUtc << " to " << session->endedUtc;
+    const auto events = store.events(session->id);
+    EXPECT_TRUE(std::ranges::any_of(events, [](const auto& e) {
+        return e.note.starts_with("the host's clock was set back by 8640") &&
+               e.note.ends_with("its end is dated by its start and how long it lasted");
+    })) << events.size();
 }

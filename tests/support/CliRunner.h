@@ -16,9 +16,13 @@ struct CliResult {
     QString err;
 };
 
-inline CliResult runCli(const QStringList& arguments)
+// With `environment` (this process's when none), e.g. a test shim
+// preloaded.
+inline CliResult runCli(const QStringList& arguments,
+                        const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment())
 {
     QProcess process;
+    process.setProcessEnvironment(environment);
     process.start(QStringLiteral(TACTISCOPE_CLI), arguments);
     process.waitForFinished(120000);
     return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
