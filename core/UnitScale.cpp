@@ -2,6 +2,7 @@
 #include "core/UnitScale.h"
 
 #include "core/text/NamedList.h"
+#include "core/text/ShortQuote.h"
 
 #include <array>
 #include <cctype>
@@ -90,11 +91,11 @@ UnitAssignment parseUnitAssignment(std::string_view text)
         if (unit.empty()) throw std::invalid_argument("channel '" + name + "' is given no unit");
         // "force=mN;pos=mm": one item, whose unit would swallow the next.
         if (unit.find_first_of("=;") != std::string::npos)
-            throw std::invalid_argument("'" + unit + "' is not a unit (separate the items with ',')");
+            throw std::invalid_argument(text::quoteShort(unit) + " is not a unit (separate the items with ',')");
         if (!physicalUnit(unit))
             if (const auto meant = otherCaseOf(unit))
-                throw std::invalid_argument("'" + unit + "' (" + name + "): did you mean " + std::string(*meant) +
-                                            "? A unit's case is part of it");
+                throw std::invalid_argument(text::quoteShort(unit) + " (" + text::shortened(name) + "): did you mean " +
+                                            std::string(*meant) + "? A unit's case is part of it");
         units.emplace(std::move(name), std::move(unit));
     }
     return units;

@@ -4,6 +4,7 @@
 #include "core/JsonText.h"
 #include "core/UnitScale.h"
 #include "core/sensors/CompliancePair.h"
+#include "core/text/ShortQuote.h"
 
 #include <nlohmann/json.hpp>
 
@@ -20,14 +21,6 @@ using Json = nlohmann::json;
 
 // Reads keys of one JSON object, remembering which were used so leftovers
 // can be reported as unknown.
-// A value as a message quotes it: at most 40 characters of it.
-std::string shortQuote(std::string_view value)
-{
-    constexpr std::size_t kMost = 40;
-    if (value.size() <= kMost) return std::string(value);
-    return std::string(value.substr(0, kMost)) + "… (" + std::to_string(value.size()) + " characters)";
-}
-
 class ObjectReader {
 public:
     ObjectReader(const Json& object, std::string source, std::string prefix)
@@ -64,7 +57,7 @@ public:
     {
         const Json& value = require(key);
         if (!value.is_number() || !std::isfinite(value.get<double>()))
-            fail(key, "must be a number, got " + shortQuote(value.dump()));
+            fail(key, "must be a number, got " + text::shortened(value.dump()));
         return value.get<double>();
     }
 
@@ -72,7 +65,7 @@ public:
     {
         const Json& value = require(key);
         if (!value.is_number() || !(value.get<double>() > 0.0) || !std::isfinite(value.get<double>()))
-            fail(key, "must be a positive number, got " + shortQuote(value.dump()));
+            fail(key, "must be a positive number, got " + text::shortened(value.dump()));
         return value.get<double>();
     }
 
@@ -103,7 +96,7 @@ public:
     void rejectUnknownKeys() const
     {
         for (const auto& [key, value] : m_object.items()) {
-            if (!m_used.count(key)) fail(shortQuote(key), "unknown key");
+            if (!m_used.count(key)) fail(text::shortened(key), "unknown key");
         }
     }
 
@@ -217,10 +210,10 @@ ChannelScales readScales(ObjectReader& reader, ScaledQuantities quantities)
         const auto kind = unit ? unit->kind : ChannelKind::Other;
         if (quantities == ScaledQuantities::Beams && kind != ChannelKind::Strain && kind != ChannelKind::Force &&
             kind != ChannelKind::Position)
-            entry.fail("unit", "'" + shortQuote(scale.unit) +
-                                   "' is not a strain, a force or a length unit (strain, µε, N, mN, µN, m, mm, µm)");
+            entry.fail("unit", text::quoteShort(scale.unit) +
+                                   " is not a strain, a force or a length unit (strain, µε, N, mN, µN, m, mm, µm)");
         if (quantities == ScaledQuantities::Capacitance && kind != ChannelKind::Capacitance)
-            entry.fail("unit", "'" + shortQuote(scale.unit) + "' is not a capacitance unit (F, nF, pF, fF)");
+            entry.fail("unit", text::quoteShort(scale.unit) + " is not a capacitance unit (F, nF, pF, fF)");
         if (entry.has("counts_per_unit")) scale.countsPerUnit = entry.positive("counts_per_unit");
         if (entry.has("offset")) scale.offset_counts = entry.finite("offset");
         // The capacitive readout judges no clipping (nor does it for a probe's capacitance).
@@ -282,7 +275,7 @@ SensorProfile parseSensorProfile(std::string_view text, const std::string& sourc
     const std::string kind = reader.string("kind");
     const std::string name = reader.string("name");
     if (name.size() > kMostProfileNameCharacters)
-        reader.fail("name", shortQuote(name) + " is longer than a name (at most " +
+        reader.fail("name", text::shortened(name) + " is longer than a name (at most " +
                                 std::to_string(kMostProfileNameCharacters) + " characters)");
     if (kind == "cantilever") {
         CantileverProfile profile{name, readGeometry(reader)};
@@ -312,7 +305,7 @@ SensorProfile parseSensorProfile(std::string_view text, const std::string& sourc
         return profile;
     }
     reader.fail("kind",
-                "'" + shortQuote(kind) + "' is not a known sensor kind (cantilever, compliance_pair, capacitive_beam)");
+                text::quoteShort(kind) + " is not a known sensor kind (cantilever, compliance_pair, capacitive_beam)");
 }
 
 SensorProfile loadSensorProfile(const std::string& path)

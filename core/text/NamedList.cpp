@@ -1,6 +1,8 @@
 // NamedList: splitting "NAME=VALUE" lists.
 #include "core/text/NamedList.h"
 
+#include "core/text/ShortQuote.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -27,9 +29,9 @@ std::vector<std::pair<std::string, std::string>> parseNamedList(std::string_view
         if (item.empty()) continue;
         const auto equals = item.find('=');
         if (equals == std::string_view::npos)
-            throw std::invalid_argument("'" + std::string(item) + "' is not " + std::string(form));
+            throw std::invalid_argument(quoteShort(item) + " is not " + std::string(form));
         std::string name(trimmed(item.substr(0, equals)));
-        if (name.empty()) throw std::invalid_argument("'" + std::string(item) + "' names no channel");
+        if (name.empty()) throw std::invalid_argument(quoteShort(item) + " names no channel");
         if (std::ranges::find(items, name, &std::pair<std::string, std::string>::first) != items.end())
             throw std::invalid_argument("channel '" + name + "' is given two " + std::string(valueWord) + "s");
         items.emplace_back(std::move(name), std::string(trimmed(item.substr(equals + 1))));

@@ -2,6 +2,7 @@
 #include "core/trigger/LimitWatch.h"
 
 #include "core/text/NumberFormat.h"
+#include "core/text/ShortQuote.h"
 
 #include <algorithm>
 #include <charconv>
@@ -128,7 +129,7 @@ ParsedLimit parseLimit(std::string_view text)
         "write QUANTITY>warning:W,critical:C (or <), or QUANTITY outside warning:A..B,critical:C..D "
         "(or inside); either level alone; ,hold:S for a hold time";
     const auto op = text.find_first_of("<> ");
-    if (op == std::string_view::npos || op == 0) return fail("'" + std::string(text) + "' is no limit: " + form);
+    if (op == std::string_view::npos || op == 0) return fail(text::quoteShort(text) + " is no limit: " + form);
     LimitSpec spec;
     spec.quantity = std::string(text.substr(0, op));
     std::string_view rest = text.substr(op + 1);
@@ -139,7 +140,7 @@ ParsedLimit parseLimit(std::string_view text)
         const auto space = rest.find(' ');
         const std::string_view word = rest.substr(0, space);
         if (word != "inside" && word != "outside")
-            return fail("'" + std::string(word) + "' is neither inside nor outside: " + form);
+            return fail(text::quoteShort(word) + " is neither inside nor outside: " + form);
         spec.side = word == "inside" ? LimitSide::Inside : LimitSide::Outside;
         rest = space == std::string_view::npos ? std::string_view() : trimmed(rest.substr(space + 1));
     }
@@ -153,16 +154,16 @@ ParsedLimit parseLimit(std::string_view text)
         const std::string_view value = colon == std::string_view::npos ? std::string_view() : part.substr(colon + 1);
         if (name == "hold") {
             const auto hold = number(value);
-            if (!hold || *hold < 0.0) return fail("'" + std::string(part) + "' is no hold time (0 s or more)");
+            if (!hold || *hold < 0.0) return fail(text::quoteShort(part) + " is no hold time (0 s or more)");
             spec.hold_s = *hold;
             continue;
         }
         if (name != "warning" && name != "critical")
-            return fail("'" + std::string(name) + "' is neither warning, critical nor hold: " + form);
+            return fail(text::quoteShort(name) + " is neither warning, critical nor hold: " + form);
         const auto level = levelValue(value, window);
         if (!level)
-            return fail("'" + std::string(part) +
-                        "' is no level: " + (window ? "a window is LOW..HIGH, its low end first" : form));
+            return fail(text::quoteShort(part) +
+                        " is no level: " + (window ? "a window is LOW..HIGH, its low end first" : form));
         (name == "warning" ? spec.warning : spec.critical) = level;
     }
     if (!spec.warning && !spec.critical) return fail("a limit needs a warning or a critical level: " + form);

@@ -2,6 +2,7 @@
 #include "core/trigger/TriggerCondition.h"
 
 #include "core/text/NumberFormat.h"
+#include "core/text/ShortQuote.h"
 
 #include <charconv>
 #include <cmath>
@@ -111,13 +112,13 @@ ParsedTrigger parseTrigger(std::string_view text)
         const auto level = number(text.substr(op + 1));
         if (c.quantity.empty()) return failure("the trigger names no quantity: " + std::string(forms));
         if (!level)
-            return failure("'" + std::string(trimmed(text.substr(op + 1))) + "' is no level: " + std::string(forms));
+            return failure(text::quoteShort(trimmed(text.substr(op + 1))) + " is no level: " + std::string(forms));
         c.level = *level;
         return {c, {}};
     }
     const auto space = text.find(' ');
     if (space == std::string_view::npos)
-        return failure("'" + std::string(text) + "' is no trigger: " + std::string(forms));
+        return failure(text::quoteShort(text) + " is no trigger: " + std::string(forms));
     TriggerCondition c;
     c.quantity = std::string(text.substr(0, space));
     std::string_view rest = trimmed(text.substr(space + 1));
@@ -127,7 +128,7 @@ ParsedTrigger parseTrigger(std::string_view text)
     if (word == "rising" || word == "falling") {
         c.kind = word == "rising" ? TriggerKind::Rising : TriggerKind::Falling;
         const auto level = number(argument);
-        if (!level) return failure("'" + std::string(trimmed(argument)) + "' is no level: " + std::string(forms));
+        if (!level) return failure(text::quoteShort(trimmed(argument)) + " is no level: " + std::string(forms));
         c.level = *level;
         return {c, {}};
     }
@@ -136,13 +137,13 @@ ParsedTrigger parseTrigger(std::string_view text)
         const auto dots = argument.find("..");
         const auto low = dots == std::string_view::npos ? std::nullopt : number(argument.substr(0, dots));
         const auto high = dots == std::string_view::npos ? std::nullopt : number(argument.substr(dots + 2));
-        if (!low || !high) return failure("'" + std::string(trimmed(argument)) + "' is no window LOW..HIGH");
+        if (!low || !high) return failure(text::quoteShort(trimmed(argument)) + " is no window LOW..HIGH");
         if (!(*low < *high)) return failure("a window's low end must be below its high end");
         c.level = *low;
         c.high = *high;
         return {c, {}};
     }
-    return failure("'" + std::string(word) + "' is no trigger word: " + std::string(forms));
+    return failure(text::quoteShort(word) + " is no trigger word: " + std::string(forms));
 }
 
 }  // namespace tactiscope::core::trigger

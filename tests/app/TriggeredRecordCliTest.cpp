@@ -400,6 +400,15 @@ TEST(TriggeredRecordCli, BadTriggerAndLimitOptionsAreRefusedBeforeAnythingIsReco
     refused({"--limit", "force>warming:1"}, QStringLiteral("--limit: "));
     refused({"--limit", "force outside warning:1..-1"}, QStringLiteral("a window is LOW..HIGH"));
     refused({"--stop-on", "warning"}, QStringLiteral("--stop-on takes critical"));
+    // A pasted 100 kB value is quoted by its first 40 characters and its
+    // length (issue 54; before, echoed whole: 104 kB on stderr).
+    const QString pasted = QStringLiteral("a>") + QString(100000, QLatin1Char('9')) + QStringLiteral("x");
+    for (const QString& option : {QStringLiteral("--trigger"), QStringLiteral("--limit")}) {
+        const auto result = runCli({"record", "--port", dir.filePath("nothing"), "--db", db, option, pasted});
+        EXPECT_EQ(result.exitCode, 2) << option.toStdString();
+        EXPECT_TRUE(result.err.contains(QStringLiteral(" characters)"))) << result.err.left(400).toStdString();
+        EXPECT_LT(result.err.size(), 1000) << option.toStdString();
+    }
     EXPECT_FALSE(QFile::exists(db));
 
     // A quantity this device does not have: its names are listed.
