@@ -8,6 +8,8 @@
 #include "support/CliRunner.h"
 #include "support/PostgresServer.h"
 
+#include <QCryptographicHash>
+
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -64,7 +66,7 @@ TEST_F(ServerCli, InitMakesTheSchemaAndRolesAndASecondRunChangesNothing)
     EXPECT_EQ(db.query("SELECT count(*) FROM pg_roles WHERE rolname IN ('tactiscope_station', 'tactiscope_reviewer')")
                   .text(0, 0),
               "2");
-    EXPECT_EQ(db.query("SELECT version FROM schema_version").text(0, 0), "8");
+    EXPECT_EQ(db.query("SELECT version FROM schema_version").text(0, 0), "9");
     for (const char* table : {"sessions", "channels", "chunks", "gaps", "lod", "events", "readings", "annotations",
                               "verdicts", "zeros", "calibrations", "session_calibrations"})
         EXPECT_EQ(db.query("SELECT count(*) FROM pg_tables WHERE tablename = $1", {std::string(table)}).text(0, 0), "1")
@@ -102,7 +104,14 @@ TEST_F(ServerCli, AStationKeepsToItsOwnRowsAndAReviewerOnlyReadsAndDecides)
     a.query("INSERT INTO chunks (session_id, first_index, first_time_s, count, samples) VALUES ($1, 0, 0, 1, "
             "'\\x0000803f')",
             {finished});
-    a.query("UPDATE sessions SET complete = true WHERE id = $1", {finished});
+    // Its checksum (CentralClaimsTest): the md5 of "0:1:" and its bytes' md5.
+    const std::string checksum =
+        QCryptographicHash::hash(
+            "0:1:" + QCryptographicHash::hash(QByteArray::fromHex("0000803f"), QCryptographicHash::Md5).toHex(),
+            QCryptographicHash::Md5)
+            .toHex()
+            .toStdString();
+    a.query("UPDATE sessions SET complete = true, checksum = $1 WHERE id = $2", {checksum, finished});
     addSession(a, "22222222-2222-4222-8222-222222222222");
     EXPECT_TRUE(refused(a, "INSERT INTO sessions (uuid, mode, started_utc, status, app_version, complete) VALUES "
                            "('44444444-4444-4444-8444-444444444444', 'panel-scan', '2026-11-24T10:00:00.000Z', "

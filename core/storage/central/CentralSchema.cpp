@@ -120,7 +120,7 @@ ALTER TABLE sessions ADD COLUMN IF NOT EXISTS parent_id BIGINT REFERENCES sessio
 ALTER TABLE sessions ADD COLUMN IF NOT EXISTS device_name TEXT NOT NULL DEFAULT '';
 ALTER TABLE sessions ADD COLUMN IF NOT EXISTS clock_json TEXT NOT NULL DEFAULT '';
 CREATE INDEX IF NOT EXISTS sessions_by_parent ON sessions (parent_id);
--- Schema 9: why a session of a mode that judges got no automatic verdict.
+-- Schema 8: why a session of a mode that judges got no automatic verdict.
 ALTER TABLE sessions ADD COLUMN IF NOT EXISTS unjudged TEXT NOT NULL DEFAULT '';
 
 CREATE TABLE IF NOT EXISTS readings (
@@ -312,6 +312,114 @@ BEGIN
     RETURN NEW;
 END)sql";
 
+// Schema 9: the server judges what a station claims.
+//
+// A time a station claims (made at the station, perhaps long before it is
+// sent) is judged as it arrives: a UTC time in the stored form, a real
+// date, and not later than the server's clock by more than a skew between
+// two clocks kept by NTP; never rewritten, so the sync still finds what it
+// sent. Made once, called only by the server's own triggers.
+constexpr const char* kClaimedTime = R"sql(
+CREATE OR REPLACE FUNCTION claimed_time(claimed text, what text) RETURNS timestamptz
+LANGUAGE plpgsql SET search_path = public AS $body$
+DECLARE
+    quoted text := CASE WHEN length(claimed) > 40 THEN left(claimed, 40) || '... (' || length(claimed) || ' characters)'
+                        ELSE claimed END;
+    t timestamptz;
+BEGIN
+    IF claimed IS NULL OR claimed !~ '^[0-9]{4}-[0-9]{2}-[0-9]{2}T[0-9]{2}:[0-9]{2}:[0-9]{2}(\.[0-9]{1,9})?Z$' THEN
+        RAISE EXCEPTION '% ''%'' is not a UTC time such as 2026-11-28T14:20:28.123Z', what, coalesce(quoted, 'null')
+            USING ERRCODE = 'check_violation';
+    END IF;
+    BEGIN
+        t := claimed::timestamptz;
+    EXCEPTION WHEN others THEN
+        RAISE EXCEPTION '% ''%'' is not a date', what, quoted USING ERRCODE = 'check_violation';
+    END;
+    IF t > clock_timestamp() + interval '5 minutes' THEN
+        RAISE EXCEPTION '% % is later than the central store''s clock (%): the station''s clock is ahead of it',
+            what, quoted, to_char(clock_timestamp() AT TIME ZONE 'UTC', 'YYYY-MM-DD"T"HH24:MI:SS"Z"')
+            USING ERRCODE = 'check_violation';
+    END IF;
+    RETURN t;
+END
+$body$;
+REVOKE ALL ON FUNCTION claimed_time(text, text) FROM PUBLIC;
+)sql";
+
+// The times a station claims for its session.
+constexpr const char* kSessionTimesJudged = R"sql(
+DECLARE
+    started timestamptz := claimed_time(NEW.started_utc, 'its start');
+BEGIN
+    IF NEW.ended_utc IS NOT NULL AND claimed_time(NEW.ended_utc, 'its end') < started THEN
+        RAISE EXCEPTION 'its end % is before its start %', NEW.ended_utc, NEW.started_utc
+            USING ERRCODE = 'check_violation';
+    END IF;
+    RETURN NEW;
+END)sql";
+
+// A decision or a note made here is dated by the server's clock; one a
+// station sends was made there, and its claimed times are judged. Were a
+// station to date a decision as it liked, it could set one "9999-12-31"
+// that outranks every reviewer's (the trail's latest decision is the
+// session's verdict).
+constexpr const char* kVerdictTimeJudged = R"sql(
+BEGIN
+    IF NEW.role = 'reviewer' THEN
+        NEW.decided_utc := to_char(clock_timestamp() AT TIME ZONE 'UTC', 'YYYY-MM-DD"T"HH24:MI:SS.MS"Z"');
+    ELSE
+        PERFORM claimed_time(NEW.decided_utc, 'the decision''s time');
+    END IF;
+    RETURN NEW;
+END)sql";
+
+constexpr const char* kNoteTimesJudged = R"sql(
+BEGIN
+    IF pg_has_role(NEW.added_by, 'tactiscope_station', 'MEMBER') THEN
+        PERFORM claimed_time(NEW.created_utc, 'the note''s time');
+        PERFORM claimed_time(NEW.modified_utc, 'the note''s change time');
+    ELSE
+        NEW.created_utc := to_char(clock_timestamp() AT TIME ZONE 'UTC', 'YYYY-MM-DD"T"HH24:MI:SS.MS"Z"');
+        NEW.modified_utc := NEW.created_utc;
+    END IF;
+    RETURN NEW;
+END)sql";
+
+// A session is complete once what arrived is what the station holds: the
+// server computes the checksum the station claims (of its chunks, or for
+// a session of several devices of its parts, each complete first, the
+// same lines CentralSync's sessionChecksum builds) and refuses a mismatch.
+// Before, a station could mark a session complete over made-up samples, or
+// a session before its parts (reviewers then met "the store is damaged").
+constexpr const char* kCompleteWhenWhole = R"sql(
+DECLARE
+    arrived text;
+    unfinished bigint;
+BEGIN
+    IF NOT NEW.complete OR OLD.complete THEN
+        RETURN NEW;
+    END IF;
+    IF EXISTS (SELECT 1 FROM sessions WHERE parent_id = NEW.id) THEN
+        SELECT count(*) INTO unfinished FROM sessions WHERE parent_id = NEW.id AND NOT complete;
+        IF unfinished > 0 THEN
+            RAISE EXCEPTION 'a session of several devices is complete only after its parts: % of them not yet',
+                unfinished USING ERRCODE = 'check_violation';
+        END IF;
+        SELECT md5(string_agg(device_name || ' ' || checksum || E'\n', '' ORDER BY id)) INTO arrived
+          FROM sessions WHERE parent_id = NEW.id;
+    ELSE
+        SELECT md5(coalesce(string_agg(first_index || ':' || count || ':' || md5(samples), E'\n'
+                                       ORDER BY first_index), '')) INTO arrived
+          FROM chunks WHERE session_id = NEW.id;
+    END IF;
+    IF arrived IS DISTINCT FROM NEW.checksum THEN
+        RAISE EXCEPTION 'its samples arrived damaged (checksum %, sent %); nothing of it was kept', arrived,
+            left(NEW.checksum, 40) USING ERRCODE = 'check_violation';
+    END IF;
+    RETURN NEW;
+END)sql";
+
 // The session's verdict is the latest decision of its trail, set by the
 // server as each decision arrives.
 constexpr const char* kVerdictFromTrail = R"sql(
@@ -383,7 +491,12 @@ void initCentralStore(PgConnection& connection)
     script += kBounds;
     script += serverTrigger("chunk_fits_channels", "BEFORE INSERT", "chunks", kChunkFitsChannels);
     script += serverTrigger("part_of_own_session", "BEFORE INSERT", "sessions", kPartOfOwnSession);
+    script += kClaimedTime;
+    script += serverTrigger("session_times_judged", "BEFORE INSERT", "sessions", kSessionTimesJudged);
+    script += serverTrigger("complete_when_whole", "BEFORE UPDATE", "sessions", kCompleteWhenWhole);
     script += kRights;
+    script += serverTrigger("verdict_time_judged", "BEFORE INSERT", "verdicts", kVerdictTimeJudged);
+    script += serverTrigger("note_times_judged", "BEFORE INSERT", "annotations", kNoteTimesJudged);
     script += serverTrigger("verdict_from_trail", "AFTER INSERT", "verdicts", kVerdictFromTrail);
     script += policies("sessions", "station = current_user", "complete");
     script += policies("calibrations", "station = current_user", "true");
