@@ -1,4 +1,4 @@
-// The sessions subcommand: list, show, export, verdict and delete.
+// The sessions subcommand: list, show, export, verdict, delete and upgrade.
 #include "SessionsCommand.h"
 
 #include "CliSupport.h"
@@ -8,8 +8,11 @@
 #include "core/modes/ModeDefinition.h"
 #include "core/report/VerdictTrail.h"
 #include "core/sensors/SensorProfile.h"
+#include "core/storage/OpenSessionSource.h"
+#include "core/storage/Schema.h"
 #include "core/storage/SessionExport.h"
 #include "core/storage/SessionSource.h"
+#include "core/storage/SessionStore.h"
 #include "core/text/JsonWriter.h"
 #include "core/timing/ClockMappingText.h"
 
@@ -324,6 +327,29 @@ int exportSession(SessionSource& store, std::int64_t id, const QString& format, 
     return kExitOk;
 }
 
+// Brings a station's store to this build's version in place (readers of an
+// older store read it through a private copy until then).
+int upgradeStore(const QString& db)
+{
+    if (core::storage::isCentralStoreAddress(db.toStdString())) {
+        printError(QStringLiteral("a central store is brought up to date by `tactiscope-cli server init`"));
+        return kExitUsage;
+    }
+    try {
+        const core::storage::SessionStore store(db.toStdString());
+        if (const auto note = store.readNote()) std::cerr << "note: " << *note << '\n';
+        QTextStream out(stdout);
+        out << db << ": store version " << core::storage::kSchemaVersion;
+        if (store.versionFound() < core::storage::kSchemaVersion)
+            out << " (updated from version " << store.versionFound() << ")\n";
+        else
+            out << ", already up to date\n";
+    } catch (const StorageError& e) {
+        return storageFailure(e);
+    }
+    return kExitOk;
+}
+
 }  // namespace
 
 int runSessions(const QStringList& arguments)
@@ -343,8 +369,11 @@ int runSessions(const QStringList& arguments)
         "  verdict ID|UUID|last pass|defects-found --by NAME [--note TEXT]\n"
         "                           a reviewer's verdict, added to the session's verdict trail\n"
         "  delete ID|UUID           remove a session and its samples\n"
+        "  upgrade                  bring an older store to this version in place (readers read an\n"
+        "                           older store through a private updated copy until then)\n"
         "A session is named by its id in this store, its uuid (the same in every store) or 'last'."));
-    parser.addPositionalArgument(QStringLiteral("action"), QStringLiteral("list, show, export, verdict or delete."));
+    parser.addPositionalArgument(QStringLiteral("action"),
+                                 QStringLiteral("list, show, export, verdict, delete or upgrade."));
     parser.addOptions({
         {QStringLiteral("db"),
          QStringLiteral("The session store (required): a station's file, or a central store's connection string "
@@ -373,19 +402,19 @@ int runSessions(const QStringList& arguments)
     if (!parser.isSet(QStringLiteral("db"))) return usageError(QStringLiteral("--db FILE is required"), usage);
     const QStringList positional = parser.positionalArguments();
     if (positional.isEmpty())
-        return usageError(QStringLiteral("say what to do: list, show, export, verdict or delete"), usage);
+        return usageError(QStringLiteral("say what to do: list, show, export, verdict, delete or upgrade"), usage);
     const QString action = positional.front();
     const bool decides = action == QLatin1String("verdict");
     const bool takesId = action == QLatin1String("show") || action == QLatin1String("export") ||
                          action == QLatin1String("delete") || decides;
-    if (action != QLatin1String("list") && !takesId)
-        return usageError(QStringLiteral("unknown action '%1'").arg(action), usage);
+    const bool takesNone = action == QLatin1String("list") || action == QLatin1String("upgrade");
+    if (!takesNone && !takesId) return usageError(QStringLiteral("unknown action '%1'").arg(action), usage);
     if (decides && positional.size() != 3)
         return usageError(
             QStringLiteral("verdict needs a session and a verdict: verdict ID|UUID|last pass|defects-found"), usage);
     if (!decides && positional.size() != (takesId ? 2 : 1))
         return usageError(takesId ? QStringLiteral("%1 needs one session: ID, UUID or last").arg(action)
-                                  : QStringLiteral("list takes no session"),
+                                  : QStringLiteral("%1 takes no session").arg(action),
                           usage);
     if (decides && parser.value(QStringLiteral("by")).trimmed().isEmpty())
         return usageError(QStringLiteral("verdict needs --by NAME: the trail says who decided"), usage);
@@ -400,6 +429,7 @@ int runSessions(const QStringList& arguments)
     }
     const QString dbArgument = parser.value(QStringLiteral("db"));
     if (!storeArgumentExists(dbArgument)) return usageError(QStringLiteral("%1 does not exist").arg(dbArgument), usage);
+    if (action == QLatin1String("upgrade")) return upgradeStore(dbArgument);
 
     try {
         // Only delete and verdict write; the others read, and work beside a recording.

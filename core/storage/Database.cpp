@@ -48,13 +48,21 @@ bool hasPendingLog(const std::string& path)
     return !error && size > 0;
 }
 
+// A new private folder for a copy of the store at `path`, read `why`.
+// Throws StorageError.
+std::string privateFolder(const std::string& path, const std::string& why)
+{
+    std::string folder = (std::filesystem::temp_directory_path() / "tactiscope-store-XXXXXX").string();
+    if (::mkdtemp(folder.data()) == nullptr)
+        throw StorageError(path + ": cannot make a private copy to read " + why + ": " + std::strerror(errno));
+    return folder;
+}
+
 // A private folder holding a copy of the store and its log, where SQLite
 // can make the shared memory a log needs. Throws StorageError.
 std::string copyWithLog(const std::string& path)
 {
-    std::string folder = (std::filesystem::temp_directory_path() / "tactiscope-store-XXXXXX").string();
-    if (::mkdtemp(folder.data()) == nullptr)
-        throw StorageError(path + ": cannot make a private copy to read its write-ahead log: " + std::strerror(errno));
+    const std::string folder = privateFolder(path, "its write-ahead log");
     const std::string copy = folder + "/store";
     std::error_code error;
     std::filesystem::copy_file(path, copy, error);
@@ -259,6 +267,41 @@ void Database::removeCopy()
     if (m_copyFolder.empty()) return;
     std::error_code ignored;
     std::filesystem::remove_all(m_copyFolder, ignored);
+}
+
+void Database::addNote(const std::string& note)
+{
+    m_note = m_note ? *m_note + "; " + note : note;
+}
+
+void Database::readThroughPrivateCopy(const std::string& note)
+{
+    const std::string folder = privateFolder(m_path, "it");
+    const std::string copy = folder + "/store";
+    sqlite3* target = nullptr;
+    int code = sqlite3_open_v2(copy.c_str(), &target, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX,
+                               nullptr);
+    sqlite3_backup* backup = code == SQLITE_OK ? sqlite3_backup_init(target, "main", m_db, "main") : nullptr;
+    if (backup) {
+        code = sqlite3_backup_step(backup, -1);  // all of it, under one read lock
+        sqlite3_backup_finish(backup);
+    }
+    if (!backup || code != SQLITE_DONE) {
+        const std::string reason = backup ? sqlite3_errstr(code) : target ? sqlite3_errmsg(target) : "out of memory";
+        sqlite3_close(target);
+        std::error_code ignored;
+        std::filesystem::remove_all(folder, ignored);
+        throw StorageError(m_path + ": cannot make a private copy to read it (" + reason + " in " +
+                           std::filesystem::temp_directory_path().string() + ")");
+    }
+    sqlite3_close(m_db);
+    removeCopy();
+    m_db = target;
+    m_copyFolder = folder;
+    m_updatableCopy = true;
+    sqlite3_extended_result_codes(m_db, 1);
+    exec("PRAGMA mmap_size = 1073741824");
+    addNote(note);
 }
 
 void Database::exec(std::string_view sql)

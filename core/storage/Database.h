@@ -86,6 +86,17 @@ public:
     // a private copy, a read-only disk's write-ahead log applied); none
     // when it was read as it is.
     const std::optional<std::string>& note() const { return m_note; }
+    void addNote(const std::string& note);
+
+    // From now on reads the store through a private copy this connection
+    // may change (an older store brought up to date only to be read: the
+    // store itself is never written); `note` tells the reader so. The copy
+    // is SQLite's backup of what this connection reads, consistent however
+    // the store is being written. Throws StorageError when no copy can be
+    // made.
+    void readThroughPrivateCopy(const std::string& note);
+    // Whether the connection is to such a copy, which prepareSchema() updates.
+    bool readsUpdatableCopy() const { return m_updatableCopy; }
 
 private:
     void removeCopy();
@@ -94,6 +105,7 @@ private:
     std::string m_path;
     Access m_access;
     std::string m_copyFolder;  // a private copy read instead of the store, removed on close
+    bool m_updatableCopy = false;
     std::optional<std::string> m_note;
 };
 

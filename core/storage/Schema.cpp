@@ -3,6 +3,8 @@
 #include "core/storage/Schema.h"
 
 #include <array>
+#include <map>
+#include <set>
 #include <string>
 
 namespace tactiscope::core::storage {
@@ -311,6 +313,57 @@ std::int64_t pragma(Database& db, const char* name)
     return statement.step() ? statement.int64(0) : 0;
 }
 
+// A name from the store's own schema, quoted for SQL: a crafted store's
+// names are not trusted.
+std::string quoteName(const std::string& name)
+{
+    std::string quoted = "\"";
+    for (const char c : name) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+}
+
+// SQLite keeps foreign keys off unless a connection asks, so a plain
+// `sqlite3` delete of a session leaves its rows behind, which no reader
+// reaches (every one goes by its session) and which a migration's check
+// would refuse. They are removed, a table at a time (a part of a session
+// that is gone, then that part's own rows), and said: e.g. "1 events row".
+std::string removeRowsWithoutTheirSession(Database& db)
+{
+    std::map<std::string, std::int64_t> removed;
+    for (;;) {
+        std::set<std::pair<std::string, std::int64_t>> broken;  // table, foreign key
+        for (auto check = db.prepare("PRAGMA foreign_key_check"); check.step();)
+            broken.emplace(check.text(0), check.int64(3));
+        if (broken.empty()) break;
+        std::int64_t removedThisRound = 0;
+        for (const auto& [table, key] : broken) {
+            auto keys = db.prepare("SELECT \"table\", \"from\", coalesce(\"to\", 'rowid') FROM "
+                                   "pragma_foreign_key_list(?) WHERE id = ?");
+            keys.bind(1, table).bind(2, key);
+            std::string from, parent, join;
+            while (keys.step()) {  // one row per column of the key
+                parent = keys.text(0);
+                join += (join.empty() ? "" : " AND ") + ("c." + quoteName(keys.text(2))) + " = t." +
+                        quoteName(keys.text(1));
+                from += (from.empty() ? "" : " AND ") + ("t." + quoteName(keys.text(1))) + " IS NOT NULL";
+            }
+            if (from.empty()) continue;
+            db.exec("DELETE FROM " + quoteName(table) + " AS t WHERE " + from + " AND NOT EXISTS (SELECT 1 FROM " +
+                    quoteName(parent) + " AS c WHERE " + join + ")");
+            if (db.changes() == 0) continue;
+            removed[table] += db.changes();
+            removedThisRound += db.changes();
+        }
+        // Rows SQLite's check and this join judge apart: the migration's
+        // own check refuses them, as before.
+        if (removedThisRound == 0) break;
+    }
+    std::string said;
+    for (const auto& [table, count] : removed)
+        said += (said.empty() ? "" : ", ") + std::to_string(count) + " " + table + (count == 1 ? " row" : " rows");
+    return said;
+}
+
 }  // namespace
 
 int prepareSchema(Database& db, int targetVersion)
@@ -330,26 +383,31 @@ int prepareSchema(Database& db, int targetVersion)
     if (tables > 0 && application != kApplicationId)
         throw StoreInputError(db.path() + " is an SQLite file of another program, not a Tactiscope session store; " +
                               "it was left untouched");
-    if (version > kSchemaVersion && db.access() == Database::Access::ReadWrite)
+    const bool updates = db.access() == Database::Access::ReadWrite || db.readsUpdatableCopy();
+    if (version > kSchemaVersion && updates)
         throw StorageError(db.path() + " was written by a newer Tactiscope (store version " + std::to_string(version) +
                            ", this build knows " + std::to_string(kSchemaVersion) +
                            "); open it read-only or update Tactiscope");
     db.exec("PRAGMA foreign_keys = ON");
-    if (version >= targetVersion || db.access() == Database::Access::ReadOnly) {
+    if (version >= targetVersion || !updates) {
         if (tables == 0)  // an empty file: SQLite reads it as an empty database
             throw StorageError(db.path() + " is empty: it holds no sessions yet (recording or importing into it "
                                            "makes it a session store)");
-        if (version < targetVersion)
-            throw StorageError(db.path() + " has an older store version (" + std::to_string(version) +
-                               "); open it read-write once to update it");
         return static_cast<int>(version);
     }
     // WAL: readers (the review window) work while the recorder writes.
-    db.exec("PRAGMA journal_mode = WAL");
+    if (!db.readsUpdatableCopy()) db.exec("PRAGMA journal_mode = WAL");
     // Foreign keys off while tables are rebuilt (SQLite ignores the pragma
     // inside a transaction); each step checks them before it commits.
     db.exec("PRAGMA foreign_keys = OFF");
     try {
+        if (tables > 0) {
+            Transaction transaction(db);
+            if (const std::string removed = removeRowsWithoutTheirSession(db); !removed.empty())
+                db.addNote("updating it from store version " + std::to_string(version) + " left out " + removed +
+                           " without their session (rows a delete outside Tactiscope leaves behind)");
+            transaction.commit();
+        }
         for (auto step = version; step < targetVersion; ++step) {
             Transaction transaction(db);
             db.exec(kMigrations[static_cast<std::size_t>(step)]);

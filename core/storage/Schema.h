@@ -13,12 +13,16 @@ inline constexpr int kSchemaVersion = 9;
 inline constexpr std::int64_t kApplicationId = 0x54534331;
 
 // Makes `db` a current Tactiscope store: creates the schema in an empty
-// file, migrates an older one (read-write only). Throws StorageError, and
-// leaves the file untouched, when it is another program's SQLite file, is
-// not an SQLite file, or has a newer schema than this build and is opened
-// read-write (read-only works: tables are only ever added to). Returns the
-// version the file had (0 for a new file). `targetVersion` below the
-// current one is for tests that need an old store.
+// file, migrates an older one (read-write, or a private copy read in its
+// place; a read-only connection to an older store is left as it is, for
+// SessionStore to read through such a copy). Rows a delete outside
+// Tactiscope left without their session are removed before a migration,
+// and said in the database's note. Throws StorageError, and leaves the file
+// untouched, when it is another program's SQLite file, is not an SQLite
+// file, or has a newer schema than this build and is opened read-write
+// (read-only works: tables are only ever added to). Returns the version
+// the file had (0 for a new file). `targetVersion` below the current one
+// is for tests that need an old store.
 int prepareSchema(Database& db, int targetVersion = kSchemaVersion);
 
 }  // namespace tactiscope::core::storage

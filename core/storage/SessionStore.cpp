@@ -105,16 +105,32 @@ constexpr std::uint64_t kChunkSamples = 4096;
 SessionStore::SessionStore(const std::string& path, Database::Access access)
     : m_db(path, access)
 {
-    const int foundVersion = prepareSchema(m_db);
-    if (access != Database::Access::ReadWrite) return;
-    if (foundVersion > 0 && foundVersion < 2) {
-        // Version 1 had no pyramid: build it for the sessions it holds.
-        Transaction transaction(m_db);
-        auto ids = m_db.prepare("SELECT id FROM sessions");
-        while (ids.step()) rebuildPyramids(ids.int64(0));
-        transaction.commit();
+    m_versionFound = prepareSchema(m_db);
+    if (access == Database::Access::ReadOnly && m_versionFound < kSchemaVersion) {
+        // An older store is read as this build reads a current one, through
+        // a private copy brought up to date: the store itself is unchanged.
+        m_db.readThroughPrivateCopy(path + " has an older store version (" + std::to_string(m_versionFound) +
+                                    "): read through a private copy brought up to version " +
+                                    std::to_string(kSchemaVersion) + "; `tactiscope-cli sessions --db " + path +
+                                    " upgrade` updates the store itself");
+        prepareSchema(m_db);
+        buildPyramidsOfVersion1();
+        m_db.exec("PRAGMA query_only = 1");
+        return;
     }
+    if (access != Database::Access::ReadWrite) return;
+    buildPyramidsOfVersion1();
     if (const auto lock = RecorderLock::tryAcquire(path)) markCrashedSessionsInterrupted();
+}
+
+void SessionStore::buildPyramidsOfVersion1()
+{
+    if (m_versionFound == 0 || m_versionFound >= 2) return;
+    // Version 1 had no pyramid: build it for the sessions it holds.
+    Transaction transaction(m_db);
+    auto ids = m_db.prepare("SELECT id FROM sessions");
+    while (ids.step()) rebuildPyramids(ids.int64(0));
+    transaction.commit();
 }
 
 namespace {

@@ -27,7 +27,11 @@ public:
     // files it refuses. Read-write and with no recorder running (see
     // RecorderLock), sessions a crash left "recording" become "interrupted",
     // with every committed sample kept. Throws StorageError.
+    // Read-only, an older store is read through a private copy brought up
+    // to date (see readNote()).
     SessionStore(const std::string& path, Database::Access access = Database::Access::ReadWrite);
+    // The store version the file had when it was opened (0 for a new file).
+    int versionFound() const { return m_versionFound; }
 
     std::string location() const override { return m_db.path(); }
     std::unique_ptr<Snapshot> snapshot() override;
@@ -138,6 +142,7 @@ public:
 private:
     void appendChunk(std::int64_t session, std::span<const SampleBlock> run);
     void rebuildPyramids(std::int64_t session);
+    void buildPyramidsOfVersion1();
     lod::LodTable pyramid(std::int64_t session, std::size_t channel);
     void showCrashedRecordingsInterrupted(std::span<SessionSummary> summaries);
     std::int64_t insertSessionRow(const SessionMetadata& metadata, const SessionOrigin& origin);
@@ -149,6 +154,7 @@ private:
     void refuseUnknownParent(std::int64_t session);
 
     Database m_db;
+    int m_versionFound = 0;
     SessionLayout m_layout{m_db};  // checked before any count read sizes anything
 };
 
