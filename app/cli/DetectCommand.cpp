@@ -4,6 +4,7 @@
 #include "CliSupport.h"
 #include "DetectorOptions.h"
 #include "core/detector/CsvDetection.h"
+#include "core/detector/ProbeScanFiles.h"
 #include "core/io/CsvColumns.h"
 #include "core/storage/Database.h"
 #include "core/storage/SafeOutput.h"
@@ -23,6 +24,8 @@ using core::detector::ProbeOutput;
 struct DetectOptions {
     QString input;
     QString output;
+    QString probeInput;      // write the emulated probe's input instead of detecting
+    QString probeDecisions;  // the rows from the emulated probe's decisions instead of detecting
     std::vector<std::string> columns{"t", "a", "b"};
     DetectorOptions detector;
 };
@@ -49,7 +52,59 @@ std::optional<QString> readOptions(const QCommandLineParser& parser, DetectOptio
     if (const auto error = readDetectorOptions(parser, options.detector)) return error;
     if (options.detector.engine == core::detector::DetectorEngine::Probe && options.detector.threads > 1)
         return QStringLiteral("--threads is the workstation's: the probe's kernel runs on one");
+    options.probeInput = parser.value(QStringLiteral("probe-input"));
+    options.probeDecisions = parser.value(QStringLiteral("probe-decisions"));
+    if (!options.probeInput.isEmpty() && (!options.output.isEmpty() || !options.probeDecisions.isEmpty()))
+        return QStringLiteral("--probe-input writes the emulated probe's input, nothing else");
+    if (!options.probeDecisions.isEmpty() && options.output.isEmpty())
+        return QStringLiteral("--probe-decisions goes with --output OUT.csv, the rows it makes");
     return std::nullopt;
+}
+
+// Runs `work` over a scan: what the scan or a file throws becomes its
+// message and exit code (bad input 2, a file that cannot be written 1).
+template <typename Work>
+int scanExitCode(Work&& work)
+{
+    try {
+        work();
+    } catch (const core::io::CsvError& e) {
+        printError(QString::fromStdString(e.what()));
+        return kExitUsage;
+    } catch (const core::detector::CsvDetectionError& e) {
+        printError(QString::fromStdString(e.what()));
+        return kExitUsage;
+    } catch (const std::invalid_argument& e) {
+        printError(QString::fromStdString(e.what()));
+        return kExitUsage;
+    } catch (const core::storage::StorageError& e) {
+        printError(QString::fromStdString(e.what()));
+        return kExitFailure;
+    }
+    return kExitOk;
+}
+
+// The emulated probe's files (qemu-detect.sh), the scan read as detect
+// reads it: a scan detect refuses is refused here in the same words.
+int emulatedProbeFiles(const DetectOptions& options)
+{
+    const std::string input = options.input.toStdString();
+    const bool packs = !options.probeInput.isEmpty();
+    const QString written = packs ? options.probeInput : options.output;
+    return scanExitCode([&] {
+        std::vector<std::string> inputs{input};
+        if (!packs) inputs.push_back(options.probeDecisions.toStdString());
+        core::storage::refuseOverwriting(written.toStdString(), inputs);
+        std::size_t samples = 0;
+        core::storage::writeAtomically(written.toStdString(), [&](std::ostream& out) {
+            samples = packs ? core::detector::writeProbeInput(input, options.columns, options.detector.parameters, out)
+                            : core::detector::writeProbeDecisionRows(input, options.columns,
+                                                                     options.probeDecisions.toStdString(), out);
+        });
+        QTextStream(stdout) << written << ": " << samples
+                            << (packs ? " samples for the emulated probe\n"
+                                      : " rows of the emulated probe's decisions\n");
+    });
 }
 
 }  // namespace
@@ -71,6 +126,14 @@ int runDetect(const QStringList& arguments)
          QStringLiteral("workstation (default: double precision) or probe (the probe's own single-precision "
                         "kernel, firmware/probe-detector, exponential form, one thread)."),
          QStringLiteral("ENGINE"), QStringLiteral("workstation")},
+        {QStringLiteral("probe-input"),
+         QStringLiteral("Instead of detecting, write the scan and the detector's settings as an emulated probe reads "
+                        "them (firmware/probe-detector/scan_format.h) to FILE."),
+         QStringLiteral("FILE")},
+        {QStringLiteral("probe-decisions"),
+         QStringLiteral("Instead of detecting, write --output's rows from an emulated probe's decisions FILE "
+                        "(scan_format.h) for this scan."),
+         QStringLiteral("FILE")},
     });
     addDetectorOptions(parser);
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
@@ -85,12 +148,14 @@ int runDetect(const QStringList& arguments)
         return usageError(QString::fromStdString(e.what()), usage);
     }
 
+    if (!options.probeInput.isEmpty() || !options.probeDecisions.isEmpty()) return emulatedProbeFiles(options);
+
     core::detector::CsvDetection result;
     const core::detector::StretchSettings settings{options.detector.parameters, options.detector.hold_s,
                                                    options.detector.spacing_m, options.detector.threads,
                                                    options.detector.engine};
     const std::string input = options.input.toStdString();
-    try {
+    const int exit = scanExitCode([&] {
         if (options.output.isEmpty()) {
             result = core::detector::detectCsv(input, options.columns, settings);
         } else {
@@ -105,19 +170,8 @@ int runDetect(const QStringList& arguments)
                                                    });
             });
         }
-    } catch (const core::io::CsvError& e) {
-        printError(QString::fromStdString(e.what()));
-        return kExitUsage;
-    } catch (const core::detector::CsvDetectionError& e) {
-        printError(QString::fromStdString(e.what()));
-        return kExitUsage;
-    } catch (const std::invalid_argument& e) {
-        printError(QString::fromStdString(e.what()));
-        return kExitUsage;
-    } catch (const core::storage::StorageError& e) {
-        printError(QString::fromStdString(e.what()));
-        return kExitFailure;
-    }
+    });
+    if (exit != kExitOk) return exit;
     if (options.detector.json) {
         std::cout << eventsJson(result.samples, result.lags, result.detectorSeconds, result.events, options.detector)
                   << '\n';

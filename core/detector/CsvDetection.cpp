@@ -2,7 +2,6 @@
 #include "core/detector/CsvDetection.h"
 
 #include "core/detector/OfflineDetection.h"
-#include "core/io/CsvColumns.h"
 #include "core/io/UniformTimeBase.h"
 #include "core/text/NumberFormat.h"
 
@@ -50,34 +49,50 @@ void appendSampleRows(std::string& text, std::span<const ProbeOutput> outputs, d
     }
 }
 
+CheckedScan::CheckedScan(std::string path, std::vector<std::string> columns)
+    : m_path(std::move(path)),
+      m_columns(std::move(columns))
+{
+    std::vector<std::vector<double>> block;
+    io::UniformTimeBaseCheck timeBase;
+    io::CsvColumnReader times(m_path, {m_columns.front()});
+    while (const std::size_t n = times.read(StreamingDetection::kChunk, block, m_lines)) {
+        try {
+            timeBase.add(block.front());
+        } catch (const io::TimeBaseError& e) {
+            throw CsvDetectionError("'" + m_path + "' line " + std::to_string(m_lines[e.row()]) + ": " + e.what());
+        }
+        m_rows += n;
+    }
+    if (m_rows == 0) throw io::CsvError("'" + m_path + "' has a header but no data rows");
+    m_interval_s = timeBase.interval_s();
+    m_reader = std::make_unique<io::CsvColumnReader>(m_path, m_columns);
+}
+
+std::size_t CheckedScan::read(std::vector<std::vector<double>>& block)
+{
+    const std::size_t n = m_reader->read(StreamingDetection::kChunk, block, m_lines);
+    if (n == 0) {
+        if (m_read != m_rows) throw CsvDetectionError("'" + m_path + "' changed while it was read");
+        return 0;
+    }
+    const SeriesInput series{0.0, {block.begin() + 1, block.end()}, block.front()};
+    if (const auto bad = firstUnusableSample(series)) {
+        const auto [cantilever, index] = *bad;
+        throw CsvDetectionError("'" + m_path + "' line " + std::to_string(m_lines[index]) + ", column '" +
+                                m_columns[cantilever + 1] + "': " + shortNumber(series.cantilevers[cantilever][index]) +
+                                " is beyond what the detector can use (|value| ≤ " + shortNumber(kLargestUsableValue) +
+                                ")");
+    }
+    m_read += n;
+    return n;
+}
+
 CsvDetection detectCsv(const std::string& path, const std::vector<std::string>& columns, StretchSettings settings,
                        const CsvSampleSink& sink)
 {
-    std::vector<std::vector<double>> block;  // time, then the cantilevers; reused
-    std::vector<std::size_t> lines;
-    const auto timeBaseError = [&](const io::TimeBaseError& e) {
-        return CsvDetectionError("'" + path + "' line " + std::to_string(lines[e.row()]) + ": " + e.what());
-    };
-    // First the time column alone, through the whole file: the forgetting
-    // factors depend on the interval to the last bit, so it must be the
-    // whole file's mean before the first sample is detected.
-    io::UniformTimeBaseCheck timeBase;
-    std::size_t rows = 0;
-    {
-        io::CsvColumnReader times(path, {columns.front()});
-        while (const std::size_t n = times.read(StreamingDetection::kChunk, block, lines)) {
-            try {
-                timeBase.add(block.front());
-            } catch (const io::TimeBaseError& e) {
-                throw timeBaseError(e);
-            }
-            rows += n;
-        }
-    }
-    if (rows == 0) throw io::CsvError("'" + path + "' has a header but no data rows");
-    settings.parameters.sampleInterval_s = timeBase.interval_s();
-
-    io::CsvColumnReader reader(path, columns);
+    CheckedScan scan(path, columns);
+    settings.parameters.sampleInterval_s = scan.interval_s();
     CsvDetection result;
     result.interval_s = settings.parameters.sampleInterval_s;
     StreamingDetection detection(columns.size() - 1, settings, 0.0,
@@ -85,21 +100,14 @@ CsvDetection detectCsv(const std::string& path, const std::vector<std::string>& 
                                      if (sink) sink(outputs, result.interval_s);
                                  });
     result.lags = detection.lagCount();
-    while (reader.read(StreamingDetection::kChunk, block, lines) > 0) {
-        const SeriesInput series{0.0, {block.begin() + 1, block.end()}, block.front()};
-        if (const auto bad = firstUnusableSample(series)) {
-            const auto [cantilever, index] = *bad;
-            throw CsvDetectionError(
-                "'" + path + "' line " + std::to_string(lines[index]) + ", column '" + columns[cantilever + 1] +
-                "': " + shortNumber(series.cantilevers[cantilever][index]) +
-                " is beyond what the detector can use (|value| ≤ " + shortNumber(kLargestUsableValue) + ")");
-        }
+    std::vector<std::vector<double>> block;  // time, then the cantilevers; reused
+    while (scan.read(block) > 0) {
         const auto started = std::chrono::steady_clock::now();
-        detection.push(series.cantilevers, block.front());
+        const std::vector<std::span<const double>> cantilevers(block.begin() + 1, block.end());
+        detection.push(cantilevers, block.front());
         result.detectorSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     }
     result.samples = static_cast<std::size_t>(detection.samplesPushed());
-    if (result.samples != rows) throw CsvDetectionError("'" + path + "' changed while it was read");
     result.events = detection.finish().events;
     return result;
 }

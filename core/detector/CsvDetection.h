@@ -5,7 +5,9 @@
 #pragma once
 
 #include "core/detector/StreamingDetection.h"
+#include "core/io/CsvColumns.h"
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -35,6 +37,35 @@ using CsvSampleSink = std::function<void(std::span<const ProbeOutput> outputs, d
 inline constexpr const char* kSampleRowsHeader = "t,out,rab,rba,lag_ab_ms,lag_ba_ms\n";
 // Replaces `text` with the rows of `outputs` (lags in samples × interval_s).
 void appendSampleRows(std::string& text, std::span<const ProbeOutput> outputs, double interval_s);
+
+// A scan read as `detect` reads it, with every check and message of its:
+// the time column first, through the whole file (the forgetting factors
+// depend on the interval to the last bit, so it is the whole file's mean
+// before the first sample is detected), then blocks of rows, each value
+// checked for one the detector can use. The emulated probe's files are
+// written and read through it too (ProbeScanFiles), so the probe refuses
+// what detect refuses, in the same words. Throws io::CsvError and
+// CsvDetectionError.
+class CheckedScan {
+public:
+    // `columns`: the time column, then the cantilevers in probe order (each
+    // also found under an SI unit, "t [s]").
+    CheckedScan(std::string path, std::vector<std::string> columns);
+    double interval_s() const { return m_interval_s; }
+    std::size_t rows() const { return m_rows; }
+    // The next rows into `block` (the times, then the cantilevers); 0 at
+    // the end, where a file that changed while it was read is refused.
+    std::size_t read(std::vector<std::vector<double>>& block);
+
+private:
+    std::string m_path;
+    std::vector<std::string> m_columns;
+    double m_interval_s = 0.0;
+    std::size_t m_rows = 0;
+    std::size_t m_read = 0;
+    std::vector<std::size_t> m_lines;
+    std::unique_ptr<io::CsvColumnReader> m_reader;
+};
 
 // `columns`: the time column, then the cantilevers in probe order (each
 // also found under an SI unit, "t [s]"). settings.parameters'

@@ -5,7 +5,6 @@
 
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 namespace tactiscope::core::detector {
 
@@ -23,8 +22,7 @@ std::size_t FirmwarePairDetector::longestLag()
     return PD_MAX_LAG_SAMPLES;
 }
 
-FirmwarePairDetector::FirmwarePairDetector(const DetectorParameters& parameters)
-    : m_state(std::make_unique<State>())
+ProbeLags FirmwarePairDetector::probeLags(const DetectorParameters& parameters)
 {
     if (parameters.window_s) throw std::invalid_argument("the probe's detector has the exponential form only");
     const ResolvedParameters resolved = resolve(parameters);
@@ -33,19 +31,25 @@ FirmwarePairDetector::FirmwarePairDetector(const DetectorParameters& parameters)
                                     " lags of up to " + std::to_string(longestLag()) + " samples; these are " +
                                     std::to_string(resolved.lags.size()) + " up to " +
                                     std::to_string(resolved.maxLag()));
-    std::vector<unsigned short> lags;
-    std::vector<double> lambda_s;
+    ProbeLags result;
     for (const std::uint32_t k : resolved.lags) {
-        lags.push_back(static_cast<unsigned short>(k));
+        result.lags.push_back(static_cast<unsigned short>(k));
         // λ as resolve() takes it: c = k·Δt for the paper's rule.
-        lambda_s.push_back(parameters.lambdaRule == LambdaRule::EqualsLag
-                               ? static_cast<double>(k) * parameters.sampleInterval_s
-                               : parameters.fixedLambda_s);
+        result.lambda_s.push_back(parameters.lambdaRule == LambdaRule::EqualsLag
+                                      ? static_cast<double>(k) * parameters.sampleInterval_s
+                                      : parameters.fixedLambda_s);
     }
+    return result;
+}
+
+FirmwarePairDetector::FirmwarePairDetector(const DetectorParameters& parameters)
+    : m_state(std::make_unique<State>())
+{
+    const ProbeLags lags = probeLags(parameters);
     const pd_config config{parameters.sampleInterval_s,
-                           static_cast<unsigned>(lags.size()),
-                           lags.data(),
-                           lambda_s.data(),
+                           static_cast<unsigned>(lags.lags.size()),
+                           lags.lags.data(),
+                           lags.lambda_s.data(),
                            parameters.epsilon,
                            parameters.threshold,
                            parameters.faceToFace ? 1 : 0};

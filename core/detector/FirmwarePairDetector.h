@@ -10,14 +10,25 @@
 
 #include <memory>
 #include <span>
+#include <vector>
 
 namespace tactiscope::core::detector {
 
+// The lags and forgetting times a probe's kernel is configured with, as
+// resolve() gives them (pd_config in probe_detector.h; the emulated probe's
+// input file carries the same, ProbeScanFiles).
+struct ProbeLags {
+    std::vector<unsigned short> lags;  // k in samples
+    std::vector<double> lambda_s;      // forgetting time per lag
+};
+
 class FirmwarePairDetector {
 public:
-    // The lags and forgetting times as resolve() gives them. Throws
-    // std::invalid_argument for parameters the probe cannot run: the
+    // Throws std::invalid_argument for parameters the probe cannot run: the
     // sliding window, more lags or a longer lag than it is built for.
+    static ProbeLags probeLags(const DetectorParameters& parameters);
+
+    // Configured with probeLags(parameters); throws as it does.
     explicit FirmwarePairDetector(const DetectorParameters& parameters);
     ~FirmwarePairDetector();
     FirmwarePairDetector(FirmwarePairDetector&&) noexcept;

@@ -125,6 +125,16 @@ void pd_step(pd_detector* d, float a, float b, pd_output* out)
     const unsigned size = PD_MAX_LAG_SAMPLES + 1;
     const float sa = a * PD_INPUT_SCALE;
     const float sb = d->b_sign * b * PD_INPUT_SCALE;
+    if (!isfinite(sa) || !isfinite(sb)) {
+        pd_reset(d);
+        out->decision = 0;
+        out->rab = 0.0f;
+        out->rba = 0.0f;
+        out->lag_ab = 0;
+        out->lag_ba = 0;
+        out->restarted = 1;
+        return;
+    }
     d->head = d->head + 1 == size ? 0 : d->head + 1;
     d->history_a[d->head] = sa;
     d->history_b[d->head] = sb;
@@ -185,4 +195,5 @@ void pd_step(pd_detector* d, float a, float b, pd_output* out)
     out->rba = root_of(&ba);
     out->lag_ab = ab.index >= 0 ? d->lag[ab.index] : 0;
     out->lag_ba = ba.index >= 0 ? d->lag[ba.index] : 0;
+    out->restarted = 0;
 }

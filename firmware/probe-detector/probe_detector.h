@@ -57,6 +57,7 @@ typedef struct {
     float rba;
     unsigned short lag_ab;
     unsigned short lag_ba;
+    unsigned char restarted; /* 1: this sample was not finite; skipped, the detector begins again */
 } pd_output;
 
 /* All state; about 6 KB at the default sizes. */
@@ -100,8 +101,12 @@ int pd_init(pd_detector* d, const pd_config* config);
 void pd_reset(pd_detector* d);
 
 /* One sample of each cantilever, in strain: the detector's state advances
- * and `out` says what it decided. Values beyond ±2^100 make no sense for
- * strain and are not checked here; the caller keeps them out. */
+ * and `out` says what it decided. A sample that is not a finite number (a
+ * NaN from a dropped reading, an infinity) would poison every lag's sums
+ * for good, so that the detector decided nothing for the rest of the scan:
+ * instead it is skipped, the detector starts again from silence, and `out`
+ * says so (restarted 1, decision 0). Finite values beyond ±2^100 make no
+ * sense for strain and are not checked here; the caller keeps them out. */
 void pd_step(pd_detector* d, float a, float b, pd_output* out);
 
 #ifdef __cplusplus

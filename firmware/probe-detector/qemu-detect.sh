@@ -4,8 +4,11 @@
 # Builds the kernel for that core (qemu/build.sh), runs it in QEMU with the
 # scan fed through semihosting and writes the rows `tactiscope-cli detect
 # --output` writes (t,out,rab,rba,lag_ab_ms,lag_ba_ms), with the paper's
-# settings. Exits 3 naming what is missing when the ARM toolchain, QEMU or a
-# host C compiler is not installed, 2 for a scan it cannot use, 1 when the
+# settings. The scan is read by tactiscope-cli itself (`detect
+# --probe-input`, `--probe-decisions`): a scan detect refuses is refused
+# here, with detect's message and exit code 2. The CLI is $TACTISCOPE_CLI,
+# or tactiscope-cli on the PATH, or the dev build's. Exits 3 naming what is
+# missing when the ARM toolchain, QEMU or the CLI is not there, 1 when the
 # emulated probe fails (a fault, or no answer in TACTISCOPE_QEMU_TIMEOUT
 # seconds, default 600).
 set -euo pipefail
@@ -22,18 +25,17 @@ esac
 missing=()
 command -v arm-none-eabi-gcc >/dev/null || missing+=("arm-none-eabi-gcc (Debian: gcc-arm-none-eabi libnewlib-arm-none-eabi)")
 command -v qemu-system-arm >/dev/null || missing+=("qemu-system-arm (Debian: qemu-system-arm)")
-command -v cc >/dev/null || missing+=("a host C compiler, cc (Debian: build-essential)")
+cli="${TACTISCOPE_CLI:-$(command -v tactiscope-cli || echo "$here/../../build/dev/app/tactiscope-cli")}"
+[[ -x "$cli" ]] || missing+=("tactiscope-cli (scripts/build.sh dev tactiscope-cli, or set TACTISCOPE_CLI)")
 if ((${#missing[@]})); then
   printf 'qemu-detect: cannot run the emulated probe: missing %s\n' "${missing[@]}" >&2
   exit 3
 fi
-[[ -r "$scan" ]] || { echo "qemu-detect: $scan cannot be read" >&2; exit 2; }
 
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-cc -std=c99 -O2 -o "$work/scan_io" "$here/host/scan_io.c" -lm
+"$cli" detect "$scan" --probe-input "$work/probe-in.bin" >/dev/null || exit $?
 "$here/qemu/build.sh" "$core" "$work/probe.elf"
-"$work/scan_io" pack "$scan" "$work/probe-in.bin"
 # Semihosting opens its files relative to QEMU's working directory.
 status=0
 (cd "$work" && timeout "${TACTISCOPE_QEMU_TIMEOUT:-600}" qemu-system-arm -machine "$machine" -nographic \
@@ -42,4 +44,4 @@ if ((status != 0)) || [[ ! -s "$work/probe-out.bin" ]]; then
   echo "qemu-detect: the emulated $core probe failed (status $status)" >&2
   exit 1
 fi
-"$work/scan_io" unpack "$scan" "$work/probe-out.bin" "$out"
+"$cli" detect "$scan" --probe-decisions "$work/probe-out.bin" --output "$out" >/dev/null

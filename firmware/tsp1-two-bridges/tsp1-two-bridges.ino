@@ -285,7 +285,7 @@ void addSample(const int32_t (&values)[2])
     }
     for (int32_t v : values) dataFrame.i32(v);
     // The detector on the strains the host receives (code × the INFO scale).
-    pd_output o = {0, 0.0f, 0.0f, 0, 0};
+    pd_output o = {0, 0.0f, 0.0f, 0, 0, 0};
     if (detecting)
         pd_step(&detector, static_cast<float>(values[0]) * kStrainPerCount,
                 static_cast<float>(values[1]) * kStrainPerCount, &o);

@@ -40,6 +40,14 @@ QStringList decisionsOf(const QString& path)
     return decisions;
 }
 
+// The environment the script finds this build's CLI in.
+QProcessEnvironment withTheCli()
+{
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("TACTISCOPE_CLI"), QStringLiteral(TACTISCOPE_CLI));
+    return environment;
+}
+
 class ProbeFirmware : public ::testing::TestWithParam<const char*> {};
 
 }  // namespace
@@ -57,6 +65,7 @@ TEST_P(ProbeFirmware, DecidesAsTheWorkstationAndWritesTheHostBuildsBytes)
         const QString onHost = dir.filePath(QStringLiteral("host-%1.csv").arg(scan.name.c_str()));
         const QString workstation = dir.filePath(QStringLiteral("ws-%1.csv").arg(scan.name.c_str()));
         QProcess qemu;
+        qemu.setProcessEnvironment(withTheCli());
         qemu.start(QStringLiteral(TACTISCOPE_SOURCE_DIR "/firmware/probe-detector/qemu-detect.sh"),
                    {csv, onProbe, core});
         ASSERT_TRUE(qemu.waitForFinished(600000));
@@ -89,24 +98,43 @@ TEST_P(ProbeFirmware, DecidesAsTheWorkstationAndWritesTheHostBuildsBytes)
 
 INSTANTIATE_TEST_SUITE_P(Cores, ProbeFirmware, ::testing::Values("m4", "m7", "m33"));
 
-// What the script says instead of a result: a scan it cannot use (exit 2)
-// and, on a machine without the ARM toolchain or QEMU, what to install (exit 3).
-TEST(ProbeFirmwareScript, SaysWhatIsWrongInsteadOfWritingRows)
+// What the script says instead of a result: for a scan `detect` refuses,
+// exactly what detect says, with its exit code 2 (before, the script read
+// scans with a host tool of its own and exited 0 on a 1e300 sample, empty
+// cells read as 0, time going back, "0.002s" and "1e-6abc"); and, on a
+// machine without the ARM toolchain or QEMU, what to install (exit 3).
+TEST(ProbeFirmwareScript, RefusesWhatDetectRefusesWithItsWords)
 {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     const QString script = QStringLiteral(TACTISCOPE_SOURCE_DIR "/firmware/probe-detector/qemu-detect.sh");
-    const QString bad = dir.filePath("bad.csv");
-    QFile file(bad);
-    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
-    file.write("time,x,y\n0,1,2\n0.002,1,2\n");
-    file.close();
-    QProcess run;
-    run.start(script, {bad, dir.filePath("out.csv")});
-    ASSERT_TRUE(run.waitForFinished(120000));
-    EXPECT_EQ(run.exitCode(), 2);
-    EXPECT_TRUE(run.readAllStandardError().contains("has no columns t, a and b"));
-    EXPECT_FALSE(QFile::exists(dir.filePath("out.csv")));
+    const std::vector<std::pair<const char*, const char*>> scans{
+        {"no-columns", "time,x,y\n0,1,2\n0.002,1,2\n"},
+        {"huge", "t,a,b\n0,0,0\n0.002,1e300,0\n0.004,0,0\n"},
+        {"empty-cell", "t,a,b\n0,0,0\n0.002,,0\n0.004,0,0\n"},
+        {"time-back", "t,a,b\n0,0,0\n0.004,0,0\n0.002,0,0\n"},
+        {"unit-in-cell", "t,a,b\n0,0,0\n0.002s,0,0\n0.004,0,0\n"},
+        {"trailing-text", "t,a,b\n0,0,0\n0.002,1e-6abc,0\n0.004,0,0\n"},
+    };
+    for (const auto& [name, text] : scans) {
+        SCOPED_TRACE(name);
+        const QString bad = dir.filePath(QString::fromLatin1(name) + ".csv");
+        QFile file(bad);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        file.write(text);
+        file.close();
+        const auto detect = runCli({"detect", bad});
+        EXPECT_EQ(detect.exitCode, 2);
+        QProcess run;
+        run.setProcessEnvironment(withTheCli());
+        run.start(script, {bad, dir.filePath("out.csv")});
+        ASSERT_TRUE(run.waitForFinished(120000));
+        EXPECT_EQ(run.exitCode(), 2);
+        const QString said = QString::fromUtf8(run.readAllStandardError());
+        EXPECT_FALSE(detect.err.isEmpty());
+        EXPECT_EQ(said, detect.err);
+        EXPECT_FALSE(QFile::exists(dir.filePath("out.csv")));
+    }
 
     // A PATH with only what the script needs before it looks for its tools.
     const QString bin = dir.filePath("bin");
@@ -115,10 +143,13 @@ TEST(ProbeFirmwareScript, SaysWhatIsWrongInsteadOfWritingRows)
     QProcess bare;
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
     environment.insert(QStringLiteral("PATH"), bin);
+    environment.insert(QStringLiteral("TACTISCOPE_CLI"), dir.filePath("no-such-cli"));
     bare.setProcessEnvironment(environment);
-    bare.start(QStringLiteral("/bin/bash"), {script, bad, dir.filePath("out.csv")});
+    bare.start(QStringLiteral("/bin/bash"), {script, dir.filePath("huge.csv"), dir.filePath("out.csv")});
     ASSERT_TRUE(bare.waitForFinished(60000));
     EXPECT_EQ(bare.exitCode(), 3);
     const QByteArray said = bare.readAllStandardError();
-    EXPECT_TRUE(said.contains("gcc-arm-none-eabi") && said.contains("qemu-system-arm")) << said.toStdString();
+    EXPECT_TRUE(said.contains("gcc-arm-none-eabi") && said.contains("qemu-system-arm") &&
+                said.contains("tactiscope-cli"))
+        << said.toStdString();
 }
