@@ -2,6 +2,7 @@
 #include "core/ChannelDescriptor.h"
 
 #include <array>
+#include <set>
 #include <string>
 #include <utility>
 
@@ -72,6 +73,14 @@ std::string channelRoleChoices()
         text += kRoleNames[i].second;
     }
     return text;
+}
+
+std::optional<std::string> repeatedChannelName(std::span<const ChannelDescriptor> channels)
+{
+    std::set<std::string_view> seen;
+    for (const ChannelDescriptor& c : channels)
+        if (!seen.insert(c.name).second) return c.name;
+    return std::nullopt;
 }
 
 }  // namespace tactiscope::core

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -44,5 +45,10 @@ struct ChannelDescriptor {
 
     friend bool operator==(const ChannelDescriptor&, const ChannelDescriptor&) = default;
 };
+
+// The first name two of `channels` share, or none: a session's export
+// names its columns by them, so one recorded with two channels "a" could
+// not be imported back.
+std::optional<std::string> repeatedChannelName(std::span<const ChannelDescriptor> channels);
 
 }  // namespace tactiscope::core

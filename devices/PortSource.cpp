@@ -1,6 +1,7 @@
 // PortSource: handshake, reading and protocol dispatch.
 #include "devices/PortSource.h"
 
+#include "core/text/ShortQuote.h"
 #include "devices/SteadyClock.h"
 
 #include <algorithm>
@@ -63,6 +64,11 @@ PortSource::PortSource(std::unique_ptr<transport::Transport> transport, const Po
     }
     if (!m_text && m_binary.rateProblem())
         throw transport::TransportError(m_transport->description() + ": " + *m_binary.rateProblem());
+    if (const auto twice = core::repeatedChannelName(m_text ? m_text->channels() : m_binary.channels()))
+        throw transport::TransportError(m_transport->description() + ": two of its channels are called " +
+                                        core::text::quoteShort(*twice) +
+                                        "; each needs a name of its own (a recording's export names its columns "
+                                        "by them, and could not be read back)");
     if (m_text) {
         if (const auto unknown = m_text->unknownUnitNames(); !unknown.empty())
             throw transport::TransportError(m_transport->description() + ": a unit is given for '" + unknown.front() +

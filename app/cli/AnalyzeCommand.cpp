@@ -31,7 +31,7 @@ std::optional<QString> pickChannels(const std::vector<core::storage::StoredChann
         std::optional<std::size_t> found;
         for (std::size_t c = 0; c < channels.size(); ++c)
             if (toQString(channels[c].descriptor.name) == name.trimmed()) found = c;
-        if (!found) return QStringLiteral("the session has no channel '%1'").arg(name.trimmed());
+        if (!found) return QStringLiteral("the session has no channel %1").arg(quoted(name.trimmed()));
         picked.push_back(*found);
     }
     if (picked.size() < 2) return QStringLiteral("--channels needs at least two cantilevers, e.g. a,b");
@@ -65,7 +65,7 @@ int runAnalyze(const QStringList& arguments)
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
     if (!parser.positionalArguments().isEmpty())
-        return usageError(QStringLiteral("unexpected '%1'").arg(parser.positionalArguments().front()), usage);
+        return usageError(QStringLiteral("unexpected %1").arg(quoted(parser.positionalArguments().front())), usage);
     if (!parser.isSet(QStringLiteral("db"))) return usageError(QStringLiteral("--db FILE is required"), usage);
     if (!parser.isSet(QStringLiteral("session")))
         return usageError(QStringLiteral("--session ID|UUID|last is required"), usage);
@@ -84,7 +84,8 @@ int runAnalyze(const QStringList& arguments)
         const auto id = resolveSession(store, parser.value(QStringLiteral("session")));
         if (!id)
             return usageError(
-                QStringLiteral("no session '%1' in the store").arg(parser.value(QStringLiteral("session"))), usage);
+                QStringLiteral("no session %1 in the store").arg(quoted(parser.value(QStringLiteral("session")))),
+                usage);
         if (const auto refusal = core::storage::oneDeviceRefusal(store, *id, "analyze"))
             return usageError(toQString(*refusal), usage);
         const auto summary = *store.session(*id);

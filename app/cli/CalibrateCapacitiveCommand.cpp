@@ -68,7 +68,7 @@ std::optional<QString> readRaw(const QString& path, const QString& unit, calibra
     const std::string capacitanceUnit =
         channels[*capacitance].unit.empty() ? unit.toStdString() : channels[*capacitance].unit;
     const auto scale = faradsPer(capacitanceUnit);
-    if (!scale) return QStringLiteral("capacitance in '%1': use F, nF, pF or fF").arg(toQString(capacitanceUnit));
+    if (!scale) return QStringLiteral("capacitance in %1: use F, nF, pF or fF").arg(quoted(toQString(capacitanceUnit)));
     const double loadScale = load ? newtonsPer(channels[*load].unit).value_or(1.0) : 1.0;
     auto& store = imported.store();
     const auto summary = store.session(imported.session());
@@ -116,16 +116,16 @@ int calibrateStoredSweep(const QCommandLineParser& parser, const QString& usage,
         storage::SessionSource& store = *opened;
         const QString text = parser.value(QStringLiteral("session"));
         const auto id = resolveSession(store, text);
-        if (!id) return usageError(QStringLiteral("no session '%1' in the store").arg(text), usage);
+        if (!id) return usageError(QStringLiteral("no session %1 in the store").arg(quoted(text)), usage);
         const QString capacitanceLabel = parser.value(QStringLiteral("capacitance"));
         const QString referenceLabel = parser.value(QStringLiteral("reference"));
         const auto capacitance = channelFor(store, *id, capacitanceLabel, ChannelRole::Capacitance);
         if (!capacitance)
             return usageError(capacitanceLabel.isEmpty()
                                   ? QStringLiteral("session %1 has no capacitance channel").arg(*id)
-                                  : QStringLiteral("session %1 has no channel '%2' (name it DEVICE/CHANNEL)")
+                                  : QStringLiteral("session %1 has no channel %2 (name it DEVICE/CHANNEL)")
                                         .arg(*id)
-                                        .arg(capacitanceLabel),
+                                        .arg(quoted(capacitanceLabel)),
                               usage);
         const auto reference = channelFor(store, *id, referenceLabel, ChannelRole::ReferenceForce);
         if (!reference)
@@ -134,9 +134,9 @@ int calibrateStoredSweep(const QCommandLineParser& parser, const QString& usage,
                                                    "reference-force and none is a force; name one with --reference "
                                                    "DEVICE/CHANNEL")
                                         .arg(*id)
-                                  : QStringLiteral("session %1 has no channel '%2' (name it DEVICE/CHANNEL)")
+                                  : QStringLiteral("session %1 has no channel %2 (name it DEVICE/CHANNEL)")
                                         .arg(*id)
-                                        .arg(referenceLabel),
+                                        .arg(quoted(referenceLabel)),
                               usage);
         const derived::ReferencedSweep paired = derived::referencedSweep(store, *capacitance, *reference);
         sweep =

@@ -90,11 +90,11 @@ int runCli(const QStringList& arguments)
         return usageError(QStringLiteral("help takes one command's name"), usage());
     }
     if (first.startsWith(QLatin1Char('-')))
-        return usageError(QStringLiteral("unknown option '%1'").arg(first), usage());
+        return usageError(QStringLiteral("unknown option %1").arg(quoted(first)), usage());
     for (const Command& command : kCommands) {
         if (first == QLatin1String(command.name)) return command.run(arguments.mid(1));
     }
-    return usageError(QStringLiteral("unknown command '%1'").arg(first), usage());
+    return usageError(QStringLiteral("unknown command %1").arg(quoted(first)), usage());
 }
 
 }  // namespace tactiscope::cli

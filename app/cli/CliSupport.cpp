@@ -4,6 +4,7 @@
 #include "core/io/CsvColumns.h"
 #include "core/storage/Database.h"
 #include "core/storage/central/PgConnection.h"
+#include "core/text/ShortQuote.h"
 
 #include <QRegularExpression>
 #include <QTextStream>
@@ -107,6 +108,27 @@ std::optional<double> parseNumber(const QString& text)
     const double value = text.trimmed().toDouble(&ok);
     if (!ok || !std::isfinite(value)) return std::nullopt;
     return value;
+}
+
+QString quoted(const QString& value)
+{
+    return toQString(core::text::quoteShort(value.toStdString()));
+}
+
+std::optional<double> numberInRange(const QCommandLineParser& parser, const char* option,
+                                    const core::NumberRange& range, double fallback, QString& error)
+{
+    const QString name = QLatin1String(option);
+    if (!parser.isSet(name)) return fallback;
+    return numberInRange(name, parser.value(name), range, error);
+}
+
+std::optional<double> numberInRange(const QString& option, const QString& text, const core::NumberRange& range,
+                                    QString& error)
+{
+    if (const auto value = parseNumber(text); value && range.holds(*value)) return value;
+    error = QStringLiteral("--%1 must be a number %2, not %3").arg(option, toQString(range.text()), quoted(text));
+    return std::nullopt;
 }
 
 QString toQString(std::string_view text)

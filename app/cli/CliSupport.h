@@ -2,6 +2,7 @@
 // lines on stderr, and conversions between Qt and standard strings.
 #pragma once
 
+#include "core/NumberRanges.h"
 #include "core/UnitScale.h"
 #include "core/Vocabulary.h"
 #include "core/modes/ChannelRoles.h"
@@ -71,7 +72,20 @@ std::optional<core::UnitAssignment> parseUnitsOption(const QCommandLineParser& p
 // user's to fix: 2; a store that failed (storage::StorageError): 1.
 int exitForReadError(const QString& path);
 
+// A value the user gave, quoted for a message: whole when short, else its
+// first 40 characters and its length (core/text/ShortQuote.h).
+QString quoted(const QString& value);
+
 // A finite number, or nothing when `text` is not one.
 std::optional<double> parseNumber(const QString& text);
+// Option --NAME's number when it lies in `range` (core/NumberRanges.h, the
+// one place every range is kept), `fallback` when the option is not given;
+// otherwise nothing, and `error` says the range and what was given:
+// "--pre must be a number from 0 to 60 s, not '1e9'".
+std::optional<double> numberInRange(const QCommandLineParser& parser, const char* option,
+                                    const core::NumberRange& range, double fallback, QString& error);
+// The same for one value `text` of option --NAME (one of a list, one a port).
+std::optional<double> numberInRange(const QString& option, const QString& text, const core::NumberRange& range,
+                                    QString& error);
 
 }  // namespace tactiscope::cli

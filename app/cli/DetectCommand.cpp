@@ -48,7 +48,7 @@ std::optional<QString> readOptions(const QCommandLineParser& parser, DetectOptio
     if (engine == QStringLiteral("probe"))
         options.detector.engine = core::detector::DetectorEngine::Probe;
     else if (engine != QStringLiteral("workstation"))
-        return QStringLiteral("--engine is workstation or probe, not '%1'").arg(engine);
+        return QStringLiteral("--engine is workstation or probe, not %1").arg(quoted(engine));
     if (const auto error = readDetectorOptions(parser, options.detector)) return error;
     if (options.detector.engine == core::detector::DetectorEngine::Probe && options.detector.threads > 1)
         return QStringLiteral("--threads is the workstation's: the probe's kernel runs on one");

@@ -68,8 +68,8 @@ std::optional<QString> readDetectorOptions(const QCommandLineParser& parser, Det
             step = parseNumber(parts[2]);
         }
         if (!start || !stop || !step)
-            return QStringLiteral("--lags-ms must be START:STOP:STEP in milliseconds, got '%1'")
-                .arg(parser.value(QStringLiteral("lags-ms")));
+            return QStringLiteral("--lags-ms must be START:STOP:STEP in milliseconds, got %1")
+                .arg(quoted(parser.value(QStringLiteral("lags-ms"))));
         try {
             options.parameters.lags_s = core::detector::lagRange_s(*start * 1e-3, *stop * 1e-3, *step * 1e-3);
         } catch (const std::invalid_argument& e) {
@@ -81,7 +81,7 @@ std::optional<QString> readDetectorOptions(const QCommandLineParser& parser, Det
         if (lambda != QLatin1String("lag")) {
             const auto value = parseNumber(lambda);
             if (!value || *value <= 0.0)
-                return QStringLiteral("--lambda-ms must be 'lag' or a positive number, got '%1'").arg(lambda);
+                return QStringLiteral("--lambda-ms must be 'lag' or a positive number, got %1").arg(quoted(lambda));
             options.parameters.lambdaRule = core::detector::LambdaRule::Fixed;
             options.parameters.fixedLambda_s = *value * 1e-3;
         }
@@ -90,8 +90,8 @@ std::optional<QString> readDetectorOptions(const QCommandLineParser& parser, Det
         if (!parser.isSet(QString::fromLatin1(name))) return std::nullopt;
         const auto value = parseNumber(parser.value(QString::fromLatin1(name)));
         if (!value)
-            return QStringLiteral("--%1 must be a number, got '%2'")
-                .arg(QString::fromLatin1(name), parser.value(QString::fromLatin1(name)));
+            return QStringLiteral("--%1 must be a number, got %2")
+                .arg(QString::fromLatin1(name), quoted(parser.value(QString::fromLatin1(name))));
         target = *value * scale;
         return std::nullopt;
     };

@@ -74,7 +74,8 @@ int runEmulate(const QStringList& arguments)
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
     if (!parser.positionalArguments().isEmpty())
-        return usageError(QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().front()), usage);
+        return usageError(QStringLiteral("unexpected argument %1").arg(quoted(parser.positionalArguments().front())),
+                          usage);
     if (!parser.isSet(QStringLiteral("link"))) return usageError(QStringLiteral("--link PATH is required"), usage);
 
     devices::emulator::EmulatorOptions options;
@@ -89,20 +90,14 @@ int runEmulate(const QStringList& arguments)
         if (!value || *value <= 0.0 || (integer && *value != std::floor(*value))) return std::nullopt;
         return value;
     };
-    if (parser.isSet(QStringLiteral("rate"))) {
-        options.rate_hz = positive("rate", false);
-        if (!options.rate_hz) return usageError(QStringLiteral("--rate must be a positive number of Hz"), usage);
-    }
-    if (parser.isSet(QStringLiteral("clock-rate"))) {
-        options.clockRate_hz = positive("clock-rate", false);
-        if (!options.clockRate_hz)
-            return usageError(QStringLiteral("--clock-rate must be a positive number of Hz"), usage);
-    }
-    if (parser.isSet(QStringLiteral("info-rate"))) {
-        options.infoRate_hz = positive("info-rate", false);
-        if (!options.infoRate_hz)
-            return usageError(QStringLiteral("--info-rate must be a positive number of Hz"), usage);
-    }
+    for (const auto& [option, into] :
+         {std::pair{"rate", &options.rate_hz}, std::pair{"clock-rate", &options.clockRate_hz},
+          std::pair{"info-rate", &options.infoRate_hz}})
+        if (parser.isSet(QLatin1String(option))) {
+            QString error;
+            *into = numberInRange(parser, option, core::kSampleRateRange, 0.0, error);
+            if (!*into) return usageError(error, usage);
+        }
     if (parser.isSet(QStringLiteral("channels"))) {
         const auto channels = positive("channels", true);
         if (!channels || *channels > 64)

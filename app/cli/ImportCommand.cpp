@@ -46,11 +46,9 @@ int runImport(const QStringList& arguments)
 
     core::storage::CsvImportOptions options;
     if (parser.isSet(QStringLiteral("rate"))) {
-        options.rate_hz = parseNumber(parser.value(QStringLiteral("rate")));
-        if (!options.rate_hz || *options.rate_hz <= 0.0)
-            return usageError(QStringLiteral("--rate must be a positive number of Hz, got '%1'")
-                                  .arg(parser.value(QStringLiteral("rate"))),
-                              usage);
+        QString error;
+        options.rate_hz = numberInRange(parser, "rate", core::kSampleRateRange, 0.0, error);
+        if (!options.rate_hz) return usageError(error, usage);
     }
     options.timeColumn = parser.value(QStringLiteral("time-column")).toStdString();
     if (parser.isSet(QStringLiteral("columns"))) {

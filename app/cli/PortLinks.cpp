@@ -31,13 +31,13 @@ std::optional<std::vector<std::optional<QString>>> shareOut(const QString& optio
         const std::string name = value.left(equals).toStdString();
         const auto port = std::ranges::find(ports, name, &ProbePortArgument::name);
         if (name.empty() || port == ports.end()) {
-            error = QStringLiteral("--%1: no port is named '%2' (give it as --port %2=PATH)")
-                        .arg(option, value.left(equals));
+            error = QStringLiteral("--%1: no port is named %2 (name one with --port NAME=PATH)")
+                        .arg(option, quoted(value.left(equals)));
             return std::nullopt;
         }
         auto& slot = named[static_cast<std::size_t>(port - ports.begin())];
         if (slot) {
-            error = QStringLiteral("--%1: '%2' is given twice").arg(option, value.left(equals));
+            error = QStringLiteral("--%1: %2 is given twice").arg(option, quoted(value.left(equals)));
             return std::nullopt;
         }
         slot = value.mid(equals + 1);
@@ -78,11 +78,8 @@ std::optional<std::vector<PortLink>> parsePortLinks(const PortLinkValues& values
             }
         }
         if (const auto& text = (*rates)[i]) {
-            const auto rate = parseNumber(*text);
-            if (!rate || *rate <= 0.0) {
-                error = QStringLiteral("--rate must be a positive number of Hz");
-                return std::nullopt;
-            }
+            const auto rate = numberInRange(QStringLiteral("rate"), *text, core::kSampleRateRange, error);
+            if (!rate) return std::nullopt;
             (link.options.protocol == devices::WireProtocol::Text ? link.options.textRate_hz
                                                                   : link.options.requestRate_hz) = rate;
         }

@@ -20,7 +20,7 @@ int runPorts(const QStringList& arguments)
     parser.addOption({QStringLiteral("json"), QStringLiteral("Print one JSON object.")});
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     if (!parser.positionalArguments().isEmpty())
-        return usageError(QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().front()),
+        return usageError(QStringLiteral("unexpected argument %1").arg(quoted(parser.positionalArguments().front())),
                           commandUsage(parser, name));
 
     const auto serial = devices::transport::listSerialPorts();

@@ -72,8 +72,8 @@ std::optional<int> addDevices(devices::session::LivePipeline& pipeline, const st
             return kExitUsage;
         }
         if (std::ranges::none_of(ports, [&](const ProbePortArgument& p) { return p.name == named->first; })) {
-            printError(QStringLiteral("--units: no port is named '%1' (give it as --port %1=PATH)")
-                           .arg(toQString(named->first)));
+            printError(QStringLiteral("--units: no port is named %1 (name one with --port NAME=PATH)")
+                           .arg(quoted(toQString(named->first))));
             return kExitUsage;
         }
         unitsOf[named->first][named->second] = unit;
@@ -86,8 +86,8 @@ std::optional<int> addDevices(devices::session::LivePipeline& pipeline, const st
         }
         const auto named = deviceAndChannel(key);
         if (!named) {
-            printError(QStringLiteral("--roles: with several devices, name each channel as DEVICE/CHANNEL ('%1')")
-                           .arg(toQString(key)));
+            printError(QStringLiteral("--roles: with several devices, name each channel as DEVICE/CHANNEL (%1)")
+                           .arg(quoted(toQString(key))));
             return kExitUsage;
         }
         rolesOf[named->first][named->second] = role;
@@ -140,7 +140,7 @@ std::optional<int> addDevices(devices::session::LivePipeline& pipeline, const st
     }
     for (const auto& [device, assignment] : rolesOf)
         if (several && std::ranges::find(names, device) == names.end()) {
-            printError(QStringLiteral("--roles: there is no device '%1'").arg(toQString(device)));
+            printError(QStringLiteral("--roles: there is no device %1").arg(quoted(toQString(device))));
             return kExitUsage;
         }
     for (std::size_t i = 0; i < sources.size(); ++i) {
@@ -287,7 +287,8 @@ int runRecord(const QStringList& arguments)
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
     if (!parser.positionalArguments().isEmpty())
-        return usageError(QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().front()), usage);
+        return usageError(QStringLiteral("unexpected argument %1").arg(quoted(parser.positionalArguments().front())),
+                          usage);
     if (!parser.isSet(QStringLiteral("port"))) return usageError(QStringLiteral("--port PATH is required"), usage);
     if (!parser.isSet(QStringLiteral("db"))) return usageError(QStringLiteral("--db FILE is required"), usage);
 

@@ -58,7 +58,7 @@ int runReport(const QStringList& arguments)
     });
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     if (!parser.positionalArguments().isEmpty())
-        return badInput(QStringLiteral("report: unexpected '%1'").arg(parser.positionalArguments().front()));
+        return badInput(QStringLiteral("report: unexpected %1").arg(quoted(parser.positionalArguments().front())));
     for (const char* option : {"db", "session", "output"}) {
         if (parser.value(QLatin1String(option)).isEmpty())
             return badInput(QStringLiteral("report: --%1 is required").arg(QLatin1String(option)));
@@ -87,8 +87,8 @@ int runReport(const QStringList& arguments)
         const auto store = openStoreArgument(db, core::storage::Database::Access::ReadOnly);
         const auto id = resolveSession(*store, parser.value(QStringLiteral("session")));
         if (!id)
-            return badInput(QStringLiteral("report: no session '%1' in %2")
-                                .arg(parser.value(QStringLiteral("session")), toQString(store->location())));
+            return badInput(QStringLiteral("report: no session %1 in %2")
+                                .arg(quoted(parser.value(QStringLiteral("session"))), toQString(store->location())));
         data = core::report::gatherReport(*store, *id, request);
     } catch (const core::storage::StorageError& e) {
         return storageFailure(e, QStringLiteral("report: "));

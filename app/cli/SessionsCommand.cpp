@@ -280,7 +280,7 @@ int decideVerdict(SessionSource& store, std::int64_t id, const QString& word, co
 {
     const auto verdict = verdictArgument(word);
     if (!verdict) {
-        printError(QStringLiteral("the verdict must be pass or defects-found, not '%1'").arg(word));
+        printError(QStringLiteral("the verdict must be pass or defects-found, not %1").arg(quoted(word)));
         return kExitUsage;
     }
     const auto session = store.session(id);
@@ -408,7 +408,7 @@ int runSessions(const QStringList& arguments)
     const bool takesId = action == QLatin1String("show") || action == QLatin1String("export") ||
                          action == QLatin1String("delete") || decides;
     const bool takesNone = action == QLatin1String("list") || action == QLatin1String("upgrade");
-    if (!takesNone && !takesId) return usageError(QStringLiteral("unknown action '%1'").arg(action), usage);
+    if (!takesNone && !takesId) return usageError(QStringLiteral("unknown action %1").arg(quoted(action)), usage);
     if (decides && positional.size() != 3)
         return usageError(
             QStringLiteral("verdict needs a session and a verdict: verdict ID|UUID|last pass|defects-found"), usage);
@@ -463,7 +463,7 @@ int runSessions(const QStringList& arguments)
         if (!id) {
             printError(positional[1] == QLatin1String("last")
                            ? QStringLiteral("%1 holds no sessions").arg(toQString(db))
-                           : QStringLiteral("there is no session '%1' in %2").arg(positional[1], toQString(db)));
+                           : QStringLiteral("there is no session %1 in %2").arg(quoted(positional[1]), toQString(db)));
             return kExitUsage;
         }
         if (action == QLatin1String("show")) return show(store, *id, parser.isSet(QStringLiteral("json")));

@@ -67,7 +67,8 @@ int runShuntCheck(const QStringList& arguments)
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
     if (!parser.positionalArguments().isEmpty())
-        return usageError(QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().front()), usage);
+        return usageError(QStringLiteral("unexpected argument %1").arg(quoted(parser.positionalArguments().front())),
+                          usage);
     if (!parser.isSet(QStringLiteral("port"))) return usageError(QStringLiteral("--port PATH is required"), usage);
     if (!parser.isSet(QStringLiteral("channel")))
         return usageError(QStringLiteral("--channel NAME is required"), usage);
@@ -77,19 +78,17 @@ int runShuntCheck(const QStringList& arguments)
         if (!bridge) return usageError(QStringLiteral("--bridge must be quarter, half or full"), usage);
         settings.bridge = *bridge;
     }
-    const auto positive = [&](const char* option, double& into) {
-        if (!parser.isSet(QLatin1String(option))) return true;
-        const auto value = parseNumber(parser.value(QLatin1String(option)));
-        if (!value || !(*value > 0.0)) return false;
-        into = *value;
-        return true;
-    };
     double tolerance_percent = settings.tolerance * 100.0;
-    for (const auto& [option, into] :
-         {std::pair{"gauge-ohms", &settings.gauge_ohm}, std::pair{"shunt-ohms", &settings.shunt_ohm},
-          std::pair{"gauge-factor", &settings.gaugeFactor}, std::pair{"tolerance", &tolerance_percent}})
-        if (!positive(option, *into))
-            return usageError(QStringLiteral("--%1 must be a positive number").arg(QLatin1String(option)), usage);
+    for (const auto& [option, range, into] :
+         {std::tuple{"gauge-ohms", core::kGaugeOhmsRange, &settings.gauge_ohm},
+          std::tuple{"shunt-ohms", core::kShuntOhmsRange, &settings.shunt_ohm},
+          std::tuple{"gauge-factor", core::kGaugeFactorRange, &settings.gaugeFactor},
+          std::tuple{"tolerance", core::kShuntToleranceRange, &tolerance_percent}}) {
+        QString error;
+        const auto value = numberInRange(parser, option, range, *into, error);
+        if (!value) return usageError(error, usage);
+        *into = *value;
+    }
     settings.tolerance = tolerance_percent / 100.0;
 
     std::unique_ptr<devices::BlockSource> source;
@@ -103,7 +102,7 @@ int runShuntCheck(const QStringList& arguments)
     const std::string channelName = parser.value(QStringLiteral("channel")).toStdString();
     const auto found = std::ranges::find(channels, channelName, &core::ChannelDescriptor::name);
     if (found == channels.end()) {
-        printError(QStringLiteral("the probe has no channel '%1'").arg(toQString(channelName)));
+        printError(QStringLiteral("the probe has no channel %1").arg(quoted(toQString(channelName))));
         return kExitUsage;
     }
     settings.channel = static_cast<std::size_t>(found - channels.begin());

@@ -91,18 +91,20 @@ int runSimulate(const QStringList& arguments)
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
     if (!parser.positionalArguments().isEmpty())
-        return usageError(QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().front()), usage);
+        return usageError(QStringLiteral("unexpected argument %1").arg(quoted(parser.positionalArguments().front())),
+                          usage);
 
     bool ok = false;
     const double seconds = parser.value(secondsOption).toDouble(&ok);
     if (!ok || !std::isfinite(seconds) || seconds <= 0.0 || seconds > kMaxSeconds)
-        return usageError(QStringLiteral("--seconds must be a number of seconds in (0, 86400], got '%1'")
-                              .arg(parser.value(secondsOption)),
+        return usageError(QStringLiteral("--seconds must be a number of seconds in (0, 86400], got %1")
+                              .arg(quoted(parser.value(secondsOption))),
                           usage);
     const qulonglong seed = parser.value(seedOption).toULongLong(&ok);
     if (!ok)
         return usageError(
-            QStringLiteral("--seed must be a non-negative integer, got '%1'").arg(parser.value(seedOption)), usage);
+            QStringLiteral("--seed must be a non-negative integer, got %1").arg(quoted(parser.value(seedOption))),
+            usage);
     const QString scenarioId = parser.value(scenarioOption);
     auto scenario = devices::simulator::makeScenario(scenarioId.toStdString(), seed);
     if (!scenario)
@@ -115,8 +117,8 @@ int runSimulate(const QStringList& arguments)
         if (parser.isSet(stiffnessOption)) {
             phantom.objectStiffness_n_per_m = parser.value(stiffnessOption).toDouble(&ok);
             if (!ok || !std::isfinite(phantom.objectStiffness_n_per_m) || phantom.objectStiffness_n_per_m <= 0.0)
-                return usageError(QStringLiteral("--object-stiffness must be a positive number of N/m, got '%1'")
-                                      .arg(parser.value(stiffnessOption)),
+                return usageError(QStringLiteral("--object-stiffness must be a positive number of N/m, got %1")
+                                      .arg(quoted(parser.value(stiffnessOption))),
                                   usage);
         }
         if (parser.isSet(depthsOption)) {
@@ -124,8 +126,8 @@ int runSimulate(const QStringList& arguments)
             for (const QString& depth : parser.value(depthsOption).split(QLatin1Char(','))) {
                 const double mm = depth.trimmed().toDouble(&ok);
                 if (!ok || !std::isfinite(mm) || mm <= 0.0 || mm > 50.0)
-                    return usageError(QStringLiteral("--depths-mm must list depths in (0, 50] mm, got '%1'").arg(depth),
-                                      usage);
+                    return usageError(
+                        QStringLiteral("--depths-mm must list depths in (0, 50] mm, got %1").arg(quoted(depth)), usage);
                 phantom.pressDepths_m.push_back(mm * 1e-3);
             }
         }

@@ -31,7 +31,7 @@ int runSync(const QStringList& arguments)
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
     if (!parser.positionalArguments().isEmpty())
-        return usageError(QStringLiteral("unexpected '%1'").arg(parser.positionalArguments().front()), usage);
+        return usageError(QStringLiteral("unexpected %1").arg(quoted(parser.positionalArguments().front())), usage);
     for (const char* option : {"db", "server"})
         if (parser.value(QLatin1String(option)).isEmpty())
             return usageError(QStringLiteral("--%1 is required").arg(QLatin1String(option)), usage);

@@ -42,15 +42,10 @@ QList<QCommandLineOption> watchOptions()
 std::optional<WatchOptions> parseWatchOptions(const QCommandLineParser& parser, QString& error)
 {
     WatchOptions options;
-    const auto seconds = [&](const char* name, double& into) {
-        if (!parser.isSet(QLatin1String(name))) return true;
-        const auto value = parseNumber(parser.value(QLatin1String(name)));
-        if (!value || *value < 0.0) {
-            error = QStringLiteral("--%1 must be 0 or more seconds").arg(QLatin1String(name));
-            return false;
-        }
-        into = *value;
-        return true;
+    const auto seconds = [&](const char* name, const core::NumberRange& range, double& into) {
+        const auto value = numberInRange(parser, name, range, into, error);
+        if (value) into = *value;
+        return value.has_value();
     };
     if (parser.isSet(QStringLiteral("trigger"))) {
         const auto parsed = core::trigger::parseTrigger(parser.value(QStringLiteral("trigger")).toStdString());
@@ -60,8 +55,9 @@ std::optional<WatchOptions> parseWatchOptions(const QCommandLineParser& parser, 
         }
         core::trigger::TriggerSettings settings;
         settings.condition = *parsed.condition;
-        if (!seconds("pre", settings.pre_s) || !seconds("post", settings.post_s) ||
-            !seconds("hold-off", settings.holdOff_s))
+        if (!seconds("pre", core::kPreTriggerRange, settings.pre_s) ||
+            !seconds("post", core::kPostTriggerRange, settings.post_s) ||
+            !seconds("hold-off", core::kHoldOffRange, settings.holdOff_s))
             return std::nullopt;
         if (parser.isSet(QStringLiteral("sessions")) && parser.isSet(QStringLiteral("rearm"))) {
             error = QStringLiteral("give --sessions N or --rearm, not both");

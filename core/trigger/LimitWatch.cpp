@@ -1,6 +1,7 @@
 // LimitWatch: the limit's words, hold time to raise, hysteresis to clear.
 #include "core/trigger/LimitWatch.h"
 
+#include "core/NumberRanges.h"
 #include "core/text/NumberFormat.h"
 #include "core/text/ShortQuote.h"
 
@@ -154,7 +155,8 @@ ParsedLimit parseLimit(std::string_view text)
         const std::string_view value = colon == std::string_view::npos ? std::string_view() : part.substr(colon + 1);
         if (name == "hold") {
             const auto hold = number(value);
-            if (!hold || *hold < 0.0) return fail(text::quoteShort(part) + " is no hold time (0 s or more)");
+            if (!hold || !kLimitHoldRange.holds(*hold))
+                return fail(text::quoteShort(part) + " is no hold time (" + kLimitHoldRange.text() + ")");
             spec.hold_s = *hold;
             continue;
         }

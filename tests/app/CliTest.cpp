@@ -140,3 +140,34 @@ TEST(Cli, SimulateFailsClearlyWhenTheOutputCannotBeCreated)
     EXPECT_TRUE(
         firstLine(run.err).startsWith(QStringLiteral("tactiscope-cli: cannot create '/nonexistent-dir/x.csv'")));
 }
+
+// Every message that repeats a value the user gave quotes at most its first
+// 40 characters and its length (issue 54: a 100 kB value was echoed whole):
+// a command, an argument, a session, a number, an engine, a port's name.
+TEST(Cli, APastedValueIsQuotedShortInEveryMessage)
+{
+    const QString pasted = QString(100000, QLatin1Char('7')) + QStringLiteral("x");
+    QTemporaryDir dir;
+    const QString db = dir.filePath("s.tactiscope");
+    ASSERT_EQ(runCli({"simulate", "--seconds", "1", "--output", dir.filePath("s.csv")}).exitCode, 0);
+    ASSERT_EQ(runCli({"import", dir.filePath("s.csv"), "--db", db}).exitCode, 0);
+    const std::vector<QStringList> commands{
+        {pasted},
+        {"simulate", pasted},
+        {"simulate", "--seconds", pasted},
+        {"sessions", "--db", db, "show", pasted},
+        {"sessions", "--db", db, pasted},
+        {"detect", dir.filePath("s.csv"), "--engine", pasted},
+        {"detect", dir.filePath("s.csv"), "--threshold", pasted},
+        {"record", "--port", "a=/nonexistent", "--db", db, "--rate", pasted + QStringLiteral("=5")},
+        {"import", dir.filePath("s.csv"), "--db", db, "--rate", pasted},
+    };
+    for (const QStringList& command : commands) {
+        const CliResult result = runCli(command);
+        const std::string shown = command.join(' ').left(60).toStdString();
+        EXPECT_EQ(result.exitCode, 2) << shown << ": " << result.err.left(300).toStdString();
+        EXPECT_TRUE(result.err.contains(QStringLiteral("(100001 characters)"))) << shown << ": "
+                                                                              << result.err.left(300).toStdString();
+        EXPECT_LT(result.err.size(), 3000) << shown;
+    }
+}

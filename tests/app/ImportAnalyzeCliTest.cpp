@@ -297,7 +297,7 @@ TEST(ImportCli, BadInputIsExitCodeTwoWithOneClearLineAndNothingStored)
         {{"import", ragged, "--db", db}, "line 3 has 1 fields, the header has 2"},
         {{"import", beyondFloat, "--db", db},
          "line 2, column 'a': '1e308' is beyond the ±3.4e38 a stored sample holds"},
-        {{"import", noTime, "--db", db, "--rate", "-5"}, "--rate must be a positive number"},
+        {{"import", noTime, "--db", db, "--rate", "-5"}, "--rate must be a number from 1e-06 to 1e+09 Hz, not '-5'"},
         {{"import", noTime, "--db", db, "--rate", "10", "--mode", "surgery"}, "--mode must be"},
         {{"import", noTime, "--db", db, "--rate", "10", "--time-column", "x"}, "has no column 'x'"},
         {{"import", noTime, "--rate", "10"}, "--db FILE is required"},

@@ -102,3 +102,19 @@ TEST(ShuntCheckCli, AnOlderProbeAndAMovingOneAreRefusedWithTheReason)
     EXPECT_EQ(noBridge.exitCode, 1);
     EXPECT_TRUE(noBridge.err.contains(QStringLiteral("has no bridge to shunt"))) << noBridge.err.toStdString();
 }
+
+// The check's numbers keep to their ranges (core/NumberRanges.h) before any
+// port is opened: before, --tolerance 1e300 passed a full bridge reading a
+// quarter bridge's step (+299 %) and stored it as a pass.
+TEST(ShuntCheckCli, NumbersOutsideTheirRangesAreRefusedNamingTheRange)
+{
+    const auto refused = [](const QStringList& options, const QString& why) {
+        const auto result = runCli(QStringList{"shunt-check", "--port", "/nonexistent", "--channel", "a"} + options);
+        EXPECT_EQ(result.exitCode, 2) << options.join(' ').toStdString();
+        EXPECT_TRUE(result.err.contains(why)) << result.err.toStdString();
+    };
+    refused({"--tolerance", "1e300"}, QStringLiteral("--tolerance must be a number from 0.01 to 50 %, not '1e300'"));
+    refused({"--tolerance", "0"}, QStringLiteral("--tolerance must be a number from 0.01 to 50 %"));
+    refused({"--gauge-factor", "-2"}, QStringLiteral("--gauge-factor must be a number from 0.1 to 200"));
+    refused({"--shunt-ohms", "x"}, QStringLiteral("--shunt-ohms must be a number from 1 to 1e+09 Ω, not 'x'"));
+}

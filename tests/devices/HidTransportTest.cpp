@@ -122,3 +122,30 @@ TEST(HidTransport, APortSourceReadsFramesSplitAcrossRecordedReports)
     EXPECT_EQ(parseCommand({written[0].begin() + 1 + kHeaderSize, written[0].begin() + 1 + kHeaderSize + 1})->code,
               CommandCode::RequestInfo);
 }
+
+// A probe whose INFO names two channels alike is refused at the handshake,
+// naming the name: before, it was recorded, and its export (columns named
+// by the channels) could not be imported back.
+TEST(PortSourceHandshake, AProbeNamingTwoChannelsAlikeIsRefused)
+{
+    using namespace protocol;
+    const ChannelInfo a{{"a", "", core::ChannelKind::Strain}, 1e-9f, 0.0f};
+    std::vector<std::uint8_t> stream =
+        encodeFrame(FrameType::Info, 0, encodeInfo({"Acme", "twin", "T1", "1.0", 500000, {a, a}}));
+    for (std::uint16_t s = 1; s <= 5; ++s) {
+        DataPayload data{s * 20000u, SampleFormat::Int32, 2, 10, {}};
+        data.raw.assign(20, 7);
+        const auto frame = encodeFrame(FrameType::Data, s, encodeData(data));
+        stream.insert(stream.end(), frame.begin(), frame.end());
+    }
+    std::vector<std::vector<std::uint8_t>> written;
+    try {
+        PortSource source(
+            std::make_unique<HidTransport>(std::make_unique<RecordedReports>(asReports(stream), &written)), {});
+        ADD_FAILURE() << "a probe with two channels 'a' was opened";
+    } catch (const transport::TransportError& e) {
+        EXPECT_NE(std::string(e.what()).find("two of its channels are called 'a'; each needs a name of its own"),
+                  std::string::npos)
+            << e.what();
+    }
+}
