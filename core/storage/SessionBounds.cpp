@@ -1,7 +1,9 @@
 // SessionBounds: the rules a stored session's counts, indices and gaps keep.
 #include "core/storage/SessionBounds.h"
 
+#include "core/NumberRanges.h"
 #include "core/storage/Database.h"
+#include "core/text/NumberFormat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,8 +26,9 @@ double SessionBounds::mostLost(double seconds) const
 void SessionBounds::session(double duration_s, std::int64_t channels, double lowestRate_hz, double highestRate_hz)
 {
     if (channels == 0) damaged("it has no channel rows");
-    if (!(std::isfinite(lowestRate_hz) && lowestRate_hz > 0.0 && std::isfinite(highestRate_hz)))
-        damaged("a channel's sample rate is not a positive number");
+    if (!kSampleRateRange.holds(lowestRate_hz) || !kSampleRateRange.holds(highestRate_hz))
+        damaged("a channel's sample rate of " + text::formatShortest(lowestRate_hz) + " … " +
+                text::formatShortest(highestRate_hz) + " Hz is not " + kSampleRateRange.text());
     m_duration_s = std::isfinite(duration_s) ? std::max(0.0, duration_s) : 0.0;
     m_channels = channels;
     m_rate_hz = highestRate_hz;
@@ -50,6 +53,7 @@ void SessionBounds::chunk(std::int64_t first, std::int64_t count, std::int64_t b
                 " samples after the one before it, more than its time allows");
     m_chunkEnd = first + count;
     m_chunkEndTime_s = time_s + static_cast<double>(count) / m_rate_hz;
+    m_covered += count;
     ++m_chunks;
 }
 
@@ -65,6 +69,20 @@ void SessionBounds::gap(std::int64_t first, std::int64_t count)
         damaged("a gap of " + std::to_string(count) + " samples at sample " + std::to_string(first) +
                 " runs past the session's end");
     m_gapsFrom = first + 1;
+    m_covered += count;
+    m_gapEnd = std::max(m_gapEnd, first + count);
+}
+
+void SessionBounds::whole() const
+{
+    // Every sample up to the last is in a chunk or a gap: the recorder
+    // writes a gap for every sample it lost. Samples in neither are a chunk
+    // deleted (or moved) by hand; read, they were NaN rows said to be
+    // "0 lost".
+    const std::int64_t end = std::max(m_chunkEnd, m_gapEnd);
+    if (m_covered < end)
+        damaged(std::to_string(end - m_covered) + " of its " + std::to_string(end) +
+                " samples are in no chunk and no gap (a chunk is missing)");
 }
 
 }  // namespace tactiscope::core::storage

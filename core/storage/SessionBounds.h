@@ -7,13 +7,14 @@
 // full, or crashing.
 //
 // What is checked, per session:
-//  - it has channel rows, with finite positive rates;
+//  - it has channel rows, with rates in kSampleRateRange;
 //  - every chunk: first index ≥ 0, 1 ≤ count ≤ kMostChunkSamples, a blob of
 //    count × channels × 4 bytes, a finite time, after the chunk before;
 //  - the samples skipped between two chunks (lost ones) at most what the
 //    time between them allows at the session's rate (twice, plus 2 s);
 //  - every gap: first index ≥ 0, count ≥ 1, ending no later than the last
-//    chunk plus what the session's own duration (started to ended) allows.
+//    chunk plus what the session's own duration (started to ended) allows;
+//  - every sample up to the last in a chunk or a gap (no chunk missing).
 #pragma once
 
 #include <cstdint>
@@ -45,6 +46,9 @@ public:
     void session(double duration_s, std::int64_t channels, double lowestRate_hz, double highestRate_hz);
     void chunk(std::int64_t first, std::int64_t count, std::int64_t bytes, double time_s);
     void gap(std::int64_t first, std::int64_t count);
+    // After the chunks and gaps read so far: every sample up to the last is
+    // in one of them.
+    void whole() const;
 
     std::int64_t chunkEnd() const { return m_chunkEnd; }
     std::int64_t gapsFrom() const { return m_gapsFrom; }
@@ -63,6 +67,8 @@ private:
     double m_firstTime_s = 0.0;  // of the first chunk: times are measured from it
     std::int64_t m_chunks = 0;
     std::int64_t m_gapsFrom = 0;  // gaps starting before this index are checked
+    std::int64_t m_gapEnd = 0;    // one past the last gap checked
+    std::int64_t m_covered = 0;   // samples in the chunks and gaps checked
 };
 
 }  // namespace tactiscope::core::storage

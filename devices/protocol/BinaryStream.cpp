@@ -34,14 +34,21 @@ constexpr double kHostRateMargin = 1.01;
 constexpr double kNoticeInterval_s = 10.0;
 // An INFO rate this far off the device's own clock is wrong.
 constexpr double kClockRateTolerance = 0.02;
-// The host's arrivals are judged in consecutive windows this long, from
-// this long after the first frame (what was buffered before the first read
-// arrives at once). Over 5 s the host's delivery jitter is well under 1 %;
-// two windows in a row off by more than this fraction of the rate the
-// device states end the stream (its times would all be wrong by as much).
-// Smaller drifts are PortSource's (its clock mapping, core/timing).
-constexpr double kArrivalWindow_s = 5.0;
+// The host's arrivals are judged from this long after the first frame
+// (what was buffered before the first read arrives at once), by the lead
+// of the host's clock over the samples' times at the stated rate: its least
+// over the first second is the delivery latency; a rate that is wrong makes
+// it fall (samples come faster than stated) or rise (slower) in proportion
+// to the time. The host's timing allows a quarter second either way
+// (kHostSlack_s: a late read) or a tenth of the time since, whichever is
+// more; a rise must hold for two seconds (a stall of the host delays
+// arrivals, never hastens them). So a device 20 % off is caught within its
+// first three seconds (before: after two 5 s windows, so a 6 s panel
+// stored as 7.27 s). Smaller drifts are PortSource's (its clock mapping,
+// core/timing).
 constexpr double kArrivalSettle_s = 0.5;
+constexpr double kArrivalBaseline_s = 1.0;
+constexpr double kArrivalRise_s = 2.0;
 constexpr double kArrivalMismatch = 0.10;
 
 std::string hertz(double rate)
@@ -221,22 +228,33 @@ void BinaryStream::checkRate(double hostTime_s)
                         "the recording be; correct the firmware's sample rate";
         return;
     }
-    if (!m_arrivalStart) {
-        if (hostTime_s - *m_hostStart_s >= kArrivalSettle_s) m_arrivalStart.emplace(hostTime_s, m_nextSampleIndex);
-        return;
-    }
-    const double window_s = hostTime_s - m_arrivalStart->first;
-    if (window_s < kArrivalWindow_s) return;
-    const double arriving = static_cast<double>(m_nextSampleIndex - m_arrivalStart->second) / window_s;
-    m_arrivalStart.emplace(hostTime_s, m_nextSampleIndex);  // the next window
-    if (std::abs(arriving / rate - 1.0) <= kArrivalMismatch) {
-        m_arrivalOff = 0;
-        return;
-    }
-    if (++m_arrivalOff < 2) return;  // one window may hold a stall of the host
+    checkArrivals(hostTime_s, rate);
+}
+
+void BinaryStream::checkArrivals(double hostTime_s, double rate)
+{
+    if (hostTime_s - *m_hostStart_s < kArrivalSettle_s) return;
+    const double lead = hostTime_s - static_cast<double>(m_nextSampleIndex) / rate;
+    if (!m_arrivals) m_arrivals = Arrivals{hostTime_s, m_nextSampleIndex, lead, {}};
+    Arrivals& a = *m_arrivals;
+    const double elapsed = hostTime_s - a.start_s;
+    if (elapsed <= kArrivalBaseline_s) a.baseline = std::min(a.baseline, lead);
+    // The least lead of the last kArrivalRise_s: a window's minimum, kept
+    // in order of time with every value above a later one dropped.
+    while (!a.recent.empty() && a.recent.back().second >= lead) a.recent.pop_back();
+    a.recent.emplace_back(hostTime_s, lead);
+    while (a.recent.front().first < hostTime_s - kArrivalRise_s) a.recent.pop_front();
+    if (elapsed <= kArrivalBaseline_s) return;
+    const double allowed = std::max(kHostSlack_s, kArrivalMismatch * elapsed);
+    const bool fast = lead < a.baseline - allowed;
+    const bool slow = elapsed >= kArrivalBaseline_s + kArrivalRise_s && a.recent.front().second > a.baseline + allowed;
+    if (!fast && !slow) return;
+    const double arriving = static_cast<double>(m_nextSampleIndex - a.startIndex) / elapsed;
+    char span[32];
+    std::snprintf(span, sizeof span, "%.1f", elapsed);
     m_rateProblem = "the device's samples arrive at about " + hertz(arriving) + ", not at the " + hertz(rate) +
-                    (m_info ? " it says" : " its first timestamps gave") +
-                    " (over two 5 s windows): the rate is wrong, and so would every time in the recording be";
+                    (m_info ? " it says" : " its first timestamps gave") + " (over its first " + span +
+                    " s): the rate is wrong, and so would every time in the recording be";
 }
 
 std::uint64_t BinaryStream::believedLoss(std::uint16_t sequence, std::uint64_t timestamp_us, double hostTime_s,

@@ -16,8 +16,9 @@
 // - The rate is checked twice: against the device clock over a run of
 //   consecutive frames (an INFO rate more than 2 % off it, or two samples
 //   of stamping jitter over a short run, is wrong), and
-//   against the host's arrivals over 3 s (more than a factor of 2 off:
-//   clock and rate both wrong, or a bad estimate). Either makes
+//   against the host's arrivals from its first seconds (10 % off, or a
+//   quarter second, whichever is more: clock and rate both wrong, or a
+//   bad estimate). Either makes
 //   rateProblem() say why; the stream cannot be recorded truthfully then.
 //
 // Without an INFO frame the channels are ch1…chN, unscaled, and the sample
@@ -29,6 +30,7 @@
 #include "devices/LinkNotice.h"
 #include "devices/protocol/BinaryDecoder.h"
 
+#include <deque>
 #include <optional>
 #include <span>
 #include <string>
@@ -70,6 +72,7 @@ private:
     void publish(const DataPayload& data, std::uint64_t timestamp_us, StreamOutput& out);
     double streamTime_s(std::uint64_t timestamp_us) const;
     void checkRate(double hostTime_s);
+    void checkArrivals(double hostTime_s, double rate);
     void measureClockRate(std::uint16_t sequence, std::uint64_t timestamp_us);
 
     BinaryDecoder m_decoder;
@@ -101,8 +104,14 @@ private:
     std::optional<ClockRun> m_clockRun;  // consecutively numbered frames
     std::optional<double> m_clockRate_hz;
     std::uint64_t m_dataFrames = 0;
-    std::optional<std::pair<double, std::uint64_t>> m_arrivalStart;  // host time, sample index
-    int m_arrivalOff = 0;                                            // consecutive arrival windows off the rate
+    // The host's arrivals against the stated rate (checkArrivals).
+    struct Arrivals {
+        double start_s = 0.0;  // host time the watch began
+        std::uint64_t startIndex = 0;
+        double baseline = 0.0;                         // least lead of the host over the samples, first second
+        std::deque<std::pair<double, double>> recent;  // host time, lead: the last seconds' least leads
+    };
+    std::optional<Arrivals> m_arrivals;
     std::optional<std::string> m_rateProblem;
     std::uint32_t m_blockSequence = 0;
     std::size_t m_dataChannels = 0;

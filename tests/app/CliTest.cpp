@@ -166,8 +166,8 @@ TEST(Cli, APastedValueIsQuotedShortInEveryMessage)
         const CliResult result = runCli(command);
         const std::string shown = command.join(' ').left(60).toStdString();
         EXPECT_EQ(result.exitCode, 2) << shown << ": " << result.err.left(300).toStdString();
-        EXPECT_TRUE(result.err.contains(QStringLiteral("(100001 characters)"))) << shown << ": "
-                                                                              << result.err.left(300).toStdString();
+        EXPECT_TRUE(result.err.contains(QStringLiteral("(100001 characters)")))
+            << shown << ": " << result.err.left(300).toStdString();
         EXPECT_LT(result.err.size(), 3000) << shown;
     }
 }

@@ -272,8 +272,9 @@ TEST(MisbehavingProbe, AnotherProbeOnThePortIsNotTakenForTheFirst)
 
 // A device sampling at 1200 Hz whose INFO and clock both say 1000 Hz: the
 // arrival check only caught a factor of 2, so it was accepted and 6.11 s
-// were stored as 7.23 s. Two 5 s windows 20 % off now end the recording
-// with the reason, exit 1, what came before kept.
+// were stored as 7.23 s; then only two 5 s windows 20 % off ended it, so
+// a 6 s panel was stored as 7.27 s with a verdict. The host's arrivals now
+// end it within its first seconds, with the reason, exit 1.
 TEST(MisbehavingProbe, ADeviceWhoseRateAndClockBothLieByTwentyPercentIsStopped)
 {
     QTemporaryDir dir;
@@ -281,7 +282,7 @@ TEST(MisbehavingProbe, ADeviceWhoseRateAndClockBothLieByTwentyPercentIsStopped)
     QProcess emulator;
     ASSERT_TRUE(startEmulator(
         emulator, link, {"--scenario", "panel-scan", "--rate", "1200", "--info-rate", "1000", "--clock-rate", "1000"}));
-    const auto result = runCli({"record", "--port", link, "--seconds", "20", "--db", dir.filePath("s.tactiscope")});
+    const auto result = runCli({"record", "--port", link, "--seconds", "6", "--db", dir.filePath("s.tactiscope")});
     stopEmulator(emulator);
     EXPECT_EQ(result.exitCode, 1) << result.out.toStdString();
     EXPECT_TRUE(result.err.contains(QStringLiteral("arrive at about 1"))) << result.err.toStdString();

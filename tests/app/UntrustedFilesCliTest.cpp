@@ -154,7 +154,9 @@ TEST_F(UntrustedFiles, ADamagedChunkCountIsADamagedStoreEverywhere)
 // of 2⁶² samples aborted `report` and had `export` write NaN rows until the
 // disk was full; the channel rows deleted made `sessions show` and
 // `export` crash; a negative chunk count was silent (NaN rows, "0 lost",
-// exit 0). Each is now "the store is damaged", naming the session, from
+// exit 0), and so were a chunk moved below index 0 or further on (a
+// deleted one leaves the same hole), and a
+// channel rate of 1e300 or 1e-300 Hz (issue 54). Each is now "the store is damaged", naming the session, from
 // every reader, at once.
 TEST_F(UntrustedFiles, EveryDamagedNumberIsADamagedStoreForEveryReader)
 {
@@ -168,6 +170,12 @@ TEST_F(UntrustedFiles, EveryDamagedNumberIsADamagedStoreForEveryReader)
          "PRAGMA ignore_check_constraints = 1; UPDATE chunks SET count = -130 WHERE first_index = "
          "(SELECT max(first_index) FROM chunks WHERE session_id = 1)"},
         {"a chunk count of 2^40", "UPDATE chunks SET count = 1099511627776 WHERE first_index = 0"},
+        // Issue 54: each read as NaN rows with "0 lost".
+        {"the first chunk moved to index -250", "UPDATE chunks SET first_index = -250 WHERE first_index = 0"},
+        {"the chunk moved 250 samples on (samples in no chunk and no gap)",
+         "UPDATE chunks SET first_index = first_index + 250 WHERE first_index = 0"},
+        {"a channel rate of 1e300 Hz", "UPDATE channels SET sample_rate_hz = 1e300 WHERE position = 0"},
+        {"a channel rate of 1e-300 Hz", "UPDATE channels SET sample_rate_hz = 1e-300 WHERE position = 0"},
     };
     const QByteArray intact = readBytes(m_db);
     for (const auto& [what, sql] : damages) {

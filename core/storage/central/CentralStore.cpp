@@ -272,6 +272,7 @@ void CentralStore::checkLayout(std::int64_t session)
         m_connection.query("SELECT first_index, count FROM gaps WHERE session_id = $1 ORDER BY first_index",
                            PgParams().int64(session), PgFormat::Binary);
     for (int i = 0; i < gaps.rows(); ++i) bounds.gap(gaps.int64(i, 0), gaps.int64(i, 1));
+    bounds.whole();
     m_checked.insert(session);
 }
 
