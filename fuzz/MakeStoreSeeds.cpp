@@ -65,14 +65,14 @@ std::int64_t panelScan(SessionStore& store)
     const auto id = store.beginSession(m, channels, kRate_hz);
     store.appendBlocks(id, std::vector{block(2, 0, 150), block(2, 170, 150)});  // 20 lost between
     store.markLostUntil(id, 330);
-    SessionEvent defect;
-    defect.kind = EventKind::Defect;
-    defect.start_s = 0.1;
-    defect.end_s = 0.15;
-    defect.direction = 1;
-    defect.peakR = 0.93;
-    defect.lag_s = 0.004;
-    defect.speed_m_per_s = 0.05;
+    const SessionEvent defect{.kind = EventKind::Defect,
+                              .start_s = 0.1,
+                              .end_s = 0.15,
+                              .direction = 1,
+                              .peakR = 0.93,
+                              .lag_s = 0.004,
+                              .speed_m_per_s = 0.05,
+                              .note = {}};
     SessionEvent again = defect;
     again.analysis = "threshold 0.8";
     SessionEvent alarm;
