@@ -383,6 +383,12 @@ int prepareSchema(Database& db, int targetVersion)
     if (tables > 0 && application != kApplicationId)
         throw StoreInputError(db.path() + " is an SQLite file of another program, not a Tactiscope session store; " +
                               "it was left untouched");
+    // No Tactiscope writes a version below 1 into a store with tables: read
+    // as one, migrating it would run the migration before the first (the
+    // fuzzer's finding, once an older store's reader migrated a copy).
+    if (tables > 0 && version < 1)
+        throw StoreInputError(db.path() + " says it is store version " + std::to_string(version) +
+                              ", which no Tactiscope writes: the store is damaged; it was left untouched");
     const bool updates = db.access() == Database::Access::ReadWrite || db.readsUpdatableCopy();
     if (version > kSchemaVersion && updates)
         throw StorageError(db.path() + " was written by a newer Tactiscope (store version " + std::to_string(version) +

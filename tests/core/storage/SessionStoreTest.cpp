@@ -241,6 +241,34 @@ TEST_F(SessionStoreTest, ANewerStoreOpensReadOnlyButIsNotWritten)
     EXPECT_EQ(reader.sessions().front().metadata.mode, tactiscope::core::Mode::Capacitive);
 }
 
+// A store whose header says a version no Tactiscope writes (0 or below,
+// with tables): found by the store fuzzer, a read-only open of one with a
+// negative version migrated its private copy from before the first
+// migration and crashed. Refused, read-only and read-write, file untouched.
+TEST_F(SessionStoreTest, AStoreVersionBelowOneIsDamaged)
+{
+    const std::string path = file("below.tactiscope");
+    {
+        SessionStore store(path);
+        store.beginSession(modeOnly(tactiscope::core::Mode::Capacitive), kChannels, 100.0);
+    }
+    for (const int version : {0, -1, -2147483647}) {
+        Database(path, Database::Access::ReadWrite).exec("PRAGMA user_version = " + std::to_string(version));
+        const std::string before = tactiscope::testing::fileBytes(path);
+        for (const auto access : {Database::Access::ReadOnly, Database::Access::ReadWrite}) {
+            try {
+                SessionStore store(path, access);
+                ADD_FAILURE() << "opened a store of version " << version;
+            } catch (const StoreInputError& e) {
+                EXPECT_NE(std::string(e.what()).find("which no Tactiscope writes: the store is damaged"),
+                          std::string::npos)
+                    << e.what();
+            }
+        }
+        EXPECT_EQ(tactiscope::testing::fileBytes(path), before);
+    }
+}
+
 TEST_F(SessionStoreTest, ANewStoreHasTheCurrentVersionAndWal)
 {
     const std::string path = file("fresh.tactiscope");
