@@ -25,6 +25,11 @@ struct NumberRange {
 // A sample rate: one sample in 11.6 days up to the central store's bound
 // on a channel (CentralSchema: sample_rate_hz <= 1e9).
 inline constexpr NumberRange kSampleRateRange{1e-6, 1e9, "Hz"};
+// A recording's set length: a millisecond to 31 days (longer runs until
+// stopped, without --seconds).
+inline constexpr NumberRange kRecordingSecondsRange{0.001, 2678400.0, "s"};
+// Triggered sessions to record (--rearm records without end).
+inline constexpr NumberRange kTriggeredSessionsRange{1.0, 1e6, ""};
 // Seconds a trigger keeps before it: the buffer holds that long of every
 // channel, 77 MB at 16 channels × 10 kHz for 60 s.
 inline constexpr NumberRange kPreTriggerRange{0.0, 60.0, "s"};

@@ -305,9 +305,9 @@ int runRecord(const QStringList& arguments)
     if (!links) return usageError(linkError, usage);
     std::optional<double> seconds;
     if (parser.isSet(QStringLiteral("seconds"))) {
-        seconds = parseNumber(parser.value(QStringLiteral("seconds")));
-        if (!seconds || *seconds <= 0.0)
-            return usageError(QStringLiteral("--seconds must be a positive number"), usage);
+        QString error;
+        seconds = numberInRange(parser, "seconds", core::kRecordingSecondsRange, 0.0, error);
+        if (!seconds) return usageError(error, usage);
     }
     std::optional<core::Mode> mode;
     if (parser.isSet(QStringLiteral("mode"))) {

@@ -3,6 +3,8 @@
 
 #include "CliSupport.h"
 
+#include <cmath>
+
 namespace tactiscope::cli {
 
 QList<QCommandLineOption> watchOptions()
@@ -65,13 +67,12 @@ std::optional<WatchOptions> parseWatchOptions(const QCommandLineParser& parser, 
         }
         settings.sessions = 1u;
         if (parser.isSet(QStringLiteral("sessions"))) {
-            bool ok = false;
-            const uint count = parser.value(QStringLiteral("sessions")).toUInt(&ok);
-            if (!ok || count == 0) {
-                error = QStringLiteral("--sessions must be a whole number of 1 or more");
+            const auto count = numberInRange(parser, "sessions", core::kTriggeredSessionsRange, 1.0, error);
+            if (!count || *count != std::floor(*count)) {
+                if (count) error = QStringLiteral("--sessions must be a whole number");
                 return std::nullopt;
             }
-            settings.sessions = count;
+            settings.sessions = static_cast<unsigned>(*count);
         }
         if (parser.isSet(QStringLiteral("rearm"))) settings.sessions.reset();
         options.trigger = settings;

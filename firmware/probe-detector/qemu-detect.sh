@@ -13,8 +13,12 @@
 # seconds, default 600).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-scan="${1:?usage: qemu-detect.sh SCAN.csv OUT.csv [m4|m7|m33]}"
-out="${2:?usage: qemu-detect.sh SCAN.csv OUT.csv [m4|m7|m33]}"
+if (($# < 2 || $# > 3)); then
+  echo "usage: qemu-detect.sh SCAN.csv OUT.csv [m4|m7|m33]" >&2
+  exit 2
+fi
+scan="$1"
+out="$2"
 core="${3:-m4}"
 case "$core" in
   m4) machine=mps2-an386 ;;
@@ -45,3 +49,4 @@ if ((status != 0)) || [[ ! -s "$work/probe-out.bin" ]]; then
   exit 1
 fi
 "$cli" detect "$scan" --probe-decisions "$work/probe-out.bin" --output "$out" >/dev/null
+echo "qemu-detect: the emulated $core probe decided every sample of $scan: $out"

@@ -136,6 +136,14 @@ TEST(ProbeFirmwareScript, RefusesWhatDetectRefusesWithItsWords)
         EXPECT_FALSE(QFile::exists(dir.filePath("out.csv")));
     }
 
+    // Without OUT.csv: its usage, exit 2 like any command's.
+    QProcess usage;
+    usage.setProcessEnvironment(withTheCli());
+    usage.start(script, {dir.filePath("huge.csv")});
+    ASSERT_TRUE(usage.waitForFinished(60000));
+    EXPECT_EQ(usage.exitCode(), 2);
+    EXPECT_EQ(usage.readAllStandardError(), "usage: qemu-detect.sh SCAN.csv OUT.csv [m4|m7|m33]\n");
+
     // A PATH with only what the script needs before it looks for its tools.
     const QString bin = dir.filePath("bin");
     ASSERT_TRUE(QDir().mkpath(bin));

@@ -266,7 +266,8 @@ TEST(RecordCli, BadInputExitsWithCodeTwoAndAMissingPortWithOne)
         {{"record", "--db", "x"}, "--port PATH is required"},
         {{"record", "--port", "/dev/ttyX"}, "--db FILE is required"},
         {{"record", "--port", "/dev/ttyX", "--db", "x", "--mode", "sculpture"}, "--mode must be"},
-        {{"record", "--port", "/dev/ttyX", "--db", "x", "--seconds", "-1"}, "--seconds must be a positive number"},
+        {{"record", "--port", "/dev/ttyX", "--db", "x", "--seconds", "-1"},
+         "--seconds must be a number from 0.001 to 2678400 s"},
         {{"record", "--port", "/dev/ttyX", "--db", "x", "--baud", "fast"}, "--baud must be"},
         {{"record", "--port", link, "--db", notes, "--seconds", "1"}, "is not a Tactiscope session store"},
     };

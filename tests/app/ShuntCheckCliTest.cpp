@@ -116,5 +116,5 @@ TEST(ShuntCheckCli, NumbersOutsideTheirRangesAreRefusedNamingTheRange)
     refused({"--tolerance", "1e300"}, QStringLiteral("--tolerance must be a number from 0.01 to 50 %, not '1e300'"));
     refused({"--tolerance", "0"}, QStringLiteral("--tolerance must be a number from 0.01 to 50 %"));
     refused({"--gauge-factor", "-2"}, QStringLiteral("--gauge-factor must be a number from 0.1 to 200"));
-    refused({"--shunt-ohms", "x"}, QStringLiteral("--shunt-ohms must be a number from 1 to 1e+09 Ω, not 'x'"));
+    refused({"--shunt-ohms", "x"}, QStringLiteral("--shunt-ohms must be a number from 1 to 1000000000 Ω, not 'x'"));
 }

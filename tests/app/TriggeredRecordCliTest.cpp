@@ -396,13 +396,17 @@ TEST(TriggeredRecordCli, BadTriggerAndLimitOptionsAreRefusedBeforeAnythingIsReco
     refused({"--trigger", "a>>1"}, QStringLiteral("--trigger: "));
     refused({"--trigger", "a>1", "--sessions", "2", "--rearm"}, QStringLiteral("not both"));
     refused({"--trigger", "a>1", "--sessions", "0"}, QStringLiteral("--sessions must be"));
+    refused({"--trigger", "a>1", "--sessions", QString(5000, QLatin1Char('9'))},
+            QStringLiteral("--sessions must be a number from 1 to 1000000, not '9999"));
+    refused({"--trigger", "a>1", "--sessions", "2.5"}, QStringLiteral("--sessions must be a whole number"));
+    refused({"--seconds", "1e300"}, QStringLiteral("--seconds must be a number from 0.001 to 2678400 s, not '1e300'"));
     refused({"--trigger", "a>1", "--post", "-1"}, QStringLiteral("--post must be a number from 0 to 3600 s, not '-1'"));
     // Each range from one table (core/NumberRanges.h); before, --pre 1e9
     // was taken and the pre-trigger buffer grew without bound.
     refused({"--trigger", "a>1", "--pre", "1e9"}, QStringLiteral("--pre must be a number from 0 to 60 s, not '1e9'"));
     refused({"--trigger", "a>1", "--hold-off", "nan"}, QStringLiteral("--hold-off must be a number from 0 to 86400 s"));
-    refused({"--rate", "1e300"}, QStringLiteral("--rate must be a number from 1e-06 to 1e+09 Hz, not '1e300'"));
-    refused({"--rate", "1e-300"}, QStringLiteral("--rate must be a number from 1e-06 to 1e+09 Hz"));
+    refused({"--rate", "1e300"}, QStringLiteral("--rate must be a number from 0.000001 to 1000000000 Hz, not '1e300'"));
+    refused({"--rate", "1e-300"}, QStringLiteral("--rate must be a number from 0.000001 to 1000000000 Hz"));
     refused({"--limit", "force>warming:1"}, QStringLiteral("--limit: "));
     refused({"--limit", "force outside warning:1..-1"}, QStringLiteral("a window is LOW..HIGH"));
     refused({"--stop-on", "warning"}, QStringLiteral("--stop-on takes critical"));
