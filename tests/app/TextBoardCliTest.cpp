@@ -351,6 +351,12 @@ CaughtUp recordABoardThatCatchesUp(double rate_hz, double unread_s, const QStrin
 
 }  // namespace
 
+// The last lines of a catch-up come as fast as the link carries them and
+// as late as a loaded host reads them: the last tenth of a second of it
+// (50 lines at 500 Hz) cannot be told from lines on time. (Once, under a
+// full suite's load, 21 lines, 42 ms, were recorded.)
+constexpr std::uint64_t kLinesWithinLatency = 50;
+
 // Before, with --rate given, the catch-up was recorded as the session's
 // first seconds (a 3 s recording after 35 s unread held 17 s); then, once
 // its lines spanned more than 10 s, as the start the recording had waited
@@ -358,7 +364,7 @@ CaughtUp recordABoardThatCatchesUp(double rate_hz, double unread_s, const QStrin
 TEST(TextBoardCli, WhatABoardCatchesUpOnOnceThePortIsOpenedIsNotRecorded)
 {
     const auto given = recordABoardThatCatchesUp(500.0, 12.0, {"--rate", "500"});
-    EXPECT_GE(given.firstLine, given.dueAtStart);
+    EXPECT_GE(given.firstLine + kLinesWithinLatency, given.dueAtStart);
     // Three seconds at most (the catch-up alone is over 11 s of lines), less
     // what a slow reader (a sanitizer's, sharing its cores) had not read
     // by the stop.
@@ -371,7 +377,7 @@ TEST(TextBoardCli, ABoardThatCatchesUpIsTimedByTheLinesThatCameOnTime)
 {
     const auto timed = recordABoardThatCatchesUp(500.0, 5.0, {});
     EXPECT_LT(std::abs(timed.rate_hz / 500.0 - 1.0), 1e-3) << timed.rate_hz;
-    EXPECT_GE(timed.firstLine, timed.dueAtStart);
+    EXPECT_GE(timed.firstLine + kLinesWithinLatency, timed.dueAtStart);
     EXPECT_LE(timed.samples, 1550u);
     EXPECT_GE(timed.samples, 1200u);
 }
