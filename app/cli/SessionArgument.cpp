@@ -19,8 +19,13 @@ std::unique_ptr<core::storage::SessionSource> openStoreArgument(const QString& d
                                                                 core::storage::Database::Access access)
 {
     auto store = core::storage::openSessionSource(db.toStdString(), access);
-    if (const auto note = store->readNote()) std::cerr << "note: " << *note << '\n';
+    printStoreNote(*store);
     return store;
+}
+
+void printStoreNote(const core::storage::SessionSource& store)
+{
+    if (const auto note = store.readNote()) std::cerr << "note: " << *note << '\n';
 }
 
 std::optional<std::int64_t> resolveSession(core::storage::SessionSource& store, const QString& text)

@@ -16,8 +16,13 @@ namespace tactiscope::cli {
 // Whether --db names something to open: a connection string, or a file
 // that exists (a reader never creates a store).
 bool storeArgumentExists(const QString& db);
+// Opens it and prints what the reader should know of how it was read
+// (printStoreNote).
 std::unique_ptr<core::storage::SessionSource> openStoreArgument(const QString& db,
                                                                 core::storage::Database::Access access);
+// "note: …" on standard error when the store was not read as it is (a
+// private copy, an older version brought up to date, rows left out).
+void printStoreNote(const core::storage::SessionSource& store);
 
 // Nothing when `text` names no session of the store.
 std::optional<std::int64_t> resolveSession(core::storage::SessionSource& store, const QString& text);

@@ -337,7 +337,7 @@ int upgradeStore(const QString& db)
     }
     try {
         const core::storage::SessionStore store(db.toStdString());
-        if (const auto note = store.readNote()) std::cerr << "note: " << *note << '\n';
+        printStoreNote(store);
         QTextStream out(stdout);
         out << db << ": store version " << core::storage::kSchemaVersion;
         if (store.versionFound() < core::storage::kSchemaVersion)

@@ -320,6 +320,10 @@ END)sql";
 // two clocks kept by NTP; never rewritten, so the sync still finds what it
 // sent. Made once, called only by the server's own triggers.
 constexpr const char* kClaimedTime = R"sql(
+-- The server's clock in the stored form, for what is decided here.
+CREATE OR REPLACE FUNCTION server_utc() RETURNS text LANGUAGE sql AS
+    $body$ SELECT to_char(clock_timestamp() AT TIME ZONE 'UTC', 'YYYY-MM-DD"T"HH24:MI:SS.MS"Z"') $body$;
+REVOKE ALL ON FUNCTION server_utc() FROM PUBLIC;
 CREATE OR REPLACE FUNCTION claimed_time(claimed text, what text) RETURNS timestamptz
 LANGUAGE plpgsql SET search_path = public AS $body$
 DECLARE
@@ -338,7 +342,7 @@ BEGIN
     END;
     IF t > clock_timestamp() + interval '5 minutes' THEN
         RAISE EXCEPTION '% % is later than the central store''s clock (%): the station''s clock is ahead of it',
-            what, quoted, to_char(clock_timestamp() AT TIME ZONE 'UTC', 'YYYY-MM-DD"T"HH24:MI:SS"Z"')
+            what, quoted, server_utc()
             USING ERRCODE = 'check_violation';
     END IF;
     RETURN t;
@@ -367,7 +371,7 @@ END)sql";
 constexpr const char* kVerdictTimeJudged = R"sql(
 BEGIN
     IF NEW.role = 'reviewer' THEN
-        NEW.decided_utc := to_char(clock_timestamp() AT TIME ZONE 'UTC', 'YYYY-MM-DD"T"HH24:MI:SS.MS"Z"');
+        NEW.decided_utc := server_utc();
     ELSE
         PERFORM claimed_time(NEW.decided_utc, 'the decision''s time');
     END IF;
@@ -380,7 +384,7 @@ BEGIN
         PERFORM claimed_time(NEW.created_utc, 'the note''s time');
         PERFORM claimed_time(NEW.modified_utc, 'the note''s change time');
     ELSE
-        NEW.created_utc := to_char(clock_timestamp() AT TIME ZONE 'UTC', 'YYYY-MM-DD"T"HH24:MI:SS.MS"Z"');
+        NEW.created_utc := server_utc();
         NEW.modified_utc := NEW.created_utc;
     END IF;
     RETURN NEW;
