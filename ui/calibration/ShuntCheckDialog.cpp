@@ -1,6 +1,7 @@
 // ShuntCheckDialog: the form, the run on a timer, the result kept.
 #include "ui/calibration/ShuntCheckDialog.h"
 
+#include "core/NumberRanges.h"
 #include "core/storage/SessionStore.h"
 #include "ui/common/NumberText.h"
 
@@ -16,11 +17,12 @@
 namespace tactiscope::ui {
 namespace {
 
-QDoubleSpinBox* numberBox(double value, double minimum, double maximum, int decimals, const QString& suffix,
+// A box held to the range the CLI holds the same number to (core/NumberRanges.h).
+QDoubleSpinBox* numberBox(double value, const core::NumberRange& range, int decimals, const QString& suffix,
                           QWidget* parent)
 {
     auto* box = new QDoubleSpinBox(parent);
-    box->setRange(minimum, maximum);
+    box->setRange(range.least, range.most);
     box->setDecimals(decimals);
     box->setValue(value);
     box->setSuffix(suffix);
@@ -39,10 +41,10 @@ ShuntCheckDialog::ShuntCheckDialog(Context context, QWidget* parent)
       m_context(std::move(context)),
       m_channel(new QComboBox(this)),
       m_bridge(new QComboBox(this)),
-      m_gauge(numberBox(350.0, 1.0, 1e6, 1, QStringLiteral(" Ω"), this)),
-      m_shunt(numberBox(100e3, 1.0, 1e9, 0, QStringLiteral(" Ω"), this)),
-      m_factor(numberBox(2.0, 0.1, 10.0, 3, QString(), this)),
-      m_tolerance(numberBox(1.0, 0.01, 50.0, 2, QStringLiteral(" %"), this)),
+      m_gauge(numberBox(350.0, core::kGaugeOhmsRange, 1, QStringLiteral(" Ω"), this)),
+      m_shunt(numberBox(100e3, core::kShuntOhmsRange, 0, QStringLiteral(" Ω"), this)),
+      m_factor(numberBox(2.0, core::kGaugeFactorRange, 3, QString(), this)),
+      m_tolerance(numberBox(1.0, core::kShuntToleranceRange, 2, QStringLiteral(" %"), this)),
       m_expected(new QLabel(this)),
       m_progress(new QProgressBar(this)),
       m_result(new QLabel(this)),
@@ -53,6 +55,7 @@ ShuntCheckDialog::ShuntCheckDialog(Context context, QWidget* parent)
     m_channel->setObjectName(QStringLiteral("shuntChannel"));
     m_bridge->setObjectName(QStringLiteral("shuntBridge"));
     m_factor->setObjectName(QStringLiteral("shuntGaugeFactor"));
+    m_tolerance->setObjectName(QStringLiteral("shuntTolerance"));
     m_result->setObjectName(QStringLiteral("shuntResult"));
     m_runButton->setObjectName(QStringLiteral("shuntRun"));
     if (auto* live = m_context.session())

@@ -1,6 +1,7 @@
 // TriggerDialog: the form, its units, and the condition it makes.
 #include "ui/live/TriggerDialog.h"
 
+#include "core/NumberRanges.h"
 #include "ui/common/DisplayUnits.h"
 #include "ui/common/NumberText.h"
 
@@ -43,10 +44,12 @@ bool isWindowKind(TriggerKind kind)
     return kind == TriggerKind::Inside || kind == TriggerKind::Outside;
 }
 
-QDoubleSpinBox* seconds(double value, QWidget* parent)
+// Seconds held to the range the CLI holds them to (core/NumberRanges.h):
+// the pre-trigger buffer's 60 s bound its memory in the GUI too.
+QDoubleSpinBox* seconds(double value, const core::NumberRange& range, QWidget* parent)
 {
     auto* box = new QDoubleSpinBox(parent);
-    box->setRange(0.0, 3600.0);
+    box->setRange(range.least, range.most);
     box->setDecimals(2);
     box->setSingleStep(0.1);
     box->setSuffix(QStringLiteral(" s"));
@@ -90,9 +93,9 @@ TriggerDialog::TriggerDialog(std::vector<core::ChannelDescriptor> watchable, cor
       m_high(new QLineEdit(this)),
       m_unit(new QLabel(this)),
       m_highUnit(new QLabel(this)),
-      m_pre(seconds(0.5, this)),
-      m_post(seconds(1.0, this)),
-      m_holdOff(seconds(0.0, this)),
+      m_pre(seconds(0.5, core::kPreTriggerRange, this)),
+      m_post(seconds(1.0, core::kPostTriggerRange, this)),
+      m_holdOff(seconds(0.0, core::kHoldOffRange, this)),
       m_sessions(new QSpinBox(this)),
       m_rearm(new QCheckBox(tr("Re-arm after each session until disarmed"), this)),
       m_command(new QLabel(this)),

@@ -57,6 +57,11 @@ TEST(ShuntCheck, ThePanelProbesBridgePassesForItsGaugeFactorAndFailsForAnother)
     const QString expected = QStringLiteral("expected %1 µε").arg(QLocale().toString(-1743.9, 'f', 1));
     EXPECT_TRUE(dialog->resultText().contains(expected)) << dialog->resultText().toStdString();
     tactiscope::testing::saveScreenshot(*dialog, QStringLiteral("shunt-check"));
+    // The dialog takes the ranges the CLI takes (docs/user-guide.md): a
+    // tolerance of 0.01 to 50 %, a gauge factor of 0.1 to 200.
+    EXPECT_EQ(child<QDoubleSpinBox>(*dialog, "shuntTolerance")->minimum(), 0.01);
+    EXPECT_EQ(child<QDoubleSpinBox>(*dialog, "shuntTolerance")->maximum(), 50.0);
+    EXPECT_EQ(child<QDoubleSpinBox>(*dialog, "shuntGaugeFactor")->maximum(), 200.0);
     child<QDoubleSpinBox>(*dialog, "shuntGaugeFactor")->setValue(2.1);
     QTest::mouseClick(child<QPushButton>(*dialog, "shuntRun"), Qt::LeftButton);
     ASSERT_TRUE(waitFor([&] { return !dialog->running(); }, 8000));

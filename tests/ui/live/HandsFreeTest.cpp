@@ -110,6 +110,11 @@ TEST(HandsFree, TheTriggerDialogCutsOneSessionPerPanelFromTheMainWindow)
 
     auto* dialog = triggerOnA(window);
     ASSERT_NE(dialog, nullptr);
+    // The CLI's ranges (docs/user-guide.md): 60 s kept before at most, so
+    // the pre-trigger buffer is bounded from the GUI too.
+    EXPECT_EQ(child<QDoubleSpinBox>(*dialog, "triggerPre")->maximum(), 60.0);
+    EXPECT_EQ(child<QDoubleSpinBox>(*dialog, "triggerPost")->maximum(), 3600.0);
+    EXPECT_EQ(child<QDoubleSpinBox>(*dialog, "triggerHoldOff")->maximum(), 86400.0);
     child<QDoubleSpinBox>(*dialog, "triggerPre")->setValue(0.5);
     child<QDoubleSpinBox>(*dialog, "triggerPost")->setValue(1.0);
     child<QSpinBox>(*dialog, "triggerSessions")->setValue(3);
