@@ -24,21 +24,49 @@
 // the reversal behind, T the stroke's duration; the median stroke at either
 // end of the scan; a stroke longer than kLongStrokeFactor typical ones
 // hides strokes where nothing was detected, and is split into the odd
-// number of strokes nearest its length), and one stroke shape for the
-// whole scan:
-//  - harmonic (a hand or crank): x = −d·A·cos φ, with the half-stroke A the
-//    median over crossings of v/(ω·sin φ), ω = π/T (from x = −A·cos ωτ,
-//    v = A·ω·sin ωτ), v the detector's speed (spacing / best lag);
-//  - constant speed (a machine): x = d·V·(τ − (T − τ))/2, V the median speed.
-// d is the direction (+1: A then B). Both stay within the stroke (|x| ≤ A,
-// |x| ≤ V·T/2) by construction. The shape is chosen from the crossings'
-// speeds when they were seen at different sin φ (the one whose speeds fit
-// better: v ∝ sin φ, or v the same); with one sin φ only (a single dent) it is
-// not identifiable, harmonic is assumed and the method says so.
+// number of strokes nearest its length), under two stroke shapes:
+//  - harmonic (a hand or a crank): x = −d·A·cos φ, A = v·T/(π·sin φ) the
+//    crossing's own stroke's half-length (from x = −A·cos ωτ,
+//    v = A·ω·sin ωτ, ω = π/T; near a reversal, sin φ < kConditionedSine,
+//    the scan's median A instead), v the detector's speed (spacing / lag);
+//  - constant speed (a machine): x = d·v·(τ − T/2), exact on a machine's
+//    stroke wherever it moves at its speed.
+// d is the direction (+1: A then B). The constant-speed place always lies
+// nearer the centre (|tan πg|/π ≥ |g| for g = τ/T − ½).
 //
-// What is placed: the probe's centre at the event's middle (the defect
-// between the two cantilevers: measured on the simulator at +30 mm, the two
-// directions agree within 0.3 mm).
+// Which shape: told only where the crossings' speeds say it beyond their
+// own scatter. Per site (its crossings grouped by their harmonic places),
+// w = v·T is π·A·sin φ on a harmonic stroke and the stroke's length on a
+// constant-speed one; each site's mean w, with the standard error its own
+// crossings show (a hand's jitter from stroke to stroke is in it), is
+// fitted both ways, and a shape is taken when its χ² is lower by
+// kShapeEvidence. Otherwise (one dent, dents at one |x|, or speeds that
+// fit either) the harmonic place is kept and the method says so; the
+// truth then lies between it and the constant-speed place, and each site's
+// ± counts that doubt as the whole difference Δ between them (a machine's
+// stroke, whose place is the constant-speed one, lies one standard
+// uncertainty away at most; measured on generated trapezoids, the harmonic
+// place is 0.8–1.3 Δ off once the detector's scatter is in: Δ/√3, the
+// root-mean-square of a place uniformly between, covered only 82 % at 2u).
+//
+// Bounds: no place lies beyond the stroke's half-length as inferred
+// between reversals (the median of the crossings' own half-lengths, under
+// the shape used): a place computed beyond it (a crossing whose reversals
+// were inferred wrongly) is put at it.
+//
+// Ghosts: the speed of a stroke rises from one reversal and falls to the
+// next, never dipping between (a hand's or a machine's). A crossing slower
+// than both its neighbours in the same stroke by more than
+// kGhostSpeedShare is not a crossing of a dent: it is the detector pairing
+// one cantilever's view of one dent with the other's of the next (between
+// two dents, the ridge they leave), and is part of the nearer neighbour.
+//
+// When: the detector decides a crossing after its trailing cantilever has
+// passed the dent and its memory (λ = c) has gathered the correlation, so
+// an event's middle comes kDetectionDelay of its lag after the probe's
+// centre was over the dent. Each crossing is timed at that moment; a
+// delay the same in every crossing would cancel, but it is a lag's
+// fraction, longer at the slow ends of a stroke than in its middle.
 //
 // Grouping: one stroke crosses each defect once, so the crossings of one
 // stroke are different sites. The typical number k of crossings per stroke
@@ -46,6 +74,18 @@
 // every crossing goes to the nearest, and one farther than kSiteReach_m
 // from all of them starts a site of its own. Sites closer than
 // kMinSiteSeparation_m are one (a crossing the detector split).
+// A site's place is the mean of its crossings' places, its standard
+// uncertainty (k = 1) their standard deviation over √n, widened for few
+// crossings to the spread of Student's t (×√((n−1)/(n−3))), combined with
+// the shape's doubt. Fewer than kMinPlacedCrossings crossings cannot show
+// their own scatter: such a site is "too few crossings to place". A site
+// whose crossings one way lie apart from those the other way (beyond
+// kMinSiteSeparation_m and three standard errors) is two dents each seen
+// one way, or placed by reversals the detector's misses hid: its crossings
+// each way are a site of their own, unplaced.
+// Spans: a site whose crossings each cover, at their speed, more than
+// kSpanExtent_m of the surface (the median over its crossings) is one
+// event covering two dents or a long one, reported from–to.
 // Crossings that cannot be placed (no speed, no reversal: a dent seen in
 // one direction only) are grouped the same way by their order within each
 // pass (passes split at the long gaps between crossings): a dent seen one
@@ -70,6 +110,10 @@
 namespace tactiscope::core::detector {
 
 inline constexpr double kShortRunFraction = 0.35;
+// Measured on generated scans at the paper's settings: the event's middle
+// comes 0.80–0.89 of its lag after the centre was over the dent (12–13 mm
+// of travel at the 15 mm spacing, dents 3–4 mm wide, 0.1–0.6 m/s).
+inline constexpr double kDetectionDelay = 0.85;
 // How far after (or before) a crossing, in its own lags, the detector's
 // memory (λ = c) can still give a run: e⁻³ of its weight is left there.
 inline constexpr double kEchoReach = 3.0;
@@ -77,35 +121,91 @@ inline constexpr double kMinStrokeFraction = 0.4;
 // A stroke longer than this many typical ones hides strokes without a
 // crossing seen (next: 3, a stroke each way with nothing detected).
 inline constexpr double kLongStrokeFactor = 1.75;
-// How far apart the crossings' sin φ must lie for the stroke shape to be told.
-inline constexpr double kMinSineSpread = 0.04;
+// Crossings nearer a reversal than this (sin φ) give no stroke length of
+// their own: their harmonic place uses the scan's.
+inline constexpr double kConditionedSine = 0.3;
+// How much lower one shape's χ² must be for it to be taken (a likelihood
+// ratio of e⁵, about 150 to 1).
+inline constexpr double kShapeEvidence = 10.0;
+inline constexpr double kGhostSpeedShare = 0.9;
+// One dent crossed out and back is crossed at one speed, but for a hand's
+// jitter from one stroke to the next: crossings out and back at one end of
+// the stroke whose speeds differ on average by more than this (and by
+// more than three standard errors) are of two different dents.
+inline constexpr double kSameDentSpeeds = 0.15;
+// A reversal between one dent's crossings out and back has about the
+// typical gap at its end of the stroke: one longer by more than this share
+// (or three standard deviations of the gaps there, for a hand's jitter) is
+// between two different dents (the outer one missed there).
+inline constexpr double kPairedGapFactor = 1.3;
+// Below this share of placed crossings meeting their site the other way,
+// the reversals are not known and nothing is placed.
+inline constexpr double kTwoWayShare = 0.5;
+// The standard deviation of a normal scatter is 1.4826 median absolute deviations.
+inline constexpr double kMadToSigma = 1.4826;
+inline constexpr std::size_t kMinPlacedCrossings = 4;
+// The detector's speed (spacing over the lag of peak R) sets the scale of
+// every place, and is not exact: on generated scans with known speeds its
+// places read 0.3–2.3 % off, the same way in every crossing of a site
+// (a Type B, relative standard uncertainty).
+inline constexpr double kSpeedScaleUncertainty = 0.01;
+// Farther than one dent's crossing covers at the prototype's spacing (a
+// 4 mm dent's event covers about 3 mm at any speed; measured on generated
+// scans, tests/support/ReciprocatingScans.h).
+inline constexpr double kSpanExtent_m = 0.015;
 inline constexpr double kSiteReach_m = 0.015;
 inline constexpr double kMinSiteSeparation_m = 0.010;
 // Unplaced crossings are grouped by passes only from this many on.
 inline constexpr std::size_t kMinPasses = 3;
+// Gaps within a pass are shorter than those between passes by more than
+// this (a missed crossing makes a gap 2 or 3 cycles long, never 1/3).
+inline constexpr double kPassGapRatio = 3.0;
 // Farther than any stroke over a panel goes, by hand or machine (the
 // paper's is about 200 mm).
 inline constexpr double kMaxStroke_m = 1.0;
 
+enum class StrokeShape {
+    Harmonic,
+    ConstantSpeed,
+    Unknown,  // not told by the speeds: harmonic places, the constant-speed ones in their ±
+};
+
 // Where each event was placed, and why some were not.
 struct CrossingPlaces {
-    std::vector<std::optional<double>> position_m;  // from the stroke's centre, + towards where A leads
+    std::vector<std::optional<double>> position_m;       // from the stroke's centre, + towards where A leads
+    std::vector<std::optional<double>> constantSpeed_m;  // the place on a constant-speed stroke (the shape's doubt)
     std::vector<std::optional<std::size_t>>
         stroke;  // the stroke (0, 1, …, hidden ones counted) of each placed crossing
     std::vector<std::optional<std::size_t>> partOf;  // a short or implausible run: the crossing it belongs to
-    std::optional<double> halfStroke_m;              // the stroke's half-length, when placed
-    std::string model;                               // how the crossings were placed, for people
+    std::optional<double> halfStroke_m;              // the stroke's half-length, when placed; no place lies beyond
+    StrokeShape shape = StrokeShape::Unknown;
+    std::string model;  // how the crossings were placed, for people
 };
 
 CrossingPlaces placeCrossings(std::span<const DefectEvent> events);
 
+enum class SiteKind {
+    Site,      // one dent, at position_m ± position_u_m
+    Span,      // one event covering several dents or a long one, from_m to to_m
+    Unplaced,  // crossings seen but not placed
+};
+
 struct DefectSite {
-    std::optional<double> position_m;    // median of its crossings' places; none when unplaced
+    SiteKind kind = SiteKind::Unplaced;
+    std::optional<double> position_m;  // mean of its crossings' places; none when unplaced
+    double position_u_m = 0.0;         // its standard uncertainty (k = 1)
+    double from_m = 0.0, to_m = 0.0;   // a span's ends
+    // Why an unplaced site has no place, for people ("too few crossings to
+    // place"); empty when nothing (no reversal, no speed) could place it.
+    std::string unplacedWhy;
     double spread_m = 0.0;               // largest distance of a crossing from that position
     std::vector<std::size_t> crossings;  // indices into the events, in time order
-    std::vector<std::size_t> parts;      // short runs that belong to its crossings
-    std::size_t forward = 0;             // crossings A then B
-    std::size_t backward = 0;            // crossings B then A
+    // Events counted with it but not placed: short runs of its crossings,
+    // ghosts beside them, crossings placed beyond the stroke or apart from
+    // every site by a reversal the detector's misses moved.
+    std::vector<std::size_t> parts;
+    std::size_t forward = 0;   // crossings A then B
+    std::size_t backward = 0;  // crossings B then A
     double first_s = 0.0;
     double last_s = 0.0;
 };
@@ -121,8 +221,9 @@ SiteGrouping groupSites(std::span<const DefectEvent> events, const CrossingPlace
 // placeCrossings() then groupSites(): the sites of a panel scan's events.
 SiteGrouping scanSites(std::span<const DefectEvent> events);
 
-// A site's place as people read it: "37 mm ± 2 mm (6 crossings)", "37 mm
-// (6 crossings within 1 mm)", "position unknown: no reversal (6 crossings)".
+// A site's place as people read it: "37.2 ± 1.9 mm (6 crossings)", "span
+// 20–52 mm: two dents or a long one (6 crossings)", "position unknown:
+// too few crossings to place (2 crossings)", "position unknown (6 crossings)".
 std::string siteText(const DefectSite& site);
 
 }  // namespace tactiscope::core::detector

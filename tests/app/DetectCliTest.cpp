@@ -221,7 +221,13 @@ TEST(DetectSitesCli, JsonListsTheDefectSitesAndSessionsShowTheSame)
     const QJsonArray sites = o["sites"].toArray();
     ASSERT_EQ(sites.size(), 1) << detect.out.toStdString();
     const QJsonObject site = sites[0].toObject();
-    EXPECT_NEAR(site["position_mm"].toDouble(), 37.5, 10.0);
+    // Issue 55's keys: the kind, and the place's standard uncertainty
+    // (k = 1), which covers the dent.
+    EXPECT_EQ(site["kind"].toString(), QStringLiteral("site"));
+    ASSERT_TRUE(site["position_u_mm"].isDouble()) << detect.out.toStdString();
+    EXPECT_GT(site["position_u_mm"].toDouble(), 0.0);
+    EXPECT_LE(std::abs(site["position_mm"].toDouble() - 37.5), 2.0 * site["position_u_mm"].toDouble());
+    EXPECT_FALSE(site.contains("from_mm"));
     EXPECT_GE(site["spread_mm"].toDouble(), 0.0);
     EXPECT_EQ(site["crossings"].toInt(), o["events"].toArray().size());
     EXPECT_EQ(site["a_then_b"].toInt() + site["b_then_a"].toInt(), site["crossings"].toInt());
@@ -238,6 +244,14 @@ TEST(DetectSitesCli, JsonListsTheDefectSitesAndSessionsShowTheSame)
     const QJsonObject shown = QJsonDocument::fromJson(show.out.toUtf8()).object();
     ASSERT_TRUE(shown.contains("sites")) << show.out.toStdString();
     int crossings = 0;
-    for (const auto stored : shown["sites"].toArray()) crossings += stored.toObject()["crossings"].toInt();
+    for (const auto stored : shown["sites"].toArray()) {
+        const QJsonObject entry = stored.toObject();
+        crossings += entry["crossings"].toInt();
+        const QString kind = entry["kind"].toString();
+        EXPECT_TRUE(kind == "site" || kind == "span" || kind == "unplaced") << kind.toStdString();
+        // A place has its uncertainty; an unplaced site has neither.
+        EXPECT_EQ(entry["position_u_mm"].isNull(), entry["position_mm"].isNull()) << show.out.toStdString();
+        EXPECT_EQ(entry.contains("from_mm"), kind == "span");
+    }
     EXPECT_GE(crossings, 1) << show.out.toStdString();
 }

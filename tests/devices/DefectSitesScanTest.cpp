@@ -9,6 +9,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ranges>
 
 using namespace tactiscope;
 
@@ -136,27 +139,39 @@ TEST(DefectSitesScan, WeakAndMissedCrossingsPlaceNothingOutsideTheStroke)
 }
 
 // Two dents 70 mm apart at 0.5 Hz: the detector misses the outer one
-// backwards, so a reversal lies between crossings of different dents and
-// their places scatter. The method says so (it was silent).
-TEST(DefectSitesScan, CrossingsMissedOneWayAreSaid)
+// backwards, so the reversal at that end lies between crossings of
+// different dents. It is retaken from the reversals beside it, the method
+// says so, and both dents are placed within their ± (were scattered by
+// 10–20 mm, flagged only).
+TEST(DefectSitesScan, ReversalsBetweenDifferentDentsAreRetakenAndSaid)
 {
     devices::simulator::PanelScanParameters p;
     p.defectPosition_m = -0.070;
     p.moreDefects_m = {0.0};
     const auto grouping = core::detector::scanSites(detectScan(p, 20.0));
-    EXPECT_NE(grouping.method.find("fewer crossings seen one way"), std::string::npos) << grouping.method;
+    EXPECT_NE(grouping.method.find("reversals lay between crossings of different dents"), std::string::npos)
+        << grouping.method;
+    ASSERT_EQ(grouping.sites.size(), 2u) << grouping.method;
+    for (std::size_t k = 0; k < 2; ++k) {
+        const auto& site = grouping.sites[k];
+        ASSERT_TRUE(site.position_m) << core::detector::siteText(site);
+        const double dent = k == 0 ? -0.070 : 0.0;
+        EXPECT_LE(std::abs(*site.position_m - dent - 0.5 * p.cantileverSpacing_m), 2.0 * site.position_u_m)
+            << core::detector::siteText(site);
+    }
 }
 
 // A sweep of dent layouts (one to three dents, −70…+80 mm, 0.5 and 1 Hz,
 // both gauge mountings, two seeds) at the paper's threshold: no site lies
-// outside the stroke, and every scan with a site more than 10 mm from
-// every dent says in its method that crossings were missed.
-TEST(DefectSitesScan, AcrossDentLayoutsNoSiteIsOutsideTheStrokeAndEveryMisplacedOneIsSaid)
+// outside the stroke, and each placed site lies within 2u of its dent,
+// but for what 2u may miss (5 %, within binomial limits; before, 12 of 72
+// scans held a site more than 10 mm off, flagged only in their method).
+TEST(DefectSitesScan, AcrossDentLayoutsEverySiteIsWithinItsUncertaintyOfItsDent)
 {
     const std::vector<std::vector<double>> layouts{{0.030},       {-0.060},       {0.080},
                                                    {0.0, 0.030},  {0.030, 0.055}, {-0.050, 0.030},
                                                    {-0.070, 0.0}, {0.020, 0.070}, {-0.060, 0.0, 0.050}};
-    int scans = 0, misplaced = 0;
+    int scans = 0, placed = 0, beyond2u = 0;
     for (const double hz : {0.5, 1.0})
         for (const bool faceToFace : {false, true})
             for (const auto& dents : layouts)
@@ -171,21 +186,26 @@ TEST(DefectSitesScan, AcrossDentLayoutsNoSiteIsOutsideTheStrokeAndEveryMisplaced
                     SCOPED_TRACE(std::to_string(hz) + " Hz, dent " + std::to_string(dents.front()) + " and " +
                                  std::to_string(dents.size() - 1) + " more, " + grouping.method);
                     ++scans;
-                    bool wrong = false;
                     for (const auto& site : grouping.sites) {
-                        if (!site.position_m) continue;
+                        if (site.kind != core::detector::SiteKind::Site) continue;
+                        ++placed;
                         EXPECT_LE(std::abs(*site.position_m), p.strokeAmplitude_m + p.cantileverSpacing_m);
-                        wrong = wrong || std::ranges::none_of(dents, [&](double dent) {
-                                    return std::abs(*site.position_m - dent - 0.5 * p.cantileverSpacing_m) < 0.010;
-                                });
-                    }
-                    if (wrong) {
-                        ++misplaced;
-                        EXPECT_NE(grouping.method.find("fewer crossings seen one way"), std::string::npos);
+                        const double off =
+                            std::ranges::min(dents | std::views::transform([&](double dent) {
+                                                 return std::abs(*site.position_m - dent - 0.5 * p.cantileverSpacing_m);
+                                             }));
+                        if (off > 2.0 * site.position_u_m) {
+                            ++beyond2u;
+                            std::printf("%s is %.1f mm off\n", core::detector::siteText(site).c_str(), off * 1e3);
+                        }
                     }
                 }
     EXPECT_EQ(scans, 72);
-    EXPECT_LE(misplaced, 12);  // measured: 12 of 72, all flagged (docs/detector.md)
+    EXPECT_GE(placed, 70);  // of 128 dents: the rest are in spans or unplaced sites, which say why
+    // 2u misses 4.6 % of a normal scatter; three binomial standard
+    // deviations above (measured: 8 of 80, the two mountings alike).
+    const double expected = 0.046 * placed;
+    EXPECT_LE(beyond2u, expected + 3.0 * std::sqrt(expected * (1.0 - 0.046)));
 }
 
 // A panel line strokes each panel once, out and back, then rests (the

@@ -1,6 +1,8 @@
 // ReportDocument: the report's HTML, its plot resource, and the PDF.
 #include "ui/report/ReportDocument.h"
 
+#include "core/text/UncertaintyFormat.h"
+
 #include "core/modes/ModeDefinition.h"
 #include "ui/calibration/CalibrationText.h"
 #include "ui/common/DateText.h"
@@ -205,14 +207,21 @@ QString defectTables(const core::report::ReportData& data)
         const auto& site = data.sites.sites[k];
         for (const std::size_t i : site.crossings) siteOf[i] = static_cast<int>(k + 1);
         for (const std::size_t i : site.parts) siteOf[i] = static_cast<int>(k + 1);
-        // Never "± 0": crossings that agree to the millimetre read "± <1",
-        // short enough for the column (issue 52: "37 (spread" was cut).
+        // Each site's place with its standard uncertainty (the value to the
+        // uncertainty's decimals, so never "± 0"), a span's ends, or why it
+        // has no place, short enough for the column.
         QString position = QObject::tr("unknown");
-        if (site.position_m) {
-            position = fixedText(std::abs(*site.position_m) < 0.5e-3 ? 0.0 : *site.position_m * 1e3, 0);
-            if (site.crossings.size() > 1)
-                position += QStringLiteral(" ± ") +
-                            (site.spread_m < 0.5e-3 ? QStringLiteral("&lt;1") : number(site.spread_m * 1e3, 0));
+        switch (site.kind) {
+        case core::detector::SiteKind::Site:
+            position = text(core::text::valueWithUncertainty(
+                std::abs(*site.position_m) < 0.5e-3 ? 0.0 : *site.position_m * 1e3, site.position_u_m * 1e3));
+            break;
+        case core::detector::SiteKind::Span:
+            position = QObject::tr("span %1 to %2").arg(fixedText(site.from_m * 1e3, 0), fixedText(site.to_m * 1e3, 0));
+            break;
+        case core::detector::SiteKind::Unplaced:
+            if (!site.unplacedWhy.empty()) position += QStringLiteral(": ") + text(site.unplacedWhy);
+            break;
         }
         sites.push_back({QString::number(k + 1), position, QString::number(site.crossings.size()),
                          QObject::tr("%1 A→B, %2 B→A").arg(site.forward).arg(site.backward),
@@ -225,8 +234,8 @@ QString defectTables(const core::report::ReportData& data)
     // stroke between two reversals"), which reads as a sentence of its own.
     const bool placed = data.sites.method.rfind("not placed", 0) != 0;
     html += QStringLiteral("<p><small>%1</small></p>")
-                .arg(placed ? QObject::tr("Position along the stroke from its centre (± the spread of its crossings), "
-                                          "placed by %1 between reversals; see docs/detector.md.")
+                .arg(placed ? QObject::tr("Position along the stroke from its centre, ± its standard uncertainty "
+                                          "(k = 1), placed by %1 between reversals; see docs/detector.md.")
                                   .arg(text(data.sites.method))
                             : QObject::tr("Positions %1; see docs/detector.md.").arg(text(data.sites.method)));
     std::vector<QStringList> crossings;

@@ -21,6 +21,7 @@
 #include "core/storage/DefectRecords.h"
 #include "core/storage/SafeOutput.h"
 #include "core/storage/SessionExport.h"
+#include "core/text/UncertaintyFormat.h"
 #include "ui/calibration/WizardText.h"
 #include "ui/modes/ModeUi.h"
 #include "ui/report/ReportDocument.h"
@@ -117,7 +118,7 @@ QString eventDetails(const core::storage::SessionEvent& e)
     return parts.join(QStringLiteral(", "));
 }
 
-// Each defect's site ("site 2 (+31 mm)"), by its index among the defects:
+// Each defect's site ("site 2 (31.4 ± 1.2 mm)"), by its index among the defects:
 // a reciprocating scan crosses one defect again and again.
 std::vector<QString> siteTexts(const std::vector<core::detector::DefectEvent>& defects)
 {
@@ -125,9 +126,16 @@ std::vector<QString> siteTexts(const std::vector<core::detector::DefectEvent>& d
     const auto grouping = core::detector::scanSites(defects);
     for (std::size_t k = 0; k < grouping.sites.size(); ++k) {
         const auto& site = grouping.sites[k];
-        const QString text = site.position_m
-                                 ? QObject::tr("site %1 (%2 mm)").arg(k + 1).arg(fixedText(*site.position_m * 1e3, 0))
-                                 : QObject::tr("site %1").arg(k + 1);
+        QString text = QObject::tr("site %1").arg(k + 1);
+        if (site.kind == core::detector::SiteKind::Site)
+            text = QObject::tr("site %1 (%2)")
+                       .arg(k + 1)
+                       .arg(QString::fromStdString(
+                           core::text::valueWithUncertainty(*site.position_m * 1e3, site.position_u_m * 1e3, "mm")));
+        else if (site.kind == core::detector::SiteKind::Span)
+            text = QObject::tr("site %1 (span %2 to %3 mm)")
+                       .arg(k + 1)
+                       .arg(fixedText(site.from_m * 1e3, 0), fixedText(site.to_m * 1e3, 0));
         for (const std::size_t i : site.crossings) texts[i] = text;
         for (const std::size_t i : site.parts) texts[i] = text;
     }
