@@ -140,6 +140,22 @@ std::vector<std::vector<std::size_t>> placedGroups(std::span<const std::optional
     return placed;
 }
 
+// The difference of two samples' means and its standard error (each of
+// at least two values; 0 and infinity otherwise).
+std::pair<double, double> meanDifference(const std::vector<double>& a, const std::vector<double>& b)
+{
+    if (a.size() < 2 || b.size() < 2) return {0.0, std::numeric_limits<double>::infinity()};
+    double variance = 0.0;
+    std::array<double, 2> means{};
+    for (std::size_t w = 0; w < 2; ++w) {
+        const auto& values = w == 0 ? a : b;
+        const auto n = static_cast<double>(values.size());
+        means[w] = std::accumulate(values.begin(), values.end(), 0.0) / n;
+        for (const double x : values) variance += (x - means[w]) * (x - means[w]) / (n - 1.0) / n;
+    }
+    return {means[0] - means[1], std::sqrt(variance)};
+}
+
 class Placer {
     // A crossing inside a stroke: τ from the reversal behind, T the
     // stroke's duration, φ = π·τ/T, v the detector's speed.
@@ -184,14 +200,13 @@ public:
             m_places.model += "; " + std::to_string(pairing.repairedCount) + " of " + std::to_string(reversals.size()) +
                               " reversals lay between crossings of different dents (the detector missed some): each "
                               "is taken from the reversals beside it";
-        if (twoWayShare() < kTwoWayShare) {
-            std::ranges::fill(m_places.position_m, std::nullopt);
-            std::ranges::fill(m_places.constantSpeed_m, std::nullopt);
-            std::ranges::fill(m_places.stroke, std::nullopt);
-            m_places.halfStroke_m.reset();
-            m_places.model = "not placed: most crossings meet none of their site the other way (the detector saw "
-                             "dents one way only), so the reversals between them cannot be told";
-        }
+        if (twoWayShare() < kTwoWayShare)
+            unplaceAll("not placed: most crossings meet none of their site the other way (the detector saw dents "
+                       "one way only), so the reversals between them cannot be told");
+        else if (m_places.halfStroke_m && *m_places.halfStroke_m > kMaxStroke_m / 2.0)
+            unplaceAll("not placed: the crossings' times and speeds imply strokes longer than a panel probe's "
+                       "(1 m): a probe that rests between strokes, as on a panel line, or reversals the detector's "
+                       "misses hid");
         return std::move(m_places);
     }
 
@@ -290,22 +305,30 @@ private:
     }
 
     // Reversal times between successive crossings of opposite direction,
+    // and the crossings each lies between.
+    std::pair<std::vector<double>, std::vector<std::pair<std::size_t, std::size_t>>> directionChanges() const
+    {
+        std::vector<double> reversals;
+        std::vector<std::pair<std::size_t, std::size_t>> between;
+        std::optional<std::size_t> previous;
+        for (const std::size_t i : m_order) {
+            if (!isCrossing(i) || m_events[i].direction == 0) continue;
+            if (previous && m_events[*previous].direction != m_events[i].direction) {
+                reversals.push_back(reversalBetween(m_events[*previous], m_events[i]));
+                between.emplace_back(*previous, i);
+            }
+            previous = i;
+        }
+        return {reversals, between};
+    }
+
+    // Reversal times between successive crossings of opposite direction,
     // with each implausibly short stroke's crossings folded into their
     // neighbours until none is left.
     std::vector<double> plausibleReversals()
     {
         for (;;) {
-            std::vector<double> reversals;
-            std::vector<std::pair<std::size_t, std::size_t>> between;  // the crossings each reversal lies between
-            std::optional<std::size_t> previous;
-            for (const std::size_t i : m_order) {
-                if (!isCrossing(i) || m_events[i].direction == 0) continue;
-                if (previous && m_events[*previous].direction != m_events[i].direction) {
-                    reversals.push_back(reversalBetween(m_events[*previous], m_events[i]));
-                    between.emplace_back(*previous, i);
-                }
-                previous = i;
-            }
+            auto [reversals, between] = directionChanges();
             m_between = between;
             if (reversals.size() < 3) return reversals;  // one whole stroke at most: nothing to compare
             std::vector<double> strokes;
@@ -540,6 +563,15 @@ private:
         return placed > 0.0 ? paired / placed : 1.0;
     }
 
+    void unplaceAll(std::string why)
+    {
+        std::ranges::fill(m_places.position_m, std::nullopt);
+        std::ranges::fill(m_places.constantSpeed_m, std::nullopt);
+        std::ranges::fill(m_places.stroke, std::nullopt);
+        m_places.halfStroke_m.reset();
+        m_places.model = std::move(why);
+    }
+
     std::optional<double> relativeSpeedDifference(std::size_t i, std::size_t j) const
     {
         const auto v1 = speedOf(m_events[i]), v2 = speedOf(m_events[j]);
@@ -650,22 +682,6 @@ std::optional<std::vector<std::vector<std::size_t>>> outAndBack(std::span<const 
         pairs.push_back({inTimeOrder[k - 1 - j], inTimeOrder[k + j]});
     }
     return pairs;
-}
-
-// The difference of two samples' means and its standard error (each of
-// at least two values; 0 and infinity otherwise).
-std::pair<double, double> meanDifference(const std::vector<double>& a, const std::vector<double>& b)
-{
-    if (a.size() < 2 || b.size() < 2) return {0.0, std::numeric_limits<double>::infinity()};
-    double variance = 0.0;
-    std::array<double, 2> means{};
-    for (std::size_t w = 0; w < 2; ++w) {
-        const auto& values = w == 0 ? a : b;
-        const auto n = static_cast<double>(values.size());
-        means[w] = std::accumulate(values.begin(), values.end(), 0.0) / n;
-        for (const double x : values) variance += (x - means[w]) * (x - means[w]) / (n - 1.0) / n;
-    }
-    return {means[0] - means[1], std::sqrt(variance)};
 }
 
 // Why a site's crossings one way cannot be one dent with those the other

@@ -51,8 +51,14 @@
 //
 // Bounds: no place lies beyond the stroke's half-length as inferred
 // between reversals (the median of the crossings' own half-lengths, under
-// the shape used): a place computed beyond it (a crossing whose reversals
-// were inferred wrongly) is put at it.
+// the shape used): a crossing computed beyond it (its reversals inferred
+// wrongly) is a part of the nearest placed one; with the shape not told,
+// harmonic places are held within it. Strokes longer than a panel probe's
+// (kMaxStroke_m) place nothing: the crossings' times and speeds also fit a
+// probe that rests between strokes (a panel line), as a long stroke with
+// the dent near its end. Nor does a scan whose placed crossings mostly
+// meet none of their site the other way (kTwoWayShare): its reversals lie
+// between crossings of different dents at speeds too alike to tell.
 //
 // Ghosts: the speed of a stroke rises from one reversal and falls to the
 // next, never dipping between (a hand's or a machine's). A crossing slower

@@ -229,3 +229,22 @@ TEST(DefectSitesScan, APanelStrokedOnceOutAndBackHasOneSitePerDent)
         }
     }
 }
+
+// A session of several panels on a panel line: each panel stroked once out
+// and back, the probe at rest 3 s between them. The crossings' times and
+// speeds alone fit a stroke of half a metre and more with the dent near its
+// end (the review and the PDF placed it at 448 mm on a ±100 mm stroke);
+// such a stroke is no panel probe's, so the dent is one site, not placed,
+// and the method says why.
+TEST(DefectSitesScan, APanelLineOfSeveralPanelsPlacesNoDentOutsideAPanelProbesStroke)
+{
+    devices::simulator::PanelScanParameters p;
+    p.restBetweenPanels_s = 3.0;
+    p.defectPosition_m = 0.030;
+    p.seed = 3;
+    const auto grouping = core::detector::scanSites(detectScan(p, 30.0));
+    ASSERT_EQ(grouping.sites.size(), 1u) << grouping.method;
+    EXPECT_EQ(grouping.sites.front().kind, core::detector::SiteKind::Unplaced);
+    EXPECT_GE(grouping.sites.front().crossings.size(), 10u);
+    EXPECT_NE(grouping.method.find("as on a panel line"), std::string::npos) << grouping.method;
+}
