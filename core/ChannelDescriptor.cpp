@@ -18,7 +18,7 @@ constexpr std::array<std::pair<ChannelKind, std::string_view>, 6> kKindNames{{
     {ChannelKind::Decision, "decision"},
 }};
 
-constexpr std::array<std::pair<ChannelRole, std::string_view>, 7> kRoleNames{{
+constexpr std::array<std::pair<ChannelRole, std::string_view>, 8> kRoleNames{{
     {ChannelRole::CantileverA, "cantilever-a"},
     {ChannelRole::CantileverB, "cantilever-b"},
     {ChannelRole::StiffBeam, "stiff-beam"},
@@ -26,6 +26,7 @@ constexpr std::array<std::pair<ChannelRole, std::string_view>, 7> kRoleNames{{
     {ChannelRole::Displacement, "displacement"},
     {ChannelRole::Capacitance, "capacitance"},
     {ChannelRole::ReferenceForce, "reference-force"},
+    {ChannelRole::Position, "position"},
 }};
 
 }  // namespace

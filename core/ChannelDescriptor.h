@@ -27,12 +27,23 @@ std::optional<ChannelKind> channelKindFromString(std::string_view name);
 // by its kind. The texts are the command line's and the store's words.
 // ReferenceForce: a force known from another instrument (a load cell),
 // that a capacitive beam is calibrated against (issue 40); it may come
-// from another device of the session than the beam.
-enum class ChannelRole { CantileverA, CantileverB, StiffBeam, SoftBeam, Displacement, Capacitance, ReferenceForce };
+// from another device of the session than the beam. Position: where the
+// probe is along a panel scan's stroke (an encoder or a linear
+// potentiometer), which places each crossing of a dent directly (issue 55).
+enum class ChannelRole {
+    CantileverA,
+    CantileverB,
+    StiffBeam,
+    SoftBeam,
+    Displacement,
+    Capacitance,
+    ReferenceForce,
+    Position
+};
 std::string_view toString(ChannelRole role);  // "cantilever-a", "cantilever-b", "stiff-beam", …
 std::optional<ChannelRole> channelRoleFromString(std::string_view name);  // none for "" or an unknown word
 std::string_view roleWord(const std::optional<ChannelRole>& role);        // "" for none, as stored
-// "cantilever-a, cantilever-b, stiff-beam, soft-beam, displacement, capacitance or reference-force"
+// "cantilever-a, cantilever-b, stiff-beam, soft-beam, displacement, capacitance, reference-force or position"
 std::string channelRoleChoices();
 
 struct ChannelDescriptor {

@@ -179,6 +179,30 @@ public:
         for (std::size_t k = 0; k < m_order.size(); ++k) m_rank[m_order[k]] = k;
     }
 
+    CrossingPlaces placeByPosition(const PositionAt& positionAt)
+    {
+        m_places.fromPosition = true;
+        m_places.shape = StrokeShape::Harmonic;  // no shape: nothing to doubt
+        m_places.model = "from the position channel";
+        if (m_events.empty()) return std::move(m_places);
+        foldShortRuns();
+        std::size_t stroke = 0;
+        std::optional<int> lastDirection;
+        double farthest = 0.0;
+        for (const std::size_t i : m_order) {
+            if (!isCrossing(i)) continue;
+            if (lastDirection && m_events[i].direction != 0 && m_events[i].direction != *lastDirection) ++stroke;
+            if (m_events[i].direction != 0) lastDirection = m_events[i].direction;
+            const auto x = positionAt(crossingTime(m_events[i]));
+            if (!x || !std::isfinite(*x)) continue;
+            m_places.position_m[i] = *x;
+            m_places.stroke[i] = stroke;
+            farthest = std::max(farthest, std::abs(*x));
+        }
+        m_places.halfStroke_m = farthest;
+        return std::move(m_places);
+    }
+
     CrossingPlaces place()
     {
         if (m_events.empty()) return std::move(m_places);
@@ -789,7 +813,14 @@ void placeSite(DefectSite& site, std::span<const DefectEvent> events, const Cros
     const double mean = sum / n;
     const double scatter = meanScatter(site, places, mean);
     const double shape = places.shape == StrokeShape::Unknown ? shapeDoubt * shapeDoubt : 0.0;
-    const double scale = std::pow(kSpeedScaleUncertainty * mean, 2);
+    // The place's scale: the detector's speed by phase; by a position
+    // channel, the detector's delay (the travel in a lag is the spacing).
+    double scale = std::pow(kSpeedScaleUncertainty * mean, 2);
+    if (places.fromPosition) {
+        double travel = 0.0;
+        for (const std::size_t i : site.crossings) travel += speedOf(events[i]).value_or(0.0) * events[i].peakLag_s / n;
+        scale = std::pow(kDetectionDelayUncertainty * travel, 2) / 3.0;
+    }
     site.kind = SiteKind::Site;
     site.position_m = mean;
     site.position_u_m = std::sqrt(scatter + shape + scale + std::pow(directionDoubt(events, places, site), 2));
@@ -1045,6 +1076,29 @@ SiteGrouping groupSites(std::span<const DefectEvent> events, const CrossingPlace
 SiteGrouping scanSites(std::span<const DefectEvent> events)
 {
     return groupSites(events, placeCrossings(events));
+}
+
+PositionAt positionFromSamples(std::vector<double> samples, double t0_s, double dt_s)
+{
+    return [samples = std::move(samples), t0_s, dt_s](double t_s) -> std::optional<double> {
+        const double at = (t_s - t0_s) / dt_s;
+        if (!(at >= 0.0) || samples.empty() || at > static_cast<double>(samples.size() - 1)) return std::nullopt;
+        const auto below = std::min(static_cast<std::size_t>(at), samples.size() - 1);
+        const std::size_t above = std::min(below + 1, samples.size() - 1);
+        const double share = at - static_cast<double>(below);
+        const double x = samples[below] + share * (samples[above] - samples[below]);
+        return std::isfinite(x) ? std::optional(x) : std::nullopt;
+    };
+}
+
+CrossingPlaces placeByPosition(std::span<const DefectEvent> events, const PositionAt& positionAt)
+{
+    return Placer(events).placeByPosition(positionAt);
+}
+
+SiteGrouping scanSites(std::span<const DefectEvent> events, const PositionAt& positionAt)
+{
+    return groupSites(events, placeByPosition(events, positionAt));
 }
 
 std::string siteText(const DefectSite& site)

@@ -108,6 +108,7 @@
 #include "core/detector/DefectEvent.h"
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -120,6 +121,9 @@ inline constexpr double kShortRunFraction = 0.35;
 // comes 0.80–0.89 of its lag after the centre was over the dent (12–13 mm
 // of travel at the 15 mm spacing, dents 3–4 mm wide, 0.1–0.6 m/s).
 inline constexpr double kDetectionDelay = 0.85;
+// Its spread over those scans (0.80–0.89): a Type B of the place a position
+// channel gives, as a share of the travel in a lag (the spacing).
+inline constexpr double kDetectionDelayUncertainty = 0.05;
 // How far after (or before) a crossing, in its own lags, the detector's
 // memory (λ = c) can still give a run: e⁻³ of its weight is left there.
 inline constexpr double kEchoReach = 3.0;
@@ -185,8 +189,24 @@ struct CrossingPlaces {
     std::vector<std::optional<std::size_t>> partOf;  // a short or implausible run: the crossing it belongs to
     std::optional<double> halfStroke_m;              // the stroke's half-length, when placed; no place lies beyond
     StrokeShape shape = StrokeShape::Unknown;
-    std::string model;  // how the crossings were placed, for people
+    bool fromPosition = false;  // placed by a position channel, not by their phase
+    std::string model;          // how the crossings were placed, for people
 };
+
+// Where the probe was along its stroke at a time (m, on the position
+// channel's own scale), from a channel with the role `position` (an
+// encoder or a linear potentiometer on the rig); none where it is not known.
+using PositionAt = std::function<std::optional<double>(double t_s)>;
+
+// Samples at t0 + i·dt, linearly interpolated: none outside them or beside
+// a sample without a value (NaN, a gap).
+PositionAt positionFromSamples(std::vector<double> samples, double t0_s, double dt_s);
+
+// Each crossing where the position channel had the probe when its centre
+// was over the dent (the event's middle less the detector's delay): no
+// phase, no stroke shape. Short opposite runs are parts as above; strokes
+// are counted from the crossings' changes of direction.
+CrossingPlaces placeByPosition(std::span<const DefectEvent> events, const PositionAt& positionAt);
 
 CrossingPlaces placeCrossings(std::span<const DefectEvent> events);
 
@@ -224,8 +244,10 @@ struct SiteGrouping {
 
 SiteGrouping groupSites(std::span<const DefectEvent> events, const CrossingPlaces& places);
 
-// placeCrossings() then groupSites(): the sites of a panel scan's events.
+// placeCrossings() then groupSites(): the sites of a panel scan's events;
+// placeByPosition() instead when the rig gives the probe's position.
 SiteGrouping scanSites(std::span<const DefectEvent> events);
+SiteGrouping scanSites(std::span<const DefectEvent> events, const PositionAt& positionAt);
 
 // A site's place as people read it: "37.2 ± 1.9 mm (6 crossings)", "span
 // 20–52 mm: two dents or a long one (6 crossings)", "position unknown:

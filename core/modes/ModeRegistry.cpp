@@ -68,6 +68,8 @@ bool canPlay(const ChannelDescriptor& channel, ChannelRole role)
         return kind == ChannelKind::Capacitance || (isCounts(channel.unit) && channel.role == role);
     case ChannelRole::ReferenceForce:
         return kind == ChannelKind::Force;
+    case ChannelRole::Position:
+        return kind == ChannelKind::Position;
     }
     return false;
 }
@@ -87,6 +89,8 @@ std::string_view quantityFor(ChannelRole role)
         return "a capacitance (F, pF) or counts with their scale";
     case ChannelRole::ReferenceForce:
         return "a force (N, mN)";
+    case ChannelRole::Position:
+        return "a length (m, mm)";
     }
     return "";
 }

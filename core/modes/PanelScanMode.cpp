@@ -13,6 +13,9 @@ namespace tactiscope::core {
 namespace {
 
 constexpr std::array kRoles{ChannelRole::CantileverA, ChannelRole::CantileverB};
+// Where the probe is along the stroke, when the rig knows: each crossing's
+// place then comes from it (core/detector/DefectSites.h).
+constexpr std::array kOptionalRoles{ChannelRole::Position};
 
 derived::ModeLanes lanes(storage::SessionSource& store, const storage::SessionSummary& session,
                          const derived::LaneOptions&)
@@ -41,6 +44,7 @@ const ModeDefinition& panelScanMode()
         .title = "Panel scan",
         .needs = "two strain cantilevers (A and B)",
         .roles = kRoles,
+        .optionalRoles = kOptionalRoles,
         .profile = ProfileType::None,
         .detectsDefects = true,
         .shortestJudged = "the detector's longest lag plus three of its forgetting times "

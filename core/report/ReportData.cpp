@@ -5,6 +5,7 @@
 #include "core/derived/CapacitiveChannels.h"
 #include "core/derived/SessionLanes.h"
 #include "core/storage/DefectRecords.h"
+#include "core/storage/StoredSites.h"
 
 #include <nlohmann/json.hpp>
 
@@ -96,7 +97,7 @@ ReportData gatherReport(storage::SessionSource& store, std::int64_t session, con
     }
     for (auto& event : events)
         if (overlaps(event.start_s, event.end_s, data.from_s, data.to_s)) data.events.push_back(std::move(event));
-    data.sites = detector::scanSites(storage::defectEventsOf(data.events));
+    data.sites = storage::storedSites(store, session, storage::defectEventsOf(data.events));
     data.verdicts = store.verdicts(session);
     for (auto& reading : store.readings(session, request.analysis))
         if (overlaps(reading.start_s, reading.end_s, data.from_s, data.to_s))

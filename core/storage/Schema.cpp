@@ -303,8 +303,31 @@ constexpr const char* kVersion9 = R"sql(
 ALTER TABLE sessions ADD COLUMN unjudged TEXT NOT NULL DEFAULT '';
 )sql";
 
+// Version 9 → 10: a channel may be the probe's position along a panel
+// scan's stroke (an encoder or a linear potentiometer, issue 55), which
+// places each crossing of a dent. The channels table is rebuilt for the
+// CHECK, as in version 8.
+constexpr const char* kVersion10 = R"sql(
+CREATE TABLE channels_v10 (
+    session_id     INTEGER NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    position       INTEGER NOT NULL,
+    name           TEXT NOT NULL,
+    unit           TEXT NOT NULL,
+    kind           TEXT NOT NULL,
+    sample_rate_hz REAL NOT NULL CHECK (sample_rate_hz > 0),
+    role           TEXT NOT NULL DEFAULT ''
+        CHECK (role IN ('', 'cantilever-a', 'cantilever-b', 'stiff-beam', 'soft-beam', 'displacement', 'capacitance',
+                        'reference-force', 'position')),
+    PRIMARY KEY (session_id, position)
+) WITHOUT ROWID;
+INSERT INTO channels_v10 (session_id, position, name, unit, kind, sample_rate_hz, role)
+    SELECT session_id, position, name, unit, kind, sample_rate_hz, role FROM channels;
+DROP TABLE channels;
+ALTER TABLE channels_v10 RENAME TO channels;
+)sql";
+
 constexpr std::array kMigrations{kVersion1, kVersion2, kVersion3, kVersion4, kVersion5,
-                                 kVersion6, kVersion7, kVersion8, kVersion9};
+                                 kVersion6, kVersion7, kVersion8, kVersion9, kVersion10};
 static_assert(kMigrations.size() == kSchemaVersion);
 
 std::int64_t pragma(Database& db, const char* name)

@@ -4,6 +4,7 @@
 #include "core/detector/DefectSitesJson.h"
 #include "core/modes/ModeDefinition.h"
 #include "core/storage/DefectRecords.h"
+#include "core/storage/StoredSites.h"
 
 #include "core/storage/SafeOutput.h"
 
@@ -226,7 +227,7 @@ void writeMetadata(text::JsonWriter& json, SessionSource& store, std::int64_t se
     writeRecords(json, store, session);
     // A panel scan's defect sites, from the events recorded live.
     if (definitionOf(s.metadata.mode).detectsDefects && s.devices == 0)
-        detector::writeSitesJson(json, detector::scanSites(defectEventsOf(store.events(session))));
+        detector::writeSitesJson(json, storedSites(store, session, defectEventsOf(store.events(session))));
 }
 
 // A device's part, read sample by sample in windows, each sample's time

@@ -35,6 +35,7 @@ PanelScanScenario::PanelScanScenario(const PanelScanParameters& parameters)
     if (!(m_p.cantileverSpacing_m >= 0.0)) throw std::invalid_argument("panel scan: spacing must not be negative");
     if (!(m_p.noiseSigma >= 0.0)) throw std::invalid_argument("panel scan: noise must not be negative");
     m_decay = std::exp(-1.0 / (m_p.sampleRate_hz * m_p.adaptationTime_s));
+    if (m_p.positionChannel) m_channels.push_back({"x", "m", core::ChannelKind::Position, core::ChannelRole::Position});
     // Start in equilibrium so there is no switch-on transient.
     m_lastInclinationA = inclination_rad(probePosition_m(0.0));
     m_lastInclinationB = inclination_rad(probePosition_m(0.0) - m_p.cantileverSpacing_m);
@@ -94,6 +95,7 @@ void PanelScanScenario::generate(core::SampleBlock& block)
         const double inertia = m_p.strainPerAcceleration_s2_per_m * acceleration;
         a[i] = m_bendA + inertia + m_noiseA.next();
         b[i] = bSign * (m_bendB + inertia + m_noiseB.next());
+        if (m_p.positionChannel) block.channel(2)[i] = xA - 0.5 * m_p.cantileverSpacing_m;
     }
 }
 

@@ -16,7 +16,8 @@
 //   stroke (from a reversal, so the probe stops where it is at rest), then
 //   x = −X, still, until the next panel;
 // - independent white Gaussian noise on each gauge;
-// - face-to-face gauges invert the sign of b, as in the paper's prototype.
+// - face-to-face gauges invert the sign of b, as in the paper's prototype;
+// - optionally the probe's centre, x_A − spacing/2, as an encoder gives it.
 #pragma once
 
 #include "devices/simulator/GaussianNoise.h"
@@ -47,6 +48,9 @@ struct PanelScanParameters {
     // other end and back, then the probe rests there, lifted, this long
     // while the next panel comes.
     double restBetweenPanels_s = 0.0;
+    // A third channel "x" [m], the role `position`: the probe's centre along
+    // the stroke, as a line's encoder gives it (midway between A and B).
+    bool positionChannel = false;
     std::uint64_t seed = 1;
 };
 

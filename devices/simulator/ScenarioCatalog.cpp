@@ -21,7 +21,10 @@ std::unique_ptr<SimulatedScenario> makeScenario(std::string_view id, std::uint64
     if (id == kPanelScanScenario || id == kPanelLineScenario || id == kPanelRestScenario) {
         PanelScanParameters parameters;
         parameters.seed = seed;
-        if (id == kPanelLineScenario) parameters.restBetweenPanels_s = kPanelLineRest_s;
+        if (id == kPanelLineScenario) {
+            parameters.restBetweenPanels_s = kPanelLineRest_s;
+            parameters.positionChannel = true;  // a line's encoder
+        }
         if (id == kPanelRestScenario) parameters.strokeAmplitude_m = 0.0;
         if (rate_hz) parameters.sampleRate_hz = *rate_hz;
         return std::make_unique<PanelScanScenario>(parameters);

@@ -255,3 +255,25 @@ TEST(DetectSitesCli, JsonListsTheDefectSitesAndSessionsShowTheSame)
     }
     EXPECT_GE(crossings, 1) << show.out.toStdString();
 }
+
+// A panel line's recording through TSP/1 carries the line's encoder (the
+// emulator's channel "x", of the kind position): `sessions show --json`
+// places the dent (at +30 mm on the encoder's scale) from it within 1 mm,
+// and says so (the phases alone placed it at 448 mm on a ±100 mm stroke).
+TEST(DetectSitesCli, APanelLinesPositionChannelPlacesItsDentWithinAMillimetre)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath("line.tactiscope");
+    const CliResult record = tactiscope::testing::recordEmulated(dir.path(), db, QStringLiteral("panel-line"), 16);
+    ASSERT_EQ(record.exitCode, 0) << record.err.toStdString();
+    const CliResult show = runCli({"sessions", "--db", db, "show", "last", "--json"});
+    ASSERT_EQ(show.exitCode, 0) << show.err.toStdString();
+    const QJsonObject shown = QJsonDocument::fromJson(show.out.toUtf8()).object();
+    EXPECT_EQ(shown["sites_method"].toString(), QStringLiteral("from the position channel")) << show.out.toStdString();
+    const QJsonArray sites = shown["sites"].toArray();
+    ASSERT_EQ(sites.size(), 1) << show.out.toStdString();
+    const QJsonObject site = sites[0].toObject();
+    EXPECT_EQ(site["kind"].toString(), QStringLiteral("site"));
+    EXPECT_NEAR(site["position_mm"].toDouble(), 30.0, 1.0) << show.out.toStdString();
+    EXPECT_GE(site["crossings"].toInt(), 6);
+}

@@ -120,7 +120,7 @@ TEST(ChannelRoles, ARoleListIsParsedAndWrittenBackAndBadOnesAreNamed)
     EXPECT_EQ(message("=stiff-beam"), "'=stiff-beam' names no channel");
     EXPECT_EQ(message("a=cantilever-c"),
               "'cantilever-c' is not a channel role; the roles are cantilever-a, "
-              "cantilever-b, stiff-beam, soft-beam, displacement, capacitance or reference-force");
+              "cantilever-b, stiff-beam, soft-beam, displacement, capacitance, reference-force or position");
     EXPECT_EQ(message("a=stiff-beam,a=soft-beam"), "channel 'a' is given two roles");
     EXPECT_EQ(message("a=stiff-beam,b=stiff-beam"), "the role stiff-beam is given to both 'a' and 'b'");
 }

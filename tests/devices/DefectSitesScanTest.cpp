@@ -248,3 +248,43 @@ TEST(DefectSitesScan, APanelLineOfSeveralPanelsPlacesNoDentOutsideAPanelProbesSt
     EXPECT_GE(grouping.sites.front().crossings.size(), 10u);
     EXPECT_NE(grouping.method.find("as on a panel line"), std::string::npos) << grouping.method;
 }
+
+// With the rig's position channel (the simulator's encoder "x": the probe's
+// centre), each crossing is placed where the probe was when its centre was
+// over the dent: every site within 1 mm of its dent, on a panel line (whose
+// phases place nothing) and on a hand's reciprocating scan alike.
+TEST(DefectSitesScan, APositionChannelPlacesEverySiteWithinAMillimetre)
+{
+    for (const double rest_s : {3.0, 0.0})
+        for (const std::vector<double>& dents :
+             std::vector<std::vector<double>>{{0.030}, {-0.050}, {-0.040, 0.030}, {-0.060, 0.0, 0.050}}) {
+            devices::simulator::PanelScanParameters p;
+            p.restBetweenPanels_s = rest_s;
+            p.positionChannel = true;
+            p.defectPosition_m = dents.front();
+            p.moreDefects_m.assign(dents.begin() + 1, dents.end());
+            p.seed = 5;
+            devices::simulator::PanelScanScenario scenario(p);
+            const auto n = static_cast<std::size_t>(30.0 * p.sampleRate_hz);
+            core::SampleBlock block(3, n, 0.0, 1.0 / p.sampleRate_hz);
+            scenario.generate(block);
+            const std::vector<std::vector<double>> cantilevers{{block.channel(0).begin(), block.channel(0).end()},
+                                                               {block.channel(1).begin(), block.channel(1).end()}};
+            core::detector::StretchSettings settings;
+            settings.spacing_m = p.cantileverSpacing_m;
+            const auto events = core::detector::detectStretches(cantilevers, settings).events;
+            const auto grouping = core::detector::scanSites(
+                events, core::detector::positionFromSamples({block.channel(2).begin(), block.channel(2).end()}, 0.0,
+                                                            1.0 / p.sampleRate_hz));
+            SCOPED_TRACE("rest " + std::to_string(rest_s) + " s, " + std::to_string(dents.size()) + " dents");
+            EXPECT_EQ(grouping.method, "from the position channel");
+            ASSERT_EQ(grouping.sites.size(), dents.size());
+            for (std::size_t k = 0; k < dents.size(); ++k) {
+                const auto& site = grouping.sites[k];
+                ASSERT_EQ(site.kind, core::detector::SiteKind::Site) << core::detector::siteText(site);
+                EXPECT_NEAR(*site.position_m, dents[k], 0.001) << core::detector::siteText(site);
+                EXPECT_LE(std::abs(*site.position_m - dents[k]), 2.0 * site.position_u_m)
+                    << core::detector::siteText(site);
+            }
+        }
+}

@@ -33,6 +33,8 @@ QString roleName(core::ChannelRole role)
         return QObject::tr("capacitance");
     case core::ChannelRole::ReferenceForce:
         return QObject::tr("reference force");
+    case core::ChannelRole::Position:
+        return QObject::tr("stroke position");
     }
     return {};
 }

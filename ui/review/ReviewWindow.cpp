@@ -21,6 +21,7 @@
 #include "core/storage/DefectRecords.h"
 #include "core/storage/SafeOutput.h"
 #include "core/storage/SessionExport.h"
+#include "core/storage/StoredSites.h"
 #include "core/text/UncertaintyFormat.h"
 #include "ui/calibration/WizardText.h"
 #include "ui/modes/ModeUi.h"
@@ -120,10 +121,11 @@ QString eventDetails(const core::storage::SessionEvent& e)
 
 // Each defect's site ("site 2 (31.4 ± 1.2 mm)"), by its index among the defects:
 // a reciprocating scan crosses one defect again and again.
-std::vector<QString> siteTexts(const std::vector<core::detector::DefectEvent>& defects)
+std::vector<QString> siteTexts(core::storage::SessionSource& store, std::int64_t session,
+                               const std::vector<core::detector::DefectEvent>& defects)
 {
     std::vector<QString> texts(defects.size());
-    const auto grouping = core::detector::scanSites(defects);
+    const auto grouping = core::storage::storedSites(store, session, defects);
     for (std::size_t k = 0; k < grouping.sites.size(); ++k) {
         const auto& site = grouping.sites[k];
         QString text = QObject::tr("site %1").arg(k + 1);
@@ -506,7 +508,7 @@ void ReviewWindow::refreshRecords()
         const auto add = [&](const std::vector<core::storage::SessionEvent>& events,
                              const std::vector<core::storage::SessionReading>& readings, int row, const QString& source,
                              const QString& readingSource) {
-            const auto sites = siteTexts(core::storage::defectEventsOf(events));
+            const auto sites = siteTexts(*m_store, m_session.id, core::storage::defectEventsOf(events));
             std::size_t crossing = 0;
             for (const auto& e : events) {
                 spans.push_back({e.start_s, e.end_s, row, eventColour(e)});

@@ -159,7 +159,7 @@ TEST(SensorProfile, AProfileMaySayWhichChannelsPlayWhichRoleAndWritesThemBack)
     EXPECT_EQ(errorOf(withRoles(R"({"ch1": 3})")), "probe.json: roles.ch1: must be a role's name");
     EXPECT_EQ(errorOf(withRoles(R"({"ch1": "stiff"})")),
               "probe.json: roles: 'stiff' is not a channel role; the roles are cantilever-a, cantilever-b, "
-              "stiff-beam, soft-beam, displacement, capacitance or reference-force");
+              "stiff-beam, soft-beam, displacement, capacitance, reference-force or position");
     EXPECT_EQ(errorOf(withRoles(R"({"ch1": "stiff-beam", "ch2": "stiff-beam"})")),
               "probe.json: roles: the role stiff-beam is given to both 'ch1' and 'ch2'");
 }

@@ -125,7 +125,7 @@ TEST_F(GeneralModeStoreTest, AVersion7StoreBecomesCurrentWithItsChannelsAndTheir
     SessionStore store(path);
     auto version = store.database().prepare("PRAGMA user_version");
     ASSERT_TRUE(version.step());
-    EXPECT_EQ(version.int64(0), kSchemaVersion);  // 8, then 9: no session says why it was not judged
+    EXPECT_EQ(version.int64(0), kSchemaVersion);  // 8, then 9 (no session says why it was not judged) and 10
     EXPECT_EQ(store.session(2)->unjudged, "");
     const auto general = store.channels(1);
     ASSERT_EQ(general.size(), 2u);
@@ -142,6 +142,35 @@ TEST_F(GeneralModeStoreTest, AVersion7StoreBecomesCurrentWithItsChannelsAndTheir
     EXPECT_THROW(db.exec("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz) VALUES "
                          "(99, 0, 'x', '', 'other', 1)"),
                  StorageError);
+}
+
+// Version 10 lets a channel be the probe's position along a panel scan's
+// stroke (an encoder): a version-9 store keeps its channels and roles, and
+// then takes the role it refused.
+TEST_F(GeneralModeStoreTest, AVersion9StoreTakesTheRolePositionKeepingItsChannels)
+{
+    const std::string path = file("v9.tactiscope");
+    {
+        Database db(path, Database::Access::ReadWrite);
+        ASSERT_EQ(prepareSchema(db, 9), 0);
+        db.exec("INSERT INTO sessions (id, uuid, mode, subject, started_utc, status, app_version) VALUES "
+                "(1, 'u1', 'panel-scan', 'panel', '2026-01-01T00:00:00.000Z', 'complete', '0.9')");
+        db.exec("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz, role) VALUES "
+                "(1, 0, 'a', '', 'strain', 500, 'cantilever-a'), (1, 1, 'b', '', 'strain', 500, 'cantilever-b'), "
+                "(1, 2, 'x', 'm', 'position', 500, '')");
+        EXPECT_THROW(db.exec("UPDATE channels SET role = 'position' WHERE position = 2"), StorageError);
+    }
+    SessionStore store(path);
+    auto& db = store.database();
+    auto version = db.prepare("PRAGMA user_version");
+    ASSERT_TRUE(version.step());
+    EXPECT_EQ(version.int64(0), 10);
+    ASSERT_EQ(store.channels(1).size(), 3u);
+    EXPECT_EQ(store.channels(1)[0].descriptor.role, ChannelRole::CantileverA);
+    db.exec("UPDATE channels SET role = 'position' WHERE position = 2");
+    EXPECT_EQ(store.channels(1)[2].descriptor.role, ChannelRole::Position);
+    db.exec("DELETE FROM sessions WHERE id = 1");  // the rebuilt table is still its session's
+    EXPECT_EQ(countOf(db, "channels"), 0);
 }
 
 // A newer program's store may hold a mode this build does not know: it is
