@@ -233,11 +233,14 @@ QString defectTables(const core::report::ReportData& data)
     // The method, or why no crossing could be placed ("not placed: no whole
     // stroke between two reversals"), which reads as a sentence of its own.
     const bool placed = data.sites.method.rfind("not placed", 0) != 0;
+    const bool byChannel = data.sites.method == "from the position channel";
     html += QStringLiteral("<p><small>%1</small></p>")
-                .arg(placed ? QObject::tr("Position along the stroke from its centre, ± its standard uncertainty "
-                                          "(k = 1), placed by %1 between reversals; see docs/detector.md.")
-                                  .arg(text(data.sites.method))
-                            : QObject::tr("Positions %1; see docs/detector.md.").arg(text(data.sites.method)));
+                .arg(byChannel ? QObject::tr("Position where the session's position channel had the probe's centre, ± "
+                                             "its standard uncertainty (k = 1); see docs/detector.md.")
+                     : placed  ? QObject::tr("Position along the stroke from its centre, ± its standard uncertainty "
+                                              "(k = 1), placed by %1 between reversals; see docs/detector.md.")
+                                    .arg(text(data.sites.method))
+                              : QObject::tr("Positions %1; see docs/detector.md.").arg(text(data.sites.method)));
     std::vector<QStringList> crossings;
     for (std::size_t i = 0; i < defects.size(); ++i) {
         const auto& e = defects[i];
