@@ -8,6 +8,7 @@
 #include "core/derived/StoredDetection.h"
 #include "core/modes/ModeDefinition.h"
 #include "core/storage/DefectRecords.h"
+#include "core/storage/StoredSites.h"
 
 #include <chrono>
 #include <iostream>
@@ -119,7 +120,9 @@ int runAnalyze(const QStringList& arguments)
         const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         if (!save.isEmpty()) store.addEvents(*id, core::storage::defectRecords(events, save.toStdString()));
         if (options.json) {
-            std::cout << eventsJson(analysed, lags, elapsed_s, events, options, agreement) << '\n';
+            std::cout << eventsJson(analysed, lags, elapsed_s, events, options, agreement,
+                                    core::storage::storedSites(store, *id, events))
+                      << '\n';
         } else {
             printDetection(QStringLiteral("session %1").arg(*id), analysed, dt_s, lags, elapsed_s, events, options);
             if (agreement)

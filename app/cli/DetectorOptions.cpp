@@ -50,7 +50,8 @@ void addDetectorOptions(QCommandLineParser& parser)
          QStringLiteral("H")},
         {QStringLiteral("threads"), QStringLiteral("Worker threads (default 1)."), QStringLiteral("N")},
         {QStringLiteral("json"),
-         QStringLiteral("Print one JSON object: samples, lags, elapsed_s, samples_per_s, events.")},
+         QStringLiteral("Print one JSON object: samples, lags, elapsed_s, samples_per_s, events, and the defect sites "
+                        "(sites, sites_method: docs/detector.md).")},
     });
 }
 
@@ -120,7 +121,8 @@ std::optional<QString> readDetectorOptions(const QCommandLineParser& parser, Det
 }
 
 std::string eventsJson(std::size_t samples, std::size_t lags, double elapsed_s, const std::vector<DefectEvent>& events,
-                       const DetectorOptions& options, const std::optional<core::detector::ProbeAgreement>& probe)
+                       const DetectorOptions& options, const std::optional<core::detector::ProbeAgreement>& probe,
+                       const std::optional<core::detector::SiteGrouping>& sites)
 {
     core::text::JsonWriter json;
     json.beginObject();
@@ -143,7 +145,7 @@ std::string eventsJson(std::size_t samples, std::size_t lags, double elapsed_s, 
         json.endObject();
     }
     json.endArray();
-    core::detector::writeSitesJson(json, core::detector::scanSites(events));
+    core::detector::writeSitesJson(json, sites ? *sites : core::detector::scanSites(events));
     if (probe) {
         json.key("probe_agreement").beginObject();
         json.key("agreeing").value(static_cast<long long>(probe->agreeing));

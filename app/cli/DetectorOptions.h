@@ -3,6 +3,7 @@
 // options and print events the same way.
 #pragma once
 
+#include "core/detector/DefectSites.h"
 #include "core/detector/DetectorParameters.h"
 #include "core/detector/EventSegmenter.h"
 #include "core/detector/StreamingDetection.h"
@@ -32,11 +33,13 @@ void addDetectorOptions(QCommandLineParser& parser);
 std::optional<QString> readDetectorOptions(const QCommandLineParser& parser, DetectorOptions& options);
 
 // One JSON object: samples, lags, elapsed_s, samples_per_s, kernel, threads,
-// events, sites, and probe_agreement {agreeing, compared} when a probe's
-// own decisions were compared.
+// events, sites (placed by `sites` when given: a stored session's, which
+// may come from its position channel), and probe_agreement {agreeing,
+// compared} when a probe's own decisions were compared.
 std::string eventsJson(std::size_t samples, std::size_t lags, double elapsed_s,
                        const std::vector<core::detector::DefectEvent>& events, const DetectorOptions& options,
-                       const std::optional<core::detector::ProbeAgreement>& probe = std::nullopt);
+                       const std::optional<core::detector::ProbeAgreement>& probe = std::nullopt,
+                       const std::optional<core::detector::SiteGrouping>& sites = std::nullopt);
 // The human summary: what ran, how fast, and a table of the events.
 void printDetection(const QString& source, std::size_t samples, double dt_s, std::size_t lags, double elapsed_s,
                     const std::vector<core::detector::DefectEvent>& events, const DetectorOptions& options);

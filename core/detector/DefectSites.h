@@ -1,4 +1,6 @@
-// Defect sites: in a reciprocating scan one surface deflection is crossed
+// Defect sites (placing: CrossingPlacement.cpp; grouping and the sites'
+// texts: SiteGrouping.cpp; their shared arithmetic: SiteArithmetic.h): in
+// a reciprocating scan one surface deflection is crossed
 // again and again, once per stroke, so the detector's events are crossings,
 // not defects. This places each crossing along the stroke and groups the
 // crossings into sites, with rules that keep a wrong number from appearing:

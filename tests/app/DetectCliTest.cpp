@@ -276,4 +276,14 @@ TEST(DetectSitesCli, APanelLinesPositionChannelPlacesItsDentWithinAMillimetre)
     EXPECT_EQ(site["kind"].toString(), QStringLiteral("site"));
     EXPECT_NEAR(site["position_mm"].toDouble(), 30.0, 1.0) << show.out.toStdString();
     EXPECT_GE(site["crossings"].toInt(), 6);
+
+    // A re-analysis of the stored session places its sites the same way
+    // (fresh eyes: `analyze` said "not placed … as on a panel line").
+    const CliResult analyze = runCli({"analyze", "--db", db, "--session", "last", "--json"});
+    ASSERT_EQ(analyze.exitCode, 0) << analyze.err.toStdString();
+    const QJsonObject analysed = QJsonDocument::fromJson(analyze.out.toUtf8()).object();
+    EXPECT_EQ(analysed["sites_method"].toString(), QStringLiteral("from the position channel"))
+        << analyze.out.toStdString();
+    ASSERT_EQ(analysed["sites"].toArray().size(), 1) << analyze.out.toStdString();
+    EXPECT_NEAR(analysed["sites"].toArray()[0].toObject()["position_mm"].toDouble(), 30.0, 1.0);
 }

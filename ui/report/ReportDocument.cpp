@@ -238,7 +238,8 @@ QString defectTables(const core::report::ReportData& data)
                 .arg(byChannel ? QObject::tr("Position where the session's position channel had the probe's centre, ± "
                                              "its standard uncertainty (k = 1); see docs/detector.md.")
                      : placed  ? QObject::tr("Position along the stroke from its centre, ± its standard uncertainty "
-                                              "(k = 1), placed by %1 between reversals; see docs/detector.md.")
+                                              "(k = 1), from each crossing's time between reversals; the stroke: %1. "
+                                              "See docs/detector.md.")
                                     .arg(text(data.sites.method))
                               : QObject::tr("Positions %1; see docs/detector.md.").arg(text(data.sites.method)));
     std::vector<QStringList> crossings;

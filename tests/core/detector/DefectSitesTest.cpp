@@ -263,7 +263,8 @@ TEST(DefectSites, EventsWithoutSpeedAreUnplacedButStillGrouped)
     auto events = crossings(harmonic(0.5), {0.030}, 10.0);
     for (auto& event : events) event.speed_m_per_s.reset();  // no spacing known
     const auto grouping = scanSites(events);
-    EXPECT_EQ(grouping.method, "not placed: no crossing with a speed inside a stroke");
+    EXPECT_EQ(grouping.method,
+              "not placed: no crossing with a speed inside a stroke (a speed needs the cantilever spacing)");
     EXPECT_LE(grouping.sites.size(), 2u);  // at most one per direction: nothing tells them apart
     for (const auto& site : grouping.sites) EXPECT_FALSE(site.position_m);
     EXPECT_THROW(tactiscope::core::detector::groupSites(events, {}), std::invalid_argument);
