@@ -81,6 +81,8 @@ inline ScanSignals generateReciprocatingScan(const ReciprocatingScan& scan)
         end_m.push_back(k % 2 == 0 ? -half : half);
         reversal_s.push_back(reversal_s.back() + scan.stroke_s * (1.0 + scan.jitter * unit(random)));
     }
+    // The place at the last reversal, after the scan ends (its nominal one).
+    end_m.push_back(end_m.size() % 2 == 0 ? -scan.halfStroke_m : scan.halfStroke_m);
     double centres = 0.0;
     std::size_t strokes = 0;
     for (std::size_t k = 0; k + 1 < end_m.size(); ++k)
