@@ -255,5 +255,8 @@ SiteGrouping scanSites(std::span<const DefectEvent> events, const PositionAt& po
 // 20–52 mm: two dents or a long one (6 crossings)", "position unknown:
 // too few crossings to place (2 crossings)", "position unknown (6 crossings)".
 std::string siteText(const DefectSite& site);
+// Only its place, without unit for a column headed by one or with it:
+// "37.2 ± 1.9", "span 1 to 19", "unknown: too few crossings to place".
+std::string sitePlaceText(const DefectSite& site, bool withUnit);
 
 }  // namespace tactiscope::core::detector

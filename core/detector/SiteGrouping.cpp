@@ -425,33 +425,43 @@ SiteGrouping scanSites(std::span<const DefectEvent> events, const PositionAt& po
     return groupSites(events, placeByPosition(events, positionAt));
 }
 
+std::string sitePlaceText(const DefectSite& site, bool withUnit)
+{
+    const auto mm = [](double m) { return std::abs(m) < 0.5e-3 ? 0.0 : m * 1e3; };  // never "-0 mm"
+    const std::string unit = withUnit ? " mm" : "";
+    char text[96];
+    switch (site.kind) {
+    case SiteKind::Site:
+        if (site.position_u_m >= 0.05e-3)
+            return text::valueWithUncertainty(mm(*site.position_m), site.position_u_m * 1e3) + unit;
+        std::snprintf(text, sizeof text, "%.1f%s", mm(*site.position_m), unit.c_str());  // synthetic: exact
+        return text;
+    case SiteKind::Span:
+        std::snprintf(text, sizeof text, "span %.0f to %.0f%s", mm(site.from_m), mm(site.to_m), unit.c_str());
+        return text;
+    case SiteKind::Unplaced:
+        break;
+    }
+    return site.unplacedWhy.empty() ? "unknown" : "unknown: " + site.unplacedWhy;
+}
+
 std::string siteText(const DefectSite& site)
 {
     const std::size_t n = site.crossings.size();
     const std::string crossings = std::to_string(n) + (n == 1 ? " crossing" : " crossings");
-    const auto mm = [](double m) { return std::abs(m) < 0.5e-3 ? 0.0 : m * 1e3; };  // never "-0 mm"
     switch (site.kind) {
-    case SiteKind::Site: {
-        if (site.position_u_m >= 0.05e-3)
-            return text::valueWithUncertainty(mm(*site.position_m), site.position_u_m * 1e3, "mm") + " (" + crossings +
-                   ")";
-        char exact[96];  // crossings that agree exactly: synthetic ones
-        std::snprintf(exact, sizeof exact, "%.1f mm (%s, no scatter)", mm(*site.position_m), crossings.c_str());
-        return exact;
-    }
+    case SiteKind::Site:
+        return sitePlaceText(site, true) + " (" + crossings + (site.position_u_m >= 0.05e-3 ? ")" : ", no scatter)");
     case SiteKind::Span: {
-        char span[128];
-        std::snprintf(span, sizeof span,
-                      "span %.0f to %.0f mm: each crossing covers about %.0f mm, two dents or a "
-                      "long one (%s)",
-                      mm(site.from_m), mm(site.to_m), (site.to_m - site.from_m) * 1e3, crossings.c_str());
-        return span;
+        char covers[64];
+        std::snprintf(covers, sizeof covers, "%.0f", (site.to_m - site.from_m) * 1e3);
+        return sitePlaceText(site, true) + ": each crossing covers about " + covers + " mm, two dents or a long one (" +
+               crossings + ")";
     }
     case SiteKind::Unplaced:
         break;
     }
-    return site.unplacedWhy.empty() ? "position unknown (" + crossings + ")"
-                                    : "position unknown: " + site.unplacedWhy + " (" + crossings + ")";
+    return "position " + sitePlaceText(site, false) + " (" + crossings + ")";
 }
 
 }  // namespace tactiscope::core::detector

@@ -1,8 +1,6 @@
 // ReportDocument: the report's HTML, its plot resource, and the PDF.
 #include "ui/report/ReportDocument.h"
 
-#include "core/text/UncertaintyFormat.h"
-
 #include "core/modes/ModeDefinition.h"
 #include "ui/calibration/CalibrationText.h"
 #include "ui/common/DateText.h"
@@ -210,19 +208,7 @@ QString defectTables(const core::report::ReportData& data)
         // Each site's place with its standard uncertainty (the value to the
         // uncertainty's decimals, so never "± 0"), a span's ends, or why it
         // has no place, short enough for the column.
-        QString position = QObject::tr("unknown");
-        switch (site.kind) {
-        case core::detector::SiteKind::Site:
-            position = text(core::text::valueWithUncertainty(
-                std::abs(*site.position_m) < 0.5e-3 ? 0.0 : *site.position_m * 1e3, site.position_u_m * 1e3));
-            break;
-        case core::detector::SiteKind::Span:
-            position = QObject::tr("span %1 to %2").arg(fixedText(site.from_m * 1e3, 0), fixedText(site.to_m * 1e3, 0));
-            break;
-        case core::detector::SiteKind::Unplaced:
-            if (!site.unplacedWhy.empty()) position += QStringLiteral(": ") + text(site.unplacedWhy);
-            break;
-        }
+        const QString position = text(core::detector::sitePlaceText(site, false));
         sites.push_back({QString::number(k + 1), position, QString::number(site.crossings.size()),
                          QObject::tr("%1 A→B, %2 B→A").arg(site.forward).arg(site.backward),
                          QStringLiteral("%1 – %2").arg(number(site.first_s, 2), number(site.last_s, 2))});

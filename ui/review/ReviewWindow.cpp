@@ -22,7 +22,6 @@
 #include "core/storage/SafeOutput.h"
 #include "core/storage/SessionExport.h"
 #include "core/storage/StoredSites.h"
-#include "core/text/UncertaintyFormat.h"
 #include "ui/calibration/WizardText.h"
 #include "ui/modes/ModeUi.h"
 #include "ui/report/ReportDocument.h"
@@ -128,16 +127,11 @@ std::vector<QString> siteTexts(core::storage::SessionSource& store, std::int64_t
     const auto grouping = core::storage::storedSites(store, session, defects);
     for (std::size_t k = 0; k < grouping.sites.size(); ++k) {
         const auto& site = grouping.sites[k];
-        QString text = QObject::tr("site %1").arg(k + 1);
-        if (site.kind == core::detector::SiteKind::Site)
-            text = QObject::tr("site %1 (%2)")
-                       .arg(k + 1)
-                       .arg(QString::fromStdString(
-                           core::text::valueWithUncertainty(*site.position_m * 1e3, site.position_u_m * 1e3, "mm")));
-        else if (site.kind == core::detector::SiteKind::Span)
-            text = QObject::tr("site %1 (span %2 to %3 mm)")
-                       .arg(k + 1)
-                       .arg(fixedText(site.from_m * 1e3, 0), fixedText(site.to_m * 1e3, 0));
+        const QString text = site.kind == core::detector::SiteKind::Unplaced
+                                 ? QObject::tr("site %1").arg(k + 1)
+                                 : QObject::tr("site %1 (%2)")
+                                       .arg(k + 1)
+                                       .arg(QString::fromStdString(core::detector::sitePlaceText(site, true)));
         for (const std::size_t i : site.crossings) texts[i] = text;
         for (const std::size_t i : site.parts) texts[i] = text;
     }
