@@ -296,7 +296,10 @@ ReadStatus PortSource::readBlock(core::SampleBlock& out, std::chrono::millisecon
 std::optional<core::timing::ClockMapping> PortSource::hostClock() const
 {
     const std::lock_guard lock(m_statusMutex);
-    return m_clock.mapping();
+    auto mapping = m_clock.mapping();
+    // Its samples' instants are known to within a period of their stamps (ClockMapping::samplePeriod_s).
+    if (mapping && m_rate_hz > 0.0) mapping->samplePeriod_s = 1.0 / m_rate_hz;
+    return mapping;
 }
 
 double PortSource::hostTime_s(double blockTime_s) const

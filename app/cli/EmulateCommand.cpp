@@ -34,6 +34,9 @@ int runEmulate(const QStringList& arguments)
         {QStringLiteral("garbage"), QStringLiteral("Fraction of frames with injected garbage, 0 to 1."),
          QStringLiteral("RATE")},
         {QStringLiteral("seed"), QStringLiteral("Noise seed (default 1)."), QStringLiteral("N")},
+        {QStringLiteral("samples-per-frame"),
+         QStringLiteral("Samples per channel in each TSP/1 frame or text burst, 1 to 1000 (default 10)."),
+         QStringLiteral("N")},
         {QStringLiteral("info-rate"),
          QStringLiteral("The rate its INFO frame claims, in Hz (default: the true rate; another is a lie)."),
          QStringLiteral("HZ")},
@@ -113,6 +116,12 @@ int runEmulate(const QStringList& arguments)
         if (!garbage || *garbage < 0.0 || *garbage > 1.0)
             return usageError(QStringLiteral("--garbage must lie between 0 and 1"), usage);
         options.garbageRate = *garbage;
+    }
+    if (parser.isSet(QStringLiteral("samples-per-frame"))) {
+        const auto samples = positive("samples-per-frame", true);
+        if (!samples || *samples > 1000)
+            return usageError(QStringLiteral("--samples-per-frame must be a whole number from 1 to 1000"), usage);
+        options.samplesPerFrame = static_cast<std::size_t>(*samples);
     }
     if (parser.isSet(QStringLiteral("seed"))) {
         bool ok = false;

@@ -348,6 +348,7 @@ void writeDevices(text::JsonWriter& json, SessionSource& store, const std::vecto
             json.key("drift").value(clock->drift);
             json.key("offset_u_s").value(clock->offset_u_s);
             json.key("drift_u").value(clock->drift_u);
+            json.key("sample_period_s").value(clock->samplePeriod_s);
             json.key("uncertainty").value(timing::toString(clock->basis));
             json.key("span_s").value(clock->span_s);
             json.endObject();

@@ -71,12 +71,22 @@ struct ClockMapping {
     ClockUncertaintyBasis basis = ClockUncertaintyBasis::TooFewFrames;
     double offset_u_s = 0.0;
     double drift_u = 0.0;
+    // The device's sample period. Where within it a sample's instant lies
+    // (an ADC that integrates over the period or converts at its end, a
+    // board that reads before or after it prints) no arrival tells: until
+    // a common mark has calibrated it, a uniform doubt one period wide, a
+    // standard uncertainty of T/√12 in every host time (GUM type B). Zero
+    // for a source that times its samples by the host's clock.
+    double samplePeriod_s = 0.0;
 
     double host_s(double device_s) const { return device_s + offset_s + drift * (device_s - reference_s); }
     // The inverse: the device time of a host instant.
     double device_s(double host_s) const { return (host_s - offset_s + drift * reference_s) / (1.0 + drift); }
-    // The standard uncertainty of host_s(device_s); none on too few frames.
+    // The standard uncertainty of host_s(device_s), the sample period's
+    // doubt included; none on too few frames.
     std::optional<double> uncertainty_s(double device_s) const;
+    // Of it, the sample period's part: T/√12.
+    double samplePeriodUncertainty_s() const;
 };
 
 // How well two devices' mapped times agree between the host instants

@@ -46,6 +46,7 @@ std::string toJson(const ClockMapping& m)
     json["uncertainty"] = toString(m.basis);
     json["offset_u_s"] = m.offset_u_s;
     json["drift_u"] = m.drift_u;
+    json["sample_period_s"] = m.samplePeriod_s;
     return json.dump();
 }
 
@@ -74,6 +75,9 @@ std::optional<ClockMapping> clockMappingFromJson(std::string_view text)
         pairs > 1e15)
         return std::nullopt;
     m.pairs = static_cast<std::size_t>(pairs);
+    // Stores before issue 55 did not keep the sample period: no doubt for it.
+    if (json.contains("sample_period_s") && (!number("sample_period_s", m.samplePeriod_s) || m.samplePeriod_s < 0.0))
+        return std::nullopt;
     const auto basis = json.find("uncertainty");
     if (basis == json.end() || !basis->is_string()) return std::nullopt;
     const std::string word = basis->get<std::string>();

@@ -17,7 +17,8 @@ namespace tactiscope::core::timing {
 const char* toString(ClockUncertaintyBasis basis);
 
 // {"reference_s":…,"offset_s":…,"drift":…,"span_s":…,"pairs":…,
-//  "uncertainty":"spread"|"bound"|"too-few-frames"|"exact","offset_u_s":…,"drift_u":…}
+//  "uncertainty":"spread"|"bound"|"too-few-frames"|"exact","offset_u_s":…,"drift_u":…,
+//  "sample_period_s":…} (the last absent in stores before issue 55: 0)
 std::string toJson(const ClockMapping& mapping);
 // None for text that is not such an object, or holds a number that is
 // not finite, a drift beyond ±1 % (no crystal is that far off: the text

@@ -14,7 +14,7 @@ std::string clockMappingText(const std::string& clockJson)
     const auto clock = clockMappingFromJson(clockJson);
     if (!clock) return "not mapped (the stored mapping does not read as one: damaged, or written by another program)";
     const auto u_s = clock->uncertainty_s(0.0);
-    char text[256];
+    char text[384];
     int n = std::snprintf(text, sizeof text, "%+.6f s at the start", clock->host_s(0.0));
     // Too few frames: a drift figure would be noise, so none is given.
     if (!u_s) {
@@ -25,8 +25,15 @@ std::string clockMappingText(const std::string& clockJson)
     n += std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), " ± %.3f ms", *u_s * 1e3);
     n += std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), ", %.1f", std::abs(clock->drift) * 1e6);
     n += std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), " ± %.1f", clock->drift_u * 1e6);
-    std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), " ppm %s (± %s)",
-                  clock->drift >= 0.0 ? "slow" : "fast", describe(clock->basis));
+    n += std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), " ppm %s (± %s",
+                       clock->drift >= 0.0 ? "slow" : "fast", describe(clock->basis));
+    // Where within its period a sample is taken: often the larger part.
+    if (clock->samplePeriod_s > 0.0)
+        std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n),
+                      "; %.3f ms of the time's ± is where within its %.3g ms sample period a sample is taken)",
+                      clock->samplePeriodUncertainty_s() * 1e3, clock->samplePeriod_s * 1e3);
+    else
+        std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), ")");
     return text;
 }
 

@@ -223,8 +223,9 @@ void ProbeEmulator::addMark(core::SampleBlock& block) const
 {
     if (!m_options.markAt_s || block.channelCount() == 0) return;
     auto values = block.channel(0);
+    const double halfWidth_s = markHalfWidth_s(m_rate_hz);
     for (std::size_t s = 0; s < values.size(); ++s) {
-        const double x = (takenAt_s(block.firstSampleIndex() + s) - *m_options.markAt_s) / kMarkHalfWidth_s;
+        const double x = (takenAt_s(block.firstSampleIndex() + s) - *m_options.markAt_s) / halfWidth_s;
         if (std::abs(x) <= 1.0) values[s] += kMarkHeight * x;
     }
 }
@@ -397,11 +398,13 @@ void ProbeEmulator::run(const std::stop_token& stop)
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
             continue;
         }
-        // Its samples come at its own crystal's pace.
+        // Its samples come at its own crystal's pace, and a frame leaves as
+        // soon as its last sample is taken (TSP/1: the instant its arrival
+        // is paired with; docs/protocol.md).
         const auto due =
             streamStart +
             std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
-                static_cast<double>(paced + m_options.samplesPerFrame) / m_rate_hz * (1.0 + m_options.clockDrift)));
+                static_cast<double>(paced + m_options.samplesPerFrame - 1) / m_rate_hz * (1.0 + m_options.clockDrift)));
         if (Clock::now() < due) {
             std::this_thread::sleep_until(std::min(due, Clock::now() + std::chrono::milliseconds(5)));
             continue;

@@ -18,6 +18,7 @@
 #include "devices/simulator/ShuntedBridges.h"
 #include "devices/simulator/SimulatedScenario.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -39,7 +40,12 @@ namespace tactiscope::devices::emulator {
 enum class EmulatorFault { None, Restart, SequenceJump, FrozenSequence, WrongDecisions };
 
 inline constexpr double kMarkHeight = 1e-3;
-inline constexpr double kMarkHalfWidth_s = 0.01;
+// The mark's half-width: 10 ms, or two and a half sample periods of a slower
+// device, so that its ramp holds samples either side of its zero at any rate.
+inline double markHalfWidth_s(double rate_hz)
+{
+    return std::max(0.01, 2.5 / rate_hz);
+}
 
 struct EmulatorOptions {
     std::string linkPath;
@@ -65,7 +71,7 @@ struct EmulatorOptions {
     double clockOffset_s = 0.0;
     // A mark at this instant of the host's steady clock (CLOCK_MONOTONIC,
     // seconds): the first channel ramps from −kMarkHeight to +kMarkHeight
-    // over kMarkHalfWidth_s either side of it, on top of the scenario, by
+    // over markHalfWidth_s either side of it, on top of the scenario, by
     // the host instant each sample is taken at. Two emulators given one
     // instant mark one event, to see aligned in the session (issue 40).
     std::optional<double> markAt_s = std::nullopt;
