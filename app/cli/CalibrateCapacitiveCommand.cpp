@@ -106,7 +106,8 @@ std::optional<derived::SessionChannel> channelFor(storage::SessionSource& store,
 
 // A stored sweep of the beam against a reference force, each from any
 // device of the session.
-int calibrateStoredSweep(const QCommandLineParser& parser, const QString& usage, std::optional<double> area_m2)
+int calibrateStoredSweep(const QCommandLineParser& parser, const QString& usage, std::optional<double> area_m2,
+                         std::optional<double> wander_f_per_sqrt_s)
 {
     calibration::SweepSteps sweep;
     calibration::CapacitiveCalibrationResult result;
@@ -142,6 +143,7 @@ int calibrateStoredSweep(const QCommandLineParser& parser, const QString& usage,
         sweep =
             calibration::stepsFromSweep(paired.recording, {.stability = calibration::capacitiveStabilityDefaults()});
         sweep.steps.input.contactArea_m2 = area_m2;
+        sweep.steps.input.baselineWander_f_per_sqrt_s = wander_f_per_sqrt_s;
         result = calibration::calibrateCapacitive(sweep.steps.input, capacitance->label(), "");
         if (!paired.clockUncertainty_s)
             result.cautions.push_back("the two devices' clocks were mapped without a stated uncertainty (too few "
@@ -198,6 +200,10 @@ int runCalibrateCapacitive(const QStringList& arguments)
          QStringLiteral("UNIT")},
         {QStringLiteral("contact-area-mm2"), QStringLiteral("Contact area for the pressure sensitivity (e.g. 9)."),
          QStringLiteral("A")},
+        {QStringLiteral("baseline-wander"),
+         QStringLiteral("The beam's baseline stability, a random walk in pF/√s (e.g. 0.0002): its wander between "
+                        "the two baselines then enters the sensitivity's ±."),
+         QStringLiteral("S")},
         {QStringLiteral("json"), QStringLiteral("Print one JSON object.")},
         {QStringLiteral("db"), QStringLiteral("The session store of a sweep (with --session)."),
          QStringLiteral("FILE|CONNINFO")},
@@ -235,7 +241,14 @@ int runCalibrateCapacitive(const QStringList& arguments)
             return usageError(QStringLiteral("--contact-area-mm2 must be a positive number"), usage);
         area_m2 = *value * 1e-6;
     }
-    if (stored) return calibrateStoredSweep(parser, usage, area_m2);
+    std::optional<double> wander_f_per_sqrt_s;
+    if (parser.isSet(QStringLiteral("baseline-wander"))) {
+        const auto value = parseNumber(parser.value(QStringLiteral("baseline-wander")));
+        if (!value || *value < 0.0)
+            return usageError(QStringLiteral("--baseline-wander must be a number of pF/√s, 0 or more"), usage);
+        wander_f_per_sqrt_s = *value * 1e-12;
+    }
+    if (stored) return calibrateStoredSweep(parser, usage, area_m2, wander_f_per_sqrt_s);
     std::optional<std::vector<double>> loads;
     if (parser.isSet(QStringLiteral("loads-mgf"))) {
         loads = parseLoads(parser.value(QStringLiteral("loads-mgf")));
@@ -270,6 +283,7 @@ int runCalibrateCapacitive(const QStringList& arguments)
             return kExitUsage;
         }
         steps.input.contactArea_m2 = area_m2;
+        steps.input.baselineWander_f_per_sqrt_s = wander_f_per_sqrt_s;
         result = calibration::calibrateCapacitive(steps.input, path.toStdString(), "");
     } catch (const std::exception&) {  // the file, its steps
         return exitForReadError(path);

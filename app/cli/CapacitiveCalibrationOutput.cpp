@@ -14,6 +14,17 @@ namespace tactiscope::cli {
 
 using namespace core;
 
+namespace {
+
+// What the sensitivity's ± rests on, in the JSON's words.
+const char* uncertaintyBasis(const calibration::CapacitiveCalibrationResult& result)
+{
+    if (!result.sensitivityUncertainty) return "scatter";
+    return result.sensitivityUncertainty->widened ? "propagated-widened" : "propagated";
+}
+
+}  // namespace
+
 void writeCapacitiveJson(const calibration::CapacitiveCalibrationResult& result,
                          const calibration::CapacitiveSteps& steps, bool timed, const SweepReport* sweep)
 {
@@ -41,6 +52,13 @@ void writeCapacitiveJson(const calibration::CapacitiveCalibrationResult& result,
         json.key(key).value(value);
     }
     json.key("sensitivity_standard_error_pf_per_mn").value(result.forceFit->slopeStandardError * 1e9);
+    json.key("sensitivity_uncertainty").value(uncertaintyBasis(result));
+    json.key("baseline_wander_pf_per_sqrt_s");
+    if (steps.input.baselineWander_f_per_sqrt_s)
+        json.value(*steps.input.baselineWander_f_per_sqrt_s * 1e12);
+    else
+        json.null();
+    if (result.hysteresisNoise) json.key("hysteresis_noise_fraction").value(*result.hysteresisNoise);
     json.key("detection_limit_mgf").value(*result.detectionLimit_n / calibration::kMilligramForce_n);
     json.key("baseline_samples").value(static_cast<long long>(steps.input.baseline.count));
     if (steps.finalShift_f) json.key("final_baseline_shift_pf").value(*steps.finalShift_f * 1e12);
@@ -102,13 +120,32 @@ void writeCapacitiveText(const calibration::CapacitiveCalibrationResult& result,
     out << "sensitivity: " << toQString(text::valueWithUncertainty(fit.slope * 1e9, fit.slopeStandardError * 1e9))
         << " pF/mN, intercept " << QString::number(fit.intercept * 1e12, 'f', 4) << " pF, R² "
         << QString::number(fit.rSquared, 'f', 5) << " (" << fit.points << " points)\n";
+    if (result.sensitivityUncertainty && !result.sensitivityUncertainty->widened)
+        out << "  its ±: the steps' and the baselines' noise"
+            << (steps.input.baselineWander_f_per_sqrt_s
+                    ? QStringLiteral(" and the baseline's wander (%1 pF/√s given)")
+                          .arg(*steps.input.baselineWander_f_per_sqrt_s * 1e12, 0, 'g', 3)
+                    : QStringLiteral("; not the baseline's wander between its two baselines (give the beam's "
+                                     "stability with --baseline-wander)"))
+            << '\n';
+    else if (!result.sensitivityUncertainty)
+        out << "  its ±: the points' scatter about the line (the steps' own noise is not known)\n";
+    if (sweep)
+        out << "  a sweep reads the beam at its pace: a creep slower than the sweep is not followed, and reads the "
+               "sensitivity low by up to its fraction × its time over the ramp's, outside the ± (weights held till "
+               "settled read the crept-to-rest value)\n";
     out << "relative sensitivity: " << QString::number(*result.relativeSensitivity_per_n * 1e-3, 'f', 4) << " per mN";
     if (result.pressureSensitivity_per_pa)
         out << ", " << QString::number(*result.pressureSensitivity_per_pa * 1e3, 'f', 3) << " per kPa";
     out << "\ndetection limit: " << QString::number(*result.detectionLimit_n * 1e6, 'f', 1) << " µN ("
         << QString::number(*result.detectionLimit_n / calibration::kMilligramForce_n, 'f', 2) << " mgf, 3σ of C0)\n";
-    if (result.hysteresis)
-        out << "hysteresis: " << QString::number(*result.hysteresis * 100.0, 'f', 2) << " % of full scale\n";
+    if (result.hysteresis) {
+        out << "hysteresis: " << QString::number(*result.hysteresis * 100.0, 'f', 2) << " % of full scale";
+        if (result.hysteresisNoise)
+            out << " (an upper bound of the silicone's: the steps' noise alone reads up to "
+                << QString::number(*result.hysteresisNoise * 100.0, 'f', 2) << " %)";
+        out << '\n';
+    }
     const auto unloading = std::ranges::count_if(steps.steps, [](const auto& s) { return !s.loading; });
     out << (sweep ? "points: " : "steps: ") << steps.steps.size() - static_cast<std::size_t>(unloading) << " loading, "
         << unloading << " unloading";

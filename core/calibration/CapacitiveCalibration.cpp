@@ -3,34 +3,47 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <stdexcept>
 
 namespace tactiscope::core::calibration {
 namespace {
 
-// Largest loading/unloading difference at equal load, relative to full scale.
-std::optional<double> hysteresisOf(const std::vector<std::pair<double, bool>>& loadAndDirection,
-                                   const std::vector<double>& deltaC)
+struct Hysteresis {
+    double fraction = 0.0;  // the largest loading/unloading difference at equal load, of full scale
+    double noise = 0.0;     // twice the largest such difference's standard uncertainty, of full scale
+};
+
+// Over the loads measured both ways; none without such a load.
+std::optional<Hysteresis> hysteresisOf(const std::vector<std::pair<double, bool>>& loadAndDirection,
+                                       const std::vector<double>& deltaC, const std::vector<double>& u)
 {
-    std::map<double, std::pair<std::vector<double>, std::vector<double>>> byLoad;
+    struct Side {
+        double sum = 0.0, variance = 0.0;
+        std::size_t count = 0;
+        double mean() const { return sum / static_cast<double>(count); }
+        // The variance of the mean of its steps.
+        double meanVariance() const { return variance / static_cast<double>(count * count); }
+    };
+    std::map<double, std::pair<Side, Side>> byLoad;
     for (std::size_t i = 0; i < deltaC.size(); ++i) {
         auto& entry = byLoad[loadAndDirection[i].first];
-        (loadAndDirection[i].second ? entry.first : entry.second).push_back(deltaC[i]);
+        Side& side = loadAndDirection[i].second ? entry.first : entry.second;
+        side.sum += deltaC[i];
+        side.variance += u[i] * u[i];
+        ++side.count;
     }
     // Full scale: the largest change from the unloaded baseline.
     double fullScale = 0.0;
     for (double d : deltaC) fullScale = std::max(fullScale, std::abs(d));
-    std::optional<double> worst;
-    for (const auto& [load, directions] : byLoad) {
-        if (directions.first.empty() || directions.second.empty() || !(fullScale > 0.0)) continue;
-        const auto mean = [](const std::vector<double>& v) {
-            double s = 0.0;
-            for (double x : v) s += x;
-            return s / static_cast<double>(v.size());
-        };
-        const double difference = std::abs(mean(directions.first) - mean(directions.second)) / fullScale;
-        worst = std::max(worst.value_or(0.0), difference);
+    std::optional<Hysteresis> worst;
+    for (const auto& [load, sides] : byLoad) {
+        if (sides.first.count == 0 || sides.second.count == 0 || !(fullScale > 0.0)) continue;
+        if (!worst) worst.emplace();
+        worst->fraction = std::max(worst->fraction, std::abs(sides.first.mean() - sides.second.mean()) / fullScale);
+        worst->noise = std::max(worst->noise,
+                                2.0 * std::sqrt(sides.first.meanVariance() + sides.second.meanVariance()) / fullScale);
     }
     return worst;
 }
@@ -47,7 +60,7 @@ CapacitiveCalibrationResult calibrateCapacitive(const CapacitiveCalibrationInput
         r.drift_f_per_s =
             (in.finalBaseline->mean - in.baseline.mean) / (in.finalBaseline->middle_s() - in.baseline.middle_s());
 
-    std::vector<double> force, forceDelta, displacement, displacementDelta;
+    std::vector<double> force, forceDelta, forceU, forceT, displacement, displacementDelta;
     std::vector<std::pair<double, bool>> forceDirection, displacementDirection;
     for (const CapacitiveStep& step : in.steps) {
         const double delta = step.capacitance_f - (r.c0_f + r.drift_f_per_s * (step.t_s - in.baseline.middle_s()));
@@ -55,6 +68,8 @@ CapacitiveCalibrationResult calibrateCapacitive(const CapacitiveCalibrationInput
             force.push_back(*step.force_n);
             forceDelta.push_back(delta);
             forceDirection.emplace_back(*step.force_n, step.loading);
+            forceU.push_back(step.capacitance_u_f);
+            forceT.push_back(step.t_s);
         }
         if (step.displacement_m) {
             displacement.push_back(*step.displacement_m);
@@ -84,8 +99,30 @@ CapacitiveCalibrationResult calibrateCapacitive(const CapacitiveCalibrationInput
         r.fitForce_n = withZero(force);
         r.fitDelta_f = withZero(forceDelta);
         r.forceFit = fitLine(r.fitForce_n, r.fitDelta_f);
+        SlopeUncertaintyInput propagation{
+            {}, {in.baseline.middle_s(), in.baseline.meanStandardError}, std::nullopt, in.baselineWander_f_per_sqrt_s};
+        if (in.finalBaseline && in.finalBaseline->middle_s() > in.baseline.middle_s())
+            propagation.final = BaselineReading{in.finalBaseline->middle_s(), in.finalBaseline->meanStandardError};
+        for (std::size_t i = 0; i < force.size(); ++i)
+            propagation.steps.push_back({force[i], r.forceFit->residuals[i + 1], forceU[i], forceT[i]});
+        r.sensitivityUncertainty = propagatedSlopeUncertainty(propagation);
+        if (r.sensitivityUncertainty) {
+            r.forceFit->slopeStandardError = r.sensitivityUncertainty->u_f_per_n;
+            if (r.sensitivityUncertainty->widened) {
+                char text[320];
+                std::snprintf(text, sizeof text,
+                              "the points scatter beyond their steps' noise%s (χ²/ν = %.1f): the sensitivity's ± is "
+                              "widened by √(χ²/ν); a creep, a hysteresis or a step read before it settled",
+                              in.baselineWander_f_per_sqrt_s ? " and the baseline's wander" : "",
+                              r.sensitivityUncertainty->chiSquarePerDegree);
+                r.cautions.emplace_back(text);
+            }
+        }
         const double slope = r.forceFit->slope;  // F per N
-        r.hysteresis = hysteresisOf(forceDirection, forceDelta);
+        if (const auto h = hysteresisOf(forceDirection, forceDelta, forceU)) {
+            r.hysteresis = h->fraction;
+            if (h->noise > 0.0) r.hysteresisNoise = h->noise;
+        }
         r.detectionLimit_n = 3.0 * r.baselineSigma_f / slope;
         r.relativeSensitivity_per_n = slope / r.c0_f;
         if (in.contactArea_m2) r.pressureSensitivity_per_pa = *r.relativeSensitivity_per_n * *in.contactArea_m2;

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "core/calibration/CalibrationRecord.h"
+#include "core/calibration/CapacitiveSlopeUncertainty.h"
 #include "core/calibration/FitCredibility.h"
 #include "core/calibration/StabilityMonitor.h"
 
@@ -24,6 +25,7 @@ struct CapacitiveStep {
     double capacitance_f = 0.0;            // mean of the step's stable window
     double t_s = 0.0;                      // middle of that window
     bool loading = true;                   // false while weights come off
+    double capacitance_u_f = 0.0;          // the mean's standard uncertainty (its own noise); 0: not known
 };
 
 struct CapacitiveCalibrationInput {
@@ -34,6 +36,10 @@ struct CapacitiveCalibrationInput {
     // The beam's stiffness, so force steps alone also give a detection limit
     // in displacement (w = F/k) when no displacement steps were taken.
     std::optional<double> stiffness_n_per_m;
+    // The beam's baseline stability, a random walk of σ_w in F/√s (a Type B
+    // input: no calibration recording shows it under its noise); its wander
+    // about the line between the two baselines then enters the ±.
+    std::optional<double> baselineWander_f_per_sqrt_s;
 };
 
 struct CapacitiveCalibrationResult {
@@ -47,6 +53,14 @@ struct CapacitiveCalibrationResult {
     // Largest |ΔC_loading − ΔC_unloading| at the same load, as a fraction of
     // the full-scale ΔC; only when both directions were measured.
     std::optional<double> hysteresis;
+    // What the steps' own noise alone could read as hysteresis (twice the
+    // largest loading–unloading difference's standard uncertainty, as a
+    // fraction of full scale): a hysteresis below it is not the silicone's.
+    std::optional<double> hysteresisNoise;
+    // How the sensitivity's ± was found: propagated from the steps' noise,
+    // the baselines' and the wander (widened when the points scatter beyond
+    // them), or, when a step's noise is not known, the points' scatter.
+    std::optional<SlopeUncertainty> sensitivityUncertainty;
     std::optional<double> detectionLimit_n;  // 3σ_baseline / sensitivity
     std::optional<double> detectionLimit_m;
     std::optional<double> relativeSensitivity_per_n;   // (ΔC/C0) per newton

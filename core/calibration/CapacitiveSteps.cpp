@@ -2,6 +2,7 @@
 #include "core/calibration/CapacitiveSteps.h"
 
 #include "core/calibration/LinearFit.h"
+#include "core/calibration/SettledCapture.h"
 
 #include <cmath>
 #include <span>
@@ -26,7 +27,8 @@ double timeOf(const CapacitiveRecording& r, std::size_t i)
 }
 
 // The statistics of samples [first, end): mean, the scatter about their
-// line (the plain σ without a time column) and its slope.
+// line (the plain σ without a time column), its slope and the mean's
+// standard error.
 WindowStatistics windowOf(const CapacitiveRecording& r, std::size_t first, std::size_t end)
 {
     WindowStatistics w;
@@ -43,26 +45,14 @@ WindowStatistics windowOf(const CapacitiveRecording& r, std::size_t first, std::
         double squares = 0.0;
         for (const double v : c) squares += (v - w.mean) * (v - w.mean);
         w.sigma = std::sqrt(squares / static_cast<double>(w.count - 1));
+        w.meanStandardError = w.sigma / std::sqrt(static_cast<double>(w.count));
         return w;
     }
     const LinearFit line = fitLine(std::span<const double>(r.t_s.data() + first, w.count), c);
     w.sigma = line.residualStandardDeviation;
     w.drift_per_s = line.slope;
+    w.meanStandardError = meanStandardError(line.residuals);
     return w;
-}
-
-// The settled part of a run: from its first stable window on (all of it
-// without a time column); none when it never settles.
-std::optional<WindowStatistics> settled(const CapacitiveRecording& r, const Run& run, const StabilitySettings& s)
-{
-    if (r.t_s.empty()) return windowOf(r, run.first, run.end);
-    const std::span<const double> t(r.t_s.data() + run.first, run.end - run.first);
-    const std::span<const double> c(r.capacitance_f.data() + run.first, run.end - run.first);
-    const auto first = firstStableWindow(t, c, s);
-    if (!first) return std::nullopt;
-    std::size_t from = run.first;
-    while (r.t_s[from] < first->start_s) ++from;
-    return windowOf(r, from, run.end);
 }
 
 // The calibration's input from runs with known loads and their windows.
@@ -71,7 +61,8 @@ CapacitiveSteps fromRuns(const CapacitiveRecording& r, const std::vector<Run>& r
     if (runs.empty() || runs.front().force_n != 0.0)
         throw std::invalid_argument("the recording must start unloaded: its first samples give C0");
     CapacitiveSteps result;
-    const auto baseline = settled(r, runs.front(), s);
+    const auto settled = [&](const Run& run) { return settledWindow(r, run.first, run.end, s); };
+    const auto baseline = settled(runs.front());
     if (!baseline) throw std::invalid_argument("the unloaded baseline at the start never settles");
     result.input.baseline = *baseline;
     std::optional<double> previous;
@@ -82,13 +73,13 @@ CapacitiveSteps fromRuns(const CapacitiveRecording& r, const std::vector<Run>& r
             // The baseline at the end measures the drift; one between
             // weights (each placed on its own) is not a step.
             if (last)
-                if (const auto final = settled(r, run, s)) {
+                if (const auto final = settled(run)) {
                     result.finalShift_f = final->mean - baseline->mean;
                     if (!r.t_s.empty()) result.input.finalBaseline = *final;
                 }
             continue;
         }
-        const auto window = settled(r, run, s);
+        const auto window = settled(run);
         if (!window) {
             ++result.unsettled;
             continue;
@@ -97,7 +88,8 @@ CapacitiveSteps fromRuns(const CapacitiveRecording& r, const std::vector<Run>& r
                              (run.force_n == *previous && !result.steps.empty() && result.steps.back().loading);
         previous = run.force_n;
         result.steps.push_back({run.force_n, loading, *window});
-        result.input.steps.push_back({run.force_n, std::nullopt, window->mean, window->middle_s(), loading});
+        result.input.steps.push_back(
+            {run.force_n, std::nullopt, window->mean, window->middle_s(), loading, window->meanStandardError});
     }
     if (result.steps.size() < 2) throw std::invalid_argument("fewer than two load steps settled");
     return result;
@@ -118,6 +110,18 @@ void trimEdges(const CapacitiveRecording& r, Run& p)
 }
 
 }  // namespace
+
+std::optional<WindowStatistics> settledWindow(const CapacitiveRecording& r, std::size_t first, std::size_t end,
+                                              const StabilitySettings& stability)
+{
+    if (end <= first) return std::nullopt;
+    if (r.t_s.empty()) return windowOf(r, first, end);
+    const std::span<const double> t(r.t_s.data() + first, end - first);
+    const std::span<const double> c(r.capacitance_f.data() + first, end - first);
+    const auto from = settledFrom(t, c, stability);
+    if (!from) return std::nullopt;
+    return windowOf(r, first + *from, end);
+}
 
 CapacitiveSteps stepsFromLoads(const CapacitiveRecording& r, const StabilitySettings& stability)
 {

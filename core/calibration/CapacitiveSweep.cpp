@@ -20,35 +20,6 @@ double meanOf(std::span<const double> values)
     return sum / static_cast<double>(values.size());
 }
 
-// Samples [first, end) from their first stable window on, as one window;
-// none when they never settle.
-std::optional<WindowStatistics> settledPart(const CapacitiveRecording& r, std::size_t first, std::size_t end,
-                                            const StabilitySettings& stability)
-{
-    if (end <= first + 2) return std::nullopt;
-    const std::span<const double> t(r.t_s.data() + first, end - first);
-    const std::span<const double> c(r.capacitance_f.data() + first, end - first);
-    const auto stable = firstStableWindow(t, c, stability);
-    if (!stable) return std::nullopt;
-    std::size_t from = first;
-    while (r.t_s[from] < stable->start_s) ++from;
-    const std::span<const double> tt(r.t_s.data() + from, end - from);
-    const std::span<const double> cc(r.capacitance_f.data() + from, end - from);
-    WindowStatistics w;
-    w.count = end - from;
-    w.start_s = tt.front();
-    w.end_s = tt.back();
-    w.stable = true;
-    w.mean = meanOf(cc);
-    const LinearFit line = fitLine(tt, cc);
-    w.sigma = line.residualStandardDeviation;
-    w.drift_per_s = line.slope;
-    std::vector<double> residuals(w.count);
-    for (std::size_t i = 0; i < w.count; ++i) residuals[i] = cc[i] - (line.intercept + line.slope * tt[i]);
-    w.meanStandardError = meanStandardError(residuals);
-    return w;
-}
-
 // Where the sweep turns: the extreme before each rise or fall of `turn`
 // past it.
 std::vector<std::size_t> turningPoints(std::span<const double> force, double turn)
@@ -156,16 +127,27 @@ SweepSteps stepsFromSweep(const CapacitiveRecording& r, const SweepSettings& set
     while (end > begin && force[end - 1] <= leaves) --end;
 
     CapacitiveSteps& out = result.steps;
-    const auto baseline = settledPart(r, 0, begin, settings.stability);
+    const auto baseline = settledWindow(r, 0, begin, settings.stability);
     if (!baseline) throw std::invalid_argument("the unloaded baseline before the sweep never settles");
     out.input.baseline = *baseline;
-    if (const auto final = settledPart(r, end, n, settings.stability)) {
+    if (const auto final = settledWindow(r, end, n, settings.stability)) {
         out.input.finalBaseline = *final;
         out.finalShift_f = final->mean - baseline->mean;
     }
 
-    // The force each sample felt: the reference's, through the beam's lag.
-    if (settings.maxLag_s > 0.0) result.lag_s = lagOf(r, force, begin, end, settings.maxLag_s);
+    // The force each sample felt: the reference's, through the beam's lag,
+    // searched with the baseline's drift taken out (left in, it tilts one
+    // direction against the other as a lag does: 0.439 s was found for a
+    // 0.400 s beam, and 0.5 % of hysteresis left on a beam with none).
+    if (settings.maxLag_s > 0.0) {
+        CapacitiveRecording level = r;
+        if (out.input.finalBaseline) {
+            const double t0 = out.input.baseline.middle_s(), t1 = out.input.finalBaseline->middle_s();
+            const double drift = (out.input.finalBaseline->mean - out.input.baseline.mean) / (t1 - t0);
+            for (std::size_t i = 0; i < n; ++i) level.capacitance_f[i] -= drift * (r.t_s[i] - t0);
+        }
+        result.lag_s = lagOf(level, force, begin, end, settings.maxLag_s);
+    }
     const std::vector<double> feltForce = felt(r.t_s, force, result.lag_s);
     const std::span<const double> loaded(feltForce.data() + begin, end - begin);
     result.span_n = *std::ranges::max_element(std::span<const double>(force.data() + begin, end - begin));
@@ -207,13 +189,18 @@ SweepSteps stepsFromSweep(const CapacitiveRecording& r, const SweepSettings& set
         step.loading = loading;
         step.window.mean = crossed ? line.intercept + line.slope * middle : meanOf(c);
         step.window.sigma = line.residualStandardDeviation;
+        std::vector<double> residuals(c.size());
+        for (std::size_t i = 0; i < c.size(); ++i)
+            residuals[i] = c[i] - (crossed ? line.intercept + line.slope * f[i] : step.window.mean);
+        step.window.meanStandardError = meanStandardError(residuals);
         step.window.count = members.size();
         step.window.start_s = *std::ranges::min_element(t);
         step.window.end_s = *std::ranges::max_element(t);
         step.window.stable = true;
         result.samplesUsed += members.size();
         out.steps.push_back(step);
-        out.input.steps.push_back({middle, std::nullopt, step.window.mean, meanOf(t), loading});
+        out.input.steps.push_back(
+            {middle, std::nullopt, step.window.mean, meanOf(t), loading, step.window.meanStandardError});
     }
     if (out.steps.size() < 2) throw std::invalid_argument("the sweep gave fewer than two points");
     return result;

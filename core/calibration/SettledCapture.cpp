@@ -1,6 +1,8 @@
 // SettledCapture: stable once, then a fresh stable window is the reading.
 #include "core/calibration/SettledCapture.h"
 
+#include <stdexcept>
+
 namespace tactiscope::core::calibration {
 
 SettledCapture::SettledCapture(StabilitySettings settings)
@@ -34,6 +36,20 @@ void SettledCapture::arm()
 {
     restart();
     m_phase = Phase::Settling;
+}
+
+std::optional<std::size_t> settledFrom(std::span<const double> t_s, std::span<const double> values,
+                                       const StabilitySettings& settings)
+{
+    if (t_s.size() != values.size()) throw std::invalid_argument("times and values differ in length");
+    SettledCapture capture(settings);
+    capture.arm();
+    for (std::size_t i = 0; i < t_s.size(); ++i) {
+        capture.add(t_s[i], values[i]);
+        // The kept window holds the samples added since the capture last reset.
+        if (const auto kept = capture.judge()) return i + 1 - kept->count;
+    }
+    return std::nullopt;
 }
 
 void SettledCapture::restart()

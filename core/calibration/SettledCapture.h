@@ -18,7 +18,9 @@
 
 #include "core/calibration/StabilityMonitor.h"
 
+#include <cstddef>
 #include <optional>
+#include <span>
 
 namespace tactiscope::core::calibration {
 
@@ -57,5 +59,12 @@ private:
     Phase m_phase = Phase::Watching;
     std::optional<WindowStatistics> m_latest;
 };
+
+// The same rule on a recorded series: the index of the first sample of the
+// fresh window it keeps (the settled part begins there), judged after every
+// sample as a live reading is judged after every batch; none when the
+// series never settles so.
+std::optional<std::size_t> settledFrom(std::span<const double> t_s, std::span<const double> values,
+                                       const StabilitySettings& settings);
 
 }  // namespace tactiscope::core::calibration

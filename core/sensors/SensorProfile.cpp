@@ -301,6 +301,8 @@ SensorProfile parseSensorProfile(std::string_view text, const std::string& sourc
     if (kind == "capacitive_beam") {
         CapacitiveBeamProfile profile{name, readCapacitiveBeam(reader), readRoles(reader), readLimits(reader),
                                       readScales(reader, ScaledQuantities::Capacitance)};
+        if (reader.has("baseline_wander_pf_per_sqrt_s"))
+            profile.baselineWander_f_per_sqrt_s = reader.positive("baseline_wander_pf_per_sqrt_s") * 1e-12;
         reader.rejectUnknownKeys();
         return profile;
     }
@@ -355,6 +357,8 @@ std::string toJson(const SensorProfile& profile)
         if (!capacitive->roles.empty()) json["roles"] = rolesJson(capacitive->roles);
         if (capacitive->limits) json["limits"] = limitsJson(*capacitive->limits);
         if (!capacitive->channels.empty()) json["channels"] = scalesJson(capacitive->channels);
+        if (capacitive->baselineWander_f_per_sqrt_s)
+            json["baseline_wander_pf_per_sqrt_s"] = *capacitive->baselineWander_f_per_sqrt_s * 1e12;
     }
     return json.dump(2);
 }

@@ -65,6 +65,9 @@ struct CapacitiveBeamProfile {
     RoleAssignment roles{};
     ProfileLimits limits{};
     ChannelScales channels{};  // a capacitance in counts the device does not scale itself
+    // Its baseline stability, a random walk in F/√s ("baseline_wander_pf_per_sqrt_s"):
+    // the calibration's ± then holds the baseline's wander between its zeros.
+    std::optional<double> baselineWander_f_per_sqrt_s{};
 };
 
 using SensorProfile = std::variant<CantileverProfile, CompliancePairProfile, CapacitiveBeamProfile>;

@@ -32,7 +32,7 @@ struct CapacitiveWeightsParameters {
     std::string name;  // what the link says it is; empty: by its protocol
     std::vector<double> weights_mgf{10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110, 120, 130, 140, 150};
     double baseline_s = 10.0;  // unloaded at the start and the end
-    double dwell_s = 5.0;      // per step
+    double dwell_s = 8.0;      // per step: time for the wizard's rule (a stable window, then a fresh one)
     double settleTime_s = 0.4;
     double creepFraction = 0.01;
     double creepTime_s = 4.0;

@@ -99,7 +99,7 @@ TEST(CapacitiveCli, TheSimulatorsRawRecordingCalibratesItsBeamAndItsDriftIsNotHy
 {
     QTemporaryDir dir;
     const QString csv = dir.filePath("c.csv");
-    ASSERT_EQ(runCli({"simulate", "--scenario", "capacitive-weights", "--seconds", "165", "--output", csv}).exitCode,
+    ASSERT_EQ(runCli({"simulate", "--scenario", "capacitive-weights", "--seconds", "252", "--output", csv}).exitCode,
               0);
     const CliResult model =
         runCli({"model", TACTISCOPE_SOURCE_DIR "/resources/profiles/capacitive-beam-paper-no1.json"});
@@ -112,7 +112,7 @@ TEST(CapacitiveCli, TheSimulatorsRawRecordingCalibratesItsBeamAndItsDriftIsNotHy
     // The simulator's beam, plus its 1 % creep.
     EXPECT_NEAR(o["sensitivity_pf_per_mn"].toDouble(), beam_pf_per_mn, 0.03 * beam_pf_per_mn);
     // σ of the first baseline alone: the simulator's 0.004 pF of noise, not
-    // the drift between the two baselines (0.0005 pF/s over 155 s).
+    // the drift between the two baselines (0.0005 pF/s over 242 s).
     EXPECT_NEAR(o["baseline_sigma_pf"].toDouble(), 0.004, 0.001);
     EXPECT_LT(o["detection_limit_mgf"].toDouble(), 2.0);
     EXPECT_NEAR(o["detection_limit_mn"].toDouble(),

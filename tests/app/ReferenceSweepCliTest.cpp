@@ -55,7 +55,8 @@ TEST(ReferenceSweepCli, TheBeamCalibratedAgainstALoadCellOnAnotherDeviceAgreesWi
     ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
     const auto session = QString::number(sessionIdIn(recorded.out));
 
-    const auto swept = runCli({"calibrate-capacitive", "--db", db, "--session", session, "--json"});
+    const auto swept =
+        runCli({"calibrate-capacitive", "--db", db, "--session", session, "--json", "--baseline-wander", "0.0002"});
     ASSERT_EQ(swept.exitCode, 0) << swept.err.toStdString();
     const QJsonObject s = jsonOf(swept);
     EXPECT_EQ(s["reference"].toString(), "load-cell/force");
@@ -73,9 +74,10 @@ TEST(ReferenceSweepCli, TheBeamCalibratedAgainstALoadCellOnAnotherDeviceAgreesWi
 
     const QString weights = dir.filePath("weights.csv");
     const auto simulated = runCli(
-        {"simulate", "--scenario", "capacitive-weights", "--seconds", "170", "--seed", "3", "--output", weights});
+        {"simulate", "--scenario", "capacitive-weights", "--seconds", "252", "--seed", "3", "--output", weights});
     ASSERT_EQ(simulated.exitCode, 0) << simulated.err.toStdString();
-    const auto placed = runCli({"calibrate-capacitive", weights, "--json"});
+    // The simulator's baseline stability (its random walk), as a profile would state it.
+    const auto placed = runCli({"calibrate-capacitive", weights, "--json", "--baseline-wander", "0.0002"});
     ASSERT_EQ(placed.exitCode, 0) << placed.err.toStdString();
     const QJsonObject w = jsonOf(placed);
 
@@ -84,7 +86,13 @@ TEST(ReferenceSweepCli, TheBeamCalibratedAgainstALoadCellOnAnotherDeviceAgreesWi
     ASSERT_GT(us, 0.0);
     ASSERT_GT(uw, 0.0);
     const double difference = s["sensitivity_pf_per_mn"].toDouble() - w["sensitivity_pf_per_mn"].toDouble();
-    EXPECT_LT(std::abs(difference), 2.0 * std::hypot(us, uw))
+    // A sweep reads the beam at its pace: the silicone's creep (1 %, 4 s)
+    // follows a 20 s ramp 4 s behind, so the sweep reads up to 1 % × 4/20
+    // of the sensitivity below the weights' crept-to-rest value, a bias
+    // neither ± holds (docs/calibration.md).
+    const double paceBias = 0.01 * 4.0 / 20.0 * w["sensitivity_pf_per_mn"].toDouble();
+    EXPECT_LT(difference, 2.0 * std::hypot(us, uw));
+    EXPECT_GT(difference, -2.0 * std::hypot(us, uw) - paceBias)
         << "sweep " << s["sensitivity_pf_per_mn"].toDouble() << " ± " << us << ", weights "
         << w["sensitivity_pf_per_mn"].toDouble() << " ± " << uw;
     // One beam: one C0, within the baselines' wander of a minute.

@@ -424,8 +424,10 @@ CalibrationWizard::Fit CapacitiveWizard::fitLoads()
     input.baseline = *zero();
     input.finalBaseline = m_sweep ? m_sweep->finalBaseline : finalZero();
     input.stiffness_n_per_m = core::sensors::CapacitiveBeam(profile()->geometry).stiffness_n_per_m();
+    input.baselineWander_f_per_sqrt_s = profile()->baselineWander_f_per_sqrt_s;
     for (const Load& load : loads())
-        input.steps.push_back({forceOf(load), std::nullopt, load.window.mean, load.window.middle_s(), load.loading});
+        input.steps.push_back({forceOf(load), std::nullopt, load.window.mean, load.window.middle_s(), load.loading,
+                               load.window.meanStandardError});
     m_result = core::calibration::calibrateCapacitive(input, profile()->name, operatorName().toStdString());
     const auto& fit = *m_result->forceFit;
     const auto [sensitivity, error] = valueAndErrorTexts(fit.slope * 1e9, fit.slopeStandardError * 1e9);
@@ -466,15 +468,26 @@ QString CapacitiveWizard::resultHtml() const
     const QString drift =
         finalBaseline ? tr("drift %1 pF/min (removed from every load)").arg(fixedText(r.drift_f_per_s * 1e12 * 60.0, 4))
                       : tr("no final zero, so no drift correction");
-    const QString hysteresis = r.hysteresis ? tr("%1 % of full scale").arg(fixedText(*r.hysteresis * 100, 2))
-                                            : tr("not measured (no load was both placed and removed)");
+    const QString hysteresis =
+        !r.hysteresis ? tr("not measured (no load was both placed and removed)")
+        : r.hysteresisNoise
+            ? tr("%1 % of full scale, an upper bound of the silicone's (the loads' noise alone reads up to %2 %)")
+                  .arg(fixedText(*r.hysteresis * 100, 2), fixedText(*r.hysteresisNoise * 100, 2))
+            : tr("%1 % of full scale").arg(fixedText(*r.hysteresis * 100, 2));
+    const QString basis =
+        !r.sensitivityUncertainty ? tr("from the points' scatter")
+        : profile()->baselineWander_f_per_sqrt_s
+            ? tr("from the loads' and zeros' noise and the beam's baseline stability, %1 pF/√s")
+                  .arg(significant(*profile()->baselineWander_f_per_sqrt_s * 1e12, 3))
+            : tr("from the loads' and zeros' noise; the baseline's wander between the zeros is not in it: the "
+                 "profile states no baseline stability");
     const auto [sensitivity, error] = valueAndErrorTexts(fit.slope * 1e9, fit.slopeStandardError * 1e9);
     QString cautions;
     for (const std::string& caution : r.cautions)
         cautions += QStringLiteral("<br><span style=\"color:#b00020\">%1</span>")
                         .arg(tr("Caution: %1.").arg(QString::fromStdString(caution)).toHtmlEscaped());
     return tr("<b>%1</b><br>C0 = <b>%2 pF</b>, noise σ %3 pF; %4.<br>Sensitivity <b>%5 ± %6 pF/mN</b> (standard "
-              "uncertainty, k = 1, from the points' scatter), intercept %7 pF, R² = %8; relative sensitivity %9 "
+              "uncertainty, k = 1, %14), intercept %7 pF, R² = %8; relative sensitivity %9 "
               "per mN.<br>Hysteresis %10.<br>Detection limit (3σ): %11, a tip displacement of %12 through k = %13 "
               "N/m.")
                .arg(QString::fromStdString(profile()->name).toHtmlEscaped(), fixedText(r.c0_f * 1e12, 4),
@@ -483,7 +496,8 @@ QString CapacitiveWizard::resultHtml() const
                     significant(*r.relativeSensitivity_per_n * 1e-3, 3))
                .arg(hysteresis, detectionLimitText(*r.detectionLimit_n),
                     siText(r.detectionLimit_m.value_or(0), QStringLiteral("m"), 3),
-                    significant(core::sensors::CapacitiveBeam(profile()->geometry).stiffness_n_per_m(), 3)) +
+                    significant(core::sensors::CapacitiveBeam(profile()->geometry).stiffness_n_per_m(), 3))
+               .arg(basis) +
            sweepHtml() + cautions;
 }
 
