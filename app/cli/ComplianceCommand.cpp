@@ -137,6 +137,7 @@ int readRecording(const QString& path, const sensors::CompliancePairProfile& pro
         } else {
             auto read = derived::readPalpationPresses(recording.store(), recording.session(), probe, calibrations);
             output.presses = std::move(read.presses);
+            output.usableRange_n_per_m = read.usableRange_n_per_m;
             output.basis = toQString(read.basis);
             output.recordedZeros = read.recordedZeros;
         }

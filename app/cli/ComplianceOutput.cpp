@@ -9,6 +9,8 @@
 
 #include <QTextStream>
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 
 namespace tactiscope::cli {
@@ -31,20 +33,53 @@ QString uncertaintyOnly(double uncertainty)
     return QString::number(uncertainty, 'f', text::uncertaintyDecimals(uncertainty));
 }
 
+// Limits of about 95 % that lie lopsided about the value (one side half
+// again the other's or more): near the probe's ends, where ± says too little.
+bool asymmetric(double value, double lower, double upper)
+{
+    const double below = value - lower, above = upper - value;
+    return below > 0.0 && above > 0.0 && std::isfinite(upper) && std::max(below, above) > 1.5 * std::min(below, above);
+}
+
+QString limitsText(double lower, double upper)
+{
+    return QString::number(lower, 'g', 3) + QStringLiteral("–") + QString::number(upper, 'g', 3);
+}
+
+// "limits_95_n_per_m": [lower, upper], an end beyond the probe's range null.
+void writeLimits(text::JsonWriter& json, double lower, double upper)
+{
+    json.key("limits_95_n_per_m").beginArray();
+    for (const double limit : {lower, upper})
+        if (std::isfinite(limit))
+            json.value(limit);
+        else
+            json.null();
+    json.endArray();
+}
+
 QString millimetres(double metres)
 {
     return QString::number(metres * 1e3, 'f', 2);
 }
 
-// No press read: the recording's state is its presses' most common one
-// (clipped first: it says what to do), with the tightest bound of that way.
+// No number: the presses taken together at the probe's edge (their bound),
+// else (every press clipped, or none read) the presses' most common state,
+// clipped first (it says what to do), with the tightest bound of that way.
 struct SessionState {
     compliance::PressStatus status = compliance::PressStatus::BelowRange;
     sensors::ComplianceRange range = sensors::ComplianceRange::Below;
     std::optional<double> bound_n_per_m;
 };
-SessionState sessionOutOfRange(const std::vector<compliance::PressReading>& presses)
+SessionState sessionOutOfRange(const std::optional<compliance::CombinedPresses>& combined,
+                               const std::vector<compliance::PressReading>& presses)
 {
+    // Presses at the probe's edge, taken together: their bound.
+    if (combined && combined->status != compliance::PressStatus::Ok)
+        return {combined->status,
+                combined->status == compliance::PressStatus::AboveRange ? sensors::ComplianceRange::Above
+                                                                        : sensors::ComplianceRange::Below,
+                combined->bound_n_per_m};
     const auto count = [&](compliance::PressStatus status) {
         return std::ranges::count_if(presses, [status](const auto& p) { return p.status == status; });
     };
@@ -107,6 +142,7 @@ void writePress(text::JsonWriter& json, const compliance::PressReading& p, bool 
     json.key("standard_error_n_per_m").value(p.standardError_n_per_m);
     if (p.zeroUncertainty_n_per_m) json.key("zero_uncertainty_n_per_m").value(*p.zeroUncertainty_n_per_m);
     json.key("uncertainty_n_per_m").value(p.uncertainty_n_per_m());
+    writeLimits(json, p.lowerLimit_n_per_m, p.upperLimit_n_per_m);
     json.key("q").value(p.q);
     json.key("displacement_min_m").value(p.displacementMin_m);
     json.key("displacement_max_m").value(p.displacementMax_m);
@@ -227,11 +263,14 @@ int ComplianceOutput::print(bool asJson) const
                                       "above the contact threshold"));
             return kExitUsage;
         }
-        const auto combined = compliance::combinePresses(presses);
-        const auto outOfRange = presses.size() - (combined ? combined->presses : 0);
+        const auto found = compliance::combinePresses(pair(), presses);
+        // A number only when the presses together are inside the probe's range.
+        const auto combined = found && found->status == compliance::PressStatus::Ok ? found : std::nullopt;
+        const auto read =
+            std::ranges::count_if(presses, [](const auto& p) { return p.status == compliance::PressStatus::Ok; });
+        const auto outOfRange = presses.size() - static_cast<std::size_t>(read);
         const auto clipped =
             std::ranges::count_if(presses, [](const auto& p) { return p.status == compliance::PressStatus::Clipped; });
-        const auto [usableLow, usableHigh] = compliance::usableRange(pair(), presses);
         if (combined) {
             value = combined->stiffness_n_per_m;
             json.key("status").value("ok");
@@ -240,20 +279,25 @@ int ComplianceOutput::print(bool asJson) const
             if (combined->zeroUncertainty_n_per_m)
                 json.key("zero_uncertainty_n_per_m").value(*combined->zeroUncertainty_n_per_m);
             json.key("uncertainty_n_per_m").value(combined->uncertainty_n_per_m());
+            writeLimits(json, combined->lowerLimit_n_per_m, combined->upperLimit_n_per_m);
         } else {
-            const auto state = sessionOutOfRange(presses);
+            const auto state = sessionOutOfRange(found, presses);
             json.key("status").value(compliance::statusName(state.status));
             if (state.status != compliance::PressStatus::Clipped) json.key("range").value(rangeName(state.range));
             if (state.bound_n_per_m) json.key("bound_n_per_m").value(*state.bound_n_per_m);
         }
-        json.key("usable_range_n_per_m").beginArray().value(usableLow).value(usableHigh).endArray();
+        json.key("usable_range_n_per_m");
+        if (usableRange_n_per_m)
+            json.beginArray().value(usableRange_n_per_m->first).value(usableRange_n_per_m->second).endArray();
+        else
+            json.null();
         json.key("consistency");
         if (combined && combined->birgeRatio)
             json.value(*combined->birgeRatio);
         else
             json.null();
         json.key("presses_clipped").value(static_cast<long long>(clipped));
-        json.key("presses_read").value(static_cast<long long>(combined ? combined->presses : 0));
+        json.key("presses_read").value(static_cast<long long>(read));
         json.key("presses_out_of_range").value(static_cast<long long>(outOfRange));
         json.key("presses").beginArray();
         for (const auto& p : presses) {
@@ -265,12 +309,15 @@ int ComplianceOutput::print(bool asJson) const
         if (combined) {
             out << "object stiffness: " << withUncertainty(*value, combined->uncertainty_n_per_m()) << " from "
                 << combined->presses << (combined->presses == 1 ? " press" : " presses");
+            if (asymmetric(*value, combined->lowerLimit_n_per_m, combined->upperLimit_n_per_m))
+                out << " (95 % limits " << limitsText(combined->lowerLimit_n_per_m, combined->upperLimit_n_per_m)
+                    << " N/m: near the probe's end a ± is lopsided)";
             if (combined->zeroUncertainty_n_per_m)
                 out << " (standard uncertainty: noise " << uncertaintyOnly(combined->standardError_n_per_m) << ", zero "
                     << uncertaintyOnly(*combined->zeroUncertainty_n_per_m) << " N/m)";
             out << '\n';
         } else {
-            const auto state = sessionOutOfRange(presses);
+            const auto state = sessionOutOfRange(found, presses);
             if (state.status == compliance::PressStatus::Clipped)
                 out << "no object stiffness: every press clipped at a beam's ADC limit (press less deep)\n";
             else
@@ -286,8 +333,13 @@ int ComplianceOutput::print(bool asJson) const
             out << "presses " << (combined->consistent ? "agree" : "DISAGREE") << ": Birge ratio "
                 << QString::number(*combined->birgeRatio, 'f', 2)
                 << (combined->consistent ? QString() : QStringLiteral(" (noise uncertainty scaled by it)")) << '\n';
-        out << "usable range of this probe for presses like these: " << QString::number(usableLow, 'g', 3) << "–"
-            << QString::number(usableHigh, 'g', 3) << " N/m\n";
+        if (usableRange_n_per_m)
+            out << "usable range of this probe (its beams and converters): "
+                << QString::number(usableRange_n_per_m->first, 'g', 3) << "–"
+                << QString::number(usableRange_n_per_m->second, 'g', 3) << " N/m\n";
+        else
+            out << "usable range of this probe: not known (its beams' converter range is not: the device sends "
+                   "strain or force, or the profile's scale gives no full scale)\n";
         if (outOfRange > 0) out << outOfRange << " presses not read (out of the probe's range or clipped)\n";
         for (const auto& p : presses) {
             out << "  press " << QString::number(p.start_s, 'f', 2) << "–" << QString::number(p.end_s, 'f', 2)
@@ -295,8 +347,12 @@ int ComplianceOutput::print(bool asJson) const
             if (p.status != compliance::PressStatus::Ok)
                 out << pressStateText(p) << '\n';
             else
-                out << withUncertainty(p.stiffness.objectStiffness_n_per_m, p.uncertainty_n_per_m()) << ", depth "
-                    << millimetres(p.displacementMin_m) << "–" << millimetres(p.displacementMax_m) << " mm\n";
+                out << withUncertainty(p.stiffness.objectStiffness_n_per_m, p.uncertainty_n_per_m())
+                    << (asymmetric(p.stiffness.objectStiffness_n_per_m, p.lowerLimit_n_per_m, p.upperLimit_n_per_m)
+                            ? QStringLiteral(" (95 %: %1)").arg(limitsText(p.lowerLimit_n_per_m, p.upperLimit_n_per_m))
+                            : QString())
+                    << ", depth " << millimetres(p.displacementMin_m) << "–" << millimetres(p.displacementMax_m)
+                    << " mm\n";
         }
     }
     if (!basis.isEmpty()) {

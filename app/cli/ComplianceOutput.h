@@ -31,6 +31,7 @@ struct ComplianceOutput {
     QString source;  // where the zero came from
     bool recordedZeros = false;
     std::optional<double> sampleRate_hz;
+    std::optional<std::pair<double, double>> usableRange_n_per_m;  // the probe's, from its beams' converters
     std::vector<core::compliance::ReferenceTissue> tissues;
 
     // Prints to stdout; returns the exit code (2 when nothing was read).

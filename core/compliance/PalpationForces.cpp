@@ -201,6 +201,13 @@ std::optional<double> PalpationForces::gaugeFactor(bool highBeam) const
     return std::nullopt;
 }
 
+std::optional<BeamResolution> PalpationForces::resolution(bool highBeam) const
+{
+    const Input& beam = highBeam ? m_high : m_low;
+    if (!beam.fullScale) return std::nullopt;
+    return BeamResolution{forceOfChange(highBeam, 1.0), forceOfChange(highBeam, *beam.fullScale)};
+}
+
 void PalpationForces::setZero(const RawZero& zero)
 {
     m_high.setZero(zero.high);

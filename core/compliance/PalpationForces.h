@@ -135,6 +135,9 @@ public:
     // The force a change of a beam's raw value by `rawChange` makes (its
     // size), with or without a zero.
     double forceOfChange(bool highBeam, double rawChange) const;
+    // A beam in counts of a known range: one count's force and its full
+    // scale's; none otherwise (the probe's usable range, usableRange).
+    std::optional<BeamResolution> resolution(bool highBeam) const;
     // F_H/F_L while both exceed the contact threshold, else NaN.
     double q(double forceHigh_n, double forceLow_n) const;
     // k_o in N/m for a Q in range (1 < Q < k_h/k_l), else NaN.

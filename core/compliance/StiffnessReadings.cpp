@@ -225,11 +225,17 @@ PressReading readPress(const sensors::CompliancePair& pair, std::span<const doub
     const ForceRatio kept = forceRatio(forceHigh, forceLow, use);
     r.samplesUsed = kept.count;
     readRatio(pair, kept, zero, r);
-    // The ratio's own uncertainty (noise and zero) decides whether it is in range.
-    double uQ = kept.standardError;
-    if (r.stiffness.range == sensors::ComplianceRange::InRange)
-        uQ = r.uncertainty_n_per_m() * pair.sensitivity_m_per_n(r.stiffness.objectStiffness_n_per_m);
-    classifyRange(pair, kept.q, uQ, r);
+    // The ratio's own uncertainty (noise and zero) decides whether it is in
+    // range: an offset δ in F_H moves Q by δ/F̄_L, one in F_L by −Q·δ/F̄_L.
+    r.ratioStandardError = r.ratioUncertainty = kept.standardError;
+    if (zero && kept.meanLow_n > 0.0)
+        r.ratioUncertainty =
+            std::hypot(kept.standardError, std::hypot(zero->high_n, kept.q * zero->low_n) / kept.meanLow_n);
+    classifyRange(pair, kept.q, r.ratioUncertainty, r);
+    if (r.status == PressStatus::Ok) {
+        r.lowerLimit_n_per_m = pair.objectStiffness(kept.q - 2.0 * r.ratioUncertainty).objectStiffness_n_per_m;
+        r.upperLimit_n_per_m = pair.objectStiffness(kept.q + 2.0 * r.ratioUncertainty).objectStiffness_n_per_m;
+    }
     if (atLimit.high + atLimit.low > 0) r.status = PressStatus::Clipped;  // whatever the ratio says
     if (r.status != PressStatus::Ok) return r;
 
@@ -349,20 +355,21 @@ std::string pressDetailsJson(const PressReading& reading)
     return json.str();
 }
 
-std::pair<double, double> usableRange(const sensors::CompliancePair& pair, std::span<const PressReading> presses)
+std::optional<std::pair<double, double>>
+usableRange(const sensors::CompliancePair& pair, std::optional<BeamResolution> high, std::optional<BeamResolution> low)
 {
-    std::vector<double> relative;  // u_Q / Q of the presses read
-    for (const auto& p : presses)
-        if (p.status == PressStatus::Ok && p.q > 0.0)
-            relative.push_back(p.uncertainty_n_per_m() * pair.sensitivity_m_per_n(p.stiffness.objectStiffness_n_per_m) /
-                               p.q);
-    double typical = 0.005;
-    if (!relative.empty()) {
-        std::ranges::nth_element(relative, relative.begin() + static_cast<std::ptrdiff_t>(relative.size() / 2));
-        typical = relative[relative.size() / 2];
-    }
-    const double low = 1.0 + 2.0 * typical, high = pair.qMax() * (1.0 - 2.0 * typical);
-    return {pair.objectStiffness(low).objectStiffness_n_per_m, pair.objectStiffness(high).objectStiffness_n_per_m};
+    if (!high || !low || !(high->step_n > 0.0) || !(low->step_n > 0.0) || !(high->fullScale_n > 0.0) ||
+        !(low->fullScale_n > 0.0))
+        return std::nullopt;
+    // u of Q = F_H/F_L at its deepest press, quantization alone.
+    const auto u = [&](double q) {
+        const double forceLow = std::min(low->fullScale_n, high->fullScale_n / q);
+        return std::hypot(high->step_n, q * low->step_n) / std::sqrt(12.0) / forceLow;
+    };
+    const double lowest = 1.0 + 2.0 * u(1.0), highest = pair.qMax() - 2.0 * u(pair.qMax());
+    if (!(highest > lowest)) return std::nullopt;
+    return std::pair{pair.objectStiffness(lowest).objectStiffness_n_per_m,
+                     pair.objectStiffness(highest).objectStiffness_n_per_m};
 }
 
 PressSettings pressSettingsAt(double sampleRate_hz)

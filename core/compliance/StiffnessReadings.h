@@ -71,6 +71,9 @@ private:
 // number. Below/above range: the ratio lies within 2u of the probe's limit
 // (Q = 1, or Q = k_h/k_l), where k_o runs off to 0 or infinity and a number
 // would be a bias, not a reading: the bound it is below or above instead.
+// u is the ratio's whole standard uncertainty, the zero's part with the
+// noise's: without it the bounds at 0.3 N/m lay on the wrong side of the
+// truth for 9 of 87 presses.
 enum class PressStatus { Ok, Clipped, BelowRange, AboveRange };
 // "ok", "clipped", "below-range", "above-range" (the JSON's words).
 const char* statusName(PressStatus status);
@@ -98,7 +101,16 @@ struct PressReading {
     // k_o of the press's force ratio ΣF_H/ΣF_L (a number only when status is Ok).
     sensors::StiffnessReading stiffness;
     double q = 0.0;
-    double standardError_n_per_m = 0.0;             // from the noise of the forces
+    double standardError_n_per_m = 0.0;  // from the noise of the forces
+    // The ratio's standard uncertainty: its noise's, and the whole with
+    // (when known) the zero's.
+    double ratioStandardError = 0.0;
+    double ratioUncertainty = 0.0;
+    // k_o at Q − 2u and Q + 2u through the exact map (eq. 2), for a press read
+    // Ok: limits of about 95 %, asymmetric near the probe's ends, where a
+    // linearised ±2u would reach below zero or far short of the truth.
+    double lowerLimit_n_per_m = 0.0;
+    double upperLimit_n_per_m = 0.0;
     std::optional<double> zeroUncertainty_n_per_m;  // from the zero's; none when it is not known
     double offsetSensitivityHigh_per_m = 0.0;       // dk_o per N of offset in F_H, N/m per N
     double offsetSensitivityLow_per_m = 0.0;        // the same for F_L
@@ -123,10 +135,23 @@ PressReading readPress(const sensors::CompliancePair& pair, std::span<const doub
                        std::span<const double> forceHigh_n, std::span<const double> forceLow_n,
                        std::optional<ZeroUncertainty> zero = std::nullopt, BeamLimits atLimit = {});
 
-// The k_o range a probe reads presses in: from 2u above Q = 1 to 2u below
-// Q = k_h/k_l, with u the typical ratio uncertainty of `presses` (the
-// median over those read Ok; 0.5 % of Q when none is).
-std::pair<double, double> usableRange(const sensors::CompliancePair& pair, std::span<const PressReading> presses);
+// A beam read in ADC counts: the force of one count and of its full scale
+// (from its zero count to where it clips).
+struct BeamResolution {
+    double step_n = 0.0;
+    double fullScale_n = 0.0;
+};
+
+// The k_o range the probe can read at all, from its profile (k_h, k_l) and
+// its converters: a ratio taken at the deepest press its ADCs allow (the
+// first beam at full scale), with each force known to one count's
+// quantization (step/√12), must lie 2u inside Q = 1 and Q = k_h/k_l. A
+// property of the probe, not of a session's presses (which gave 0.018 to
+// 5.3·10⁶ N/m for one 117 N/m phantom and another range for the next);
+// none when a beam's counts or range are not known (a device that sends
+// strain or force). Noise and the zero narrow it further for any one press.
+std::optional<std::pair<double, double>>
+usableRange(const sensors::CompliancePair& pair, std::optional<BeamResolution> high, std::optional<BeamResolution> low);
 
 // A press's details beyond its value, as one JSON object for the session
 // store: q, noise_standard_error_n_per_m, zero_uncertainty_n_per_m (when

@@ -128,6 +128,8 @@ PalpationPresses readPalpationPresses(storage::SessionSource& store, std::int64_
     PalpationPresses result;
     result.basis = f.basis;
     result.recordedZeros = f.recordedZeros;
+    result.usableRange_n_per_m =
+        compliance::usableRange(f.forces->pair(), f.forces->resolution(true), f.forces->resolution(false));
     // As live: a new zero or a lost sample drops the press in progress, and
     // so does the end of the recording.
     compliance::PressReader reader(f.forces->pair(), f.settings.press);

@@ -28,6 +28,8 @@ struct PalpationPresses {
     std::vector<compliance::PressReading> presses;  // in time order, out-of-range ones included
     std::string basis;                              // the profile and gauge factors, in words
     bool recordedZeros = false;                     // read on the recording's zeros
+    // The probe's usable range (compliance::usableRange); none when its beams' counts are not known.
+    std::optional<std::pair<double, double>> usableRange_n_per_m;
 };
 
 // Throws std::invalid_argument for channels the probe cannot read, a

@@ -72,7 +72,9 @@ TEST(PalpationUncertainty, TheStatedUncertaintiesCoverTheTruthAsTheySay)
             slope.add(reading.displacementSlope_n_per_m_per_m, reading.displacementSlopeStandardError);
         }
         // The session's reading: its presses share this zero.
-        const auto combined = core::compliance::combinePresses(readings);
+        const auto combined = core::compliance::combinePresses(
+            core::sensors::CompliancePair(core::sensors::CantileverBeam(p.high), core::sensors::CantileverBeam(p.low)),
+            readings);
         ASSERT_TRUE(combined);
         session.add(combined->stiffness_n_per_m - kTruth_n_per_m, combined->uncertainty_n_per_m());
     }
