@@ -33,14 +33,6 @@ QString uncertaintyOnly(double uncertainty)
     return QString::number(uncertainty, 'f', text::uncertaintyDecimals(uncertainty));
 }
 
-// Limits of about 95 % that lie lopsided about the value (one side half
-// again the other's or more): near the probe's ends, where ± says too little.
-bool asymmetric(double value, double lower, double upper)
-{
-    const double below = value - lower, above = upper - value;
-    return below > 0.0 && above > 0.0 && std::isfinite(upper) && std::max(below, above) > 1.5 * std::min(below, above);
-}
-
 QString limitsText(double lower, double upper)
 {
     return QString::number(lower, 'g', 3) + QStringLiteral("–") + QString::number(upper, 'g', 3);
@@ -309,7 +301,7 @@ int ComplianceOutput::print(bool asJson) const
         if (combined) {
             out << "object stiffness: " << withUncertainty(*value, combined->uncertainty_n_per_m()) << " from "
                 << combined->presses << (combined->presses == 1 ? " press" : " presses");
-            if (asymmetric(*value, combined->lowerLimit_n_per_m, combined->upperLimit_n_per_m))
+            if (compliance::lopsidedLimits(*value, combined->lowerLimit_n_per_m, combined->upperLimit_n_per_m))
                 out << " (95 % limits " << limitsText(combined->lowerLimit_n_per_m, combined->upperLimit_n_per_m)
                     << " N/m: near the probe's end a ± is lopsided)";
             if (combined->zeroUncertainty_n_per_m)
@@ -348,7 +340,8 @@ int ComplianceOutput::print(bool asJson) const
                 out << pressStateText(p) << '\n';
             else
                 out << withUncertainty(p.stiffness.objectStiffness_n_per_m, p.uncertainty_n_per_m())
-                    << (asymmetric(p.stiffness.objectStiffness_n_per_m, p.lowerLimit_n_per_m, p.upperLimit_n_per_m)
+                    << (compliance::lopsidedLimits(p.stiffness.objectStiffness_n_per_m, p.lowerLimit_n_per_m,
+                                                   p.upperLimit_n_per_m)
                             ? QStringLiteral(" (95 %: %1)").arg(limitsText(p.lowerLimit_n_per_m, p.upperLimit_n_per_m))
                             : QString())
                     << ", depth " << millimetres(p.displacementMin_m) << "–" << millimetres(p.displacementMax_m)

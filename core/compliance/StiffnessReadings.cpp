@@ -355,6 +355,12 @@ std::string pressDetailsJson(const PressReading& reading)
     return json.str();
 }
 
+bool lopsidedLimits(double value, double lower, double upper)
+{
+    const double below = value - lower, above = upper - value;
+    return below > 0.0 && above > 0.0 && std::max(below, above) >= 1.5 * std::min(below, above);
+}
+
 std::optional<std::pair<double, double>>
 usableRange(const sensors::CompliancePair& pair, std::optional<BeamResolution> high, std::optional<BeamResolution> low)
 {

@@ -135,6 +135,11 @@ PressReading readPress(const sensors::CompliancePair& pair, std::span<const doub
                        std::span<const double> forceHigh_n, std::span<const double> forceLow_n,
                        std::optional<ZeroUncertainty> zero = std::nullopt, BeamLimits atLimit = {});
 
+// Whether limits about a value are lopsided: one side half again the
+// other's or more (near k_h/k_l), where "± u" says too little and the
+// limits are shown beside it.
+bool lopsidedLimits(double value, double lower, double upper);
+
 // A beam read in ADC counts: the force of one count and of its full scale
 // (from its zero count to where it clips).
 struct BeamResolution {

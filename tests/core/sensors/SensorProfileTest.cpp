@@ -107,6 +107,24 @@ TEST(SensorProfile, CapacitiveBeamErrorsNameTheKey)
     EXPECT_EQ(errorOf(head + R"(0.6}, "sheet_layers": [{"name": "e", "thickness_m": 0, "youngs_modulus_pa": 1800}]})"),
               "probe.json: sheet_layers[0].thickness_m: must be a positive number, got 0");
     EXPECT_EQ(errorOf(head + R"(0.6}, "sheet_layers": []})"), "probe.json: sheet_layers: must be a non-empty list");
+    EXPECT_EQ(errorOf(head + R"(0.6}, "sheet_layers": [{"name": "e", "thickness_m": 1e-4, "youngs_modulus_pa": 1800}],
+                   "baseline_wander_pf_per_sqrt_s": -1})"),
+              "probe.json: baseline_wander_pf_per_sqrt_s: must be a positive number, got -1");
+}
+
+// A beam's baseline stability (issue 55): read in pF/√s, kept in F/√s,
+// written back; absent, none (the shipped paper's sensor states none).
+TEST(SensorProfile, ACapacitiveBeamMayStateItsBaselineStability)
+{
+    auto profile = loadSensorProfile(TACTISCOPE_SOURCE_DIR "/resources/profiles/capacitive-beam-paper-no1.json");
+    auto& beam = std::get<CapacitiveBeamProfile>(profile);
+    EXPECT_FALSE(beam.baselineWander_f_per_sqrt_s.has_value());
+    beam.baselineWander_f_per_sqrt_s = 0.2e-15;
+    const std::string json = toJson(profile);
+    EXPECT_NE(json.find("\"baseline_wander_pf_per_sqrt_s\": "), std::string::npos) << json;
+    const auto again = std::get<CapacitiveBeamProfile>(parseSensorProfile(json, "again.json"));
+    ASSERT_TRUE(again.baselineWander_f_per_sqrt_s);
+    EXPECT_NEAR(*again.baselineWander_f_per_sqrt_s, 0.2e-15, 1e-24);
 }
 
 // A board printing its capacitance converter's counts has their scale in

@@ -35,6 +35,13 @@ QString stiffnessText(double k_n_per_m, double standardError_n_per_m)
     return PalpationView::tr("%1 ± %2 N/m").arg(k, se);
 }
 
+// A press's limits of about 95 % (k_o at Q ∓ 2u through the exact map).
+QString limitsText(const core::compliance::PressReading& press)
+{
+    return PalpationView::tr("95 %: %1–%2 N/m")
+        .arg(compactText(press.lowerLimit_n_per_m, 3), compactText(press.upperLimit_n_per_m, 3));
+}
+
 // Counts become strain through each beam's gauge factor: the calibrated one
 // when the beam has a gauge-factor calibration, else the nominal one. The
 // line says which, and why k_o hardly cares: k_o needs only F_H/F_L, so
@@ -291,7 +298,12 @@ void PalpationView::showPresses(const std::vector<devices::session::PressRecord>
             site.isEmpty() ? tr("—") : site};
         for (int c = 0; c < cells.size(); ++c) m_presses->setItem(row, c, new QTableWidgetItem(cells[c]));
         if (inRange) {
-            m_stiffness->setText(stiffnessText(k, press.uncertainty_n_per_m()));
+            m_presses->item(row, 2)->setToolTip(limitsText(press));
+            // Near the stiff end a ± is lopsided: the limits say how.
+            m_stiffness->setText(
+                core::compliance::lopsidedLimits(k, press.lowerLimit_n_per_m, press.upperLimit_n_per_m)
+                    ? tr("%1 (%2)").arg(stiffnessText(k, press.uncertainty_n_per_m()), limitsText(press))
+                    : stiffnessText(k, press.uncertainty_n_per_m()));
             m_scale->setReading(k);
             // The map holds the recording's readings, where they were taken.
             if (const auto cell = core::compliance::SiteGrid::cellOf(record->site); cell && record->stored)
