@@ -8,6 +8,7 @@
 #include <QTextStream>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 
 namespace tactiscope::cli {
@@ -120,13 +121,17 @@ void writeCapacitiveText(const calibration::CapacitiveCalibrationResult& result,
     out << "sensitivity: " << toQString(text::valueWithUncertainty(fit.slope * 1e9, fit.slopeStandardError * 1e9))
         << " pF/mN, intercept " << QString::number(fit.intercept * 1e12, 'f', 4) << " pF, R² "
         << QString::number(fit.rSquared, 'f', 5) << " (" << fit.points << " points)\n";
-    if (result.sensitivityUncertainty && !result.sensitivityUncertainty->widened)
+    if (result.sensitivityUncertainty)
         out << "  its ±: the steps' and the baselines' noise"
             << (steps.input.baselineWander_f_per_sqrt_s
                     ? QStringLiteral(" and the baseline's wander (%1 pF/√s given)")
                           .arg(*steps.input.baselineWander_f_per_sqrt_s * 1e12, 0, 'g', 3)
                     : QStringLiteral("; not the baseline's wander between its two baselines (give the beam's "
                                      "stability with --baseline-wander)"))
+            << (result.sensitivityUncertainty->widened
+                    ? QStringLiteral(", widened by %1 for the points' scatter beyond them")
+                          .arg(std::sqrt(result.sensitivityUncertainty->chiSquarePerDegree), 0, 'f', 2)
+                    : QString())
             << '\n';
     else if (!result.sensitivityUncertainty)
         out << "  its ±: the points' scatter about the line (the steps' own noise is not known)\n";
@@ -141,9 +146,12 @@ void writeCapacitiveText(const calibration::CapacitiveCalibrationResult& result,
         << QString::number(*result.detectionLimit_n / calibration::kMilligramForce_n, 'f', 2) << " mgf, 3σ of C0)\n";
     if (result.hysteresis) {
         out << "hysteresis: " << QString::number(*result.hysteresis * 100.0, 'f', 2) << " % of full scale";
+        // Noise alone reads up to twice a difference's u: below that, no hysteresis is shown.
         if (result.hysteresisNoise)
-            out << " (an upper bound of the silicone's: the steps' noise alone reads up to "
-                << QString::number(*result.hysteresisNoise * 100.0, 'f', 2) << " %)";
+            out << (*result.hysteresis > *result.hysteresisNoise
+                        ? QStringLiteral(", above the %1 % the steps' noise alone can read: the silicone's, at most")
+                        : QStringLiteral(", within the %1 % the steps' noise alone can read: no hysteresis shown"))
+                       .arg(*result.hysteresisNoise * 100.0, 0, 'f', 2);
         out << '\n';
     }
     const auto unloading = std::ranges::count_if(steps.steps, [](const auto& s) { return !s.loading; });

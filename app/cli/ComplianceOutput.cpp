@@ -30,6 +30,8 @@ QString withUncertainty(double value, double uncertainty, const char* unit = "N/
 
 QString uncertaintyOnly(double uncertainty)
 {
+    // Two significant digits, as valueWithUncertainty writes them.
+    if (uncertainty >= 1e4) return QString::number(uncertainty, 'g', 2);
     return QString::number(uncertainty, 'f', text::uncertaintyDecimals(uncertainty));
 }
 
@@ -326,7 +328,8 @@ int ComplianceOutput::print(bool asJson) const
                 << QString::number(*combined->birgeRatio, 'f', 2)
                 << (combined->consistent ? QString() : QStringLiteral(" (noise uncertainty scaled by it)")) << '\n';
         if (usableRange_n_per_m)
-            out << "usable range of this probe (its beams and converters): "
+            out << "usable range of this probe at best (its beams and converters; noise and the zero narrow it "
+                   "for each press): "
                 << QString::number(usableRange_n_per_m->first, 'g', 3) << "–"
                 << QString::number(usableRange_n_per_m->second, 'g', 3) << " N/m\n";
         else

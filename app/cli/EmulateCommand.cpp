@@ -53,8 +53,8 @@ int runEmulate(const QStringList& arguments)
          QStringLiteral("S")},
         {QStringLiteral("mark-at"),
          QStringLiteral("Mark this instant of the host's steady clock (CLOCK_MONOTONIC, seconds): the first channel "
-                        "ramps by ±0.001 over 10 ms either side of it. Two emulators marking one instant are one "
-                        "event to align."),
+                        "ramps by ±0.001 over 10 ms either side of it (2.5 of its own sample periods when slower "
+                        "than 250 Hz). Two emulators marking one instant are one event to align."),
          QStringLiteral("S")},
         {QStringLiteral("sweep-at"),
          QStringLiteral("Begin a calibration sweep at this instant of the host's steady clock (seconds): the rig of "

@@ -112,9 +112,30 @@ CapacitiveCalibrationResult calibrateCapacitive(const CapacitiveCalibrationInput
                 char text[320];
                 std::snprintf(text, sizeof text,
                               "the points scatter beyond their steps' noise%s (χ²/ν = %.1f): the sensitivity's ± is "
-                              "widened by √(χ²/ν); a creep, a hysteresis or a step read before it settled",
+                              "widened by √(χ²/ν); %s",
                               in.baselineWander_f_per_sqrt_s ? " and the baseline's wander" : "",
-                              r.sensitivityUncertainty->chiSquarePerDegree);
+                              r.sensitivityUncertainty->chiSquarePerDegree,
+                              in.baselineWander_f_per_sqrt_s
+                                  ? "a creep, a hysteresis or a step read before it settled"
+                                  : "a baseline that wanders between its zeros (state the beam's baseline stability), "
+                                    "a creep, a hysteresis or a step read before it settled");
+                r.cautions.emplace_back(text);
+            }
+        }
+        // A stated stability far beyond what the two zeros show is a slip
+        // of its value or unit (a random walk moves 30× less than its σ√T
+        // about 2 % of the time).
+        if (in.baselineWander_f_per_sqrt_s && propagation.final) {
+            const double implied =
+                *in.baselineWander_f_per_sqrt_s * std::sqrt(propagation.final->t_s - propagation.first.t_s);
+            const double seen = std::max(std::abs(in.finalBaseline->mean - in.baseline.mean),
+                                         3.0 * std::hypot(propagation.first.u_f, propagation.final->u_f));
+            if (implied > 30.0 * seen) {
+                char text[320];
+                std::snprintf(text, sizeof text,
+                              "the baseline stability given (%.3g pF/√s) would move the baseline about %.3g pF "
+                              "between the two zeros, %.0f× what they show (%.3g pF): check its value and unit",
+                              *in.baselineWander_f_per_sqrt_s * 1e12, implied * 1e12, implied / seen, seen * 1e12);
                 r.cautions.emplace_back(text);
             }
         }

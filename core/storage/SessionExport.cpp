@@ -349,6 +349,12 @@ void writeDevices(text::JsonWriter& json, SessionSource& store, const std::vecto
             json.key("offset_u_s").value(clock->offset_u_s);
             json.key("drift_u").value(clock->drift_u);
             json.key("sample_period_s").value(clock->samplePeriod_s);
+            // The whole standard uncertainty of a time at the part's start, as `sessions show` states it.
+            json.key("u_at_start_s");
+            if (const auto u = clock->uncertainty_s(0.0))
+                json.value(*u);
+            else
+                json.null();
             json.key("uncertainty").value(timing::toString(clock->basis));
             json.key("span_s").value(clock->span_s);
             json.endObject();

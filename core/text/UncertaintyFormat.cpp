@@ -35,6 +35,16 @@ std::string valueWithUncertainty(double value, double uncertainty, const std::st
         std::snprintf(buffer, sizeof buffer, "%.9g", value);
         return buffer + suffix + " (no scatter)";
     }
+    // Five digits or more of uncertainty would be read as precision:
+    // two significant digits times a power of ten, "(8.7 ± 1.5)·10⁶".
+    if (uncertainty >= 1e4 && std::isfinite(uncertainty)) {
+        const int exponent = static_cast<int>(std::floor(std::log10(uncertainty)));
+        const double scale = std::pow(10.0, exponent);
+        static const char* const kSuperscripts[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+        std::string power;
+        for (const char digit : std::to_string(exponent)) power += kSuperscripts[digit - '0'];
+        return "(" + fixed(value / scale, 1) + " ± " + fixed(uncertainty / scale, 1) + ")·10" + power + suffix;
+    }
     const int decimals = uncertaintyDecimals(uncertainty);
     return fixed(value, decimals) + " ± " + fixed(uncertainty, decimals) + suffix;
 }

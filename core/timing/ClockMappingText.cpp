@@ -30,7 +30,7 @@ std::string clockMappingText(const std::string& clockJson)
     // Where within its period a sample is taken: often the larger part.
     if (clock->samplePeriod_s > 0.0)
         std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n),
-                      "; %.3f ms of the time's ± is where within its %.3g ms sample period a sample is taken)",
+                      "; in the time's ±, ± %.3f ms for where within its %.3g ms sample period a sample is taken)",
                       clock->samplePeriodUncertainty_s() * 1e3, clock->samplePeriod_s * 1e3);
     else
         std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), ")");

@@ -58,7 +58,7 @@ Tally pressOn(double truth, bool soft, std::uint64_t seeds)
         p.pause_s = 2.0;
         p.seed = seed;
         // A soft specimen pressed deep enough for its force to read.
-        if (soft) p.pressDepths_m = {0.04, 0.06, 0.08};
+        if (soft) p.pressDepths_m = {0.03, 0.04, 0.05};
         devices::simulator::PalpationScenario scenario(p);
         core::SampleBlock all(3, static_cast<std::size_t>(16.0 * kRate_hz), 0.0, 1.0 / kRate_hz);
         scenario.generate(all);

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <span>
+#include <vector>
 
 using namespace tactiscope::core::calibration;
 
@@ -68,4 +70,27 @@ TEST(SettledCapture, WatchingNeverCapturesAndAKnockSendsItBackToSettling)
     for (int i = 0; i < 105; ++i, t += 0.01) capture.add(t, 5.0 + 3.0 * std::sin(40.0 * t));
     EXPECT_FALSE(capture.judge());
     EXPECT_EQ(capture.phase(), SettledCapture::Phase::Settling);
+}
+
+// The rule on a recorded series (issue 55: the CLI's steps): the settled
+// part begins with the fresh window, the sample after the first stable
+// window's last; a series that never settles so gives none.
+TEST(SettledCapture, OnARecordedSeriesTheSettledPartBeginsWithTheFreshWindow)
+{
+    std::vector<double> t, v;
+    for (int i = 0; i < 1000; ++i) {
+        t.push_back(i * 0.01);
+        v.push_back(100.0 * (1.0 - std::exp(-t.back() / 0.3)));
+    }
+    StabilityMonitor plain(kSettings);
+    std::optional<std::size_t> firstEnd;
+    for (std::size_t i = 0; i < t.size() && !firstEnd; ++i)
+        if (auto w = plain.push(t[i], v[i]); w && w->stable) firstEnd = i;
+    ASSERT_TRUE(firstEnd);
+    const auto from = settledFrom(t, v, kSettings);
+    ASSERT_TRUE(from);
+    EXPECT_EQ(*from, *firstEnd + 1);
+    EXPECT_LT(100.0 - v[*from], 0.5);  // past the settling's tail
+    // Its first three seconds: the fresh window would end past them.
+    EXPECT_FALSE(settledFrom(std::span(t).first(300), std::span(v).first(300), kSettings));
 }
