@@ -73,16 +73,16 @@ double scatterAboutLine(std::span<const double> force, std::span<const double> c
 
 // The beam's time constant within [0, most]: a grid of 20 ms, then of
 // 1 ms about its best.
-double lagOf(const CapacitiveRecording& r, std::span<const double> force, std::size_t begin, std::size_t end,
-             double most)
+double lagOf(std::span<const double> t, std::span<const double> c, std::span<const double> force, std::size_t begin,
+             std::size_t end, double most)
 {
     double best = 0.0;
-    double least = scatterAboutLine(force, r.capacitance_f, begin, end);
+    double least = scatterAboutLine(force, c, begin, end);
     for (const double step : {0.02, 0.001}) {
         const double from = step == 0.02 ? step : std::max(step, best - 0.02);
         const double to = step == 0.02 ? most : best + 0.02;
         for (double tau = from; tau <= to + step / 2; tau += step) {
-            const double scatter = scatterAboutLine(felt(r.t_s, force, tau), r.capacitance_f, begin, end);
+            const double scatter = scatterAboutLine(felt(t, force, tau), c, begin, end);
             if (scatter < least) {
                 least = scatter;
                 best = tau;
@@ -140,13 +140,13 @@ SweepSteps stepsFromSweep(const CapacitiveRecording& r, const SweepSettings& set
     // direction against the other as a lag does: 0.439 s was found for a
     // 0.400 s beam, and 0.5 % of hysteresis left on a beam with none).
     if (settings.maxLag_s > 0.0) {
-        CapacitiveRecording level = r;
+        std::vector<double> level = r.capacitance_f;
         if (out.input.finalBaseline) {
             const double t0 = out.input.baseline.middle_s(), t1 = out.input.finalBaseline->middle_s();
             const double drift = (out.input.finalBaseline->mean - out.input.baseline.mean) / (t1 - t0);
-            for (std::size_t i = 0; i < n; ++i) level.capacitance_f[i] -= drift * (r.t_s[i] - t0);
+            for (std::size_t i = 0; i < n; ++i) level[i] -= drift * (r.t_s[i] - t0);
         }
-        result.lag_s = lagOf(level, force, begin, end, settings.maxLag_s);
+        result.lag_s = lagOf(r.t_s, level, force, begin, end, settings.maxLag_s);
     }
     const std::vector<double> feltForce = felt(r.t_s, force, result.lag_s);
     const std::span<const double> loaded(feltForce.data() + begin, end - begin);

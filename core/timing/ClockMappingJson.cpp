@@ -15,6 +15,8 @@ namespace tactiscope::core::timing {
 namespace {
 
 constexpr double kMostDrift = 0.01;
+// A device sampling slower than once an hour is no stream: the text was altered.
+constexpr double kLongestPeriod_s = 3600.0;
 
 // Each basis and its stored word, one table for writing and reading.
 struct BasisWord {
@@ -76,7 +78,8 @@ std::optional<ClockMapping> clockMappingFromJson(std::string_view text)
         return std::nullopt;
     m.pairs = static_cast<std::size_t>(pairs);
     // Stores before issue 55 did not keep the sample period: no doubt for it.
-    if (json.contains("sample_period_s") && (!number("sample_period_s", m.samplePeriod_s) || m.samplePeriod_s < 0.0))
+    if (json.contains("sample_period_s") &&
+        (!number("sample_period_s", m.samplePeriod_s) || m.samplePeriod_s < 0.0 || m.samplePeriod_s > kLongestPeriod_s))
         return std::nullopt;
     const auto basis = json.find("uncertainty");
     if (basis == json.end() || !basis->is_string()) return std::nullopt;

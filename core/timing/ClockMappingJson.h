@@ -22,7 +22,8 @@ const char* toString(ClockUncertaintyBasis basis);
 std::string toJson(const ClockMapping& mapping);
 // None for text that is not such an object, or holds a number that is
 // not finite, a drift beyond ±1 % (no crystal is that far off: the text
-// was altered), a negative uncertainty, or an exact one that states one.
+// was altered), a negative uncertainty, an exact one that states one, or
+// a sample period below 0 or above an hour.
 std::optional<ClockMapping> clockMappingFromJson(std::string_view text);
 
 // The mapping of a stream's own time (`origin_s` being its t = 0 in the

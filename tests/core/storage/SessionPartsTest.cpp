@@ -152,6 +152,13 @@ TEST_F(SessionPartsTest, AStoredMappingComesBackAndAnAlteredOneReadsAsNone)
               "delays)");
     EXPECT_EQ(timing::clockMappingText(store.parts(ids.session)[1].clockJson),
               "not mapped (no frames with the device's times were seen)");
+    // Issue 55: its sample period's doubt, T/√12 = 577.35 µs at 2 ms, with
+    // the rest in quadrature: √(12.09² + 577.35²) = 577.48 µs.
+    mapping.samplePeriod_s = 0.002;
+    EXPECT_EQ(timing::clockMappingText(timing::toJson(mapping)),
+              "+0.499600 s at the start ± 0.577 ms, 80.0 ± 0.3 ppm slow (± from the spread of the fastest frames' "
+              "delays; in the time's ±, ± 0.577 ms for where within its 2 ms sample period a sample is taken)");
+    mapping.samplePeriod_s = 0.0;
     // Too few frames to tell its drift (fresh eyes: "153.1 ppm slow (± too
     // few frames to tell)" for 0.3 s): no drift figure is given.
     mapping.basis = timing::ClockUncertaintyBasis::TooFewFrames;
@@ -168,7 +175,13 @@ TEST_F(SessionPartsTest, AStoredMappingComesBackAndAnAlteredOneReadsAsNone)
           R"({"reference_s":5,"offset_s":0.5,"drift":0,"span_s":9,"pairs":1,"uncertainty":"exact",)"
           R"("offset_u_s":1e-6,"drift_u":0})",
           R"({"reference_s":5,"offset_s":1e400,"drift":0,"span_s":9,"pairs":1,"uncertainty":"spread",)"
-          R"("offset_u_s":0,"drift_u":0})"}) {
+          R"("offset_u_s":0,"drift_u":0})",
+          R"({"reference_s":5,"offset_s":0.5,"drift":0,"span_s":9,"pairs":1,"uncertainty":"spread",)"
+          R"("offset_u_s":0,"drift_u":0,"sample_period_s":-0.001})",
+          R"({"reference_s":5,"offset_s":0.5,"drift":0,"span_s":9,"pairs":1,"uncertainty":"spread",)"
+          R"("offset_u_s":0,"drift_u":0,"sample_period_s":"fast"})",
+          R"({"reference_s":5,"offset_s":0.5,"drift":0,"span_s":9,"pairs":1,"uncertainty":"spread",)"
+          R"("offset_u_s":0,"drift_u":0,"sample_period_s":1e9})"}) {
         EXPECT_FALSE(timing::clockMappingFromJson(altered)) << altered;
         store.setClockMapping(ids.cell, altered);
         EXPECT_EQ(timing::clockMappingText(store.parts(ids.session)[1].clockJson),
