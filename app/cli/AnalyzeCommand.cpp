@@ -119,12 +119,12 @@ int runAnalyze(const QStringList& arguments)
             probe ? std::optional(probe->out) : std::nullopt);
         const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         if (!save.isEmpty()) store.addEvents(*id, core::storage::defectRecords(events, save.toStdString()));
+        const auto sites = core::storage::storedSites(store, *id, events);
+        const DetectionOutput output{analysed, lags, elapsed_s, events, sites};
         if (options.json) {
-            std::cout << eventsJson(analysed, lags, elapsed_s, events, options, agreement,
-                                    core::storage::storedSites(store, *id, events))
-                      << '\n';
+            std::cout << eventsJson(output, options, agreement) << '\n';
         } else {
-            printDetection(QStringLiteral("session %1").arg(*id), analysed, dt_s, lags, elapsed_s, events, options);
+            printDetection(QStringLiteral("session %1").arg(*id), dt_s, output, options);
             if (agreement)
                 std::cout << core::detector::agreementText(*agreement)
                           << " (the probe's recorded decisions against this analysis)\n";

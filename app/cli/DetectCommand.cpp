@@ -27,6 +27,7 @@ struct DetectOptions {
     QString probeInput;      // write the emulated probe's input instead of detecting
     QString probeDecisions;  // the rows from the emulated probe's decisions instead of detecting
     std::vector<std::string> columns{"t", "a", "b"};
+    std::optional<std::string> position;  // the rig's position column: sites from it
     DetectorOptions detector;
 };
 
@@ -44,6 +45,10 @@ std::optional<QString> readOptions(const QCommandLineParser& parser, DetectOptio
         if (options.columns.size() < 3)
             return QStringLiteral("--columns needs a time column and at least two cantilevers, e.g. T,A,B");
     }
+    if (parser.isSet(QStringLiteral("position"))) {
+        options.position = parser.value(QStringLiteral("position")).trimmed().toStdString();
+        if (options.position->empty()) return QStringLiteral("--position needs the position column's name");
+    }
     const QString engine = parser.value(QStringLiteral("engine"));
     if (engine == QStringLiteral("probe"))
         options.detector.engine = core::detector::DetectorEngine::Probe;
@@ -56,6 +61,8 @@ std::optional<QString> readOptions(const QCommandLineParser& parser, DetectOptio
     options.probeDecisions = parser.value(QStringLiteral("probe-decisions"));
     if (!options.probeInput.isEmpty() && (!options.output.isEmpty() || !options.probeDecisions.isEmpty()))
         return QStringLiteral("--probe-input writes the emulated probe's input, nothing else");
+    if (options.position && (!options.probeInput.isEmpty() || !options.probeDecisions.isEmpty()))
+        return QStringLiteral("--position places the sites detect finds, not the emulated probe's files");
     if (!options.probeDecisions.isEmpty() && options.output.isEmpty())
         return QStringLiteral("--probe-decisions goes with --output OUT.csv, the rows it makes");
     return std::nullopt;
@@ -122,6 +129,10 @@ int runDetect(const QStringList& arguments)
          QStringLiteral("T,A,B")},
         {QStringLiteral("output"), QStringLiteral("Write t,out,rab,rba,lag_ab_ms,lag_ba_ms per sample to OUT.csv."),
          QStringLiteral("OUT.csv")},
+        {QStringLiteral("position"),
+         QStringLiteral("The rig's position column (an encoder along the stroke, in metres): each crossing is placed "
+                        "where it says, not by its phase (docs/detector.md)."),
+         QStringLiteral("X")},
         {QStringLiteral("engine"),
          QStringLiteral("workstation (default: double precision) or probe (the probe's own single-precision "
                         "kernel, firmware/probe-detector, exponential form, one thread)."),
@@ -170,15 +181,17 @@ int runDetect(const QStringList& arguments)
                                                    });
             });
         }
+        if (options.position)
+            core::detector::stampCsvPositions(input, options.columns.front(), *options.position, result.interval_s,
+                                              result.events);
     });
     if (exit != kExitOk) return exit;
-    if (options.detector.json) {
-        std::cout << eventsJson(result.samples, result.lags, result.detectorSeconds, result.events, options.detector)
-                  << '\n';
-    } else {
-        printDetection(options.input, result.samples, result.interval_s, result.lags, result.detectorSeconds,
-                       result.events, options.detector);
-    }
+    const auto sites = core::detector::scanSites(result.events, options.position.has_value());
+    const DetectionOutput output{result.samples, result.lags, result.detectorSeconds, result.events, sites};
+    if (options.detector.json)
+        std::cout << eventsJson(output, options.detector) << '\n';
+    else
+        printDetection(options.input, result.interval_s, output, options.detector);
     return kExitOk;
 }
 

@@ -120,10 +120,10 @@ std::optional<QString> readDetectorOptions(const QCommandLineParser& parser, Det
     return std::nullopt;
 }
 
-std::string eventsJson(std::size_t samples, std::size_t lags, double elapsed_s, const std::vector<DefectEvent>& events,
-                       const DetectorOptions& options, const std::optional<core::detector::ProbeAgreement>& probe,
-                       const std::optional<core::detector::SiteGrouping>& sites)
+std::string eventsJson(const DetectionOutput& output, const DetectorOptions& options,
+                       const std::optional<core::detector::ProbeAgreement>& probe)
 {
+    const auto [samples, lags, elapsed_s, events, sites] = output;
     core::text::JsonWriter json;
     json.beginObject();
     json.key("samples").value(static_cast<long long>(samples));
@@ -145,7 +145,7 @@ std::string eventsJson(std::size_t samples, std::size_t lags, double elapsed_s, 
         json.endObject();
     }
     json.endArray();
-    core::detector::writeSitesJson(json, sites ? *sites : core::detector::scanSites(events));
+    core::detector::writeSitesJson(json, sites);
     if (probe) {
         json.key("probe_agreement").beginObject();
         json.key("agreeing").value(static_cast<long long>(probe->agreeing));
@@ -156,9 +156,9 @@ std::string eventsJson(std::size_t samples, std::size_t lags, double elapsed_s, 
     return json.str();
 }
 
-void printDetection(const QString& source, std::size_t samples, double dt_s, std::size_t lags, double elapsed_s,
-                    const std::vector<DefectEvent>& events, const DetectorOptions& options)
+void printDetection(const QString& source, double dt_s, const DetectionOutput& output, const DetectorOptions& options)
 {
+    const auto [samples, lags, elapsed_s, events, sites] = output;
     QTextStream out(stdout);
     const auto& p = options.parameters;
     out << source << ": " << samples << " samples at " << QString::number(1.0 / dt_s, 'g', 6) << " Hz, " << lags
@@ -186,6 +186,11 @@ void printDetection(const QString& source, std::size_t samples, double dt_s, std
         if (e.speed_m_per_s) out << QString::number(*e.speed_m_per_s * 1e3, 'f', 0);
         out << qSetFieldWidth(0) << '\n';
     }
+    const auto n = sites.sites.size();
+    out << n << (n == 1 ? " site" : " sites") << " (" << QString::fromStdString(sites.method) << ")"
+        << (n == 0 ? "\n" : ":\n");
+    for (std::size_t i = 0; i < n; ++i)
+        out << "  " << i + 1 << ": " << QString::fromStdString(core::detector::siteText(sites.sites[i])) << '\n';
 }
 
 }  // namespace tactiscope::cli

@@ -32,16 +32,22 @@ void addDetectorOptions(QCommandLineParser& parser);
 // Fills `options`; returns an error message for a bad value.
 std::optional<QString> readDetectorOptions(const QCommandLineParser& parser, DetectorOptions& options);
 
+// What ran and what it found: the events and the sites they make (placed
+// by their phases, or by the rig's position channel).
+struct DetectionOutput {
+    std::size_t samples = 0;
+    std::size_t lags = 0;
+    double elapsed_s = 0.0;
+    const std::vector<core::detector::DefectEvent>& events;
+    const core::detector::SiteGrouping& sites;
+};
+
 // One JSON object: samples, lags, elapsed_s, samples_per_s, kernel, threads,
-// events, sites (placed by `sites` when given: a stored session's, which
-// may come from its position channel), and probe_agreement {agreeing,
-// compared} when a probe's own decisions were compared.
-std::string eventsJson(std::size_t samples, std::size_t lags, double elapsed_s,
-                       const std::vector<core::detector::DefectEvent>& events, const DetectorOptions& options,
-                       const std::optional<core::detector::ProbeAgreement>& probe = std::nullopt,
-                       const std::optional<core::detector::SiteGrouping>& sites = std::nullopt);
-// The human summary: what ran, how fast, and a table of the events.
-void printDetection(const QString& source, std::size_t samples, double dt_s, std::size_t lags, double elapsed_s,
-                    const std::vector<core::detector::DefectEvent>& events, const DetectorOptions& options);
+// events, sites, sites_method, and probe_agreement {agreeing, compared}
+// when a probe's own decisions were compared.
+std::string eventsJson(const DetectionOutput& output, const DetectorOptions& options,
+                       const std::optional<core::detector::ProbeAgreement>& probe = std::nullopt);
+// The human summary: what ran, how fast, a table of the events and the sites.
+void printDetection(const QString& source, double dt_s, const DetectionOutput& output, const DetectorOptions& options);
 
 }  // namespace tactiscope::cli

@@ -58,7 +58,7 @@ public:
         for (std::size_t k = 0; k < m_order.size(); ++k) m_rank[m_order[k]] = k;
     }
 
-    CrossingPlaces placeByPosition(const PositionAt& positionAt)
+    CrossingPlaces placeByPosition()
     {
         m_places.fromPosition = true;
         m_places.shape = StrokeShape::Harmonic;  // no shape: nothing to doubt
@@ -72,7 +72,7 @@ public:
             if (!isCrossing(i)) continue;
             if (lastDirection && m_events[i].direction != 0 && m_events[i].direction != *lastDirection) ++stroke;
             if (m_events[i].direction != 0) lastDirection = m_events[i].direction;
-            const auto x = positionAt(crossingTime(m_events[i]));
+            const auto& x = m_events[i].position_m;
             if (!x || !std::isfinite(*x)) continue;
             m_places.position_m[i] = *x;
             m_places.stroke[i] = stroke;
@@ -580,9 +580,16 @@ PositionAt positionFromSamples(std::vector<double> samples, double t0_s, double 
     };
 }
 
-CrossingPlaces placeByPosition(std::span<const DefectEvent> events, const PositionAt& positionAt)
+std::vector<DefectEvent> withPositions(std::span<const DefectEvent> events, const PositionAt& positionAt)
 {
-    return Placer(events).placeByPosition(positionAt);
+    std::vector<DefectEvent> stamped(events.begin(), events.end());
+    for (auto& e : stamped) e.position_m = positionAt(crossingTime(e));
+    return stamped;
+}
+
+CrossingPlaces placeByPosition(std::span<const DefectEvent> events)
+{
+    return Placer(events).placeByPosition();
 }
 
 }  // namespace tactiscope::core::detector

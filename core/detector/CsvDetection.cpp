@@ -2,12 +2,17 @@
 #include "core/detector/CsvDetection.h"
 
 #include "core/detector/OfflineDetection.h"
+#include "core/detector/PositionTrail.h"
+#include "core/detector/SiteArithmetic.h"
 #include "core/io/UniformTimeBase.h"
 #include "core/text/NumberFormat.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <numeric>
 
 namespace tactiscope::core::detector {
 namespace {
@@ -110,6 +115,30 @@ CsvDetection detectCsv(const std::string& path, const std::vector<std::string>& 
     result.samples = static_cast<std::size_t>(detection.samplesPushed());
     result.events = detection.finish().events;
     return result;
+}
+
+void stampCsvPositions(const std::string& path, const std::string& timeColumn, const std::string& positionColumn,
+                       double interval_s, std::vector<DefectEvent>& events)
+{
+    std::vector<std::size_t> order(events.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::ranges::sort(order, {}, [&](std::size_t i) { return sites::crossingTime(events[i]); });
+    constexpr std::size_t kRows = 4096;
+    // Two blocks: a crossing just before a block's first row is still held.
+    PositionTrail trail(2 * kRows, interval_s);
+    io::CsvColumnReader reader(path, {timeColumn, positionColumn});
+    std::vector<std::vector<double>> block;
+    std::vector<std::size_t> lines;
+    auto next = order.begin();
+    const auto stampUpTo = [&](double until_s) {
+        for (; next != order.end() && sites::crossingTime(events[*next]) <= until_s; ++next)
+            events[*next].position_m = trail.at(sites::crossingTime(events[*next]));
+    };
+    while (const std::size_t n = reader.read(kRows, block, lines)) {
+        for (std::size_t r = 0; r < n; ++r) trail.push(block[0][r], block[1][r]);
+        stampUpTo(block[0][n - 1]);
+    }
+    stampUpTo(std::numeric_limits<double>::infinity());  // past the last row: none
 }
 
 }  // namespace tactiscope::core::detector

@@ -75,4 +75,11 @@ private:
 CsvDetection detectCsv(const std::string& path, const std::vector<std::string>& columns, StretchSettings settings,
                        const CsvSampleSink& sink = {});
 
+// Each event's position_m at its crossing from the rig's position column
+// (`detect --position`, in metres along the stroke), read in a second pass
+// with the time column a block at a time, so the file's size does not
+// matter. Throws io::CsvError.
+void stampCsvPositions(const std::string& path, const std::string& timeColumn, const std::string& positionColumn,
+                       double interval_s, std::vector<DefectEvent>& events);
+
 }  // namespace tactiscope::core::detector

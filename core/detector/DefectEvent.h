@@ -15,6 +15,9 @@ struct DefectEvent {
     double peakLag_s = 0.0;
     // Cantilever spacing / lag at the peak, when the spacing is known.
     std::optional<double> speed_m_per_s;
+    // Where the rig's position channel had the probe when its centre passed
+    // the dent (core/detector/PositionTrail.h); none without one.
+    std::optional<double> position_m;
 };
 
 }  // namespace tactiscope::core::detector

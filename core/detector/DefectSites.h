@@ -204,11 +204,15 @@ using PositionAt = std::function<std::optional<double>(double t_s)>;
 // a sample without a value (NaN, a gap).
 PositionAt positionFromSamples(std::vector<double> samples, double t0_s, double dt_s);
 
-// Each crossing where the position channel had the probe when its centre
-// was over the dent (the event's middle less the detector's delay): no
-// phase, no stroke shape. Short opposite runs are parts as above; strokes
-// are counted from the crossings' changes of direction.
-CrossingPlaces placeByPosition(std::span<const DefectEvent> events, const PositionAt& positionAt);
+// Copies of the events, each with position_m where the position channel
+// had the probe when its centre was over the dent (the event's middle less
+// the detector's delay).
+std::vector<DefectEvent> withPositions(std::span<const DefectEvent> events, const PositionAt& positionAt);
+
+// Each crossing at its position_m (none: not placed): no phase, no stroke
+// shape. Short opposite runs are parts as above; strokes are counted from
+// the crossings' changes of direction.
+CrossingPlaces placeByPosition(std::span<const DefectEvent> events);
 
 CrossingPlaces placeCrossings(std::span<const DefectEvent> events);
 
@@ -247,8 +251,10 @@ struct SiteGrouping {
 SiteGrouping groupSites(std::span<const DefectEvent> events, const CrossingPlaces& places);
 
 // placeCrossings() then groupSites(): the sites of a panel scan's events;
-// placeByPosition() instead when the rig gives the probe's position.
-SiteGrouping scanSites(std::span<const DefectEvent> events);
+// placeByPosition() instead when the rig gives the probe's position, read
+// at each crossing or already on the events (`byPosition`: stamped by a
+// PositionTrail).
+SiteGrouping scanSites(std::span<const DefectEvent> events, bool byPosition = false);
 SiteGrouping scanSites(std::span<const DefectEvent> events, const PositionAt& positionAt);
 
 // A site's place as people read it: "37.2 ± 1.9 mm (6 crossings)", "span

@@ -40,7 +40,7 @@ void EventSegmenter::push(double t_s, const DetectorOutput& o, double sampleInte
     const double r = o.decision > 0 ? o.rab : o.rba;
     const double lag_s = static_cast<double>(o.decision > 0 ? o.lagAb : o.lagBa) * sampleInterval_s;
     if (!m_open) {
-        m_open = DefectEvent{t_s, t_s, o.decision, r, lag_s, std::nullopt};
+        m_open = DefectEvent{t_s, t_s, o.decision, r, lag_s, std::nullopt, std::nullopt};
     } else if (r > m_open->peakR) {
         m_open->peakR = r;
         m_open->peakLag_s = lag_s;

@@ -8,11 +8,19 @@
 #include <utility>
 
 namespace tactiscope::core::detector {
+namespace {
+
+// How far back the position trail reaches: an event completes a hold
+// after its last sample, and its crossing lies before its middle.
+constexpr double kTrail_s = 30.0;
+
+}  // namespace
 
 LiveDetection::LiveDetection(std::vector<std::size_t> cantileverChannels, double sampleRate_hz,
                              LiveDetectionSettings settings, double displaySeconds,
-                             std::optional<ProbeDecisionChannels> probe)
+                             std::optional<ProbeDecisionChannels> probe, std::optional<std::size_t> position)
     : m_channels(std::move(cantileverChannels)),
+      m_positionChannel(position),
       m_sampleInterval_s(1.0 / sampleRate_hz),
       m_output(std::make_shared<LiveBuffer>(3, static_cast<std::size_t>(std::ceil(displaySeconds * sampleRate_hz)) + 1))
 {
@@ -22,6 +30,8 @@ LiveDetection::LiveDetection(std::vector<std::size_t> cantileverChannels, double
         m_probe.emplace(*probe, m_sampleInterval_s, settings.hold_s, settings.spacing_m);
         m_agreement = ProbeAgreement{};
     }
+    // Long enough to reach from an event's completion back to its crossing.
+    if (position) m_trail.emplace(static_cast<std::size_t>(std::ceil(kTrail_s * sampleRate_hz)), m_sampleInterval_s);
     m_settings = std::move(settings);
 }
 
@@ -68,6 +78,9 @@ void LiveDetection::consume(const SampleBlock& block)
         if (m_probe) m_probe->restart(m_probeCompleted);
     }
     m_nextIndex = block.endSampleIndex();
+    if (m_trail)
+        for (std::size_t s = 0; s < block.sampleCount(); ++s)
+            m_trail->push(block.timeAt_s(s), block.channel(*m_positionChannel)[s]);
     const auto outputs = m_engine->detector.push(block);
     SampleBlock display(3, outputs.size(), block.t0_s(), block.dt_s(), block.firstSampleIndex(), block.sequence());
     for (std::size_t s = 0; s < outputs.size(); ++s) {
@@ -79,6 +92,7 @@ void LiveDetection::consume(const SampleBlock& block)
         if (m_probe) m_probe->push(block, s, o, m_probeCompleted, m_disagreed);
     }
     m_output->consume(display);
+    if (m_trail) m_trail->stamp(m_completed);
     const std::lock_guard lock(m_mutex);
     m_events.insert(m_events.end(), m_completed.begin(), m_completed.end());
     m_completed.clear();

@@ -3,6 +3,9 @@
 // (decision, best R_ab, best R_ba) into a LiveBuffer for display, and
 // segments defect events for the operator's list and the session.
 //
+// With the rig's position channel, each event carries where the probe was
+// at its crossing (DefectEvent::position_m), for its sites.
+//
 // Settings change while streaming: setSettings() builds (and so checks) the
 // new detector on the caller's thread and hands it over; it takes effect at
 // the next block with fresh statistics, so the output of every sample comes
@@ -16,6 +19,7 @@
 #include "core/LiveBuffer.h"
 #include "core/detector/DefectEvent.h"
 #include "core/detector/EventSegmenter.h"
+#include "core/detector/PositionTrail.h"
 #include "core/detector/ProbeDecisionCheck.h"
 #include "core/detector/ProbeDetector.h"
 
@@ -36,9 +40,11 @@ class LiveDetection final : public BlockSink {
 public:
     // Throws std::invalid_argument for bad settings or fewer than two
     // cantilevers. `probe`: where the stream carries the probe's own
-    // decisions, checked against these (ProbeDecisionCheck).
+    // decisions, checked against these (ProbeDecisionCheck). `position`:
+    // the rig's position channel (core/detector/PositionTrail.h).
     LiveDetection(std::vector<std::size_t> cantileverChannels, double sampleRate_hz, LiveDetectionSettings settings,
-                  double displaySeconds, std::optional<ProbeDecisionChannels> probe = std::nullopt);
+                  double displaySeconds, std::optional<ProbeDecisionChannels> probe = std::nullopt,
+                  std::optional<std::size_t> position = std::nullopt);
 
     // The channels of output(): decision (−1, 0, +1), R_ab, R_ba.
     static std::vector<ChannelDescriptor> outputChannels();
@@ -51,6 +57,8 @@ public:
     void consume(const SampleBlock& block) override;
 
     std::shared_ptr<const LiveBuffer> output() const { return m_output; }
+    // Whether its events carry their positions.
+    bool placesByPosition() const { return m_positionChannel.has_value(); }
     // Events completed since the last call, in time order.
     std::vector<DefectEvent> takeEvents();
     // The probe's own: its defect events and the disagreements that
@@ -68,6 +76,7 @@ private:
     std::unique_ptr<Engine> makeEngine(const LiveDetectionSettings& settings) const;
 
     std::vector<std::size_t> m_channels;
+    std::optional<std::size_t> m_positionChannel;
     double m_sampleInterval_s;
     std::shared_ptr<LiveBuffer> m_output;
 
@@ -81,6 +90,7 @@ private:
 
     // Acquisition thread only.
     std::optional<ProbeDecisionCheck> m_probe;
+    std::optional<PositionTrail> m_trail;
     std::vector<DefectEvent> m_probeCompleted;
     std::vector<ProbeDisagreement> m_disagreed;
     std::unique_ptr<Engine> m_engine;

@@ -415,14 +415,14 @@ SiteGrouping groupSites(std::span<const DefectEvent> events, const CrossingPlace
     return grouping;
 }
 
-SiteGrouping scanSites(std::span<const DefectEvent> events)
+SiteGrouping scanSites(std::span<const DefectEvent> events, bool byPosition)
 {
-    return groupSites(events, placeCrossings(events));
+    return groupSites(events, byPosition ? placeByPosition(events) : placeCrossings(events));
 }
 
 SiteGrouping scanSites(std::span<const DefectEvent> events, const PositionAt& positionAt)
 {
-    return groupSites(events, placeByPosition(events, positionAt));
+    return scanSites(withPositions(events, positionAt), true);
 }
 
 std::string sitePlaceText(const DefectSite& site, bool withUnit)

@@ -65,8 +65,9 @@ inline std::vector<detector::DefectEvent> defectEventsOf(std::span<const Session
     std::vector<detector::DefectEvent> defects;
     for (const SessionEvent& e : events) {
         if (e.kind != EventKind::Defect) continue;
-        defects.push_back(
-            {e.start_s, e.end_s, e.direction, e.peakR.value_or(0.0), e.lag_s.value_or(0.0), e.speed_m_per_s});
+        // No position: a stored session's is read from its channel (StoredSites.h).
+        defects.push_back({e.start_s, e.end_s, e.direction, e.peakR.value_or(0.0), e.lag_s.value_or(0.0),
+                           e.speed_m_per_s, std::nullopt});
     }
     return defects;
 }

@@ -2,6 +2,8 @@
 // sample by sample around each crossing.
 #include "core/storage/StoredSites.h"
 
+#include "core/detector/PositionTrail.h"
+
 #include <cmath>
 
 namespace tactiscope::core::storage {
@@ -10,11 +12,9 @@ std::optional<detector::PositionAt> storedPositionAt(SessionSource& store, std::
 {
     if (!store.parts(session).empty()) return std::nullopt;
     const auto channels = store.channels(session);
-    std::optional<std::size_t> found;
-    for (std::size_t i = 0; i < channels.size() && !found; ++i)
-        if (channels[i].descriptor.role == ChannelRole::Position) found = i;
-    for (std::size_t i = 0; i < channels.size() && !found; ++i)
-        if (!channels[i].descriptor.role && channels[i].descriptor.kind == ChannelKind::Position) found = i;
+    std::vector<ChannelDescriptor> descriptors;
+    for (const auto& c : channels) descriptors.push_back(c.descriptor);
+    const auto found = detector::positionChannel(descriptors);
     if (!found || !(channels[*found].sampleRate_hz > 0.0)) return std::nullopt;
     const double rate_hz = channels[*found].sampleRate_hz;
     const std::size_t channel = *found;

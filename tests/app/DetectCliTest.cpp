@@ -287,3 +287,42 @@ TEST(DetectSitesCli, APanelLinesPositionChannelPlacesItsDentWithinAMillimetre)
     ASSERT_EQ(analysed["sites"].toArray().size(), 1) << analyze.out.toStdString();
     EXPECT_NEAR(analysed["sites"].toArray()[0].toObject()["position_mm"].toDouble(), 30.0, 1.0);
 }
+
+// A CSV of a panel line with its encoder's column: `detect --position x`
+// places the dent (at +30 mm on the encoder's scale) within 1 mm and says
+// so, in the JSON and in the summary; the phases alone cannot place it (the
+// line rests between panels); a column that is not there is refused.
+TEST(DetectSitesCli, APositionColumnPlacesTheDentOfACsvWithinAMillimetre)
+{
+    QTemporaryDir dir;
+    const QString csv = dir.filePath("line.csv");
+    ASSERT_EQ(
+        runCli({"simulate", "--scenario", "panel-line", "--seconds", "20", "--seed", "3", "--output", csv}).exitCode,
+        0);
+    const CliResult placed = runCli({"detect", csv, "--json", "--spacing-mm", "15", "--position", "x"});
+    ASSERT_EQ(placed.exitCode, 0) << placed.err.toStdString();
+    const QJsonObject o = QJsonDocument::fromJson(placed.out.toUtf8()).object();
+    EXPECT_EQ(o["sites_method"].toString(), QStringLiteral("from the position channel")) << placed.out.toStdString();
+    const QJsonArray sites = o["sites"].toArray();
+    ASSERT_EQ(sites.size(), 1) << placed.out.toStdString();
+    EXPECT_EQ(sites[0].toObject()["kind"].toString(), QStringLiteral("site"));
+    EXPECT_NEAR(sites[0].toObject()["position_mm"].toDouble(), 30.0, 1.0) << placed.out.toStdString();
+    EXPECT_EQ(sites[0].toObject()["crossings"].toInt(), o["events"].toArray().size());
+
+    const CliResult summary = runCli({"detect", csv, "--spacing-mm", "15", "--position", "x"});
+    ASSERT_EQ(summary.exitCode, 0) << summary.err.toStdString();
+    EXPECT_TRUE(summary.out.contains(QStringLiteral("1 site (from the position channel):\n  1: 30.")))
+        << summary.out.toStdString();
+
+    const CliResult phases = runCli({"detect", csv, "--json", "--spacing-mm", "15"});
+    ASSERT_EQ(phases.exitCode, 0) << phases.err.toStdString();
+    EXPECT_TRUE(QJsonDocument::fromJson(phases.out.toUtf8())
+                    .object()["sites_method"]
+                    .toString()
+                    .startsWith(QStringLiteral("not placed")))
+        << phases.out.toStdString();
+
+    const CliResult missing = runCli({"detect", csv, "--position", "encoder"});
+    EXPECT_EQ(missing.exitCode, 2);
+    EXPECT_TRUE(missing.err.contains(QStringLiteral("has no column 'encoder'"))) << missing.err.toStdString();
+}

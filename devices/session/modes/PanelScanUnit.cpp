@@ -22,7 +22,7 @@ std::shared_ptr<core::detector::LiveDetection> detectorFor(const LiveUnitSetup& 
         settings.spacing_m = setup.panelSpacing_m;
         return std::make_shared<core::detector::LiveDetection>(
             *core::modeChannels(core::Mode::PanelScan, setup.channels), setup.rate_hz, settings, setup.displaySeconds,
-            core::detector::probeDecisionChannels(setup.channels));
+            core::detector::probeDecisionChannels(setup.channels), core::detector::positionChannel(setup.channels));
     } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(std::string("the surface-deflection detector cannot run on this stream: ") +
                                     e.what());

@@ -1,9 +1,10 @@
 // The panel-scan mode's live part: the surface-deflection detector on
 // cantilevers A and B, the panel's defects on the lists' clock, stored as
 // defect events while a panel scan records, and the automatic verdict on
-// the panel's sites at its end. A probe that sends its own decisions has
-// them recorded as the analysis "probe", a lasting disagreement as an
-// alarm, and their agreement in the verdict's grounds.
+// the panel's sites at its end, placed by the rig's position channel when
+// it has one. A probe that sends its own decisions has them recorded as
+// the analysis "probe", a lasting disagreement as an alarm, and their
+// agreement in the verdict's grounds.
 #pragma once
 
 #include "core/detector/DefectSites.h"
@@ -34,7 +35,12 @@ public:
 
     const std::shared_ptr<core::detector::LiveDetection>& detection() const { return m_detection; }
     const std::vector<core::detector::DefectEvent>& defects() const { return m_defects; }
-    core::detector::SiteGrouping sites() const { return core::detector::scanSites(m_defects); }
+    // Placed by the rig's position channel when the stream has one, as the
+    // stored session's are (core/storage/StoredSites.h).
+    core::detector::SiteGrouping sites() const
+    {
+        return core::detector::scanSites(m_defects, m_detection->placesByPosition());
+    }
     // Why the last recording got no verdict ("too short to judge (…)");
     // empty when it got one, and while recording.
     const std::string& notJudged() const { return m_notJudged; }

@@ -67,7 +67,7 @@ std::vector<DefectEvent> crossings(const Stroke& stroke, std::initializer_list<d
             // detector's delay after the centre was over the bump (0.80–0.89
             // of the lag measured through the detector on generated scans).
             const double middle = at + 0.85 * lag;
-            events.push_back({middle - 0.005, middle + 0.005, direction, 0.95, lag, kSpacing_m / lag});
+            events.push_back({middle - 0.005, middle + 0.005, direction, 0.95, lag, kSpacing_m / lag, std::nullopt});
         }
     }
     std::ranges::sort(events, {}, &DefectEvent::start_s);
@@ -83,9 +83,9 @@ std::vector<DefectEvent> withShortRuns(std::vector<DefectEvent> events)
         const auto& e = original[i];
         if (i % 3 == 0)
             events.push_back({e.end_s + 0.01, e.end_s + 0.01 + 0.001 * static_cast<double>(1 + i % 3), -e.direction,
-                              0.9, 0.05, 0.3});
+                              0.9, 0.05, 0.3, std::nullopt});
         if (i + 1 < original.size() && original[i + 1].direction != e.direction)
-            events.push_back({e.end_s + 0.05, e.end_s + 0.053, -e.direction, 0.88, 0.01, 1.5});
+            events.push_back({e.end_s + 0.05, e.end_s + 0.053, -e.direction, 0.88, 0.01, 1.5, std::nullopt});
     }
     std::ranges::sort(events, {}, &DefectEvent::start_s);
     return events;

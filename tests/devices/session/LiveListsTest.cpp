@@ -1,19 +1,22 @@
 // What the live views show is the live session's lists, on one clock, and
 // they agree with the record: each of the faults an operator met is
 // reproduced on the simulator (sped up) and checked against the store —
-// the defect list after a stop, the press times while recording, the grid
-// map's site at the record press, a profile chosen while pressing, a
-// stream met in a press held still; and a
-// device that declares nothing records in the general mode, or, given
-// roles, as a panel scan.
+// the defect list after a stop, a panel line's sites placed by its
+// encoder, the press times while recording, the grid map's site at the
+// record press, a profile chosen while pressing, a stream met in a press
+// held still; and a device that declares nothing records in the general
+// mode, or, given roles, as a panel scan.
 #include "core/ModeCapability.h"
 #include "core/compliance/LivePalpation.h"
 #include "core/sensors/BuiltInProfiles.h"
+#include "core/storage/DefectRecords.h"
 #include "core/storage/SessionStore.h"
+#include "core/storage/StoredSites.h"
 #include "devices/session/LiveSession.h"
 #include "devices/session/modes/PalpationUnit.h"
 #include "devices/session/modes/PanelScanUnit.h"
 #include "devices/simulator/PalpationScenario.h"
+#include "devices/simulator/PanelScanScenario.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/SimulatorSource.h"
 
@@ -122,6 +125,36 @@ TEST_F(LiveListsTest, AfterTheStopTheDefectListIsExactlyWhatWasStoredThenANewLis
     ASSERT_FALSE(liveUnit<PanelScanUnit>(session).defects().empty());
     for (const auto& e : liveUnit<PanelScanUnit>(session).defects())
         EXPECT_GT(e.end_s, recordingOrigin_s + summary->end_s - 0.5);
+}
+
+// The line's encoder places the live panel's sites as it places the stored
+// session's (issue 55): the count under the list, the verdict's sites and
+// `sessions show` agree, each site within a millimetre of the dent.
+TEST_F(LiveListsTest, APanelLinesEncoderPlacesTheLiveSitesAsTheStoredOnes)
+{
+    LiveSession session(simulator(devices::simulator::kPanelLineScenario.c_str()), optionsFor(file("s.tactiscope")));
+    session.start();
+    ASSERT_FALSE(session.startRecording({}));
+    ASSERT_TRUE(pollUntil(session, [&] { return liveUnit<PanelScanUnit>(session).defects().size() >= 6; }));
+    const auto summary = session.stopRecording();
+    ASSERT_TRUE(summary);
+
+    const auto live = liveUnit<PanelScanUnit>(session).sites();
+    EXPECT_EQ(live.method, "from the position channel");
+    ASSERT_EQ(live.sites.size(), 1u);
+    EXPECT_EQ(summary->sites, 1u);
+    const double dent_m = devices::simulator::PanelScanParameters{}.defectPosition_m;
+    ASSERT_EQ(live.sites[0].kind, core::detector::SiteKind::Site) << core::detector::siteText(live.sites[0]);
+    EXPECT_NEAR(*live.sites[0].position_m, dent_m, 0.001) << core::detector::siteText(live.sites[0]);
+
+    core::storage::SessionStore store(file("s.tactiscope"), core::storage::Database::Access::ReadOnly);
+    const auto defects = core::storage::defectEventsOf(store.events(summary->session));
+    const auto stored = core::storage::storedSites(store, summary->session, defects);
+    EXPECT_EQ(stored.method, live.method);
+    ASSERT_EQ(stored.sites.size(), 1u);
+    // The store keeps samples in binary32: 0.1 µm on a 100 mm stroke.
+    EXPECT_NEAR(*stored.sites[0].position_m, *live.sites[0].position_m, 1e-6);
+    EXPECT_EQ(stored.sites[0].crossings.size(), live.sites[0].crossings.size());
 }
 
 TEST_F(LiveListsTest, WhileRecordingPressTimesAreTheRecordingsAsStored)

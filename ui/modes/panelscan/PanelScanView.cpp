@@ -5,8 +5,6 @@
 
 #include "devices/session/modes/PanelScanUnit.h"
 
-#include "core/detector/DefectSites.h"
-
 #include "ui/common/DisplayUnits.h"
 #include "ui/common/FixedColumns.h"
 #include "ui/common/NumberText.h"
@@ -199,7 +197,7 @@ void PanelScanView::update(devices::session::LiveSession& session)
         m_notJudged = unit->notJudged();
         showCount();
     }
-    showDefects(unit->defects(), session.lists());
+    showDefects(*unit, session.lists());
     markOnTraces(unit->defects(), session.lists());
 }
 
@@ -261,9 +259,9 @@ void PanelScanView::applySettings()
     }
 }
 
-void PanelScanView::showDefects(const std::vector<core::detector::DefectEvent>& defects,
-                                const devices::session::LiveLists& lists)
+void PanelScanView::showDefects(const devices::session::PanelScanUnit& unit, const devices::session::LiveLists& lists)
 {
+    const auto& defects = unit.defects();
     const bool clockChanged = lists.clock != m_clock;
     m_clock = lists.clock;
     if (lists.generation != m_generation) {
@@ -281,9 +279,9 @@ void PanelScanView::showDefects(const std::vector<core::detector::DefectEvent>& 
                                 fixedText(e.peakLag_s * 1e3, 0),
                                 e.speed_m_per_s ? fixedText(*e.speed_m_per_s * 1e3, 0) : tr("—")};
         for (int c = 0; c < cells.size(); ++c) m_events->setItem(row, c, new QTableWidgetItem(cells[c]));
-        m_listed.push_back(e);
         raiseAlarm(e, e.start_s);
     }
+    m_siteCount = unit.sites().sites.size();
     m_events->scrollToBottom();
     showCount();
 }
@@ -328,7 +326,7 @@ void PanelScanView::calmAlarm()
 void PanelScanView::startPanel()
 {
     m_events->setRowCount(0);
-    m_listed.clear();
+    m_siteCount = 0;
     showCount();
 }
 
@@ -337,22 +335,17 @@ int PanelScanView::defectCount() const
     return m_events->rowCount();  // one row per defect of this panel
 }
 
-std::size_t PanelScanView::siteCount() const
-{
-    return core::detector::scanSites(m_listed).sites.size();
-}
-
 QString PanelScanView::countText() const
 {
     // Each crossing of a dent is an event; the sites are the dents.
     return defectCount() == 0
                ? defectCountText(0)
-               : tr("%1 at %2").arg(defectCountText(defectCount()), siteCountText(static_cast<int>(siteCount())));
+               : tr("%1 at %2").arg(defectCountText(defectCount()), siteCountText(static_cast<int>(m_siteCount)));
 }
 
 QString PanelScanView::verdictText() const
 {
-    return wordText(core::automaticVerdict(siteCount()));  // as the stored verdict counts
+    return wordText(core::automaticVerdict(m_siteCount));  // as the stored verdict counts
 }
 
 }  // namespace tactiscope::ui

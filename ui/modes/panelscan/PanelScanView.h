@@ -24,6 +24,10 @@ class QDoubleSpinBox;
 class QLabel;
 class QTableWidget;
 
+namespace tactiscope::devices::session {
+class PanelScanUnit;
+}
+
 namespace tactiscope::ui {
 
 class LivePlotWidget;
@@ -38,21 +42,20 @@ public:
     void bind(const devices::session::LiveSession* session) override;
     // The session's defects.
     void update(devices::session::LiveSession& session) override;
-    // Shows the panel's defects (the live session's list, on its clock):
-    // rows for those not listed yet, with the alarm; another generation is
-    // a new list. The count says whether they are the recording's, the
-    // stopped recording's as stored, or since connect and not recorded.
-    void showDefects(const std::vector<core::detector::DefectEvent>& defects, const devices::session::LiveLists& lists);
     int defectCount() const;
     LivePlotWidget* lanes() const override { return m_lanes; }
     void setTraces(LivePlotWidget* traces) override { m_traces = traces; }
 
 private:
+    // Shows the panel's defects (the live session's list, on its clock) at
+    // their sites: rows for those not listed yet, with the alarm; another
+    // generation is a new list. The count says whether they are the
+    // recording's, the stopped recording's as stored, or since connect and
+    // not recorded.
+    void showDefects(const devices::session::PanelScanUnit& unit, const devices::session::LiveLists& lists);
     void startPanel();
     void markOnTraces(const std::vector<core::detector::DefectEvent>& defects,
                       const devices::session::LiveLists& lists);
-    // The rows listed are crossings; the verdict counts the sites they make.
-    std::size_t siteCount() const;
     QString countText() const;  // "5 defects at 1 site"
     QString verdictText() const;
     void showCount();
@@ -83,7 +86,9 @@ private:
     QLabel* m_alarm = nullptr;
     QLabel* m_countLabel = nullptr;
     QTableWidget* m_events = nullptr;
-    std::vector<core::detector::DefectEvent> m_listed;  // the table's rows
+    // The rows listed are crossings; the verdict counts the sites they make
+    // (the unit's, placed as the stored session's are).
+    std::size_t m_siteCount = 0;
     QTimer m_alarmTimer;
     bool m_showing = false;  // showSettings() is filling the fields
 };
