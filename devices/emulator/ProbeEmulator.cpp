@@ -4,6 +4,7 @@
 #include "core/SampleBlock.h"
 #include "core/Version.h"
 #include "devices/protocol/BinaryDecoder.h"
+#include "devices/simulator/ClockMark.h"
 #include "devices/simulator/LoadSweep.h"
 #include "devices/simulator/ScenarioCatalog.h"
 
@@ -221,13 +222,9 @@ double ProbeEmulator::takenAt_s(std::uint64_t index) const
 
 void ProbeEmulator::addMark(core::SampleBlock& block) const
 {
-    if (!m_options.markAt_s || block.channelCount() == 0) return;
-    auto values = block.channel(0);
-    const double halfWidth_s = markHalfWidth_s(m_rate_hz);
-    for (std::size_t s = 0; s < values.size(); ++s) {
-        const double x = (takenAt_s(block.firstSampleIndex() + s) - *m_options.markAt_s) / halfWidth_s;
-        if (std::abs(x) <= 1.0) values[s] += kMarkHeight * x;
-    }
+    if (m_options.markAt_s)
+        simulator::addClockMark(block, *m_options.markAt_s, m_rate_hz,
+                                [this](std::uint64_t index) { return takenAt_s(index); });
 }
 
 // The scenario's samples; under a sweep one at a time, each with the load

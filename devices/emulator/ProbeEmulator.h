@@ -39,14 +39,6 @@ namespace tactiscope::devices::emulator {
 // face, so it names every defect's direction the wrong way round.
 enum class EmulatorFault { None, Restart, SequenceJump, FrozenSequence, WrongDecisions };
 
-inline constexpr double kMarkHeight = 1e-3;
-// The mark's half-width: 10 ms, or two and a half sample periods of a slower
-// device, so that its ramp holds samples either side of its zero at any rate.
-inline double markHalfWidth_s(double rate_hz)
-{
-    return std::max(0.01, 2.5 / rate_hz);
-}
-
 struct EmulatorOptions {
     std::string linkPath;
     WireProtocol protocol = WireProtocol::Binary;
@@ -70,9 +62,7 @@ struct EmulatorOptions {
     double clockDrift = 0.0;
     double clockOffset_s = 0.0;
     // A mark at this instant of the host's steady clock (CLOCK_MONOTONIC,
-    // seconds): the first channel ramps from −kMarkHeight to +kMarkHeight
-    // over markHalfWidth_s either side of it, on top of the scenario, by
-    // the host instant each sample is taken at. Two emulators given one
+    // seconds; devices/simulator/ClockMark.h). Two emulators given one
     // instant mark one event, to see aligned in the session (issue 40).
     std::optional<double> markAt_s = std::nullopt;
     // A calibration sweep (devices/simulator/LoadSweep.h) begun at this

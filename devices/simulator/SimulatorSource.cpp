@@ -3,6 +3,7 @@
 
 #include "core/SampleBlock.h"
 #include "core/Version.h"
+#include "devices/simulator/ClockMark.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +21,9 @@ SimulatorSource::SimulatorSource(std::unique_ptr<SimulatedScenario> scenario, co
     if (!m_scenario) throw std::invalid_argument("simulator needs a scenario");
     if (m_options.samplesPerBlock == 0) throw std::invalid_argument("simulator needs at least one sample per block");
     if (!(m_options.speed > 0.0)) throw std::invalid_argument("simulator speed must be positive");
+    if (m_options.markAt_s && m_options.pacing != Pacing::RealTime)
+        throw std::invalid_argument(
+            "a simulator's clock mark needs real-time pacing: unpaced, no host instant is known");
     if (m_options.duration_s) {
         if (!(*m_options.duration_s >= 0.0)) throw std::invalid_argument("simulation duration must not be negative");
         m_totalSamples = static_cast<std::uint64_t>(std::llround(*m_options.duration_s * m_scenario->sampleRate_hz()));
@@ -67,6 +71,12 @@ ReadStatus SimulatorSource::readBlock(core::SampleBlock& out, std::chrono::milli
     out = core::SampleBlock(m_scenario->channels().size(), count, static_cast<double>(m_produced) * dt_s, dt_s,
                             m_produced, m_sequence++);
     m_scenario->generate(out);
+    if (m_options.markAt_s) {
+        const double start_s = m_start_host_s;
+        simulator::addClockMark(out, *m_options.markAt_s, m_scenario->sampleRate_hz(), [&](std::uint64_t k) {
+            return start_s + static_cast<double>(k + 1) * dt_s / m_options.speed;  // as hostClock() maps it
+        });
+    }
     {
         const std::lock_guard lock(m_shuntMutex);
         m_shunts.apply(out);

@@ -32,12 +32,15 @@ struct SimulatorOptions {
     // Real-time pacing only: simulated seconds per wall-clock second, so a
     // test can walk through a minute-long calibration in seconds.
     double speed = 1.0;
+    // Real-time pacing only: a mark at this instant of the host's steady
+    // clock (seconds; ClockMark.h), by the instants hostClock() states.
+    std::optional<double> markAt_s = std::nullopt;
 };
 
 class SimulatorSource final : public BlockSource {
 public:
     // Throws std::invalid_argument for a null scenario, zero samples per block,
-    // a negative duration or a non-positive speed.
+    // a negative duration, a non-positive speed or a mark without pacing.
     SimulatorSource(std::unique_ptr<SimulatedScenario> scenario, const SimulatorOptions& options = {});
 
     std::string name() const override;

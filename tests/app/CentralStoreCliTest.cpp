@@ -12,6 +12,7 @@
 #include "core/storage/central/PgConnection.h"
 #include "devices/session/SessionOfDevices.h"
 #include "support/CliRunner.h"
+#include "support/EmulatorProcess.h"
 #include "support/FileBytes.h"
 #include "support/PostgresServer.h"
 #include "support/StationStore.h"
@@ -233,6 +234,32 @@ TEST_F(CentralStoreCli, ASessionNotJudgedSaysWhyOnTheServerAsOnTheStation)
             EXPECT_EQ(sessions[0].toObject()["unjudged"].toString(), QString::fromStdString(why));
         }
     }
+    expectSameExports(line, server("quality"));
+}
+
+// A panel line's recording through TSP/1 with its encoder (issue 55): the
+// reviewer on the server reads the same sites as the station, placed by
+// the stored position channel, the dent at +30 mm within 1 mm.
+TEST_F(CentralStoreCli, APanelLinesSitesFromItsEncoderAreTheSameOnTheServer)
+{
+    const QString line = m_dir.filePath("line.tactiscope");
+    const CliResult record = tactiscope::testing::recordEmulated(m_dir.path(), line, QStringLiteral("panel-line"), 16);
+    ASSERT_EQ(record.exitCode, 0) << record.err.toStdString();
+    const CliResult sent = sync(line, server("press_a"));
+    ASSERT_EQ(sent.exitCode, 0) << sent.err.toStdString();
+    QJsonArray sites[2];
+    for (int i = 0; i < 2; ++i) {
+        const QString db = i == 0 ? line : server("quality");
+        SCOPED_TRACE(db.toStdString());
+        const CliResult shown = runCli({"sessions", "--db", db, "show", "last", "--json"});
+        ASSERT_EQ(shown.exitCode, 0) << shown.err.toStdString();
+        const QJsonObject o = QJsonDocument::fromJson(shown.out.toUtf8()).object();
+        EXPECT_EQ(o["sites_method"].toString(), QStringLiteral("from the position channel")) << shown.out.toStdString();
+        sites[i] = o["sites"].toArray();
+        ASSERT_EQ(sites[i].size(), 1) << shown.out.toStdString();
+        EXPECT_NEAR(sites[i][0].toObject()["position_mm"].toDouble(), 30.0, 1.0) << shown.out.toStdString();
+    }
+    EXPECT_EQ(sites[0], sites[1]);
     expectSameExports(line, server("quality"));
 }
 

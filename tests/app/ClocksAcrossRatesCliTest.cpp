@@ -12,8 +12,8 @@
 // twice their stated relative uncertainty, which holds a sample period of
 // each device (where within its period a sample is taken, no arrival tells).
 #include "devices/SteadyClock.h"
-#include "devices/emulator/ProbeEmulator.h"
 #include "support/CliRunner.h"
+#include "support/ClockMarks.h"
 #include "support/EmulatorProcess.h"
 
 #include "core/storage/SessionStore.h"
@@ -33,7 +33,10 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <vector>
 
+using tactiscope::testing::markTime_s;
+using tactiscope::testing::roughMark_s;
 using tactiscope::testing::runCli;
 using tactiscope::testing::sessionIdIn;
 using tactiscope::testing::startEmulator;
@@ -47,49 +50,12 @@ struct Device {
     QStringList extra;
 };
 
-// Where the mark's ramp crosses the level before it: a least-squares line
-// through the samples within 0.6 of its half-width of `near_s` (a first
-// estimate: all of them on the ramp), on the times given.
-std::optional<double> markTime_s(const QJsonArray& t, const QJsonArray& values, double near_s, double halfWidth_s)
+std::vector<double> numbers(const QJsonArray& array)
 {
-    double level = 0.0;
-    int quiet = 0;
-    for (qsizetype i = 0; i < t.size(); ++i) {
-        const double ti = t[i].toDouble();
-        if (ti > near_s - 2.0 * halfWidth_s - 0.5 && ti < near_s - 2.0 * halfWidth_s) {
-            level += values[i].toDouble();
-            ++quiet;
-        }
-    }
-    if (quiet == 0) return std::nullopt;
-    level /= quiet;
-    double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-    for (qsizetype i = 0; i < t.size(); ++i) {
-        const double x = t[i].toDouble() - near_s, y = values[i].toDouble() - level;
-        if (std::abs(x) > 0.6 * halfWidth_s) continue;
-        n += 1.0;
-        sx += x;
-        sy += y;
-        sxx += x * x;
-        sxy += x * y;
-    }
-    if (n < 2.0) return std::nullopt;
-    const double slope = (sxy - sx * sy / n) / (sxx - sx * sx / n);
-    const double intercept = (sy - slope * sx) / n;
-    return near_s - intercept / slope;
-}
-
-// The first estimate: where the fastest device's samples step through the
-// level, between the two samples around it.
-std::optional<double> roughMark_s(const QJsonArray& t, const QJsonArray& values)
-{
-    for (qsizetype i = 1; i + 1 < values.size(); ++i) {
-        const double a = values[i].toDouble() - values[0].toDouble(),
-                     b = values[i + 1].toDouble() - values[0].toDouble();
-        if (a < 0.0 && b >= 0.0 && b - a > 0.05 * tactiscope::devices::emulator::kMarkHeight)
-            return t[i].toDouble() + (0.0 - a) / (b - a) * (t[i + 1].toDouble() - t[i].toDouble());
-    }
-    return std::nullopt;
+    std::vector<double> values;
+    values.reserve(static_cast<std::size_t>(array.size()));
+    for (const auto& v : array) values.push_back(v.toDouble());
+    return values;
 }
 
 }  // namespace
@@ -149,16 +115,16 @@ TEST(ClocksAcrossRatesCli, DevicesAtTenToAThousandHertzMarkOneInstantWithinHalfA
     const auto samples = QJsonDocument::fromJson(file.readAll()).object().value(QStringLiteral("samples")).toObject();
     // Where the mark lies roughly, from the fastest device's samples.
     std::array<double, 4> marks{};
-    const auto rough = roughMark_s(samples.value("fastest").toObject().value("t").toArray(),
-                                   samples.value("fastest").toObject().value("force").toArray());
+    const auto rough = roughMark_s(numbers(samples.value("fastest").toObject().value("t").toArray()),
+                                   numbers(samples.value("fastest").toObject().value("force").toArray()));
     ASSERT_TRUE(rough) << "the mark was not recorded";
     for (std::size_t i = 0; i < devices.size(); ++i) {
         const auto device = samples.value(QString::fromLatin1(devices[i].name)).toObject();
-        const double halfWidth_s = tactiscope::devices::emulator::markHalfWidth_s(devices[i].rate_hz);
-        const auto found =
-            markTime_s(device.value("t").toArray(), device.value("force").toArray(), *rough, halfWidth_s);
+        const double halfWidth_s = tactiscope::devices::simulator::markHalfWidth_s(devices[i].rate_hz);
+        const auto found = markTime_s(numbers(device.value("t").toArray()), numbers(device.value("force").toArray()),
+                                      *rough, halfWidth_s);
         ASSERT_TRUE(found) << devices[i].name;
-        marks[i] = *found;
+        marks[i] = found->t_s;
         std::printf("%s (%g Hz): mark at %.6f s, ± %.3f ms\n", devices[i].name, devices[i].rate_hz, marks[i],
                     *clocks[i].uncertainty_s(0.0) * 1e3);
     }
