@@ -3,15 +3,18 @@
 
 #include "CliSupport.h"
 #include "DetectorOptions.h"
+#include "core/UnitScale.h"
 #include "core/detector/CsvDetection.h"
 #include "core/detector/ProbeScanFiles.h"
 #include "core/io/CsvColumns.h"
+#include "core/io/CsvReader.h"
 #include "core/storage/Database.h"
 #include "core/storage/SafeOutput.h"
 #include "core/text/JsonWriter.h"
 
 #include <QTextStream>
 
+#include <algorithm>
 #include <iostream>
 
 namespace tactiscope::cli {
@@ -62,9 +65,39 @@ std::optional<QString> readOptions(const QCommandLineParser& parser, DetectOptio
     if (!options.probeInput.isEmpty() && (!options.output.isEmpty() || !options.probeDecisions.isEmpty()))
         return QStringLiteral("--probe-input writes the emulated probe's input, nothing else");
     if (options.position && (!options.probeInput.isEmpty() || !options.probeDecisions.isEmpty()))
-        return QStringLiteral("--position places the sites detect finds, not the emulated probe's files");
+        return QStringLiteral("--position goes with detecting: --probe-input and --probe-decisions write files");
     if (!options.probeDecisions.isEmpty() && options.output.isEmpty())
         return QStringLiteral("--probe-decisions goes with --output OUT.csv, the rows it makes");
+    return std::nullopt;
+}
+
+// Refuses a --position column that holds no length ("t [s]", "a
+// [strain]"); a length in another unit than m ("x [mm]") the column
+// reader refuses, as it reads SI only.
+void checkPositionColumn(const std::string& path, const std::string& column)
+{
+    const std::vector<std::string> headers = core::io::CsvReader(path).header();
+    for (const std::string& header : headers) {
+        const auto [name, unit] = core::io::splitColumnHeader(header);
+        const auto physical = core::physicalUnit(unit);
+        if ((header == column || name == column) && !unit.empty() &&
+            (!physical || physical->kind != core::ChannelKind::Position))
+            throw core::detector::CsvDetectionError(
+                "'" + path + "': --position " + column + ": the column " + core::io::quotedForMessage(header) +
+                " holds no length; the position is the probe's place along its stroke, in m");
+    }
+}
+
+// A length column of the file that detect was not told of: the rig's
+// position, most likely, which would place the sites exactly.
+std::optional<std::string> unusedLengthColumn(const std::string& path, const std::vector<std::string>& used)
+{
+    const std::vector<std::string> headers = core::io::CsvReader(path).header();
+    for (const std::string& header : headers) {
+        const auto [name, unit] = core::io::splitColumnHeader(header);
+        if (unit == "m" && std::ranges::find(used, name) == used.end() && std::ranges::find(used, header) == used.end())
+            return name;
+    }
     return std::nullopt;
 }
 
@@ -122,7 +155,10 @@ int runDetect(const QStringList& arguments)
     QCommandLineParser parser;
     parser.setApplicationDescription(
         QStringLiteral("Run the surface-deflection detector (partial correlation, seed 000) over a CSV recording.\n"
-                       "INPUT.csv has a header and columns t,a,b (t in seconds, a and b dimensionless strain)."));
+                       "INPUT.csv has a header and columns t,a,b (t in seconds, a and b dimensionless strain).\n"
+                       "The summary lists the events and the defect sites they make. Without --spacing-mm the "
+                       "events have no scan speed and their sites no place by phase (analyze and a live "
+                       "recording take the prototype's 15 mm); --position places them by the rig's encoder."));
     parser.addPositionalArgument(QStringLiteral("INPUT.csv"), QStringLiteral("The recording."));
     parser.addOptions({
         {QStringLiteral("columns"), QStringLiteral("Time and cantilever columns, in probe order (default t,a,b)."),
@@ -130,8 +166,8 @@ int runDetect(const QStringList& arguments)
         {QStringLiteral("output"), QStringLiteral("Write t,out,rab,rba,lag_ab_ms,lag_ba_ms per sample to OUT.csv."),
          QStringLiteral("OUT.csv")},
         {QStringLiteral("position"),
-         QStringLiteral("The rig's position column (an encoder along the stroke, in metres): each crossing is placed "
-                        "where it says, not by its phase (docs/detector.md)."),
+         QStringLiteral("The rig's position column (an encoder along the stroke, in m): each crossing is placed "
+                        "where it says, on its scale, not by its phase from the stroke's centre (docs/detector.md)."),
          QStringLiteral("X")},
         {QStringLiteral("engine"),
          QStringLiteral("workstation (default: double precision) or probe (the probe's own single-precision "
@@ -166,7 +202,13 @@ int runDetect(const QStringList& arguments)
                                                    options.detector.spacing_m, options.detector.threads,
                                                    options.detector.engine};
     const std::string input = options.input.toStdString();
+    std::optional<std::string> unusedLength;
+    double positionSpan_m = 0.0;
     const int exit = scanExitCode([&] {
+        if (options.position)
+            checkPositionColumn(input, *options.position);
+        else
+            unusedLength = unusedLengthColumn(input, options.columns);
         if (options.output.isEmpty()) {
             result = core::detector::detectCsv(input, options.columns, settings);
         } else {
@@ -182,10 +224,18 @@ int runDetect(const QStringList& arguments)
             });
         }
         if (options.position)
-            core::detector::stampCsvPositions(input, options.columns.front(), *options.position, result.interval_s,
-                                              result.events);
+            positionSpan_m = core::detector::stampCsvPositions(input, options.columns.front(), *options.position,
+                                                               result.interval_s, result.events);
     });
     if (exit != kExitOk) return exit;
+    if (positionSpan_m > core::detector::kMaxStroke_m)
+        std::cerr << "note: the column '" << *options.position << "' spans " << positionSpan_m
+                  << " m, more than a panel probe's stroke (" << core::detector::kMaxStroke_m
+                  << " m): is it in m? Its sites are placed as it says\n";
+    if (unusedLength)
+        std::cerr << "note: the column '" << *unusedLength
+                  << "' is a length: if it is the rig's position along the stroke, --position " << *unusedLength
+                  << " places each site where it says\n";
     const auto sites = core::detector::scanSites(result.events, options.position.has_value());
     const DetectionOutput output{result.samples, result.lags, result.detectorSeconds, result.events, sites};
     if (options.detector.json)

@@ -32,11 +32,7 @@ std::optional<std::int64_t> resolveSession(core::storage::SessionSource& store, 
 {
     std::optional<std::int64_t> id;
     if (text == QLatin1String("last")) {
-        // The session stored last (the store's ids count up), whatever the
-        // host's clock said when it began: a clock set back, an import of an
-        // old export.
-        const auto sessions = store.sessions();
-        if (!sessions.empty()) id = std::ranges::max_element(sessions, {}, &core::storage::SessionSummary::id)->id;
+        id = store.lastSession();
     } else if (text.size() == 36 && text.count(QLatin1Char('-')) == 4) {  // a uuid: 8-4-4-4-12 hex digits
         id = store.sessionWithUuid(text.toStdString());
     } else {

@@ -8,11 +8,13 @@
 #include "core/modes/ModeDefinition.h"
 #include "core/report/VerdictTrail.h"
 #include "core/sensors/SensorProfile.h"
+#include "core/storage/DefectRecords.h"
 #include "core/storage/OpenSessionSource.h"
 #include "core/storage/Schema.h"
 #include "core/storage/SessionExport.h"
 #include "core/storage/SessionSource.h"
 #include "core/storage/SessionStore.h"
+#include "core/storage/StoredSites.h"
 #include "core/text/JsonWriter.h"
 #include "core/timing/ClockMappingText.h"
 
@@ -69,9 +71,23 @@ QString verdictCell(const core::storage::SessionSummary& s)
     return s.unjudged.empty() ? QStringLiteral("—") : QStringLiteral("not judged");
 }
 
-int list(SessionSource& store, const core::storage::SessionFilter& filter, bool json)
+// The list's length when no --limit or --all says: a screenful or two,
+// whatever the store's size (a central store holds millions).
+constexpr std::size_t kDefaultListed = 100;
+
+// One page of the list (`filter.limit` of them; 0: all); a note on
+// standard error says how to go on when more match.
+int list(SessionSource& store, core::storage::SessionFilter filter, bool json)
 {
-    const auto sessions = store.sessions(filter);
+    const std::size_t page = filter.limit;
+    if (page > 0) filter.limit = page + 1;  // one more: whether there are more
+    auto sessions = store.sessions(filter);
+    const bool more = page > 0 && sessions.size() > page;
+    if (more) {
+        sessions.resize(page);
+        std::cerr << "note: more sessions match: --after " << sessions.back().id << " lists the next " << page
+                  << ", --limit N more at once, --all every one\n";
+    }
     if (json) {
         core::text::JsonWriter out;
         out.beginArray();
@@ -238,6 +254,16 @@ int show(SessionSource& store, std::int64_t id, bool json)
         if (!channels.empty()) out << " at " << channels.front().sampleRate_hz << " Hz";
         out << '\n';
     };
+    // A panel scan's defects at their sites, each placed with its ± and
+    // how (core/storage/StoredSites.h), as `--json` gives them.
+    const auto sites = [&](std::int64_t of) {
+        const auto defects = core::storage::defectEventsOf(store.events(of));
+        if (defects.empty()) return;
+        const auto grouping = core::storage::storedSites(store, of, defects);
+        line("sites", std::to_string(grouping.sites.size()) + " (" + grouping.method + ")");
+        for (std::size_t i = 0; i < grouping.sites.size(); ++i)
+            line("", "  " + std::to_string(i + 1) + ": " + core::detector::siteText(grouping.sites[i]));
+    };
     const auto parts = store.parts(id);
     if (parts.empty()) device(s.metadata, id);
     std::size_t partEvents = 0;
@@ -251,6 +277,7 @@ int show(SessionSource& store, std::int64_t id, bool json)
         line("clock", core::timing::clockMappingText(part.clockJson));
         line("events", eventsText(store, part.id));
         listEvents(out, store.events(part.id));
+        sites(part.id);
         const auto partReadings = store.readings(part.id);
         line("readings", std::to_string(partReadings.size()));
         listReadings(out, partReadings);
@@ -260,7 +287,10 @@ int show(SessionSource& store, std::int64_t id, bool json)
     // A session of several devices keeps its events in its parts.
     line("events", parts.empty() ? eventsText(store, id)
                                  : std::to_string(eventCount(store, id) + partEvents) + " with its parts'");
-    if (parts.empty()) listEvents(out, store.events(id));
+    if (parts.empty()) {
+        listEvents(out, store.events(id));
+        sites(id);
+    }
     const auto readings = store.readings(id);
     line("readings", std::to_string(readings.size()));
     listReadings(out, readings);
@@ -358,8 +388,9 @@ int runSessions(const QStringList& arguments)
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
         "Inspect a session store.\n"
-        "  list                     the sessions, newest first (filters: --mode, --subject, --operator,\n"
-        "                           --verdict, --from, --before, --search)\n"
+        "  list                     the sessions, newest first, 100 at a time (filters: --mode, --subject,\n"
+        "                           --operator, --verdict, --from, --before, --search; pages: --limit,\n"
+        "                           --after, --all)\n"
         "  show ID|UUID|last        one session's metadata, channels and losses\n"
         "  export ID|UUID|last --format csv|json --output PATH [--derived]\n"
         "                           CSV: t then the channels (metadata in PATH's .meta.json); JSON: all;\n"
@@ -394,6 +425,12 @@ int runSessions(const QStringList& arguments)
         {QStringLiteral("search"),
          QStringLiteral("list: text in subject, operator, site, notes, verdict (or why none) or serial."),
          QStringLiteral("TEXT")},
+        {QStringLiteral("limit"),
+         QStringLiteral("list: at most N sessions (default 100; a note on standard error says when more match)."),
+         QStringLiteral("N")},
+        {QStringLiteral("after"), QStringLiteral("list: the next page, the sessions listed after session ID."),
+         QStringLiteral("ID")},
+        {QStringLiteral("all"), QStringLiteral("list: every session that matches, however many.")},
         {QStringLiteral("by"), QStringLiteral("verdict: who decides it (required)."), QStringLiteral("NAME")},
         {QStringLiteral("note"), QStringLiteral("verdict: why."), QStringLiteral("TEXT")},
     });
@@ -424,6 +461,10 @@ int runSessions(const QStringList& arguments)
             return usageError(QStringLiteral("--format must be csv or json"), usage);
         if (!parser.isSet(QStringLiteral("output")))
             return usageError(QStringLiteral("--output PATH is required"), usage);
+        if (parser.value(QStringLiteral("output")) == QLatin1String("-"))
+            return usageError(QStringLiteral("--output names a file, not standard output (-): an export is written "
+                                             "whole or not at all, a CSV's metadata beside it"),
+                              usage);
         if (parser.isSet(QStringLiteral("derived")) && format != QLatin1String("csv"))
             return usageError(QStringLiteral("--derived goes with --format csv"), usage);
     }
@@ -457,6 +498,26 @@ int runSessions(const QStringList& arguments)
             filter.startedFrom = value("from");
             filter.startedBefore = value("before");
             filter.text = value("search");
+            if (parser.isSet(QStringLiteral("limit")) && parser.isSet(QStringLiteral("all")))
+                return usageError(QStringLiteral("--limit and --all: say one"), usage);
+            filter.limit = kDefaultListed;
+            if (parser.isSet(QStringLiteral("all"))) filter.limit = 0;
+            if (parser.isSet(QStringLiteral("limit"))) {
+                bool ok = false;
+                const qlonglong limit = parser.value(QStringLiteral("limit")).toLongLong(&ok);
+                if (!ok || limit < 1)
+                    return usageError(QStringLiteral("--limit must be a whole number of sessions, 1 or more"), usage);
+                filter.limit = static_cast<std::size_t>(limit);
+            }
+            if (parser.isSet(QStringLiteral("after"))) {
+                bool ok = false;
+                filter.after = parser.value(QStringLiteral("after")).toLongLong(&ok);
+                if (!ok || !store.session(*filter.after))
+                    return usageError(
+                        QStringLiteral("--after names a listed session's id: there is no session %1 in %2")
+                            .arg(quoted(parser.value(QStringLiteral("after"))), toQString(db)),
+                        usage);
+            }
             return list(store, filter, parser.isSet(QStringLiteral("json")));
         }
         const auto id = resolveSession(store, positional[1]);

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <numeric>
@@ -68,6 +70,8 @@ public:
         std::size_t stroke = 0;
         std::optional<int> lastDirection;
         double farthest = 0.0;
+        double lowest = std::numeric_limits<double>::infinity();
+        double highest = -lowest;
         for (const std::size_t i : m_order) {
             if (!isCrossing(i)) continue;
             if (lastDirection && m_events[i].direction != 0 && m_events[i].direction != *lastDirection) ++stroke;
@@ -77,8 +81,21 @@ public:
             m_places.position_m[i] = *x;
             m_places.stroke[i] = stroke;
             farthest = std::max(farthest, std::abs(*x));
+            lowest = std::min(lowest, *x);
+            highest = std::max(highest, *x);
         }
         m_places.halfStroke_m = farthest;
+        // An encoder read in the wrong unit (mm taken for m) spreads the
+        // crossings over more than any panel probe strokes: placed as it
+        // says, with the doubt said.
+        if (highest - lowest > kMaxStroke_m) {
+            char text[160];
+            std::snprintf(text, sizeof text,
+                          " (its crossings lie %.3g m apart, more than a panel probe's stroke of %.0f m: is the "
+                          "channel in m?)",
+                          highest - lowest, kMaxStroke_m);
+            m_places.model += text;
+        }
         return std::move(m_places);
     }
 
@@ -362,12 +379,15 @@ private:
                 if (x) x = std::clamp(*x, -longest_m, longest_m);
             break;
         }
-        m_places.model = m_places.shape == StrokeShape::ConstantSpeed ? "scan speed, constant-speed strokes"
+        // Places by phase count from the stroke's centre: said, as an
+        // encoder's count from its own zero.
+        m_places.model = m_places.shape == StrokeShape::ConstantSpeed
+                             ? "scan speed, constant-speed strokes, from the stroke's centre"
                          : m_places.shape == StrokeShape::Harmonic
-                             ? "scan speed, harmonic strokes"
-                             : "scan speed, harmonic strokes assumed (the crossings' speeds do not tell the "
-                               "stroke's shape: one dent, or speeds that fit either); a machine's constant-speed "
-                               "stroke would put each site nearer the centre, and its ± counts that";
+                             ? "scan speed, harmonic strokes, from the stroke's centre"
+                             : "scan speed, harmonic strokes assumed, from the stroke's centre (the crossings' speeds "
+                               "do not tell the stroke's shape: one dent, or speeds that fit either); a machine's "
+                               "constant-speed stroke would put each site nearer the centre, and its ± counts that";
     }
 
     struct Pairing {

@@ -117,9 +117,11 @@ CsvDetection detectCsv(const std::string& path, const std::vector<std::string>& 
     return result;
 }
 
-void stampCsvPositions(const std::string& path, const std::string& timeColumn, const std::string& positionColumn,
-                       double interval_s, std::vector<DefectEvent>& events)
+double stampCsvPositions(const std::string& path, const std::string& timeColumn, const std::string& positionColumn,
+                         double interval_s, std::vector<DefectEvent>& events)
 {
+    double lowest = std::numeric_limits<double>::infinity();
+    double highest = -lowest;
     std::vector<std::size_t> order(events.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::ranges::sort(order, {}, [&](std::size_t i) { return sites::crossingTime(events[i]); });
@@ -135,10 +137,15 @@ void stampCsvPositions(const std::string& path, const std::string& timeColumn, c
             events[*next].position_m = trail.at(sites::crossingTime(events[*next]));
     };
     while (const std::size_t n = reader.read(kRows, block, lines)) {
-        for (std::size_t r = 0; r < n; ++r) trail.push(block[0][r], block[1][r]);
+        for (std::size_t r = 0; r < n; ++r) {
+            trail.push(block[0][r], block[1][r]);
+            lowest = std::min(lowest, block[1][r]);
+            highest = std::max(highest, block[1][r]);
+        }
         stampUpTo(block[0][n - 1]);
     }
     stampUpTo(std::numeric_limits<double>::infinity());  // past the last row: none
+    return highest >= lowest ? highest - lowest : 0.0;
 }
 
 }  // namespace tactiscope::core::detector

@@ -78,8 +78,9 @@ CsvDetection detectCsv(const std::string& path, const std::vector<std::string>& 
 // Each event's position_m at its crossing from the rig's position column
 // (`detect --position`, in metres along the stroke), read in a second pass
 // with the time column a block at a time, so the file's size does not
-// matter. Throws io::CsvError.
-void stampCsvPositions(const std::string& path, const std::string& timeColumn, const std::string& positionColumn,
-                       double interval_s, std::vector<DefectEvent>& events);
+// matter. Returns how far the column spans (m): a span beyond any stroke
+// is a column in another unit. Throws io::CsvError.
+double stampCsvPositions(const std::string& path, const std::string& timeColumn, const std::string& positionColumn,
+                         double interval_s, std::vector<DefectEvent>& events);
 
 }  // namespace tactiscope::core::detector

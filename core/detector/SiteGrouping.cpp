@@ -406,12 +406,14 @@ SiteGrouping groupSites(std::span<const DefectEvent> events, const CrossingPlace
         if (owner && siteOf.contains(*owner)) countWith(siteOf.at(*owner), i);
     }
     const auto explained = std::ranges::find_if(grouping.sites, [](const auto& s) { return !s.unplacedWhy.empty(); });
-    grouping.method = events.empty()                      ? "no defects"
-                      : placedSites > 0                   ? places.model
-                      : explained != grouping.sites.end() ? "not placed: " + explained->unplacedWhy
-                      : mirrored ? "not placed: one stroke out and back, each dent crossed once each way"
-                      : places.model.rfind("not placed", 0) == 0 ? places.model
-                                                                 : "not placed";
+    grouping.method =
+        events.empty()    ? "no defects"
+        : placedSites > 0 ? places.model
+        : explained != grouping.sites.end()
+            ? (places.fromPosition ? places.model + ", " : std::string()) + "not placed: " + explained->unplacedWhy
+        : mirrored ? "not placed: one stroke out and back, each dent crossed once each way"
+        : places.model.rfind("not placed", 0) == 0 ? places.model
+                                                   : "not placed";
     return grouping;
 }
 

@@ -12,20 +12,24 @@ namespace {
 // SI unit ("t [s]", "a [strain]", "force_n [N]"), whose numbers read as
 // they are. A header with another unit ("t [ms]") is refused rather than
 // read a thousand times off.
+// Named with its unit ("t [ms]"), it is refused the same way.
 std::size_t columnOf(const CsvReader& reader, const std::string& name)
 {
     const auto& header = reader.header();
-    for (std::size_t c = 0; c < header.size(); ++c)
-        if (header[c] == name) return c;
-    for (std::size_t c = 0; c < header.size(); ++c) {
+    const auto siOnly = [&](std::size_t c) {
         const ColumnHeader split = splitColumnHeader(header[c]);
-        if (split.name != name || split.unit.empty()) continue;
+        if (split.unit.empty()) return c;
         for (const char* si : {"s", "m", "N", "F", "strain", "count"})
             if (split.unit == si) return c;
         throw CsvError("'" + reader.path() + "': the column " + quotedForMessage(header[c]) + " is in " +
-                       quotedForMessage(split.unit) + "; this command reads " + quotedForMessage(name) +
+                       quotedForMessage(split.unit) + "; this command reads " + quotedForMessage(split.name) +
                        " in SI units (s, m, N, F or strain)");
-    }
+    };
+    for (std::size_t c = 0; c < header.size(); ++c)
+        if (header[c] == name) return siOnly(c);
+    for (std::size_t c = 0; c < header.size(); ++c)
+        if (const ColumnHeader split = splitColumnHeader(header[c]); split.name == name && !split.unit.empty())
+            return siOnly(c);
     return reader.column(name);  // throws, naming the columns there are
 }
 

@@ -81,6 +81,10 @@ struct SessionFilter {
     std::optional<Verdict> verdict;
     std::string text;       // found in subject, operator, site, notes, verdict, why none, or device serial (any case)
     std::size_t limit = 0;  // only the newest this many; 0: all
+    // The next page: only those listed after this session, in the list's
+    // order (older by start, then by id): keyset paging, which stays as
+    // fast on the last page as on the first.
+    std::optional<std::int64_t> after;
 };
 
 // Why `what` ("a report"), which reads one device's samples, cannot take
@@ -161,6 +165,11 @@ public:
     virtual std::vector<SessionSummary> sessions(const SessionFilter& filter = {}) = 0;  // newest first
     virtual std::optional<SessionSummary> session(std::int64_t id) = 0;
     virtual std::optional<std::int64_t> sessionWithUuid(const std::string& uuid) = 0;
+    // The session stored last (the store's ids count up, whatever the host's
+    // clock said when it began: a clock set back, an import of an old
+    // export), of one device or of several (never a part): one indexed row
+    // however large the store. None in an empty store.
+    virtual std::optional<std::int64_t> lastSession() = 0;
     virtual std::vector<StoredChannel> channels(std::int64_t session) = 0;
     // A session of several devices' parts, in the order they were begun;
     // none for a session of one device (its channels are its own).

@@ -497,6 +497,10 @@ std::vector<SessionSummary> SessionStore::sessions(const SessionFilter& filter)
                  " OR device_serial" + like + ")";
         values.push_back(textSearchPattern(filter.text));
     }
+    if (filter.after) {
+        where += " AND (started_utc, id) < (SELECT started_utc, id FROM sessions WHERE id = ?)";
+        values.push_back(std::to_string(*filter.after));
+    }
     // LIMIT -1: all of them.
     const int limit = static_cast<int>(values.size() + 1);
     auto query =
@@ -543,6 +547,14 @@ std::optional<std::int64_t> SessionStore::sessionWithUuid(const std::string& uui
 {
     auto query = m_db.prepare("SELECT id FROM sessions WHERE uuid = ?");
     query.bind(1, uuid);
+    if (!query.step()) return std::nullopt;
+    return query.int64(0);
+}
+
+std::optional<std::int64_t> SessionStore::lastSession()
+{
+    // The primary key walked from its end: the first that is no part.
+    auto query = m_db.prepare("SELECT id FROM sessions WHERE parent_id IS NULL ORDER BY id DESC LIMIT 1");
     if (!query.step()) return std::nullopt;
     return query.int64(0);
 }

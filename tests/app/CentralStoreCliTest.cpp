@@ -8,6 +8,7 @@
 // delete or change another's session or to add rows readers cannot bound,
 // and a reviewer meeting older unbounded rows as damage.
 #include "core/storage/AutomaticVerdict.h"
+#include "core/storage/Database.h"
 #include "core/storage/SessionStore.h"
 #include "core/storage/central/PgConnection.h"
 #include "devices/session/SessionOfDevices.h"
@@ -261,6 +262,70 @@ TEST_F(CentralStoreCli, APanelLinesSitesFromItsEncoderAreTheSameOnTheServer)
     }
     EXPECT_EQ(sites[0], sites[1]);
     expectSameExports(line, server("quality"));
+}
+
+// Issue 56: a list is one page at a time, here and on the server alike.
+// Seven sessions, four of them begun at one instant (two stations' clocks
+// agree to the millisecond): pages of three, each after the last listed,
+// give every session once in the list's order; `last` is the session
+// stored last, one indexed row.
+TEST_F(CentralStoreCli, AListPagesThroughEverySessionOnceTiesIncluded)
+{
+    const QString many = m_dir.filePath("many.tactiscope");
+    {
+        core::storage::SessionStore store(many.toStdString());
+        core::storage::SessionMetadata metadata;
+        metadata.mode = core::Mode::General;
+        for (int i = 0; i < 7; ++i) {
+            metadata.subject = "board-" + std::to_string(i);
+            const std::vector<core::ChannelDescriptor> channels{{"a", "", core::ChannelKind::Other}};
+            const auto id = store.beginSession(metadata, channels, 100.0);
+            tactiscope::testing::writeSamples(store, id, 1, 200, 100.0, i);
+            store.endSession(id, core::SessionStatus::Complete);
+        }
+    }
+    core::storage::Database(many.toStdString(), core::storage::Database::Access::ReadWrite)
+        .exec("UPDATE sessions SET started_utc = '2026-11-20T08:00:00.000Z' WHERE id BETWEEN 2 AND 5");
+    ASSERT_EQ(sync(many, server("press_a")).exitCode, 0);
+    for (const QString& db : {many, server("quality")}) {
+        SCOPED_TRACE(db.toStdString());
+        const auto subjects = [](const CliResult& r) {
+            QStringList listed;
+            for (const auto s : QJsonDocument::fromJson(r.out.toUtf8()).array())
+                listed << s.toObject()["subject"].toString();
+            return listed;
+        };
+        const CliResult all = runCli({"sessions", "--db", db, "list", "--all", "--json"});
+        ASSERT_EQ(all.exitCode, 0) << all.err.toStdString();
+        ASSERT_EQ(subjects(all).size(), 7);
+        EXPECT_TRUE(all.err.isEmpty()) << all.err.toStdString();
+        QStringList paged;
+        QStringList after;
+        for (int page = 0; page < 4; ++page) {
+            const CliResult r = runCli(QStringList{"sessions", "--db", db, "list", "--limit", "3", "--json"} + after);
+            ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+            paged += subjects(r);
+            const auto next = QRegularExpression(QStringLiteral("--after (\\d+) lists the next 3")).match(r.err);
+            if (!next.hasMatch()) break;
+            after = QStringList{"--after", next.captured(1)};
+        }
+        EXPECT_EQ(paged, subjects(all));
+        EXPECT_EQ(subjects(runCli({"sessions", "--db", db, "list", "--json"})), subjects(all));  // within the default
+
+        const CliResult last = runCli({"sessions", "--db", db, "show", "last", "--json"});
+        ASSERT_EQ(last.exitCode, 0) << last.err.toStdString();
+        EXPECT_EQ(QJsonDocument::fromJson(last.out.toUtf8()).object()["session"].toObject()["subject"].toString(),
+                  QStringLiteral("board-6"));
+
+        const CliResult zero = runCli({"sessions", "--db", db, "list", "--limit", "0"});
+        EXPECT_EQ(zero.exitCode, 2);
+        EXPECT_TRUE(zero.err.contains(QStringLiteral("--limit must be"))) << zero.err.toStdString();
+        const CliResult nowhere = runCli({"sessions", "--db", db, "list", "--after", "99999"});
+        EXPECT_EQ(nowhere.exitCode, 2);
+        EXPECT_TRUE(nowhere.err.contains(QStringLiteral("no session '99999'"))) << nowhere.err.toStdString();
+    }
+    // The product's connections compile no query (docs/fleet.md: JIT).
+    EXPECT_EQ(connect("quality").query("SHOW jit").text(0, 0), "off");
 }
 
 // A session of several devices (issue 40) goes whole: the session, each

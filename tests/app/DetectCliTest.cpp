@@ -11,6 +11,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTextStream>
 
@@ -276,6 +277,11 @@ TEST(DetectSitesCli, APanelLinesPositionChannelPlacesItsDentWithinAMillimetre)
     EXPECT_EQ(site["kind"].toString(), QStringLiteral("site"));
     EXPECT_NEAR(site["position_mm"].toDouble(), 30.0, 1.0) << show.out.toStdString();
     EXPECT_GE(site["crossings"].toInt(), 6);
+    // The text says so too, a line per site under the method (fresh eyes).
+    const CliResult text = runCli({"sessions", "--db", db, "show", "last"});
+    EXPECT_TRUE(text.out.contains(
+        QRegularExpression(QStringLiteral("\\nsites +1 \\(from the position channel\\)\\n +1: (29|30)\\.\\d+ ± "))))
+        << text.out.toStdString();
 
     // A re-analysis of the stored session places its sites the same way
     // (fresh eyes: `analyze` said "not placed … as on a panel line").
@@ -325,4 +331,24 @@ TEST(DetectSitesCli, APositionColumnPlacesTheDentOfACsvWithinAMillimetre)
     const CliResult missing = runCli({"detect", csv, "--position", "encoder"});
     EXPECT_EQ(missing.exitCode, 2);
     EXPECT_TRUE(missing.err.contains(QStringLiteral("has no column 'encoder'"))) << missing.err.toStdString();
+
+    // Fresh eyes: a column that holds no length, or a length not in m
+    // (named with its unit too), is refused; one not used is named.
+    const CliResult time = runCli({"detect", csv, "--position", "t"});
+    EXPECT_EQ(time.exitCode, 2);
+    EXPECT_TRUE(time.err.contains(QStringLiteral("the column 't [s]' holds no length"))) << time.err.toStdString();
+    EXPECT_TRUE(phases.err.contains(QStringLiteral("--position x places each site"))) << phases.err.toStdString();
+    const QString text = QString::fromUtf8(readBytes(csv));
+    const QString inMillimetres = dir.filePath("mm.csv");
+    writeText(inMillimetres, QString(text).replace(QStringLiteral("x [m]"), QStringLiteral("x [mm]")));
+    const QString inMicrostrain = dir.filePath("ustrain.csv");
+    writeText(inMicrostrain, QString(text).replace(QStringLiteral("a [strain]"), QStringLiteral("a [ustrain]")));
+    for (const QString named : {"x", "x [mm]"}) {
+        const CliResult mm = runCli({"detect", inMillimetres, "--position", named});
+        EXPECT_EQ(mm.exitCode, 2) << named.toStdString();
+        EXPECT_TRUE(mm.err.contains(QStringLiteral("is in 'mm'"))) << mm.err.toStdString();
+    }
+    const CliResult columnsWithUnit = runCli({"detect", inMicrostrain, "--columns", "t,a [ustrain],b"});
+    EXPECT_EQ(columnsWithUnit.exitCode, 2);
+    EXPECT_TRUE(columnsWithUnit.err.contains(QStringLiteral("is in 'ustrain'"))) << columnsWithUnit.err.toStdString();
 }

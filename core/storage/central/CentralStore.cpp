@@ -197,6 +197,11 @@ std::vector<SessionSummary> CentralStore::sessions(const SessionFilter& filter)
                  " OR device_serial" + like + ")";
         values.text(textSearchPattern(filter.text));
     }
+    if (filter.after) {
+        where +=
+            " AND (started_utc, id) < (SELECT started_utc, id FROM sessions WHERE id = $" + std::to_string(++n) + ")";
+        values.int64(*filter.after);
+    }
     // LIMIT NULL: all of them.
     filter.limit > 0 ? values.int64(static_cast<std::int64_t>(filter.limit)) : values.null();
     // A device's part is listed with its session, not of its own.
@@ -238,6 +243,17 @@ std::vector<SessionPart> CentralStore::parts(std::int64_t session)
 std::optional<std::int64_t> CentralStore::sessionWithUuid(const std::string& uuid)
 {
     const PgResult r = m_connection.query("SELECT id FROM sessions WHERE complete AND uuid = $1", {uuid});
+    if (r.rows() == 0) return std::nullopt;
+    return r.int64(0, 0);
+}
+
+std::optional<std::int64_t> CentralStore::lastSession()
+{
+    // The primary key walked from its end: the first this login may see
+    // (row-level security) that is whole and no part.
+    const PgResult r =
+        m_connection.query("SELECT id FROM sessions WHERE complete AND parent_id IS NULL ORDER BY id DESC LIMIT 1",
+                           PgParams(), PgFormat::Binary);
     if (r.rows() == 0) return std::nullopt;
     return r.int64(0, 0);
 }

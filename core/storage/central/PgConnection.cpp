@@ -49,15 +49,17 @@ std::string exactText(double value)
 // The connection string's own settings win over these defaults: a server
 // that does not answer is given up after 10 s (libpq would wait as long as
 // the system's TCP timeout); TCP keepalives find a host that went away
-// within a minute; a statement may run a minute on the server; and the
-// server's activity view names us.
+// within a minute; a statement may run a minute on the server; the
+// server compiles none of our queries (JIT: its default spends about
+// 280 ms compiling a listing that does 43 ms of work, docs/fleet.md); and
+// the server's activity view names us.
 pg_conn* openConnection(const std::string& conninfo)
 {
     const char* const keywords[] = {"connect_timeout",           "keepalives",       "keepalives_idle",
                                     "keepalives_interval",       "keepalives_count", "options",
                                     "fallback_application_name", "dbname",           nullptr};
     const char* const values[] = {
-        "10", "1", "30", "10", "3", "-c statement_timeout=60000", "tactiscope", conninfo.c_str(), nullptr};
+        "10", "1", "30", "10", "3", "-c statement_timeout=60000 -c jit=off", "tactiscope", conninfo.c_str(), nullptr};
     return PQconnectdbParams(keywords, values, 1);  // 1: dbname holds the whole connection string
 }
 

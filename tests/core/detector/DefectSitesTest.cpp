@@ -116,7 +116,7 @@ TEST(DefectSites, EachCrossingOfAHarmonicStrokeIsPlacedWhereItsDentIs)
     const auto events = crossings(stroke, {-0.040, 0.050}, 10.0, {.quantiseLags = false});
     ASSERT_EQ(events.size(), 20u);
     const auto places = placeCrossings(events);
-    EXPECT_EQ(places.model, "scan speed, harmonic strokes");
+    EXPECT_EQ(places.model, "scan speed, harmonic strokes, from the stroke's centre");
     ASSERT_TRUE(places.halfStroke_m);
     EXPECT_NEAR(*places.halfStroke_m, 0.1, 1e-4);
     for (std::size_t i = 0; i < events.size(); ++i) {
@@ -180,7 +180,7 @@ TEST(DefectSites, ShortOppositeRunsArePartsOfTheirCrossings)
 TEST(DefectSites, ConstantSpeedStrokesArePlacedByTheirOwnShape)
 {
     const auto events = crossings(constantSpeed(0.5), {-0.050, 0.030, 0.080}, 20.0);
-    EXPECT_EQ(placeCrossings(events).model, "scan speed, constant-speed strokes");
+    EXPECT_EQ(placeCrossings(events).model, "scan speed, constant-speed strokes, from the stroke's centre");
     expectSitesAt(events, {-0.050, 0.030, 0.080}, 0.006, 0.1);
 }
 
@@ -316,7 +316,7 @@ TEST(DefectSites, AStrokeWithNothingSeenHidesItsReversals)
 TEST(DefectSites, ReversalsBetweenDifferentDentsAreRetakenFromThoseBeside)
 {
     auto events = crossings(harmonic(0.5), {-0.070, 0.0}, 20.0);
-    EXPECT_EQ(placeCrossings(events).model, "scan speed, harmonic strokes");
+    EXPECT_EQ(placeCrossings(events).model, "scan speed, harmonic strokes, from the stroke's centre");
     std::erase_if(events, [](const DefectEvent& e) {
         const double middle = 0.5 * (e.start_s + e.end_s);
         return e.direction < 0 && std::sin(std::numbers::pi * middle) < -0.5;  // the −70 mm dent, falling
