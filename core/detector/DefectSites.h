@@ -86,7 +86,9 @@
 // uncertainty (k = 1) their standard deviation over √n, widened for few
 // crossings to the spread of Student's t (×√((n−1)/(n−3))), combined with
 // the shape's doubt. Fewer than kMinPlacedCrossings crossings cannot show
-// their own scatter: such a site is "too few crossings to place". A site
+// their own scatter: by phase, such a site is "too few crossings to
+// place"; by a position channel it is placed, its ± a uniform doubt over
+// its crossings' range and half a run's extent. A site
 // whose crossings one way lie apart from those the other way (beyond
 // kMinSiteSeparation_m and three standard errors) is two dents each seen
 // one way, or placed by reversals the detector's misses hid: its crossings

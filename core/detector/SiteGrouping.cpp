@@ -13,6 +13,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <ranges>
 #include <stdexcept>
 #include <utility>
 
@@ -157,7 +158,18 @@ void placeSite(DefectSite& site, std::span<const DefectEvent> events, const Cros
         if (const auto v = speedOf(events[i])) extents.push_back((events[i].end_s - events[i].start_s) * *v);
     }
     const double mean = sum / n;
-    const double scatter = meanScatter(site, places, mean);
+    // Too few crossings to show their own scatter, by a position channel:
+    // each lies within its run (its extent along the stroke) and all within
+    // their range, uniformly as far as can be told.
+    double scatter = 0.0;
+    if (site.crossings.size() >= kMinPlacedCrossings) {
+        scatter = meanScatter(site, places, mean);
+    } else {
+        const auto [lowest, highest] = std::ranges::minmax(
+            site.crossings | std::views::transform([&](std::size_t i) { return *places.position_m[i]; }));
+        const double halfRun = extents.empty() ? 0.0 : median(extents) / 2.0;
+        scatter = (std::pow((highest - lowest) / 2.0, 2) + halfRun * halfRun) / 3.0;
+    }
     const double shape = places.shape == StrokeShape::Unknown ? shapeDoubt * shapeDoubt : 0.0;
     // The place's scale: the detector's speed by phase; by a position
     // channel, the detector's delay (the travel in a lag is the spacing).
@@ -342,8 +354,11 @@ SiteGrouping groupSites(std::span<const DefectEvent> events, const CrossingPlace
     std::vector<std::vector<std::size_t>> tooFew;
     std::vector<std::size_t> strays;
     std::map<std::size_t, std::string> disagreeing;  // crossing → why its site was not one dent
+    // A position channel places even one crossing: its place is read, not
+    // inferred from a stroke's other crossings.
+    const std::size_t fewest = places.fromPosition ? 1 : kMinPlacedCrossings;
     for (auto& members : placedGroups(places.position_m, places.stroke, places.partOf)) {
-        if (members.size() < kMinPlacedCrossings)
+        if (members.size() < fewest)
             tooFew.push_back(std::move(members));
         else if (const auto why = directionsDisagree(events, places, members))
             for (const std::size_t i : members) disagreeing[i] = *why;

@@ -332,3 +332,24 @@ TEST(DefectSites, ReversalsBetweenDifferentDentsAreRetakenFromThoseBeside)
             EXPECT_LE(std::abs(*x), 0.1 * 1.02);
         }
 }
+
+// A triggered panel on a line with an encoder holds one stroke out and
+// back: one crossing each way. The encoder reads their places, so they
+// are one site, placed (not "too few crossings", two sites, as by phase),
+// its ± a uniform doubt over the crossings' range and half a run: 10 ms
+// at 300 mm/s, 3 mm, gives 1.5/√3 mm with the delay's (0.05 of the 15 mm
+// travel in a lag, over √3).
+TEST(DefectSites, AnEncoderPlacesOneCrossingEachWayAsOneSite)
+{
+    const double run_s = 0.010, speed = 0.3, lag_s = kSpacing_m / speed;
+    const std::vector<DefectEvent> events{{1.0, 1.0 + run_s, 1, 0.9, lag_s, speed, 0.030},
+                                          {2.0, 2.0 + run_s, -1, 0.9, lag_s, speed, 0.031}};
+    const auto grouping = scanSites(events, true);
+    EXPECT_EQ(grouping.method, "from the position channel");
+    ASSERT_EQ(grouping.sites.size(), 1u);
+    const auto& site = grouping.sites[0];
+    ASSERT_EQ(site.kind, tactiscope::core::detector::SiteKind::Site) << siteText(site);
+    EXPECT_NEAR(*site.position_m, 0.0305, 1e-12);
+    const double halfRun = run_s * speed / 2.0, halfRange = 0.0005, delay = 0.05 * kSpacing_m;
+    EXPECT_NEAR(site.position_u_m, std::sqrt((halfRun * halfRun + halfRange * halfRange + delay * delay) / 3.0), 1e-12);
+}
