@@ -389,8 +389,8 @@ int runSessions(const QStringList& arguments)
     parser.setApplicationDescription(QStringLiteral(
         "Inspect a session store.\n"
         "  list                     the sessions, newest first, 100 at a time (filters: --mode, --subject,\n"
-        "                           --operator, --verdict, --from, --before, --search; pages: --limit,\n"
-        "                           --after, --all)\n"
+        "                           --operator, --verdict, --status, --station, --from, --before, --search;\n"
+        "                           pages: --limit, --after, --all)\n"
         "  show ID|UUID|last        one session's metadata, channels and losses\n"
         "  export ID|UUID|last --format csv|json --output PATH [--derived]\n"
         "                           CSV: t then the channels (metadata in PATH's .meta.json); JSON: all;\n"
@@ -419,6 +419,10 @@ int runSessions(const QStringList& arguments)
         {QStringLiteral("operator"), QStringLiteral("list: only this operator."), QStringLiteral("NAME")},
         {QStringLiteral("verdict"), QStringLiteral("list: only this verdict: pass or defects-found."),
          QStringLiteral("VERDICT")},
+        {QStringLiteral("status"), QStringLiteral("list: only this status: complete, interrupted or recording."),
+         QStringLiteral("STATUS")},
+        {QStringLiteral("station"), QStringLiteral("list (a central store): only the sessions of this station."),
+         QStringLiteral("NAME")},
         {QStringLiteral("from"), QStringLiteral("list: started on or after (UTC, e.g. 2026-11-21)."),
          QStringLiteral("DATE")},
         {QStringLiteral("before"), QStringLiteral("list: started before (UTC)."), QStringLiteral("DATE")},
@@ -495,6 +499,16 @@ int runSessions(const QStringList& arguments)
                 if (!filter.verdict)
                     return usageError(QStringLiteral("--verdict must be pass or defects-found"), usage);
             }
+            if (parser.isSet(QStringLiteral("status"))) {
+                filter.status = core::sessionStatusFromString(value("status"));
+                if (!filter.status)
+                    return usageError(QStringLiteral("--status must be complete, interrupted or recording"), usage);
+            }
+            filter.station = value("station");
+            if (!filter.station.empty() && !core::storage::isCentralStoreAddress(dbArgument.toStdString()))
+                return usageError(
+                    QStringLiteral("--station goes with a central store: a station's file holds its own sessions"),
+                    usage);
             filter.startedFrom = value("from");
             filter.startedBefore = value("before");
             filter.text = value("search");

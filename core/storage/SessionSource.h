@@ -79,6 +79,8 @@ struct SessionFilter {
     std::string subject;       // exact
     std::string operatorName;  // exact
     std::optional<Verdict> verdict;
+    std::optional<SessionStatus> status;  // as listed: a crashed recording is interrupted
+    std::string station;                  // exact; a central store's (a station's file names none)
     std::string text;       // found in subject, operator, site, notes, verdict, why none, or device serial (any case)
     std::size_t limit = 0;  // only the newest this many; 0: all
     // The next page: only those listed after this session, in the list's

@@ -489,6 +489,12 @@ std::vector<SessionSummary> SessionStore::sessions(const SessionFilter& filter)
     condition(filter.subject, " AND subject = ?");
     condition(filter.operatorName, " AND operator = ?");
     if (filter.verdict) condition(std::string(toString(*filter.verdict)), " AND verdict = ?");
+    if (!filter.station.empty()) return result;  // a station's file holds its own sessions, of no station named
+    // A crashed recording is listed interrupted (below): asked for either, both are read.
+    if (filter.status == SessionStatus::Interrupted)
+        where += " AND status IN ('interrupted', 'recording')";
+    else if (filter.status)
+        condition(std::string(toString(*filter.status)), " AND status = ?");
     if (!filter.text.empty()) {
         // One parameter, numbered, used for every searched column.
         const std::string like = " LIKE ?" + std::to_string(values.size() + 1) + " ESCAPE '\\'";
@@ -510,6 +516,7 @@ std::vector<SessionSummary> SessionStore::sessions(const SessionFilter& filter)
     while (query.step()) result.push_back(summaryFrom(query));
     for (SessionSummary& summary : result) fillFromLongestPart(summary);
     showCrashedRecordingsInterrupted(result);
+    if (filter.status) std::erase_if(result, [&](const SessionSummary& s) { return s.status != *filter.status; });
     return result;
 }
 

@@ -166,7 +166,7 @@ SessionBrowser::SessionBrowser(std::shared_ptr<core::storage::StoreWorker> store
     m_status->addItem(tr("Any status"));
     for (const auto status :
          {core::SessionStatus::Complete, core::SessionStatus::Interrupted, core::SessionStatus::Recording})
-        m_status->addItem(wordText(status));
+        m_status->addItem(wordText(status), static_cast<int>(status));
     m_verdict->addItem(tr("Any verdict"));
 
     m_sorted->setSourceModel(m_model);
@@ -252,6 +252,10 @@ void SessionBrowser::reload()
     core::storage::SessionFilter filter;
     filter.text = m_search->text().trimmed().toStdString();
     if (m_mode->currentIndex() > 0) filter.mode = core::modeFromString(m_mode->currentText().toStdString());
+    // Asked of the store, so the newest 5 000 a central store sends are
+    // all of this status (filtered after, an old interrupted session was
+    // never found behind 5 000 newer complete ones).
+    if (m_status->currentIndex() > 0) filter.status = static_cast<core::SessionStatus>(m_status->currentData().toInt());
     if (m_verdict->currentIndex() > 0) filter.verdict = core::verdictFromString(m_verdict->currentText().toStdString());
     if (m_from->date() != kAnyDate) filter.startedFrom = utcStartOf(m_from->date());
     if (m_to->date() != kAnyDate) filter.startedBefore = utcStartOf(m_to->date().addDays(1));
@@ -292,8 +296,6 @@ void SessionBrowser::showListing(Listing listing)
 {
     if (listing.rights) m_noDelete = listing.rights->noDelete;
     if (listing.total > 0) fillChoices(m_verdict, listing.verdicts);  // an unread store keeps the choices
-    if (m_status->currentIndex() > 0)
-        std::erase_if(listing.shown, [&](const auto& s) { return wordText(s.status) != m_status->currentText(); });
     // The selection survives a reload (a verdict changed in a review); the
     // first row is selected when nothing was, so Enter opens it.
     const auto selected = selectedSessions();

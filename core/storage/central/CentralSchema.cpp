@@ -227,6 +227,21 @@ ALTER TABLE annotations ADD CONSTRAINT annotations_bounds
     CHECK (time_s > '-Infinity' AND time_s < 'Infinity') NOT VALID;
 )sql";
 
+// Schema 10 (issue 56): every list's question has an index path, at a
+// year's scale. A list reads whole sessions that are no part, newest first
+// (by start, then id): each filter's index holds only those, its column
+// first, then that order, so a filtered page is one index range read to
+// its limit.
+std::string listingIndexes()
+{
+    const std::string listed = " WHERE complete AND parent_id IS NULL;\n";
+    std::string sql = "CREATE INDEX IF NOT EXISTS sessions_listed ON sessions (started_utc DESC, id DESC)" + listed;
+    for (const char* column : {"station", "subject", "operator", "mode", "status", "verdict"})
+        sql += std::string("CREATE INDEX IF NOT EXISTS sessions_listed_by_") + column + " ON sessions (" + column +
+               ", started_utc DESC, id DESC)" + listed;
+    return sql;
+}
+
 // Rights and row-level security (docs/fleet.md, "Roles and rights"). A
 // station reads and adds its own rows, in its own name; a reviewer reads
 // every finished session and adds notes and reviewer verdicts in their own
@@ -493,6 +508,7 @@ void initCentralStore(PgConnection& connection)
     std::string script = "BEGIN;\nSELECT pg_advisory_xact_lock(7426);\n";
     script += kSchema;
     script += kBounds;
+    script += listingIndexes();
     script += serverTrigger("chunk_fits_channels", "BEFORE INSERT", "chunks", kChunkFitsChannels);
     script += serverTrigger("part_of_own_session", "BEFORE INSERT", "sessions", kPartOfOwnSession);
     script += kClaimedTime;

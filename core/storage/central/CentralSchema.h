@@ -16,7 +16,7 @@
 
 namespace tactiscope::core::storage::central {
 
-inline constexpr int kCentralSchemaVersion = 9;
+inline constexpr int kCentralSchemaVersion = 10;
 
 // Creates or upgrades the schema and the two roles; running it again
 // changes nothing. Throws StorageError (e.g. without the right to create

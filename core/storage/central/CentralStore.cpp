@@ -173,15 +173,15 @@ CentralStore::CentralStore(const std::string& conninfo, Database::Access access)
     m_rights = rightsOf(m_connection, access);
 }
 
-std::vector<SessionSummary> CentralStore::sessions(const SessionFilter& filter)
+CentralStore::Listing CentralStore::listing(const SessionFilter& filter)
 {
+    Listing listing;
     std::string where;
-    PgParams values;
     int n = 0;
     const auto condition = [&](const std::string& value, const std::string& sql) {
         if (value.empty()) return;
         where += " AND " + sql + " $" + std::to_string(++n);
-        values.text(value);
+        listing.values.text(value);
     };
     condition(filter.startedFrom, "started_utc >=");
     condition(filter.startedBefore, "started_utc <");
@@ -189,29 +189,42 @@ std::vector<SessionSummary> CentralStore::sessions(const SessionFilter& filter)
     condition(filter.subject, "subject =");
     condition(filter.operatorName, "operator =");
     if (filter.verdict) condition(std::string(toString(*filter.verdict)), "verdict =");
+    if (filter.status) condition(std::string(toString(*filter.status)), "status =");
+    condition(filter.station, "station =");
     if (!filter.text.empty()) {
         // One parameter for every searched column; ILIKE as SQLite's LIKE ignores case.
         const std::string like = " ILIKE $" + std::to_string(++n) + " ESCAPE '\\'";
         where += " AND (subject" + like + " OR operator" + like + " OR site" + like + " OR notes" + like +
                  " OR verdict" + like + " OR (unjudged <> '' AND ('not judged: ' || unjudged)" + like + ")" +
                  " OR device_serial" + like + ")";
-        values.text(textSearchPattern(filter.text));
+        listing.values.text(textSearchPattern(filter.text));
     }
     if (filter.after) {
         where +=
             " AND (started_utc, id) < (SELECT started_utc, id FROM sessions WHERE id = $" + std::to_string(++n) + ")";
-        values.int64(*filter.after);
+        listing.values.int64(*filter.after);
     }
     // LIMIT NULL: all of them.
-    filter.limit > 0 ? values.int64(static_cast<std::int64_t>(filter.limit)) : values.null();
+    filter.limit > 0 ? listing.values.int64(static_cast<std::int64_t>(filter.limit)) : listing.values.null();
     // A device's part is listed with its session, not of its own.
-    const PgResult r =
-        m_connection.query(kSummaryQuery + "AND parent_id IS NULL" + where +
-                               " ORDER BY started_utc DESC, id DESC LIMIT $" + std::to_string(++n) + "::bigint",
-                           values, PgFormat::Binary);
+    listing.sql = kSummaryQuery + "AND parent_id IS NULL" + where + " ORDER BY started_utc DESC, id DESC LIMIT $" +
+                  std::to_string(++n) + "::bigint";
+    return listing;
+}
+
+std::vector<SessionSummary> CentralStore::sessions(const SessionFilter& filter)
+{
+    const Listing query = listing(filter);
+    const PgResult r = m_connection.query(query.sql, query.values, PgFormat::Binary);
     auto summaries = rowsOf(r, [](const PgResult& q, int i) { return summaryFrom(q, i); });
     for (SessionSummary& summary : summaries) fillFromLongestPart(summary);
     return summaries;
+}
+
+std::string CentralStore::listingPlan(const SessionFilter& filter)
+{
+    const Listing query = listing(filter);
+    return m_connection.query("EXPLAIN (FORMAT JSON) " + query.sql, query.values).text(0, 0);
 }
 
 std::optional<SessionSummary> CentralStore::session(std::int64_t id)

@@ -32,6 +32,9 @@ public:
     Rights rights() const override { return m_rights; }
 
     std::vector<SessionSummary> sessions(const SessionFilter& filter = {}) override;
+    // The server's plan for sessions(filter) (EXPLAIN, JSON): how a list is
+    // answered at scale, for the test that every filter has an index path.
+    std::string listingPlan(const SessionFilter& filter);
     std::optional<SessionSummary> session(std::int64_t id) override;
     std::optional<std::int64_t> sessionWithUuid(const std::string& uuid) override;
     std::optional<std::int64_t> lastSession() override;
@@ -71,6 +74,12 @@ public:
     void addZero(std::int64_t session, const SessionZero& zero);
 
 private:
+    // A list's SQL and its parameters.
+    struct Listing {
+        std::string sql;
+        PgParams values;
+    };
+    static Listing listing(const SessionFilter& filter);
     std::vector<std::int64_t> ids(const std::string& sql, std::int64_t parameter);
     // A listed session's rows checked against its own bounds (SessionBounds)
     // before any count read from the server sizes anything: the server's
