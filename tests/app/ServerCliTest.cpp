@@ -66,7 +66,7 @@ TEST_F(ServerCli, InitMakesTheSchemaAndRolesAndASecondRunChangesNothing)
     EXPECT_EQ(db.query("SELECT count(*) FROM pg_roles WHERE rolname IN ('tactiscope_station', 'tactiscope_reviewer')")
                   .text(0, 0),
               "2");
-    EXPECT_EQ(db.query("SELECT version FROM schema_version").text(0, 0), "9");
+    EXPECT_EQ(db.query("SELECT version FROM schema_version").text(0, 0), "10");
     for (const char* table : {"sessions", "channels", "chunks", "gaps", "lod", "events", "readings", "annotations",
                               "verdicts", "zeros", "calibrations", "session_calibrations"})
         EXPECT_EQ(db.query("SELECT count(*) FROM pg_tables WHERE tablename = $1", {std::string(table)}).text(0, 0), "1")
