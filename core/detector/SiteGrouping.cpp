@@ -13,7 +13,6 @@
 #include <limits>
 #include <map>
 #include <numeric>
-#include <ranges>
 #include <stdexcept>
 #include <utility>
 
@@ -165,8 +164,11 @@ void placeSite(DefectSite& site, std::span<const DefectEvent> events, const Cros
     if (site.crossings.size() >= kMinPlacedCrossings) {
         scatter = meanScatter(site, places, mean);
     } else {
-        const auto [lowest, highest] = std::ranges::minmax(
-            site.crossings | std::views::transform([&](std::size_t i) { return *places.position_m[i]; }));
+        double lowest = *places.position_m[site.crossings.front()], highest = lowest;
+        for (const std::size_t i : site.crossings) {
+            lowest = std::min(lowest, *places.position_m[i]);
+            highest = std::max(highest, *places.position_m[i]);
+        }
         const double halfRun = extents.empty() ? 0.0 : median(extents) / 2.0;
         scatter = (std::pow((highest - lowest) / 2.0, 2) + halfRun * halfRun) / 3.0;
     }

@@ -3,7 +3,8 @@
 // by SQL in the shape a sync writes, and one interrupted session older than
 // all of them. The status filter is asked of the server, so the old
 // interrupted session is found behind 5,000 newer ones; a station is asked
-// for by name; and every filter's question has an index path (EXPLAIN with
+// for by name; a text is found through its index among what the login may
+// see only; and every filter's question has an index path (EXPLAIN with
 // its index named in the plan: the filter read as an index range, not
 // every session walked in date order and its rows thrown away).
 #include "core/storage/central/CentralSchema.h"
@@ -145,4 +146,46 @@ TEST_F(CentralListing, EveryFiltersQuestionIsAnIndexRange)
         EXPECT_NE(plan.find("\"Index Name\": \"" + index + "\""), std::string::npos) << what << ":\n" << plan;
         EXPECT_EQ(plan.find("Seq Scan"), std::string::npos) << what << ":\n" << plan;
     }
+    // A text: the sessions the search function finds, each by its id.
+    SessionFilter text;
+    text.text = "phantom";
+    text.limit = 5000;
+    const std::string plan = store.listingPlan(text);
+    EXPECT_NE(plan.find("sessions_with_text"), std::string::npos) << plan;
+    EXPECT_EQ(plan.find("Seq Scan"), std::string::npos) << plan;
+    // …whose own question, asked as the owner who runs it, can read the
+    // trigram index. On so few rows the server would rather test each, so
+    // testing one costs here what it does among millions.
+    PgConnection owner(s_server->conninfo(PostgresServer::kOwner, "listing"));
+    owner.run("SET cpu_operator_cost = 10");
+    const std::string inside =
+        owner
+            .query(
+                std::string("EXPLAIN (FORMAT JSON) SELECT id FROM sessions WHERE complete AND parent_id IS NULL AND ") +
+                core::storage::central::kSessionSearchText + " ILIKE '%phantom%'")
+            .text(0, 0);
+    EXPECT_NE(inside.find("\"Index Name\": \"sessions_listed_by_text\""), std::string::npos) << inside;
+}
+
+// The search runs as the owner through the index: it still finds only what
+// the login may see. A station finds its own sessions; asked directly, the
+// function names no other station's; a reviewer finds every station's.
+TEST_F(CentralListing, ATextIsFoundThroughTheIndexAmongWhatTheLoginMaySeeOnly)
+{
+    EXPECT_EQ(listed({"--search", "DOOR-51", "--all"}).size(), 12);  // door-51, door-510…519, door-5100, any case
+    EXPECT_EQ(listed({"--search", "phantom"}), QStringList{"phantom-3@press_b"});
+    CentralStore station(s_server->conninfo("press_a", "listing"), core::storage::Database::Access::ReadOnly);
+    SessionFilter doors;
+    doors.text = "door-5";
+    const auto own = station.sessions(doors);
+    ASSERT_FALSE(own.empty());
+    for (const auto& s : own) EXPECT_EQ(s.station, "press_a") << s.metadata.subject;
+    PgConnection owner(s_server->conninfo(PostgresServer::kOwner, "listing"));
+    const std::string found =
+        PgConnection(s_server->conninfo("press_a", "listing"))
+            .query("SELECT string_agg(id::text, ',' ORDER BY id) FROM sessions_with_text('%door%') AS f(id)")
+            .text(0, 0);
+    const std::string pressA =
+        owner.query("SELECT string_agg(id::text, ',' ORDER BY id) FROM sessions WHERE station = 'press_a'").text(0, 0);
+    EXPECT_EQ(found, pressA);
 }

@@ -232,6 +232,18 @@ ALTER TABLE annotations ADD CONSTRAINT annotations_bounds
 // (by start, then id): each filter's index holds only those, its column
 // first, then that order, so a filtered page is one index range read to
 // its limit.
+//
+// The text search is a trigram index over the searched text
+// (kSessionSearchText; pg_trgm ships with Debian's PostgreSQL and is
+// trusted: the database's owner creates it). A reviewer's or a station's
+// query cannot use it: under row-level security the server evaluates a
+// qual that is not leakproof, as ILIKE is not, only after the policy's,
+// never as an index condition. So the search is a function run as the
+// owner, who reads through the index, which returns only the sessions
+// the caller may see (the policies' own rule: a station its own, a
+// reviewer or the owner every whole one); the caller's query joins them
+// under its own policies still, each by its id (ROWS 10: a search finds
+// few, so the planner looks them up rather than reading every session).
 std::string listingIndexes()
 {
     const std::string listed = " WHERE complete AND parent_id IS NULL;\n";
@@ -239,6 +251,21 @@ std::string listingIndexes()
     for (const char* column : {"station", "subject", "operator", "mode", "status", "verdict"})
         sql += std::string("CREATE INDEX IF NOT EXISTS sessions_listed_by_") + column + " ON sessions (" + column +
                ", started_utc DESC, id DESC)" + listed;
+    const std::string text = kSessionSearchText;
+    sql += "CREATE EXTENSION IF NOT EXISTS pg_trgm;\n";
+    sql +=
+        "CREATE INDEX IF NOT EXISTS sessions_listed_by_text ON sessions USING gin (" + text + " gin_trgm_ops)" + listed;
+    sql += "CREATE OR REPLACE FUNCTION sessions_with_text(pattern text) RETURNS SETOF bigint LANGUAGE sql STABLE "
+           "SECURITY DEFINER SET search_path = public ROWS 10 AS $body$\n"
+           "SELECT id FROM sessions WHERE complete AND parent_id IS NULL AND " +
+           text +
+           " ILIKE pattern ESCAPE '\\'\n"
+           "   AND (station = session_user OR pg_has_role(session_user, 'tactiscope_reviewer', 'MEMBER')\n"
+           "        OR pg_has_role(session_user, (SELECT relowner FROM pg_class WHERE oid = 'sessions'::regclass), "
+           "'MEMBER'))\n"
+           "$body$;\n"
+           "REVOKE ALL ON FUNCTION sessions_with_text(text) FROM PUBLIC;\n"
+           "GRANT EXECUTE ON FUNCTION sessions_with_text(text) TO tactiscope_station, tactiscope_reviewer;\n";
     return sql;
 }
 

@@ -18,6 +18,14 @@ namespace tactiscope::core::storage::central {
 
 inline constexpr int kCentralSchemaVersion = 10;
 
+// The text a list's search looks in (SessionFilter::text): the searched
+// columns joined by a separator nobody types (the unit separator,
+// chr(31)), so one trigram index serves the search and a match never
+// spans two columns. The schema indexes this very expression.
+inline constexpr const char* kSessionSearchText =
+    "(subject || chr(31) || operator || chr(31) || site || chr(31) || notes || chr(31) || verdict || chr(31) || "
+    "CASE WHEN unjudged <> '' THEN 'not judged: ' || unjudged ELSE '' END || chr(31) || device_serial)";
+
 // Creates or upgrades the schema and the two roles; running it again
 // changes nothing. Throws StorageError (e.g. without the right to create
 // roles).
