@@ -72,10 +72,10 @@ ReadStatus SimulatorSource::readBlock(core::SampleBlock& out, std::chrono::milli
                             m_produced, m_sequence++);
     m_scenario->generate(out);
     if (m_options.markAt_s) {
-        const double start_s = m_start_host_s;
-        simulator::addClockMark(out, *m_options.markAt_s, m_scenario->sampleRate_hz(), [&](std::uint64_t k) {
-            return start_s + static_cast<double>(k + 1) * dt_s / m_options.speed;  // as hostClock() maps it
-        });
+        // By the instants its mapping states: one definition of when a sample is taken.
+        const auto clock = hostClock();
+        simulator::addClockMark(out, *m_options.markAt_s, m_scenario->sampleRate_hz(),
+                                [&](std::uint64_t k) { return clock->host_s(static_cast<double>(k) * dt_s); });
     }
     {
         const std::lock_guard lock(m_shuntMutex);
