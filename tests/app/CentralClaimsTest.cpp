@@ -68,9 +68,12 @@ protected:
         as.query("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz) VALUES ($1, 0, 'a', "
                  "'', 'strain', 1000)",
                  {session});
-        as.query("INSERT INTO chunks (session_id, first_index, first_time_s, count, samples) VALUES ($1, 0, 0, 1, "
-                 "'\\x0000803f')",
-                 {session});
+        as.query("SELECT month_ready(started_utc) FROM sessions WHERE id = $1", {session});
+        as.query(
+            "INSERT INTO chunks (session_id, session_month, first_index, first_time_s, count, samples) VALUES ($1, "
+            "(SELECT session_month(started_utc) FROM sessions WHERE id = $1::bigint), 0, 0, 1, "
+            "'\\x0000803f')",
+            {session});
         return md5Hex(QByteArray("0:1:") + QByteArray::fromStdString(md5Hex(QByteArray::fromHex("0000803f"))));
     }
 

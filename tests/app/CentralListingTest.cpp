@@ -158,12 +158,9 @@ TEST_F(CentralListing, EveryFiltersQuestionIsAnIndexRange)
     // testing one costs here what it does among millions.
     PgConnection owner(s_server->conninfo(PostgresServer::kOwner, "listing"));
     owner.run("SET cpu_operator_cost = 10");
-    const std::string inside =
-        owner
-            .query(
-                std::string("EXPLAIN (FORMAT JSON) SELECT id FROM sessions WHERE complete AND parent_id IS NULL AND ") +
-                core::storage::central::kSessionSearchText + " ILIKE '%phantom%'")
-            .text(0, 0);
+    std::string question = "EXPLAIN (FORMAT JSON) SELECT id FROM sessions WHERE complete AND parent_id IS NULL AND ";
+    question.append(core::storage::central::kSessionSearchText).append(" ILIKE '%phantom%'");
+    const std::string inside = owner.query(question).text(0, 0);
     EXPECT_NE(inside.find("\"Index Name\": \"sessions_listed_by_text\""), std::string::npos) << inside;
 }
 

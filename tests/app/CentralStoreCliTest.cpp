@@ -814,19 +814,42 @@ TEST_F(CentralStoreCli, AStationCannotAddRowsThatReadersCannotBound)
                 "($1, 0, 'A', 'V', 'raw', 'Infinity') RETURNING 1");
     allowed("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz) VALUES "
             "($1, 0, 'A', 'V', 'raw', 1000)");
-    const std::string chunk = "INSERT INTO chunks (session_id, first_index, first_time_s, count, samples) VALUES ";
-    refusedHere(chunk + "($1, 0, 0, 3, decode('0000000000000000', 'hex')) RETURNING 1");  // 8 bytes, not 12
-    refusedHere(chunk + "($1, 0, 0, 1099511627776, decode('00000000', 'hex')) RETURNING 1");
-    refusedHere(chunk + "($1, -1, 0, 1, decode('00000000', 'hex')) RETURNING 1");
-    refusedHere(chunk + "($1, 4000000000000000000, 0, 1, decode('00000000', 'hex')) RETURNING 1");
-    refusedHere(chunk + "($1, 0, 'NaN', 1, decode('00000000', 'hex')) RETURNING 1");
-    allowed(chunk + "($1, 0, 0, 2, decode('0000000000000000', 'hex'))");
+    station.query("SELECT month_ready(started_utc) FROM sessions WHERE id = $1", {sending});
+    const std::string month = "(SELECT session_month(started_utc) FROM sessions WHERE id = $1::bigint)";
+    const std::string chunk =
+        "INSERT INTO chunks (session_id, first_index, first_time_s, count, samples, session_month) VALUES ";
+    refusedHere(chunk + "($1, 0, 0, 3, decode('0000000000000000', 'hex'), " + month +
+                ") RETURNING 1");  // 8 bytes, not 12
+    refusedHere(chunk + "($1, 0, 0, 1099511627776, decode('00000000', 'hex'), " + month + ") RETURNING 1");
+    refusedHere(chunk + "($1, -1, 0, 1, decode('00000000', 'hex'), " + month + ") RETURNING 1");
+    refusedHere(chunk + "($1, 4000000000000000000, 0, 1, decode('00000000', 'hex'), " + month + ") RETURNING 1");
+    refusedHere(chunk + "($1, 0, 'NaN', 1, decode('00000000', 'hex'), " + month + ") RETURNING 1");
+    // A chunk or a pyramid row in another month than its session's (which
+    // would be detached, or kept, with that month's sessions): the month
+    // before, made.
+    station.query("SELECT month_ready('2026-10-15T00:00:00.000Z')");
+    const std::string monthBefore = "'2026-10-01'";
+    for (const std::string& row :
+         {chunk + "($1, 0, 0, 2, decode('0000000000000000', 'hex'), " + monthBefore + ")",
+          "INSERT INTO lod (session_id, channel, level, first_bucket, count, buckets, session_month) VALUES "
+          "($1, 0, 0, 0, 1, decode('0000000000000000', 'hex'), " +
+              monthBefore + ")"}) {
+        std::string refusal;
+        try {
+            station.query(row, {sending});
+        } catch (const StorageError& e) {
+            refusal = e.what();
+        }
+        EXPECT_NE(refusal.find("belongs to the month 2026-11, not 2026-10"), std::string::npos) << row << refusal;
+    }
+    allowed(chunk + "($1, 0, 0, 2, decode('0000000000000000', 'hex'), " + month + ")");
     const std::string gap = "INSERT INTO gaps (session_id, first_index, count) VALUES ";
     refusedHere(gap + "($1, 2, 4611686018427387904) RETURNING 1");
     refusedHere(gap + "($1, -5, 5) RETURNING 1");
     allowed(gap + "($1, 2, 1000)");
-    refusedHere("INSERT INTO lod (session_id, channel, level, first_bucket, count, buckets) VALUES "
-                "($1, 0, 0, 0, 1099511627776, decode('00', 'hex')) RETURNING 1");
+    refusedHere("INSERT INTO lod (session_id, channel, level, first_bucket, count, buckets, session_month) VALUES "
+                "($1, 0, 0, 0, 1099511627776, decode('00', 'hex'), " +
+                month + ") RETURNING 1");
     refusedHere("INSERT INTO events (session_id, kind, start_s, end_s) VALUES ($1, 'marker', 'NaN', 'NaN') "
                 "RETURNING 1");
     refusedHere("INSERT INTO annotations (session_id, time_s, text, created_utc, modified_utc) VALUES "

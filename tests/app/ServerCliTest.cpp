@@ -66,7 +66,7 @@ TEST_F(ServerCli, InitMakesTheSchemaAndRolesAndASecondRunChangesNothing)
     EXPECT_EQ(db.query("SELECT count(*) FROM pg_roles WHERE rolname IN ('tactiscope_station', 'tactiscope_reviewer')")
                   .text(0, 0),
               "2");
-    EXPECT_EQ(db.query("SELECT version FROM schema_version").text(0, 0), "10");
+    EXPECT_EQ(db.query("SELECT version FROM schema_version").text(0, 0), "11");
     for (const char* table : {"sessions", "channels", "chunks", "gaps", "lod", "events", "readings", "annotations",
                               "verdicts", "zeros", "calibrations", "session_calibrations"})
         EXPECT_EQ(db.query("SELECT count(*) FROM pg_tables WHERE tablename = $1", {std::string(table)}).text(0, 0), "1")
@@ -101,7 +101,10 @@ TEST_F(ServerCli, AStationKeepsToItsOwnRowsAndAReviewerOnlyReadsAndDecides)
     a.query("INSERT INTO channels (session_id, position, name, unit, kind, sample_rate_hz) VALUES ($1, 0, 'a', '', "
             "'strain', 1000)",
             {finished});
-    a.query("INSERT INTO chunks (session_id, first_index, first_time_s, count, samples) VALUES ($1, 0, 0, 1, "
+    // Its month made, as the sync asks before it sends (CentralSchema's month_ready).
+    a.query("SELECT month_ready(started_utc) FROM sessions WHERE id = $1", {finished});
+    a.query("INSERT INTO chunks (session_id, session_month, first_index, first_time_s, count, samples) VALUES ($1, "
+            "(SELECT session_month(started_utc) FROM sessions WHERE id = $1::bigint), 0, 0, 1, "
             "'\\x0000803f')",
             {finished});
     // Its checksum (CentralClaimsTest): the md5 of "0:1:" and its bytes' md5.

@@ -44,9 +44,7 @@ std::string fileText(const std::filesystem::path& path)
 
 }  // namespace
 
-PostgresServer::PostgresServer()
-    : m_folder(uniqueTempPath("pg")),
-      m_bin(serverBinaries())
+void PostgresServer::makeFolder()
 {
     std::filesystem::remove_all(m_folder);
     std::filesystem::create_directories(m_folder);
@@ -57,6 +55,13 @@ PostgresServer::PostgresServer()
             throw std::runtime_error("cannot give " + m_folder.string() + " to postgres");
         m_asPostgres = "runuser -u postgres -- ";
     }
+}
+
+PostgresServer::PostgresServer()
+    : m_folder(uniqueTempPath("pg")),
+      m_bin(serverBinaries())
+{
+    makeFolder();
     // The server writes its own log (as postgres); the commands' output
     // goes to a file of ours.
     const std::string data = (m_folder / "data").string();
@@ -65,6 +70,27 @@ PostgresServer::PostgresServer()
                                kOwner + " -A trust --no-sync -E UTF8 > " + quoted(output) + " 2>&1";
     if (std::system(initdb.c_str()) != 0) throw std::runtime_error("initdb failed:\n" + fileText(output));
     start();
+}
+
+PostgresServer::PostgresServer(StandbyOf of)
+    : m_folder(uniqueTempPath("pg-standby")),
+      m_bin(of.primary.m_bin)
+{
+    makeFolder();
+    // -R: started as a standby streaming from the primary (initdb's
+    // pg_hba trusts local replication connections).
+    const std::string data = (m_folder / "data").string();
+    const std::string output = (m_folder / "commands.txt").string();
+    const std::string copy = m_asPostgres + quoted((m_bin / "pg_basebackup").string()) + " -h " +
+                             quoted(of.primary.folder()) + " -U " + kOwner + " -D " + quoted(data) +
+                             " -R -X stream --checkpoint=fast --no-sync > " + quoted(output) + " 2>&1";
+    if (std::system(copy.c_str()) != 0) throw std::runtime_error("pg_basebackup failed:\n" + fileText(output));
+    start();
+}
+
+std::unique_ptr<PostgresServer> PostgresServer::standby() const
+{
+    return std::unique_ptr<PostgresServer>(new PostgresServer(StandbyOf{*this}));
 }
 
 void PostgresServer::start() const

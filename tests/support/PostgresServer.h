@@ -46,9 +46,22 @@ public:
     // the backends it has reaped and those still running.
     double cpuSeconds() const;
 
+    // A hot standby of this server: its data copied by pg_basebackup over
+    // the socket, then streaming what this one writes, read-only, on a
+    // socket folder of its own. Throws std::runtime_error when it cannot
+    // start.
+    std::unique_ptr<PostgresServer> standby() const;
+
     static constexpr const char* kOwner = "tactiscope_owner";
 
 private:
+    struct StandbyOf {
+        const PostgresServer& primary;
+    };
+    explicit PostgresServer(StandbyOf primary);
+    // A fresh folder the server's user owns.
+    void makeFolder();
+
     // The postmaster, or 0 when it is not running, and its children.
     int postmaster() const;
     std::vector<int> children(int postmaster) const;

@@ -61,37 +61,12 @@ CREATE TABLE IF NOT EXISTS channels (
 );
 ALTER TABLE channels ADD COLUMN IF NOT EXISTS role TEXT NOT NULL DEFAULT '';
 
-CREATE TABLE IF NOT EXISTS chunks (
-    session_id   BIGINT NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
-    first_index  BIGINT NOT NULL,
-    first_time_s DOUBLE PRECISION NOT NULL,
-    count        INTEGER NOT NULL CHECK (count > 0),
-    samples      BYTEA NOT NULL,
-    PRIMARY KEY (session_id, first_index)
-);
-
--- Samples and pyramid rows are binary32s, which pglz does not shrink:
--- stored out of line uncompressed, nothing is spent trying.
-ALTER TABLE chunks ALTER COLUMN samples SET STORAGE EXTERNAL;
-
 CREATE TABLE IF NOT EXISTS gaps (
     session_id  BIGINT NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
     first_index BIGINT NOT NULL,
     count       BIGINT NOT NULL CHECK (count > 0),
     PRIMARY KEY (session_id, first_index)
 );
-
-CREATE TABLE IF NOT EXISTS lod (
-    session_id   BIGINT NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
-    channel      INTEGER NOT NULL,
-    level        INTEGER NOT NULL,
-    first_bucket BIGINT NOT NULL,
-    count        INTEGER NOT NULL CHECK (count > 0),
-    buckets      BYTEA NOT NULL,
-    PRIMARY KEY (session_id, channel, level, first_bucket)
-);
-
-ALTER TABLE lod ALTER COLUMN buckets SET STORAGE EXTERNAL;
 
 CREATE TABLE IF NOT EXISTS events (
     id            BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY,
@@ -190,6 +165,148 @@ CREATE TABLE IF NOT EXISTS session_calibrations (
     calibration_id BIGINT NOT NULL REFERENCES calibrations (id) ON DELETE RESTRICT,
     PRIMARY KEY (session_id, calibration_id)
 );
+)sql";
+
+// Schema 11 (issue 56): samples and the pyramid partitioned by the month
+// of their session's start (docs/fleet.md, "Sizing a site"), so a month's
+// indexes stay in memory, vacuum works on one month, and an old month is
+// detached (`server maintain`) without touching the rest. A row says its
+// month (the partition key must be a column of the row); the server checks
+// it is its session's. The partitions live in the schema `months`, which
+// neither role may use: read through the parent, where the policies are.
+//
+// A month's partitions are made by the owner: `server init` and `server
+// maintain` make the coming months, and a station about to send a session
+// of a month not made yet asks month_ready() first, in a transaction of its
+// own (a partition attached inside the session's transaction would hold a
+// lock on the sessions table, and every other station's sync would wait,
+// until the session had been sent). Attaching a fresh table rather than
+// CREATE … PARTITION OF: that takes the parent's every lock, attaching only
+// one that readers and writers pass.
+constexpr const char* kMonthTables = R"sql(
+CREATE SCHEMA IF NOT EXISTS months;
+REVOKE ALL ON SCHEMA months FROM PUBLIC;
+
+-- The first day of the month of a stored start time, in UTC.
+CREATE OR REPLACE FUNCTION session_month(started text) RETURNS date LANGUAGE sql STABLE AS
+    $body$ SELECT date_trunc('month', started::timestamptz AT TIME ZONE 'UTC')::date $body$;
+
+-- A store made before schema 11: its plain tables moved aside, then copied
+-- into the partitioned ones below.
+DO $$ BEGIN
+    IF EXISTS (SELECT 1 FROM pg_class WHERE oid = to_regclass('public.chunks') AND relkind = 'r') THEN
+        ALTER TABLE chunks RENAME TO chunks_before_months;
+        ALTER INDEX chunks_pkey RENAME TO chunks_before_months_pkey;
+    END IF;
+    IF EXISTS (SELECT 1 FROM pg_class WHERE oid = to_regclass('public.lod') AND relkind = 'r') THEN
+        ALTER TABLE lod RENAME TO lod_before_months;
+        ALTER INDEX lod_pkey RENAME TO lod_before_months_pkey;
+    END IF;
+END $$;
+
+CREATE TABLE IF NOT EXISTS chunks (
+    session_id    BIGINT NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    session_month DATE NOT NULL,
+    first_index   BIGINT NOT NULL,
+    first_time_s  DOUBLE PRECISION NOT NULL,
+    count         INTEGER NOT NULL CHECK (count > 0),
+    samples       BYTEA NOT NULL,
+    PRIMARY KEY (session_id, first_index, session_month)
+) PARTITION BY RANGE (session_month);
+
+CREATE TABLE IF NOT EXISTS lod (
+    session_id    BIGINT NOT NULL REFERENCES sessions (id) ON DELETE CASCADE,
+    session_month DATE NOT NULL,
+    channel       INTEGER NOT NULL,
+    level         INTEGER NOT NULL,
+    first_bucket  BIGINT NOT NULL,
+    count         INTEGER NOT NULL CHECK (count > 0),
+    buckets       BYTEA NOT NULL,
+    PRIMARY KEY (session_id, channel, level, first_bucket, session_month)
+) PARTITION BY RANGE (session_month);
+
+-- Samples and pyramid rows are binary32s, which pglz does not shrink:
+-- stored out of line uncompressed, nothing is spent trying. (Each month's
+-- table takes it from its parent.)
+ALTER TABLE chunks ALTER COLUMN samples SET STORAGE EXTERNAL;
+ALTER TABLE lod ALTER COLUMN buckets SET STORAGE EXTERNAL;
+
+-- The months detached by `server maintain --detach-before`: their tables
+-- stay in the schema months, out of the store, until the owner archives
+-- and drops them or attaches them again.
+CREATE TABLE IF NOT EXISTS detached_months (
+    month        DATE PRIMARY KEY,
+    detached_utc TEXT NOT NULL
+);
+
+-- Makes month's partitions of chunks and lod where missing. The owner's.
+CREATE OR REPLACE FUNCTION make_month(month date) RETURNS void LANGUAGE plpgsql SET search_path = public AS $body$
+DECLARE
+    t text;
+BEGIN
+    PERFORM pg_advisory_xact_lock(7428);  -- one maker at a time: two stations may ask at once
+    FOREACH t IN ARRAY ARRAY['chunks', 'lod'] LOOP
+        IF to_regclass(format('months.%I', t || '_' || to_char(month, 'YYYY_MM'))) IS NULL THEN
+            EXECUTE format('CREATE TABLE months.%I (LIKE %I INCLUDING DEFAULTS INCLUDING CONSTRAINTS INCLUDING STORAGE)',
+                           t || '_' || to_char(month, 'YYYY_MM'), t);
+            EXECUTE format('ALTER TABLE %I ATTACH PARTITION months.%I FOR VALUES FROM (%L) TO (%L)', t,
+                           t || '_' || to_char(month, 'YYYY_MM'), month, (month + interval '1 month')::date);
+        END IF;
+    END LOOP;
+END
+$body$;
+REVOKE ALL ON FUNCTION make_month(date) FROM PUBLIC;
+
+DO $$ DECLARE m date; BEGIN
+    IF to_regclass('public.chunks_before_months') IS NOT NULL THEN
+        FOR m IN SELECT DISTINCT session_month(s.started_utc) FROM sessions s
+                  WHERE EXISTS (SELECT 1 FROM chunks_before_months c WHERE c.session_id = s.id)
+                     OR EXISTS (SELECT 1 FROM lod_before_months l WHERE l.session_id = s.id) LOOP
+            PERFORM make_month(m);
+        END LOOP;
+        INSERT INTO chunks (session_id, session_month, first_index, first_time_s, count, samples)
+            SELECT c.session_id, session_month(s.started_utc), c.first_index, c.first_time_s, c.count, c.samples
+              FROM chunks_before_months c JOIN sessions s ON s.id = c.session_id;
+        INSERT INTO lod (session_id, session_month, channel, level, first_bucket, count, buckets)
+            SELECT l.session_id, session_month(s.started_utc), l.channel, l.level, l.first_bucket, l.count, l.buckets
+              FROM lod_before_months l JOIN sessions s ON s.id = l.session_id;
+        DROP TABLE chunks_before_months, lod_before_months;
+    END IF;
+END $$;
+
+-- This month and the next two, as `server maintain` keeps them.
+SELECT make_month((date_trunc('month', now() AT TIME ZONE 'UTC') + make_interval(months => k))::date)
+  FROM generate_series(0, 2) k;
+
+-- A station's question before it sends a session started at `started`:
+-- the month its rows go in, made if missing. The start is judged as the
+-- session's own will be (claimed_time: no later than the server's clock);
+-- no month before 2000 is made for anyone (a station cannot fill the
+-- schema with centuries of empty tables), nor one detached.
+CREATE OR REPLACE FUNCTION month_ready(started text) RETURNS date LANGUAGE plpgsql SECURITY DEFINER
+SET search_path = public AS $body$
+DECLARE
+    kept date;
+    detached text;
+BEGIN
+    PERFORM claimed_time(started, 'its start');
+    kept := session_month(started);
+    IF kept < '2000-01-01' THEN
+        RAISE EXCEPTION 'its start % is before 2000; the central store keeps no such month', started
+            USING ERRCODE = 'check_violation';
+    END IF;
+    SELECT detached_utc INTO detached FROM detached_months WHERE month = kept;
+    IF detached IS NOT NULL THEN
+        RAISE EXCEPTION 'the month % was detached from the central store on %; its owner attaches it again '
+            '(server maintain --attach %) before sessions of that month can be sent', to_char(kept, 'YYYY-MM'),
+            detached, to_char(kept, 'YYYY-MM') USING ERRCODE = 'object_not_in_prerequisite_state';
+    END IF;
+    PERFORM make_month(kept);
+    RETURN kept;
+END
+$body$;
+REVOKE ALL ON FUNCTION month_ready(text) FROM PUBLIC;
+GRANT EXECUTE ON FUNCTION month_ready(text) TO tactiscope_station;
 )sql";
 
 // Schema 5: bounds on every number a reader sizes something by, so no
@@ -325,8 +442,9 @@ std::string serverTrigger(const std::string& name, const std::string& when, cons
 }
 
 // A chunk holds count samples of each of its session's channels, 4 bytes
-// each (the sync sends the channel rows first): counted as the owner, the
-// channels whatever the inserting role may see.
+// each (the sync sends the channel rows first), and lies in its session's
+// month: counted as the owner, the channels whatever the inserting role
+// may see.
 constexpr const char* kChunkFitsChannels = R"sql(
 DECLARE
     channel_count bigint;
@@ -336,8 +454,36 @@ BEGIN
         RAISE EXCEPTION 'a chunk of % samples of % channels holds % bytes, not %', NEW.count, channel_count,
             NEW.count::bigint * channel_count * 4, octet_length(NEW.samples) USING ERRCODE = 'check_violation';
     END IF;
+    PERFORM in_its_month(NEW.session_id, NEW.session_month);
     RETURN NEW;
 END)sql";
+
+// A pyramid row lies in its session's month.
+constexpr const char* kLodInItsMonth = R"sql(
+BEGIN
+    PERFORM in_its_month(NEW.session_id, NEW.session_month);
+    RETURN NEW;
+END)sql";
+
+// Refuses a row of `session` said to lie in another month than its
+// session's start (a row in the wrong month would be detached, or kept,
+// with another month's sessions).
+constexpr const char* kInItsMonth = R"sql(
+CREATE OR REPLACE FUNCTION in_its_month(session bigint, month date) RETURNS void LANGUAGE plpgsql
+SET search_path = public AS $body$
+DECLARE
+    started text;
+BEGIN
+    SELECT started_utc INTO started FROM sessions WHERE id = session;
+    IF started IS NOT NULL AND session_month(started) IS DISTINCT FROM month THEN
+        RAISE EXCEPTION 'a row of a session started % belongs to the month %, not %', started,
+            to_char(session_month(started), 'YYYY-MM'), coalesce(to_char(month, 'YYYY-MM'), 'none')
+            USING ERRCODE = 'check_violation';
+    END IF;
+END
+$body$;
+REVOKE ALL ON FUNCTION in_its_month(bigint, date) FROM PUBLIC;
+)sql";
 
 // A device's part joins a session of its own station's that is still being
 // sent, and a session of one level: no station hangs a part on another's
@@ -534,9 +680,12 @@ void initCentralStore(PgConnection& connection)
     // running it at once wait for each other on the lock.
     std::string script = "BEGIN;\nSELECT pg_advisory_xact_lock(7426);\n";
     script += kSchema;
+    script += kMonthTables;
     script += kBounds;
     script += listingIndexes();
+    script += kInItsMonth;
     script += serverTrigger("chunk_fits_channels", "BEFORE INSERT", "chunks", kChunkFitsChannels);
+    script += serverTrigger("lod_in_its_month", "BEFORE INSERT", "lod", kLodInItsMonth);
     script += serverTrigger("part_of_own_session", "BEFORE INSERT", "sessions", kPartOfOwnSession);
     script += kClaimedTime;
     script += serverTrigger("session_times_judged", "BEFORE INSERT", "sessions", kSessionTimesJudged);

@@ -7,8 +7,10 @@
 #include "core/text/UtcTime.h"
 
 #include <algorithm>
+#include <chrono>
 #include <limits>
 #include <stdexcept>
+#include <thread>
 
 namespace tactiscope::core::storage::central {
 namespace {
@@ -171,6 +173,47 @@ CentralStore::CentralStore(const std::string& conninfo, Database::Access access)
     if (access == Database::Access::ReadOnly)
         m_connection.runOnEveryConnection("SET default_transaction_read_only = on");
     m_rights = rightsOf(m_connection, access);
+    // A hot standby (a read replica) takes no write: those go to the primary
+    // its address names beside it, when it names one.
+    if (access == Database::Access::ReadWrite && m_connection.query("SELECT pg_is_in_recovery()").text(0, 0) == "t") {
+        try {
+            m_primary = std::make_unique<PgConnection>(conninfo, PgTarget::Primary);
+        } catch (const StorageError& e) {
+            m_noPrimary = location() + " is a read-only replica of the central store, and no primary was found (" +
+                          e.what() +
+                          "): a verdict, a note or an analysis is written on the primary. Name it after the "
+                          "replica in the address, e.g. host=replica.site,db.site dbname=tactiscope "
+                          "target_session_attrs=prefer-standby (reviews still read the replica)";
+            m_rights = {m_noPrimary, m_noPrimary, m_noPrimary, m_noPrimary};
+        }
+    }
+}
+
+bool CentralStore::isReplica() const
+{
+    return m_primary || !m_noPrimary.empty();
+}
+
+PgConnection& CentralStore::writer()
+{
+    if (m_primary) return *m_primary;
+    if (!m_noPrimary.empty()) throw StorageError(m_noPrimary);
+    return m_connection;
+}
+
+void CentralStore::caughtUp()
+{
+    if (!m_primary) return;
+    // What was just written on the primary is read from the replica once it
+    // has replayed that far: a few milliseconds on a site's network; at
+    // most 5 s waited, then read as it is.
+    const std::string written = m_primary->query("SELECT pg_current_wal_lsn()::text").text(0, 0);
+    for (int wait = 0; wait < 250; ++wait) {
+        if (m_connection.query("SELECT coalesce(pg_last_wal_replay_lsn() >= $1::pg_lsn, true)", {written}).text(0, 0) ==
+            "t")
+            return;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
 }
 
 CentralStore::Listing CentralStore::listing(const SessionFilter& filter)
@@ -277,9 +320,20 @@ void CentralStore::checkLayout(std::int64_t session)
         "SELECT started_utc, coalesce(ended_utc, ''), (SELECT count(*) FROM channels WHERE session_id = s.id), "
         "(SELECT min(sample_rate_hz) FROM channels WHERE session_id = s.id), "
         "(SELECT max(sample_rate_hz) FROM channels WHERE session_id = s.id), "
-        "(SELECT count(*) FROM sessions p WHERE p.parent_id = s.id) FROM sessions s WHERE complete AND id = $1",
+        "(SELECT count(*) FROM sessions p WHERE p.parent_id = s.id), "
+        "(SELECT detached_utc FROM detached_months WHERE month = session_month(s.started_utc)) "
+        "FROM sessions s WHERE complete AND id = $1",
         PgParams().int64(session), PgFormat::Binary);
     if (s.rows() == 0) return;  // not listed: nothing of it is read
+    // Its month's samples taken out of the store by its owner (server
+    // maintain --detach-before), to be archived.
+    if (!s.isNull(0, 6))
+        throw StoreInputError(location() + ": the samples of session " + std::to_string(session) +
+                              " are not in the central store: the month it started in (" + s.text(0, 0).substr(0, 7) +
+                              ") was detached on " + s.text(0, 6) +
+                              " to be archived; its owner attaches it again with tactiscope-cli server maintain "
+                              "--attach " +
+                              s.text(0, 0).substr(0, 7));
     // A session of several devices holds no samples of its own: its parts
     // do, and each is checked as a session when it is read.
     if (s.int64(0, 2) == 0 && s.int64(0, 5) > 0) {
@@ -502,18 +556,21 @@ std::vector<StoredCalibration> CentralStore::calibrations(const std::string& sen
 
 std::int64_t CentralStore::addCalibration(const calibration::CalibrationRecord& r)
 {
-    return m_connection
-        .query("INSERT INTO calibrations (kind, sensor, operator, created_utc, r_squared, points, record_json) "
-               "VALUES ($1, $2, $3, $4, $5, $6, $7) RETURNING id",
-               PgParams()
-                   .text(r.kind)
-                   .text(r.sensorName)
-                   .text(r.operatorName)
-                   .text(r.timestampUtc)
-                   .real(r.fit.rSquared)
-                   .int64(static_cast<std::int64_t>(r.fit.points))
-                   .text(r.toJson()))
-        .int64(0, 0);
+    const std::int64_t id =
+        writer()
+            .query("INSERT INTO calibrations (kind, sensor, operator, created_utc, r_squared, points, record_json) "
+                   "VALUES ($1, $2, $3, $4, $5, $6, $7) RETURNING id",
+                   PgParams()
+                       .text(r.kind)
+                       .text(r.sensorName)
+                       .text(r.operatorName)
+                       .text(r.timestampUtc)
+                       .real(r.fit.rSquared)
+                       .int64(static_cast<std::int64_t>(r.fit.points))
+                       .text(r.toJson()))
+            .int64(0, 0);
+    caughtUp();
+    return id;
 }
 
 std::vector<std::int64_t> CentralStore::ids(const std::string& sql, std::int64_t parameter)
@@ -538,20 +595,21 @@ std::int64_t CentralStore::decideVerdict(std::int64_t session, const VerdictDeci
 {
     // The server sets the session's verdict from its trail: a decision is
     // one row of it, on a finished session this role may see.
-    PgTransaction transaction(m_connection);
+    PgTransaction transaction(writer());
     const PgResult visible =
-        m_connection.query("SELECT id FROM sessions WHERE id = $1 AND complete", PgParams().int64(session));
+        writer().query("SELECT id FROM sessions WHERE id = $1 AND complete", PgParams().int64(session));
     if (visible.rows() == 0)
         throw StorageError("session " + std::to_string(session) + " is not in the central store, or this role (" +
                            m_connection.user() + ") may not decide its verdict");
     const std::int64_t id = addToVerdictTrail(session, d);
     transaction.commit();
+    caughtUp();
     return id;
 }
 
 std::int64_t CentralStore::addToVerdictTrail(std::int64_t session, const VerdictDecision& d)
 {
-    return m_connection
+    return writer()
         .query("INSERT INTO verdicts (session_id, role, verdict, decided_by, decided_utc, note, basis_json) "
                "VALUES ($1, $2, $3, $4, $5, $6, $7) RETURNING id",
                PgParams()
@@ -567,84 +625,89 @@ std::int64_t CentralStore::addToVerdictTrail(std::int64_t session, const Verdict
 
 void CentralStore::addZero(std::int64_t session, const SessionZero& zero)
 {
-    m_connection.query(
-        "INSERT INTO zeros (session_id, first_index, values_json) VALUES ($1, $2, $3)",
-        PgParams().int64(session).int64(static_cast<std::int64_t>(zero.firstIndex)).text(zero.valuesJson));
+    writer().query("INSERT INTO zeros (session_id, first_index, values_json) VALUES ($1, $2, $3)",
+                   PgParams().int64(session).int64(static_cast<std::int64_t>(zero.firstIndex)).text(zero.valuesJson));
 }
 
 std::int64_t CentralStore::addAnnotation(std::int64_t session, const Annotation& a)
 {
     const std::string now = text::utcNow();
-    return m_connection
-        .query("INSERT INTO annotations (session_id, time_s, author, text, created_utc, modified_utc) "
-               "VALUES ($1, $2, $3, $4, $5, $6) RETURNING id",
-               PgParams()
-                   .int64(session)
-                   .real(a.time_s)
-                   .text(a.author)
-                   .text(a.text)
-                   .text(a.createdUtc.empty() ? now : a.createdUtc)
-                   .text(a.modifiedUtc.empty() ? now : a.modifiedUtc))
-        .int64(0, 0);
+    const std::int64_t id =
+        writer()
+            .query("INSERT INTO annotations (session_id, time_s, author, text, created_utc, modified_utc) "
+                   "VALUES ($1, $2, $3, $4, $5, $6) RETURNING id",
+                   PgParams()
+                       .int64(session)
+                       .real(a.time_s)
+                       .text(a.author)
+                       .text(a.text)
+                       .text(a.createdUtc.empty() ? now : a.createdUtc)
+                       .text(a.modifiedUtc.empty() ? now : a.modifiedUtc))
+            .int64(0, 0);
+    caughtUp();
+    return id;
 }
 
 void CentralStore::updateAnnotation(std::int64_t annotation, const std::string& text)
 {
-    const PgResult r =
-        m_connection.query("UPDATE annotations SET text = $1, modified_utc = $2 WHERE id = $3 RETURNING id",
-                           PgParams().text(text).text(text::utcNow()).int64(annotation));
+    const PgResult r = writer().query("UPDATE annotations SET text = $1, modified_utc = $2 WHERE id = $3 RETURNING id",
+                                      PgParams().text(text).text(text::utcNow()).int64(annotation));
     if (r.rows() == 0)
         throw StorageError("there is no annotation " + std::to_string(annotation) + " this role may change");
+    caughtUp();
 }
 
 void CentralStore::deleteAnnotation(std::int64_t annotation)
 {
     const PgResult r =
-        m_connection.query("DELETE FROM annotations WHERE id = $1 RETURNING id", PgParams().int64(annotation));
+        writer().query("DELETE FROM annotations WHERE id = $1 RETURNING id", PgParams().int64(annotation));
     if (r.rows() == 0)
         throw StorageError("there is no annotation " + std::to_string(annotation) + " this role may delete");
+    caughtUp();
 }
 
 void CentralStore::addEvents(std::int64_t session, std::span<const SessionEvent> events)
 {
-    PgTransaction transaction(m_connection);
+    PgTransaction transaction(writer());
     for (const SessionEvent& e : events)
-        m_connection.query("INSERT INTO events (session_id, analysis, kind, start_s, end_s, direction, peak_r, lag_s, "
-                           "speed_m_per_s, note) VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10)",
-                           PgParams()
-                               .int64(session)
-                               .text(e.analysis)
-                               .text(std::string(toString(e.kind)))
-                               .real(e.start_s)
-                               .real(e.end_s)
-                               .int64(e.direction)
-                               .optionalReal(e.peakR)
-                               .optionalReal(e.lag_s)
-                               .optionalReal(e.speed_m_per_s)
-                               .text(e.note));
+        writer().query("INSERT INTO events (session_id, analysis, kind, start_s, end_s, direction, peak_r, lag_s, "
+                       "speed_m_per_s, note) VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10)",
+                       PgParams()
+                           .int64(session)
+                           .text(e.analysis)
+                           .text(std::string(toString(e.kind)))
+                           .real(e.start_s)
+                           .real(e.end_s)
+                           .int64(e.direction)
+                           .optionalReal(e.peakR)
+                           .optionalReal(e.lag_s)
+                           .optionalReal(e.speed_m_per_s)
+                           .text(e.note));
     transaction.commit();
+    caughtUp();
 }
 
 void CentralStore::addReadings(std::int64_t session, std::span<const SessionReading> readings)
 {
-    PgTransaction transaction(m_connection);
+    PgTransaction transaction(writer());
     for (const SessionReading& r : readings)
-        m_connection.query("INSERT INTO readings (session_id, kind, start_s, end_s, quantity, value, unit, "
-                           "standard_error, site, details_json, analysis) "
-                           "VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11)",
-                           PgParams()
-                               .int64(session)
-                               .text(std::string(toString(r.kind)))
-                               .real(r.start_s)
-                               .real(r.end_s)
-                               .text(r.quantity)
-                               .real(r.value)
-                               .text(r.unit)
-                               .optionalReal(r.standardError)
-                               .text(r.site)
-                               .text(r.detailsJson)
-                               .text(r.analysis));
+        writer().query("INSERT INTO readings (session_id, kind, start_s, end_s, quantity, value, unit, "
+                       "standard_error, site, details_json, analysis) "
+                       "VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11)",
+                       PgParams()
+                           .int64(session)
+                           .text(std::string(toString(r.kind)))
+                           .real(r.start_s)
+                           .real(r.end_s)
+                           .text(r.quantity)
+                           .real(r.value)
+                           .text(r.unit)
+                           .optionalReal(r.standardError)
+                           .text(r.site)
+                           .text(r.detailsJson)
+                           .text(r.analysis));
     transaction.commit();
+    caughtUp();
 }
 
 void CentralStore::deleteSession(std::int64_t session)
@@ -653,9 +716,10 @@ void CentralStore::deleteSession(std::int64_t session)
     if (!summary) throw StorageError("there is no session " + std::to_string(session));
     if (const auto refusal = partDeletionRefusal(*summary)) throw StorageError(*refusal);
     // Only the owner has DELETE; the server refuses anyone else.
-    const PgResult r = m_connection.query("DELETE FROM sessions WHERE id = $1 RETURNING id", PgParams().int64(session));
+    const PgResult r = writer().query("DELETE FROM sessions WHERE id = $1 RETURNING id", PgParams().int64(session));
     if (r.rows() == 0)
         throw StorageError("session " + std::to_string(session) + " may not be deleted by " + m_connection.user());
+    caughtUp();
 }
 
 }  // namespace tactiscope::core::storage::central

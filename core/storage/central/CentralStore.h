@@ -9,6 +9,7 @@
 #include "core/storage/SessionSource.h"
 #include "core/storage/central/PgConnection.h"
 
+#include <memory>
 #include <set>
 
 namespace tactiscope::core::storage::central {
@@ -18,7 +19,11 @@ public:
     // Connects with a libpq connection string. Read-only makes every
     // transaction of the connection read-only on the server too. Throws
     // StorageError when the server cannot be reached or has no Tactiscope
-    // schema ("run server init").
+    // schema ("run server init"). A string naming a read replica (a hot
+    // standby) reads there and writes on the primary it names beside it
+    // (host=replica,primary target_session_attrs=prefer-standby), each
+    // write read back once the replica has it; naming none, every write
+    // says how to name one (rights() too).
     CentralStore(const std::string& conninfo, Database::Access access = Database::Access::ReadWrite);
 
     std::string location() const override { return m_connection.location(); }
@@ -26,6 +31,8 @@ public:
     // (it is listed only once complete): each read is consistent alone.
     std::unique_ptr<Snapshot> snapshot() override { return std::make_unique<Snapshot>(); }
     PgConnection& connection() { return m_connection; }
+    // Whether the store read is a read replica (a hot standby).
+    bool isReplica() const;
     // The server keeps its own pages whole (checksums, WAL): nothing to check here.
     void refuseIfDamaged() override {}
     // What the login's role may do (read once, at connecting).
@@ -87,7 +94,15 @@ private:
     // the owner's. Once per session: a listed session never changes.
     void checkLayout(std::int64_t session);
 
+    // Where writes go: the connection, or a replica's primary; throws the
+    // reason when a replica names no primary.
+    PgConnection& writer();
+    // Waits until the replica has replayed what was written on the primary.
+    void caughtUp();
+
     PgConnection m_connection;
+    std::unique_ptr<PgConnection> m_primary;  // a replica's primary, for writes
+    std::string m_noPrimary;                  // why a replica takes no write
     Rights m_rights;
     std::set<std::int64_t> m_checked;
 };

@@ -1,7 +1,10 @@
 // CentralSync: one station session copied to the central store per
-// transaction; chunks and pyramid rows as stored, bound as binary in
-// multi-row INSERTs (COPY is not allowed under row-level security).
+// transaction; samples re-chunked (ServerChunks), pyramid rows as stored,
+// bound as binary in multi-row INSERTs (COPY is not allowed under
+// row-level security).
 #include "core/storage/central/CentralSync.h"
+
+#include "core/storage/central/ServerChunks.h"
 
 #include "core/text/Md5.h"
 #include "core/text/TextChecks.h"
@@ -80,6 +83,16 @@ public:
     // parts, whole or not at all; returns the values sent.
     std::uint64_t send(const SessionSummary& s, const std::string& checksum)
     {
+        // The months its rows go in, made before its transaction (see
+        // month_ready in CentralSchema).
+        const std::vector<SessionPart> parts = m_local.parts(s.id);
+        m_months.clear();
+        if (s.devices == 0) m_months[s.id] = monthReady(s.startedUtc);
+        for (const SessionPart& part : parts) {
+            const auto summary = m_local.session(part.id);
+            if (!summary) throw StorageError("its part " + std::to_string(part.id) + " cannot be read");
+            m_months[part.id] = monthReady(summary->startedUtc);
+        }
         PgTransaction transaction(m_db);
         std::uint64_t values = 0;
         if (s.devices == 0) {
@@ -89,7 +102,7 @@ public:
             // device's part under it, then the session made complete.
             const std::int64_t id = insertSession(s, {});
             insertRecords(s.id, id);
-            for (const SessionPart& part : m_local.parts(s.id)) {
+            for (const SessionPart& part : parts) {
                 const auto summary = m_local.session(part.id);
                 if (!summary) throw StorageError("its part " + std::to_string(part.id) + " cannot be read");
                 values += sendRows(*summary, sessionChecksum(m_local, part.id), PartRow{id, part.clockJson});
@@ -135,6 +148,13 @@ public:
     }
 
 private:
+    // The month a session started at `startedUtc` is kept in, as the
+    // server names it (its first day), its partitions made.
+    std::string monthReady(const std::string& startedUtc)
+    {
+        return m_db.query("SELECT month_ready($1)", {startedUtc}).text(0, 0);
+    }
+
     struct PartRow {
         std::int64_t parent = 0;  // the session's id on the server
         std::string clockJson;
@@ -182,11 +202,13 @@ private:
 
     std::uint64_t copyChunks(std::int64_t local, std::int64_t id)
     {
-        RowBatch rows(m_db, "INSERT INTO chunks (session_id, first_index, first_time_s, count, samples)", 5);
+        RowBatch rows(m_db, "INSERT INTO chunks (session_id, session_month, first_index, first_time_s, count, samples)",
+                      6);
         std::uint64_t values = 0;
-        m_local.forEachChunk(local, [&](const SessionStore::RawChunk& c) {
+        forEachServerChunk(m_local, local, [&](const SessionStore::RawChunk& c) {
             rows.row()
                 .int64(id)
+                .text(m_months.at(local))
                 .int64(static_cast<std::int64_t>(c.firstIndex))
                 .real(c.firstTime_s)
                 .int64(static_cast<std::int64_t>(c.count))
@@ -221,10 +243,12 @@ private:
 
     void copyPyramid(std::int64_t local, std::int64_t id)
     {
-        RowBatch rows(m_db, "INSERT INTO lod (session_id, channel, level, first_bucket, count, buckets)", 6);
+        RowBatch rows(m_db, "INSERT INTO lod (session_id, session_month, channel, level, first_bucket, count, buckets)",
+                      7);
         m_local.forEachLodRow(local, [&](const SessionStore::RawLodRow& r) {
             rows.row()
                 .int64(id)
+                .text(m_months.at(local))
                 .int64(r.channel)
                 .int64(r.level)
                 .int64(static_cast<std::int64_t>(r.firstBucket))
@@ -275,6 +299,7 @@ private:
     CentralStore& m_central;
     PgConnection& m_db;
     std::string m_station;
+    std::map<std::int64_t, std::string> m_months;  // of the session being sent and its parts, by local id
 };
 
 // What the server holds of a session this role may see.
@@ -367,21 +392,25 @@ std::string syncSummary(const SyncOutcome& outcome)
            std::to_string(outcome.alreadyThere) + " already there";
 }
 
-std::string sessionChecksum(SessionStore& local, std::int64_t session)
+std::string sessionChecksum(SessionStore& local, std::int64_t session, ChunkCut cut)
 {
     std::string lines;
     // A session of several devices: its parts', each named by its device.
     for (const SessionPart& part : local.parts(session))
-        lines += part.deviceName + ' ' + sessionChecksum(local, part.id) + '\n';
+        lines += part.deviceName + ' ' + sessionChecksum(local, part.id, cut) + '\n';
     if (!lines.empty()) {
         text::Md5 md5;
         md5.add(lines);
         return md5.hex();
     }
-    local.forEachChunk(session, [&lines](const SessionStore::RawChunk& c) {
+    const auto line = [&lines](const SessionStore::RawChunk& c) {
         if (!lines.empty()) lines += '\n';
         lines += chunkLine(c.firstIndex, c.count, c.samples);
-    });
+    };
+    if (cut == ChunkCut::Server)
+        forEachServerChunk(local, session, line);
+    else
+        local.forEachChunk(session, line);
     text::Md5 md5;
     md5.add(lines);
     return md5.hex();
@@ -391,6 +420,10 @@ SyncOutcome syncToCentral(SessionStore& local, CentralStore& central, const std:
                           const std::function<void(const SyncProgress&)>& progress)
 {
     SyncOutcome outcome;
+    if (central.isReplica())
+        throw StorageError(central.location() +
+                           " is a read-only replica of the central store: a station sends its sessions to the "
+                           "primary; set the primary's address");
     const std::string name = station.empty() ? central.connection().user() : station;
     // Two syncs of one station at once would both send what is missing and
     // collide on its keys: the second waits for the first, then finds
@@ -417,7 +450,10 @@ SyncOutcome syncToCentral(SessionStore& local, CentralStore& central, const std:
         }
         const std::string checksum = sessionChecksum(local, s->id);
         if (const auto found = there.find(s->uuid); found != there.end()) {
-            if (found->second.checksum != checksum) {
+            // Sent before schema 11 in the station's own chunks: its checksum
+            // is over those.
+            if (found->second.checksum != checksum &&
+                found->second.checksum != sessionChecksum(local, s->id, ChunkCut::AsStored)) {
                 outcome.refused.push_back("session " + s->uuid +
                                           " is on the central store with other samples; it was not overwritten");
                 continue;

@@ -42,12 +42,17 @@ struct SyncProgress {
     int total = 0;  // sessions to look at
 };
 
+// Where a session's samples are cut into the chunks a checksum is over:
+// as the central store holds them (ServerChunks), or as the station's store
+// does (how sessions were sent before central schema 11).
+enum class ChunkCut { Server, AsStored };
+
 // The checksum of a session's samples, as the central store computes it
 // from the rows it holds: the MD5 of one line "first:count:md5(samples)"
 // per chunk, in order, joined by newlines. A session of several devices
 // holds no samples of its own: the MD5 of one line "device checksum" per
 // part, so a session sent again with other parts is told apart.
-std::string sessionChecksum(SessionStore& local, std::int64_t session);
+std::string sessionChecksum(SessionStore& local, std::int64_t session, ChunkCut cut = ChunkCut::Server);
 
 // Sends what the central store lacks. `station` names where the sessions
 // come from (empty: the connection's role, which is what a station role

@@ -52,14 +52,24 @@ std::string exactText(double value)
 // within a minute; a statement may run a minute on the server; the
 // server compiles none of our queries (JIT: its default spends about
 // 280 ms compiling a listing that does 43 ms of work, docs/fleet.md); and
-// the server's activity view names us.
-pg_conn* openConnection(const std::string& conninfo)
+// the server's activity view names us. The primary, when asked for,
+// overrides the string's own choice among its hosts.
+pg_conn* openConnection(const std::string& conninfo, PgTarget target)
 {
-    const char* const keywords[] = {"connect_timeout",           "keepalives",       "keepalives_idle",
-                                    "keepalives_interval",       "keepalives_count", "options",
-                                    "fallback_application_name", "dbname",           nullptr};
-    const char* const values[] = {
-        "10", "1", "30", "10", "3", "-c statement_timeout=60000 -c jit=off", "tactiscope", conninfo.c_str(), nullptr};
+    const char* const keywords[] = {
+        "connect_timeout",      "keepalives", "keepalives_idle",           "keepalives_interval",
+        "keepalives_count",     "options",    "fallback_application_name", "dbname",
+        "target_session_attrs", nullptr};
+    const char* const values[] = {"10",
+                                  "1",
+                                  "30",
+                                  "10",
+                                  "3",
+                                  "-c statement_timeout=60000 -c jit=off",
+                                  "tactiscope",
+                                  conninfo.c_str(),
+                                  target == PgTarget::Primary ? "read-write" : nullptr,
+                                  nullptr};
     return PQconnectdbParams(keywords, values, 1);  // 1: dbname holds the whole connection string
 }
 
@@ -201,9 +211,9 @@ std::span<const std::uint8_t> PgResult::bytes(int row, int column) const
 }
 
 // A connection made, or nothing with the reason.
-pg_conn* PgConnection::connect(const std::string& conninfo, std::string& reason)
+pg_conn* PgConnection::connect(const std::string& conninfo, PgTarget target, std::string& reason)
 {
-    pg_conn* connection = openConnection(conninfo);
+    pg_conn* connection = openConnection(conninfo, target);
     if (!connection) {
         reason = "out of memory";
         return nullptr;
@@ -219,13 +229,14 @@ pg_conn* PgConnection::connect(const std::string& conninfo, std::string& reason)
     return connection;
 }
 
-PgConnection::PgConnection(const std::string& conninfo)
+PgConnection::PgConnection(const std::string& conninfo, PgTarget target)
     : m_conninfo(conninfo),
+      m_target(target),
       m_connection(nullptr),
       m_answerTimeout(answerTimeout())
 {
     std::string reason;
-    m_connection = connect(conninfo, reason);
+    m_connection = connect(conninfo, target, reason);
     if (!m_connection) throw CentralUnreachable("cannot reach the central store: " + reason);
 }
 
@@ -267,7 +278,7 @@ void PgConnection::reconnect()
     for (int attempt = 0; attempt < kTries && !m_connection; ++attempt) {
         if (attempt > 0) std::this_thread::sleep_for(std::chrono::milliseconds(500));
         const auto started = std::chrono::steady_clock::now();
-        m_connection = connect(m_conninfo, reason);
+        m_connection = connect(m_conninfo, m_target, reason);
         if (std::chrono::steady_clock::now() - started > std::chrono::seconds(1)) break;
     }
     if (!m_connection) throw CentralUnreachable("cannot reach the central store: " + reason);

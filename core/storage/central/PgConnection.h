@@ -87,10 +87,15 @@ private:
 // refuses for a moment), with the settings given to
 // runOnEveryConnection(). A transaction's work, or a lock, cannot be carried
 // over: a connection lost under one throws until it has been released.
+// Which server of a connection string naming several hosts: the one its
+// target_session_attrs chooses (a reviewer's read replica, say), or the
+// primary, which alone takes writes.
+enum class PgTarget { AsGiven, Primary };
+
 class PgConnection {
 public:
     // Throws StorageError with libpq's reason when it cannot connect.
-    explicit PgConnection(const std::string& conninfo);
+    explicit PgConnection(const std::string& conninfo, PgTarget target = PgTarget::AsGiven);
     ~PgConnection();
     PgConnection(const PgConnection&) = delete;
     PgConnection& operator=(const PgConnection&) = delete;
@@ -119,12 +124,13 @@ private:
     friend class PgTransaction;
     [[noreturn]] void failed() const;
     void check(const PgResult& result) const;
-    static pg_conn* connect(const std::string& conninfo, std::string& reason);
+    static pg_conn* connect(const std::string& conninfo, PgTarget target, std::string& reason);
     void ensureConnected();
     void reconnect();
     PgResult awaitResult();
 
     std::string m_conninfo;
+    PgTarget m_target;
     pg_conn* m_connection;  // null once closed for not answering
     // How long a statement's answer is awaited (see openConnection()).
     std::chrono::milliseconds m_answerTimeout;
