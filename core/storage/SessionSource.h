@@ -172,6 +172,9 @@ public:
     // export), of one device or of several (never a part): one indexed row
     // however large the store. None in an empty store.
     virtual std::optional<std::int64_t> lastSession() = 0;
+    // The stations whose whole sessions this login may see, by name (a
+    // central store's; a station's own store names none).
+    virtual std::vector<std::string> stations() { return {}; }
     virtual std::vector<StoredChannel> channels(std::int64_t session) = 0;
     // A session of several devices' parts, in the order they were begun;
     // none for a session of one device (its channels are its own).

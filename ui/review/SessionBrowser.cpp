@@ -137,6 +137,7 @@ SessionBrowser::SessionBrowser(std::shared_ptr<core::storage::StoreWorker> store
       m_mode(new QComboBox(this)),
       m_status(new QComboBox(this)),
       m_verdict(new QComboBox(this)),
+      m_station(new QComboBox(this)),
       m_from(dateEdit(this, QStringLiteral("fromDate"))),
       m_to(dateEdit(this, QStringLiteral("toDate"))),
       m_count(new QLabel(this)),
@@ -152,6 +153,7 @@ SessionBrowser::SessionBrowser(std::shared_ptr<core::storage::StoreWorker> store
     m_mode->setObjectName(QStringLiteral("modeFilter"));
     m_status->setObjectName(QStringLiteral("statusFilter"));
     m_verdict->setObjectName(QStringLiteral("verdictFilter"));
+    m_station->setObjectName(QStringLiteral("stationFilter"));
     m_count->setObjectName(QStringLiteral("countText"));
     m_problem->setObjectName(QStringLiteral("problemText"));
     m_open->setObjectName(QStringLiteral("openButton"));
@@ -168,6 +170,9 @@ SessionBrowser::SessionBrowser(std::shared_ptr<core::storage::StoreWorker> store
          {core::SessionStatus::Complete, core::SessionStatus::Interrupted, core::SessionStatus::Recording})
         m_status->addItem(wordText(status), static_cast<int>(status));
     m_verdict->addItem(tr("Any verdict"));
+    m_station->addItem(tr("Any station"));
+    m_station->setToolTip(tr("Only the sessions recorded at this station"));
+    m_station->setVisible(m_central);  // a station's own store holds its sessions only
 
     m_sorted->setSourceModel(m_model);
     m_sorted->setSortRole(SessionTableModel::kSortRole);
@@ -188,6 +193,7 @@ SessionBrowser::SessionBrowser(std::shared_ptr<core::storage::StoreWorker> store
 
     auto* filters = new QHBoxLayout;
     filters->addWidget(m_search, 3);
+    filters->addWidget(m_station);
     filters->addWidget(m_mode);
     filters->addWidget(m_status);
     filters->addWidget(m_verdict);
@@ -219,7 +225,7 @@ SessionBrowser::SessionBrowser(std::shared_ptr<core::storage::StoreWorker> store
     m_searchDelay.setInterval(200);
     connect(&m_searchDelay, &QTimer::timeout, this, &SessionBrowser::reload);
     connect(m_search, &QLineEdit::textChanged, this, [this] { m_searchDelay.start(); });
-    for (QComboBox* box : {m_mode, m_status, m_verdict})
+    for (QComboBox* box : {m_mode, m_status, m_verdict, m_station})
         connect(box, &QComboBox::currentIndexChanged, this, &SessionBrowser::reload);
     for (QDateEdit* edit : {m_from, m_to}) connect(edit, &QDateEdit::dateChanged, this, &SessionBrowser::reload);
     connect(m_table, &QTableView::doubleClicked, this, &SessionBrowser::openSelected);
@@ -257,6 +263,7 @@ void SessionBrowser::reload()
     // never found behind 5 000 newer complete ones).
     if (m_status->currentIndex() > 0) filter.status = static_cast<core::SessionStatus>(m_status->currentData().toInt());
     if (m_verdict->currentIndex() > 0) filter.verdict = core::verdictFromString(m_verdict->currentText().toStdString());
+    if (m_station->currentIndex() > 0) filter.station = m_station->currentText().toStdString();
     if (m_from->date() != kAnyDate) filter.startedFrom = utcStartOf(m_from->date());
     if (m_to->date() != kAnyDate) filter.startedBefore = utcStartOf(m_to->date().addDays(1));
     const auto failed = [this](const QString& error) {
@@ -278,6 +285,7 @@ void SessionBrowser::reload()
             [filter](SessionSource& store) {
                 Listing listing = listSessions(store, filter, kCentralRows);
                 listing.rights = store.rights();
+                for (const std::string& station : store.stations()) listing.stations << QString::fromStdString(station);
                 return listing;
             },
             [this](Listing listing) { showListing(std::move(listing)); }, failed);
@@ -295,7 +303,10 @@ void SessionBrowser::reload()
 void SessionBrowser::showListing(Listing listing)
 {
     if (listing.rights) m_noDelete = listing.rights->noDelete;
-    if (listing.total > 0) fillChoices(m_verdict, listing.verdicts);  // an unread store keeps the choices
+    if (listing.total > 0) {  // an unread store keeps the choices
+        fillChoices(m_verdict, listing.verdicts);
+        if (m_central) fillChoices(m_station, listing.stations);
+    }
     // The selection survives a reload (a verdict changed in a review); the
     // first row is selected when nothing was, so Enter opens it.
     const auto selected = selectedSessions();
@@ -316,7 +327,7 @@ void SessionBrowser::showListing(Listing listing)
     updateButtons();
 }
 
-// Keeps the chosen verdict while offering every verdict the store holds.
+// Keeps the chosen verdict (or station) while offering every one the store holds.
 void SessionBrowser::fillChoices(QComboBox* box, const QStringList& values)
 {
     QStringList unique = values;

@@ -70,6 +70,7 @@ private:
         std::size_t total = 0;
         bool capped = false;  // the store holds more than `total`
         QStringList verdicts;
+        QStringList stations;                                        // a central store's, for the station filter
         std::optional<core::storage::SessionSource::Rights> rights;  // read with a central store's listing
     };
     // At most `limit` newest sessions (0: all): a central store may hold
@@ -81,7 +82,7 @@ private:
     void deleteSessions(const std::vector<std::int64_t>& sessions);
     void updateButtons();
     void showProblem(const QString& message);
-    void fillChoices(QComboBox* box, const QStringList& values);
+    static void fillChoices(QComboBox* box, const QStringList& values);
 
     std::shared_ptr<core::storage::StoreWorker> m_store;
     QString m_storePath;
@@ -95,6 +96,7 @@ private:
     QComboBox* m_mode;
     QComboBox* m_status;
     QComboBox* m_verdict;
+    QComboBox* m_station;  // a central store's only
     QDateEdit* m_from;
     QDateEdit* m_to;
     QLabel* m_count;

@@ -15,10 +15,16 @@
 namespace tactiscope::core::storage::central {
 namespace {
 
+// Chunks and the pyramid are kept by the month of their session's start
+// (CentralSchema): a question naming it reads that month's table alone,
+// where one without would look in every month's.
+const std::string kInItsMonth = " AND session_month = (SELECT session_month(started_utc) FROM sessions WHERE id = $1)";
+
 // A session's sample count: the end of its last chunk or last gap,
 // whichever ends later (index lookups on both primary keys).
 const std::string kSampleEnd =
-    "greatest(coalesce((SELECT first_index + count FROM chunks WHERE session_id = s.id ORDER BY first_index DESC "
+    "greatest(coalesce((SELECT first_index + count FROM chunks WHERE session_id = s.id "
+    "AND session_month = session_month(s.started_utc) ORDER BY first_index DESC "
     "LIMIT 1), 0), coalesce((SELECT first_index + count FROM gaps WHERE session_id = s.id ORDER BY first_index DESC "
     "LIMIT 1), 0))";
 
@@ -97,8 +103,8 @@ public:
     std::uint64_t storedBuckets(int level) override
     {
         const PgResult r = m_connection.query(
-            "SELECT first_bucket + count FROM lod WHERE session_id = $1 AND channel = $2 AND level = $3 "
-            "ORDER BY first_bucket DESC LIMIT 1",
+            "SELECT first_bucket + count FROM lod WHERE session_id = $1 AND channel = $2 AND level = $3" + kInItsMonth +
+                " ORDER BY first_bucket DESC LIMIT 1",
             PgParams().int64(m_session).int64(m_channel).int64(level), PgFormat::Binary);
         return r.rows() > 0 ? static_cast<std::uint64_t>(r.int64(0, 0)) : 0;
     }
@@ -106,8 +112,8 @@ public:
     void read(int level, std::uint64_t firstBucket, std::uint64_t endBucket, lod::LodRowMap& rows) override
     {
         const PgResult r = m_connection.query(
-            "SELECT first_bucket, count, buckets FROM lod WHERE session_id = $1 AND channel = $2 AND level = $3 "
-            "AND first_bucket >= $4 AND first_bucket < $5",
+            "SELECT first_bucket, count, buckets FROM lod WHERE session_id = $1 AND channel = $2 AND level = $3" +
+                kInItsMonth + " AND first_bucket >= $4 AND first_bucket < $5",
             PgParams()
                 .int64(m_session)
                 .int64(m_channel)
@@ -313,6 +319,19 @@ std::optional<std::int64_t> CentralStore::lastSession()
     return r.int64(0, 0);
 }
 
+std::vector<std::string> CentralStore::stations()
+{
+    // Each name the next one after the last through the station index: a
+    // few dozen index probes, where DISTINCT would read every session.
+    const PgResult r = m_connection.query(
+        "WITH RECURSIVE named(station) AS ("
+        " (SELECT station FROM sessions WHERE complete AND parent_id IS NULL ORDER BY station LIMIT 1)"
+        " UNION ALL SELECT (SELECT s.station FROM sessions s WHERE s.complete AND s.parent_id IS NULL"
+        " AND s.station > named.station ORDER BY s.station LIMIT 1) FROM named WHERE named.station IS NOT NULL)"
+        " SELECT station FROM named WHERE station IS NOT NULL");
+    return rowsOf(r, [](const PgResult& q, int i) { return q.text(i, 0); });
+}
+
 void CentralStore::checkLayout(std::int64_t session)
 {
     if (m_checked.contains(session)) return;
@@ -345,8 +364,8 @@ void CentralStore::checkLayout(std::int64_t session)
     bounds.session(started && ended ? *ended - *started : 0.0, s.int64(0, 2), s.isNull(0, 3) ? 0.0 : s.real(0, 3),
                    s.isNull(0, 4) ? 0.0 : s.real(0, 4));
     const PgResult chunks = m_connection.query(
-        "SELECT first_index, count, octet_length(samples), first_time_s FROM chunks WHERE session_id = $1 "
-        "ORDER BY first_index",
+        "SELECT first_index, count, octet_length(samples), first_time_s FROM chunks WHERE session_id = $1" +
+            kInItsMonth + " ORDER BY first_index",
         PgParams().int64(session), PgFormat::Binary);
     for (int i = 0; i < chunks.rows(); ++i)
         bounds.chunk(chunks.int64(i, 0), chunks.int64(i, 1), chunks.int64(i, 2), chunks.real(i, 3));
@@ -375,7 +394,7 @@ std::vector<StoredChannel> CentralStore::channels(std::int64_t session)
 std::uint64_t CentralStore::sampleCount(std::int64_t session)
 {
     checkLayout(session);
-    const PgResult r = m_connection.query("SELECT " + kSampleEnd + " FROM (SELECT $1::bigint AS id) s",
+    const PgResult r = m_connection.query("SELECT " + kSampleEnd + " FROM sessions s WHERE id = $1",
                                           PgParams().int64(session), PgFormat::Binary);
     return static_cast<std::uint64_t>(r.int64(0, 0));
 }
@@ -409,9 +428,10 @@ std::size_t CentralStore::readChannels(std::int64_t session, std::span<const std
     if (n == 0) return 0;
     // From the chunk holding firstIndex (it starts at or before it).
     const PgResult r = m_connection.query(
-        "SELECT first_index, count, samples FROM chunks WHERE session_id = $1 AND first_index >= coalesce("
-        "(SELECT max(first_index) FROM chunks WHERE session_id = $1 AND first_index <= $2), 0) "
-        "AND first_index < $3 ORDER BY first_index",
+        "SELECT first_index, count, samples FROM chunks WHERE session_id = $1" + kInItsMonth +
+            " AND first_index >= coalesce((SELECT max(first_index) FROM chunks WHERE session_id = $1" + kInItsMonth +
+            " AND first_index <= $2), 0) "
+            "AND first_index < $3 ORDER BY first_index",
         PgParams().int64(session).int64(static_cast<std::int64_t>(firstIndex)).int64(static_cast<std::int64_t>(end)),
         PgFormat::Binary);
     for (int i = 0; i < r.rows(); ++i) {

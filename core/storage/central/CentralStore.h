@@ -45,6 +45,7 @@ public:
     std::optional<SessionSummary> session(std::int64_t id) override;
     std::optional<std::int64_t> sessionWithUuid(const std::string& uuid) override;
     std::optional<std::int64_t> lastSession() override;
+    std::vector<std::string> stations() override;
     std::vector<StoredChannel> channels(std::int64_t session) override;
     std::vector<SessionPart> parts(std::int64_t session) override;
     std::uint64_t sampleCount(std::int64_t session) override;

@@ -25,6 +25,7 @@
 #include "support/WaitFor.h"
 
 #include <QAction>
+#include <QComboBox>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
@@ -126,6 +127,18 @@ TEST_F(CentralStoreUi, TheBrowserListsBothStationsAndASessionOpensFromTheServer)
     EXPECT_EQ(two[0].metadata.subject, "beam-2");
     EXPECT_TRUE(browser->windowTitle().contains("central store"));
     tactiscope::testing::saveScreenshot(*browser, "central-store-browser");
+
+    // A station asked for by name, of those the server holds.
+    auto* station = child<QComboBox>(*browser, "stationFilter");
+    EXPECT_FALSE(station->isHidden());
+    QStringList offered;
+    for (int i = 0; i < station->count(); ++i) offered << station->itemText(i);
+    EXPECT_EQ(offered, (QStringList{"Any station", "press_a", "press_b"}));
+    station->setCurrentIndex(1);
+    ASSERT_TRUE(waitFor([&] { return table->model()->rowCount() == 3; }, 10000));
+    for (int row = 0; row < 3; ++row)
+        EXPECT_EQ(table->model()->index(row, ui::SessionTableModel::Station).data().toString(), "press_a");
+    EXPECT_EQ(child<QLabel>(*browser, "countText")->text(), "3 of 6 sessions");
 
     // Review straight from the server: the panel scan, with its samples.
     ui::ReviewWindow* review = reviewThePanelScan(*browser, owner);

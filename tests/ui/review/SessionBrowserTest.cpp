@@ -108,6 +108,8 @@ TEST_F(SessionBrowserTest, ListsEverySessionAndFiltersAsCountedWhenWritten)
     EXPECT_EQ(rows(browser), kSessions);
     EXPECT_EQ(child<QLabel>(browser, "countText")->text(), QStringLiteral("60 of 60 sessions"));
 
+    // A station's own store holds its own sessions only: no station to choose.
+    EXPECT_TRUE(child<QComboBox>(browser, "stationFilter")->isHidden());
     auto* mode = child<QComboBox>(browser, "modeFilter");
     mode->setCurrentText(QStringLiteral("palpation"));
     EXPECT_EQ(rows(browser), m_expected.perMode[tactiscope::core::Mode::Palpation]);
