@@ -103,6 +103,8 @@ int runServer(const QStringList& arguments)
                               commandUsage(parser, name));
     try {
         central::PgConnection connection(positional.at(1).toStdString());
+        // Attaching a month checks every row of it: no product time limit.
+        connection.allowLongStatements();
         return maintain ? maintainStore(connection, monthsAhead, parser.value(detach), parser.value(attach))
                         : initStore(connection);
     } catch (const core::storage::StorageError& e) {

@@ -152,6 +152,14 @@ TEST_F(CentralMonths, ASessionArrivesInChunksOf4096InstantsCutAtFixedIndicesWith
     EXPECT_EQ(stored.int64(0), 112);  // 120 commits, eight of them lost
     EXPECT_GE(stored.int64(0), 16 * chunks.rows());
     expectSameSamples(uuid);
+    // What a list shows of it, kept in its row by the server as it was
+    // made complete: 15 000 instants at 500 Hz, no live event, no part.
+    const auto listed = owner().query(
+        "SELECT listed_samples, listed_events, listed_rate_hz, listed_parts FROM sessions WHERE uuid = $1", {uuid});
+    EXPECT_EQ(listed.text(0, 0), "15000");
+    EXPECT_EQ(listed.text(0, 1), "0");
+    EXPECT_EQ(listed.text(0, 2), "500");
+    EXPECT_EQ(listed.text(0, 3), "0");
 }
 
 TEST_F(CentralMonths, TheChecksumIsTheSameWhateverCommitsTheStationMade)

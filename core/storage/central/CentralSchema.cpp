@@ -309,6 +309,44 @@ REVOKE ALL ON FUNCTION month_ready(text) FROM PUBLIC;
 GRANT EXECUTE ON FUNCTION month_ready(text) TO tactiscope_station;
 )sql";
 
+// Schema 11 (issue 56): what a list shows of a session beyond its own
+// columns (its sample count, live events, rate and parts), kept in the
+// session's row by the server as the session is made complete, after
+// which none of it changes. A list of 5 000 sessions then reads 5 000 rows,
+// where asking each row's chunks, gaps, events, channels and parts (each
+// also under its own row-level policy) took 110–170 ms for a filter whose
+// sessions lie scattered over the table. Sessions made complete before,
+// or written by the owner, are filled in here; readers ask the rows
+// themselves where a column is still empty.
+constexpr const char* kListedCounts = R"sql(
+ALTER TABLE sessions ADD COLUMN IF NOT EXISTS listed_samples BIGINT;
+ALTER TABLE sessions ADD COLUMN IF NOT EXISTS listed_events BIGINT;
+ALTER TABLE sessions ADD COLUMN IF NOT EXISTS listed_rate_hz DOUBLE PRECISION;
+ALTER TABLE sessions ADD COLUMN IF NOT EXISTS listed_parts BIGINT;
+
+-- A session's sample count (the end of its last chunk or gap), its live
+-- events and its parts' (a session of several devices counts theirs), the
+-- rate of its first channel, and its whole parts.
+CREATE OR REPLACE FUNCTION listed_counts(session bigint, started text, OUT samples bigint, OUT events bigint,
+                                         OUT rate_hz double precision, OUT parts bigint)
+LANGUAGE sql STABLE SET search_path = public AS $body$
+SELECT greatest(coalesce((SELECT first_index + count FROM chunks WHERE session_id = session
+                            AND session_month = session_month(started) ORDER BY first_index DESC LIMIT 1), 0),
+                coalesce((SELECT first_index + count FROM gaps WHERE session_id = session
+                           ORDER BY first_index DESC LIMIT 1), 0)),
+       (SELECT count(*) FROM events WHERE session_id = session AND analysis = 'live')
+         + (SELECT count(*) FROM events e JOIN sessions p ON e.session_id = p.id
+             WHERE p.parent_id = session AND e.analysis = 'live'),
+       coalesce((SELECT sample_rate_hz FROM channels WHERE session_id = session AND position = 0), 0),
+       (SELECT count(*) FROM sessions p WHERE p.parent_id = session AND p.complete)
+$body$;
+REVOKE ALL ON FUNCTION listed_counts(bigint, text) FROM PUBLIC;
+
+UPDATE sessions s SET (listed_samples, listed_events, listed_rate_hz, listed_parts) =
+       (SELECT c.samples, c.events, c.rate_hz, c.parts FROM listed_counts(s.id, s.started_utc) c)
+ WHERE complete AND listed_samples IS NULL;
+)sql";
+
 // Schema 5: bounds on every number a reader sizes something by, so no
 // station can add a row that hangs or exhausts a reviewer's reader (the
 // readers check each session's layout too: SessionBounds). NOT VALID: they
@@ -413,7 +451,8 @@ BEGIN
         SELECT string_agg(quote_ident(column_name), ', ') INTO columns FROM information_schema.columns
          WHERE table_schema = 'public' AND table_name = t
            AND column_name NOT IN ('id', 'added_by')
-           AND NOT (t = 'sessions' AND column_name IN ('verdict', 'complete', 'checksum'));
+           AND NOT (t = 'sessions' AND (column_name IN ('verdict', 'complete', 'checksum')
+                                        OR column_name LIKE 'listed\_%'));
         EXECUTE format('GRANT INSERT (%s) ON %I TO tactiscope_station', columns, t);
         IF t IN ('annotations', 'verdicts') THEN
             EXECUTE format('GRANT INSERT (%s) ON %I TO tactiscope_reviewer', columns, t);
@@ -609,6 +648,8 @@ BEGIN
         RAISE EXCEPTION 'its samples arrived damaged (checksum %, sent %); nothing of it was kept', arrived,
             left(NEW.checksum, 40) USING ERRCODE = 'check_violation';
     END IF;
+    SELECT c.samples, c.events, c.rate_hz, c.parts INTO NEW.listed_samples, NEW.listed_events, NEW.listed_rate_hz,
+           NEW.listed_parts FROM listed_counts(NEW.id, NEW.started_utc) c;
     RETURN NEW;
 END)sql";
 
@@ -676,11 +717,15 @@ std::string sessionTablePolicies(const std::string& table)
 
 void initCentralStore(PgConnection& connection)
 {
+    // An upgrade may move a year of samples into their months, or fill a
+    // year of sessions' listed counts: minutes, not the product's minute.
+    connection.allowLongStatements();
     // One transaction: a store half made is never left behind; two stations
     // running it at once wait for each other on the lock.
     std::string script = "BEGIN;\nSELECT pg_advisory_xact_lock(7426);\n";
     script += kSchema;
     script += kMonthTables;
+    script += kListedCounts;
     script += kBounds;
     script += listingIndexes();
     script += kInItsMonth;

@@ -27,8 +27,9 @@ inline constexpr const char* kSessionSearchText =
     "CASE WHEN unjudged <> '' THEN 'not judged: ' || unjudged ELSE '' END || chr(31) || device_serial)";
 
 // Creates or upgrades the schema and the two roles; running it again
-// changes nothing. Throws StorageError (e.g. without the right to create
-// roles).
+// changes nothing. Lifts the connection's time limits (an upgrade may take
+// minutes: PgConnection::allowLongStatements). Throws StorageError (e.g.
+// without the right to create roles).
 void initCentralStore(PgConnection& connection);
 
 }  // namespace tactiscope::core::storage::central

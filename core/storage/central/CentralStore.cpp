@@ -29,16 +29,20 @@ const std::string kSampleEnd =
     "LIMIT 1), 0))";
 
 // Only complete uploads: a session a sync is still sending is not there.
+// Its counts are the ones the server kept in its row as it was made
+// complete (CentralSchema, listed_counts), asked of its rows only where
+// none was kept (a row the owner wrote).
 const std::string kSummaryQuery =
     "SELECT id, uuid, mode, subject, operator, site, notes, device_model, device_serial, device_firmware, "
     "profile_json, calibrations_json, started_utc, coalesce(ended_utc, ''), status, verdict, app_version, "
-    "coalesce((SELECT sample_rate_hz FROM channels WHERE session_id = s.id AND position = 0), 0), " +
+    "coalesce(listed_rate_hz, (SELECT sample_rate_hz FROM channels WHERE session_id = s.id AND position = 0), 0), "
+    "coalesce(listed_samples, " +
     kSampleEnd +
     // A session of several devices counts its parts' events.
-    ", (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live') + (SELECT count(*) FROM events e "
-    "JOIN sessions p ON e.session_id = p.id WHERE p.parent_id = s.id AND e.analysis = 'live'), station, station_id, "
-    "trigger_setup, coalesce(parent_id, 0), device_name, "
-    "(SELECT count(*) FROM sessions p WHERE p.parent_id = s.id AND p.complete), unjudged " +
+    "), coalesce(listed_events, (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live') + "
+    "(SELECT count(*) FROM events e JOIN sessions p ON e.session_id = p.id WHERE p.parent_id = s.id AND "
+    "e.analysis = 'live')), station, station_id, trigger_setup, coalesce(parent_id, 0), device_name, "
+    "coalesce(listed_parts, (SELECT count(*) FROM sessions p WHERE p.parent_id = s.id AND p.complete)), unjudged " +
     "FROM sessions s WHERE complete ";
 
 SessionSummary summaryFrom(const PgResult& r, int row)

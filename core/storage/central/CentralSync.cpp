@@ -86,12 +86,14 @@ public:
         // The months its rows go in, made before its transaction (see
         // month_ready in CentralSchema).
         const std::vector<SessionPart> parts = m_local.parts(s.id);
+        std::vector<SessionSummary> partSummaries;
         m_months.clear();
         if (s.devices == 0) m_months[s.id] = monthReady(s.startedUtc);
         for (const SessionPart& part : parts) {
             const auto summary = m_local.session(part.id);
             if (!summary) throw StorageError("its part " + std::to_string(part.id) + " cannot be read");
             m_months[part.id] = monthReady(summary->startedUtc);
+            partSummaries.push_back(*summary);
         }
         PgTransaction transaction(m_db);
         std::uint64_t values = 0;
@@ -102,11 +104,9 @@ public:
             // device's part under it, then the session made complete.
             const std::int64_t id = insertSession(s, {});
             insertRecords(s.id, id);
-            for (const SessionPart& part : parts) {
-                const auto summary = m_local.session(part.id);
-                if (!summary) throw StorageError("its part " + std::to_string(part.id) + " cannot be read");
-                values += sendRows(*summary, sessionChecksum(m_local, part.id), PartRow{id, part.clockJson});
-            }
+            for (std::size_t p = 0; p < parts.size(); ++p)
+                values +=
+                    sendRows(partSummaries[p], sessionChecksum(m_local, parts[p].id), PartRow{id, parts[p].clockJson});
             m_db.query("UPDATE sessions SET complete = true, checksum = $1 WHERE id = $2",
                        PgParams().text(checksum).int64(id));
         }

@@ -240,6 +240,12 @@ PgConnection::PgConnection(const std::string& conninfo, PgTarget target)
     if (!m_connection) throw CentralUnreachable("cannot reach the central store: " + reason);
 }
 
+void PgConnection::allowLongStatements()
+{
+    runOnEveryConnection("SET statement_timeout = 0");
+    m_answerTimeout = std::chrono::hours(24);
+}
+
 void PgConnection::runOnEveryConnection(const std::string& sql)
 {
     run(sql);

@@ -107,6 +107,11 @@ public:
     PgResult query(const std::string& sql, const PgParams& parameters = {}, PgFormat results = PgFormat::Text);
     // A session setting (SET …), run now and again on every new connection.
     void runOnEveryConnection(const std::string& sql);
+    // For the owner's work on the whole store (an upgrade moving a year of
+    // samples, a month attached): no statement timeout on the server, and
+    // an answer awaited up to a day (a host gone away is still found by
+    // the keepalives within a minute; Ctrl-C ends the command).
+    void allowLongStatements();
     // How many times the connection was made again.
     int reconnects() const { return m_reconnects; }
     // Server state tied to this connection (a transaction, a session-level
