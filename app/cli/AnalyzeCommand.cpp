@@ -82,6 +82,12 @@ int runAnalyze(const QStringList& arguments)
                                               save.isEmpty() ? core::storage::Database::Access::ReadOnly
                                                              : core::storage::Database::Access::ReadWrite);
         core::storage::SessionSource& store = *opened;
+        // Refused before the detector runs, with the store's reason (a
+        // central store's login, a read replica).
+        if (!save.isEmpty() && !store.rights().noAnalyses.empty()) {
+            printError(toQString(store.rights().noAnalyses));
+            return kExitFailure;
+        }
         const auto id = resolveSession(store, parser.value(QStringLiteral("session")));
         if (!id)
             return usageError(

@@ -6,7 +6,10 @@
 #include "core/storage/central/CentralMonths.h"
 #include "core/storage/central/CentralSchema.h"
 
+#include <QDateTime>
 #include <QTextStream>
+
+#include <optional>
 
 namespace tactiscope::cli {
 namespace {
@@ -21,33 +24,59 @@ int initStore(central::PgConnection& connection)
     return kExitOk;
 }
 
+QString joined(const QStringList& months)
+{
+    return months.isEmpty() ? QStringLiteral("none") : months.join(QStringLiteral(", "));
+}
+
 QString joined(const std::vector<std::string>& months)
 {
     QStringList list;
     for (const std::string& m : months) list << QString::fromStdString(m);
-    return list.isEmpty() ? QStringLiteral("none") : list.join(QStringLiteral(", "));
+    return joined(list);
+}
+
+// Why this connection cannot keep the store: a read replica, or a login
+// that does not own it. Nothing when it can.
+std::optional<QString> notTheOwnersPrimary(central::PgConnection& connection)
+{
+    const auto r =
+        connection.query("SELECT pg_is_in_recovery(), to_regclass('sessions') IS NULL OR "
+                         "pg_has_role((SELECT relowner FROM pg_class WHERE oid = to_regclass('sessions')), 'MEMBER')");
+    const QString where = QString::fromStdString(connection.location());
+    if (r.text(0, 0) == "t")
+        return QStringLiteral("%1 is a read-only replica of the central store; run server on the primary").arg(where);
+    if (r.text(0, 1) != "t")
+        return QStringLiteral("the login %1 does not own the central store at %2; server is its owner's")
+            .arg(QString::fromStdString(connection.user()), where);
+    return std::nullopt;
 }
 
 int maintainStore(central::PgConnection& connection, int ahead, const QString& detachBefore, const QString& attach)
 {
     QTextStream out(stdout);
     if (!attach.isEmpty()) {
-        central::attachMonth(connection, attach.toStdString());
-        out << "attached " << attach << ": its sessions' samples are in the store again\n";
+        if (central::attachMonth(connection, attach.toStdString()))
+            out << "attached " << attach << ": its sessions' samples are in the store again\n";
+        else
+            out << attach << " is in the store already\n";
     }
     const auto made = central::makeComingMonths(connection, ahead);
     out << "months made: " << joined(made) << "\n";
     if (!detachBefore.isEmpty()) {
         const auto detached = central::detachMonthsBefore(connection, detachBefore.toStdString());
         out << "months detached: " << joined(detached) << "\n";
-        if (!detached.empty())
-            out << "  their sessions stay listed; their tables months.chunks_YYYY_MM and months.lod_YYYY_MM stay in "
-                   "the database until archived (pg_dump --table 'months.*_YYYY_MM') and dropped\n";
+        for (const std::string& month : detached) {
+            const QString suffix = QString::fromStdString(month).replace('-', '_');
+            out << "  " << QString::fromStdString(month) << ": its sessions stay listed; its tables months.chunks_"
+                << suffix << " and months.lod_" << suffix
+                << " stay in the database until archived (pg_dump --table 'months.*_" << suffix << "') and dropped\n";
+        }
     }
-    out << "months in the store:";
+    QStringList kept;
     for (const central::StoreMonth& m : central::storeMonths(connection))
-        out << " " << QString::fromStdString(m.month) << (m.attached ? "" : " (detached)");
-    out << "\n";
+        kept << QString::fromStdString(m.month) + (m.attached ? QString() : QStringLiteral(" (detached)"));
+    out << "months in the store: " << joined(kept) << "\n";
     return kExitOk;
 }
 
@@ -101,8 +130,24 @@ int runServer(const QStringList& arguments)
             return usageError(QStringLiteral("--%1 needs a month such as 2026-01, not '%2'")
                                   .arg(month.names().front(), parser.value(month)),
                               commandUsage(parser, name));
+    // (The server's clock decides too; this one catches a typo before connecting.)
+    const QString thisMonth = QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyy-MM"));
+    if (parser.isSet(detach) && parser.value(detach) > thisMonth)
+        return usageError(QStringLiteral("--detach-before %1 would detach this month (%2), whose sessions are still "
+                                         "being sent; detach only months that have ended")
+                              .arg(parser.value(detach), thisMonth),
+                          commandUsage(parser, name));
+    if (parser.isSet(detach) && parser.isSet(attach) && parser.value(attach) < parser.value(detach))
+        return usageError(QStringLiteral("--attach %1 and --detach-before %2 contradict each other: the month "
+                                         "would be attached and detached again")
+                              .arg(parser.value(attach), parser.value(detach)),
+                          commandUsage(parser, name));
     try {
         central::PgConnection connection(positional.at(1).toStdString());
+        if (const auto refusal = notTheOwnersPrimary(connection)) {
+            printError(*refusal);
+            return kExitFailure;
+        }
         // Attaching a month checks every row of it: no product time limit.
         connection.allowLongStatements();
         return maintain ? maintainStore(connection, monthsAhead, parser.value(detach), parser.value(attach))

@@ -116,12 +116,19 @@ int list(SessionSource& store, core::storage::SessionFilter filter, bool json)
         out << "No sessions.\n";
         return kExitOk;
     }
-    out << qSetFieldWidth(6) << Qt::right << "id" << qSetFieldWidth(0) << "  "
+    // A central store's sessions say where each was recorded.
+    int stationWidth = 0;
+    for (const auto& s : sessions) stationWidth = std::max(stationWidth, static_cast<int>(oneCell(s.station).size()));
+    if (stationWidth > 0) stationWidth = std::max(stationWidth, 7) + 2;
+    const auto stationCell = [stationWidth](const QString& text) {
+        return stationWidth > 0 ? text.leftJustified(stationWidth) : QString();
+    };
+    out << qSetFieldWidth(6) << Qt::right << "id" << qSetFieldWidth(0) << "  " << stationCell(QStringLiteral("station"))
         << QString("started (UTC)").leftJustified(26) << QString("mode").leftJustified(11)
         << QString("status").leftJustified(12) << QString("verdict").leftJustified(14)
         << QString("duration").rightJustified(10) << "  subject / operator\n";
     for (const auto& s : sessions) {
-        out << qSetFieldWidth(6) << Qt::right << s.id << qSetFieldWidth(0) << "  "
+        out << qSetFieldWidth(6) << Qt::right << s.id << qSetFieldWidth(0) << "  " << stationCell(oneCell(s.station))
             << toQString(s.startedUtc).leftJustified(26) << toQString(core::toString(s.metadata.mode)).leftJustified(11)
             << toQString(core::toString(s.status)).leftJustified(12) << verdictCell(s).leftJustified(14)
             << (QString::number(s.duration_s(), 'f', 1) + QStringLiteral(" s")).rightJustified(10) << "  "

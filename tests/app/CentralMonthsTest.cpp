@@ -217,15 +217,32 @@ TEST_F(CentralMonths, AnOldMonthIsMadeWhenNeededDetachedAndAttachedAgain)
 
     // Detached: listed still, its samples said to be elsewhere.
     const CliResult tooLate = runCli({"server", "maintain", server(), "--detach-before", inThree});
-    EXPECT_EQ(tooLate.exitCode, 1);
+    EXPECT_EQ(tooLate.exitCode, 2);
     EXPECT_TRUE(tooLate.err.contains("still being sent")) << tooLate.err.toStdString();
+    const CliResult both =
+        runCli({"server", "maintain", server(), "--detach-before", "2025-07", "--attach", "2025-03"});
+    EXPECT_EQ(both.exitCode, 2);
+    EXPECT_TRUE(both.err.contains("contradict")) << both.err.toStdString();
+    const CliResult notOwner = runCli({"server", "maintain", server("quality")});
+    EXPECT_EQ(notOwner.exitCode, 1);
+    EXPECT_TRUE(notOwner.err.contains("the login quality does not own the central store"))
+        << notOwner.err.toStdString();
     const CliResult detach = runCli({"server", "maintain", server(), "--detach-before", "2025-04"});
     ASSERT_EQ(detach.exitCode, 0) << detach.err.toStdString();
     EXPECT_TRUE(detach.out.contains("months detached: 2025-03\n")) << detach.out.toStdString();
-    EXPECT_TRUE(detach.out.contains("2025-03 (detached)")) << detach.out.toStdString();
+    EXPECT_TRUE(detach.out.contains("months.chunks_2025_03")) << detach.out.toStdString();
+    EXPECT_TRUE(detach.out.contains("2025-03 (detached), ")) << detach.out.toStdString();
     EXPECT_EQ(tables("2025-03"), "0");
     const CliResult list = runCli({"sessions", "--db", server("quality"), "list"});
     EXPECT_TRUE(list.out.contains("old-door")) << list.out.toStdString();
+    EXPECT_TRUE(list.out.contains("press_a")) << list.out.toStdString();  // the station column
+    // Its fields, records and verdict trail read as ever; a verdict is given.
+    const CliResult shown = runCli({"sessions", "--db", server("quality"), "show", QString::fromStdString(march)});
+    EXPECT_EQ(shown.exitCode, 0) << shown.err.toStdString();
+    EXPECT_TRUE(shown.out.contains("old-door")) << shown.out.toStdString();
+    const CliResult decided = runCli(
+        {"sessions", "--db", server("quality"), "verdict", QString::fromStdString(march), "pass", "--by", "Grace"});
+    EXPECT_EQ(decided.exitCode, 0) << decided.err.toStdString();
     const CliResult show = runCli({"sessions", "--db", server("quality"), "export", QString::fromStdString(march),
                                    "--format", "csv", "--output", m_dir.filePath("march.csv")});
     EXPECT_EQ(show.exitCode, 2);
@@ -237,6 +254,8 @@ TEST_F(CentralMonths, AnOldMonthIsMadeWhenNeededDetachedAndAttachedAgain)
     const CliResult late = sync(m_station);
     EXPECT_EQ(late.exitCode, 1);
     EXPECT_TRUE(late.err.contains("the month 2025-03 was detached from the central store")) << late.err.toStdString();
+    EXPECT_TRUE(late.err.contains("this one waits")) << late.err.toStdString();
+    EXPECT_FALSE(late.err.contains("CONTEXT")) << late.err.toStdString();  // no server internals
 
     // Attached again: both read, and the late one goes.
     const CliResult attach = runCli({"server", "maintain", server(), "--attach", "2025-03"});
@@ -245,7 +264,10 @@ TEST_F(CentralMonths, AnOldMonthIsMadeWhenNeededDetachedAndAttachedAgain)
     const CliResult after = sync(m_station);
     EXPECT_EQ(after.exitCode, 0) << after.err.toStdString();
     expectSameSamples(march);
-    EXPECT_EQ(runCli({"server", "maintain", server(), "--attach", "2025-03"}).exitCode, 1);  // not detached
+    const CliResult again = runCli({"server", "maintain", server(), "--attach", "2025-03"});
+    EXPECT_EQ(again.exitCode, 0);
+    EXPECT_TRUE(again.out.contains("2025-03 is in the store already")) << again.out.toStdString();
+    EXPECT_EQ(runCli({"server", "maintain", server(), "--attach", "2024-02"}).exitCode, 1);  // never held
     EXPECT_EQ(runCli({"server", "maintain", server(), "--attach", "2025-13"}).exitCode, 2);
 }
 

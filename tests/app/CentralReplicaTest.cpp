@@ -111,12 +111,18 @@ TEST_F(CentralReplica, AVerdictOnTheReplicaAloneSaysItNeedsThePrimaryAndHowToNam
     EXPECT_EQ(verdict.exitCode, 1);
     EXPECT_TRUE(verdict.err.contains("is a read-only replica of the central store")) << verdict.err.toStdString();
     EXPECT_TRUE(verdict.err.contains("target_session_attrs=prefer-standby")) << verdict.err.toStdString();
+    EXPECT_FALSE(verdict.err.contains("cannot reach")) << verdict.err.toStdString();  // it reached the replica
     EXPECT_FALSE(verdict.err.contains("read-only transaction")) << verdict.err.toStdString();
 
     const CliResult sync =
         runCli({"sync", "--db", s_station, "--server", QString::fromStdString(s_standby->conninfo("press_a"))});
     EXPECT_EQ(sync.exitCode, 1);
     EXPECT_TRUE(sync.err.contains("a station sends its sessions to the primary")) << sync.err.toStdString();
+    // Nor does the owner keep the store there.
+    const CliResult maintain =
+        runCli({"server", "maintain", QString::fromStdString(s_standby->conninfo(PostgresServer::kOwner))});
+    EXPECT_EQ(maintain.exitCode, 1);
+    EXPECT_TRUE(maintain.err.contains("run server on the primary")) << maintain.err.toStdString();
 }
 
 TEST_F(CentralReplica, AnAddressNamingThePrimaryTooReadsTheReplicaAndWritesThePrimary)

@@ -504,6 +504,11 @@ TEST_F(CentralStoreCli, AReviewerAnalysesAndDecidesOnTheServer)
         if (runCli({"sessions", "--db", m_stationA, "show", uuid}).out.contains("panel-scan")) panel = uuid;
     const CliResult analyze = runCli({"analyze", "--db", server("quality"), "--session", panel, "--json"});
     EXPECT_EQ(analyze.exitCode, 0) << analyze.err.toStdString();
+    // Saving it is not a reviewer's on the central store: said before the detector runs.
+    const CliResult save = runCli({"analyze", "--db", server("quality"), "--session", panel, "--save", "second"});
+    EXPECT_EQ(save.exitCode, 1);
+    EXPECT_TRUE(save.err.contains("may not save analyses on the central store")) << save.err.toStdString();
+    EXPECT_FALSE(save.err.contains("permission denied")) << save.err.toStdString();
     const CliResult verdict = runCli(
         {"sessions", "--db", server("quality"), "verdict", panel, "pass", "--by", "Grace", "--note", "a smudge"});
     ASSERT_EQ(verdict.exitCode, 0) << verdict.err.toStdString();

@@ -94,14 +94,17 @@ std::vector<std::string> detachMonthsBefore(PgConnection& owner, const std::stri
     return detached;
 }
 
-void attachMonth(PgConnection& owner, const std::string& month)
+bool attachMonth(PgConnection& owner, const std::string& month)
 {
     if (!isMonthText(month)) throw StorageError("'" + month + "' is not a month such as 2026-01");
     const PgResult r = owner.query(
         "SELECT EXISTS (SELECT 1 FROM detached_months WHERE month = $1::date), "
         "to_regclass($2) IS NOT NULL AND to_regclass($3) IS NOT NULL",
         PgParams().text(firstDay(month)).text("months.chunks_" + suffix(month)).text("months.lod_" + suffix(month)));
-    if (r.text(0, 0) != "t") throw StorageError("the month " + month + " is not detached");
+    if (r.text(0, 0) != "t") {
+        if (r.text(0, 1) == "t") return false;
+        throw StorageError("the central store has no month " + month + " to attach");
+    }
     if (r.text(0, 1) != "t")
         throw StorageError("the tables of " + month + " (months.chunks_" + suffix(month) + ", months.lod_" +
                            suffix(month) + ") are no longer in the database: restore them from the archive first");
@@ -111,6 +114,7 @@ void attachMonth(PgConnection& owner, const std::string& month)
               "\nALTER TABLE lod ATTACH PARTITION months.lod_" + suffix(month) + range);
     owner.query("DELETE FROM detached_months WHERE month = $1::date", {firstDay(month)});
     transaction.commit();
+    return true;
 }
 
 }  // namespace tactiscope::core::storage::central

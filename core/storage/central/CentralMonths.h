@@ -32,9 +32,10 @@ std::vector<std::string> makeComingMonths(PgConnection& owner, int ahead);
 // store until attached again. Returns the months detached.
 std::vector<std::string> detachMonthsBefore(PgConnection& owner, const std::string& before);
 
-// Attaches a detached month again. Throws StorageError when its tables are
-// gone (archived and dropped: restore them first).
-void attachMonth(PgConnection& owner, const std::string& month);
+// Attaches a detached month again; false when it is in the store already.
+// Throws StorageError when the store never held it, or its tables are gone
+// (archived and dropped: restore them first).
+bool attachMonth(PgConnection& owner, const std::string& month);
 
 // Whether `text` is a month as "YYYY-MM".
 bool isMonthText(const std::string& text);

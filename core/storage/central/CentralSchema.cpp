@@ -298,7 +298,8 @@ BEGIN
     SELECT detached_utc INTO detached FROM detached_months WHERE month = kept;
     IF detached IS NOT NULL THEN
         RAISE EXCEPTION 'the month % was detached from the central store on %; its owner attaches it again '
-            '(server maintain --attach %) before sessions of that month can be sent', to_char(kept, 'YYYY-MM'),
+            '(server maintain --attach %) before sessions of that month can be sent; this one waits',
+            to_char(kept, 'YYYY-MM'),
             detached, to_char(kept, 'YYYY-MM') USING ERRCODE = 'object_not_in_prerequisite_state';
     END IF;
     PERFORM make_month(kept);

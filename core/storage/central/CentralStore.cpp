@@ -189,10 +189,16 @@ CentralStore::CentralStore(const std::string& conninfo, Database::Access access)
         try {
             m_primary = std::make_unique<PgConnection>(conninfo, PgTarget::Primary);
         } catch (const StorageError& e) {
-            m_noPrimary = location() + " is a read-only replica of the central store, and no primary was found (" +
-                          e.what() +
-                          "): a verdict, a note or an analysis is written on the primary. Name it after the "
-                          "replica in the address, e.g. host=replica.site,db.site dbname=tactiscope "
+            // libpq's own words, without ours around them (it reached the replica).
+            std::string why = e.what();
+            if (const auto colon = why.find("cannot reach the central store: "); colon == 0)
+                why.erase(0, std::string("cannot reach the central store: ").size());
+            m_noPrimary = location() +
+                          " is a read-only replica of the central store, and its address names no server that "
+                          "takes writes (" +
+                          why +
+                          "): a verdict or a note is written on the primary. Name it after the replica in the "
+                          "address, e.g. host=replica.site,db.site dbname=tactiscope "
                           "target_session_attrs=prefer-standby (reviews still read the replica)";
             m_rights = {m_noPrimary, m_noPrimary, m_noPrimary, m_noPrimary};
         }
@@ -349,14 +355,18 @@ void CentralStore::checkLayout(std::int64_t session)
         PgParams().int64(session), PgFormat::Binary);
     if (s.rows() == 0) return;  // not listed: nothing of it is read
     // Its month's samples taken out of the store by its owner (server
-    // maintain --detach-before), to be archived.
-    if (!s.isNull(0, 6))
-        throw StoreInputError(location() + ": the samples of session " + std::to_string(session) +
+    // maintain --detach-before), to be archived: its fields, records and
+    // verdict trail read as ever, its samples say where they went.
+    if (!s.isNull(0, 6)) {
+        m_detached[session] = location() + ": the samples of session " + std::to_string(session) +
                               " are not in the central store: the month it started in (" + s.text(0, 0).substr(0, 7) +
                               ") was detached on " + s.text(0, 6) +
                               " to be archived; its owner attaches it again with tactiscope-cli server maintain "
                               "--attach " +
-                              s.text(0, 0).substr(0, 7));
+                              s.text(0, 0).substr(0, 7);
+        m_checked.insert(session);
+        return;
+    }
     // A session of several devices holds no samples of its own: its parts
     // do, and each is checked as a session when it is read.
     if (s.int64(0, 2) == 0 && s.int64(0, 5) > 0) {
@@ -395,11 +405,21 @@ std::vector<StoredChannel> CentralStore::channels(std::int64_t session)
     return result;
 }
 
+void CentralStore::refuseIfDetached(std::int64_t session)
+{
+    checkLayout(session);
+    if (const auto detached = m_detached.find(session); detached != m_detached.end())
+        throw StoreInputError(detached->second);
+}
+
 std::uint64_t CentralStore::sampleCount(std::int64_t session)
 {
     checkLayout(session);
-    const PgResult r = m_connection.query("SELECT " + kSampleEnd + " FROM sessions s WHERE id = $1",
-                                          PgParams().int64(session), PgFormat::Binary);
+    // The count kept as it was made complete: a detached month's session
+    // still has one.
+    const PgResult r =
+        m_connection.query("SELECT coalesce(listed_samples, " + kSampleEnd + ") FROM sessions s WHERE id = $1",
+                           PgParams().int64(session), PgFormat::Binary);
     return static_cast<std::uint64_t>(r.int64(0, 0));
 }
 
@@ -426,6 +446,7 @@ std::size_t CentralStore::readChannels(std::int64_t session, std::span<const std
     if (n > kMostSamplesPerRead)
         throw StorageError("session " + std::to_string(session) + " would need " + std::to_string(n) +
                            " samples read at once, more than a computer holds");
+    refuseIfDetached(session);
     out.resize(channels.size());
     // NaN first: whatever no chunk covers is a gap.
     for (auto& samples : out) samples.assign(n, std::numeric_limits<double>::quiet_NaN());
@@ -459,6 +480,7 @@ std::vector<OverviewPoint> CentralStore::overview(std::int64_t session, std::siz
     if (channel >= channels(session).size()) throw StorageError(noChannel(session, channel));
     const std::uint64_t end = std::min(sampleCount(session), firstIndex + count);
     if (firstIndex >= end) return {};
+    refuseIfDetached(session);
     lod::LodTable pyramid(std::make_unique<CentralLodRows>(m_connection, session, channel), session,
                           [this, session, channel](std::uint64_t first, std::uint64_t n) {
                               return readChannel(session, channel, first, n);

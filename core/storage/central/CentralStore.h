@@ -9,6 +9,7 @@
 #include "core/storage/SessionSource.h"
 #include "core/storage/central/PgConnection.h"
 
+#include <map>
 #include <memory>
 #include <set>
 
@@ -94,6 +95,8 @@ private:
     // constraints hold for rows added since schema 5, not for older ones or
     // the owner's. Once per session: a listed session never changes.
     void checkLayout(std::int64_t session);
+    // Throws where a session's samples went when its month was detached.
+    void refuseIfDetached(std::int64_t session);
 
     // Where writes go: the connection, or a replica's primary; throws the
     // reason when a replica names no primary.
@@ -106,6 +109,7 @@ private:
     std::string m_noPrimary;                  // why a replica takes no write
     Rights m_rights;
     std::set<std::int64_t> m_checked;
+    std::map<std::int64_t, std::string> m_detached;  // why a session's samples are not here
 };
 
 }  // namespace tactiscope::core::storage::central

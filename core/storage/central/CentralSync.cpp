@@ -423,7 +423,7 @@ SyncOutcome syncToCentral(SessionStore& local, CentralStore& central, const std:
     if (central.isReplica())
         throw StorageError(central.location() +
                            " is a read-only replica of the central store: a station sends its sessions to the "
-                           "primary; set the primary's address");
+                           "primary; name the primary alone, or add target_session_attrs=read-write to the address");
     const std::string name = station.empty() ? central.connection().user() : station;
     // Two syncs of one station at once would both send what is missing and
     // collide on its keys: the second waits for the first, then finds

@@ -312,8 +312,18 @@ void PgConnection::check(const PgResult& result) const
 {
     if (result.m_result == nullptr) failed();
     const ExecStatusType status = PQresultStatus(result.m_result);
-    if (status != PGRES_COMMAND_OK && status != PGRES_TUPLES_OK)
-        throw StorageError("the central store refused: " + oneLine(PQresultErrorMessage(result.m_result)));
+    if (status == PGRES_COMMAND_OK || status == PGRES_TUPLES_OK) return;
+    // The server's sentence, its detail and hint: not its severity or the
+    // CONTEXT lines (which function of ours raised it, on which line).
+    const auto field = [&result](int code) {
+        const char* text = PQresultErrorField(result.m_result, code);
+        return text ? oneLine(text) : std::string();
+    };
+    std::string reason = field(PG_DIAG_MESSAGE_PRIMARY);
+    if (reason.empty()) reason = oneLine(PQresultErrorMessage(result.m_result));
+    for (const int extra : {PG_DIAG_MESSAGE_DETAIL, PG_DIAG_MESSAGE_HINT})
+        if (const std::string text = field(extra); !text.empty()) reason += " (" + text + ")";
+    throw StorageError("the central store refused: " + reason);
 }
 
 void PgConnection::run(const std::string& sql)
