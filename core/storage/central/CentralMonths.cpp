@@ -7,10 +7,10 @@
 namespace tactiscope::core::storage::central {
 namespace {
 
-// "2026-11" as the table suffix "2026_11".
-std::string suffix(const std::string& month)
+// A month's table of `parent` (chunks or lod): "months.chunks_2026_11".
+std::string monthTable(const std::string& parent, const std::string& month)
 {
-    return month.substr(0, 4) + "_" + month.substr(5, 2);
+    return "months." + parent + "_" + month.substr(0, 4) + "_" + month.substr(5, 2);
 }
 
 std::string firstDay(const std::string& month)
@@ -84,8 +84,8 @@ std::vector<std::string> detachMonthsBefore(PgConnection& owner, const std::stri
         if (!m.attached || m.month >= before) continue;
         // One month at a time, each whole: its two tables and its mark.
         PgTransaction transaction(owner);
-        owner.run("ALTER TABLE chunks DETACH PARTITION months.chunks_" + suffix(m.month) +
-                  ";\nALTER TABLE lod DETACH PARTITION months.lod_" + suffix(m.month) + ";");
+        owner.run("ALTER TABLE chunks DETACH PARTITION " + monthTable("chunks", m.month) +
+                  ";\nALTER TABLE lod DETACH PARTITION " + monthTable("lod", m.month) + ";");
         owner.query("INSERT INTO detached_months (month, detached_utc) VALUES ($1::date, server_utc())",
                     {firstDay(m.month)});
         transaction.commit();
@@ -97,21 +97,22 @@ std::vector<std::string> detachMonthsBefore(PgConnection& owner, const std::stri
 bool attachMonth(PgConnection& owner, const std::string& month)
 {
     if (!isMonthText(month)) throw StorageError("'" + month + "' is not a month such as 2026-01");
-    const PgResult r = owner.query(
-        "SELECT EXISTS (SELECT 1 FROM detached_months WHERE month = $1::date), "
-        "to_regclass($2) IS NOT NULL AND to_regclass($3) IS NOT NULL",
-        PgParams().text(firstDay(month)).text("months.chunks_" + suffix(month)).text("months.lod_" + suffix(month)));
+    const PgResult r =
+        owner.query("SELECT EXISTS (SELECT 1 FROM detached_months WHERE month = $1::date), "
+                    "to_regclass($2) IS NOT NULL AND to_regclass($3) IS NOT NULL",
+                    PgParams().text(firstDay(month)).text(monthTable("chunks", month)).text(monthTable("lod", month)));
     if (r.text(0, 0) != "t") {
         if (r.text(0, 1) == "t") return false;
         throw StorageError("the central store has no month " + month + " to attach");
     }
     if (r.text(0, 1) != "t")
-        throw StorageError("the tables of " + month + " (months.chunks_" + suffix(month) + ", months.lod_" +
-                           suffix(month) + ") are no longer in the database: restore them from the archive first");
+        throw StorageError("the tables of " + month + " (" + monthTable("chunks", month) + ", " +
+                           monthTable("lod", month) +
+                           ") are no longer in the database: restore them from the archive first");
     PgTransaction transaction(owner);
     const std::string range = " FOR VALUES FROM ('" + firstDay(month) + "') TO ('" + nextFirstDay(month) + "');";
-    owner.run("ALTER TABLE chunks ATTACH PARTITION months.chunks_" + suffix(month) + range +
-              "\nALTER TABLE lod ATTACH PARTITION months.lod_" + suffix(month) + range);
+    owner.run("ALTER TABLE chunks ATTACH PARTITION " + monthTable("chunks", month) + range +
+              "\nALTER TABLE lod ATTACH PARTITION " + monthTable("lod", month) + range);
     owner.query("DELETE FROM detached_months WHERE month = $1::date", {firstDay(month)});
     transaction.commit();
     return true;

@@ -327,7 +327,8 @@ ALTER TABLE sessions ADD COLUMN IF NOT EXISTS listed_parts BIGINT;
 
 -- A session's sample count (the end of its last chunk or gap), its live
 -- events and its parts' (a session of several devices counts theirs), the
--- rate of its first channel, and its whole parts.
+-- rate of its first channel, and its whole parts. CentralStore's list asks
+-- the same of a row without them (kSummaryQuery): change both together.
 CREATE OR REPLACE FUNCTION listed_counts(session bigint, started text, OUT samples bigint, OUT events bigint,
                                          OUT rate_hz double precision, OUT parts bigint)
 LANGUAGE sql STABLE SET search_path = public AS $body$
