@@ -17,6 +17,7 @@
 #include "support/StationStore.h"
 
 #include <QDateTime>
+#include <QProcess>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -302,4 +303,29 @@ TEST_F(CentralMonths, AStoreOfSchema10IsUpgradedWithEverySampleKept)
     expectSameSamples(uuid);
     const CliResult again = sync(m_station);
     EXPECT_TRUE(again.out.contains("1 already there")) << again.out.toStdString();
+}
+
+// Two stations at once, each first to need a month not made yet: the
+// server makes it once (one maker at a time), and both sessions arrive.
+TEST_F(CentralMonths, TwoStationsNeedingTheSameNewMonthAtOnceBothSend)
+{
+    PgConnection(s_server->conninfo())
+        .run("DO $$ BEGIN IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = 'press_b') THEN "
+             "CREATE ROLE press_b LOGIN IN ROLE tactiscope_station; END IF; END $$;");
+    const QString other = m_dir.filePath("other.tactiscope");
+    for (const QString& path : {m_station, other}) {
+        SessionStore store(path.toStdString());
+        writePanel(store, 125, "2024-02-10T09:00:00.000Z", "february");
+    }
+    QProcess first, second;
+    first.start(QStringLiteral(TACTISCOPE_CLI), {"sync", "--db", m_station, "--server", server("press_a")});
+    second.start(QStringLiteral(TACTISCOPE_CLI), {"sync", "--db", other, "--server", server("press_b")});
+    for (QProcess* sync : {&first, &second}) {
+        ASSERT_TRUE(sync->waitForFinished(60000));
+        EXPECT_EQ(sync->exitCode(), 0) << sync->readAllStandardError().toStdString();
+    }
+    EXPECT_EQ(owner().query("SELECT count(DISTINCT session_id) FROM months.chunks_2024_02").text(0, 0), "2");
+    EXPECT_EQ(
+        owner().query("SELECT count(*) FROM pg_inherits WHERE inhrelid = 'months.chunks_2024_02'::regclass").text(0, 0),
+        "1");
 }
