@@ -46,5 +46,15 @@ inline constexpr NumberRange kShuntToleranceRange{0.01, 50.0, "%"};
 inline constexpr NumberRange kGaugeOhmsRange{1.0, 1e5, "Ω"};
 inline constexpr NumberRange kShuntOhmsRange{1.0, 1e9, "Ω"};
 inline constexpr NumberRange kGaugeFactorRange{0.1, 200.0, ""};
+// A spectrum's averages: one segment (the finest resolution) to a hundred
+// thousand (an hour at 10 kHz in 64-sample segments, the shortest).
+inline constexpr NumberRange kSpectrumAveragesRange{1.0, 1e5, ""};
+// A Butterworth filter's cut-off (the sample rate's range; the filter then
+// asks for below 0.45 of the channel's rate) and order: 2 to 8, where
+// a 8th order already falls 48 dB per octave.
+inline constexpr NumberRange kFilterCutoffRange{1e-6, 1e9, "Hz"};
+inline constexpr NumberRange kFilterOrderRange{2.0, 8.0, ""};
+// A moving average's window: up to a minute (longer is a drift analysis).
+inline constexpr NumberRange kMovingAverageRange{0.0, 60.0, "s"};
 
 }  // namespace tactiscope::core

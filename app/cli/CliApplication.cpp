@@ -7,6 +7,8 @@
 #include "ComplianceCommand.h"
 #include "DetectCommand.h"
 #include "EmulateCommand.h"
+#include "FilterCommand.h"
+#include "HealthCommand.h"
 #include "ImportCommand.h"
 #include "ModelCommand.h"
 #include "PortsCommand.h"
@@ -16,6 +18,7 @@
 #include "SessionsCommand.h"
 #include "ShuntCheckCommand.h"
 #include "SimulateCommand.h"
+#include "SpectrumCommand.h"
 #include "SyncCommand.h"
 #include "core/Version.h"
 
@@ -38,12 +41,15 @@ constexpr std::array kCommands{
     Command{"compliance", "Object stiffness from a compliance probe's forces (seed 001).", runCompliance},
     Command{"detect", "Find surface deflections in a CSV recording (seed 000).", runDetect},
     Command{"emulate", "A simulated probe behind a pseudo-terminal (try the serial path).", runEmulate},
+    Command{"filter", "Write a CSV recording with one channel filtered (notch, low/high/band-pass).", runFilter},
+    Command{"health", "Each channel's mains hum, noise floor, drift and clipped samples.", runHealth},
     Command{"import", "Import a CSV recording from another program as a session.", runImport},
     Command{"model", "What the sensor model gives for a profile (JSON).", runModel},
     Command{"ports", "List serial ports and HID devices.", runPorts},
     Command{"record", "Record a probe on a serial port into a session store.", runRecord},
     Command{"report", "Write a session's inspection report as a PDF.", runReport},
     Command{"server", "Set up a site's central store on PostgreSQL.", runServer},
+    Command{"spectrum", "The power spectral density of a channel and its strongest lines.", runSpectrum},
     Command{"sync", "Send this station's sessions to a site's central store.", runSync},
     Command{"sessions", "List, show, export or delete the sessions of a store.", runSessions},
     Command{"shunt-check", "Check a strain channel's bridge with the probe's shunt.", runShuntCheck},

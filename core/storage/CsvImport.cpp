@@ -5,6 +5,7 @@
 #include "core/ModeCapability.h"
 #include "core/SampleBlock.h"
 #include "core/io/CsvReader.h"
+#include "core/io/CsvTimeBase.h"
 #include "core/storage/Database.h"
 #include "core/storage/RecorderLock.h"
 #include "core/storage/SessionExport.h"
@@ -28,38 +29,6 @@ using io::CsvReader;
 
 constexpr std::size_t kBlockRows = 4096;  // one chunk
 constexpr std::size_t kBatchBlocks = 16;  // one transaction
-
-std::string lower(std::string text)
-{
-    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return text;
-}
-
-// Seconds per unit of a time column's header unit.
-double timeScale(const std::string& header, const std::string& path)
-{
-    const std::string unit = io::splitColumnHeader(header).unit;
-    if (unit.empty() || unit == "s") return 1.0;
-    if (unit == "ms") return 1e-3;
-    if (unit == "us" || unit == "µs") return 1e-6;
-    throw CsvError("'" + path + "': the time column '" + header + "' is in '" + unit + "'; use s, ms or us");
-}
-
-// The simplest rate (fewest significant digits) that puts the last of
-// `steps` sample steps over `span_s` within 1 % of a sample of where the
-// measured rate puts it: 500 Hz, not 499.999999999, for an hour written
-// with rounded times, while a true 499.9 Hz stays 499.9.
-double simplestRate(double steps, double span_s)
-{
-    const double measured = steps / span_s;
-    for (int digits = 1; digits < 17; ++digits) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%.*g", digits, measured);
-        const double rate = std::strtod(text, nullptr);
-        if (std::abs(rate - measured) * span_s <= 0.01) return rate;
-    }
-    return measured;
-}
 
 // The side file of a Tactiscope export, when there is one: X.csv → X.meta.json.
 std::optional<nlohmann::json> readSideFile(const std::string& csvPath)
@@ -204,69 +173,6 @@ bool importVerdictTrail(SessionStore& store, std::int64_t session, const nlohman
     return !trail.empty();
 }
 
-// Where each row goes on the sample grid.
-class RowIndexer {
-public:
-    RowIndexer(double rate_hz, double timeScale)
-        : m_rate_hz(rate_hz),
-          m_scale(timeScale)
-    {
-    }
-
-    // The sample index of the next row without a time column.
-    std::uint64_t next() { return m_rows++; }
-    // The sample index of a row at `time`. Throws CsvError for a time off
-    // the grid or going back.
-    std::uint64_t next(double time, const CsvReader& reader)
-    {
-        const double t_s = time * m_scale;
-        if (m_rows == 0) m_t0_s = t_s;
-        const double position = (t_s - m_t0_s) * m_rate_hz;
-        const double index = std::round(position);
-        if (std::abs(position - index) > 0.25 || !std::isfinite(position))
-            throw CsvError("'" + reader.path() + "' line " + std::to_string(reader.lineNumber()) +
-                           ": t = " + std::to_string(t_s) + " s is off the " + std::to_string(m_rate_hz) +
-                           " Hz sample grid; resample the file to a fixed rate first");
-        if (index < 0.0 || (m_rows > 0 && index <= static_cast<double>(m_last)))
-            throw CsvError("'" + reader.path() + "' line " + std::to_string(reader.lineNumber()) +
-                           ": time does not increase");
-        m_last = static_cast<std::uint64_t>(index);
-        ++m_rows;
-        return m_last;
-    }
-
-private:
-    double m_rate_hz;
-    double m_scale;
-    double m_t0_s = 0.0;       // time of the first row
-    std::uint64_t m_last = 0;  // index of the last row
-    std::uint64_t m_rows = 0;
-};
-
-// The rate from the time column: the median step (robust to missing rows)
-// tells how many sample steps the file spans, and the span over that many
-// steps is the rate, exact to the times' rounding over the whole file.
-double measureRate(const std::string& path, std::size_t timeColumn)
-{
-    CsvReader reader(path);
-    const double scale = timeScale(reader.header()[timeColumn], path);
-    std::vector<double> steps;
-    std::vector<std::string_view> fields;
-    std::optional<double> first, previous;
-    while (reader.next(fields)) {
-        const double t = reader.number(fields[timeColumn], timeColumn) * scale;
-        if (previous) steps.push_back(t - *previous);
-        if (!first) first = t;
-        previous = t;
-    }
-    if (steps.empty()) throw CsvError("'" + path + "' needs at least two rows to tell its sample rate");
-    auto middle = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
-    std::nth_element(steps.begin(), middle, steps.end());
-    const double span_s = *previous - *first;
-    if (!(*middle > 0.0) || !(span_s > 0.0)) throw CsvError("'" + path + "': the time column does not increase");
-    return simplestRate(std::round(span_s / *middle), span_s);
-}
-
 // A cell as the binary32 sample it is stored as. Empty, or what programs
 // print for no number ("nan", "inf"), it is a hole in its column alone, as
 // from a board live. A number beyond binary32's range would be stored as
@@ -289,15 +195,8 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
     const auto side = readSideFile(path);
     const auto& header = reader.header();
 
-    std::optional<std::size_t> timeColumn;
-    if (!options.timeColumn.empty()) {
-        timeColumn = reader.column(options.timeColumn);
-    } else {
-        for (std::size_t c = 0; c < header.size() && !timeColumn; ++c) {
-            const std::string name = lower(io::splitColumnHeader(header[c]).name);
-            if (name == "t" || name == "time" || name == "time_s" || name == "timestamp") timeColumn = c;
-        }
-    }
+    const std::optional<std::size_t> timeColumn =
+        options.timeColumn.empty() ? io::findTimeColumn(header) : std::optional(reader.column(options.timeColumn));
     // Rows are consecutive at a given rate unless a time column is named.
     const bool timed = !options.rate_hz || !options.timeColumn.empty();
     if (timed && !timeColumn)
@@ -391,7 +290,7 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
     } else if (side && !(*side)["channels"].empty() && (*side)["channels"][0].contains("sample_rate_hz")) {
         result.rate_hz = (*side)["channels"][0]["sample_rate_hz"].get<double>();
     } else {
-        result.rate_hz = measureRate(path, *timeColumn);
+        result.rate_hz = io::measureRate(path, *timeColumn);
     }
     if (!(result.rate_hz > 0.0) || !std::isfinite(result.rate_hz))
         throw CsvError("the sample rate must be a positive number of Hz");
@@ -407,7 +306,7 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
     Transaction transaction(store.database());
     result.session = store.beginSession(metadata, result.channels, result.rate_hz, identity.origin);
     const auto fileSize = static_cast<double>(std::filesystem::file_size(path));
-    RowIndexer indexer(result.rate_hz, timeColumn ? timeScale(header[*timeColumn], path) : 1.0);
+    io::RowIndexer indexer(result.rate_hz, timeColumn ? io::timeScale(header[*timeColumn], path) : 1.0);
     const double dt_s = 1.0 / result.rate_hz;
     std::vector<SampleBlock> batch;
     SampleBlock block;

@@ -1,0 +1,135 @@
+// health FILE.csv [--json]: one pass over every channel, read in windows.
+#include "HealthCommand.h"
+
+#include "CliSupport.h"
+#include "SignalInput.h"
+#include "core/dsp/SignalHealth.h"
+#include "core/text/JsonWriter.h"
+
+#include <QTextStream>
+
+#include <iostream>
+
+namespace tactiscope::cli {
+namespace {
+
+using core::dsp::ChannelHealth;
+
+constexpr std::uint64_t kWindowSamples = 1u << 16;
+constexpr double kSecondsPerHour = 3600.0;
+
+struct Row {
+    std::string channel;
+    ShownUnit unit;
+    ChannelHealth health;
+};
+
+std::string healthJson(const std::vector<Row>& rows)
+{
+    core::text::JsonWriter json;
+    json.beginArray();
+    for (const Row& row : rows) {
+        const ChannelHealth& h = row.health;
+        const double scale = row.unit.scale;
+        json.beginObject().key("channel").value(row.channel).key("unit").value(row.unit.unit);
+        if (h.hum)
+            json.key("hum_hz").value(h.hum->mains_hz).key("hum_amplitude").value(h.hum->amplitude * scale);
+        else
+            json.key("hum_hz").null().key("hum_amplitude").null();
+        json.key("noise_floor").value(h.noiseFloor_per_sqrt_hz * scale);
+        if (h.drift)
+            json.key("drift_per_hour")
+                .value(h.drift->rate_per_s * kSecondsPerHour * scale)
+                .key("drift_per_hour_u")
+                .value(h.drift->standardUncertainty_per_s * kSecondsPerHour * scale);
+        else
+            json.key("drift_per_hour").null().key("drift_per_hour_u").null();
+        json.key("clipped").value(static_cast<long long>(h.clipped));
+        json.key("samples").value(static_cast<long long>(h.samples));
+        json.key("missing").value(static_cast<long long>(h.missing));
+        if (h.hum) json.key("hum_line_hz").value(h.hum->line_hz);
+        json.key("resolution_hz").value(h.resolution_hz);
+        json.endObject();
+    }
+    return json.endArray().str();
+}
+
+QString number(double value)
+{
+    return QString::number(value, 'g', 3);
+}
+
+void printHealth(const QString& name, const std::vector<Row>& rows)
+{
+    QTextStream out(stdout);
+    out << name << ": signal health (noise floor in unit/√Hz; drift ± is its standard uncertainty, k = 1)\n";
+    for (const Row& row : rows) {
+        const ChannelHealth& h = row.health;
+        const QString unit = toQString(row.unit.unit);
+        const double scale = row.unit.scale;
+        out << "  " << toQString(row.channel) << (unit.isEmpty() ? QString() : " [" + unit + "]") << ": ";
+        out << (h.hum
+                    ? QStringLiteral("hum %1 Hz %2 %3").arg(h.hum->mains_hz).arg(number(h.hum->amplitude * scale), unit)
+                    : QStringLiteral("no hum"));
+        out << ", noise floor " << number(h.noiseFloor_per_sqrt_hz * scale) << ' ' << unit << "/√Hz";
+        if (h.drift)
+            out << ", drift " << number(h.drift->rate_per_s * kSecondsPerHour * scale) << " ± "
+                << number(h.drift->standardUncertainty_per_s * kSecondsPerHour * scale) << ' ' << unit << "/h";
+        else
+            out << ", drift: too short";
+        out << ", " << h.clipped << " clipped";
+        if (h.missing > 0) out << ", " << h.missing << " missing";
+        out << '\n';
+    }
+}
+
+}  // namespace
+
+int runHealth(const QStringList& arguments)
+{
+    const QString name = QStringLiteral("health");
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Each channel's signal health: mains hum (50 or 60 Hz, its amplitude in the channel's unit), noise floor "
+        "(median amplitude spectral density above 1 Hz), drift per hour with its standard uncertainty (a line "
+        "through 100 interval means), and clipped samples. FILE.csv is read as import reads it; --db and "
+        "--session read a stored session instead."));
+    parser.addPositionalArgument(QStringLiteral("FILE.csv"), QStringLiteral("The recording."));
+    parser.addOption({QStringLiteral("json"),
+                      QStringLiteral("Print JSON: per channel channel, unit, hum_hz, hum_amplitude, noise_floor, "
+                                     "drift_per_hour, drift_per_hour_u, clipped.")});
+    addSignalInputOptions(parser);
+    if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
+    const QString usage = commandUsage(parser, name);
+    SignalInput input;
+    if (const auto exit = openSignalInput(parser, name, usage, input)) return *exit;
+
+    std::vector<std::size_t> channels;
+    std::vector<core::dsp::HealthAccumulator> accumulators;
+    for (std::size_t c = 0; c < input.channels.size(); ++c) {
+        if (input.channels[c].descriptor.kind == core::ChannelKind::Decision) continue;  // a probe's −1/0/+1
+        channels.push_back(c);
+        accumulators.emplace_back(input.sampleRate_hz, input.sampleCount);
+    }
+    try {
+        std::vector<std::vector<double>> window;
+        for (std::uint64_t first = 0; first < input.sampleCount; first += kWindowSamples) {
+            input.store->readChannels(input.session, channels, first, kWindowSamples, window);
+            for (std::size_t i = 0; i < channels.size(); ++i) accumulators[i].push(window[i]);
+        }
+    } catch (const core::storage::StorageError& e) {
+        return storageFailure(e, QStringLiteral("health: "));
+    }
+    std::vector<Row> rows;
+    for (std::size_t i = 0; i < channels.size(); ++i) {
+        const auto& descriptor = input.channels[channels[i]].descriptor;
+        rows.push_back({descriptor.name, shownUnit(descriptor), accumulators[i].result()});
+    }
+    if (parser.isSet(QStringLiteral("json")))
+        std::cout << healthJson(rows) << '\n';
+    else
+        printHealth(input.name, rows);
+    return kExitOk;
+}
+
+}  // namespace tactiscope::cli

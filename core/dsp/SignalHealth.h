@@ -1,0 +1,50 @@
+// A channel's signal health, gathered in one pass over its samples (a
+// stored session read in windows, a CSV file a block at a time): mains
+// hum (which mains, and its amplitude in the channel's unit), the noise
+// floor (unit/√Hz), the drift (unit/s with its ±) and the clipped samples.
+#pragma once
+
+#include "core/dsp/ClipCount.h"
+#include "core/dsp/DriftRate.h"
+#include "core/dsp/MainsHum.h"
+#include "core/dsp/WelchSpectrum.h"
+
+#include <cstdint>
+#include <optional>
+#include <span>
+
+namespace tactiscope::core::dsp {
+
+struct ChannelHealth {
+    std::uint64_t samples = 0;
+    std::uint64_t missing = 0;
+    std::optional<MainsHum> hum;
+    double noiseFloor_per_sqrt_hz = 0.0;  // NaN when too short for a spectrum
+    double resolution_hz = 0.0;
+    std::size_t averages = 0;
+    std::optional<Drift> drift;
+    std::uint64_t clipped = 0;
+};
+
+class HealthAccumulator {
+public:
+    // `expectedSamples` sizes the spectrum's segments (0.25 Hz resolution
+    // where eight averages fit) and the drift's intervals.
+    HealthAccumulator(double sampleRate_hz, std::uint64_t expectedSamples,
+                      std::optional<ChannelRange> range = std::nullopt);
+
+    void push(std::span<const double> values);
+    ChannelHealth result() const;
+
+private:
+    WelchAccumulator m_spectrum;
+    DriftAccumulator m_drift;
+    ClipCounter m_clips;
+    std::uint64_t m_samples = 0;
+    std::uint64_t m_missing = 0;
+};
+
+// The segment length health takes for a recording of `samples` at `rate`.
+std::size_t healthSegmentLength(double sampleRate_hz, std::uint64_t samples);
+
+}  // namespace tactiscope::core::dsp
