@@ -6,6 +6,7 @@
 #include "core/UnitScale.h"
 #include "core/detector/CsvDetection.h"
 #include "core/detector/ProbeScanFiles.h"
+#include "core/dsp/FilterSettings.h"
 #include "core/io/CsvColumns.h"
 #include "core/io/CsvReader.h"
 #include "core/storage/Database.h"
@@ -31,6 +32,7 @@ struct DetectOptions {
     QString probeDecisions;  // the rows from the emulated probe's decisions instead of detecting
     std::vector<std::string> columns{"t", "a", "b"};
     std::optional<std::string> position;  // the rig's position column: sites from it
+    std::optional<double> notch_hz;       // a mains notch on every cantilever first
     DetectorOptions detector;
 };
 
@@ -60,6 +62,12 @@ std::optional<QString> readOptions(const QCommandLineParser& parser, DetectOptio
     if (const auto error = readDetectorOptions(parser, options.detector)) return error;
     if (options.detector.engine == core::detector::DetectorEngine::Probe && options.detector.threads > 1)
         return QStringLiteral("--threads is the workstation's: the probe's kernel runs on one");
+    if (parser.isSet(QStringLiteral("notch"))) {
+        const QString notch = parser.value(QStringLiteral("notch"));
+        if (notch != QStringLiteral("50") && notch != QStringLiteral("60"))
+            return QStringLiteral("--notch is the mains frequency, 50 or 60, not %1").arg(quoted(notch));
+        options.notch_hz = notch.toDouble();
+    }
     options.probeInput = parser.value(QStringLiteral("probe-input"));
     options.probeDecisions = parser.value(QStringLiteral("probe-decisions"));
     if (!options.probeInput.isEmpty() && (!options.output.isEmpty() || !options.probeDecisions.isEmpty()))
@@ -169,6 +177,11 @@ int runDetect(const QStringList& arguments)
          QStringLiteral("The rig's position column (an encoder along the stroke, in m): each crossing is placed "
                         "where it says, on its scale, not by its phase from the stroke's centre (docs/detector.md)."),
          QStringLiteral("X")},
+        {QStringLiteral("notch"),
+         QStringLiteral(
+             "Run every cantilever through a mains notch first (50 or 60 Hz and harmonics, causal, as "
+             "live): a press line's hum otherwise correlates the gauges at every period (docs/detector.md)."),
+         QStringLiteral("50|60")},
         {QStringLiteral("engine"),
          QStringLiteral("workstation (default: double precision) or probe (the probe's own single-precision "
                         "kernel, firmware/probe-detector, exponential form, one thread)."),
@@ -198,9 +211,14 @@ int runDetect(const QStringList& arguments)
     if (!options.probeInput.isEmpty() || !options.probeDecisions.isEmpty()) return emulatedProbeFiles(options);
 
     core::detector::CsvDetection result;
-    const core::detector::StretchSettings settings{options.detector.parameters, options.detector.hold_s,
-                                                   options.detector.spacing_m, options.detector.threads,
-                                                   options.detector.engine};
+    core::detector::StretchSettings settings{options.detector.parameters, options.detector.hold_s,
+                                             options.detector.spacing_m,  options.detector.threads,
+                                             options.detector.engine,     std::nullopt};
+    if (options.notch_hz) {
+        core::dsp::FilterSettings notch;
+        notch.notch_hz = options.notch_hz;
+        settings.filter = notch;
+    }
     const std::string input = options.input.toStdString();
     std::optional<std::string> unusedLength;
     double positionSpan_m = 0.0;

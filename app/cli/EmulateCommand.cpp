@@ -2,6 +2,7 @@
 #include "EmulateCommand.h"
 
 #include "CliSupport.h"
+#include "HumOptions.h"
 #include "devices/emulator/ProbeEmulator.h"
 #include "devices/simulator/ScenarioCatalog.h"
 
@@ -74,6 +75,7 @@ int runEmulate(const QStringList& arguments)
          QStringLiteral("The probe runs the surface-deflection detector itself (firmware/probe-detector) and sends "
                         "its decisions as channels out, rab and rba of kind decision (panel-scan, TSP/1).")},
     });
+    addHumOptions(parser);
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
     if (!parser.positionalArguments().isEmpty())
@@ -122,6 +124,12 @@ int runEmulate(const QStringList& arguments)
         if (!samples || *samples > 1000)
             return usageError(QStringLiteral("--samples-per-frame must be a whole number from 1 to 1000"), usage);
         options.samplesPerFrame = static_cast<std::size_t>(*samples);
+    }
+    {
+        QString humError;
+        const auto hum = parseHumOptions(parser, humError);
+        if (!hum) return usageError(humError, usage);
+        options.hum = *hum;
     }
     if (parser.isSet(QStringLiteral("seed"))) {
         bool ok = false;

@@ -2,6 +2,7 @@
 #include "SimulateCommand.h"
 
 #include "CliSupport.h"
+#include "HumOptions.h"
 #include "core/SampleBlock.h"
 #include "core/storage/SessionExport.h"
 #include "core/text/NumberFormat.h"
@@ -88,6 +89,7 @@ int runSimulate(const QStringList& arguments)
         QStringLiteral("depths-mm"), QStringLiteral("palpation: the press depths in mm, cycled (default 2,4,6,8)."),
         QStringLiteral("LIST"));
     parser.addOptions({scenarioOption, secondsOption, seedOption, outputOption, stiffnessOption, depthsOption});
+    addHumOptions(parser);
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
     if (!parser.positionalArguments().isEmpty())
@@ -134,6 +136,10 @@ int runSimulate(const QStringList& arguments)
         scenario = std::make_unique<devices::simulator::PalpationScenario>(phantom);
     }
 
+    QString humError;
+    const auto hum = parseHumOptions(parser, humError);
+    if (!hum) return usageError(humError, usage);
+    if (hum->any()) scenario = std::make_unique<devices::simulator::HummedScenario>(std::move(scenario), *hum);
     const devices::simulator::SimulatedScenario& simulated = *scenario;  // owned by the source from here
     devices::simulator::SimulatorSource source(std::move(scenario),
                                                {devices::simulator::Pacing::AsFastAsPossible, 500, seconds});

@@ -108,6 +108,11 @@ StreamingDetection::StreamingDetection(std::size_t cantilevers, const StretchSet
     m_threshold = resolved.threshold;
     m_lagCount = resolved.lags.size();
     m_warmUp = warmUpOf(resolved);
+    if (settings.filter) {
+        const double rate_hz = 1.0 / settings.parameters.sampleInterval_s;
+        for (std::size_t c = 0; c < cantilevers; ++c) m_filters.emplace_back(*settings.filter, rate_hz);
+        m_filtered.resize(cantilevers);
+    }
     // A split in time pays while the warm-up is a small part of a half run.
     m_splitInTime = settings.engine == DetectorEngine::Workstation && settings.threads >= 2 && m_warmUp > 0 &&
                     m_warmUp <= kChunk / 16;
@@ -194,6 +199,20 @@ void StreamingDetection::push(std::span<const std::span<const double>> cantileve
         if (series.size() != n) throw std::invalid_argument("cantilever series differ in length");
     if (!times.empty() && times.size() != n)
         throw std::invalid_argument("times and cantilever series differ in length");
+    if (m_filters.empty()) return pushSamples(cantilevers, times);
+    std::vector<std::span<const double>> filtered;
+    for (std::size_t c = 0; c < m_cantilevers; ++c) {
+        m_filtered[c].assign(cantilevers[c].begin(), cantilevers[c].end());
+        m_filters[c].process(m_filtered[c]);
+        filtered.emplace_back(m_filtered[c]);
+    }
+    pushSamples(filtered, times);
+}
+
+void StreamingDetection::pushSamples(std::span<const std::span<const double>> cantilevers,
+                                     std::span<const double> times)
+{
+    const std::size_t n = cantilevers.front().size();
     const auto complete = [&](std::size_t i) {
         return std::ranges::none_of(cantilevers, [i](std::span<const double> s) { return std::isnan(s[i]); });
     };

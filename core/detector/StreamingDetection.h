@@ -27,6 +27,7 @@
 #include "core/detector/PairDetector.h"
 #include "core/detector/ProbeDecisionCheck.h"
 #include "core/detector/ProbeDetector.h"
+#include "core/dsp/ChannelFilter.h"
 
 #include <cstdint>
 #include <functional>
@@ -50,6 +51,9 @@ struct StretchSettings {
     std::optional<double> spacing_m;
     unsigned threads = 1;  // the workstation's engine only
     DetectorEngine engine = DetectorEngine::Workstation;
+    // A filter each cantilever goes through first (a mains notch under
+    // hum: docs/detector.md), causal as live; none: the samples as they are.
+    std::optional<dsp::FilterSettings> filter = std::nullopt;
 };
 
 struct StretchDetection {
@@ -105,6 +109,7 @@ private:
     // cost more than the work of a short run).
     struct Pool;
 
+    void pushSamples(std::span<const std::span<const double>> cantilevers, std::span<const double> times);
     void runStretch(std::span<const std::span<const double>> cantilevers, std::span<const double> times,
                     std::size_t from, std::size_t count);
     // Runs job(w) for every worker w, w = 0 on the calling thread.
@@ -116,6 +121,8 @@ private:
     void restart();
 
     StretchSettings m_settings;
+    std::vector<dsp::ChannelFilter> m_filters;    // per cantilever, when filtered
+    std::vector<std::vector<double>> m_filtered;  // their outputs, reused
     double m_t0_s;
     double m_threshold = 0.0;
     std::size_t m_lagCount = 0;

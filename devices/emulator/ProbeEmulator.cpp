@@ -58,6 +58,7 @@ ProbeEmulator::ProbeEmulator(const EmulatorOptions& options)
 {
     m_scenario = simulator::makeScenario(options.scenario, options.seed, options.rate_hz);
     if (!m_scenario) throw std::invalid_argument("unknown scenario '" + options.scenario + "'");
+    if (options.hum.any()) m_scenario = std::make_unique<simulator::HummedScenario>(std::move(m_scenario), options.hum);
     if (options.samplesPerFrame == 0 || options.samplesPerFrame > 1000)
         throw std::invalid_argument("samples per frame must be 1 to 1000");
     if (!(options.garbageRate >= 0.0 && options.garbageRate <= 1.0))

@@ -14,6 +14,7 @@
 #include "core/detector/FirmwarePairDetector.h"
 #include "devices/PortSource.h"
 #include "devices/protocol/BinaryDecoder.h"
+#include "devices/simulator/MainsHumOverlay.h"
 #include "devices/simulator/ScenarioCatalog.h"
 #include "devices/simulator/ShuntedBridges.h"
 #include "devices/simulator/SimulatedScenario.h"
@@ -49,6 +50,7 @@ struct EmulatorOptions {
     double garbageRate = 0.0;             // fraction of frames with garbage
     std::size_t samplesPerFrame = 10;
     std::uint64_t seed = 1;
+    simulator::MainsHumSettings hum = {};              // none unless set
     std::optional<double> infoRate_hz = std::nullopt;  // the rate its INFO claims (a lie when not the true rate)
     EmulatorFault fault = EmulatorFault::None;
     double faultAt_s = 3.0;  // stream time of a restart or a jump
