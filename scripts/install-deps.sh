@@ -10,7 +10,7 @@ packages=(
   libqcustomplot-dev libhidapi-dev libserialport-dev
   libeigen3-dev libsqlite3-dev nlohmann-json3-dev
   libpq-dev postgresql
-  libfftw3-dev libliquid-dev
+  libfftw3-dev libliquid-dev libmuparser-dev
   libgtest-dev libbenchmark-dev
   xvfb xauth file fonts-dejavu-core clang-format poppler-utils
   desktop-file-utils appstream

@@ -5,6 +5,7 @@
 #include "SessionArgument.h"
 #include "core/derived/SessionLanes.h"
 #include "core/detector/DefectOrder.h"
+#include "core/math/MathColumns.h"
 #include "core/modes/ModeDefinition.h"
 #include "core/report/VerdictTrail.h"
 #include "core/sensors/SensorProfile.h"
@@ -342,7 +343,8 @@ int decideVerdict(SessionSource& store, std::int64_t id, const QString& word, co
     return kExitOk;
 }
 
-int exportSession(SessionSource& store, std::int64_t id, const QString& format, const QString& output, bool derived)
+int exportSession(SessionSource& store, std::int64_t id, const QString& format, const QString& output, bool derived,
+                  std::vector<core::math::MathDefinition> math)
 {
     std::unique_ptr<core::storage::ComputedColumns> computed;
     if (derived) {
@@ -350,6 +352,14 @@ int exportSession(SessionSource& store, std::int64_t id, const QString& format, 
             computed = core::derived::computedColumns(store, *store.session(id));
         } catch (const std::invalid_argument& e) {
             printError(QStringLiteral("--derived: %1").arg(toQString(e.what())));
+            return kExitUsage;
+        }
+    }
+    if (!math.empty()) {
+        try {
+            computed = std::make_unique<core::math::MathColumns>(store, id, std::move(math), std::move(computed));
+        } catch (const core::math::MathError& e) {
+            printError(QStringLiteral("--math: %1").arg(toQString(e.what())));
             return kExitUsage;
         }
     }
@@ -399,11 +409,12 @@ int runSessions(const QStringList& arguments)
         "                           --operator, --verdict, --status, --station, --from, --before, --search;\n"
         "                           pages: --limit, --after, --all)\n"
         "  show ID|UUID|last        one session's metadata, channels and losses\n"
-        "  export ID|UUID|last --format csv|json --output PATH [--derived]\n"
+        "  export ID|UUID|last --format csv|json --output PATH [--derived] [--math NAME[UNIT]=EXPR]...\n"
         "                           CSV: t then the channels (metadata in PATH's .meta.json); JSON: all;\n"
         "                           --derived (CSV): the mode's physical quantities too (palpation:\n"
         "                           force_high [N], force_low [N], Q, stiffness [N/m]; capacitive:\n"
-        "                           delta_c [F], relative_change, force [N], deflection [m])\n"
+        "                           delta_c [F], relative_change, force [N], deflection [m]);\n"
+        "                           --math (CSV): a math channel in its unit, \"diff[µε]=a - b\"\n"
         "  verdict ID|UUID|last pass|defects-found --by NAME [--note TEXT]\n"
         "                           a reviewer's verdict, added to the session's verdict trail\n"
         "  delete ID|UUID           remove a session and its samples\n"
@@ -421,6 +432,10 @@ int runSessions(const QStringList& arguments)
         {QStringLiteral("format"), QStringLiteral("export: csv or json."), QStringLiteral("csv|json")},
         {QStringLiteral("output"), QStringLiteral("export: the file to write."), QStringLiteral("PATH")},
         {QStringLiteral("derived"), QStringLiteral("export (CSV): add the mode's physical quantities.")},
+        {QStringLiteral("math"),
+         QStringLiteral("export (CSV): add a math channel over the channels, NAME[UNIT]=EXPR, e.g. "
+                        "\"diff[µε]=a - b\" (repeatable; each may use those before it; units are checked)."),
+         QStringLiteral("NAME[UNIT]=EXPR")},
         {QStringLiteral("mode"), QStringLiteral("list: only this mode."), QStringLiteral("MODE")},
         {QStringLiteral("subject"), QStringLiteral("list: only this panel or phantom."), QStringLiteral("ID")},
         {QStringLiteral("operator"), QStringLiteral("list: only this operator."), QStringLiteral("NAME")},
@@ -467,6 +482,7 @@ int runSessions(const QStringList& arguments)
     if (decides && parser.value(QStringLiteral("by")).trimmed().isEmpty())
         return usageError(QStringLiteral("verdict needs --by NAME: the trail says who decided"), usage);
     const QString format = parser.value(QStringLiteral("format"));
+    std::vector<core::math::MathDefinition> math;
     if (action == QLatin1String("export")) {
         if (format != QLatin1String("csv") && format != QLatin1String("json"))
             return usageError(QStringLiteral("--format must be csv or json"), usage);
@@ -478,6 +494,14 @@ int runSessions(const QStringList& arguments)
                               usage);
         if (parser.isSet(QStringLiteral("derived")) && format != QLatin1String("csv"))
             return usageError(QStringLiteral("--derived goes with --format csv"), usage);
+        if (parser.isSet(QStringLiteral("math")) && format != QLatin1String("csv"))
+            return usageError(QStringLiteral("--math goes with --format csv"), usage);
+        try {
+            for (const QString& definition : parser.values(QStringLiteral("math")))
+                math.push_back(core::math::parseMathDefinition(definition.toStdString()));
+        } catch (const core::math::MathError& e) {
+            return usageError(QStringLiteral("--math: %1").arg(toQString(e.what())), usage);
+        }
     }
     const QString dbArgument = parser.value(QStringLiteral("db"));
     if (!storeArgumentExists(dbArgument)) return usageError(QStringLiteral("%1 does not exist").arg(dbArgument), usage);
@@ -551,7 +575,7 @@ int runSessions(const QStringList& arguments)
         if (action == QLatin1String("show")) return show(store, *id, parser.isSet(QStringLiteral("json")));
         if (action == QLatin1String("export"))
             return exportSession(store, *id, format, parser.value(QStringLiteral("output")),
-                                 parser.isSet(QStringLiteral("derived")));
+                                 parser.isSet(QStringLiteral("derived")), std::move(math));
         if (decides)
             return decideVerdict(store, *id, positional[2], parser.value(QStringLiteral("by")),
                                  parser.value(QStringLiteral("note")));

@@ -1,0 +1,67 @@
+// Reading a session's stored (and derived) channels and evaluating the math on them.
+#include "core/math/MathColumns.h"
+
+namespace tactiscope::core::math {
+
+std::vector<MathInput> mathInputs(const std::vector<ChannelDescriptor>& channels)
+{
+    std::vector<MathInput> inputs;
+    for (const ChannelDescriptor& channel : channels) {
+        // A unit this program does not read is a dimension of its own
+        // nobody else has: such a channel can only be scaled, never mixed.
+        const auto unit = units::parseUnit(channel.unit);
+        const bool strain = channel.kind == ChannelKind::Strain && channel.unit.empty();
+        inputs.push_back({channel.name, unit ? unit->dimension : units::Dimension{{0, 0, 0, 0, 7}},
+                          strain ? "strain" : channel.unit});
+    }
+    return inputs;
+}
+
+MathColumns::MathColumns(storage::SessionSource& store, std::int64_t session, std::vector<MathDefinition> definitions,
+                         std::unique_ptr<storage::ComputedColumns> derived)
+    : m_store(store),
+      m_session(session),
+      m_derived(std::move(derived))
+{
+    std::vector<ChannelDescriptor> channels;
+    for (const auto& stored : store.channels(session)) channels.push_back(stored.descriptor);
+    m_storedChannels = channels.size();
+    if (m_derived)
+        for (const ChannelDescriptor& channel : m_derived->channels()) channels.push_back(channel);
+    m_math = std::make_unique<MathChannels>(mathInputs(channels), std::move(definitions));
+}
+
+std::vector<ChannelDescriptor> MathColumns::channels() const
+{
+    std::vector<ChannelDescriptor> result = m_derived ? m_derived->channels() : std::vector<ChannelDescriptor>{};
+    for (const MathDefinition& definition : m_math->definitions())
+        result.push_back({definition.name, definition.unit == "1" ? "" : definition.unit, ChannelKind::Other});
+    return result;
+}
+
+std::string MathColumns::basis() const
+{
+    std::string text = m_derived ? m_derived->basis() + "; " : "";
+    text += "math channels (muParser, values in their declared units):";
+    for (const MathDefinition& definition : m_math->definitions()) text += " " + definition.text() + ";";
+    text.pop_back();
+    return text;
+}
+
+std::vector<std::vector<double>> MathColumns::read(std::uint64_t first, std::uint64_t count)
+{
+    std::vector<std::vector<double>> stored;
+    std::vector<std::size_t> all(m_storedChannels);
+    for (std::size_t c = 0; c < all.size(); ++c) all[c] = c;
+    m_store.readChannels(m_session, all, first, count, stored);
+    std::vector<std::vector<double>> derived =
+        m_derived ? m_derived->read(first, count) : std::vector<std::vector<double>>{};
+    std::vector<std::span<const double>> inputs(stored.begin(), stored.end());
+    for (const auto& column : derived) inputs.emplace_back(column);
+    std::vector<std::vector<double>> math;
+    m_math->evaluate(inputs, math);
+    for (auto& column : math) derived.push_back(std::move(column));
+    return derived;
+}
+
+}  // namespace tactiscope::core::math

@@ -1,0 +1,37 @@
+// Math channels as columns of a session's CSV export (`sessions export
+// --math`): each definition over the session's stored channels (and the
+// mode's derived ones when those are exported too), in its declared unit,
+// read in the export's windows.
+#pragma once
+
+#include "core/math/MathChannels.h"
+#include "core/storage/SessionExport.h"
+
+#include <memory>
+
+namespace tactiscope::core::math {
+
+class MathColumns final : public storage::ComputedColumns {
+public:
+    // `derived` (may be null) is written first and its columns may be
+    // named too. Throws MathError for a definition that cannot be made.
+    MathColumns(storage::SessionSource& store, std::int64_t session, std::vector<MathDefinition> definitions,
+                std::unique_ptr<storage::ComputedColumns> derived = nullptr);
+
+    std::vector<ChannelDescriptor> channels() const override;
+    std::string basis() const override;
+    std::vector<std::vector<double>> read(std::uint64_t first, std::uint64_t count) override;
+
+private:
+    storage::SessionSource& m_store;
+    std::int64_t m_session;
+    std::unique_ptr<storage::ComputedColumns> m_derived;
+    std::size_t m_storedChannels = 0;
+    std::unique_ptr<MathChannels> m_math;
+};
+
+// The inputs a session's channels give: name, dimension and unit of each
+// whose unit this program reads (values in SI, as stored).
+std::vector<MathInput> mathInputs(const std::vector<ChannelDescriptor>& channels);
+
+}  // namespace tactiscope::core::math
