@@ -209,4 +209,11 @@ int exitForReadError(const QString& path)
     }
 }
 
+std::optional<double> parseMainsFrequency(const QString& option, const QString& text, QString& error)
+{
+    if (text == QStringLiteral("50") || text == QStringLiteral("60")) return text.toDouble();
+    error = QStringLiteral("--%1 is the mains frequency, 50 or 60, not %2").arg(option, quoted(text));
+    return std::nullopt;
+}
+
 }  // namespace tactiscope::cli

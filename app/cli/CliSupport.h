@@ -76,6 +76,10 @@ int exitForReadError(const QString& path);
 // first 40 characters and its length (core/text/ShortQuote.h).
 QString quoted(const QString& value);
 
+// Option --NAME's mains frequency, 50 or 60 Hz; nothing, with the usage
+// error in `error`, for anything else.
+std::optional<double> parseMainsFrequency(const QString& option, const QString& text, QString& error);
+
 // A finite number, or nothing when `text` is not one.
 std::optional<double> parseNumber(const QString& text);
 // Option --NAME's number when it lies in `range` (core/NumberRanges.h, the

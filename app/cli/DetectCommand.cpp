@@ -63,10 +63,9 @@ std::optional<QString> readOptions(const QCommandLineParser& parser, DetectOptio
     if (options.detector.engine == core::detector::DetectorEngine::Probe && options.detector.threads > 1)
         return QStringLiteral("--threads is the workstation's: the probe's kernel runs on one");
     if (parser.isSet(QStringLiteral("notch"))) {
-        const QString notch = parser.value(QStringLiteral("notch"));
-        if (notch != QStringLiteral("50") && notch != QStringLiteral("60"))
-            return QStringLiteral("--notch is the mains frequency, 50 or 60, not %1").arg(quoted(notch));
-        options.notch_hz = notch.toDouble();
+        QString error;
+        options.notch_hz = parseMainsFrequency(QStringLiteral("notch"), parser.value(QStringLiteral("notch")), error);
+        if (!options.notch_hz) return error;
     }
     options.probeInput = parser.value(QStringLiteral("probe-input"));
     options.probeDecisions = parser.value(QStringLiteral("probe-decisions"));

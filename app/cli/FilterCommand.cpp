@@ -37,13 +37,11 @@ std::optional<QString> readOptions(const QCommandLineParser& parser, FilterOptio
     options.channel = parser.value(QStringLiteral("channel")).toStdString();
     if (options.channel.empty()) return QStringLiteral("filter: --channel is required");
     FilterSettings& s = options.settings;
-    if (parser.isSet(QStringLiteral("notch"))) {
-        const QString notch = parser.value(QStringLiteral("notch"));
-        if (notch != QStringLiteral("50") && notch != QStringLiteral("60"))
-            return QStringLiteral("--notch is the mains frequency, 50 or 60, not %1").arg(quoted(notch));
-        s.notch_hz = notch.toDouble();
-    }
     QString error;
+    if (parser.isSet(QStringLiteral("notch"))) {
+        s.notch_hz = parseMainsFrequency(QStringLiteral("notch"), parser.value(QStringLiteral("notch")), error);
+        if (!s.notch_hz) return error;
+    }
     for (const auto& [option, cutoff] : {std::pair{"lowpass", &s.lowpass_hz}, std::pair{"highpass", &s.highpass_hz}}) {
         if (!parser.isSet(QLatin1String(option))) continue;
         *cutoff = numberInRange(parser, option, core::kFilterCutoffRange, 0.0, error);

@@ -32,16 +32,13 @@ std::optional<devices::simulator::MainsHumSettings> parseHumOptions(const QComma
     devices::simulator::MainsHumSettings hum;
     const bool given = parser.isSet(QStringLiteral("hum"));
     if (parser.isSet(QStringLiteral("hum-hz"))) {
-        const QString hz = parser.value(QStringLiteral("hum-hz"));
-        if (hz != QStringLiteral("50") && hz != QStringLiteral("60")) {
-            error = QStringLiteral("--hum-hz is the mains frequency, 50 or 60, not %1").arg(quoted(hz));
-            return std::nullopt;
-        }
+        const auto hz = parseMainsFrequency(QStringLiteral("hum-hz"), parser.value(QStringLiteral("hum-hz")), error);
+        if (!hz) return std::nullopt;
         if (!given) {
             error = QStringLiteral("--hum-hz goes with --hum COMMON[,DIFFERENTIAL]");
             return std::nullopt;
         }
-        hum.mains_hz = hz.toDouble();
+        hum.mains_hz = *hz;
     }
     if (!given) return hum;
     const QStringList parts = parser.value(QStringLiteral("hum")).split(QLatin1Char(','));

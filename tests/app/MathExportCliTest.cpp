@@ -30,15 +30,22 @@ QString recording()
     return text;
 }
 
+// The recording imported into a store in `dir`; its path.
+QString importedRecording(const QTemporaryDir& dir)
+{
+    const QString csv = dir.filePath("in.csv");
+    const QString db = dir.filePath("s.tactiscope");
+    writeText(csv, recording());
+    EXPECT_EQ(runCli({"import", csv, "--db", db}).exitCode, 0);
+    return db;
+}
+
 }  // namespace
 
 TEST(MathExportCli, MathChannelsAreTheArithmeticOfTheExportedColumnsInTheirUnits)
 {
     QTemporaryDir dir;
-    const QString csv = dir.filePath("in.csv");
-    const QString db = dir.filePath("s.tactiscope");
-    writeText(csv, recording());
-    ASSERT_EQ(runCli({"import", csv, "--db", db}).exitCode, 0);
+    const QString db = importedRecording(dir);
     const QString out = dir.filePath("out.csv");
     const CliResult run =
         runCli({"sessions", "--db", db, "export", "last", "--format", "csv", "--output", out, "--math",
@@ -69,10 +76,7 @@ TEST(MathExportCli, MathChannelsAreTheArithmeticOfTheExportedColumnsInTheirUnits
 TEST(MathExportCli, AUnitMismatchAndOtherMistakesAreRefusedInWords)
 {
     QTemporaryDir dir;
-    const QString csv = dir.filePath("in.csv");
-    const QString db = dir.filePath("s.tactiscope");
-    writeText(csv, recording());
-    ASSERT_EQ(runCli({"import", csv, "--db", db}).exitCode, 0);
+    const QString db = importedRecording(dir);
     const auto refused = [&](const QStringList& more) {
         return runCli(QStringList{"sessions", "--db", db, "export", "last", "--format", "csv", "--output",
                                   dir.filePath("x.csv")} +
