@@ -77,6 +77,14 @@ void WelchAccumulator::breakStretch()
     endStretch();
 }
 
+void WelchAccumulator::reset()
+{
+    endStretch();
+    std::fill(m_psdSum.begin(), m_psdSum.end(), 0.0);
+    std::fill(m_powerSum.begin(), m_powerSum.end(), 0.0);
+    m_averages = m_stretches = m_stretchesTooShort = 0;
+}
+
 void WelchAccumulator::endStretch()
 {
     if (m_stretchSamples > 0) {

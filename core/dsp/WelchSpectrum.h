@@ -47,6 +47,9 @@ public:
     WelchAccumulator(double sampleRate_hz, std::size_t segmentLength, SpectralWindow window);
 
     void push(std::span<const double> values);
+    // Forgets every sample, keeping the plan and the windows: a live
+    // spectrum takes its window afresh each frame at the cost of the FFTs alone.
+    void reset();
     // Ends the current gap-free stretch (a gap known from elsewhere).
     void breakStretch();
     std::size_t averages() const { return m_averages; }

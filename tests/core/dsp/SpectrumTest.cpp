@@ -111,3 +111,24 @@ TEST(Spectrum, MainsHumIsFoundWithItsAmplitude)
     }
     EXPECT_FALSE(findMainsHum(welchSpectrum(whiteNoise(40000, 2.0, 7), rate, {SpectralWindow::Hann, 8})).has_value());
 }
+
+TEST(Spectrum, AnAccumulatorResetGivesWhatAFreshOneGives)
+{
+    // A live spectrum reuses its accumulator frame after frame.
+    const double rate = 500.0;
+    auto first = whiteNoise(5000, 1.0, 8);
+    auto second = whiteNoise(5000, 2.0, 9);
+    addSine(second, rate, 60.0, 3.0);
+    WelchAccumulator reused(rate, 512, SpectralWindow::Hann);
+    reused.push(first);
+    reused.reset();
+    reused.push(second);
+    WelchAccumulator fresh(rate, 512, SpectralWindow::Hann);
+    fresh.push(second);
+    const Spectrum a = reused.result();
+    const Spectrum b = fresh.result();
+    EXPECT_EQ(a.averages, b.averages);
+    EXPECT_EQ(a.stretches, b.stretches);
+    EXPECT_EQ(a.psd, b.psd);
+    EXPECT_EQ(a.amplitude, b.amplitude);
+}
