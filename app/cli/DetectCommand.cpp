@@ -71,6 +71,9 @@ std::optional<QString> readOptions(const QCommandLineParser& parser, DetectOptio
     options.probeDecisions = parser.value(QStringLiteral("probe-decisions"));
     if (!options.probeInput.isEmpty() && (!options.output.isEmpty() || !options.probeDecisions.isEmpty()))
         return QStringLiteral("--probe-input writes the emulated probe's input, nothing else");
+    if (options.notch_hz && (!options.probeInput.isEmpty() || !options.probeDecisions.isEmpty()))
+        return QStringLiteral(
+            "--notch goes with detecting: --probe-input and --probe-decisions write the scan as it is");
     if (options.position && (!options.probeInput.isEmpty() || !options.probeDecisions.isEmpty()))
         return QStringLiteral("--position goes with detecting: --probe-input and --probe-decisions write files");
     if (!options.probeDecisions.isEmpty() && options.output.isEmpty())

@@ -181,6 +181,9 @@ int runFilter(const QStringList& arguments)
             throw core::io::CsvError("'" + input +
                                      "' has no time column (t, time, time_s or timestamp) to tell its sample rate");
         const std::size_t column = channelColumn(header, options.channel);
+        if (column == *timeColumn)
+            throw core::io::CsvError("'" + input + "': '" + options.channel +
+                                     "' is the time column; --channel names a data column");
         rate_hz = core::io::measureRate(input, *timeColumn);
         if (const auto refusal = core::dsp::filterRefusal(options.settings, rate_hz))
             throw core::io::CsvError("'" + input + "' at " + core::text::formatShortest(rate_hz) + " Hz: " + *refusal);

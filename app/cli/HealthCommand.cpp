@@ -8,6 +8,7 @@
 
 #include <QTextStream>
 
+#include <cmath>
 #include <iostream>
 
 namespace tactiscope::cli {
@@ -22,6 +23,7 @@ struct Row {
     std::string channel;
     ShownUnit unit;
     ChannelHealth health;
+    bool clippingJudged = true;  // not for a position
 };
 
 std::string healthJson(const std::vector<Row>& rows)
@@ -44,7 +46,10 @@ std::string healthJson(const std::vector<Row>& rows)
                 .value(h.drift->standardUncertainty_per_s * kSecondsPerHour * scale);
         else
             json.key("drift_per_hour").null().key("drift_per_hour_u").null();
-        json.key("clipped").value(static_cast<long long>(h.clipped));
+        if (row.clippingJudged)
+            json.key("clipped").value(static_cast<long long>(h.clipped));
+        else
+            json.key("clipped").null();
         json.key("samples").value(static_cast<long long>(h.samples));
         json.key("missing").value(static_cast<long long>(h.missing));
         if (h.hum) json.key("hum_line_hz").value(h.hum->line_hz);
@@ -66,18 +71,23 @@ void printHealth(const QString& name, const std::vector<Row>& rows)
     for (const Row& row : rows) {
         const ChannelHealth& h = row.health;
         const QString unit = toQString(row.unit.unit);
+        const QString spaced = unit.isEmpty() ? QString() : " " + unit;  // a pure number has none
         const double scale = row.unit.scale;
         out << "  " << toQString(row.channel) << (unit.isEmpty() ? QString() : " [" + unit + "]") << ": ";
-        out << (h.hum
-                    ? QStringLiteral("hum %1 Hz %2 %3").arg(h.hum->mains_hz).arg(number(h.hum->amplitude * scale), unit)
-                    : QStringLiteral("no hum"));
-        out << ", noise floor " << number(h.noiseFloor_per_sqrt_hz * scale) << ' ' << unit << "/√Hz";
+        out << (h.hum ? QStringLiteral("hum %1 Hz, %2%3")
+                            .arg(h.hum->mains_hz)
+                            .arg(number(h.hum->amplitude * scale), spaced)
+                      : QStringLiteral("no hum"));
+        if (std::isfinite(h.noiseFloor_per_sqrt_hz))
+            out << ", noise floor " << number(h.noiseFloor_per_sqrt_hz * scale) << spaced << "/√Hz";
+        else
+            out << ", noise floor: too short for a spectrum";
         if (h.drift)
             out << ", drift " << number(h.drift->rate_per_s * kSecondsPerHour * scale) << " ± "
-                << number(h.drift->standardUncertainty_per_s * kSecondsPerHour * scale) << ' ' << unit << "/h";
+                << number(h.drift->standardUncertainty_per_s * kSecondsPerHour * scale) << spaced << "/h";
         else
             out << ", drift: too short";
-        out << ", " << h.clipped << " clipped";
+        if (row.clippingJudged) out << ", " << h.clipped << " clipped";
         if (h.missing > 0) out << ", " << h.missing << " missing";
         out << '\n';
     }
@@ -109,7 +119,9 @@ int runHealth(const QStringList& arguments)
     for (std::size_t c = 0; c < input.channels.size(); ++c) {
         if (input.channels[c].descriptor.kind == core::ChannelKind::Decision) continue;  // a probe's −1/0/+1
         channels.push_back(c);
-        accumulators.emplace_back(input.sampleRate_hz, input.sampleCount);
+        // A position dwelling at an end stop is not a clipped converter.
+        const bool position = input.channels[c].descriptor.kind == core::ChannelKind::Position;
+        accumulators.emplace_back(input.sampleRate_hz, input.sampleCount, std::nullopt, !position);
     }
     try {
         std::vector<std::vector<double>> window;
@@ -123,7 +135,8 @@ int runHealth(const QStringList& arguments)
     std::vector<Row> rows;
     for (std::size_t i = 0; i < channels.size(); ++i) {
         const auto& descriptor = input.channels[channels[i]].descriptor;
-        rows.push_back({descriptor.name, shownUnit(descriptor), accumulators[i].result()});
+        rows.push_back({descriptor.name, shownUnit(descriptor), accumulators[i].result(),
+                        descriptor.kind != core::ChannelKind::Position});
     }
     if (parser.isSet(QStringLiteral("json")))
         std::cout << healthJson(rows) << '\n';

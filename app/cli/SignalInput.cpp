@@ -12,7 +12,8 @@
 namespace tactiscope::cli {
 namespace {
 
-std::optional<int> importFile(const QString& path, const QString& command, SignalInput& input)
+std::optional<int> importFile(const QString& path, const QString& command,
+                              const core::storage::CsvImportOptions& options, SignalInput& input)
 {
     if (!QFileInfo(path).isFile()) {
         printError(QStringLiteral("%1: no file %2").arg(command, quoted(path)));
@@ -26,7 +27,7 @@ std::optional<int> importFile(const QString& path, const QString& command, Signa
     try {
         auto store = std::make_unique<core::storage::SessionStore>(
             input.scratch->filePath(QStringLiteral("read.tactiscope")).toStdString());
-        input.session = core::storage::importCsv(*store, path.toStdString(), {}).session;
+        input.session = core::storage::importCsv(*store, path.toStdString(), options).session;
         input.store = std::move(store);
     } catch (...) {
         return exitForReadError(path);
@@ -46,6 +47,12 @@ void addSignalInputOptions(QCommandLineParser& parser)
          QStringLiteral("FILE|CONNINFO")},
         {QStringLiteral("session"), QStringLiteral("With --db: the session, its id, its uuid, or 'last'."),
          QStringLiteral("ID|UUID|last")},
+        {QStringLiteral("rate"),
+         QStringLiteral("FILE.csv without a time column: its rate in Hz (rows are consecutive samples)."),
+         QStringLiteral("HZ")},
+        {QStringLiteral("time-column"),
+         QStringLiteral("FILE.csv: its time column (seconds), when not t, time, time_s or timestamp."),
+         QStringLiteral("NAME")},
     });
 }
 
@@ -62,8 +69,19 @@ std::optional<int> openSignalInput(const QCommandLineParser& parser, const QStri
         return usageError(QStringLiteral("%1: --db goes with --session N").arg(command), usage);
     if (db.isEmpty() && !session.isEmpty())
         return usageError(QStringLiteral("%1: --session goes with --db F").arg(command), usage);
+    if (files.isEmpty() && (parser.isSet(QStringLiteral("rate")) || parser.isSet(QStringLiteral("time-column"))))
+        return usageError(
+            QStringLiteral("%1: --rate and --time-column describe FILE.csv; a session has its own").arg(command),
+            usage);
     if (!files.isEmpty()) {
-        if (const auto exit = importFile(files.front(), command, input)) return exit;
+        core::storage::CsvImportOptions options;
+        if (parser.isSet(QStringLiteral("rate"))) {
+            QString error;
+            options.rate_hz = numberInRange(parser, "rate", core::kSampleRateRange, 0.0, error);
+            if (!options.rate_hz) return usageError(error, usage);
+        }
+        options.timeColumn = parser.value(QStringLiteral("time-column")).toStdString();
+        if (const auto exit = importFile(files.front(), command, options, input)) return exit;
     } else {
         if (!storeArgumentExists(db)) {
             printError(QStringLiteral("%1: no session store at %2").arg(command, db));

@@ -27,7 +27,7 @@ struct SignalInput {
     std::vector<core::storage::StoredChannel> channels;
 };
 
-// --db and --session.
+// --db and --session, and FILE.csv's --rate and --time-column (as import takes them).
 void addSignalInputOptions(QCommandLineParser& parser);
 
 // Opens what the command line names; on failure prints the error and

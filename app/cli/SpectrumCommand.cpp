@@ -24,9 +24,15 @@ QString number(double value, int digits = 4)
 }
 
 // What the reader must know of how the samples were cut.
-QString segmentsNote(const Spectrum& spectrum)
+QString segmentsNote(const Spectrum& spectrum, std::size_t asked)
 {
-    if (spectrum.stretches <= 1 && spectrum.stretchesTooShort == 0) return {};
+    QString fewer;
+    if (spectrum.averages < asked)
+        fewer = QStringLiteral("%1 averages asked, %2 fit in segments of %3 samples, the shortest")
+                    .arg(asked)
+                    .arg(spectrum.averages)
+                    .arg(spectrum.segmentLength);
+    if (spectrum.stretches <= 1 && spectrum.stretchesTooShort == 0) return fewer;
     QString note = QStringLiteral("the recording has gaps: analysed in %1 gap-free %2, never across a gap")
                        .arg(spectrum.stretches)
                        .arg(spectrum.stretches == 1 ? QStringLiteral("stretch") : QStringLiteral("stretches"));
@@ -34,7 +40,7 @@ QString segmentsNote(const Spectrum& spectrum)
         note += QStringLiteral("; %1 shorter than a %2-sample segment left out")
                     .arg(spectrum.stretchesTooShort)
                     .arg(spectrum.segmentLength);
-    return note;
+    return fewer.isEmpty() ? note : note + "; " + fewer;
 }
 
 std::string spectrumJson(const Spectrum& spectrum, const ShownUnit& unit, const QString& note)
@@ -150,7 +156,7 @@ int runSpectrum(const QStringList& arguments)
         return kExitUsage;
     }
     const ShownUnit unit = shownUnit(input.channels[*channel].descriptor);
-    const QString note = segmentsNote(spectrum);
+    const QString note = segmentsNote(spectrum, settings.averages);
     if (parser.isSet(QStringLiteral("json")))
         std::cout << spectrumJson(spectrum, unit, note) << '\n';
     else

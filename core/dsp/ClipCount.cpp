@@ -20,8 +20,10 @@ void ClipCounter::push(double value)
         if (value <= m_range->low || value >= m_range->high) ++m_beyondRange;
         return;
     }
+    ++m_samples;
     if (value == m_runValue) {
         ++m_runLength;
+        ++m_repeats;
     } else {
         endRun();
         m_runValue = value;
@@ -55,7 +57,10 @@ std::uint64_t ClipCounter::clipped() const
     ClipCounter ended = *this;
     ended.endRun();
     if (!(ended.m_top > ended.m_bottom)) return 0;  // flat
-    return ended.m_atTop + ended.m_atBottom;
+    const std::uint64_t atExtremes = ended.m_atTop + ended.m_atBottom;
+    const std::uint64_t repeatsElsewhere = ended.m_repeats > atExtremes ? ended.m_repeats - atExtremes : 0;
+    if (100 * repeatsElsewhere > ended.m_samples) return 0;  // repeats anyway: runs tell nothing
+    return atExtremes;
 }
 
 }  // namespace tactiscope::core::dsp

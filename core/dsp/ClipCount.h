@@ -3,7 +3,9 @@
 // (a board's counts) a sample at or beyond it is clipped; otherwise a run
 // of three or more equal samples at the recording's highest or lowest
 // value is (a flat top that no live signal with noise draws). A channel
-// that never varies is flat, not clipped.
+// that never varies is flat, not clipped; nor is one whose samples repeat
+// elsewhere too (more than 1 % of them: exact steps, a coarse converter),
+// where a run at the top says nothing of clipping.
 #pragma once
 
 #include <cstdint>
@@ -37,6 +39,8 @@ private:
     std::uint64_t m_atBottom = 0;
     double m_runValue = std::numeric_limits<double>::quiet_NaN();
     std::uint64_t m_runLength = 0;
+    std::uint64_t m_samples = 0;
+    std::uint64_t m_repeats = 0;  // samples equal to the one before
 };
 
 }  // namespace tactiscope::core::dsp

@@ -22,10 +22,11 @@ std::size_t healthSegmentLength(double sampleRate_hz, std::uint64_t samples)
 }
 
 HealthAccumulator::HealthAccumulator(double sampleRate_hz, std::uint64_t expectedSamples,
-                                     std::optional<ChannelRange> range)
+                                     std::optional<ChannelRange> range, bool judgeClipping)
     : m_spectrum(sampleRate_hz, healthSegmentLength(sampleRate_hz, expectedSamples), SpectralWindow::Hann),
       m_drift(sampleRate_hz, driftIntervalSamples(expectedSamples)),
-      m_clips(range)
+      m_clips(range),
+      m_judgeClipping(judgeClipping)
 {
 }
 
@@ -34,7 +35,7 @@ void HealthAccumulator::push(std::span<const double> values)
     m_spectrum.push(values);
     for (const double v : values) {
         m_drift.push(v);
-        m_clips.push(v);
+        if (m_judgeClipping) m_clips.push(v);
         if (!std::isfinite(v)) ++m_missing;
     }
     m_samples += values.size();

@@ -23,15 +23,17 @@ struct ChannelHealth {
     double resolution_hz = 0.0;
     std::size_t averages = 0;
     std::optional<Drift> drift;
-    std::uint64_t clipped = 0;
+    std::uint64_t clipped = 0;  // 0 where clipping is not judged
 };
 
 class HealthAccumulator {
 public:
     // `expectedSamples` sizes the spectrum's segments (0.25 Hz resolution
     // where eight averages fit) and the drift's intervals.
+    // `judgeClipping` false: a channel that cannot clip as a converter
+    // does (a position dwelling at an end stop, a probe's decisions).
     HealthAccumulator(double sampleRate_hz, std::uint64_t expectedSamples,
-                      std::optional<ChannelRange> range = std::nullopt);
+                      std::optional<ChannelRange> range = std::nullopt, bool judgeClipping = true);
 
     void push(std::span<const double> values);
     ChannelHealth result() const;
@@ -40,6 +42,7 @@ private:
     WelchAccumulator m_spectrum;
     DriftAccumulator m_drift;
     ClipCounter m_clips;
+    bool m_judgeClipping = true;
     std::uint64_t m_samples = 0;
     std::uint64_t m_missing = 0;
 };

@@ -58,6 +58,7 @@ MathDefinition parseMathDefinition(std::string_view text)
                               trimmed(text.substr(equals + 1))};
     if (trimmed(text.substr(close + 1, equals - close - 1)) != "")
         throw MathError("a math channel is NAME[UNIT]=EXPR; '" + std::string(text) + "' has more between ] and =");
+    if (definition.name == "t") throw MathError("'t' is the export's time column: a math channel needs another name");
     if (!isIdentifier(definition.name))
         throw MathError("a math channel's name is letters, digits and _, not starting with a digit: '" +
                         definition.name + "'");
@@ -164,6 +165,15 @@ MathChannels::MathChannels(std::vector<MathInput> inputs, std::vector<MathDefini
         } catch (const mu::Parser::exception_type& e) {
             throw MathError(definition.name + ": " + e.GetMsg() + knownNames(names));
         }
+        try {
+            int results = 0;
+            parser.Eval(results);
+            if (results != 1)
+                throw MathError(definition.name + ": '" + definition.expression +
+                                "' gives several values (a comma between them); a math channel is one");
+        } catch (const mu::Parser::exception_type&) {
+            // An evaluation error at the test values is judged by the unit check below.
+        }
         if (compiled->variables.empty()) {
             // A number alone: a constant in its declared unit.
             try {
@@ -214,8 +224,12 @@ void MathChannels::evaluate(std::span<const std::span<const double>> inputs, std
             Compiled& compiled = *m_compiled[d];
             double si = compiled.constantValue_si;
             if (!compiled.constant) {
+                // A lost sample stays lost, whatever the expression does
+                // with it (a comparison would turn NaN into 0).
+                const bool lost =
+                    std::ranges::any_of(compiled.variables, [&](std::size_t v) { return std::isnan(m_values[v]); });
                 try {
-                    si = compiled.parser.Eval();
+                    si = lost ? std::nan("") : compiled.parser.Eval();
                 } catch (const mu::Parser::exception_type&) {
                     si = std::nan("");
                 }

@@ -2,6 +2,9 @@
 // be measured), then one streaming pass that stores blocks as they fill.
 #include "core/storage/CsvImport.h"
 
+#include "core/NumberRanges.h"
+#include "core/text/NumberFormat.h"
+
 #include "core/ModeCapability.h"
 #include "core/SampleBlock.h"
 #include "core/io/CsvReader.h"
@@ -294,6 +297,11 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
     }
     if (!(result.rate_hz > 0.0) || !std::isfinite(result.rate_hz))
         throw CsvError("the sample rate must be a positive number of Hz");
+    // A store keeps no rate beyond these (NumberRanges.h): one taken would
+    // read back as a damaged store.
+    if (!kSampleRateRange.holds(result.rate_hz))
+        throw CsvError("'" + path + "': its sample rate, " + text::formatShortest(result.rate_hz) + " Hz, is not " +
+                       kSampleRateRange.text());
 
     const RecordedIdentity identity = identityOf(side);
     if (const auto existing = identity.origin.uuid.empty() ? std::nullopt : store.sessionWithUuid(identity.origin.uuid))

@@ -93,6 +93,8 @@ TEST(DetectorUnderHum, HumAndNotchOptionsRefuseWhatTheyCannotBe)
     }
     const QString clean = simulated(dir, "clean.csv", {});
     EXPECT_EQ(runCli({"detect", clean, "--notch", "55"}).exitCode, 2);
+    // The emulated probe's input is the scan as it is: a notch there would not be applied.
+    EXPECT_EQ(runCli({"detect", clean, "--notch", "50", "--probe-input", dir.filePath("in.bin")}).exitCode, 2);
 }
 
 TEST(DetectorUnderHum, ARecordedProbesHumIsReadFromTheStore)

@@ -181,6 +181,35 @@ TEST(SignalToolsCli, FilterZeroPhaseAndBandsAndRefusals)
         EXPECT_FALSE(QFile::exists(dir.filePath("x.csv")));
     }
     EXPECT_EQ(runCli({"filter", csv, "--channel", "f", "--notch", "50", "--output", csv}).exitCode, 2);
+    const CliResult time = runCli({"filter", csv, "--channel", "t", "--lowpass", "10", "--output", out});
+    EXPECT_EQ(time.exitCode, 2);
+    EXPECT_NE(time.err.indexOf("is the time column"), -1) << time.err.toStdString();
+}
+
+TEST(SignalToolsCli, RatesAStoreCannotHoldAndAveragesThatDoNotFitAreSaid)
+{
+    QTemporaryDir dir;
+    const QString fast = dir.filePath("fast.csv");
+    writeText(fast, "t,a\n0,1\n1e-12,2\n2e-12,1\n3e-12,3\n");
+    const CliResult refused = runCli({"spectrum", fast, "--channel", "a"});
+    EXPECT_EQ(refused.exitCode, 2);
+    EXPECT_NE(refused.err.indexOf("sample rate"), -1) << refused.err.toStdString();
+    const QString csv = dir.filePath("hum.csv");
+    writeText(csv, hummedRecording(3000));
+    const CliResult many = runCli({"spectrum", csv, "--channel", "a", "--averages", "5000", "--json"});
+    ASSERT_EQ(many.exitCode, 0) << many.err.toStdString();
+    EXPECT_NE(jsonOf(many)["note"].toString().indexOf("5000 averages asked"), -1) << many.out.toStdString();
+    const CliResult shortHealth = runCli({"health", fast});
+    EXPECT_EQ(shortHealth.exitCode, 2);
+    // Without a time column, the rate given as import takes it.
+    const QString untimed = dir.filePath("untimed.csv");
+    QString rows = "a [mN]\n";
+    for (int i = 0; i < 4000; ++i) rows += QString::number(std::sin(i * 2.0 * std::numbers::pi * 37.0 / 1000.0)) + "\n";
+    writeText(untimed, rows);
+    EXPECT_EQ(runCli({"spectrum", untimed, "--channel", "a"}).exitCode, 2);
+    const CliResult rated = runCli({"spectrum", untimed, "--channel", "a", "--rate", "1000", "--json"});
+    ASSERT_EQ(rated.exitCode, 0) << rated.err.toStdString();
+    EXPECT_NEAR(jsonOf(rated)["peaks"].toArray()[0].toObject()["frequency_hz"].toDouble(), 37.0, 0.5);
 }
 
 TEST(SignalToolsCli, HealthNamesEachChannelsHumNoiseDriftAndClipping)
@@ -206,5 +235,5 @@ TEST(SignalToolsCli, HealthNamesEachChannelsHumNoiseDriftAndClipping)
     EXPECT_TRUE(f["hum_hz"].isNull());
     const CliResult text = runCli({"health", csv});
     ASSERT_EQ(text.exitCode, 0);
-    EXPECT_NE(text.out.indexOf("hum 50 Hz"), -1) << text.out.toStdString();
+    EXPECT_NE(text.out.indexOf("hum 50 Hz, "), -1) << text.out.toStdString();
 }

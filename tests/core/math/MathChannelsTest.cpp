@@ -102,7 +102,7 @@ TEST(MathChannels, UnitAlgebraRefusesWhatMixesUnitsWithAMessage)
     EXPECT_NE(sum.find("F_stiff [N]"), std::string::npos) << sum;
     EXPECT_NE(sum.find("displacement [m]"), std::string::npos) << sum;
     EXPECT_NE(refusal({"s[1]=sin(F_stiff)"}).find("not one quantity"), std::string::npos);
-    EXPECT_NE(refusal({"t[N]=F_stiff + 1"}).find("a number in an expression has no unit"), std::string::npos);
+    EXPECT_NE(refusal({"plus[N]=F_stiff + 1"}).find("a number in an expression has no unit"), std::string::npos);
     EXPECT_NE(refusal({"u[N]=raw + F_stiff"}).find("not one quantity"), std::string::npos);  // counts are not newtons
     EXPECT_NE(refusal({"v[N]=F_stiff > displacement"}).find("not one quantity"), std::string::npos);
     // The right algebra in the wrong unit.
@@ -113,6 +113,8 @@ TEST(MathChannels, UnitAlgebraRefusesWhatMixesUnitsWithAMessage)
     EXPECT_NE(refusal({"a[1]=b"}).find("already a channel"), std::string::npos);
     EXPECT_NE(refusal({"z[1]=a - a"}).find("cannot be checked"), std::string::npos);
     EXPECT_NE(refusal({"p[1]=(a"}).find("p:"), std::string::npos);
+    EXPECT_NE(refusal({"two[1]=a, b"}).find("several values"), std::string::npos);
+    EXPECT_THROW(parseMathDefinition("t[1]=a"), MathError);  // the export's time column
 }
 
 TEST(MathChannels, ValuesAreTheArithmeticInTheDeclaredUnit)
@@ -133,16 +135,18 @@ TEST(MathChannels, ValuesAreTheArithmeticInTheDeclaredUnit)
     }
     columns[0][17] = std::nan("");  // a lost sample stays lost
     MathChannels channels(probeInputs(), definitions({"diff[µε]=a - b", "k[mN/mm]=(F_stiff - F_soft) / displacement",
-                                                      "c0[pF]=51.44", "dc[%]=(c - c0) / c0"}));
+                                                      "c0[pF]=51.44", "dc[%]=(c - c0) / c0", "up[1]=a > b"}));
     const std::vector<std::span<const double>> inputs(columns.begin(), columns.end());
     std::vector<std::vector<double>> out;
     channels.evaluate(inputs, out);
-    ASSERT_EQ(out.size(), 4u);
+    ASSERT_EQ(out.size(), 5u);
     for (std::size_t i = 0; i < n; ++i) {
         if (i == 17) {
             EXPECT_TRUE(std::isnan(out[0][i]));
+            EXPECT_TRUE(std::isnan(out[4][i]));  // a comparison would have said 0
             continue;
         }
+        EXPECT_EQ(out[4][i], columns[0][i] > columns[1][i] ? 1.0 : 0.0);
         const double diff = (columns[0][i] - columns[1][i]) * 1e6;
         const double k = (columns[2][i] - columns[3][i]) / columns[4][i];  // N/m is mN/mm
         const double dc = 100.0 * (columns[5][i] - 51.44e-12) / 51.44e-12;
