@@ -14,6 +14,9 @@ namespace {
 // A flat-top window's main lobe spans ±5 bins; its peak's neighbours
 // within ±4 belong to the same line.
 constexpr std::size_t kLobeBins = 4;
+// The neighbourhood a line's floor is the median of: ±64 bins, its own lobe left out.
+constexpr std::size_t kFloorBins = 64;
+constexpr double kLineAboveFloor = 10.0;  // 20 dB in amplitude
 
 double sumOf(const std::vector<double>& v)
 {
@@ -166,16 +169,25 @@ std::vector<SpectrumPeak> spectrumPeaks(const Spectrum& spectrum, std::size_t mo
 {
     const std::vector<double>& a = spectrum.amplitude;
     if (a.size() < 2 * kLobeBins + 2) return {};
-    const double floor = median(a);
+    // A line stands above the spectrum around it, not above the whole
+    // band's: behind a low-pass the band's median is the stop band's, and
+    // the pass band's noise would stand 20 dB above it everywhere.
+    const auto localFloor = [&a](std::size_t k) {
+        std::vector<double> around;
+        const std::size_t from = k > kFloorBins ? k - kFloorBins : 0;
+        const std::size_t to = std::min(a.size() - 1, k + kFloorBins);
+        for (std::size_t j = from; j <= to; ++j)
+            if (j + kLobeBins < k || j > k + kLobeBins) around.push_back(a[j]);
+        return median(std::move(around));
+    };
     std::vector<SpectrumPeak> peaks;
     // Bins within a lobe of DC hold the removed mean's leakage, not a line.
     for (std::size_t k = kLobeBins + 1; k + 1 < a.size(); ++k) {
-        if (!(a[k] > 10.0 * floor)) continue;
         const std::size_t from = k - kLobeBins;
         const std::size_t to = std::min(a.size() - 1, k + kLobeBins);
         bool highest = true;
         for (std::size_t j = from; j <= to && highest; ++j) highest = j == k || a[j] < a[k] || (a[j] == a[k] && j > k);
-        if (!highest) continue;
+        if (!highest || !(a[k] > kLineAboveFloor * localFloor(k))) continue;
         double power = 0.0;
         double moment = 0.0;
         for (std::size_t j = from; j <= to; ++j) {

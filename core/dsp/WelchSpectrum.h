@@ -94,8 +94,8 @@ std::size_t segmentLengthFor(std::span<const std::size_t> stretchLengths, std::s
 Spectrum welchSpectrum(std::span<const double> values, double sampleRate_hz, const SpectrumSettings& settings);
 
 // The strongest lines of an amplitude spectrum: local maxima over a
-// flat-top main lobe that stand 20 dB above the spectrum's median, at most
-// `most`, each placed by the power centroid of its lobe.
+// flat-top main lobe that stand 20 dB above the median of the 64 bins on
+// either side, at most `most`, each placed by the power centroid of its lobe.
 std::vector<SpectrumPeak> spectrumPeaks(const Spectrum& spectrum, std::size_t most = 8);
 
 }  // namespace tactiscope::core::dsp

@@ -132,3 +132,21 @@ TEST(Spectrum, AnAccumulatorResetGivesWhatAFreshOneGives)
     EXPECT_EQ(a.psd, b.psd);
     EXPECT_EQ(a.amplitude, b.amplitude);
 }
+
+TEST(Spectrum, BehindALowPassNoiseIsNoLine)
+{
+    // Noise low-passed at 100 Hz: the pass band stands far above the stop
+    // band, but nothing in it is a line; a real line in it still is.
+    const double rate = 1000.0;
+    auto noise = whiteNoise(40000, 1.0, 12);
+    std::vector<double> smooth(noise.size());
+    double state = 0.0;
+    for (std::size_t i = 0; i < noise.size(); ++i) smooth[i] = state = 0.5 * state + 0.5 * noise[i];
+    for (std::size_t i = 0; i < noise.size(); ++i) smooth[i] = i > 0 ? 0.5 * (smooth[i] + smooth[i - 1]) : smooth[i];
+    const Spectrum plain = welchSpectrum(smooth, rate, {SpectralWindow::Hann, 16});
+    for (const auto& p : plain.peaks) ADD_FAILURE() << "a line at " << p.frequency_hz << " Hz, " << p.amplitude;
+    addSine(smooth, rate, 23.0, 2.0);
+    const Spectrum lined = welchSpectrum(smooth, rate, {SpectralWindow::Hann, 16});
+    ASSERT_FALSE(lined.peaks.empty());
+    EXPECT_NEAR(lined.peaks.front().frequency_hz, 23.0, 0.5);
+}
