@@ -1,6 +1,8 @@
 // liquid-dsp's Butterworth design, its sections read into doubles.
 #include "core/dsp/ButterworthDesign.h"
 
+#include "core/text/NumberFormat.h"
+
 #include <complex>
 #include <stdexcept>
 #include <string>
@@ -20,7 +22,7 @@ std::vector<Biquad> butterworth(PassBand band, int order, double cutoff_hz, doub
     const double cycles = cutoff_hz / sampleRate_hz;
     if (!(cycles > 0.0) || !(cycles < kMostCutoffCycles))
         throw std::invalid_argument("a cut-off must lie above 0 and below 0.45 of the sample rate (" +
-                                    std::to_string(kMostCutoffCycles * sampleRate_hz) + " Hz)");
+                                    text::formatShortest(kMostCutoffCycles * sampleRate_hz) + " Hz)");
     const unsigned n = static_cast<unsigned>(order);
     const unsigned sections = n / 2 + n % 2;
     std::vector<float> b(3 * sections);

@@ -1,12 +1,10 @@
-// Filter settings: their words, their checks, and their JSON.
+// Filter settings: their words and their checks.
 #include "core/dsp/FilterSettings.h"
 
 #include "core/NumberRanges.h"
 #include "core/dsp/ButterworthDesign.h"
 #include "core/dsp/MainsNotch.h"
 #include "core/text/NumberFormat.h"
-
-#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <stdexcept>
@@ -17,14 +15,6 @@ namespace {
 std::string hertz(double value)
 {
     return text::formatShortest(value) + " Hz";
-}
-
-std::optional<double> optionalNumber(const nlohmann::json& item, const char* key)
-{
-    if (!item.contains(key) || item[key].is_null()) return std::nullopt;
-    if (!item[key].is_number() || !std::isfinite(item[key].get<double>()))
-        throw std::invalid_argument(std::string("a filter's ") + key + " is not a number");
-    return item[key].get<double>();
 }
 
 }  // namespace
@@ -67,48 +57,6 @@ std::optional<std::string> filterRefusal(const FilterSettings& settings, double 
         return "a moving average is " + kMovingAverageRange.text() + " long, not " +
                text::formatShortest(settings.movingAverage_s) + " s";
     return std::nullopt;
-}
-
-std::string filtersJson(const std::vector<ChannelFilterSetting>& filters)
-{
-    nlohmann::json list = nlohmann::json::array();
-    const auto number = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); };
-    for (const ChannelFilterSetting& filter : filters) {
-        const FilterSettings& s = filter.settings;
-        list.push_back({{"channel", filter.channel},
-                        {"notch_hz", number(s.notch_hz)},
-                        {"highpass_hz", number(s.highpass_hz)},
-                        {"lowpass_hz", number(s.lowpass_hz)},
-                        {"order", s.order},
-                        {"moving_average_s", s.movingAverage_s},
-                        {"zero_phase", s.zeroPhase}});
-    }
-    return list.dump();
-}
-
-std::vector<ChannelFilterSetting> filtersFromJson(const std::string& json)
-{
-    const nlohmann::json list = nlohmann::json::parse(json, nullptr, false);
-    if (!list.is_array()) throw std::invalid_argument("the filters are not a JSON list");
-    std::vector<ChannelFilterSetting> filters;
-    for (const nlohmann::json& item : list) {
-        if (!item.is_object() || !item.contains("channel") || !item["channel"].is_string())
-            throw std::invalid_argument("a filter names no channel");
-        ChannelFilterSetting filter{item["channel"].get<std::string>(), {}};
-        FilterSettings& s = filter.settings;
-        s.notch_hz = optionalNumber(item, "notch_hz");
-        s.highpass_hz = optionalNumber(item, "highpass_hz");
-        s.lowpass_hz = optionalNumber(item, "lowpass_hz");
-        const auto order = optionalNumber(item, "order");
-        if (order &&
-            (*order < kLeastButterworthOrder || *order > kMostButterworthOrder || *order != std::floor(*order)))
-            throw std::invalid_argument("a filter's order is 2 to 8");
-        if (order) s.order = static_cast<int>(*order);
-        s.movingAverage_s = optionalNumber(item, "moving_average_s").value_or(0.0);
-        s.zeroPhase = item.contains("zero_phase") && item["zero_phase"].is_boolean() && item["zero_phase"].get<bool>();
-        filters.push_back(std::move(filter));
-    }
-    return filters;
 }
 
 }  // namespace tactiscope::core::dsp

@@ -1,14 +1,12 @@
-// What a channel's filter is, as the user sets it and the session records
-// it: a mains notch (50 or 60 Hz, with harmonics), a Butterworth high-pass
-// and/or low-pass (both: a band-pass) of one order, a moving average, and
-// for review whether it runs zero-phase. The stored samples never change;
-// these settings, kept with the session (its provenance and its report),
-// are what re-analysis applies to reproduce the filtered series.
+// What a channel's filter is, as the user sets it: a mains notch (50 or
+// 60 Hz, with harmonics), a Butterworth high-pass and/or low-pass (both: a
+// band-pass) of one order, a moving average, and whether it runs
+// zero-phase (review only). A filter never changes stored samples: the
+// same settings over the same samples give the same series again.
 #pragma once
 
 #include <optional>
 #include <string>
-#include <vector>
 
 namespace tactiscope::core::dsp {
 
@@ -31,20 +29,5 @@ struct FilterSettings {
 // Why `settings` cannot filter a channel sampled at `sampleRate_hz`, in
 // words for the user; none when they can.
 std::optional<std::string> filterRefusal(const FilterSettings& settings, double sampleRate_hz);
-
-// A channel's filter as a session records it.
-struct ChannelFilterSetting {
-    std::string channel;
-    FilterSettings settings;
-
-    friend bool operator==(const ChannelFilterSetting&, const ChannelFilterSetting&) = default;
-};
-
-// The JSON a session keeps: [{"channel": "a", "notch_hz": 50, "highpass_hz": null,
-// "lowpass_hz": 20, "order": 4, "moving_average_s": 0, "zero_phase": false}, …].
-std::string filtersJson(const std::vector<ChannelFilterSetting>& filters);
-// Reads it back; throws std::invalid_argument naming what is wrong (a
-// stored text is checked like any other input).
-std::vector<ChannelFilterSetting> filtersFromJson(const std::string& json);
 
 }  // namespace tactiscope::core::dsp

@@ -208,20 +208,17 @@ TEST(FilterResponse, SettingsOutsideWhatCanBeBuiltAreRefusedInWords)
     EXPECT_THROW(ChannelFilter(settings, 100.0), std::invalid_argument);
 }
 
-TEST(FilterResponse, SettingsComeBackFromTheirJson)
+TEST(FilterResponse, SettingsSayWhatTheyAre)
 {
-    FilterSettings first;
-    first.notch_hz = 50.0;
-    first.lowpass_hz = 20.0;
-    first.order = 6;
-    FilterSettings second;
-    second.highpass_hz = 0.1;
-    second.movingAverage_s = 0.01;
-    second.zeroPhase = true;
-    const std::vector<ChannelFilterSetting> filters{{"a", first}, {"force", second}};
-    EXPECT_EQ(filtersFromJson(filtersJson(filters)), filters);
-    EXPECT_EQ(first.text(), "mains notch 50 Hz and harmonics, low-pass 20 Hz (Butterworth, order 6)");
-    EXPECT_THROW(filtersFromJson("{}"), std::invalid_argument);
-    EXPECT_THROW(filtersFromJson(R"([{"channel": "a", "order": 12}])"), std::invalid_argument);
-    EXPECT_THROW(filtersFromJson(R"([{"notch_hz": 50}])"), std::invalid_argument);
+    FilterSettings settings;
+    EXPECT_EQ(settings.text(), "none");
+    settings.notch_hz = 50.0;
+    settings.lowpass_hz = 20.0;
+    settings.order = 6;
+    EXPECT_EQ(settings.text(), "mains notch 50 Hz and harmonics, low-pass 20 Hz (Butterworth, order 6)");
+    settings.highpass_hz = 0.5;
+    settings.movingAverage_s = 0.01;
+    settings.zeroPhase = true;
+    EXPECT_EQ(settings.text(), "mains notch 50 Hz and harmonics, band-pass 0.5–20 Hz (Butterworth, order 6), "
+                               "moving average 10 ms, zero-phase");
 }
