@@ -209,6 +209,17 @@ int exitForReadError(const QString& path)
     }
 }
 
+std::optional<QString> readCsvTimeOptions(const QCommandLineParser& parser, core::storage::CsvImportOptions& options)
+{
+    if (parser.isSet(QStringLiteral("rate"))) {
+        QString error;
+        options.rate_hz = numberInRange(parser, "rate", core::kSampleRateRange, 0.0, error);
+        if (!options.rate_hz) return error;
+    }
+    options.timeColumn = parser.value(QStringLiteral("time-column")).toStdString();
+    return std::nullopt;
+}
+
 std::optional<double> parseMainsFrequency(const QString& option, const QString& text, QString& error)
 {
     if (text == QStringLiteral("50") || text == QStringLiteral("60")) return text.toDouble();

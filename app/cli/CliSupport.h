@@ -6,6 +6,7 @@
 #include "core/UnitScale.h"
 #include "core/Vocabulary.h"
 #include "core/modes/ChannelRoles.h"
+#include "core/storage/CsvImport.h"
 #include "core/storage/Database.h"
 #include "devices/PortSource.h"
 
@@ -79,6 +80,10 @@ QString quoted(const QString& value);
 // Option --NAME's mains frequency, 50 or 60 Hz; nothing, with the usage
 // error in `error`, for anything else.
 std::optional<double> parseMainsFrequency(const QString& option, const QString& text, QString& error);
+
+// --rate and --time-column of a CSV file read as import reads it (import,
+// spectrum, health) into `options`; the usage error for a bad rate.
+std::optional<QString> readCsvTimeOptions(const QCommandLineParser& parser, core::storage::CsvImportOptions& options);
 
 // A finite number, or nothing when `text` is not one.
 std::optional<double> parseNumber(const QString& text);

@@ -45,12 +45,7 @@ int runImport(const QStringList& arguments)
     if (!parser.isSet(QStringLiteral("db"))) return usageError(QStringLiteral("--db FILE is required"), usage);
 
     core::storage::CsvImportOptions options;
-    if (parser.isSet(QStringLiteral("rate"))) {
-        QString error;
-        options.rate_hz = numberInRange(parser, "rate", core::kSampleRateRange, 0.0, error);
-        if (!options.rate_hz) return usageError(error, usage);
-    }
-    options.timeColumn = parser.value(QStringLiteral("time-column")).toStdString();
+    if (const auto error = readCsvTimeOptions(parser, options)) return usageError(*error, usage);
     if (parser.isSet(QStringLiteral("columns"))) {
         for (const QString& column : parser.value(QStringLiteral("columns")).split(QLatin1Char(',')))
             options.columns.push_back(column.trimmed().toStdString());

@@ -75,12 +75,7 @@ std::optional<int> openSignalInput(const QCommandLineParser& parser, const QStri
             usage);
     if (!files.isEmpty()) {
         core::storage::CsvImportOptions options;
-        if (parser.isSet(QStringLiteral("rate"))) {
-            QString error;
-            options.rate_hz = numberInRange(parser, "rate", core::kSampleRateRange, 0.0, error);
-            if (!options.rate_hz) return usageError(error, usage);
-        }
-        options.timeColumn = parser.value(QStringLiteral("time-column")).toStdString();
+        if (const auto error = readCsvTimeOptions(parser, options)) return usageError(*error, usage);
         if (const auto exit = importFile(files.front(), command, options, input)) return exit;
     } else {
         if (!storeArgumentExists(db)) {
