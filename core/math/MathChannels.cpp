@@ -41,7 +41,9 @@ std::string knownNames(const std::vector<std::string>& names)
 // Test points: values a channel may take, away from zero (so a ratio has
 // one) and positive (so a square root or a logarithm has one).
 constexpr std::size_t kPoints = 12;
-constexpr std::array kScales{2.0, 5.0};
+// Scales far apart as well as near: a term mixed in with a small factor
+// ("displacement + 1e-9 * force") barely moves at ×2 but shows at ×10⁶.
+constexpr std::array kScales{2.0, 1e3, 1e6};
 constexpr double kAgreement = 1e-6;  // exponents found at the points agree this well
 
 }  // namespace

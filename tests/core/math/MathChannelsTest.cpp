@@ -102,6 +102,7 @@ TEST(MathChannels, UnitAlgebraRefusesWhatMixesUnitsWithAMessage)
     EXPECT_NE(sum.find("F_stiff [N]"), std::string::npos) << sum;
     EXPECT_NE(sum.find("displacement [m]"), std::string::npos) << sum;
     EXPECT_NE(refusal({"s[1]=sin(F_stiff)"}).find("not one quantity"), std::string::npos);
+    EXPECT_NE(refusal({"small[m]=displacement + 1e-9 * F_stiff"}).find("not one quantity"), std::string::npos);
     EXPECT_NE(refusal({"plus[N]=F_stiff + 1"}).find("a number in an expression has no unit"), std::string::npos);
     EXPECT_NE(refusal({"u[N]=raw + F_stiff"}).find("not one quantity"), std::string::npos);  // counts are not newtons
     EXPECT_NE(refusal({"v[N]=F_stiff > displacement"}).find("not one quantity"), std::string::npos);
