@@ -1,6 +1,8 @@
 // Finding the mains line and the noise floor in a spectrum.
 #include "core/dsp/MainsHum.h"
 
+#include "core/dsp/Median.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,14 +13,6 @@ namespace {
 
 constexpr double kMainsTolerance_hz = 1.5;
 constexpr double kStandsAbove = 10.0;  // 20 dB in amplitude
-
-double median(std::vector<double> values)
-{
-    if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
-    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    return *middle;
-}
 
 }  // namespace
 

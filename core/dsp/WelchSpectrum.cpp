@@ -2,6 +2,7 @@
 #include "core/dsp/WelchSpectrum.h"
 
 #include "core/dsp/GapFreeStretches.h"
+#include "core/dsp/Median.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,14 +26,6 @@ double sumOf(const std::vector<double>& v)
 double sumOfSquares(const std::vector<double>& v)
 {
     return std::inner_product(v.begin(), v.end(), v.begin(), 0.0);
-}
-
-double median(std::vector<double> values)
-{
-    if (values.empty()) return 0.0;
-    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    return *middle;
 }
 
 }  // namespace
