@@ -3,6 +3,7 @@
 #include "FilterCommand.h"
 
 #include "CliSupport.h"
+#include "SignalOptions.h"
 #include "core/dsp/ChannelFilter.h"
 #include "core/io/CsvReader.h"
 #include "core/io/CsvTimeBase.h"
@@ -37,26 +38,9 @@ std::optional<QString> readOptions(const QCommandLineParser& parser, FilterOptio
     options.channel = parser.value(QStringLiteral("channel")).toStdString();
     if (options.channel.empty()) return QStringLiteral("filter: --channel is required");
     FilterSettings& s = options.settings;
-    QString error;
-    if (parser.isSet(QStringLiteral("notch"))) {
-        s.notch_hz = parseMainsFrequency(QStringLiteral("notch"), parser.value(QStringLiteral("notch")), error);
-        if (!s.notch_hz) return error;
-    }
-    for (const auto& [option, cutoff] : {std::pair{"lowpass", &s.lowpass_hz}, std::pair{"highpass", &s.highpass_hz}}) {
-        if (!parser.isSet(QLatin1String(option))) continue;
-        *cutoff = numberInRange(parser, option, core::kFilterCutoffRange, 0.0, error);
-        if (!*cutoff) return error;
-    }
-    const auto order = numberInRange(parser, "order", core::kFilterOrderRange, 4.0, error);
-    if (!order || *order != std::floor(*order)) return error.isEmpty() ? QStringLiteral("--order is 2 to 8") : error;
-    s.order = static_cast<int>(*order);
-    const auto average = numberInRange(parser, "moving-average", core::kMovingAverageRange, 0.0, error);
-    if (!average) return error;
-    s.movingAverage_s = *average;
+    if (auto error = readFilterSettings(parser, s)) return error;
     s.zeroPhase = parser.isSet(QStringLiteral("zero-phase"));
     if (s.empty()) return QStringLiteral("filter: give --notch, --lowpass, --highpass or --moving-average");
-    if (parser.isSet(QStringLiteral("order")) && !s.lowpass_hz && !s.highpass_hz)
-        return QStringLiteral("--order is the Butterworth filters': give --lowpass or --highpass with it");
     return std::nullopt;
 }
 
@@ -149,15 +133,9 @@ int runFilter(const QStringList& arguments)
     parser.addPositionalArgument(QStringLiteral("FILE.csv"), QStringLiteral("The recording."));
     parser.addOptions({
         {QStringLiteral("channel"), QStringLiteral("The channel to filter (required)."), QStringLiteral("NAME")},
-        {QStringLiteral("notch"), QStringLiteral("Notch the mains: 50 or 60 Hz, with its 2nd and 3rd harmonics."),
-         QStringLiteral("50|60")},
-        {QStringLiteral("lowpass"), QStringLiteral("Butterworth low-pass, −3 dB at HZ."), QStringLiteral("HZ")},
-        {QStringLiteral("highpass"), QStringLiteral("Butterworth high-pass, −3 dB at HZ (with --lowpass: band-pass)."),
-         QStringLiteral("HZ")},
-        {QStringLiteral("order"), QStringLiteral("The Butterworth filters' order, 2 to 8 (default 4)."),
-         QStringLiteral("N")},
-        {QStringLiteral("moving-average"), QStringLiteral("A moving average over S seconds, last."),
-         QStringLiteral("S")},
+    });
+    parser.addOptions(filterOptions());
+    parser.addOptions({
         {QStringLiteral("zero-phase"), QStringLiteral("Forward and backward: no delay, the magnitude squared.")},
         {QStringLiteral("output"), QStringLiteral("The CSV to write (required)."), QStringLiteral("OUT.csv")},
     });

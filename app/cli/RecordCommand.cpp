@@ -8,6 +8,7 @@
 #include "PortLinks.h"
 #include "ProbePort.h"
 #include "RecordOutput.h"
+#include "SignalOptions.h"
 #include "WatchOptions.h"
 #include "core/ModeCapability.h"
 #include "core/sensors/SensorProfile.h"
@@ -23,6 +24,7 @@
 #include <QTextStream>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -160,7 +162,8 @@ std::optional<int> addDevices(devices::session::LivePipeline& pipeline, const st
 // The only device's mode (the one asked for must run on it; without one,
 // the device's own), profile and limits; an exit code when refused.
 std::optional<int> setUpOneDevice(devices::session::LiveSession& session, std::optional<core::Mode> mode,
-                                  std::optional<core::sensors::SensorProfile> profile, const WatchOptions& watch)
+                                  std::optional<core::sensors::SensorProfile> profile, const WatchOptions& watch,
+                                  const QCommandLineParser& parser)
 {
     if (!mode) mode = session.declaredMode();
     // The profile first: its channel scales may be what lets the mode read the beams.
@@ -188,6 +191,18 @@ std::optional<int> setUpOneDevice(devices::session::LiveSession& session, std::o
         return kExitUsage;
     }
     for (const auto& problem : session.takeProblems()) printError(QString::fromStdString(problem));
+    // The filters and math channels before the limits, which may watch them.
+    std::vector<std::string> channels;
+    for (const auto& channel : session.channels()) channels.push_back(channel.name);
+    core::signal::SignalSetup signal;
+    if (const auto error = readSignalSetup(parser, channels, signal)) {
+        printError(*error);
+        return kExitUsage;
+    }
+    if (const auto refusal = session.setSignal(std::move(signal))) {
+        printError(QStringLiteral("filters and math channels: %1").arg(QString::fromStdString(*refusal)));
+        return kExitUsage;
+    }
     if (const auto refusal = session.setLimits(watch.limits)) {
         printError(QStringLiteral("--limit: %1").arg(QString::fromStdString(*refusal)));
         return kExitUsage;
@@ -284,6 +299,7 @@ int runRecord(const QStringList& arguments)
         unitsOption(QStringLiteral("a text board's channels, over its labels' units")),
     });
     parser.addOptions(watchOptions());
+    parser.addOptions(signalOptions());
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
     if (!parser.positionalArguments().isEmpty())
@@ -367,10 +383,14 @@ int runRecord(const QStringList& arguments)
         return kExitUsage;
     }
 
-    if (ports->size() > 1 && (mode || profile || watch->trigger || !watch->limits.empty() || watch->stopOnCritical))
+    const bool signalAsked =
+        std::ranges::any_of(std::array{"notch", "lowpass", "highpass", "moving-average", "filter-channel", "math"},
+                            [&parser](const char* option) { return parser.isSet(QLatin1String(option)); });
+    if (ports->size() > 1 &&
+        (mode || profile || watch->trigger || !watch->limits.empty() || watch->stopOnCritical || signalAsked))
         return usageError(QStringLiteral("with several devices, each records in its own mode with its own "
-                                         "limits; --mode, --profile, --trigger, --limit and --stop-on are for "
-                                         "one device"),
+                                         "limits and signal setup; --mode, --profile, --trigger, --limit, "
+                                         "--stop-on, the filters and --math are for one device"),
                           usage);
 
     // Each device's first connection is made here, to know it before the
@@ -388,7 +408,7 @@ int runRecord(const QStringList& arguments)
     }
     auto& first = pipeline.device(0);
     if (pipeline.size() == 1)
-        if (const auto exit = setUpOneDevice(first, mode, std::move(profile), *watch)) return *exit;
+        if (const auto exit = setUpOneDevice(first, mode, std::move(profile), *watch, parser)) return *exit;
 
     // Recording from the first block (started before the devices stream),
     // or from each trigger. A recording of --seconds holds exactly that

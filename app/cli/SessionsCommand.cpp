@@ -6,6 +6,7 @@
 #include "core/derived/SessionLanes.h"
 #include "core/detector/DefectOrder.h"
 #include "core/math/MathColumns.h"
+#include "core/signal/SignalSetup.h"
 #include "core/modes/ModeDefinition.h"
 #include "core/report/VerdictTrail.h"
 #include "core/sensors/SensorProfile.h"
@@ -230,6 +231,7 @@ int show(SessionSource& store, std::int64_t id, bool json)
     line("ended (UTC)", s.endedUtc);
     line("status", std::string(core::toString(s.status)));
     if (!s.metadata.trigger.empty()) line("trigger", s.metadata.trigger);
+    if (!s.metadata.signalSetup.empty()) line("signal", core::signal::signalSetupText(s.metadata.signalSetup));
     if (s.metadata.partOf != 0)  // one device's part: the session it belongs to
         line("part of", "session " + std::to_string(s.metadata.partOf) + " (device " + s.metadata.deviceName + ")");
     // No verdict: why, when its mode would have judged it.

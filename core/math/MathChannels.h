@@ -11,6 +11,7 @@
 // is a number alone is a constant in its declared unit.
 #pragma once
 
+#include "core/ChannelDescriptor.h"
 #include "core/units/Dimension.h"
 
 #include <memory>
@@ -71,6 +72,10 @@ private:
     std::vector<double> m_values;  // inputs then definitions, SI: the parsers' variables
     std::vector<std::size_t> m_usedInputs;
 };
+
+// The inputs a session's channels give: name, dimension and unit of each
+// whose unit this program reads (values in SI, as stored).
+std::vector<MathInput> mathInputs(const std::vector<ChannelDescriptor>& channels);
 
 // The longest expression taken: a screenful, so a parse and an evaluation
 // stay bounded whatever is typed.

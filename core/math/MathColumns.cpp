@@ -3,20 +3,6 @@
 
 namespace tactiscope::core::math {
 
-std::vector<MathInput> mathInputs(const std::vector<ChannelDescriptor>& channels)
-{
-    std::vector<MathInput> inputs;
-    for (const ChannelDescriptor& channel : channels) {
-        // A unit this program does not read is a dimension of its own
-        // nobody else has: such a channel can only be scaled, never mixed.
-        const auto unit = units::parseUnit(channel.unit);
-        const bool strain = channel.kind == ChannelKind::Strain && channel.unit.empty();
-        inputs.push_back({channel.name, unit ? unit->dimension : units::Dimension{{0, 0, 0, 0, 7}},
-                          strain ? "strain" : channel.unit});
-    }
-    return inputs;
-}
-
 MathColumns::MathColumns(storage::SessionSource& store, std::int64_t session, std::vector<MathDefinition> definitions,
                          std::unique_ptr<storage::ComputedColumns> derived)
     : m_store(store),

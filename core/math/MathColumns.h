@@ -30,8 +30,4 @@ private:
     std::unique_ptr<MathChannels> m_math;
 };
 
-// The inputs a session's channels give: name, dimension and unit of each
-// whose unit this program reads (values in SI, as stored).
-std::vector<MathInput> mathInputs(const std::vector<ChannelDescriptor>& channels);
-
 }  // namespace tactiscope::core::math

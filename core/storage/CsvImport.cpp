@@ -82,6 +82,7 @@ void completeMetadata(SessionMetadata& m, const nlohmann::json& session)
     fill(m.profileJson, "profile_json");
     fill(m.calibrationsJson, "calibrations_json");
     fill(m.trigger, "trigger");
+    fill(m.signalSetup, "signal_setup");
 }
 
 // Whether the side file's export holds the whole session (an export of a

@@ -50,6 +50,7 @@ void Recorder::consume(const SampleBlock& block)
     if (!m_firstIndex) {
         m_firstIndex = block.firstSampleIndex();
         m_firstTime_s = block.t0_s();
+        if (m_firstSampleWatch) m_firstSampleWatch(*m_firstIndex);
     }
     m_consumedEnd = block.endSampleIndex() - *m_firstIndex;
     if (!block.empty()) m_consumedUntil_s = block.timeAt_s(block.sampleCount() - 1);

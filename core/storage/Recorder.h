@@ -19,6 +19,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <deque>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -58,6 +59,11 @@ public:
 
     std::int64_t sessionId() const { return m_session; }
     void consume(const SampleBlock& block) override;  // acquisition thread
+    // Told the device's index of the recording's first sample when its
+    // block comes (a signal chain restarts its filters there, so the live
+    // filtered series is what re-analysis computes from the stored
+    // samples); on the thread that passes the block. Set before the first.
+    void watchFirstSample(std::function<void(std::uint64_t)> watch) { m_firstSampleWatch = std::move(watch); }
     // The device's channels, grown while recording (a board printing lines
     // began to print another value): those past the session's are added to
     // it with the next commit, holes before (SessionStore::addChannels).
@@ -118,6 +124,7 @@ private:
     std::optional<std::string> m_queuedClock;
     std::uint64_t m_queuedSamples = 0;
     std::optional<std::uint64_t> m_firstIndex;  // of the first block consumed
+    std::function<void(std::uint64_t)> m_firstSampleWatch;
     double m_firstTime_s = 0.0;
     std::optional<double> m_consumedUntil_s;  // acquisition time of the newest sample consumed
     std::uint64_t m_consumedEnd = 0;          // one past the last sample consumed, session-relative

@@ -326,8 +326,16 @@ DROP TABLE channels;
 ALTER TABLE channels_v10 RENAME TO channels;
 )sql";
 
-constexpr std::array kMigrations{kVersion1, kVersion2, kVersion3, kVersion4, kVersion5,
-                                 kVersion6, kVersion7, kVersion8, kVersion9, kVersion10};
+// Version 10 → 11: a session's signal setup (issue 57): the filters on its
+// channels, its math channels and whether its mode analysed the filtered
+// channels, a JSON object (core/signal/SignalSetup.h); the samples stay as
+// they came, and review reads them through it.
+constexpr const char* kVersion11 = R"sql(
+ALTER TABLE sessions ADD COLUMN signal_setup TEXT NOT NULL DEFAULT '';
+)sql";
+
+constexpr std::array kMigrations{kVersion1, kVersion2, kVersion3, kVersion4,  kVersion5, kVersion6,
+                                 kVersion7, kVersion8, kVersion9, kVersion10, kVersion11};
 static_assert(kMigrations.size() == kSchemaVersion);
 
 std::int64_t pragma(Database& db, const char* name)

@@ -8,7 +8,7 @@
 
 namespace tactiscope::core::storage {
 
-inline constexpr int kSchemaVersion = 10;
+inline constexpr int kSchemaVersion = 11;
 // PRAGMA application_id of a Tactiscope store: "TSC1" in ASCII.
 inline constexpr std::int64_t kApplicationId = 0x54534331;
 

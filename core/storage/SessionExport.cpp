@@ -194,6 +194,7 @@ void writeMetadata(text::JsonWriter& json, SessionSource& store, std::int64_t se
     json.key("profile_json").value(s.metadata.profileJson);
     json.key("calibrations_json").value(s.metadata.calibrationsJson);
     json.key("trigger").value(s.metadata.trigger);
+    json.key("signal_setup").value(s.metadata.signalSetup);
     json.key("samples_per_channel").value(static_cast<long long>(total));
     json.endObject();
     // Which samples the export holds, as indices and as session seconds.

@@ -40,6 +40,9 @@ struct SessionMetadata {
     // for a session of its own.
     std::int64_t partOf = 0;
     std::string deviceName;
+    // Its signal setup (core/signal/SignalSetup.h: filters, math
+    // channels), as JSON; empty for none.
+    std::string signalSetup = {};
 };
 
 // Who a session is when it was recorded elsewhere (an import of an export):

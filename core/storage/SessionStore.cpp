@@ -66,6 +66,7 @@ SessionSummary summaryFrom(const Statement& row)
     s.eventCount = static_cast<std::uint64_t>(row.int64(19));
     s.devices = static_cast<std::size_t>(row.int64(21));
     s.unjudged = row.text(24);
+    s.metadata.signalSetup = row.text(25);
     return s;
 }
 
@@ -91,7 +92,8 @@ const std::string& summaryQuery()
         ", (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live') + (SELECT count(*) FROM "
         "events e JOIN sessions p ON e.session_id = p.id WHERE p.parent_id = s.id AND e.analysis = 'live'), "
         "trigger_setup, "
-        "(SELECT count(*) FROM sessions p WHERE p.parent_id = s.id), parent_id, device_name, unjudged FROM sessions s ";
+        "(SELECT count(*) FROM sessions p WHERE p.parent_id = s.id), parent_id, device_name, unjudged, signal_setup "
+        "FROM sessions s ";
     return sql;
 }
 
@@ -237,10 +239,12 @@ SampleBlock withChannels(const SampleBlock& block, std::size_t channels)
 std::int64_t SessionStore::insertSessionRow(const SessionMetadata& m, const SessionOrigin& origin)
 {
     if (m.partOf != 0) refuseUnknownParent(m.partOf);
-    auto session = m_db.prepare(
-        "INSERT INTO sessions (uuid, mode, subject, operator, site, notes, device_model, device_serial, "
-        "device_firmware, profile_json, calibrations_json, started_utc, status, app_version, "
-        "trigger_setup, parent_id, device_name) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    auto session =
+        m_db.prepare("INSERT INTO sessions (uuid, mode, subject, operator, site, notes, device_model, device_serial, "
+                     "device_firmware, profile_json, calibrations_json, started_utc, status, app_version, "
+                     "trigger_setup, parent_id, device_name, signal_setup) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+                     "?, ?, ?, ?, ?, "
+                     "?)");
     if (m.partOf != 0)
         session.bind(16, m.partOf);
     else
@@ -261,6 +265,7 @@ std::int64_t SessionStore::insertSessionRow(const SessionMetadata& m, const Sess
         .bind(14, origin.appVersion.empty() ? std::string(versionString()) : origin.appVersion)
         .bind(15, m.trigger)
         .bind(17, m.deviceName)
+        .bind(18, m.signalSetup)
         .run();
     return m_db.lastInsertId();
 }

@@ -60,6 +60,12 @@ LiveSession::LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions
     m_acquisition->addSink(m_buffer);
     m_tap = std::make_shared<core::storage::RecordingTap>();
     m_acquisition->addSink(m_tap);
+    m_signalSlot = std::make_shared<core::SinkSlot>();
+    m_acquisition->addSink(m_signalSlot);
+    if (!m_options.signal.empty()) {
+        m_chain = makeChain(m_options.signal);
+        m_signalSlot->set(m_chain);
+    }
     // Units rebuilt (another profile, calibration or roles) go into their
     // mode's slot while the device streams.
     for (const auto& definition : core::modeDefinitions()) {
@@ -269,6 +275,7 @@ std::optional<std::string> LiveSession::beginRecording(const core::storage::Sess
     metadata.deviceFirmware = device.firmware;
     metadata.profileJson.clear();
     if (const auto* used = profile(m_mode)) metadata.profileJson = core::sensors::toJson(*used);
+    metadata.signalSetup = core::signal::signalSetupJson(m_options.signal);
     metadata.calibrationsJson.clear();
     std::vector<std::int64_t> used;
     for (const auto& stored : calibrations(m_mode)) {
@@ -291,6 +298,9 @@ std::optional<std::string> LiveSession::beginRecording(const core::storage::Sess
                                                                recorderQueueBound(rate_hz, m_channels.size()), used);
     } catch (const std::exception& e) {  // StorageError, or the folder cannot be made
         return e.what();
+    }
+    if (m_chain) {
+        m_recorder->watchFirstSample([chain = m_chain](std::uint64_t first) { chain->restartAt(first); });
     }
     m_metadata = std::move(metadata);
     m_lastingSeen = 0;

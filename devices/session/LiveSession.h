@@ -38,6 +38,8 @@
 #include "core/modes/ChannelRoles.h"
 #include "core/sensors/SensorLimits.h"
 #include "core/sensors/SensorProfile.h"
+#include "core/signal/SignalChain.h"
+#include "core/signal/SignalSetup.h"
 #include "core/storage/Recorder.h"
 #include "core/storage/RecordingTap.h"
 #include "core/trigger/LimitWatch.h"
@@ -89,6 +91,9 @@ struct LiveSessionOptions {
         double start_host_s = 0.0;
     };
     std::optional<PartOfSession> partOf;
+    // Filters on channels and math channels (core/signal/SignalSetup.h),
+    // run live from the start; none by default.
+    core::signal::SignalSetup signal;
 };
 
 class LiveSession {
@@ -124,6 +129,18 @@ public:
     // Refused while recording or for a channel the device lacks: the reason.
     std::optional<std::string> setRoles(core::RoleAssignment roles);
     const core::RoleAssignment& roles() const { return m_options.roles; }
+
+    // The signal setup: a chain on the acquisition thread filters the
+    // channels it names and computes its math channels, whose outputs are
+    // quantities to watch ("a.filtered", a math channel's name) and to
+    // show (signalChain()); a recording stores the setup, and its filters
+    // restart at the recording's first sample so review computes the same
+    // series from the stored samples. Refused while recording or armed,
+    // and for a setup the channels or the rate cannot run: the reason.
+    std::optional<std::string> setSignal(core::signal::SignalSetup setup);
+    const core::signal::SignalSetup& signalSetup() const { return m_options.signal; }
+    // The chain running the setup; null when it is empty.
+    std::shared_ptr<const core::signal::SignalChain> signalChain() const { return m_chain; }
 
     // Mode. setMode() returns why it refuses: the mode's channels are
     // missing (one sentence naming them) or a recording is running.
@@ -267,6 +284,7 @@ public:
 
 private:
     std::optional<std::string> build(core::Mode mode, bool inheritZero = true);
+    std::shared_ptr<core::signal::SignalChain> makeChain(const core::signal::SignalSetup& setup) const;
     std::optional<std::string> beginRecording(const core::storage::SessionMetadata& request);
     std::optional<QuantityReader> readerFor(const std::string& quantity, std::string& refusal) const;
     void refreshReaders();
@@ -315,6 +333,10 @@ private:
     // A slot per mode in the acquisition, made before it streams; a unit
     // rebuilt goes into its mode's slot while the device streams.
     std::map<core::Mode, std::shared_ptr<core::SinkSlot>> m_slots;
+    // The signal chain's slot, before the modes' (so a mode may read it);
+    // the chain in it, null for none.
+    std::shared_ptr<core::SinkSlot> m_signalSlot;
+    std::shared_ptr<core::signal::SignalChain> m_chain;
     std::map<core::Mode, std::unique_ptr<LiveModeUnit>> m_units;
     core::Mode m_mode = core::Mode::General;
     std::shared_ptr<core::storage::Recorder> m_recorder;

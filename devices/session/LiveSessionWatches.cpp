@@ -24,6 +24,7 @@ core::ChannelDescriptor named(const std::vector<core::ChannelDescriptor>& all, c
 std::vector<core::ChannelDescriptor> LiveSession::watchableQuantities() const
 {
     std::vector<core::ChannelDescriptor> watchable = m_channels;
+    if (m_chain) watchable.insert(watchable.end(), m_chain->outputs().begin(), m_chain->outputs().end());
     if (const auto* unit = unitOf(m_mode))
         for (const auto& quantity : unit->quantities())
             watchable.push_back({quantity.name, quantity.unit, quantity.kind});
@@ -36,6 +37,10 @@ std::optional<QuantityReader> LiveSession::readerFor(const std::string& quantity
 {
     for (std::size_t c = 0; c < m_channels.size(); ++c)
         if (m_channels[c].name == quantity) return QuantityReader::deviceChannel(c, m_channels[c].unit);
+    if (m_chain)
+        for (std::size_t o = 0; o < m_chain->outputs().size(); ++o)
+            if (const auto& output = m_chain->outputs()[o]; output.name == quantity)
+                return QuantityReader::derived({output.name, output.unit, output.kind, m_chain->output(), o});
     if (const auto* unit = unitOf(m_mode))
         for (const auto& offered : unit->quantities())
             if (offered.name == quantity) return QuantityReader::derived(offered);

@@ -97,6 +97,9 @@ ALTER TABLE sessions ADD COLUMN IF NOT EXISTS clock_json TEXT NOT NULL DEFAULT '
 CREATE INDEX IF NOT EXISTS sessions_by_parent ON sessions (parent_id);
 -- Schema 8: why a session of a mode that judges got no automatic verdict.
 ALTER TABLE sessions ADD COLUMN IF NOT EXISTS unjudged TEXT NOT NULL DEFAULT '';
+-- Schema 12: a session's signal setup (issue 57): its filters and math
+-- channels, as JSON (core/signal/SignalSetup.h).
+ALTER TABLE sessions ADD COLUMN IF NOT EXISTS signal_setup TEXT NOT NULL DEFAULT '';
 
 CREATE TABLE IF NOT EXISTS readings (
     id             BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY,

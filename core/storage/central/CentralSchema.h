@@ -16,7 +16,7 @@
 
 namespace tactiscope::core::storage::central {
 
-inline constexpr int kCentralSchemaVersion = 11;
+inline constexpr int kCentralSchemaVersion = 12;
 
 // The text a list's search looks in (SessionFilter::text): the searched
 // columns joined by a separator nobody types (the unit separator,

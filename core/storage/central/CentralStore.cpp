@@ -42,7 +42,8 @@ const std::string kSummaryQuery =
     "), coalesce(listed_events, (SELECT count(*) FROM events WHERE session_id = s.id AND analysis = 'live') + "
     "(SELECT count(*) FROM events e JOIN sessions p ON e.session_id = p.id WHERE p.parent_id = s.id AND "
     "e.analysis = 'live')), station, station_id, trigger_setup, coalesce(parent_id, 0), device_name, "
-    "coalesce(listed_parts, (SELECT count(*) FROM sessions p WHERE p.parent_id = s.id AND p.complete)), unjudged " +
+    "coalesce(listed_parts, (SELECT count(*) FROM sessions p WHERE p.parent_id = s.id AND p.complete)), unjudged, "
+    "signal_setup " +
     "FROM sessions s WHERE complete ";
 
 SessionSummary summaryFrom(const PgResult& r, int row)
@@ -76,6 +77,7 @@ SessionSummary summaryFrom(const PgResult& r, int row)
     s.stationId = r.int64(row, 21);
     s.devices = static_cast<std::size_t>(r.int64(row, 25));
     s.unjudged = r.text(row, 26);
+    s.metadata.signalSetup = r.text(row, 27);
     return s;
 }
 

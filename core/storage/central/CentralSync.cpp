@@ -189,14 +189,16 @@ private:
         p.text(m.deviceModel).text(m.deviceSerial).text(m.deviceFirmware).text(m.profileJson);
         p.text(m.calibrationsJson).text(s.appVersion).int64(s.id).text(m.trigger);
         part ? p.int64(part->parent) : p.null();
-        p.text(m.deviceName).text(part ? part->clockJson : std::string{}).text(s.unjudged);
+        p.text(m.deviceName).text(part ? part->clockJson : std::string{}).text(s.unjudged).text(m.signalSetup);
         return m_db
-            .query("INSERT INTO sessions (uuid, station, mode, subject, operator, site, notes, started_utc, ended_utc, "
-                   "status, device_model, device_serial, device_firmware, profile_json, calibrations_json, "
-                   "app_version, station_id, trigger_setup, parent_id, device_name, clock_json, unjudged) VALUES ($1, "
-                   "$2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14, $15, $16, $17, $18, $19, $20, $21, $22) "
-                   "RETURNING id",
-                   p)
+            .query(
+                "INSERT INTO sessions (uuid, station, mode, subject, operator, site, notes, started_utc, ended_utc, "
+                "status, device_model, device_serial, device_firmware, profile_json, calibrations_json, "
+                "app_version, station_id, trigger_setup, parent_id, device_name, clock_json, unjudged, signal_setup) "
+                "VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14, $15, $16, $17, $18, $19, $20, "
+                "$21, $22, $23) "
+                "RETURNING id",
+                p)
             .int64(0, 0);
     }
 

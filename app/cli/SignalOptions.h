@@ -1,0 +1,33 @@
+// The command line's filter and math-channel options, read alike by
+// `filter` (one CSV channel) and `record` (the live signal chain): --notch,
+// --lowpass, --highpass, --order, --moving-average, and `record`'s
+// --filter-channel and --math.
+#pragma once
+
+#include "core/dsp/FilterSettings.h"
+#include "core/signal/SignalSetup.h"
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+#include <QList>
+#include <QString>
+
+#include <optional>
+
+namespace tactiscope::cli {
+
+// --notch, --lowpass, --highpass, --order and --moving-average.
+QList<QCommandLineOption> filterOptions();
+// Those options as one channel's filter; empty when none is given. The
+// reason, for settings that cannot be.
+std::optional<QString> readFilterSettings(const QCommandLineParser& parser, core::dsp::FilterSettings& settings);
+
+// `record`'s: the filter options, --filter-channel and --math.
+QList<QCommandLineOption> signalOptions();
+// The live signal setup they ask for: the filter on each channel named by
+// --filter-channel (every channel of `channels` when none is named) and
+// the math channels. The reason, for options that cannot be.
+std::optional<QString> readSignalSetup(const QCommandLineParser& parser, const std::vector<std::string>& channels,
+                                       core::signal::SignalSetup& setup);
+
+}  // namespace tactiscope::cli

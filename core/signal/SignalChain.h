@@ -1,0 +1,99 @@
+// The signal chain (issue 57): a device's channels through the filters of
+// a session's signal setup, and its math channels over them, sample for
+// sample, into an output buffer the views, the limits and the trigger read
+// like a mode's derived quantities (each block's outputs are there once the
+// block has passed).
+//
+// Its inputs are the samples as the store keeps them (IEEE binary32,
+// core/storage/ChunkCodec.h), and a recording restarts the filters at its
+// first sample (restartAt(), re-running what the chain kept since that
+// sample): so the filtered series of a recording is, from the restart on,
+// exactly what re-analysis (chainSeries()) computes from the stored samples
+// with the setting the session recorded. A lost sample (a jump in the
+// block's sample index) is missing for the filters too, which restart
+// after it, as they do on a stored gap.
+//
+// Math channels read each channel as the chain outputs it: filtered where
+// it is filtered, as stored elsewhere.
+//
+// Threading: consume() on the acquisition thread; restartAt() from any.
+#pragma once
+
+#include "core/BlockSink.h"
+#include "core/ChannelDescriptor.h"
+#include "core/LiveBuffer.h"
+#include "core/RingBuffer.h"
+#include "core/dsp/ChannelFilter.h"
+#include "core/math/MathChannels.h"
+#include "core/signal/SignalSetup.h"
+
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+namespace tactiscope::core::signal {
+
+// The name a filtered channel is watched and shown by: "a.filtered".
+std::string filteredName(const std::string& channel);
+
+class SignalChain final : public BlockSink {
+public:
+    // `outputCapacity`: samples kept per output for the readers;
+    // `replay_s`: how far back a restart can reach. Throws
+    // std::invalid_argument (signalSetupRefusal's words) or math::MathError.
+    SignalChain(const SignalSetup& setup, const std::vector<ChannelDescriptor>& channels, double sampleRate_hz,
+                std::size_t outputCapacity, double replay_s = 0.0);
+    ~SignalChain() override;
+
+    const SignalSetup& setup() const { return m_setup; }
+    // Each filtered channel ("a.filtered", the channel's unit and kind),
+    // then each math channel (its declared unit).
+    const std::vector<ChannelDescriptor>& outputs() const { return m_outputs; }
+    std::shared_ptr<const LiveBuffer> output() const { return m_output; }
+    // How far output `index` lags its channel (a filter's group delay; 0
+    // for a math channel).
+    double delay_s(std::size_t index) const;
+
+    // The filters start again at device sample `first` (a recording's
+    // first): at once when the chain has passed it and kept it, when it
+    // comes otherwise. One kept too long ago restarts from the oldest kept.
+    void restartAt(std::uint64_t first);
+
+    void consume(const SampleBlock& block) override;
+
+private:
+    void applyRestart(const SampleBlock& block, std::size_t& restartOffset);
+    void lose(std::uint64_t samples);
+
+    SignalSetup m_setup;
+    std::vector<std::size_t> m_filtered;  // the channel of each filter
+    std::vector<dsp::ChannelFilter> m_filters;
+    std::unique_ptr<math::MathChannels> m_math;
+    std::vector<ChannelDescriptor> m_outputs;
+    std::shared_ptr<LiveBuffer> m_output;
+    std::size_t m_channelCount = 0;
+
+    // What the filters read since the oldest sample a restart may reach
+    // (none when it may reach none); NaN where samples were lost. Ring
+    // index r holds device sample m_keptBase + r. Binary32, as the inputs
+    // are rounded to it: half the memory, nothing lost.
+    std::vector<RingBuffer<float>> m_kept;
+    std::uint64_t m_keptBase = 0;
+    std::optional<std::uint64_t> m_next;  // the device index expected next
+
+    std::mutex m_restartMutex;
+    std::optional<std::uint64_t> m_restart;
+
+    // Per block, reused.
+    std::vector<std::vector<double>> m_values;  // rounded inputs, filtered where filtered
+    std::vector<std::vector<double>> m_mathValues;
+};
+
+// Re-analysis: the chain's outputs over stored samples (one vector per
+// channel, NaN where missing), from the first: one vector per output.
+std::vector<std::vector<double>> chainSeries(const SignalSetup& setup, const std::vector<ChannelDescriptor>& channels,
+                                             double sampleRate_hz, const std::vector<std::vector<double>>& values);
+
+}  // namespace tactiscope::core::signal
