@@ -6,10 +6,11 @@
 #include "core/derived/SessionLanes.h"
 #include "core/detector/DefectOrder.h"
 #include "core/math/MathColumns.h"
-#include "core/signal/SignalSetup.h"
 #include "core/modes/ModeDefinition.h"
 #include "core/report/VerdictTrail.h"
 #include "core/sensors/SensorProfile.h"
+#include "core/signal/SignalColumns.h"
+#include "core/signal/SignalSetup.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/OpenSessionSource.h"
 #include "core/storage/Schema.h"
@@ -355,6 +356,17 @@ int exportSession(SessionSource& store, std::int64_t id, const QString& format, 
         } catch (const std::invalid_argument& e) {
             printError(QStringLiteral("--derived: %1").arg(toQString(e.what())));
             return kExitUsage;
+        }
+    }
+    // The filtered and math channels the session recorded, as it showed them live.
+    if (const std::string recorded = store.session(id)->metadata.signalSetup;
+        !recorded.empty() && format == QLatin1String("csv")) {
+        try {
+            computed = std::make_unique<core::signal::SignalColumns>(
+                store, id, core::signal::signalSetupFromJson(recorded), std::move(computed));
+        } catch (const std::invalid_argument& e) {  // a setup this program cannot run: the samples still go out
+            printError(
+                QStringLiteral("the session's filters and math channels are left out: %1").arg(toQString(e.what())));
         }
     }
     if (!math.empty()) {

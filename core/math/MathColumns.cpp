@@ -1,6 +1,8 @@
 // Reading a session's stored (and derived) channels and evaluating the math on them.
 #include "core/math/MathColumns.h"
 
+#include <algorithm>
+
 namespace tactiscope::core::math {
 
 MathColumns::MathColumns(storage::SessionSource& store, std::int64_t session, std::vector<MathDefinition> definitions,
@@ -43,7 +45,21 @@ std::vector<std::vector<double>> MathColumns::read(std::uint64_t first, std::uin
     std::vector<std::vector<double>> derived =
         m_derived ? m_derived->read(first, count) : std::vector<std::vector<double>>{};
     std::vector<std::span<const double>> inputs(stored.begin(), stored.end());
-    for (const auto& column : derived) inputs.emplace_back(column);
+    // Computed columns are in their own units (a math channel the session
+    // recorded in µε); the expressions read SI.
+    const auto computed = m_derived ? m_derived->channels() : std::vector<ChannelDescriptor>{};
+    std::vector<std::vector<double>> inSi(derived.size());
+    for (std::size_t c = 0; c < derived.size(); ++c) {
+        const auto unit = units::parseUnit(computed[c].unit);
+        const double toSi = unit ? unit->toSi : 1.0;
+        if (toSi == 1.0) {
+            inputs.emplace_back(derived[c]);
+            continue;
+        }
+        inSi[c].resize(derived[c].size());
+        std::ranges::transform(derived[c], inSi[c].begin(), [toSi](double v) { return v * toSi; });
+        inputs.emplace_back(inSi[c]);
+    }
     std::vector<std::vector<double>> math;
     m_math->evaluate(inputs, math);
     for (auto& column : math) derived.push_back(std::move(column));

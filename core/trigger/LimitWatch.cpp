@@ -4,6 +4,7 @@
 #include "core/NumberRanges.h"
 #include "core/text/NumberFormat.h"
 #include "core/text/ShortQuote.h"
+#include "core/units/Dimension.h"
 
 #include <algorithm>
 #include <charconv>
@@ -219,8 +220,12 @@ LimitWording readableWording(ChannelKind kind, const std::string& unit, double l
 {
     double scale = 1.0;
     std::string shown = unit;
-    // A count takes no SI prefix (kcounts reads as nothing anyone uses).
-    const bool prefixed = kind != ChannelKind::Strain && !unit.empty() && unit != "counts" && unit != "count";
+    // A count takes no SI prefix (kcounts reads as nothing anyone uses),
+    // nor does a unit that has one (a math channel's µε or mN: kµε reads
+    // as nothing either).
+    const auto known = units::parseUnit(unit);
+    const bool prefixed = kind != ChannelKind::Strain && !unit.empty() && unit != "counts" && unit != "count" &&
+                          (!known || known->toSi == 1.0);
     if (kind == ChannelKind::Strain && unit.empty()) {  // a strain is a pure number
         scale = 1e6;
         shown = "µε";

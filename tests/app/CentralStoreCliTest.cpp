@@ -238,6 +238,46 @@ TEST_F(CentralStoreCli, ASessionNotJudgedSaysWhyOnTheServerAsOnTheStation)
     expectSameExports(line, server("quality"));
 }
 
+// A session's filters and math channels (issue 57) go to the server with
+// it: the reviewer there reads the same setup, and the export's filtered
+// and math columns, computed from the server's samples, are the station's
+// to the byte.
+TEST_F(CentralStoreCli, ASessionsFiltersAndMathChannelsAreTheSameOnTheServer)
+{
+    const QString line = m_dir.filePath("hummed.tactiscope");
+    const std::string setup = R"({"filters":[{"channel":"a","notch_hz":50.0,"lowpass_hz":100.0,"order":4}],)"
+                              R"("math":["diff[µε]=a - b"]})";
+    {
+        core::storage::SessionStore store(line.toStdString());
+        core::storage::SessionMetadata metadata;
+        metadata.mode = core::Mode::PanelScan;
+        metadata.subject = "door-57";
+        metadata.signalSetup = setup;
+        const std::vector<core::ChannelDescriptor> channels{
+            {"a", "", core::ChannelKind::Strain, core::ChannelRole::CantileverA},
+            {"b", "", core::ChannelKind::Strain, core::ChannelRole::CantileverB}};
+        const auto id = store.beginSession(metadata, channels, 500.0);
+        tactiscope::testing::writeSamples(store, id, 2, 1000, 500.0, 5);
+        store.endSession(id, core::SessionStatus::Complete);
+    }
+    const CliResult sent = sync(line, server("press_a"));
+    ASSERT_EQ(sent.exitCode, 0) << sent.err.toStdString();
+    for (const QString& db : {line, server("quality")}) {
+        SCOPED_TRACE(db.toStdString());
+        const CliResult shown = runCli({"sessions", "--db", db, "show", "last"});
+        ASSERT_EQ(shown.exitCode, 0) << shown.err.toStdString();
+        EXPECT_TRUE(shown.out.contains(
+            QStringLiteral("\nsignal            a: mains notch 50 Hz and harmonics, low-pass 100 Hz (Butterworth, "
+                           "order 4); diff[µε]=a - b\n")))
+            << shown.out.toStdString();
+    }
+    const QString uuid = listed(line).begin()->first;
+    const QString csv = exported(server("quality"), uuid, "csv", "central.csv");
+    EXPECT_TRUE(
+        fileBytes(csv.toStdString()).starts_with("t [s],a [strain],b [strain],a.filtered [strain],diff [µε]\n"));
+    expectSameExports(line, server("quality"));
+}
+
 // A panel line's recording through TSP/1 with its encoder (issue 55): the
 // reviewer on the server reads the same sites as the station, placed by
 // the stored position channel, the dent at +30 mm within 1 mm.

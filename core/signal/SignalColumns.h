@@ -1,0 +1,46 @@
+// A session's signal setup as columns of its CSV export: each filtered
+// channel ("a.filtered") and each math channel the session recorded,
+// computed by the same chain that ran live over the stored samples from
+// the session's first (core/signal/SignalChain.h), so the export holds the
+// series the operator saw, to the bit from the recording's first sample.
+// The chain runs on from one window to the next; a window before where it
+// stands starts it again from the session's first sample.
+#pragma once
+
+#include "core/signal/SignalChain.h"
+#include "core/storage/SessionExport.h"
+#include "core/storage/SessionSource.h"
+
+#include <memory>
+
+namespace tactiscope::core::signal {
+
+class SignalColumns final : public storage::ComputedColumns {
+public:
+    // `derived` (may be null) is written first; taken only when the setup
+    // runs. Throws std::invalid_argument (math::MathError among them) for a
+    // setup the session cannot run.
+    SignalColumns(storage::SessionSource& store, std::int64_t session, SignalSetup setup,
+                  std::unique_ptr<storage::ComputedColumns>&& derived);
+
+    std::vector<ChannelDescriptor> channels() const override;
+    std::string basis() const override;
+    std::vector<std::vector<double>> read(std::uint64_t first, std::uint64_t count) override;
+
+private:
+    // Runs the chain over stored samples [m_next, end), keeping what falls
+    // in [keepFrom, end) into `kept`.
+    void run(std::uint64_t end, std::uint64_t keepFrom, std::vector<std::vector<double>>& kept);
+
+    storage::SessionSource& m_store;
+    std::int64_t m_session;
+    SignalSetup m_setup;
+    std::vector<ChannelDescriptor> m_channels;  // the stored ones
+    double m_rate_hz = 0.0;
+    std::unique_ptr<SignalChain> m_chain;  // made before `derived` is taken
+    std::unique_ptr<storage::ComputedColumns> m_derived;
+    std::uint64_t m_next = 0;  // the stored sample the chain reads next
+    LiveCursor m_cursor;
+};
+
+}  // namespace tactiscope::core::signal
