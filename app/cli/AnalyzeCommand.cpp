@@ -7,6 +7,7 @@
 #include "SessionArgument.h"
 #include "core/derived/StoredDetection.h"
 #include "core/modes/ModeDefinition.h"
+#include "core/signal/SignalSetup.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/StoredSites.h"
 
@@ -39,6 +40,45 @@ std::optional<QString> pickChannels(const std::vector<core::storage::StoredChann
     return std::nullopt;
 }
 
+// The filters the cantilevers go through: --notch on every one, else the
+// session's own when its mode analysed the filtered channels (unless
+// --unfiltered); what they are, in a line, or empty for none.
+QString cantileverFilters(const core::storage::SessionSummary& session,
+                          const std::vector<core::storage::StoredChannel>& channels,
+                          const std::vector<std::size_t>& picked, std::optional<double> notch_hz, bool unfiltered,
+                          std::vector<core::dsp::FilterSettings>& filters)
+{
+    if (notch_hz) {
+        core::dsp::FilterSettings notch;
+        notch.notch_hz = notch_hz;
+        filters = {notch};
+        return QStringLiteral("(every cantilever through a %1)").arg(toQString(notch.text()));
+    }
+    core::signal::SignalSetup setup;
+    try {
+        setup = core::signal::signalSetupFromJson(session.metadata.signalSetup);
+    } catch (const std::invalid_argument& e) {
+        printError(QStringLiteral("the session's filters cannot be read (%1): the cantilevers are read as stored")
+                       .arg(toQString(e.what())));
+        return {};
+    }
+    if (!setup.analysisFiltered) return {};
+    if (unfiltered) return QStringLiteral("(the cantilevers as stored: --unfiltered)");
+    QStringList words;
+    for (const std::size_t c : picked) {
+        const auto& name = channels[c].descriptor.name;
+        const auto* filter = setup.filterOf(name);
+        filters.push_back(filter ? *filter : core::dsp::FilterSettings{});
+        if (filter) words << toQString(name + ": " + filter->text());
+    }
+    if (words.isEmpty()) {
+        filters.clear();
+        return {};
+    }
+    return QStringLiteral("(the cantilevers through the session's filters, as its mode read them live: %1)")
+        .arg(words.join(QStringLiteral("; ")));
+}
+
 }  // namespace
 
 int runAnalyze(const QStringList& arguments)
@@ -61,6 +101,12 @@ int runAnalyze(const QStringList& arguments)
          QStringLiteral("A,B")},
         {QStringLiteral("save"), QStringLiteral("Store the events as a re-analysis named NAME."),
          QStringLiteral("NAME")},
+        {QStringLiteral("notch"),
+         QStringLiteral("Run every cantilever through a mains notch first (50 or 60 Hz and harmonics, causal, as "
+                        "live), whatever the session's own filters."),
+         QStringLiteral("50|60")},
+        {QStringLiteral("unfiltered"),
+         QStringLiteral("Read the cantilevers as stored, though the session's mode analysed them filtered.")},
     });
     addDetectorOptions(parser);
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
@@ -73,6 +119,14 @@ int runAnalyze(const QStringList& arguments)
     DetectorOptions options;
     options.spacing_m = core::detector::kPrototypeSpacing_m;
     if (const auto error = readDetectorOptions(parser, options)) return usageError(*error, usage);
+    std::optional<double> notch_hz;
+    if (parser.isSet(QStringLiteral("notch"))) {
+        QString error;
+        notch_hz = parseMainsFrequency(QStringLiteral("notch"), parser.value(QStringLiteral("notch")), error);
+        if (!notch_hz) return usageError(error, usage);
+        if (parser.isSet(QStringLiteral("unfiltered")))
+            return usageError(QStringLiteral("--notch and --unfiltered ask for opposite things; give one"), usage);
+    }
     const QString save = parser.value(QStringLiteral("save"));
     if (parser.isSet(QStringLiteral("save")) && (save.isEmpty() || save == QLatin1String(core::storage::kLiveAnalysis)))
         return usageError(QStringLiteral("--save needs a name other than 'live'"), usage);
@@ -118,11 +172,14 @@ int runAnalyze(const QStringList& arguments)
         std::vector<core::ChannelDescriptor> descriptors;
         for (const auto& c : channels) descriptors.push_back(c.descriptor);
         const auto probe = core::detector::probeDecisionChannels(descriptors);
+        core::detector::StretchSettings settings{options.parameters, options.hold_s, options.spacing_m,
+                                                 options.threads};
+        const auto filtered = cantileverFilters(summary, channels, picked, notch_hz,
+                                                parser.isSet(QStringLiteral("unfiltered")), settings.filters);
         // Read and detection together: the store streams into the detector.
         const auto started = std::chrono::steady_clock::now();
         const auto [events, analysed, agreement] = *core::derived::detectStoredSession(
-            store, *id, picked, {options.parameters, options.hold_s, options.spacing_m, options.threads}, {},
-            probe ? std::optional(probe->out) : std::nullopt);
+            store, *id, picked, settings, {}, probe ? std::optional(probe->out) : std::nullopt);
         const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         if (!save.isEmpty()) store.addEvents(*id, core::storage::defectRecords(events, save.toStdString()));
         const auto sites = core::storage::storedSites(store, *id, events);
@@ -131,6 +188,7 @@ int runAnalyze(const QStringList& arguments)
             std::cout << eventsJson(output, options, agreement) << '\n';
         } else {
             printDetection(QStringLiteral("session %1").arg(*id), dt_s, output, options);
+            if (!filtered.isEmpty()) std::cout << filtered.toStdString() << '\n';
             if (agreement)
                 std::cout << core::detector::agreementText(*agreement)
                           << " (the probe's recorded decisions against this analysis)\n";

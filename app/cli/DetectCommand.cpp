@@ -215,11 +215,11 @@ int runDetect(const QStringList& arguments)
     core::detector::CsvDetection result;
     core::detector::StretchSettings settings{options.detector.parameters, options.detector.hold_s,
                                              options.detector.spacing_m,  options.detector.threads,
-                                             options.detector.engine,     std::nullopt};
+                                             options.detector.engine,     {}};
     if (options.notch_hz) {
         core::dsp::FilterSettings notch;
         notch.notch_hz = options.notch_hz;
-        settings.filter = notch;
+        settings.filters = {notch};
     }
     const std::string input = options.input.toStdString();
     std::optional<std::string> unusedLength;

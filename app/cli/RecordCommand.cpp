@@ -383,9 +383,9 @@ int runRecord(const QStringList& arguments)
         return kExitUsage;
     }
 
-    const bool signalAsked =
-        std::ranges::any_of(std::array{"notch", "lowpass", "highpass", "moving-average", "filter-channel", "math"},
-                            [&parser](const char* option) { return parser.isSet(QLatin1String(option)); });
+    const bool signalAsked = std::ranges::any_of(
+        std::array{"notch", "lowpass", "highpass", "moving-average", "filter-channel", "math", "analyze-filtered"},
+        [&parser](const char* option) { return parser.isSet(QLatin1String(option)); });
     if (ports->size() > 1 &&
         (mode || profile || watch->trigger || !watch->limits.empty() || watch->stopOnCritical || signalAsked))
         return usageError(QStringLiteral("with several devices, each records in its own mode with its own "

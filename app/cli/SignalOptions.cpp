@@ -56,6 +56,9 @@ QList<QCommandLineOption> signalOptions()
                         "filtered values are watched as NAME.filtered; the stored samples stay as they came, and "
                         "the session keeps the filter."),
          QStringLiteral("NAME")},
+        {QStringLiteral("analyze-filtered"),
+         QStringLiteral("The mode's analysis (detector, presses, force) reads the filtered channels instead of the "
+                        "samples as they came; the session records it, and analyze does the same.")},
         {QStringLiteral("math"),
          QStringLiteral("A math channel computed live over the channels (filtered ones as filtered), "
                         "NAME[UNIT]=EXPR, e.g. \"diff[µε]=a - b\" (repeatable; units are checked); watch it with "
@@ -85,6 +88,9 @@ std::optional<QString> readSignalSetup(const QCommandLineParser& parser, const s
             if (!setup.filterOf(channel)) setup.filters.push_back({channel, settings});
         }
     }
+    setup.analysisFiltered = parser.isSet(QStringLiteral("analyze-filtered"));
+    if (setup.analysisFiltered && setup.filters.empty())
+        return QStringLiteral("--analyze-filtered: give the filter to analyse through (--notch, --lowpass, …)");
     try {
         for (const QString& definition : parser.values(QStringLiteral("math")))
             setup.math.push_back(core::math::parseMathDefinition(definition.toStdString()));

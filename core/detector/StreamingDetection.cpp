@@ -108,9 +108,12 @@ StreamingDetection::StreamingDetection(std::size_t cantilevers, const StretchSet
     m_threshold = resolved.threshold;
     m_lagCount = resolved.lags.size();
     m_warmUp = warmUpOf(resolved);
-    if (settings.filter) {
+    if (!settings.filters.empty()) {
         const double rate_hz = 1.0 / settings.parameters.sampleInterval_s;
-        for (std::size_t c = 0; c < cantilevers; ++c) m_filters.emplace_back(*settings.filter, rate_hz);
+        if (settings.filters.size() != 1 && settings.filters.size() != cantilevers)
+            throw std::invalid_argument("the detector takes one filter, or one per cantilever");
+        for (std::size_t c = 0; c < cantilevers; ++c)
+            m_filters.emplace_back(settings.filters[settings.filters.size() == 1 ? 0 : c], rate_hz);
         m_filtered.resize(cantilevers);
     }
     // A split in time pays while the warm-up is a small part of a half run.

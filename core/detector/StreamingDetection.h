@@ -51,9 +51,11 @@ struct StretchSettings {
     std::optional<double> spacing_m;
     unsigned threads = 1;  // the workstation's engine only
     DetectorEngine engine = DetectorEngine::Workstation;
-    // A filter each cantilever goes through first (a mains notch under
-    // hum: docs/detector.md), causal as live; none: the samples as they are.
-    std::optional<dsp::FilterSettings> filter = std::nullopt;
+    // The filters the cantilevers go through first (a mains notch under
+    // hum: docs/detector.md), causal as live: one for every cantilever, or
+    // one each (an empty one leaves its cantilever as it is); none: the
+    // samples as they are.
+    std::vector<dsp::FilterSettings> filters = {};
 };
 
 struct StretchDetection {

@@ -128,6 +128,7 @@ void SignalChain::consume(const SampleBlock& block)
         lose(lost);
     }
     m_next = block.endSampleIndex();
+    m_lastFirst = block.firstSampleIndex();
 
     const std::size_t n = block.sampleCount();
     m_values.resize(m_channelCount);
@@ -158,6 +159,16 @@ void SignalChain::consume(const SampleBlock& block)
             std::ranges::copy(m_mathValues[d], out.channel(m_filters.size() + d).begin());
     }
     m_output->consume(out);
+}
+
+void SignalChain::filteredCopy(const SampleBlock& block, SampleBlock& out) const
+{
+    out = block;
+    const bool last = !m_filters.empty() && block.firstSampleIndex() == m_lastFirst && !m_values.empty() &&
+                      m_values.front().size() == block.sampleCount();
+    if (!last) return;
+    for (const std::size_t channel : m_filtered)
+        if (channel < out.channelCount()) std::ranges::copy(m_values[channel], out.channel(channel).begin());
 }
 
 std::vector<std::vector<double>> chainSeries(const SignalSetup& setup, const std::vector<ChannelDescriptor>& channels,

@@ -63,6 +63,12 @@ public:
 
     void consume(const SampleBlock& block) override;
 
+    // `block`, with each filtered channel as the chain filtered it, when it
+    // is the block the chain consumed last (a mode analysing the filtered
+    // channels reads them so, on the same thread, right after the chain);
+    // otherwise `block` as it is. Acquisition thread.
+    void filteredCopy(const SampleBlock& block, SampleBlock& out) const;
+
 private:
     void applyRestart(const SampleBlock& block, std::size_t& restartOffset);
     void lose(std::uint64_t samples);
@@ -86,8 +92,9 @@ private:
     std::mutex m_restartMutex;
     std::optional<std::uint64_t> m_restart;
 
-    // Per block, reused.
+    // Per block, reused; kept until the next (filteredCopy()).
     std::vector<std::vector<double>> m_values;  // rounded inputs, filtered where filtered
+    std::uint64_t m_lastFirst = 0;              // the last block's first sample index
     std::vector<std::vector<double>> m_mathValues;
 };
 

@@ -60,17 +60,21 @@ LiveSession::LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions
     m_acquisition->addSink(m_buffer);
     m_tap = std::make_shared<core::storage::RecordingTap>();
     m_acquisition->addSink(m_tap);
+    // The signal chain before the modes, which may read its filtered channels.
     m_signalSlot = std::make_shared<core::SinkSlot>();
     m_acquisition->addSink(m_signalSlot);
+    m_modeInput = std::make_shared<ModeInput>();
+    m_acquisition->addSink(m_modeInput);
     if (!m_options.signal.empty()) {
         m_chain = makeChain(m_options.signal);
         m_signalSlot->set(m_chain);
+        if (m_options.signal.analysisFiltered) m_modeInput->setChain(m_chain);
     }
     // Units rebuilt (another profile, calibration or roles) go into their
     // mode's slot while the device streams.
     for (const auto& definition : core::modeDefinitions()) {
         auto slot = std::make_shared<core::SinkSlot>();
-        m_acquisition->addSink(slot);
+        m_modeInput->add(slot);
         m_slots.emplace(definition.mode, std::move(slot));
     }
     // After the processors: a derived quantity is there for the block just read.

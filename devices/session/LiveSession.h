@@ -49,6 +49,7 @@
 #include "devices/session/LimitAlarms.h"
 #include "devices/session/LiveModeUnit.h"
 #include "devices/session/LiveRecords.h"
+#include "devices/session/ModeInput.h"
 #include "devices/session/TriggerGate.h"
 
 #include <cstdint>
@@ -101,8 +102,8 @@ public:
     // Takes the source and builds the processors of every mode its channels
     // can feed; starts in the source's declared mode, else the first mode
     // its channels can feed (general at the latest). Throws
-    // std::invalid_argument for a null source or roles naming a channel the
-    // device does not have.
+    // std::invalid_argument for a null source, roles naming a channel the
+    // device does not have, or a signal setup it cannot run.
     LiveSession(std::unique_ptr<BlockSource> source, LiveSessionOptions options);
     ~LiveSession();  // ends a recording as complete, then stops the device
 
@@ -133,10 +134,11 @@ public:
     // The signal setup: a chain on the acquisition thread filters the
     // channels it names and computes its math channels, whose outputs are
     // quantities to watch ("a.filtered", a math channel's name) and to
-    // show (signalChain()); a recording stores the setup, and its filters
-    // restart at the recording's first sample so review computes the same
-    // series from the stored samples. Refused while recording or armed,
-    // and for a setup the channels or the rate cannot run: the reason.
+    // show (signalChain()); with analysisFiltered the modes' processors
+    // read the filtered channels. A recording stores the setup, and its
+    // filters restart at the recording's first sample so review computes
+    // the same series from the stored samples. Refused while recording or
+    // armed, and for a setup the channels or the rate cannot run: the reason.
     std::optional<std::string> setSignal(core::signal::SignalSetup setup);
     const core::signal::SignalSetup& signalSetup() const { return m_options.signal; }
     // The chain running the setup; null when it is empty.
@@ -337,6 +339,7 @@ private:
     // the chain in it, null for none.
     std::shared_ptr<core::SinkSlot> m_signalSlot;
     std::shared_ptr<core::signal::SignalChain> m_chain;
+    std::shared_ptr<ModeInput> m_modeInput;  // before every mode's slot
     std::map<core::Mode, std::unique_ptr<LiveModeUnit>> m_units;
     core::Mode m_mode = core::Mode::General;
     std::shared_ptr<core::storage::Recorder> m_recorder;

@@ -37,6 +37,9 @@ std::optional<std::string> LiveSession::setSignal(core::signal::SignalSetup setu
             return e.what();
         }
     }
+    if (setup.analysisFiltered && setup.filters.empty())
+        return "the mode can analyse the filtered channels only when a channel is filtered";
+    m_modeInput->setChain(setup.analysisFiltered ? chain : nullptr);
     m_options.signal = std::move(setup);
     m_chain = chain;
     m_signalSlot->set(std::move(chain));

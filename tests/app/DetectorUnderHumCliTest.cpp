@@ -131,3 +131,33 @@ TEST(DetectorUnderHum, ARecordedProbesHumIsReadFromTheStore)
         }
     }
 }
+
+// The same live: a hummed panel line recorded with the notch and its mode
+// told to analyse the filtered channels stores the dent's crossings at its
+// site; `analyze` reads the session as its mode did, and finds nothing in
+// the cantilevers as stored, which the hum hides.
+TEST(DetectorUnderHum, ARecordingWhoseModeReadsTheNotchedChannelsStoresTheDentAndAnalyzeAgrees)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("probe");
+    const QString db = dir.filePath("line.tactiscope");
+    QProcess emulator;
+    ASSERT_TRUE(tactiscope::testing::startEmulator(emulator, link,
+                                                   {"--scenario", "panel-line", "--hum", "20e-6,5e-6", "--seed", "2"}));
+    const CliResult recorded =
+        runCli({"record", "--port", link, "--seconds", "10", "--db", db, "--notch", "50", "--analyze-filtered"});
+    tactiscope::testing::stopEmulator(emulator);
+    ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
+    EXPECT_TRUE(recorded.out.contains("panel-scan: 4 defects stored at 1 site")) << recorded.out.toStdString();
+
+    const auto analyze = [&](const QStringList& more) {
+        const CliResult run = runCli(QStringList{"analyze", "--db", db, "--session", "last", "--json"} + more);
+        EXPECT_EQ(run.exitCode, 0) << run.err.toStdString();
+        return jsonOf(run);
+    };
+    const QJsonObject followed = analyze({});
+    EXPECT_EQ(followed["events"].toArray().size(), 4);
+    ASSERT_EQ(followed["sites"].toArray().size(), 1);
+    EXPECT_NEAR(followed["sites"].toArray()[0].toObject()["position_mm"].toDouble(), 30.0, 2.0);
+    EXPECT_EQ(analyze({"--unfiltered"})["events"].toArray().size(), 0);
+}
