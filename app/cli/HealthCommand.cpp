@@ -4,6 +4,7 @@
 #include "CliSupport.h"
 #include "SignalInput.h"
 #include "core/dsp/SignalHealth.h"
+#include "core/report/SignalQuality.h"
 #include "core/text/JsonWriter.h"
 
 #include <QTextStream>
@@ -16,14 +17,13 @@ namespace {
 
 using core::dsp::ChannelHealth;
 
-constexpr std::uint64_t kWindowSamples = 1u << 16;
 constexpr double kSecondsPerHour = 3600.0;
 
 struct Row {
     std::string channel;
     ShownUnit unit;
     ChannelHealth health;
-    bool clippingJudged = true;  // not for a position
+    bool clippingJudged = true;  // not for a position (ChannelQuality::drifts)
 };
 
 std::string healthJson(const std::vector<Row>& rows)
@@ -114,29 +114,12 @@ int runHealth(const QStringList& arguments)
     SignalInput input;
     if (const auto exit = openSignalInput(parser, name, usage, input)) return *exit;
 
-    std::vector<std::size_t> channels;
-    std::vector<core::dsp::HealthAccumulator> accumulators;
-    for (std::size_t c = 0; c < input.channels.size(); ++c) {
-        if (input.channels[c].descriptor.kind == core::ChannelKind::Decision) continue;  // a probe's −1/0/+1
-        channels.push_back(c);
-        // A position dwelling at an end stop is not a clipped converter.
-        const bool position = input.channels[c].descriptor.kind == core::ChannelKind::Position;
-        accumulators.emplace_back(input.sampleRate_hz, input.sampleCount, std::nullopt, !position);
-    }
+    std::vector<Row> rows;
     try {
-        std::vector<std::vector<double>> window;
-        for (std::uint64_t first = 0; first < input.sampleCount; first += kWindowSamples) {
-            input.store->readChannels(input.session, channels, first, kWindowSamples, window);
-            for (std::size_t i = 0; i < channels.size(); ++i) accumulators[i].push(window[i]);
-        }
+        for (const auto& q : core::report::channelQuality(*input.store, input.session, 0, input.sampleCount))
+            rows.push_back({q.channel.name, shownUnit(q.channel), q.health, q.drifts});
     } catch (const core::storage::StorageError& e) {
         return storageFailure(e, QStringLiteral("health: "));
-    }
-    std::vector<Row> rows;
-    for (std::size_t i = 0; i < channels.size(); ++i) {
-        const auto& descriptor = input.channels[channels[i]].descriptor;
-        rows.push_back({descriptor.name, shownUnit(descriptor), accumulators[i].result(),
-                        descriptor.kind != core::ChannelKind::Position});
     }
     if (parser.isSet(QStringLiteral("json")))
         std::cout << healthJson(rows) << '\n';

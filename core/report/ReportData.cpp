@@ -112,6 +112,14 @@ ReportData gatherReport(storage::SessionSource& store, std::int64_t session, con
     for (const auto& gap : store.gaps(session))
         if (gap.firstIndex < end && gap.firstIndex + gap.count > first) data.gaps.push_back(gap);
     if (summary->metadata.mode == Mode::Capacitive) data.capacitive = capacitiveBasis(store, *summary, first, end);
+    std::optional<double> perNewton_f, calibrationLimit_n;
+    if (data.capacitive) {
+        perNewton_f = data.capacitive->perNewton_f;
+        if (data.capacitive->calibration)
+            if (const auto limit_mn = data.capacitive->calibration->value("detection_limit_mn"))
+                calibrationLimit_n = *limit_mn * 1e-3;
+    }
+    data.quality = gatherSignalQuality(store, *summary, first, end, perNewton_f, calibrationLimit_n);
     auto lanes = derived::sessionLanes(store, *summary);
     data.derivedBasis = lanes.basis;
     data.derivedProblem = lanes.problem;

@@ -8,6 +8,7 @@
 
 #include "core/calibration/CalibrationRecord.h"
 #include "core/detector/DefectSites.h"
+#include "core/report/SignalQuality.h"
 #include "core/storage/SessionStore.h"
 
 #include <cstdint>
@@ -67,6 +68,9 @@ struct ReportData {
     std::string derivedBasis;    // what the derived lanes were computed with; empty without them
     std::string derivedProblem;  // why the mode's quantities could not be computed, if so
     std::optional<CapacitiveBasis> capacitive;
+    // Each channel's health over the range, the filters and math channels
+    // recorded, a capacitive beam's detection limits.
+    SignalQuality quality;
 
     bool wholeSession() const;
 };

@@ -17,6 +17,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLocale>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -96,8 +97,10 @@ TEST(ModeReportsCli, ACapacitiveReportStatesItsBaselineAndTheCalibrationsFit)
     record.fit.slopeStandardError = 0.0042e-9;
     record.fit.points = 6;
     core::storage::SessionStore(db.toStdString()).addCalibration(record);
-    const auto recorded =
-        tactiscope::testing::recordEmulated(dir.path(), db, "capacitive-weights", 6, {"--subject", "beam-1"});
+    // At 100 Hz (the beam's converter at its fastest), so six seconds give
+    // a noise floor's spectrum too.
+    const auto recorded = tactiscope::testing::recordEmulated(dir.path(), db, "capacitive-weights", 6,
+                                                              {"--subject", "beam-1"}, {"--rate", "100"});
     ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
     const QString pdf = dir.filePath("capacitive.pdf");
     const QString text = reportText(db, pdf);
@@ -120,5 +123,17 @@ TEST(ModeReportsCli, ACapacitiveReportStatesItsBaselineAndTheCalibrationsFit)
         EXPECT_TRUE(text.contains(QString::fromUtf8(label))) << label << "\n" << text.toStdString();
     for (const char* key : {"c0_pf", "baseline_sigma_pf", "drift_pf_per_s", "detection_limit_mn", "r_squared"})
         EXPECT_FALSE(text.contains(QString::fromLatin1(key))) << key;
+    // Signal quality (issue 57): the beam's detection limit from this
+    // recording's noise floor beside the calibration's. The emulated beam's
+    // noise is white, σ = 4 fF, so its floor over the sampled band gives
+    // 3σ/S = 3 × 4 fF / 0.5678 pF/mN = 21.1 µN (the median's bias and the
+    // steps' edges within a few per cent).
+    EXPECT_TRUE(text.contains("Signal quality")) << text.toStdString();
+    const QRegularExpression limits(QStringLiteral("Detection limit \\(3σ/S\\)\\s+([0-9.,]+) µN from this "
+                                                   "recording's noise"));
+    const auto found = limits.match(QString(text).replace(QLatin1Char('\n'), QLatin1Char(' ')));
+    ASSERT_TRUE(found.hasMatch()) << text.toStdString();
+    EXPECT_NEAR(locale.toDouble(found.captured(1)), 3.0 * 4e-15 / 0.5678e-9 * 1e6, 2.5)
+        << found.captured(0).toStdString();
     EXPECT_TRUE(tactiscope::testing::savePdfFirstPage(pdf, QStringLiteral("report-capacitive-page1")));
 }

@@ -7,16 +7,19 @@
 #include "core/storage/SessionStore.h"
 #include "support/CliRunner.h"
 #include "support/EmulatorProcess.h"
+#include "support/PdfText.h"
 
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 using namespace tactiscope;
 using tactiscope::testing::CliResult;
@@ -113,6 +116,27 @@ TEST(SignalSetupCli, ARecordingKeepsItsFiltersAndMathAndTheExportComputesThemAsL
     ASSERT_TRUE(back);
     EXPECT_EQ(back->metadata.signalSetup, session["signal_setup"].toString().toStdString());
     EXPECT_EQ(store.channels(back->id).size(), 2u) << "the computed columns are not imported as channels";
+
+    // The report's signal quality: the hum each gauge carries (20 µε common
+    // and ±5 µε differential: 25 on a, 15 on b), and the filters used.
+    if (*tactiscope::testing::pdfTextMissing()) return;
+    const QString pdf = dir.filePath("report.pdf");
+    const CliResult report = runCli({"report", "--db", db, "--session", QString::number(id), "--output", pdf});
+    ASSERT_EQ(report.exitCode, 0) << report.err.toStdString();
+    const QString text = tactiscope::testing::pdfText(pdf).simplified();
+    EXPECT_TRUE(text.contains("Signal quality")) << text.toStdString();
+    EXPECT_TRUE(text.contains("a: mains notch 50 Hz and harmonics, low-pass 200 Hz (Butterworth, order 4)"))
+        << text.toStdString();
+    const QRegularExpression hum(QStringLiteral("\\b([ab]) ([0-9.]+) µε at 50 Hz"));
+    std::map<QString, double> found;
+    for (auto it = hum.globalMatch(text); it.hasNext();) {
+        const auto m = it.next();
+        found[m.captured(1)] = m.captured(2).toDouble();
+    }
+    ASSERT_EQ(found.size(), 2u) << text.toStdString();
+    EXPECT_NEAR(found["a"], 25.0, 0.5);  // within 2 %
+    EXPECT_NEAR(found["b"], 15.0, 0.3);
+    tactiscope::testing::savePdfPage(pdf, QStringLiteral("report-signal-quality"), 0);
 }
 
 TEST(SignalSetupCli, WhatCannotBeFilteredOrComputedIsRefusedBeforeAnythingIsRecorded)

@@ -16,6 +16,7 @@
 #include "ui/report/ReportHtml.h"
 #include "ui/report/ReportPages.h"
 #include "ui/report/ReportPlot.h"
+#include "ui/report/SignalQualityHtml.h"
 
 #include <QBuffer>
 #include <QFileInfo>
@@ -324,6 +325,7 @@ std::unique_ptr<QTextDocument> buildReportDocument(const core::report::ReportDat
                 .arg(shaded, alarms ? QObject::tr("Red: a limit alarm, from its raise to its clear. ") : QString(),
                      QObject::tr("Bands show each stretch's minimum and maximum."));
     html += eventTables(data, *document);
+    html += signalQualitySection(data.quality);
     html += QStringLiteral("<p class=footer>%1</p>")
                 .arg(QObject::tr("Tactiscope %1 (recorded with %2), %3")
                          .arg(QString::fromUtf8(core::versionString()), orDash(data.session.appVersion),

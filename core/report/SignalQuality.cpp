@@ -1,0 +1,63 @@
+// The signal-quality section: health per channel, the setup in words, and
+// a capacitive beam's detection limits.
+#include "core/report/SignalQuality.h"
+
+#include "core/signal/SignalSetup.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tactiscope::core::report {
+namespace {
+
+// Samples per channel read at a time.
+constexpr std::uint64_t kWindow = std::uint64_t{1} << 16;
+
+}  // namespace
+
+std::vector<ChannelQuality> channelQuality(storage::SessionSource& store, std::int64_t session, std::uint64_t first,
+                                           std::uint64_t end)
+{
+    const auto stored = store.channels(session);
+    std::vector<std::size_t> read;
+    std::vector<dsp::HealthAccumulator> accumulators;
+    std::vector<ChannelQuality> channels;
+    for (std::size_t c = 0; c < stored.size(); ++c) {
+        const auto& descriptor = stored[c].descriptor;
+        if (descriptor.kind == ChannelKind::Decision) continue;  // a probe's −1/0/+1
+        // A position dwelling at an end stop is not a clipped converter.
+        const bool position = descriptor.kind == ChannelKind::Position;
+        read.push_back(c);
+        accumulators.emplace_back(stored[c].sampleRate_hz, end > first ? end - first : 0, std::nullopt, !position);
+        channels.push_back({descriptor, {}, !position});
+    }
+    std::vector<std::vector<double>> window;
+    for (std::uint64_t from = first; from < end; from += kWindow) {
+        store.readChannels(session, read, from, std::min(kWindow, end - from), window);
+        for (std::size_t i = 0; i < read.size(); ++i) accumulators[i].push(window[i]);
+    }
+    for (std::size_t i = 0; i < channels.size(); ++i) channels[i].health = accumulators[i].result();
+    return channels;
+}
+
+SignalQuality gatherSignalQuality(storage::SessionSource& store, const storage::SessionSummary& session,
+                                  std::uint64_t first, std::uint64_t end, std::optional<double> perNewton_f,
+                                  std::optional<double> calibrationLimit_n)
+{
+    SignalQuality quality;
+    quality.channels = channelQuality(store, session.id, first, end);
+    quality.setup = signal::signalSetupText(session.metadata.signalSetup);
+    if (!perNewton_f || !(*perNewton_f > 0.0)) return quality;
+    const auto beam = std::ranges::find_if(quality.channels, [](const ChannelQuality& q) {
+        return q.channel.role == ChannelRole::Capacitance ||
+               (!q.channel.role && q.channel.kind == ChannelKind::Capacitance);
+    });
+    if (beam == quality.channels.end() || !std::isfinite(beam->health.noiseFloor_per_sqrt_hz)) return quality;
+    const auto rates = store.channels(session.id);
+    const double rate_hz = rates.empty() ? 0.0 : rates.front().sampleRate_hz;
+    quality.detection = DetectionLimits{
+        3.0 * beam->health.noiseFloor_per_sqrt_hz * std::sqrt(rate_hz / 2.0) / *perNewton_f, calibrationLimit_n};
+    return quality;
+}
+
+}  // namespace tactiscope::core::report

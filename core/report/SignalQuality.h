@@ -1,0 +1,54 @@
+// A report's "Signal quality" (issue 57): each stored channel's health over
+// the report's range (mains hum in the channel's unit, noise floor, drift
+// with its ±, clipped samples: core/dsp/SignalHealth.h), the filters and
+// math channels the session was recorded with, and for a capacitive beam
+// the detection limit its noise floor gives beside its calibration's.
+// The health reads the samples, in windows; the rest of a report does not.
+#pragma once
+
+#include "core/ChannelDescriptor.h"
+#include "core/dsp/SignalHealth.h"
+#include "core/storage/SessionSource.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tactiscope::core::report {
+
+struct ChannelQuality {
+    ChannelDescriptor channel;
+    dsp::ChannelHealth health;
+    bool drifts = true;  // its drift is a signal's (a position's is the probe moving)
+};
+
+// A capacitive beam's detection limit two ways, in newtons: from the
+// recording's noise floor over the band it samples, 3·floor·√(f_s/2)/S
+// (what one sample resolves, had the noise been white), and from the
+// calibration's baseline, 3σ/S. A calibration's well above the floor's
+// says its baseline window held more than noise (creep, drift).
+struct DetectionLimits {
+    double fromNoiseFloor_n = 0.0;
+    std::optional<double> fromCalibration_n;
+};
+
+struct SignalQuality {
+    std::vector<ChannelQuality> channels;
+    std::string setup = "none";  // the recorded signal setup in words
+    std::optional<DetectionLimits> detection;
+};
+
+// Each stored channel's health over samples [first, end) (a probe's own
+// decisions left out), read in windows. Throws storage::StorageError.
+std::vector<ChannelQuality> channelQuality(storage::SessionSource& store, std::int64_t session, std::uint64_t first,
+                                           std::uint64_t end);
+
+// The section for `session` over [first, end). `perNewton_f`: a capacitive
+// beam's sensitivity (F/N) as its readings used it, `calibrationLimit_n`
+// the calibration's 3σ/S; none for other sessions.
+SignalQuality gatherSignalQuality(storage::SessionSource& store, const storage::SessionSummary& session,
+                                  std::uint64_t first, std::uint64_t end, std::optional<double> perNewton_f,
+                                  std::optional<double> calibrationLimit_n);
+
+}  // namespace tactiscope::core::report
