@@ -38,6 +38,8 @@
 #include "ui/review/ReviewActions.h"
 #include "ui/review/ReviewWindows.h"
 #include "ui/review/SessionBrowser.h"
+#include "ui/signal/LiveSpectrum.h"
+#include "ui/signal/SignalControl.h"
 
 #include <QApplication>
 #include <QCloseEvent>
@@ -112,13 +114,17 @@ void MainWindow::buildFrame()
     // The traces on top, the mode's view (its lanes, readings and controls)
     // below, half and half: on a 768-pixel screen the mode's view needs the
     // room as much as the traces.
+    // The filtered and math channels between them, when the device has any.
     auto* centre = new QSplitter(Qt::Vertical, this);
     centre->setObjectName(QStringLiteral("centreSplitter"));
+    m_signal = new SignalControl(*m_station, this);
     centre->addWidget(m_plot);
+    centre->addWidget(m_signal->panel());
     centre->addWidget(m_modeViews);
     centre->setStretchFactor(0, 1);
     centre->setStretchFactor(1, 1);
-    centre->setSizes({400, 400});
+    centre->setStretchFactor(2, 1);
+    centre->setSizes({400, 250, 400});
     centre->setChildrenCollapsible(false);
     // The trigger's state and the alarms over the traces, shown only when they have something to say.
     auto* central = new QWidget(this);
@@ -146,6 +152,7 @@ void MainWindow::buildFrame()
     m_xyPlot->setObjectName(QStringLiteral("xyPlot"));
     m_xyDock = addDock(this, tr("XY plot"), QStringLiteral("xyDock"), m_xyPlot, Qt::RightDockWidgetArea);
     m_xyDock->hide();  // on request (View menu): the mode views come first
+    m_spectrum = new LiveSpectrum(*m_station, this);
     m_rawConsole = new RawConsole(this);
     m_rawConsole->setObjectName(QStringLiteral("rawConsole"));
     m_consoleDock =
@@ -154,8 +161,9 @@ void MainWindow::buildFrame()
     m_others = new OtherDevices(this);
     m_othersDock =
         addDock(this, tr("Other devices"), QStringLiteral("otherDevicesDock"), m_others, Qt::LeftDockWidgetArea);
-    // Beside the device panel, a tab of its own: the window keeps its width.
+    // Beside the device panel, tabs of their own: the window keeps its width.
     tabifyDockWidget(m_deviceDock, m_othersDock);
+    tabifyDockWidget(m_deviceDock, m_spectrum->dock());
     m_othersDock->hide();  // until a device is added
     m_status = new StatusLine(statusBar());
     m_central = new CentralStoreLink(statusBar(), this);
@@ -167,7 +175,9 @@ void MainWindow::buildFrame()
 void MainWindow::watchStation()
 {
     const auto tell = [this](const QString& text) { statusBar()->showMessage(text, 8000); };
-    m_traces = new LiveTraces(*m_station, m_plot, m_modeViews->lanes(), this);
+    auto lanes = m_modeViews->lanes();
+    lanes.push_back(m_signal->plot());
+    m_traces = new LiveTraces(*m_station, m_plot, std::move(lanes), this);
     m_markers = new LiveMarkers(*m_station, *m_traces,
                                 {.store = [this] { return m_store; },
                                  .author = [this] { return m_sessionBar->metadata().operatorName; },
@@ -297,6 +307,7 @@ void MainWindow::createMenus()
     session->addAction(tr("&Tare"), QKeySequence(tr("Ctrl+T")), this, &MainWindow::tare);
     session->addSeparator();
     m_handsFree->addActions(session);
+    m_signal->addActions(session);
     session->addSeparator();
     session->addAction(tr("Sensor &profiles…"), QKeySequence(tr("Ctrl+Shift+P")), this, &MainWindow::showProfiles);
     session->addAction(tr("Session &store…"), this, &MainWindow::chooseStore);
@@ -304,7 +315,7 @@ void MainWindow::createMenus()
     session->addAction(tr("&Browse and review sessions…"), QKeySequence::Open, this, &MainWindow::showSessionBrowser);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
-    for (QDockWidget* dock : {m_deviceDock, m_othersDock, m_xyDock, m_consoleDock})
+    for (QDockWidget* dock : {m_deviceDock, m_othersDock, m_xyDock, m_spectrum->dock(), m_consoleDock})
         view->addAction(dock->toggleViewAction());
     view->addSeparator();
     QToolBar* display = addToolBar(tr("Display"));

@@ -32,6 +32,8 @@ namespace tactiscope::ui {
 class CentralStoreLink;
 class DevicePanel;
 class HandsFreeControl;
+class LiveSpectrum;
+class SignalControl;
 class LiveModeView;
 class LivePlotWidget;
 class LiveMarkers;
@@ -123,6 +125,8 @@ private:
     SessionBar* m_sessionBar = nullptr;
     WatchBanner* m_watchBanner = nullptr;     // the trigger's state and the alarms, above the traces
     HandsFreeControl* m_handsFree = nullptr;  // triggers and limit alarms
+    SignalControl* m_signal = nullptr;        // filters and math channels
+    LiveSpectrum* m_spectrum = nullptr;       // View ▸ Spectrum
     ModeViews* m_modeViews = nullptr;         // the mode's view under the traces
     DevicePanel* m_devicePanel = nullptr;
     ReviewWindows* m_review = nullptr;      // the browser and review windows of the store

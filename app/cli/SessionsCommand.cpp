@@ -359,15 +359,10 @@ int exportSession(SessionSource& store, std::int64_t id, const QString& format, 
         }
     }
     // The filtered and math channels the session recorded, as it showed them live.
-    if (const std::string recorded = store.session(id)->metadata.signalSetup;
-        !recorded.empty() && format == QLatin1String("csv")) {
-        try {
-            computed = std::make_unique<core::signal::SignalColumns>(
-                store, id, core::signal::signalSetupFromJson(recorded), std::move(computed));
-        } catch (const std::invalid_argument& e) {  // a setup this program cannot run: the samples still go out
-            printError(
-                QStringLiteral("the session's filters and math channels are left out: %1").arg(toQString(e.what())));
-        }
+    if (format == QLatin1String("csv")) {
+        std::string problem;
+        computed = core::signal::withRecordedSignal(store, id, std::move(computed), problem);
+        if (!problem.empty()) printError(toQString(problem));
     }
     if (!math.empty()) {
         try {

@@ -83,4 +83,20 @@ std::vector<std::vector<double>> SignalColumns::read(std::uint64_t first, std::u
     return columns;
 }
 
+std::unique_ptr<storage::ComputedColumns> withRecordedSignal(storage::SessionSource& store, std::int64_t session,
+                                                             std::unique_ptr<storage::ComputedColumns> derived,
+                                                             std::string& problem)
+{
+    problem.clear();
+    const auto summary = store.session(session);
+    if (!summary || summary->metadata.signalSetup.empty()) return derived;
+    try {
+        return std::make_unique<SignalColumns>(store, session, signalSetupFromJson(summary->metadata.signalSetup),
+                                               std::move(derived));
+    } catch (const std::invalid_argument& e) {  // the chain is made before `derived` is taken
+        problem = std::string("the session's filters and math channels are left out: ") + e.what();
+        return derived;
+    }
+}
+
 }  // namespace tactiscope::core::signal

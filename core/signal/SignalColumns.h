@@ -43,4 +43,12 @@ private:
     LiveCursor m_cursor;
 };
 
+// The columns of a CSV export of `session`: `derived` (may be null), then
+// the filtered and math channels of its recorded signal setup, if it has
+// one. A setup this program cannot run is left out, and `problem` says why
+// (the samples still go out); empty otherwise.
+std::unique_ptr<storage::ComputedColumns> withRecordedSignal(storage::SessionSource& store, std::int64_t session,
+                                                             std::unique_ptr<storage::ComputedColumns> derived,
+                                                             std::string& problem);
+
 }  // namespace tactiscope::core::signal

@@ -566,7 +566,8 @@ void LivePlotWidget::refresh()
         // Until a full window has arrived the traces grow from the left edge;
         // after that the window scrolls with the newest sample at the right.
         const double latest_s = m_time->at(m_time->endIndex() - 1);
-        const double start_s = std::max(latest_s - m_window_s, m_time->at(m_time->oldestIndex()));
+        const double oldest_s = m_time->at(m_time->oldestIndex());
+        const double start_s = std::max(latest_s - m_window_s, std::min(oldest_s, m_growsFrom_s.value_or(oldest_s)));
         followLive(start_s, arrived);
         draw(start_s, start_s + m_window_s);
     }

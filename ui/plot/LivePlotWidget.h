@@ -73,6 +73,11 @@ public:
 
     // Length of the scrolling time window, clamped to (0, kMaxWindow_s].
     void setWindowLength(double seconds);
+    // Until a full window has arrived, the traces grow from this stream
+    // time rather than from their first sample: a lane that began later
+    // than the plots it lines up with (filters set mid-stream, from 0)
+    // keeps their time axis. None: from its first sample.
+    void setGrowsFrom(std::optional<double> time_s) { m_growsFrom_s = time_s; }
     double windowLength_s() const { return m_window_s; }
 
     void setPaused(bool paused);
@@ -167,6 +172,7 @@ private:
     QCPMarginGroup* m_laneMargins = nullptr;  // keeps lanes' axes aligned
     QTimer m_frameTimer;
     double m_window_s = kDefaultWindow_s;
+    std::optional<double> m_growsFrom_s;
     bool m_paused = false;
     bool m_scaleHeld = false;
     bool m_viewChanged = false;  // paused: the user moved the view since the last frame

@@ -17,6 +17,7 @@
 #include "core/report/PressTable.h"
 #include "core/report/ReportData.h"
 #include "core/report/VerdictTrail.h"
+#include "core/signal/SignalColumns.h"
 #include "core/storage/AutomaticVerdict.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/SafeOutput.h"
@@ -30,6 +31,7 @@
 #include "ui/review/ReviewActions.h"
 #include "ui/review/ReviewPlot.h"
 #include "ui/review/SessionTableModel.h"
+#include "ui/signal/ReviewSpectrum.h"
 
 #include <QAction>
 #include <QFileDialog>
@@ -417,6 +419,13 @@ void ReviewWindow::createActions()
     file->addSeparator();
     file->addAction(a->close);
     connect(a->close, &QAction::triggered, this, &QWidget::close);
+    QMenu* signal = menuBar()->addMenu(tr("&Signal"));
+    QAction* spectrum = signal->addAction(tr("&Spectrum of the range shown…"), this, [this] {
+        auto* dialog = new ReviewSpectrum(*m_store, m_session, m_plot->from_s(), m_plot->to_s(), this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->show();
+    });
+    spectrum->setObjectName(QStringLiteral("reviewSpectrumAction"));
 
     QToolBar* bar = addToolBar(tr("Review"));
     bar->setObjectName(QStringLiteral("reviewToolBar"));
@@ -822,14 +831,18 @@ QString ReviewWindow::exportCsv(const QString& csvPath, bool visibleRangeOnly)
         range.first = static_cast<std::uint64_t>(std::max(0.0, std::floor(m_plot->from_s() * rate_hz)));
         range.count = static_cast<std::uint64_t>(std::ceil(m_plot->to_s() * rate_hz)) + 1 - range.first;
     }
+    std::string problem;
     try {
+        // With the filtered and math channels it was recorded with.
+        const auto signal = core::signal::withRecordedSignal(*m_store, m_session.id, nullptr, problem);
         core::storage::exportSession(*m_store, m_session.id, core::storage::ExportFormat::Csv, csvPath.toStdString(),
-                                     range);
+                                     range, signal.get());
     } catch (const core::storage::StorageError& e) {
         return tr("The CSV was not written: %1").arg(text(e.what()));
     }
-    statusBar()->showMessage(tr("Exported to %1, with its metadata (calibrations included) in %2.")
-                                 .arg(csvPath, text(core::storage::metadataSidePath(csvPath.toStdString()))));
+    const QString left = problem.empty() ? QString() : QStringLiteral(" ") + text(problem);
+    statusBar()->showMessage(tr("Exported to %1, with its metadata (calibrations included) in %2.%3")
+                                 .arg(csvPath, text(core::storage::metadataSidePath(csvPath.toStdString())), left));
     return {};
 }
 

@@ -1,0 +1,159 @@
+// The signal work in the GUI (issue 57), on the real main window with the
+// simulator's panel scan under 20 µε of common and 5 µε of differential
+// 50 Hz hum: Session ▸ Filters and math channels… finds the mains, sets a
+// notch on both gauges and a math channel, refuses a unit mismatch in
+// words, and the window plots what they give with each filter's delay; the
+// live spectrum shows the hum's line where the simulator put it; the
+// recording keeps the setup, and the review's spectrum of its math channel
+// reads it again from the store.
+#include "core/storage/SessionStore.h"
+#include "devices/session/LiveSession.h"
+#include "devices/simulator/MainsHumOverlay.h"
+#include "devices/simulator/ScenarioCatalog.h"
+#include "devices/simulator/SimulatorSource.h"
+#include "support/MainWindowHelpers.h"
+#include "support/Screenshot.h"
+#include "support/WaitFor.h"
+#include "ui/MainWindow.h"
+#include "ui/live/LiveStation.h"
+#include "ui/plot/LivePlotWidget.h"
+#include "ui/review/ReviewWindow.h"
+#include "ui/signal/ReviewSpectrum.h"
+#include "ui/signal/SignalDialog.h"
+#include "ui/signal/SpectrumView.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+using namespace tactiscope;
+using tactiscope::testing::child;
+using tactiscope::testing::waitFor;
+
+namespace {
+
+std::unique_ptr<devices::BlockSource> hummedPanelScan()
+{
+    devices::simulator::MainsHumSettings hum;
+    hum.common = 20e-6;
+    hum.differential = 5e-6;
+    return std::make_unique<devices::simulator::SimulatorSource>(
+        std::make_unique<devices::simulator::HummedScenario>(devices::simulator::makeScenario("panel-scan"), hum));
+}
+
+QAction* action(const QWidget& window, const char* name)
+{
+    auto* found = window.findChild<QAction*>(QString::fromLatin1(name));
+    EXPECT_NE(found, nullptr) << name;
+    return found;
+}
+
+}  // namespace
+
+TEST(SignalViews, FiltersAndAMathChannelAreSetFoundShownRecordedAndReviewed)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath("line.tactiscope");
+    ui::MainWindow window;
+    window.setStorePath(db);
+    window.resize(1366, 768);
+    window.show();
+    window.station().connectSource(hummedPanelScan());
+    ASSERT_TRUE(waitFor([&] { return window.station().device() != nullptr; }, 5000));
+    QTest::qWait(1500);  // a second and a half of hum to find
+
+    action(window, "signalAction")->trigger();
+    auto* dialog = window.findChild<ui::SignalDialog*>(QStringLiteral("signalDialog"));
+    ASSERT_NE(dialog, nullptr);
+    QTest::mouseClick(child<QPushButton>(*dialog, "signalFindMains"), Qt::LeftButton);
+    EXPECT_TRUE(child<QLabel>(*dialog, "signalMainsFound")->text().startsWith(QStringLiteral("50 Hz hum")))
+        << child<QLabel>(*dialog, "signalMainsFound")->text().toStdString();
+    EXPECT_EQ(child<QComboBox>(*dialog, "signalMains")->currentData().toDouble(), 50.0);
+    auto* filters = child<QTableWidget>(*dialog, "signalFilters");
+    ASSERT_EQ(filters->rowCount(), 2);
+    for (int row = 0; row < 2; ++row) qobject_cast<QCheckBox*>(filters->cellWidget(row, 1))->setChecked(true);
+    EXPECT_TRUE(filters->item(0, 6)->text().endsWith(QStringLiteral(" ms")))
+        << filters->item(0, 6)->text().toStdString();
+
+    // A sum of a strain and a force is refused, in the dialog, and nothing changes.
+    auto* math = child<QPlainTextEdit>(*dialog, "signalMath");
+    math->setPlainText(QStringLiteral("x[mN]=a + 1"));
+    QTest::mouseClick(child<QPushButton>(*dialog, "signalApply"), Qt::LeftButton);
+    EXPECT_FALSE(child<QLabel>(*dialog, "signalProblem")->text().isEmpty());
+    EXPECT_TRUE(window.station().device()->signalSetup().empty());
+
+    math->setPlainText(QStringLiteral("diff[µε]=a - b"));
+    child<QCheckBox>(*dialog, "signalAnalyseFiltered")->setChecked(true);
+    tactiscope::testing::saveScreenshot(*dialog, QStringLiteral("signal-dialog"));
+    QTest::mouseClick(child<QPushButton>(*dialog, "signalApply"), Qt::LeftButton);
+    EXPECT_TRUE(child<QLabel>(*dialog, "signalProblem")->text().isEmpty())
+        << child<QLabel>(*dialog, "signalProblem")->text().toStdString();
+    const auto& setup = window.station().device()->signalSetup();
+    ASSERT_EQ(setup.filters.size(), 2u);
+    EXPECT_EQ(setup.filters[0].settings.notch_hz, 50.0);
+    ASSERT_EQ(setup.math.size(), 1u);
+    EXPECT_TRUE(setup.analysisFiltered);
+    dialog->close();
+
+    // The window plots them, saying what they are and how late.
+    auto* line = child<QLabel>(window, "signalLine");
+    EXPECT_TRUE(window.findChild<QWidget*>(QStringLiteral("signalPanel"))->isVisible());
+    EXPECT_TRUE(line->text().contains(QStringLiteral("a.filtered: mains notch 50 Hz and harmonics, delay ")))
+        << line->text().toStdString();
+    EXPECT_TRUE(line->text().contains(QStringLiteral("diff[µε]=a - b")));
+    auto* plot = child<ui::LivePlotWidget>(window, "signalPlot");
+    ASSERT_TRUE(waitFor([&] { return plot->samplesReceived() > 500; }, 5000));
+
+    // The live spectrum of a (as it came) shows the hum's line at 50 Hz,
+    // at its amplitude: 20 + 5 µε on a.
+    auto* spectrumDock = window.findChild<QDockWidget*>(QStringLiteral("spectrumDock"));
+    ASSERT_NE(spectrumDock, nullptr);
+    spectrumDock->toggleViewAction()->trigger();  // View ▸ Spectrum
+    ASSERT_TRUE(waitFor([&] { return spectrumDock->isVisible(); }, 2000));
+    auto* spectrum = spectrumDock->findChild<ui::SpectrumView*>();
+    ASSERT_NE(spectrum, nullptr);
+    ASSERT_TRUE(waitFor([&] { return spectrum->spectrum().averages >= 2; }, 8000));
+    ASSERT_FALSE(spectrum->spectrum().peaks.empty());
+    const auto& strongest = spectrum->spectrum().peaks.front();
+    EXPECT_NEAR(strongest.frequency_hz, 50.0, 1.0);
+    EXPECT_NEAR(strongest.amplitude, 25e-6, 2.5e-6);
+    EXPECT_TRUE(spectrum->peaksText().contains(QStringLiteral("µε"))) << spectrum->peaksText().toStdString();
+    tactiscope::testing::saveScreenshot(window, QStringLiteral("signal-live"));
+
+    // Recorded, the session keeps the setup; its review's spectrum of the
+    // math channel, computed again from the store, has no 50 Hz line left.
+    ASSERT_FALSE(window.station().startRecording({}));
+    QTest::qWait(2500);
+    window.station().stopRecording();
+    ASSERT_TRUE(waitFor([&] { return !window.station().isRecording(); }, 5000));
+    {
+        core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+        const auto id = store.lastSession();
+        ASSERT_TRUE(id);
+        EXPECT_FALSE(store.session(*id)->metadata.signalSetup.empty());
+    }
+    QString error;
+    std::unique_ptr<ui::ReviewWindow> review(ui::ReviewWindow::open(db, 1, nullptr, error));
+    ASSERT_TRUE(review) << error.toStdString();
+    review->show();
+    action(*review, "reviewSpectrumAction")->trigger();
+    auto* reviewed = review->findChild<ui::ReviewSpectrum*>(QStringLiteral("reviewSpectrum"));
+    ASSERT_NE(reviewed, nullptr);
+    auto* channel = reviewed->findChild<QComboBox*>(QStringLiteral("spectrumChannel"));
+    channel->setCurrentIndex(channel->findText(QStringLiteral("diff")));
+    const auto& diff = reviewed->view()->spectrum();
+    ASSERT_GT(diff.averages, 0u);
+    for (const auto& peak : diff.peaks)
+        EXPECT_FALSE(std::abs(peak.frequency_hz - 50.0) < 1.0 && peak.amplitude > 1.0)  // µε, the unit diff is in
+            << peak.frequency_hz << " Hz, " << peak.amplitude;
+    tactiscope::testing::saveScreenshot(*reviewed, QStringLiteral("spectrum-review"));
+}
