@@ -11,9 +11,10 @@
 //    timer: the GUI thread's CPU time over wall time, frames drawn, and the
 //    samples the display missed;
 //  - the same at 16 × 10 kHz with a mains notch and a low-pass on every
-//    channel (issue 57): the signal chain on the feeder's thread, its 16
-//    filtered channels on a second plot; the GUI thread and the filtering's
-//    share of a core, against the traces alone in the same run;
+//    channel (issue 57): the signal chain on the feeder's thread and the
+//    traces drawn as filtered (or as they came, with the 16 filtered
+//    channels on a second plot); the GUI thread and the filtering's share
+//    of a core, against the traces alone in the same run;
 //  - an hour of 16 × 10 kHz through the buffer and the widget (as fast as
 //    it goes, a frame every 10 s of stream time): the resident memory after
 //    the first minute and after the hour.
@@ -135,29 +136,41 @@ core::signal::SignalSetup notchedAndLowPassed(const std::vector<core::ChannelDes
 }
 
 // Args: channels, rate in Hz, and 1 to filter every channel live (the
-// signal chain on the feeder's thread, as on the acquisition's, and its
-// filtered channels on a second plot under the traces, as the window
-// shows them); 0 for the traces alone, the baseline.
+// signal chain on the feeder's thread, as on the acquisition's, and the
+// traces drawn from its display as the window draws a filtered device:
+// each channel once, as filtered), 2 to draw the filtered channels on a
+// second plot under the traces as they came (View ▸ Traces as filtered
+// unticked); 0 for the traces alone, the baseline.
 void BM_LiveDisplayRealTime(benchmark::State& state)
 {
     const auto channels = static_cast<std::size_t>(state.range(0));
     const auto rate_hz = static_cast<double>(state.range(1));
     const bool filtered = state.range(2) != 0;
+    const bool besides = state.range(2) == 2;
     const auto block = static_cast<std::size_t>(0.005 * rate_hz);  // 5 ms
     // The blocks made before, so the feeder spends its time feeding.
     std::vector<core::SampleBlock> second;
     for (std::uint64_t first = 0; first < static_cast<std::uint64_t>(rate_hz); first += block)
         second.push_back(streamBlock(channels, rate_hz, first, block));
     for (auto _ : state) {
-        auto buffer = std::make_shared<core::LiveBuffer>(channels, static_cast<std::size_t>(2.0 * rate_hz));
+        const auto held = static_cast<std::size_t>(2.0 * rate_hz);
+        auto buffer = std::make_shared<core::LiveBuffer>(channels, held);
         ui::LivePlotWidget plot;
-        showOn(plot, buffer, channels, rate_hz);
         std::unique_ptr<core::signal::SignalChain> chain;
         ui::LivePlotWidget filteredPlot;
         if (filtered) {
             const auto names = strainChannels(channels);
             chain = std::make_unique<core::signal::SignalChain>(notchedAndLowPassed(names, rate_hz), names, rate_hz,
-                                                                static_cast<std::size_t>(2.0 * rate_hz));
+                                                                held, 0.0, held);
+        }
+        if (filtered && !besides) {
+            plot.resize(1600, 900);
+            plot.show();
+            plot.setSource(chain->display(), strainChannels(channels), rate_hz);
+        } else {
+            showOn(plot, buffer, channels, rate_hz);
+        }
+        if (besides) {
             filteredPlot.resize(1600, 450);
             filteredPlot.setSource(chain->output(), chain->outputs(), rate_hz);
             filteredPlot.show();
@@ -201,6 +214,7 @@ BENCHMARK(BM_LiveDisplayRealTime)
     ->Args({8, 2000, 0})
     ->Args({16, 10000, 0})
     ->Args({16, 10000, 1})
+    ->Args({16, 10000, 2})
     ->Unit(benchmark::kSecond)
     ->Iterations(1)
     ->UseRealTime();

@@ -90,6 +90,7 @@ MainWindow::MainWindow(QWidget* parent)
       m_devicePanel(new DevicePanel(this)),
       m_review(new ReviewWindows(this))
 {
+    m_plot->setObjectName(QStringLiteral("tracesPlot"));
     ElidedTextTips::install();  // every cut cell and combo of every window says its whole text
     setWindowTitle(tr("Tactiscope"));
     setWindowIcon(QIcon(QStringLiteral(":/tactiscope/icons/tactiscope.svg")));
@@ -178,6 +179,7 @@ void MainWindow::watchStation()
     auto lanes = m_modeViews->lanes();
     lanes.push_back(m_signal->plot());
     m_traces = new LiveTraces(*m_station, m_plot, std::move(lanes), this);
+    connect(m_signal, &SignalControl::tracesChanged, m_traces, &LiveTraces::setFilteredTraces);
     m_markers = new LiveMarkers(*m_station, *m_traces,
                                 {.store = [this] { return m_store; },
                                  .author = [this] { return m_sessionBar->metadata().operatorName; },
@@ -317,6 +319,7 @@ void MainWindow::createMenus()
     QMenu* view = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* dock : {m_deviceDock, m_othersDock, m_xyDock, m_spectrum->dock(), m_consoleDock})
         view->addAction(dock->toggleViewAction());
+    view->addAction(m_signal->filteredTracesAction());
     view->addSeparator();
     QToolBar* display = addToolBar(tr("Display"));
     display->setObjectName(QStringLiteral("displayToolBar"));

@@ -2,6 +2,7 @@
 #include "core/derived/SessionLanes.h"
 
 #include "core/modes/ModeDefinition.h"
+#include "core/signal/SignalColumns.h"
 #include "core/timing/ClockMappingJson.h"
 
 #include <algorithm>
@@ -67,6 +68,12 @@ void addRecordingLanes(
     for (std::size_t c = 0; c < channels.size(); ++c)
         if (std::ranges::find(added.replaced, c) == added.replaced.end()) push(stored(c, channels[c].descriptor));
     for (auto& lane : added.after) push(placed(std::move(lane)));
+    // The filtered and math channels it was recorded with, as the operator saw them.
+    if (options.raw) return;
+    std::string problem;
+    for (auto& lane : signal::recordedSignalLanes(store, session.id, problem)) push(placed(std::move(lane)));
+    if (!problem.empty())
+        result.problem += (result.problem.empty() ? "" : "; ") + (device.empty() ? "" : device + ": ") + problem;
 }
 
 // A session of several devices: each device's lanes as its own recording

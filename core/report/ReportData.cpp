@@ -119,7 +119,7 @@ ReportData gatherReport(storage::SessionSource& store, std::int64_t session, con
             if (const auto limit_mn = data.capacitive->calibration->value("detection_limit_mn"))
                 calibrationLimit_n = *limit_mn * 1e-3;
     }
-    data.quality = gatherSignalQuality(store, *summary, first, end, perNewton_f, calibrationLimit_n);
+    data.quality = gatherSignalQuality(store, *summary, first, end, perNewton_f, calibrationLimit_n, kMostReportTraces);
     auto lanes = derived::sessionLanes(store, *summary);
     data.derivedBasis = lanes.basis;
     data.derivedProblem = lanes.problem;

@@ -16,7 +16,7 @@ constexpr std::uint64_t kWindow = std::uint64_t{1} << 16;
 }  // namespace
 
 std::vector<ChannelQuality> channelQuality(storage::SessionSource& store, std::int64_t session, std::uint64_t first,
-                                           std::uint64_t end)
+                                           std::uint64_t end, std::size_t most)
 {
     const auto stored = store.channels(session);
     std::vector<std::size_t> read;
@@ -25,6 +25,7 @@ std::vector<ChannelQuality> channelQuality(storage::SessionSource& store, std::i
     for (std::size_t c = 0; c < stored.size(); ++c) {
         const auto& descriptor = stored[c].descriptor;
         if (descriptor.kind == ChannelKind::Decision) continue;  // a probe's −1/0/+1
+        if (read.size() == most) break;
         // A position dwelling at an end stop is not a clipped converter.
         const bool position = descriptor.kind == ChannelKind::Position;
         read.push_back(c);
@@ -42,10 +43,14 @@ std::vector<ChannelQuality> channelQuality(storage::SessionSource& store, std::i
 
 SignalQuality gatherSignalQuality(storage::SessionSource& store, const storage::SessionSummary& session,
                                   std::uint64_t first, std::uint64_t end, std::optional<double> perNewton_f,
-                                  std::optional<double> calibrationLimit_n)
+                                  std::optional<double> calibrationLimit_n, std::size_t most)
 {
     SignalQuality quality;
-    quality.channels = channelQuality(store, session.id, first, end);
+    quality.channels = channelQuality(store, session.id, first, end, most);
+    const auto stored = store.channels(session.id);
+    const auto judged = static_cast<std::size_t>(std::ranges::count_if(
+        stored, [](const storage::StoredChannel& c) { return c.descriptor.kind != ChannelKind::Decision; }));
+    quality.channelsLeftOut = judged - quality.channels.size();
     quality.setup = signal::signalSetupText(session.metadata.signalSetup);
     if (!perNewton_f || !(*perNewton_f > 0.0)) return quality;
     const auto beam = std::ranges::find_if(quality.channels, [](const ChannelQuality& q) {
@@ -53,8 +58,7 @@ SignalQuality gatherSignalQuality(storage::SessionSource& store, const storage::
                (!q.channel.role && q.channel.kind == ChannelKind::Capacitance);
     });
     if (beam == quality.channels.end() || !std::isfinite(beam->health.noiseFloor_per_sqrt_hz)) return quality;
-    const auto rates = store.channels(session.id);
-    const double rate_hz = rates.empty() ? 0.0 : rates.front().sampleRate_hz;
+    const double rate_hz = stored.empty() ? 0.0 : stored.front().sampleRate_hz;
     quality.detection = DetectionLimits{
         3.0 * beam->health.noiseFloor_per_sqrt_hz * std::sqrt(rate_hz / 2.0) / *perNewton_f, calibrationLimit_n};
     return quality;

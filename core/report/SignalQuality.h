@@ -10,6 +10,7 @@
 #include "core/dsp/SignalHealth.h"
 #include "core/storage/SessionSource.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -35,20 +36,25 @@ struct DetectionLimits {
 
 struct SignalQuality {
     std::vector<ChannelQuality> channels;
+    // Channels not read: a report's section is a page at most, as its plot
+    // (`health --db … --session …` reads every one).
+    std::size_t channelsLeftOut = 0;
     std::string setup = "none";  // the recorded signal setup in words
     std::optional<DetectionLimits> detection;
 };
 
 // Each stored channel's health over samples [first, end) (a probe's own
-// decisions left out), read in windows. Throws storage::StorageError.
+// decisions left out), read in windows; the first `most` of them. Throws
+// storage::StorageError.
 std::vector<ChannelQuality> channelQuality(storage::SessionSource& store, std::int64_t session, std::uint64_t first,
-                                           std::uint64_t end);
+                                           std::uint64_t end, std::size_t most = SIZE_MAX);
 
-// The section for `session` over [first, end). `perNewton_f`: a capacitive
+// The section for `session` over [first, end), of its first `most`
+// channels. `perNewton_f`: a capacitive
 // beam's sensitivity (F/N) as its readings used it, `calibrationLimit_n`
 // the calibration's 3σ/S; none for other sessions.
 SignalQuality gatherSignalQuality(storage::SessionSource& store, const storage::SessionSummary& session,
                                   std::uint64_t first, std::uint64_t end, std::optional<double> perNewton_f,
-                                  std::optional<double> calibrationLimit_n);
+                                  std::optional<double> calibrationLimit_n, std::size_t most = SIZE_MAX);
 
 }  // namespace tactiscope::core::report

@@ -38,7 +38,7 @@ std::string filteredName(const std::string& channel)
 }
 
 SignalChain::SignalChain(const SignalSetup& setup, const std::vector<ChannelDescriptor>& channels, double sampleRate_hz,
-                         std::size_t outputCapacity, double replay_s)
+                         std::size_t outputCapacity, double replay_s, std::size_t displayCapacity)
     : m_setup(setup),
       m_channelCount(channels.size())
 {
@@ -61,11 +61,20 @@ SignalChain::SignalChain(const SignalSetup& setup, const std::vector<ChannelDesc
             m_outputs.push_back({definition.name, definition.unit == "1" ? "" : definition.unit, ChannelKind::Other});
     }
     m_output = std::make_shared<LiveBuffer>(m_outputs.size(), std::max<std::size_t>(outputCapacity, 1));
+    if (displayCapacity > 0) {
+        m_display = std::make_shared<LiveBuffer>(m_channelCount, displayCapacity);
+        if (!setup.math.empty()) m_mathOutput = std::make_shared<LiveBuffer>(setup.math.size(), displayCapacity);
+    }
     const auto keptCapacity = static_cast<std::size_t>(std::ceil(std::max(replay_s, 0.0) * sampleRate_hz));
     if (keptCapacity > 0) m_kept.assign(m_filters.size(), RingBuffer<float>(keptCapacity));
 }
 
 SignalChain::~SignalChain() = default;
+
+std::vector<ChannelDescriptor> SignalChain::mathOutputs() const
+{
+    return {m_outputs.begin() + static_cast<std::ptrdiff_t>(m_filters.size()), m_outputs.end()};
+}
 
 double SignalChain::delay_s(std::size_t index) const
 {
@@ -159,6 +168,18 @@ void SignalChain::consume(const SampleBlock& block)
             std::ranges::copy(m_mathValues[d], out.channel(m_filters.size() + d).begin());
     }
     m_output->consume(out);
+    if (m_display) {
+        SampleBlock shown(m_channelCount, n, block.t0_s(), block.dt_s(), block.firstSampleIndex(), block.sequence());
+        for (std::size_t c = 0; c < m_channelCount; ++c) std::ranges::copy(m_values[c], shown.channel(c).begin());
+        m_display->consume(shown);
+    }
+    if (m_mathOutput) {
+        SampleBlock math(m_mathValues.size(), n, block.t0_s(), block.dt_s(), block.firstSampleIndex(),
+                         block.sequence());
+        for (std::size_t d = 0; d < m_mathValues.size(); ++d)
+            std::ranges::copy(m_mathValues[d], math.channel(d).begin());
+        m_mathOutput->consume(math);
+    }
 }
 
 void SignalChain::filteredCopy(const SampleBlock& block, SampleBlock& out) const

@@ -41,10 +41,12 @@ std::string filteredName(const std::string& channel);
 class SignalChain final : public BlockSink {
 public:
     // `outputCapacity`: samples kept per output for the readers;
-    // `replay_s`: how far back a restart can reach. Throws
-    // std::invalid_argument (signalSetupRefusal's words) or math::MathError.
+    // `replay_s`: how far back a restart can reach; `displayCapacity`:
+    // samples kept for the traces (display(), mathOutput()), none when 0.
+    // Throws std::invalid_argument (signalSetupRefusal's words) or
+    // math::MathError.
     SignalChain(const SignalSetup& setup, const std::vector<ChannelDescriptor>& channels, double sampleRate_hz,
-                std::size_t outputCapacity, double replay_s = 0.0);
+                std::size_t outputCapacity, double replay_s = 0.0, std::size_t displayCapacity = 0);
     ~SignalChain() override;
 
     const SignalSetup& setup() const { return m_setup; }
@@ -52,6 +54,14 @@ public:
     // then each math channel (its declared unit).
     const std::vector<ChannelDescriptor>& outputs() const { return m_outputs; }
     std::shared_ptr<const LiveBuffer> output() const { return m_output; }
+    // For the window's traces: every device channel as they show it,
+    // filtered where it is filtered (as stored elsewhere), so a filtered
+    // device is drawn once, not twice; and the math channels alone. Null
+    // without a display capacity (and the latter without math channels).
+    std::shared_ptr<const LiveBuffer> display() const { return m_display; }
+    std::shared_ptr<const LiveBuffer> mathOutput() const { return m_mathOutput; }
+    // The math channels' descriptors (the tail of outputs()).
+    std::vector<ChannelDescriptor> mathOutputs() const;
     // How far output `index` lags its channel (a filter's group delay; 0
     // for a math channel).
     double delay_s(std::size_t index) const;
@@ -79,6 +89,8 @@ private:
     std::unique_ptr<math::MathChannels> m_math;
     std::vector<ChannelDescriptor> m_outputs;
     std::shared_ptr<LiveBuffer> m_output;
+    std::shared_ptr<LiveBuffer> m_display;
+    std::shared_ptr<LiveBuffer> m_mathOutput;
     std::size_t m_channelCount = 0;
 
     // What the filters read since the oldest sample a restart may reach

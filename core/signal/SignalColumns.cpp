@@ -2,6 +2,8 @@
 #include "core/signal/SignalColumns.h"
 
 #include "core/SampleBlock.h"
+#include "core/derived/DerivedLane.h"
+#include "core/derived/ExactOverview.h"
 
 #include <algorithm>
 
@@ -69,6 +71,7 @@ void SignalColumns::run(std::uint64_t end, std::uint64_t keepFrom, std::vector<s
 
 std::vector<std::vector<double>> SignalColumns::read(std::uint64_t first, std::uint64_t count)
 {
+    if (!m_derived && !m_cached.empty() && first == m_cachedFirst && count == m_cachedCount) return m_cached;
     std::vector<std::vector<double>> columns =
         m_derived ? m_derived->read(first, count) : std::vector<std::vector<double>>{};
     const std::uint64_t end = std::min<std::uint64_t>(first + count, m_store.sampleCount(m_session));
@@ -80,7 +83,41 @@ std::vector<std::vector<double>> SignalColumns::read(std::uint64_t first, std::u
     std::vector<std::vector<double>> signal(m_chain->outputs().size());
     run(end, first, signal);
     for (auto& column : signal) columns.push_back(std::move(column));
+    if (!m_derived) {
+        m_cachedFirst = first;
+        m_cachedCount = count;
+        m_cached = columns;
+    }
     return columns;
+}
+
+std::vector<storage::OverviewPoint> SignalColumns::overview(std::size_t column, std::uint64_t first,
+                                                            std::uint64_t count, std::size_t points)
+{
+    const std::uint64_t total = m_store.sampleCount(m_session);
+    const std::uint64_t end = std::min(total, first + std::min(count, total));
+    if (end <= first || points == 0 || end - first > kExactLimit) return {};
+    std::vector<storage::OverviewPoint> result;
+    derived::appendExactOverview(read(first, end - first).at(column), first, points, result);
+    return result;
+}
+
+std::vector<std::unique_ptr<storage::LaneSource>> recordedSignalLanes(storage::SessionSource& store,
+                                                                      std::int64_t session, std::string& problem)
+{
+    problem.clear();
+    std::vector<std::unique_ptr<storage::LaneSource>> lanes;
+    const auto summary = store.session(session);
+    if (!summary || summary->metadata.signalSetup.empty()) return lanes;
+    try {
+        auto columns = std::make_shared<SignalColumns>(store, session,
+                                                       signalSetupFromJson(summary->metadata.signalSetup), nullptr);
+        for (std::size_t c = 0; c < columns->channels().size(); ++c)
+            lanes.push_back(std::make_unique<derived::DerivedLane<SignalColumns>>(columns, c));
+    } catch (const std::invalid_argument& e) {
+        problem = std::string("its filters and math channels are not shown: ") + e.what();
+    }
+    return lanes;
 }
 
 std::unique_ptr<storage::ComputedColumns> withRecordedSignal(storage::SessionSource& store, std::int64_t session,

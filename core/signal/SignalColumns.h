@@ -10,6 +10,7 @@
 #include "core/signal/SignalChain.h"
 #include "core/storage/SessionExport.h"
 #include "core/storage/SessionSource.h"
+#include "core/storage/TraceWindow.h"
 
 #include <memory>
 
@@ -17,6 +18,7 @@ namespace tactiscope::core::signal {
 
 class SignalColumns final : public storage::ComputedColumns {
 public:
+    static constexpr std::uint64_t kExactLimit = 200'000;  // samples per overview
     // `derived` (may be null) is written first; taken only when the setup
     // runs. Throws std::invalid_argument (math::MathError among them) for a
     // setup the session cannot run.
@@ -26,6 +28,10 @@ public:
     std::vector<ChannelDescriptor> channels() const override;
     std::string basis() const override;
     std::vector<std::vector<double>> read(std::uint64_t first, std::uint64_t count) override;
+    // About `points` min/max stretches of one of its columns (a review
+    // lane); empty for a range longer than kExactLimit.
+    std::vector<storage::OverviewPoint> overview(std::size_t column, std::uint64_t first, std::uint64_t count,
+                                                 std::size_t points);
 
 private:
     // Runs the chain over stored samples [m_next, end), keeping what falls
@@ -41,6 +47,9 @@ private:
     std::unique_ptr<storage::ComputedColumns> m_derived;
     std::uint64_t m_next = 0;  // the stored sample the chain reads next
     LiveCursor m_cursor;
+    // The last window read, which the lanes of one plot ask for in turn.
+    std::uint64_t m_cachedFirst = 0, m_cachedCount = 0;
+    std::vector<std::vector<double>> m_cached;
 };
 
 // The columns of a CSV export of `session`: `derived` (may be null), then
@@ -50,5 +59,11 @@ private:
 std::unique_ptr<storage::ComputedColumns> withRecordedSignal(storage::SessionSource& store, std::int64_t session,
                                                              std::unique_ptr<storage::ComputedColumns> derived,
                                                              std::string& problem);
+
+// The filtered and math channels `session` was recorded with, as review
+// lanes after its own; none without a setup, and `problem` says why a
+// setup this program cannot run is left out.
+std::vector<std::unique_ptr<storage::LaneSource>> recordedSignalLanes(storage::SessionSource& store,
+                                                                      std::int64_t session, std::string& problem);
 
 }  // namespace tactiscope::core::signal

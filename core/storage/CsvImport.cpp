@@ -262,6 +262,11 @@ CsvImportResult importCsv(SessionStore& store, const std::string& path, const Cs
                 toStored.back() = 1.0;  // Tactiscope's own export: in the units it stored
             }
         }
+        // A session's export and its math channels name a column by its
+        // channel: two of one name could not be told apart.
+        if (std::ranges::find(result.channels, channel.name, &ChannelDescriptor::name) != result.channels.end())
+            throw CsvError("'" + path + "' has two columns named '" + channel.name +
+                           "'; give each column a name of its own");
         result.channels.push_back(channel);
     }
     try {

@@ -22,7 +22,9 @@ std::shared_ptr<core::signal::SignalChain> LiveSession::makeChain(const core::si
 {
     const double rate_hz = source().nominalSampleRate_hz();
     const auto capacity = static_cast<std::size_t>(std::ceil(m_options.displaySeconds * rate_hz)) + 1;
-    return std::make_shared<core::signal::SignalChain>(setup, m_channels, rate_hz, capacity, kLongestReplay_s);
+    // The traces read its display as they read the device's buffer: as much of it.
+    return std::make_shared<core::signal::SignalChain>(setup, m_channels, rate_hz, capacity, kLongestReplay_s,
+                                                       m_buffer->capacity());
 }
 
 std::optional<std::string> LiveSession::setSignal(core::signal::SignalSetup setup)

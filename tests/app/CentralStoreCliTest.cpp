@@ -30,6 +30,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <functional>
 #include <map>
 #include <memory>
 
@@ -127,6 +128,22 @@ protected:
     std::string m_database;
 };
 
+// A panel scan of two seconds at 500 Hz into the station store at `path`,
+// with `metadata`'s subject and more; `more` adds to it before it ends.
+void writePanelScan(const QString& path, core::storage::SessionMetadata metadata,
+                    const std::function<void(core::storage::SessionStore&, std::int64_t)>& more = {})
+{
+    core::storage::SessionStore store(path.toStdString());
+    metadata.mode = core::Mode::PanelScan;
+    const std::vector<core::ChannelDescriptor> channels{
+        {"a", "", core::ChannelKind::Strain, core::ChannelRole::CantileverA},
+        {"b", "", core::ChannelKind::Strain, core::ChannelRole::CantileverB}};
+    const auto id = store.beginSession(metadata, channels, 500.0);
+    tactiscope::testing::writeSamples(store, id, 2, 1000, 500.0, 5);
+    if (more) more(store, id);
+    store.endSession(id, core::SessionStatus::Complete);
+}
+
 bool refused(PgConnection& as, const std::string& statement, const std::vector<std::optional<std::string>>& values)
 {
     try {
@@ -202,19 +219,10 @@ TEST_F(CentralStoreCli, ASessionNotJudgedSaysWhyOnTheServerAsOnTheStation)
 {
     const QString line = m_dir.filePath("line.tactiscope");
     const std::string why = "not judged: it went past a critical limit";
-    {
-        core::storage::SessionStore store(line.toStdString());
-        core::storage::SessionMetadata metadata;
-        metadata.mode = core::Mode::PanelScan;
-        metadata.subject = "door-40";
-        const std::vector<core::ChannelDescriptor> channels{
-            {"a", "", core::ChannelKind::Strain, core::ChannelRole::CantileverA},
-            {"b", "", core::ChannelKind::Strain, core::ChannelRole::CantileverB}};
-        const auto id = store.beginSession(metadata, channels, 500.0);
-        tactiscope::testing::writeSamples(store, id, 2, 1000, 500.0, 5);
-        store.markUnjudged(id, why);
-        store.endSession(id, core::SessionStatus::Complete);
-    }
+    core::storage::SessionMetadata metadata;
+    metadata.subject = "door-40";
+    writePanelScan(line, metadata,
+                   [&](core::storage::SessionStore& store, std::int64_t id) { store.markUnjudged(id, why); });
     const CliResult sent = sync(line, server("press_a"));
     ASSERT_EQ(sent.exitCode, 0) << sent.err.toStdString();
     for (const QString& db : {line, server("quality")}) {
@@ -247,19 +255,10 @@ TEST_F(CentralStoreCli, ASessionsFiltersAndMathChannelsAreTheSameOnTheServer)
     const QString line = m_dir.filePath("hummed.tactiscope");
     const std::string setup = R"({"filters":[{"channel":"a","notch_hz":50.0,"lowpass_hz":100.0,"order":4}],)"
                               R"("math":["diff[µε]=a - b"]})";
-    {
-        core::storage::SessionStore store(line.toStdString());
-        core::storage::SessionMetadata metadata;
-        metadata.mode = core::Mode::PanelScan;
-        metadata.subject = "door-57";
-        metadata.signalSetup = setup;
-        const std::vector<core::ChannelDescriptor> channels{
-            {"a", "", core::ChannelKind::Strain, core::ChannelRole::CantileverA},
-            {"b", "", core::ChannelKind::Strain, core::ChannelRole::CantileverB}};
-        const auto id = store.beginSession(metadata, channels, 500.0);
-        tactiscope::testing::writeSamples(store, id, 2, 1000, 500.0, 5);
-        store.endSession(id, core::SessionStatus::Complete);
-    }
+    core::storage::SessionMetadata metadata;
+    metadata.subject = "door-57";
+    metadata.signalSetup = setup;
+    writePanelScan(line, metadata);
     const CliResult sent = sync(line, server("press_a"));
     ASSERT_EQ(sent.exitCode, 0) << sent.err.toStdString();
     for (const QString& db : {line, server("quality")}) {

@@ -115,6 +115,24 @@ TEST(ImportCli, BareColumnsStayPlainNumbersUnlessAModeOrTheirUnitsSayOtherwise)
     EXPECT_EQ(store.readChannel(3, 1, 1, 1)[0], static_cast<double>(static_cast<float>(-2e-6)));
 }
 
+// Two columns of one name (a logger's "a [mV]" and "a [V]") cannot both be
+// a channel: an export, a math channel and a limit name a channel by its
+// name. The file is refused, naming it, and nothing is stored.
+TEST(ImportCli, TwoColumnsOfOneNameAreRefused)
+{
+    QTemporaryDir dir;
+    const QString csv = dir.filePath("twice.csv");
+    writeText(csv, "t,a [mV],a [V]\n0,1,0.001\n0.01,2,0.002\n");
+    const QString db = dir.filePath("s.tactiscope");
+    const auto refused = runCli({"import", csv, "--db", db});
+    EXPECT_EQ(refused.exitCode, 2);
+    EXPECT_TRUE(refused.err.contains("has two columns named 'a'")) << refused.err.toStdString();
+    if (QFile::exists(db)) {
+        core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+        EXPECT_TRUE(store.sessions().empty());
+    }
+}
+
 // What a board's log holds for no number is a hole in that column alone,
 // as from the board live (before, "inf" refused the file).
 TEST(ImportCli, ACellThatIsNoNumberIsAHoleInItsColumnAlone)

@@ -4,6 +4,7 @@
 // tried as the roles themselves: a station adds and reads its own sessions
 // only and can neither change nor delete another's; a reviewer sees only
 // finished sessions and adds verdicts, never deletes.
+#include "core/storage/central/CentralSchema.h"
 #include "core/storage/central/PgConnection.h"
 #include "support/CliRunner.h"
 #include "support/PostgresServer.h"
@@ -66,7 +67,8 @@ TEST_F(ServerCli, InitMakesTheSchemaAndRolesAndASecondRunChangesNothing)
     EXPECT_EQ(db.query("SELECT count(*) FROM pg_roles WHERE rolname IN ('tactiscope_station', 'tactiscope_reviewer')")
                   .text(0, 0),
               "2");
-    EXPECT_EQ(db.query("SELECT version FROM schema_version").text(0, 0), "11");
+    EXPECT_EQ(db.query("SELECT version FROM schema_version").text(0, 0),
+              std::to_string(tactiscope::core::storage::central::kCentralSchemaVersion));
     for (const char* table : {"sessions", "channels", "chunks", "gaps", "lod", "events", "readings", "annotations",
                               "verdicts", "zeros", "calibrations", "session_calibrations"})
         EXPECT_EQ(db.query("SELECT count(*) FROM pg_tables WHERE tablename = $1", {std::string(table)}).text(0, 0), "1")

@@ -5,6 +5,8 @@
 #include "ui/live/LiveStation.h"
 #include "ui/plot/LivePlotWidget.h"
 
+#include <algorithm>
+
 namespace tactiscope::ui {
 
 LiveTraces::LiveTraces(LiveStation& station, LivePlotWidget* traces, std::vector<LivePlotWidget*> lanes,
@@ -14,6 +16,9 @@ LiveTraces::LiveTraces(LiveStation& station, LivePlotWidget* traces, std::vector
       m_traces(traces),
       m_lanes(std::move(lanes))
 {
+    // Every plot's window begins at the stream's start until it is full:
+    // traces bound again (other filters) line up with the lanes.
+    m_traces->setGrowsFrom(0.0);
     for (LivePlotWidget* lane : m_lanes) {
         lane->setPausedBannerShown(false);
         lane->setCompactTimeTitle(true);  // the traces above name the clock
@@ -39,8 +44,20 @@ void LiveTraces::showChannels()
 {
     const auto* live = m_station.device();
     if (!live) return;
-    m_traces->setSource(live->buffer(), live->channels(), live->source().nominalSampleRate_hz());
+    const auto chain = live->signalChain();
+    m_showingFiltered = m_filteredTraces && chain && chain->display() && !chain->setup().filters.empty();
+    auto channels = live->channels();
+    if (m_showingFiltered)  // the chain's channels: the device's when the filters were set
+        channels.resize(std::min(channels.size(), chain->display()->channelCount()));
+    m_traces->setSource(m_showingFiltered ? chain->display() : live->buffer(), channels,
+                        live->source().nominalSampleRate_hz());
     updateTimeBase();
+}
+
+void LiveTraces::setFilteredTraces(bool filtered)
+{
+    m_filteredTraces = filtered;
+    showChannels();
 }
 
 void LiveTraces::addMarker(double time_s, const QString& note)
@@ -55,7 +72,7 @@ void LiveTraces::updateTimeBase()
 {
     const auto* live = m_station.device();
     if (!live) return;
-    m_traces->showMoreChannels(live->channels());  // a board's new layout
+    if (!m_showingFiltered) m_traces->showMoreChannels(live->channels());  // a board's new layout
     const auto origin = live->recordingOrigin_s();
     const QString label = origin ? tr("Recording time (s)") : tr("Time since connect (s)");
     for (LivePlotWidget* plot : plots()) plot->setTimeOrigin(origin.value_or(0.0), label);

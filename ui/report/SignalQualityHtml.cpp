@@ -53,6 +53,11 @@ QString signalQualitySection(const core::report::SignalQuality& quality)
     html += table({QObject::tr("Channel"), QObject::tr("Mains hum"), QObject::tr("Noise floor"),
                    QObject::tr("Drift per hour (± u)"), QObject::tr("Clipped samples")},
                   rows);
+    if (quality.channelsLeftOut > 0)
+        html += QStringLiteral("<p>%1</p>")
+                    .arg(QObject::tr("… and %n more channel(s): `tactiscope-cli health --db … --session …` reads "
+                                     "every one.",
+                                     nullptr, static_cast<int>(quality.channelsLeftOut)));
     html += QStringLiteral("<p><small>%1</small></p>")
                 .arg(QObject::tr("Over the range reported. Hum: the mains line's amplitude (flat-top); noise floor: "
                                  "the median amplitude spectral density above 1 Hz; drift: a line through 100 "

@@ -50,8 +50,9 @@ void LiveSpectrum::bind()
     const auto* live = m_station.device();
     if (!live) return;
     auto channels = live->channels();
-    if (const auto chain = live->signalChain())
-        channels.insert(channels.end(), chain->outputs().begin(), chain->outputs().end());
+    const auto chain = live->signalChain();
+    m_chainSeen = chain;
+    if (chain) channels.insert(channels.end(), chain->outputs().begin(), chain->outputs().end());
     m_view->setChannels(channels);
     m_buffer.reset();
     update();
@@ -65,6 +66,7 @@ void LiveSpectrum::update()
     if (chosen < 0) return;
     const auto device = static_cast<std::size_t>(chosen);
     const auto chain = live->signalChain();
+    if (chain != m_chainSeen.lock()) return bind();  // other filters or math channels: another list
     const std::size_t own = live->channels().size();
     if (!m_buffer) {
         if (device < own) {
@@ -74,7 +76,7 @@ void LiveSpectrum::update()
             m_buffer = chain->output();
             m_column = device - own;
         } else {
-            return bind();  // the chain changed under the list
+            return;
         }
         m_rate_hz = live->source().nominalSampleRate_hz();
         m_cursor = {};

@@ -7,6 +7,7 @@
 
 #include "core/LiveBuffer.h"
 #include "core/RingBuffer.h"
+#include "core/signal/SignalChain.h"
 
 #include <QObject>
 
@@ -37,8 +38,9 @@ private:
     LiveStation& m_station;
     QDockWidget* m_dock;
     SpectrumView* m_view;
-    std::shared_ptr<const core::LiveBuffer> m_buffer;  // the device's, or its chain's
-    std::size_t m_column = 0;                          // the chosen channel in it
+    std::shared_ptr<const core::LiveBuffer> m_buffer;            // the device's, or its chain's
+    std::weak_ptr<const core::signal::SignalChain> m_chainSeen;  // whose outputs the list offers
+    std::size_t m_column = 0;                                    // the chosen channel in it
     double m_rate_hz = 0.0;
     core::LiveCursor m_cursor;
     core::LiveChunk m_chunk;

@@ -15,6 +15,8 @@
 #include <QSplitter>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace tactiscope::ui {
 namespace {
 
@@ -55,8 +57,15 @@ SignalControl::SignalControl(LiveStation& station, QWidget* window)
       m_window(window),
       m_panel(new QWidget(window)),
       m_line(new QLabel(m_panel)),
-      m_plot(new LivePlotWidget(m_panel))
+      m_plot(new LivePlotWidget(m_panel)),
+      m_filteredTraces(new QAction(tr("Traces as &filtered"), this))
 {
+    m_filteredTraces->setObjectName(QStringLiteral("filteredTracesAction"));
+    m_filteredTraces->setCheckable(true);
+    m_filteredTraces->setChecked(true);
+    m_filteredTraces->setToolTip(tr("A filtered channel's trace as filtered; unticked, as it came, with the "
+                                    "filtered one plotted under the traces."));
+    connect(m_filteredTraces, &QAction::toggled, this, &SignalControl::bind);
     m_panel->setObjectName(QStringLiteral("signalPanel"));
     m_line->setObjectName(QStringLiteral("signalLine"));
     m_line->setWordWrap(true);
@@ -113,6 +122,8 @@ SignalDialog* SignalControl::showDialog()
 
 void SignalControl::bind()
 {
+    const bool filtered = m_filteredTraces->isChecked();
+    emit tracesChanged(filtered);
     const auto* live = m_station.device();
     const auto chain = live ? live->signalChain() : nullptr;
     if (!chain) {
@@ -120,7 +131,18 @@ void SignalControl::bind()
         m_panel->hide();
         return;
     }
-    m_plot->setSource(chain->output(), chain->outputs(), live->source().nominalSampleRate_hz());
+    // The traces show the filtered channels: the plot, the math ones alone.
+    const bool tracesFiltered = filtered && chain->display() && !chain->setup().filters.empty();
+    const double rate_hz = live->source().nominalSampleRate_hz();
+    if (!tracesFiltered)
+        m_plot->setSource(chain->output(), chain->outputs(), rate_hz);
+    else if (chain->mathOutput())
+        m_plot->setSource(chain->mathOutput(), chain->mathOutputs(), rate_hz);
+    else
+        m_plot->clearSource();
+    const bool plotWasShown = m_panel->isVisible() && m_plot->isVisibleTo(m_panel);
+    const bool plotShown = !tracesFiltered || chain->mathOutput();
+    m_plot->setVisible(plotShown);
     QStringList parts;
     for (std::size_t o = 0; o < chain->outputs().size(); ++o) {
         const QString name = QString::fromStdString(chain->outputs()[o].name);
@@ -132,11 +154,14 @@ void SignalControl::bind()
             parts << QString::fromStdString(chain->setup().math[o - chain->setup().filters.size()].text());
     }
     if (chain->setup().analysisFiltered) parts << tr("the mode analyses the filtered channels");
+    if (tracesFiltered) parts.prepend(tr("The traces show the filtered channels"));
     m_line->setText(parts.join(QStringLiteral(" · ")));
-    if (m_panel->isHidden()) {
-        m_panel->show();
-        // A third of the room each, traces, filtered channels and the mode's
-        // view: the filtered channels are read beside the traces.
+    m_panel->show();
+    // The line alone takes its own height; with the plot, a third of the
+    // room each for traces, plot and the mode's view, read side by side.
+    m_panel->setMaximumHeight(
+        plotShown ? QWIDGETSIZE_MAX : std::max(m_line->sizeHint().height(), m_line->heightForWidth(m_panel->width())));
+    if (plotShown && !plotWasShown)
         if (auto* splitter = qobject_cast<QSplitter*>(m_panel->parentWidget())) {
             QList<int> sizes = splitter->sizes();
             int total = 0;
@@ -144,7 +169,6 @@ void SignalControl::bind()
             for (int& size : sizes) size = total / static_cast<int>(sizes.size());
             splitter->setSizes(sizes);
         }
-    }
 }
 
 }  // namespace tactiscope::ui

@@ -1,10 +1,13 @@
 // The main window's signal part (issue 57): Session ▸ Filters and math
 // channels…, which sets the window's device's signal setup through the
-// live station, and the plot of what that setup gives, live: each filtered
-// channel and each math channel, under a line that says what they are and
-// how far each filtered trace lags its channel. The plot is one of the
-// traces' lanes (one clock, one scroll), hidden while the device has no
-// setup. The chain that computes them is the live pipeline's
+// live station; View ▸ Traces as filtered, whether the traces show a
+// filtered channel as filtered (the default: a filtered device is drawn
+// once) or as it came; and under the traces a line that says what the
+// filters are and how far each filtered trace lags its channel, over a
+// plot of the math channels (and of the filtered ones, while the traces
+// show the channels as they came). The plot is one of the traces' lanes
+// (one clock, one scroll); line and plot are hidden while the device has
+// no setup. The chain that computes them is the live pipeline's
 // (core/signal/SignalChain through devices/session/LiveSession); this only
 // asks and shows.
 #pragma once
@@ -12,6 +15,7 @@
 #include <QObject>
 #include <QPointer>
 
+class QAction;
 class QLabel;
 class QMenu;
 class QWidget;
@@ -32,7 +36,14 @@ public:
     QWidget* panel() const { return m_panel; }
     LivePlotWidget* plot() const { return m_plot; }
     void addActions(QMenu* session);
+    // View ▸ Traces as filtered.
+    QAction* filteredTracesAction() const { return m_filteredTraces; }
     SignalDialog* showDialog();
+
+signals:
+    // The device's filters changed, or the traces are asked for filtered or
+    // as they came: the traces bind again (LiveTraces::setFilteredTraces).
+    void tracesChanged(bool filtered);
 
 private:
     // The window's device's chain onto the plot, and the line above it.
@@ -44,6 +55,7 @@ private:
     QLabel* m_line;
     LivePlotWidget* m_plot;
     QPointer<SignalDialog> m_dialog;
+    QAction* m_filteredTraces;
 };
 
 }  // namespace tactiscope::ui

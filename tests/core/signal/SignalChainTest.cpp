@@ -172,3 +172,25 @@ TEST(SignalSetup, ItsJsonGivesItBack)
                  std::invalid_argument);
     EXPECT_TRUE(core::signal::signalSetupText("{").starts_with("unreadable: "));
 }
+
+TEST(SignalChain, ItsDisplayIsEveryChannelAsTheTracesShowItAndItsMathAlone)
+{
+    const auto values = samples(500, 3);
+    core::signal::SignalChain chain(notchedSetup(), gauges(), kRate_hz, 1000, 0.0, 1000);
+    feed(chain, values, 0, 500, 50);
+    core::LiveCursor cursor, mathCursor;
+    core::LiveChunk shown, math;
+    chain.display()->readNew(cursor, shown);
+    chain.mathOutput()->readNew(mathCursor, math);
+    const auto outputs = allOutputs(chain);
+    ASSERT_EQ(shown.values.size(), 2u);
+    ASSERT_EQ(math.values.size(), 1u);
+    ASSERT_EQ(chain.mathOutputs().size(), 1u);
+    EXPECT_EQ(chain.mathOutputs()[0].name, "diff");
+    for (std::size_t i = 0; i < 500; ++i) {
+        EXPECT_EQ(shown.values[0][i], outputs[0][i]);                                          // a, filtered
+        EXPECT_EQ(shown.values[1][i], static_cast<double>(static_cast<float>(values[1][i])));  // b, as stored
+        EXPECT_EQ(math.values[0][i], outputs[1][i]);
+    }
+    EXPECT_FALSE(core::signal::SignalChain(notchedSetup(), gauges(), kRate_hz, 100).display());
+}

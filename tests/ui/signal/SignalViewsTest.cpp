@@ -17,6 +17,7 @@
 #include "ui/MainWindow.h"
 #include "ui/live/LiveStation.h"
 #include "ui/plot/LivePlotWidget.h"
+#include "ui/review/ReviewPlot.h"
 #include "ui/review/ReviewWindow.h"
 #include "ui/signal/ReviewSpectrum.h"
 #include "ui/signal/SignalDialog.h"
@@ -34,6 +35,8 @@
 #include <QTest>
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 using namespace tactiscope;
 using tactiscope::testing::child;
@@ -104,14 +107,24 @@ TEST(SignalViews, FiltersAndAMathChannelAreSetFoundShownRecordedAndReviewed)
     EXPECT_TRUE(setup.analysisFiltered);
     dialog->close();
 
-    // The window plots them, saying what they are and how late.
+    // The traces show the filtered channels, a line says what they are and
+    // how late, and the plot under it the math channel; unticked, the
+    // traces are as they came and the plot holds the filtered ones too.
     auto* line = child<QLabel>(window, "signalLine");
     EXPECT_TRUE(window.findChild<QWidget*>(QStringLiteral("signalPanel"))->isVisible());
-    EXPECT_TRUE(line->text().contains(QStringLiteral("a.filtered: mains notch 50 Hz and harmonics, delay ")))
+    EXPECT_TRUE(line->text().startsWith(QStringLiteral("The traces show the filtered channels · a.filtered: mains "
+                                                       "notch 50 Hz and harmonics, delay ")))
         << line->text().toStdString();
     EXPECT_TRUE(line->text().contains(QStringLiteral("diff[µε]=a - b")));
     auto* plot = child<ui::LivePlotWidget>(window, "signalPlot");
     ASSERT_TRUE(waitFor([&] { return plot->samplesReceived() > 500; }, 5000));
+    EXPECT_EQ(plot->laneCount(), 1u);  // diff, in its µε
+    action(window, "filteredTracesAction")->trigger();
+    EXPECT_FALSE(line->text().startsWith(QStringLiteral("The traces show"))) << line->text().toStdString();
+    ASSERT_TRUE(waitFor([&] { return plot->laneCount() == 2u; }, 5000));  // a.filtered, b.filtered; diff
+    action(window, "filteredTracesAction")->trigger();
+    auto* traces = child<ui::LivePlotWidget>(window, "tracesPlot");
+    ASSERT_TRUE(waitFor([&] { return traces->samplesReceived() > 100 && plot->samplesReceived() > 100; }, 5000));
 
     // The live spectrum of a (as it came) shows the hum's line at 50 Hz,
     // at its amplitude: 20 + 5 µε on a.
@@ -127,6 +140,7 @@ TEST(SignalViews, FiltersAndAMathChannelAreSetFoundShownRecordedAndReviewed)
     EXPECT_NEAR(strongest.frequency_hz, 50.0, 1.0);
     EXPECT_NEAR(strongest.amplitude, 25e-6, 2.5e-6);
     EXPECT_TRUE(spectrum->peaksText().contains(QStringLiteral("µε"))) << spectrum->peaksText().toStdString();
+    QTest::qWait(1500);  // a second and a half of traces to look at
     tactiscope::testing::saveScreenshot(window, QStringLiteral("signal-live"));
 
     // Recorded, the session keeps the setup; its review's spectrum of the
@@ -145,6 +159,11 @@ TEST(SignalViews, FiltersAndAMathChannelAreSetFoundShownRecordedAndReviewed)
     std::unique_ptr<ui::ReviewWindow> review(ui::ReviewWindow::open(db, 1, nullptr, error));
     ASSERT_TRUE(review) << error.toStdString();
     review->show();
+    // Its plot shows them as lanes after the mode's, computed again from the store.
+    const auto lanes = review->findChild<ui::ReviewPlot*>()->laneNames();
+    for (const char* name : {"a.filtered", "b.filtered", "diff"})
+        EXPECT_NE(std::ranges::find(lanes, std::string(name)), lanes.end()) << name;
+    tactiscope::testing::saveScreenshot(*review, QStringLiteral("review-signal-lanes"));
     action(*review, "reviewSpectrumAction")->trigger();
     auto* reviewed = review->findChild<ui::ReviewSpectrum*>(QStringLiteral("reviewSpectrum"));
     ASSERT_NE(reviewed, nullptr);
