@@ -46,7 +46,8 @@ std::optional<QString> pickChannels(const std::vector<core::storage::StoredChann
 QString cantileverFilters(const core::storage::SessionSummary& session,
                           const std::vector<core::storage::StoredChannel>& channels,
                           const std::vector<std::size_t>& picked, std::optional<double> notch_hz, bool unfiltered,
-                          std::vector<core::dsp::FilterSettings>& filters)
+                          std::vector<core::dsp::FilterSettings>& filters,
+                          std::vector<std::optional<std::vector<double>>>& startStates)
 {
     if (notch_hz) {
         core::dsp::FilterSettings notch;
@@ -62,21 +63,15 @@ QString cantileverFilters(const core::storage::SessionSummary& session,
                        .arg(toQString(e.what())));
         return {};
     }
-    if (!setup.analysisFiltered) return {};
+    std::vector<std::string> names;
+    for (const std::size_t c : picked) names.push_back(channels[c].descriptor.name);
+    const auto analysis = core::signal::analysisFilters(setup, names);
+    if (!analysis) return {};
     if (unfiltered) return QStringLiteral("(the cantilevers as stored: --unfiltered)");
-    QStringList words;
-    for (const std::size_t c : picked) {
-        const auto& name = channels[c].descriptor.name;
-        const auto* filter = setup.filterOf(name);
-        filters.push_back(filter ? *filter : core::dsp::FilterSettings{});
-        if (filter) words << toQString(name + ": " + filter->text());
-    }
-    if (words.isEmpty()) {
-        filters.clear();
-        return {};
-    }
+    filters = analysis->filters;
+    startStates = analysis->startStates;
     return QStringLiteral("(the cantilevers through the session's filters, as its mode read them live: %1)")
-        .arg(words.join(QStringLiteral("; ")));
+        .arg(toQString(analysis->text));
 }
 
 }  // namespace
@@ -174,8 +169,9 @@ int runAnalyze(const QStringList& arguments)
         const auto probe = core::detector::probeDecisionChannels(descriptors);
         core::detector::StretchSettings settings{options.parameters, options.hold_s, options.spacing_m,
                                                  options.threads};
-        const auto filtered = cantileverFilters(summary, channels, picked, notch_hz,
-                                                parser.isSet(QStringLiteral("unfiltered")), settings.filters);
+        const auto filtered =
+            cantileverFilters(summary, channels, picked, notch_hz, parser.isSet(QStringLiteral("unfiltered")),
+                              settings.filters, settings.filterStartStates);
         // Read and detection together: the store streams into the detector.
         const auto started = std::chrono::steady_clock::now();
         const auto [events, analysed, agreement] = *core::derived::detectStoredSession(

@@ -112,8 +112,10 @@ StreamingDetection::StreamingDetection(std::size_t cantilevers, const StretchSet
         const double rate_hz = 1.0 / settings.parameters.sampleInterval_s;
         if (settings.filters.size() != 1 && settings.filters.size() != cantilevers)
             throw std::invalid_argument("the detector takes one filter, or one per cantilever");
-        for (std::size_t c = 0; c < cantilevers; ++c)
+        for (std::size_t c = 0; c < cantilevers; ++c) {
             m_filters.emplace_back(settings.filters[settings.filters.size() == 1 ? 0 : c], rate_hz);
+            if (c < settings.filterStartStates.size()) m_filters.back().startFrom(settings.filterStartStates[c]);
+        }
         m_filtered.resize(cantilevers);
     }
     // A split in time pays while the warm-up is a small part of a half run.

@@ -56,6 +56,9 @@ struct StretchSettings {
     // one each (an empty one leaves its cantilever as it is); none: the
     // samples as they are.
     std::vector<dsp::FilterSettings> filters = {};
+    // Where each cantilever's filter stood at the first sample pushed (a
+    // recording's, core/signal/SignalSetup.h); none: afresh.
+    std::vector<std::optional<std::vector<double>>> filterStartStates = {};
 };
 
 struct StretchDetection {

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 namespace tactiscope::core::dsp {
 namespace {
@@ -46,6 +48,24 @@ void BiquadCascade::settle(double x)
         m_state[i].s1 = q.b1 * x - q.a1 * y + m_state[i].s2;
         x = y;
     }
+    m_started = true;
+}
+
+std::optional<std::vector<double>> BiquadCascade::state() const
+{
+    if (!m_started) return std::nullopt;
+    std::vector<double> values;
+    for (const State& s : m_state) values.insert(values.end(), {s.s1, s.s2});
+    return values;
+}
+
+void BiquadCascade::setState(const std::optional<std::vector<double>>& state)
+{
+    if (!state) return reset();
+    if (state->size() != 2 * m_sections.size())
+        throw std::invalid_argument("a filter's state holds " + std::to_string(state->size()) + " numbers, not " +
+                                    std::to_string(2 * m_sections.size()));
+    for (std::size_t i = 0; i < m_state.size(); ++i) m_state[i] = {(*state)[2 * i], (*state)[2 * i + 1]};
     m_started = true;
 }
 

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <complex>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -40,6 +41,13 @@ public:
     double process(double x);
     // Forgets the past: the next input starts the filter afresh (after a gap).
     void reset() { m_started = false; }
+    // Where it stands: each section's two states, none before its first
+    // input. A recording keeps its filters' at its first sample, so
+    // re-analysis goes on from where the live filter stood.
+    std::optional<std::vector<double>> state() const;
+    // Goes on from a state() of the same sections, or afresh when none.
+    // Throws std::invalid_argument for a state of another size.
+    void setState(const std::optional<std::vector<double>>& state);
 
     std::complex<double> response(double cycles) const;
     // The group delay in samples at `cycles` per sample: −dφ/dω of the

@@ -58,6 +58,12 @@ void ChannelFilter::process(std::span<double> values)
     for (double& v : values) v = process(v);
 }
 
+void ChannelFilter::startFrom(const std::optional<std::vector<double>>& sectionsState)
+{
+    m_cascade.setState(sectionsState);
+    m_average.reset();
+}
+
 void ChannelFilter::reset()
 {
     m_cascade.reset();

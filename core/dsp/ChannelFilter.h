@@ -27,6 +27,10 @@ public:
     double process(double x);
     void process(std::span<double> values);
     void reset();
+    // Its sections' state (BiquadCascade::state()), and going on from one
+    // with its moving average started afresh: where a recording begins.
+    std::optional<std::vector<double>> sectionsState() const { return m_cascade.state(); }
+    void startFrom(const std::optional<std::vector<double>>& sectionsState);
 
     // The whole chain's response at `frequency_hz` (causal).
     std::complex<double> response(double frequency_hz) const;

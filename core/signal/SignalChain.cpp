@@ -65,6 +65,12 @@ SignalChain::SignalChain(const SignalSetup& setup, const std::vector<ChannelDesc
         m_display = std::make_shared<LiveBuffer>(m_channelCount, displayCapacity);
         if (!setup.math.empty()) m_mathOutput = std::make_shared<LiveBuffer>(setup.math.size(), displayCapacity);
     }
+    // A stored state of the wrong size is refused here, not on the acquisition thread.
+    m_startState = setup.startState;
+    for (std::size_t f = 0; f < m_startState.size(); ++f) {
+        m_filters[f].startFrom(m_startState[f]);
+        m_filters[f].reset();
+    }
     const auto keptCapacity = static_cast<std::size_t>(std::ceil(std::max(replay_s, 0.0) * sampleRate_hz));
     if (keptCapacity > 0) m_kept.assign(m_filters.size(), RingBuffer<float>(keptCapacity));
 }
@@ -81,10 +87,17 @@ double SignalChain::delay_s(std::size_t index) const
     return index < m_filters.size() ? m_filters[index].delay_s() : 0.0;
 }
 
-void SignalChain::restartAt(std::uint64_t first)
+void SignalChain::recordingBegins(std::uint64_t first, std::function<void(StartState)> found)
 {
-    const std::lock_guard lock(m_restartMutex);
-    m_restart = first;
+    const std::lock_guard lock(m_beginMutex);
+    m_begin = Begin{first, std::move(found)};
+}
+
+SignalChain::StartState SignalChain::states() const
+{
+    StartState states;
+    for (const auto& filter : m_filters) states.push_back(filter.sectionsState());
+    return states;
 }
 
 // Samples the device lost: missing for the filters, which start again after them.
@@ -101,37 +114,64 @@ void SignalChain::lose(std::uint64_t samples)
         for (std::uint64_t i = 0; i < held; ++i) kept.push(std::numeric_limits<float>::quiet_NaN());
 }
 
-// A restart at a sample already passed re-runs the filters from it over
-// what was kept; one within this block is placed at `restartOffset`.
-void SignalChain::applyRestart(const SampleBlock& block, std::size_t& restartOffset)
+// A beginning in this block is placed at `offset`; one before it is found
+// again from what was kept (beginPassed()) and taken no further.
+std::optional<SignalChain::Begin> SignalChain::takeBegin(const SampleBlock& block, std::size_t& offset)
 {
-    std::optional<std::uint64_t> restart;
+    std::optional<Begin> begin;
     {
-        const std::lock_guard lock(m_restartMutex);
-        if (!m_restart || *m_restart >= block.endSampleIndex()) return;
-        restart = std::exchange(m_restart, std::nullopt);
+        const std::lock_guard lock(m_beginMutex);
+        if (!m_begin || m_begin->first >= block.endSampleIndex()) return std::nullopt;
+        begin = std::exchange(m_begin, std::nullopt);
     }
-    if (*restart >= block.firstSampleIndex()) {
-        restartOffset = static_cast<std::size_t>(*restart - block.firstSampleIndex());
-        return;
+    if (begin->first >= block.firstSampleIndex()) {
+        offset = static_cast<std::size_t>(begin->first - block.firstSampleIndex());
+        return begin;
     }
+    beginPassed(*begin);
+    return std::nullopt;
+}
+
+// A beginning the chain has passed: each filter's state there is found by
+// running it from the last snapshot before over what was kept; the filter
+// then goes on from that state with its moving average afresh, over what
+// came since, as it would have had it heard in time.
+void SignalChain::beginPassed(const Begin& begin)
+{
+    StartState found;
     for (std::size_t f = 0; f < m_filters.size(); ++f) {
-        m_filters[f].reset();
-        if (m_kept.empty()) continue;
+        if (m_kept.empty() || m_snapshots.empty()) {  // nothing kept: where it stands now
+            found.push_back(m_filters[f].sectionsState());
+            m_filters[f].startFrom(found.back());
+            continue;
+        }
         const auto& kept = m_kept[f];
-        const std::uint64_t from = std::max(*restart > m_keptBase ? *restart - m_keptBase : 0, kept.oldestIndex());
-        for (std::uint64_t r = from; r < kept.endIndex(); ++r) m_filters[f].process(static_cast<double>(kept.at(r)));
+        auto snapshot = std::ranges::find_if(m_snapshots.rbegin(), m_snapshots.rend(),
+                                             [&](const Snapshot& s) { return s.first <= begin.first; });
+        const Snapshot& from = snapshot == m_snapshots.rend() ? m_snapshots.front() : *snapshot;
+        const std::uint64_t at = std::max(begin.first, from.first);
+        dsp::ChannelFilter scratch = m_filters[f];
+        scratch.startFrom(from.states[f]);
+        for (std::uint64_t i = from.first; i < at; ++i) scratch.process(static_cast<double>(kept.at(i - m_keptBase)));
+        found.push_back(scratch.sectionsState());
+        m_filters[f].startFrom(found.back());
+        for (std::uint64_t r = at - m_keptBase; r < kept.endIndex(); ++r)
+            m_filters[f].process(static_cast<double>(kept.at(r)));
     }
+    begin.found(std::move(found));
 }
 
 void SignalChain::consume(const SampleBlock& block)
 {
     if (block.empty()) return;
     if (!m_next || block.firstSampleIndex() < *m_next) {
-        // The first block, or a device that restarted its count: nothing
+        // The first block (from where a recording's filters stood, in
+        // re-analysis), or a device that restarted its count: nothing
         // before it is this stream's.
-        for (auto& filter : m_filters) filter.reset();
+        for (std::size_t f = 0; f < m_filters.size(); ++f)
+            m_filters[f].startFrom(!m_next && f < m_startState.size() ? m_startState[f] : std::nullopt);
         for (auto& kept : m_kept) kept.clear();
+        m_snapshots.clear();
         m_keptBase = block.firstSampleIndex();
     } else if (const auto lost = block.samplesLostAfter(*m_next)) {
         lose(lost);
@@ -146,17 +186,27 @@ void SignalChain::consume(const SampleBlock& block)
         const auto in = c < block.channelCount() ? block.channel(c) : std::span<const double>();
         for (std::size_t i = 0; i < n; ++i) m_values[c][i] = i < in.size() ? asStored(in[i]) : kMissing;
     }
-    std::size_t restartOffset = n;
-    applyRestart(block, restartOffset);
+    if (!m_kept.empty()) {  // where the filters stand at this block, while it is kept
+        m_snapshots.push_back({block.firstSampleIndex(), states()});
+        const std::uint64_t oldest = m_keptBase + m_kept.front().oldestIndex();
+        while (m_snapshots.front().first < oldest) m_snapshots.pop_front();  // its samples are gone
+    }
+    std::size_t beginAt = n;
+    const auto begin = takeBegin(block, beginAt);
+    StartState found(m_filters.size());
     for (std::size_t f = 0; f < m_filters.size(); ++f) {
         auto& values = m_values[m_filtered[f]];
         if (!m_kept.empty())
             for (const double v : values) m_kept[f].push(static_cast<float>(v));
         for (std::size_t i = 0; i < n; ++i) {
-            if (i == restartOffset) m_filters[f].reset();
+            if (begin && i == beginAt) {
+                found[f] = m_filters[f].sectionsState();
+                m_filters[f].startFrom(found[f]);
+            }
             values[i] = m_filters[f].process(values[i]);
         }
     }
+    if (begin) begin->found(std::move(found));
 
     SampleBlock out(m_outputs.size(), n, block.t0_s(), block.dt_s(), block.firstSampleIndex(), block.sequence());
     for (std::size_t f = 0; f < m_filters.size(); ++f)

@@ -5,18 +5,22 @@
 // block has passed).
 //
 // Its inputs are the samples as the store keeps them (IEEE binary32,
-// core/storage/ChunkCodec.h), and a recording restarts the filters at its
-// first sample (restartAt(), re-running what the chain kept since that
-// sample): so the filtered series of a recording is, from the restart on,
-// exactly what re-analysis (chainSeries()) computes from the stored samples
-// with the setting the session recorded. A lost sample (a jump in the
-// block's sample index) is missing for the filters too, which restart
-// after it, as they do on a stored gap.
+// core/storage/ChunkCodec.h). The filters run on through a recording's
+// start: the chain keeps where each filter's sections stood at the
+// recording's first sample (recordingBegins(); when it hears of that
+// sample after passing it, it finds the state again from what it kept)
+// and starts the moving averages afresh there. The session stores those
+// states with its setup (SignalSetup::startState), and re-analysis
+// (chainSeries()) starts from them: the filtered series of a recording is
+// exactly what re-analysis computes from the stored samples, and nothing
+// rings at the record press. A lost sample (a jump in the block's sample
+// index) is missing for the filters too, which start afresh after it, as
+// they do on a stored gap.
 //
 // Math channels read each channel as the chain outputs it: filtered where
 // it is filtered, as stored elsewhere.
 //
-// Threading: consume() on the acquisition thread; restartAt() from any.
+// Threading: consume() on the acquisition thread; recordingBegins() from any.
 #pragma once
 
 #include "core/BlockSink.h"
@@ -28,6 +32,8 @@
 #include "core/signal/SignalSetup.h"
 
 #include <cstdint>
+#include <deque>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -66,10 +72,13 @@ public:
     // for a math channel).
     double delay_s(std::size_t index) const;
 
-    // The filters start again at device sample `first` (a recording's
-    // first): at once when the chain has passed it and kept it, when it
-    // comes otherwise. One kept too long ago restarts from the oldest kept.
-    void restartAt(std::uint64_t first);
+    // Where each filter's sections stood at a recording's first sample.
+    using StartState = std::vector<std::optional<std::vector<double>>>;
+    // A recording's first sample is device sample `first`: `found` is told
+    // where the filters stood there (on the acquisition thread) when the
+    // chain reaches it, or at once when it has passed it and kept it. One
+    // kept too long ago is found at the oldest sample kept.
+    void recordingBegins(std::uint64_t first, std::function<void(StartState)> found);
 
     void consume(const SampleBlock& block) override;
 
@@ -80,7 +89,15 @@ public:
     void filteredCopy(const SampleBlock& block, SampleBlock& out) const;
 
 private:
-    void applyRestart(const SampleBlock& block, std::size_t& restartOffset);
+    struct Begin {
+        std::uint64_t first = 0;
+        std::function<void(StartState)> found;
+    };
+    // A beginning within `block` at `offset` (or none: `block`'s size), or
+    // one before it, found again from what was kept.
+    std::optional<Begin> takeBegin(const SampleBlock& block, std::size_t& offset);
+    void beginPassed(const Begin& begin);
+    StartState states() const;
     void lose(std::uint64_t samples);
 
     SignalSetup m_setup;
@@ -101,8 +118,16 @@ private:
     std::uint64_t m_keptBase = 0;
     std::optional<std::uint64_t> m_next;  // the device index expected next
 
-    std::mutex m_restartMutex;
-    std::optional<std::uint64_t> m_restart;
+    // Each filter's state at a kept block's first sample, oldest first.
+    struct Snapshot {
+        std::uint64_t first = 0;
+        StartState states;
+    };
+    std::deque<Snapshot> m_snapshots;
+    StartState m_startState;  // the setup's, for the first block (re-analysis)
+
+    std::mutex m_beginMutex;
+    std::optional<Begin> m_begin;
 
     // Per block, reused; kept until the next (filteredCopy()).
     std::vector<std::vector<double>> m_values;  // rounded inputs, filtered where filtered

@@ -75,7 +75,12 @@ std::string signalSetupJson(const SignalSetup& setup)
 {
     if (setup.empty()) return {};
     nlohmann::json filters = nlohmann::json::array();
-    for (const auto& filter : setup.filters) filters.push_back(filterJson(filter));
+    for (std::size_t f = 0; f < setup.filters.size(); ++f) {
+        filters.push_back(filterJson(setup.filters[f]));
+        if (f < setup.startState.size())
+            filters.back()["start_state"] =
+                setup.startState[f] ? nlohmann::json(*setup.startState[f]) : nlohmann::json();
+    }
     nlohmann::json math = nlohmann::json::array();
     for (const auto& definition : setup.math) math.push_back(definition.text());
     return nlohmann::json{{"filters", filters}, {"math", math}, {"analysis_filtered", setup.analysisFiltered}}.dump();
@@ -94,7 +99,22 @@ SignalSetup signalSetupFromJson(const std::string& json)
     SignalSetup setup;
     if (root.contains("filters")) {
         if (!root["filters"].is_array()) throw std::invalid_argument("the signal setup's filters are not a list");
-        for (const auto& item : root["filters"]) setup.filters.push_back(filterFromJson(item));
+        bool anyState = false;
+        for (const auto& item : root["filters"]) {
+            setup.filters.push_back(filterFromJson(item));
+            std::optional<std::vector<double>> state;
+            if (item.contains("start_state") && !item["start_state"].is_null()) {
+                const auto& numbers = item["start_state"];
+                if (!numbers.is_array() || !std::ranges::all_of(numbers, [](const nlohmann::json& n) {
+                        return n.is_number() && std::isfinite(n.get<double>());
+                    }))
+                    throw std::invalid_argument("a filter's start_state is not a list of numbers");
+                state = numbers.get<std::vector<double>>();
+                anyState = true;
+            }
+            setup.startState.push_back(std::move(state));
+        }
+        if (!anyState) setup.startState.clear();
     }
     if (root.contains("math")) {
         if (!root["math"].is_array()) throw std::invalid_argument("the signal setup's math is not a list");
@@ -121,9 +141,27 @@ std::string signalSetupText(const std::string& json)
     }
 }
 
+std::optional<AnalysisFilters> analysisFilters(const SignalSetup& setup, const std::vector<std::string>& channels)
+{
+    if (!setup.analysisFiltered) return std::nullopt;
+    AnalysisFilters analysis;
+    for (const std::string& channel : channels) {
+        const auto found = std::ranges::find(setup.filters, channel, &ChannelFilterSetting::channel);
+        const auto f = static_cast<std::size_t>(found - setup.filters.begin());
+        analysis.filters.push_back(found == setup.filters.end() ? dsp::FilterSettings{} : found->settings);
+        analysis.startStates.push_back(f < setup.startState.size() ? setup.startState[f] : std::nullopt);
+        if (found != setup.filters.end())
+            analysis.text += (analysis.text.empty() ? "" : "; ") + channel + ": " + found->settings.text();
+    }
+    if (analysis.text.empty()) return std::nullopt;
+    return analysis;
+}
+
 std::optional<std::string> signalSetupRefusal(const SignalSetup& setup, const std::vector<std::string>& channels,
                                               double sampleRate_hz)
 {
+    if (!setup.startState.empty() && setup.startState.size() != setup.filters.size())
+        return "the filters' start states are not one per filter";
     for (std::size_t i = 0; i < setup.filters.size(); ++i) {
         const auto& filter = setup.filters[i];
         if (std::ranges::find(channels, filter.channel) == channels.end())

@@ -27,6 +27,11 @@ struct SignalSetup {
     // The mode reads its channels through their filters (a detector on
     // notched cantilevers); otherwise it reads them as they came.
     bool analysisFiltered = false;
+    // Where each filter's sections stood at a recording's first sample
+    // (ChannelFilter::sectionsState(), none: afresh), so re-analysis goes on
+    // from there, bit for bit, and without the ringing a restart would
+    // start; empty: every filter afresh (a live setup, an older session).
+    std::vector<std::optional<std::vector<double>>> startState;
 
     bool empty() const { return filters.empty() && math.empty(); }
     const dsp::FilterSettings* filterOf(const std::string& channel) const;
@@ -35,8 +40,9 @@ struct SignalSetup {
 };
 
 // {"filters": [{"channel", "notch_hz", "highpass_hz", "lowpass_hz", "order",
-// "moving_average_s", "zero_phase"}], "math": ["NAME[UNIT]=EXPR"],
-// "analysis_filtered": bool}; "" for an empty setup.
+// "moving_average_s", "zero_phase", "start_state": [numbers] or null}],
+// "math": ["NAME[UNIT]=EXPR"], "analysis_filtered": bool}; "" for an empty
+// setup. Numbers are written to round-trip exactly.
 std::string signalSetupJson(const SignalSetup& setup);
 // The setup a session recorded ("" reads as none). Throws
 // std::invalid_argument saying what is wrong with it.
@@ -45,6 +51,17 @@ SignalSetup signalSetupFromJson(const std::string& json);
 // A recorded setup in words (SignalSetup::text()); one it cannot read
 // says so ("unreadable: …") rather than failing the page that shows it.
 std::string signalSetupText(const std::string& json);
+
+// The filters a mode's re-analysis reads `channels` (names, in the mode's
+// order) through when the session's mode analysed its filtered channels:
+// each one's filter (empty: as stored) and where it stood at the
+// session's first sample; none when the mode read them as they came.
+struct AnalysisFilters {
+    std::vector<dsp::FilterSettings> filters;
+    std::vector<std::optional<std::vector<double>>> startStates;
+    std::string text;  // "a: mains notch 50 Hz and harmonics; b: …"
+};
+std::optional<AnalysisFilters> analysisFilters(const SignalSetup& setup, const std::vector<std::string>& channels);
 
 // Why `setup` cannot run on `channels` (names) at `sampleRate_hz`: a filter
 // on a channel not there or twice, one the rate refuses, a live filter

@@ -88,6 +88,13 @@ void Recorder::setClockMapping(std::string clockJson)
     m_wake.notify_one();
 }
 
+void Recorder::setSignalSetup(std::string setupJson)
+{
+    const std::lock_guard lock(m_mutex);
+    m_queuedSignal = std::move(setupJson);
+    m_wake.notify_one();
+}
+
 void Recorder::addZero(std::uint64_t streamIndex, std::string valuesJson)
 {
     const std::lock_guard lock(m_mutex);
@@ -157,7 +164,7 @@ void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
     // Zeros wait for the first block, which fixes the session's sample 0.
     const bool zeros = !m_queuedZeros.empty() && m_firstIndex;
     if ((m_queue.empty() && m_queuedEvents.empty() && m_queuedReadings.empty() && !zeros && !m_queuedClock &&
-         m_queuedChannels.empty()) ||
+         !m_queuedSignal && m_queuedChannels.empty()) ||
         !m_stats.error.empty())
         return;
     const std::vector<ChannelDescriptor> channels = std::exchange(m_queuedChannels, {});
@@ -166,6 +173,7 @@ void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
     const std::size_t channelCount = m_channelCount;
     const std::uint64_t writtenBefore = m_stats.samplesWritten;
     const std::optional<std::string> clock = std::exchange(m_queuedClock, std::nullopt);
+    const std::optional<std::string> signal = std::exchange(m_queuedSignal, std::nullopt);
     std::vector<SessionZero> zeroRecords;
     if (zeros) {
         zeroRecords = std::move(m_queuedZeros);
@@ -190,6 +198,7 @@ void Recorder::writeQueued(std::unique_lock<std::mutex>& lock)
         for (const auto& reading : readings) m_store.addReading(m_session, reading);
         for (const auto& zero : zeroRecords) m_store.addZero(m_session, zero);
         if (clock) m_store.setClockMapping(m_session, *clock);
+        if (signal) m_store.setSignalSetup(m_session, *signal);
     } catch (const StorageError& e) {
         error = e.what();
     }

@@ -84,6 +84,10 @@ public:
     // The mapping of a part's clock onto its session's (ClockMappingJson),
     // stored with the next commit; any thread.
     void setClockMapping(std::string clockJson);
+    // The session's signal setup again, now with where its filters stood
+    // at its first sample (core/signal/SignalSetup.h), stored with the next
+    // commit; any thread.
+    void setSignalSetup(std::string setupJson);
     // The session time of the newest sample consumed (0 before the first).
     double sessionTime_s() const;
     // The acquisition time (a block's clock) of the newest sample consumed;
@@ -122,6 +126,7 @@ private:
     std::vector<SessionReading> m_queuedReadings;
     std::vector<SessionZero> m_queuedZeros;  // stream indices until the first block is seen
     std::optional<std::string> m_queuedClock;
+    std::optional<std::string> m_queuedSignal;
     std::uint64_t m_queuedSamples = 0;
     std::optional<std::uint64_t> m_firstIndex;  // of the first block consumed
     std::function<void(std::uint64_t)> m_firstSampleWatch;

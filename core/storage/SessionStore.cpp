@@ -441,6 +441,11 @@ void SessionStore::setStartedUtc(std::int64_t session, const std::string& starte
     m_db.prepare("UPDATE sessions SET started_utc = ? WHERE id = ?").bind(1, startedUtc).bind(2, session).run();
 }
 
+void SessionStore::setSignalSetup(std::int64_t session, const std::string& setupJson)
+{
+    m_db.prepare("UPDATE sessions SET signal_setup = ? WHERE id = ?").bind(1, setupJson).bind(2, session).run();
+}
+
 void SessionStore::markUnjudged(std::int64_t session, const std::string& why)
 {
     m_db.prepare("UPDATE sessions SET unjudged = ? WHERE id = ?").bind(1, why).bind(2, session).run();

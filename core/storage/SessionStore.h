@@ -48,6 +48,9 @@ public:
     // The mapping of a part's clock onto its session's
     // (core/timing/ClockMappingJson), replacing the one before.
     void setClockMapping(std::int64_t part, const std::string& clockJson);
+    // Its signal setup (SessionMetadata::signalSetup), once its filters'
+    // state at its first sample is known.
+    void setSignalSetup(std::int64_t session, const std::string& setupJson);
     // One transaction. A block may hold fewer channels than the session
     // (it came before the session gained some): the rest are holes.
     void appendBlocks(std::int64_t session, std::span<const SampleBlock> blocks);

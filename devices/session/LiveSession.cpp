@@ -304,7 +304,15 @@ std::optional<std::string> LiveSession::beginRecording(const core::storage::Sess
         return e.what();
     }
     if (m_chain) {
-        m_recorder->watchFirstSample([chain = m_chain](std::uint64_t first) { chain->restartAt(first); });
+        // Where the filters stood at the recording's first sample goes into
+        // its setup, so review computes its filtered series from there.
+        std::weak_ptr<core::storage::Recorder> recorder = m_recorder;
+        m_recorder->watchFirstSample([chain = m_chain, recorder, setup = m_options.signal](std::uint64_t first) {
+            chain->recordingBegins(first, [recorder, setup](core::signal::SignalChain::StartState states) mutable {
+                setup.startState = std::move(states);
+                if (const auto stored = recorder.lock()) stored->setSignalSetup(core::signal::signalSetupJson(setup));
+            });
+        });
     }
     m_metadata = std::move(metadata);
     m_lastingSeen = 0;

@@ -8,6 +8,7 @@
 
 #include "core/ModeCapability.h"
 #include "core/derived/StoredDetection.h"
+#include "core/signal/SignalSetup.h"
 #include "core/storage/DefectRecords.h"
 
 #include <QCheckBox>
@@ -136,12 +137,25 @@ ReanalysisPanel::ReanalysisPanel(const ReviewAccountContext& context, QWidget* p
     std::vector<core::ChannelDescriptor> descriptors;
     for (const auto& channel : m_store.channels(m_session.id)) descriptors.push_back(channel.descriptor);
     if (const auto cantilevers = core::modeChannels(m_session.metadata.mode, descriptors)) m_cantilevers = *cantilevers;
+    // Through the session's filters when its mode read them so live.
+    std::vector<std::string> names;
+    for (const std::size_t c : m_cantilevers) names.push_back(descriptors[c].name);
+    try {
+        m_filters =
+            core::signal::analysisFilters(core::signal::signalSetupFromJson(m_session.metadata.signalSetup), names);
+    } catch (const std::invalid_argument&) {  // a setup this build cannot read: the samples as stored
+        m_filters.reset();
+    }
     if (m_cantilevers.size() < 2) {
         m_status->setText(tr("This session has no two cantilevers (A and B) among its channels: the detector needs "
                              "both."));
         m_run->setEnabled(false);
     } else {
-        m_status->setText(tr("Change the parameters and run: the new events appear beside the recorded ones."));
+        m_status->setText(tr("Change the parameters and run: the new events appear beside the recorded ones.") +
+                          (m_filters ? tr(" The cantilevers are read through the session's filters, as its mode "
+                                          "read them live (%1).")
+                                           .arg(QString::fromStdString(m_filters->text))
+                                     : QString()));
     }
 
     connect(m_lambdaRule, &QComboBox::currentIndexChanged, this,
@@ -190,6 +204,10 @@ std::optional<core::detector::StretchSettings> ReanalysisPanel::settings()
     s.hold_s = m_hold->value() * 1e-3;
     if (m_spacing->value() > 0.0) s.spacing_m = m_spacing->value() * 1e-3;
     s.threads = std::clamp(std::thread::hardware_concurrency(), 1u, 4u);
+    if (m_filters) {
+        s.filters = m_filters->filters;
+        s.filterStartStates = m_filters->startStates;
+    }
     return s;
 }
 

@@ -12,6 +12,7 @@
 
 #include "core/detector/DefectEvent.h"
 #include "core/detector/StreamingDetection.h"
+#include "core/signal/SignalSetup.h"
 #include "core/storage/SessionStore.h"
 #include "ui/review/ReviewAccount.h"
 
@@ -79,6 +80,8 @@ private:
     bool m_saveAllowed = true;  // the store's rights
     core::storage::SessionSummary m_session;
     std::vector<std::size_t> m_cantilevers;  // the strain channels, in probe order
+    // The session's filters on them, when its mode read them so live.
+    std::optional<core::signal::AnalysisFilters> m_filters;
     QDoubleSpinBox* m_lagStart;
     QDoubleSpinBox* m_lagStop;
     QDoubleSpinBox* m_lagStep;

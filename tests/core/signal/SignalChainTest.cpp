@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <optional>
 #include <random>
 
 using namespace tactiscope;
@@ -95,24 +96,66 @@ void expectBitwiseEqual(const std::vector<double>& live, std::size_t from, const
 
 }  // namespace
 
-TEST(SignalChain, ARestartHeardOfBeforeWithinOrAfterItsSampleGivesTheReanalysedSeriesBitForBit)
+TEST(SignalChain, ARecordingsBeginningHeardOfBeforeWithinOrAfterItsSampleGivesTheReanalysedSeriesBitForBit)
 {
     const auto values = samples(4000, 7);
     const std::size_t first = 1234;  // the recording's first sample, within a block of 100
     for (const std::size_t heardAt : {std::size_t{1000}, std::size_t{1200}, std::size_t{2500}}) {
         core::signal::SignalChain chain(notchedSetup(), gauges(), kRate_hz, 8000, 5.0);
+        std::optional<core::signal::SignalChain::StartState> found;
         feed(chain, values, 0, heardAt, 100);
-        chain.restartAt(first);  // at 2500 already passed: re-run from what was kept
+        chain.recordingBegins(first, [&](core::signal::SignalChain::StartState states) { found = states; });
         feed(chain, values, heardAt, values[0].size(), 100);
+        ASSERT_TRUE(found) << heardAt;
         const auto live = allOutputs(chain);
-        const auto again = core::signal::chainSeries(notchedSetup(), gauges(), kRate_hz, stored(values, first));
-        // What the chain put out before it heard of the restart stays as it was put out.
-        const std::size_t exactFrom = std::max(first, heardAt);
-        for (std::size_t o = 0; o < live.size(); ++o)
-            expectBitwiseEqual(
-                live[o], exactFrom,
-                std::vector<double>(again[o].begin() + static_cast<std::ptrdiff_t>(exactFrom - first), again[o].end()));
+        SignalSetup recorded = notchedSetup();
+        recorded.startState = *found;
+        // Through its JSON, as a session keeps it.
+        recorded = core::signal::signalSetupFromJson(core::signal::signalSetupJson(recorded));
+        const auto again = core::signal::chainSeries(recorded, gauges(), kRate_hz, stored(values, first));
+        for (std::size_t o = 0; o < live.size(); ++o) expectBitwiseEqual(live[o], first, again[o]);
     }
+}
+
+// A moving average starts afresh at the recording's first sample, as in
+// re-analysis; heard of late, what the chain put out before it heard stays
+// as it was put out, and from then on the series is re-analysis's.
+TEST(SignalChain, AMovingAverageStartsAfreshAtTheRecordingAndMatchesFromWhenItWasHeardOf)
+{
+    const auto values = samples(4000, 5);
+    SignalSetup averaged = notchedSetup();
+    averaged.filters[0].settings.movingAverage_s = 0.02;
+    for (const std::size_t heardAt : {std::size_t{1000}, std::size_t{2500}}) {
+        core::signal::SignalChain chain(averaged, gauges(), kRate_hz, 8000, 5.0);
+        std::optional<core::signal::SignalChain::StartState> found;
+        feed(chain, values, 0, heardAt, 100);
+        chain.recordingBegins(1234, [&](core::signal::SignalChain::StartState states) { found = states; });
+        feed(chain, values, heardAt, values[0].size(), 100);
+        ASSERT_TRUE(found);
+        SignalSetup recorded = averaged;
+        recorded.startState = *found;
+        const auto live = allOutputs(chain);
+        const auto again = core::signal::chainSeries(recorded, gauges(), kRate_hz, stored(values, 1234));
+        const std::size_t from = std::max<std::size_t>(1234, heardAt);
+        expectBitwiseEqual(
+            live[0], from,
+            std::vector<double>(again[0].begin() + static_cast<std::ptrdiff_t>(from - 1234), again[0].end()));
+    }
+}
+
+// The filters run on through the record press: the live series has no
+// step or ringing there, where a restart from the first sample's steady
+// state rings at the hum's amplitude for a few tenths of a second.
+TEST(SignalChain, NothingRingsAtARecordingsBeginning)
+{
+    const auto values = samples(4000, 9);
+    core::signal::SignalChain going(notchedSetup(), gauges(), kRate_hz, 8000, 5.0);
+    core::signal::SignalChain untouched(notchedSetup(), gauges(), kRate_hz, 8000, 5.0);
+    going.recordingBegins(2000, [](core::signal::SignalChain::StartState) {});
+    feed(going, values, 0, values[0].size(), 100);
+    feed(untouched, values, 0, values[0].size(), 100);
+    const auto a = allOutputs(going), b = allOutputs(untouched);
+    for (std::size_t o = 0; o < a.size(); ++o) expectBitwiseEqual(a[o], 0, b[o]);
 }
 
 TEST(SignalChain, LostSamplesAreMissingAndTheFiltersStartAgainAfterThemAsOnAStoredGap)

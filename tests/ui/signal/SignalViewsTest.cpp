@@ -30,6 +30,8 @@
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
@@ -163,6 +165,11 @@ TEST(SignalViews, FiltersAndAMathChannelAreSetFoundShownRecordedAndReviewed)
     const auto lanes = review->findChild<ui::ReviewPlot*>()->laneNames();
     for (const char* name : {"a.filtered", "b.filtered", "diff"})
         EXPECT_NE(std::ranges::find(lanes, std::string(name)), lanes.end()) << name;
+    review->resize(1366, 768);
+    QTest::qWait(500);  // drawn
+    if (auto* scroll = review->findChild<QScrollArea*>(QStringLiteral("laneScroll")))
+        scroll->verticalScrollBar()->setValue(scroll->verticalScrollBar()->maximum());  // the signal lanes, last
+    QTest::qWait(300);
     tactiscope::testing::saveScreenshot(*review, QStringLiteral("review-signal-lanes"));
     action(*review, "reviewSpectrumAction")->trigger();
     auto* reviewed = review->findChild<ui::ReviewSpectrum*>(QStringLiteral("reviewSpectrum"));
