@@ -135,10 +135,10 @@ public:
     // channels it names and computes its math channels, whose outputs are
     // quantities to watch ("a.filtered", a math channel's name) and to
     // show (signalChain()); with analysisFiltered the modes' processors
-    // read the filtered channels. A recording stores the setup, and its
-    // filters restart at the recording's first sample so review computes
-    // the same series from the stored samples. Refused while recording or
-    // armed, and for a setup the channels or the rate cannot run: the reason.
+    // read the filtered channels. A recording stores the setup with where
+    // its filters stood at its first sample, so review computes the same
+    // series from the stored samples. Refused while recording or armed,
+    // and for a setup the channels or the rate cannot run: the reason.
     std::optional<std::string> setSignal(core::signal::SignalSetup setup);
     const core::signal::SignalSetup& signalSetup() const { return m_options.signal; }
     // The chain running the setup; null when it is empty.

@@ -31,6 +31,8 @@ std::optional<std::string> LiveSession::setSignal(core::signal::SignalSetup setu
 {
     if (isRecording()) return "a recording keeps its filters and math channels; stop it first";
     if (m_trigger) return "the armed trigger records with these filters and math channels; disarm it first";
+    if (setup.analysisFiltered && setup.filters.empty())
+        return "the mode can analyse the filtered channels only when a channel is filtered";
     std::shared_ptr<core::signal::SignalChain> chain;
     if (!setup.empty()) {
         try {
@@ -39,8 +41,6 @@ std::optional<std::string> LiveSession::setSignal(core::signal::SignalSetup setu
             return e.what();
         }
     }
-    if (setup.analysisFiltered && setup.filters.empty())
-        return "the mode can analyse the filtered channels only when a channel is filtered";
     m_modeInput->setChain(setup.analysisFiltered ? chain : nullptr);
     m_options.signal = std::move(setup);
     m_chain = chain;
