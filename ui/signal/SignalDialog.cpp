@@ -16,6 +16,7 @@
 #include <QLocale>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QSettings>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -75,6 +76,9 @@ SignalDialog::SignalDialog(Session session, QWidget* parent)
     m_mains->setObjectName(QStringLiteral("signalMains"));
     m_mains->addItem(tr("50 Hz"), 50.0);
     m_mains->addItem(tr("60 Hz"), 60.0);
+    // The site's mains frequency is the station's setting, kept between runs;
+    // a notch already set says it too.
+    m_mains->setCurrentIndex(QSettings().value(QStringLiteral("signal/mains_hz"), 50.0).toDouble() == 60.0 ? 1 : 0);
     for (const auto& filter : m_session.setup.filters)
         if (filter.settings.notch_hz) m_mains->setCurrentIndex(*filter.settings.notch_hz == 60.0 ? 1 : 0);
 
@@ -231,7 +235,9 @@ void SignalDialog::applyTyped()
             problem = QString::fromStdString(*refusal);
     }
     m_problem->setText(problem);
-    if (problem.isEmpty()) m_session.setup = setup;
+    if (!problem.isEmpty()) return;
+    m_session.setup = setup;
+    QSettings().setValue(QStringLiteral("signal/mains_hz"), m_mains->currentData().toDouble());
 }
 
 void SignalDialog::findMains()

@@ -1,7 +1,7 @@
 // Session ▸ Filters and math channels…: the window's device's signal setup
 // (core/signal/SignalSetup.h). A row per channel sets its filter: a mains
-// notch at the site's frequency (which the program can find from the
-// signal), a Butterworth high- and/or low-pass of one order, a moving
+// notch at the site's frequency (a station setting, kept between runs,
+// which the program can find from the signal), a Butterworth high- and/or low-pass of one order, a moving
 // average; each row shows the delay the live filter adds. Math channels
 // are typed one per line ("diff[µε]=a - b"), and a tick has the mode
 // analyse the filtered channels. Apply sets it on the device
