@@ -15,7 +15,11 @@ MathColumns::MathColumns(storage::SessionSource& store, std::int64_t session, st
     for (const auto& stored : store.channels(session)) channels.push_back(stored.descriptor);
     m_storedChannels = channels.size();
     if (m_derived)
-        for (const ChannelDescriptor& channel : m_derived->channels()) channels.push_back(channel);
+        for (const ChannelDescriptor& channel : m_derived->channels()) {
+            channels.push_back(channel);
+            const auto unit = units::parseUnit(channel.unit);
+            m_derivedToSi.push_back(unit ? unit->toSi : 1.0);
+        }
     m_math = std::make_unique<MathChannels>(mathInputs(channels), std::move(definitions));
 }
 
@@ -45,13 +49,10 @@ std::vector<std::vector<double>> MathColumns::read(std::uint64_t first, std::uin
     std::vector<std::vector<double>> derived =
         m_derived ? m_derived->read(first, count) : std::vector<std::vector<double>>{};
     std::vector<std::span<const double>> inputs(stored.begin(), stored.end());
-    // Computed columns are in their own units (a math channel the session
-    // recorded in µε); the expressions read SI.
-    const auto computed = m_derived ? m_derived->channels() : std::vector<ChannelDescriptor>{};
+    // Computed columns are in their own units; the expressions read SI.
     std::vector<std::vector<double>> inSi(derived.size());
     for (std::size_t c = 0; c < derived.size(); ++c) {
-        const auto unit = units::parseUnit(computed[c].unit);
-        const double toSi = unit ? unit->toSi : 1.0;
+        const double toSi = c < m_derivedToSi.size() ? m_derivedToSi[c] : 1.0;
         if (toSi == 1.0) {
             inputs.emplace_back(derived[c]);
             continue;

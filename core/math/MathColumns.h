@@ -27,6 +27,9 @@ private:
     std::int64_t m_session;
     std::unique_ptr<storage::ComputedColumns> m_derived;
     std::size_t m_storedChannels = 0;
+    // SI units per unit of each computed column (a recorded math channel in
+    // µε: 1e-6), read once: the expressions read SI.
+    std::vector<double> m_derivedToSi;
     std::unique_ptr<MathChannels> m_math;
 };
 

@@ -66,6 +66,9 @@ public:
     // without a display capacity (and the latter without math channels).
     std::shared_ptr<const LiveBuffer> display() const { return m_display; }
     std::shared_ptr<const LiveBuffer> mathOutput() const { return m_mathOutput; }
+    // Whether its display differs from the channels as they came: it has
+    // one, and a filter.
+    bool displaysFiltered() const { return m_display && !m_filters.empty(); }
     // The math channels' descriptors (the tail of outputs()).
     std::vector<ChannelDescriptor> mathOutputs() const;
     // How far output `index` lags its channel (a filter's group delay; 0

@@ -45,7 +45,7 @@ void LiveTraces::showChannels()
     const auto* live = m_station.device();
     if (!live) return;
     const auto chain = live->signalChain();
-    m_showingFiltered = m_filteredTraces && chain && chain->display() && !chain->setup().filters.empty();
+    m_showingFiltered = m_filteredTraces && chain && chain->displaysFiltered();
     auto channels = live->channels();
     if (m_showingFiltered)  // the chain's channels: the device's when the filters were set
         channels.resize(std::min(channels.size(), chain->display()->channelCount()));

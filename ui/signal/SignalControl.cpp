@@ -132,7 +132,7 @@ void SignalControl::bind()
         return;
     }
     // The traces show the filtered channels: the plot, the math ones alone.
-    const bool tracesFiltered = filtered && chain->display() && !chain->setup().filters.empty();
+    const bool tracesFiltered = filtered && chain->displaysFiltered();
     const double rate_hz = live->source().nominalSampleRate_hz();
     if (!tracesFiltered)
         m_plot->setSource(chain->output(), chain->outputs(), rate_hz);
