@@ -18,7 +18,7 @@ for size in 1920x1080 3840x2160; do
               "logicalDpi": 96, "logicalBaseDpi": 96, "dpr": 1}]}
 EOF
 done
-views='PanelScanView.Defects*:PalpationView.Presses*:CapacitiveView.Readouts*:DevicePanel.TheEmulator*:Recording.Sessions*:SensorProfileDialogTest.Lists*:DesignTool.Curves*:GaugeFactorWizardTest.Completed*:GaugeFactorWizardTest.AMislabelled*:CapacitiveWizardTest.LoadAndUnload*:CapacitiveSweepWizardTest.Calibrates*:CalibrationHistoryTest.Shows*:SessionBrowserTest.ListsEvery*:SessionBrowserTest.DeleteAsks*:ReviewWindowTest.Reanalysis*:ReviewWindowTest.AReviewersVerdict*:ReviewPalpation.*:ReviewCapacitive.*:ModeAndSource.AMode*:CentralStoreUi.*:LiveListsView.*:ReviewGeneral.*:ReviewDevices.*:OtherDevices.*:ReviewProbe.*:HelpWindows.TheShortcuts*:ReviewGeometry.*:HandsFree.*:ShuntCheck.The*'
+views='PanelScanView.Defects*:PalpationView.Presses*:CapacitiveView.Readouts*:DevicePanel.TheEmulator*:Recording.Sessions*:SensorProfileDialogTest.Lists*:DesignTool.Curves*:GaugeFactorWizardTest.Completed*:GaugeFactorWizardTest.AMislabelled*:CapacitiveWizardTest.LoadAndUnload*:CapacitiveSweepWizardTest.Calibrates*:CalibrationHistoryTest.Shows*:SessionBrowserTest.ListsEvery*:SessionBrowserTest.DeleteAsks*:ReviewWindowTest.Reanalysis*:ReviewWindowTest.AReviewersVerdict*:ReviewPalpation.*:ReviewCapacitive.*:ModeAndSource.AMode*:CentralStoreUi.*:LiveListsView.*:ReviewGeneral.*:ReviewDevices.*:OtherDevices.*:ReviewProbe.*:HelpWindows.TheShortcuts*:ReviewGeometry.*:HandsFree.*:ShuntCheck.The*:SignalViews.*'
 TACTISCOPE_SCREENSHOT_DIR="$PWD/docs/screenshots" QT_QPA_PLATFORM="offscreen:configfile=$screens/1920x1080.json" \
   build/dev/tests/tactiscope_ui_tests --gtest_filter="$views"
 # The same views at 200 % scaling (a 4K screen, or a 2732×1536 laptop):
@@ -29,6 +29,6 @@ TACTISCOPE_SCREENSHOT_DIR="$PWD/docs/screenshots/200-percent" QT_SCALE_FACTOR=2 
   build/dev/tests/tactiscope_ui_tests --gtest_filter="$views"
 # The first page of an inspection report (tactiscope-cli report → pdftoppm).
 TACTISCOPE_SCREENSHOT_DIR="$PWD/docs/screenshots" \
-  build/dev/tests/tactiscope_cli_tests --gtest_filter='ReportCli.ThePdf*:ModeReportsCli.*'
+  build/dev/tests/tactiscope_cli_tests --gtest_filter='ReportCli.ThePdf*:ModeReportsCli.*:SignalSetupCli.ARecordingKeeps*'
 echo "update-screenshots: docs/screenshots/ regenerated"
 ls docs/screenshots

@@ -38,6 +38,7 @@
 #include "ui/review/ReviewActions.h"
 #include "ui/review/ReviewWindows.h"
 #include "ui/review/SessionBrowser.h"
+#include "ui/signal/LiveHealth.h"
 #include "ui/signal/LiveSpectrum.h"
 #include "ui/signal/SignalControl.h"
 
@@ -154,6 +155,7 @@ void MainWindow::buildFrame()
     m_xyDock = addDock(this, tr("XY plot"), QStringLiteral("xyDock"), m_xyPlot, Qt::RightDockWidgetArea);
     m_xyDock->hide();  // on request (View menu): the mode views come first
     m_spectrum = new LiveSpectrum(*m_station, this);
+    m_health = new LiveHealth(*m_station, this);
     m_rawConsole = new RawConsole(this);
     m_rawConsole->setObjectName(QStringLiteral("rawConsole"));
     m_consoleDock =
@@ -165,6 +167,7 @@ void MainWindow::buildFrame()
     // Beside the device panel, tabs of their own: the window keeps its width.
     tabifyDockWidget(m_deviceDock, m_othersDock);
     tabifyDockWidget(m_deviceDock, m_spectrum->dock());
+    tabifyDockWidget(m_deviceDock, m_health->dock());
     m_othersDock->hide();  // until a device is added
     m_status = new StatusLine(statusBar());
     m_central = new CentralStoreLink(statusBar(), this);
@@ -317,7 +320,8 @@ void MainWindow::createMenus()
     session->addAction(tr("&Browse and review sessions…"), QKeySequence::Open, this, &MainWindow::showSessionBrowser);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
-    for (QDockWidget* dock : {m_deviceDock, m_othersDock, m_xyDock, m_spectrum->dock(), m_consoleDock})
+    for (QDockWidget* dock :
+         {m_deviceDock, m_othersDock, m_xyDock, m_spectrum->dock(), m_health->dock(), m_consoleDock})
         view->addAction(dock->toggleViewAction());
     view->addAction(m_signal->filteredTracesAction());
     view->addSeparator();

@@ -32,6 +32,7 @@ namespace tactiscope::ui {
 class CentralStoreLink;
 class DevicePanel;
 class HandsFreeControl;
+class LiveHealth;
 class LiveSpectrum;
 class SignalControl;
 class LiveModeView;
@@ -127,6 +128,7 @@ private:
     HandsFreeControl* m_handsFree = nullptr;  // triggers and limit alarms
     SignalControl* m_signal = nullptr;        // filters and math channels
     LiveSpectrum* m_spectrum = nullptr;       // View ▸ Spectrum
+    LiveHealth* m_health = nullptr;           // View ▸ Signal health
     ModeViews* m_modeViews = nullptr;         // the mode's view under the traces
     DevicePanel* m_devicePanel = nullptr;
     ReviewWindows* m_review = nullptr;      // the browser and review windows of the store

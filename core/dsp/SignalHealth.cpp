@@ -21,6 +21,21 @@ std::size_t healthSegmentLength(double sampleRate_hz, std::uint64_t samples)
     return std::min(fitting, fine);
 }
 
+std::size_t streamSegmentLength(double sampleRate_hz)
+{
+    std::size_t length = kShortestSegment;
+    while (length < kLongestSegment && static_cast<double>(length) < sampleRate_hz) length *= 2;
+    return length;
+}
+
+HealthAccumulator::HealthAccumulator(double sampleRate_hz, std::size_t segmentLength,
+                                     std::uint64_t driftIntervalSamples, bool judgeClipping)
+    : m_spectrum(sampleRate_hz, segmentLength, SpectralWindow::Hann),
+      m_drift(sampleRate_hz, driftIntervalSamples),
+      m_judgeClipping(judgeClipping)
+{
+}
+
 HealthAccumulator::HealthAccumulator(double sampleRate_hz, std::uint64_t expectedSamples,
                                      std::optional<ChannelRange> range, bool judgeClipping)
     : m_spectrum(sampleRate_hz, healthSegmentLength(sampleRate_hz, expectedSamples), SpectralWindow::Hann),

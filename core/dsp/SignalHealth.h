@@ -34,6 +34,10 @@ public:
     // does (a position dwelling at an end stop, a probe's decisions).
     HealthAccumulator(double sampleRate_hz, std::uint64_t expectedSamples,
                       std::optional<ChannelRange> range = std::nullopt, bool judgeClipping = true);
+    // A stream of no known length (the live panel): spectrum segments and
+    // drift intervals of the sizes given.
+    HealthAccumulator(double sampleRate_hz, std::size_t segmentLength, std::uint64_t driftIntervalSamples,
+                      bool judgeClipping);
 
     void push(std::span<const double> values);
     ChannelHealth result() const;
@@ -49,5 +53,9 @@ private:
 
 // The segment length health takes for a recording of `samples` at `rate`.
 std::size_t healthSegmentLength(double sampleRate_hz, std::uint64_t samples);
+
+// The segment length for a stream read as it comes: about a second (1 Hz
+// resolution, 50 and 60 Hz lines well apart), a first spectrum soon.
+std::size_t streamSegmentLength(double sampleRate_hz);
 
 }  // namespace tactiscope::core::dsp

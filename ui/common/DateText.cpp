@@ -1,7 +1,12 @@
-// Date and time texts for screen and files.
+// Date, time and duration texts for screen and files.
 #include "ui/common/DateText.h"
 
+#include "ui/common/NumberText.h"
+
 #include <QLocale>
+#include <QObject>
+
+#include <cmath>
 
 namespace tactiscope::ui {
 namespace {
@@ -42,6 +47,14 @@ QString screenDate(const QDate& date)
 QString screenTime(const QTime& time)
 {
     return QLocale().toString(time, QLocale::ShortFormat);
+}
+
+QString durationText(double seconds)
+{
+    if (seconds < 60.0) return QObject::tr("%1 s").arg(fixedText(seconds, 1));
+    const auto whole = static_cast<long long>(std::llround(seconds));
+    if (whole < 3600) return QObject::tr("%1 min %2 s").arg(whole / 60).arg(whole % 60, 2, 10, QLatin1Char('0'));
+    return QObject::tr("%1 h %2 min").arg(whole / 3600).arg((whole % 3600) / 60, 2, 10, QLatin1Char('0'));
 }
 
 QString fileDateTime(const QDateTime& time)

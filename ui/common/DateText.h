@@ -21,6 +21,9 @@ QString screenDateTime(const QDateTime& time);
 QString screenDate(const QDate& date);
 QString screenTime(const QTime& time);  // "10:49 PM", no seconds: for "last answered at"
 
+// "2 h 05 min", "3 min 20 s", "12.5 s": a duration as people read it.
+QString durationText(double seconds);
+
 // In files: ISO 8601, local time to the second with its offset from UTC.
 QString fileDateTime(const QDateTime& time);
 

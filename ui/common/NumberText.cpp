@@ -93,6 +93,11 @@ QString siText(double value_si, const QString& unit, int significant)
     return significantText(scaled, significant) + u' ' + prefixes[static_cast<std::size_t>(index)] + unit;
 }
 
+QString withUnit(const QString& value, const QString& unit)
+{
+    return unit.isEmpty() ? value : value + QStringLiteral(" ") + unit;
+}
+
 QString typedText(double value)
 {
     QLocale locale;

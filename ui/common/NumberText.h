@@ -30,6 +30,10 @@ QString significantText(double value, int significant);
 // "1.20 pF". Prefixes p … G; a bare unit for 0.
 QString siText(double value_si, const QString& unit, int significant);
 
+// A value's text and its unit, a space between ("2.5 µε"); the value
+// alone for a pure number (an empty unit).
+QString withUnit(const QString& value, const QString& unit);
+
 // A value someone set or typed, as short as it reads back ("10", "0.5",
 // "2.1"), in the locale, with no group separators; plain digits so a field
 // can parse it again.

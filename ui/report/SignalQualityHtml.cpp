@@ -4,43 +4,18 @@
 #include "ui/common/DisplayUnits.h"
 #include "ui/common/NumberText.h"
 #include "ui/report/ReportHtml.h"
+#include "ui/signal/HealthText.h"
 
 #include <QObject>
-
-#include <cmath>
 
 namespace tactiscope::ui {
 namespace {
 
 using namespace reporthtml;
 
-QString withUnit(const QString& value, const QString& unit)
-{
-    return unit.isEmpty() ? value : value + QStringLiteral(" ") + unit;
-}
-
 QStringList channelRow(const core::report::ChannelQuality& q)
 {
-    const DisplayUnit unit = displayUnitFor(q.channel);
-    const auto& h = q.health;
-    const QString hum = h.hum ? QObject::tr("%1 at %2 Hz")
-                                    .arg(withUnit(significantText(h.hum->amplitude * unit.scale, 3), unit.symbol))
-                                    .arg(h.hum->mains_hz)
-                              : QObject::tr("none");
-    const QString floor =
-        std::isfinite(h.noiseFloor_per_sqrt_hz)
-            ? withUnit(significantText(h.noiseFloor_per_sqrt_hz * unit.scale, 3),
-                       (unit.symbol.isEmpty() ? QStringLiteral("1") : unit.symbol) + QStringLiteral("/√Hz"))
-            : QObject::tr("too short");
-    QString drift = QObject::tr("too short");
-    if (!q.drifts)
-        drift = QObject::tr("— (a position)");
-    else if (h.drift)
-        drift = withUnit(significantText(h.drift->rate_per_s * 3600.0 * unit.scale, 3) + QStringLiteral(" ± ") +
-                             significantText(h.drift->standardUncertainty_per_s * 3600.0 * unit.scale, 2),
-                         unit.symbol + QStringLiteral("/h"));
-    const QString clipped = q.drifts ? QString::number(h.clipped) : QStringLiteral("—");
-    return {text(q.channel.name), hum, floor, drift, clipped};
+    return QStringList{text(q.channel.name)} + healthCells(q);
 }
 
 }  // namespace
@@ -50,9 +25,7 @@ QString signalQualitySection(const core::report::SignalQuality& quality)
     QString html = QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Signal quality"));
     std::vector<QStringList> rows;
     for (const auto& q : quality.channels) rows.push_back(channelRow(q));
-    html += table({QObject::tr("Channel"), QObject::tr("Mains hum"), QObject::tr("Noise floor"),
-                   QObject::tr("Drift per hour (± u)"), QObject::tr("Clipped samples")},
-                  rows);
+    html += table(QStringList{QObject::tr("Channel")} + healthHeaders(), rows);
     if (quality.channelsLeftOut > 0)
         html += QStringLiteral("<p>%1</p>")
                     .arg(QObject::tr("… and %n more channel(s): `tactiscope-cli health --db … --session …` reads "

@@ -1,14 +1,11 @@
 // SessionTableModel: one row per stored session.
 #include "ui/review/SessionTableModel.h"
 #include "ui/common/DateText.h"
-#include "ui/common/NumberText.h"
 #include "ui/common/VocabularyText.h"
 
 #include <QApplication>
 #include <QColor>
 #include <QStyle>
-
-#include <cmath>
 
 namespace tactiscope::ui {
 namespace {
@@ -24,14 +21,6 @@ bool isInterrupted(const core::storage::SessionSummary& s)
 }
 
 }  // namespace
-
-QString durationText(double seconds)
-{
-    if (seconds < 60.0) return QObject::tr("%1 s").arg(fixedText(seconds, 1));
-    const auto whole = static_cast<long long>(std::llround(seconds));
-    if (whole < 3600) return QObject::tr("%1 min %2 s").arg(whole / 60).arg(whole % 60, 2, 10, QLatin1Char('0'));
-    return QObject::tr("%1 h %2 min").arg(whole / 3600).arg((whole % 3600) / 60, 2, 10, QLatin1Char('0'));
-}
 
 void SessionTableModel::setSessions(std::vector<core::storage::SessionSummary> sessions)
 {

@@ -35,7 +35,4 @@ private:
     std::vector<core::storage::SessionSummary> m_sessions;
 };
 
-// "2 h 05 min", "3 min 20 s", "12.5 s": a duration as a reviewer reads it.
-QString durationText(double seconds);
-
 }  // namespace tactiscope::ui

@@ -3,7 +3,8 @@
 // 50 Hz hum: Session ▸ Filters and math channels… finds the mains, sets a
 // notch on both gauges and a math channel, refuses a unit mismatch in
 // words, and the window plots what they give with each filter's delay; the
-// live spectrum shows the hum's line where the simulator put it; the
+// live spectrum shows the hum's line where the simulator put it, and the
+// signal health panel its amplitude in µε (and none through the notch); the
 // recording keeps the setup, and the review's spectrum of its math channel
 // reads it again from the store.
 #include "core/storage/SessionStore.h"
@@ -28,6 +29,7 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QLabel>
+#include <QLocale>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QScrollArea>
@@ -145,9 +147,34 @@ TEST(SignalViews, FiltersAndAMathChannelAreSetFoundShownRecordedAndReviewed)
     QTest::qWait(1500);  // a second and a half of traces to look at
     tactiscope::testing::saveScreenshot(window, QStringLiteral("signal-live"));
 
+    // View ▸ Signal health reads the same hum on a, in µε, and a drift
+    // with its ± once three one-second intervals are in.
+    auto* healthDock = window.findChild<QDockWidget*>(QStringLiteral("healthDock"));
+    ASSERT_NE(healthDock, nullptr);
+    healthDock->toggleViewAction()->trigger();
+    ASSERT_TRUE(waitFor([&] { return healthDock->isVisible(); }, 2000));
+    auto* health = healthDock->findChild<QTableWidget*>(QStringLiteral("healthTable"));
+    ASSERT_NE(health, nullptr);
+    ASSERT_TRUE(waitFor(
+        [&] { return health->rowCount() > 0 && health->item(0, 3)->text().contains(QStringLiteral("±")); }, 8000));
+    EXPECT_EQ(health->item(0, 0)->text(), QStringLiteral("a"));
+    const QString hum = health->item(0, 1)->text();
+    EXPECT_TRUE(hum.contains(QStringLiteral("µε at 50 Hz"))) << hum.toStdString();
+    EXPECT_NEAR(QLocale().toDouble(hum.section(QLatin1Char(' '), 0, 0)), 25.0, 1.25) << hum.toStdString();
+    for (const char* name : {"a.filtered", "diff"})
+        EXPECT_FALSE(health->findItems(QString::fromLatin1(name), Qt::MatchExactly).isEmpty()) << name;
+    // The notch leaves no hum on a.filtered.
+    const int filteredRow = health->findItems(QStringLiteral("a.filtered"), Qt::MatchExactly).front()->row();
+    EXPECT_EQ(health->item(filteredRow, 1)->text(), QStringLiteral("none"));
+    tactiscope::testing::saveScreenshot(window, QStringLiteral("signal-health-live"));
+    auto* since = healthDock->findChild<QLabel*>(QStringLiteral("healthSince"));
+    ASSERT_NE(since, nullptr);
+    EXPECT_TRUE(since->text().contains(QStringLiteral("since the panel opened"))) << since->text().toStdString();
+
     // Recorded, the session keeps the setup; its review's spectrum of the
     // math channel, computed again from the store, has no 50 Hz line left.
     ASSERT_FALSE(window.station().startRecording({}));
+    EXPECT_TRUE(since->text().contains(QStringLiteral("since the recording began"))) << since->text().toStdString();
     QTest::qWait(2500);
     window.station().stopRecording();
     ASSERT_TRUE(waitFor([&] { return !window.station().isRecording(); }, 5000));

@@ -1,0 +1,43 @@
+// HealthText: each figure with its unit, or why there is none yet.
+#include "ui/signal/HealthText.h"
+
+#include "ui/common/DisplayUnits.h"
+#include "ui/common/NumberText.h"
+
+#include <QObject>
+
+#include <cmath>
+
+namespace tactiscope::ui {
+
+QStringList healthHeaders()
+{
+    return {QObject::tr("Mains hum"), QObject::tr("Noise floor"), QObject::tr("Drift per hour (± u)"),
+            QObject::tr("Clipped samples")};
+}
+
+QStringList healthCells(const core::report::ChannelQuality& q)
+{
+    const DisplayUnit unit = displayUnitFor(q.channel);
+    const auto& h = q.health;
+    const QString hum = h.hum ? QObject::tr("%1 at %2 Hz")
+                                    .arg(withUnit(significantText(h.hum->amplitude * unit.scale, 3), unit.symbol))
+                                    .arg(h.hum->mains_hz)
+                              : QObject::tr("none");
+    const QString floor =
+        std::isfinite(h.noiseFloor_per_sqrt_hz)
+            ? withUnit(significantText(h.noiseFloor_per_sqrt_hz * unit.scale, 3),
+                       (unit.symbol.isEmpty() ? QStringLiteral("1") : unit.symbol) + QStringLiteral("/√Hz"))
+            : QObject::tr("too short");
+    QString drift = QObject::tr("too short");
+    if (!q.drifts)
+        drift = QObject::tr("— (a position)");
+    else if (h.drift)
+        drift = withUnit(significantText(h.drift->rate_per_s * 3600.0 * unit.scale, 3) + QStringLiteral(" ± ") +
+                             significantText(h.drift->standardUncertainty_per_s * 3600.0 * unit.scale, 2),
+                         unit.symbol + QStringLiteral("/h"));
+    const QString clipped = q.drifts ? QString::number(h.clipped) : QStringLiteral("—");
+    return {hum, floor, drift, clipped};
+}
+
+}  // namespace tactiscope::ui
