@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <optional>
 
 namespace tactiscope::cli {
 namespace {
@@ -24,7 +25,38 @@ struct Row {
     ShownUnit unit;
     ChannelHealth health;
     bool clippingJudged = true;  // not for a position (ChannelQuality::drifts)
+    bool creepJudged = false;    // a capacitance channel's (ChannelQuality::creep)
+    std::optional<core::dsp::StepCreep> creep;
 };
+
+// A capacitive beam's creep after its load steps; null where none was found
+// or the channel is not a beam's.
+void creepJson(core::text::JsonWriter& json, const Row& row)
+{
+    json.key("creep");
+    if (!row.creep) {
+        json.null();
+        return;
+    }
+    const auto& c = *row.creep;
+    json.beginObject()
+        .key("steps")
+        .value(static_cast<long long>(c.steps))
+        .key("fraction")
+        .value(c.fraction)
+        .key("fraction_u");
+    if (c.fractionU)
+        json.value(*c.fractionU);
+    else
+        json.null();
+    json.key("time_constant_s")
+        .value(c.timeConstant_s)
+        .key("time_constant_s_u")
+        .value(c.timeConstantU_s)
+        .key("settle_time_s")
+        .value(c.settleTime_s)
+        .endObject();
+}
 
 std::string healthJson(const std::vector<Row>& rows)
 {
@@ -54,6 +86,7 @@ std::string healthJson(const std::vector<Row>& rows)
         json.key("missing").value(static_cast<long long>(h.missing));
         if (h.hum) json.key("hum_line_hz").value(h.hum->line_hz);
         json.key("resolution_hz").value(h.resolution_hz);
+        creepJson(json, row);
         json.endObject();
     }
     return json.endArray().str();
@@ -89,6 +122,15 @@ void printHealth(const QString& name, const std::vector<Row>& rows)
             out << ", drift: too short";
         if (row.clippingJudged) out << ", " << h.clipped << " clipped";
         if (h.missing > 0) out << ", " << h.missing << " missing";
+        if (row.creep) {
+            const auto& c = *row.creep;
+            out << ", creep " << number(c.fraction * 100.0)
+                << (c.fractionU ? " ± " + number(*c.fractionU * 100.0) : QString()) << " % of a step, τ "
+                << number(c.timeConstant_s) << " ± " << number(c.timeConstantU_s) << " s (" << c.steps
+                << (c.steps == 1 ? " step)" : " steps)");
+        } else if (row.creepJudged) {
+            out << ", creep: none told from the noise";
+        }
         out << '\n';
     }
 }
@@ -102,12 +144,14 @@ int runHealth(const QStringList& arguments)
     parser.setApplicationDescription(QStringLiteral(
         "Each channel's signal health: mains hum (50 or 60 Hz, its amplitude in the channel's unit), noise floor "
         "(median amplitude spectral density above 1 Hz), drift per hour with its standard uncertainty (a line "
-        "through 100 interval means), and clipped samples. FILE.csv is read as import reads it; --db and "
+        "through 100 interval means), and clipped samples; for a capacitive beam, the creep after its load steps (its "
+        "share of a step and its time constant, each with its standard uncertainty). FILE.csv is read as import reads "
+        "it; --db and "
         "--session read a stored session instead."));
     parser.addPositionalArgument(QStringLiteral("FILE.csv"), QStringLiteral("The recording."));
     parser.addOption({QStringLiteral("json"),
                       QStringLiteral("Print JSON: per channel channel, unit, hum_hz, hum_amplitude, noise_floor, "
-                                     "drift_per_hour, drift_per_hour_u, clipped.")});
+                                     "drift_per_hour, drift_per_hour_u, clipped, creep (null but for a beam).")});
     addSignalInputOptions(parser);
     if (const auto exit = parseCommandLine(parser, name, arguments)) return *exit;
     const QString usage = commandUsage(parser, name);
@@ -117,7 +161,7 @@ int runHealth(const QStringList& arguments)
     std::vector<Row> rows;
     try {
         for (const auto& q : core::report::channelQuality(*input.store, input.session, 0, input.sampleCount))
-            rows.push_back({q.channel.name, shownUnit(q.channel), q.health, q.drifts});
+            rows.push_back({q.channel.name, shownUnit(q.channel), q.health, q.drifts, q.creepJudged, q.creep});
     } catch (const core::storage::StorageError& e) {
         return storageFailure(e, QStringLiteral("health: "));
     }

@@ -15,6 +15,11 @@ constexpr std::uint64_t kWindow = std::uint64_t{1} << 16;
 
 }  // namespace
 
+bool isBeamChannel(const ChannelDescriptor& channel)
+{
+    return channel.role == ChannelRole::Capacitance || (!channel.role && channel.kind == ChannelKind::Capacitance);
+}
+
 std::vector<ChannelQuality> channelQuality(storage::SessionSource& store, std::int64_t session, std::uint64_t first,
                                            std::uint64_t end, std::size_t most)
 {
@@ -32,12 +37,24 @@ std::vector<ChannelQuality> channelQuality(storage::SessionSource& store, std::i
         accumulators.emplace_back(stored[c].sampleRate_hz, end > first ? end - first : 0, std::nullopt, !position);
         channels.push_back({descriptor, {}, !position});
     }
+    // A capacitance channel is held whole for its creep, where it fits.
+    std::vector<std::vector<double>> whole(read.size());
+    for (std::size_t i = 0; i < read.size(); ++i) {
+        channels[i].creepJudged = isBeamChannel(channels[i].channel) && end > first && end - first <= kMostCreepSamples;
+        if (channels[i].creepJudged) whole[i].reserve(end - first);
+    }
     std::vector<std::vector<double>> window;
     for (std::uint64_t from = first; from < end; from += kWindow) {
         store.readChannels(session, read, from, std::min(kWindow, end - from), window);
-        for (std::size_t i = 0; i < read.size(); ++i) accumulators[i].push(window[i]);
+        for (std::size_t i = 0; i < read.size(); ++i) {
+            accumulators[i].push(window[i]);
+            if (channels[i].creepJudged) whole[i].insert(whole[i].end(), window[i].begin(), window[i].end());
+        }
     }
-    for (std::size_t i = 0; i < channels.size(); ++i) channels[i].health = accumulators[i].result();
+    for (std::size_t i = 0; i < channels.size(); ++i) {
+        channels[i].health = accumulators[i].result();
+        if (channels[i].creepJudged) channels[i].creep = dsp::findStepCreep(whole[i], stored[read[i]].sampleRate_hz);
+    }
     return channels;
 }
 
@@ -53,10 +70,8 @@ SignalQuality gatherSignalQuality(storage::SessionSource& store, const storage::
     quality.channelsLeftOut = judged - quality.channels.size();
     quality.setup = signal::signalSetupText(session.metadata.signalSetup);
     if (!perNewton_f || !(*perNewton_f > 0.0)) return quality;
-    const auto beam = std::ranges::find_if(quality.channels, [](const ChannelQuality& q) {
-        return q.channel.role == ChannelRole::Capacitance ||
-               (!q.channel.role && q.channel.kind == ChannelKind::Capacitance);
-    });
+    const auto beam =
+        std::ranges::find_if(quality.channels, [](const ChannelQuality& q) { return isBeamChannel(q.channel); });
     if (beam == quality.channels.end() || !std::isfinite(beam->health.noiseFloor_per_sqrt_hz)) return quality;
     const double rate_hz = stored.empty() ? 0.0 : stored.front().sampleRate_hz;
     quality.detection = DetectionLimits{

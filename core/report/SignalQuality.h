@@ -8,6 +8,7 @@
 
 #include "core/ChannelDescriptor.h"
 #include "core/dsp/SignalHealth.h"
+#include "core/dsp/StepCreep.h"
 #include "core/storage/SessionSource.h"
 
 #include <cstddef>
@@ -22,7 +23,19 @@ struct ChannelQuality {
     ChannelDescriptor channel;
     dsp::ChannelHealth health;
     bool drifts = true;  // its drift is a signal's (a position's is the probe moving)
+    // A capacitive beam's creep after its load steps: judged on a
+    // capacitance channel of at most kMostCreepSamples; none found, none.
+    bool creepJudged = false;
+    std::optional<dsp::StepCreep> creep = {};
 };
+
+// A capacitive beam's channel, whose creep is judged: by its role, or by
+// its kind where it has none.
+bool isBeamChannel(const ChannelDescriptor& channel);
+
+// The longest capacitance channel whose creep is judged (it is held whole:
+// 32 MB); an hour at 1 kHz is.
+inline constexpr std::uint64_t kMostCreepSamples = std::uint64_t{1} << 22;
 
 // A capacitive beam's detection limit two ways, in newtons: from the
 // recording's noise floor over the band it samples, 3·floor·√(f_s/2)/S
@@ -44,7 +57,8 @@ struct SignalQuality {
 };
 
 // Each stored channel's health over samples [first, end) (a probe's own
-// decisions left out), read in windows; the first `most` of them. Throws
+// decisions left out), read in windows, and a capacitance channel's creep;
+// the first `most` of them. Throws
 // storage::StorageError.
 std::vector<ChannelQuality> channelQuality(storage::SessionSource& store, std::int64_t session, std::uint64_t first,
                                            std::uint64_t end, std::size_t most = SIZE_MAX);

@@ -1,7 +1,11 @@
 // `tactiscope-cli spectrum`, `filter` and `health` on files and stored
 // sessions, through their contracts' keys, with values checked against
-// what was put into the files.
+// what was put into the files (a capacitive beam's creep against the
+// simulator's parameters).
+#include "core/SampleBlock.h"
+#include "devices/simulator/CapacitiveWeightsScenario.h"
 #include "support/CliRunner.h"
+#include "support/PdfText.h"
 #include "support/TextFiles.h"
 
 #include <QFile>
@@ -17,6 +21,7 @@
 #include <numbers>
 #include <random>
 
+using namespace tactiscope;
 using tactiscope::testing::CliResult;
 using tactiscope::testing::jsonOf;
 using tactiscope::testing::runCli;
@@ -236,4 +241,54 @@ TEST(SignalToolsCli, HealthNamesEachChannelsHumNoiseDriftAndClipping)
     const CliResult text = runCli({"health", csv});
     ASSERT_EQ(text.exitCode, 0);
     EXPECT_NE(text.out.indexOf("hum 50 Hz, "), -1) << text.out.toStdString();
+}
+
+TEST(SignalToolsCli, HealthReadsACapacitiveBeamsCreepAfterItsLoadSteps)
+{
+    // The simulator's weights, placed and taken off one by one, on a beam
+    // that creeps 5 % further with a 4 s time constant: the creep's share
+    // of a step and its time constant, each with its ±; the time constant
+    // is the simulator's parameter, not the fit's.
+    devices::simulator::CapacitiveWeightsParameters p;
+    p.protocol = devices::simulator::WeightProtocol::Individual;
+    p.weights_mgf = {50, 100, 150, 100, 50, 150};
+    p.dwell_s = 20.0;
+    p.creepFraction = 0.05;
+    p.seed = 3;
+    devices::simulator::CapacitiveWeightsScenario beam(p);
+    core::SampleBlock block(1, static_cast<std::size_t>(beam.duration_s() * p.sampleRate_hz), 0.0,
+                            1.0 / p.sampleRate_hz);
+    beam.generate(block);
+    QString text = "t [s],capacitance [pF]\n";
+    for (std::size_t i = 0; i < block.sampleCount(); ++i)
+        text += QString::number(static_cast<double>(i) / p.sampleRate_hz, 'f', 1) + ',' +
+                QString::number(block.channel(0)[i] * 1e12, 'f', 6) + '\n';
+    QTemporaryDir dir;
+    const QString csv = dir.filePath("beam.csv");
+    writeText(csv, text);
+    const CliResult run = runCli({"health", csv, "--json"});
+    ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
+    const QJsonObject c = QJsonDocument::fromJson(run.out.toUtf8()).array()[0].toObject();
+    ASSERT_TRUE(c["creep"].isObject()) << run.out.toStdString();
+    const QJsonObject creep = c["creep"].toObject();
+    EXPECT_EQ(creep["steps"].toInt(), 12);  // each weight on, and off
+    EXPECT_NEAR(creep["time_constant_s"].toDouble(), p.creepTime_s, 3.0 * creep["time_constant_s_u"].toDouble());
+    EXPECT_LT(creep["time_constant_s_u"].toDouble(), 1.0);
+    EXPECT_NEAR(creep["settle_time_s"].toDouble(), p.settleTime_s, 0.05);
+    // Of a step: 5 % of the settled load, its slow part referred to the
+    // onset (τ_c/(τ_c − τ_s) of it, sampled), over the step's 1.05.
+    const double share = 0.05 * p.creepTime_s / (p.creepTime_s - p.settleTime_s) / 1.05;
+    EXPECT_NEAR(creep["fraction"].toDouble(), share, 3.0 * creep["fraction_u"].toDouble() + 0.002);
+    const CliResult words = runCli({"health", csv});
+    ASSERT_EQ(words.exitCode, 0);
+    EXPECT_NE(words.out.indexOf("% of a step, τ "), -1) << words.out.toStdString();
+    // Imported, its report's signal quality says the same.
+    const QString db = dir.filePath("beam.tactiscope");
+    ASSERT_EQ(runCli({"import", csv, "--db", db}).exitCode, 0);
+    const QString pdf = dir.filePath("beam.pdf");
+    const CliResult report = runCli({"report", "--db", db, "--session", "last", "--output", pdf});
+    ASSERT_EQ(report.exitCode, 0) << report.err.toStdString();
+    const QString said = tactiscope::testing::pdfText(pdf).replace(QLatin1Char('\n'), QLatin1Char(' '));
+    EXPECT_TRUE(said.contains("Creep after a load step (capacitance)")) << said.toStdString();
+    EXPECT_TRUE(said.contains("% of the step, time constant")) << said.toStdString();
 }

@@ -40,6 +40,10 @@ QString signalQualitySection(const core::report::SignalQuality& quality)
                 text(quality.setup) + (quality.setup == "none" ? QString()
                                                                : QObject::tr(" (the samples are stored as they "
                                                                              "came; the filters are a setting)")));
+    for (const auto& q : quality.channels) {
+        if (!q.creepJudged) continue;
+        html += row(QObject::tr("Creep after a load step (%1)").arg(text(q.channel.name)), healthCreepText(q.creep));
+    }
     if (quality.detection) {
         const auto& d = quality.detection;
         const QString fromFloor = withUnit(significantText(d->fromNoiseFloor_n * 1e6, 3), QStringLiteral("µN"));

@@ -40,4 +40,18 @@ QStringList healthCells(const core::report::ChannelQuality& q)
     return {hum, floor, drift, clipped};
 }
 
+// "1.10 ± 0.08 % of the step, time constant 4.1 ± 0.5 s (29 steps; …)".
+QString healthCreepText(const std::optional<core::dsp::StepCreep>& creep)
+{
+    if (!creep)
+        return QObject::tr("none told from the noise (it needs load steps standing out of the noise, each held several "
+                           "of its time constants)");
+    const QString share = creep->fractionU ? valueWithErrorText(creep->fraction * 100.0, *creep->fractionU * 100.0)
+                                           : significantText(creep->fraction * 100.0, 2);
+    const QString steps = creep->steps == 1 ? QObject::tr("one step") : QObject::tr("%1 steps").arg(creep->steps);
+    return QObject::tr("%1 % of the step, time constant %2 s (%3 fitted; the beam itself settles in %4 s)")
+        .arg(share, valueWithErrorText(creep->timeConstant_s, creep->timeConstantU_s), steps,
+             significantText(creep->settleTime_s, 2));
+}
+
 }  // namespace tactiscope::ui

@@ -3,6 +3,7 @@
 
 #include "devices/session/LiveSession.h"
 #include "ui/common/DateText.h"
+#include "ui/common/StoreJobs.h"
 #include "ui/live/LiveStation.h"
 #include "ui/signal/HealthText.h"
 
@@ -14,9 +15,11 @@
 #include <QMainWindow>
 #include <QPushButton>
 #include <QTableWidget>
+#include <QThreadPool>
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -25,6 +28,12 @@ namespace {
 
 // The table at most once a second: the figures move slowly, the eye reads them.
 constexpr qint64 kRedraw_ms = 1000;
+// The table's column of each of healthCells' (hum, floor, drift, clipped).
+constexpr std::array<int, 4> kColumnOf{1, 2, 4, 3};
+// The drift is shown from this much of the signal on.
+constexpr int kFirstDrift_s = 30;
+// A beam's creep is fitted again after this much more of it (at least).
+constexpr double kCreepRefit_s = 10.0;
 // A gap longer than this is counted as this much missing: the drift's
 // clock keeps its intervals; a device silent for minutes is a restart.
 constexpr double kLongestGap_s = 10.0;
@@ -36,7 +45,8 @@ LiveHealth::LiveHealth(LiveStation& station, QMainWindow* window)
       m_station(station),
       m_dock(new QDockWidget(tr("Signal health"), window)),
       m_line(new QLabel),
-      m_table(new QTableWidget)
+      m_table(new QTableWidget),
+      m_creepLine(new QLabel)
 {
     m_dock->setObjectName(QStringLiteral("healthDock"));
     auto* panel = new QWidget;
@@ -52,11 +62,20 @@ LiveHealth::LiveHealth(LiveStation& station, QMainWindow* window)
     layout->addLayout(top);
     m_table->setObjectName(QStringLiteral("healthTable"));
     m_table->setColumnCount(5);
-    m_table->setHorizontalHeaderLabels(QStringList{tr("Channel")} + healthHeaders());
+    // Short titles for a dock's width, the report's in full as their tips;
+    // the drift, the widest, last, where the dock's edge cuts least.
+    m_table->setHorizontalHeaderLabels({tr("Channel"), tr("Hum"), tr("Noise floor"), tr("Clipped"), tr("Drift /h")});
+    const QStringList full = healthHeaders();
+    for (int c = 0; c < full.size(); ++c)
+        m_table->horizontalHeaderItem(kColumnOf[static_cast<std::size_t>(c)])->setToolTip(full[c]);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     layout->addWidget(m_table, 1);
+    m_creepLine->setObjectName(QStringLiteral("healthCreep"));
+    m_creepLine->setWordWrap(true);
+    m_creepLine->hide();  // for a beam
+    layout->addWidget(m_creepLine);
     auto* note = new QLabel(tr("Hum: the mains line's amplitude (flat-top). Noise floor: the median density above "
                                "1 Hz. Drift: a line through one-second means, ± u (k = 1)."));
     note->setWordWrap(true);
@@ -92,7 +111,12 @@ void LiveHealth::restart(const QString& since)
     m_sources.clear();
     m_accumulators.clear();
     m_channels.clear();
+    m_beamSamples.clear();
     m_samples = 0;
+    m_creepFittedAt = 0;
+    ++m_generation;
+    m_creepFitting = false;
+    m_creepLine->hide();
     m_since = since;
     const auto* live = m_station.device();
     if (!live) return;
@@ -116,6 +140,8 @@ void LiveHealth::restart(const QString& since)
             source.rows.push_back(static_cast<int>(m_channels.size()));
             m_accumulators.emplace_back(m_rate_hz, segment, interval, !position);
             m_channels.push_back({channel, {}, !position});
+            m_channels.back().creepJudged = core::report::isBeamChannel(channel);
+            m_beamSamples.emplace_back();
         }
         m_sources.push_back(std::move(source));
     };
@@ -151,8 +177,8 @@ void LiveHealth::read(Source& source)
     const auto pushRun = [&](std::size_t from, std::size_t to) {
         for (std::size_t c = 0; c < source.rows.size() && c < chunk.values.size(); ++c) {
             if (source.rows[c] < 0) continue;
-            m_accumulators[static_cast<std::size_t>(source.rows[c])].push(
-                std::span<const double>(chunk.values[c]).subspan(from, to - from));
+            keep(static_cast<std::size_t>(source.rows[c]),
+                 std::span<const double>(chunk.values[c]).subspan(from, to - from));
         }
     };
     std::size_t runStart = 0;
@@ -166,7 +192,7 @@ void LiveHealth::read(Source& source)
                 const std::vector<double> missing(static_cast<std::size_t>(std::min(lost, kLongestGap_s * m_rate_hz)),
                                                   std::numeric_limits<double>::quiet_NaN());
                 for (const int row : source.rows)
-                    if (row >= 0) m_accumulators[static_cast<std::size_t>(row)].push(missing);
+                    if (row >= 0) keep(static_cast<std::size_t>(row), missing);
             }
         }
         source.started = true;
@@ -176,6 +202,53 @@ void LiveHealth::read(Source& source)
     if (&source == &m_sources.front()) m_samples += n;
 }
 
+void LiveHealth::keep(std::size_t row, std::span<const double> values)
+{
+    m_accumulators[row].push(values);
+    if (!m_channels[row].creepJudged) return;
+    auto& kept = m_beamSamples[row];
+    if (kept.size() + values.size() > core::report::kMostCreepSamples) {
+        m_channels[row].creepJudged = false;  // too long to hold: no creep read, rather than a stale one
+        m_channels[row].creep.reset();
+        kept = {};
+        return;
+    }
+    kept.insert(kept.end(), values.begin(), values.end());
+}
+
+// Each beam's creep over its samples so far, on a worker thread; its
+// result is dropped if a restart came first.
+void LiveHealth::fitCreep()
+{
+    std::vector<std::pair<std::size_t, std::vector<double>>> beams;
+    for (std::size_t r = 0; r < m_channels.size(); ++r)
+        if (m_channels[r].creepJudged) beams.emplace_back(r, m_beamSamples[r]);
+    if (beams.empty() || m_creepFitting) return;
+    // Again after 10 s, or a tenth more of the record: a long one's fit is long.
+    const double due = std::max(kCreepRefit_s * m_rate_hz, 0.1 * static_cast<double>(m_creepFittedAt));
+    if (m_creepFittedAt > 0 && static_cast<double>(m_samples - m_creepFittedAt) < due) return;
+    m_creepFitting = true;
+    m_creepFittedAt = m_samples;
+    // `self` is only called back while `guard` says it lives (onGuiThread).
+    QThreadPool::globalInstance()->start([beams = std::move(beams), rate = m_rate_hz, generation = m_generation,
+                                          guard = QPointer<QObject>(this), self = this] {
+        std::vector<std::pair<std::size_t, std::optional<core::dsp::StepCreep>>> found;
+        for (const auto& [row, values] : beams) found.emplace_back(row, core::dsp::findStepCreep(values, rate));
+        detail::onGuiThread(guard, [self, generation, found = std::move(found)] {
+            if (self->m_generation != generation) return;
+            self->m_creepFitting = false;
+            QStringList lines;
+            for (const auto& [row, creep] : found) {
+                self->m_channels[row].creep = creep;
+                lines << tr("Creep after a load step (%1): %2")
+                             .arg(QString::fromStdString(self->m_channels[row].channel.name), healthCreepText(creep));
+            }
+            self->m_creepLine->setText(lines.join(QLatin1Char('\n')));
+            self->m_creepLine->show();
+        });
+    });
+}
+
 void LiveHealth::redraw()
 {
     m_sinceRedraw.restart();
@@ -183,9 +256,14 @@ void LiveHealth::redraw()
     m_line->setText(tr("Over %1 %2.").arg(durationText(static_cast<double>(m_samples) / m_rate_hz), m_since));
     for (std::size_t r = 0; r < m_channels.size(); ++r) {
         m_channels[r].health = m_accumulators[r].result();
-        const QStringList cells = healthCells(m_channels[r]);
-        for (int c = 0; c < cells.size(); ++c) m_table->item(static_cast<int>(r), c + 1)->setText(cells[c]);
+        QStringList cells = healthCells(m_channels[r]);
+        // A drift read over seconds is the noise's: its ± alone would fill the column.
+        if (m_channels[r].drifts && static_cast<double>(m_samples) < kFirstDrift_s * m_rate_hz)
+            cells[2] = tr("after %1 s").arg(kFirstDrift_s);
+        for (int c = 0; c < cells.size(); ++c)
+            m_table->item(static_cast<int>(r), kColumnOf[static_cast<std::size_t>(c)])->setText(cells[c]);
     }
+    fitCreep();
 }
 
 }  // namespace tactiscope::ui

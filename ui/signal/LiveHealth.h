@@ -2,10 +2,12 @@
 // device, and its filtered and math channels, judged as a report's
 // "Signal quality" judges a recording (core/dsp/SignalHealth: mains hum in
 // the channel's unit, noise floor, drift per hour with its ±, clipped
-// samples), over what came since the panel opened, the recording began or
-// the user pressed Restart. Samples are read at each poll while the dock
-// is shown and the table is redrawn once a second; samples the device lost
-// are counted as missing, never bridged.
+// samples; a capacitive beam's creep after its load steps), over what came
+// since the panel opened, the recording began or the user pressed Restart.
+// Samples are read at each poll while the dock is shown and the table is
+// redrawn once a second; samples the device lost are counted as missing,
+// never bridged. The creep's fit takes longer the longer the record: it
+// runs off the GUI thread, again after every 10 s of new samples.
 #pragma once
 
 #include "core/LiveBuffer.h"
@@ -17,6 +19,7 @@
 #include <QObject>
 
 #include <memory>
+#include <span>
 #include <vector>
 
 class QDockWidget;
@@ -54,12 +57,15 @@ private:
     void restart(const QString& since);
     void update();  // new samples in; the table once a second
     void read(Source& source);
+    void keep(std::size_t row, std::span<const double> values);
     void redraw();
+    void fitCreep();  // on a worker thread, when due
 
     LiveStation& m_station;
     QDockWidget* m_dock;
     QLabel* m_line;
     QTableWidget* m_table;
+    QLabel* m_creepLine;  // a beam's creep, under the table
     std::weak_ptr<const core::signal::SignalChain> m_chainSeen;
     std::vector<Source> m_sources;
     std::vector<core::dsp::HealthAccumulator> m_accumulators;  // a row each
@@ -68,6 +74,12 @@ private:
     QString m_since;
     std::uint64_t m_samples = 0;  // of the device's, since the restart
     QElapsedTimer m_sinceRedraw;
+    // A beam's samples since the restart, for its creep: a row each, empty
+    // but for a beam's (up to core::report::kMostCreepSamples).
+    std::vector<std::vector<double>> m_beamSamples;
+    std::uint64_t m_creepFittedAt = 0;  // m_samples when the last fit began
+    bool m_creepFitting = false;
+    std::uint64_t m_generation = 0;  // a restart's: an older fit's result is dropped
 };
 
 }  // namespace tactiscope::ui
