@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <map>
 #include <stdexcept>
 
 namespace tactiscope::core::derived {
@@ -68,12 +69,30 @@ void addRecordingLanes(
     for (std::size_t c = 0; c < channels.size(); ++c)
         if (std::ranges::find(added.replaced, c) == added.replaced.end()) push(stored(c, channels[c].descriptor));
     for (auto& lane : added.after) push(placed(std::move(lane)));
-    // The filtered and math channels it was recorded with, as the operator saw them.
-    if (options.raw) return;
-    std::string problem;
-    for (auto& lane : signal::recordedSignalLanes(store, session.id, problem)) push(placed(std::move(lane)));
-    if (!problem.empty())
+    const auto tell = [&](const std::string& problem) {
         result.problem += (result.problem.empty() ? "" : "; ") + (device.empty() ? "" : device + ": ") + problem;
+    };
+    // The filtered and math channels it was recorded with, as the operator saw them.
+    if (!options.raw) {
+        std::string problem;
+        for (auto& lane : signal::recordedSignalLanes(store, session.id, problem)) push(placed(std::move(lane)));
+        if (!problem.empty()) tell(problem);
+    }
+    // The reviewer's filters on its channels, the nth on a channel named so.
+    std::map<std::string, int> filtersOn;
+    for (const auto& filter : options.reviewFilters) {
+        for (std::size_t c = 0; c < channels.size(); ++c) {
+            const std::string& name = channels[c].descriptor.name;
+            if ((device.empty() ? name : device + "/" + name) != filter.channel) continue;
+            try {
+                push(placed(std::make_unique<signal::ReviewFilterLane>(
+                    store, session.id, c, channels[c].descriptor, channels[c].sampleRate_hz, filter.settings,
+                    signal::reviewFilterLaneName(name, ++filtersOn[name]))));
+            } catch (const std::invalid_argument& e) {
+                tell(name + " cannot be filtered so: " + e.what());
+            }
+        }
+    }
 }
 
 // A session of several devices: each device's lanes as its own recording

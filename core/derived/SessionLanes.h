@@ -10,6 +10,7 @@
 #include "core/Vocabulary.h"
 #include "core/calibration/CalibrationRecord.h"
 #include "core/derived/ModeLanes.h"
+#include "core/signal/ReviewFilterLane.h"
 #include "core/storage/SessionExport.h"
 #include "core/storage/SessionStore.h"
 #include "core/storage/TraceWindow.h"
@@ -38,6 +39,9 @@ struct LaneOptions {
     // A capacitive session read through another calibration record (a
     // re-analysis); none: the one recorded with it.
     std::optional<calibration::CalibrationRecord> capacitiveCalibration;
+    // Filters set in review, each a lane of its own after the others
+    // (core/signal/ReviewFilterLane.h); the stored samples are not changed.
+    std::vector<signal::ReviewFilter> reviewFilters;
 };
 
 // Throws storage::StorageError when the store cannot be read.

@@ -31,6 +31,7 @@
 #include "ui/review/ReviewActions.h"
 #include "ui/review/ReviewPlot.h"
 #include "ui/review/SessionTableModel.h"
+#include "ui/signal/ReviewFilterDialog.h"
 #include "ui/signal/ReviewSpectrum.h"
 
 #include <QAction>
@@ -62,6 +63,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <utility>
 
 namespace tactiscope::ui {
@@ -328,6 +330,34 @@ bool ReviewWindow::rebuildPlot()
     return true;
 }
 
+// The session's stored channels, by the names its lanes have.
+void ReviewWindow::addReviewFilter()
+{
+    std::vector<ReviewFilterDialog::Channel> channels;
+    try {
+        if (m_parts.empty()) {
+            for (const auto& c : m_store->channels(m_session.id))
+                channels.push_back({c.descriptor.name, c.sampleRate_hz});
+        } else {
+            for (const auto& part : m_parts)
+                for (const auto& c : m_store->channels(part.id))
+                    channels.push_back({part.deviceName + "/" + c.descriptor.name, c.sampleRate_hz});
+        }
+    } catch (const core::storage::StorageError& e) {
+        showProblem(tr("The channels cannot be read: %1").arg(text(e.what())));
+        return;
+    }
+    ReviewFilterDialog dialog(std::move(channels), this);
+    if (dialog.exec() != QDialog::Accepted) return;
+    const auto filter = dialog.filter();
+    if (!filter) return;
+    const QString problem =
+        changeLanes([&](core::derived::LaneOptions& options) { options.reviewFilters.push_back(*filter); });
+    if (!problem.isEmpty()) showProblem(problem);
+    m_clearFilters->setEnabled(!m_laneOptions.reviewFilters.empty());
+    refreshHeader();
+}
+
 QString ReviewWindow::changeLanes(const std::function<void(core::derived::LaneOptions&)>& change)
 {
     const core::derived::LaneOptions before = m_laneOptions;
@@ -385,6 +415,13 @@ void ReviewWindow::refreshHeader()
     }
     // The last decision says who the verdict is whose; the whole trail is a hover away.
     if (!trail.isEmpty()) header.back() += QStringLiteral(" (%1)").arg(trail.back().toHtmlEscaped());
+    // The reviewer's filters, by their lanes' names.
+    std::map<std::string, int> filtersOn;
+    for (const auto& filter : m_laneOptions.reviewFilters)
+        header << tr("in review %1: %2")
+                      .arg(text(core::signal::reviewFilterLaneName(filter.channel, ++filtersOn[filter.channel]))
+                               .toHtmlEscaped(),
+                           text(filter.settings.text()).toHtmlEscaped());
     m_header->setText(header.join(QStringLiteral(" · ")));
     m_header->setToolTip(trail.join(QLatin1Char('\n')));
 }
@@ -426,6 +463,15 @@ void ReviewWindow::createActions()
         dialog->show();
     });
     spectrum->setObjectName(QStringLiteral("reviewSpectrumAction"));
+    QAction* filter = signal->addAction(tr("&Filter a channel in review…"), this, &ReviewWindow::addReviewFilter);
+    filter->setObjectName(QStringLiteral("reviewFilterAction"));
+    m_clearFilters = signal->addAction(tr("&Remove the review filters"), this, [this] {
+        changeLanes([](core::derived::LaneOptions& options) { options.reviewFilters.clear(); });
+        m_clearFilters->setEnabled(false);
+        refreshHeader();
+    });
+    m_clearFilters->setObjectName(QStringLiteral("reviewFiltersClearAction"));
+    m_clearFilters->setEnabled(false);
 
     QToolBar* bar = addToolBar(tr("Review"));
     bar->setObjectName(QStringLiteral("reviewToolBar"));

@@ -89,6 +89,8 @@ signals:
     void sessionChanged();
 
 private:
+    // Signal ▸ Filter a channel in review…: a lane of the filtered channel.
+    void addReviewFilter();
     ReviewWindow(const QString& storePath, std::unique_ptr<core::storage::SessionSource> store,
                  core::storage::SessionSummary session, QWidget* parent);
     void createActions();
@@ -125,6 +127,7 @@ private:
     QString m_readProblem;  // the plot's, while shown
     QSpinBox* m_speed = nullptr;
     QAction* m_playAction = nullptr;
+    QAction* m_clearFilters = nullptr;  // Signal ▸ Remove the review filters
     QTimer m_replay;
     QElapsedTimer m_replayClock;
     double m_playhead_s = 0.0;
