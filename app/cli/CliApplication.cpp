@@ -49,7 +49,7 @@ constexpr std::array kCommands{
     Command{"record", "Record a probe on a serial port into a session store.", runRecord},
     Command{"report", "Write a session's inspection report as a PDF.", runReport},
     Command{"server", "Set up a site's central store on PostgreSQL.", runServer},
-    Command{"spectrum", "The power spectral density of a channel and its strongest lines.", runSpectrum},
+    Command{"spectrum", "A channel's spectral density (unit/√Hz) and its strongest lines.", runSpectrum},
     Command{"sync", "Send this station's sessions to a site's central store.", runSync},
     Command{"sessions", "List, show, export or delete the sessions of a store.", runSessions},
     Command{"shunt-check", "Check a strain channel's bridge with the probe's shunt.", runShuntCheck},

@@ -6,6 +6,8 @@
 #include "core/dsp/SignalHealth.h"
 #include "core/report/SignalQuality.h"
 #include "core/text/JsonWriter.h"
+#include "core/text/NumberFormat.h"
+#include "core/text/UncertaintyFormat.h"
 
 #include <QTextStream>
 
@@ -114,20 +116,27 @@ void printHealth(const QString& name, const std::vector<Row>& rows)
         if (std::isfinite(h.noiseFloor_per_sqrt_hz))
             out << ", noise floor " << number(h.noiseFloor_per_sqrt_hz * scale) << spaced << "/√Hz";
         else
-            out << ", noise floor: too short for a spectrum";
+            out << ", noise floor: no gap-free stretch long enough for a spectrum";
         if (h.drift)
-            out << ", drift " << number(h.drift->rate_per_s * kSecondsPerHour * scale) << " ± "
-                << number(h.drift->standardUncertainty_per_s * kSecondsPerHour * scale) << spaced << "/h";
+            out << ", drift "
+                << toQString(
+                       core::text::valueWithUncertainty(h.drift->rate_per_s * kSecondsPerHour * scale,
+                                                        h.drift->standardUncertainty_per_s * kSecondsPerHour * scale))
+                << spaced << "/h";
         else
             out << ", drift: too short";
         if (row.clippingJudged) out << ", " << h.clipped << " clipped";
         if (h.missing > 0) out << ", " << h.missing << " missing";
         if (row.creep) {
             const auto& c = *row.creep;
-            out << ", creep " << number(c.fraction * 100.0)
-                << (c.fractionU ? " ± " + number(*c.fractionU * 100.0) : QString()) << " % of a step, τ "
-                << number(c.timeConstant_s) << " ± " << number(c.timeConstantU_s) << " s (" << c.steps
-                << (c.steps == 1 ? " step)" : " steps)");
+            const std::string share = c.fractionU
+                                          ? core::text::valueWithUncertainty(c.fraction * 100.0, *c.fractionU * 100.0)
+                                          : core::text::formatShortest(std::round(c.fraction * 1000.0) / 10.0);
+            out << ", creep " << toQString(share) << " % of a step"
+                << (c.fractionU ? QString() : QStringLiteral(" (a ± needs three steps)")) << ", τ "
+                << toQString(core::text::valueWithUncertainty(c.timeConstant_s, c.timeConstantU_s)) << " s (" << c.steps
+                << (c.steps == 1 ? " step" : " steps") << "; the beam's own swing τ " << number(c.settleTime_s)
+                << " s)";
         } else if (row.creepJudged) {
             out << ", creep: none told from the noise";
         }

@@ -102,7 +102,8 @@ int runSpectrum(const QStringList& arguments)
     const QString name = QStringLiteral("spectrum");
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
-        "The spectrum of one channel: Welch's power spectral density (unit/√Hz) over half-overlapping segments, "
+        "The spectrum of one channel: Welch's spectral density as an amplitude (unit/√Hz, the square root of the "
+        "one-sided power spectral density; psd_per_sqrt_hz in the JSON) over half-overlapping segments, "
         "each within one gap-free stretch (a gap is never bridged), and the strongest lines with their amplitude "
         "read through a flat-top window. FILE.csv is read as import reads it; --db and --session read a stored "
         "session instead."));

@@ -56,6 +56,10 @@ std::optional<std::string> filterRefusal(const FilterSettings& settings, double 
     if (!kMovingAverageRange.holds(settings.movingAverage_s))
         return "a moving average is " + kMovingAverageRange.text() + " long, not " +
                text::formatShortest(settings.movingAverage_s) + " s";
+    // Rounded to whole samples, as the filter takes it: one sample averages nothing.
+    if (settings.movingAverage_s > 0.0 && std::llround(settings.movingAverage_s * sampleRate_hz) < 2)
+        return "a moving average of " + text::formatShortest(settings.movingAverage_s * 1e3) +
+               " ms is shorter than two samples at " + hertz(sampleRate_hz) + ": it would average nothing";
     return std::nullopt;
 }
 

@@ -28,6 +28,7 @@ struct Step {
     std::size_t first = 0;  // its first sample after the onset
     std::size_t end = 0;    // one past its last
     double onset_s = 0.0;
+    bool seen = true;  // its onset was sampled (not in a gap, where it is unknown)
 };
 
 // A sample's noise σ from the first differences (median absolute, Gaussian):
@@ -50,34 +51,48 @@ double meanOf(std::span<const double> x, std::size_t from, std::size_t to)
     return n > 0 ? sum / static_cast<double>(n) : std::numeric_limits<double>::quiet_NaN();
 }
 
-// The steps: where the mean of the next m samples leaves the mean of the m
-// before by kStepSigmas; the onset is the sample before the first one that
-// leaves the level of the second before it. Another step is looked for
-// only kShortestFit_s after an onset, past the fast part's swing.
+// The steps: where the mean of the next m present samples leaves the mean
+// of the m before by kStepSigmas (present ones: a gap does not hide a step
+// behind it); the onset is the sample before the first one that leaves the
+// level of the second before it. Another step is looked for only
+// kShortestFit_s after an onset, past the fast part's swing.
 std::vector<Step> findSteps(std::span<const double> x, double rate_hz, double sigma)
 {
     const auto m = static_cast<std::size_t>(std::max(2.0, std::round(0.2 * rate_hz)));
     const auto levelSamples = static_cast<std::size_t>(std::max(3.0, std::round(rate_hz)));
     const auto deadSamples = static_cast<std::size_t>(std::ceil(kShortestFit_s * rate_hz));
     const double threshold = kStepSigmas * sigma * std::sqrt(2.0 / static_cast<double>(m));
+    // The present samples' places, and running sums over them: each
+    // window's mean in two subtractions, however long the windows.
+    std::vector<std::size_t> at;
+    std::vector<double> sums{0.0};
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        if (!std::isfinite(x[i])) continue;
+        at.push_back(i);
+        sums.push_back(sums.back() + x[i]);
+    }
+    const auto mean = [&](std::size_t from, std::size_t to) {  // over present samples [from, to)
+        return (sums[to] - sums[from]) / static_cast<double>(to - from);
+    };
     std::vector<Step> steps;
-    std::size_t allowedFrom = m;
+    std::size_t allowedFrom = m;  // a present sample's number
     std::size_t levelFrom = 0;
-    for (std::size_t i = allowedFrom; i + m <= x.size(); ++i) {
-        if (i < allowedFrom) continue;
-        const double jump = meanOf(x, i, i + m) - meanOf(x, i - m, i);
-        if (!(std::fabs(jump) > threshold)) continue;
+    for (std::size_t k = allowedFrom; k + m <= at.size(); ++k) {
+        if (k < allowedFrom || at[k] < (steps.empty() ? 0 : steps.back().first + deadSamples)) continue;
+        if (!(std::fabs(mean(k, k + m) - mean(k - m, k)) > threshold)) continue;
         // The level before it, and its first sample off that level.
-        const std::size_t levelEnd = i - std::min(i, m);
+        const std::size_t levelEnd = k - m;
         const std::size_t levelStart = std::max(levelFrom, levelEnd - std::min(levelEnd, levelSamples));
-        const double level = meanOf(x, levelStart, levelEnd);
-        std::size_t first = levelEnd;
-        while (first < i + m && !(std::fabs(x[first] - level) > kOnsetSigmas * sigma)) ++first;
-        if (first == 0 || first >= i + m) continue;
-        steps.push_back({first, x.size(), static_cast<double>(first - 1) / rate_hz});
+        if (levelStart >= levelEnd) continue;
+        const double level = mean(levelStart, levelEnd);
+        std::size_t moved = levelEnd;
+        while (moved < k + m && !(std::fabs(x[at[moved]] - level) > kOnsetSigmas * sigma)) ++moved;
+        if (moved >= k + m || at[moved] == 0) continue;
+        const std::size_t first = at[moved];
+        steps.push_back({first, x.size(), static_cast<double>(first - 1) / rate_hz, std::isfinite(x[first - 1])});
         if (steps.size() > 1) steps[steps.size() - 2].end = first;  // the onset's sample is the step's before
-        allowedFrom = first + deadSamples;
-        levelFrom = allowedFrom - std::min(allowedFrom, levelSamples);
+        allowedFrom = moved + 1;
+        levelFrom = moved + 1;
     }
     return steps;
 }
@@ -268,7 +283,9 @@ std::optional<StepCreep> findStepCreep(std::span<const double> values, double ra
     std::vector<Step> steps;
     for (const Step& step : findSteps(values, rate_hz, sigma)) {
         const std::size_t n = step.end - step.first;
-        if (n >= kFewestSamples && static_cast<double>(n) / rate_hz >= kShortestFit_s) steps.push_back(step);
+        // A step whose onset fell in a gap is not fitted: where it began is unknown.
+        if (step.seen && n >= kFewestSamples && static_cast<double>(n) / rate_hz >= kShortestFit_s)
+            steps.push_back(step);
     }
     if (steps.empty()) return std::nullopt;
     std::vector<double> lengths;

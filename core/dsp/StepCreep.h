@@ -32,7 +32,7 @@ struct StepCreep {
 
 // Samples at `sampleRate_hz` (NaN where missing). None without a step
 // fitted (one standing 8 σ out of the noise, with 2 s and 10 samples after
-// it before the next), or when the creep cannot be told from the noise:
+// it before the next, whose onset is not in a gap), or when the creep cannot be told from the noise:
 // its time constant at the search's bounds, under three times the fast
 // part's or known to no better than half, or its share within twice its
 // ± (or half the step or more: that is the beam settling).

@@ -305,8 +305,10 @@ std::unique_ptr<QTextDocument> buildReportDocument(const core::report::ReportDat
     const QUrl plotUrl(QStringLiteral("tactiscope://plot.png"));
     document->addResource(QTextDocument::ImageResource, plotUrl,
                           renderReportPlot(data, QSize(kTextWidth_px, plotHeight), kReportImageScale));
-    QString html = QStringLiteral("<h1>%1</h1>")
-                       .arg(QObject::tr("Inspection report — %1").arg(orDash(data.session.metadata.subject)));
+    // Titled by its subject, or by its number where it has none (not "— —").
+    const QString titled = data.session.metadata.subject.empty() ? QObject::tr("session %1").arg(data.session.id)
+                                                                 : text(data.session.metadata.subject);
+    QString html = QStringLiteral("<h1>%1</h1>").arg(QObject::tr("Inspection report — %1").arg(titled));
     html += header(data);
     html += verdict(data);
     html += QStringLiteral("<p><img src='%1' width=%2 height=%3></p>")

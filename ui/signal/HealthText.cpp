@@ -28,7 +28,7 @@ QStringList healthCells(const core::report::ChannelQuality& q)
         std::isfinite(h.noiseFloor_per_sqrt_hz)
             ? withUnit(significantText(h.noiseFloor_per_sqrt_hz * unit.scale, 3),
                        (unit.symbol.isEmpty() ? QStringLiteral("1") : unit.symbol) + QStringLiteral("/√Hz"))
-            : QObject::tr("too short");
+            : QObject::tr("no gap-free stretch long enough");
     QString drift = QObject::tr("too short");
     if (!q.drifts)
         drift = QObject::tr("— (a position)");
@@ -46,10 +46,12 @@ QString healthCreepText(const std::optional<core::dsp::StepCreep>& creep)
     if (!creep)
         return QObject::tr("none told from the noise (it needs load steps standing out of the noise, each held several "
                            "of its time constants)");
-    const QString share = creep->fractionU ? valueWithErrorText(creep->fraction * 100.0, *creep->fractionU * 100.0)
-                                           : significantText(creep->fraction * 100.0, 2);
+    const QString share =
+        creep->fractionU ? valueWithErrorText(creep->fraction * 100.0, *creep->fractionU * 100.0) + " %"
+                         : QObject::tr("%1 % (a ± needs three steps)").arg(significantText(creep->fraction * 100.0, 2));
     const QString steps = creep->steps == 1 ? QObject::tr("one step") : QObject::tr("%1 steps").arg(creep->steps);
-    return QObject::tr("%1 % of the step, time constant %2 s (%3 fitted; the beam itself settles in %4 s)")
+    return QObject::tr("%1 of the step, time constant %2 s (%3 fitted; the beam's own swing has a time constant "
+                       "of %4 s)")
         .arg(share, valueWithErrorText(creep->timeConstant_s, creep->timeConstantU_s), steps,
              significantText(creep->settleTime_s, 2));
 }

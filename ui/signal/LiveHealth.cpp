@@ -220,13 +220,14 @@ void LiveHealth::keep(std::size_t row, std::span<const double> values)
 // result is dropped if a restart came first.
 void LiveHealth::fitCreep()
 {
+    // After 10 s, and again after 10 s more or a tenth more of the record:
+    // a long one's fit is long.
+    const double due = std::max(kCreepRefit_s * m_rate_hz, 0.1 * static_cast<double>(m_creepFittedAt));
+    if (m_creepFitting || static_cast<double>(m_samples - m_creepFittedAt) < due) return;
     std::vector<std::pair<std::size_t, std::vector<double>>> beams;
     for (std::size_t r = 0; r < m_channels.size(); ++r)
         if (m_channels[r].creepJudged) beams.emplace_back(r, m_beamSamples[r]);
-    if (beams.empty() || m_creepFitting) return;
-    // Again after 10 s, or a tenth more of the record: a long one's fit is long.
-    const double due = std::max(kCreepRefit_s * m_rate_hz, 0.1 * static_cast<double>(m_creepFittedAt));
-    if (m_creepFittedAt > 0 && static_cast<double>(m_samples - m_creepFittedAt) < due) return;
+    if (beams.empty()) return;
     m_creepFitting = true;
     m_creepFittedAt = m_samples;
     // `self` is only called back while `guard` says it lives (onGuiThread).

@@ -34,7 +34,7 @@ ReviewFilterDialog::ReviewFilterDialog(std::vector<Channel> channels, QWidget* p
     setWindowTitle(tr("Filter a channel in review"));
     for (const Channel& channel : m_channels) m_channel->addItem(QString::fromStdString(channel.name));
     m_channel->setObjectName(QStringLiteral("reviewFilterChannel"));
-    m_notch->addItems({tr("none"), tr("50 Hz and harmonics"), tr("60 Hz and harmonics")});
+    m_notch->addItems({tr("off"), tr("50 Hz and harmonics"), tr("60 Hz and harmonics")});
     m_notch->setObjectName(QStringLiteral("reviewFilterNotch"));
     for (QDoubleSpinBox* cutoff : {m_highpass, m_lowpass}) {
         cutoff->setRange(0.0, 1e6);

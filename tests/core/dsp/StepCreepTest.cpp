@@ -119,7 +119,14 @@ TEST(StepCreep, MissingSamplesAreLeftOutNotBridged)
     const Beam beam{.creepShare = 0.05};
     auto y = recording(beam, staircase(), 20.0, 9);
     for (std::size_t i = 400; i < 430; ++i) y[i] = std::numeric_limits<double>::quiet_NaN();
-    const auto creep = findStepCreep(y, beam.rate_hz);
+    auto creep = findStepCreep(y, beam.rate_hz);
     ASSERT_TRUE(creep.has_value());
+    EXPECT_NEAR(creep->timeConstant_s, 4.0, 3.0 * creep->timeConstantU_s);
+    // A gap over a step's onset (the third step, at 50 s): that step is
+    // left out, where it began being unknown, and the others still read.
+    for (std::size_t i = 495; i < 510; ++i) y[i] = std::numeric_limits<double>::quiet_NaN();
+    creep = findStepCreep(y, beam.rate_hz);
+    ASSERT_TRUE(creep.has_value());
+    EXPECT_EQ(creep->steps, 19u);
     EXPECT_NEAR(creep->timeConstant_s, 4.0, 3.0 * creep->timeConstantU_s);
 }
