@@ -9,19 +9,24 @@
 //    flat-top lines), against the display's own frame work on the same
 //    points (min/max decimation to 1,600 columns);
 //  - one channel's health over an hour at 1 kHz, against reading the same
-//    samples' sum (a pass over them).
+//    samples' sum (a pass over them);
+//  - a capacitive beam's creep over an hour at 10 Hz of load steps every
+//    20 s, against the health of the same hour.
 // Run: tactiscope_signal_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include "EightChannelStream.h"
 #include "core/LiveBuffer.h"
 #include "core/SampleBlock.h"
 #include "core/dsp/ChannelFilter.h"
 #include "core/dsp/SignalHealth.h"
+#include "core/dsp/StepCreep.h"
 #include "core/dsp/WelchSpectrum.h"
 #include "core/signal/MinMaxDecimation.h"
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <numeric>
+#include <random>
 #include <vector>
 
 namespace {
@@ -155,6 +160,45 @@ void BM_HealthOfAnHour(benchmark::State& state)
     }
 }
 BENCHMARK(BM_HealthOfAnHour)->Unit(benchmark::kMillisecond);
+
+// An hour of a beam at 10 Hz: a weight on or off every 20 s, settling with
+// 0.4 s and creeping 5 % further with 4 s, under white noise of 1 % of a step.
+std::vector<double> hourOfSteps()
+{
+    constexpr double rate = 10.0, dt = 1.0 / rate;
+    const double settle = 1.0 - std::exp(-dt / 0.4), creep = 1.0 - std::exp(-dt / 4.0);
+    std::mt19937_64 random(1);
+    std::normal_distribution<double> noise(0.0, 1.0);
+    std::vector<double> y(3600 * 10);
+    double settled = 0.0, crept = 0.0;
+    for (std::size_t i = 0; i < y.size(); ++i) {
+        const auto step = static_cast<int>(static_cast<double>(i) * dt / 20.0);
+        const double load = step % 2 ? 100.0 * (step % 7 + 1) : 0.0;
+        settled += (load - settled) * settle;
+        crept += (0.05 * settled - crept) * creep;
+        y[i] = settled + crept + noise(random);
+    }
+    return y;
+}
+
+// Baseline: the same hour's health.
+void BM_HealthOfAnHourOfSteps(benchmark::State& state)
+{
+    const auto hour = hourOfSteps();
+    for (auto _ : state) {
+        core::dsp::HealthAccumulator health(10.0, hour.size());
+        health.push(hour);
+        benchmark::DoNotOptimize(health.result().noiseFloor_per_sqrt_hz);
+    }
+}
+BENCHMARK(BM_HealthOfAnHourOfSteps)->Unit(benchmark::kMillisecond);
+
+void BM_CreepOfAnHourOfSteps(benchmark::State& state)
+{
+    const auto hour = hourOfSteps();
+    for (auto _ : state) benchmark::DoNotOptimize(core::dsp::findStepCreep(hour, 10.0));
+}
+BENCHMARK(BM_CreepOfAnHourOfSteps)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
