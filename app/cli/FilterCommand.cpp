@@ -40,6 +40,9 @@ std::optional<QString> readOptions(const QCommandLineParser& parser, FilterOptio
     FilterSettings& s = options.settings;
     if (auto error = readFilterSettings(parser, s)) return error;
     s.zeroPhase = parser.isSet(QStringLiteral("zero-phase"));
+    if (s.empty() && parser.isSet(QStringLiteral("moving-average")))
+        return QStringLiteral("filter: a moving average of 0 s is none: give it a length, or --notch, --lowpass or "
+                              "--highpass");
     if (s.empty()) return QStringLiteral("filter: give --notch, --lowpass, --highpass or --moving-average");
     return std::nullopt;
 }

@@ -37,7 +37,10 @@ std::optional<QString> readFilterSettings(const QCommandLineParser& parser, core
         if (!*cutoff) return error;
     }
     const auto order = numberInRange(parser, "order", core::kFilterOrderRange, 4.0, error);
-    if (!order || *order != std::floor(*order)) return error.isEmpty() ? QStringLiteral("--order is 2 to 8") : error;
+    if (!order || *order != std::floor(*order))
+        return error.isEmpty() ? QStringLiteral("--order is a whole number, 2 to 8, not %1")
+                                     .arg(parser.value(QStringLiteral("order")))
+                               : error;
     s.order = static_cast<int>(*order);
     const auto average = numberInRange(parser, "moving-average", core::kMovingAverageRange, 0.0, error);
     if (!average) return error;

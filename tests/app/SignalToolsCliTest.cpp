@@ -189,6 +189,17 @@ TEST(SignalToolsCli, FilterZeroPhaseAndBandsAndRefusals)
     const CliResult time = runCli({"filter", csv, "--channel", "t", "--lowpass", "10", "--output", out});
     EXPECT_EQ(time.exitCode, 2);
     EXPECT_NE(time.err.indexOf("is the time column"), -1) << time.err.toStdString();
+    // Each refusal says what was wrong with what was given.
+    for (const auto& [bad, said] :
+         {std::pair{QStringList{"--order", "3.5", "--lowpass", "10"},
+                    QStringLiteral("a whole number, 2 to 8, not 3.5")},
+          std::pair{QStringList{"--moving-average", "0"}, QStringLiteral("a moving average of 0 s is none")},
+          std::pair{QStringList{"--moving-average", "0.001"}, QStringLiteral("shorter than two samples at 1000 Hz")}}) {
+        const CliResult refused =
+            runCli(QStringList{"filter", csv, "--channel", "f", "--output", dir.filePath("x.csv")} + bad);
+        EXPECT_EQ(refused.exitCode, 2) << bad.join(' ').toStdString();
+        EXPECT_NE(refused.err.indexOf(said), -1) << refused.err.toStdString();
+    }
 }
 
 TEST(SignalToolsCli, RatesAStoreCannotHoldAndAveragesThatDoNotFitAreSaid)
