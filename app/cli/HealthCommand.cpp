@@ -153,10 +153,9 @@ int runHealth(const QStringList& arguments)
     parser.setApplicationDescription(QStringLiteral(
         "Each channel's signal health: mains hum (50 or 60 Hz, its amplitude in the channel's unit), noise floor "
         "(median amplitude spectral density above 1 Hz), drift per hour with its standard uncertainty (a line "
-        "through 100 interval means), and clipped samples; for a capacitive beam, the creep after its load steps (its "
-        "share of a step and its time constant, each with its standard uncertainty). FILE.csv is read as import reads "
-        "it; --db and "
-        "--session read a stored session instead."));
+        "through 100 interval means), and clipped samples; for a capacitive beam, the creep after its load steps "
+        "(its share of a step and its time constant, each with its standard uncertainty). FILE.csv is read as "
+        "import reads it; --db and --session read a stored session instead."));
     parser.addPositionalArgument(QStringLiteral("FILE.csv"), QStringLiteral("The recording."));
     parser.addOption({QStringLiteral("json"),
                       QStringLiteral("Print JSON: per channel channel, unit, hum_hz, hum_amplitude, noise_floor, "

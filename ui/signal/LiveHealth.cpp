@@ -119,7 +119,9 @@ void LiveHealth::restart(const QString& since)
     m_creepLine->hide();
     m_since = since;
     const auto* live = m_station.device();
-    if (!live) return;
+    // Hidden, it builds nothing (an accumulator plans its FFT): update()
+    // starts it once the panel shows, "since" as said here.
+    if (!live || !m_dock->isVisible()) return;
     m_rate_hz = live->source().nominalSampleRate_hz();
     const auto chain = live->signalChain();
     m_chainSeen = chain;
