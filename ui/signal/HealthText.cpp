@@ -33,8 +33,8 @@ QStringList healthCells(const core::report::ChannelQuality& q)
     if (!q.drifts)
         drift = QObject::tr("— (a position)");
     else if (h.drift)
-        drift = withUnit(significantText(h.drift->rate_per_s * 3600.0 * unit.scale, 3) + QStringLiteral(" ± ") +
-                             significantText(h.drift->standardUncertainty_per_s * 3600.0 * unit.scale, 2),
+        drift = withUnit(valueWithErrorText(h.drift->rate_per_s * 3600.0 * unit.scale,
+                                            h.drift->standardUncertainty_per_s * 3600.0 * unit.scale),
                          unit.symbol + QStringLiteral("/h"));
     const QString clipped = q.drifts ? QString::number(h.clipped) : QStringLiteral("—");
     return {hum, floor, drift, clipped};
