@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <functional>
-#include <map>
 #include <stdexcept>
 
 namespace tactiscope::core::derived {
@@ -78,16 +77,18 @@ void addRecordingLanes(
         for (auto& lane : signal::recordedSignalLanes(store, session.id, problem)) push(placed(std::move(lane)));
         if (!problem.empty()) tell(problem);
     }
-    // The reviewer's filters on its channels, the nth on a channel named so.
-    std::map<std::string, int> filtersOn;
-    for (const auto& filter : options.reviewFilters) {
+    // The reviewer's filters on its channels, each lane named as the review names it.
+    const auto laneNames = signal::reviewFilterLaneNames(options.reviewFilters);
+    for (std::size_t k = 0; k < options.reviewFilters.size(); ++k) {
+        const auto& filter = options.reviewFilters[k];
         for (std::size_t c = 0; c < channels.size(); ++c) {
             const std::string& name = channels[c].descriptor.name;
             if ((device.empty() ? name : device + "/" + name) != filter.channel) continue;
             try {
+                // placed() adds the DEVICE/ the full name already has.
                 push(placed(std::make_unique<signal::ReviewFilterLane>(
                     store, session.id, c, channels[c].descriptor, channels[c].sampleRate_hz, filter.settings,
-                    signal::reviewFilterLaneName(name, ++filtersOn[name]))));
+                    laneNames[k].substr(device.empty() ? 0 : device.size() + 1))));
             } catch (const std::invalid_argument& e) {
                 tell(name + " cannot be filtered so: " + e.what());
             }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 namespace tactiscope::core::signal {
@@ -17,9 +18,15 @@ constexpr std::uint64_t kLongestSettling = std::uint64_t{1} << 22;
 
 }  // namespace
 
-std::string reviewFilterLaneName(const std::string& channel, int nth)
+std::vector<std::string> reviewFilterLaneNames(const std::vector<ReviewFilter>& filters)
 {
-    return channel + ".review" + (nth > 1 ? std::to_string(nth) : std::string());
+    std::map<std::string, int> filtersOn;
+    std::vector<std::string> names;
+    for (const auto& filter : filters) {
+        const int nth = ++filtersOn[filter.channel];
+        names.push_back(filter.channel + ".review" + (nth > 1 ? std::to_string(nth) : std::string()));
+    }
+    return names;
 }
 
 std::uint64_t settlingSamples(const dsp::FilterSettings& settings, double sampleRate_hz)

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace tactiscope::core::signal {
 
@@ -25,8 +26,9 @@ struct ReviewFilter {
     friend bool operator==(const ReviewFilter&, const ReviewFilter&) = default;
 };
 
-// "a.review", then "a.review2", … for the `nth` (from 1) filter on a channel.
-std::string reviewFilterLaneName(const std::string& channel, int nth);
+// Each filter's lane name, in order: "a.review", then "a.review2", … for
+// the second on the same channel (DEVICE/a.review in a session of several).
+std::vector<std::string> reviewFilterLaneNames(const std::vector<ReviewFilter>& filters);
 
 class ReviewFilterLane final : public storage::LaneSource {
 public:

@@ -63,7 +63,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <utility>
 
 namespace tactiscope::ui {
@@ -416,12 +415,11 @@ void ReviewWindow::refreshHeader()
     // The last decision says who the verdict is whose; the whole trail is a hover away.
     if (!trail.isEmpty()) header.back() += QStringLiteral(" (%1)").arg(trail.back().toHtmlEscaped());
     // The reviewer's filters, by their lanes' names.
-    std::map<std::string, int> filtersOn;
-    for (const auto& filter : m_laneOptions.reviewFilters)
+    const auto laneNames = core::signal::reviewFilterLaneNames(m_laneOptions.reviewFilters);
+    for (std::size_t k = 0; k < laneNames.size(); ++k)
         header << tr("in review %1: %2")
-                      .arg(text(core::signal::reviewFilterLaneName(filter.channel, ++filtersOn[filter.channel]))
-                               .toHtmlEscaped(),
-                           text(filter.settings.text()).toHtmlEscaped());
+                      .arg(text(laneNames[k]).toHtmlEscaped(),
+                           text(m_laneOptions.reviewFilters[k].settings.text()).toHtmlEscaped());
     m_header->setText(header.join(QStringLiteral(" · ")));
     m_header->setToolTip(trail.join(QLatin1Char('\n')));
 }
