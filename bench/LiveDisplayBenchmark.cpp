@@ -6,6 +6,8 @@
 //  - one frame of LivePlotWidget (take 25 ms of new samples, min/max
 //    decimate to the pixel columns, replot), against the baseline of handing
 //    QCustomPlot every sample of the 8 × 2 kHz window and replotting;
+//  - the traces alone drawn as pixel columns into an opaque image, against
+//    QCustomPlot's polylines on its transparent buffer;
 //  - 10 s of real time with a feeder thread writing 5 ms blocks into the
 //    LiveBuffer, as the acquisition does, and the widget on its own frame
 //    timer: the GUI thread's CPU time over wall time, frames drawn, and the
@@ -24,6 +26,8 @@
 #include "core/SampleBlock.h"
 #include "core/signal/SignalChain.h"
 #include "ui/plot/LivePlotWidget.h"
+#include "ui/plot/OpaqueCustomPlot.h"
+#include "ui/plot/PixelColumnGraph.h"
 
 #include <benchmark/benchmark.h>
 #include <qcustomplot.h>
@@ -37,6 +41,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <memory>
 #include <thread>
 #include <unistd.h>
 #include <vector>
@@ -122,6 +127,42 @@ void BM_RawQCustomPlotFrame(benchmark::State& state)
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kFrameSamples * kChannels));
 }
 BENCHMARK(BM_RawQCustomPlotFrame)->Unit(benchmark::kMillisecond);
+
+// Drawing the traces alone, as a live frame has them: 16 traces of 3 024
+// min/max points (two per pixel column) in one 1600 × 900 lane, replotted
+// into QCustomPlot's paint buffer and painted onto the widget. Arg 0:
+// QCustomPlot's graphs stroked as polylines on its transparent buffer, the
+// baseline; 1: the live view's PixelColumnGraph on its OpaqueCustomPlot.
+void BM_TraceDrawing(benchmark::State& state)
+{
+    const bool columns = state.range(0) != 0;
+    std::unique_ptr<QCustomPlot> plot(columns ? new ui::OpaqueCustomPlot : new QCustomPlot);
+    plot->resize(1600, 900);
+    plot->show();
+    plot->setPlottingHint(QCP::phFastPolylines, false);
+    plot->setNotAntialiasedElements(QCP::aePlottables | QCP::aeGrid);
+    constexpr int kTraces = 16;
+    constexpr int kColumns = 1512;
+    QVector<double> keys(2 * kColumns);
+    for (int i = 0; i < 2 * kColumns; ++i) keys[i] = (i / 2) * kWindow_s / kColumns;
+    for (int c = 0; c < kTraces; ++c) {
+        QCPGraph* graph = columns ? new ui::PixelColumnGraph(plot->xAxis, plot->yAxis) : plot->addGraph();
+        graph->setPen(QPen(QColor::fromHsv(c * 22, 255, 200), 1.0));
+        graph->setAdaptiveSampling(false);
+        QVector<double> values(2 * kColumns);
+        for (int i = 0; i < 2 * kColumns; ++i) {  // a column's min then its max, as the decimation gives them
+            const double t = keys[i];
+            const double slow = 80.0 * std::sin(2.0 * M_PI * 0.318 * (c + 1) * t);
+            values[i] = slow + (i % 2 == 0 ? -5.0 : 5.0);
+        }
+        graph->setData(keys, values, true);
+    }
+    plot->xAxis->setRange(0.0, kWindow_s);
+    plot->yAxis->setRange(-110.0, 110.0);
+    for (auto _ : state) plot->replot(QCustomPlot::rpImmediateRefresh);  // the paint onto the widget included
+    state.SetItemsProcessed(state.iterations() * kTraces * 2 * kColumns);
+}
+BENCHMARK(BM_TraceDrawing)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // Every channel through a mains notch and a 4th-order low-pass at a tenth
 // of the rate, as a press line's operator would set them (issue 57).

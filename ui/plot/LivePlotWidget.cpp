@@ -5,8 +5,8 @@
 #include "core/signal/ScrollingMinMax.h"
 #include "ui/common/DisplayUnits.h"
 #include "ui/plot/AxisTicks.h"
-
-#include <qcustomplot.h>
+#include "ui/plot/OpaqueCustomPlot.h"
+#include "ui/plot/PixelColumnGraph.h"
 
 #include <QHelpEvent>
 #include <QLabel>
@@ -66,7 +66,7 @@ private:
 
 LivePlotWidget::LivePlotWidget(QWidget* parent)
     : QWidget(parent),
-      m_plot(new QCustomPlot(this))
+      m_plot(new OpaqueCustomPlot(this))
 {
     m_plot->installEventFilter(this);
     auto* layout = new QVBoxLayout(this);
@@ -219,7 +219,7 @@ void LivePlotWidget::buildPlotItems(const std::vector<core::ChannelDescriptor>& 
             }
         }
         QCPAxisRect* rect = m_lanes[lane].rect;
-        QCPGraph* graph = m_plot->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+        QCPGraph* graph = new PixelColumnGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
         graph->setName(QString::fromStdString(channels[c].name));
         graph->setPen(QPen(QColor(kTraceColours[c % kTraceColours.size()]), 1.0));
         graph->setAdaptiveSampling(false);  // we decimate ourselves
