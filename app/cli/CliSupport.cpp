@@ -115,6 +115,13 @@ QString quoted(const QString& value)
     return toQString(core::text::quoteShort(value.toStdString()));
 }
 
+std::optional<std::pair<std::string, std::string>> deviceAndChannel(const std::string& key)
+{
+    const auto slash = key.find('/');
+    if (slash == std::string::npos || slash == 0 || slash + 1 == key.size()) return std::nullopt;
+    return std::pair{key.substr(0, slash), key.substr(slash + 1)};
+}
+
 std::optional<double> numberInRange(const QCommandLineParser& parser, const char* option,
                                     const core::NumberRange& range, double fallback, QString& error)
 {

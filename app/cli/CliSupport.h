@@ -15,7 +15,9 @@
 #include <QStringList>
 
 #include <optional>
+#include <string>
 #include <string_view>
+#include <utility>
 
 namespace tactiscope::cli {
 
@@ -76,6 +78,9 @@ int exitForReadError(const QString& path);
 // A value the user gave, quoted for a message: whole when short, else its
 // first 40 characters and its length (core/text/ShortQuote.h).
 QString quoted(const QString& value);
+
+// "DEVICE/CHANNEL" split at its first '/'; none when either part is empty.
+std::optional<std::pair<std::string, std::string>> deviceAndChannel(const std::string& key);
 
 // Option --NAME's mains frequency, 50 or 60 Hz; nothing, with the usage
 // error in `error`, for anything else.

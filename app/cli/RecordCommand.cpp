@@ -41,14 +41,6 @@ constexpr int kDefaultBaud = 921600;
 // second) before it stops without them.
 constexpr double kLastSamplesWait_s = 2.0;
 
-// "DEVICE/CHANNEL" split at its first '/'; none when either part is empty.
-std::optional<std::pair<std::string, std::string>> deviceAndChannel(const std::string& key)
-{
-    const auto slash = key.find('/');
-    if (slash == std::string::npos || slash == 0 || slash + 1 == key.size()) return std::nullopt;
-    return std::pair{key.substr(0, slash), key.substr(slash + 1)};
-}
-
 // Each port's device opened over its link and added to the pipeline under
 // its name (the one given, else its model's, unlike every other); with
 // several, each channel's role and unit given as DEVICE/CHANNEL. An exit
@@ -213,6 +205,30 @@ std::optional<int> setUpOneDevice(devices::session::LiveSession& session, std::o
         printError(QStringLiteral("--stop-on critical: no limit watched here has a critical level; give one with "
                                   "--limit QUANTITY>critical:C"));
         return kExitUsage;
+    }
+    return std::nullopt;
+}
+
+// Several devices' filters and math channels, each device's its own
+// (SignalOptions.h: readSignalSetups); an exit code when refused.
+std::optional<int> setUpSignals(devices::session::LivePipeline& pipeline, const QCommandLineParser& parser)
+{
+    std::vector<std::vector<std::string>> channels;
+    for (std::size_t i = 0; i < pipeline.size(); ++i) {
+        channels.emplace_back();
+        for (const auto& channel : pipeline.device(i).channels()) channels.back().push_back(channel.name);
+    }
+    std::vector<core::signal::SignalSetup> setups;
+    if (const auto error = readSignalSetups(parser, pipeline.names(), channels, setups)) {
+        printError(*error);
+        return kExitUsage;
+    }
+    for (std::size_t i = 0; i < pipeline.size(); ++i) {
+        if (const auto refusal = pipeline.device(i).setSignal(std::move(setups[i]))) {
+            printError(QStringLiteral("%1: filters and math channels: %2")
+                           .arg(toQString(pipeline.name(i)), QString::fromStdString(*refusal)));
+            return kExitUsage;
+        }
     }
     return std::nullopt;
 }
@@ -383,14 +399,10 @@ int runRecord(const QStringList& arguments)
         return kExitUsage;
     }
 
-    const bool signalAsked = std::ranges::any_of(
-        std::array{"notch", "lowpass", "highpass", "moving-average", "filter-channel", "math", "analyze-filtered"},
-        [&parser](const char* option) { return parser.isSet(QLatin1String(option)); });
-    if (ports->size() > 1 &&
-        (mode || profile || watch->trigger || !watch->limits.empty() || watch->stopOnCritical || signalAsked))
+    if (ports->size() > 1 && (mode || profile || watch->trigger || !watch->limits.empty() || watch->stopOnCritical))
         return usageError(QStringLiteral("with several devices, each records in its own mode with its own "
-                                         "limits and signal setup; --mode, --profile, --trigger, --limit, "
-                                         "--stop-on, the filters and --math are for one device"),
+                                         "limits; --mode, --profile, --trigger, --limit and --stop-on are for one "
+                                         "device"),
                           usage);
 
     // Each device's first connection is made here, to know it before the
@@ -407,8 +419,11 @@ int runRecord(const QStringList& arguments)
                            .arg(*asked_hz));
     }
     auto& first = pipeline.device(0);
-    if (pipeline.size() == 1)
+    if (pipeline.size() == 1) {
         if (const auto exit = setUpOneDevice(first, mode, std::move(profile), *watch, parser)) return *exit;
+    } else if (const auto exit = setUpSignals(pipeline, parser)) {
+        return *exit;
+    }
 
     // Recording from the first block (started before the devices stream),
     // or from each trigger. A recording of --seconds holds exactly that

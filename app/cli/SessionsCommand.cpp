@@ -285,6 +285,8 @@ int show(SessionSource& store, std::int64_t id, bool json)
                          std::string(core::toString(part.status)) + ")");
         const auto own = store.session(part.id);
         if (own) device(own->metadata, part.id);
+        if (own && !own->metadata.signalSetup.empty())
+            line("signal", core::signal::signalSetupText(own->metadata.signalSetup));
         line("clock", core::timing::clockMappingText(part.clockJson));
         line("events", eventsText(store, part.id));
         listEvents(out, store.events(part.id));
@@ -358,11 +360,21 @@ int exportSession(SessionSource& store, std::int64_t id, const QString& format, 
             return kExitUsage;
         }
     }
-    // The filtered and math channels the session recorded, as it showed them live.
+    // The filtered and math channels the session recorded, as it showed them
+    // live; a session of several devices, each part's own.
+    core::storage::PartColumns partColumns;
+    std::vector<std::string> problems;
     if (format == QLatin1String("csv")) {
         std::string problem;
         computed = core::signal::withRecordedSignal(store, id, std::move(computed), problem);
-        if (!problem.empty()) printError(toQString(problem));
+        if (!problem.empty()) problems.push_back(problem);
+        partColumns = core::signal::recordedSignalOfParts(store, problems);
+    }
+    if (!math.empty() && !store.parts(id).empty()) {
+        printError(QStringLiteral("--math: session %1 is of several devices, each on its own clock; add a math "
+                                  "channel to one device's part (sessions export PART …, its id in `sessions show %1`)")
+                       .arg(id));
+        return kExitUsage;
     }
     if (!math.empty()) {
         try {
@@ -376,10 +388,11 @@ int exportSession(SessionSource& store, std::int64_t id, const QString& format, 
         core::storage::exportSession(store, id,
                                      format == QLatin1String("csv") ? core::storage::ExportFormat::Csv
                                                                     : core::storage::ExportFormat::Json,
-                                     output.toStdString(), {}, computed.get());
+                                     output.toStdString(), {}, computed.get(), partColumns);
     } catch (const core::storage::StorageError& e) {
         return storageFailure(e);
     }
+    for (const auto& problem : problems) printError(toQString(problem));
     return kExitOk;
 }
 

@@ -13,6 +13,8 @@
 #include <QString>
 
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace tactiscope::cli {
 
@@ -29,5 +31,15 @@ QList<QCommandLineOption> signalOptions();
 // the math channels. The reason, for options that cannot be.
 std::optional<QString> readSignalSetup(const QCommandLineParser& parser, const std::vector<std::string>& channels,
                                        core::signal::SignalSetup& setup);
+// The same for each of several devices, named `devices`, whose channels
+// are `channels[i]`: --filter-channel DEVICE/CHANNEL and --math
+// "DEVICE/NAME[UNIT]=EXPR" go to that device (a math channel is over one
+// device's channels: the devices' clocks differ); the filters with no
+// --filter-channel filter every channel of every device, and
+// --analyze-filtered holds for each device with a filter. The reason, for
+// options that cannot be (a name without its device, a device not here).
+std::optional<QString> readSignalSetups(const QCommandLineParser& parser, const std::vector<std::string>& devices,
+                                        const std::vector<std::vector<std::string>>& channels,
+                                        std::vector<core::signal::SignalSetup>& setups);
 
 }  // namespace tactiscope::cli

@@ -136,4 +136,14 @@ std::unique_ptr<storage::ComputedColumns> withRecordedSignal(storage::SessionSou
     }
 }
 
+storage::PartColumns recordedSignalOfParts(storage::SessionSource& store, std::vector<std::string>& problems)
+{
+    return [&store, &problems](std::int64_t part) {
+        std::string problem;
+        auto columns = withRecordedSignal(store, part, nullptr, problem);
+        if (!problem.empty() && std::ranges::find(problems, problem) == problems.end()) problems.push_back(problem);
+        return columns;
+    };
+}
+
 }  // namespace tactiscope::core::signal

@@ -60,6 +60,11 @@ std::unique_ptr<storage::ComputedColumns> withRecordedSignal(storage::SessionSou
                                                              std::unique_ptr<storage::ComputedColumns> derived,
                                                              std::string& problem);
 
+// The same for each device's part of a session of several devices, as the
+// export asks for them (storage::PartColumns). What cannot be run of a
+// part's setup is added to `problems`, once, which must outlive it.
+storage::PartColumns recordedSignalOfParts(storage::SessionSource& store, std::vector<std::string>& problems);
+
 // The filtered and math channels `session` was recorded with, as review
 // lanes after its own; none without a setup, and `problem` says why a
 // setup this program cannot run is left out.

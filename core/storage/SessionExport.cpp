@@ -233,11 +233,12 @@ void writeMetadata(text::JsonWriter& json, SessionSource& store, std::int64_t se
 
 // A device's part, read sample by sample in windows, each sample's time
 // on the session's clock (its own time mapped; its own as it is when no
-// mapping was stored).
+// mapping was stored); its computed columns, if given, after its channels.
 class PartReader {
 public:
-    PartReader(SessionSource& store, const SessionPart& part)
+    PartReader(SessionSource& store, const SessionPart& part, std::unique_ptr<ComputedColumns> computed)
         : m_store(store),
+          m_computed(std::move(computed)),
           m_part(part.id),
           m_clock(timing::clockMappingFromJson(part.clockJson)),
           m_channels(store.channels(part.id)),
@@ -260,6 +261,12 @@ public:
     }
     double value(std::size_t channel) const { return m_window[channel][m_index - m_windowFirst]; }
     const std::vector<StoredChannel>& channels() const { return m_channels; }
+    std::vector<ChannelDescriptor> computedChannels() const
+    {
+        return m_computed ? m_computed->channels() : std::vector<ChannelDescriptor>{};
+    }
+    // Stored channels then computed ones, as value() numbers them.
+    std::size_t columnCount() const { return m_window.size(); }
     void next()
     {
         ++m_index;
@@ -282,9 +289,12 @@ private:
         m_window.resize(m_wanted.size());
         m_windowFirst = m_index;
         m_windowCount = m_store.readChannels(m_part, m_wanted, m_index, std::min(m_step, m_end - m_index), m_window);
+        if (m_computed)
+            for (auto& column : m_computed->read(m_windowFirst, m_windowCount)) m_window.push_back(std::move(column));
     }
 
     SessionSource& m_store;
+    std::unique_ptr<ComputedColumns> m_computed;
     std::int64_t m_part;
     std::optional<timing::ClockMapping> m_clock;
     std::vector<StoredChannel> m_channels;
@@ -303,16 +313,20 @@ private:
 // The parts' samples on one time axis: rows in the order of their times on
 // the session's clock, each device's channels filled in its own rows and
 // empty in the others' (no value is made up between a device's samples).
-void writeDevicesCsv(SessionSource& store, const std::vector<SessionPart>& parts, std::ostream& out)
+void writeDevicesCsv(SessionSource& store, const std::vector<SessionPart>& parts, std::ostream& out,
+                     const PartColumns& partColumns)
 {
     const auto snapshot = store.snapshot();
     std::vector<PartReader> readers;
     readers.reserve(parts.size());
-    for (const auto& part : parts) readers.emplace_back(store, part);
+    for (const auto& part : parts) readers.emplace_back(store, part, partColumns ? partColumns(part.id) : nullptr);
     out << "t [s]";
-    for (std::size_t p = 0; p < parts.size(); ++p)
+    for (std::size_t p = 0; p < parts.size(); ++p) {
         for (const auto& channel : readers[p].channels())
             out << ',' << parts[p].deviceName << '/' << csvHeader(channel.descriptor);
+        for (const auto& channel : readers[p].computedChannels())
+            out << ',' << parts[p].deviceName << '/' << csvHeader(channel);
+    }
     out << '\n';
     char buffer[32];
     for (;;) {
@@ -322,9 +336,14 @@ void writeDevicesCsv(SessionSource& store, const std::vector<SessionPart>& parts
         if (!earliest) break;
         out << text::formatShortest(earliest->time_s());
         for (auto& reader : readers)
-            for (std::size_t c = 0; c < reader.channels().size(); ++c) {
+            for (std::size_t c = 0; c < reader.columnCount(); ++c) {
                 out << ',';
-                if (&reader == earliest) out << formatSample(reader.value(c), buffer);
+                if (&reader != earliest) continue;
+                // Stored samples are binary32; computed ones keep every digit.
+                if (c < reader.channels().size())
+                    out << formatSample(reader.value(c), buffer);
+                else
+                    out << text::formatShortest(reader.value(c));
             }
         out << '\n';
         earliest->next();
@@ -379,11 +398,12 @@ std::string csvHeader(const ChannelDescriptor& channel)
 }
 
 void writeSessionCsv(SessionSource& store, std::int64_t session, std::ostream& out, const ExportRange& range,
-                     ComputedColumns* computed)
+                     ComputedColumns* computed, const PartColumns& partColumns)
 {
     requireSession(store, session);
     if (const auto parts = store.parts(session); !parts.empty()) {
-        writeDevicesCsv(store, parts, out);  // the whole session: a range and computed columns are one device's
+        // The whole session: a range and `computed` are one device's.
+        writeDevicesCsv(store, parts, out, partColumns);
         return;
     }
     const auto channels = store.channels(session);
@@ -410,23 +430,36 @@ void writeSessionCsv(SessionSource& store, std::int64_t session, std::ostream& o
 }
 
 void writeSessionMetadataJson(SessionSource& store, std::int64_t session, std::ostream& out, const ExportRange& range,
-                              ComputedColumns* computed)
+                              ComputedColumns* computed, const PartColumns& partColumns)
 {
     text::JsonWriter json;
     json.beginObject();
     writeMetadata(json, store, session, range);
-    if (const auto parts = store.parts(session); !parts.empty()) writeDevices(json, store, parts);
-    if (computed) {
+    const auto parts = store.parts(session);
+    if (!parts.empty()) writeDevices(json, store, parts);
+    // Each computed column as the CSV names it (DEVICE/NAME in a part).
+    const auto describe = [&json](const ChannelDescriptor& channel, const std::string& device,
+                                  const std::string& basis) {
+        const std::string prefix = device.empty() ? std::string() : device + '/';
+        json.beginObject();
+        json.key("name").value(prefix + channel.name);
+        json.key("column").value(prefix + csvHeader(channel));
+        json.key("unit").value(channel.unit);
+        json.key("kind").value(toString(channel.kind));
+        json.key("computed_with").value(basis);
+        json.endObject();
+    };
+    std::vector<std::pair<std::string, std::unique_ptr<ComputedColumns>>> ofParts;
+    if (partColumns)
+        for (const auto& part : parts)
+            if (auto columns = partColumns(part.id)) ofParts.emplace_back(part.deviceName, std::move(columns));
+    const bool oneDevice = parts.empty() && computed;
+    if (oneDevice || !ofParts.empty()) {
         json.key("computed_columns").beginArray();
-        for (const auto& channel : computed->channels()) {
-            json.beginObject();
-            json.key("name").value(channel.name);
-            json.key("column").value(csvHeader(channel));
-            json.key("unit").value(channel.unit);
-            json.key("kind").value(toString(channel.kind));
-            json.key("computed_with").value(computed->basis());
-            json.endObject();
-        }
+        if (oneDevice)
+            for (const auto& channel : computed->channels()) describe(channel, {}, computed->basis());
+        for (const auto& [device, columns] : ofParts)
+            for (const auto& channel : columns->channels()) describe(channel, device, columns->basis());
         json.endArray();
     }
     json.endObject();
@@ -520,7 +553,7 @@ std::string metadataSidePath(const std::string& csvPath)
 }
 
 void exportSession(SessionSource& store, std::int64_t session, ExportFormat format, const std::string& path,
-                   const ExportRange& range, ComputedColumns* computed)
+                   const ExportRange& range, ComputedColumns* computed, const PartColumns& partColumns)
 {
     // The store is the one file an export must never replace (a central
     // store's location names no file).
@@ -531,9 +564,11 @@ void exportSession(SessionSource& store, std::int64_t session, ExportFormat form
         writeAtomically(path, [&](std::ostream& out) { writeSessionJson(store, session, out); });
         return;
     }
-    writeAtomically(path, [&](std::ostream& out) { writeSessionCsv(store, session, out, range, computed); });
-    writeAtomically(metadataSidePath(path),
-                    [&](std::ostream& out) { writeSessionMetadataJson(store, session, out, range, computed); });
+    writeAtomically(path,
+                    [&](std::ostream& out) { writeSessionCsv(store, session, out, range, computed, partColumns); });
+    writeAtomically(metadataSidePath(path), [&](std::ostream& out) {
+        writeSessionMetadataJson(store, session, out, range, computed, partColumns);
+    });
 }
 
 }  // namespace tactiscope::core::storage

@@ -16,7 +16,9 @@
 #include "core/storage/SessionStore.h"
 
 #include <cstdint>
+#include <functional>
 #include <limits>
+#include <memory>
 #include <ostream>
 #include <string>
 
@@ -47,10 +49,18 @@ public:
 // dimensionless channel is its name alone.
 std::string csvHeader(const ChannelDescriptor& channel);
 
+// For a session of several devices, each part's own computed columns (its
+// recorded filters and math channels, on its own samples), or none: written
+// after the part's stored channels as DEVICE/NAME, and in the metadata's
+// "computed_columns" likewise. A session's `computed` columns are one
+// device's and go with a session of one.
+using PartColumns = std::function<std::unique_ptr<ComputedColumns>(std::int64_t part)>;
+
 void writeSessionCsv(SessionSource& store, std::int64_t session, std::ostream& out, const ExportRange& range = {},
-                     ComputedColumns* computed = nullptr);
+                     ComputedColumns* computed = nullptr, const PartColumns& partColumns = {});
 void writeSessionMetadataJson(SessionSource& store, std::int64_t session, std::ostream& out,
-                              const ExportRange& range = {}, ComputedColumns* computed = nullptr);
+                              const ExportRange& range = {}, ComputedColumns* computed = nullptr,
+                              const PartColumns& partColumns = {});
 void writeSessionJson(SessionSource& store, std::int64_t session, std::ostream& out);
 
 // The side file a CSV export's metadata goes to (and an import reads it
@@ -63,9 +73,10 @@ enum class ExportFormat { Csv, Json };
 // Each file goes through a temporary one renamed into place, so a failed
 // export never leaves half a file under the requested name. Throws
 // StorageError ("cannot write P", "writing P failed (disk full?)").
-// The range and computed columns apply to CSV only; JSON is always the
+// The range and computed columns (a session's or its parts') apply to CSV only; JSON is always the
 // whole session as stored.
 void exportSession(SessionSource& store, std::int64_t session, ExportFormat format, const std::string& path,
-                   const ExportRange& range = {}, ComputedColumns* computed = nullptr);
+                   const ExportRange& range = {}, ComputedColumns* computed = nullptr,
+                   const PartColumns& partColumns = {});
 
 }  // namespace tactiscope::core::storage

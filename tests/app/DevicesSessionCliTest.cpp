@@ -192,6 +192,101 @@ TEST(DevicesSessionCli, TwoProbesOnTheirOwnClocksMarkOneInstantWithinATenthOfAMi
         << shown.out.toStdString();
 }
 
+// Each device its own filters and math channels (issue 57): --filter-channel
+// and --math say whose as DEVICE/…; each part stores its own setup, and the
+// session's CSV export carries each part's filtered and math channels in
+// its own rows, the math channel's values being its expression over that
+// device's stored samples.
+TEST(DevicesSessionCli, EachDeviceFiltersAndComputesItsOwnSignalAndTheExportCarriesThem)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath("s.tactiscope");
+    QProcess a, b;
+    ASSERT_TRUE(startEmulator(a, dir.filePath("a"), {"--scenario", "panel-scan", "--seed", "3"}));
+    ASSERT_TRUE(startEmulator(b, dir.filePath("b"), {"--scenario", "panel-scan", "--seed", "4"}));
+    const QStringList ports{"--port", "a=" + dir.filePath("a"), "--port", "b=" + dir.filePath("b")};
+    const QStringList record = QStringList{"record", "--db", db, "--seconds", "2"} + ports;
+    // Without its device a channel or a math channel is refused, naming them.
+    for (const auto& [extra, said] :
+         {std::pair{QStringList{"--notch", "50", "--filter-channel", "a"},
+                    "--filter-channel 'a': with several devices, "
+                    "say whose as DEVICE/CHANNEL (the devices: "
+                    "a, b)"},
+          std::pair{QStringList{"--math", "d[µε]=a - b"}, "say whose as DEVICE/NAME[UNIT]=EXPR"},
+          std::pair{QStringList{"--notch", "50", "--filter-channel", "c/a"}, "(the devices: a, b)"},
+          std::pair{QStringList{"--notch", "50", "--filter-channel", "b/z"}, "b: --filter-channel: the device has no "
+                                                                             "channel 'z'"}}) {
+        const auto refused = runCli(record + extra);
+        EXPECT_EQ(refused.exitCode, 2) << extra.join(' ').toStdString();
+        EXPECT_TRUE(refused.err.contains(QString::fromUtf8(said))) << refused.err.toStdString();
+    }
+    const auto recorded =
+        runCli(record + QStringList{"--notch", "50", "--filter-channel", "a/a", "--math", "b/diff[µε]=a - b"});
+    stopEmulator(a);
+    stopEmulator(b);
+    ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
+    const auto session = sessionIdIn(recorded.out);
+    {
+        tactiscope::core::storage::SessionStore store(db.toStdString(),
+                                                      tactiscope::core::storage::Database::Access::ReadOnly);
+        const auto parts = store.parts(session);
+        ASSERT_EQ(parts.size(), 2u);
+        const auto setupOf = [&](std::size_t p) {
+            return QJsonDocument::fromJson(QByteArray::fromStdString(store.session(parts[p].id)->metadata.signalSetup))
+                .object();
+        };
+        const auto aSetup = setupOf(0), bSetup = setupOf(1);
+        ASSERT_EQ(aSetup.value("filters").toArray().size(), 1);
+        EXPECT_EQ(aSetup.value("filters").toArray()[0].toObject().value("channel").toString(), "a");
+        EXPECT_TRUE(aSetup.value("math").toArray().isEmpty());
+        EXPECT_TRUE(bSetup.value("filters").toArray().isEmpty());
+        EXPECT_EQ(bSetup.value("math").toArray(), QJsonArray{QStringLiteral("diff[µε]=a - b")});
+    }
+    const auto shown = runCli({"sessions", "--db", db, "show", QString::number(session)});
+    EXPECT_TRUE(shown.out.contains(QStringLiteral("a: mains notch 50 Hz"))) << shown.out.toStdString();
+    EXPECT_TRUE(shown.out.contains(QStringLiteral("diff[µε]=a - b"))) << shown.out.toStdString();
+
+    const QString csv = dir.filePath("x.csv");
+    const auto exported =
+        runCli({"sessions", "--db", db, "export", QString::number(session), "--format", "csv", "--output", csv});
+    ASSERT_EQ(exported.exitCode, 0) << exported.err.toStdString();
+    QFile csvFile(csv);
+    ASSERT_TRUE(csvFile.open(QIODevice::ReadOnly));
+    EXPECT_EQ(QString::fromUtf8(csvFile.readLine()).trimmed(),
+              QString::fromUtf8("t [s],a/a [strain],a/b [strain],a/a.filtered [strain],b/a [strain],b/b [strain],"
+                                "b/diff [µε]"));
+    int aRows = 0, bRows = 0;
+    while (!csvFile.atEnd()) {
+        const QStringList cells = QString::fromUtf8(csvFile.readLine()).trimmed().split(QLatin1Char(','));
+        ASSERT_EQ(cells.size(), 7);
+        if (!cells[1].isEmpty()) {  // a's row: its filtered channel beside its samples, b's cells empty
+            ++aRows;
+            EXPECT_FALSE(cells[3].isEmpty());
+            EXPECT_TRUE(cells[4].isEmpty() && cells[6].isEmpty());
+            continue;
+        }
+        ++bRows;
+        // The stored samples are binary32, written as the shortest text that
+        // reads back to them: each within its half ulp, 6e-8 of itself.
+        const double sampleA = cells[4].toDouble(), sampleB = cells[5].toDouble();
+        EXPECT_NEAR(cells[6].toDouble(), (sampleA - sampleB) * 1e6,
+                    6e-8 * (std::abs(sampleA) + std::abs(sampleB)) * 1e6);
+    }
+    EXPECT_GT(aRows, 900);  // 2 s at 500 Hz each
+    EXPECT_GT(bRows, 900);
+    QFile meta(dir.filePath("x.meta.json"));
+    ASSERT_TRUE(meta.open(QIODevice::ReadOnly));
+    QStringList computed;
+    for (const auto& column : QJsonDocument::fromJson(meta.readAll()).object().value("computed_columns").toArray())
+        computed << column.toObject().value("column").toString();
+    EXPECT_EQ(computed, (QStringList{"a/a.filtered [strain]", QString::fromUtf8("b/diff [µε]")}));
+    // A math channel over the whole session would mix two clocks: refused, naming the parts.
+    const auto mathRefused = runCli({"sessions", "--db", db, "export", QString::number(session), "--format", "csv",
+                                     "--output", dir.filePath("m.csv"), "--math", "q[µε]=a - b"});
+    EXPECT_EQ(mathRefused.exitCode, 2);
+    EXPECT_TRUE(mathRefused.err.contains(QStringLiteral("is of several devices"))) << mathRefused.err.toStdString();
+}
+
 // A probe that goes while the other records on: a gap at the end of its
 // part only; the other's part is whole.
 TEST(DevicesSessionCli, AProbeLostMidSessionIsAGapInItsOwnPartOnly)

@@ -875,16 +875,20 @@ QString ReviewWindow::exportCsv(const QString& csvPath, bool visibleRangeOnly)
         range.first = static_cast<std::uint64_t>(std::max(0.0, std::floor(m_plot->from_s() * rate_hz)));
         range.count = static_cast<std::uint64_t>(std::ceil(m_plot->to_s() * rate_hz)) + 1 - range.first;
     }
-    std::string problem;
+    std::vector<std::string> problems;
     try {
-        // With the filtered and math channels it was recorded with.
+        // With the filtered and math channels it was recorded with (each
+        // device's, in a session of several).
+        std::string problem;
         const auto signal = core::signal::withRecordedSignal(*m_store, m_session.id, nullptr, problem);
+        if (!problem.empty()) problems.push_back(problem);
         core::storage::exportSession(*m_store, m_session.id, core::storage::ExportFormat::Csv, csvPath.toStdString(),
-                                     range, signal.get());
+                                     range, signal.get(), core::signal::recordedSignalOfParts(*m_store, problems));
     } catch (const core::storage::StorageError& e) {
         return tr("The CSV was not written: %1").arg(text(e.what()));
     }
-    const QString left = problem.empty() ? QString() : QStringLiteral(" ") + text(problem);
+    QString left;
+    for (const auto& problem : problems) left += QStringLiteral(" ") + text(problem);
     statusBar()->showMessage(tr("Exported to %1, with its metadata (calibrations included) in %2.%3")
                                  .arg(csvPath, text(core::storage::metadataSidePath(csvPath.toStdString())), left));
     return {};

@@ -92,26 +92,39 @@ void SignalControl::addActions(QMenu* session)
     action->setObjectName(QStringLiteral("signalAction"));
 }
 
-SignalDialog* SignalControl::showDialog()
+SignalDialog* SignalControl::showDialog(std::size_t device)
 {
-    auto* live = m_station.device();
-    if (!live) return nullptr;
+    auto& pipeline = m_station.pipeline();
+    if (device >= pipeline.size()) return nullptr;
+    auto& live = pipeline.device(device);
     if (m_dialog) m_dialog->close();
+    // The device is found again by its name when applied: the session's
+    // devices may have changed while the dialog was open.
+    const std::string name = pipeline.name(device);
+    const auto deviceNow = [this, name]() -> devices::session::LiveSession* {
+        auto& now = m_station.pipeline();
+        for (std::size_t i = 0; i < now.size(); ++i)
+            if (now.name(i) == name) return &now.device(i);
+        return nullptr;
+    };
     SignalDialog::Session session{
-        .channels = live->channels(),
-        .rate_hz = live->source().nominalSampleRate_hz(),
-        .setup = live->signalSetup(),
-        .apply = [this](const core::signal::SignalSetup& setup) -> std::optional<std::string> {
-            auto* now = m_station.device();
+        .channels = live.channels(),
+        .rate_hz = live.source().nominalSampleRate_hz(),
+        .setup = live.signalSetup(),
+        .apply = [this, deviceNow](const core::signal::SignalSetup& setup) -> std::optional<std::string> {
+            auto* now = deviceNow();
             if (!now) return "the device was disconnected";
             auto refusal = now->setSignal(setup);
-            if (!refusal) bind();
+            if (!refusal && now == m_station.device()) bind();  // the panel shows the window's device
             return refusal;
         },
-        .findMains = [this]() -> std::optional<std::pair<double, QString>> {
-            const auto* now = m_station.device();
+        .findMains = [deviceNow]() -> std::optional<std::pair<double, QString>> {
+            const auto* now = deviceNow();
             return now ? strongestHum(*now) : std::nullopt;
         },
+        .devices = pipeline.size() > 1 ? pipeline.names() : std::vector<std::string>{},
+        .device = device,
+        .showDevice = [this](std::size_t other) { showDialog(other); },
     };
     auto* dialog = new SignalDialog(std::move(session), m_window);
     dialog->setAttribute(Qt::WA_DeleteOnClose);

@@ -38,7 +38,7 @@ public:
     void addActions(QMenu* session);
     // View ▸ Traces as filtered.
     QAction* filteredTracesAction() const { return m_filteredTraces; }
-    SignalDialog* showDialog();
+    SignalDialog* showDialog(std::size_t device = 0);
 
 signals:
     // The device's filters changed, or the traces are asked for filtered or

@@ -10,6 +10,7 @@
 #include <QDialogButtonBox>
 #include <QGridLayout>
 #include <QGroupBox>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
@@ -160,6 +161,25 @@ SignalDialog::SignalDialog(Session session, QWidget* parent)
     connect(m_math, &QPlainTextEdit::textChanged, m_problem, &QLabel::clear);
 
     auto* layout = new QVBoxLayout(this);
+    if (m_session.devices.size() > 1) {
+        auto* chooser = new QComboBox(this);
+        chooser->setObjectName(QStringLiteral("signalDevice"));
+        for (const std::string& device : m_session.devices) chooser->addItem(QString::fromStdString(device));
+        chooser->setCurrentIndex(static_cast<int>(m_session.device));
+        auto* row = new QHBoxLayout;
+        auto* label = new QLabel(tr("&Device (each its own filters and math channels, recorded with its part):"), this);
+        label->setBuddy(chooser);
+        row->addWidget(label);
+        row->addWidget(chooser, 1);
+        layout->addLayout(row);
+        // Queued: the dialog closes itself (and is deleted) on the switch.
+        connect(chooser, &QComboBox::activated, this, [this](int index) {
+            if (index != static_cast<int>(m_session.device))
+                QMetaObject::invokeMethod(
+                    this, [show = m_session.showDevice, index] { show(static_cast<std::size_t>(index)); },
+                    Qt::QueuedConnection);
+        });
+    }
     layout->addWidget(filters, 1);
     layout->addWidget(math);
     layout->addWidget(m_problem);

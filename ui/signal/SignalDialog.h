@@ -1,5 +1,6 @@
-// Session ▸ Filters and math channels…: the window's device's signal setup
-// (core/signal/SignalSetup.h). A row per channel sets its filter: a mains
+// Session ▸ Filters and math channels…: a device's signal setup
+// (core/signal/SignalSetup.h), the window's first; with several devices a
+// chooser at the top opens it on another, each device having its own. A row per channel sets its filter: a mains
 // notch at the site's frequency (a station setting, kept between runs,
 // which the program can find from the signal), a Butterworth high- and/or low-pass of one order, a moving
 // average; each row shows the delay the live filter adds. Math channels
@@ -39,6 +40,11 @@ public:
         // The mains hum found in the signal now, in words ("50 Hz: 12.3 µε on a"),
         // with its frequency; none when the signal shows none.
         std::function<std::optional<std::pair<double, QString>>()> findMains;
+        // With several devices: their names, which one this is, and how to
+        // open the dialog on another (this one closes). Empty with one.
+        std::vector<std::string> devices;
+        std::size_t device = 0;
+        std::function<void(std::size_t)> showDevice;
     };
     explicit SignalDialog(Session session, QWidget* parent = nullptr);
 

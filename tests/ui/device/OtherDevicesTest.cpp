@@ -19,10 +19,15 @@
 #include "ui/device/DevicePanel.h"
 #include "ui/live/LiveStation.h"
 #include "ui/plot/LivePlotWidget.h"
+#include "ui/signal/SignalDialog.h"
 
+#include <QComboBox>
 #include <QDockWidget>
+#include <QLabel>
 #include <QLineEdit>
+#include <QPlainTextEdit>
 #include <QPushButton>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -120,6 +125,69 @@ TEST(OtherDevices, ALoadCellAddedBesideTheProbeIsRecordedWithItIntoOneSessionOnO
     const auto list = sessions.sessions();
     ASSERT_EQ(list.size(), 2u);
     EXPECT_TRUE(sessions.parts(list.front().id).empty());
+}
+
+// Each device its own filters and math channels (issue 57): the signal
+// dialog opens on the window's device and, with another added, chooses
+// between them; what is applied to one is that device's alone, and each
+// part of the recording keeps its own.
+TEST(OtherDevices, EachDeviceSetsItsOwnFiltersAndMathChannelsInTheSignalDialog)
+{
+    QTemporaryDir dir;
+    const QString store = dir.filePath("lab.tactiscope");
+    ui::MainWindow window;
+    window.setStorePath(store);
+    window.resize(1366, 768);
+    window.show();
+    window.station().connectSource(liveSimulator());
+    ASSERT_TRUE(waitFor([&] { return window.station().device() != nullptr; }, 5000));
+    window.devicePanel()->selectSimulator(QStringLiteral("load-cell"));
+    QTest::mouseClick(child<QPushButton>(window, "addDeviceButton"), Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return window.otherDevices()->names().size() == 1; }, 5000));
+
+    window.findChild<QAction*>(QStringLiteral("signalAction"))->trigger();
+    auto* dialog = window.findChild<ui::SignalDialog*>(QStringLiteral("signalDialog"));
+    ASSERT_NE(dialog, nullptr);
+    auto* chooser = child<QComboBox>(*dialog, "signalDevice");
+    ASSERT_EQ(chooser->count(), 2);
+    EXPECT_EQ(chooser->currentText(), QStringLiteral("tactiscope-simulator"));
+    // The load cell's own: its channel in the rows, a math channel over it.
+    chooser->setCurrentIndex(1);
+    emit chooser->activated(1);
+    ASSERT_TRUE(waitFor(
+        [&] {
+            auto* now = window.findChild<ui::SignalDialog*>(QStringLiteral("signalDialog"));
+            return now && now != dialog && now->isVisible();
+        },
+        3000));
+    QTest::qWait(50);  // the first dialog deleted
+    dialog = window.findChild<ui::SignalDialog*>(QStringLiteral("signalDialog"));
+    ASSERT_NE(dialog, nullptr);
+    EXPECT_EQ(child<QComboBox>(*dialog, "signalDevice")->currentIndex(), 1);
+    auto* filters = child<QTableWidget>(*dialog, "signalFilters");
+    const auto& cell = window.station().pipeline().device(1);
+    ASSERT_EQ(filters->rowCount(), static_cast<int>(cell.channels().size()));
+    const QString force = QString::fromStdString(cell.channels().front().name);
+    EXPECT_EQ(filters->item(0, 0)->text(), force);
+    child<QPlainTextEdit>(*dialog, "signalMath")->setPlainText(QStringLiteral("twice[mN]=2 * ") + force);
+    tactiscope::testing::saveScreenshot(*dialog, QStringLiteral("signal-dialog-devices"));
+    QTest::mouseClick(child<QPushButton>(*dialog, "signalApply"), Qt::LeftButton);
+    EXPECT_TRUE(child<QLabel>(*dialog, "signalProblem")->text().isEmpty())
+        << child<QLabel>(*dialog, "signalProblem")->text().toStdString();
+    dialog->close();
+    EXPECT_EQ(window.station().pipeline().device(1).signalSetup().math.size(), 1u);
+    EXPECT_TRUE(window.station().device()->signalSetup().empty());  // the probe's untouched
+
+    ASSERT_TRUE(window.startRecording());
+    runEventLoopFor(1000);
+    window.stopRecording();
+    core::storage::SessionStore sessions(store.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto parts = sessions.parts(sessions.sessions().front().id);
+    ASSERT_EQ(parts.size(), 2u);
+    EXPECT_TRUE(sessions.session(parts[0].id)->metadata.signalSetup.empty());
+    EXPECT_NE(sessions.session(parts[1].id)->metadata.signalSetup.find("twice[mN]=2 * " + force.toStdString()),
+              std::string::npos)
+        << sessions.session(parts[1].id)->metadata.signalSetup;
 }
 
 // Issue 52: two devices made the window 1716 px wide at least, four more;
