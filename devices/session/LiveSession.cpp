@@ -469,6 +469,14 @@ std::optional<RecordingSummary> LiveSession::poll()
     // A board's new layout: its notice (below) says what changed; the
     // buffer and the recording already hold the new channels.
     if (auto grown = m_acquisition->takeGrownChannels()) {
+        // The filters and math channels were set on the channels there
+        // were: a new one is recorded as it came, which the operator hears.
+        if (!m_options.signal.empty())
+            for (const auto& channel : *grown)
+                if (std::ranges::none_of(m_deviceChannels, [&](const auto& c) { return c.name == channel.name; }))
+                    m_problems.push_back(channel.name +
+                                         " came after the filters and math channels were set: it is recorded as "
+                                         "it came, not filtered; set them again to filter it");
         m_deviceChannels = std::move(*grown);
         m_channels = effectiveChannels(m_deviceChannels);
     }

@@ -9,6 +9,7 @@
 #include "support/EmulatorProcess.h"
 #include "support/TextBoard.h"
 
+#include <QFile>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -137,6 +138,69 @@ TEST(TextBoardLayoutCli, ATriggeredSessionGainsTheChannelItsBoardBeganToPrint)
     EXPECT_TRUE(std::ranges::any_of(events, [](const auto& e) {
         return e.note == "the board's channels changed: d appeared (holes before the first value)";
     }));
+}
+
+// Issue 57's seams on a text board: a session triggered by a math channel
+// (twice = 2·a) with a low-pass on a, whose board begins to print d
+// mid-session. The trigger fires on the math channel's first value over
+// its level (over a as filtered, so the filter's delay later), the session keeps the setup it was recorded with (a filtered,
+// the math channel), the operator is told d came after it (recorded as it
+// came, not filtered), and the export's math column is its expression over
+// a as filtered, which the math channel reads.
+TEST(TextBoardLayoutCli, ASessionTriggeredByAMathChannelKeepsItsSetupAndSaysALateChannelIsNotFiltered)
+{
+    std::atomic<std::uint64_t> added = std::numeric_limits<std::uint64_t>::max();
+    const auto line = [&](std::uint64_t n) {
+        std::string text = "a:" + std::to_string(n);
+        if (n >= added) text += " d:" + std::to_string(n % 7);
+        return text + "\r\n";
+    };
+    QTemporaryDir dir;
+    const std::string link = dir.filePath(QStringLiteral("board")).toStdString();
+    TextBoard board(link, {100.0, line, 2, 1e-3, true});
+    ASSERT_TRUE(board.ok());
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    const std::uint64_t fires = board.printed() + 100;  // a second from here
+    added = fires + 80;
+    const QString db = dir.filePath(QStringLiteral("board.tactiscope"));
+    const auto result =
+        runCli({"record", "--port", QString::fromStdString(link), "--protocol", "text", "--rate", "100", "--seconds",
+                "3.5", "--db", db, "--lowpass", "10", "--filter-channel", "a", "--math", "twice[]=2 * a", "--trigger",
+                QStringLiteral("twice>%1").arg(2.0 * static_cast<double>(fires) - 1.0)});
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    EXPECT_TRUE(result.err.contains(
+        QStringLiteral("d came after the filters and math channels were set: it is recorded as it came, not filtered")))
+        << result.err.toStdString();
+    storage::SessionStore store(db.toStdString(), storage::Database::Access::ReadOnly);
+    const auto sessions = store.sessions();
+    ASSERT_EQ(sessions.size(), 1u) << result.out.toStdString();
+    const auto id = sessions.front().id;
+    // The trigger reads the math channel, over a as filtered: a ramp through
+    // the low-pass lags by its delay at DC, 2.613 / ω_c for a 4th-order
+    // Butterworth, ω_c prewarped to 2·100·tan(π·10/100) = 64.98 rad/s: 4.02
+    // samples. So 2·(n − 4.02) first exceeds 2·fires − 1 at n = fires + 4.
+    EXPECT_EQ(static_cast<std::uint64_t>(store.readChannel(id, 0, 0, 1).front()), fires + 4);
+    EXPECT_NE(sessions.front().metadata.signalSetup.find("\"channel\":\"a\""), std::string::npos)
+        << sessions.front().metadata.signalSetup;
+    EXPECT_NE(sessions.front().metadata.signalSetup.find("twice[]=2 * a"), std::string::npos);
+
+    const QString csv = dir.filePath(QStringLiteral("x.csv"));
+    ASSERT_EQ(
+        runCli({"sessions", "--db", db, "export", QString::number(id), "--format", "csv", "--output", csv}).exitCode,
+        0);
+    QFile file(csv);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    EXPECT_EQ(QString::fromUtf8(file.readLine()).trimmed(), QStringLiteral("t [s],a,d,a.filtered,twice"));
+    int rows = 0;
+    while (!file.atEnd()) {
+        const QStringList cells = QString::fromUtf8(file.readLine()).trimmed().split(QLatin1Char(','));
+        ASSERT_EQ(cells.size(), 5);
+        // Over a as filtered (a math channel reads a filtered channel so), in
+        // every digit: both columns are written to read back exactly.
+        EXPECT_EQ(cells[4].toDouble(), 2.0 * cells[3].toDouble()) << rows;
+        ++rows;
+    }
+    EXPECT_GT(rows, 150);
 }
 
 // A rename while the board's rate is timed, before the recording: the
