@@ -10,6 +10,7 @@
 #include "support/PdfText.h"
 
 #include <QFile>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
@@ -158,4 +159,63 @@ TEST(SignalSetupCli, WhatCannotBeFilteredOrComputedIsRefusedBeforeAnythingIsReco
     EXPECT_TRUE(refusal({"--math", "d[µε]=a - b", "--limit", "e>warning:1"}).contains("nothing called 'e'"));
     stopEmulator(emulator);
     EXPECT_FALSE(QFile::exists(db)) << "nothing recorded, no store left behind";
+}
+
+// The modes beside the panel scan: a palpation probe recorded through a
+// low-pass with its analysis on the filtered channels still reads its
+// presses' stiffness, and keeps the setup; a capacitive beam at 10 Hz
+// gets a math channel over a constant ((C − C0)/C0, C0 defined before it),
+// and its export's column is that arithmetic of the filtered capacitance.
+// A notch the beam's rate cannot carry is refused in words.
+TEST(SignalSetupCli, PalpationAndTheCapacitiveBeamRecordThroughTheirFiltersAndMath)
+{
+    QTemporaryDir dir;
+    {
+        const QString link = dir.filePath("palpation");
+        const QString db = dir.filePath("palpation.tactiscope");
+        QProcess emulator;
+        ASSERT_TRUE(startEmulator(emulator, link, {"--scenario", "palpation"}));
+        const auto r = runCli({"record", "--port", link, "--seconds", "6", "--db", db, "--mode", "palpation",
+                               "--lowpass", "20", "--analyze-filtered", "--math", "ratio[]=high / low"});
+        stopEmulator(emulator);
+        ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+        const auto readings = QRegularExpression(QStringLiteral("palpation: ([0-9]+) stiffness reading")).match(r.out);
+        ASSERT_TRUE(readings.hasMatch()) << r.out.toStdString();
+        EXPECT_GE(readings.captured(1).toInt(), 1);
+        core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+        const auto setup =
+            QJsonDocument::fromJson(QByteArray::fromStdString(store.sessions().front().metadata.signalSetup)).object();
+        EXPECT_TRUE(setup.value("analysis_filtered").toBool());
+        EXPECT_EQ(setup.value("filters").toArray().size(), 3);  // high, low and the displacement
+    }
+    {
+        const QString link = dir.filePath("beam");
+        const QString db = dir.filePath("beam.tactiscope");
+        QProcess emulator;
+        ASSERT_TRUE(startEmulator(emulator, link, {"--scenario", "capacitive-weights"}));
+        const QStringList record{"record", "--port", link, "--seconds", "4", "--db", db, "--mode", "capacitive"};
+        const auto notched = runCli(record + QStringList{"--notch", "50"});
+        EXPECT_EQ(notched.exitCode, 2);
+        EXPECT_TRUE(notched.err.contains(QStringLiteral("a 50 Hz notch needs a sample rate above")))
+            << notched.err.toStdString();
+        const auto r = runCli(record + QStringList{"--lowpass", "1", "--math", "c0[pF]=51.44", "--math",
+                                                   "rel[]=(capacitance - c0) / c0"});
+        stopEmulator(emulator);
+        ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+        const QString csv = dir.filePath("beam.csv");
+        ASSERT_EQ(runCli({"sessions", "--db", db, "export", "last", "--format", "csv", "--output", csv}).exitCode, 0);
+        QFile file(csv);
+        ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+        EXPECT_EQ(QString::fromUtf8(file.readLine()).trimmed(),
+                  QStringLiteral("t [s],capacitance [F],capacitance.filtered [F],c0 [pF],rel"));
+        int rows = 0;
+        while (!file.atEnd()) {
+            const QStringList cells = QString::fromUtf8(file.readLine()).trimmed().split(QLatin1Char(','));
+            ASSERT_EQ(cells.size(), 5);
+            const double filtered_F = cells[2].toDouble(), c0_F = 51.44e-12;
+            EXPECT_NEAR(cells[4].toDouble(), (filtered_F - c0_F) / c0_F, 1e-12) << rows;
+            ++rows;
+        }
+        EXPECT_GE(rows, 35);  // 4 s at 10 Hz
+    }
 }
