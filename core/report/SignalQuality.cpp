@@ -2,6 +2,7 @@
 // a capacitive beam's detection limits.
 #include "core/report/SignalQuality.h"
 
+#include "core/signal/SignalColumns.h"
 #include "core/signal/SignalSetup.h"
 
 #include <algorithm>
@@ -58,12 +59,46 @@ std::vector<ChannelQuality> channelQuality(storage::SessionSource& store, std::i
     return channels;
 }
 
+std::vector<ChannelQuality> recordedSignalQuality(storage::SessionSource& store, std::int64_t session,
+                                                  std::uint64_t first, std::uint64_t end, std::size_t most,
+                                                  std::string& problem)
+{
+    auto columns = signal::withRecordedSignal(store, session, nullptr, problem);
+    const auto stored = store.channels(session);
+    if (!columns || stored.empty() || most == 0) return {};
+    const double rate_hz = stored.front().sampleRate_hz;
+    const auto computed = columns->channels();
+    std::vector<dsp::HealthAccumulator> accumulators;
+    std::vector<std::pair<double, double>> spans;  // each column's least and greatest value
+    for (std::size_t c = 0; c < computed.size(); ++c) {
+        accumulators.emplace_back(rate_hz, end > first ? end - first : 0, std::nullopt, false);
+        spans.emplace_back(INFINITY, -INFINITY);
+    }
+    for (std::uint64_t from = first; from < end; from += kWindow) {
+        const auto window = columns->read(from, std::min(kWindow, end - from));
+        for (std::size_t c = 0; c < computed.size() && c < window.size(); ++c) {
+            accumulators[c].push(window[c]);
+            for (const double v : window[c])
+                if (std::isfinite(v)) spans[c] = {std::min(spans[c].first, v), std::max(spans[c].second, v)};
+        }
+    }
+    std::vector<ChannelQuality> channels;
+    for (std::size_t c = 0; c < computed.size() && channels.size() < most; ++c) {
+        // A math channel that is a constant (c0[pF]=51.44) has no health to judge.
+        if (!(spans[c].first < spans[c].second)) continue;
+        channels.push_back({computed[c], accumulators[c].result(), true});
+    }
+    return channels;
+}
+
 SignalQuality gatherSignalQuality(storage::SessionSource& store, const storage::SessionSummary& session,
                                   std::uint64_t first, std::uint64_t end, std::optional<double> perNewton_f,
                                   std::optional<double> calibrationLimit_n, std::size_t most)
 {
     SignalQuality quality;
     quality.channels = channelQuality(store, session.id, first, end, most);
+    // The filtered and math channels beside them: what the notch left of the hum.
+    quality.computed = recordedSignalQuality(store, session.id, first, end, most, quality.computedProblem);
     const auto stored = store.channels(session.id);
     const auto judged = static_cast<std::size_t>(std::ranges::count_if(
         stored, [](const storage::StoredChannel& c) { return c.descriptor.kind != ChannelKind::Decision; }));

@@ -2,7 +2,8 @@
 // the report's range (mains hum in the channel's unit, noise floor, drift
 // with its ±, clipped samples: core/dsp/SignalHealth.h), the filters and
 // math channels the session was recorded with, and for a capacitive beam
-// the detection limit its noise floor gives beside its calibration's.
+// the detection limit its noise floor gives beside its calibration's; the
+// health of its filtered and math channels too, as they were live.
 // The health reads the samples, in windows; the rest of a report does not.
 #pragma once
 
@@ -15,6 +16,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tactiscope::core::report {
@@ -53,6 +55,11 @@ struct SignalQuality {
     // (`health --db … --session …` reads every one).
     std::size_t channelsLeftOut = 0;
     std::string setup = "none";  // the recorded signal setup in words
+    // The health of its filtered and math channels, computed again from the
+    // stored samples as they were live (a constant math channel left out);
+    // why not, when its setup cannot be run here.
+    std::vector<ChannelQuality> computed;
+    std::string computedProblem;
     std::optional<DetectionLimits> detection;
 };
 
@@ -62,6 +69,14 @@ struct SignalQuality {
 // storage::StorageError.
 std::vector<ChannelQuality> channelQuality(storage::SessionSource& store, std::int64_t session, std::uint64_t first,
                                            std::uint64_t end, std::size_t most = SIZE_MAX);
+
+// The health of the filtered and math channels `session` was recorded
+// with, over [first, end), computed again (core/signal/SignalColumns.h);
+// the first `most` that are not constants. `problem` says why none, when
+// its setup cannot be run.
+std::vector<ChannelQuality> recordedSignalQuality(storage::SessionSource& store, std::int64_t session,
+                                                  std::uint64_t first, std::uint64_t end, std::size_t most,
+                                                  std::string& problem);
 
 // The section for `session` over [first, end), of its first `most`
 // channels. `perNewton_f`: a capacitive

@@ -25,7 +25,11 @@ QString signalQualitySection(const core::report::SignalQuality& quality)
     QString html = QStringLiteral("<h2>%1</h2>").arg(QObject::tr("Signal quality"));
     std::vector<QStringList> rows;
     for (const auto& q : quality.channels) rows.push_back(channelRow(q));
+    // The filtered and math channels after the stored ones, as they were live.
+    for (const auto& q : quality.computed) rows.push_back(channelRow(q));
     html += table(QStringList{QObject::tr("Channel")} + healthHeaders(), rows);
+    if (!quality.computedProblem.empty())
+        html += QStringLiteral("<p>%1</p>").arg(text(quality.computedProblem));
     if (quality.channelsLeftOut > 0)
         html += QStringLiteral("<p>%1</p>")
                     .arg(QObject::tr("… and %n more channel(s): `tactiscope-cli health --db … --session …` reads "
@@ -34,7 +38,8 @@ QString signalQualitySection(const core::report::SignalQuality& quality)
     html += QStringLiteral("<p><small>%1</small></p>")
                 .arg(QObject::tr("Over the range reported. Hum: the mains line's amplitude (flat-top); noise floor: "
                                  "the median amplitude spectral density above 1 Hz; drift: a line through 100 "
-                                 "interval means, its standard uncertainty (k = 1)."));
+                                 "interval means, its standard uncertainty (k = 1). Filtered and math channels "
+                                 "are computed again from the stored samples, as they were live."));
     html += QStringLiteral("<table class=header>");
     html += row(QObject::tr("Filters and math channels"),
                 text(quality.setup) + (quality.setup == "none" ? QString()
