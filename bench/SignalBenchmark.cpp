@@ -25,6 +25,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <memory>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -114,20 +115,16 @@ BENCHMARK(BM_DisplayFrameOfSpectrumWindow)->Unit(benchmark::kMillisecond);
 
 // A live spectrum frame: each channel's last 8,192 points as 7 half-
 // overlapping segments of 2,048 (4 averages at least), through accumulators
-// kept from frame to frame (their FFT plans and windows made once).
+// kept from frame to frame (their FFT plans and windows made once), as the
+// spectrum view keeps its own (welchSpectrum with a kept accumulator).
 void BM_SpectrumFrame(benchmark::State& state)
 {
     const auto channels = spectrumWindow();
-    const std::size_t lengths[] = {kSpectrumPoints};
-    const std::size_t segment = core::dsp::segmentLengthFor(lengths, 4);
-    std::vector<core::dsp::WelchAccumulator> spectra;
-    for (std::size_t c = 0; c < kSpectrumChannels; ++c)
-        spectra.emplace_back(kSpectrumRate_hz, segment, core::dsp::SpectralWindow::Hann);
+    const core::dsp::SpectrumSettings settings{core::dsp::SpectralWindow::Hann, 4};
+    std::vector<std::unique_ptr<core::dsp::WelchAccumulator>> kept(kSpectrumChannels);
     for (auto _ : state)
         for (std::size_t c = 0; c < kSpectrumChannels; ++c) {
-            spectra[c].reset();
-            spectra[c].push(channels[c]);
-            const auto spectrum = spectra[c].result();
+            const auto spectrum = core::dsp::welchSpectrum(channels[c], kSpectrumRate_hz, settings, kept[c]);
             benchmark::DoNotOptimize(spectrum.psd.data());
         }
 }

@@ -151,11 +151,22 @@ std::size_t segmentLengthFor(std::span<const std::size_t> stretchLengths, std::s
 
 Spectrum welchSpectrum(std::span<const double> values, double sampleRate_hz, const SpectrumSettings& settings)
 {
+    std::unique_ptr<WelchAccumulator> once;
+    return welchSpectrum(values, sampleRate_hz, settings, once);
+}
+
+Spectrum welchSpectrum(std::span<const double> values, double sampleRate_hz, const SpectrumSettings& settings,
+                       std::unique_ptr<WelchAccumulator>& kept)
+{
     std::vector<std::size_t> lengths;
     for (const Stretch& stretch : gapFreeStretches(values)) lengths.push_back(stretch.count);
-    WelchAccumulator accumulator(sampleRate_hz, segmentLengthFor(lengths, settings.averages), settings.window);
-    accumulator.push(values);
-    return accumulator.result();
+    const std::size_t length = segmentLengthFor(lengths, settings.averages);
+    if (kept && kept->makes(sampleRate_hz, length, settings.window))
+        kept->reset();
+    else
+        kept = std::make_unique<WelchAccumulator>(sampleRate_hz, length, settings.window);
+    kept->push(values);
+    return kept->result();
 }
 
 std::vector<SpectrumPeak> spectrumPeaks(const Spectrum& spectrum, std::size_t most)

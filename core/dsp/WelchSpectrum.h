@@ -53,6 +53,11 @@ public:
     // Ends the current gap-free stretch (a gap known from elsewhere).
     void breakStretch();
     std::size_t averages() const { return m_averages; }
+    // Whether it was made for these: a kept one is reused only then.
+    bool makes(double sampleRate_hz, std::size_t segmentLength, SpectralWindow window) const
+    {
+        return m_rate_hz == sampleRate_hz && m_length == segmentLength && m_window == window;
+    }
     // The spectrum of what was pushed (no averages: empty spectra).
     Spectrum result() const;
 
@@ -92,6 +97,11 @@ std::size_t segmentLengthFor(std::span<const std::size_t> stretchLengths, std::s
 
 // The spectrum of a series held whole (NaN where missing).
 Spectrum welchSpectrum(std::span<const double> values, double sampleRate_hz, const SpectrumSettings& settings);
+// The same with the accumulator the caller keeps between calls (a live
+// spectrum's frames): made again only when the rate, the segment length or
+// the window changed, so a frame costs its FFTs, not their plans.
+Spectrum welchSpectrum(std::span<const double> values, double sampleRate_hz, const SpectrumSettings& settings,
+                       std::unique_ptr<WelchAccumulator>& kept);
 
 // The strongest lines of an amplitude spectrum: local maxima over a
 // flat-top main lobe that stand 20 dB above the median of the 64 bins on

@@ -109,7 +109,7 @@ void SpectrumView::show(std::span<const double> values, double rate_hz, const QS
 {
     const int c = channel();
     if (c < 0 || static_cast<std::size_t>(c) >= m_channels.size()) return clear(tr("No channel."));
-    m_spectrum = core::dsp::welchSpectrum(values, rate_hz, settings());
+    m_spectrum = core::dsp::welchSpectrum(values, rate_hz, settings(), m_accumulator);
     if (m_spectrum.averages == 0) return clear(tr("Too few samples between gaps for a spectrum (%1).").arg(span));
     m_unit = displayUnitFor(m_channels[static_cast<std::size_t>(c)]);
     const auto asd = m_spectrum.asd();

@@ -13,6 +13,7 @@
 
 #include <QWidget>
 
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -55,6 +56,8 @@ private:
     QCustomPlot* m_plot;
     QLabel* m_peaks;
     core::dsp::Spectrum m_spectrum;
+    // Kept from one spectrum to the next: a live frame costs its FFTs, not their plans.
+    std::unique_ptr<core::dsp::WelchAccumulator> m_accumulator;
     DisplayUnit m_unit;
 };
 

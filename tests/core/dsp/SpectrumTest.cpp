@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <numeric>
 #include <random>
@@ -131,6 +132,29 @@ TEST(Spectrum, AnAccumulatorResetGivesWhatAFreshOneGives)
     EXPECT_EQ(a.stretches, b.stretches);
     EXPECT_EQ(a.psd, b.psd);
     EXPECT_EQ(a.amplitude, b.amplitude);
+}
+
+TEST(Spectrum, AKeptAccumulatorGivesWhatAFreshSpectrumGivesAndIsMadeAgainForAnotherWindow)
+{
+    // The spectrum view's path: one accumulator kept from call to call.
+    const double rate = 500.0;
+    auto first = whiteNoise(5000, 1.0, 8);
+    auto second = whiteNoise(3000, 2.0, 9);
+    addSine(second, rate, 60.0, 3.0);
+    std::unique_ptr<WelchAccumulator> kept;
+    welchSpectrum(first, rate, {SpectralWindow::Hann, 16}, kept);
+    // Another series, then another window (a plan that would be wrong
+    // kept), then another segment length: each as a fresh spectrum.
+    for (const auto& [values, settings] : {std::pair{&second, SpectrumSettings{SpectralWindow::Hann, 16}},
+                                           std::pair{&first, SpectrumSettings{SpectralWindow::FlatTop, 16}},
+                                           std::pair{&first, SpectrumSettings{SpectralWindow::FlatTop, 4}}}) {
+        const Spectrum a = welchSpectrum(*values, rate, settings, kept);
+        const Spectrum b = welchSpectrum(*values, rate, settings);
+        EXPECT_EQ(a.segmentLength, b.segmentLength);
+        EXPECT_EQ(a.averages, b.averages);
+        EXPECT_EQ(a.psd, b.psd);
+        EXPECT_EQ(a.amplitude, b.amplitude);
+    }
 }
 
 TEST(Spectrum, BehindALowPassNoiseIsNoLine)
