@@ -22,6 +22,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace tactiscope::ui {
@@ -257,7 +258,18 @@ void SignalDialog::applyTyped()
     m_problem->setText(problem);
     if (!problem.isEmpty()) return;
     m_session.setup = setup;
-    QSettings().setValue(QStringLiteral("signal/mains_hz"), m_mains->currentData().toDouble());
+    const double mains_hz = m_mains->currentData().toDouble();
+    QSettings().setValue(QStringLiteral("signal/mains_hz"), mains_hz);
+    // Applied, but a notch at the other mains would leave the hum whole: say so.
+    const bool notched =
+        std::ranges::any_of(setup.filters, [](const auto& f) { return f.settings.notch_hz.has_value(); });
+    if (!notched || !m_session.findMains) return;
+    if (const auto found = m_session.findMains(); found && found->first != mains_hz)
+        m_problem->setText(tr("Applied. But the signal's hum is at %1 Hz (%2), and the notch is at %3 Hz: it "
+                              "leaves the hum as it is. Set the site's mains frequency to %1 Hz and apply again.")
+                               .arg(found->first)
+                               .arg(found->second)
+                               .arg(mains_hz));
 }
 
 void SignalDialog::findMains()

@@ -103,6 +103,16 @@ TEST(SignalViews, FiltersAndAMathChannelAreSetFoundShownRecordedAndReviewed)
     EXPECT_FALSE(child<QLabel>(*dialog, "signalProblem")->text().isEmpty());
     EXPECT_TRUE(window.station().device()->signalSetup().empty());
 
+    // A notch at 60 Hz on 50 Hz hum is applied, and said to leave the hum whole.
+    math->clear();
+    child<QComboBox>(*dialog, "signalMains")->setCurrentIndex(1);
+    QTest::mouseClick(child<QPushButton>(*dialog, "signalApply"), Qt::LeftButton);
+    EXPECT_TRUE(
+        child<QLabel>(*dialog, "signalProblem")->text().contains(QStringLiteral("the signal's hum is at 50 Hz")))
+        << child<QLabel>(*dialog, "signalProblem")->text().toStdString();
+    EXPECT_EQ(window.station().device()->signalSetup().filters.front().settings.notch_hz, 60.0);
+    child<QComboBox>(*dialog, "signalMains")->setCurrentIndex(0);
+
     math->setPlainText(QStringLiteral("diff[µε]=a - b"));
     child<QCheckBox>(*dialog, "signalAnalyseFiltered")->setChecked(true);
     tactiscope::testing::saveScreenshot(*dialog, QStringLiteral("signal-dialog"));
