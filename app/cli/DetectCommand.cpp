@@ -252,6 +252,11 @@ int runDetect(const QStringList& arguments)
         std::cerr << "note: the column '" << *options.position << "' spans " << positionSpan_m
                   << " m, more than a panel probe's stroke (" << core::detector::kMaxStroke_m
                   << " m): is it in m? Its sites are placed as it says\n";
+    if (result.gaps > 0)
+        std::cerr << "note: the time column skips whole intervals " << result.gaps << " time(s) ("
+                  << result.samplesMissing
+                  << " samples missing, as an export of a session that lost samples leaves them out): the detector "
+                     "restarted after each gap, never bridging one\n";
     if (unusedLength)
         std::cerr << "note: the column '" << *unusedLength
                   << "' is a length: if it is the rig's position along the stroke, --position " << *unusedLength

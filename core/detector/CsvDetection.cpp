@@ -54,12 +54,12 @@ void appendSampleRows(std::string& text, std::span<const ProbeOutput> outputs, d
     }
 }
 
-CheckedScan::CheckedScan(std::string path, std::vector<std::string> columns)
+CheckedScan::CheckedScan(std::string path, std::vector<std::string> columns, io::UniformTimeBaseCheck::Gaps gaps)
     : m_path(std::move(path)),
       m_columns(std::move(columns))
 {
     std::vector<std::vector<double>> block;
-    io::UniformTimeBaseCheck timeBase;
+    io::UniformTimeBaseCheck timeBase(0.01, gaps);
     io::CsvColumnReader times(m_path, {m_columns.front()});
     while (const std::size_t n = times.read(StreamingDetection::kChunk, block, m_lines)) {
         try {
@@ -71,6 +71,8 @@ CheckedScan::CheckedScan(std::string path, std::vector<std::string> columns)
     }
     if (m_rows == 0) throw io::CsvError("'" + m_path + "' has a header but no data rows");
     m_interval_s = timeBase.interval_s();
+    m_afterGaps = timeBase.samplesAfterGaps();
+    m_missing = timeBase.samplesMissing();
     m_reader = std::make_unique<io::CsvColumnReader>(m_path, m_columns);
 }
 
@@ -89,6 +91,20 @@ std::size_t CheckedScan::read(std::vector<std::vector<double>>& block)
                                 " is beyond what the detector can use (|value| ≤ " + shortNumber(kLargestUsableValue) +
                                 ")");
     }
+    // A sample with no value where each gap lies (the last first, so the
+    // rows before it keep their place), halfway between its neighbours;
+    // none before the file's first row.
+    const auto from = std::ranges::lower_bound(m_afterGaps, std::max<std::uint64_t>(m_read, 1));
+    const auto to = std::ranges::lower_bound(m_afterGaps, m_read + n);
+    for (auto gap = to; gap != from;) {
+        const auto row = static_cast<std::ptrdiff_t>(*--gap - m_read);
+        auto& t = block.front();
+        const double before_s = row > 0 ? t[static_cast<std::size_t>(row) - 1] : m_lastTime_s;
+        t.insert(t.begin() + row, (before_s + t[static_cast<std::size_t>(row)]) / 2.0);
+        for (std::size_t c = 1; c < block.size(); ++c)
+            block[c].insert(block[c].begin() + row, std::numeric_limits<double>::quiet_NaN());
+    }
+    m_lastTime_s = block.front().back();
     m_read += n;
     return n;
 }
@@ -96,7 +112,7 @@ std::size_t CheckedScan::read(std::vector<std::vector<double>>& block)
 CsvDetection detectCsv(const std::string& path, const std::vector<std::string>& columns, StretchSettings settings,
                        const CsvSampleSink& sink)
 {
-    CheckedScan scan(path, columns);
+    CheckedScan scan(path, columns, io::UniformTimeBaseCheck::Gaps::Allowed);
     settings.parameters.sampleInterval_s = scan.interval_s();
     CsvDetection result;
     result.interval_s = settings.parameters.sampleInterval_s;
@@ -112,7 +128,9 @@ CsvDetection detectCsv(const std::string& path, const std::vector<std::string>& 
         detection.push(cantilevers, block.front());
         result.detectorSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     }
-    result.samples = static_cast<std::size_t>(detection.samplesPushed());
+    result.samples = static_cast<std::size_t>(detection.samplesPushed()) - scan.gaps();  // not the NaN at each gap
+    result.gaps = scan.gaps();
+    result.samplesMissing = scan.samplesMissing();
     result.events = detection.finish().events;
     return result;
 }

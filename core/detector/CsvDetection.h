@@ -6,6 +6,7 @@
 
 #include "core/detector/StreamingDetection.h"
 #include "core/io/CsvColumns.h"
+#include "core/io/UniformTimeBase.h"
 
 #include <memory>
 #include <stdexcept>
@@ -22,7 +23,9 @@ public:
 };
 
 struct CsvDetection {
-    std::size_t samples = 0;
+    std::size_t samples = 0;  // rows of the file, each a sample
+    std::size_t gaps = 0;     // where its times skip whole intervals: the detector restarted after each
+    std::uint64_t samplesMissing = 0;
     std::size_t lags = 0;
     double interval_s = 0.0;          // the whole file's mean sampling interval
     double detectorSeconds = 0.0;     // time spent in the detector alone
@@ -49,12 +52,20 @@ void appendSampleRows(std::string& text, std::span<const ProbeOutput> outputs, d
 class CheckedScan {
 public:
     // `columns`: the time column, then the cantilevers in probe order (each
-    // also found under an SI unit, "t [s]").
-    CheckedScan(std::string path, std::vector<std::string> columns);
+    // also found under an SI unit, "t [s]"). With gaps allowed, a time step
+    // of a whole number of intervals is a gap (an export of a session that
+    // lost samples leaves their rows out): read() puts one sample with no
+    // value (NaN) where it lies, which the detector restarts after, never
+    // bridging it; else it is refused as an irregular time base.
+    CheckedScan(std::string path, std::vector<std::string> columns,
+                io::UniformTimeBaseCheck::Gaps gaps = io::UniformTimeBaseCheck::Gaps::Refused);
     double interval_s() const { return m_interval_s; }
     std::size_t rows() const { return m_rows; }
-    // The next rows into `block` (the times, then the cantilevers); 0 at
-    // the end, where a file that changed while it was read is refused.
+    std::size_t gaps() const { return m_afterGaps.size(); }
+    std::uint64_t samplesMissing() const { return m_missing; }
+    // The next rows into `block` (the times, then the cantilevers), with a
+    // NaN sample at each gap among them; 0 at the end, where a file that
+    // changed while it was read is refused.
     std::size_t read(std::vector<std::vector<double>>& block);
 
 private:
@@ -64,13 +75,17 @@ private:
     std::size_t m_rows = 0;
     std::size_t m_read = 0;
     std::vector<std::size_t> m_lines;
+    std::vector<std::uint64_t> m_afterGaps;  // the rows that follow a gap
+    std::uint64_t m_missing = 0;
+    double m_lastTime_s = 0.0;  // the last row read's, for a gap at a block's start
     std::unique_ptr<io::CsvColumnReader> m_reader;
 };
 
 // `columns`: the time column, then the cantilevers in probe order (each
 // also found under an SI unit, "t [s]"). settings.parameters'
 // sampleInterval_s is ignored: the file's times give it, their mean over
-// the whole file (read first, the time column alone). Throws io::CsvError,
+// the whole file (read first, the time column alone), gaps left out; the
+// detector restarts after each gap (CheckedScan). Throws io::CsvError,
 // CsvDetectionError, std::invalid_argument (parameters).
 CsvDetection detectCsv(const std::string& path, const std::vector<std::string>& columns, StretchSettings settings,
                        const CsvSampleSink& sink = {});

@@ -37,10 +37,17 @@ void UniformTimeBaseCheck::add(std::span<const double> t)
     for (; row < t.size(); ++row) {
         const double step = t[row] - m_last;
         if (!(step > 0.0)) throw TimeBaseError("time is not increasing", row);
-        if (std::abs(step - m_typical) > m_tolerance * m_typical)
+        const double intervals = std::round(step / m_typical);
+        if (m_gapsAllowed && intervals >= 2.0 && std::abs(step - intervals * m_typical) <= m_tolerance * m_typical) {
+            m_afterGaps.push_back(m_count);
+            m_missing += static_cast<std::uint64_t>(intervals) - 1;
+            m_gapSpan_s += step;
+        } else if (std::abs(step - m_typical) > m_tolerance * m_typical) {
             throw TimeBaseError("time is irregular: step of " + std::to_string(step) + " s where " +
-                                    std::to_string(m_typical) + " s is expected",
+                                    std::to_string(m_typical) + " s is expected" +
+                                    (m_gapsAllowed ? " (nor a whole number of them, a gap)" : ""),
                                 row);
+        }
         m_last = t[row];
         ++m_count;
     }
@@ -48,7 +55,9 @@ void UniformTimeBaseCheck::add(std::span<const double> t)
 
 double UniformTimeBaseCheck::interval_s() const
 {
-    return m_count < 2 ? 0.0 : (m_last - m_first) / static_cast<double>(m_count - 1);
+    if (m_count < 2 + m_afterGaps.size()) return 0.0;
+    const auto steps = static_cast<double>(m_count - 1 - m_afterGaps.size());
+    return (m_last - m_first - m_gapSpan_s) / steps;
 }
 
 }  // namespace tactiscope::core::io

@@ -1,10 +1,15 @@
 // Checks that sample times are strictly increasing and evenly spaced, as the
-// detector's lags (whole samples) require, and returns the interval.
+// detector's lags (whole samples) require, and returns the interval. Where
+// asked, a step of a whole number of intervals is a gap (samples lost on
+// the way, rows an export leaves out), not an irregular time base.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace tactiscope::core::io {
 
@@ -32,21 +37,32 @@ double uniformSampleInterval(std::span<const double> t, double tolerance = 0.01)
 // across blocks too, must be within `tolerance` of it.
 class UniformTimeBaseCheck {
 public:
-    explicit UniformTimeBaseCheck(double tolerance = 0.01)
-        : m_tolerance(tolerance)
+    enum class Gaps { Refused, Allowed };
+    explicit UniformTimeBaseCheck(double tolerance = 0.01, Gaps gaps = Gaps::Refused)
+        : m_tolerance(tolerance),
+          m_gapsAllowed(gaps == Gaps::Allowed)
     {
     }
     // The next times; a TimeBaseError's row is the index in `t`.
     void add(std::span<const double> t);
-    // The mean interval of every sample so far, the most precise there is.
+    // The mean interval of every sample so far, gaps left out, the most
+    // precise there is.
     double interval_s() const;
+    // With gaps allowed: the index (from the first time added) of each
+    // sample that follows a gap, and how many samples the gaps miss.
+    const std::vector<std::uint64_t>& samplesAfterGaps() const { return m_afterGaps; }
+    std::uint64_t samplesMissing() const { return m_missing; }
 
 private:
     double m_tolerance;
+    bool m_gapsAllowed;
     double m_typical = 0.0;
     double m_first = 0.0;
     double m_last = 0.0;
+    double m_gapSpan_s = 0.0;  // the steps that were gaps, summed
     std::size_t m_count = 0;
+    std::vector<std::uint64_t> m_afterGaps;
+    std::uint64_t m_missing = 0;
 };
 
 }  // namespace tactiscope::core::io

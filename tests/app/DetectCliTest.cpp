@@ -117,6 +117,65 @@ TEST_F(DetectCli, WritesOneOutputRowPerSampleAndThreadsChangeNothing)
     EXPECT_EQ(rows[1].split(',')[1], "0");  // quiet at the start
 }
 
+// A scan whose rows skip whole intervals (an export of a session that lost
+// samples leaves their rows out) is detected in gap-free stretches: cut
+// between the passes, the events are the whole file's; cut inside a pass,
+// no event spans the cut; the per-sample rows are the file's own, none
+// made up in a gap. Half an interval off is still an irregular time base.
+TEST_F(DetectCli, AScanWithGapsIsDetectedInStretchesNeverBridgingOne)
+{
+    const QStringList rows = lines(path("scan.csv"));
+    const auto without = [&](const char* name, int from, int to) {  // samples [from, to) left out
+        QStringList kept{rows.front()};
+        for (int i = 0; i + 1 < rows.size(); ++i)
+            if (i < from || i >= to) kept << rows[i + 1];
+        writeText(path(name), kept.join('\n') + '\n');
+    };
+    without("between.csv", 1500, 1600);  // 3.0 to 3.2 s, quiet
+    without("inside.csv", 700, 750);     // 1.4 to 1.5 s, in the first pass
+    const auto events = [&](const char* name) {
+        const CliResult run = runCli({"detect", path(name), "--json"});
+        EXPECT_EQ(run.exitCode, 0) << run.err.toStdString();
+        return std::pair{QJsonDocument::fromJson(run.out.toUtf8()).object(), run.err};
+    };
+    const auto [whole, quiet] = events("scan.csv");
+    const auto [between, said] = events("between.csv");
+    EXPECT_TRUE(quiet.isEmpty()) << quiet.toStdString();
+    EXPECT_TRUE(said.contains(QStringLiteral("skips whole intervals 1 time(s) (100 samples missing")))
+        << said.toStdString();
+    EXPECT_EQ(between["samples"].toInt(), 2900);
+    // The same events; after the restart the detector's memory of the quiet
+    // before the gap is gone, which moves the second pass's R in its last digits.
+    const QJsonArray cut = between["events"].toArray(), all = whole["events"].toArray();
+    ASSERT_EQ(cut.size(), 2);
+    ASSERT_EQ(all.size(), 2);
+    for (qsizetype e = 0; e < 2; ++e) {
+        const QJsonObject a = cut[e].toObject(), b = all[e].toObject();
+        for (const char* key : {"direction", "lag_ms", "start_s", "end_s"}) EXPECT_EQ(a[key], b[key]) << key;
+        EXPECT_NEAR(a["peak_r"].toDouble(), b["peak_r"].toDouble(), 1e-9);
+    }
+
+    const auto [inside, told] = events("inside.csv");
+    EXPECT_TRUE(told.contains(QStringLiteral("(50 samples missing"))) << told.toStdString();
+    for (const auto& value : inside["events"].toArray()) {
+        const QJsonObject event = value.toObject();
+        EXPECT_FALSE(event["start_s"].toDouble() < 1.4 && event["end_s"].toDouble() > 1.5)
+            << "an event across the gap: " << QJsonDocument(event).toJson().toStdString();
+    }
+    ASSERT_EQ(runCli({"detect", path("inside.csv"), "--output", path("inside-rows.csv")}).exitCode, 0);
+    const QStringList written = lines(path("inside-rows.csv"));
+    EXPECT_EQ(written.size(), 1 + 2950);
+    for (const QString& row : written.mid(1)) {
+        const double t = row.section(QLatin1Char(','), 0, 0).toDouble();
+        EXPECT_FALSE(t > 1.399 && t < 1.5) << row.toStdString();
+    }
+
+    writeText(path("half.csv"), "t,a,b\n0,0,0\n0.002,0,0\n0.004,0,0\n0.009,0,0\n0.011,0,0\n0.013,0,0\n");
+    const CliResult half = runCli({"detect", path("half.csv")});
+    EXPECT_EQ(half.exitCode, 2);
+    EXPECT_TRUE(half.err.contains(QStringLiteral("line 5: time is irregular"))) << half.err.toStdString();
+}
+
 TEST_F(DetectCli, OtherColumnNamesTheSlidingWindowAndFaceToFaceGauges)
 {
     // Same data under other names, b negated as a face-to-face mount gives.

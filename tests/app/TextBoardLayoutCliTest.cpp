@@ -143,10 +143,11 @@ TEST(TextBoardLayoutCli, ATriggeredSessionGainsTheChannelItsBoardBeganToPrint)
 // Issue 57's seams on a text board: a session triggered by a math channel
 // (twice = 2·a) with a low-pass on a, whose board begins to print d
 // mid-session. The trigger fires on the math channel's first value over
-// its level (over a as filtered, so the filter's delay later), the session keeps the setup it was recorded with (a filtered,
-// the math channel), the operator is told d came after it (recorded as it
-// came, not filtered), and the export's math column is its expression over
-// a as filtered, which the math channel reads.
+// its level (over a as filtered, so the filter's delay later), the session
+// keeps the setup it was recorded with (a filtered, the math channel), the
+// operator is told d came after it (recorded as it came, not filtered),
+// and the export's math column is its expression over a as filtered,
+// which the math channel reads.
 TEST(TextBoardLayoutCli, ASessionTriggeredByAMathChannelKeepsItsSetupAndSaysALateChannelIsNotFiltered)
 {
     std::atomic<std::uint64_t> added = std::numeric_limits<std::uint64_t>::max();

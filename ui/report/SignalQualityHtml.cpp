@@ -28,8 +28,7 @@ QString signalQualitySection(const core::report::SignalQuality& quality)
     // The filtered and math channels after the stored ones, as they were live.
     for (const auto& q : quality.computed) rows.push_back(channelRow(q));
     html += table(QStringList{QObject::tr("Channel")} + healthHeaders(), rows);
-    if (!quality.computedProblem.empty())
-        html += QStringLiteral("<p>%1</p>").arg(text(quality.computedProblem));
+    if (!quality.computedProblem.empty()) html += QStringLiteral("<p>%1</p>").arg(text(quality.computedProblem));
     if (quality.channelsLeftOut > 0)
         html += QStringLiteral("<p>%1</p>")
                     .arg(QObject::tr("… and %n more channel(s): `tactiscope-cli health --db … --session …` reads "

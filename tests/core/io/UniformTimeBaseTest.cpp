@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <vector>
 
 using tactiscope::core::io::TimeBaseError;
@@ -43,4 +44,22 @@ TEST(UniformTimeBase, ABadStepIsNamedAtItsRowEvenBetweenBlocks)
         EXPECT_EQ(e.row(), 1u);
     }
     EXPECT_THROW(UniformTimeBaseCheck().add(std::vector<double>{1.0}), TimeBaseError);
+}
+
+TEST(UniformTimeBase, AllowedAGapOfWholeIntervalsIsCountedAndLeftOutOfTheInterval)
+{
+    // 0, 2, 4 ms, then 10 ms (two samples missing), 12, 14; the next block
+    // begins 4 ms after (one missing).
+    UniformTimeBaseCheck check(0.01, UniformTimeBaseCheck::Gaps::Allowed);
+    check.add(std::vector<double>{0.0, 0.002, 0.004, 0.010, 0.012, 0.014});
+    check.add(std::vector<double>{0.018, 0.020});
+    EXPECT_EQ(check.samplesAfterGaps(), (std::vector<std::uint64_t>{3, 6}));
+    EXPECT_EQ(check.samplesMissing(), 3u);
+    // Five steps of 2 ms: the gaps' 6 and 4 ms are no interval.
+    EXPECT_NEAR(check.interval_s(), 0.002, 1e-15);
+    // Refused unless allowed; half an interval off is irregular either way.
+    EXPECT_THROW(UniformTimeBaseCheck().add(std::vector<double>{0.0, 0.002, 0.004, 0.010}), TimeBaseError);
+    EXPECT_THROW(UniformTimeBaseCheck(0.01, UniformTimeBaseCheck::Gaps::Allowed)
+                     .add(std::vector<double>{0.0, 0.002, 0.004, 0.009}),
+                 TimeBaseError);
 }
