@@ -18,6 +18,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 #include <thread>
@@ -27,6 +28,43 @@ using tactiscope::testing::sessionIdIn;
 using tactiscope::testing::TextBoard;
 namespace core = tactiscope::core;
 namespace storage = tactiscope::core::storage;
+
+namespace {
+
+// A board printing "a:n" at 100 Hz that begins to print d kDAfter lines
+// after line `fires`, a second from when it starts, recorded for 3.5 s with
+// `options(fires)` (a trigger at that line): what `record` said, `fires`
+// and the store.
+constexpr std::uint64_t kDAfter = 80;
+struct BoardThatAddsD {
+    tactiscope::testing::CliResult result;
+    std::uint64_t fires = 0;
+    QString db;
+};
+BoardThatAddsD recordBoardThatAddsD(const QTemporaryDir& dir,
+                                    const std::function<QStringList(std::uint64_t fires)>& options)
+{
+    std::atomic<std::uint64_t> added = std::numeric_limits<std::uint64_t>::max();
+    const auto line = [&](std::uint64_t n) {
+        std::string text = "a:" + std::to_string(n);
+        if (n >= added) text += " d:" + std::to_string(n % 7);
+        return text + "\r\n";
+    };
+    const std::string link = dir.filePath(QStringLiteral("board")).toStdString();
+    TextBoard board(link, {100.0, line, 2, 1e-3, true});
+    EXPECT_TRUE(board.ok());
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    BoardThatAddsD recorded;
+    recorded.fires = board.printed() + 100;
+    added = recorded.fires + kDAfter;
+    recorded.db = dir.filePath(QStringLiteral("board.tactiscope"));
+    recorded.result = runCli(QStringList{"record", "--port", QString::fromStdString(link), "--protocol", "text",
+                                         "--rate", "100", "--seconds", "3.5", "--db", recorded.db} +
+                             options(recorded.fires));
+    return recorded;
+}
+
+}  // namespace
 
 TEST(TextBoardLayoutCli, ABoardThatRenamesAChannelAndAddsOneContinuesTheSessionWithEveryValue)
 {
@@ -98,23 +136,10 @@ TEST(TextBoardLayoutCli, ABoardThatRenamesAChannelAndAddsOneContinuesTheSessionW
 // gains the channel its board began to print, with the note.
 TEST(TextBoardLayoutCli, ATriggeredSessionGainsTheChannelItsBoardBeganToPrint)
 {
-    std::atomic<std::uint64_t> added = std::numeric_limits<std::uint64_t>::max();
-    const auto line = [&](std::uint64_t n) {
-        std::string text = "a:" + std::to_string(n);
-        if (n >= added) text += " d:" + std::to_string(n % 7);
-        return text + "\r\n";
-    };
     QTemporaryDir dir;
-    const std::string link = dir.filePath(QStringLiteral("board")).toStdString();
-    TextBoard board(link, {100.0, line, 2, 1e-3, true});
-    ASSERT_TRUE(board.ok());
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    const std::uint64_t fires = board.printed() + 100;  // a second from here
-    added = fires + 80;
-    const QString db = dir.filePath(QStringLiteral("board.tactiscope"));
-    const auto result =
-        runCli({"record", "--port", QString::fromStdString(link), "--protocol", "text", "--rate", "100", "--seconds",
-                "3.5", "--db", db, "--trigger", QStringLiteral("a>%1").arg(static_cast<double>(fires) - 0.5)});
+    const auto [result, fires, db] = recordBoardThatAddsD(dir, [](std::uint64_t at) {
+        return QStringList{"--trigger", QStringLiteral("a>%1").arg(static_cast<double>(at) - 0.5)};
+    });
     ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
     storage::SessionStore store(db.toStdString(), storage::Database::Access::ReadOnly);
     const auto sessions = store.sessions();
@@ -129,7 +154,7 @@ TEST(TextBoardLayoutCli, ATriggeredSessionGainsTheChannelItsBoardBeganToPrint)
     for (std::uint64_t s = 0; s < count; ++s) {
         const auto n = static_cast<std::uint64_t>(a[s]);
         ASSERT_EQ(n, fires + s);
-        if (n < added)
+        if (n < fires + kDAfter)
             EXPECT_TRUE(std::isnan(d[s])) << n;
         else
             EXPECT_EQ(d[s], static_cast<double>(n % 7)) << n;
@@ -150,24 +175,13 @@ TEST(TextBoardLayoutCli, ATriggeredSessionGainsTheChannelItsBoardBeganToPrint)
 // which the math channel reads.
 TEST(TextBoardLayoutCli, ASessionTriggeredByAMathChannelKeepsItsSetupAndSaysALateChannelIsNotFiltered)
 {
-    std::atomic<std::uint64_t> added = std::numeric_limits<std::uint64_t>::max();
-    const auto line = [&](std::uint64_t n) {
-        std::string text = "a:" + std::to_string(n);
-        if (n >= added) text += " d:" + std::to_string(n % 7);
-        return text + "\r\n";
-    };
     QTemporaryDir dir;
-    const std::string link = dir.filePath(QStringLiteral("board")).toStdString();
-    TextBoard board(link, {100.0, line, 2, 1e-3, true});
-    ASSERT_TRUE(board.ok());
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    const std::uint64_t fires = board.printed() + 100;  // a second from here
-    added = fires + 80;
-    const QString db = dir.filePath(QStringLiteral("board.tactiscope"));
-    const auto result =
-        runCli({"record", "--port", QString::fromStdString(link), "--protocol", "text", "--rate", "100", "--seconds",
-                "3.5", "--db", db, "--lowpass", "10", "--filter-channel", "a", "--math", "twice[]=2 * a", "--trigger",
-                QStringLiteral("twice>%1").arg(2.0 * static_cast<double>(fires) - 1.0)});
+    const auto [result, fires, db] = recordBoardThatAddsD(dir, [](std::uint64_t at) {
+        return QStringList{"--lowpass",        "10",
+                           "--filter-channel", "a",
+                           "--math",           "twice[]=2 * a",
+                           "--trigger",        QStringLiteral("twice>%1").arg(2.0 * static_cast<double>(at) - 1.0)};
+    });
     ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
     EXPECT_TRUE(result.err.contains(
         QStringLiteral("d came after the filters and math channels were set: it is recorded as it came, not filtered")))
