@@ -39,12 +39,13 @@ void PixelColumnGraph::drawLinePlot(QCPPainter* painter, const QVector<QPointF>&
     // value of 1e300 must not overflow a pixel coordinate.
     const double rowLow = area.top() - 1.0;
     const double rowHigh = area.bottom() + 1.0;
+    const double areaEnd = static_cast<double>(left) + static_cast<double>(columns);
     const auto widen = [&](double x, double y) {
-        const auto column = static_cast<std::ptrdiff_t>(std::floor(x)) - left;
-        if (column < 0 || column >= static_cast<std::ptrdiff_t>(columns)) return;
+        if (!(x >= left && x < areaEnd)) return;  // outside (or NaN): no pixel, and no cast of a huge x
+        const auto column = static_cast<std::size_t>(x - left);
         const auto row = static_cast<float>(std::clamp(y, rowLow, rowHigh));
-        auto& top = m_top[static_cast<std::size_t>(column)];
-        auto& bottom = m_bottom[static_cast<std::size_t>(column)];
+        auto& top = m_top[column];
+        auto& bottom = m_bottom[column];
         top = std::min(top, row);
         bottom = std::max(bottom, row);
     };
@@ -61,7 +62,7 @@ void PixelColumnGraph::drawLinePlot(QCPPainter* painter, const QVector<QPointF>&
         }
         const double slope = (b.y() - a.y()) / (b.x() - a.x());
         const double from = std::max(firstColumn, left - 1.0);
-        const double to = std::min(lastColumn, static_cast<double>(left) + static_cast<double>(columns));
+        const double to = std::min(lastColumn, areaEnd);
         for (double column = from; column <= to; ++column) {
             const double x0 = std::max(a.x(), column);
             const double x1 = std::min(b.x(), column + 1.0);
