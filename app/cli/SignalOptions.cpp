@@ -143,8 +143,11 @@ std::optional<QString> readSignalSetups(const QCommandLineParser& parser, const 
             if (device == devices.end()) {
                 QStringList names;
                 for (const std::string& name : devices) names.append(QString::fromStdString(name));
-                return QStringLiteral("--%1 %2: with several devices, say whose as %3 (the devices: %4)")
-                    .arg(QLatin1String(option), quoted(value), QLatin1String(form), names.join(QStringLiteral(", ")));
+                const QString why =
+                    split ? QStringLiteral("no device is named %1").arg(quoted(toQString(split->first)))
+                          : QStringLiteral("with several devices, say whose as %1").arg(QLatin1String(form));
+                return QStringLiteral("--%1 %2: %3 (the devices: %4)")
+                    .arg(QLatin1String(option), quoted(value), why, names.join(QStringLiteral(", ")));
             }
             (*byDevice)[static_cast<std::size_t>(device - devices.begin())].append(
                 QString::fromStdString(split->second));

@@ -213,7 +213,8 @@ TEST(DevicesSessionCli, EachDeviceFiltersAndComputesItsOwnSignalAndTheExportCarr
                     "say whose as DEVICE/CHANNEL (the devices: "
                     "a, b)"},
           std::pair{QStringList{"--math", "d[µε]=a - b"}, "say whose as DEVICE/NAME[UNIT]=EXPR"},
-          std::pair{QStringList{"--notch", "50", "--filter-channel", "c/a"}, "(the devices: a, b)"},
+          std::pair{QStringList{"--notch", "50", "--filter-channel", "c/a"},
+                    "no device is named 'c' (the devices: a, b)"},
           std::pair{QStringList{"--notch", "50", "--filter-channel", "b/z"}, "b: --filter-channel: the device has no "
                                                                              "channel 'z'"}}) {
         const auto refused = runCli(record + extra);
