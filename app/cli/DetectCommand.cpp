@@ -253,8 +253,8 @@ int runDetect(const QStringList& arguments)
                   << " m, more than a panel probe's stroke (" << core::detector::kMaxStroke_m
                   << " m): is it in m? Its sites are placed as it says\n";
     if (result.gaps > 0)
-        std::cerr << "note: the time column skips whole intervals " << result.gaps << " time(s) ("
-                  << result.samplesMissing
+        std::cerr << "note: the time column skips whole intervals: " << result.gaps
+                  << (result.gaps == 1 ? " gap (" : " gaps (") << result.samplesMissing
                   << " samples missing, as an export of a session that lost samples leaves them out): the detector "
                      "restarted after each gap, never bridging one\n";
     if (unusedLength)

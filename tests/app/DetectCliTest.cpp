@@ -141,7 +141,7 @@ TEST_F(DetectCli, AScanWithGapsIsDetectedInStretchesNeverBridgingOne)
     const auto [whole, quiet] = events("scan.csv");
     const auto [between, said] = events("between.csv");
     EXPECT_TRUE(quiet.isEmpty()) << quiet.toStdString();
-    EXPECT_TRUE(said.contains(QStringLiteral("skips whole intervals 1 time(s) (100 samples missing")))
+    EXPECT_TRUE(said.contains(QStringLiteral("skips whole intervals: 1 gap (100 samples missing")))
         << said.toStdString();
     EXPECT_EQ(between["samples"].toInt(), 2900);
     // The same events; after the restart the detector's memory of the quiet
