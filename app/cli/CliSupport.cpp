@@ -9,6 +9,7 @@
 #include <QRegularExpression>
 #include <QTextStream>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <csignal>
@@ -225,6 +226,42 @@ std::optional<QString> readCsvTimeOptions(const QCommandLineParser& parser, core
     }
     options.timeColumn = parser.value(QStringLiteral("time-column")).toStdString();
     return std::nullopt;
+}
+
+std::optional<std::vector<std::optional<QString>>> valuesByName(const QString& option, const QStringList& values,
+                                                                const std::vector<std::string>& names,
+                                                                const QString& noun, const QString& hint,
+                                                                QString& error)
+{
+    std::optional<QString> forEvery;
+    std::vector<std::optional<QString>> named(names.size());
+    for (const QString& value : values) {
+        const auto equals = value.indexOf(QLatin1Char('='));
+        if (equals < 0) {
+            if (forEvery) {
+                error = QStringLiteral("--%1: give one value for every %2, or NAME=VALUE once for each %2 named (%3)")
+                            .arg(option, noun, hint);
+                return std::nullopt;
+            }
+            forEvery = value;
+            continue;
+        }
+        const std::string name = value.left(equals).toStdString();
+        const auto found = std::ranges::find(names, name);
+        if (name.empty() || found == names.end()) {
+            error = QStringLiteral("--%1: no %2 is named %3 (%4)").arg(option, noun, quoted(value.left(equals)), hint);
+            return std::nullopt;
+        }
+        auto& slot = named[static_cast<std::size_t>(found - names.begin())];
+        if (slot) {
+            error = QStringLiteral("--%1: %2 is given twice").arg(option, quoted(value.left(equals)));
+            return std::nullopt;
+        }
+        slot = value.mid(equals + 1);
+    }
+    for (auto& slot : named)
+        if (!slot) slot = forEvery;
+    return named;
 }
 
 std::optional<double> parseMainsFrequency(const QString& option, const QString& text, QString& error)

@@ -18,6 +18,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace tactiscope::cli {
 
@@ -78,6 +79,17 @@ int exitForReadError(const QString& path);
 // A value the user gave, quoted for a message: whole when short, else its
 // first 40 characters and its length (core/text/ShortQuote.h).
 QString quoted(const QString& value);
+
+// Each of `names`' value of option --OPTION, given as VALUE for every one
+// or NAME=VALUE for the one so named (--protocol board=text): the value
+// named for it, else the one for every one, else none. None at all, with
+// the usage error in `error`, for a name not in `names` (`hint` after it,
+// such as how names are given), two values for every one, or one name
+// given twice.
+std::optional<std::vector<std::optional<QString>>> valuesByName(const QString& option, const QStringList& values,
+                                                                const std::vector<std::string>& names,
+                                                                const QString& noun, const QString& hint,
+                                                                QString& error);
 
 // "DEVICE/CHANNEL" split at its first '/'; none when either part is empty.
 std::optional<std::pair<std::string, std::string>> deviceAndChannel(const std::string& key);

@@ -3,48 +3,18 @@
 
 #include "CliSupport.h"
 
-#include <algorithm>
-
 namespace tactiscope::cli {
 
 namespace {
 
-// Each port's value of one option: the one named for it, else the one
-// given for every port, else none.
+// Each port's value of --OPTION (CliSupport.h: valuesByName).
 std::optional<std::vector<std::optional<QString>>> shareOut(const QString& option, const QStringList& values,
                                                             const std::vector<ProbePortArgument>& ports, QString& error)
 {
-    std::optional<QString> forEvery;
-    std::vector<std::optional<QString>> named(ports.size());
-    for (const QString& value : values) {
-        const auto equals = value.indexOf(QLatin1Char('='));
-        if (equals < 0) {
-            if (forEvery) {
-                error = QStringLiteral("--%1: give one value for every port, or NAME=VALUE once for each port "
-                                       "named (--port NAME=PATH)")
-                            .arg(option);
-                return std::nullopt;
-            }
-            forEvery = value;
-            continue;
-        }
-        const std::string name = value.left(equals).toStdString();
-        const auto port = std::ranges::find(ports, name, &ProbePortArgument::name);
-        if (name.empty() || port == ports.end()) {
-            error = QStringLiteral("--%1: no port is named %2 (name one with --port NAME=PATH)")
-                        .arg(option, quoted(value.left(equals)));
-            return std::nullopt;
-        }
-        auto& slot = named[static_cast<std::size_t>(port - ports.begin())];
-        if (slot) {
-            error = QStringLiteral("--%1: %2 is given twice").arg(option, quoted(value.left(equals)));
-            return std::nullopt;
-        }
-        slot = value.mid(equals + 1);
-    }
-    for (auto& slot : named)
-        if (!slot) slot = forEvery;
-    return named;
+    std::vector<std::string> names;
+    for (const ProbePortArgument& port : ports) names.push_back(port.name);
+    return valuesByName(option, values, names, QStringLiteral("port"),
+                        QStringLiteral("name one with --port NAME=PATH"), error);
 }
 
 }  // namespace

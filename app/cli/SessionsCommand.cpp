@@ -2,10 +2,10 @@
 #include "SessionsCommand.h"
 
 #include "CliSupport.h"
+#include "ExportMath.h"
 #include "SessionArgument.h"
 #include "core/derived/SessionLanes.h"
 #include "core/detector/DefectOrder.h"
-#include "core/math/MathColumns.h"
 #include "core/modes/ModeDefinition.h"
 #include "core/report/VerdictTrail.h"
 #include "core/sensors/SensorProfile.h"
@@ -349,7 +349,7 @@ int decideVerdict(SessionSource& store, std::int64_t id, const QString& word, co
 }
 
 int exportSession(SessionSource& store, std::int64_t id, const QString& format, const QString& output, bool derived,
-                  std::vector<core::math::MathDefinition> math)
+                  const QStringList& math)
 {
     std::unique_ptr<core::storage::ComputedColumns> computed;
     if (derived) {
@@ -370,19 +370,9 @@ int exportSession(SessionSource& store, std::int64_t id, const QString& format, 
         if (!problem.empty()) problems.push_back(problem);
         partColumns = core::signal::recordedSignalOfParts(store, problems);
     }
-    if (!math.empty() && !store.parts(id).empty()) {
-        printError(QStringLiteral("--math: session %1 is of several devices, each on its own clock; add a math "
-                                  "channel to one device's part (sessions export PART …, its id in `sessions show %1`)")
-                       .arg(id));
+    if (const auto refusal = addExportMath(store, id, math, computed, partColumns)) {
+        printError(*refusal);
         return kExitUsage;
-    }
-    if (!math.empty()) {
-        try {
-            computed = std::make_unique<core::math::MathColumns>(store, id, std::move(math), std::move(computed));
-        } catch (const core::math::MathError& e) {
-            printError(QStringLiteral("--math: %1").arg(toQString(e.what())));
-            return kExitUsage;
-        }
     }
     try {
         core::storage::exportSession(store, id,
@@ -456,7 +446,9 @@ int runSessions(const QStringList& arguments)
         {QStringLiteral("derived"), QStringLiteral("export (CSV): add the mode's physical quantities.")},
         {QStringLiteral("math"),
          QStringLiteral("export (CSV): add a math channel over the channels, NAME[UNIT]=EXPR, e.g. "
-                        "\"diff[µε]=a - b\" (repeatable; each may use those before it; units are checked)."),
+                        "\"diff[µε]=a - b\" (repeatable; each may use those before it; units are checked). A "
+                        "channel the recording filtered is read filtered, as its own math channels read it. A "
+                        "session of several devices: DEVICE/NAME[UNIT]=EXPR, over that device's channels."),
          QStringLiteral("NAME[UNIT]=EXPR")},
         {QStringLiteral("mode"), QStringLiteral("list: only this mode."), QStringLiteral("MODE")},
         {QStringLiteral("subject"), QStringLiteral("list: only this panel or phantom."), QStringLiteral("ID")},
@@ -504,7 +496,6 @@ int runSessions(const QStringList& arguments)
     if (decides && parser.value(QStringLiteral("by")).trimmed().isEmpty())
         return usageError(QStringLiteral("verdict needs --by NAME: the trail says who decided"), usage);
     const QString format = parser.value(QStringLiteral("format"));
-    std::vector<core::math::MathDefinition> math;
     if (action == QLatin1String("export")) {
         if (format != QLatin1String("csv") && format != QLatin1String("json"))
             return usageError(QStringLiteral("--format must be csv or json"), usage);
@@ -518,12 +509,6 @@ int runSessions(const QStringList& arguments)
             return usageError(QStringLiteral("--derived goes with --format csv"), usage);
         if (parser.isSet(QStringLiteral("math")) && format != QLatin1String("csv"))
             return usageError(QStringLiteral("--math goes with --format csv"), usage);
-        try {
-            for (const QString& definition : parser.values(QStringLiteral("math")))
-                math.push_back(core::math::parseMathDefinition(definition.toStdString()));
-        } catch (const core::math::MathError& e) {
-            return usageError(QStringLiteral("--math: %1").arg(toQString(e.what())), usage);
-        }
     }
     const QString dbArgument = parser.value(QStringLiteral("db"));
     if (!storeArgumentExists(dbArgument)) return usageError(QStringLiteral("%1 does not exist").arg(dbArgument), usage);
@@ -597,7 +582,7 @@ int runSessions(const QStringList& arguments)
         if (action == QLatin1String("show")) return show(store, *id, parser.isSet(QStringLiteral("json")));
         if (action == QLatin1String("export"))
             return exportSession(store, *id, format, parser.value(QStringLiteral("output")),
-                                 parser.isSet(QStringLiteral("derived")), std::move(math));
+                                 parser.isSet(QStringLiteral("derived")), parser.values(QStringLiteral("math")));
         if (decides)
             return decideVerdict(store, *id, positional[2], parser.value(QStringLiteral("by")),
                                  parser.value(QStringLiteral("note")));

@@ -2,11 +2,13 @@
 #include "SignalOptions.h"
 
 #include "CliSupport.h"
+#include "DeviceValues.h"
 #include "core/NumberRanges.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <tuple>
+#include <map>
 
 namespace tactiscope::cli {
 
@@ -25,29 +27,61 @@ QList<QCommandLineOption> filterOptions()
     };
 }
 
-std::optional<QString> readFilterSettings(const QCommandLineParser& parser, core::dsp::FilterSettings& s)
+namespace {
+
+// The filter options' names, and their values as given, by name.
+constexpr std::array<const char*, 5> kFilterOptionNames = {"notch", "lowpass", "highpass", "order", "moving-average"};
+using FilterValues = std::map<QString, QString>;
+
+// One filter from its options' values.
+std::optional<QString> settingsOf(const FilterValues& values, core::dsp::FilterSettings& s)
 {
+    const auto text = [&values](const char* option) {
+        const auto value = values.find(QLatin1String(option));
+        return value == values.end() ? std::optional<QString>() : value->second;
+    };
     QString error;
-    if (parser.isSet(QStringLiteral("notch"))) {
-        s.notch_hz = parseMainsFrequency(QStringLiteral("notch"), parser.value(QStringLiteral("notch")), error);
+    if (const auto notch = text("notch")) {
+        s.notch_hz = parseMainsFrequency(QStringLiteral("notch"), *notch, error);
         if (!s.notch_hz) return error;
     }
     for (const auto& [option, cutoff] : {std::pair{"lowpass", &s.lowpass_hz}, std::pair{"highpass", &s.highpass_hz}}) {
-        if (!parser.isSet(QLatin1String(option))) continue;
-        *cutoff = numberInRange(parser, option, core::kFilterCutoffRange, 0.0, error);
+        const auto given = text(option);
+        if (!given) continue;
+        *cutoff = numberInRange(QLatin1String(option), *given, core::kFilterCutoffRange, error);
         if (!*cutoff) return error;
     }
-    const auto order = numberInRange(parser, "order", core::kFilterOrderRange, 4.0, error);
-    if (!order || *order != std::floor(*order))
-        return error.isEmpty() ? QStringLiteral("--order is a whole number, 2 to 8, not %1")
-                                     .arg(parser.value(QStringLiteral("order")))
-                               : error;
-    s.order = static_cast<int>(*order);
-    const auto average = numberInRange(parser, "moving-average", core::kMovingAverageRange, 0.0, error);
-    if (!average) return error;
-    s.movingAverage_s = *average;
-    if (parser.isSet(QStringLiteral("order")) && !s.lowpass_hz && !s.highpass_hz)
-        return QStringLiteral("--order is the Butterworth filters': give --lowpass or --highpass with it");
+    if (const auto given = text("order")) {
+        const auto order = numberInRange(QStringLiteral("order"), *given, core::kFilterOrderRange, error);
+        if (!order || *order != std::floor(*order))
+            return error.isEmpty() ? QStringLiteral("--order is a whole number, 2 to 8, not %1").arg(*given) : error;
+        s.order = static_cast<int>(*order);
+    }
+    if (const auto given = text("moving-average")) {
+        const auto average = numberInRange(QStringLiteral("moving-average"), *given, core::kMovingAverageRange, error);
+        if (!average) return error;
+        s.movingAverage_s = *average;
+    }
+    return std::nullopt;
+}
+
+bool butterworth(const core::dsp::FilterSettings& settings)
+{
+    return settings.lowpass_hz || settings.highpass_hz;
+}
+
+const QString kOrderAlone =
+    QStringLiteral("--order is the Butterworth filters': give --lowpass or --highpass with it");
+
+}  // namespace
+
+std::optional<QString> readFilterSettings(const QCommandLineParser& parser, core::dsp::FilterSettings& s)
+{
+    FilterValues values;
+    for (const char* option : kFilterOptionNames)
+        if (parser.isSet(QLatin1String(option))) values[QLatin1String(option)] = parser.value(QLatin1String(option));
+    if (auto error = settingsOf(values, s)) return error;
+    if (values.contains(QStringLiteral("order")) && !butterworth(s)) return kOrderAlone;
     return std::nullopt;
 }
 
@@ -58,7 +92,8 @@ QList<QCommandLineOption> signalOptions()
         {QStringLiteral("filter-channel"),
          QStringLiteral("The channel the filter options filter, live (repeatable; default: every channel). Its "
                         "filtered values are watched as NAME.filtered; the stored samples stay as they came, and "
-                        "the session keeps the filter. With several devices: DEVICE/NAME."),
+                        "the session keeps the filter. With several devices: DEVICE/NAME; and a filter option given as "
+                        "DEVICE=VALUE is that device's own (--notch a=50 --lowpass b=20)."),
          QStringLiteral("NAME")},
         {QStringLiteral("analyze-filtered"),
          QStringLiteral("The mode's analysis (detector, presses, force) reads the filtered channels instead of the "
@@ -103,17 +138,8 @@ std::optional<QString> readSetup(const core::dsp::FilterSettings& settings, cons
     return std::nullopt;
 }
 
-// The filter settings and the checks every reading shares.
-std::optional<QString> readSettings(const QCommandLineParser& parser, core::dsp::FilterSettings& settings)
-{
-    if (auto error = readFilterSettings(parser, settings)) return error;
-    if (settings.empty() && parser.isSet(QStringLiteral("filter-channel")))
-        return QStringLiteral("--filter-channel names what the filter options filter: give --notch, --lowpass, "
-                              "--highpass or --moving-average");
-    if (parser.isSet(QStringLiteral("analyze-filtered")) && settings.empty())
-        return QStringLiteral("--analyze-filtered: give the filter to analyse through (--notch, --lowpass, …)");
-    return std::nullopt;
-}
+const QString kAnalyzeWithoutFilter =
+    QStringLiteral("--analyze-filtered: give the filter to analyse through (--notch, --lowpass, …)");
 
 }  // namespace
 
@@ -121,7 +147,11 @@ std::optional<QString> readSignalSetup(const QCommandLineParser& parser, const s
                                        core::signal::SignalSetup& setup)
 {
     core::dsp::FilterSettings settings;
-    if (auto error = readSettings(parser, settings)) return error;
+    if (auto error = readFilterSettings(parser, settings)) return error;
+    if (settings.empty() && parser.isSet(QStringLiteral("filter-channel")))
+        return QStringLiteral("--filter-channel names what the filter options filter: give --notch, --lowpass, "
+                              "--highpass or --moving-average");
+    if (parser.isSet(QStringLiteral("analyze-filtered")) && settings.empty()) return kAnalyzeWithoutFilter;
     return readSetup(settings, parser.values(QStringLiteral("filter-channel")), parser.values(QStringLiteral("math")),
                      parser.isSet(QStringLiteral("analyze-filtered")), channels, setup);
 }
@@ -130,37 +160,61 @@ std::optional<QString> readSignalSetups(const QCommandLineParser& parser, const 
                                         const std::vector<std::vector<std::string>>& channels,
                                         std::vector<core::signal::SignalSetup>& setups)
 {
-    core::dsp::FilterSettings settings;
-    if (auto error = readSettings(parser, settings)) return error;
-    // Each value goes to the device named before its first '/', without it.
-    std::vector<QStringList> named(devices.size());
-    std::vector<QStringList> math(devices.size());
-    for (const auto& [option, form, byDevice] : {std::tuple{"filter-channel", "DEVICE/CHANNEL", &named},
-                                                 std::tuple{"math", "DEVICE/NAME[UNIT]=EXPR", &math}}) {
-        for (const QString& value : parser.values(QLatin1String(option))) {
-            const auto split = deviceAndChannel(value.toStdString());
-            const auto device = split ? std::ranges::find(devices, split->first) : devices.end();
-            if (device == devices.end()) {
-                QStringList names;
-                for (const std::string& name : devices) names.append(QString::fromStdString(name));
-                const QString why =
-                    split ? QStringLiteral("no device is named %1").arg(quoted(toQString(split->first)))
-                          : QStringLiteral("with several devices, say whose as %1").arg(QLatin1String(form));
-                return QStringLiteral("--%1 %2: %3 (the devices: %4)")
-                    .arg(QLatin1String(option), quoted(value), why, names.join(QStringLiteral(", ")));
-            }
-            (*byDevice)[static_cast<std::size_t>(device - devices.begin())].append(
-                QString::fromStdString(split->second));
-        }
+    // Each filter option's value for each device: DEVICE=VALUE, else the
+    // one given for every device.
+    std::vector<FilterValues> values(devices.size());
+    QString error;
+    for (const char* option : kFilterOptionNames) {
+        const auto byDevice = valuesByName(QLatin1String(option), parser.values(QLatin1String(option)), devices,
+                                           QStringLiteral("device"), devicesText(devices), error);
+        if (!byDevice) return error;
+        for (std::size_t i = 0; i < devices.size(); ++i)
+            if (const auto& value = (*byDevice)[i]) values[i][QLatin1String(option)] = *value;
     }
+    std::vector<core::dsp::FilterSettings> settings(devices.size());
+    for (std::size_t i = 0; i < devices.size(); ++i)
+        if (auto refusal = settingsOf(values[i], settings[i])) return refusal;
+    // Whether filter option --OPTION (any, when null) has a value named for device i.
+    const auto namedFor = [&](std::size_t i, const char* option) {
+        const QString own = toQString(devices[i]) + QLatin1Char('=');
+        return std::ranges::any_of(kFilterOptionNames, [&](const char* name) {
+            return (!option || qstrcmp(name, option) == 0) &&
+                   std::ranges::any_of(parser.values(QLatin1String(name)),
+                                       [&own](const QString& value) { return value.startsWith(own); });
+        });
+    };
+    // An --order for every device orders the Butterworth filters of those
+    // that have one; one named for a device, that device's.
+    if (parser.isSet(QStringLiteral("order")) && std::ranges::none_of(settings, butterworth)) return kOrderAlone;
+    for (std::size_t i = 0; i < devices.size(); ++i)
+        if (!butterworth(settings[i]) && namedFor(i, "order"))
+            return QStringLiteral("%1: %2").arg(toQString(devices[i]), kOrderAlone);
+    const bool anyFilter = std::ranges::any_of(settings, [](const auto& one) { return !one.empty(); });
+    if (parser.isSet(QStringLiteral("analyze-filtered")) && !anyFilter) return kAnalyzeWithoutFilter;
+
+    // Each --filter-channel and --math value goes to the device named
+    // before its first '/', without it.
+    const auto named = valuesByDevice(QStringLiteral("filter-channel"), QStringLiteral("DEVICE/CHANNEL"),
+                                      parser.values(QStringLiteral("filter-channel")), devices, error);
+    if (!named) return error;
+    const auto math = valuesByDevice(QStringLiteral("math"), QStringLiteral("DEVICE/NAME[UNIT]=EXPR"),
+                                     parser.values(QStringLiteral("math")), devices, error);
+    if (!math) return error;
+    for (std::size_t i = 0; i < devices.size(); ++i)
+        if (!(*named)[i].isEmpty() && settings[i].empty())
+            return QStringLiteral("--filter-channel %1/%2: %1 has no filter (give one for every device, or as "
+                                  "--notch %1=50, --lowpass %1=HZ, …)")
+                .arg(toQString(devices[i]), (*named)[i].front());
     setups.assign(devices.size(), {});
     const bool someNamed = parser.isSet(QStringLiteral("filter-channel"));
     for (std::size_t i = 0; i < devices.size(); ++i) {
-        // Channels named, none of this device's: it is not filtered.
-        const core::dsp::FilterSettings own = someNamed && named[i].isEmpty() ? core::dsp::FilterSettings{} : settings;
-        if (auto error = readSetup(own, named[i], math[i], parser.isSet(QStringLiteral("analyze-filtered")),
+        // Channels named, none of this device's, and no filter of its own:
+        // the filter for every device is not for it.
+        const bool notForIt = someNamed && (*named)[i].isEmpty() && !namedFor(i, nullptr);
+        const core::dsp::FilterSettings own = notForIt ? core::dsp::FilterSettings{} : settings[i];
+        if (auto refusal = readSetup(own, (*named)[i], (*math)[i], parser.isSet(QStringLiteral("analyze-filtered")),
                                    channels[i], setups[i]))
-            return QStringLiteral("%1: %2").arg(QString::fromStdString(devices[i]), *error);
+            return QStringLiteral("%1: %2").arg(toQString(devices[i]), *refusal);
     }
     return std::nullopt;
 }

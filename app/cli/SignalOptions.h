@@ -32,12 +32,14 @@ QList<QCommandLineOption> signalOptions();
 std::optional<QString> readSignalSetup(const QCommandLineParser& parser, const std::vector<std::string>& channels,
                                        core::signal::SignalSetup& setup);
 // The same for each of several devices, named `devices`, whose channels
-// are `channels[i]`: --filter-channel DEVICE/CHANNEL and --math
-// "DEVICE/NAME[UNIT]=EXPR" go to that device (a math channel is over one
-// device's channels: the devices' clocks differ); the filters with no
-// --filter-channel filter every channel of every device, and
-// --analyze-filtered holds for each device with a filter. The reason, for
-// options that cannot be (a name without its device, a device not here).
+// are `channels[i]`: a filter option given as DEVICE=VALUE is that
+// device's own, one without a device every device's; --filter-channel
+// DEVICE/CHANNEL and --math "DEVICE/NAME[UNIT]=EXPR" go to that device (a
+// math channel is over one device's channels: the devices' clocks
+// differ); a device's filter with no --filter-channel of its filters its
+// every channel, and --analyze-filtered holds for each device with a
+// filter. The reason, for options that cannot be (a name without its
+// device, a device not here, a device's channel named in another's math).
 std::optional<QString> readSignalSetups(const QCommandLineParser& parser, const std::vector<std::string>& devices,
                                         const std::vector<std::vector<std::string>>& channels,
                                         std::vector<core::signal::SignalSetup>& setups);

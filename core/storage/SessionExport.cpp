@@ -195,16 +195,20 @@ void writeMetadata(text::JsonWriter& json, SessionSource& store, std::int64_t se
     json.key("calibrations_json").value(s.metadata.calibrationsJson);
     json.key("trigger").value(s.metadata.trigger);
     json.key("signal_setup").value(s.metadata.signalSetup);
-    json.key("samples_per_channel").value(static_cast<long long>(total));
+    // A session of several devices holds no samples of its own: each
+    // device's count and exported range are under its "devices" entry.
+    if (s.devices == 0) json.key("samples_per_channel").value(static_cast<long long>(total));
     json.endObject();
-    // Which samples the export holds, as indices and as session seconds.
-    const std::uint64_t first = std::min(range.first, total), end = endOf(range, total);
-    json.key("exported_range").beginObject();
-    json.key("first_index").value(static_cast<long long>(first));
-    json.key("count").value(static_cast<long long>(end - first));
-    json.key("from_s").value(s.sampleRate_hz > 0.0 ? static_cast<double>(first) / s.sampleRate_hz : 0.0);
-    json.key("to_s").value(s.sampleRate_hz > 0.0 ? static_cast<double>(end) / s.sampleRate_hz : 0.0);
-    json.endObject();
+    if (s.devices == 0) {
+        // Which samples the export holds, as indices and as session seconds.
+        const std::uint64_t first = std::min(range.first, total), end = endOf(range, total);
+        json.key("exported_range").beginObject();
+        json.key("first_index").value(static_cast<long long>(first));
+        json.key("count").value(static_cast<long long>(end - first));
+        json.key("from_s").value(s.sampleRate_hz > 0.0 ? static_cast<double>(first) / s.sampleRate_hz : 0.0);
+        json.key("to_s").value(s.sampleRate_hz > 0.0 ? static_cast<double>(end) / s.sampleRate_hz : 0.0);
+        json.endObject();
+    }
     json.key("channels").beginArray();
     for (const auto& channel : store.channels(session)) {
         json.beginObject();

@@ -216,13 +216,21 @@ TEST(DevicesSessionCli, EachDeviceFiltersAndComputesItsOwnSignalAndTheExportCarr
           std::pair{QStringList{"--notch", "50", "--filter-channel", "c/a"},
                     "no device is named 'c' (the devices: a, b)"},
           std::pair{QStringList{"--notch", "50", "--filter-channel", "b/z"}, "b: --filter-channel: the device has no "
-                                                                             "channel 'z'"}}) {
+                                                                             "channel 'z'"},
+          // A filter of one device's own: DEVICE=VALUE, a device that is here.
+          std::pair{QStringList{"--lowpass", "c=20"}, "--lowpass: no device is named 'c' (the devices: a, b)"},
+          std::pair{QStringList{"--lowpass", "b=20", "--order", "a=6"}, "a: --order is the Butterworth filters'"},
+          std::pair{QStringList{"--lowpass", "b=20", "--filter-channel", "a/a"}, "--filter-channel a/a: a has no "
+                                                                                 "filter"},
+          // Another device's channel in a math channel would be a division.
+          std::pair{QStringList{"--math", "b/diff[]=a/a - b"}, "'a/a' would read as a division"}}) {
         const auto refused = runCli(record + extra);
         EXPECT_EQ(refused.exitCode, 2) << extra.join(' ').toStdString();
         EXPECT_TRUE(refused.err.contains(QString::fromUtf8(said))) << refused.err.toStdString();
     }
     const auto recorded =
-        runCli(record + QStringList{"--notch", "50", "--filter-channel", "a/a", "--math", "b/diff[µε]=a - b"});
+        runCli(record + QStringList{"--notch", "a=50", "--filter-channel", "a/a", "--lowpass", "b=40", "--math",
+                                    "b/diff[µε]=a - b"});
     stopEmulator(a);
     stopEmulator(b);
     ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
@@ -240,52 +248,66 @@ TEST(DevicesSessionCli, EachDeviceFiltersAndComputesItsOwnSignalAndTheExportCarr
         ASSERT_EQ(aSetup.value("filters").toArray().size(), 1);
         EXPECT_EQ(aSetup.value("filters").toArray()[0].toObject().value("channel").toString(), "a");
         EXPECT_TRUE(aSetup.value("math").toArray().isEmpty());
-        EXPECT_TRUE(bSetup.value("filters").toArray().isEmpty());
+        // b's own filter, with none of its channels named, is on each of them.
+        ASSERT_EQ(bSetup.value("filters").toArray().size(), 2);
+        EXPECT_EQ(bSetup.value("filters").toArray()[1].toObject().value("channel").toString(), "b");
         EXPECT_EQ(bSetup.value("math").toArray(), QJsonArray{QStringLiteral("diff[µε]=a - b")});
     }
     const auto shown = runCli({"sessions", "--db", db, "show", QString::number(session)});
     EXPECT_TRUE(shown.out.contains(QStringLiteral("a: mains notch 50 Hz"))) << shown.out.toStdString();
     EXPECT_TRUE(shown.out.contains(QStringLiteral("diff[µε]=a - b"))) << shown.out.toStdString();
 
+    // The export's own math channel over b reads b's channels filtered, as
+    // the recorded one did.
     const QString csv = dir.filePath("x.csv");
-    const auto exported =
-        runCli({"sessions", "--db", db, "export", QString::number(session), "--format", "csv", "--output", csv});
+    const auto exported = runCli({"sessions", "--db", db, "export", QString::number(session), "--format", "csv",
+                                  "--output", csv, "--math", "b/q[µε]=a - b"});
     ASSERT_EQ(exported.exitCode, 0) << exported.err.toStdString();
     QFile csvFile(csv);
     ASSERT_TRUE(csvFile.open(QIODevice::ReadOnly));
     EXPECT_EQ(QString::fromUtf8(csvFile.readLine()).trimmed(),
               QString::fromUtf8("t [s],a/a [strain],a/b [strain],a/a.filtered [strain],b/a [strain],b/b [strain],"
-                                "b/diff [µε]"));
+                                "b/a.filtered [strain],b/b.filtered [strain],b/diff [µε],b/q [µε]"));
     int aRows = 0, bRows = 0;
     while (!csvFile.atEnd()) {
         const QStringList cells = QString::fromUtf8(csvFile.readLine()).trimmed().split(QLatin1Char(','));
-        ASSERT_EQ(cells.size(), 7);
+        ASSERT_EQ(cells.size(), 10);
         if (!cells[1].isEmpty()) {  // a's row: its filtered channel beside its samples, b's cells empty
             ++aRows;
             EXPECT_FALSE(cells[3].isEmpty());
-            EXPECT_TRUE(cells[4].isEmpty() && cells[6].isEmpty());
+            EXPECT_TRUE(cells[4].isEmpty() && cells[8].isEmpty() && cells[9].isEmpty());
             continue;
         }
         ++bRows;
-        // The stored samples are binary32, written as the shortest text that
-        // reads back to them: each within its half ulp, 6e-8 of itself.
-        const double sampleA = cells[4].toDouble(), sampleB = cells[5].toDouble();
-        EXPECT_NEAR(cells[6].toDouble(), (sampleA - sampleB) * 1e6,
-                    6e-8 * (std::abs(sampleA) + std::abs(sampleB)) * 1e6);
+        // Computed values keep every digit: the math of the filtered values
+        // to a rounding, the export's the recorded one's exactly.
+        const double filteredA = cells[6].toDouble(), filteredB = cells[7].toDouble();
+        EXPECT_NEAR(cells[8].toDouble(), (filteredA - filteredB) * 1e6,
+                    1e-12 * (std::abs(filteredA) + std::abs(filteredB)) * 1e6);
+        EXPECT_EQ(cells[9], cells[8]);
     }
     EXPECT_GT(aRows, 900);  // 2 s at 500 Hz each
     EXPECT_GT(bRows, 900);
     QFile meta(dir.filePath("x.meta.json"));
     ASSERT_TRUE(meta.open(QIODevice::ReadOnly));
+    const QJsonObject metadata = QJsonDocument::fromJson(meta.readAll()).object();
     QStringList computed;
-    for (const auto& column : QJsonDocument::fromJson(meta.readAll()).object().value("computed_columns").toArray())
+    for (const auto& column : metadata.value("computed_columns").toArray())
         computed << column.toObject().value("column").toString();
-    EXPECT_EQ(computed, (QStringList{"a/a.filtered [strain]", QString::fromUtf8("b/diff [µε]")}));
+    EXPECT_EQ(computed, (QStringList{"a/a.filtered [strain]", "b/a.filtered [strain]", "b/b.filtered [strain]",
+                                     QString::fromUtf8("b/diff [µε]"), QString::fromUtf8("b/q [µε]")}));
+    // The whole session holds no samples of its own: each device's count is its own.
+    EXPECT_FALSE(metadata.value("session").toObject().contains("samples_per_channel"));
+    EXPECT_FALSE(metadata.contains("exported_range"));
+    for (const auto& device : metadata.value("devices").toArray())
+        EXPECT_EQ(device.toObject().value("exported_range").toObject().value("count").toInt(),
+                  device.toObject().value("session").toObject().value("samples_per_channel").toInt());
     // A math channel over the whole session would mix two clocks: refused, naming the parts.
     const auto mathRefused = runCli({"sessions", "--db", db, "export", QString::number(session), "--format", "csv",
                                      "--output", dir.filePath("m.csv"), "--math", "q[µε]=a - b"});
     EXPECT_EQ(mathRefused.exitCode, 2);
-    EXPECT_TRUE(mathRefused.err.contains(QStringLiteral("is of several devices"))) << mathRefused.err.toStdString();
+    EXPECT_TRUE(mathRefused.err.contains(QStringLiteral("say whose as DEVICE/NAME[UNIT]=EXPR (the devices: a, b)")))
+        << mathRefused.err.toStdString();
 }
 
 // A probe that goes while the other records on: a gap at the end of its

@@ -73,11 +73,14 @@ TEST(SignalSetupCli, ARecordingKeepsItsFiltersAndMathAndTheExportComputesThemAsL
     EXPECT_TRUE(shown.out.contains("alarm    diff above its warning limit -1000 µε")) << shown.out.toStdString();
 
     const QString csv = dir.filePath("out.csv");
-    const CliResult exported =
-        runCli({"sessions", "--db", db, "export", QString::number(id), "--format", "csv", "--output", csv});
+    // The export's own math channel reads the filtered channels, as the
+    // recorded one did live: the same values.
+    const CliResult exported = runCli({"sessions", "--db", db, "export", QString::number(id), "--format", "csv",
+                                       "--output", csv, "--math", "again[µε]=a - b"});
     ASSERT_EQ(exported.exitCode, 0) << exported.err.toStdString();
     const QStringList lines = csvLines(csv);
-    ASSERT_EQ(lines.front(), "t [s],a [strain],b [strain],a.filtered [strain],b.filtered [strain],diff [µε]");
+    ASSERT_EQ(lines.front(),
+              "t [s],a [strain],b [strain],a.filtered [strain],b.filtered [strain],diff [µε],again [µε]");
     ASSERT_EQ(lines.size(), 3001);
     // The 50 Hz amplitude of the raw and of the filtered difference over
     // the last 2 s (100 whole cycles), by projection on its sine and cosine:
@@ -85,9 +88,10 @@ TEST(SignalSetupCli, ARecordingKeepsItsFiltersAndMathAndTheExportComputesThemAsL
     double rawSin = 0.0, rawCos = 0.0, filteredSin = 0.0, filteredCos = 0.0;
     for (int i = 1; i < lines.size(); ++i) {
         const QStringList v = lines[i].split(',');
-        ASSERT_EQ(v.size(), 6);
+        ASSERT_EQ(v.size(), 7);
         const double difference = (v[3].toDouble() - v[4].toDouble()) * 1e6;
         EXPECT_NEAR(v[5].toDouble(), difference, 1e-12 * std::abs(difference) + 1e-15) << i;
+        EXPECT_EQ(v[6], v[5]) << i;
         if (i > 1000) {
             const double phase = 2.0 * M_PI * 50.0 * v[0].toDouble();
             const double raw = (v[1].toDouble() - v[2].toDouble()) * 1e6;
