@@ -11,7 +11,9 @@
 #include "core/io/CsvReader.h"
 #include "core/storage/Database.h"
 #include "core/storage/SafeOutput.h"
+#include "core/text/CountText.h"
 #include "core/text/JsonWriter.h"
+#include "core/text/NumberFormat.h"
 
 #include <QTextStream>
 
@@ -157,6 +159,20 @@ int emulatedProbeFiles(const DetectOptions& options)
     });
 }
 
+// "Between t = 1.2 and 1.26 s (line 122), …": where the first few gaps
+// are, so that the user can look at the file there.
+std::string gapsText(const std::vector<core::detector::TimeGap>& gaps)
+{
+    constexpr std::size_t kNamed = 5;
+    std::string text;
+    for (std::size_t i = 0; i < std::min(gaps.size(), kNamed); ++i)
+        text += std::string(i == 0 ? "Between t = " : ", between t = ") + core::text::formatShortest(gaps[i].before_s) +
+                " and " + core::text::formatShortest(gaps[i].after_s) + " s (line " +
+                std::to_string(gaps[i].lineAfter) + ")";
+    if (gaps.size() > kNamed) text += " and " + std::to_string(gaps.size() - kNamed) + " more";
+    return text + ".";
+}
+
 }  // namespace
 
 int runDetect(const QStringList& arguments)
@@ -252,11 +268,13 @@ int runDetect(const QStringList& arguments)
         std::cerr << "note: the column '" << *options.position << "' spans " << positionSpan_m
                   << " m, more than a panel probe's stroke (" << core::detector::kMaxStroke_m
                   << " m): is it in m? Its sites are placed as it says\n";
-    if (result.gaps > 0)
-        std::cerr << "note: the time column skips whole intervals: " << result.gaps
-                  << (result.gaps == 1 ? " gap (" : " gaps (") << result.samplesMissing
+    if (!result.gaps.empty()) {
+        std::cerr << "note: the time column skips whole intervals: "
+                  << core::text::countText(result.gaps.size(), "gap", "gaps") << " (" << result.samplesMissing
                   << " samples missing, as an export of a session that lost samples leaves them out): the detector "
-                     "restarted after each gap, never bridging one\n";
+                     "restarted after each gap, never bridging one. "
+                  << gapsText(result.gaps) << '\n';
+    }
     if (unusedLength)
         std::cerr << "note: the column '" << *unusedLength
                   << "' is a length: if it is the rig's position along the stroke, --position " << *unusedLength

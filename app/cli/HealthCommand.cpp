@@ -123,8 +123,10 @@ void printHealth(const QString& name, const std::vector<Row>& rows)
                        core::text::valueWithUncertainty(h.drift->rate_per_s * kSecondsPerHour * scale,
                                                         h.drift->standardUncertainty_per_s * kSecondsPerHour * scale))
                 << spaced << "/h";
+        else if (h.span_s < core::dsp::kShortestDrift_s)
+            out << ", drift: from " << core::dsp::kShortestDrift_s << " s on";
         else
-            out << ", drift: too short";
+            out << ", drift: too much lost";
         if (row.clippingJudged) out << ", " << h.clipped << " clipped";
         if (h.missing > 0) out << ", " << h.missing << " missing";
         if (row.creep) {

@@ -54,6 +54,12 @@ QString channelsAt(const devices::session::LiveSession& live)
         .arg(QLocale::c().toString(live.source().nominalSampleRate_hz()));
 }
 
+// "0 CRC errors", "1 CRC error".
+QString crcErrorsText(const devices::session::LiveSession& live)
+{
+    return toQString(core::text::countText(live.source().decoderCounters().crcErrors, "CRC error", "CRC errors"));
+}
+
 }  // namespace
 
 RecordOutput::RecordOutput(std::string db, const devices::session::LivePipeline& pipeline,
@@ -168,8 +174,8 @@ void RecordOutput::reportOne(const devices::session::RecordingEnd& end)
                                         : live.stats().samplesLost + written.samplesDropped + summary.samplesLostAtEnd;
     QTextStream(stdout) << "Recorded session " << summary.session << ": "
                         << toQString(core::text::countText(written.samplesWritten, "sample", "samples"))
-                        << " per channel, " << lostCount << " lost, " << live.source().decoderCounters().crcErrors
-                        << " CRC errors (" << channelsAt(live) << ", into " << toQString(m_db) << "); "
+                        << " per channel, " << lostCount << " lost, " << crcErrorsText(live) << " ("
+                        << channelsAt(live) << ", into " << toQString(m_db) << "); "
                         << toQString(core::toString(live.recordingMetadata().mode)) << ": "
                         << toQString(summary.analysis) << Qt::endl;
     tellHoles({}, summary, live.channels());
@@ -207,7 +213,7 @@ void RecordOutput::reportSeveral(const devices::session::RecordingEnd& end)
             << "): " << toQString(core::text::countText(summary.stats.samplesWritten, "sample", "samples"))
             << " per channel, "
             << (lost.contains(summary.session) ? lost.at(summary.session) : live.stats().samplesLost) << " lost, "
-            << live.source().decoderCounters().crcErrors << " CRC errors (" << channelsAt(live) << "); "
+            << crcErrorsText(live) << " (" << channelsAt(live) << "); "
             << toQString(core::toString(live.recordingMetadata().mode)) << ": " << toQString(summary.analysis)
             << "; clock: " << toQString(core::timing::clockMappingText(clock != stored.end() ? clock->clockJson : ""))
             << Qt::endl;

@@ -248,9 +248,10 @@ int show(SessionSource& store, std::int64_t id, bool json)
         for (const auto& gap : store.gaps(of)) lost += gap.count;
         const auto channels = store.channels(of);
         const auto own = store.session(of);
-        out << QString("samples").leftJustified(18) << store.sampleCount(of) << " per channel ("
-            << QString::number(own ? own->duration_s() : 0.0, 'f', 3) << " s), " << lost
-            << (lost > 0 ? " of them lost\n" : " lost\n");
+        // As `record` said it: the samples there are, then those lost, over the span of both.
+        const std::uint64_t spanned = store.sampleCount(of);
+        out << QString("samples").leftJustified(18) << (spanned - std::min(lost, spanned)) << " per channel, " << lost
+            << " lost (" << QString::number(own ? own->duration_s() : 0.0, 'f', 3) << " s)\n";
         out << QString("channels").leftJustified(18);
         const auto scales = profileScalesOf(m.profileJson);
         for (std::size_t c = 0; c < channels.size(); ++c) {

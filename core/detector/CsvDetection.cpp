@@ -96,14 +96,18 @@ std::size_t CheckedScan::read(std::vector<std::vector<double>>& block)
     // none before the file's first row.
     const auto from = std::ranges::lower_bound(m_afterGaps, std::max<std::uint64_t>(m_read, 1));
     const auto to = std::ranges::lower_bound(m_afterGaps, m_read + n);
+    const std::size_t known = m_gapsRead.size();
     for (auto gap = to; gap != from;) {
         const auto row = static_cast<std::ptrdiff_t>(*--gap - m_read);
         auto& t = block.front();
         const double before_s = row > 0 ? t[static_cast<std::size_t>(row) - 1] : m_lastTime_s;
-        t.insert(t.begin() + row, (before_s + t[static_cast<std::size_t>(row)]) / 2.0);
+        const double after_s = t[static_cast<std::size_t>(row)];
+        m_gapsRead.push_back({before_s, after_s, m_lines[static_cast<std::size_t>(row)]});
+        t.insert(t.begin() + row, (before_s + after_s) / 2.0);
         for (std::size_t c = 1; c < block.size(); ++c)
             block[c].insert(block[c].begin() + row, std::numeric_limits<double>::quiet_NaN());
     }
+    std::reverse(m_gapsRead.begin() + static_cast<std::ptrdiff_t>(known), m_gapsRead.end());  // found last first
     m_lastTime_s = block.front().back();
     m_read += n;
     return n;
@@ -129,7 +133,7 @@ CsvDetection detectCsv(const std::string& path, const std::vector<std::string>& 
         result.detectorSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     }
     result.samples = static_cast<std::size_t>(detection.samplesPushed()) - scan.gaps();  // not the NaN at each gap
-    result.gaps = scan.gaps();
+    result.gaps = scan.gapsRead();
     result.samplesMissing = scan.samplesMissing();
     result.events = detection.finish().events;
     return result;

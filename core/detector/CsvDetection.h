@@ -22,9 +22,17 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// Where a file's times skip whole intervals: the times of the rows either
+// side, and the file's line of the row after it.
+struct TimeGap {
+    double before_s = 0.0;
+    double after_s = 0.0;
+    std::size_t lineAfter = 0;
+};
+
 struct CsvDetection {
-    std::size_t samples = 0;  // rows of the file, each a sample
-    std::size_t gaps = 0;     // where its times skip whole intervals: the detector restarted after each
+    std::size_t samples = 0;    // rows of the file, each a sample
+    std::vector<TimeGap> gaps;  // where its times skip whole intervals: the detector restarted after each
     std::uint64_t samplesMissing = 0;
     std::size_t lags = 0;
     double interval_s = 0.0;          // the whole file's mean sampling interval
@@ -62,6 +70,8 @@ public:
     double interval_s() const { return m_interval_s; }
     std::size_t rows() const { return m_rows; }
     std::size_t gaps() const { return m_afterGaps.size(); }
+    // The gaps read() has passed, in the file's order.
+    const std::vector<TimeGap>& gapsRead() const { return m_gapsRead; }
     std::uint64_t samplesMissing() const { return m_missing; }
     // The next rows into `block` (the times, then the cantilevers), with a
     // NaN sample at each gap among them; 0 at the end, where a file that
@@ -78,6 +88,7 @@ private:
     std::vector<std::uint64_t> m_afterGaps;  // the rows that follow a gap
     std::uint64_t m_missing = 0;
     double m_lastTime_s = 0.0;  // the last row read's, for a gap at a block's start
+    std::vector<TimeGap> m_gapsRead;
     std::unique_ptr<io::CsvColumnReader> m_reader;
 };
 

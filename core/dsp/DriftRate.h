@@ -13,6 +13,10 @@
 
 namespace tactiscope::core::dsp {
 
+// A drift read over less than this is the noise's, its ± alone wider than
+// any drift worth knowing: none is given (live, in reports, by `health`).
+inline constexpr double kShortestDrift_s = 30.0;
+
 struct Drift {
     double rate_per_s = 0.0;
     double standardUncertainty_per_s = 0.0;  // k = 1
@@ -28,6 +32,8 @@ public:
     void push(double value);
     // None with fewer than 3 intervals holding half their samples or more.
     std::optional<Drift> result() const;
+    // The time the samples pushed span, missing ones included.
+    double span_s() const { return static_cast<double>(m_index) / m_rate_hz; }
 
 private:
     void closeInterval();

@@ -66,7 +66,8 @@ ChannelHealth HealthAccumulator::result() const
     health.noiseFloor_per_sqrt_hz = noiseFloor(spectrum);
     health.resolution_hz = spectrum.resolution_hz();
     health.averages = spectrum.averages;
-    health.drift = m_drift.result();
+    health.span_s = m_drift.span_s();
+    if (health.span_s >= kShortestDrift_s) health.drift = m_drift.result();
     health.clipped = m_clips.clipped();
     return health;
 }

@@ -22,7 +22,8 @@ struct ChannelHealth {
     double noiseFloor_per_sqrt_hz = 0.0;  // NaN when too short for a spectrum
     double resolution_hz = 0.0;
     std::size_t averages = 0;
-    std::optional<Drift> drift;
+    std::optional<Drift> drift;  // none under kShortestDrift_s, or too much of it lost
+    double span_s = 0.0;         // the time judged, missing samples included
     std::uint64_t clipped = 0;  // 0 where clipping is not judged
 };
 

@@ -108,9 +108,9 @@ TEST(SessionsCli, ListAndShow)
     EXPECT_EQ(metadata["gaps"].toArray()[0].toObject()["count"].toInt(), 10);
     // The session's span holds its gap's lost samples (record counts them apart: 90 received, 10 lost).
     const auto gapped = runCli({"sessions", "--db", db, "show", "2"});
-    EXPECT_TRUE(gapped.out.contains("100 per channel (0.500 s), 10 of them lost")) << gapped.out.toStdString();
+    EXPECT_TRUE(gapped.out.contains("90 per channel, 10 lost (0.500 s)")) << gapped.out.toStdString();
     const auto human = runCli({"sessions", "--db", db, "show", "1"});
-    EXPECT_TRUE(human.out.contains("20 per channel (0.100 s), 0 lost")) << human.out.toStdString();
+    EXPECT_TRUE(human.out.contains("20 per channel, 0 lost (0.100 s)")) << human.out.toStdString();
     EXPECT_TRUE(human.out.contains("force [N]")) << human.out.toStdString();
 }
 

@@ -132,6 +132,9 @@ TEST(SignalSetupCli, ARecordingKeepsItsFiltersAndMathAndTheExportComputesThemAsL
     EXPECT_TRUE(text.contains("Signal quality")) << text.toStdString();
     EXPECT_TRUE(text.contains("a: mains notch 50 Hz and harmonics, low-pass 200 Hz (Butterworth, order 4)"))
         << text.toStdString();
+    // Recorded through the notch, the detector read the gauges as stored: the verdict says so.
+    EXPECT_TRUE(text.contains("The mode's analysis read the channels as stored, not through the"))
+        << text.toStdString();
     const QRegularExpression hum(QStringLiteral("\\b([ab]) ([0-9.]+) µε at 50 Hz"));
     std::map<QString, double> found;
     for (auto it = hum.globalMatch(text); it.hasNext();) {
@@ -204,6 +207,13 @@ TEST(SignalSetupCli, PalpationAndTheCapacitiveBeamRecordThroughTheirFiltersAndMa
             QJsonDocument::fromJson(QByteArray::fromStdString(store.sessions().front().metadata.signalSetup)).object();
         EXPECT_TRUE(setup.value("analysis_filtered").toBool());
         EXPECT_EQ(setup.value("filters").toArray().size(), 3);  // high, low and the displacement
+        if (!*tactiscope::testing::pdfTextMissing()) {
+            const QString pdf = dir.filePath("palpation.pdf");
+            ASSERT_EQ(runCli({"report", "--db", db, "--session", "last", "--output", pdf}).exitCode, 0);
+            const QString text = tactiscope::testing::pdfText(pdf).simplified();
+            EXPECT_TRUE(text.contains("the mode analyses the")) << text.toStdString();
+            EXPECT_FALSE(text.contains("The mode's analysis read the channels as stored")) << text.toStdString();
+        }
     }
     {
         const QString link = dir.filePath("beam");

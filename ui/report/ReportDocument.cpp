@@ -9,6 +9,7 @@
 
 #include "core/Version.h"
 #include "core/report/VerdictTrail.h"
+#include "core/signal/SignalSetup.h"
 #include "core/storage/AutomaticVerdict.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/SafeOutput.h"
@@ -148,7 +149,25 @@ QString capacitivePeaks(const core::report::ReportData& data)
         .arg(number(*force * 1e6, 1), number(*deflection * 1e3, 3));
 }
 
-QString verdict(const core::report::ReportData& data)
+// Said beside the verdict or readings when the mode read the channels as
+// stored though the session was recorded through filters: a reader who
+// sees the notch in the setup would otherwise think the detector saw it.
+QString unfilteredAnalysisNote(const core::report::ReportData& data)
+{
+    if (data.session.metadata.mode == core::Mode::General) return {};
+    try {
+        const auto setup = core::signal::signalSetupFromJson(data.session.metadata.signalSetup);
+        if (setup.filters.empty() || setup.analysisFiltered) return {};
+    } catch (const std::invalid_argument&) {
+        return {};  // the signal-quality section says it is unreadable
+    }
+    return QStringLiteral("<p class=trail>%1</p>")
+        .arg(QObject::tr("The mode's analysis read the channels as stored, not through the filters the session was "
+                         "recorded with (those were for the view and the watched values): whatever they took out, "
+                         "such as mains hum, was analysed with the signal. See Signal quality."));
+}
+
+QString verdictOrReadings(const core::report::ReportData& data)
 {
     if (const auto verdict = data.session.verdict) {
         const bool pass = *verdict == core::Verdict::Pass;
@@ -187,6 +206,11 @@ QString verdict(const core::report::ReportData& data)
         return QStringLiteral("<p class=verdict>%1</p>")
             .arg(QObject::tr("No verdict: %1").arg(text(core::storage::unjudgedReason(data.session.unjudged))));
     return QStringLiteral("<p class=verdict>%1</p>").arg(QObject::tr("No verdict recorded"));
+}
+
+QString verdict(const core::report::ReportData& data)
+{
+    return verdictOrReadings(data) + unfilteredAnalysisNote(data);
 }
 
 // The defects as sites (a defect crossed in every stroke is one), then each

@@ -29,7 +29,9 @@ QStringList healthCells(const core::report::ChannelQuality& q)
             ? withUnit(significantText(h.noiseFloor_per_sqrt_hz * unit.scale, 3),
                        (unit.symbol.isEmpty() ? QStringLiteral("1") : unit.symbol) + QStringLiteral("/√Hz"))
             : QObject::tr("no gap-free stretch long enough");
-    QString drift = QObject::tr("too short");
+    QString drift = h.span_s < core::dsp::kShortestDrift_s
+                        ? QObject::tr("from %1 s on").arg(core::dsp::kShortestDrift_s)
+                        : QObject::tr("too much lost");
     if (!q.drifts)
         drift = QObject::tr("— (a position)");
     else if (h.drift)

@@ -30,8 +30,6 @@ namespace {
 constexpr qint64 kRedraw_ms = 1000;
 // The table's column of each of healthCells' (hum, floor, drift, clipped).
 constexpr std::array<int, 4> kColumnOf{1, 2, 4, 3};
-// The drift is shown from this much of the signal on.
-constexpr int kFirstDrift_s = 30;
 // A beam's creep is fitted again after this much more of it (at least).
 constexpr double kCreepRefit_s = 10.0;
 // A gap longer than this is counted as this much missing: the drift's
@@ -259,10 +257,7 @@ void LiveHealth::redraw()
     m_line->setText(tr("Over %1 %2.").arg(durationText(static_cast<double>(m_samples) / m_rate_hz), m_since));
     for (std::size_t r = 0; r < m_channels.size(); ++r) {
         m_channels[r].health = m_accumulators[r].result();
-        QStringList cells = healthCells(m_channels[r]);
-        // A drift read over seconds is the noise's: its ± alone would fill the column.
-        if (m_channels[r].drifts && static_cast<double>(m_samples) < kFirstDrift_s * m_rate_hz)
-            cells[2] = tr("after %1 s").arg(kFirstDrift_s);
+        const QStringList cells = healthCells(m_channels[r]);
         for (int c = 0; c < cells.size(); ++c)
             m_table->item(static_cast<int>(r), kColumnOf[static_cast<std::size_t>(c)])->setText(cells[c]);
     }

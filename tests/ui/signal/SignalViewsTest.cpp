@@ -173,7 +173,7 @@ TEST(SignalViews, FiltersAndAMathChannelAreSetFoundShownRecordedAndReviewed)
         [&] { return health->rowCount() > 0 && health->item(0, 1)->text().contains(QStringLiteral("at 50 Hz")); },
         8000));
     // A drift read over seconds would be the noise's: it waits for half a minute.
-    EXPECT_EQ(health->item(0, 4)->text(), QStringLiteral("after 30 s"));
+    EXPECT_EQ(health->item(0, 4)->text(), QStringLiteral("from 30 s on"));
     EXPECT_EQ(health->item(0, 0)->text(), QStringLiteral("a"));
     const QString hum = health->item(0, 1)->text();
     EXPECT_TRUE(hum.contains(QStringLiteral("µε at 50 Hz"))) << hum.toStdString();
