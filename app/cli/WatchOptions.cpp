@@ -13,7 +13,8 @@ QList<QCommandLineOption> watchOptions()
         {QStringLiteral("trigger"),
          QStringLiteral("Record only when CONDITION begins, one session per trigger: CHANNEL>LEVEL, <, "
                         "'CHANNEL rising LEVEL', 'falling', 'inside A..B', 'outside A..B'; CHANNEL a channel or a "
-                        "mode quantity (force, deflection, force_high, decision, …), in SI units."),
+                        "mode quantity (force, deflection, force_high, decision, …), in SI units (a math channel in its "
+                        "own UNIT, a.filtered as a)."),
          QStringLiteral("CONDITION")},
         {QStringLiteral("pre"), QStringLiteral("With --trigger: seconds kept before the trigger (default 0)."),
          QStringLiteral("S")},
@@ -30,7 +31,8 @@ QList<QCommandLineOption> watchOptions()
         {QStringLiteral("rearm"), QStringLiteral("With --trigger: re-arm after every session until stopped.")},
         {QStringLiteral("limit"),
          QStringLiteral("Alarm limits, repeatable: QUANTITY>warning:W,critical:C[,hold:S] (or <; either level "
-                        "alone), or a window: QUANTITY outside warning:A..B,critical:C..D (or inside), in SI units, "
+                        "alone), or a window: QUANTITY outside warning:A..B,critical:C..D (or inside), in SI units (a "
+                        "math channel in its own UNIT), "
                         "besides the probe's own (its profile's or its sensor model's, e.g. a capacitive "
                         "beam's safe force), whose limit on the same quantity and side it replaces; alarms are "
                         "printed and stored as alarm events."),

@@ -202,6 +202,24 @@ MathChannels::MathChannels(std::vector<MathInput> inputs, std::vector<MathDefini
                 throw MathError(definition.name + ": '" + definition.expression + "' is " + inWords(found) + " (" +
                                 usedText + "), but [" + definition.unit + "] is " + inWords(declared.dimension));
             }
+            // A channel with no unit (a board's numbers before --units) is a
+            // pure number; a scaled pure unit such as µε or % would take its
+            // numbers for that quantity in SI, a million times off for µε.
+            std::vector<std::size_t> unitless;
+            for (const std::size_t v : compiled->variables)
+                if (v < m_inputs.size() && units[v].empty()) unitless.push_back(v);
+            std::ranges::sort(unitless);  // in the channels' order
+            if (declared.toSi != 1.0 && !unitless.empty()) {
+                std::string which;
+                for (std::size_t i = 0; i < unitless.size(); ++i)
+                    which += (i == 0 ? "" : i + 1 == unitless.size() ? " and " : ", ") + names[unitless[i]];
+                throw MathError(definition.name + ": " + which + (unitless.size() == 1 ? " has" : " have") +
+                                " no unit, so [" + definition.unit +
+                                "] would take the numbers for a quantity they may not be: give the channels their "
+                                "units (a board's: --units " +
+                                names[unitless.front()] + "=µε, …), or declare " + definition.name +
+                                "[] (a pure number)");
+            }
         }
         for (const std::size_t v : compiled->variables)
             if (v < m_inputs.size() && std::ranges::find(m_usedInputs, v) == m_usedInputs.end())

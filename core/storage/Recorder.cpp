@@ -241,7 +241,11 @@ std::chrono::system_clock::time_point Recorder::endOnTheWallClock()
                   "how long it lasted",
                   step_s < 0.0 ? "back" : "forward", std::abs(step_s));
     const double end_s = static_cast<double>(m_consumedEnd) / m_sampleRate_hz;
-    m_store.addEvents(m_session, std::vector{noteRecord(end_s, text)});
+    try {
+        m_store.addEvents(m_session, std::vector{noteRecord(end_s, text)});
+    } catch (const StorageError& e) {
+        if (m_stats.error.empty()) m_stats.error = e.what();
+    }
     return m_wallStart + std::chrono::duration_cast<std::chrono::system_clock::duration>(lasted);
 }
 
@@ -256,6 +260,21 @@ RecorderStats Recorder::finish(SessionStatus status, const std::optional<Verdict
     m_writer.request_stop();
     m_writer.join();  // writes what was queued
     const std::lock_guard lock(m_mutex);
+    const auto now = endOnTheWallClock();
+    // A triggered session begins with its first sample, which came before
+    // the trigger was seen (its pre-trigger seconds; a board's lines held
+    // while they were timed): dated back from its end, which is about now,
+    // before the gap to its end is measured against how long it lasted.
+    if (m_triggered && m_firstIndex) {
+        const double length_s = static_cast<double>(m_consumedEnd) / m_sampleRate_hz;
+        try {
+            m_store.setStartedUtc(m_session,
+                                  text::utcIso8601(now - std::chrono::duration_cast<std::chrono::milliseconds>(
+                                                             std::chrono::duration<double>(length_s))));
+        } catch (const StorageError& e) {
+            if (m_stats.error.empty()) m_stats.error = e.what();
+        }
+    }
     // What was not stored (lost by the device at the end, over the memory
     // bound, or after a write failed) is a gap to the end, so the session
     // shows what it lacks. A gap is one small row, which a disk too full for
@@ -267,15 +286,8 @@ RecorderStats Recorder::finish(SessionStatus status, const std::optional<Verdict
         m_stats.error += "; the samples not stored could not be marked as lost in the store";
     }
     try {
-        const auto now = endOnTheWallClock();
         m_store.endSession(m_session, m_stats.error.empty() ? status : SessionStatus::Interrupted,
                            text::utcIso8601(now));
-        if (m_triggered && m_firstIndex) {  // its last sample's end is about now
-            const double length_s = static_cast<double>(m_consumedEnd) / m_sampleRate_hz;
-            m_store.setStartedUtc(m_session,
-                                  text::utcIso8601(now - std::chrono::duration_cast<std::chrono::milliseconds>(
-                                                             std::chrono::duration<double>(length_s))));
-        }
         if (verdict) m_store.decideVerdict(m_session, *verdict);
         if (!unjudged.empty()) m_store.markUnjudged(m_session, unjudged);
     } catch (const StorageError& e) {

@@ -248,6 +248,37 @@ TEST(TriggeredRecordCli, ATriggerOnEveryCrossingStoresAndTellsEachSessionItCuts)
         EXPECT_EQ(sessions[k].metadata.subject, k == 0 ? "d" : "d-" + std::to_string(k + 1)) << k;
 }
 
+// A board whose lines are timed first (4.4 s held) sets off a session it
+// then stops printing in, about 4 s before the stop (6.5 s after the
+// recording began, its 7 s of lines ending 7 s after connecting): the gap
+// to the end is no longer than the session lasted from its first sample,
+// so the store holds it whole. (Dated from the moment the trigger was
+// seen, 4.4 s late, its end gap read as longer than it lasted: damaged.)
+TEST(TriggeredRecordCli, ABoardLostInATriggeredSessionLeavesItWholeWithItsGapToTheEnd)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("board");
+    const QString db = dir.filePath("s.tactiscope");
+    QProcess emulator;
+    ASSERT_TRUE(tactiscope::testing::startEmulator(
+        emulator, link, {"--protocol", "text", "--scenario", "panel-scan", "--seconds", "7"}));
+    const auto recorded = runCli({"record", "--port", link, "--protocol", "text", "--db", db, "--trigger", "a>0",
+                                  "--post", "30", "--seconds", "6.5"});
+    tactiscope::testing::stopEmulator(emulator);
+    EXPECT_EQ(recorded.exitCode, 1) << recorded.err.toStdString();  // the probe was lost
+    EXPECT_FALSE(recorded.err.contains("damaged")) << recorded.err.toStdString();
+    EXPECT_TRUE(recorded.err.contains("did not come back")) << recorded.err.toStdString();
+    const auto shown = runCli({"sessions", "--db", db, "show", "last"});
+    ASSERT_EQ(shown.exitCode, 0) << shown.err.toStdString();
+    EXPECT_TRUE(shown.out.contains("status            complete")) << shown.out.toStdString();
+    const auto lost = QRegularExpression(QStringLiteral("samples +([0-9]+) per channel, ([0-9]+) lost")).match(shown.out);
+    ASSERT_TRUE(lost.hasMatch()) << shown.out.toStdString();
+    EXPECT_GT(lost.captured(2).toInt(), 500) << "the silence to the stop, over a second at 500 Hz";
+    EXPECT_EQ(runCli({"sessions", "--db", db, "export", "last", "--format", "csv", "--output", dir.filePath("x.csv")})
+                  .exitCode,
+              0);
+}
+
 TEST(TriggeredRecordCli, AnOverloadedCapacitiveBeamWarnsThenIsCriticalAndStopOnCriticalKeepsTheData)
 {
     QTemporaryDir dir;

@@ -94,6 +94,29 @@ TEST(MathChannels, UnitAlgebraAcceptsWhatIsOneQuantity)
     EXPECT_EQ(refusal({"twice[count]=2 * raw"}), "");
 }
 
+// A board's numbers before it is given units are pure numbers: a math
+// channel over them may be one too, but not a scaled pure unit such as µε,
+// which would take them for strain in SI (3.0 read as 3,000,000 µε).
+TEST(MathChannels, AChannelWithNoUnitIsNotTakenForStrain)
+{
+    const std::vector<MathInput> board{input("n", ""), input("m", ""), input("a", "strain")};
+    const auto refused = [&](const char* text) {
+        try {
+            MathChannels channels(board, definitions({text}));
+        } catch (const MathError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    const std::string asStrain = refused("diff[µε]=n - m");
+    EXPECT_NE(asStrain.find("n and m have no unit, so [µε] would take the numbers"), std::string::npos) << asStrain;
+    EXPECT_NE(asStrain.find("--units n=µε"), std::string::npos) << asStrain;
+    EXPECT_NE(refused("share[%]=n / 2").find("n has no unit"), std::string::npos);
+    EXPECT_EQ(refused("diff[]=n - m"), "");
+    EXPECT_EQ(refused("ratio[1]=n / m"), "");
+    EXPECT_EQ(refused("gauge[µε]=a"), "");  // a probe's strain channel is strain
+}
+
 TEST(MathChannels, UnitAlgebraRefusesWhatMixesUnitsWithAMessage)
 {
     // mN + mm: a force and a length.
