@@ -71,8 +71,8 @@ std::optional<QString> addExportMath(core::storage::SessionSource& store, std::i
     std::vector<std::string> devices;
     for (const auto& part : parts) devices.push_back(part.deviceName);
     QString error;
-    const auto byDevice = valuesByDevice(QStringLiteral("math"), QStringLiteral("DEVICE/NAME[UNIT]=EXPR"),
-                                         definitions, devices, error);
+    const auto byDevice =
+        valuesByDevice(QStringLiteral("math"), QStringLiteral("DEVICE/NAME[UNIT]=EXPR"), definitions, devices, error);
     if (!byDevice) return error;
     // Each part's definitions, made once here so that a refusal is said
     // before the export starts.

@@ -13,8 +13,8 @@ std::optional<std::vector<std::optional<QString>>> shareOut(const QString& optio
 {
     std::vector<std::string> names;
     for (const ProbePortArgument& port : ports) names.push_back(port.name);
-    return valuesByName(option, values, names, QStringLiteral("port"),
-                        QStringLiteral("name one with --port NAME=PATH"), error);
+    return valuesByName(option, values, names, QStringLiteral("port"), QStringLiteral("name one with --port NAME=PATH"),
+                        error);
 }
 
 }  // namespace

@@ -174,8 +174,8 @@ void RecordOutput::reportOne(const devices::session::RecordingEnd& end)
                                         : live.stats().samplesLost + written.samplesDropped + summary.samplesLostAtEnd;
     QTextStream(stdout) << "Recorded session " << summary.session << ": "
                         << toQString(core::text::countText(written.samplesWritten, "sample", "samples"))
-                        << " per channel, " << lostCount << " lost, " << crcErrorsText(live) << " ("
-                        << channelsAt(live) << ", into " << toQString(m_db) << "); "
+                        << " per channel, " << lostCount << " lost, " << crcErrorsText(live) << " (" << channelsAt(live)
+                        << ", into " << toQString(m_db) << "); "
                         << toQString(core::toString(live.recordingMetadata().mode)) << ": "
                         << toQString(summary.analysis) << Qt::endl;
     tellHoles({}, summary, live.channels());

@@ -70,8 +70,7 @@ bool butterworth(const core::dsp::FilterSettings& settings)
     return settings.lowpass_hz || settings.highpass_hz;
 }
 
-const QString kOrderAlone =
-    QStringLiteral("--order is the Butterworth filters': give --lowpass or --highpass with it");
+const QString kOrderAlone = QStringLiteral("--order is the Butterworth filters': give --lowpass or --highpass with it");
 
 }  // namespace
 
@@ -213,7 +212,7 @@ std::optional<QString> readSignalSetups(const QCommandLineParser& parser, const 
         const bool notForIt = someNamed && (*named)[i].isEmpty() && !namedFor(i, nullptr);
         const core::dsp::FilterSettings own = notForIt ? core::dsp::FilterSettings{} : settings[i];
         if (auto refusal = readSetup(own, (*named)[i], (*math)[i], parser.isSet(QStringLiteral("analyze-filtered")),
-                                   channels[i], setups[i]))
+                                     channels[i], setups[i]))
             return QStringLiteral("%1: %2").arg(toQString(devices[i]), *refusal);
     }
     return std::nullopt;

@@ -11,10 +11,11 @@ QList<QCommandLineOption> watchOptions()
 {
     return {
         {QStringLiteral("trigger"),
-         QStringLiteral("Record only when CONDITION begins, one session per trigger: CHANNEL>LEVEL, <, "
-                        "'CHANNEL rising LEVEL', 'falling', 'inside A..B', 'outside A..B'; CHANNEL a channel or a "
-                        "mode quantity (force, deflection, force_high, decision, …), in SI units (a math channel in its "
-                        "own UNIT, a.filtered as a)."),
+         QStringLiteral(
+             "Record only when CONDITION begins, one session per trigger: CHANNEL>LEVEL, <, "
+             "'CHANNEL rising LEVEL', 'falling', 'inside A..B', 'outside A..B'; CHANNEL a channel or a "
+             "mode quantity (force, deflection, force_high, decision, …), in SI units (a math channel in its "
+             "own UNIT, a.filtered as a)."),
          QStringLiteral("CONDITION")},
         {QStringLiteral("pre"), QStringLiteral("With --trigger: seconds kept before the trigger (default 0)."),
          QStringLiteral("S")},

@@ -24,7 +24,7 @@ struct ChannelHealth {
     std::size_t averages = 0;
     std::optional<Drift> drift;  // none under kShortestDrift_s, or too much of it lost
     double span_s = 0.0;         // the time judged, missing samples included
-    std::uint64_t clipped = 0;  // 0 where clipping is not judged
+    std::uint64_t clipped = 0;   // 0 where clipping is not judged
 };
 
 class HealthAccumulator {

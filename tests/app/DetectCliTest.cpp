@@ -144,8 +144,7 @@ TEST_F(DetectCli, AScanWithGapsIsDetectedInStretchesNeverBridgingOne)
     EXPECT_TRUE(said.contains(QStringLiteral("skips whole intervals: 1 gap (100 samples missing")))
         << said.toStdString();
     // Where: the rows either side (500 Hz, samples 1500 to 1599 out) and the line after it.
-    EXPECT_TRUE(said.contains(QStringLiteral("Between t = 2.998 and 3.2 s (line 1502).")))
-        << said.toStdString();
+    EXPECT_TRUE(said.contains(QStringLiteral("Between t = 2.998 and 3.2 s (line 1502)."))) << said.toStdString();
     EXPECT_EQ(between["samples"].toInt(), 2900);
     // The same events; after the restart the detector's memory of the quiet
     // before the gap is gone, which moves the second pass's R in its last digits.

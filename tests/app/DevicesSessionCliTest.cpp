@@ -228,9 +228,8 @@ TEST(DevicesSessionCli, EachDeviceFiltersAndComputesItsOwnSignalAndTheExportCarr
         EXPECT_EQ(refused.exitCode, 2) << extra.join(' ').toStdString();
         EXPECT_TRUE(refused.err.contains(QString::fromUtf8(said))) << refused.err.toStdString();
     }
-    const auto recorded =
-        runCli(record + QStringList{"--notch", "a=50", "--filter-channel", "a/a", "--lowpass", "b=40", "--math",
-                                    "b/diff[µε]=a - b"});
+    const auto recorded = runCli(record + QStringList{"--notch", "a=50", "--filter-channel", "a/a", "--lowpass", "b=40",
+                                                      "--math", "b/diff[µε]=a - b"});
     stopEmulator(a);
     stopEmulator(b);
     ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();

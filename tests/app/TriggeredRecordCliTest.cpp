@@ -271,7 +271,8 @@ TEST(TriggeredRecordCli, ABoardLostInATriggeredSessionLeavesItWholeWithItsGapToT
     const auto shown = runCli({"sessions", "--db", db, "show", "last"});
     ASSERT_EQ(shown.exitCode, 0) << shown.err.toStdString();
     EXPECT_TRUE(shown.out.contains("status            complete")) << shown.out.toStdString();
-    const auto lost = QRegularExpression(QStringLiteral("samples +([0-9]+) per channel, ([0-9]+) lost")).match(shown.out);
+    const auto lost =
+        QRegularExpression(QStringLiteral("samples +([0-9]+) per channel, ([0-9]+) lost")).match(shown.out);
     ASSERT_TRUE(lost.hasMatch()) << shown.out.toStdString();
     EXPECT_GT(lost.captured(2).toInt(), 500) << "the silence to the stop, over a second at 500 Hz";
     EXPECT_EQ(runCli({"sessions", "--db", db, "export", "last", "--format", "csv", "--output", dir.filePath("x.csv")})
