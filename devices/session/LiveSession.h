@@ -296,7 +296,7 @@ private:
     bool startTriggered(const TriggeredSession& pending);
     void takeLimitAlarms();
     void storeAlarm(const LimitAlarm& raised, double end_s);
-    void storeAlarmsBeforeTrigger();
+    void storeWaitingAlarms();
     std::vector<core::ChannelDescriptor> effectiveChannels(const std::vector<core::ChannelDescriptor>& device) const;
     core::RoleAssignment effectiveRoles(const std::vector<core::ChannelDescriptor>& device) const;
     std::optional<std::string> rebuildChannels();
@@ -369,13 +369,15 @@ private:
     // A critical alarm was raised while recording (or is raised at its
     // end): its readings were not true for a while, so it is not judged.
     bool m_criticalWhileRecording = false;
-    // Alarms that ended while the trigger was armed and nothing recorded:
-    // a session it starts next may reach back over them (stream times).
+    // Alarms that ended where no recording could mark them yet (stream
+    // times): while the trigger was armed and nothing recorded (a session
+    // it starts next may reach back over them), or before a recording's
+    // first sample was placed (its tap still learning the link's clock).
     struct ClosedAlarm {
         LimitAlarm raised;
         double cleared_s = 0.0;
     };
-    std::vector<ClosedAlarm> m_alarmsBeforeTrigger;
+    std::vector<ClosedAlarm> m_closedAlarmsWaiting;
 };
 
 }  // namespace tactiscope::devices::session

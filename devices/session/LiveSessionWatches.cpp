@@ -134,7 +134,7 @@ std::optional<RecordingSummary> LiveSession::disarmTrigger()
     m_cutNotRecorded = m_gate->waiting();
     m_gate->disarm();
     m_trigger.reset();
-    m_alarmsBeforeTrigger.clear();
+    m_closedAlarmsWaiting.clear();
     return open;
 }
 
@@ -154,7 +154,7 @@ void LiveSession::takeTriggered()
         if (!pending) {
             // Only what a session the trigger may still start reaches back to is kept.
             const auto reachBack = m_gate->reachBack_s().value_or(std::numeric_limits<double>::infinity());
-            std::erase_if(m_alarmsBeforeTrigger, [reachBack](const ClosedAlarm& c) { return c.cleared_s < reachBack; });
+            std::erase_if(m_closedAlarmsWaiting, [reachBack](const ClosedAlarm& c) { return c.cleared_s < reachBack; });
             return;
         }
         if (!startTriggered(*pending)) return;
@@ -177,7 +177,7 @@ bool LiveSession::startTriggered(const TriggeredSession& pending)
     ++m_triggeredStarted;
     m_triggeredStarts.push_back({m_triggeredStarted, pending.triggerTime_s});
     m_gate->attach(m_recorder);  // its first samples are in the recorder now: its clock is known
-    storeAlarmsBeforeTrigger();
+    storeWaitingAlarms();
     core::storage::SessionEvent trigger;
     trigger.kind = core::EventKind::Trigger;
     trigger.start_s = trigger.end_s = m_recorder->sessionTimeOf(pending.triggerTime_s);
@@ -207,6 +207,8 @@ std::optional<std::string> LiveSession::setLimits(std::vector<core::trigger::Lim
 // alarm, from its raise, into the recording.
 void LiveSession::takeLimitAlarms()
 {
+    const bool placed = m_recorder && m_recorder->acquisitionOrigin_s();
+    if (placed) storeWaitingAlarms();
     for (auto alarm : m_limits->take()) {
         const auto same = [&alarm](const LimitAlarm& raised) {
             return raised.change.severity == alarm.change.severity && raised.limit.text() == alarm.limit.text();
@@ -216,25 +218,26 @@ void LiveSession::takeLimitAlarms()
                 m_criticalWhileRecording = true;
             m_raisedAlarms.push_back(alarm);
         } else if (const auto raised = std::ranges::find_if(m_raisedAlarms, same); raised != m_raisedAlarms.end()) {
-            if (m_recorder)
+            if (placed)
                 storeAlarm(*raised, m_recorder->sessionTimeOf(alarm.time_s));
-            else if (m_trigger)  // the session a trigger is about to start may reach back over it
-                m_alarmsBeforeTrigger.push_back({*raised, alarm.time_s});
+            else if (m_recorder || m_trigger)  // the recording's first sample, or the next session's, may be before it
+                m_closedAlarmsWaiting.push_back({*raised, alarm.time_s});
             m_raisedAlarms.erase(raised);
         }
         m_alarmsTold.push_back(std::move(alarm));
     }
 }
 
-// The alarms raised and cleared before a triggered session's recorder was
-// made, from samples it reaches back to (its pre-trigger time, the
-// stroke that triggered it): stored in it as a manual recording of the
-// same samples would have; those older than any session can reach back to
-// are forgotten.
-void LiveSession::storeAlarmsBeforeTrigger()
+// The alarms raised and cleared before the recording's first sample was
+// placed, from samples it holds: a triggered session's (its pre-trigger
+// time, the stroke that triggered it), or a recording whose tap held its
+// first blocks while the link's clock was learnt. Stored in it as they
+// would have been had it been placed at once; those from before its first
+// sample are forgotten.
+void LiveSession::storeWaitingAlarms()
 {
     const auto origin = m_recorder->acquisitionOrigin_s();
-    for (const auto& closed : std::exchange(m_alarmsBeforeTrigger, {}))
+    for (const auto& closed : std::exchange(m_closedAlarmsWaiting, {}))
         if (origin && closed.cleared_s >= *origin)
             storeAlarm(closed.raised, m_recorder->sessionTimeOf(closed.cleared_s));
 }

@@ -221,6 +221,26 @@ TEST(TriggeredRecordCli, ATriggeredSessionKeepsTheAlarmsOfTheStrokeThatTriggered
     toldOnOneClock(result.err, store, sessions);
 }
 
+// Fresh eyes, issue 57: an alarm raised and cleared in a manual
+// recording's first second, while its tap held the first blocks as the
+// link's clock was learnt, was printed but not stored. Every alarm told is
+// stored now, the first stroke's (0.1 s in) among them.
+TEST(TriggeredRecordCli, AManualRecordingStoresTheAlarmsOfItsFirstSecondToo)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath("scan.tactiscope");
+    const auto result = recordEmulated(dir.path(), db, QStringLiteral("panel-scan"), 3, {"--limit", "a>warning:20e-6"});
+    ASSERT_EQ(result.exitCode, 0) << result.err.toStdString();
+    const auto told = result.err.count(QStringLiteral(": warning: a above its warning limit"));
+    core::storage::SessionStore store(db.toStdString(), core::storage::Database::Access::ReadOnly);
+    const auto session = store.sessions().front();
+    const auto alarms = eventsOfKind(store, session.id, core::EventKind::Alarm);
+    EXPECT_GE(told, 3) << result.err.toStdString();
+    EXPECT_EQ(static_cast<qsizetype>(alarms.size()), told) << result.err.toStdString();
+    ASSERT_FALSE(alarms.empty());
+    EXPECT_LT(alarms.front().start_s, 0.5) << "the first stroke's alarm";
+}
+
 // Fresh eyes, issue 52: a trigger re-armed on every crossing cut sessions
 // faster than the polls took them (one a poll): 299 were announced by a
 // "session 299", 101 stored, 33 told. Now every session the trigger cuts is
