@@ -85,7 +85,8 @@ struct LiveTake {
     // Tells the operator what the unit saw about the device (a probe whose
     // own detector disagrees), at its stream time, as the link's notices
     // are told; the unit stores its own alarm while recording.
-    std::function<void(double, std::string)> tell;
+    using Tell = std::function<void(double, std::string)>;
+    Tell tell;
     // The recording's last take: a result still under way (a press begun
     // in it) will not be in it, which the unit may say.
     bool recordingEnds = false;

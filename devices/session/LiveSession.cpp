@@ -598,7 +598,9 @@ void LiveSession::takeResults(bool recordingEnds)
         if (m_lists.clock == LiveClock::Recorded) startLists(LiveClock::SinceConnect);
     };
     if (m_recorder) take.recordingSite = m_metadata.site;
-    take.tell = [this](double time_s, std::string text) { m_linkNotices.push_back({time_s, std::move(text)}); };
+    const auto tell = [this](double time_s, std::string text) {
+        m_linkNotices.push_back({time_s, std::move(text)});
+    };
     if (m_recorder) {
         take.recordedUntil_s = m_recorder->consumedUntil_s().value_or(-1.0);
         take.recordedFrom_s = m_recorder->acquisitionOrigin_s().value_or(take.recordedFrom_s);
@@ -609,6 +611,9 @@ void LiveSession::takeResults(bool recordingEnds)
     for (const auto& [mode, unit] : m_units) {
         const bool own = m_recorder && m_metadata.mode == mode;
         take.recorder = own ? m_recorder.get() : nullptr;
+        // The operator hears the mode in use, not the others' processors
+        // running on unseen (a palpation's zero on a panel's gauges).
+        take.tell = mode == (m_recorder ? m_metadata.mode : m_mode) ? LiveTake::Tell(tell) : LiveTake::Tell();
         take.recordingOtherMode = m_recorder && !own;
         unit->take(take);
         unit->takeZeros(take);
