@@ -6,11 +6,14 @@
 #include "DetectorOptions.h"
 #include "SessionArgument.h"
 #include "core/derived/StoredDetection.h"
+#include "core/detector/HumRisk.h"
 #include "core/modes/ModeDefinition.h"
+#include "core/report/SignalQuality.h"
 #include "core/signal/SignalSetup.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/StoredSites.h"
 
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 
@@ -72,6 +75,35 @@ QString cantileverFilters(const core::storage::SessionSummary& session,
     startStates = analysis->startStates;
     return QStringLiteral("(the cantilevers through the session's filters, as its mode read them live: %1)")
         .arg(toQString(analysis->text));
+}
+
+// A hum the detector read the cantilevers through (core/detector/HumRisk.h),
+// judged over the session's first seconds: said, with what takes it out.
+void tellHum(core::storage::SessionSource& store, std::int64_t session, double rate_hz,
+             const std::vector<core::storage::StoredChannel>& channels, const std::vector<std::size_t>& picked,
+             const std::vector<core::dsp::FilterSettings>& filters)
+{
+    const auto judged = static_cast<std::uint64_t>(core::detector::kHumJudged_s * rate_hz);
+    const auto quality = core::report::channelQuality(store, session, 0, std::min(store.sampleCount(session), judged));
+    std::optional<core::detector::HumRisk> worst;
+    std::optional<double> worstNotch;
+    for (std::size_t i = 0; i < picked.size(); ++i) {
+        const std::string& name = channels[picked[i]].descriptor.name;
+        const auto q = std::ranges::find(quality, name, [](const auto& one) { return one.channel.name; });
+        if (q == quality.end()) continue;
+        // One filter for every cantilever (--notch), or each its own (the session's).
+        const auto* filter = filters.size() == 1 ? &filters[0] : i < filters.size() ? &filters[i] : nullptr;
+        const std::optional<double> notch = filter ? filter->notch_hz : std::nullopt;
+        const auto risk = core::detector::detectorHumRisk({name}, {q->health}, rate_hz, notch);
+        if (risk && (!worst || risk->amplitude / risk->noise > worst->amplitude / worst->noise)) {
+            worst = risk;
+            worstNotch = notch;
+        }
+    }
+    if (worst)
+        printError(QStringLiteral("note: %1; --notch %2 takes it out")
+                       .arg(toQString(core::detector::humRiskText(*worst, worstNotch, 1e6, "µε")))
+                       .arg(worst->mains_hz));
 }
 
 }  // namespace
@@ -177,6 +209,7 @@ int runAnalyze(const QStringList& arguments)
         const auto [events, analysed, agreement] = *core::derived::detectStoredSession(
             store, *id, picked, settings, {}, probe ? std::optional(probe->out) : std::nullopt);
         const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        tellHum(store, *id, 1.0 / dt_s, channels, picked, settings.filters);
         if (!save.isEmpty()) store.addEvents(*id, core::storage::defectRecords(events, save.toStdString()));
         const auto sites = core::storage::storedSites(store, *id, events);
         const DetectionOutput output{analysed, lags, elapsed_s, events, sites};

@@ -5,6 +5,7 @@
 #include "DetectorOptions.h"
 #include "core/UnitScale.h"
 #include "core/detector/CsvDetection.h"
+#include "core/detector/HumRisk.h"
 #include "core/detector/ProbeScanFiles.h"
 #include "core/dsp/FilterSettings.h"
 #include "core/io/CsvColumns.h"
@@ -275,6 +276,11 @@ int runDetect(const QStringList& arguments)
                      "restarted after each gap, never bridging one. "
                   << gapsText(result.gaps) << '\n';
     }
+    std::vector<std::string> cantilevers(options.columns.begin() + 1, options.columns.end());
+    if (const auto risk = core::detector::detectorHumRisk(cantilevers, result.cantileverHealth, 1.0 / result.interval_s,
+                                                          options.notch_hz))
+        std::cerr << "note: " << core::detector::humRiskText(*risk, options.notch_hz, 1.0, {}) << "; --notch "
+                  << core::text::formatShortest(risk->mains_hz) << " takes it out\n";
     if (unusedLength)
         std::cerr << "note: the column '" << *unusedLength
                   << "' is a length: if it is the rig's position along the stroke, --position " << *unusedLength

@@ -2,6 +2,8 @@
 #include "RecordOutput.h"
 
 #include "CliSupport.h"
+#include "core/detector/HumRisk.h"
+#include "core/report/DetectorHum.h"
 #include "core/storage/SessionStore.h"
 #include "core/text/CountText.h"
 #include "core/timing/ClockMappingText.h"
@@ -179,6 +181,7 @@ void RecordOutput::reportOne(const devices::session::RecordingEnd& end)
                         << toQString(core::toString(live.recordingMetadata().mode)) << ": "
                         << toQString(summary.analysis) << Qt::endl;
     tellHoles({}, summary, live.channels());
+    tellDetectorHum({}, summary.session);
     tellEndProblem({}, summary);
 }
 
@@ -218,6 +221,7 @@ void RecordOutput::reportSeveral(const devices::session::RecordingEnd& end)
             << "; clock: " << toQString(core::timing::clockMappingText(clock != stored.end() ? clock->clockJson : ""))
             << Qt::endl;
         tellHoles(name, summary, live.channels());
+        tellDetectorHum(name, summary.session);
         tellEndProblem(name, summary);
     }
 }
@@ -253,6 +257,30 @@ void RecordOutput::tellEndProblem(const std::string& device, const devices::sess
                                                            : QStringLiteral("not taken back"))
                        .arg(summary.stats.samplesWritten));
         m_exit = kExitFailure;
+    }
+}
+
+// A panel scan judged through a hum its detector read unfiltered
+// (core/report/DetectorHum.h), from the recording's last seconds: said,
+// with what takes it out, as the report says it beside the verdict.
+void RecordOutput::tellDetectorHum(const std::string& device, std::int64_t session)
+{
+    try {
+        core::storage::SessionStore store(m_db, core::storage::Database::Access::ReadOnly);
+        const auto summary = store.session(session);
+        if (!summary || !(summary->sampleRate_hz > 0.0)) return;
+        const std::uint64_t end = store.sampleCount(session);
+        const auto judged = static_cast<std::uint64_t>(core::detector::kHumJudged_s * summary->sampleRate_hz);
+        const auto channels = core::report::channelQuality(store, session, end > judged ? end - judged : 0, end);
+        if (const auto hum = core::report::detectorHumNote(channels, *summary))
+            printError(QStringLiteral("%1note: %2; record with --notch %3 --analyze-filtered, or re-analyse with "
+                                      "`analyze --db %4 --session %5 --notch %3`")
+                           .arg(from(device), toQString(hum->text))
+                           .arg(hum->mains_hz)
+                           .arg(toQString(m_db))
+                           .arg(session));
+    } catch (const core::storage::StorageError&) {
+        // The summary's own reading of the store says what is wrong with it.
     }
 }
 

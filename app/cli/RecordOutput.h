@@ -41,6 +41,7 @@ private:
     void reportOne(const devices::session::RecordingEnd& end);
     void reportSeveral(const devices::session::RecordingEnd& end);
     void tellEndProblem(const std::string& device, const devices::session::RecordingSummary& summary);
+    void tellDetectorHum(const std::string& device, std::int64_t session);
     void tellHoles(const std::string& device, const devices::session::RecordingSummary& summary,
                    const std::vector<core::ChannelDescriptor>& channels);
     // The line a trigger's new state is told by; none when nothing is said.

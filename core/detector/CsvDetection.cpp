@@ -1,6 +1,7 @@
 // CSV blocks → time-base check → streaming detector.
 #include "core/detector/CsvDetection.h"
 
+#include "core/detector/HumRisk.h"
 #include "core/detector/OfflineDetection.h"
 #include "core/detector/PositionTrail.h"
 #include "core/detector/SiteArithmetic.h"
@@ -125,13 +126,23 @@ CsvDetection detectCsv(const std::string& path, const std::vector<std::string>& 
                                      if (sink) sink(outputs, result.interval_s);
                                  });
     result.lags = detection.lagCount();
+    const double rate_hz = 1.0 / result.interval_s;
+    const auto judged = std::min<std::uint64_t>(scan.rows(), static_cast<std::uint64_t>(kHumJudged_s * rate_hz));
+    std::vector<dsp::HealthAccumulator> health;
+    for (std::size_t c = 1; c < columns.size(); ++c) health.emplace_back(rate_hz, judged);
+    std::uint64_t healthRead = 0;
     std::vector<std::vector<double>> block;  // time, then the cantilevers; reused
     while (scan.read(block) > 0) {
         const auto started = std::chrono::steady_clock::now();
         const std::vector<std::span<const double>> cantilevers(block.begin() + 1, block.end());
         detection.push(cantilevers, block.front());
         result.detectorSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        const std::size_t take =
+            static_cast<std::size_t>(std::min<std::uint64_t>(judged - healthRead, block[0].size()));
+        for (std::size_t c = 0; c < health.size() && take > 0; ++c) health[c].push(cantilevers[c].first(take));
+        healthRead += take;
     }
+    for (const auto& accumulator : health) result.cantileverHealth.push_back(accumulator.result());
     result.samples = static_cast<std::size_t>(detection.samplesPushed()) - scan.gaps();  // not the NaN at each gap
     result.gaps = scan.gapsRead();
     result.samplesMissing = scan.samplesMissing();

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/detector/StreamingDetection.h"
+#include "core/dsp/SignalHealth.h"
 #include "core/io/CsvColumns.h"
 #include "core/io/UniformTimeBase.h"
 
@@ -38,6 +39,9 @@ struct CsvDetection {
     double interval_s = 0.0;          // the whole file's mean sampling interval
     double detectorSeconds = 0.0;     // time spent in the detector alone
     std::vector<DefectEvent> events;  // lags and speeds by interval_s
+    // Each cantilever's health over the file's first kHumJudged_s, as read
+    // (before a notch): the hum it may carry (HumRisk.h).
+    std::vector<dsp::ChannelHealth> cantileverHealth;
 };
 
 // Per-sample outputs, with the interval the lags were resolved with.

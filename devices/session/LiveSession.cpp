@@ -598,9 +598,7 @@ void LiveSession::takeResults(bool recordingEnds)
         if (m_lists.clock == LiveClock::Recorded) startLists(LiveClock::SinceConnect);
     };
     if (m_recorder) take.recordingSite = m_metadata.site;
-    const auto tell = [this](double time_s, std::string text) {
-        m_linkNotices.push_back({time_s, std::move(text)});
-    };
+    const auto tell = [this](double time_s, std::string text) { m_linkNotices.push_back({time_s, std::move(text)}); };
     if (m_recorder) {
         take.recordedUntil_s = m_recorder->consumedUntil_s().value_or(-1.0);
         take.recordedFrom_s = m_recorder->acquisitionOrigin_s().value_or(take.recordedFrom_s);

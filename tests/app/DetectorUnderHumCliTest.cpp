@@ -5,11 +5,13 @@
 // `health` at the amplitude it was given.
 #include "support/CliRunner.h"
 #include "support/EmulatorProcess.h"
+#include "support/PdfText.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -63,6 +65,23 @@ TEST(DetectorUnderHum, TheNotchBringsBackTheCleanScansEvents)
     // Without it, 50 Hz hum (a whole number of the paper's 2 ms lag steps
     // a period) correlates the gauges at every lag it fills: nothing is found.
     EXPECT_EQ(detect({dir.filePath("hum50.csv")}).events, 0);
+    // ... which detect says, as it does of a notch at the other mains
+    // frequency (fresh eyes: both said nothing); through the right one, or
+    // with no hum, it says nothing.
+    const auto note = [&](const QString& file, const QStringList& more) {
+        const CliResult run = runCli(QStringList{"detect", dir.filePath(file)} + more);
+        EXPECT_EQ(run.exitCode, 0) << run.err.toStdString();
+        return run.err;
+    };
+    const QString unfiltered = note("hum50.csv", {});
+    EXPECT_TRUE(unfiltered.contains("a carries 50 Hz hum") || unfiltered.contains("b carries 50 Hz hum"))
+        << unfiltered.toStdString();
+    EXPECT_TRUE(unfiltered.contains("which the detector read without a notch")) << unfiltered.toStdString();
+    EXPECT_TRUE(unfiltered.contains("--notch 50 takes it out")) << unfiltered.toStdString();
+    const QString otherMains = note("hum50.csv", {"--notch", "60"});
+    EXPECT_TRUE(otherMains.contains("which the 60 Hz notch leaves")) << otherMains.toStdString();
+    EXPECT_FALSE(note("hum50.csv", {"--notch", "50"}).contains("carries")) << "the notch took it out";
+    EXPECT_FALSE(note("clean.csv", {}).contains("carries")) << "no hum";
 }
 
 TEST(DetectorUnderHum, HealthReadsTheSimulatedHumAtItsAmplitude)
@@ -163,4 +182,39 @@ TEST(DetectorUnderHum, ARecordingWhoseModeReadsTheNotchedChannelsStoresTheDentAn
     ASSERT_EQ(followed["sites"].toArray().size(), 1);
     EXPECT_NEAR(followed["sites"].toArray()[0].toObject()["position_mm"].toDouble(), 30.0, 2.0);
     EXPECT_EQ(analyze({"--unfiltered"})["events"].toArray().size(), 0);
+    EXPECT_FALSE(recorded.err.contains("carries")) << "the detector read the notched gauges";
+    // Read as stored, the hum hid the crossings: analyze says so, and what takes it out.
+    const CliResult unfiltered = runCli({"analyze", "--db", db, "--session", "last", "--unfiltered"});
+    EXPECT_TRUE(unfiltered.err.contains("of 50 Hz hum")) << unfiltered.err.toStdString();
+    EXPECT_TRUE(unfiltered.err.contains("--notch 50 takes it out")) << unfiltered.err.toStdString();
+}
+
+// Recorded without the notch, the hummed line's verdict is a PASS with
+// every crossing lost: record says why it may be, and what to do, and the
+// report says it beside the verdict (fresh eyes, issue 57).
+TEST(DetectorUnderHum, ARecordingWhoseDetectorReadTheHumSaysSoAndTheReportToo)
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("probe");
+    const QString db = dir.filePath("line.tactiscope");
+    QProcess emulator;
+    ASSERT_TRUE(tactiscope::testing::startEmulator(emulator, link,
+                                                   {"--scenario", "panel-line", "--hum", "20e-6,5e-6", "--seed", "2"}));
+    const CliResult recorded =
+        runCli({"record", "--port", link, "--seconds", "4", "--db", db, "--notch", "60", "--analyze-filtered"});
+    tactiscope::testing::stopEmulator(emulator);
+    ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
+    // 20 + 5 µε on a, 0.5 µε of noise: about fifty times it.
+    const QRegularExpression said(QStringLiteral("a carries ([0-9.]+) µε of 50 Hz hum, ([0-9]+) times its noise, "
+                                                 "which the 60 Hz notch leaves"));
+    const auto match = said.match(recorded.err);
+    ASSERT_TRUE(match.hasMatch()) << recorded.err.toStdString();
+    EXPECT_NEAR(match.captured(1).toDouble(), 25.0, 0.5);
+    EXPECT_GT(match.captured(2).toInt(), 20);
+    EXPECT_TRUE(recorded.err.contains("record with --notch 50 --analyze-filtered")) << recorded.err.toStdString();
+    if (*tactiscope::testing::pdfTextMissing()) return;
+    const QString pdf = dir.filePath("report.pdf");
+    ASSERT_EQ(runCli({"report", "--db", db, "--session", "last", "--output", pdf}).exitCode, 0);
+    const QString text = tactiscope::testing::pdfText(pdf).simplified();
+    EXPECT_TRUE(text.contains("of 50 Hz hum")) << text.toStdString();
 }

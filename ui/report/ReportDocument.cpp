@@ -8,6 +8,7 @@
 #include "ui/common/VocabularyText.h"
 
 #include "core/Version.h"
+#include "core/report/DetectorHum.h"
 #include "core/report/VerdictTrail.h"
 #include "core/signal/SignalSetup.h"
 #include "core/storage/AutomaticVerdict.h"
@@ -208,9 +209,17 @@ QString verdictOrReadings(const core::report::ReportData& data)
     return QStringLiteral("<p class=verdict>%1</p>").arg(QObject::tr("No verdict recorded"));
 }
 
+// A hum the detector read its cantilevers through, which may have made
+// its verdict (a PASS with every crossing lost under it).
+QString detectorHumNote(const core::report::ReportData& data)
+{
+    const auto note = core::report::detectorHumNote(data.quality.channels, data.session);
+    return note ? QStringLiteral("<p class=trail>%1</p>").arg(text(note->text + ".")) : QString();
+}
+
 QString verdict(const core::report::ReportData& data)
 {
-    return verdictOrReadings(data) + unfilteredAnalysisNote(data);
+    return verdictOrReadings(data) + unfilteredAnalysisNote(data) + detectorHumNote(data);
 }
 
 // The defects as sites (a defect crossed in every stroke is one), then each
