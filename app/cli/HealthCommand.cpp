@@ -157,7 +157,8 @@ int runHealth(const QStringList& arguments)
         "(median amplitude spectral density above 1 Hz), drift per hour with its standard uncertainty (a line "
         "through 100 interval means), and clipped samples; for a capacitive beam, the creep after its load steps "
         "(its share of a step and its time constant, each with its standard uncertainty). FILE.csv is read as "
-        "import reads it; --db and --session read a stored session instead."));
+        "import reads it; --db and --session read a stored session instead, and the filtered and math channels "
+        "it was recorded with after its own, computed again as they were live."));
     parser.addPositionalArgument(QStringLiteral("FILE.csv"), QStringLiteral("The recording."));
     parser.addOption({QStringLiteral("json"),
                       QStringLiteral("Print JSON: per channel channel, unit, hum_hz, hum_amplitude, noise_floor, "
@@ -172,6 +173,13 @@ int runHealth(const QStringList& arguments)
     try {
         for (const auto& q : core::report::channelQuality(*input.store, input.session, 0, input.sampleCount))
             rows.push_back({q.channel.name, shownUnit(q.channel), q.health, q.drifts, q.creepJudged, q.creep});
+        // The filtered and math channels it was recorded with, computed
+        // again as they were live, after them: a report's rows.
+        std::string problem;
+        for (const auto& q :
+             core::report::recordedSignalQuality(*input.store, input.session, 0, input.sampleCount, SIZE_MAX, problem))
+            rows.push_back({q.channel.name, shownUnit(q.channel), q.health, q.drifts, q.creepJudged, q.creep});
+        if (!problem.empty()) printError(QStringLiteral("note: %1").arg(toQString(problem)));
     } catch (const core::storage::StorageError& e) {
         return storageFailure(e, QStringLiteral("health: "));
     }

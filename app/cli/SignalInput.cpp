@@ -112,7 +112,8 @@ std::optional<int> openSignalInput(const QCommandLineParser& parser, const QStri
     return std::nullopt;
 }
 
-std::optional<std::size_t> findSignalChannel(const SignalInput& input, const QString& name, const QString& command)
+std::optional<std::size_t> findSignalChannel(const SignalInput& input, const QString& name, const QString& command,
+                                             const std::vector<core::ChannelDescriptor>& computed)
 {
     QStringList names;
     for (std::size_t c = 0; c < input.channels.size(); ++c) {
@@ -120,6 +121,7 @@ std::optional<std::size_t> findSignalChannel(const SignalInput& input, const QSt
         if (channel == name) return c;
         names << channel;
     }
+    for (const auto& channel : computed) names << toQString(channel.name);
     printError(QStringLiteral("%1: %2 has no channel %3; it has %4")
                    .arg(command, input.name, quoted(name), names.join(QStringLiteral(", "))));
     return std::nullopt;

@@ -38,7 +38,8 @@ std::optional<int> openSignalInput(const QCommandLineParser& parser, const QStri
 
 // The index of the channel called `name`; none, after printing the
 // channels there are, when there is none.
-std::optional<std::size_t> findSignalChannel(const SignalInput& input, const QString& name, const QString& command);
+std::optional<std::size_t> findSignalChannel(const SignalInput& input, const QString& name, const QString& command,
+                                             const std::vector<core::ChannelDescriptor>& computed = {});
 
 // A stored value (SI) as shown: strain in µε, force in mN, capacitance in
 // pF, length in mm; another unit as it is.

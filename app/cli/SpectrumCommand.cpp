@@ -5,11 +5,13 @@
 #include "SignalInput.h"
 #include "core/dsp/MainsHum.h"
 #include "core/dsp/WelchSpectrum.h"
+#include "core/signal/SignalColumns.h"
 #include "core/text/JsonWriter.h"
 #include "core/text/NumberFormat.h"
 
 #include <QTextStream>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -141,11 +143,26 @@ int runSpectrum(const QStringList& arguments)
 
     SignalInput input;
     if (const auto exit = openSignalInput(parser, name, usage, input)) return *exit;
-    const auto channel = findSignalChannel(input, channelName, name);
-    if (!channel) return kExitUsage;
     Spectrum spectrum;
+    ShownUnit unit;
     try {
-        const auto values = input.store->readChannel(input.session, *channel, 0, input.sampleCount);
+        // A filtered or math channel the session was recorded with, computed
+        // again as it was live; else a stored one.
+        std::string problem;
+        auto computed = core::signal::withRecordedSignal(*input.store, input.session, nullptr, problem);
+        const auto columns = computed ? computed->channels() : std::vector<core::ChannelDescriptor>{};
+        const auto column = std::ranges::find(columns, channelName.toStdString(), &core::ChannelDescriptor::name);
+        std::vector<double> values;
+        if (column != columns.end()) {
+            values =
+                std::move(computed->read(0, input.sampleCount)[static_cast<std::size_t>(column - columns.begin())]);
+            unit = shownUnit(*column);
+        } else {
+            const auto channel = findSignalChannel(input, channelName, name, columns);
+            if (!channel) return kExitUsage;
+            values = input.store->readChannel(input.session, *channel, 0, input.sampleCount);
+            unit = shownUnit(input.channels[*channel].descriptor);
+        }
         spectrum = core::dsp::welchSpectrum(values, input.sampleRate_hz, settings);
     } catch (const core::storage::StorageError& e) {
         return storageFailure(e, QStringLiteral("spectrum: "));
@@ -156,7 +173,6 @@ int runSpectrum(const QStringList& arguments)
                        .arg(core::dsp::kShortestSegment));
         return kExitUsage;
     }
-    const ShownUnit unit = shownUnit(input.channels[*channel].descriptor);
     const QString note = segmentsNote(spectrum, settings.averages);
     if (parser.isSet(QStringLiteral("json")))
         std::cout << spectrumJson(spectrum, unit, note) << '\n';

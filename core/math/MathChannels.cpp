@@ -31,11 +31,21 @@ std::string trimmed(std::string_view text)
 }
 
 // " (the channels: a, b, force)", for a message naming an unknown one.
+// The names an expression can use; a filtered channel's ("a.filtered",
+// not a word) is not one of them: its channel's name reads it filtered.
 std::string knownNames(const std::vector<std::string>& names)
 {
     std::string known;
-    for (const std::string& name : names) known += (known.empty() ? "" : ", ") + name;
-    return known.empty() ? "" : " (the channels: " + known + ")";
+    bool filtered = false;
+    for (const std::string& name : names) {
+        if (isIdentifier(name))
+            known += (known.empty() ? "" : ", ") + name;
+        else
+            filtered = filtered || name.ends_with(".filtered");
+    }
+    if (known.empty()) return "";
+    return " (the channels: " + known +
+           (filtered ? "; a filtered channel is read by its own name, filtered, as live math channels read it)" : ")");
 }
 
 // Test points: values a channel may take, away from zero (so a ratio has

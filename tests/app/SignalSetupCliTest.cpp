@@ -108,6 +108,20 @@ TEST(SignalSetupCli, ARecordingKeepsItsFiltersAndMathAndTheExportComputesThemAsL
     EXPECT_NEAR(rawHum, 10.0, 0.5);
     EXPECT_LT(filteredHum, 0.1);
 
+    // health and spectrum read the filtered and math channels too, computed
+    // again as the report computes them (fresh eyes: "has no channel").
+    const CliResult health = runCli({"health", "--db", db, "--session", QString::number(id), "--json"});
+    ASSERT_EQ(health.exitCode, 0) << health.err.toStdString();
+    std::map<QString, double> humOf;
+    for (const auto& row : QJsonDocument::fromJson(health.out.toUtf8()).array())
+        humOf[row.toObject()["channel"].toString()] = row.toObject()["hum_amplitude"].toDouble();
+    ASSERT_EQ(humOf.size(), 5u) << health.out.toStdString();
+    EXPECT_LT(humOf["a.filtered"], 0.1 * humOf["a"]);
+    const CliResult spectrum =
+        runCli({"spectrum", "--db", db, "--session", QString::number(id), "--channel", "diff", "--json"});
+    ASSERT_EQ(spectrum.exitCode, 0) << spectrum.err.toStdString();
+    EXPECT_EQ(QJsonDocument::fromJson(spectrum.out.toUtf8()).object()["unit"].toString(), QStringLiteral("µε"));
+
     // The export's side file keeps the setup, and an import of it brings it back.
     QFile meta(dir.filePath("out.meta.json"));
     ASSERT_TRUE(meta.open(QIODevice::ReadOnly));

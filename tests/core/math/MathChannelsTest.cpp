@@ -117,6 +117,20 @@ TEST(MathChannels, AChannelWithNoUnitIsNotTakenForStrain)
     EXPECT_EQ(refused("gauge[µε]=a"), "");  // a probe's strain channel is strain
 }
 
+// A filtered channel's name ("a.filtered") is no word an expression can
+// hold: a refusal lists the names it can, and says how a filtered one is read.
+TEST(MathChannels, ARefusalListsOnlyNamesAnExpressionCanUse)
+{
+    try {
+        MathChannels channels({input("a", "strain"), input("a.filtered", "strain")}, definitions({"x[1]=q"}));
+        FAIL() << "q is no channel";
+    } catch (const MathError& e) {
+        const std::string said = e.what();
+        EXPECT_NE(said.find("(the channels: a; a filtered channel is read by its own name"), std::string::npos) << said;
+        EXPECT_EQ(said.find("a.filtered"), std::string::npos) << said;
+    }
+}
+
 TEST(MathChannels, UnitAlgebraRefusesWhatMixesUnitsWithAMessage)
 {
     // mN + mm: a force and a length.
