@@ -94,6 +94,34 @@ struct MathChannels::Compiled {
 
 namespace {
 
+// Whether the expression's value stays as it is when the `scaled` among
+// its `used` values are all multiplied by one factor (a ratio of them):
+// tried at a few points; `values` is left as it was.
+bool unchangedByScaling(mu::Parser& parser, std::vector<double>& values, const std::vector<std::size_t>& used,
+                        const std::vector<std::size_t>& scaled)
+{
+    const std::vector<double> saved = values;
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> value(0.5, 2.0);
+    bool unchanged = true;
+    int compared = 0;
+    for (std::size_t point = 0; point < kPoints && unchanged; ++point) {
+        for (const std::size_t v : used) values[v] = value(random);
+        try {
+            const double plain = parser.Eval();
+            for (const std::size_t v : scaled) values[v] *= 1e3;
+            const double times = parser.Eval();
+            if (!std::isfinite(plain) || !std::isfinite(times)) continue;
+            unchanged = std::abs(times - plain) <= 1e-9 * std::max(std::abs(plain), 1e-300);
+            ++compared;
+        } catch (const mu::Parser::exception_type&) {
+            // A point outside the expression's domain says nothing.
+        }
+    }
+    values = saved;
+    return unchanged && compared > 0;
+}
+
 // The definition's dimension from how it scales; throws MathError.
 Dimension dimensionOf(const MathDefinition& definition, mu::Parser& parser, std::vector<double>& values,
                       const std::vector<std::size_t>& used, const std::vector<Dimension>& dimensions,
@@ -219,7 +247,9 @@ MathChannels::MathChannels(std::vector<MathInput> inputs, std::vector<MathDefini
             for (const std::size_t v : compiled->variables)
                 if (v < m_inputs.size() && units[v].empty()) unitless.push_back(v);
             std::ranges::sort(unitless);  // in the channels' order
-            if (declared.toSi != 1.0 && !unitless.empty()) {
+            // A ratio of them ((a - b) / b in %) is a pure number whatever their unit.
+            if (declared.toSi != 1.0 && !unitless.empty() &&
+                !unchangedByScaling(parser, m_values, compiled->variables, unitless)) {
                 std::string which;
                 for (std::size_t i = 0; i < unitless.size(); ++i)
                     which += (i == 0 ? "" : i + 1 == unitless.size() ? " and " : ", ") + names[unitless[i]];

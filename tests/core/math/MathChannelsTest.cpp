@@ -112,6 +112,7 @@ TEST(MathChannels, AChannelWithNoUnitIsNotTakenForStrain)
     EXPECT_NE(asStrain.find("n and m have no unit, so [µε] would take the numbers"), std::string::npos) << asStrain;
     EXPECT_NE(asStrain.find("--units n=µε"), std::string::npos) << asStrain;
     EXPECT_NE(refused("share[%]=n / 2").find("n has no unit"), std::string::npos);
+    EXPECT_EQ(refused("change[%]=(n - m) / m"), "") << "a ratio of them is a pure number whatever their unit";
     EXPECT_EQ(refused("diff[]=n - m"), "");
     EXPECT_EQ(refused("ratio[1]=n / m"), "");
     EXPECT_EQ(refused("gauge[µε]=a"), "");  // a probe's strain channel is strain
