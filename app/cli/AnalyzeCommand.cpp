@@ -8,7 +8,7 @@
 #include "core/derived/StoredDetection.h"
 #include "core/detector/HumRisk.h"
 #include "core/modes/ModeDefinition.h"
-#include "core/report/SignalQuality.h"
+#include "core/report/DetectorHum.h"
 #include "core/signal/SignalSetup.h"
 #include "core/storage/DefectRecords.h"
 #include "core/storage/StoredSites.h"
@@ -77,7 +77,7 @@ QString cantileverFilters(const core::storage::SessionSummary& session,
         .arg(toQString(analysis->text));
 }
 
-// A hum the detector read the cantilevers through (core/detector/HumRisk.h),
+// A hum the detector read the cantilevers through (core/report/DetectorHum.h),
 // judged over the session's first seconds: said, with what takes it out.
 void tellHum(core::storage::SessionSource& store, std::int64_t session, double rate_hz,
              const std::vector<core::storage::StoredChannel>& channels, const std::vector<std::size_t>& picked,
@@ -85,25 +85,16 @@ void tellHum(core::storage::SessionSource& store, std::int64_t session, double r
 {
     const auto judged = static_cast<std::uint64_t>(core::detector::kHumJudged_s * rate_hz);
     const auto quality = core::report::channelQuality(store, session, 0, std::min(store.sampleCount(session), judged));
-    std::optional<core::detector::HumRisk> worst;
-    std::optional<double> worstNotch;
-    for (std::size_t i = 0; i < picked.size(); ++i) {
-        const std::string& name = channels[picked[i]].descriptor.name;
-        const auto q = std::ranges::find(quality, name, [](const auto& one) { return one.channel.name; });
-        if (q == quality.end()) continue;
-        // One filter for every cantilever (--notch), or each its own (the session's).
+    std::vector<std::string> cantilevers;
+    for (const std::size_t c : picked) cantilevers.push_back(channels[c].descriptor.name);
+    // One filter for every cantilever (--notch), or each its own (the session's).
+    const auto notchOf = [&](const std::string& channel) -> std::optional<double> {
+        const auto i = static_cast<std::size_t>(std::ranges::find(cantilevers, channel) - cantilevers.begin());
         const auto* filter = filters.size() == 1 ? &filters[0] : i < filters.size() ? &filters[i] : nullptr;
-        const std::optional<double> notch = filter ? filter->notch_hz : std::nullopt;
-        const auto risk = core::detector::detectorHumRisk({name}, {q->health}, rate_hz, notch);
-        if (risk && (!worst || risk->amplitude / risk->noise > worst->amplitude / worst->noise)) {
-            worst = risk;
-            worstNotch = notch;
-        }
-    }
-    if (worst)
-        printError(QStringLiteral("note: %1; --notch %2 takes it out")
-                       .arg(toQString(core::detector::humRiskText(*worst, worstNotch, 1e6, "µε")))
-                       .arg(worst->mains_hz));
+        return filter ? filter->notch_hz : std::nullopt;
+    };
+    if (const auto hum = core::report::detectorHumNote(quality, cantilevers, rate_hz, notchOf))
+        printError(QStringLiteral("note: %1; --notch %2 takes it out").arg(toQString(hum->text)).arg(hum->mains_hz));
 }
 
 }  // namespace

@@ -272,7 +272,7 @@ void RecordOutput::tellDetectorHum(const std::string& device, std::int64_t sessi
         const std::uint64_t end = store.sampleCount(session);
         const auto judged = static_cast<std::uint64_t>(core::detector::kHumJudged_s * summary->sampleRate_hz);
         const auto channels = core::report::channelQuality(store, session, end > judged ? end - judged : 0, end);
-        if (const auto hum = core::report::detectorHumNote(channels, *summary))
+        if (const auto hum = core::report::sessionDetectorHum(channels, *summary))
             printError(QStringLiteral("%1note: %2; record with --notch %3 --analyze-filtered, or re-analyse with "
                                       "`analyze --db %4 --session %5 --notch %3`")
                            .arg(from(device), toQString(hum->text))

@@ -213,7 +213,7 @@ QString verdictOrReadings(const core::report::ReportData& data)
 // its verdict (a PASS with every crossing lost under it).
 QString detectorHumNote(const core::report::ReportData& data)
 {
-    const auto note = core::report::detectorHumNote(data.quality.channels, data.session);
+    const auto note = core::report::sessionDetectorHum(data.quality.channels, data.session);
     return note ? QStringLiteral("<p class=trail>%1</p>").arg(text(note->text + ".")) : QString();
 }
 

@@ -128,19 +128,24 @@ TEST_F(RecorderTest, MemoryStaysBoundedWhileTheDiskIsHeldUpAndTheOverflowIsAGap)
     for (std::uint64_t i = 0; i < 50; ++i) ASSERT_EQ(last[i], static_cast<double>(sent - 50 + i));
 }
 
-TEST_F(RecorderTest, SamplesDroppedAtTheEndAreMarkedLost)
+// A device lost before the stop: the samples from its last to the stop
+// are a gap to the session's end, stored as it finishes.
+TEST_F(RecorderTest, SamplesLostAtTheEndAreMarkedLost)
 {
-    Recorder recorder(m_path, palpation(), kChannels, 1000.0, 100);
+    Recorder recorder(m_path, palpation(), kChannels, 1000.0, 100'000);
     const auto id = recorder.sessionId();
-    for (std::uint64_t first = 0; first < 1000; first += 50) recorder.consume(deviceBlock(first, 50));
+    for (std::uint64_t first = 0; first < 600; first += 50) recorder.consume(deviceBlock(first, 50));
+    recorder.markLostUntil(0.9995);  // silent from sample 600 to the stop, 1 s in
     const auto stats = recorder.finish(tactiscope::core::SessionStatus::Complete);
-    EXPECT_EQ(stats.samplesWritten + stats.samplesDropped, 1000u);
+    EXPECT_EQ(stats.samplesWritten, 600u);
     EXPECT_TRUE(stats.error.empty()) << stats.error;
     SessionStore store(m_path, Database::Access::ReadOnly);
     EXPECT_EQ(store.sampleCount(id), 1000u);
-    ASSERT_FALSE(store.gaps(id).empty());
-    EXPECT_EQ(store.gaps(id).back().firstIndex + store.gaps(id).back().count, 1000u);
+    ASSERT_EQ(store.gaps(id).size(), 1u);
+    EXPECT_EQ(store.gaps(id).back().firstIndex, 600u);
+    EXPECT_EQ(store.gaps(id).back().count, 400u);
     EXPECT_TRUE(std::isnan(store.readChannel(id, 1, 999, 1).at(0)));
+    EXPECT_EQ(store.readChannel(id, 1, 599, 1).at(0), 599.5);  // channel 1 is index + 0.5
 }
 
 TEST_F(RecorderTest, AWriteErrorStopsRecordingAndKeepsWhatWasCommitted)
