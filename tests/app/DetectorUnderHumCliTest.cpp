@@ -46,6 +46,22 @@ QString simulated(const QTemporaryDir& dir, const QString& name, const QStringLi
     return path;
 }
 
+// The emulated panel line under 20 µε common and 5 µε differential hum,
+// recorded for `seconds` with its mode reading the gauges through a
+// `notch` (Hz) notch.
+CliResult recordHummedLine(const QTemporaryDir& dir, const QString& db, int seconds, const QString& notch)
+{
+    const QString link = dir.filePath("probe");
+    QProcess emulator;
+    if (!tactiscope::testing::startEmulator(emulator, link,
+                                            {"--scenario", "panel-line", "--hum", "20e-6,5e-6", "--seed", "2"}))
+        return {-1, {}, QStringLiteral("the emulator did not start")};
+    const CliResult recorded = runCli({"record", "--port", link, "--seconds", QString::number(seconds), "--db", db,
+                                       "--notch", notch, "--analyze-filtered"});
+    tactiscope::testing::stopEmulator(emulator);
+    return recorded;
+}
+
 }  // namespace
 
 TEST(DetectorUnderHum, TheNotchBringsBackTheCleanScansEvents)
@@ -158,14 +174,8 @@ TEST(DetectorUnderHum, ARecordedProbesHumIsReadFromTheStore)
 TEST(DetectorUnderHum, ARecordingWhoseModeReadsTheNotchedChannelsStoresTheDentAndAnalyzeAgrees)
 {
     QTemporaryDir dir;
-    const QString link = dir.filePath("probe");
     const QString db = dir.filePath("line.tactiscope");
-    QProcess emulator;
-    ASSERT_TRUE(tactiscope::testing::startEmulator(emulator, link,
-                                                   {"--scenario", "panel-line", "--hum", "20e-6,5e-6", "--seed", "2"}));
-    const CliResult recorded =
-        runCli({"record", "--port", link, "--seconds", "10", "--db", db, "--notch", "50", "--analyze-filtered"});
-    tactiscope::testing::stopEmulator(emulator);
+    const CliResult recorded = recordHummedLine(dir, db, 10, "50");
     ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
     EXPECT_TRUE(recorded.out.contains("panel-scan: 4 defects stored at 1 site")) << recorded.out.toStdString();
     // The panel's gauges also feed a palpation's processor, unseen: what it
@@ -195,14 +205,8 @@ TEST(DetectorUnderHum, ARecordingWhoseModeReadsTheNotchedChannelsStoresTheDentAn
 TEST(DetectorUnderHum, ARecordingWhoseDetectorReadTheHumSaysSoAndTheReportToo)
 {
     QTemporaryDir dir;
-    const QString link = dir.filePath("probe");
     const QString db = dir.filePath("line.tactiscope");
-    QProcess emulator;
-    ASSERT_TRUE(tactiscope::testing::startEmulator(emulator, link,
-                                                   {"--scenario", "panel-line", "--hum", "20e-6,5e-6", "--seed", "2"}));
-    const CliResult recorded =
-        runCli({"record", "--port", link, "--seconds", "4", "--db", db, "--notch", "60", "--analyze-filtered"});
-    tactiscope::testing::stopEmulator(emulator);
+    const CliResult recorded = recordHummedLine(dir, db, 4, "60");
     ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
     // 20 + 5 µε on a, 0.5 µε of noise: about fifty times it.
     const QRegularExpression said(QStringLiteral("a carries ([0-9.]+) µε of 50 Hz hum, ([0-9]+) times its noise, "
