@@ -155,7 +155,8 @@ QString capacitivePeaks(const core::report::ReportData& data)
 // sees the notch in the setup would otherwise think the detector saw it.
 QString unfilteredAnalysisNote(const core::report::ReportData& data)
 {
-    if (data.session.metadata.mode == core::Mode::General) return {};
+    // A mode whose processor reads no channel roles (general) analyses nothing.
+    if (core::definitionOf(data.session.metadata.mode).roles.empty()) return {};
     try {
         const auto setup = core::signal::signalSetupFromJson(data.session.metadata.signalSetup);
         if (setup.filters.empty() || setup.analysisFiltered) return {};
